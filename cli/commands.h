@@ -1,0 +1,17 @@
+// The subcommands of the fgsg CLI, one file each (cmd_<name>.cpp). Each takes the
+// arguments after the subcommand name and returns the process exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fgsg::cli {
+
+using Args = std::vector<std::string>;
+
+int runCommand(const Args& args);    // fgsg run FILE ...
+int checkCommand(const Args& args);  // fgsg check FILE
+int irCommand(const Args& args);     // fgsg ir FILE
+int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
+
+}  // namespace fgsg::cli

@@ -1,0 +1,187 @@
+// The abstract syntax tree of a .fgsg program. Built from the ANTLR parse tree by
+// ast_builder.cpp with typed functions; every node carries its source range so that
+// semantic analysis and later passes can point at the text that caused a problem.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fgsg::frontend {
+
+struct SourceLoc {
+  int line = 0;  // 1-based
+  int col = 0;   // 1-based, in characters
+};
+
+struct SourceRange {
+  SourceLoc begin;
+  SourceLoc end;  // last character, inclusive
+};
+
+// ---------------------------------------------------------------- expressions
+
+enum class ExprKind {
+  Number,     // 3, 0.5            -> number
+  Bool,       // true, false       -> boolean
+  String,     // "street"          -> text
+  Ident,      // x, building_height, pi
+  Unary,      // op in text: "-", "!", "+"
+  Binary,     // op in text: + - * / % ^ == != < <= > >= && ||
+  Ternary,    // args[0] ? args[1] : args[2]
+  Call,       // text(args...)          e.g. Rand(1, 2), sin(x)
+  Member,     // object.text or object.text(args...) e.g. Scope.sx, F1.vector1,
+              // Shape.visible("street"), context.mask(texCoord); `hasCall` tells which
+  Vector,     // (a, b, c) literal
+  RelSize,    // 1r: a size relative to the remaining space (number holds 1)
+  FloatSize,  // ~e: a floating size, args[0] is e
+};
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+struct Expr {
+  ExprKind kind = ExprKind::Number;
+  SourceRange range;
+  double number = 0.0;
+  bool boolean = false;
+  std::string text;    // identifier, string literal, operator or member name
+  std::string object;  // for Member: the left side ("Scope", "F1", "context")
+  bool hasCall = false;
+  std::vector<ExprPtr> args;
+};
+
+// ---------------------------------------------------------------- successors
+
+struct Successor;
+
+enum class ItemKind {
+  Call,     // an identifier, optional (args), optional { body | body }: a shape symbol
+            // or a command (T, S, Subdiv, I, Lock, ...); which one is decided by name
+  Turtle,   // a turtle symbol + - & ^ \ / | ! $ with optional (args); `name` is the symbol
+  Bracket,  // [ children ]
+};
+
+struct Item {
+  ItemKind kind = ItemKind::Call;
+  SourceRange range;
+  std::string name;
+  std::vector<ExprPtr> args;
+  bool hasBody = false;
+  std::vector<Successor> body;  // parts between '|' or ',' inside { }
+  std::vector<Item> children;   // Bracket contents
+};
+
+struct Successor {
+  SourceRange range;
+  bool epsilon = false;  // written as ε / epsilon / NIL: explicitly empty
+  std::vector<Item> items;
+};
+
+// ---------------------------------------------------------------- rules
+
+struct ParamDecl {
+  std::string name;
+  SourceRange range;
+};
+
+// One module of a predecessor or context pattern: A, A(x, y). In a right context the
+// names "[" and "]" stand for a bracket (ABOP context matching skips/enters branches).
+struct ModulePattern {
+  std::string name;
+  SourceRange range;
+  std::vector<ParamDecl> params;
+};
+
+struct Branch {
+  SourceRange range;
+  Successor successor;
+  ExprPtr probability;  // null: weight 1
+};
+
+struct Rule {
+  SourceRange range;
+  std::string label;  // "1", "p4" or empty
+  int priority = 0;   // from the last `priority N:` before the rule
+  std::vector<ModulePattern> leftContext;   // lc < pred
+  ModulePattern predecessor;
+  std::vector<ModulePattern> rightContext;  // pred > rc
+  ExprPtr guard;                            // null: always true
+  std::vector<Branch> branches;             // one or more `~> successor : prob`
+};
+
+// ---------------------------------------------------------------- declarations
+
+struct ValueDecl {  // const name = expr;   attr name = expr;
+  SourceRange range;
+  bool isAttr = false;
+  std::string name;
+  ExprPtr value;
+};
+
+struct SurfaceDecl {  // surface "bunny.off";   surface torus(2, 0.6);
+  SourceRange range;
+  std::string path;       // non-empty for a file
+  std::string generator;  // non-empty for a procedural surface
+  std::vector<ExprPtr> args;
+};
+
+// One statement of a field design block: `wedge at (0.2,0.1,0.9) decay 2;` becomes
+// kind "wedge" and words [("at", vector expr), ("decay", 2)]. A word without a value
+// has a null expr; a value without a keyword has an empty keyword.
+struct FieldDesignWord {
+  std::string keyword;
+  ExprPtr value;
+};
+struct FieldDesignItem {
+  SourceRange range;
+  std::string kind;
+  std::vector<FieldDesignWord> words;
+};
+
+struct FieldDecl {
+  SourceRange range;
+  std::string name;
+  std::string source;     // "file" | "design" | "curvature" | "call"
+  std::string function;   // tensor / vector for file and design, or the call's name
+  std::string path;       // for file sources: tensor("foot.tfield")
+  std::vector<ExprPtr> args;
+  std::vector<FieldDesignItem> design;
+};
+
+struct TextureDecl {  // texture mask = "paint.png";
+  SourceRange range;
+  std::string name;
+  std::string path;
+};
+
+struct DeriveDecl {  // derive parallel 5;  derive depthfirst;  derive breadthfirst;
+  SourceRange range;
+  std::string mode;
+  ExprPtr steps;  // null unless given
+};
+
+struct TurtleDecl {  // turtle angle 60 step 1 width 0.05;
+  SourceRange range;
+  std::vector<std::pair<std::string, ExprPtr>> settings;
+};
+
+struct AxiomDecl {  // axiom: S(20,0,12) footprint;
+  SourceRange range;
+  Successor successor;
+};
+
+struct Program {
+  std::string fileName;
+  std::vector<ValueDecl> values;
+  std::vector<Rule> rules;
+  std::vector<SurfaceDecl> surfaces;
+  std::vector<FieldDecl> fields;
+  std::vector<TextureDecl> textures;
+  std::vector<DeriveDecl> derives;
+  std::vector<TurtleDecl> turtles;
+  std::vector<AxiomDecl> axioms;
+};
+
+}  // namespace fgsg::frontend

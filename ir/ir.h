@@ -1,0 +1,216 @@
+// The typed intermediate representation of a grammar. Rules are functions of their
+// parameters; a successor is a sequence of ops (with nested blocks for split bodies);
+// guards, probabilities and arguments are expression trees. The IR is what the
+// interpreter executes and what the LLVM backend compiles, so it holds no runtime
+// data structures: only indices into the module's tables.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fgsg::ir {
+
+struct Loc {
+  int line = 0;
+  int col = 0;
+};
+
+enum class Type : uint8_t { Num, Bool, Str, Vec3 };
+
+const char* typeName(Type t);
+// Number of double slots a value of this type takes in a parameter block. Strings are
+// indices into Module::strings, booleans 0/1.
+inline int slotWidth(Type t) { return t == Type::Vec3 ? 3 : 1; }
+
+// ---------------------------------------------------------------- expressions
+
+enum class ExprOp : uint8_t {
+  Const,   // num (Num/Bool/Str id) or vec (Vec3)
+  Param,   // slot: first slot of the parameter in the rule's parameter block
+  Attr,    // index into Module::attrs
+  Neg, Not,
+  Add, Sub, Mul, Div, Mod, Pow,
+  Eq, Ne, Lt, Le, Gt, Ge,
+  And, Or,  // short-circuit
+  Select,   // args[0] ? args[1] : args[2]
+  Call,     // builtin: Builtin
+  Rand,     // uniform in [args[0], args[1]) from the shape's random stream
+  Query,    // query: Query; args as the query takes
+  MakeVec,  // (x, y, z)
+  VecElem,  // args[0].x/.y/.z: index 0..2
+};
+
+enum class Builtin : uint8_t {
+  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Min, Max, Floor, Ceil, Round,
+  Clamp, Lerp, Pow, Exp, Log, Sign, Length, Dot, Normalize,
+};
+
+// What a query asks of the current shape or its environment.
+enum class Query : uint8_t {
+  ScopeSx, ScopeSy, ScopeSz, ScopePx, ScopePy, ScopePz,  // Scope.sx ...
+  ShapeDepth,          // Shape.depth: derivation depth (axiom = 0)
+  ShapeIndex,          // Shape.index: position among the siblings of one successor
+  ShapeVisible,        // Shape.visible("street"): args[0] a Str
+  ScopeOcc,            // Scope.occ("noparent"): Str "none" | "part" | "full"
+  Field,               // F1.member: index = field, member in Module::strings[args...]
+  Texture,             // texture.sample(uv): index = texture
+};
+
+struct Expr {
+  ExprOp op = ExprOp::Const;
+  Type type = Type::Num;
+  double num = 0.0;
+  double vec[3] = {0, 0, 0};
+  uint32_t index = 0;  // Param slot, Attr index, Builtin, Query, VecElem lane, field index
+  uint32_t extra = 0;  // Query::Field: string id of the member name
+  std::vector<Expr> args;
+  Loc loc;
+
+  static Expr number(double v);
+  static Expr boolean(bool v);
+  static Expr string(uint32_t id);
+  bool isConst() const { return op == ExprOp::Const; }
+};
+
+// ---------------------------------------------------------------- ops
+
+// A size argument: absolute (h), relative to the remaining space (1r), or floating (~h).
+struct Size {
+  enum Kind : uint8_t { Absolute, Relative, Floating } kind = Absolute;
+  Expr value;
+};
+
+enum class OpKind : uint8_t {
+  Translate,     // args tx ty tz
+  Rotate,        // axis 0/1/2 (Rx Ry Rz), args[0] degrees; axis 3: R(ax, ay, az)
+  RotateNormal,  // RS(a): about the scope's normal (Z on the plane)
+  Scale,         // S(sx, sy, sz): sizes (may be 1r)
+  Push, Pop,     // [ ]
+  Instance,      // I / IC / IM: index = asset; mode; args (IM: maxDist, maxAngle)
+  Emit,          // a shape: index = symbol, args = parameter values
+  Turtle,        // index = TurtleOp, args optional
+  Subdiv,        // axis 0/1/2; sizes; one body per size
+  Repeat,        // axes mask (1 X, 2 Y, 4 Z); sizes one per axis; bodies[0]
+  Comp,          // str = selector id; bodies: one, applied to every component
+  Extrude,       // args[0] height
+  Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
+  Lock,          // bodies: derived as one unit (collision arrives with IC)
+  Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
+};
+
+enum class InstanceMode : uint8_t { Plain, Collide, Merge };
+
+enum class TurtleOp : uint8_t {
+  Forward,     // F(l): draw a segment and move
+  Move,        // f(l): move without drawing
+  Left,        // +(a)
+  Right,       // -(a)
+  PitchDown,   // &(a)
+  PitchUp,     // ^(a)
+  RollLeft,    // \(a)
+  RollRight,   // /(a)
+  TurnAround,  // |
+  Width,       // !(w)
+};
+
+struct Op;
+using Block = std::vector<Op>;
+
+struct Op {
+  OpKind kind = OpKind::Push;
+  Loc loc;
+  uint32_t index = 0;   // symbol / asset / axis / TurtleOp / axes mask
+  uint32_t str = 0;     // string id (Comp selector, Roof kind)
+  InstanceMode mode = InstanceMode::Plain;
+  std::vector<Expr> args;
+  std::vector<Size> sizes;
+  std::vector<Block> bodies;
+  std::string name;  // Unsupported: the construct; also the source spelling of commands
+  std::string why;   // Unsupported: what it waits for
+};
+
+// ---------------------------------------------------------------- rules and module
+
+struct Param {
+  std::string name;
+  Type type = Type::Num;
+  uint32_t slot = 0;
+};
+
+// One module of a context pattern; symbol ~0u with bracket 1/-1 stands for '[' / ']'.
+struct ContextModule {
+  uint32_t symbol = ~0u;
+  int bracket = 0;
+  std::vector<uint32_t> paramSlots;  // where the matched module's parameters go
+};
+
+struct Alternative {
+  Expr probability;  // weight; alternatives of one shape are normalised at run time
+  Block ops;
+  Loc loc;
+};
+
+struct Rule {
+  uint32_t symbol = 0;
+  std::string label;  // user label or "<symbol>#<n>"
+  int priority = 0;
+  Loc loc;
+  std::vector<Param> params;  // predecessor params first, then context params
+  uint32_t slotCount = 0;     // size of the parameter block
+  std::vector<ContextModule> left, right;
+  bool hasGuard = false;
+  Expr guard;
+  std::vector<Alternative> alternatives;
+};
+
+struct Symbol {
+  std::string name;
+  std::vector<Type> paramTypes;
+  uint32_t slotCount = 0;       // sum of slot widths
+  std::vector<uint32_t> rules;  // indices into Module::rules, in source order
+  int priority = 0;             // highest priority among its rules
+};
+
+struct Attr {
+  std::string name;
+  Type type = Type::Num;
+  Expr value;  // constant default; `--set` replaces it
+};
+
+enum class DeriveMode : uint8_t { BreadthFirst, DepthFirst, Parallel };
+
+struct TurtleSettings {
+  double angle = 90.0;  // default turn for + - & ^ \ / without argument (degrees)
+  double step = 1.0;    // default length for F and f without argument
+  double width = 0.1;   // initial segment width
+};
+
+// An environment declaration the runtime must honour or refuse (surface, field, texture).
+struct EnvDecl {
+  std::string kind;  // "surface" | "field" | "texture"
+  std::string name;
+  std::string detail;
+  Loc loc;
+};
+
+struct Module {
+  std::string sourceName;
+  std::vector<Symbol> symbols;
+  std::vector<Rule> rules;
+  std::vector<Attr> attrs;
+  std::vector<std::string> strings;
+  std::vector<std::string> assets;  // as written: "torus", "wall.obj"
+  Block axiom;
+  DeriveMode mode = DeriveMode::BreadthFirst;
+  int steps = 0;  // parallel derivation steps
+  TurtleSettings turtle;
+  std::vector<EnvDecl> environment;
+
+  uint32_t internString(const std::string& s);
+  uint32_t internAsset(const std::string& s);
+  int findSymbol(const std::string& name) const;
+  int findAttr(const std::string& name) const;
+};
+
+}  // namespace fgsg::ir

@@ -1,0 +1,39 @@
+// Assets that I() places: built-in primitives (cube cylinder sphere torus ico quad disc)
+// and mesh files (OBJ, PLY, OFF, STL via OpenMesh). Every asset is normalised into the
+// unit cube [0,1]^3 (its bounding box stretched to fit; flat axes stay flat) so an
+// instance fills its scope box.
+#pragma once
+
+#include "runtime/mesh.h"
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace fgsg::rt {
+
+// The names of the built-in primitives, in a stable order.
+const std::vector<std::string>& builtinPrimitiveNames();
+
+// Builds a built-in primitive in the unit cube. Cylinder: axis along Y. Torus, disc
+// and quad: lying in the XY plane (normal +Z). Returns false for an unknown name.
+bool makeBuiltinPrimitive(const std::string& name, Mesh& out);
+
+class AssetLibrary {
+ public:
+  // Directories searched, in order, for asset files (the grammar's directory first).
+  void addSearchDir(const std::string& dir) { searchDirs_.push_back(dir); }
+
+  // Returns the index of the asset named as in the grammar, loading it on first use.
+  // A name is a built-in primitive, or a file found in the search directories; an
+  // unknown name or an unreadable file gives -1 and a message in `error`.
+  int resolve(const std::string& name, std::string& error);
+  const Mesh& mesh(int index) const { return meshes_[index]; }
+
+ private:
+  std::vector<std::string> searchDirs_;
+  std::vector<Mesh> meshes_;
+  std::unordered_map<std::string, int> byName_;
+};
+
+}  // namespace fgsg::rt

@@ -1,0 +1,44 @@
+// The scope of a shape (CGA / FGSG): an oriented box with position P, orthonormal axes
+// X Y Z (the columns of `axes`) and size S. A shape's local point (u, v, w) in [0,1]^3
+// lies at P + axes * (S .* (u, v, w)) in world space.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace fgsg::rt {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Mat4 = Eigen::Matrix4d;
+
+struct Scope {
+  Vec3 P = Vec3::Zero();
+  Mat3 axes = Mat3::Identity();  // columns: X, Y, Z
+  Vec3 S = Vec3::Ones();
+
+  Vec3 X() const { return axes.col(0); }
+  Vec3 Y() const { return axes.col(1); }
+  Vec3 Z() const { return axes.col(2); }
+
+  // Maps the unit cube [0,1]^3 onto the scope box (axes scaled by S, then translated).
+  Mat4 unitBoxToWorld() const {
+    Mat4 m = Mat4::Identity();
+    m.block<3, 3>(0, 0) = axes * S.asDiagonal();
+    m.block<3, 1>(0, 3) = P;
+    return m;
+  }
+  // World position of local coordinates given in scope units (not normalised).
+  Vec3 toWorld(const Vec3& local) const { return P + axes * local; }
+};
+
+// Rotates the scope's axes by `degrees` about its own local axis 0/1/2 (the CGA and FGSG
+// convention: Rz turns X towards Y).
+inline void rotateLocal(Scope& s, int axis, double degrees) {
+  const double r = degrees * 3.14159265358979323846 / 180.0;
+  Vec3 a = Vec3::Zero();
+  a[axis] = 1.0;
+  s.axes = s.axes * Eigen::AngleAxisd(r, a).toRotationMatrix();
+}
+
+}  // namespace fgsg::rt

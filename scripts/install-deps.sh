@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian bookworm packages fgsg builds against. Idempotent and non-interactive:
+# packages already present are skipped, so a second run costs one dpkg query.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  antlr4 libantlr4-runtime-dev
+  llvm-19-dev
+  libeigen3-dev libopenmesh-dev
+  catch2
+  libtbb-dev libfcl-dev libembree-dev
+  libtinygltf-dev libstb-dev libedit-dev
+  nlohmann-json3-dev
+  zlib1g-dev libzstd-dev libxml2-dev libffi-dev libedit-dev libncurses-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "fgsg: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
+fi
