@@ -42,3 +42,14 @@ inline void rotateLocal(Scope& s, int axis, double degrees) {
 }
 
 }  // namespace fgsg::rt
+
+namespace fgsg::rt {
+
+// Turns the scope's axes by `degrees` about a world direction through the scope's
+// origin (RS: about the surface normal; on the plane, its Z).
+inline void rotateAboutNormal(Scope& s, const Vec3& normal, double degrees) {
+  const double r = degrees * 3.14159265358979323846 / 180.0;
+  s.axes = Eigen::AngleAxisd(r, normal.normalized()).toRotationMatrix() * s.axes;
+}
+
+}  // namespace fgsg::rt

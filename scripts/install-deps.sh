@@ -12,10 +12,12 @@ packages=(
   libtbb-dev libfcl-dev libembree-dev
   libtinygltf-dev libstb-dev libedit-dev
   nlohmann-json3-dev
-  zlib1g-dev libzstd-dev libxml2-dev libffi-dev libedit-dev libncurses-dev
+  zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev
 )
 
 missing=()
+# Node.js may come from another source (it bundles npm); only ask Debian when absent.
+command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
@@ -28,3 +30,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get update -qq
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
 fi
+
+# The official glTF validator (npm) judges the .glb files the tests write.
+"$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/install-gltf-validator.sh"

@@ -1,0 +1,213 @@
+#include "backend/interp/eval.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace fgsg::backend {
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+}  // namespace
+
+double Evaluator::num(const ir::Expr& e, const Frame& f) const {
+  using ir::ExprOp;
+  switch (e.op) {
+    case ExprOp::Const: return e.num;
+    case ExprOp::Param: return f.params[e.index];
+    case ExprOp::Attr: return attrs_[3 * e.index];
+    case ExprOp::Neg: return -num(e.args[0], f);
+    case ExprOp::Not: return num(e.args[0], f) == 0.0 ? 1.0 : 0.0;
+    case ExprOp::Add: return num(e.args[0], f) + num(e.args[1], f);
+    case ExprOp::Sub: return num(e.args[0], f) - num(e.args[1], f);
+    case ExprOp::Mul: return num(e.args[0], f) * num(e.args[1], f);
+    case ExprOp::Div: return num(e.args[0], f) / num(e.args[1], f);
+    case ExprOp::Mod: return std::fmod(num(e.args[0], f), num(e.args[1], f));
+    case ExprOp::Pow: return std::pow(num(e.args[0], f), num(e.args[1], f));
+    case ExprOp::Eq:
+    case ExprOp::Ne: {
+      bool eq;
+      if (e.args[0].type == ir::Type::Vec3)
+        eq = vec(e.args[0], f) == vec(e.args[1], f);
+      else
+        eq = num(e.args[0], f) == num(e.args[1], f);
+      return (e.op == ExprOp::Eq) == eq ? 1.0 : 0.0;
+    }
+    case ExprOp::Lt: return num(e.args[0], f) < num(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Le: return num(e.args[0], f) <= num(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Gt: return num(e.args[0], f) > num(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Ge: return num(e.args[0], f) >= num(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::And: return truth(e.args[0], f) && truth(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Or: return truth(e.args[0], f) || truth(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Select: return truth(e.args[0], f) ? num(e.args[1], f) : num(e.args[2], f);
+    case ExprOp::Call: return call(e, f);
+    case ExprOp::Rand: {
+      // Bounds first, then the draw: the order every engine follows.
+      const double lo = num(e.args[0], f), hi = num(e.args[1], f);
+      return lo + (hi - lo) * f.rng->next();
+    }
+    case ExprOp::Query: return query(e, f);
+    case ExprOp::VecElem: return vec(e.args[0], f)[e.index];
+    case ExprOp::MakeVec: break;
+  }
+  throw DeriveError{e.loc, "R900", "internal: a vector was used as a number"};
+}
+
+rt::Vec3 Evaluator::vec(const ir::Expr& e, const Frame& f) const {
+  using ir::ExprOp;
+  switch (e.op) {
+    case ExprOp::Const: return {e.vec[0], e.vec[1], e.vec[2]};
+    case ExprOp::Param: return {f.params[e.index], f.params[e.index + 1], f.params[e.index + 2]};
+    case ExprOp::Attr: return {attrs_[3 * e.index], attrs_[3 * e.index + 1], attrs_[3 * e.index + 2]};
+    case ExprOp::MakeVec: return {num(e.args[0], f), num(e.args[1], f), num(e.args[2], f)};
+    case ExprOp::Neg: return -vec(e.args[0], f);
+    case ExprOp::Add: return vec(e.args[0], f) + vec(e.args[1], f);
+    case ExprOp::Sub: return vec(e.args[0], f) - vec(e.args[1], f);
+    case ExprOp::Mul:
+      if (e.args[0].type == ir::Type::Vec3) return vec(e.args[0], f) * num(e.args[1], f);
+      return num(e.args[0], f) * vec(e.args[1], f);
+    case ExprOp::Div: return vec(e.args[0], f) / num(e.args[1], f);
+    case ExprOp::Select: return truth(e.args[0], f) ? vec(e.args[1], f) : vec(e.args[2], f);
+    case ExprOp::Call:
+      if (static_cast<ir::Builtin>(e.index) == ir::Builtin::Normalize) {
+        rt::Vec3 v = vec(e.args[0], f);
+        double n = v.norm();
+        return n > 0 ? rt::Vec3(v / n) : v;
+      }
+      break;
+    case ExprOp::Query: break;
+    default: break;
+  }
+  throw DeriveError{e.loc, "R001", "this vector value is not available yet (field queries arrive "
+                                   "with surfaces and fields)"};
+}
+
+void Evaluator::store(const ir::Expr& e, const Frame& f, double* out) const {
+  if (e.type == ir::Type::Vec3) {
+    rt::Vec3 v = vec(e, f);
+    out[0] = v.x(), out[1] = v.y(), out[2] = v.z();
+  } else {
+    out[0] = num(e, f);
+  }
+}
+
+double Evaluator::call(const ir::Expr& e, const Frame& f) const {
+  using ir::Builtin;
+  auto a = [&](int k) { return num(e.args[k], f); };
+  switch (static_cast<Builtin>(e.index)) {
+    case Builtin::Sin: return std::sin(a(0) * kDegToRad);
+    case Builtin::Cos: return std::cos(a(0) * kDegToRad);
+    case Builtin::Tan: return std::tan(a(0) * kDegToRad);
+    case Builtin::Asin: return std::asin(a(0)) / kDegToRad;
+    case Builtin::Acos: return std::acos(a(0)) / kDegToRad;
+    case Builtin::Atan: return std::atan(a(0)) / kDegToRad;
+    case Builtin::Atan2: {
+      const double y = a(0), x = a(1);
+      return std::atan2(y, x) / kDegToRad;
+    }
+    case Builtin::Sqrt: return std::sqrt(a(0));
+    case Builtin::Abs: return std::abs(a(0));
+    case Builtin::Min: { const double x = a(0), y = a(1); return std::min(x, y); }
+    case Builtin::Max: { const double x = a(0), y = a(1); return std::max(x, y); }
+    case Builtin::Floor: return std::floor(a(0));
+    case Builtin::Ceil: return std::ceil(a(0));
+    case Builtin::Round: return std::round(a(0));
+    case Builtin::Clamp: {
+      const double x = a(0), lo = a(1), hi = a(2);
+      return std::min(std::max(x, lo), hi);
+    }
+    case Builtin::Lerp: {
+      const double x = a(0), y = a(1), t = a(2);
+      return x + (y - x) * t;
+    }
+    case Builtin::Pow: { const double x = a(0), y = a(1); return std::pow(x, y); }
+    case Builtin::Exp: return std::exp(a(0));
+    case Builtin::Log: return std::log(a(0));
+    case Builtin::Sign: { const double x = a(0); return (x > 0) - (x < 0); }
+    case Builtin::Length: return vec(e.args[0], f).norm();
+    case Builtin::Dot: { rt::Vec3 x = vec(e.args[0], f); return x.dot(vec(e.args[1], f)); }
+    case Builtin::Normalize: break;
+  }
+  throw DeriveError{e.loc, "R900", "internal: unknown builtin"};
+}
+
+double Evaluator::query(const ir::Expr& e, const Frame& f) const {
+  using ir::Query;
+  const auto q = static_cast<Query>(e.index);
+  const bool needsScope = q != Query::ShapeDepth && q != Query::ShapeIndex &&
+                          q != Query::Field && q != Query::Texture;
+  if (needsScope && !f.scope)
+    throw DeriveError{e.loc, "R006",
+                      "scope queries cannot be answered while a parallel derivation rewrites "
+                      "its string: modules get their scope only when the turtle interprets it"};
+  switch (q) {
+    case Query::ScopeSx: return f.scope->S.x();
+    case Query::ScopeSy: return f.scope->S.y();
+    case Query::ScopeSz: return f.scope->S.z();
+    case Query::ScopePx: return f.scope->P.x();
+    case Query::ScopePy: return f.scope->P.y();
+    case Query::ScopePz: return f.scope->P.z();
+    case Query::ShapeDepth: return f.depth;
+    case Query::ShapeIndex: return f.index;
+    case Query::ShapeVisible: return f.host->visible(*f.scope, string(num(e.args[0], f)), e.loc);
+    case Query::ScopeOcc: return f.host->occlusion(*f.scope, e.loc);
+    case Query::Field:
+      throw DeriveError{e.loc, "R001",
+                        "field queries are not yet supported: surfaces and fields arrive with the "
+                        "field-guided surfaces work; this grammar parses and type-checks"};
+    case Query::Texture:
+      throw DeriveError{e.loc, "R001",
+                        "texture contexts are not yet supported: they arrive with on-mesh "
+                        "marching; this grammar parses and type-checks"};
+  }
+  throw DeriveError{e.loc, "R900", "internal: unknown query"};
+}
+
+std::vector<double> attributeSlots(
+    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  std::vector<double> slots(3 * m.attrs.size(), 0.0);
+  for (size_t i = 0; i < m.attrs.size(); ++i) {
+    const ir::Expr& v = m.attrs[i].value;
+    slots[3 * i] = m.attrs[i].type == ir::Type::Vec3 ? v.vec[0] : v.num;
+    slots[3 * i + 1] = v.vec[1];
+    slots[3 * i + 2] = v.vec[2];
+  }
+  for (const auto& [name, text] : overrides) {
+    int a = m.findAttr(name);
+    if (a < 0) {
+      std::string known;
+      for (const auto& at : m.attrs) known += (known.empty() ? "" : ", ") + at.name;
+      throw DeriveError{{}, "R010",
+                        "--set " + name + ": the grammar declares no attr '" + name + "'" +
+                            (known.empty() ? " (it declares none)" : " (attrs: " + known + ")")};
+    }
+    double* out = &slots[3 * a];
+    switch (m.attrs[a].type) {
+      case ir::Type::Num: {
+        char* end = nullptr;
+        double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !std::isfinite(v))
+          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected a number"};
+        out[0] = v;
+        break;
+      }
+      case ir::Type::Bool:
+        if (text != "true" && text != "false" && text != "1" && text != "0")
+          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected true or false"};
+        out[0] = (text == "true" || text == "1") ? 1.0 : 0.0;
+        break;
+      case ir::Type::Str: out[0] = m.internString(text); break;
+      case ir::Type::Vec3: {
+        double x, y, z;
+        char tail;
+        if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3)
+          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected x,y,z"};
+        out[0] = x, out[1] = y, out[2] = z;
+        break;
+      }
+    }
+  }
+  return slots;
+}
+
+}  // namespace fgsg::backend

@@ -1,0 +1,65 @@
+// Expression evaluation for the interpreter: the reference semantics of every IR
+// expression. Numbers are doubles; booleans 0/1; strings their id in the string table;
+// vectors three doubles. Angles are degrees everywhere (trig functions included), as
+// in the scope commands.
+#pragma once
+
+#include "ir/ir.h"
+#include "runtime/random.h"
+#include "runtime/scope.h"
+
+#include <string>
+#include <vector>
+
+namespace fgsg::backend {
+
+// A user-facing problem found while deriving (located in the grammar).
+struct DeriveError {
+  ir::Loc loc;
+  std::string code;
+  std::string message;
+};
+
+// What a query may ask about the shape being derived. Scope is null in a parallel
+// derivation's rewriting steps, where modules have no scope yet.
+struct QueryHost {
+  virtual ~QueryHost() = default;
+  virtual double visible(const rt::Scope& scope, const std::string& target, ir::Loc at) = 0;
+  virtual double occlusion(const rt::Scope& scope, ir::Loc at) = 0;  // a string id
+};
+
+struct Frame {
+  const double* params = nullptr;  // the rule's parameter block
+  rt::RandomStream* rng = nullptr;
+  const rt::Scope* scope = nullptr;
+  uint32_t depth = 0;
+  uint32_t index = 0;
+  QueryHost* host = nullptr;
+};
+
+class Evaluator {
+ public:
+  Evaluator(const ir::Module& m, std::vector<double> attrSlots)
+      : m_(m), attrs_(std::move(attrSlots)) {}
+
+  double num(const ir::Expr& e, const Frame& f) const;
+  rt::Vec3 vec(const ir::Expr& e, const Frame& f) const;
+  bool truth(const ir::Expr& e, const Frame& f) const { return num(e, f) != 0.0; }
+  // Writes a value of any type into slots (1 or 3 doubles).
+  void store(const ir::Expr& e, const Frame& f, double* out) const;
+  const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
+
+ private:
+  double call(const ir::Expr& e, const Frame& f) const;
+  double query(const ir::Expr& e, const Frame& f) const;
+
+  const ir::Module& m_;
+  std::vector<double> attrs_;  // three slots per attribute
+};
+
+// The attribute values for a derivation: defaults, with `--set name=value` overrides
+// parsed by the attribute's type. Throws DeriveError for an unknown name or a bad value.
+std::vector<double> attributeSlots(
+    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides);
+
+}  // namespace fgsg::backend

@@ -1,0 +1,889 @@
+#include "backend/interp/interpreter.h"
+
+#include "backend/interp/eval.h"
+#include "backend/interp/shape_store.h"
+#include "runtime/cga/cga.h"
+#include "runtime/occlusion.h"
+#include "runtime/random.h"
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <cmath>
+#include <deque>
+#include <algorithm>
+#include <map>
+
+namespace fgsg::backend {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Without a surface, patterns grow on the XY plane: RS() turns about its normal.
+const rt::Vec3 kPlaneNormal = rt::Vec3::UnitZ();
+
+// Thrown to end a derivation early when a limit is reached; what was derived is kept.
+struct LimitReached {
+  std::string message;
+  ir::Loc loc;
+};
+
+// One module of a parallel (L-system) string: a shape symbol or a command, with its
+// evaluated arguments in the string's argument pool.
+struct Module {
+  const ir::Op* op = nullptr;  // the op that produced it (Emit for a symbol)
+  uint32_t firstArg = 0;
+  uint32_t argCount = 0;
+  uint64_t key = 0;
+};
+
+class Interpreter final : public QueryHost {
+ public:
+  Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
+              std::vector<double> attrs)
+      : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)) {}
+
+  rt::DeriveResult run() {
+    rt::DeriveResult result;
+    const auto start = Clock::now();
+    start_ = start;
+    try {
+      checkEnvironment();
+      resolveAssets();
+      initOutput();
+      if (m_.mode == ir::DeriveMode::Parallel)
+        runParallel();
+      else
+        runSequential();
+      result.ok = true;
+      if (depthLimitHit_) result.messages.push_back(depthWarning_);
+    } catch (const LimitReached& limit) {
+      if (depthLimitHit_) result.messages.push_back(depthWarning_);
+      result.ok = true;
+      result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
+    } catch (const DeriveError& e) {
+      result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+    }
+    stats_.deriveSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    stats_.instances = out_.instances.size();
+    result.stats = stats_;
+    result.instances = std::move(out_);
+    return result;
+  }
+
+ private:
+  // ------------------------------------------------------------ set-up
+
+  void checkEnvironment() {
+    for (const auto& env : m_.environment)
+      throw DeriveError{env.loc, "R001",
+                        env.kind + " declarations are not yet supported when running: " + env.kind +
+                            "s arrive with the field-guided surfaces work (this grammar parses "
+                            "and type-checks; `fgsg check` accepts it)"};
+  }
+
+  // Every asset is loaded before deriving, so a missing file is reported at its I().
+  void resolveAssets() {
+    assetIndex_.assign(m_.assets.size(), -1);
+    std::vector<ir::Loc> firstUse(m_.assets.size());
+    std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
+      for (const auto& op : b) {
+        if (op.kind == ir::OpKind::Instance && firstUse[op.index].line == 0) firstUse[op.index] = op.loc;
+        for (const auto& body : op.bodies) visit(body);
+      }
+    };
+    visit(m_.axiom);
+    for (const auto& r : m_.rules)
+      for (const auto& a : r.alternatives) visit(a.ops);
+    for (size_t i = 0; i < m_.assets.size(); ++i) {
+      std::string error;
+      assetIndex_[i] = assets_.resolve(m_.assets[i], error);
+      if (assetIndex_[i] < 0) throw DeriveError{firstUse[i], "R003", error};
+    }
+  }
+
+  void initOutput() {
+    out_.assets = m_.assets;
+    for (const auto& s : m_.symbols) out_.symbols.push_back(s.name);
+    segmentAsset_ = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back("cylinder");
+    segmentSymbol_ = static_cast<uint32_t>(out_.symbols.size());
+    out_.symbols.push_back("F");
+    for (const auto& s : m_.symbols) symbolColor_.push_back(colorFor(s.name));
+    symbolColor_.push_back({0.45f, 0.33f, 0.2f});  // turtle segments: bark brown
+    usesOcclusion_ = moduleUsesQuery(ir::Query::ScopeOcc);
+    noneId_ = stringId("none");
+    partId_ = stringId("part");
+    fullId_ = stringId("full");
+  }
+
+  bool moduleUsesQuery(ir::Query q) const {
+    std::function<bool(const ir::Expr&)> inExpr = [&](const ir::Expr& e) {
+      if (e.op == ir::ExprOp::Query && e.index == static_cast<uint32_t>(q)) return true;
+      for (const auto& a : e.args)
+        if (inExpr(a)) return true;
+      return false;
+    };
+    std::function<bool(const ir::Block&)> inBlock = [&](const ir::Block& b) {
+      for (const auto& op : b) {
+        for (const auto& a : op.args)
+          if (inExpr(a)) return true;
+        for (const auto& sz : op.sizes)
+          if (inExpr(sz.value)) return true;
+        for (const auto& body : op.bodies)
+          if (inBlock(body)) return true;
+      }
+      return false;
+    };
+    for (const auto& r : m_.rules) {
+      if (r.hasGuard && inExpr(r.guard)) return true;
+      for (const auto& alt : r.alternatives)
+        if (inExpr(alt.probability) || inBlock(alt.ops)) return true;
+    }
+    return inBlock(m_.axiom);
+  }
+
+  double stringId(const std::string& s) const {
+    for (size_t i = 0; i < m_.strings.size(); ++i)
+      if (m_.strings[i] == s) return static_cast<double>(i);
+    return -1.0 - s.size();  // never equal to a grammar string: nothing compares with it
+  }
+
+  static std::array<float, 3> colorFor(const std::string& name) {
+    // A stable pastel hue per symbol, so parts of a pattern are told apart in previews.
+    const double h = (rt::mix64(std::hash<std::string>{}(name)) % 360) / 60.0;
+    const double x = 1 - std::abs(std::fmod(h, 2.0) - 1);
+    double r = 0, g = 0, b = 0;
+    switch (static_cast<int>(h)) {
+      case 0: r = 1, g = x; break;
+      case 1: r = x, g = 1; break;
+      case 2: g = 1, b = x; break;
+      case 3: g = x, b = 1; break;
+      case 4: r = x, b = 1; break;
+      default: r = 1, b = x; break;
+    }
+    auto pastel = [](double c) { return static_cast<float>(0.35 + 0.55 * c); };
+    return {pastel(r), pastel(g), pastel(b)};
+  }
+
+  // ------------------------------------------------------------ queries
+
+  double visible(const rt::Scope& scope, const std::string& target, ir::Loc at) override {
+    if (target != "street")
+      throw DeriveError{at, "R011",
+                        "Shape.visible(\"" + target + "\"): the only target is \"street\""};
+    // The street lies in front of the lot: the axiom's +Z side. A face sees it when its
+    // outward normal points within 60 degrees of that direction.
+    return scope.Z().dot(streetDirection_) > 0.5 ? 1.0 : 0.0;
+  }
+
+  double occlusion(const rt::Scope& scope, ir::Loc) override {
+    switch (occluders_.test(scope)) {
+      case rt::Occlusion::None: return noneId_;
+      case rt::Occlusion::Partial: return partId_;
+      case rt::Occlusion::Full: return fullId_;
+    }
+    return noneId_;
+  }
+
+  // ------------------------------------------------------------ ops shared by both modes
+
+  struct State {
+    rt::Scope scope;
+    rt::GeomRef geom;
+    double width = 0.1;
+    std::vector<std::tuple<rt::Scope, rt::GeomRef, double>> stack;
+  };
+
+  void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
+                     const double* params, uint32_t paramCount, ir::Loc loc) {
+    rt::Instance inst;
+    inst.asset = asset;
+    inst.symbol = symbol;
+    const rt::Mat4 t = scope.unitBoxToWorld();
+    for (int k = 0; k < 16; ++k) {
+      inst.transform[k] = t.data()[k];
+      if (!std::isfinite(inst.transform[k]))
+        throw DeriveError{loc, "R005",
+                          "this instance's scope is not finite (a parameter became NaN or "
+                          "infinite, e.g. sqrt of a negative number or a division by zero)"};
+    }
+    inst.color = symbolColor_[symbol];
+    inst.firstParam = static_cast<uint32_t>(out_.params.size());
+    inst.paramCount = paramCount;
+    out_.params.insert(out_.params.end(), params, params + paramCount);
+    out_.instances.push_back(inst);
+    if (usesOcclusion_) occluders_.add(scope);
+  }
+
+  void turtle(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc) {
+    using ir::TurtleOp;
+    const double angle = n > 0 ? args[0] : m_.turtle.angle;
+    const double step = n > 0 ? args[0] : m_.turtle.step;
+    switch (op) {
+      case TurtleOp::Forward: {
+        // A segment is a cylinder of the turtle's width along the heading (scope Y).
+        rt::Scope seg = st.scope;
+        seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z());
+        seg.S = rt::Vec3(st.width, step, st.width);
+        placeInstance(segmentAsset_, seg, segmentSymbol_, nullptr, 0, loc);
+        st.scope.P += step * st.scope.Y();
+        break;
+      }
+      case TurtleOp::Move: st.scope.P += step * st.scope.Y(); break;
+      case TurtleOp::Left: rt::rotateLocal(st.scope, 2, angle); break;
+      case TurtleOp::Right: rt::rotateLocal(st.scope, 2, -angle); break;
+      case TurtleOp::PitchDown: rt::rotateLocal(st.scope, 0, angle); break;
+      case TurtleOp::PitchUp: rt::rotateLocal(st.scope, 0, -angle); break;
+      case TurtleOp::RollLeft: rt::rotateLocal(st.scope, 1, angle); break;
+      case TurtleOp::RollRight: rt::rotateLocal(st.scope, 1, -angle); break;
+      case TurtleOp::TurnAround: rt::rotateLocal(st.scope, 2, 180.0); break;
+      case TurtleOp::Width:
+        if (n > 0) st.width = args[0];
+        break;
+    }
+  }
+
+  // Applies a scope command whose arguments are already evaluated. Scale takes pairs
+  // (value, size kind).
+  void scopeCommand(State& st, const ir::Op& op, const double* a) {
+    switch (op.kind) {
+      case ir::OpKind::Translate: st.scope.P += st.scope.axes * rt::Vec3(a[0], a[1], a[2]); break;
+      case ir::OpKind::Rotate:
+        if (op.index < 3) {
+          rt::rotateLocal(st.scope, static_cast<int>(op.index), a[0]);
+        } else {
+          rt::rotateLocal(st.scope, 0, a[0]);
+          rt::rotateLocal(st.scope, 1, a[1]);
+          rt::rotateLocal(st.scope, 2, a[2]);
+        }
+        break;
+      case ir::OpKind::RotateNormal: rt::rotateAboutNormal(st.scope, kPlaneNormal, a[0]); break;
+      case ir::OpKind::Scale:
+        for (int k = 0; k < 3; ++k)
+          st.scope.S[k] = a[2 * k + 1] == static_cast<double>(ir::Size::Relative) ? a[2 * k] * st.scope.S[k] : a[2 * k];
+        break;
+      case ir::OpKind::Push: st.stack.emplace_back(st.scope, st.geom, st.width); break;
+      case ir::OpKind::Pop:
+        if (st.stack.empty())
+          throw DeriveError{op.loc, "R007", "']' without a matching '[' in this string"};
+        std::tie(st.scope, st.geom, st.width) = st.stack.back();
+        st.stack.pop_back();
+        break;
+      default: break;
+    }
+  }
+
+  // Evaluates the arguments of a scope, turtle or instance command into `buf`.
+  uint32_t evalArgs(const ir::Op& op, const Frame& f, double* buf) {
+    if (op.kind == ir::OpKind::Scale) {
+      for (size_t k = 0; k < 3; ++k) {
+        buf[2 * k] = eval_.num(op.sizes[k].value, f);
+        buf[2 * k + 1] = op.sizes[k].kind;
+      }
+      return 6;
+    }
+    uint32_t n = 0;
+    for (const auto& a : op.args) buf[n++] = eval_.num(a, f);
+    return n;
+  }
+
+  // ------------------------------------------------------------ sequential derivation
+
+  void runSequential() {
+    streetDirection_ = rt::Vec3::UnitZ();
+    std::vector<double> none;
+    execRoot(m_.axiom, rt::Scope{}, rt::GeomRef{}, rt::rootKey(opt_.seed), 0, 0, none.data(),
+             UINT32_MAX);
+    while (true) {
+      auto bucket = buckets_.rbegin();
+      while (bucket != buckets_.rend() && bucket->second.empty()) ++bucket;
+      if (bucket == buckets_.rend()) break;
+      uint32_t s;
+      if (m_.mode == ir::DeriveMode::DepthFirst) {
+        s = bucket->second.back();
+        bucket->second.pop_back();
+      } else {
+        s = bucket->second.front();
+        bucket->second.pop_front();
+      }
+      deriveShape(s);
+    }
+  }
+
+  void deriveShape(uint32_t s) {
+    const ir::Symbol& sym = m_.symbols[shapes_.symbol(s)];
+    // Copy what the rule reads: the store grows (and may move) while it runs.
+    params_.assign(shapes_.params(s), shapes_.params(s) + sym.slotCount);
+    const rt::Scope scope = shapes_.scope(s);
+    const uint32_t depth = shapes_.depth(s);
+    rt::RandomStream rng{shapes_.key(s), 0};
+    Frame f{params_.data(), &rng, &scope, depth, shapes_.index(s), this};
+    if (depth >= opt_.maxDepth) {
+      // The depth limit cuts the derivation tree: deeper shapes stay terminal and the
+      // rest of the tree is still derived. Named: the rule that created the shape.
+      ++stats_.terminals;
+      if (!depthLimitHit_) {
+        depthLimitHit_ = true;
+        const uint32_t creator = shapes_.creator(s);
+        const ir::Rule* r = creator == UINT32_MAX ? nullptr : &m_.rules[creator];
+        depthWarning_ = {false, "R004", r ? r->loc.line : 0, r ? r->loc.col : 0,
+                         "depth limit " + std::to_string(opt_.maxDepth) +
+                             " (--max-depth) reached: " +
+                             (r ? "rule '" + r->label + "' keeps creating '" + sym.name + "'"
+                                : std::string("the axiom")) +
+                             "; shapes at that depth stay terminal"};
+      }
+      return;
+    }
+    const ir::Alternative* alt = choose(sym, f);
+    if (!alt) {
+      ++stats_.terminals;
+      return;
+    }
+    ++stats_.rewrites;
+    ++ruleUses_[chosenRule_];
+    if ((stats_.rewrites & 4095) == 0) checkTime();
+    creatorRule_ = chosenRule_;
+    execRoot(alt->ops, scope, shapes_.geom(s), shapes_.key(s), depth + 1, 0, params_.data(),
+             shapes_.symbol(s), &rng);
+    creatorRule_ = UINT32_MAX;
+  }
+
+  // A rule with a guard or a context is specific; one without is general. Specific rules
+  // that apply are preferred (ABOP's precedence of context-sensitive productions; CGA's
+  // guarded rule before its fallback); general rules are candidates only otherwise.
+  static bool isSpecific(const ir::Rule& r) {
+    return r.hasGuard || !r.left.empty() || !r.right.empty();
+  }
+
+  // Picks one alternative among the rules whose guard holds, weights normalised.
+  const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f) {
+    candidates_.clear();
+    double total = 0;
+    for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = m_.rules[ri];
+      if (isSpecific(r) != (pass == 0)) continue;
+      if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
+      for (const auto& alt : r.alternatives) {
+        const double w = eval_.num(alt.probability, f);
+        if (!(w >= 0) || !std::isfinite(w))
+          throw DeriveError{alt.probability.loc, "R008",
+                            "a probability evaluated to " + std::to_string(w) +
+                                "; probabilities must be finite and not negative"};
+        if (w > 0) {
+          candidates_.push_back({&alt, ri, w});
+          total += w;
+        }
+      }
+    }
+    if (candidates_.empty()) return nullptr;
+    chosenRule_ = candidates_.front().rule;
+    if (candidates_.size() == 1) return candidates_.front().alt;
+    double pick = f.rng->next() * total;
+    for (const auto& c : candidates_) {
+      chosenRule_ = c.rule;
+      if (pick < c.weight) return c.alt;
+      pick -= c.weight;
+    }
+    return candidates_.back().alt;
+  }
+
+  // Runs one successor for a shape (or the axiom) and queues the shapes it creates.
+  void execRoot(const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom,
+                uint64_t key, uint32_t depth, uint32_t index, const double* params,
+                uint32_t symbol, rt::RandomStream* rng = nullptr) {
+    rt::RandomStream own{key, 0};
+    State st;
+    st.scope = scope;
+    st.geom = geom;
+    st.width = m_.turtle.width;
+    Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
+    children_.clear();
+    Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
+    execBlock(ops, st, ex, f);
+    if (m_.mode == ir::DeriveMode::DepthFirst) {
+      for (auto it = children_.rbegin(); it != children_.rend(); ++it) enqueue(*it);
+    } else {
+      for (uint32_t c : children_) enqueue(c);
+    }
+  }
+
+  struct Exec {
+    rt::RandomStream* rng;
+    uint64_t key;
+    uint32_t depth;   // depth of the shapes this successor creates
+    uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
+    const double* params;
+    uint32_t childCount;
+  };
+
+  void enqueue(uint32_t s) {
+    const ir::Symbol& sym = m_.symbols[shapes_.symbol(s)];
+    if (sym.rules.empty()) {
+      ++stats_.terminals;
+      return;
+    }
+    buckets_[sym.priority].push_back(s);
+  }
+
+  void execBlock(const ir::Block& ops, State& st, Exec& ex, Frame& f) {
+    double buf[16];
+    for (const ir::Op& op : ops) {
+      f.scope = &st.scope;
+      switch (op.kind) {
+        case ir::OpKind::Translate:
+        case ir::OpKind::Rotate:
+        case ir::OpKind::RotateNormal:
+        case ir::OpKind::Scale:
+        case ir::OpKind::Push:
+        case ir::OpKind::Pop:
+          evalArgs(op, f, buf);
+          scopeCommand(st, op, buf);
+          break;
+        case ir::OpKind::Turtle: {
+          uint32_t n = evalArgs(op, f, buf);
+          turtle(st, static_cast<ir::TurtleOp>(op.index), buf, n, op.loc);
+          break;
+        }
+        case ir::OpKind::Instance: {
+          if (op.mode != ir::InstanceMode::Plain) unsupported(op);
+          const uint32_t sym = ex.symbol == UINT32_MAX ? segmentSymbol_ : ex.symbol;
+          const uint32_t count = ex.symbol == UINT32_MAX ? 0 : m_.symbols[sym].slotCount;
+          placeInstance(op.index, st.scope, sym, ex.params, count, op.loc);
+          break;
+        }
+        case ir::OpKind::Emit: emit(op, st, ex, f); break;
+        case ir::OpKind::Subdiv:
+        case ir::OpKind::Repeat:
+        case ir::OpKind::Comp: split(op, st, ex, f); break;
+        case ir::OpKind::Extrude: {
+          rt::cga::Part part;
+          std::string error;
+          if (!rt::cga::extrude(st.scope, st.geom, eval_.num(op.args[0], f), arena_, part, error))
+            throw DeriveError{op.loc, "R002", error};
+          st.scope = part.scope;
+          st.geom = part.geom;
+          break;
+        }
+        case ir::OpKind::Roof: {
+          rt::cga::Part part;
+          std::string error;
+          if (!rt::cga::roof(st.scope, st.geom, m_.strings[op.str], eval_.num(op.args[0], f), arena_,
+                             part, error))
+            throw DeriveError{op.loc, "R002", error};
+          runBody(op.bodies[0], part.scope, part.geom, st, ex, f);
+          break;
+        }
+        case ir::OpKind::Lock:
+          // Without collision-tested instancing nothing can collide, so the set is
+          // simply derived in order; IC brings the all-or-nothing test.
+          for (const auto& body : op.bodies) runBody(body, st.scope, st.geom, st, ex, f);
+          break;
+        case ir::OpKind::Unsupported: unsupported(op);
+      }
+    }
+  }
+
+  [[noreturn]] void unsupported(const ir::Op& op) {
+    throw DeriveError{op.loc, "R001",
+                      "'" + op.name + "' is not yet supported when running: it arrives with " +
+                          op.why + " (this grammar parses and type-checks)"};
+  }
+
+  void emit(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    const ir::Symbol& target = m_.symbols[op.index];
+    double buf[64];
+    std::vector<double> big;
+    double* slots = buf;
+    if (target.slotCount > 64) {
+      big.resize(target.slotCount);
+      slots = big.data();
+    }
+    uint32_t slot = 0;
+    for (const auto& a : op.args) {
+      eval_.store(a, f, slots + slot);
+      slot += ir::slotWidth(a.type);
+    }
+    if (shapes_.size() >= opt_.maxShapes) shapeLimit(op);
+    const uint32_t index = ex.childCount++;
+    const uint32_t id = shapes_.add(op.index, st.scope, st.geom, ex.depth, index,
+                                    rt::childKey(ex.key, index), creatorRule_, slots,
+                                    target.slotCount);
+    ++stats_.shapesCreated;
+    children_.push_back(id);
+  }
+
+  [[noreturn]] void shapeLimit(const ir::Op& op) {
+    uint32_t worst = 0;
+    uint64_t uses = 0;
+    for (const auto& [rule, n] : ruleUses_)
+      if (n > uses) worst = rule, uses = n;
+    std::string who = ruleUses_.empty() ? std::string("the axiom")
+                                        : "rule '" + m_.rules[worst].label + "' (applied " +
+                                              std::to_string(uses) + " times)";
+    throw LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) +
+                           " shapes (--max-shapes): " + who +
+                           " ran away; the shapes derived so far are kept",
+                       ruleUses_.empty() ? op.loc : m_.rules[worst].loc};
+  }
+
+  void checkTime() {
+    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (t > opt_.maxSeconds)
+      throw LimitReached{"derivation stopped after " + std::to_string(opt_.maxSeconds) +
+                             " s (--max-seconds); the shapes derived so far are kept",
+                         {}};
+  }
+
+  void runBody(const ir::Block& body, const rt::Scope& scope, const rt::GeomRef& geom,
+               const State& outer, Exec& ex, Frame& f) {
+    State inner;
+    inner.scope = scope;
+    inner.geom = geom;
+    inner.width = outer.width;
+    execBlock(body, inner, ex, f);
+    f.scope = &outer.scope;
+  }
+
+  void split(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    std::vector<rt::cga::Part> parts;
+    std::string error;
+    bool ok = false;
+    if (op.kind == ir::OpKind::Subdiv) {
+      std::vector<rt::cga::SizeValue> sizes;
+      for (const auto& s : op.sizes)
+        sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(s.kind), eval_.num(s.value, f)});
+      ok = rt::cga::subdivide(st.scope, st.geom, static_cast<int>(op.index), sizes, arena_, parts, error);
+    } else if (op.kind == ir::OpKind::Repeat) {
+      std::vector<double> sizes;
+      for (const auto& s : op.sizes) sizes.push_back(eval_.num(s.value, f));
+      ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, arena_, parts, error);
+    } else {
+      ok = rt::cga::components(st.scope, st.geom, m_.strings[op.str], arena_, parts, error);
+    }
+    if (!ok) throw DeriveError{op.loc, "R002", error};
+    for (size_t i = 0; i < parts.size(); ++i) {
+      if (parts[i].empty) continue;
+      const ir::Block& body = op.kind == ir::OpKind::Subdiv ? op.bodies[i] : op.bodies[0];
+      runBody(body, parts[i].scope, parts[i].geom, st, ex, f);
+    }
+  }
+
+  // ------------------------------------------------------------ parallel derivation
+
+  void runParallel() {
+    std::vector<Module> str, next;
+    std::vector<double> args, nextArgs;
+    std::vector<double> none;
+    Frame f{none.data(), nullptr, nullptr, 0, 0, this};
+    rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
+    f.rng = &rng;
+    appendModules(m_.axiom, f, rt::rootKey(opt_.seed), str, args);
+    for (int step = 0; step < m_.steps; ++step) {
+      next.clear();
+      nextArgs.clear();
+      for (size_t i = 0; i < str.size(); ++i) {
+        const Module& mod = str[i];
+        if (mod.op->kind != ir::OpKind::Emit || m_.symbols[mod.op->index].rules.empty()) {
+          copyModule(mod, args, next, nextArgs);
+          continue;
+        }
+        const ir::Symbol& sym = m_.symbols[mod.op->index];
+        rt::RandomStream modRng{mod.key, 0};
+        const ir::Alternative* alt = chooseInString(sym, str, args, i, modRng, static_cast<uint32_t>(step));
+        if (!alt) {
+          copyModule(mod, args, next, nextArgs);
+          continue;
+        }
+        ++stats_.rewrites;
+        ++ruleUses_[chosenRule_];
+        Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), 0, this};
+        appendModules(alt->ops, rf, mod.key, next, nextArgs);
+        if (next.size() >= opt_.maxShapes) {
+          str.swap(next);
+          args.swap(nextArgs);
+          interpretString(str, args);
+          shapeLimit(alt->ops.empty() ? ir::Op{} : alt->ops.front());
+        }
+      }
+      str.swap(next);
+      args.swap(nextArgs);
+      checkTime();
+    }
+    interpretString(str, args);
+  }
+
+  static void copyModule(const Module& mod, const std::vector<double>& args,
+                         std::vector<Module>& out, std::vector<double>& outArgs) {
+    Module copy = mod;
+    copy.firstArg = static_cast<uint32_t>(outArgs.size());
+    outArgs.insert(outArgs.end(), args.begin() + mod.firstArg,
+                   args.begin() + mod.firstArg + mod.argCount);
+    out.push_back(copy);
+  }
+
+  // Flattens a successor into string modules, evaluating every argument now.
+  void appendModules(const ir::Block& ops, Frame& f, uint64_t key, std::vector<Module>& out,
+                     std::vector<double>& outArgs) {
+    uint32_t child = 0;
+    double buf[16];
+    for (const ir::Op& op : ops) {
+      Module mod;
+      mod.op = &op;
+      mod.firstArg = static_cast<uint32_t>(outArgs.size());
+      switch (op.kind) {
+        case ir::OpKind::Emit: {
+          const ir::Symbol& target = m_.symbols[op.index];
+          outArgs.resize(outArgs.size() + target.slotCount);
+          uint32_t slot = mod.firstArg;
+          for (const auto& a : op.args) {
+            eval_.store(a, f, outArgs.data() + slot);
+            slot += ir::slotWidth(a.type);
+          }
+          mod.argCount = target.slotCount;
+          mod.key = rt::childKey(key, child++);
+          break;
+        }
+        case ir::OpKind::Translate:
+        case ir::OpKind::Rotate:
+        case ir::OpKind::RotateNormal:
+        case ir::OpKind::Scale:
+        case ir::OpKind::Push:
+        case ir::OpKind::Pop:
+        case ir::OpKind::Turtle:
+        case ir::OpKind::Instance:
+          if (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain) unsupported(op);
+          mod.argCount = evalArgs(op, f, buf);
+          outArgs.insert(outArgs.end(), buf, buf + mod.argCount);
+          break;
+        case ir::OpKind::Unsupported: unsupported(op);
+        default:
+          throw DeriveError{op.loc, "R009",
+                            "'" + op.name + "' cannot appear in a parallel (L-system) derivation: "
+                            "split and component commands need a sequential derivation"};
+      }
+      out.push_back(mod);
+    }
+  }
+
+  // Rule choice for one module of the string: context must match, then the guard.
+  const ir::Alternative* chooseInString(const ir::Symbol& sym, const std::vector<Module>& str,
+                                        const std::vector<double>& args, size_t at,
+                                        rt::RandomStream& rng, uint32_t step) {
+    candidates_.clear();
+    double total = 0;
+    for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = m_.rules[ri];
+      if (isSpecific(r) != (pass == 0)) continue;
+      params_.assign(r.slotCount, 0.0);
+      std::copy(args.begin() + str[at].firstArg, args.begin() + str[at].firstArg + sym.slotCount,
+                params_.begin());
+      if (!matchLeft(r, str, args, at) || !matchRight(r, str, args, at)) continue;
+      Frame f{params_.data(), &rng, nullptr, step, 0, this};
+      if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
+      for (const auto& alt : r.alternatives) {
+        const double w = eval_.num(alt.probability, f);
+        if (!(w >= 0) || !std::isfinite(w))
+          throw DeriveError{alt.probability.loc, "R008", "a probability must be finite and not negative"};
+        if (w > 0) candidates_.push_back({&alt, ri, w}), total += w;
+      }
+    }
+    if (candidates_.empty()) return nullptr;
+    const Candidate* pick = &candidates_.front();
+    if (candidates_.size() > 1) {
+      double x = rng.next() * total;
+      for (const auto& c : candidates_) {
+        pick = &c;
+        if (x < c.weight) break;
+        x -= c.weight;
+      }
+    }
+    chosenRule_ = pick->rule;
+    // Rebuild the chosen rule's parameter block (another rule may have overwritten it).
+    const ir::Rule& r = m_.rules[pick->rule];
+    params_.assign(r.slotCount, 0.0);
+    std::copy(args.begin() + str[at].firstArg, args.begin() + str[at].firstArg + sym.slotCount,
+              params_.begin());
+    matchLeft(r, str, args, at);
+    matchRight(r, str, args, at);
+    return pick->alt;
+  }
+
+  bool isSymbol(const Module& m) const { return m.op->kind == ir::OpKind::Emit; }
+
+  void bind(const ir::ContextModule& cm, const Module& mod, const std::vector<double>& args) {
+    const ir::Symbol& s = m_.symbols[cm.symbol];
+    uint32_t src = mod.firstArg;
+    for (size_t k = 0; k < cm.paramSlots.size() && k < s.paramTypes.size(); ++k) {
+      const int w = ir::slotWidth(s.paramTypes[k]);
+      for (int c = 0; c < w; ++c) params_[cm.paramSlots[k] + c] = args[src + c];
+      src += w;
+    }
+  }
+
+  // ABOP left context: walk left over symbols, skipping commands and whole branches,
+  // and stepping out of the current branch into its parent.
+  bool matchLeft(const ir::Rule& r, const std::vector<Module>& str, const std::vector<double>& args,
+                 size_t at) {
+    long j = static_cast<long>(at) - 1;
+    for (long p = static_cast<long>(r.left.size()) - 1; p >= 0; --p) {
+      const ir::ContextModule& cm = r.left[p];
+      if (cm.bracket != 0) return false;
+      while (j >= 0) {
+        const ir::OpKind k = str[j].op->kind;
+        if (k == ir::OpKind::Pop) {
+          int depth = 0;
+          for (; j >= 0; --j) {
+            if (str[j].op->kind == ir::OpKind::Pop) ++depth;
+            if (str[j].op->kind == ir::OpKind::Push && --depth == 0) break;
+          }
+          --j;
+        } else if (k == ir::OpKind::Emit) {
+          break;
+        } else {
+          --j;
+        }
+      }
+      if (j < 0 || str[j].op->index != cm.symbol) return false;
+      bind(cm, str[j], args);
+      --j;
+    }
+    return true;
+  }
+
+  // ABOP right context: a pattern symbol may descend into branches of the string that
+  // the pattern skips; a pattern ']' skips to the end of the current branch.
+  bool matchRight(const ir::Rule& r, const std::vector<Module>& str, const std::vector<double>& args,
+                  size_t at) {
+    size_t j = at + 1;
+    const size_t n = str.size();
+    auto skipBranch = [&](size_t from) {  // from is a '['; returns the index after its ']'
+      int depth = 0;
+      for (size_t x = from; x < n; ++x) {
+        if (str[x].op->kind == ir::OpKind::Push) ++depth;
+        if (str[x].op->kind == ir::OpKind::Pop && --depth == 0) return x + 1;
+      }
+      return n;
+    };
+    for (const auto& cm : r.right) {
+      if (cm.bracket == 1) {
+        while (j < n && !isSymbol(str[j]) && str[j].op->kind != ir::OpKind::Push &&
+               str[j].op->kind != ir::OpKind::Pop)
+          ++j;
+        if (j >= n || str[j].op->kind != ir::OpKind::Push) return false;
+        ++j;
+      } else if (cm.bracket == -1) {
+        int depth = 0;
+        while (j < n) {
+          if (str[j].op->kind == ir::OpKind::Push) ++depth;
+          if (str[j].op->kind == ir::OpKind::Pop) {
+            if (depth == 0) break;
+            --depth;
+          }
+          ++j;
+        }
+        if (j >= n) return false;
+        ++j;
+      } else {
+        while (j < n && !isSymbol(str[j])) {
+          if (str[j].op->kind == ir::OpKind::Push)
+            j = skipBranch(j);
+          else if (str[j].op->kind == ir::OpKind::Pop)
+            return false;
+          else
+            ++j;
+        }
+        if (j >= n || str[j].op->index != cm.symbol) return false;
+        bind(cm, str[j], args);
+        ++j;
+      }
+    }
+    return true;
+  }
+
+  // The turtle interpretation of the final string: commands act on one scope.
+  void interpretString(const std::vector<Module>& str, const std::vector<double>& args) {
+    streetDirection_ = rt::Vec3::UnitZ();
+    State st;
+    st.width = m_.turtle.width;
+    stats_.stringLength = str.size();
+    for (const Module& mod : str) {
+      const ir::Op& op = *mod.op;
+      const double* a = args.data() + mod.firstArg;
+      switch (op.kind) {
+        case ir::OpKind::Emit: {
+          ++stats_.terminals;
+          ++stats_.shapesCreated;
+          // ABOP: F and f are rewritten by rules and still draw and move when the turtle
+          // reads the final string; their first parameter is the length.
+          const std::string& name = m_.symbols[op.index].name;
+          if (name == "F" || name == "f") {
+            const ir::TurtleOp t = name == "F" ? ir::TurtleOp::Forward : ir::TurtleOp::Move;
+            turtle(st, t, a, std::min<uint32_t>(mod.argCount, 1), op.loc);
+          }
+          break;
+        }
+        case ir::OpKind::Turtle:
+          turtle(st, static_cast<ir::TurtleOp>(op.index), a, mod.argCount, op.loc);
+          break;
+        case ir::OpKind::Instance:
+          placeInstance(op.index, st.scope, segmentSymbol_, nullptr, 0, op.loc);
+          break;
+        default: scopeCommand(st, op, a); break;
+      }
+    }
+  }
+
+  struct Candidate {
+    const ir::Alternative* alt;
+    uint32_t rule;
+    double weight;
+  };
+
+  const ir::Module& m_;
+  const rt::DeriveOptions& opt_;
+  rt::AssetLibrary& assets_;
+  Evaluator eval_;
+  Clock::time_point start_;
+  std::vector<int> assetIndex_;
+  rt::InstanceList out_;
+  rt::DeriveStats stats_;
+  ShapeStore shapes_;
+  rt::GeometryArena arena_;
+  rt::OcclusionIndex occluders_;
+  std::map<int, std::deque<uint32_t>> buckets_;
+  std::vector<uint32_t> children_;
+  std::vector<double> params_;
+  std::vector<Candidate> candidates_;
+  std::map<uint32_t, uint64_t> ruleUses_;
+  uint32_t chosenRule_ = 0;
+  uint32_t creatorRule_ = UINT32_MAX;  // the rule whose successor is running
+  bool depthLimitHit_ = false;
+  rt::DeriveMessage depthWarning_;
+  std::vector<std::array<float, 3>> symbolColor_;
+  uint32_t segmentAsset_ = 0, segmentSymbol_ = 0;
+  bool usesOcclusion_ = false;
+  double noneId_ = -1, partId_ = -1, fullId_ = -1;
+  rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
+};
+
+}  // namespace
+
+rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& options,
+                           rt::AssetLibrary& assets) {
+  ir::Module local = module;  // --set may add strings to the table
+  std::vector<double> attrs;
+  try {
+    attrs = attributeSlots(local, options.attrOverrides);
+  } catch (const DeriveError& e) {
+    rt::DeriveResult r;
+    r.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+    return r;
+  }
+  return Interpreter(local, options, assets, std::move(attrs)).run();
+}
+
+}  // namespace fgsg::backend

@@ -1,0 +1,157 @@
+// fgsg run: compile a grammar, derive it, and write the mesh, preview and instances.
+#include "backend/interp/interpreter.h"
+#include "cli/commands.h"
+#include "cli/compile_file.h"
+#include "cli/options.h"
+#include "runtime/assemble.h"
+#include "runtime/io/write_instances.h"
+#include "runtime/io/write_mesh.h"
+#include "runtime/render/preview.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace fgsg::cli {
+namespace {
+
+struct RunOptions {
+  std::string file;
+  std::string output;
+  std::string preview;
+  std::string instances;
+  bool stats = false;
+  bool quiet = false;
+  rt::DeriveOptions derive;
+};
+
+RunOptions parseRunOptions(const Args& args) {
+  RunOptions o;
+  OptionReader r(args);
+  while (!r.done()) {
+    if (r.peek().empty() || r.peek()[0] != '-') {
+      if (!o.file.empty()) throw UsageError{"more than one grammar file given ('" + o.file + "', '" + r.peek() + "')"};
+      o.file = r.next();
+      continue;
+    }
+    const std::string f = r.flag();
+    if (f == "-o" || f == "--output") o.output = r.value(f);
+    else if (f == "--seed") o.derive.seed = r.unsignedValue(f);
+    else if (f == "--preview") o.preview = r.value(f);
+    else if (f == "--instances") o.instances = r.value(f);
+    else if (f == "--max-shapes") o.derive.maxShapes = r.unsignedValue(f);
+    else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f));
+    else if (f == "--max-seconds") {
+      o.derive.maxSeconds = r.numberValue(f);
+      if (o.derive.maxSeconds <= 0) throw UsageError{"--max-seconds must be positive"};
+    } else if (f == "--stats") o.stats = true;
+    else if (f == "--quiet" || f == "-q") o.quiet = true;
+    else if (f == "--set") {
+      std::string kv = r.value(f);
+      auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw UsageError{"--set expects name=value, got '" + kv + "'"};
+      o.derive.attrOverrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+    } else {
+      throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
+    }
+  }
+  if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
+  if (o.output.empty()) o.output = std::filesystem::path(o.file).stem().string() + ".glb";
+  return o;
+}
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Prints derivation messages like compile diagnostics: location, source line, caret.
+bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& source) {
+  frontend::Diagnostics diags(&source);
+  for (const auto& m : result.messages) {
+    frontend::SourceRange at{{m.line, m.col}, {m.line, m.col}};
+    if (m.isError)
+      diags.error(m.code, at, m.message);
+    else
+      diags.warning(m.code, at, m.message);
+  }
+  diags.print(std::cerr);
+  return !diags.hasErrors();
+}
+
+}  // namespace
+
+int runCommand(const Args& args) {
+  RunOptions opt;
+  try {
+    opt = parseRunOptions(args);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg run: " << e.message << "\n";
+    return 2;
+  }
+  auto compiled = compileFile(opt.file, !opt.quiet);
+  if (!compiled) return 1;
+
+  const auto grammarDir = std::filesystem::path(opt.file).parent_path();
+  rt::AssetLibrary assets;
+  assets.addSearchDir(grammarDir.empty() ? "." : grammarDir.string());
+  assets.addSearchDir((grammarDir / "assets").string());
+
+  auto t0 = std::chrono::steady_clock::now();
+  rt::DeriveResult result = backend::interpret(compiled->module, opt.derive, assets);
+  const double deriveSeconds = since(t0);
+  if (!reportMessages(result, compiled->source)) return 1;
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<int> meshOf;
+  std::string error;
+  if (!rt::resolveAssets(result.instances, assets, meshOf, error)) {
+    std::cerr << "fgsg run: " << error << "\n";
+    return 1;
+  }
+  rt::Mesh mesh = rt::assembleInstances(result.instances, assets, meshOf);
+  const double assembleSeconds = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  if (!rt::io::writeMesh(mesh, opt.output, error)) {
+    std::cerr << "fgsg run: " << error << "\n";
+    return 1;
+  }
+  if (!opt.instances.empty() && !rt::io::writeInstancesJson(result.instances, opt.instances, error)) {
+    std::cerr << "fgsg run: " << error << "\n";
+    return 1;
+  }
+  const double writeSeconds = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  if (!opt.preview.empty()) {
+    std::string warning;
+    if (!rt::render::renderPreview(mesh, rt::render::PreviewOptions{}, opt.preview, error, &warning)) {
+      std::cerr << "fgsg run: " << error << "\n";
+      return 1;
+    }
+    if (!warning.empty() && !opt.quiet) std::cerr << "fgsg run: warning: " << warning << "\n";
+  }
+  const double previewSeconds = since(t0);
+
+  if (!opt.quiet)
+    std::cerr << "wrote " << opt.output << " (" << result.instances.instances.size()
+              << " instances, " << mesh.triangleCount() << " triangles)"
+              << (opt.preview.empty() ? "" : ", preview " + opt.preview) << "\n";
+  if (opt.stats) {
+    const auto& s = result.stats;
+    const auto& t = compiled->times;
+    std::printf("shapes %llu\nrewrites %llu\nterminals %llu\ninstances %llu\ntriangles %zu\n",
+                (unsigned long long)s.shapesCreated, (unsigned long long)s.rewrites,
+                (unsigned long long)s.terminals, (unsigned long long)s.instances,
+                mesh.triangleCount());
+    std::printf("time.parse %.6f\ntime.analyze %.6f\ntime.lower %.6f\ntime.derive %.6f\n"
+                "time.assemble %.6f\ntime.write %.6f\ntime.preview %.6f\n",
+                t.parseSeconds, t.analyzeSeconds, t.lowerSeconds, deriveSeconds, assembleSeconds,
+                writeSeconds, previewSeconds);
+  }
+  return 0;
+}
+
+}  // namespace fgsg::cli

@@ -1,0 +1,251 @@
+// fgsg synth EXAMPLE --size X Y Z [--block N] [--seed N] [--labels out.txt] [-o out.glb]
+//            [--preview out.png] [--periodic] [--mask image.png] [--stats] ...
+// Discrete model synthesis from an example grid (.txt), a WFC tile set (.json) or a
+// labelled image (.png). See docs/synthesis.md.
+#include "cli/commands.h"
+#include "runtime/assemble.h"
+#include "runtime/assets.h"
+#include "runtime/io/write_mesh.h"
+#include "runtime/render/preview.h"
+#include "runtime/synthesis/checker.h"
+#include "runtime/synthesis/synthesis.h"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace fgsg::cli {
+
+namespace {
+
+using namespace fgsg::rt::synthesis;
+
+const char* kUsage =
+    "usage: fgsg synth EXAMPLE --size X Y Z [--block N] [--seed N] [--labels out.txt]\n"
+    "                  [-o out.glb|.obj|.ply] [--preview out.png] [--periodic] [--mask image.png]\n"
+    "                  [--order scanline|entropy] [--retries N] [--attempts N] [--closed]\n"
+    "                  [--border FACE=LABEL] [--symmetry mirror-x|mirror-y|rotate-90|rotate-180|translate-x:N|translate-y:N]\n"
+    "                  [--connect N] [--max-steps N] [--time-limit S] [--cell SIZE] [--stats]\n";
+
+int usage(const std::string& msg) {
+  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kUsage);
+  return 2;
+}
+
+bool toInt(const std::string& s, long long lo, long long hi, long long& v) {
+  auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size() && v >= lo && v <= hi;
+}
+
+bool toDouble(const std::string& s, double& v) {
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return !s.empty() && end == s.c_str() + s.size() && v >= 0 && v < 1e9;
+}
+
+std::string dirOf(const std::string& path) {
+  auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+}  // namespace
+
+int synthCommand(const Args& args) {
+  std::string example, labelsOut, meshOut, previewOut, maskPath;
+  SynthesisOptions o;
+  bool haveSize = false, stats = false, closed = false;
+  double cell = 1.0;
+  std::vector<std::pair<int, std::string>> borders;
+  int connectSeeds = 0;
+  o.attempts = 10;
+  for (size_t i = 0; i < args.size(); ++i) {
+    std::string a = args[i], inlineValue;
+    bool hasInline = false;
+    if (a.rfind("--", 0) == 0 && a.find('=') != std::string::npos && a.rfind("--border", 0) != 0) {
+      inlineValue = a.substr(a.find('=') + 1);
+      a = a.substr(0, a.find('='));
+      hasInline = true;
+    }
+    auto value = [&](std::string& out) {
+      if (hasInline) { out = inlineValue; return true; }
+      if (i + 1 >= args.size()) return false;
+      out = args[++i];
+      return true;
+    };
+    auto intValue = [&](long long lo, long long hi, long long& v) {
+      std::string s;
+      return value(s) && toInt(s, lo, hi, v);
+    };
+    long long v = 0;
+    std::string s;
+    if (a == "--size") {
+      long long n[3];
+      for (int k = 0; k < 3; ++k) {
+        if (i + 1 >= args.size() || !toInt(args[i + 1], 1, 1 << 20, n[k])) {
+          if (k == 2) { n[2] = 1; break; }  // Z may be left out for a planar model
+          return usage("--size needs X Y [Z]: positive integers");
+        }
+        ++i;
+      }
+      o.size = {int(n[0]), int(n[1]), int(n[2])};
+      haveSize = true;
+    } else if (a == "--block") {
+      if (!intValue(0, 1 << 20, v)) return usage("--block needs a block size N >= 0 (0: whole grid)");
+      o.block = {int(v), int(v), int(v)};
+    } else if (a == "--seed") {
+      if (!value(s) || !toInt(s, 0, INT64_MAX, v)) return usage("--seed needs a non-negative integer");
+      o.seed = uint64_t(v);
+    } else if (a == "--labels") {
+      if (!value(labelsOut)) return usage("--labels needs a file name");
+    } else if (a == "-o" || a == "--output") {
+      if (!value(meshOut)) return usage("-o needs a file name (.glb .gltf .obj .ply)");
+    } else if (a == "--preview") {
+      if (!value(previewOut)) return usage("--preview needs a .png file name");
+    } else if (a == "--mask") {
+      if (!value(maskPath)) return usage("--mask needs an image file");
+    } else if (a == "--periodic") {
+      o.periodic = {true, true, false};
+    } else if (a == "--closed") {
+      closed = true;
+    } else if (a == "--stats") {
+      stats = true;
+    } else if (a == "--order") {
+      if (!value(s) || (s != "scanline" && s != "entropy")) return usage("--order is scanline or entropy");
+      o.order = s == "entropy" ? CellOrder::kMinEntropy : CellOrder::kScanline;
+    } else if (a == "--retries") {
+      if (!intValue(0, 1000, v)) return usage("--retries needs an integer 0..1000");
+      o.blockRetries = int(v);
+    } else if (a == "--attempts") {
+      if (!intValue(1, 100000, v)) return usage("--attempts needs an integer 1..100000");
+      o.attempts = int(v);
+    } else if (a == "--connect") {
+      if (!intValue(1, 100000, v)) return usage("--connect needs a seed count >= 1");
+      connectSeeds = int(v);
+    } else if (a == "--max-steps") {
+      if (!intValue(1, INT64_MAX, v)) return usage("--max-steps needs a positive integer");
+      o.maxAssignments = uint64_t(v);
+    } else if (a == "--time-limit") {
+      if (!value(s) || !toDouble(s, o.timeLimitSeconds)) return usage("--time-limit needs seconds >= 0");
+    } else if (a == "--cell") {
+      if (!value(s) || !toDouble(s, cell) || cell <= 0) return usage("--cell needs a size > 0");
+    } else if (a == "--symmetry") {
+      SymmetrySpec sym;
+      if (!value(s) || !parseSymmetry(s, sym))
+        return usage("--symmetry is mirror-x, mirror-y, rotate-90, rotate-180, translate-x:N or translate-y:N");
+      o.symmetry.push_back(sym);
+    } else if (a.rfind("--border", 0) == 0) {
+      std::string spec = a.size() > 8 && a[8] == '=' ? a.substr(9) : "";
+      if (spec.empty() && (i + 1 >= args.size() || (spec = args[++i]).empty())) return usage("--border needs FACE=LABEL");
+      auto eq = spec.find('=');
+      int face = eq == std::string::npos ? -1 : faceFromName(spec.substr(0, eq));
+      if (face < 0) return usage("--border needs FACE=LABEL with FACE one of xmin xmax ymin ymax zmin zmax");
+      borders.push_back({face, spec.substr(eq + 1)});
+    } else if (!a.empty() && a[0] == '-') {
+      return usage("unknown option `" + a + "`");
+    } else if (example.empty()) {
+      example = a;
+    } else {
+      return usage("more than one example given (`" + example + "` and `" + a + "`)");
+    }
+  }
+  if (example.empty()) return usage("no example file given");
+  if (!haveSize) return usage("--size X Y Z is required");
+
+  Example ex;
+  Diagnostics diags;
+  if (!loadExample(example, ex, diags)) {
+    std::fputs(formatDiagnostics(diags).c_str(), stderr);
+    return 1;
+  }
+  BorderSpec border = ex.border;
+  if (closed) border = closedLikeExample(ex, border);
+  for (const auto& [face, label] : borders) {
+    const int32_t l = ex.findLabel(label);
+    if (l < 0) return usage("--border: unknown label `" + label + "` in " + example);
+    border.outside[size_t(face)] = l;
+  }
+  o.border = border;
+  if (connectSeeds > 0) {
+    o.connectivity.enabled = true;
+    o.connectivity.seeds = connectSeeds;
+  }
+  if (!maskPath.empty()) {
+    std::string err;
+    if (!maskFromImage(maskPath, o.size, ex, 4.0, o.weights, err)) {
+      std::fprintf(stderr, "%s: error[E731]: %s\n", maskPath.c_str(), err.c_str());
+      return 1;
+    }
+  }
+
+  SynthesisResult r = synthesize(ex, o);
+  if (stats) {
+    std::fprintf(stderr,
+                 "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
+                 "\"assignments\":%llu,\"propagation_steps\":%llu,\"blocks\":%d,\"blocks_failed\":%d,"
+                 "\"block_retries\":%d,\"attempts\":%d,\"catalog_bytes\":%zu}\n",
+                 r.ok ? "true" : "false", r.consistent ? "true" : "false", o.size.nx, o.size.ny, o.size.nz,
+                 ex.labelCount(), r.stats.seconds, (unsigned long long)r.stats.assignments,
+                 (unsigned long long)r.stats.propagationSteps, r.stats.blocks, r.stats.blocksFailed,
+                 r.stats.blockRetries, r.stats.attempts, r.stats.catalogBytes);
+  }
+  if (!r.ok) {
+    std::fprintf(stderr, "%s: error[E740]: synthesis failed: %s\n", example.c_str(), r.failure.message.c_str());
+    if (!r.consistent) return 1;
+  } else if (r.stats.blocksFailed > 0) {
+    std::fprintf(stderr, "%s: warning: %d of %d blocks could not be modified and were kept; last: %s\n",
+                 example.c_str(), r.stats.blocksFailed, r.stats.blocks, r.failure.message.c_str());
+  }
+  // Belt and braces: never write a model the independent checker rejects.
+  CheckSpec spec;
+  spec.periodic = o.periodic;
+  spec.border = o.border;
+  spec.symmetry = o.symmetry;
+  spec.weights = o.weights.empty() ? nullptr : &o.weights;
+  spec.connectivity = o.connectivity;
+  if (auto v = checkModel(r.labels, ex, spec); !v.empty()) {
+    std::fprintf(stderr, "%s: error[E741]: internal error: output fails the checker: %s\n", example.c_str(),
+                 v[0].what.c_str());
+    return 1;
+  }
+
+  if (!labelsOut.empty()) {
+    std::ofstream out(labelsOut, std::ios::binary);
+    out << writeLabelGridText(r.labels, ex);
+    if (!out) {
+      std::fprintf(stderr, "%s: error[E742]: cannot write the label grid\n", labelsOut.c_str());
+      return 1;
+    }
+  }
+  if (!meshOut.empty() || !previewOut.empty()) {
+    PlacementFrame frame;
+    frame.cellSize = {cell, cell, cell};
+    rt::InstanceList list;
+    appendInstances(piecePlacements(r.labels, ex, frame), "Synth", list);
+    rt::AssetLibrary lib;
+    lib.addSearchDir(dirOf(example));
+    std::vector<int> meshOf;
+    std::string err;
+    if (!rt::resolveAssets(list, lib, meshOf, err)) {
+      std::fprintf(stderr, "%s: error[E743]: %s\n", example.c_str(), err.c_str());
+      return 1;
+    }
+    rt::Mesh mesh = rt::assembleInstances(list, lib, meshOf);
+    if (!meshOut.empty() && !rt::io::writeMesh(mesh, meshOut, err)) {
+      std::fprintf(stderr, "%s: error[E744]: %s\n", meshOut.c_str(), err.c_str());
+      return 1;
+    }
+    if (!previewOut.empty()) {
+      rt::render::PreviewOptions po;
+      std::string warning;
+      if (!rt::render::renderPreview(mesh, po, previewOut, err, &warning)) {
+        std::fprintf(stderr, "%s: error[E745]: %s\n", previewOut.c_str(), err.c_str());
+        return 1;
+      }
+      if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", previewOut.c_str(), warning.c_str());
+    }
+  }
+  return r.ok ? 0 : 1;
+}
+
+}  // namespace fgsg::cli

@@ -1,0 +1,23 @@
+// Reads and compiles a grammar file for a subcommand, printing its diagnostics.
+#pragma once
+
+#include "frontend/diagnostics.h"
+#include "ir/ir.h"
+#include "ir/pipeline.h"
+
+#include <memory>
+#include <string>
+
+namespace fgsg::cli {
+
+struct CompiledFile {
+  frontend::SourceFile source;
+  ir::Module module;
+  ir::CompileTimes times;
+  int warnings = 0;
+};
+
+// Returns null after printing diagnostics (or the read error) to stderr.
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings = true);
+
+}  // namespace fgsg::cli

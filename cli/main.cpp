@@ -1,0 +1,45 @@
+// fgsg: the command-line front door. Each subcommand lives in cmd_<name>.cpp.
+#include "cli/commands.h"
+
+#include <cstring>
+#include <iostream>
+
+namespace {
+
+const char* kHelp = R"(fgsg - field-guided shape grammars: grow geometry from .fgsg grammars
+
+usage:
+  fgsg run FILE [-o out.glb|.obj|.ply] [--seed N] [--set name=value]...
+                [--preview out.png] [--instances out.json] [--max-shapes N]
+                [--max-depth N] [--max-seconds S] [--stats] [--quiet]
+  fgsg check FILE          report errors and warnings; exit 1 on errors
+  fgsg ir FILE             print the typed IR after constant folding
+  fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
+  fgsg --help | --version
+
+run writes FILE's stem + .glb in the current directory when -o is not given.
+Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
+Documentation: docs/language.md, docs/cli.md.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fgsg::cli::Args args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::cout << kHelp;
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    std::cout << "fgsg 0.1.0\n";
+    return 0;
+  }
+  const std::string cmd = args[0];
+  args.erase(args.begin());
+  if (cmd == "run") return fgsg::cli::runCommand(args);
+  if (cmd == "check") return fgsg::cli::checkCommand(args);
+  if (cmd == "ir") return fgsg::cli::irCommand(args);
+  if (cmd == "synth") return fgsg::cli::synthCommand(args);
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth; see fgsg --help)\n";
+  return 2;
+}

@@ -1,0 +1,39 @@
+// Small helpers for reading command-line options with clear errors: every bad flag or
+// value ends in a message naming it and exit code 2 (usage error).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fgsg::cli {
+
+struct UsageError {
+  std::string message;
+};
+
+// Walks the arguments after a subcommand name.
+class OptionReader {
+ public:
+  explicit OptionReader(const std::vector<std::string>& args) : args_(args) {}
+
+  bool done() const { return pos_ >= args_.size(); }
+  const std::string& peek() const { return args_[pos_]; }
+  std::string next() { return args_[pos_++]; }
+
+  // The value of the option just read (`--seed 4` or `--seed=4`).
+  std::string value(const std::string& flag);
+  uint64_t unsignedValue(const std::string& flag);
+  double numberValue(const std::string& flag);
+
+  // Splits `--flag=value` into flag and pending value.
+  std::string flag();
+
+ private:
+  const std::vector<std::string>& args_;
+  size_t pos_ = 0;
+  std::string pending_;
+  bool hasPending_ = false;
+};
+
+}  // namespace fgsg::cli

@@ -1,0 +1,81 @@
+#include "frontend/builtins.h"
+
+#include <cstring>
+
+namespace fgsg::frontend {
+namespace {
+
+constexpr const char* kCollisions = "collision-tested instancing (IC, IM, Lock collisions)";
+constexpr const char* kMarching = "on-mesh marching (Buron et al.)";
+constexpr const char* kLines = "Line/LineSeg merging";
+constexpr const char* kSolvers = "solver commands in grammars";
+
+const CommandInfo kCommands[] = {
+    {CommandId::Translate, "T", 3, 3, BodyRule::None, "T(tx, ty, tz)", nullptr},
+    {CommandId::Rotate, "R", 3, 3, BodyRule::None, "R(ax, ay, az)", nullptr},
+    {CommandId::RotateX, "Rx", 1, 1, BodyRule::None, "Rx(degrees)", nullptr},
+    {CommandId::RotateY, "Ry", 1, 1, BodyRule::None, "Ry(degrees)", nullptr},
+    {CommandId::RotateZ, "Rz", 1, 1, BodyRule::None, "Rz(degrees)", nullptr},
+    {CommandId::RotateX, "RX", 1, 1, BodyRule::None, "RX(degrees)", nullptr},
+    {CommandId::RotateY, "RY", 1, 1, BodyRule::None, "RY(degrees)", nullptr},
+    {CommandId::RotateZ, "RZ", 1, 1, BodyRule::None, "RZ(degrees)", nullptr},
+    {CommandId::RotateNormal, "RS", 1, 1, BodyRule::None, "RS(degrees)", nullptr},
+    {CommandId::Scale, "S", 3, 3, BodyRule::None, "S(sx, sy, sz)", nullptr},
+    {CommandId::Instance, "I", 1, 1, BodyRule::None, "I(\"asset\")", nullptr},
+    {CommandId::InstanceCollide, "IC", 1, 1, BodyRule::None, "IC(\"asset\")", kCollisions},
+    {CommandId::InstanceMerge, "IM", 3, 3, BodyRule::None, "IM(\"asset\", maxDist, maxAngle)",
+     kCollisions},
+    {CommandId::Subdiv, "Subdiv", 2, -1, BodyRule::PerSize, "Subdiv(\"X\", s1, s2, ...){ a | b ... }",
+     nullptr},
+    {CommandId::Repeat, "Repeat", 2, 4, BodyRule::One, "Repeat(\"X\", s){ tile }", nullptr},
+    {CommandId::Comp, "Comp", 1, 1, BodyRule::One, "Comp(\"sidefaces\"){ face }", nullptr},
+    {CommandId::Extrude, "Extrude", 1, 1, BodyRule::None, "Extrude(height)", nullptr},
+    {CommandId::Roof, "Roof", 2, 2, BodyRule::One, "Roof(\"hipped\", angle){ roof }", nullptr},
+    {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
+    {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
+    {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
+    {CommandId::Marching, "Marching", 3, 3, BodyRule::AtLeastOne,
+     "Marching(length, angle, cond){ Top, Extruded }", kMarching},
+    {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", kMarching},
+    {CommandId::Line, "Line", 0, -1, BodyRule::Optional, "Line(...)", kLines},
+    {CommandId::LineSeg, "LineSeg", 0, -1, BodyRule::Optional, "LineSeg(...)", kLines},
+    {CommandId::Synthesize, "Synthesize", 0, -1, BodyRule::Optional, "Synthesize(...)", kSolvers},
+    {CommandId::Evolve, "Evolve", 0, -1, BodyRule::Optional, "Evolve(...)", kSolvers},
+    {CommandId::Cells, "Cells", 0, -1, BodyRule::Optional, "Cells(...)", kSolvers},
+};
+
+const FunctionInfo kFunctions[] = {
+    {"Rand", 2, 2}, {"rand", 2, 2},   {"sin", 1, 1},    {"cos", 1, 1},   {"tan", 1, 1},
+    {"asin", 1, 1}, {"acos", 1, 1},   {"atan", 1, 1},   {"atan2", 2, 2}, {"sqrt", 1, 1},
+    {"abs", 1, 1},  {"min", 2, 2},    {"max", 2, 2},    {"floor", 1, 1}, {"ceil", 1, 1},
+    {"round", 1, 1}, {"clamp", 3, 3}, {"lerp", 3, 3},   {"pow", 2, 2},   {"exp", 1, 1},
+    {"log", 1, 1},  {"sign", 1, 1},   {"length", 1, 1}, {"dot", 2, 2},   {"normalize", 1, 1},
+};
+
+}  // namespace
+
+const CommandInfo* findCommand(const std::string& name) {
+  for (const auto& c : kCommands)
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+const FunctionInfo* findFunction(const std::string& name) {
+  for (const auto& f : kFunctions)
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+bool isFieldMember(const std::string& m, bool& isVector) {
+  static const char* kVectors[] = {"vector", "vector1", "vector2", "gradient", "curl"};
+  static const char* kScalars[] = {"value",  "value1",  "value2",  "length",   "length1",
+                                   "length2", "Xangle", "Xangle1", "Xangle2",  "Yangle1",
+                                   "div",     "mincurv", "maxcurv", "meancurv", "gausscurv"};
+  for (const char* v : kVectors)
+    if (m == v) return isVector = true, true;
+  for (const char* s : kScalars)
+    if (m == s) return isVector = false, true;
+  return false;
+}
+
+}  // namespace fgsg::frontend

@@ -1,0 +1,52 @@
+// The names the language gives meaning to: scope commands and operations that may
+// appear in successors, functions callable in expressions, and query objects. One table
+// each, shared by semantic analysis and lowering so both agree on every name.
+#pragma once
+
+#include <string>
+
+namespace fgsg::frontend {
+
+enum class CommandId {
+  Translate, Rotate, RotateX, RotateY, RotateZ, RotateNormal, Scale,
+  Instance, InstanceCollide, InstanceMerge,
+  Subdiv, Repeat, Comp, Extrude, Roof, Lock,
+  Forward, Move,  // turtle F and f written as identifiers
+  Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
+};
+
+enum class BodyRule {
+  None,        // no { } allowed
+  PerSize,     // one body part per size argument (Subdiv)
+  One,         // exactly one part (Repeat, Comp, Roof)
+  AtLeastOne,  // Lock, Branch, Marching
+  Optional,    // Line / LineSeg / solvers may take one
+};
+
+struct CommandInfo {
+  CommandId id;
+  const char* name;
+  int minArgs;
+  int maxArgs;  // -1: unbounded
+  BodyRule body;
+  const char* signature;  // for messages: "T(tx, ty, tz)"
+  const char* laterIssue;  // non-null: parses and type-checks, but its runtime is not here yet
+};
+
+// The command a successor identifier names, or nullptr for a shape symbol. Accepts the
+// FGSG paper's upper-case spellings RX RY RZ.
+const CommandInfo* findCommand(const std::string& name);
+
+struct FunctionInfo {
+  const char* name;
+  int minArgs;
+  int maxArgs;
+};
+// Math functions and Rand; nullptr when unknown. Names are matched exactly, with
+// `Rand` and `rand` both accepted.
+const FunctionInfo* findFunction(const std::string& name);
+
+// The members a field answers (F1.vector1 ...), with whether the value is a vector.
+bool isFieldMember(const std::string& member, bool& isVector);
+
+}  // namespace fgsg::frontend

@@ -1,0 +1,79 @@
+// Semantic analysis: resolves every name (rule parameters, constants, attributes,
+// functions, queries, commands, shape symbols), infers parameter types, checks arity,
+// types, split bodies and probabilities, and warns about symbols without rules and
+// rules that can never fire. Lowering to IR reads its result and trusts it.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace fgsg::frontend {
+
+enum class ValueType { Unknown, Num, Bool, Str, Vec3 };
+const char* valueTypeName(ValueType t);
+
+struct ConstValue {
+  ValueType type = ValueType::Num;
+  double num = 0.0;  // Num, Bool (0/1)
+  std::string str;
+  double vec[3] = {0, 0, 0};
+};
+
+struct SymbolInfo {
+  std::string name;
+  std::vector<ValueType> params;
+  bool arityKnown = false;
+  std::vector<size_t> rules;  // indices into Program::rules
+  SourceRange firstUse;
+  bool reachable = false;
+};
+
+struct AttrInfo {
+  std::string name;
+  ConstValue value;
+  SourceRange range;
+};
+
+// How an identifier inside a rule resolved.
+struct NameRef {
+  enum Kind { Param, Const, Attr, Builtin } kind = Const;
+  size_t index = 0;   // Param: position in the rule's parameter list; Attr: attr index
+  ConstValue value;   // Const, Builtin (pi)
+};
+
+struct SemaResult {
+  std::vector<SymbolInfo> symbols;
+  std::map<std::string, size_t> symbolIndex;
+  std::vector<AttrInfo> attrs;
+  std::map<std::string, ConstValue> constants;
+  std::vector<std::string> fields, textures;
+  std::unordered_map<const Expr*, ValueType> exprTypes;
+  std::unordered_map<const Expr*, NameRef> names;  // Ident expressions
+  // Per rule: the names and types of its parameters (predecessor, then left and right
+  // context modules in order).
+  std::vector<std::vector<std::pair<std::string, ValueType>>> ruleParams;
+  std::string startSymbol;  // the symbol the derivation starts from when no axiom is given
+  std::string mode = "breadthfirst";
+  int steps = 0;
+  double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
+
+  int findSymbol(const std::string& name) const {
+    auto it = symbolIndex.find(name);
+    return it == symbolIndex.end() ? -1 : static_cast<int>(it->second);
+  }
+};
+
+// Returns false when errors were reported.
+bool analyze(const Program& program, SemaResult& out, Diagnostics& diags);
+
+// True when `item` creates a shape (as opposed to running a command): every identifier
+// that is not a command, and a command name the grammar gives rules to (F in FGSG
+// Fig. 1, S in Fig. 11).
+bool isShapeItem(const Item& item, const SemaResult& sema);
+
+}  // namespace fgsg::frontend

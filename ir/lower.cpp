@@ -1,0 +1,425 @@
+#include "ir/lower.h"
+
+#include "frontend/builtins.h"
+
+#include <algorithm>
+#include <map>
+
+namespace fgsg::ir {
+namespace {
+
+using namespace fgsg::frontend;
+
+Type toType(ValueType t) {
+  switch (t) {
+    case ValueType::Bool: return Type::Bool;
+    case ValueType::Str: return Type::Str;
+    case ValueType::Vec3: return Type::Vec3;
+    default: return Type::Num;
+  }
+}
+
+Loc toLoc(const SourceRange& r) { return Loc{r.begin.line, r.begin.col}; }
+
+class Lowerer {
+ public:
+  Lowerer(const Program& p, const SemaResult& s) : prog_(p), sema_(s) {}
+
+  Module run() {
+    m_.sourceName = prog_.fileName;
+    for (const auto& s : sema_.symbols) {
+      Symbol sym;
+      sym.name = s.name;
+      for (ValueType t : s.params) {
+        sym.paramTypes.push_back(toType(t));
+        sym.slotCount += slotWidth(toType(t));
+      }
+      sym.priority = s.rules.empty() ? 0 : prog_.rules[s.rules.front()].priority;
+      m_.symbols.push_back(sym);
+    }
+    for (const auto& a : sema_.attrs) m_.attrs.push_back({a.name, toType(a.value.type), constant(a.value)});
+    lowerEnvironment();  // first: queries refer to environment entries by index
+    std::map<uint32_t, int> perSymbolCount;
+    for (size_t i = 0; i < prog_.rules.size(); ++i) lowerRule(i, perSymbolCount);
+    lowerAxiom();
+    m_.mode = sema_.mode == "parallel"    ? DeriveMode::Parallel
+              : sema_.mode == "depthfirst" ? DeriveMode::DepthFirst
+                                           : DeriveMode::BreadthFirst;
+    m_.steps = sema_.steps;
+    m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth};
+    return std::move(m_);
+  }
+
+ private:
+  uint32_t symbolIndex(const std::string& name) const {
+    return static_cast<uint32_t>(sema_.findSymbol(name));
+  }
+
+  Expr constant(const ConstValue& v) {
+    switch (v.type) {
+      case ValueType::Bool: return Expr::boolean(v.num != 0);
+      case ValueType::Str: return Expr::string(m_.internString(v.str));
+      case ValueType::Vec3: {
+        Expr e;
+        e.type = Type::Vec3;
+        for (int k = 0; k < 3; ++k) e.vec[k] = v.vec[k];
+        return e;
+      }
+      default: return Expr::number(v.num);
+    }
+  }
+
+  void lowerRule(size_t i, std::map<uint32_t, int>& perSymbolCount) {
+    const frontend::Rule& r = prog_.rules[i];
+    ir::Rule out;
+    out.symbol = symbolIndex(r.predecessor.name);
+    int n = perSymbolCount[out.symbol]++;
+    out.label = r.label.empty() ? r.predecessor.name + "#" + std::to_string(n) : r.label;
+    out.priority = r.priority;
+    out.loc = toLoc(r.range);
+    for (const auto& [name, type] : sema_.ruleParams[i]) {
+      out.params.push_back({name, toType(type), out.slotCount});
+      out.slotCount += slotWidth(toType(type));
+    }
+    // Context modules take their parameters' slots after the predecessor's, in order.
+    size_t next = r.predecessor.params.size();
+    auto context = [&](const std::vector<ModulePattern>& pats, std::vector<ContextModule>& dst) {
+      for (const auto& pat : pats) {
+        ContextModule cm;
+        if (pat.name == "[" || pat.name == "]") {
+          cm.bracket = pat.name == "[" ? 1 : -1;
+        } else {
+          cm.symbol = symbolIndex(pat.name);
+          for (size_t k = 0; k < pat.params.size(); ++k) cm.paramSlots.push_back(out.params[next++].slot);
+        }
+        dst.push_back(cm);
+      }
+    };
+    context(r.leftContext, out.left);
+    context(r.rightContext, out.right);
+    params_ = &out.params;
+    if (r.guard) {
+      out.hasGuard = true;
+      out.guard = expr(*r.guard);
+    }
+    for (const auto& b : r.branches) {
+      Alternative alt;
+      alt.loc = toLoc(b.range);
+      alt.probability = b.probability ? expr(*b.probability) : Expr::number(1.0);
+      alt.ops = block(b.successor);
+      out.alternatives.push_back(std::move(alt));
+    }
+    params_ = nullptr;
+    m_.symbols[out.symbol].rules.push_back(static_cast<uint32_t>(m_.rules.size()));
+    m_.symbols[out.symbol].priority = std::max(m_.symbols[out.symbol].priority, out.priority);
+    m_.rules.push_back(std::move(out));
+  }
+
+  void lowerAxiom() {
+    if (!prog_.axioms.empty()) {
+      m_.axiom = block(prog_.axioms.front().successor);
+      return;
+    }
+    Op emit;
+    emit.kind = OpKind::Emit;
+    emit.index = symbolIndex(sema_.startSymbol);
+    emit.name = sema_.startSymbol;
+    m_.axiom.push_back(std::move(emit));
+  }
+
+  void lowerEnvironment() {
+    for (const auto& s : prog_.surfaces)
+      m_.environment.push_back({"surface", s.path.empty() ? s.generator : s.path,
+                                s.path.empty() ? "procedural" : "file", toLoc(s.range)});
+    for (const auto& f : prog_.fields)
+      m_.environment.push_back({"field", f.name, f.source, toLoc(f.range)});
+    for (const auto& t : prog_.textures)
+      m_.environment.push_back({"texture", t.name, t.path, toLoc(t.range)});
+  }
+
+  // ------------------------------------------------------------ successors
+
+  Block block(const Successor& s) {
+    Block out;
+    for (const auto& item : s.items) lowerItem(item, out);
+    return out;
+  }
+
+  void lowerItem(const Item& item, Block& out) {
+    Op op;
+    op.loc = toLoc(item.range);
+    op.name = item.name;
+    switch (item.kind) {
+      case ItemKind::Bracket: {
+        Op push;
+        push.kind = OpKind::Push;
+        push.loc = op.loc;
+        out.push_back(push);
+        for (const auto& c : item.children) lowerItem(c, out);
+        Op pop;
+        pop.kind = OpKind::Pop;
+        pop.loc = toLoc(SourceRange{item.range.end, item.range.end});
+        out.push_back(pop);
+        return;
+      }
+      case ItemKind::Turtle:
+        op.kind = OpKind::Turtle;
+        op.index = static_cast<uint32_t>(turtleOp(item.name));
+        for (const auto& a : item.args) op.args.push_back(expr(*a));
+        out.push_back(std::move(op));
+        return;
+      case ItemKind::Call: break;
+    }
+    if (isShapeItem(item, sema_)) {
+      op.kind = OpKind::Emit;
+      op.index = symbolIndex(item.name);
+      for (const auto& a : item.args) op.args.push_back(expr(*a));
+      out.push_back(std::move(op));
+      return;
+    }
+    const CommandInfo& cmd = *findCommand(item.name);
+    for (const auto& b : item.body) op.bodies.push_back(block(b));
+    auto allArgs = [&](size_t from) {
+      for (size_t k = from; k < item.args.size(); ++k) op.args.push_back(expr(*item.args[k]));
+    };
+    switch (cmd.id) {
+      case CommandId::Translate: op.kind = OpKind::Translate; allArgs(0); break;
+      case CommandId::Rotate: op.kind = OpKind::Rotate; op.index = 3; allArgs(0); break;
+      case CommandId::RotateX: op.kind = OpKind::Rotate; op.index = 0; allArgs(0); break;
+      case CommandId::RotateY: op.kind = OpKind::Rotate; op.index = 1; allArgs(0); break;
+      case CommandId::RotateZ: op.kind = OpKind::Rotate; op.index = 2; allArgs(0); break;
+      case CommandId::RotateNormal: op.kind = OpKind::RotateNormal; allArgs(0); break;
+      case CommandId::Scale:
+        op.kind = OpKind::Scale;
+        for (const auto& a : item.args) op.sizes.push_back(size(*a));
+        break;
+      case CommandId::Instance:
+      case CommandId::InstanceCollide:
+      case CommandId::InstanceMerge:
+        op.kind = OpKind::Instance;
+        op.mode = cmd.id == CommandId::Instance          ? InstanceMode::Plain
+                  : cmd.id == CommandId::InstanceCollide ? InstanceMode::Collide
+                                                         : InstanceMode::Merge;
+        op.index = m_.internAsset(constString(*item.args[0]));
+        allArgs(1);
+        if (cmd.laterIssue) op.why = cmd.laterIssue;
+        break;
+      case CommandId::Subdiv:
+        op.kind = OpKind::Subdiv;
+        op.index = axisIndex(constString(*item.args[0]));
+        for (size_t k = 1; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
+        break;
+      case CommandId::Repeat: {
+        op.kind = OpKind::Repeat;
+        unsigned mask = 0;
+        for (char c : constString(*item.args[0])) mask |= 1u << axisIndex(std::string(1, c));
+        op.index = mask;
+        // Sizes are listed per axis in the order written; store them low bit first.
+        std::string axes = constString(*item.args[0]);
+        std::vector<std::pair<uint32_t, Size>> bySlot;
+        for (size_t k = 1; k < item.args.size(); ++k)
+          bySlot.push_back({axisIndex(std::string(1, axes[k - 1])), size(*item.args[k])});
+        std::sort(bySlot.begin(), bySlot.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (auto& [axis, s] : bySlot) op.sizes.push_back(std::move(s));
+        break;
+      }
+      case CommandId::Comp:
+        op.kind = OpKind::Comp;
+        op.str = m_.internString(constString(*item.args[0]));
+        break;
+      case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
+      case CommandId::Roof:
+        op.kind = OpKind::Roof;
+        op.str = m_.internString(constString(*item.args[0]));
+        allArgs(1);
+        break;
+      case CommandId::Lock: op.kind = OpKind::Lock; break;
+      case CommandId::Forward:
+      case CommandId::Move:
+        op.kind = OpKind::Turtle;
+        op.index = static_cast<uint32_t>(cmd.id == CommandId::Forward ? TurtleOp::Forward
+                                                                      : TurtleOp::Move);
+        allArgs(0);
+        break;
+      default:
+        op.kind = OpKind::Unsupported;
+        op.why = cmd.laterIssue ? cmd.laterIssue : "";
+        allArgs(0);
+        break;
+    }
+    out.push_back(std::move(op));
+  }
+
+  static uint32_t axisIndex(const std::string& s) {
+    char c = s.empty() ? 'X' : s[0];
+    return (c == 'Y' || c == 'y') ? 1 : (c == 'Z' || c == 'z') ? 2 : 0;
+  }
+
+  static TurtleOp turtleOp(const std::string& name) {
+    switch (name.empty() ? '+' : name[0]) {
+      case '+': return TurtleOp::Left;
+      case '-': return TurtleOp::Right;
+      case '&': return TurtleOp::PitchDown;
+      case '^': return TurtleOp::PitchUp;
+      case '\\': return TurtleOp::RollLeft;
+      case '/': return TurtleOp::RollRight;
+      case '|': return TurtleOp::TurnAround;
+      default: return TurtleOp::Width;  // '!'
+    }
+  }
+
+  std::string constString(const frontend::Expr& e) const {
+    if (e.kind == ExprKind::String) return e.text;
+    auto it = sema_.names.find(&e);
+    if (it != sema_.names.end()) return it->second.value.str;
+    return {};
+  }
+
+  Size size(const frontend::Expr& e) {
+    Size s;
+    if (e.kind == ExprKind::RelSize) {
+      s.kind = Size::Relative;
+      s.value = Expr::number(e.number);
+    } else if (e.kind == ExprKind::FloatSize) {
+      s.kind = Size::Floating;
+      s.value = expr(*e.args[0]);
+    } else {
+      s.value = expr(e);
+    }
+    return s;
+  }
+
+  // ------------------------------------------------------------ expressions
+
+  Type typeOf(const frontend::Expr& e) const {
+    auto it = sema_.exprTypes.find(&e);
+    return it == sema_.exprTypes.end() ? Type::Num : toType(it->second);
+  }
+
+  Expr node(ExprOp op, Type t, const frontend::Expr& src) {
+    Expr e;
+    e.op = op;
+    e.type = t;
+    e.loc = toLoc(src.range);
+    return e;
+  }
+
+  Expr expr(const frontend::Expr& e) {
+    Expr out;
+    switch (e.kind) {
+      case ExprKind::Number:
+      case ExprKind::RelSize: out = Expr::number(e.number); break;
+      case ExprKind::FloatSize: return expr(*e.args[0]);
+      case ExprKind::Bool: out = Expr::boolean(e.boolean); break;
+      case ExprKind::String: out = Expr::string(m_.internString(e.text)); break;
+      case ExprKind::Ident: {
+        const NameRef& ref = sema_.names.at(&e);
+        switch (ref.kind) {
+          case NameRef::Param:
+            out = node(ExprOp::Param, (*params_)[ref.index].type, e);
+            out.index = (*params_)[ref.index].slot;
+            return out;
+          case NameRef::Attr:
+            out = node(ExprOp::Attr, m_.attrs[ref.index].type, e);
+            out.index = static_cast<uint32_t>(ref.index);
+            return out;
+          default: out = constant(ref.value); break;
+        }
+        break;
+      }
+      case ExprKind::Vector:
+        out = node(ExprOp::MakeVec, Type::Vec3, e);
+        for (const auto& a : e.args) out.args.push_back(expr(*a));
+        return out;
+      case ExprKind::Unary:
+        out = node(e.text == "!" ? ExprOp::Not : ExprOp::Neg, typeOf(e), e);
+        if (e.text == "+") return expr(*e.args[0]);
+        out.args.push_back(expr(*e.args[0]));
+        return out;
+      case ExprKind::Binary: {
+        static const std::map<std::string, ExprOp> kOps = {
+            {"+", ExprOp::Add}, {"-", ExprOp::Sub}, {"*", ExprOp::Mul}, {"/", ExprOp::Div},
+            {"%", ExprOp::Mod}, {"^", ExprOp::Pow}, {"==", ExprOp::Eq}, {"!=", ExprOp::Ne},
+            {"<", ExprOp::Lt},  {"<=", ExprOp::Le}, {">", ExprOp::Gt},  {">=", ExprOp::Ge},
+            {"&&", ExprOp::And}, {"||", ExprOp::Or}};
+        out = node(kOps.at(e.text), typeOf(e), e);
+        out.args.push_back(expr(*e.args[0]));
+        out.args.push_back(expr(*e.args[1]));
+        return out;
+      }
+      case ExprKind::Ternary:
+        out = node(ExprOp::Select, typeOf(e), e);
+        for (const auto& a : e.args) out.args.push_back(expr(*a));
+        return out;
+      case ExprKind::Call: {
+        if (e.text == "Rand" || e.text == "rand") {
+          out = node(ExprOp::Rand, Type::Num, e);
+        } else {
+          static const std::map<std::string, Builtin> kFns = {
+              {"sin", Builtin::Sin},     {"cos", Builtin::Cos},     {"tan", Builtin::Tan},
+              {"asin", Builtin::Asin},   {"acos", Builtin::Acos},   {"atan", Builtin::Atan},
+              {"atan2", Builtin::Atan2}, {"sqrt", Builtin::Sqrt},   {"abs", Builtin::Abs},
+              {"min", Builtin::Min},     {"max", Builtin::Max},     {"floor", Builtin::Floor},
+              {"ceil", Builtin::Ceil},   {"round", Builtin::Round}, {"clamp", Builtin::Clamp},
+              {"lerp", Builtin::Lerp},   {"pow", Builtin::Pow},     {"exp", Builtin::Exp},
+              {"log", Builtin::Log},     {"sign", Builtin::Sign},   {"length", Builtin::Length},
+              {"dot", Builtin::Dot},     {"normalize", Builtin::Normalize}};
+          out = node(ExprOp::Call, typeOf(e), e);
+          out.index = static_cast<uint32_t>(kFns.at(e.text));
+        }
+        for (const auto& a : e.args) out.args.push_back(expr(*a));
+        return out;
+      }
+      case ExprKind::Member: return member(e);
+    }
+    out.loc = toLoc(e.range);
+    return out;
+  }
+
+  Expr member(const frontend::Expr& e) {
+    Expr out = node(ExprOp::Query, typeOf(e), e);
+    static const std::map<std::string, Query> kScope = {
+        {"sx", Query::ScopeSx}, {"sy", Query::ScopeSy}, {"sz", Query::ScopeSz},
+        {"px", Query::ScopePx}, {"py", Query::ScopePy}, {"pz", Query::ScopePz}};
+    if (e.object == "Scope" && e.text == "occ") {
+      out.index = static_cast<uint32_t>(Query::ScopeOcc);
+    } else if (e.object == "Scope") {
+      out.index = static_cast<uint32_t>(kScope.at(e.text));
+    } else if (e.object == "Shape") {
+      out.index = static_cast<uint32_t>(e.text == "depth"   ? Query::ShapeDepth
+                                        : e.text == "index" ? Query::ShapeIndex
+                                                            : Query::ShapeVisible);
+    } else if (e.object == "context") {
+      out.index = static_cast<uint32_t>(Query::Texture);
+      out.env = environmentIndex("texture", e.text);
+      return out;  // its argument is always texCoord: the scope's own coordinate
+    } else {
+      out.index = static_cast<uint32_t>(Query::Field);
+      out.extra = m_.internString(e.text);
+      out.env = environmentIndex("field", e.object);
+    }
+    for (const auto& a : e.args) out.args.push_back(expr(*a));
+    return out;
+  }
+
+  uint32_t environmentIndex(const std::string& kind, const std::string& name) const {
+    for (size_t k = 0; k < m_.environment.size(); ++k)
+      if (m_.environment[k].kind == kind && m_.environment[k].name == name)
+        return static_cast<uint32_t>(k);
+    return 0;
+  }
+
+  const Program& prog_;
+  const SemaResult& sema_;
+  Module m_;
+  const std::vector<Param>* params_ = nullptr;
+};
+
+}  // namespace
+
+Module lowerProgram(const frontend::Program& program, const frontend::SemaResult& sema) {
+  return Lowerer(program, sema).run();
+}
+
+}  // namespace fgsg::ir

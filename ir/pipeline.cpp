@@ -1,0 +1,73 @@
+#include "ir/pipeline.h"
+
+#include "frontend/parse.h"
+#include "frontend/sema.h"
+#include "ir/fold.h"
+#include "ir/lower.h"
+#include "ir/verifier.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace fgsg::ir {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+bool compileSource(const frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+                   CompileTimes* times) {
+  auto t0 = std::chrono::steady_clock::now();
+  frontend::Program program;
+  program.fileName = file.name;
+  bool parsed = frontend::parseProgram(file, program, diags);
+  if (times) times->parseSeconds = secondsSince(t0);
+  if (!parsed) return false;
+  t0 = std::chrono::steady_clock::now();
+  frontend::SemaResult sema;
+  bool analysed = frontend::analyze(program, sema, diags);
+  if (times) times->analyzeSeconds = secondsSince(t0);
+  if (!analysed) return false;
+  t0 = std::chrono::steady_clock::now();
+  out = lowerProgram(program, sema);
+  foldConstants(out);
+  std::vector<std::string> problems;
+  if (!verifyModule(out, problems)) {
+    std::string all;
+    for (const auto& p : problems) all += "\n  " + p;
+    diags.error("E999", frontend::SourceRange{{1, 1}, {1, 1}},
+                "internal compiler error: the IR failed verification (please report this "
+                "grammar):" + all);
+    return false;
+  }
+  if (times) times->lowerSeconds = secondsSince(t0);
+  return true;
+}
+
+bool readSourceFile(const std::string& path, frontend::SourceFile& out, std::string& error) {
+  struct stat st{};
+  if (stat(path.c_str(), &st) != 0) {
+    error = path + ": no such file";
+    return false;
+  }
+  if (S_ISDIR(st.st_mode)) {
+    error = path + ": is a directory, not a grammar file";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = path + ": cannot be read (permission denied?)";
+    return false;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  out = frontend::SourceFile::make(path, text.str());
+  return true;
+}
+
+}  // namespace fgsg::ir

@@ -1,0 +1,24 @@
+// The whole front half in one call: parse -> semantic analysis -> lowering -> constant
+// folding -> verification. Used by the CLI, the REPL, the tests and the benchmarks.
+#pragma once
+
+#include "frontend/diagnostics.h"
+#include "ir/ir.h"
+
+#include <string>
+
+namespace fgsg::ir {
+
+struct CompileTimes {
+  double parseSeconds = 0, analyzeSeconds = 0, lowerSeconds = 0;
+};
+
+// Returns false when the grammar has errors (they are in `diags`). A module that fails
+// verification is a compiler bug: reported as an internal error diagnostic.
+bool compileSource(const frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+                   CompileTimes* times = nullptr);
+
+// Reads a file into a SourceFile; false with a message when it cannot be read.
+bool readSourceFile(const std::string& path, frontend::SourceFile& out, std::string& error);
+
+}  // namespace fgsg::ir

@@ -1,0 +1,46 @@
+// What every engine (interpreter, JIT, compiled library) takes and returns for one
+// derivation: options with the seed and limits, and the instances plus statistics.
+#pragma once
+
+#include "runtime/instances.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fgsg::rt {
+
+struct DeriveOptions {
+  uint64_t seed = 1;
+  uint64_t maxShapes = 20'000'000;  // shapes created in all
+  uint32_t maxDepth = 100'000;      // derivation depth of one shape
+  double maxSeconds = 120.0;
+  std::vector<std::pair<std::string, std::string>> attrOverrides;  // --set name=value
+  std::vector<std::string> assetDirs;  // where asset files are looked up
+};
+
+struct DeriveStats {
+  uint64_t shapesCreated = 0;  // every shape, the axiom's included
+  uint64_t rewrites = 0;       // shapes replaced by a rule
+  uint64_t terminals = 0;      // shapes no rule replaced
+  uint64_t instances = 0;      // instances placed
+  uint64_t stringLength = 0;   // parallel derivations: modules in the final string
+  double deriveSeconds = 0.0;
+};
+
+// A problem found while deriving, located in the grammar source.
+struct DeriveMessage {
+  bool isError = true;
+  std::string code;  // "R001"
+  int line = 0, col = 0;
+  std::string message;
+};
+
+struct DeriveResult {
+  bool ok = false;  // false: an error stopped the derivation (a limit is only a warning)
+  InstanceList instances;
+  DeriveStats stats;
+  std::vector<DeriveMessage> messages;
+};
+
+}  // namespace fgsg::rt
