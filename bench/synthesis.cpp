@@ -1,0 +1,159 @@
+// Discrete model synthesis benchmark. One JSON object per line:
+//   {"bench":"synthesis","case":...,"size":[nx,ny,nz],"labels":k,...}
+// Cases: cells/s for 40x40x10 and 200x200x20 with ~100 labels (whole grid = Algorithm 3.1,
+// blocks = Algorithm 3.4), bitset vs support-count propagation, success rates over seeds
+// with and without blocks for the bundled examples, peak memory (VmHWM) and catalog bytes.
+// Usage: bench_synthesis [--quick]
+#include "runtime/synthesis/checker.h"
+#include "runtime/synthesis/synthesis.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+using namespace fgsg::rt::synthesis;
+
+namespace {
+
+long vmHwmKb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
+  return -1;
+}
+
+// ~100 labels: boxes of 4 materials, each box cell labelled by material and by where it
+// lies in its box (min/middle/max along each axis: 27 classes) = 108 labels + empty. The
+// boxes are enclosed by empty space, so models of any size exist (thm 3.2.1), and middle
+// cells repeat, so boxes stretch to any size >= 3.
+Example boxesExample() {
+  Example ex;
+  const GridSize s{30, 30, 12};
+  LabelGrid g(s, 0);
+  ex.labels.push_back({".", "", 0, false, false, {}, 1.0, true, false});
+  for (int m = 0; m < 4; ++m)
+    for (int c = 0; c < 27; ++c) {
+      Piece p;
+      p.name = "m" + std::to_string(m) + "c" + std::to_string(c);
+      p.asset = "cube";
+      ex.labels.push_back(p);
+    }
+  ex.emptyLabel = 0;
+  int m = 0;
+  for (int bz = 1; bz + 4 < s.nz; bz += 6)
+    for (int by = 1; by + 4 < s.ny; by += 6)
+      for (int bx = 1; bx + 4 < s.nx; bx += 6, m = (m + 1) % 4)
+        for (int z = 0; z < 4; ++z)
+          for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+              auto cls = [](int v) { return v == 0 ? 0 : v == 3 ? 2 : 1; };
+              g.at(bx + x, by + y, bz + z) = 1 + m * 27 + cls(x) + 3 * cls(y) + 9 * cls(z);
+            }
+  ex.grid = g;
+  for (auto& p : ex.labels) p.weight = -1;
+  computeAdjacencyFromGrid(ex);
+  ex.labels[0].weight *= 0.05;  // favour objects over empty space
+  return ex;
+}
+
+void emit(const char* name, const Example& ex, const SynthesisOptions& o, int reps, const char* extra = "") {
+  double best = 1e9, total = 0;
+  SynthesisResult r;
+  int ok = 0;
+  for (int i = 0; i < reps; ++i) {
+    SynthesisOptions oo = o;
+    oo.seed = o.seed + uint64_t(i);
+    r = synthesize(ex, oo);
+    ok += r.ok && r.consistent;
+    best = std::min(best, r.stats.seconds);
+    total += r.stats.seconds;
+  }
+  const double cells = double(o.size.count());
+  std::printf(
+      "{\"bench\":\"synthesis\",\"case\":\"%s\",\"size\":[%d,%d,%d],\"labels\":%d,\"block\":%d,"
+      "\"propagator\":\"%s\",\"reps\":%d,\"ok\":%d,\"best_ms\":%.3f,\"mean_ms\":%.3f,"
+      "\"cells_per_s\":%.0f,\"assignments_per_s\":%.0f,\"blocks\":%d,\"blocks_failed\":%d,"
+      "\"pops_per_assignment\":%.2f,\"catalog_bytes\":%zu,\"vmhwm_kb\":%ld%s}\n",
+      name, o.size.nx, o.size.ny, o.size.nz, ex.labelCount(), o.block[0],
+      o.propagator == Propagator::kBitset ? "bitset" : "support", reps, ok, best * 1e3, total / reps * 1e3,
+      cells / best, double(r.stats.assignments) / r.stats.seconds, r.stats.blocks, r.stats.blocksFailed,
+      double(r.stats.propagationSteps) / double(std::max<uint64_t>(1, r.stats.assignments)),
+      r.stats.catalogBytes, vmHwmKb(), extra);
+  std::fflush(stdout);
+}
+
+void successRate(const char* file, GridSize size, int seeds, int block) {
+  Example ex;
+  Diagnostics d;
+  if (!loadExample(std::string(FGSG_SOURCE_DIR) + "/examples/synthesis/" + file, ex, d)) {
+    std::fprintf(stderr, "%s", formatDiagnostics(d).c_str());
+    return;
+  }
+  int ok = 0, allBlocks = 0, clean = 0;
+  double secs = 0;
+  for (int s = 1; s <= seeds; ++s) {
+    SynthesisOptions o;
+    o.size = size;
+    o.seed = uint64_t(s);
+    o.block = {block, block, block};
+    SynthesisResult r = synthesize(ex, o);
+    secs += r.stats.seconds;
+    ok += r.ok && r.consistent;
+    allBlocks += r.ok && r.stats.blocksFailed == 0;
+    if (r.consistent) {
+      CheckSpec spec;
+      clean += checkModel(r.labels, ex, spec).empty();
+    }
+  }
+  std::printf(
+      "{\"bench\":\"synthesis\",\"case\":\"success_rate\",\"example\":\"%s\",\"size\":[%d,%d,%d],"
+      "\"block\":%d,\"seeds\":%d,\"success\":%.2f,\"all_blocks_ok\":%.2f,\"checker_clean\":%d,\"mean_ms\":%.3f}\n",
+      file, size.nx, size.ny, size.nz, block, seeds, double(ok) / seeds, double(allBlocks) / seeds, clean,
+      secs / seeds * 1e3);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool only40 = argc > 1 && std::strcmp(argv[1], "--small") == 0;
+  const Example boxes = boxesExample();
+  SynthesisOptions o;
+  o.seed = 1;
+  o.size = {40, 40, 10};
+  // Whole grid (Algorithm 3.1) and blocks (3.4), bitsets and support counts.
+  emit("boxes_whole", boxes, o, quick ? 3 : 10);
+  o.propagator = Propagator::kSupportCount;
+  emit("boxes_whole", boxes, o, quick ? 3 : 10);
+  o.propagator = Propagator::kBitset;
+  o.block = {10, 10, 10};
+  emit("boxes_blocks", boxes, o, quick ? 3 : 10);
+  o.propagator = Propagator::kSupportCount;
+  emit("boxes_blocks", boxes, o, quick ? 3 : 10);
+  o.propagator = Propagator::kBitset;
+  o.order = CellOrder::kMinEntropy;
+  o.block = {0, 0, 0};
+  emit("boxes_whole_min_entropy", boxes, o, quick ? 2 : 5);
+  o.order = CellOrder::kScanline;
+  if (only40) return 0;
+  o.size = {200, 200, 20};
+  emit("boxes_whole", boxes, o, quick ? 1 : 3);
+  o.block = {10, 10, 10};
+  emit("boxes_blocks", boxes, o, quick ? 1 : 2);
+  o.block = {20, 20, 20};
+  emit("boxes_blocks", boxes, o, 1);
+
+  const int seeds = quick ? 20 : 100;
+  struct { const char* file; GridSize size; } examples[] = {
+      {"castle.txt", {40, 40, 6}}, {"city.txt", {40, 40, 5}}, {"landscape.txt", {40, 40, 6}},
+      {"roads.json", {40, 40, 1}}, {"flowers.png", {40, 40, 1}}};
+  for (const auto& e : examples) {
+    successRate(e.file, e.size, seeds, 0);
+    successRate(e.file, e.size, seeds, 10);
+  }
+  return 0;
+}
