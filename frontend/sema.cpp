@@ -626,6 +626,10 @@ class Analyzer {
       return record(e, ValueType::Unknown, report);
     };
     const bool unknown = a == ValueType::Unknown || b == ValueType::Unknown;
+    ConstValue divisor;
+    if (report && (op == "/" || op == "%") && evalConst(*e.args[1], divisor) &&
+        divisor.type == ValueType::Num && divisor.num == 0)
+      diags_.error("E027", e.args[1]->range, "division by zero");
     if (op == "&&" || op == "||") {
       if (!unknown && (a != ValueType::Bool || b != ValueType::Bool)) return bad("booleans");
       return record(e, ValueType::Bool, report);

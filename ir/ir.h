@@ -53,8 +53,8 @@ enum class Query : uint8_t {
   ShapeIndex,          // Shape.index: position among the siblings of one successor
   ShapeVisible,        // Shape.visible("street"): args[0] a Str
   ScopeOcc,            // Scope.occ("noparent"): Str "none" | "part" | "full"
-  Field,               // F1.member: index = field, member in Module::strings[args...]
-  Texture,             // texture.sample(uv): index = texture
+  Field,               // F1.member: env = the field, extra = string id of the member
+  Texture,             // context.mask(uv): env = the texture; args as written
 };
 
 struct Expr {
@@ -62,8 +62,9 @@ struct Expr {
   Type type = Type::Num;
   double num = 0.0;
   double vec[3] = {0, 0, 0};
-  uint32_t index = 0;  // Param slot, Attr index, Builtin, Query, VecElem lane, field index
+  uint32_t index = 0;  // Param slot, Attr index, Builtin, Query, VecElem lane
   uint32_t extra = 0;  // Query::Field: string id of the member name
+  uint32_t env = 0;    // Query::Field / Texture: index into Module::environment
   std::vector<Expr> args;
   Loc loc;
 

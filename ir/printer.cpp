@@ -1,0 +1,419 @@
+#include "ir/printer.h"
+
+#include <charconv>
+#include <cmath>
+#include <iterator>
+
+#include "ir/builtins.h"
+
+namespace fgsg::ir {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default: out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// Binding strength used to decide parentheses; higher binds tighter.
+enum Prec : int {
+  PrecSelect = 1,
+  PrecOr,
+  PrecAnd,
+  PrecEquality,
+  PrecCompare,
+  PrecAdd,
+  PrecMul,
+  PrecUnary,
+  PrecPow,
+  PrecAtom,
+};
+
+int precedence(const Expr& e) {
+  switch (e.op) {
+    case ExprOp::Select: return PrecSelect;
+    case ExprOp::Or: return PrecOr;
+    case ExprOp::And: return PrecAnd;
+    case ExprOp::Eq:
+    case ExprOp::Ne: return PrecEquality;
+    case ExprOp::Lt:
+    case ExprOp::Le:
+    case ExprOp::Gt:
+    case ExprOp::Ge: return PrecCompare;
+    case ExprOp::Add:
+    case ExprOp::Sub: return PrecAdd;
+    case ExprOp::Mul:
+    case ExprOp::Div:
+    case ExprOp::Mod: return PrecMul;
+    case ExprOp::Neg:
+    case ExprOp::Not: return PrecUnary;
+    case ExprOp::Pow: return PrecPow;
+    case ExprOp::Const:
+      // A negative number reads like a negation: `(-1) ^ 2`, `x - -1`.
+      return e.type == Type::Num && std::signbit(e.num) ? PrecUnary : PrecAtom;
+    default: return PrecAtom;
+  }
+}
+
+class Printer {
+ public:
+  explicit Printer(const Module& m) : m_(m) {}
+
+  std::string module() {
+    line(0, "module " + quoted(m_.sourceName));
+    std::string derive = "derive ";
+    switch (m_.mode) {
+      case DeriveMode::BreadthFirst: derive += "breadthfirst"; break;
+      case DeriveMode::DepthFirst: derive += "depthfirst"; break;
+      case DeriveMode::Parallel: derive += "parallel"; break;
+    }
+    if (m_.mode == DeriveMode::Parallel || m_.steps != 0) derive += " " + std::to_string(m_.steps);
+    line(0, derive);
+    const TurtleSettings defaults;
+    if (m_.turtle.angle != defaults.angle || m_.turtle.step != defaults.step ||
+        m_.turtle.width != defaults.width)
+      line(0, "turtle angle " + printNumber(m_.turtle.angle) + " step " +
+                  printNumber(m_.turtle.step) + " width " + printNumber(m_.turtle.width));
+    for (const EnvDecl& d : m_.environment) {
+      std::string s = "env " + d.kind;
+      if (!d.name.empty()) s += " " + d.name;
+      if (!d.detail.empty()) s += " " + quoted(d.detail);
+      line(0, s);
+    }
+    for (const Attr& a : m_.attrs)
+      line(0, "attr " + a.name + ": " + typeName(a.type) + " = " + expr(nullptr, a.value));
+    for (const Symbol& s : m_.symbols) {
+      std::string text = "symbol " + s.name + "(";
+      for (size_t i = 0; i < s.paramTypes.size(); ++i)
+        text += (i ? ", " : "") + std::string(typeName(s.paramTypes[i]));
+      text += ")  priority " + std::to_string(s.priority) + "  rules [";
+      for (size_t i = 0; i < s.rules.size(); ++i)
+        text += (i ? " " : "") + std::to_string(s.rules[i]);
+      line(0, text + "]");
+    }
+    line(0, "axiom");
+    block(nullptr, m_.axiom, 1);
+    for (const Rule& r : m_.rules) rule(r);
+    return std::move(out_);
+  }
+
+  void rule(const Rule& r) {
+    std::string head = "rule ";
+    if (&r >= m_.rules.data() && &r < m_.rules.data() + m_.rules.size())
+      head += std::to_string(&r - m_.rules.data()) + " ";
+    head += quoted(r.label) + " ";
+    size_t contextParams = 0;
+    for (const ContextModule& c : r.left) contextParams += c.paramSlots.size();
+    for (const ContextModule& c : r.right) contextParams += c.paramSlots.size();
+    for (const ContextModule& c : r.left) head += contextModule(r, c) + " ";
+    if (!r.left.empty()) head += "< ";
+    head += symbolName(r.symbol) + "(";
+    // Predecessor parameters come first in Rule::params; context parameters follow.
+    const size_t own = r.params.size() > contextParams ? r.params.size() - contextParams : 0;
+    for (size_t i = 0; i < own; ++i) head += (i ? ", " : "") + paramDecl(r.params[i]);
+    head += ")";
+    if (!r.right.empty()) head += " >";
+    for (const ContextModule& c : r.right) head += " " + contextModule(r, c);
+    head += "  priority " + std::to_string(r.priority);
+    if (r.hasGuard) head += "  guard (" + expr(&r, r.guard) + ")";
+    line(0, head);
+    for (const Alternative& alt : r.alternatives) {
+      line(1, "alt weight " + expr(&r, alt.probability));
+      block(&r, alt.ops, 2);
+    }
+  }
+
+  std::string expr(const Rule* rule, const Expr& e) {
+    std::string s;
+    writeExpr(rule, e, s);
+    return s;
+  }
+
+  std::string take() { return std::move(out_); }
+
+  void block(const Rule* r, const Block& ops, int depth) {
+    if (ops.empty()) line(depth, "(empty)");
+    for (const Op& op : ops) writeOp(r, op, depth);
+  }
+
+ private:
+  void line(int depth, const std::string& text) {
+    out_.append(static_cast<size_t>(depth) * 2, ' ');
+    out_ += text;
+    out_ += '\n';
+  }
+
+  std::string symbolName(uint32_t i) const {
+    return i < m_.symbols.size() ? m_.symbols[i].name : "sym#" + std::to_string(i);
+  }
+
+  std::string stringLit(uint32_t i) const {
+    return i < m_.strings.size() ? quoted(m_.strings[i]) : "str#" + std::to_string(i);
+  }
+
+  // A Str constant keeps its id in a double; a corrupt one must not be cast blindly.
+  std::string stringLit(double id) const {
+    if (id >= 0 && id < static_cast<double>(m_.strings.size()) && id == std::floor(id))
+      return stringLit(static_cast<uint32_t>(id));
+    return "str#" + printNumber(id);
+  }
+
+  static const Param* paramAt(const Rule* rule, uint32_t slot) {
+    if (!rule) return nullptr;
+    for (const Param& p : rule->params)
+      if (p.slot == slot) return &p;
+    return nullptr;
+  }
+
+  static std::string paramDecl(const Param& p) {
+    return p.name + ": " + typeName(p.type) + " @" + std::to_string(p.slot);
+  }
+
+  std::string contextModule(const Rule& r, const ContextModule& c) const {
+    if (c.symbol == ~0u) return c.bracket > 0 ? "[" : c.bracket < 0 ? "]" : "?";
+    std::string s = symbolName(c.symbol) + "(";
+    for (size_t i = 0; i < c.paramSlots.size(); ++i) {
+      const Param* p = paramAt(&r, c.paramSlots[i]);
+      s += (i ? ", " : "") + (p ? paramDecl(*p) : "@" + std::to_string(c.paramSlots[i]));
+    }
+    return s + ")";
+  }
+
+  // Environment entries are named by the module: F1.vector1, context.mask(uv).
+  std::string envName(uint32_t i, const char* kind) const {
+    if (i < m_.environment.size() && !m_.environment[i].name.empty())
+      return m_.environment[i].name;
+    return std::string(kind) + "#" + std::to_string(i);
+  }
+
+  std::string list(const Rule* r, const std::vector<Expr>& args) {
+    std::string s;
+    for (size_t i = 0; i < args.size(); ++i) s += (i ? ", " : "") + expr(r, args[i]);
+    return s;
+  }
+
+  std::string sizeText(const Rule* r, const Size& sz) {
+    if (sz.kind == Size::Absolute) return expr(r, sz.value);
+    std::string s;
+    writeOperand(r, sz.value, PrecAtom, s);
+    return sz.kind == Size::Relative ? s + "r" : "~" + s;
+  }
+
+  std::string sizeList(const Rule* r, const std::vector<Size>& szs) {
+    std::string s = "[";
+    for (size_t i = 0; i < szs.size(); ++i) s += (i ? ", " : "") + sizeText(r, szs[i]);
+    return s + "]";
+  }
+
+  static std::string axisName(uint32_t axis) {
+    return axis < 3 ? std::string(1, "xyz"[axis]) : "axis#" + std::to_string(axis);
+  }
+
+  void writeOp(const Rule* r, const Op& op, int depth) {
+    auto withArgs = [&](std::string s) {
+      return op.args.empty() ? s : s + " " + list(r, op.args);
+    };
+    std::string text;
+    switch (op.kind) {
+      case OpKind::Translate: text = withArgs("translate"); break;
+      case OpKind::Rotate:
+        text = withArgs("rotate " + (op.index == 3 ? std::string("xyz") : axisName(op.index)));
+        break;
+      case OpKind::RotateNormal: text = withArgs("rotatenormal"); break;
+      case OpKind::Scale: text = withArgs("scale " + sizeList(r, op.sizes)); break;
+      case OpKind::Push: text = "push"; break;
+      case OpKind::Pop: text = "pop"; break;
+      case OpKind::Instance: {
+        static const char* const kModes[] = {"plain", "collide", "merge"};
+        const auto mode = static_cast<size_t>(op.mode);
+        text = "instance " +
+               (op.index < m_.assets.size() ? quoted(m_.assets[op.index])
+                                            : "asset#" + std::to_string(op.index)) +
+               " " + (mode < 3 ? kModes[mode] : "mode#" + std::to_string(mode));
+        text = withArgs(text);
+        break;
+      }
+      case OpKind::Emit: text = "emit " + symbolName(op.index) + "(" + list(r, op.args) + ")"; break;
+      case OpKind::Turtle: {
+        static const char* const kTurtle[] = {"F", "f", "+", "-", "&", "^", "\\", "/", "|", "!"};
+        text = std::string("turtle ") +
+               (op.index < std::size(kTurtle) ? kTurtle[op.index]
+                                              : "turtle#" + std::to_string(op.index));
+        if (!op.args.empty()) text += "(" + list(r, op.args) + ")";
+        break;
+      }
+      case OpKind::Subdiv: text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes); break;
+      case OpKind::Repeat: {
+        std::string axes;
+        for (uint32_t a = 0; a < 3; ++a)
+          if (op.index & (1u << a)) axes += "xyz"[a];
+        if (op.index > 7 || axes.empty()) axes = "mask#" + std::to_string(op.index);
+        text = "repeat " + axes + " " + sizeList(r, op.sizes);
+        break;
+      }
+      case OpKind::Comp: text = "comp " + stringLit(op.str); break;
+      case OpKind::Extrude: text = withArgs("extrude"); break;
+      case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
+      case OpKind::Lock: text = "lock"; break;
+      case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
+    }
+    line(depth, text);
+    for (size_t i = 0; i < op.bodies.size(); ++i) {
+      line(depth + 1, "body " + std::to_string(i) + ":");
+      block(r, op.bodies[i], depth + 2);
+    }
+  }
+
+  void writeArgs(const Rule* rule, const std::vector<Expr>& args, std::string& s) {
+    s += '(';
+    for (size_t i = 0; i < args.size(); ++i) {
+      if (i) s += ", ";
+      writeExpr(rule, args[i], s);
+    }
+    s += ')';
+  }
+
+  // Writes `e`, parenthesised when it binds less tightly than `minPrec`.
+  void writeOperand(const Rule* rule, const Expr& e, int minPrec, std::string& s) {
+    const bool parens = precedence(e) < minPrec;
+    if (parens) s += '(';
+    writeExpr(rule, e, s);
+    if (parens) s += ')';
+  }
+
+  void writeExpr(const Rule* rule, const Expr& e, std::string& s) {
+    auto arg = [&](size_t i) -> const Expr* { return i < e.args.size() ? &e.args[i] : nullptr; };
+    const int prec = precedence(e);
+    switch (e.op) {
+      case ExprOp::Const:
+        switch (e.type) {
+          case Type::Num: s += printNumber(e.num); break;
+          case Type::Bool: s += e.num != 0 ? "true" : "false"; break;
+          case Type::Str: s += stringLit(e.num); break;
+          case Type::Vec3:
+            s += "(" + printNumber(e.vec[0]) + ", " + printNumber(e.vec[1]) + ", " +
+                 printNumber(e.vec[2]) + ")";
+            break;
+        }
+        return;
+      case ExprOp::Param: {
+        const Param* p = paramAt(rule, e.index);
+        s += p ? p->name : "@" + std::to_string(e.index);
+        return;
+      }
+      case ExprOp::Attr:
+        s += e.index < m_.attrs.size() ? m_.attrs[e.index].name : "attr#" + std::to_string(e.index);
+        return;
+      case ExprOp::Neg:
+      case ExprOp::Not:
+        s += operatorSpelling(e.op);
+        if (arg(0)) writeOperand(rule, *arg(0), PrecAtom, s);  // -(-x), !(a && b)
+        return;
+      case ExprOp::Select:
+        if (e.args.size() != 3) break;
+        writeOperand(rule, e.args[0], PrecSelect + 1, s);
+        s += " ? ";
+        writeExpr(rule, e.args[1], s);
+        s += " : ";
+        writeOperand(rule, e.args[2], PrecSelect, s);  // right-associative
+        return;
+      case ExprOp::Call:
+        s += e.index < static_cast<uint32_t>(kBuiltinCount)
+                 ? builtinSignature(static_cast<Builtin>(e.index)).name
+                 : "builtin#" + std::to_string(e.index);
+        writeArgs(rule, e.args, s);
+        return;
+      case ExprOp::Rand:
+        s += "rand";
+        writeArgs(rule, e.args, s);
+        return;
+      case ExprOp::Query:
+        writeQuery(rule, e, s);
+        return;
+      case ExprOp::MakeVec:
+        writeArgs(rule, e.args, s);
+        return;
+      case ExprOp::VecElem:
+        if (arg(0)) writeOperand(rule, *arg(0), PrecAtom, s);
+        s += '.';
+        s += e.index < 3 ? std::string(1, "xyz"[e.index]) : "lane#" + std::to_string(e.index);
+        return;
+      default:
+        if (e.args.size() != 2) break;
+        // Left-associative binary operators; `^` takes only atoms on either side so
+        // that its reading never depends on how a parser ranks it against unary minus.
+        writeOperand(rule, e.args[0], e.op == ExprOp::Pow ? PrecAtom : prec, s);
+        s += ' ';
+        s += operatorSpelling(e.op);
+        s += ' ';
+        writeOperand(rule, e.args[1], e.op == ExprOp::Pow ? PrecAtom : prec + 1, s);
+        return;
+    }
+    // Malformed node: show its shape rather than guessing.
+    s += "<op" + std::to_string(static_cast<int>(e.op)) + ">";
+    writeArgs(rule, e.args, s);
+  }
+
+  void writeQuery(const Rule* rule, const Expr& e, std::string& s) {
+    if (e.index > static_cast<uint32_t>(Query::Texture)) {
+      s += "query#" + std::to_string(e.index);
+      writeArgs(rule, e.args, s);
+      return;
+    }
+    const Query q = static_cast<Query>(e.index);
+    switch (q) {
+      case Query::Field:
+        s += envName(e.env, "field") + "." +
+             (e.extra < m_.strings.size() ? m_.strings[e.extra] : "str#" + std::to_string(e.extra));
+        if (!e.args.empty()) writeArgs(rule, e.args, s);
+        return;
+      case Query::Texture:
+        s += "context." + envName(e.env, "texture");
+        if (e.args.empty())
+          s += "(texCoord)";  // sampled at the scope's texture coordinate, as written
+        else
+          writeArgs(rule, e.args, s);
+        return;
+      default: {
+        const QuerySignature& sig = querySignature(q);
+        s += std::string(sig.object) + "." + sig.member;
+        if (sig.arity != 0) writeArgs(rule, e.args, s);
+        return;
+      }
+    }
+  }
+
+  const Module& m_;
+  std::string out_;
+};
+
+}  // namespace
+
+std::string printNumber(double v) {
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, end);
+}
+
+std::string printModule(const Module& m) { return Printer(m).module(); }
+
+std::string printRule(const Module& m, const Rule& rule) {
+  Printer p(m);
+  p.rule(rule);
+  return p.take();
+}
+
+std::string printExpr(const Module& m, const Rule* rule, const Expr& e) {
+  return Printer(m).expr(rule, e);
+}
+
+}  // namespace fgsg::ir

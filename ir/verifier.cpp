@@ -1,0 +1,470 @@
+#include "ir/verifier.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "ir/builtins.h"
+
+namespace fgsg::ir {
+
+namespace {
+
+const char* opName(OpKind k) {
+  switch (k) {
+    case OpKind::Translate: return "translate";
+    case OpKind::Rotate: return "rotate";
+    case OpKind::RotateNormal: return "rotatenormal";
+    case OpKind::Scale: return "scale";
+    case OpKind::Push: return "push";
+    case OpKind::Pop: return "pop";
+    case OpKind::Instance: return "instance";
+    case OpKind::Emit: return "emit";
+    case OpKind::Turtle: return "turtle";
+    case OpKind::Subdiv: return "subdiv";
+    case OpKind::Repeat: return "repeat";
+    case OpKind::Comp: return "comp";
+    case OpKind::Extrude: return "extrude";
+    case OpKind::Roof: return "roof";
+    case OpKind::Lock: return "lock";
+    case OpKind::Unsupported: return "unsupported";
+  }
+  return "op?";
+}
+
+std::string str(Type t) { return typeName(t); }
+
+class Verifier {
+ public:
+  Verifier(const Module& m, std::vector<std::string>& problems) : m_(m), problems_(problems) {}
+
+  bool run() {
+    const size_t before = problems_.size();
+    if (m_.steps < 0) problem("negative derivation steps " + std::to_string(m_.steps));
+    for (size_t i = 0; i < m_.attrs.size(); ++i) {
+      Scoped s(*this, "attr " + m_.attrs[i].name);
+      const Attr& a = m_.attrs[i];
+      if (!a.value.isConst()) problem("default value is not a constant");
+      if (a.value.type != a.type)
+        problem("default value is " + str(a.value.type) + ", attribute is " + str(a.type));
+      expr(a.value, nullptr);
+    }
+    for (size_t i = 0; i < m_.symbols.size(); ++i) symbol(static_cast<uint32_t>(i));
+    {
+      Scoped s(*this, "axiom");
+      block(m_.axiom, nullptr);
+    }
+    for (size_t i = 0; i < m_.rules.size(); ++i) rule(static_cast<uint32_t>(i));
+    return problems_.size() == before;
+  }
+
+ private:
+  // Names the part of the module under inspection in every problem found inside it.
+  struct Scoped {
+    Scoped(Verifier& v, const std::string& part) : v_(v), size_(v.where_.size()) {
+      v.where_ += (v.where_.empty() ? "" : " ") + part;
+    }
+    ~Scoped() { v_.where_.resize(size_); }
+    Verifier& v_;
+    size_t size_;
+  };
+
+  void problem(const std::string& what) {
+    problems_.push_back(where_.empty() ? what : where_ + ": " + what);
+  }
+
+  void expectType(const Expr& e, Type t, const char* role) {
+    if (e.type != t) problem(std::string(role) + " is " + str(e.type) + ", expected " + str(t));
+  }
+
+  // ------------------------------------------------------------ symbols and rules
+
+  void symbol(uint32_t index) {
+    const Symbol& s = m_.symbols[index];
+    Scoped sc(*this, "symbol " + s.name);
+    if (m_.findSymbol(s.name) != static_cast<int>(index)) problem("name is not unique");
+    uint32_t slots = 0;
+    for (Type t : s.paramTypes) slots += slotWidth(t);
+    if (slots != s.slotCount)
+      problem("slotCount " + std::to_string(s.slotCount) + ", parameters take " +
+              std::to_string(slots));
+    int highest = 0;
+    bool any = false;
+    for (uint32_t r : s.rules) {
+      if (r >= m_.rules.size()) {
+        problem("rule " + std::to_string(r) + " out of range");
+        continue;
+      }
+      if (m_.rules[r].symbol != index) problem("lists rule " + std::to_string(r) + " of another symbol");
+      highest = any ? std::max(highest, m_.rules[r].priority) : m_.rules[r].priority;
+      any = true;
+    }
+    if (any && highest != s.priority)
+      problem("priority " + std::to_string(s.priority) + ", its rules' highest is " +
+              std::to_string(highest));
+  }
+
+  void rule(uint32_t index) {
+    const Rule& r = m_.rules[index];
+    Scoped sc(*this, "rule " + std::to_string(index) + " \"" + r.label + "\"");
+    if (r.symbol >= m_.symbols.size()) {
+      problem("symbol " + std::to_string(r.symbol) + " out of range");
+    } else {
+      const Symbol& s = m_.symbols[r.symbol];
+      if (std::find(s.rules.begin(), s.rules.end(), index) == s.rules.end())
+        problem("not listed in the rules of symbol " + s.name);
+      predecessorParams(r, s);
+    }
+    paramLayout(r);
+    for (const ContextModule& c : r.left) context(r, c, "left context");
+    for (const ContextModule& c : r.right) context(r, c, "right context");
+    if (r.hasGuard) {
+      Scoped s(*this, "guard");
+      expectType(r.guard, Type::Bool, "guard");
+      expr(r.guard, &r);
+    }
+    if (r.alternatives.empty()) problem("no alternative");
+    for (size_t i = 0; i < r.alternatives.size(); ++i) {
+      Scoped s(*this, "alt " + std::to_string(i));
+      expectType(r.alternatives[i].probability, Type::Num, "probability");
+      expr(r.alternatives[i].probability, &r);
+      block(r.alternatives[i].ops, &r);
+    }
+  }
+
+  // Emit writes arguments in the symbol's order from slot 0, so the rule must read its
+  // predecessor parameters from exactly those slots.
+  void predecessorParams(const Rule& r, const Symbol& s) {
+    if (r.params.size() < s.paramTypes.size()) {
+      problem(std::to_string(r.params.size()) + " parameters, symbol " + s.name + " has " +
+              std::to_string(s.paramTypes.size()));
+      return;
+    }
+    uint32_t slot = 0;
+    for (size_t i = 0; i < s.paramTypes.size(); ++i) {
+      const Param& p = r.params[i];
+      if (p.type != s.paramTypes[i])
+        problem("parameter " + p.name + " is " + str(p.type) + ", symbol " + s.name + " has " +
+                str(s.paramTypes[i]));
+      if (p.slot != slot)
+        problem("parameter " + p.name + " in slot " + std::to_string(p.slot) + ", expected " +
+                std::to_string(slot));
+      slot += slotWidth(s.paramTypes[i]);
+    }
+  }
+
+  void paramLayout(const Rule& r) {
+    std::vector<bool> used(std::min<uint32_t>(r.slotCount, 1u << 16), false);
+    for (const Param& p : r.params) {
+      const uint32_t width = slotWidth(p.type);
+      if (p.slot >= used.size() || p.slot + width > r.slotCount) {
+        problem("parameter " + p.name + " (slot " + std::to_string(p.slot) +
+                ") outside slotCount " + std::to_string(r.slotCount));
+        continue;
+      }
+      for (uint32_t k = p.slot; k < p.slot + width && k < used.size(); ++k) {
+        if (used[k]) problem("parameter " + p.name + " overlaps slot " + std::to_string(k));
+        used[k] = true;
+      }
+    }
+  }
+
+  void context(const Rule& r, const ContextModule& c, const char* side) {
+    Scoped sc(*this, side);
+    if (c.symbol == ~0u) {
+      if (c.bracket != 1 && c.bracket != -1) problem("bracket must be 1 or -1");
+      if (!c.paramSlots.empty()) problem("a bracket takes no parameters");
+      return;
+    }
+    if (c.bracket != 0) problem("a symbol module with bracket set");
+    if (c.symbol >= m_.symbols.size()) {
+      problem("symbol " + std::to_string(c.symbol) + " out of range");
+      return;
+    }
+    const Symbol& s = m_.symbols[c.symbol];
+    if (c.paramSlots.size() != s.paramTypes.size()) {
+      problem(std::to_string(c.paramSlots.size()) + " parameters for " + s.name + ", which has " +
+              std::to_string(s.paramTypes.size()));
+      return;
+    }
+    for (size_t i = 0; i < c.paramSlots.size(); ++i) {
+      const Param* p = paramAt(&r, c.paramSlots[i]);
+      if (!p)
+        problem("slot " + std::to_string(c.paramSlots[i]) + " holds no parameter");
+      else if (p->type != s.paramTypes[i])
+        problem("parameter " + p->name + " is " + str(p->type) + ", " + s.name + " has " +
+                str(s.paramTypes[i]));
+    }
+  }
+
+  static const Param* paramAt(const Rule* r, uint32_t slot) {
+    if (!r) return nullptr;
+    for (const Param& p : r->params)
+      if (p.slot == slot) return &p;
+    return nullptr;
+  }
+
+  // ------------------------------------------------------------ ops
+
+  void block(const Block& ops, const Rule* r) {
+    int depth = 0;
+    for (size_t i = 0; i < ops.size(); ++i) {
+      Scoped s(*this, "op " + std::to_string(i) + " (" + opName(ops[i].kind) + ")");
+      if (ops[i].kind == OpKind::Push) ++depth;
+      if (ops[i].kind == OpKind::Pop && --depth < 0) {
+        problem("pop without push");
+        depth = 0;
+      }
+      op(ops[i], r);
+    }
+    if (depth > 0) problem(std::to_string(depth) + " push without pop");
+  }
+
+  void numArgs(const Op& op, const Rule* r, size_t count) {
+    if (op.args.size() != count)
+      problem(std::to_string(op.args.size()) + " arguments, expected " + std::to_string(count));
+    for (size_t i = 0; i < op.args.size(); ++i) {
+      expectType(op.args[i], Type::Num, "argument");
+      expr(op.args[i], r);
+    }
+  }
+
+  void sizes(const Op& op, const Rule* r) {
+    for (const Size& s : op.sizes) {
+      if (s.kind > Size::Floating) problem("bad size kind");
+      expectType(s.value, Type::Num, "size");
+      expr(s.value, r);
+    }
+  }
+
+  void bodies(const Op& op, const Rule* r) {
+    for (size_t i = 0; i < op.bodies.size(); ++i) {
+      Scoped s(*this, "body " + std::to_string(i));
+      block(op.bodies[i], r);
+    }
+  }
+
+  void expectBodies(const Op& op, size_t count) {
+    if (op.bodies.size() != count)
+      problem(std::to_string(op.bodies.size()) + " bodies, expected " + std::to_string(count));
+  }
+
+  void stringId(uint32_t id) {
+    if (id >= m_.strings.size()) problem("string " + std::to_string(id) + " out of range");
+  }
+
+  void op(const Op& op, const Rule* r) {
+    switch (op.kind) {
+      case OpKind::Translate: numArgs(op, r, 3); break;
+      case OpKind::Rotate:
+        if (op.index > 3) problem("axis " + std::to_string(op.index) + " out of range");
+        numArgs(op, r, op.index == 3 ? 3 : 1);
+        break;
+      case OpKind::RotateNormal: numArgs(op, r, 1); break;
+      case OpKind::Scale:
+        if (op.sizes.size() != 3) problem(std::to_string(op.sizes.size()) + " sizes, expected 3");
+        numArgs(op, r, 0);
+        break;
+      case OpKind::Push:
+      case OpKind::Pop: numArgs(op, r, 0); break;
+      case OpKind::Instance:
+        if (op.index >= m_.assets.size()) problem("asset " + std::to_string(op.index) + " out of range");
+        if (op.mode > InstanceMode::Merge) problem("bad instance mode");
+        numArgs(op, r, op.mode == InstanceMode::Merge ? 2 : 0);  // IM: maxDist, maxAngle
+        break;
+      case OpKind::Emit: emit(op, r); break;
+      case OpKind::Turtle:
+        if (op.index > static_cast<uint32_t>(TurtleOp::Width))
+          problem("turtle op " + std::to_string(op.index) + " out of range");
+        numArgs(op, r, std::min<size_t>(op.args.size(), 1));  // argument optional
+        break;
+      case OpKind::Subdiv:
+        if (op.index > 2) problem("axis " + std::to_string(op.index) + " out of range");
+        if (op.sizes.empty()) problem("no sizes");
+        expectBodies(op, op.sizes.size());
+        numArgs(op, r, 0);
+        break;
+      case OpKind::Repeat:
+        if (op.index == 0 || op.index > 7) problem("axes mask " + std::to_string(op.index));
+        if (op.sizes.size() != static_cast<size_t>(std::popcount(op.index)))
+          problem(std::to_string(op.sizes.size()) + " sizes for axes mask " + std::to_string(op.index));
+        expectBodies(op, 1);
+        numArgs(op, r, 0);
+        break;
+      case OpKind::Comp:
+        stringId(op.str);
+        expectBodies(op, 1);
+        numArgs(op, r, 0);
+        break;
+      case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Roof:
+        stringId(op.str);
+        if (op.bodies.size() > 1) expectBodies(op, 1);  // the body is optional
+        numArgs(op, r, 1);
+        break;
+      case OpKind::Lock:
+        if (op.bodies.empty()) problem("no bodies");
+        numArgs(op, r, 0);
+        break;
+      case OpKind::Unsupported:
+        if (op.name.empty()) problem("no construct name");
+        break;
+      default: problem("bad op kind " + std::to_string(static_cast<int>(op.kind)));
+    }
+    if (op.kind != OpKind::Scale && op.kind != OpKind::Subdiv && op.kind != OpKind::Repeat &&
+        !op.sizes.empty())
+      problem("sizes on an op that takes none");
+    sizes(op, r);
+    bodies(op, r);
+  }
+
+  void emit(const Op& op, const Rule* r) {
+    if (op.index >= m_.symbols.size()) {
+      problem("symbol " + std::to_string(op.index) + " out of range");
+      return;
+    }
+    const Symbol& s = m_.symbols[op.index];
+    if (op.args.size() != s.paramTypes.size())
+      problem(std::to_string(op.args.size()) + " arguments for " + s.name + ", which has " +
+              std::to_string(s.paramTypes.size()));
+    for (size_t i = 0; i < op.args.size(); ++i) {
+      if (i < s.paramTypes.size() && op.args[i].type != s.paramTypes[i])
+        problem("argument " + std::to_string(i) + " is " + str(op.args[i].type) + ", " + s.name +
+                " takes " + str(s.paramTypes[i]));
+      expr(op.args[i], r);
+    }
+  }
+
+  // ------------------------------------------------------------ expressions
+
+  bool arity(const Expr& e, size_t n, const char* what) {
+    if (e.args.size() == n) return true;
+    problem(std::string(what) + " with " + std::to_string(e.args.size()) + " operands, expected " +
+            std::to_string(n));
+    return false;
+  }
+
+  void expr(const Expr& e, const Rule* r) {
+    for (const Expr& a : e.args) expr(a, r);
+    switch (e.op) {
+      case ExprOp::Const: constant(e); return;
+      case ExprOp::Param: {
+        if (!r) {
+          problem("parameter outside a rule");
+          return;
+        }
+        const Param* p = paramAt(r, e.index);
+        if (!p)
+          problem("slot " + std::to_string(e.index) + " holds no parameter (slotCount " +
+                  std::to_string(r->slotCount) + ")");
+        else if (p->type != e.type)
+          problem("parameter " + p->name + " is " + str(p->type) + ", read as " + str(e.type));
+        return;
+      }
+      case ExprOp::Attr:
+        if (e.index >= m_.attrs.size())
+          problem("attr " + std::to_string(e.index) + " out of range");
+        else if (m_.attrs[e.index].type != e.type)
+          problem("attr " + m_.attrs[e.index].name + " is " + str(m_.attrs[e.index].type) +
+                  ", read as " + str(e.type));
+        return;
+      case ExprOp::Neg:
+      case ExprOp::Not:
+        if (!arity(e, 1, operatorSpelling(e.op))) return;
+        if (unaryResultType(e.op, e.args[0].type) != e.type)
+          problem(std::string(operatorSpelling(e.op)) + str(e.args[0].type) + " typed " + str(e.type));
+        return;
+      case ExprOp::Select:
+        if (!arity(e, 3, "?:")) return;
+        expectType(e.args[0], Type::Bool, "condition");
+        if (e.args[1].type != e.type || e.args[2].type != e.type)
+          problem("branches " + str(e.args[1].type) + " and " + str(e.args[2].type) + " typed " +
+                  str(e.type));
+        return;
+      case ExprOp::Call: call(e); return;
+      case ExprOp::Rand:
+        if (!arity(e, 2, "rand")) return;
+        for (const Expr& a : e.args) expectType(a, Type::Num, "rand bound");
+        expectType(e, Type::Num, "rand");
+        return;
+      case ExprOp::Query: query(e); return;
+      case ExprOp::MakeVec:
+        if (!arity(e, 3, "vector")) return;
+        for (const Expr& a : e.args) expectType(a, Type::Num, "vector component");
+        expectType(e, Type::Vec3, "vector");
+        return;
+      case ExprOp::VecElem:
+        if (!arity(e, 1, "component")) return;
+        expectType(e.args[0], Type::Vec3, "component operand");
+        if (e.index > 2) problem("lane " + std::to_string(e.index));
+        expectType(e, Type::Num, "component");
+        return;
+      default:
+        break;
+    }
+    if (*operatorSpelling(e.op) == '\0') {
+      problem("bad expression op " + std::to_string(static_cast<int>(e.op)));
+      return;
+    }
+    if (!arity(e, 2, operatorSpelling(e.op))) return;
+    if (binaryResultType(e.op, e.args[0].type, e.args[1].type) != e.type)
+      problem(str(e.args[0].type) + " " + operatorSpelling(e.op) + " " + str(e.args[1].type) +
+              " typed " + str(e.type));
+  }
+
+  void constant(const Expr& e) {
+    if (!e.args.empty()) problem("constant with operands");
+    if (e.type == Type::Bool && e.num != 0 && e.num != 1) problem("boolean constant not 0/1");
+    if (e.type == Type::Str) {
+      if (e.num != std::floor(e.num) || e.num < 0 || e.num >= static_cast<double>(m_.strings.size()))
+        problem("string constant " + std::to_string(e.num) + " out of range");
+    }
+  }
+
+  void call(const Expr& e) {
+    if (e.index >= static_cast<uint32_t>(kBuiltinCount)) {
+      problem("builtin " + std::to_string(e.index) + " out of range");
+      return;
+    }
+    const BuiltinSignature& sig = builtinSignature(static_cast<Builtin>(e.index));
+    if (!arity(e, static_cast<size_t>(sig.arity), sig.name)) return;
+    for (int i = 0; i < sig.arity; ++i)
+      if (e.args[i].type != sig.args[i])
+        problem(std::string(sig.name) + " argument " + std::to_string(i) + " is " +
+                str(e.args[i].type) + ", expected " + str(sig.args[i]));
+    if (e.type != sig.result)
+      problem(std::string(sig.name) + " typed " + str(e.type) + ", returns " + str(sig.result));
+  }
+
+  void query(const Expr& e) {
+    if (e.index > static_cast<uint32_t>(Query::Texture)) {
+      problem("query " + std::to_string(e.index) + " out of range");
+      return;
+    }
+    const Query q = static_cast<Query>(e.index);
+    const QuerySignature& sig = querySignature(q);
+    if (sig.arity >= 0 && !arity(e, static_cast<size_t>(sig.arity), "query")) return;
+    if (sig.typed) {
+      for (const Expr& a : e.args) expectType(a, sig.arg, "query argument");
+      expectType(e, sig.result, "query");
+    }
+    if (q == Query::Field || q == Query::Texture) {
+      const char* kind = q == Query::Field ? "field" : "texture";
+      if (e.env >= m_.environment.size() || m_.environment[e.env].kind != kind)
+        problem("environment entry " + std::to_string(e.env) + " is not a " + kind);
+    }
+    if (q == Query::Field) stringId(e.extra);
+  }
+
+  const Module& m_;
+  std::vector<std::string>& problems_;
+  std::string where_;
+};
+
+}  // namespace
+
+bool verifyModule(const Module& m, std::vector<std::string>& problems) {
+  return Verifier(m, problems).run();
+}
+
+}  // namespace fgsg::ir

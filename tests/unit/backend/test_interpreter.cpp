@@ -1,0 +1,304 @@
+#include "derive_helpers.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace fgsg;
+using fgsg::test::deriveText;
+using fgsg::test::unitPoint;
+
+TEST_CASE("Repeat X 2 on a 10-wide scope gives 5 tiles at known positions", "[cga]") {
+  auto r = deriveText(R"(
+    axiom: S(10, 1, 1) Wall;
+    Wall ~> Repeat("X", 2){ Tile };
+    Tile ~> I("cube");
+  )");
+  REQUIRE(r.ok);
+  const auto& insts = r.instances.instances;
+  REQUIRE(insts.size() == 5);
+  for (size_t i = 0; i < 5; ++i) {
+    auto lo = unitPoint(insts[i], 0, 0, 0), hi = unitPoint(insts[i], 1, 1, 1);
+    CHECK(lo.x() == Approx(2.0 * i).margin(1e-12));
+    CHECK(hi.x() == Approx(2.0 * i + 2).margin(1e-12));
+    CHECK(hi.y() == Approx(1.0));
+  }
+}
+
+TEST_CASE("Subdiv shares the remaining length among relative sizes", "[cga]") {
+  auto r = deriveText(R"(
+    axiom: S(10, 3, 1) Facade;
+    Facade ~> Subdiv("X", 1r, 2, 1r){ Side | Middle | Side };
+    Side ~> I("cube");
+    Middle ~> I("sphere");
+  )");
+  REQUIRE(r.ok);
+  const auto& insts = r.instances.instances;
+  REQUIRE(insts.size() == 3);
+  CHECK(unitPoint(insts[0], 0, 0, 0).x() == Approx(0.0).margin(1e-12));
+  CHECK(unitPoint(insts[0], 1, 0, 0).x() == Approx(4.0));
+  CHECK(unitPoint(insts[1], 0, 0, 0).x() == Approx(4.0));
+  CHECK(unitPoint(insts[1], 1, 0, 0).x() == Approx(6.0));
+  CHECK(unitPoint(insts[2], 1, 0, 0).x() == Approx(10.0));
+  CHECK(r.instances.assets[insts[1].asset] == "sphere");
+}
+
+TEST_CASE("Scope commands compose as in FGSG Fig. 4: rotate, then translate along the new X", "[scope]") {
+  auto r = deriveText(R"(
+    Axiom ~> [ Rz(90) T(2, 0, 0) I("cube") ] T(0, 0, 5) S(1, 2, 3) I("cube");
+  )");
+  REQUIRE(r.ok);
+  const auto& insts = r.instances.instances;
+  REQUIRE(insts.size() == 2);
+  auto p = unitPoint(insts[0], 0, 0, 0);
+  CHECK(p.x() == Approx(0.0).margin(1e-12));
+  CHECK(p.y() == Approx(2.0));
+  // The bracket restored the scope: the second cube sits at z = 5 with size 1 x 2 x 3.
+  auto q0 = unitPoint(insts[1], 0, 0, 0), q1 = unitPoint(insts[1], 1, 1, 1);
+  CHECK(q0.z() == Approx(5.0));
+  CHECK((q1 - q0).x() == Approx(1.0));
+  CHECK((q1 - q0).y() == Approx(2.0));
+  CHECK((q1 - q0).z() == Approx(3.0));
+}
+
+TEST_CASE("A Koch curve has 4^n segments joining its end points", "[lsystem]") {
+  auto r = deriveText(R"(
+    derive parallel 3;
+    turtle angle 60 width 0.01;
+    axiom: F(1);
+    F(l) -> F(l / 3) + F(l / 3) - - F(l / 3) + F(l / 3);
+  )");
+  REQUIRE(r.ok);
+  const auto& segs = r.instances.instances;
+  REQUIRE(segs.size() == 64);
+  // A segment's axis runs through the middle of its unit box along Y.
+  auto start = [&](size_t i) { return unitPoint(segs[i], 0.5, 0, 0.5); };
+  auto end = [&](size_t i) { return unitPoint(segs[i], 0.5, 1, 0.5); };
+  CHECK(start(0).norm() == Approx(0.0).margin(1e-12));
+  CHECK((end(63) - Eigen::Vector3d(0, 1, 0)).norm() == Approx(0.0).margin(1e-9));
+  double total = 0;
+  for (size_t i = 0; i < segs.size(); ++i) {
+    CHECK((end(i) - start(i)).norm() == Approx(1.0 / 27.0));
+    if (i > 0) CHECK((start(i) - end(i - 1)).norm() == Approx(0.0).margin(1e-12));
+    total += (end(i) - start(i)).norm();
+  }
+  CHECK(total == Approx(std::pow(4.0 / 3.0, 3)));
+}
+
+TEST_CASE("Probabilities are honoured among the alternatives", "[random]") {
+  auto r = deriveText(R"(
+    Axiom ~> Many(0);
+    Many(i) : i < 4000 ~> Pick Many(i + 1);
+    Pick ~> I("cube") : 0.25 ~> I("sphere") : 0.75;
+  )");
+  REQUIRE(r.ok);
+  const double cubes = static_cast<double>(test::countAsset(r, "cube"));
+  const double spheres = static_cast<double>(test::countAsset(r, "sphere"));
+  REQUIRE(cubes + spheres == 4000);
+  // 4000 draws: the standard deviation of the fraction is 0.0068; allow 4.4 sigma.
+  CHECK(cubes / 4000 == Approx(0.25).margin(0.03));
+}
+
+TEST_CASE("Rand draws uniformly between its bounds", "[random]") {
+  auto r = deriveText(R"(
+    Axiom ~> Many(0);
+    Many(i) : i < 2000 ~> [ T(Rand(2, 4), 0, 0) I("cube") ] Many(i + 1);
+  )");
+  REQUIRE(r.ok);
+  double sum = 0, lo = 1e9, hi = -1e9;
+  for (const auto& inst : r.instances.instances) {
+    double x = unitPoint(inst, 0, 0, 0).x();
+    sum += x, lo = std::min(lo, x), hi = std::max(hi, x);
+  }
+  CHECK(lo >= 2.0);
+  CHECK(hi < 4.0);
+  CHECK(sum / 2000 == Approx(3.0).margin(0.06));
+}
+
+namespace {
+
+std::multiset<std::vector<double>> transforms(const rt::DeriveResult& r) {
+  std::multiset<std::vector<double>> out;
+  for (const auto& inst : r.instances.instances) {
+    std::vector<double> t(inst.transform.begin(), inst.transform.end());
+    for (double& v : t) v = std::round(v * 1e9) / 1e9;
+    out.insert(t);
+  }
+  return out;
+}
+
+const char* kBranchy = R"(
+  Axiom ~> S(0.5, 0.5, 0.5) A(0);
+  A(n) : n < 7 ~> [ Rz(Rand(-40, 40)) T(Rand(0.5, 1), 0, 0) I("cube") A(n + 1) ]
+                  [ Rz(Rand(140, 220)) T(1, 0, 0) A(n + 1) ] : 0.7
+               ~> [ T(0, 1, 0) I("sphere") A(n + 1) ] : 0.3;
+)";
+
+}  // namespace
+
+TEST_CASE("The same seed gives the same result; another seed another", "[random]") {
+  rt::DeriveOptions a;
+  a.seed = 11;
+  auto r1 = deriveText(kBranchy, a), r2 = deriveText(kBranchy, a);
+  a.seed = 12;
+  auto r3 = deriveText(kBranchy, a);
+  REQUIRE(r1.instances.instances.size() > 10);
+  CHECK(transforms(r1) == transforms(r2));
+  CHECK(transforms(r1) != transforms(r3));
+}
+
+TEST_CASE("Random streams follow the derivation path, not the derivation order", "[random]") {
+  std::string depthFirst = std::string("derive depthfirst;\n") + kBranchy;
+  auto bfs = deriveText(kBranchy), dfs = deriveText(depthFirst);
+  REQUIRE(bfs.instances.instances.size() == dfs.instances.instances.size());
+  CHECK(transforms(bfs) == transforms(dfs));
+}
+
+TEST_CASE("A guarded rule that holds is preferred to an unguarded one", "[rules]") {
+  auto r = deriveText(R"(
+    Axiom ~> P(0) P(1) P(2) P(3) P(4) P(5);
+    P(k) : k % 3 == 0 ~> I("disc");
+    P(k) ~> I("sphere");
+  )");
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "disc") == 2);
+  CHECK(test::countAsset(r, "sphere") == 4);
+}
+
+TEST_CASE("Higher priority is derived first", "[rules]") {
+  // Low-priority shapes wait until every high-priority shape is done, whatever the
+  // breadth-first order says; Shape.index shows the order through instance order.
+  auto r = deriveText(R"(
+    Axiom ~> Low High;
+    priority 1:
+    Low ~> I("cube");
+    priority 2:
+    High ~> I("sphere");
+  )");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 2);
+  CHECK(r.instances.assets[r.instances.instances[0].asset] == "sphere");
+}
+
+TEST_CASE("Parallel derivation: ABOP context skips branches", "[lsystem]") {
+  // B signals rightwards, one module per step; every B then turns into a cube.
+  auto r = deriveText(R"(
+    derive parallel 3;
+    axiom: B A [ A ] A A;
+    B < A -> B;
+    B -> I("cube");
+  )");
+  REQUIRE(r.ok);
+  // Step 1: only the A right after B has it as left context (2 rewrites with B's).
+  // Step 2: the branch's A sees its parent B; the A after the branch sees B across
+  // the skipped branch; B becomes a cube (3). Step 3: the two new Bs and the last A (3).
+  CHECK(r.stats.rewrites == 2 + 3 + 3);
+  CHECK(test::countAsset(r, "cube") == 4);
+
+  auto right = deriveText(R"(
+    derive parallel 1;
+    axiom: A [ B ] C  D [ E ] G;
+    A > [ B ] C -> I("cube");
+    D > G -> I("sphere");
+  )");
+  REQUIRE(right.ok);
+  CHECK(test::countAsset(right, "cube") == 1);
+  CHECK(test::countAsset(right, "sphere") == 1);
+}
+
+TEST_CASE("Attributes take --set values by type", "[attrs]") {
+  rt::DeriveOptions o;
+  o.attrOverrides = {{"count", "7"}};
+  auto r = deriveText(R"(
+    attr count = 3;
+    Axiom ~> Row(0);
+    Row(i) : i < count ~> I("cube") T(1, 0, 0) Row(i + 1);
+  )", o);
+  REQUIRE(r.ok);
+  CHECK(r.instances.instances.size() == 7);
+  o.attrOverrides = {{"count", "lots"}};
+  auto bad = deriveText("attr count = 3; Axiom ~> I(\"cube\");", o);
+  CHECK_FALSE(bad.ok);
+  REQUIRE(bad.messages.size() == 1);
+  CHECK(bad.messages[0].message.find("expected a number") != std::string::npos);
+}
+
+TEST_CASE("Limits stop a runaway grammar, name its rule and keep the result", "[limits]") {
+  rt::DeriveOptions o;
+  o.maxShapes = 1000;
+  auto r = deriveText("Axiom ~> A; grow: A ~> I(\"cube\") A A;", o);
+  CHECK(r.ok);
+  CHECK(r.instances.instances.size() > 400);
+  REQUIRE(r.messages.size() == 1);
+  CHECK_FALSE(r.messages[0].isError);
+  CHECK(r.messages[0].message.find("'grow'") != std::string::npos);
+  CHECK(r.messages[0].line == 1);
+
+  rt::DeriveOptions d;
+  d.maxDepth = 5;
+  auto deep = deriveText("Axiom ~> A;\nchain: A ~> I(\"cube\") T(1,0,0) A;", d);
+  CHECK(deep.ok);
+  CHECK(deep.instances.instances.size() == 4);  // depths 1..4: the Axiom shape is depth 0
+  REQUIRE(deep.messages.size() == 1);
+  CHECK(deep.messages[0].message.find("'chain'") != std::string::npos);
+  CHECK(deep.messages[0].line == 2);
+}
+
+TEST_CASE("Constructs whose runtime comes later fail clearly when run", "[errors]") {
+  auto r = deriveText("Axiom ~> Marching(0.1, 30, true){ Top, Ext };\nTop ~> I(\"cube\");\nExt ~> I(\"cube\");");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R001");
+  CHECK(r.messages[0].line == 1);
+  CHECK(r.messages[0].col == 10);
+  CHECK(r.messages[0].message.find("not yet supported") != std::string::npos);
+}
+
+TEST_CASE("A missing asset is reported at its I()", "[errors]") {
+  auto r = deriveText("Axiom ~> T(1,0,0)\n  I(\"nowhere.obj\");");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R003");
+  CHECK(r.messages[0].line == 2);
+}
+
+TEST_CASE("Occlusion queries see the instances placed so far", "[queries]") {
+  auto r = deriveText(R"(
+    Axiom ~> Blocker Probe;
+    priority 2:
+    Blocker ~> S(2, 2, 2) I("cube");
+    priority 1:
+    Probe ~> [ T(1, 1, 1) S(0.5, 0.5, 0.5) Test ] [ T(5, 0, 0) Test ] [ T(1.5, 1.5, 1.5) Test ];
+    Test : Scope.occ("noparent") == "full" ~> I("sphere");
+    Test : Scope.occ("noparent") == "part" ~> I("disc");
+    Test ~> I("ico");
+  )");
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "sphere") == 1);
+  CHECK(test::countAsset(r, "disc") == 1);
+  CHECK(test::countAsset(r, "ico") == 1);
+}
+
+TEST_CASE("The Müller building example derives one door on the street side", "[examples]") {
+  ir::Module m;
+  frontend::SourceFile file;
+  std::string error;
+  REQUIRE(ir::readSourceFile(std::string(FGSG_SOURCE_DIR) + "/examples/mueller_building.fgsg", file, error));
+  frontend::Diagnostics diags(&file);
+  REQUIRE(ir::compileSource(file, m, diags));
+  rt::AssetLibrary assets;
+  assets.addSearchDir(std::string(FGSG_SOURCE_DIR) + "/examples/assets");
+  auto r = backend::interpret(m, {}, assets);
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "door.obj") == 1);
+  CHECK(test::countAsset(r, "win.obj") > 8);
+  CHECK(test::countAsset(r, "flatbrick.obj") > 100);
+  // The door faces the street: its box's outward axis is +Z.
+  for (const auto& inst : r.instances.instances)
+    if (r.instances.assets[inst.asset] == "door.obj") {
+      Eigen::Vector3d out = unitPoint(inst, 0, 0, 1) - unitPoint(inst, 0, 0, 0);
+      CHECK(out.normalized().z() == Approx(1.0));
+    }
+}
