@@ -1,0 +1,35 @@
+// Turns a derivation's instance list into one world-space mesh: every instance's asset
+// mesh (in the unit box) mapped through the instance transform and coloured with the
+// instance colour. Deterministic: the same list gives the same bytes on any thread count.
+#pragma once
+
+#include "runtime/assets.h"
+#include "runtime/instances.h"
+#include "runtime/mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace fgsg::rt {
+
+// Triangles whose world-space area is below this are dropped (the sides of a box that a
+// zero scale flattened).
+constexpr double kMinTriangleArea = 1e-12;
+
+// Resolves every name in `list.assets` in `library` (loading files on first use) and
+// fills `meshOf[i]` with the library index of `list.assets[i]`. False and a message in
+// `error` for the first name that cannot be resolved.
+bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<int>& meshOf,
+                   std::string& error);
+
+// The assembled mesh: positions by the instance transform, normals by its cofactor matrix
+// (correct even when one scale is zero), vertex colours from Instance::color, degenerate
+// triangles and the vertices only they used left out. Instances are emitted in list order.
+Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
+                       const std::vector<int>& meshOf);
+
+// The number of triangles assembleInstances would produce, without building the mesh.
+size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
+                      const std::vector<int>& meshOf);
+
+}  // namespace fgsg::rt

@@ -1,0 +1,373 @@
+#include "runtime/assets.h"
+
+// OpenMesh requires its IO header before the mesh kernel so the readers get registered.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <utility>
+
+namespace fgsg::rt {
+
+namespace {
+
+namespace fs = std::filesystem;
+using V3 = Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+// An axis whose extent is below this fraction of the largest extent is flat: it is
+// snapped to 0 instead of being stretched to fill the unit box.
+constexpr double kFlatRelTolerance = 1e-6;
+// Loaded meshes without usable normals are shaded smooth across edges whose dihedral
+// angle is below this, and sharp (split vertices) above it.
+constexpr double kCreaseAngleDegrees = 30.0;
+
+// A primitive under construction, in natural coordinates and double precision.
+struct Builder {
+  std::vector<V3> p, n;
+  std::vector<uint32_t> idx;
+
+  uint32_t vertex(const V3& pos, const V3& nrm) {
+    p.push_back(pos);
+    n.push_back(nrm.normalized());
+    return uint32_t(p.size() - 1);
+  }
+  void tri(uint32_t a, uint32_t b, uint32_t c) { idx.insert(idx.end(), {a, b, c}); }
+};
+
+// Unit circle samples shared by every ring, so rings built from the same table have
+// bit-identical positions (caps and sides of the cylinder meet exactly).
+std::vector<std::pair<double, double>> circle(int segments) {
+  std::vector<std::pair<double, double>> cs(segments);
+  for (int j = 0; j < segments; ++j) {
+    const double a = 2.0 * kPi * j / segments;
+    cs[j] = {std::cos(a), std::sin(a)};
+  }
+  return cs;
+}
+
+void buildCube(Builder& b) {
+  // For each face: outward normal n and in-plane axes u, v with u x v = n, so the corners
+  // (-u-v, +u-v, +u+v, -u+v) are counter-clockwise seen from outside.
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double s : {1.0, -1.0}) {
+      V3 n = V3::Zero();
+      n[axis] = s;
+      V3 u = V3::Zero(), v = V3::Zero();
+      u[(axis + 1) % 3] = 1.0;
+      v[(axis + 2) % 3] = 1.0;
+      if (s < 0) std::swap(u, v);
+      const uint32_t first = uint32_t(b.p.size());
+      for (auto [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+        b.vertex(n + su * u + sv * v, n);
+      b.tri(first, first + 1, first + 2);
+      b.tri(first, first + 2, first + 3);
+    }
+  }
+}
+
+void buildCylinder(Builder& b, int segments) {
+  const auto cs = circle(segments);
+  const auto ring = [&](double y, bool side) {
+    const uint32_t first = uint32_t(b.p.size());
+    for (auto [c, s] : cs) b.vertex({c, y, s}, side ? V3(c, 0, s) : V3(0, y, 0));
+    return first;
+  };
+  const uint32_t bottom = ring(-1, true), top = ring(1, true);
+  for (int j = 0; j < segments; ++j) {
+    const uint32_t k = (j + 1) % segments;
+    b.tri(bottom + j, top + j, bottom + k);
+    b.tri(bottom + k, top + j, top + k);
+  }
+  const uint32_t topCap = ring(1, false), topCentre = b.vertex({0, 1, 0}, {0, 1, 0});
+  const uint32_t botCap = ring(-1, false), botCentre = b.vertex({0, -1, 0}, {0, -1, 0});
+  for (int j = 0; j < segments; ++j) {
+    const uint32_t k = (j + 1) % segments;
+    b.tri(topCentre, topCap + k, topCap + j);
+    b.tri(botCentre, botCap + j, botCap + k);
+  }
+}
+
+void buildSphere(Builder& b, int segments, int rings) {
+  const auto cs = circle(segments);
+  const uint32_t north = b.vertex({0, 1, 0}, {0, 1, 0});
+  for (int i = 1; i < rings; ++i) {
+    const double theta = kPi * i / rings;
+    const double y = std::cos(theta), r = std::sin(theta);
+    for (auto [c, s] : cs) b.vertex({r * c, y, r * s}, {r * c, y, r * s});
+  }
+  const uint32_t south = b.vertex({0, -1, 0}, {0, -1, 0});
+  const auto at = [&](int i, int j) { return uint32_t(1 + (i - 1) * segments + j % segments); };
+  for (int j = 0; j < segments; ++j) {
+    b.tri(at(1, j), north, at(1, j + 1));
+    for (int i = 1; i + 1 < rings; ++i) {  // ring i is above ring i + 1
+      b.tri(at(i + 1, j), at(i, j), at(i + 1, j + 1));
+      b.tri(at(i + 1, j + 1), at(i, j), at(i, j + 1));
+    }
+    b.tri(south, at(rings - 1, j), at(rings - 1, j + 1));
+  }
+}
+
+void buildTorus(Builder& b, int majorSegments, int minorSegments) {
+  const double R = 3.0, r = 1.0;  // tube radius = 1/8 of the width before normalising
+  const auto cu = circle(majorSegments), cv = circle(minorSegments);
+  for (auto [cosU, sinU] : cu)
+    for (auto [cosV, sinV] : cv)
+      b.vertex({(R + r * cosV) * cosU, (R + r * cosV) * sinU, r * sinV},
+               {cosV * cosU, cosV * sinU, sinV});
+  const auto at = [&](int i, int j) {
+    return uint32_t((i % majorSegments) * minorSegments + j % minorSegments);
+  };
+  for (int i = 0; i < majorSegments; ++i)
+    for (int j = 0; j < minorSegments; ++j) {
+      b.tri(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      b.tri(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+}
+
+void buildIcosphere(Builder& b) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  const V3 corners[12] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                          {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                          {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  const uint32_t faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (const V3& c : corners) b.vertex(c.normalized(), c);
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
+  const auto mid = [&](uint32_t a, uint32_t c) {
+    const auto key = std::minmax(a, c);
+    auto it = midpoints.find(key);
+    if (it != midpoints.end()) return it->second;
+    const V3 m = (b.p[a] + b.p[c]).normalized();
+    return midpoints[key] = b.vertex(m, m);
+  };
+  for (const auto& f : faces) {
+    const uint32_t ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+    b.tri(f[0], ab, ca);
+    b.tri(f[1], bc, ab);
+    b.tri(f[2], ca, bc);
+    b.tri(ab, bc, ca);
+  }
+}
+
+void buildQuad(Builder& b) {
+  const V3 n(0, 0, 1);
+  b.vertex({0, 0, 0}, n);
+  b.vertex({1, 0, 0}, n);
+  b.vertex({1, 1, 0}, n);
+  b.vertex({0, 1, 0}, n);
+  b.tri(0, 1, 2);
+  b.tri(0, 2, 3);
+}
+
+void buildDisc(Builder& b, int segments) {
+  const V3 n(0, 0, 1);
+  const uint32_t centre = b.vertex({0, 0, 0}, n);
+  for (auto [c, s] : circle(segments)) b.vertex({c, s, 0}, n);
+  for (int j = 0; j < segments; ++j) b.tri(centre, 1 + j, 1 + (j + 1) % segments);
+}
+
+// Stretches the bounding box onto [0,1]^3 (flat axes snap to 0) and transforms the
+// normals by the inverse transpose of that scaling.
+Mesh normaliseToUnitBox(const Builder& b) {
+  V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);
+  for (const V3& q : b.p) {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const V3 extent = b.p.empty() ? V3::Zero() : V3(hi - lo);
+  const double maxExtent = extent.maxCoeff();
+  bool flat[3];
+  V3 normalScale;  // the inverse transpose of the position scaling diag(1 / extent)
+  for (int a = 0; a < 3; ++a) {
+    flat[a] = extent[a] <= kFlatRelTolerance * maxExtent;
+    normalScale[a] = flat[a] ? 1.0 : extent[a];
+  }
+  Mesh m;
+  m.positions.reserve(3 * b.p.size());
+  m.normals.reserve(3 * b.p.size());
+  for (size_t i = 0; i < b.p.size(); ++i) {
+    V3 nn = b.n[i].cwiseProduct(normalScale);
+    if (nn.norm() > 0) nn.normalize();
+    for (int a = 0; a < 3; ++a) {
+      // Dividing (not multiplying by 1 / extent) makes the maximum exactly 1.
+      m.positions.push_back(flat[a] ? 0.0f : float((b.p[i][a] - lo[a]) / extent[a]));
+      m.normals.push_back(float(nn[a]));
+    }
+  }
+  m.indices = b.idx;
+  return m;
+}
+
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// Gives every face corner the area-weighted mean normal of the faces around its vertex
+// that lie within the crease angle of the corner's own face, then merges corners of a
+// vertex whose normals agree. Sharp edges stay sharp; curved surfaces stay smooth.
+void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris, Builder& out) {
+  const size_t faceCount = tris.size() / 3;
+  std::vector<V3> area(faceCount), unit(faceCount);
+  std::vector<std::vector<uint32_t>> facesOf(pos.size());
+  for (size_t f = 0; f < faceCount; ++f) {
+    const V3 &a = pos[tris[3 * f]], &b = pos[tris[3 * f + 1]], &c = pos[tris[3 * f + 2]];
+    area[f] = (b - a).cross(c - a);
+    unit[f] = area[f].norm() > 0 ? area[f].normalized() : V3::Zero();
+    for (int k = 0; k < 3; ++k) facesOf[tris[3 * f + k]].push_back(uint32_t(f));
+  }
+  const double cosCrease = std::cos(kCreaseAngleDegrees * kPi / 180.0);
+  std::vector<std::vector<uint32_t>> copies(pos.size());  // output vertices per input vertex
+  for (size_t f = 0; f < faceCount; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = tris[3 * f + k];
+      V3 sum = V3::Zero(), all = V3::Zero();
+      for (uint32_t g : facesOf[v]) {
+        all += area[g];
+        if (unit[g].dot(unit[f]) >= cosCrease) sum += area[g];
+      }
+      if (sum.norm() == 0) sum = all;
+      const V3 n = sum.norm() > 0 ? V3(sum.normalized()) : V3(0, 0, 1);
+      uint32_t index = UINT32_MAX;
+      for (uint32_t c : copies[v])
+        if (out.n[c].dot(n) > 1.0 - 1e-9) index = c;
+      if (index == UINT32_MAX) {
+        index = out.vertex(pos[v], n);
+        copies[v].push_back(index);
+      }
+      out.idx.push_back(index);
+    }
+  }
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
+  const std::string ext = lowerExtension(path);
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+    error = "asset file '" + path + "' has an unsupported format '" + ext +
+            "' (supported: .obj .ply .off .stl)";
+    return false;
+  }
+  OMesh om;
+  // OpenMesh reports problems on its own error stream; we report them ourselves.
+  const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
+  omerr().disable();
+  omlog().disable();
+  const bool ok = OpenMesh::IO::read_mesh(om, path);
+  if (errWasOn) omerr().enable();
+  if (logWasOn) omlog().enable();
+  if (!ok) {
+    error = "cannot read asset file '" + path + "' (not a valid " + ext.substr(1) + " file?)";
+    return false;
+  }
+  if (om.n_faces() == 0) {
+    error = "asset file '" + path + "' contains no faces";
+    return false;
+  }
+  std::vector<V3> pos;
+  pos.reserve(om.n_vertices());
+  for (auto v : om.vertices()) {
+    const auto& q = om.point(v);
+    const V3 p(q[0], q[1], q[2]);
+    if (!p.allFinite()) {
+      error = "asset file '" + path + "' has a NaN or infinite vertex coordinate";
+      return false;
+    }
+    pos.push_back(p);
+  }
+  V3 lo = pos[0], hi = pos[0];
+  for (const V3& p : pos) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if ((hi - lo).maxCoeff() <= 0.0) {
+    error = "asset file '" + path + "' is degenerate: all its vertices coincide";
+    return false;
+  }
+  std::vector<uint32_t> tris;
+  tris.reserve(3 * om.n_faces());
+  for (auto f : om.faces())  // a TriMesh has triangulated every polygon on import
+    for (auto v : f.vertices()) tris.push_back(uint32_t(v.idx()));
+  Builder b;
+  creaseNormals(pos, tris, b);
+  out = normaliseToUnitBox(b);
+  return true;
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& builtinPrimitiveNames() {
+  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus",
+                                                 "ico",  "quad",     "disc"};
+  return names;
+}
+
+bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
+  static const std::map<std::string, std::function<void(Builder&)>> builders = {
+      {"cube", buildCube},
+      {"cylinder", [](Builder& b) { buildCylinder(b, 32); }},
+      {"sphere", [](Builder& b) { buildSphere(b, 32, 16); }},
+      {"torus", [](Builder& b) { buildTorus(b, 48, 16); }},
+      {"ico", buildIcosphere},
+      {"quad", buildQuad},
+      {"disc", [](Builder& b) { buildDisc(b, 32); }},
+  };
+  auto it = builders.find(name);
+  if (it == builders.end()) return false;
+  Builder b;
+  it->second(b);
+  out = normaliseToUnitBox(b);
+  return true;
+}
+
+int AssetLibrary::resolve(const std::string& name, std::string& error) {
+  if (auto it = byName_.find(name); it != byName_.end()) return it->second;
+  Mesh mesh;
+  if (!makeBuiltinPrimitive(name, mesh)) {
+    std::vector<std::string> searched;
+    std::string found;
+    if (fs::path(name).is_absolute()) {
+      searched.push_back(fs::path(name).parent_path().string());
+      if (fs::is_regular_file(name)) found = name;
+    } else {
+      // Without search directories, names are relative to the working directory.
+      std::vector<std::string> dirs = searchDirs_.empty() ? std::vector<std::string>{"."} : searchDirs_;
+      for (const auto& dir : dirs) {
+        searched.push_back(dir);
+        const fs::path candidate = fs::path(dir) / name;
+        std::error_code ec;
+        if (fs::is_regular_file(candidate, ec)) {
+          found = candidate.string();
+          break;
+        }
+      }
+    }
+    if (found.empty()) {
+      error = "asset '" + name + "' not found: not a built-in primitive (" +
+              joinNames(builtinPrimitiveNames()) + ") and no such file in " + joinNames(searched);
+      return -1;
+    }
+    if (!loadMeshFile(found, mesh, error)) return -1;
+  }
+  meshes_.push_back(std::move(mesh));
+  return byName_[name] = int(meshes_.size() - 1);
+}
+
+}  // namespace fgsg::rt

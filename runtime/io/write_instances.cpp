@@ -1,0 +1,103 @@
+#include "runtime/io/write_instances.h"
+
+#include "runtime/io/atomic_file.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace fgsg::rt::io {
+
+namespace {
+
+// Shortest round-trip text; a float prints as the float it is (0.8f as 0.8, not as the
+// double 0.800000011920929).
+template <typename T>
+void appendNumber(std::string& out, T v) {
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
+void appendString(std::string& out, const std::string& s) {
+  out += '"';
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (c < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += char(c);  // UTF-8 passes through unchanged
+        }
+    }
+  }
+  out += '"';
+}
+
+template <typename Range, typename Append>
+void appendArray(std::string& out, const Range& items, Append append) {
+  out += '[';
+  bool first = true;
+  for (const auto& item : items) {
+    if (!first) out += ',';
+    first = false;
+    append(out, item);
+  }
+  out += ']';
+}
+
+// An index that does not name an entry of its table is written as null.
+void appendName(std::string& out, const std::vector<std::string>& table, uint32_t index) {
+  if (index < table.size())
+    appendString(out, table[index]);
+  else
+    out += "null";
+}
+
+}  // namespace
+
+std::string encodeInstancesJson(const InstanceList& list) {
+  std::string out = "{\"format\":\"fgsg-instances\",\"version\":1,\n\"assets\":";
+  appendArray(out, list.assets, appendString);
+  out += ",\n\"symbols\":";
+  appendArray(out, list.symbols, appendString);
+  out += ",\n\"instances\":[";
+  for (size_t i = 0; i < list.instances.size(); ++i) {
+    const Instance& inst = list.instances[i];
+    out += i == 0 ? "\n" : ",\n";
+    out += "{\"asset\":";
+    appendName(out, list.assets, inst.asset);
+    out += ",\"symbol\":";
+    appendName(out, list.symbols, inst.symbol);
+    out += ",\"transform\":";
+    appendArray(out, inst.transform, appendNumber<double>);
+    out += ",\"color\":";
+    appendArray(out, inst.color, appendNumber<float>);
+    out += ",\"params\":[";
+    for (uint32_t p = 0; p < inst.paramCount; ++p) {
+      if (p) out += ',';
+      const size_t at = size_t(inst.firstParam) + p;
+      appendNumber(out, at < list.params.size() ? list.params[at] : NAN);
+    }
+    out += "]}";
+  }
+  out += "\n]}\n";
+  return out;
+}
+
+bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error) {
+  return writeFileAtomically(path, encodeInstancesJson(list), error);
+}
+
+}  // namespace fgsg::rt::io

@@ -1,0 +1,21 @@
+// Writes a derivation's instance list as JSON, for tools that place their own geometry:
+//   {"format":"fgsg-instances","version":1,"assets":[...],"symbols":[...],
+//    "instances":[{"asset":"torus","symbol":"B","transform":[16 numbers, column-major],
+//                  "color":[r,g,b],"params":[...]}, ...]}
+// Numbers are the shortest text that reads back as the same value, so the file is exact
+// and deterministic; one instance per line keeps diffs readable. Non-finite numbers,
+// which JSON cannot express, are written as null.
+#pragma once
+
+#include "runtime/instances.h"
+
+#include <string>
+
+namespace fgsg::rt::io {
+
+std::string encodeInstancesJson(const InstanceList& list);
+
+// Encodes and replaces `path` atomically; false and a message in `error` on failure.
+bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error);
+
+}  // namespace fgsg::rt::io

@@ -1,0 +1,233 @@
+#include "runtime/render/preview.h"
+
+#include "runtime/io/atomic_file.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <embree3/rtcore.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+// Our own private copy of the PNG writer: static functions cannot clash with the stb
+// symbols that Debian's libtinygltf exports, and no extra library is needed.
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image_write.h>
+#pragma GCC diagnostic pop
+
+namespace fgsg::rt::render {
+
+namespace {
+
+using Eigen::Vector3d;
+using Eigen::Vector3f;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFramingMargin = 1.08;  // the fitted view leaves a little room around the mesh
+constexpr double kFieldOfViewDegrees = 40.0;  // vertical, perspective view
+const Vector3d kViewFrom(0.9, 0.7, 1.2);  // the 3/4 view direction (towards the camera)
+const Vector3f kDefaultColor(0.8f, 0.8f, 0.8f);
+
+struct Camera {
+  bool orthographic = false;
+  Vector3d eye, forward, right, up;
+  double halfWidth = 1, halfHeight = 1;  // ortho: world units; perspective: tan(fov/2)
+
+  // The ray through image point (x, y) in [0,1]^2, y downwards.
+  void ray(double x, double y, Vector3d& org, Vector3d& dir) const {
+    const double sx = (2 * x - 1) * halfWidth, sy = (1 - 2 * y) * halfHeight;
+    if (orthographic) {
+      org = eye + sx * right + sy * up;
+      dir = forward;
+    } else {
+      org = eye;
+      dir = (forward + sx * right + sy * up).normalized();
+    }
+  }
+};
+
+Camera fitCamera(const Mesh& mesh, double aspect) {
+  const auto lo = mesh.boundsMin(), hi = mesh.boundsMax();
+  const Vector3d mn(lo[0], lo[1], lo[2]), mx(hi[0], hi[1], hi[2]);
+  const Vector3d centre = 0.5 * (mn + mx), extent = mx - mn;
+  const double maxExtent = std::max(extent.maxCoeff(), 1e-9);  // a lone point still gets a view
+  Camera cam;
+  if (extent.z() < kFlatPreviewRatio * maxExtent) {
+    // Straight down -Z: a planar pattern reads best as a plan.
+    cam.orthographic = true;
+    cam.forward = Vector3d(0, 0, -1);
+    cam.right = Vector3d(1, 0, 0);
+    cam.up = Vector3d(0, 1, 0);
+    cam.eye = Vector3d(centre.x(), centre.y(), mx.z() + maxExtent);
+    cam.halfWidth = std::max(0.5 * extent.x(), 1e-3 * maxExtent) * kFramingMargin;
+    cam.halfHeight = std::max(0.5 * extent.y(), 1e-3 * maxExtent) * kFramingMargin;
+    if (cam.halfWidth < cam.halfHeight * aspect)
+      cam.halfWidth = cam.halfHeight * aspect;
+    else
+      cam.halfHeight = cam.halfWidth / aspect;
+    return cam;
+  }
+  // Perspective: back off until all eight box corners are inside the view. Tighter than
+  // framing the bounding sphere when the scene is long and thin.
+  cam.halfHeight = std::tan(0.5 * kFieldOfViewDegrees * kPi / 180.0);
+  cam.halfWidth = cam.halfHeight * aspect;
+  const Vector3d towardsEye = kViewFrom.normalized();
+  cam.forward = -towardsEye;
+  cam.right = cam.forward.cross(Vector3d(0, 1, 0)).normalized();
+  cam.up = cam.right.cross(cam.forward);
+  double distance = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vector3d p((corner & 1) ? mx.x() : mn.x(), (corner & 2) ? mx.y() : mn.y(),
+                     (corner & 4) ? mx.z() : mn.z());
+    const Vector3d d = p - centre;
+    const double depth = d.dot(towardsEye);  // towards the camera
+    distance = std::max({distance, depth + kFramingMargin * std::abs(d.dot(cam.right)) / cam.halfWidth,
+                         depth + kFramingMargin * std::abs(d.dot(cam.up)) / cam.halfHeight});
+  }
+  cam.eye = centre + std::max(distance, 1e-9) * towardsEye;
+  return cam;
+}
+
+Vector3f background(double y) {  // y in [0,1] from the top
+  const Vector3f top(0.80f, 0.84f, 0.90f), bottom(0.55f, 0.58f, 0.63f);
+  return top + float(y) * (bottom - top);
+}
+
+// One Embree scene holding the mesh; released with the object.
+class RayScene {
+ public:
+  explicit RayScene(const Mesh& mesh) {
+    device_ = rtcNewDevice(nullptr);
+    scene_ = rtcNewScene(device_);
+    // Robust traversal: no rays slipping through the shared edges of adjacent triangles.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree-allocated buffers carry the padding its SIMD loads need past the last vertex.
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), mesh.vertexCount()));
+    std::memcpy(v, mesh.positions.data(), mesh.positions.size() * sizeof(float));
+    auto* i = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                             3 * sizeof(uint32_t), mesh.triangleCount()));
+    std::memcpy(i, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene_, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(scene_);
+  }
+  ~RayScene() {
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+  }
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  bool intersect(const Vector3d& org, const Vector3d& dir, RTCHit& hit) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRayHit rh{};
+    rh.ray.org_x = float(org.x()), rh.ray.org_y = float(org.y()), rh.ray.org_z = float(org.z());
+    rh.ray.dir_x = float(dir.x()), rh.ray.dir_y = float(dir.y()), rh.ray.dir_z = float(dir.z());
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &ctx, &rh);
+    hit = rh.hit;
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+  }
+
+ private:
+  RTCDevice device_;
+  RTCScene scene_;
+};
+
+// Lambert with ambient: a headlight so nothing the camera sees is black, and a key light
+// from the upper left so faces of different orientation read apart.
+Vector3f shade(const Mesh& mesh, const Camera& cam, const RTCHit& hit, const Vector3d& dir) {
+  const uint32_t* tri = &mesh.indices[3 * size_t(hit.primID)];
+  const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
+  Vector3d n = Vector3d::Zero();
+  Vector3f albedo = Vector3f::Zero();
+  const bool colored = mesh.colors.size() == mesh.positions.size();
+  const bool smooth = mesh.normals.size() == mesh.positions.size();
+  for (int k = 0; k < 3; ++k) {
+    const size_t v = 3 * size_t(tri[k]);
+    if (smooth) n += w[k] * Vector3d(mesh.normals[v], mesh.normals[v + 1], mesh.normals[v + 2]);
+    albedo += float(w[k]) * (colored ? Vector3f(mesh.colors[v], mesh.colors[v + 1], mesh.colors[v + 2])
+                                     : kDefaultColor);
+  }
+  if (!(n.norm() > 1e-12)) n = Vector3d(hit.Ng_x, hit.Ng_y, hit.Ng_z);
+  n.normalize();
+  if (n.dot(dir) > 0) n = -n;  // two-sided: light the face the camera sees
+  const Vector3d key = (-0.45 * cam.right + 0.75 * cam.up - 0.5 * cam.forward).normalized();
+  const double light = 0.22 + 0.38 * std::max(0.0, -n.dot(dir)) + 0.5 * std::max(0.0, n.dot(key));
+  return (albedo.cwiseMax(0.0f).cwiseMin(1.0f) * float(light)).cwiseMin(1.0f);
+}
+
+uint8_t toByte(float c) { return uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
+
+void appendBytes(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+}
+
+}  // namespace
+
+Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
+  Image img;
+  img.width = std::max(options.width, 1);
+  img.height = std::max(options.height, 1);
+  img.rgb.resize(size_t(img.width) * img.height * 3);
+  const int spa = std::max(options.samplesPerAxis, 1);
+  const Camera cam = fitCamera(mesh, double(img.width) / img.height);
+  std::unique_ptr<RayScene> scene;
+  if (!mesh.empty()) scene = std::make_unique<RayScene>(mesh);
+  // Every pixel depends only on its own rays, so rows can be rendered in any order.
+  tbb::parallel_for(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int py = rows.begin(); py != rows.end(); ++py) {
+      for (int px = 0; px < img.width; ++px) {
+        Vector3f sum = Vector3f::Zero();
+        for (int sy = 0; sy < spa; ++sy) {
+          for (int sx = 0; sx < spa; ++sx) {
+            const double x = (px + (sx + 0.5) / spa) / img.width;
+            const double y = (py + (sy + 0.5) / spa) / img.height;
+            Vector3d org, dir;
+            cam.ray(x, y, org, dir);
+            RTCHit hit;
+            sum += scene && scene->intersect(org, dir, hit) ? shade(mesh, cam, hit, dir) : background(y);
+          }
+        }
+        sum /= float(spa * spa);
+        uint8_t* out = &img.rgb[3 * (size_t(py) * img.width + px)];
+        for (int c = 0; c < 3; ++c) out[c] = toByte(sum[c]);
+      }
+    }
+  });
+  return img;
+}
+
+bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
+                   std::string& error, std::string* warning) {
+  if (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384) {
+    error = "preview size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+            " is out of range (1..16384)";
+    return false;
+  }
+  if (mesh.empty() && warning) *warning = "the mesh is empty: the preview shows only the background";
+  const Image img = renderImage(mesh, options);
+  std::string png;
+  if (!stbi_write_png_to_func(appendBytes, &png, img.width, img.height, 3, img.rgb.data(), img.width * 3)) {
+    error = "cannot encode the preview as PNG";
+    return false;
+  }
+  return io::writeFileAtomically(pngPath, png, error);
+}
+
+}  // namespace fgsg::rt::render

@@ -1,0 +1,40 @@
+// A quick look at an assembled mesh: an Embree ray-cast PNG with a camera fitted to the
+// bounding box. A pattern flat in Z (a planar design in the XY plane) is seen straight
+// from above with an orthographic camera; anything else in perspective from the
+// (+X, +Y, +Z) side with Y up, close enough that the bounding box just fits. Lambert
+// shading (headlight + key light + ambient) of the vertex colours over a soft gradient,
+// 2x2 supersampled. Deterministic bytes.
+#pragma once
+
+#include "runtime/mesh.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::render {
+
+// A mesh counts as flat in Z when its Z extent is below this fraction of its largest.
+constexpr double kFlatPreviewRatio = 0.02;
+
+struct PreviewOptions {
+  int width = 800;
+  int height = 600;
+  int samplesPerAxis = 2;  // supersampling: samplesPerAxis^2 rays per pixel
+};
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // row-major from the top row, 3 bytes per pixel
+};
+
+// Renders the mesh; an empty mesh gives the background alone.
+Image renderImage(const Mesh& mesh, const PreviewOptions& options);
+
+// Renders and writes a PNG atomically. False and a message in `error` when the options
+// are invalid or the file cannot be written. An empty mesh is not an error: the picture
+// shows the background and `warning` (when given) says so.
+bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
+                   std::string& error, std::string* warning = nullptr);
+
+}  // namespace fgsg::rt::render

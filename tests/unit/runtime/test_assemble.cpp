@@ -1,0 +1,182 @@
+// Assembling instances into one world-space mesh: transforms, cofactor normals,
+// degenerate triangles, colours, and thread-count independence.
+#include "runtime/assemble.h"
+
+#include <Eigen/Geometry>
+#include <catch2/catch.hpp>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <random>
+
+using namespace fgsg::rt;
+
+namespace {
+
+std::array<double, 16> toArray(const Eigen::Matrix4d& m) {
+  std::array<double, 16> a;
+  Eigen::Map<Eigen::Matrix4d>(a.data()) = m;  // column-major, as Instance::transform
+  return a;
+}
+
+std::array<double, 16> scaleTranslate(Eigen::Vector3d s, Eigen::Vector3d t) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<3, 3>(0, 0) = s.asDiagonal();
+  m.block<3, 1>(0, 3) = t;
+  return toArray(m);
+}
+
+struct Scene {
+  InstanceList list;
+  AssetLibrary library;
+  std::vector<int> meshOf;
+
+  void add(const std::string& asset, const std::array<double, 16>& transform,
+           std::array<float, 3> color = {0.8f, 0.8f, 0.8f}) {
+    uint32_t index = 0;
+    while (index < list.assets.size() && list.assets[index] != asset) ++index;
+    if (index == list.assets.size()) list.assets.push_back(asset);
+    Instance inst;
+    inst.asset = index;
+    inst.transform = transform;
+    inst.color = color;
+    list.instances.push_back(inst);
+  }
+  Mesh assemble() {
+    std::string error;
+    REQUIRE(resolveAssets(list, library, meshOf, error));
+    return assembleInstances(list, library, meshOf);
+  }
+};
+
+Eigen::Vector3d vec(const std::vector<float>& a, size_t v) { return {a[3 * v], a[3 * v + 1], a[3 * v + 2]}; }
+
+Eigen::Vector3d faceNormal(const Mesh& m, size_t t) {
+  const auto a = vec(m.positions, m.indices[3 * t]), b = vec(m.positions, m.indices[3 * t + 1]),
+             c = vec(m.positions, m.indices[3 * t + 2]);
+  return (b - a).cross(c - a);
+}
+
+double signedVolume(const Mesh& m) {
+  double vol = 0;
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    vol += vec(m.positions, m.indices[3 * t]).dot(faceNormal(m, t)) / 6.0;
+  return vol;
+}
+
+// For flat-faced assets every vertex normal equals its face's normal.
+void checkFlatNormals(const Mesh& m) {
+  for (size_t t = 0; t < m.triangleCount(); ++t) {
+    const Eigen::Vector3d n = faceNormal(m, t).normalized();
+    for (int k = 0; k < 3; ++k) CHECK(vec(m.normals, m.indices[3 * t + k]).dot(n) == Approx(1.0).epsilon(1e-5));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("two cubes assemble to known bounds", "[assemble]") {
+  Scene s;
+  s.add("cube", scaleTranslate({1, 1, 1}, {0, 0, 0}), {1, 0, 0});
+  s.add("cube", scaleTranslate({1, 2, 3}, {2, 0, 0}), {0, 0, 1});
+  const Mesh m = s.assemble();
+  CHECK(m.triangleCount() == 24);
+  CHECK(m.vertexCount() == 48);
+  CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
+  CHECK(m.boundsMax() == std::array<float, 3>{3, 2, 3});
+  CHECK(signedVolume(m) == Approx(1 + 6));
+  checkFlatNormals(m);
+  REQUIRE(m.colors.size() == m.positions.size());
+  CHECK(vec(m.colors, 0) == Eigen::Vector3d(1, 0, 0));  // instances keep list order
+  CHECK(vec(m.colors, 47) == Eigen::Vector3d(0, 0, 1));
+  CHECK(countTriangles(s.list, s.library, s.meshOf) == 24);
+}
+
+TEST_CASE("a flattened cube keeps only its top and bottom", "[assemble]") {
+  Scene s;
+  s.add("cube", scaleTranslate({2, 3, 0}, {1, 1, 5}));
+  const Mesh m = s.assemble();
+  // The four sides collapse to zero area; +Z and -Z keep two triangles each.
+  CHECK(m.triangleCount() == 4);
+  CHECK(m.vertexCount() == 8);  // the vertices only the dropped sides used are gone
+  CHECK(countTriangles(s.list, s.library, s.meshOf) == 4);
+  CHECK(m.boundsMin() == std::array<float, 3>{1, 1, 5});
+  CHECK(m.boundsMax() == std::array<float, 3>{3, 4, 5});
+  int up = 0, down = 0;
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const Eigen::Vector3d n = vec(m.normals, v);
+    up += n == Eigen::Vector3d(0, 0, 1);
+    down += n == Eigen::Vector3d(0, 0, -1);
+  }
+  CHECK(up == 4);
+  CHECK(down == 4);
+  checkFlatNormals(m);
+}
+
+TEST_CASE("a quad scaled flat in X vanishes entirely", "[assemble]") {
+  Scene s;
+  s.add("quad", scaleTranslate({0, 1, 1}, {0, 0, 0}));
+  s.add("quad", scaleTranslate({1, 1, 0}, {0, 0, 0}));  // z scale is irrelevant to a quad
+  const Mesh m = s.assemble();
+  CHECK(m.triangleCount() == 2);
+  for (size_t v = 0; v < m.vertexCount(); ++v) CHECK(vec(m.normals, v) == Eigen::Vector3d(0, 0, 1));
+}
+
+TEST_CASE("mirrors, rotations and shears keep normals outward and consistent", "[assemble]") {
+  Eigen::Matrix4d mirror = Eigen::Matrix4d::Identity();
+  mirror(0, 0) = -1;
+  Eigen::Matrix4d affine = Eigen::Matrix4d::Identity();
+  affine.block<3, 3>(0, 0) = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() *
+                             (Eigen::Matrix3d() << 2, 0.5, 0, 0, 1, 0.3, 0, 0, 3).finished();
+  affine.block<3, 1>(0, 3) = Eigen::Vector3d(10, -4, 2);
+  for (const auto& [name, t] : {std::pair{"mirror", mirror}, std::pair{"affine", affine}}) {
+    INFO(name);
+    Scene s;
+    s.add("cube", toArray(t));
+    const Mesh m = s.assemble();
+    CHECK(m.triangleCount() == 12);
+    CHECK(signedVolume(m) == Approx(std::abs(t.block<3, 3>(0, 0).determinant())));
+    checkFlatNormals(m);
+  }
+}
+
+TEST_CASE("smooth normals follow the inverse transpose of the transform", "[assemble]") {
+  Scene s;
+  s.add("sphere", scaleTranslate({4, 1, 1}, {0, 0, 0}));
+  const Mesh m = s.assemble();
+  Mesh unit;
+  makeBuiltinPrimitive("sphere", unit);
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const Eigen::Vector3d expected = vec(unit.normals, v).cwiseQuotient(Eigen::Vector3d(4, 1, 1)).normalized();
+    CHECK(vec(m.normals, v).dot(expected) == Approx(1.0).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("assembly bytes do not depend on the number of threads", "[assemble]") {
+  Scene s;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const char* assets[] = {"torus", "cube", "sphere", "quad"};
+  for (int i = 0; i < 3000; ++i) {
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t(r, c) = 10 * u(rng);
+    if (i % 7 == 0) t.col(2).head<3>().setZero();  // some flattened instances
+    s.add(assets[i % 4], toArray(t), {float(u(rng) * 0.5 + 0.5), 0.5f, 0.25f});
+  }
+  const Mesh parallel = s.assemble();
+  Mesh serial;
+  tbb::task_arena(1).execute([&] { serial = assembleInstances(s.list, s.library, s.meshOf); });
+  CHECK(parallel.positions == serial.positions);
+  CHECK(parallel.normals == serial.normals);
+  CHECK(parallel.colors == serial.colors);
+  CHECK(parallel.indices == serial.indices);
+  CHECK(countTriangles(s.list, s.library, s.meshOf) == parallel.triangleCount());
+}
+
+TEST_CASE("an unknown asset fails resolution with the library's message", "[assemble]") {
+  Scene s;
+  s.add("no_such_asset.obj", scaleTranslate({1, 1, 1}, {0, 0, 0}));
+  std::string error;
+  CHECK_FALSE(resolveAssets(s.list, s.library, s.meshOf, error));
+  CHECK_THAT(error, Catch::Contains("no_such_asset.obj"));
+}

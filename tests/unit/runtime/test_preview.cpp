@@ -1,0 +1,122 @@
+// The Embree preview: framing (3/4 perspective, top-down orthographic for flat
+// patterns), shading of vertex colours, determinism and the PNG file.
+#include "runtime/assets.h"
+#include "runtime/render/preview.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace fgsg::rt;
+using render::Image;
+using render::PreviewOptions;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratchDir(const std::string& name) {
+  // Under the build tree, one folder per test case: cases may run as parallel processes.
+  const fs::path dir = fs::path(FGSG_BINARY_DIR) / "test-scratch" / "preview" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::array<uint8_t, 3> pixel(const Image& img, int x, int y) {
+  const uint8_t* p = &img.rgb[3 * (size_t(y) * img.width + x)];
+  return {p[0], p[1], p[2]};
+}
+
+Mesh coloured(const char* primitive, std::array<float, 3> rgb) {
+  Mesh m;
+  REQUIRE(makeBuiltinPrimitive(primitive, m));
+  for (size_t v = 0; v < m.vertexCount(); ++v) m.colors.insert(m.colors.end(), rgb.begin(), rgb.end());
+  return m;
+}
+
+// How many pixels of the outermost rows and columns differ from the background.
+int borderForeground(const Image& img, const Image& bg) {
+  int n = 0;
+  for (int x = 0; x < img.width; ++x)
+    n += (pixel(img, x, 0) != pixel(bg, x, 0)) + (pixel(img, x, img.height - 1) != pixel(bg, x, img.height - 1));
+  for (int y = 0; y < img.height; ++y)
+    n += (pixel(img, 0, y) != pixel(bg, 0, y)) + (pixel(img, img.width - 1, y) != pixel(bg, img.width - 1, y));
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("a cube is framed in the middle of the picture", "[preview]") {
+  const PreviewOptions opt{200, 150, 2};
+  const Image bg = render::renderImage(Mesh{}, opt);
+  const Image img = render::renderImage(coloured("cube", {0.9f, 0.1f, 0.1f}), opt);
+  REQUIRE(img.width == 200);
+  REQUIRE(img.height == 150);
+  REQUIRE(img.rgb.size() == 200u * 150u * 3u);
+  const auto centre = pixel(img, 100, 75);
+  CHECK(centre != pixel(bg, 100, 75));
+  CHECK(centre[0] > 2 * centre[1]);  // the red vertex colour shows
+  for (auto [x, y] : {std::pair{0, 0}, {199, 0}, {0, 149}, {199, 149}}) CHECK(pixel(img, x, y) == pixel(bg, x, y));
+  CHECK(borderForeground(img, bg) == 0);  // the whole cube fits
+  // Faces turned differently get different brightness.
+  CHECK(pixel(img, 100, 40) != pixel(img, 80, 100));
+}
+
+TEST_CASE("a flat pattern is seen from above and fills the view", "[preview]") {
+  const PreviewOptions opt{160, 120, 2};
+  const Image bg = render::renderImage(Mesh{}, opt);
+  Mesh quad = coloured("quad", {0.2f, 0.4f, 0.9f});
+  for (size_t v = 0; v < quad.vertexCount(); ++v) quad.positions[3 * v] *= 2;  // 2 x 1 plate
+  const Image img = render::renderImage(quad, opt);
+  // The 2:1 plate is wider than the 4:3 picture: it spans the width up to the margin.
+  CHECK(pixel(img, 80, 60) != pixel(bg, 80, 60));
+  CHECK(pixel(img, 10, 60) != pixel(bg, 10, 60));
+  CHECK(pixel(img, 150, 60) != pixel(bg, 150, 60));
+  CHECK(pixel(img, 80, 5) == pixel(bg, 80, 5));
+  CHECK(pixel(img, 80, 115) == pixel(bg, 80, 115));
+  CHECK(borderForeground(img, bg) == 0);
+  // Seen head-on the plate is evenly lit.
+  CHECK(pixel(img, 40, 60) == pixel(img, 120, 60));
+}
+
+TEST_CASE("previews are deterministic PNG files", "[preview]") {
+  const fs::path dir = scratchDir("png");
+  const Mesh torus = coloured("torus", {0.7f, 0.6f, 0.2f});
+  std::string error, warning;
+  REQUIRE(render::renderPreview(torus, {}, (dir / "a.png").string(), error, &warning));
+  REQUIRE(render::renderPreview(torus, {}, (dir / "b.png").string(), error));
+  CHECK(warning.empty());
+  const std::string a = readFile(dir / "a.png");
+  CHECK(a.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
+  CHECK(a == readFile(dir / "b.png"));
+  // 800 x 600 by default: the IHDR chunk holds the size big-endian.
+  CHECK(a.substr(16, 8) == std::string("\0\0\x03\x20\0\0\x02\x58", 8));
+}
+
+TEST_CASE("an empty mesh gives the background and a warning", "[preview]") {
+  const fs::path dir = scratchDir("empty");
+  std::string error, warning;
+  REQUIRE(render::renderPreview(Mesh{}, {64, 48, 1}, (dir / "empty.png").string(), error, &warning));
+  CHECK_THAT(warning, Catch::Contains("empty"));
+  CHECK(fs::file_size(dir / "empty.png") > 0);
+}
+
+TEST_CASE("bad preview sizes and paths are errors", "[preview]") {
+  const fs::path dir = scratchDir("bad");
+  const Mesh cube = coloured("cube", {1, 1, 1});
+  std::string error;
+  CHECK_FALSE(render::renderPreview(cube, {0, 10, 1}, (dir / "x.png").string(), error));
+  CHECK_THAT(error, Catch::Contains("out of range"));
+  CHECK_FALSE(render::renderPreview(cube, {16, 16, 1}, (dir / "missing" / "x.png").string(), error));
+  CHECK_THAT(error, Catch::Contains("No such file or directory"));
+  CHECK(fs::is_empty(dir));
+}

@@ -1,0 +1,314 @@
+// Output files: atomic writes, mesh writers (round-tripped through OpenMesh, GLB parsed
+// and checked by the Khronos validator) and the instance JSON.
+#include "runtime/assemble.h"
+#include "runtime/io/atomic_file.h"
+#include "runtime/io/write_instances.h"
+#include "runtime/io/write_mesh.h"
+
+// OpenMesh requires its IO header before the mesh kernel.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace fgsg::rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratchDir(const std::string& name) {
+  // Under the build tree, one folder per test case: cases may run as parallel processes.
+  const fs::path dir = fs::path(FGSG_BINARY_DIR) / "test-scratch" / "writers" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Two coloured cubes and a flattened one: sharp normals, several colours, 28 triangles.
+Mesh sampleMesh() {
+  InstanceList list;
+  list.assets = {"cube"};
+  const auto place = [&](std::array<double, 3> s, std::array<double, 3> t, std::array<float, 3> c) {
+    Instance inst;
+    inst.transform = {s[0], 0, 0, 0, 0, s[1], 0, 0, 0, 0, s[2], 0, t[0], t[1], t[2], 1};
+    inst.color = c;
+    list.instances.push_back(inst);
+  };
+  place({1, 1, 1}, {0, 0, 0}, {1, 0, 0});
+  place({0.5, 2, 1}, {2, 0.25, -1}, {0.1f, 0.6f, 0.3f});
+  place({3, 3, 0}, {-1, -1, -0.5}, {0.8f, 0.8f, 0.8f});
+  AssetLibrary lib;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(resolveAssets(list, lib, meshOf, error));
+  return assembleInstances(list, lib, meshOf);
+}
+
+std::vector<std::string> filesIn(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+void checkReadBack(const Mesh& m, const fs::path& file, bool colorsAsBytes) {
+  OMesh om;
+  om.request_vertex_normals();
+  om.request_vertex_colors();
+  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexNormal | OpenMesh::IO::Options::VertexColor;
+  REQUIRE(OpenMesh::IO::read_mesh(om, file.string(), opt));
+  REQUIRE(om.n_vertices() == m.vertexCount());
+  REQUIRE(om.n_faces() == m.triangleCount());
+  CHECK(opt.check(OpenMesh::IO::Options::VertexNormal));
+  CHECK(opt.check(OpenMesh::IO::Options::VertexColor));
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const auto vh = om.vertex_handle(int(v));
+    for (int d = 0; d < 3; ++d) {
+      CHECK(om.point(vh)[d] == m.positions[3 * v + d]);  // exact: shortest round-trip text
+      CHECK(om.normal(vh)[d] == Approx(m.normals[3 * v + d]).margin(1e-6));
+      const double expected = colorsAsBytes ? std::lround(m.colors[3 * v + d] * 255.0f) : m.colors[3 * v + d] * 255.0;
+      CHECK(om.color(vh)[d] == Approx(expected).margin(colorsAsBytes ? 0 : 0.5));
+    }
+  }
+  size_t t = 0;
+  for (auto f : om.faces()) {
+    std::vector<uint32_t> vs;
+    for (auto v : f.vertices()) vs.push_back(uint32_t(v.idx()));
+    // OpenMesh may start a face at another corner; the cyclic order must match.
+    const uint32_t* want = &m.indices[3 * t++];
+    const auto at = std::find(vs.begin(), vs.end(), want[0]) - vs.begin();
+    CHECK(vs[at % 3] == want[0]);
+    CHECK(vs[(at + 1) % 3] == want[1]);
+    CHECK(vs[(at + 2) % 3] == want[2]);
+  }
+}
+
+struct Glb {
+  uint32_t magic = 0, version = 0, length = 0;
+  nlohmann::json json;
+  std::string bin;
+};
+
+Glb parseGlb(const std::string& bytes) {
+  Glb g;
+  REQUIRE(bytes.size() >= 20);
+  std::memcpy(&g.magic, bytes.data(), 4);
+  std::memcpy(&g.version, bytes.data() + 4, 4);
+  std::memcpy(&g.length, bytes.data() + 8, 4);
+  uint32_t jsonLength = 0, jsonType = 0;
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  std::memcpy(&jsonType, bytes.data() + 16, 4);
+  REQUIRE(jsonType == 0x4E4F534Au);  // "JSON"
+  REQUIRE(jsonLength % 4 == 0);
+  g.json = nlohmann::json::parse(bytes.substr(20, jsonLength));
+  const size_t binAt = 20 + jsonLength;
+  if (binAt < bytes.size()) {
+    uint32_t binLength = 0, binType = 0;
+    std::memcpy(&binLength, bytes.data() + binAt, 4);
+    std::memcpy(&binType, bytes.data() + binAt + 4, 4);
+    REQUIRE(binType == 0x004E4942u);  // "BIN\0"
+    g.bin = bytes.substr(binAt + 8, binLength);
+  }
+  return g;
+}
+
+// Runs the Khronos glTF validator; there is no silent skip when it is missing.
+void requireValidGltf(const fs::path& file) {
+  const fs::path root = FGSG_SOURCE_DIR;
+  const fs::path validator = root / "tools/node/node_modules/gltf-validator";
+  if (!fs::exists(validator))
+    FAIL("the glTF validator is not installed: run scripts/install-gltf-validator.sh (it installs "
+         "gltf-validator into tools/node/)");
+  const fs::path report = file.string() + ".report.txt";
+  const std::string cmd = "node '" + (root / "scripts/validate-gltf.js").string() + "' --strict '" +
+                          file.string() + "' > '" + report.string() + "' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  INFO(readFile(report));
+  CHECK(rc == 0);
+  CHECK_THAT(readFile(report), Catch::Contains(": 0 errors, 0 warnings"));
+}
+
+}  // namespace
+
+TEST_CASE("atomic writes replace the whole file or nothing", "[writers]") {
+  const fs::path dir = scratchDir("atomic");
+  std::string error;
+
+  SECTION("a new file, then a replacement, and no temporary left over") {
+    REQUIRE(io::writeFileAtomically((dir / "out.txt").string(), "first", error));
+    REQUIRE(io::writeFileAtomically((dir / "out.txt").string(), "second", error));
+    CHECK(readFile(dir / "out.txt") == "second");
+    CHECK(filesIn(dir) == std::vector<std::string>{"out.txt"});
+  }
+  SECTION("a missing directory is an error and leaves no file") {
+    const fs::path target = dir / "no_such_dir" / "out.glb";
+    CHECK_FALSE(io::writeFileAtomically(target.string(), "bytes", error));
+    CHECK_THAT(error, Catch::Contains("no_such_dir/out.glb"));
+    CHECK_THAT(error, Catch::Contains("No such file or directory"));
+    CHECK_FALSE(fs::exists(target));
+    CHECK(filesIn(dir).empty());
+  }
+  SECTION("a failed rename removes the temporary and keeps the target") {
+    fs::create_directories(dir / "taken" / "child");  // a non-empty directory cannot be replaced
+    CHECK_FALSE(io::writeFileAtomically((dir / "taken").string(), "bytes", error));
+    CHECK_THAT(error, Catch::Contains("cannot replace"));
+    CHECK(filesIn(dir) == std::vector<std::string>{"taken"});
+    CHECK(fs::is_directory(dir / "taken" / "child"));
+  }
+}
+
+TEST_CASE("mesh writers choose the format by extension", "[writers]") {
+  const fs::path dir = scratchDir("ext");
+  const Mesh m = sampleMesh();
+  std::string error;
+  CHECK_FALSE(io::writeMesh(m, (dir / "out.stl").string(), error));
+  CHECK_THAT(error, Catch::Contains("unsupported mesh format '.stl'"));
+  CHECK_THAT(error, Catch::Contains(".glb, .obj, .ply"));
+  CHECK_FALSE(io::writeMesh(m, (dir / "out").string(), error));
+  CHECK_THAT(error, Catch::Contains("no file extension"));
+  CHECK(filesIn(dir).empty());
+  CHECK(io::writeMesh(m, (dir / "UPPER.OBJ").string(), error));
+}
+
+TEST_CASE("OBJ and PLY read back identically with OpenMesh", "[writers]") {
+  const fs::path dir = scratchDir("roundtrip");
+  const Mesh m = sampleMesh();
+  REQUIRE(m.triangleCount() == 28);
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "out.obj").string(), error));
+  REQUIRE(io::writeMesh(m, (dir / "out.ply").string(), error));
+  checkReadBack(m, dir / "out.obj", false);
+  checkReadBack(m, dir / "out.ply", true);
+
+  const std::string obj = readFile(dir / "out.obj");
+  CHECK_THAT(obj, Catch::Contains("\nvn 0 0 1\n"));
+  CHECK_THAT(obj, Catch::Contains("\nf 1//1 2//2 3//3\n"));
+  const std::string ply = readFile(dir / "out.ply");
+  CHECK(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
+  const size_t header = ply.find("end_header\n") + 11;
+  // x y z nx ny nz as float, r g b as uchar; faces: a count byte and three uint32.
+  CHECK(ply.size() == header + m.vertexCount() * 27 + m.triangleCount() * 13);
+}
+
+TEST_CASE("GLB has the expected layout and passes the glTF validator", "[writers][gltf]") {
+  const fs::path dir = scratchDir("glb");
+  const Mesh m = sampleMesh();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "out.glb").string(), error));
+  const std::string bytes = readFile(dir / "out.glb");
+  const Glb g = parseGlb(bytes);
+  CHECK(g.magic == 0x46546C67u);  // "glTF"
+  CHECK(g.version == 2);
+  CHECK(g.length == bytes.size());
+  const auto& j = g.json;
+  CHECK(j["asset"]["version"] == "2.0");
+  CHECK(j["asset"]["generator"] == "fgsg");
+  REQUIRE(j["meshes"].size() == 1);
+  REQUIRE(j["meshes"][0]["primitives"].size() == 1);
+  const auto& prim = j["meshes"][0]["primitives"][0];
+  const auto& acc = j["accessors"];
+  const auto& pos = acc[prim["attributes"]["POSITION"].get<int>()];
+  CHECK(pos["count"] == m.vertexCount());
+  CHECK(pos["componentType"] == 5126);
+  const auto lo = m.boundsMin(), hi = m.boundsMax();
+  for (int d = 0; d < 3; ++d) {
+    CHECK(pos["min"][d].get<double>() == lo[d]);
+    CHECK(pos["max"][d].get<double>() == hi[d]);
+  }
+  CHECK(acc[prim["attributes"]["NORMAL"].get<int>()]["count"] == m.vertexCount());
+  const auto& color = acc[prim["attributes"]["COLOR_0"].get<int>()];
+  CHECK(color["count"] == m.vertexCount());
+  CHECK(color["type"] == "VEC3");
+  CHECK(color["componentType"] == 5126);
+  const auto& idx = acc[prim["indices"].get<int>()];
+  CHECK(idx["count"] == m.indices.size());
+  CHECK(idx["componentType"] == 5125);
+  CHECK(j["materials"][0]["doubleSided"] == true);
+  CHECK(j["buffers"][0]["byteLength"] == m.vertexCount() * 36 + m.indices.size() * 4);
+  CHECK(g.bin.size() == m.vertexCount() * 36 + m.indices.size() * 4);
+  // The index data is stored verbatim at the end of the buffer.
+  CHECK(std::memcmp(g.bin.data() + m.vertexCount() * 36, m.indices.data(), m.indices.size() * 4) == 0);
+  requireValidGltf(dir / "out.glb");
+}
+
+TEST_CASE("an empty mesh still gives valid files", "[writers][gltf]") {
+  const fs::path dir = scratchDir("empty");
+  const Mesh empty;
+  std::string error;
+  for (const char* name : {"empty.glb", "empty.obj", "empty.ply"}) REQUIRE(io::writeMesh(empty, (dir / name).string(), error));
+  const Glb g = parseGlb(readFile(dir / "empty.glb"));
+  CHECK_FALSE(g.json.contains("meshes"));
+  CHECK(g.json["scenes"].size() == 1);
+  requireValidGltf(dir / "empty.glb");
+  CHECK_THAT(readFile(dir / "empty.ply"), Catch::Contains("element vertex 0\n"));
+  CHECK_THAT(readFile(dir / "empty.ply"), Catch::Contains("element face 0\n"));
+}
+
+TEST_CASE("mesh bytes are deterministic", "[writers]") {
+  const Mesh a = sampleMesh(), b = sampleMesh();
+  for (const char* ext : {".glb", ".obj", ".ply"}) {
+    std::string x, y, error;
+    REQUIRE(io::encodeMesh(a, ext, x, error));
+    REQUIRE(io::encodeMesh(b, ext, y, error));
+    CHECK(x == y);
+  }
+}
+
+TEST_CASE("instance JSON is exact and parses back", "[writers]") {
+  InstanceList list;
+  list.assets = {"torus", "wall.obj"};
+  list.symbols = {"B", "say \"hi\"\\\n"};
+  list.params = {1.5, 0.1, 1.0 / 3.0};
+  Instance a;
+  a.asset = 0;
+  a.symbol = 1;
+  a.transform = {0.1, 0, 0, 0, 0, 1.0 / 3.0, 0, 0, 0, 0, 1e-300, 0, 1e20, -2.5, 3, 1};
+  a.firstParam = 0;
+  a.paramCount = 3;
+  Instance b;
+  b.asset = 1;
+  b.color = {1.0f, 0.5f, 0.0f};
+  list.instances = {a, b};
+
+  const std::string text = io::encodeInstancesJson(list);
+  CHECK(text == io::encodeInstancesJson(list));
+  const auto j = nlohmann::json::parse(text);
+  CHECK(j["format"] == "fgsg-instances");
+  CHECK(j["version"] == 1);
+  CHECK(j["assets"] == nlohmann::json({"torus", "wall.obj"}));
+  CHECK(j["symbols"][1] == "say \"hi\"\\\n");
+  REQUIRE(j["instances"].size() == 2);
+  const auto& i0 = j["instances"][0];
+  CHECK(i0["asset"] == "torus");
+  CHECK(i0["symbol"] == "say \"hi\"\\\n");
+  for (int k = 0; k < 16; ++k) CHECK(i0["transform"][k].get<double>() == a.transform[k]);  // exact
+  for (int k = 0; k < 3; ++k) CHECK(i0["params"][k].get<double>() == list.params[k]);
+  CHECK(i0["color"][0].get<float>() == 0.8f);
+  CHECK_THAT(text, Catch::Contains("\"color\":[0.8,0.8,0.8]"));  // floats print as floats
+  CHECK(j["instances"][1]["params"].empty());
+  CHECK(j["instances"][1]["asset"] == "wall.obj");
+
+  const fs::path dir = scratchDir("json");
+  std::string error;
+  REQUIRE(io::writeInstancesJson(list, (dir / "out.json").string(), error));
+  CHECK(readFile(dir / "out.json") == text);
+  CHECK_FALSE(io::writeInstancesJson(list, (dir / "missing" / "out.json").string(), error));
+  CHECK(filesIn(dir) == std::vector<std::string>{"out.json"});
+}
