@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+
 namespace fgsg::rt {
 
 using Vec3 = Eigen::Vector3d;
@@ -35,10 +37,13 @@ struct Scope {
 // Rotates the scope's axes by `degrees` about its own local axis 0/1/2 (the CGA and FGSG
 // convention: Rz turns X towards Y).
 inline void rotateLocal(Scope& s, int axis, double degrees) {
+  // Only the two axes in the plane of rotation move: a turn about Z takes X towards Y.
   const double r = degrees * 3.14159265358979323846 / 180.0;
-  Vec3 a = Vec3::Zero();
-  a[axis] = 1.0;
-  s.axes = s.axes * Eigen::AngleAxisd(r, a).toRotationMatrix();
+  const double c = std::cos(r), sn = std::sin(r);
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  const Vec3 a = s.axes.col(i), b = s.axes.col(j);
+  s.axes.col(i) = c * a + sn * b;
+  s.axes.col(j) = c * b - sn * a;
 }
 
 }  // namespace fgsg::rt

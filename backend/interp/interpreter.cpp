@@ -41,7 +41,14 @@ class Interpreter final : public QueryHost {
  public:
   Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
               std::vector<double> attrs)
-      : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)) {}
+      : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), shapes_(maxSlotCount(m)),
+        ruleUses_(m.rules.size(), 0) {}
+
+  static uint32_t maxSlotCount(const ir::Module& m) {
+    uint32_t n = 0;
+    for (const auto& s : m.symbols) n = std::max(n, s.slotCount);
+    return n;
+  }
 
   rt::DeriveResult run() {
     rt::DeriveResult result;
@@ -188,11 +195,18 @@ class Interpreter final : public QueryHost {
 
   // ------------------------------------------------------------ ops shared by both modes
 
+  // The scope a successor works on. Its [ ] stack lives in one shared vector above
+  // `stackBase`, so pushing allocates nothing once the vector has grown.
+  struct Saved {
+    rt::Scope scope;
+    rt::GeomRef geom;
+    double width;
+  };
   struct State {
     rt::Scope scope;
     rt::GeomRef geom;
     double width = 0.1;
-    std::vector<std::tuple<rt::Scope, rt::GeomRef, double>> stack;
+    size_t stackBase = 0;
   };
 
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
@@ -263,12 +277,14 @@ class Interpreter final : public QueryHost {
         for (int k = 0; k < 3; ++k)
           st.scope.S[k] = a[2 * k + 1] == static_cast<double>(ir::Size::Relative) ? a[2 * k] * st.scope.S[k] : a[2 * k];
         break;
-      case ir::OpKind::Push: st.stack.emplace_back(st.scope, st.geom, st.width); break;
+      case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width}); break;
       case ir::OpKind::Pop:
-        if (st.stack.empty())
+        if (stack_.size() <= st.stackBase)
           throw DeriveError{op.loc, "R007", "']' without a matching '[' in this string"};
-        std::tie(st.scope, st.geom, st.width) = st.stack.back();
-        st.stack.pop_back();
+        st.scope = stack_.back().scope;
+        st.geom = stack_.back().geom;
+        st.width = stack_.back().width;
+        stack_.pop_back();
         break;
       default: break;
     }
@@ -296,9 +312,9 @@ class Interpreter final : public QueryHost {
     execRoot(m_.axiom, rt::Scope{}, rt::GeomRef{}, rt::rootKey(opt_.seed), 0, 0, none.data(),
              UINT32_MAX);
     while (true) {
-      auto bucket = buckets_.rbegin();
-      while (bucket != buckets_.rend() && bucket->second.empty()) ++bucket;
-      if (bucket == buckets_.rend()) break;
+      auto bucket = buckets_.begin();
+      while (bucket != buckets_.end() && bucket->second.empty()) ++bucket;
+      if (bucket == buckets_.end()) break;
       uint32_t s;
       if (m_.mode == ir::DeriveMode::DepthFirst) {
         s = bucket->second.back();
@@ -308,6 +324,7 @@ class Interpreter final : public QueryHost {
         bucket->second.pop_front();
       }
       deriveShape(s);
+      shapes_.release(s);
     }
   }
 
@@ -399,10 +416,12 @@ class Interpreter final : public QueryHost {
     st.scope = scope;
     st.geom = geom;
     st.width = m_.turtle.width;
+    st.stackBase = stack_.size();
     Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
     children_.clear();
     Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
     execBlock(ops, st, ex, f);
+    stack_.resize(st.stackBase);  // a successor may leave '[' open: close it
     if (m_.mode == ir::DeriveMode::DepthFirst) {
       for (auto it = children_.rbegin(); it != children_.rend(); ++it) enqueue(*it);
     } else {
@@ -419,13 +438,16 @@ class Interpreter final : public QueryHost {
     uint32_t childCount;
   };
 
-  void enqueue(uint32_t s) {
-    const ir::Symbol& sym = m_.symbols[shapes_.symbol(s)];
-    if (sym.rules.empty()) {
-      ++stats_.terminals;
-      return;
-    }
-    buckets_[sym.priority].push_back(s);
+  void enqueue(uint32_t s) { bucketFor(m_.symbols[shapes_.symbol(s)].priority).push_back(s); }
+
+  // Shapes wait in one queue per priority, highest priority first; most grammars have one.
+  std::deque<uint32_t>& bucketFor(int priority) {
+    for (auto& [p, q] : buckets_)
+      if (p == priority) return q;
+    buckets_.emplace_back(priority, std::deque<uint32_t>{});
+    std::sort(buckets_.begin(), buckets_.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+    return bucketFor(priority);
   }
 
   void execBlock(const ir::Block& ops, State& st, Exec& ex, Frame& f) {
@@ -506,27 +528,31 @@ class Interpreter final : public QueryHost {
       eval_.store(a, f, slots + slot);
       slot += ir::slotWidth(a.type);
     }
-    if (shapes_.size() >= opt_.maxShapes) shapeLimit(op);
+    if (stats_.shapesCreated >= opt_.maxShapes) shapeLimit(op);
     const uint32_t index = ex.childCount++;
+    ++stats_.shapesCreated;
+    if (target.rules.empty()) {  // a terminal: nothing will ever read it again
+      ++stats_.terminals;
+      return;
+    }
     const uint32_t id = shapes_.add(op.index, st.scope, st.geom, ex.depth, index,
                                     rt::childKey(ex.key, index), creatorRule_, slots,
                                     target.slotCount);
-    ++stats_.shapesCreated;
     children_.push_back(id);
   }
 
   [[noreturn]] void shapeLimit(const ir::Op& op) {
     uint32_t worst = 0;
     uint64_t uses = 0;
-    for (const auto& [rule, n] : ruleUses_)
-      if (n > uses) worst = rule, uses = n;
-    std::string who = ruleUses_.empty() ? std::string("the axiom")
+    for (uint32_t rule = 0; rule < ruleUses_.size(); ++rule)
+      if (ruleUses_[rule] > uses) worst = rule, uses = ruleUses_[rule];
+    std::string who = uses == 0 ? std::string("the axiom")
                                         : "rule '" + m_.rules[worst].label + "' (applied " +
                                               std::to_string(uses) + " times)";
     throw LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) +
                            " shapes (--max-shapes): " + who +
                            " ran away; the shapes derived so far are kept",
-                       ruleUses_.empty() ? op.loc : m_.rules[worst].loc};
+                       uses == 0 ? op.loc : m_.rules[worst].loc};
   }
 
   void checkTime() {
@@ -543,7 +569,9 @@ class Interpreter final : public QueryHost {
     inner.scope = scope;
     inner.geom = geom;
     inner.width = outer.width;
+    inner.stackBase = stack_.size();
     execBlock(body, inner, ex, f);
+    stack_.resize(inner.stackBase);
     f.scope = &outer.scope;
   }
 
@@ -809,6 +837,7 @@ class Interpreter final : public QueryHost {
     streetDirection_ = rt::Vec3::UnitZ();
     State st;
     st.width = m_.turtle.width;
+    st.stackBase = stack_.size();
     stats_.stringLength = str.size();
     for (const Module& mod : str) {
       const ir::Op& op = *mod.op;
@@ -854,11 +883,12 @@ class Interpreter final : public QueryHost {
   ShapeStore shapes_;
   rt::GeometryArena arena_;
   rt::OcclusionIndex occluders_;
-  std::map<int, std::deque<uint32_t>> buckets_;
+  std::vector<std::pair<int, std::deque<uint32_t>>> buckets_;
   std::vector<uint32_t> children_;
+  std::vector<Saved> stack_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
-  std::map<uint32_t, uint64_t> ruleUses_;
+  std::vector<uint64_t> ruleUses_;  // applications per rule, to name a runaway one
   uint32_t chosenRule_ = 0;
   uint32_t creatorRule_ = UINT32_MAX;  // the rule whose successor is running
   bool depthLimitHit_ = false;

@@ -1,11 +1,13 @@
-// The shapes of a sequential derivation, stored as structure-of-arrays in growing
-// vectors: adding a shape appends to each array and its parameters to one pool, so no
-// shape owns a heap allocation.
+// The live shapes of a sequential derivation, stored as structure-of-arrays. A shape's
+// slot is recycled once it has been derived, and parameters live in one pool with a
+// fixed stride (the largest parameter block of any symbol), so deriving allocates
+// nothing per shape and memory follows the number of shapes waiting, not the total.
 #pragma once
 
 #include "runtime/geometry.h"
 #include "runtime/scope.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -13,23 +15,36 @@ namespace fgsg::backend {
 
 class ShapeStore {
  public:
+  explicit ShapeStore(uint32_t paramStride = 0) : stride_(std::max<uint32_t>(paramStride, 1)) {}
+
   uint32_t add(uint32_t symbol, const rt::Scope& scope, const rt::GeomRef& geom, uint32_t depth,
                uint32_t index, uint64_t key, uint32_t creator, const double* params,
                uint32_t slotCount) {
-    const auto id = static_cast<uint32_t>(symbol_.size());
-    symbol_.push_back(symbol);
-    scope_.push_back(scope);
-    geom_.push_back(geom);
-    depth_.push_back(depth);
-    index_.push_back(index);
-    key_.push_back(key);
-    creator_.push_back(creator);
-    firstParam_.push_back(static_cast<uint32_t>(params_.size()));
-    params_.insert(params_.end(), params, params + slotCount);
-    return id;
+    uint32_t s;
+    if (!free_.empty()) {
+      s = free_.back();
+      free_.pop_back();
+    } else {
+      s = static_cast<uint32_t>(symbol_.size());
+      symbol_.emplace_back(), scope_.emplace_back(), geom_.emplace_back(), depth_.emplace_back();
+      index_.emplace_back(), key_.emplace_back(), creator_.emplace_back();
+      params_.resize(params_.size() + stride_);
+    }
+    symbol_[s] = symbol;
+    scope_[s] = scope;
+    geom_[s] = geom;
+    depth_[s] = depth;
+    index_[s] = index;
+    key_[s] = key;
+    creator_[s] = creator;
+    std::copy(params, params + slotCount, params_.begin() + static_cast<size_t>(s) * stride_);
+    return s;
   }
 
-  size_t size() const { return symbol_.size(); }
+  // The shape has been derived: its slot may be reused.
+  void release(uint32_t s) { free_.push_back(s); }
+
+  size_t live() const { return symbol_.size() - free_.size(); }
   uint32_t symbol(uint32_t s) const { return symbol_[s]; }
   const rt::Scope& scope(uint32_t s) const { return scope_[s]; }
   const rt::GeomRef& geom(uint32_t s) const { return geom_[s]; }
@@ -37,14 +52,10 @@ class ShapeStore {
   uint32_t index(uint32_t s) const { return index_[s]; }
   uint64_t key(uint32_t s) const { return key_[s]; }
   uint32_t creator(uint32_t s) const { return creator_[s]; }  // rule index or UINT32_MAX
-  const double* params(uint32_t s) const { return params_.data() + firstParam_[s]; }
-
-  void reserve(size_t n) {
-    symbol_.reserve(n), scope_.reserve(n), geom_.reserve(n), depth_.reserve(n);
-    index_.reserve(n), key_.reserve(n), creator_.reserve(n), firstParam_.reserve(n);
-  }
+  const double* params(uint32_t s) const { return params_.data() + static_cast<size_t>(s) * stride_; }
 
  private:
+  uint32_t stride_;
   std::vector<uint32_t> symbol_;
   std::vector<rt::Scope> scope_;
   std::vector<rt::GeomRef> geom_;
@@ -52,8 +63,8 @@ class ShapeStore {
   std::vector<uint32_t> index_;
   std::vector<uint64_t> key_;
   std::vector<uint32_t> creator_;
-  std::vector<uint32_t> firstParam_;
   std::vector<double> params_;
+  std::vector<uint32_t> free_;
 };
 
 }  // namespace fgsg::backend
