@@ -1,0 +1,79 @@
+// CGA shape operations (Müller et al. 2006) on a shape's scope and geometry: splits,
+// repeats, component splits, extrusion and roofs. Pure functions: they read a scope and
+// a geometry reference and write the parts a successor body receives. Errors (a split
+// that cannot fit, an unknown selector) come back as text in `error`, never thrown.
+#pragma once
+
+#include "runtime/geometry.h"
+#include "runtime/scope.h"
+
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::cga {
+
+// A size argument after evaluation: absolute (h), relative share of what absolute and
+// floating sizes leave (1r), or floating (~h: an absolute size that stretches so the
+// floating parts fill the scope when there are no relative parts).
+struct SizeValue {
+  enum Kind { Absolute, Relative, Floating } kind = Absolute;
+  double value = 0.0;
+};
+
+struct Part {
+  Scope scope;
+  GeomRef geom;
+  bool empty = false;  // a part whose geometry clipped away entirely (it is skipped)
+};
+
+// Subdiv("X", s1, s2, ...): cuts the scope along `axis` (0 X, 1 Y, 2 Z) into one part
+// per size, in order. Relative sizes share the length left by the others in proportion
+// to their values; floating sizes stretch when no relative size is present. Polygon and
+// polyhedron geometry is clipped to each slab. Fails if absolute sizes exceed the length
+// and nothing relative or floating can absorb the difference (that is CGA's semantics:
+// parts must add up to the scope).
+bool subdivide(const Scope& scope, const GeomRef& geom, int axis,
+               const std::vector<SizeValue>& sizes, GeometryArena& arena,
+               std::vector<Part>& out, std::string& error);
+
+// Repeat("X", s) / Repeat("XY", sx, sy): tiles the scope with n = max(1, floor(L / s))
+// equal tiles per axis (each L / n long), axes given as a mask (1 X, 2 Y, 4 Z) with one
+// size per set bit, low bit first. Tiles are ordered X fastest, then Y, then Z. Tiles
+// whose clipped geometry is empty are marked `empty`.
+bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
+            const std::vector<double>& sizes, GeometryArena& arena, std::vector<Part>& out,
+            std::string& error);
+
+// Comp("selector"): the components of a box or polyhedron. Face selectors: "faces",
+// "sidefaces", "top", "bottom", "front" (+Z), "back" (-Z), "left" (-X), "right" (+X)
+// (top is +Y: buildings stand on the XZ plane, CGA's convention). Each face becomes a
+// Polygon part whose scope has X along the face's lowest horizontal edge (or its first
+// edge), Z the outward normal and Y = Z x X, its origin at the face's bounding-box
+// corner so the polygon lies in [0,1]^2 of the new scope. Edge selectors: "edges",
+// "sideedges", "topedges", "bottomedges": an edge is top when both ends are at the
+// solid's maximum height, bottom when both are at its minimum, side otherwise; each
+// becomes an Edge part whose scope has Y along the edge (sy = its length), Z the mean
+// of the adjacent face normals, sx = sz = 0.
+bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
+                GeometryArena& arena, std::vector<Part>& out, std::string& error);
+
+// Extrude(h): a Polygon becomes a prism of height h along the scope's Z; a flat Box with
+// sy == 0 (a CGA footprint on the XZ plane) grows to height h along Y. The result's
+// scope spans the solid.
+bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena,
+             Part& out, std::string& error);
+
+// Roof("hipped" | "gable" | "pyramid", angle): a roof solid on the scope's XZ rectangle
+// (the scope is the footprint or the top of a mass model), with slopes at `angle`
+// degrees; the ridge runs along the longer side. The result's scope spans the roof
+// (sy = its height) and its geometry is a Polyhedron whose sloped faces are side faces
+// for Comp, whose ridge is a top edge and whose hips are side edges.
+bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, double angleDeg,
+          GeometryArena& arena, Part& out, std::string& error);
+
+// Triangulates a shape's own geometry (box, polygon or polyhedron) into world-space
+// triangles, appended as x y z floats: used when a grammar instances a shape's geometry.
+void triangulate(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
+                 std::vector<float>& positions, std::vector<unsigned>& indices);
+
+}  // namespace fgsg::rt::cga

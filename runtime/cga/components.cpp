@@ -1,0 +1,252 @@
+// Comp: splits a solid (box or polyhedron) or a polygon into its faces or edges, each with
+// a scope of its own (CGA's component split).
+#include "runtime/cga/cga.h"
+#include "runtime/cga/polygon_clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fgsg::rt::cga {
+namespace {
+
+// A face whose normal is within this of the solid's +Y / -Y (|n.Y| >= 1 - tol) is top /
+// bottom; every other face, sloped roof faces included, is a side face.
+constexpr double kHorizontalTol = 1e-6;
+// Relative to the solid's size: points closer than this are one edge end, heights closer
+// than this are equal, normals and edges shorter than this are degenerate.
+constexpr double kMergeTol = 1e-9;
+
+enum FaceClass : unsigned {
+  kTop = 1,
+  kBottom = 2,
+  kFront = 4,
+  kBack = 8,
+  kLeft = 16,
+  kRight = 32,
+  kSide = kFront | kBack | kLeft | kRight,
+  kAllFaces = 63,
+};
+enum EdgeClass : unsigned { kTopEdge = 1, kBottomEdge = 2, kSideEdge = 4, kAllEdges = 7 };
+
+struct Selector {
+  bool edges = false;
+  unsigned mask = 0;  // FaceClass or EdgeClass bits
+};
+
+bool parseSelector(const std::string& s, Selector& sel) {
+  static const struct {
+    const char* name;
+    bool edges;
+    unsigned mask;
+  } kSelectors[] = {
+      {"faces", false, kAllFaces},  {"sidefaces", false, kSide},
+      {"top", false, kTop},         {"bottom", false, kBottom},
+      {"front", false, kFront},     {"back", false, kBack},
+      {"left", false, kLeft},       {"right", false, kRight},
+      {"edges", true, kAllEdges},   {"sideedges", true, kSideEdge},
+      {"topedges", true, kTopEdge}, {"bottomedges", true, kBottomEdge},
+  };
+  for (const auto& k : kSelectors)
+    if (s == k.name) {
+      sel = {k.edges, k.mask};
+      return true;
+    }
+  return false;
+}
+
+// A face in world space with its unit outward normal.
+struct WorldFace {
+  Polygon3 pts;
+  Vec3 normal;
+};
+
+std::vector<WorldFace> worldFaces(const Scope& scope, const GeomRef& geom,
+                                  const GeometryArena& arena) {
+  auto toWorld = [&](const Vec3& n) { return scope.toWorld(scope.S.cwiseProduct(n)); };
+  std::vector<WorldFace> faces;
+  if (geom.kind == GeomKind::Box) {
+    // Normals come from the axes, so a flat box (a footprint) still has oriented faces.
+    const Vec3 normals[6] = {scope.Z(), scope.X(), -scope.Z(), -scope.X(), scope.Y(), -scope.Y()};
+    const std::vector<Polygon3>& box = unitBoxFaces();
+    for (std::size_t i = 0; i < box.size(); ++i) {
+      WorldFace f{{}, normals[i]};
+      for (const Vec3& p : box[i]) f.pts.push_back(toWorld(p));
+      faces.push_back(std::move(f));
+    }
+    return faces;
+  }
+  const LocalGeometry g = loadGeometry(arena, geom);
+  for (const Polygon3& local : g.faces) {
+    WorldFace f;
+    for (const Vec3& p : local) f.pts.push_back(toWorld(p));
+    const Vec3 n = newellNormal(f.pts);
+    if (geom.kind == GeomKind::Polygon) {
+      f.normal = scope.Z();
+    } else if (n.norm() > kMergeTol * kMergeTol * (1.0 + scope.S.squaredNorm())) {
+      f.normal = n.normalized();
+    } else {
+      continue;  // a degenerate face has no orientation
+    }
+    faces.push_back(std::move(f));
+  }
+  return faces;
+}
+
+unsigned classifyFace(const Vec3& worldNormal, const Scope& scope) {
+  const Vec3 n = scope.axes.transpose() * worldNormal;  // in the solid's frame
+  if (n.y() >= 1.0 - kHorizontalTol) return kTop;
+  if (n.y() <= -(1.0 - kHorizontalTol)) return kBottom;
+  if (std::abs(n.z()) >= std::abs(n.x())) return n.z() > 0 ? kFront : kBack;
+  return n.x() > 0 ? kRight : kLeft;
+}
+
+// The face's scope: Z its normal, X horizontal along the face (Y x Z of the solid, the
+// direction of its bottom edge walked counter-clockwise) so Y = Z x X points up the face;
+// for top and bottom faces X is the solid's X. The origin is the corner of the face's
+// bounding rectangle so the normalised polygon lies in [0,1]^2.
+Part facePart(const WorldFace& f, const Scope& solid, GeometryArena& arena, GeomRef& unitSquare) {
+  const Vec3 z = f.normal;
+  Vec3 x;
+  if (std::abs(z.dot(solid.Y())) >= 1.0 - kHorizontalTol)
+    x = (solid.X() - solid.X().dot(z) * z).normalized();
+  else
+    x = solid.Y().cross(z).normalized();
+  const Vec3 y = z.cross(x);
+
+  const Vec3& origin = f.pts.front();
+  double umin = std::numeric_limits<double>::infinity(), vmin = umin;
+  double umax = -umin, vmax = -umin;
+  for (const Vec3& p : f.pts) {
+    const double u = (p - origin).dot(x), v = (p - origin).dot(y);
+    umin = std::min(umin, u), umax = std::max(umax, u);
+    vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+  }
+  Part part;
+  part.scope.axes.col(0) = x;
+  part.scope.axes.col(1) = y;
+  part.scope.axes.col(2) = z;
+  part.scope.P = origin + x * umin + y * vmin;
+  part.scope.S = Vec3(umax - umin, vmax - vmin, 0.0);
+
+  // Snapping to exact 0 / 1 keeps box faces exactly the unit square.
+  constexpr double kSnap = 1e-12;
+  auto normalised = [&](double c, double lo, double size) {
+    if (size <= 0.0) return 0.0;
+    const double t = (c - lo) / size;
+    return std::abs(t) < kSnap ? 0.0 : std::abs(t - 1.0) < kSnap ? 1.0 : t;
+  };
+  Polygon3 poly;
+  poly.reserve(f.pts.size());
+  for (const Vec3& p : f.pts)
+    poly.emplace_back(normalised((p - origin).dot(x), umin, part.scope.S.x()),
+                      normalised((p - origin).dot(y), vmin, part.scope.S.y()), 0.0);
+  if (isUnitSquare(poly.data(), poly.size())) {
+    // Every face of a box is the unit square: store it once per call.
+    if (unitSquare.count == 0) unitSquare = arena.addPolygon(poly);
+    part.geom = unitSquare;
+  } else {
+    part.geom = arena.addPolygon(poly);
+  }
+  return part;
+}
+
+struct WorldEdge {
+  Vec3 a, b;
+  Vec3 normalSum = Vec3::Zero();
+};
+
+// Each edge once, in the order the faces first reach it, with the normals of the faces
+// that share it summed.
+std::vector<WorldEdge> uniqueEdges(const std::vector<WorldFace>& faces, double tol) {
+  std::vector<WorldEdge> edges;
+  auto same = [&](const Vec3& p, const Vec3& q) { return (p - q).norm() <= tol; };
+  for (const WorldFace& f : faces) {
+    const std::size_t n = f.pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3& a = f.pts[i];
+      const Vec3& b = f.pts[(i + 1) % n];
+      if (same(a, b)) continue;
+      auto it = std::find_if(edges.begin(), edges.end(), [&](const WorldEdge& e) {
+        return (same(e.a, a) && same(e.b, b)) || (same(e.a, b) && same(e.b, a));
+      });
+      if (it == edges.end()) it = edges.insert(edges.end(), WorldEdge{a, b});
+      it->normalSum += f.normal;
+    }
+  }
+  return edges;
+}
+
+// The edge's scope: Y along the edge from its lower end (horizontal edges keep the
+// direction of the first face that walks them), Z the mean of the adjacent face normals
+// made orthogonal to the edge, X = Y x Z; sx = sz = 0, sy = the edge's length.
+Part edgePart(const WorldEdge& e, const Scope& solid, double tol) {
+  Vec3 a = e.a, b = e.b;
+  if ((b - a).dot(solid.Y()) < -tol) std::swap(a, b);
+  const double len = (b - a).norm();
+  const Vec3 y = (b - a) / len;
+  Vec3 z = e.normalSum - e.normalSum.dot(y) * y;
+  if (z.norm() <= kMergeTol) {
+    // Opposite normals (a flat solid): any direction across the edge will do.
+    z = y.unitOrthogonal();
+  }
+  z.normalize();
+  Part part;
+  part.scope.axes.col(0) = y.cross(z);
+  part.scope.axes.col(1) = y;
+  part.scope.axes.col(2) = z;
+  part.scope.P = a;
+  part.scope.S = Vec3(0.0, len, 0.0);
+  part.geom = GeomRef{GeomKind::Edge, 0, 0};
+  return part;
+}
+
+}  // namespace
+
+// `out` is replaced by the selected components, in the order of the solid's faces (a box:
+// front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
+// is a solid with one face: its own; its edges are its boundary.
+bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
+                GeometryArena& arena, std::vector<Part>& out, std::string& error) {
+  out.clear();
+  Selector sel;
+  if (!parseSelector(selector, sel)) {
+    error = "Comp: unknown selector \"" + selector +
+            "\" (expected faces, sidefaces, top, bottom, front, back, left, right, edges, "
+            "sideedges, topedges or bottomedges)";
+    return false;
+  }
+  if (geom.kind == GeomKind::Edge) {
+    error = "Comp(\"" + selector + "\"): an edge has no faces or edges";
+    return false;
+  }
+  const std::vector<WorldFace> faces = worldFaces(scope, geom, arena);
+
+  if (!sel.edges) {
+    GeomRef unitSquare{GeomKind::Polygon, 0, 0};
+    for (const WorldFace& f : faces)
+      if (classifyFace(f.normal, scope) & sel.mask)
+        out.push_back(facePart(f, scope, arena, unitSquare));
+    return true;
+  }
+
+  const double tol = kMergeTol * (1.0 + scope.S.norm());
+  double hmin = std::numeric_limits<double>::infinity(), hmax = -hmin;
+  for (const WorldFace& f : faces)
+    for (const Vec3& p : f.pts) {
+      const double h = (p - scope.P).dot(scope.Y());
+      hmin = std::min(hmin, h), hmax = std::max(hmax, h);
+    }
+  for (const WorldEdge& e : uniqueEdges(faces, tol)) {
+    const double ha = (e.a - scope.P).dot(scope.Y()), hb = (e.b - scope.P).dot(scope.Y());
+    unsigned cls = kSideEdge;
+    if (std::abs(ha - hmax) <= tol && std::abs(hb - hmax) <= tol)
+      cls = kTopEdge;
+    else if (std::abs(ha - hmin) <= tol && std::abs(hb - hmin) <= tol)
+      cls = kBottomEdge;
+    if (cls & sel.mask) out.push_back(edgePart(e, scope, tol));
+  }
+  return true;
+}
+
+}  // namespace fgsg::rt::cga

@@ -1,0 +1,108 @@
+// Triangulates a shape's geometry into world-space triangles for instancing and export.
+#include "runtime/cga/cga.h"
+#include "runtime/cga/polygon_clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace fgsg::rt::cga {
+namespace {
+
+// Relative to the square of the polygon's extent: smaller signed areas count as zero.
+constexpr double kDegenerateTol = 1e-12;
+
+using Vec2 = Eigen::Vector2d;
+
+double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+// Ear clipping of a planar polygon, counter-clockwise about its Newell normal; concave
+// polygons (L-shaped footprints) and the zero-width bridges of clipped concave polygons
+// are accepted. Appends index triples into `pts`, each counter-clockwise like the polygon.
+void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) {
+  const Vec3 n = newellNormal(pts);
+  if (pts.size() < 3 || n.norm() == 0.0) return;
+  const Vec3 w = n.normalized();
+  const Vec3 u = w.unitOrthogonal();
+  const Vec3 v = w.cross(u);  // u x v = w: counter-clockwise about w is counter-clockwise in 2D
+  std::vector<Vec2> q;
+  q.reserve(pts.size());
+  for (const Vec3& p : pts) q.emplace_back(p.dot(u), p.dot(v));
+  Vec2 lo = q[0], hi = q[0];
+  for (const Vec2& p : q) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double eps = kDegenerateTol * (hi - lo).squaredNorm();
+
+  auto coincide = [&](uint32_t i, uint32_t j) { return (q[i] - q[j]).squaredNorm() <= eps; };
+  auto isEar = [&](const std::vector<uint32_t>& idx, uint32_t a, uint32_t b, uint32_t c) {
+    for (uint32_t j : idx) {
+      if (coincide(j, a) || coincide(j, b) || coincide(j, c)) continue;
+      if (cross(q[a], q[b], q[j]) >= -eps && cross(q[b], q[c], q[j]) >= -eps &&
+          cross(q[c], q[a], q[j]) >= -eps)
+        return false;  // another vertex inside or on the candidate triangle
+    }
+    return true;
+  };
+
+  std::vector<uint32_t> idx(pts.size());
+  std::iota(idx.begin(), idx.end(), 0u);
+  while (idx.size() > 3) {
+    const std::size_t m = idx.size();
+    bool clipped = false;
+    for (std::size_t k = 0; k < m && !clipped; ++k) {
+      const uint32_t a = idx[(k + m - 1) % m], b = idx[k], c = idx[(k + 1) % m];
+      const double cr = cross(q[a], q[b], q[c]);
+      if (std::abs(cr) <= eps) {
+        // A collinear vertex or the tip of a zero-width spike: dropping it loses no area.
+        idx.erase(idx.begin() + k);
+        clipped = true;
+      } else if (cr > 0 && isEar(idx, a, b, c)) {
+        tris.insert(tris.end(), {a, b, c});
+        idx.erase(idx.begin() + k);
+        clipped = true;
+      }
+    }
+    if (!clipped) {
+      // Only a self-touching polygon has no ear: cut at the first vertex to terminate.
+      tris.insert(tris.end(), {idx[m - 1], idx[0], idx[1]});
+      idx.erase(idx.begin());
+    }
+  }
+  if (cross(q[idx[0]], q[idx[1]], q[idx[2]]) > eps)
+    tris.insert(tris.end(), {idx[0], idx[1], idx[2]});
+}
+
+void appendFace(const Polygon3& world, std::vector<float>& positions,
+                std::vector<unsigned>& indices) {
+  std::vector<uint32_t> tris;
+  earClip(world, tris);
+  if (tris.empty()) return;
+  const auto base = static_cast<unsigned>(positions.size() / 3);
+  for (const Vec3& p : world)
+    positions.insert(positions.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                       static_cast<float>(p.z())});
+  for (uint32_t i : tris) indices.push_back(base + i);
+}
+
+}  // namespace
+
+// Each face gets its own vertices (flat shading). A box gives 12 triangles; faces with no
+// area are skipped, so a box with one zero size (a facade wall, a footprint) gives the 4
+// triangles of its two opposite faces and a box with two zero sizes gives none. Polygons
+// and polyhedron faces are ear-clipped; an edge has no triangles.
+void triangulate(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
+                 std::vector<float>& positions, std::vector<unsigned>& indices) {
+  if (geom.kind == GeomKind::Edge) return;
+  auto toWorld = [&](const Vec3& n) { return scope.toWorld(scope.S.cwiseProduct(n)); };
+  const std::vector<Polygon3> faces =
+      geom.kind == GeomKind::Box ? unitBoxFaces() : loadGeometry(arena, geom).faces;
+  Polygon3 world;
+  for (const Polygon3& f : faces) {
+    world.clear();
+    for (const Vec3& p : f) world.push_back(toWorld(p));
+    appendFace(world, positions, indices);
+  }
+}
+
+}  // namespace fgsg::rt::cga
