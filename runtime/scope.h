@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace fgsg::rt {
 
@@ -36,10 +38,29 @@ struct Scope {
 
 // Rotates the scope's axes by `degrees` about its own local axis 0/1/2 (the CGA and FGSG
 // convention: Rz turns X towards Y).
+// cos and sin of an angle in degrees. Grammars turn by a few angles over and over, so a
+// small per-thread memo of exact results saves most of the trigonometry.
+inline void cosSinDegrees(double degrees, double& c, double& s) {
+  struct Entry {
+    uint64_t bits = 0;  // the angle's bit pattern: -0 and +0 are different keys
+    double c = 1, s = 0;
+  };
+  thread_local Entry memo[64];
+  uint64_t bits;
+  std::memcpy(&bits, &degrees, sizeof bits);
+  Entry& e = memo[(bits ^ (bits >> 29) ^ (bits >> 47)) & 63];
+  if (e.bits != bits) {
+    const double r = degrees * 3.14159265358979323846 / 180.0;
+    e = {bits, std::cos(r), std::sin(r)};
+  }
+  c = e.c;
+  s = e.s;
+}
+
 inline void rotateLocal(Scope& s, int axis, double degrees) {
   // Only the two axes in the plane of rotation move: a turn about Z takes X towards Y.
-  const double r = degrees * 3.14159265358979323846 / 180.0;
-  const double c = std::cos(r), sn = std::sin(r);
+  double c, sn;
+  cosSinDegrees(degrees, c, sn);
   const int i = (axis + 1) % 3, j = (axis + 2) % 3;
   const Vec3 a = s.axes.col(i), b = s.axes.col(j);
   s.axes.col(i) = c * a + sn * b;

@@ -10,7 +10,7 @@ constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 }  // namespace
 
-double Evaluator::num(const ir::Expr& e, const Frame& f) const {
+double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
   using ir::ExprOp;
   switch (e.op) {
     case ExprOp::Const: return e.num;

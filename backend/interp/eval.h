@@ -42,7 +42,12 @@ class Evaluator {
   Evaluator(const ir::Module& m, std::vector<double> attrSlots)
       : m_(m), attrs_(std::move(attrSlots)) {}
 
-  double num(const ir::Expr& e, const Frame& f) const;
+  // Constants and parameters, most arguments in practice, are read without a call.
+  double num(const ir::Expr& e, const Frame& f) const {
+    if (e.op == ir::ExprOp::Const) return e.num;
+    if (e.op == ir::ExprOp::Param) return f.params[e.index];
+    return numSlow(e, f);
+  }
   rt::Vec3 vec(const ir::Expr& e, const Frame& f) const;
   bool truth(const ir::Expr& e, const Frame& f) const { return num(e, f) != 0.0; }
   // Writes a value of any type into slots (1 or 3 doubles).
@@ -50,6 +55,7 @@ class Evaluator {
   const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
 
  private:
+  double numSlow(const ir::Expr& e, const Frame& f) const;
   double call(const ir::Expr& e, const Frame& f) const;
   double query(const ir::Expr& e, const Frame& f) const;
 

@@ -322,6 +322,9 @@ class Interpreter final : public QueryHost {
       } else {
         s = bucket->second.front();
         bucket->second.pop_front();
+        // Breadth-first, the next shapes were written long ago and are cold: fetch them
+        // while this one is derived.
+        if (bucket->second.size() > 2) shapes_.prefetch(bucket->second[2]);
       }
       deriveShape(s);
       shapes_.release(s);

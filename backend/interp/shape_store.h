@@ -41,6 +41,13 @@ class ShapeStore {
     return s;
   }
 
+  void prefetch(uint32_t s) const {
+    __builtin_prefetch(&scope_[s]);
+    __builtin_prefetch(reinterpret_cast<const char*>(&scope_[s]) + 64);
+    __builtin_prefetch(params_.data() + static_cast<size_t>(s) * stride_);
+    __builtin_prefetch(&key_[s]);
+  }
+
   // The shape has been derived: its slot may be reused.
   void release(uint32_t s) { free_.push_back(s); }
 
