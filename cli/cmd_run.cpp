@@ -95,8 +95,10 @@ int runCommand(const Args& args) {
 
   const auto grammarDir = std::filesystem::path(opt.file).parent_path();
   rt::AssetLibrary assets;
-  assets.addSearchDir(grammarDir.empty() ? "." : grammarDir.string());
-  assets.addSearchDir((grammarDir / "assets").string());
+  for (const auto& dir : {grammarDir.empty() ? std::filesystem::path(".") : grammarDir, grammarDir / "assets"}) {
+    assets.addSearchDir(dir.string());
+    opt.derive.assetDirs.push_back(dir.string());  // data files such as synthesis examples
+  }
 
   auto t0 = std::chrono::steady_clock::now();
   rt::DeriveResult result = backend::interpret(compiled->module, opt.derive, assets);

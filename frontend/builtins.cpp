@@ -39,7 +39,8 @@ const CommandInfo kCommands[] = {
     {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", kMarching},
     {CommandId::Line, "Line", 0, -1, BodyRule::Optional, "Line(...)", kLines},
     {CommandId::LineSeg, "LineSeg", 0, -1, BodyRule::Optional, "LineSeg(...)", kLines},
-    {CommandId::Synthesize, "Synthesize", 0, -1, BodyRule::Optional, "Synthesize(...)", kSolvers},
+    {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,
+     "Synthesize(\"example.txt\", nx, ny, nz)", nullptr},
     {CommandId::Evolve, "Evolve", 0, -1, BodyRule::Optional, "Evolve(...)", kSolvers},
     {CommandId::Cells, "Cells", 0, -1, BodyRule::Optional, "Cells(...)", kSolvers},
 };

@@ -466,9 +466,12 @@ class Analyzer {
         expect(*item.args[1], w, ValueType::Num, "the marching angle");
         expect(*item.args[2], w, ValueType::Bool, "the marching condition");
         break;
+      case CommandId::Synthesize:
+        stringArg(0, "example file");
+        numArgs(1, false);
+        break;
       case CommandId::Line:
       case CommandId::LineSeg:
-      case CommandId::Synthesize:
       case CommandId::Evolve:
       case CommandId::Cells:
         for (const auto& a : item.args) typeOf(*a, w, true);
@@ -855,9 +858,12 @@ class Analyzer {
         work.push_back(static_cast<size_t>(s));
       }
     };
+    bool synthesizes = false;  // pieces of a synthesized model may be any symbol
     std::function<void(const Item&)> visit = [&](const Item& item) {
       if (item.kind == ItemKind::Bracket)
         for (const auto& c : item.children) visit(c);
+      if (item.kind == ItemKind::Call && item.name == "Synthesize" && !isShapeItem(item, res_))
+        synthesizes = true;
       if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(item.name);
       for (const auto& b : item.body)
         for (const auto& c : b.items) visit(c);
@@ -873,7 +879,7 @@ class Analyzer {
           for (const auto& item : b.successor.items) visit(item);
     }
     for (const auto& s : res_.symbols) {
-      if (!s.reachable && !s.rules.empty())
+      if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()))
         diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                        "the rules for '" + s.name + "' can never apply: no derivation from the "
                        "start creates a '" + s.name + "'");

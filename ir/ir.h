@@ -97,6 +97,7 @@ enum class OpKind : uint8_t {
   Extrude,       // args[0] height
   Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
   Lock,          // bodies: derived as one unit (collision arrives with IC)
+  Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

@@ -235,6 +235,11 @@ class Lowerer {
         allArgs(1);
         break;
       case CommandId::Lock: op.kind = OpKind::Lock; break;
+      case CommandId::Synthesize:
+        op.kind = OpKind::Synthesize;
+        op.str = m_.internString(constString(*item.args[0]));
+        allArgs(1);
+        break;
       case CommandId::Forward:
       case CommandId::Move:
         op.kind = OpKind::Turtle;

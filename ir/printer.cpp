@@ -264,6 +264,7 @@ class Printer {
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
       case OpKind::Lock: text = "lock"; break;
+      case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
     }
     line(depth, text);

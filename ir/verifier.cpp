@@ -27,6 +27,7 @@ const char* opName(OpKind k) {
     case OpKind::Extrude: return "extrude";
     case OpKind::Roof: return "roof";
     case OpKind::Lock: return "lock";
+    case OpKind::Synthesize: return "synthesize";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -305,6 +306,11 @@ class Verifier {
       case OpKind::Lock:
         if (op.bodies.empty()) problem("no bodies");
         numArgs(op, r, 0);
+        break;
+      case OpKind::Synthesize:
+        stringId(op.str);
+        expectBodies(op, 0);
+        numArgs(op, r, 3);
         break;
       case OpKind::Unsupported:
         if (op.name.empty()) problem("no construct name");

@@ -5,6 +5,9 @@
 #include "runtime/cga/cga.h"
 #include "runtime/occlusion.h"
 #include "runtime/random.h"
+#include "runtime/synthesis/synthesis.h"
+
+#include <filesystem>
 
 #include <array>
 #include <chrono>
@@ -506,9 +509,93 @@ class Interpreter final : public QueryHost {
           // simply derived in order; IC brings the all-or-nothing test.
           for (const auto& body : op.bodies) runBody(body, st.scope, st.geom, st, ex, f);
           break;
+        case ir::OpKind::Synthesize: synthesizeInto(op, st, ex, f); break;
         case ir::OpKind::Unsupported: unsupported(op);
       }
     }
+  }
+
+  // Synthesize("example", nx, ny, nz): Merrell's model synthesis fills the scope with an
+  // nx x ny x nz grid of pieces (grid z along the scope's Y, grid y against its Z). A
+  // piece whose label names a symbol with rules becomes a shape of that symbol in its
+  // cell, to be derived further; any other piece places its asset.
+  void synthesizeInto(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    const std::string& name = m_.strings[op.str];
+    const rt::synthesis::Example& example = loadExample(name, op.loc);
+    rt::synthesis::SynthesisOptions so;
+    int n[3];
+    for (int k = 0; k < 3; ++k) {
+      const double v = eval_.num(op.args[k], f);
+      if (!(v >= 1) || v > 4096 || v != std::floor(v))
+        throw DeriveError{op.loc, "R012", "Synthesize: grid sizes must be whole numbers from 1 to 4096"};
+      n[k] = static_cast<int>(v);
+    }
+    so.size = {n[0], n[1], n[2]};
+    so.seed = rt::childKey(ex.key, 0x8000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
+    so.attempts = 10;  // whole-grid synthesis restarts after a contradiction
+    so.timeLimitSeconds = std::max(1.0, opt_.maxSeconds);
+    const rt::synthesis::SynthesisResult result = rt::synthesis::synthesize(example, so);
+    if (!result.ok)
+      throw DeriveError{op.loc, "R013", "Synthesize(\"" + name + "\"): " + result.failure.message};
+    rt::synthesis::PlacementFrame frame;
+    frame.cellSize = {st.scope.S.x() / n[0], st.scope.S.z() / n[1], st.scope.S.y() / n[2]};
+    // The frame's grid y runs towards -Z: shift it back into the scope box.
+    rt::Mat4 toScope = rt::Mat4::Identity();
+    toScope.block<3, 3>(0, 0) = st.scope.axes;
+    toScope.block<3, 1>(0, 3) = st.scope.P + st.scope.axes * rt::Vec3(0, 0, st.scope.S.z());
+    for (const auto& place : rt::synthesis::piecePlacements(result.labels, example, frame)) {
+      const rt::Mat4 local = Eigen::Map<const rt::Mat4>(place.transform.data());
+      const rt::Mat4 world = toScope * local;
+      const int sym = m_.findSymbol(example.labels[place.label].name);
+      rt::Scope cell;
+      cell.P = world.block<3, 1>(0, 3);
+      for (int k = 0; k < 3; ++k) {
+        cell.S[k] = world.block<3, 1>(0, k).norm();
+        cell.axes.col(k) = cell.S[k] > 0 ? rt::Vec3(world.block<3, 1>(0, k) / cell.S[k]) : st.scope.axes.col(k);
+      }
+      if (sym >= 0 && !m_.symbols[sym].rules.empty() && m_.symbols[sym].slotCount == 0) {
+        State piece;
+        piece.scope = cell;
+        piece.stackBase = stack_.size();
+        ir::Op emitOp;
+        emitOp.kind = ir::OpKind::Emit;
+        emitOp.index = static_cast<uint32_t>(sym);
+        emitOp.loc = op.loc;
+        emit(emitOp, piece, ex, f);
+      } else if (!place.asset.empty()) {
+        placeInstance(pieceAsset(place.asset, op.loc), cell, ex.symbol == UINT32_MAX ? segmentSymbol_ : ex.symbol,
+                      nullptr, 0, op.loc);
+        out_.instances.back().color = place.color;
+      }
+    }
+  }
+
+  const rt::synthesis::Example& loadExample(const std::string& name, ir::Loc at) {
+    auto it = examples_.find(name);
+    if (it != examples_.end()) return it->second;
+    std::string path = name;
+    for (const auto& dir : opt_.assetDirs) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(std::filesystem::path(dir) / name, ec)) {
+        path = (std::filesystem::path(dir) / name).string();
+        break;
+      }
+    }
+    rt::synthesis::Example example;
+    rt::synthesis::Diagnostics diags;
+    if (!rt::synthesis::loadExample(path, example, diags))
+      throw DeriveError{at, "R013", "Synthesize: cannot use the example \"" + name + "\":\n" +
+                                        rt::synthesis::formatDiagnostics(diags)};
+    return examples_.emplace(name, std::move(example)).first->second;
+  }
+
+  uint32_t pieceAsset(const std::string& asset, ir::Loc at) {
+    for (uint32_t i = 0; i < out_.assets.size(); ++i)
+      if (out_.assets[i] == asset) return i;
+    std::string error;
+    if (assets_.resolve(asset, error) < 0) throw DeriveError{at, "R003", error};
+    out_.assets.push_back(asset);
+    return static_cast<uint32_t>(out_.assets.size() - 1);
   }
 
   [[noreturn]] void unsupported(const ir::Op& op) {
@@ -889,6 +976,7 @@ class Interpreter final : public QueryHost {
   std::vector<std::pair<int, std::deque<uint32_t>>> buckets_;
   std::vector<uint32_t> children_;
   std::vector<Saved> stack_;
+  std::map<std::string, rt::synthesis::Example> examples_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
   std::vector<uint64_t> ruleUses_;  // applications per rule, to name a runaway one

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <set>
 
@@ -301,4 +303,42 @@ TEST_CASE("The Müller building example derives one door on the street side", "[
       Eigen::Vector3d out = unitPoint(inst, 0, 0, 1) - unitPoint(inst, 0, 0, 0);
       CHECK(out.normalized().z() == Approx(1.0));
     }
+}
+
+TEST_CASE("Synthesize fills the scope with pieces; labels with rules become shapes", "[synthesis]") {
+  // Columns of wall and ground alternate along X in the example, so they do in any
+  // consistent model.
+  const std::string dir = std::string(FGSG_BINARY_DIR) + "/test-scratch";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream ex(dir + "/stripes.txt");
+    ex << "label g quad\nlabel W cube\nsize 4 2 1\nlayer 0\ng W g W\ng W g W\n";
+  }
+  rt::DeriveOptions o;
+  o.assetDirs = {dir};
+  const std::string grammar = R"(
+    axiom: S(8, 1, 6) Lot;
+    Lot ~> Synthesize("stripes.txt", 8, 6, 1);
+    W ~> I("sphere");
+  )";
+  auto r = deriveText(grammar, o);
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "sphere") == 24);  // 4 wall columns of 6 cells
+  CHECK(test::countAsset(r, "quad") == 24);
+  CHECK(r.stats.shapesCreated == 1 + 24);      // Lot, then one W shape per wall cell
+  for (const auto& inst : r.instances.instances) {
+    Eigen::Vector3d c = unitPoint(inst, 0.5, 0.5, 0.5);
+    CHECK(c.x() > 0);
+    CHECK(c.x() < 8);
+    CHECK(c.z() > 0);
+    CHECK(c.z() < 6);
+    CHECK(c.y() == Approx(0.5));
+  }
+  auto again = deriveText(grammar, o);
+  CHECK(transforms(r) == transforms(again));
+
+  auto missing = deriveText("Lot ~> Synthesize(\"nowhere.txt\", 4, 4, 1);", o);
+  CHECK_FALSE(missing.ok);
+  REQUIRE(missing.messages.size() == 1);
+  CHECK(missing.messages[0].code == "R013");
 }
