@@ -1,0 +1,69 @@
+// Builds the AST (frontend/ast.h) from ANTLR parse-tree contexts, one typed function per
+// grammar rule. Private to the front end: parse.cpp feeds it one statement at a time.
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+
+#include "FgsgParser.h"
+
+namespace fgsg::frontend {
+
+class AstBuilder {
+ public:
+  AstBuilder(Program& program, Diagnostics& diags) : program_(program), diags_(diags) {}
+
+  void addStatement(fgsg_grammar::FgsgParser::StatementContext* ctx);
+
+ private:
+  using P = fgsg_grammar::FgsgParser;
+
+  // declarations
+  ValueDecl buildValueDecl(P::ValueDeclContext* ctx);
+  SurfaceDecl buildSurfaceDecl(P::SurfaceDeclContext* ctx);
+  FieldDecl buildFieldDecl(P::FieldDeclContext* ctx);
+  FieldDesignItem buildFieldDesignItem(P::FieldDesignItemContext* ctx);
+  ExprPtr buildDesignValue(P::DesignValueContext* ctx);
+  TextureDecl buildTextureDecl(P::TextureDeclContext* ctx);
+  DeriveDecl buildDeriveDecl(P::DeriveDeclContext* ctx);
+  TurtleDecl buildTurtleDecl(P::TurtleDeclContext* ctx);
+  AxiomDecl buildAxiomDecl(P::AxiomDeclContext* ctx);
+  void applyPriorityDecl(P::PriorityDeclContext* ctx);
+
+  // rules
+  Rule buildRule(P::GrammarRuleContext* ctx);
+  ModulePattern buildModulePattern(P::ModulePatternContext* ctx);
+  ModulePattern buildContextModule(P::ContextModuleContext* ctx);
+  Branch buildBranch(P::BranchContext* ctx);
+
+  // successors
+  Successor buildSuccessor(P::SuccessorContext* ctx);
+  Successor buildBodyPart(P::BodyPartContext* ctx);
+  void appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out);
+  void appendItem(P::ItemContext* ctx, std::vector<Item>& out);
+  Item buildCallItem(P::CallItemContext* ctx);
+  void appendTurtleSymbols(antlr4::ParserRuleContext* ctx, antlr4::Token* symbol,
+                           P::CallArgsContext* args, std::vector<Item>& out);
+  Item buildBracketItem(P::BracketItemContext* ctx);
+  std::vector<ExprPtr> buildCallArgs(P::CallArgsContext* ctx);
+
+  // expressions
+  ExprPtr buildExpr(P::ExprContext* ctx);
+  ExprPtr buildUnary(P::UnaryExprContext* ctx);
+  ExprPtr buildBinary(P::BinaryExprContext* ctx);
+  ExprPtr buildTernary(P::TernaryExprContext* ctx);
+  ExprPtr buildPrimary(P::PrimaryContext* ctx);
+  ExprPtr buildNumber(P::NumberContext* ctx);
+  ExprPtr buildMember(P::MemberPrimaryContext* ctx);
+  ExprPtr buildVector(P::VectorPrimaryContext* ctx);
+
+  class DepthGuard;
+
+  Program& program_;
+  Diagnostics& diags_;
+  int priority_ = 0;             // from the last `priority N:`
+  int exprDepth_ = 0;            // guards the recursion against absurdly deep expressions
+  bool depthReported_ = false;   // one "too deep" error per statement
+};
+
+}  // namespace fgsg::frontend

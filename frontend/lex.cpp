@@ -1,0 +1,335 @@
+#include "frontend/lex.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace fgsg::frontend {
+
+using fgsg_grammar::FgsgLexer;
+using antlr4::Token;
+
+namespace {
+
+constexpr int kMaxLexicalErrors = 20;
+
+size_t codePointCount(const std::string& s) {
+  size_t n = 0;
+  for (char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return n;
+}
+
+// The runtime's UTF-8 decoder throws on malformed input; replace each byte that is not
+// part of a valid sequence by U+FFFD, so columns still count one character per byte.
+std::string validUtf8(const std::string& in) {
+  std::string out;
+  out.reserve(in.size());
+  const auto* s = reinterpret_cast<const unsigned char*>(in.data());
+  const size_t n = in.size();
+  for (size_t i = 0; i < n;) {
+    const unsigned char c = s[i];
+    size_t len = 0;
+    unsigned cp = 0;
+    if (c < 0x80) len = 1, cp = c;
+    else if ((c & 0xE0) == 0xC0) len = 2, cp = c & 0x1F;
+    else if ((c & 0xF0) == 0xE0) len = 3, cp = c & 0x0F;
+    else if ((c & 0xF8) == 0xF0) len = 4, cp = c & 0x07;
+    bool ok = len > 0 && i + len <= n;
+    for (size_t k = 1; ok && k < len; ++k) {
+      ok = (s[i + k] & 0xC0) == 0x80;
+      cp = (cp << 6) | (s[i + k] & 0x3F);
+    }
+    static const unsigned kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
+    ok = ok && cp >= kMinForLength[len] && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
+    if (ok) {
+      out.append(in, i, len);
+      i += len;
+    } else {
+      out += "\xEF\xBF\xBD";
+      i += 1;
+    }
+  }
+  return out;
+}
+
+std::string printable(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c < 0x20 || c == 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+// The lexer ends in a catch-all rule, so this only fires if that ever changes.
+class LexerErrorReporter : public antlr4::BaseErrorListener {
+ public:
+  explicit LexerErrorReporter(Diagnostics& diags) : diags_(diags) {}
+  void syntaxError(antlr4::Recognizer*, Token*, size_t line, size_t col, const std::string& msg,
+                   std::exception_ptr) override {
+    SourceLoc at{static_cast<int>(line), static_cast<int>(col) + 1};
+    diags_.error("E001", {at, at}, "unexpected input");
+  }
+
+ private:
+  Diagnostics& diags_;
+};
+
+// ------------------------------------------------------------ implicit ';'
+
+bool isStatementKeyword(size_t type) {
+  switch (type) {
+    case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
+    case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::DERIVE:
+    case FgsgLexer::TURTLE: case FgsgLexer::AXIOM: case FgsgLexer::PRIORITY:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool isArrow(size_t type) { return type == FgsgLexer::ARROW || type == FgsgLexer::ASSIGN; }
+
+// Tokens after which a statement cannot have ended: the next line continues it.
+bool expectsContinuation(size_t type) {
+  switch (type) {
+    case FgsgLexer::SEMI: case FgsgLexer::COLON: case FgsgLexer::ARROW: case FgsgLexer::ASSIGN:
+    case FgsgLexer::LPAREN: case FgsgLexer::LBRACK: case FgsgLexer::LBRACE:
+    case FgsgLexer::COMMA: case FgsgLexer::DOT: case FgsgLexer::QUESTION:
+    case FgsgLexer::LT: case FgsgLexer::GT: case FgsgLexer::LE: case FgsgLexer::GE:
+    case FgsgLexer::EQ: case FgsgLexer::NEQ: case FgsgLexer::AND: case FgsgLexer::OR:
+    case FgsgLexer::STAR: case FgsgLexer::TILDE:
+      return true;
+    default:
+      return isStatementKeyword(type);
+  }
+}
+
+class ImplicitSemicolons {
+ public:
+  explicit ImplicitSemicolons(const std::vector<std::unique_ptr<Token>>& tokens) : t_(tokens) {}
+
+  // Indices before which an implicit ';' goes.
+  std::vector<size_t> positions() const {
+    std::vector<size_t> out;
+    int depth = 0;
+    bool inFieldStatement = false;  // its design block `{ ...; ...; }` holds ';'
+    for (size_t i = 0; i < t_.size(); ++i) {
+      const size_t type = t_[i]->getType();
+      const bool startsStatement = type == Token::EOF || (firstOnLine(i) && (isStatementKeyword(type) ||
+                                                                             startsRuleHead(i)));
+      if (depth == 0 && i > 0 && startsStatement && !expectsContinuation(t_[i - 1]->getType())) {
+        out.push_back(i);
+        inFieldStatement = false;
+      }
+      switch (type) {
+        case FgsgLexer::LPAREN: case FgsgLexer::LBRACK: case FgsgLexer::LBRACE:
+          ++depth;
+          break;
+        case FgsgLexer::RPAREN: case FgsgLexer::RBRACK: case FgsgLexer::RBRACE:
+          depth = std::max(depth - 1, 0);
+          break;
+        case FgsgLexer::FIELD:
+          if (depth == 0) inFieldStatement = true;
+          break;
+        case FgsgLexer::SEMI:
+          if (!(inFieldStatement && depth > 0)) depth = 0, inFieldStatement = false;
+          break;
+        default:
+          break;
+      }
+    }
+    return out;
+  }
+
+ private:
+  size_t type(size_t i) const { return i < t_.size() ? t_[i]->getType() : Token::EOF; }
+
+  bool firstOnLine(size_t i) const { return i == 0 || t_[i]->getLine() > t_[i - 1]->getLine(); }
+
+  // `label :`, `Pred(params) ~>`, `Pred >`, `Left Ctx <`, `Pred : guard ~>`.
+  bool startsRuleHead(size_t i) const {
+    if (type(i) == FgsgLexer::INT && type(i + 1) == FgsgLexer::COLON) return true;
+    size_t j = i;
+    int modules = 0;
+    while (type(j) == FgsgLexer::ID) {
+      ++j;
+      ++modules;
+      if (type(j) == FgsgLexer::LPAREN && !skipParens(j)) return false;
+    }
+    if (modules == 0) return false;
+    const size_t next = type(j);
+    if (isArrow(next) || next == FgsgLexer::GT) return modules == 1;
+    if (next == FgsgLexer::LT) return true;
+    if (next == FgsgLexer::COLON) return modules == 1 && arrowEndsGuard(j + 1);
+    return false;
+  }
+
+  // Moves `j` from '(' to just after its ')'; false if the statement ends first.
+  bool skipParens(size_t& j) const {
+    int depth = 0;
+    for (; j < t_.size(); ++j) {
+      const size_t ty = type(j);
+      if (ty == FgsgLexer::SEMI || ty == Token::EOF) return false;
+      if (ty == FgsgLexer::LPAREN) ++depth;
+      if (ty == FgsgLexer::RPAREN && --depth == 0) {
+        ++j;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // After `X :` - a label or a guard - an arrow must follow before the statement ends.
+  // A line starting with a name or an arrow is a new rule or a Müller branch, not this.
+  bool arrowEndsGuard(size_t k) const {
+    for (; k < t_.size(); ++k) {
+      const size_t ty = type(k);
+      if (ty == FgsgLexer::SEMI || ty == Token::EOF) return false;
+      if (firstOnLine(k) && (ty == FgsgLexer::ID || isArrow(ty))) return false;
+      if (isArrow(ty)) return true;
+    }
+    return false;
+  }
+
+  const std::vector<std::unique_ptr<Token>>& t_;
+};
+
+// Shares the previous token's source: ANTLR's error recovery reads it when it conjures
+// a missing token in front of this one.
+std::unique_ptr<Token> implicitSemicolonAfter(Token& previous) {
+  auto semi = std::make_unique<antlr4::CommonToken>(
+      std::make_pair(previous.getTokenSource(), previous.getInputStream()), FgsgLexer::SEMI,
+      Token::DEFAULT_CHANNEL, INVALID_INDEX, INVALID_INDEX);
+  const SourceRange prev = tokenRange(&previous);
+  semi->setText(";");
+  semi->setLine(prev.end.line);
+  semi->setCharPositionInLine(prev.end.col - 1);
+  return semi;
+}
+
+// ------------------------------------------------------------ lexical errors
+
+class LexicalErrors {
+ public:
+  explicit LexicalErrors(Diagnostics& diags) : diags_(diags) {}
+
+  void report(const SourceRange& at, std::string message) {
+    if (++count_ <= kMaxLexicalErrors) {
+      diags_.error("E001", at, std::move(message));
+    } else if (count_ == kMaxLexicalErrors + 1) {
+      diags_.note(at, "too many lexical errors; the rest are not shown");
+    }
+  }
+
+ private:
+  Diagnostics& diags_;
+  int count_ = 0;
+};
+
+std::string unknownCharactersMessage(const std::string& text) {
+  std::string message = codePointCount(text) == 1 ? "unexpected character '" : "unexpected characters '";
+  message += printable(text) + "'";
+  if (text[0] == '#') message += " (comments are written // or /* */)";
+  return message;
+}
+
+// Reports lexical error tokens and drops or repairs them.
+std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_ptr<Token>> raw,
+                                                       LexicalErrors& errors) {
+  std::vector<std::unique_ptr<Token>> out;
+  out.reserve(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i) {
+    Token* token = raw[i].get();
+    switch (token->getType()) {
+      case FgsgLexer::UNKNOWN_CHAR: {
+        // Merge a run of adjacent unknown characters into one error.
+        std::string text = token->getText();
+        SourceRange range = tokenRange(token);
+        while (i + 1 < raw.size() && raw[i + 1]->getType() == FgsgLexer::UNKNOWN_CHAR &&
+               raw[i + 1]->getStartIndex() == raw[i]->getStopIndex() + 1 &&
+               raw[i + 1]->getLine() == raw[i]->getLine()) {
+          ++i;
+          text += raw[i]->getText();
+          range.end = tokenRange(raw[i].get()).end;
+        }
+        errors.report(range, unknownCharactersMessage(text));
+        break;
+      }
+      case FgsgLexer::UNTERMINATED_STRING: {
+        errors.report(tokenRange(token), "unterminated string (missing '\"' before the end of the line)");
+        std::string text = token->getText();
+        if (!text.empty() && text.back() == '\\') text.pop_back();
+        auto* fixed = static_cast<antlr4::CommonToken*>(token);
+        fixed->setType(FgsgLexer::STRING);
+        fixed->setText(text + "\"");
+        out.push_back(std::move(raw[i]));
+        break;
+      }
+      case FgsgLexer::UNTERMINATED_COMMENT: {
+        SourceLoc at{static_cast<int>(token->getLine()),
+                     static_cast<int>(token->getCharPositionInLine()) + 1};
+        errors.report({at, {at.line, at.col + 1}}, "unterminated comment (missing '*/')");
+        break;
+      }
+      default:
+        out.push_back(std::move(raw[i]));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool isImplicitSemicolon(const Token* token) {
+  return token && token->getType() == FgsgLexer::SEMI && token->getStartIndex() == INVALID_INDEX;
+}
+
+SourceRange tokenRange(const Token* token) {
+  SourceRange r;
+  r.begin = {static_cast<int>(token->getLine()), static_cast<int>(token->getCharPositionInLine()) + 1};
+  r.end = r.begin;
+  if (token->getType() != Token::EOF && !isImplicitSemicolon(token)) {
+    const size_t n = codePointCount(token->getText());
+    if (n > 0) r.end.col = r.begin.col + static_cast<int>(n) - 1;
+  }
+  return r;
+}
+
+LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
+  LexedSource lexed;
+  lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(file.text));
+  lexed.input->name = file.name;
+  lexed.lexer = std::make_unique<FgsgLexer>(lexed.input.get());
+  lexed.lexer->removeErrorListeners();
+  LexerErrorReporter reporter(diags);
+  lexed.lexer->addErrorListener(&reporter);
+
+  std::vector<std::unique_ptr<Token>> raw;
+  for (;;) {
+    raw.push_back(lexed.lexer->nextToken());
+    if (raw.back()->getType() == Token::EOF) break;
+  }
+  lexed.lexer->removeErrorListeners();
+
+  LexicalErrors errors(diags);
+  std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
+
+  const std::vector<size_t> semicolons = ImplicitSemicolons(tokens).positions();
+  lexed.tokens.reserve(tokens.size() + semicolons.size());
+  size_t next = 0;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (next < semicolons.size() && semicolons[next] == i) {
+      lexed.tokens.push_back(implicitSemicolonAfter(*lexed.tokens.back()));
+      ++next;
+    }
+    lexed.tokens.push_back(std::move(tokens[i]));
+  }
+  return lexed;
+}
+
+}  // namespace fgsg::frontend

@@ -1,0 +1,37 @@
+// Lexing: source text -> the token list the parser reads. Private to the front end.
+//
+// Besides running the ANTLR lexer this step
+//  * reports lexical errors (E001: unknown characters, unterminated strings and
+//    comments) and repairs what it can so parsing still sees sensible tokens;
+//  * inserts an implicit ';' before a line that starts a new rule or declaration and at
+//    the end of the file, which is what makes the ';' after a rule optional at the end
+//    of a line (see grammar/Fgsg.g4).
+#pragma once
+
+#include "frontend/diagnostics.h"
+
+#include <memory>
+#include <vector>
+
+#include "antlr4-runtime.h"
+#include "FgsgLexer.h"
+
+namespace fgsg::frontend {
+
+struct LexedSource {
+  // The tokens point back at the input stream and lexer, so these live as long.
+  std::unique_ptr<antlr4::ANTLRInputStream> input;
+  std::unique_ptr<fgsg_grammar::FgsgLexer> lexer;
+  std::vector<std::unique_ptr<antlr4::Token>> tokens;  // ends with EOF
+};
+
+LexedSource lexSource(const SourceFile& file, Diagnostics& diags);
+
+// An implicit ';' has no source text of its own; it sits on the last character of the
+// token before it.
+bool isImplicitSemicolon(const antlr4::Token* token);
+
+// Source range of one token, in characters (1-based columns, end inclusive).
+SourceRange tokenRange(const antlr4::Token* token);
+
+}  // namespace fgsg::frontend

@@ -1,0 +1,143 @@
+// Parsing drives ANTLR one statement at a time: lex (frontend/lex.cpp), then for each
+// statement parse `statement`, build its AST (frontend/ast_builder.cpp), and on a syntax
+// error skip to the statement's ';' so the next statement is read cleanly.
+#include "frontend/parse.h"
+
+#include "frontend/ast_builder.h"
+#include "frontend/lex.h"
+#include "frontend/syntax_errors.h"
+
+#include "FgsgParser.h"
+
+#include <algorithm>
+
+namespace fgsg::frontend {
+
+using antlr4::Token;
+using fgsg_grammar::FgsgParser;
+
+namespace {
+
+// After this many errors the rest of the file is most likely not .fgsg at all.
+constexpr int kMaxErrors = 50;
+// The parser recurses once per nesting level and per right-associative or prefix operator
+// ('^', '?:', '~', unary '-'); at about 1 KiB of stack per level these bounds keep a
+// statement within 2 MiB.
+constexpr int kMaxNesting = 256;
+constexpr int kMaxRecursiveOperators = 1024;
+
+bool endsOperand(size_t type) {
+  switch (type) {
+    case FgsgParser::ID: case FgsgParser::INT: case FgsgParser::FLOAT: case FgsgParser::RELSIZE:
+    case FgsgParser::STRING: case FgsgParser::TRUE: case FgsgParser::FALSE:
+    case FgsgParser::RPAREN: case FgsgParser::RBRACK: case FgsgParser::RBRACE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// A statement ends at its ';' (explicit or implicit), except inside a field design
+// block, whose items end in ';' themselves.
+class StatementScan {
+ public:
+  StatementScan(antlr4::CommonTokenStream& tokens, size_t start) : tokens_(tokens), start_(start) {}
+
+  // Index just after the ';' ending the statement, the first at or after `from`; or the
+  // index of EOF.
+  size_t endAtOrAfter(size_t from) const {
+    const bool field = type(start_) == FgsgParser::FIELD;
+    int braces = 0;
+    for (size_t i = start_;; ++i) {
+      const size_t t = type(i);
+      if (t == Token::EOF) return i;
+      if (field && t == FgsgParser::LBRACE) ++braces;
+      if (field && t == FgsgParser::RBRACE) braces = std::max(braces - 1, 0);
+      if (t == FgsgParser::SEMI && braces == 0 && i >= from) return i + 1;
+    }
+  }
+
+  // The first token that takes the statement deeper than the parser may recurse.
+  const Token* tooDeep() const {
+    const size_t end = endAtOrAfter(start_);
+    int depth = 0;
+    int recursive = 0;
+    for (size_t i = start_; i < end; ++i) {
+      switch (type(i)) {
+        case FgsgParser::LPAREN: case FgsgParser::LBRACK: case FgsgParser::LBRACE:
+          if (++depth > kMaxNesting) return tokens_.get(i);
+          break;
+        case FgsgParser::RPAREN: case FgsgParser::RBRACK: case FgsgParser::RBRACE:
+          --depth;
+          break;
+        case FgsgParser::CARET: case FgsgParser::QUESTION: case FgsgParser::TILDE:
+          if (++recursive > kMaxRecursiveOperators) return tokens_.get(i);
+          break;
+        case FgsgParser::BANG: case FgsgParser::MINUS: case FgsgParser::PLUS:
+          // Only a prefix operator recurses; after an operand it is binary (or a turtle
+          // symbol after an item), which the parser handles in a loop.
+          if (i > start_ && !endsOperand(type(i - 1)) && ++recursive > kMaxRecursiveOperators) {
+            return tokens_.get(i);
+          }
+          break;
+        default:
+          break;
+      }
+    }
+    return nullptr;
+  }
+
+ private:
+  size_t type(size_t i) const { return i < tokens_.size() ? tokens_.get(i)->getType() : Token::EOF; }
+
+  antlr4::CommonTokenStream& tokens_;
+  size_t start_;
+};
+
+}  // namespace
+
+bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
+  out.fileName = file.name;
+  const int errorsBefore = diags.errorCount();
+
+  LexedSource lexed = lexSource(file, diags);
+  antlr4::ListTokenSource source(std::move(lexed.tokens));
+  antlr4::CommonTokenStream tokens(&source);
+  tokens.fill();
+
+  FgsgParser parser(&tokens);
+  parser.removeErrorListeners();  // no console output: everything becomes a diagnostic
+  SyntaxErrorListener listener(diags);
+  parser.addErrorListener(&listener);
+  auto strategy = std::make_shared<SyntaxErrorStrategy>(diags);
+  parser.setErrorHandler(strategy);
+
+  AstBuilder builder(out, diags);
+  while (tokens.LA(1) != Token::EOF) {
+    if (diags.errorCount() - errorsBefore >= kMaxErrors) {
+      diags.note(tokenRange(tokens.LT(1)), "too many errors; stopped parsing here");
+      break;
+    }
+    const size_t start = tokens.index();
+    StatementScan scan(tokens, start);
+    if (const Token* deep = scan.tooDeep()) {
+      diags.error("E002", tokenRange(deep),
+                  "statement nested too deeply (more than " + std::to_string(kMaxNesting) +
+                      " brackets or " + std::to_string(kMaxRecursiveOperators) + " operators)");
+      tokens.seek(scan.endAtOrAfter(start));
+      continue;
+    }
+    // Each statement is parsed as a start rule: no invoking state, no recovery mode.
+    parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
+    strategy->reset(&parser);
+    try {
+      builder.addStatement(parser.statement());
+    } catch (const StatementAbandoned&) {
+      tokens.seek(scan.endAtOrAfter(tokens.index()));
+    }
+    if (tokens.index() == start) tokens.consume();  // always make progress
+  }
+  return diags.errorCount() == errorsBefore;
+}
+
+}  // namespace fgsg::frontend

@@ -1,0 +1,4128 @@
+
+// Generated from grammar/Fgsg.g4 by ANTLR 4.7.2
+
+
+#include "FgsgVisitor.h"
+
+#include "FgsgParser.h"
+
+
+using namespace antlrcpp;
+using namespace fgsg_grammar;
+using namespace antlr4;
+
+FgsgParser::FgsgParser(TokenStream *input) : Parser(input) {
+  _interpreter = new atn::ParserATNSimulator(this, _atn, _decisionToDFA, _sharedContextCache);
+}
+
+FgsgParser::~FgsgParser() {
+  delete _interpreter;
+}
+
+std::string FgsgParser::getGrammarFileName() const {
+  return "Fgsg.g4";
+}
+
+const std::vector<std::string>& FgsgParser::getRuleNames() const {
+  return _ruleNames;
+}
+
+dfa::Vocabulary& FgsgParser::getVocabulary() const {
+  return _vocabulary;
+}
+
+
+//----------------- ProgramContext ------------------------------------------------------------------
+
+FgsgParser::ProgramContext::ProgramContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::ProgramContext::EOF() {
+  return getToken(FgsgParser::EOF, 0);
+}
+
+std::vector<FgsgParser::StatementContext *> FgsgParser::ProgramContext::statement() {
+  return getRuleContexts<FgsgParser::StatementContext>();
+}
+
+FgsgParser::StatementContext* FgsgParser::ProgramContext::statement(size_t i) {
+  return getRuleContext<FgsgParser::StatementContext>(i);
+}
+
+
+size_t FgsgParser::ProgramContext::getRuleIndex() const {
+  return FgsgParser::RuleProgram;
+}
+
+antlrcpp::Any FgsgParser::ProgramContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitProgram(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ProgramContext* FgsgParser::program() {
+  ProgramContext *_localctx = _tracker.createInstance<ProgramContext>(_ctx, getState());
+  enterRule(_localctx, 0, FgsgParser::RuleProgram);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(73);
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    while ((((_la & ~ 0x3fULL) == 0) &&
+      ((1ULL << _la) & ((1ULL << FgsgParser::CONST)
+      | (1ULL << FgsgParser::ATTR)
+      | (1ULL << FgsgParser::SURFACE)
+      | (1ULL << FgsgParser::FIELD)
+      | (1ULL << FgsgParser::TEXTURE)
+      | (1ULL << FgsgParser::DERIVE)
+      | (1ULL << FgsgParser::TURTLE)
+      | (1ULL << FgsgParser::AXIOM)
+      | (1ULL << FgsgParser::PRIORITY)
+      | (1ULL << FgsgParser::SEMI)
+      | (1ULL << FgsgParser::INT)
+      | (1ULL << FgsgParser::ID))) != 0)) {
+      setState(70);
+      statement();
+      setState(75);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    }
+    setState(76);
+    match(FgsgParser::EOF);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- StatementContext ------------------------------------------------------------------
+
+FgsgParser::StatementContext::StatementContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::ValueDeclContext* FgsgParser::StatementContext::valueDecl() {
+  return getRuleContext<FgsgParser::ValueDeclContext>(0);
+}
+
+FgsgParser::SurfaceDeclContext* FgsgParser::StatementContext::surfaceDecl() {
+  return getRuleContext<FgsgParser::SurfaceDeclContext>(0);
+}
+
+FgsgParser::FieldDeclContext* FgsgParser::StatementContext::fieldDecl() {
+  return getRuleContext<FgsgParser::FieldDeclContext>(0);
+}
+
+FgsgParser::TextureDeclContext* FgsgParser::StatementContext::textureDecl() {
+  return getRuleContext<FgsgParser::TextureDeclContext>(0);
+}
+
+FgsgParser::DeriveDeclContext* FgsgParser::StatementContext::deriveDecl() {
+  return getRuleContext<FgsgParser::DeriveDeclContext>(0);
+}
+
+FgsgParser::TurtleDeclContext* FgsgParser::StatementContext::turtleDecl() {
+  return getRuleContext<FgsgParser::TurtleDeclContext>(0);
+}
+
+FgsgParser::AxiomDeclContext* FgsgParser::StatementContext::axiomDecl() {
+  return getRuleContext<FgsgParser::AxiomDeclContext>(0);
+}
+
+FgsgParser::PriorityDeclContext* FgsgParser::StatementContext::priorityDecl() {
+  return getRuleContext<FgsgParser::PriorityDeclContext>(0);
+}
+
+FgsgParser::GrammarRuleContext* FgsgParser::StatementContext::grammarRule() {
+  return getRuleContext<FgsgParser::GrammarRuleContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::StatementContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+
+size_t FgsgParser::StatementContext::getRuleIndex() const {
+  return FgsgParser::RuleStatement;
+}
+
+antlrcpp::Any FgsgParser::StatementContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitStatement(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::StatementContext* FgsgParser::statement() {
+  StatementContext *_localctx = _tracker.createInstance<StatementContext>(_ctx, getState());
+  enterRule(_localctx, 2, FgsgParser::RuleStatement);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(88);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::CONST:
+      case FgsgParser::ATTR: {
+        enterOuterAlt(_localctx, 1);
+        setState(78);
+        valueDecl();
+        break;
+      }
+
+      case FgsgParser::SURFACE: {
+        enterOuterAlt(_localctx, 2);
+        setState(79);
+        surfaceDecl();
+        break;
+      }
+
+      case FgsgParser::FIELD: {
+        enterOuterAlt(_localctx, 3);
+        setState(80);
+        fieldDecl();
+        break;
+      }
+
+      case FgsgParser::TEXTURE: {
+        enterOuterAlt(_localctx, 4);
+        setState(81);
+        textureDecl();
+        break;
+      }
+
+      case FgsgParser::DERIVE: {
+        enterOuterAlt(_localctx, 5);
+        setState(82);
+        deriveDecl();
+        break;
+      }
+
+      case FgsgParser::TURTLE: {
+        enterOuterAlt(_localctx, 6);
+        setState(83);
+        turtleDecl();
+        break;
+      }
+
+      case FgsgParser::AXIOM: {
+        enterOuterAlt(_localctx, 7);
+        setState(84);
+        axiomDecl();
+        break;
+      }
+
+      case FgsgParser::PRIORITY: {
+        enterOuterAlt(_localctx, 8);
+        setState(85);
+        priorityDecl();
+        break;
+      }
+
+      case FgsgParser::INT:
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 9);
+        setState(86);
+        grammarRule();
+        break;
+      }
+
+      case FgsgParser::SEMI: {
+        enterOuterAlt(_localctx, 10);
+        setState(87);
+        match(FgsgParser::SEMI);
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ValueDeclContext ------------------------------------------------------------------
+
+FgsgParser::ValueDeclContext::ValueDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::ValueDeclContext::ASSIGN() {
+  return getToken(FgsgParser::ASSIGN, 0);
+}
+
+FgsgParser::ExprContext* FgsgParser::ValueDeclContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::ValueDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::ValueDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+tree::TerminalNode* FgsgParser::ValueDeclContext::CONST() {
+  return getToken(FgsgParser::CONST, 0);
+}
+
+tree::TerminalNode* FgsgParser::ValueDeclContext::ATTR() {
+  return getToken(FgsgParser::ATTR, 0);
+}
+
+
+size_t FgsgParser::ValueDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleValueDecl;
+}
+
+antlrcpp::Any FgsgParser::ValueDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitValueDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ValueDeclContext* FgsgParser::valueDecl() {
+  ValueDeclContext *_localctx = _tracker.createInstance<ValueDeclContext>(_ctx, getState());
+  enterRule(_localctx, 4, FgsgParser::RuleValueDecl);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(90);
+    dynamic_cast<ValueDeclContext *>(_localctx)->kind = _input->LT(1);
+    _la = _input->LA(1);
+    if (!(_la == FgsgParser::CONST
+
+    || _la == FgsgParser::ATTR)) {
+      dynamic_cast<ValueDeclContext *>(_localctx)->kind = _errHandler->recoverInline(this);
+    }
+    else {
+      _errHandler->reportMatch(this);
+      consume();
+    }
+    setState(91);
+    dynamic_cast<ValueDeclContext *>(_localctx)->name = match(FgsgParser::ID);
+    setState(92);
+    match(FgsgParser::ASSIGN);
+    setState(93);
+    expr(0);
+    setState(94);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- SurfaceDeclContext ------------------------------------------------------------------
+
+FgsgParser::SurfaceDeclContext::SurfaceDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::SurfaceDeclContext::SURFACE() {
+  return getToken(FgsgParser::SURFACE, 0);
+}
+
+tree::TerminalNode* FgsgParser::SurfaceDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::SurfaceDeclContext::STRING() {
+  return getToken(FgsgParser::STRING, 0);
+}
+
+tree::TerminalNode* FgsgParser::SurfaceDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::SurfaceDeclContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+
+size_t FgsgParser::SurfaceDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleSurfaceDecl;
+}
+
+antlrcpp::Any FgsgParser::SurfaceDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitSurfaceDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::SurfaceDeclContext* FgsgParser::surfaceDecl() {
+  SurfaceDeclContext *_localctx = _tracker.createInstance<SurfaceDeclContext>(_ctx, getState());
+  enterRule(_localctx, 6, FgsgParser::RuleSurfaceDecl);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(96);
+    match(FgsgParser::SURFACE);
+    setState(102);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::STRING: {
+        setState(97);
+        dynamic_cast<SurfaceDeclContext *>(_localctx)->path = match(FgsgParser::STRING);
+        break;
+      }
+
+      case FgsgParser::ID: {
+        setState(98);
+        dynamic_cast<SurfaceDeclContext *>(_localctx)->generator = match(FgsgParser::ID);
+        setState(100);
+        _errHandler->sync(this);
+
+        _la = _input->LA(1);
+        if (_la == FgsgParser::LPAREN) {
+          setState(99);
+          callArgs();
+        }
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+    setState(104);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- FieldDeclContext ------------------------------------------------------------------
+
+FgsgParser::FieldDeclContext::FieldDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::FieldDeclContext::FIELD() {
+  return getToken(FgsgParser::FIELD, 0);
+}
+
+tree::TerminalNode* FgsgParser::FieldDeclContext::ASSIGN() {
+  return getToken(FgsgParser::ASSIGN, 0);
+}
+
+FgsgParser::FieldSourceContext* FgsgParser::FieldDeclContext::fieldSource() {
+  return getRuleContext<FgsgParser::FieldSourceContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::FieldDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::FieldDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+
+size_t FgsgParser::FieldDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleFieldDecl;
+}
+
+antlrcpp::Any FgsgParser::FieldDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitFieldDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::FieldDeclContext* FgsgParser::fieldDecl() {
+  FieldDeclContext *_localctx = _tracker.createInstance<FieldDeclContext>(_ctx, getState());
+  enterRule(_localctx, 8, FgsgParser::RuleFieldDecl);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(106);
+    match(FgsgParser::FIELD);
+    setState(107);
+    dynamic_cast<FieldDeclContext *>(_localctx)->name = match(FgsgParser::ID);
+    setState(108);
+    match(FgsgParser::ASSIGN);
+    setState(109);
+    fieldSource();
+    setState(110);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- FieldSourceContext ------------------------------------------------------------------
+
+FgsgParser::FieldSourceContext::FieldSourceContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::FieldSourceContext::LBRACE() {
+  return getToken(FgsgParser::LBRACE, 0);
+}
+
+tree::TerminalNode* FgsgParser::FieldSourceContext::RBRACE() {
+  return getToken(FgsgParser::RBRACE, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::FieldSourceContext::ID() {
+  return getTokens(FgsgParser::ID);
+}
+
+tree::TerminalNode* FgsgParser::FieldSourceContext::ID(size_t i) {
+  return getToken(FgsgParser::ID, i);
+}
+
+std::vector<FgsgParser::FieldDesignItemContext *> FgsgParser::FieldSourceContext::fieldDesignItem() {
+  return getRuleContexts<FgsgParser::FieldDesignItemContext>();
+}
+
+FgsgParser::FieldDesignItemContext* FgsgParser::FieldSourceContext::fieldDesignItem(size_t i) {
+  return getRuleContext<FgsgParser::FieldDesignItemContext>(i);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::FieldSourceContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+
+size_t FgsgParser::FieldSourceContext::getRuleIndex() const {
+  return FgsgParser::RuleFieldSource;
+}
+
+antlrcpp::Any FgsgParser::FieldSourceContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitFieldSource(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::FieldSourceContext* FgsgParser::fieldSource() {
+  FieldSourceContext *_localctx = _tracker.createInstance<FieldSourceContext>(_ctx, getState());
+  enterRule(_localctx, 10, FgsgParser::RuleFieldSource);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(126);
+    _errHandler->sync(this);
+    switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 6, _ctx)) {
+    case 1: {
+      enterOuterAlt(_localctx, 1);
+      setState(112);
+      dynamic_cast<FieldSourceContext *>(_localctx)->designWord = match(FgsgParser::ID);
+      setState(113);
+      dynamic_cast<FieldSourceContext *>(_localctx)->function = match(FgsgParser::ID);
+      setState(114);
+      match(FgsgParser::LBRACE);
+      setState(118);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+      while (_la == FgsgParser::ID) {
+        setState(115);
+        fieldDesignItem();
+        setState(120);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+      }
+      setState(121);
+      match(FgsgParser::RBRACE);
+      break;
+    }
+
+    case 2: {
+      enterOuterAlt(_localctx, 2);
+      setState(122);
+      dynamic_cast<FieldSourceContext *>(_localctx)->function = match(FgsgParser::ID);
+      setState(124);
+      _errHandler->sync(this);
+
+      _la = _input->LA(1);
+      if (_la == FgsgParser::LPAREN) {
+        setState(123);
+        callArgs();
+      }
+      break;
+    }
+
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- FieldDesignItemContext ------------------------------------------------------------------
+
+FgsgParser::FieldDesignItemContext::FieldDesignItemContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::FieldDesignItemContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::FieldDesignItemContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+std::vector<FgsgParser::FieldDesignWordContext *> FgsgParser::FieldDesignItemContext::fieldDesignWord() {
+  return getRuleContexts<FgsgParser::FieldDesignWordContext>();
+}
+
+FgsgParser::FieldDesignWordContext* FgsgParser::FieldDesignItemContext::fieldDesignWord(size_t i) {
+  return getRuleContext<FgsgParser::FieldDesignWordContext>(i);
+}
+
+
+size_t FgsgParser::FieldDesignItemContext::getRuleIndex() const {
+  return FgsgParser::RuleFieldDesignItem;
+}
+
+antlrcpp::Any FgsgParser::FieldDesignItemContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitFieldDesignItem(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::FieldDesignItemContext* FgsgParser::fieldDesignItem() {
+  FieldDesignItemContext *_localctx = _tracker.createInstance<FieldDesignItemContext>(_ctx, getState());
+  enterRule(_localctx, 12, FgsgParser::RuleFieldDesignItem);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(128);
+    dynamic_cast<FieldDesignItemContext *>(_localctx)->kind = match(FgsgParser::ID);
+    setState(132);
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    while ((((_la & ~ 0x3fULL) == 0) &&
+      ((1ULL << _la) & ((1ULL << FgsgParser::TRUE)
+      | (1ULL << FgsgParser::FALSE)
+      | (1ULL << FgsgParser::PLUS)
+      | (1ULL << FgsgParser::MINUS)
+      | (1ULL << FgsgParser::LPAREN)
+      | (1ULL << FgsgParser::FLOAT)
+      | (1ULL << FgsgParser::INT)
+      | (1ULL << FgsgParser::ID)
+      | (1ULL << FgsgParser::STRING))) != 0)) {
+      setState(129);
+      fieldDesignWord();
+      setState(134);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    }
+    setState(135);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- FieldDesignWordContext ------------------------------------------------------------------
+
+FgsgParser::FieldDesignWordContext::FieldDesignWordContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::FieldDesignWordContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::DesignValueContext* FgsgParser::FieldDesignWordContext::designValue() {
+  return getRuleContext<FgsgParser::DesignValueContext>(0);
+}
+
+
+size_t FgsgParser::FieldDesignWordContext::getRuleIndex() const {
+  return FgsgParser::RuleFieldDesignWord;
+}
+
+antlrcpp::Any FgsgParser::FieldDesignWordContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitFieldDesignWord(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::FieldDesignWordContext* FgsgParser::fieldDesignWord() {
+  FieldDesignWordContext *_localctx = _tracker.createInstance<FieldDesignWordContext>(_ctx, getState());
+  enterRule(_localctx, 14, FgsgParser::RuleFieldDesignWord);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(142);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 1);
+        setState(137);
+        dynamic_cast<FieldDesignWordContext *>(_localctx)->keyword = match(FgsgParser::ID);
+        setState(139);
+        _errHandler->sync(this);
+
+        switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 8, _ctx)) {
+        case 1: {
+          setState(138);
+          designValue();
+          break;
+        }
+
+        }
+        break;
+      }
+
+      case FgsgParser::TRUE:
+      case FgsgParser::FALSE:
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::LPAREN:
+      case FgsgParser::FLOAT:
+      case FgsgParser::INT:
+      case FgsgParser::STRING: {
+        enterOuterAlt(_localctx, 2);
+        setState(141);
+        designValue();
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- DesignValueContext ------------------------------------------------------------------
+
+FgsgParser::DesignValueContext::DesignValueContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::NumberContext* FgsgParser::DesignValueContext::number() {
+  return getRuleContext<FgsgParser::NumberContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::STRING() {
+  return getToken(FgsgParser::STRING, 0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::TRUE() {
+  return getToken(FgsgParser::TRUE, 0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::FALSE() {
+  return getToken(FgsgParser::FALSE, 0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::LPAREN() {
+  return getToken(FgsgParser::LPAREN, 0);
+}
+
+std::vector<FgsgParser::ExprContext *> FgsgParser::DesignValueContext::expr() {
+  return getRuleContexts<FgsgParser::ExprContext>();
+}
+
+FgsgParser::ExprContext* FgsgParser::DesignValueContext::expr(size_t i) {
+  return getRuleContext<FgsgParser::ExprContext>(i);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::RPAREN() {
+  return getToken(FgsgParser::RPAREN, 0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::MINUS() {
+  return getToken(FgsgParser::MINUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::PLUS() {
+  return getToken(FgsgParser::PLUS, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::DesignValueContext::COMMA() {
+  return getTokens(FgsgParser::COMMA);
+}
+
+tree::TerminalNode* FgsgParser::DesignValueContext::COMMA(size_t i) {
+  return getToken(FgsgParser::COMMA, i);
+}
+
+
+size_t FgsgParser::DesignValueContext::getRuleIndex() const {
+  return FgsgParser::RuleDesignValue;
+}
+
+antlrcpp::Any FgsgParser::DesignValueContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitDesignValue(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::DesignValueContext* FgsgParser::designValue() {
+  DesignValueContext *_localctx = _tracker.createInstance<DesignValueContext>(_ctx, getState());
+  enterRule(_localctx, 16, FgsgParser::RuleDesignValue);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(145);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::PLUS
+
+    || _la == FgsgParser::MINUS) {
+      setState(144);
+      dynamic_cast<DesignValueContext *>(_localctx)->sign = _input->LT(1);
+      _la = _input->LA(1);
+      if (!(_la == FgsgParser::PLUS
+
+      || _la == FgsgParser::MINUS)) {
+        dynamic_cast<DesignValueContext *>(_localctx)->sign = _errHandler->recoverInline(this);
+      }
+      else {
+        _errHandler->reportMatch(this);
+        consume();
+      }
+    }
+    setState(162);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::FLOAT:
+      case FgsgParser::INT: {
+        setState(147);
+        number();
+        break;
+      }
+
+      case FgsgParser::STRING: {
+        setState(148);
+        match(FgsgParser::STRING);
+        break;
+      }
+
+      case FgsgParser::TRUE: {
+        setState(149);
+        match(FgsgParser::TRUE);
+        break;
+      }
+
+      case FgsgParser::FALSE: {
+        setState(150);
+        match(FgsgParser::FALSE);
+        break;
+      }
+
+      case FgsgParser::LPAREN: {
+        setState(151);
+        match(FgsgParser::LPAREN);
+        setState(152);
+        expr(0);
+        setState(157);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+        while (_la == FgsgParser::COMMA) {
+          setState(153);
+          match(FgsgParser::COMMA);
+          setState(154);
+          expr(0);
+          setState(159);
+          _errHandler->sync(this);
+          _la = _input->LA(1);
+        }
+        setState(160);
+        match(FgsgParser::RPAREN);
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- TextureDeclContext ------------------------------------------------------------------
+
+FgsgParser::TextureDeclContext::TextureDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::TextureDeclContext::TEXTURE() {
+  return getToken(FgsgParser::TEXTURE, 0);
+}
+
+tree::TerminalNode* FgsgParser::TextureDeclContext::ASSIGN() {
+  return getToken(FgsgParser::ASSIGN, 0);
+}
+
+tree::TerminalNode* FgsgParser::TextureDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::TextureDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+tree::TerminalNode* FgsgParser::TextureDeclContext::STRING() {
+  return getToken(FgsgParser::STRING, 0);
+}
+
+
+size_t FgsgParser::TextureDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleTextureDecl;
+}
+
+antlrcpp::Any FgsgParser::TextureDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitTextureDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::TextureDeclContext* FgsgParser::textureDecl() {
+  TextureDeclContext *_localctx = _tracker.createInstance<TextureDeclContext>(_ctx, getState());
+  enterRule(_localctx, 18, FgsgParser::RuleTextureDecl);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(164);
+    match(FgsgParser::TEXTURE);
+    setState(165);
+    dynamic_cast<TextureDeclContext *>(_localctx)->name = match(FgsgParser::ID);
+    setState(166);
+    match(FgsgParser::ASSIGN);
+    setState(167);
+    dynamic_cast<TextureDeclContext *>(_localctx)->path = match(FgsgParser::STRING);
+    setState(168);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- DeriveDeclContext ------------------------------------------------------------------
+
+FgsgParser::DeriveDeclContext::DeriveDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::DeriveDeclContext::DERIVE() {
+  return getToken(FgsgParser::DERIVE, 0);
+}
+
+tree::TerminalNode* FgsgParser::DeriveDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+tree::TerminalNode* FgsgParser::DeriveDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::ExprContext* FgsgParser::DeriveDeclContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+
+size_t FgsgParser::DeriveDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleDeriveDecl;
+}
+
+antlrcpp::Any FgsgParser::DeriveDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitDeriveDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::DeriveDeclContext* FgsgParser::deriveDecl() {
+  DeriveDeclContext *_localctx = _tracker.createInstance<DeriveDeclContext>(_ctx, getState());
+  enterRule(_localctx, 20, FgsgParser::RuleDeriveDecl);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(170);
+    match(FgsgParser::DERIVE);
+    setState(171);
+    dynamic_cast<DeriveDeclContext *>(_localctx)->order = match(FgsgParser::ID);
+    setState(173);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if ((((_la & ~ 0x3fULL) == 0) &&
+      ((1ULL << _la) & ((1ULL << FgsgParser::TRUE)
+      | (1ULL << FgsgParser::FALSE)
+      | (1ULL << FgsgParser::PLUS)
+      | (1ULL << FgsgParser::MINUS)
+      | (1ULL << FgsgParser::BANG)
+      | (1ULL << FgsgParser::TILDE)
+      | (1ULL << FgsgParser::LPAREN)
+      | (1ULL << FgsgParser::RELSIZE)
+      | (1ULL << FgsgParser::FLOAT)
+      | (1ULL << FgsgParser::INT)
+      | (1ULL << FgsgParser::ID)
+      | (1ULL << FgsgParser::STRING))) != 0)) {
+      setState(172);
+      dynamic_cast<DeriveDeclContext *>(_localctx)->steps = expr(0);
+    }
+    setState(175);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- TurtleDeclContext ------------------------------------------------------------------
+
+FgsgParser::TurtleDeclContext::TurtleDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::TurtleDeclContext::TURTLE() {
+  return getToken(FgsgParser::TURTLE, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+std::vector<FgsgParser::TurtleSettingContext *> FgsgParser::TurtleDeclContext::turtleSetting() {
+  return getRuleContexts<FgsgParser::TurtleSettingContext>();
+}
+
+FgsgParser::TurtleSettingContext* FgsgParser::TurtleDeclContext::turtleSetting(size_t i) {
+  return getRuleContext<FgsgParser::TurtleSettingContext>(i);
+}
+
+
+size_t FgsgParser::TurtleDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleTurtleDecl;
+}
+
+antlrcpp::Any FgsgParser::TurtleDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitTurtleDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::TurtleDeclContext* FgsgParser::turtleDecl() {
+  TurtleDeclContext *_localctx = _tracker.createInstance<TurtleDeclContext>(_ctx, getState());
+  enterRule(_localctx, 22, FgsgParser::RuleTurtleDecl);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(177);
+    match(FgsgParser::TURTLE);
+    setState(181);
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    while (_la == FgsgParser::ID) {
+      setState(178);
+      turtleSetting();
+      setState(183);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    }
+    setState(184);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- TurtleSettingContext ------------------------------------------------------------------
+
+FgsgParser::TurtleSettingContext::TurtleSettingContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::TurtleSettingContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::ExprContext* FgsgParser::TurtleSettingContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+
+size_t FgsgParser::TurtleSettingContext::getRuleIndex() const {
+  return FgsgParser::RuleTurtleSetting;
+}
+
+antlrcpp::Any FgsgParser::TurtleSettingContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitTurtleSetting(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::TurtleSettingContext* FgsgParser::turtleSetting() {
+  TurtleSettingContext *_localctx = _tracker.createInstance<TurtleSettingContext>(_ctx, getState());
+  enterRule(_localctx, 24, FgsgParser::RuleTurtleSetting);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(186);
+    dynamic_cast<TurtleSettingContext *>(_localctx)->name = match(FgsgParser::ID);
+    setState(187);
+    dynamic_cast<TurtleSettingContext *>(_localctx)->value = expr(0);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- AxiomDeclContext ------------------------------------------------------------------
+
+FgsgParser::AxiomDeclContext::AxiomDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::AxiomDeclContext::AXIOM() {
+  return getToken(FgsgParser::AXIOM, 0);
+}
+
+tree::TerminalNode* FgsgParser::AxiomDeclContext::COLON() {
+  return getToken(FgsgParser::COLON, 0);
+}
+
+FgsgParser::SuccessorContext* FgsgParser::AxiomDeclContext::successor() {
+  return getRuleContext<FgsgParser::SuccessorContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::AxiomDeclContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+
+size_t FgsgParser::AxiomDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleAxiomDecl;
+}
+
+antlrcpp::Any FgsgParser::AxiomDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitAxiomDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::AxiomDeclContext* FgsgParser::axiomDecl() {
+  AxiomDeclContext *_localctx = _tracker.createInstance<AxiomDeclContext>(_ctx, getState());
+  enterRule(_localctx, 26, FgsgParser::RuleAxiomDecl);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(189);
+    match(FgsgParser::AXIOM);
+    setState(190);
+    match(FgsgParser::COLON);
+    setState(191);
+    successor();
+    setState(192);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- PriorityDeclContext ------------------------------------------------------------------
+
+FgsgParser::PriorityDeclContext::PriorityDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::PriorityDeclContext::PRIORITY() {
+  return getToken(FgsgParser::PRIORITY, 0);
+}
+
+tree::TerminalNode* FgsgParser::PriorityDeclContext::COLON() {
+  return getToken(FgsgParser::COLON, 0);
+}
+
+tree::TerminalNode* FgsgParser::PriorityDeclContext::INT() {
+  return getToken(FgsgParser::INT, 0);
+}
+
+tree::TerminalNode* FgsgParser::PriorityDeclContext::MINUS() {
+  return getToken(FgsgParser::MINUS, 0);
+}
+
+
+size_t FgsgParser::PriorityDeclContext::getRuleIndex() const {
+  return FgsgParser::RulePriorityDecl;
+}
+
+antlrcpp::Any FgsgParser::PriorityDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitPriorityDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::PriorityDeclContext* FgsgParser::priorityDecl() {
+  PriorityDeclContext *_localctx = _tracker.createInstance<PriorityDeclContext>(_ctx, getState());
+  enterRule(_localctx, 28, FgsgParser::RulePriorityDecl);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(194);
+    match(FgsgParser::PRIORITY);
+    setState(196);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::MINUS) {
+      setState(195);
+      dynamic_cast<PriorityDeclContext *>(_localctx)->sign = match(FgsgParser::MINUS);
+    }
+    setState(198);
+    dynamic_cast<PriorityDeclContext *>(_localctx)->level = match(FgsgParser::INT);
+    setState(199);
+    match(FgsgParser::COLON);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- GrammarRuleContext ------------------------------------------------------------------
+
+FgsgParser::GrammarRuleContext::GrammarRuleContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::RuleHeadContext* FgsgParser::GrammarRuleContext::ruleHead() {
+  return getRuleContext<FgsgParser::RuleHeadContext>(0);
+}
+
+FgsgParser::ArrowContext* FgsgParser::GrammarRuleContext::arrow() {
+  return getRuleContext<FgsgParser::ArrowContext>(0);
+}
+
+FgsgParser::RuleBodyContext* FgsgParser::GrammarRuleContext::ruleBody() {
+  return getRuleContext<FgsgParser::RuleBodyContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::GrammarRuleContext::SEMI() {
+  return getToken(FgsgParser::SEMI, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::GrammarRuleContext::COLON() {
+  return getTokens(FgsgParser::COLON);
+}
+
+tree::TerminalNode* FgsgParser::GrammarRuleContext::COLON(size_t i) {
+  return getToken(FgsgParser::COLON, i);
+}
+
+FgsgParser::RuleLabelContext* FgsgParser::GrammarRuleContext::ruleLabel() {
+  return getRuleContext<FgsgParser::RuleLabelContext>(0);
+}
+
+FgsgParser::ExprContext* FgsgParser::GrammarRuleContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+
+size_t FgsgParser::GrammarRuleContext::getRuleIndex() const {
+  return FgsgParser::RuleGrammarRule;
+}
+
+antlrcpp::Any FgsgParser::GrammarRuleContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitGrammarRule(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::GrammarRuleContext* FgsgParser::grammarRule() {
+  GrammarRuleContext *_localctx = _tracker.createInstance<GrammarRuleContext>(_ctx, getState());
+  enterRule(_localctx, 30, FgsgParser::RuleGrammarRule);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(204);
+    _errHandler->sync(this);
+
+    switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 16, _ctx)) {
+    case 1: {
+      setState(201);
+      dynamic_cast<GrammarRuleContext *>(_localctx)->label = ruleLabel();
+      setState(202);
+      match(FgsgParser::COLON);
+      break;
+    }
+
+    }
+    setState(206);
+    ruleHead();
+    setState(209);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::COLON) {
+      setState(207);
+      match(FgsgParser::COLON);
+      setState(208);
+      dynamic_cast<GrammarRuleContext *>(_localctx)->guard = expr(0);
+    }
+    setState(211);
+    arrow();
+    setState(212);
+    ruleBody();
+    setState(213);
+    match(FgsgParser::SEMI);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- RuleLabelContext ------------------------------------------------------------------
+
+FgsgParser::RuleLabelContext::RuleLabelContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::RuleLabelContext::INT() {
+  return getToken(FgsgParser::INT, 0);
+}
+
+tree::TerminalNode* FgsgParser::RuleLabelContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+
+size_t FgsgParser::RuleLabelContext::getRuleIndex() const {
+  return FgsgParser::RuleRuleLabel;
+}
+
+antlrcpp::Any FgsgParser::RuleLabelContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitRuleLabel(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::RuleLabelContext* FgsgParser::ruleLabel() {
+  RuleLabelContext *_localctx = _tracker.createInstance<RuleLabelContext>(_ctx, getState());
+  enterRule(_localctx, 32, FgsgParser::RuleRuleLabel);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(215);
+    _la = _input->LA(1);
+    if (!(_la == FgsgParser::INT
+
+    || _la == FgsgParser::ID)) {
+    _errHandler->recoverInline(this);
+    }
+    else {
+      _errHandler->reportMatch(this);
+      consume();
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- RuleHeadContext ------------------------------------------------------------------
+
+FgsgParser::RuleHeadContext::RuleHeadContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::ModulePatternContext* FgsgParser::RuleHeadContext::modulePattern() {
+  return getRuleContext<FgsgParser::ModulePatternContext>(0);
+}
+
+FgsgParser::LeftContextContext* FgsgParser::RuleHeadContext::leftContext() {
+  return getRuleContext<FgsgParser::LeftContextContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::RuleHeadContext::LT() {
+  return getToken(FgsgParser::LT, 0);
+}
+
+tree::TerminalNode* FgsgParser::RuleHeadContext::GT() {
+  return getToken(FgsgParser::GT, 0);
+}
+
+FgsgParser::RightContextContext* FgsgParser::RuleHeadContext::rightContext() {
+  return getRuleContext<FgsgParser::RightContextContext>(0);
+}
+
+
+size_t FgsgParser::RuleHeadContext::getRuleIndex() const {
+  return FgsgParser::RuleRuleHead;
+}
+
+antlrcpp::Any FgsgParser::RuleHeadContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitRuleHead(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::RuleHeadContext* FgsgParser::ruleHead() {
+  RuleHeadContext *_localctx = _tracker.createInstance<RuleHeadContext>(_ctx, getState());
+  enterRule(_localctx, 34, FgsgParser::RuleRuleHead);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(220);
+    _errHandler->sync(this);
+
+    switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 18, _ctx)) {
+    case 1: {
+      setState(217);
+      leftContext();
+      setState(218);
+      match(FgsgParser::LT);
+      break;
+    }
+
+    }
+    setState(222);
+    dynamic_cast<RuleHeadContext *>(_localctx)->predecessor = modulePattern();
+    setState(225);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::GT) {
+      setState(223);
+      match(FgsgParser::GT);
+      setState(224);
+      rightContext();
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- LeftContextContext ------------------------------------------------------------------
+
+FgsgParser::LeftContextContext::LeftContextContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+std::vector<FgsgParser::ModulePatternContext *> FgsgParser::LeftContextContext::modulePattern() {
+  return getRuleContexts<FgsgParser::ModulePatternContext>();
+}
+
+FgsgParser::ModulePatternContext* FgsgParser::LeftContextContext::modulePattern(size_t i) {
+  return getRuleContext<FgsgParser::ModulePatternContext>(i);
+}
+
+
+size_t FgsgParser::LeftContextContext::getRuleIndex() const {
+  return FgsgParser::RuleLeftContext;
+}
+
+antlrcpp::Any FgsgParser::LeftContextContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitLeftContext(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::LeftContextContext* FgsgParser::leftContext() {
+  LeftContextContext *_localctx = _tracker.createInstance<LeftContextContext>(_ctx, getState());
+  enterRule(_localctx, 36, FgsgParser::RuleLeftContext);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(228); 
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    do {
+      setState(227);
+      modulePattern();
+      setState(230); 
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    } while (_la == FgsgParser::ID);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- RightContextContext ------------------------------------------------------------------
+
+FgsgParser::RightContextContext::RightContextContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+std::vector<FgsgParser::ContextModuleContext *> FgsgParser::RightContextContext::contextModule() {
+  return getRuleContexts<FgsgParser::ContextModuleContext>();
+}
+
+FgsgParser::ContextModuleContext* FgsgParser::RightContextContext::contextModule(size_t i) {
+  return getRuleContext<FgsgParser::ContextModuleContext>(i);
+}
+
+
+size_t FgsgParser::RightContextContext::getRuleIndex() const {
+  return FgsgParser::RuleRightContext;
+}
+
+antlrcpp::Any FgsgParser::RightContextContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitRightContext(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::RightContextContext* FgsgParser::rightContext() {
+  RightContextContext *_localctx = _tracker.createInstance<RightContextContext>(_ctx, getState());
+  enterRule(_localctx, 38, FgsgParser::RuleRightContext);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(233); 
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    do {
+      setState(232);
+      contextModule();
+      setState(235); 
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    } while ((((_la & ~ 0x3fULL) == 0) &&
+      ((1ULL << _la) & ((1ULL << FgsgParser::LBRACK)
+      | (1ULL << FgsgParser::RBRACK)
+      | (1ULL << FgsgParser::ID))) != 0));
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ContextModuleContext ------------------------------------------------------------------
+
+FgsgParser::ContextModuleContext::ContextModuleContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::ModulePatternContext* FgsgParser::ContextModuleContext::modulePattern() {
+  return getRuleContext<FgsgParser::ModulePatternContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::ContextModuleContext::LBRACK() {
+  return getToken(FgsgParser::LBRACK, 0);
+}
+
+tree::TerminalNode* FgsgParser::ContextModuleContext::RBRACK() {
+  return getToken(FgsgParser::RBRACK, 0);
+}
+
+
+size_t FgsgParser::ContextModuleContext::getRuleIndex() const {
+  return FgsgParser::RuleContextModule;
+}
+
+antlrcpp::Any FgsgParser::ContextModuleContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitContextModule(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ContextModuleContext* FgsgParser::contextModule() {
+  ContextModuleContext *_localctx = _tracker.createInstance<ContextModuleContext>(_ctx, getState());
+  enterRule(_localctx, 40, FgsgParser::RuleContextModule);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(240);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 1);
+        setState(237);
+        modulePattern();
+        break;
+      }
+
+      case FgsgParser::LBRACK: {
+        enterOuterAlt(_localctx, 2);
+        setState(238);
+        dynamic_cast<ContextModuleContext *>(_localctx)->open = match(FgsgParser::LBRACK);
+        break;
+      }
+
+      case FgsgParser::RBRACK: {
+        enterOuterAlt(_localctx, 3);
+        setState(239);
+        dynamic_cast<ContextModuleContext *>(_localctx)->close = match(FgsgParser::RBRACK);
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ModulePatternContext ------------------------------------------------------------------
+
+FgsgParser::ModulePatternContext::ModulePatternContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::ModulePatternContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+tree::TerminalNode* FgsgParser::ModulePatternContext::LPAREN() {
+  return getToken(FgsgParser::LPAREN, 0);
+}
+
+tree::TerminalNode* FgsgParser::ModulePatternContext::RPAREN() {
+  return getToken(FgsgParser::RPAREN, 0);
+}
+
+std::vector<FgsgParser::ParamDeclContext *> FgsgParser::ModulePatternContext::paramDecl() {
+  return getRuleContexts<FgsgParser::ParamDeclContext>();
+}
+
+FgsgParser::ParamDeclContext* FgsgParser::ModulePatternContext::paramDecl(size_t i) {
+  return getRuleContext<FgsgParser::ParamDeclContext>(i);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::ModulePatternContext::COMMA() {
+  return getTokens(FgsgParser::COMMA);
+}
+
+tree::TerminalNode* FgsgParser::ModulePatternContext::COMMA(size_t i) {
+  return getToken(FgsgParser::COMMA, i);
+}
+
+
+size_t FgsgParser::ModulePatternContext::getRuleIndex() const {
+  return FgsgParser::RuleModulePattern;
+}
+
+antlrcpp::Any FgsgParser::ModulePatternContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitModulePattern(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ModulePatternContext* FgsgParser::modulePattern() {
+  ModulePatternContext *_localctx = _tracker.createInstance<ModulePatternContext>(_ctx, getState());
+  enterRule(_localctx, 42, FgsgParser::RuleModulePattern);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(242);
+    dynamic_cast<ModulePatternContext *>(_localctx)->name = match(FgsgParser::ID);
+    setState(255);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::LPAREN) {
+      setState(243);
+      match(FgsgParser::LPAREN);
+      setState(252);
+      _errHandler->sync(this);
+
+      _la = _input->LA(1);
+      if (_la == FgsgParser::ID) {
+        setState(244);
+        paramDecl();
+        setState(249);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+        while (_la == FgsgParser::COMMA) {
+          setState(245);
+          match(FgsgParser::COMMA);
+          setState(246);
+          paramDecl();
+          setState(251);
+          _errHandler->sync(this);
+          _la = _input->LA(1);
+        }
+      }
+      setState(254);
+      match(FgsgParser::RPAREN);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ParamDeclContext ------------------------------------------------------------------
+
+FgsgParser::ParamDeclContext::ParamDeclContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::ParamDeclContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+
+size_t FgsgParser::ParamDeclContext::getRuleIndex() const {
+  return FgsgParser::RuleParamDecl;
+}
+
+antlrcpp::Any FgsgParser::ParamDeclContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitParamDecl(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ParamDeclContext* FgsgParser::paramDecl() {
+  ParamDeclContext *_localctx = _tracker.createInstance<ParamDeclContext>(_ctx, getState());
+  enterRule(_localctx, 44, FgsgParser::RuleParamDecl);
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(257);
+    match(FgsgParser::ID);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- RuleBodyContext ------------------------------------------------------------------
+
+FgsgParser::RuleBodyContext::RuleBodyContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+std::vector<FgsgParser::BranchContext *> FgsgParser::RuleBodyContext::branch() {
+  return getRuleContexts<FgsgParser::BranchContext>();
+}
+
+FgsgParser::BranchContext* FgsgParser::RuleBodyContext::branch(size_t i) {
+  return getRuleContext<FgsgParser::BranchContext>(i);
+}
+
+std::vector<FgsgParser::ArrowContext *> FgsgParser::RuleBodyContext::arrow() {
+  return getRuleContexts<FgsgParser::ArrowContext>();
+}
+
+FgsgParser::ArrowContext* FgsgParser::RuleBodyContext::arrow(size_t i) {
+  return getRuleContext<FgsgParser::ArrowContext>(i);
+}
+
+FgsgParser::ExprContext* FgsgParser::RuleBodyContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+
+size_t FgsgParser::RuleBodyContext::getRuleIndex() const {
+  return FgsgParser::RuleRuleBody;
+}
+
+antlrcpp::Any FgsgParser::RuleBodyContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitRuleBody(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::RuleBodyContext* FgsgParser::ruleBody() {
+  RuleBodyContext *_localctx = _tracker.createInstance<RuleBodyContext>(_ctx, getState());
+  enterRule(_localctx, 46, FgsgParser::RuleRuleBody);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(279);
+    _errHandler->sync(this);
+    switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 28, _ctx)) {
+    case 1: {
+      enterOuterAlt(_localctx, 1);
+      setState(259);
+      branch();
+      setState(265);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+      while (_la == FgsgParser::ARROW
+
+      || _la == FgsgParser::ASSIGN) {
+        setState(260);
+        arrow();
+        setState(261);
+        branch();
+        setState(267);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+      }
+      break;
+    }
+
+    case 2: {
+      enterOuterAlt(_localctx, 2);
+      setState(268);
+      dynamic_cast<RuleBodyContext *>(_localctx)->mullerGuard = expr(0);
+      setState(269);
+      arrow();
+      setState(270);
+      branch();
+      setState(276);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+      while (_la == FgsgParser::ARROW
+
+      || _la == FgsgParser::ASSIGN) {
+        setState(271);
+        arrow();
+        setState(272);
+        branch();
+        setState(278);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+      }
+      break;
+    }
+
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- BranchContext ------------------------------------------------------------------
+
+FgsgParser::BranchContext::BranchContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::SuccessorContext* FgsgParser::BranchContext::successor() {
+  return getRuleContext<FgsgParser::SuccessorContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::BranchContext::COLON() {
+  return getToken(FgsgParser::COLON, 0);
+}
+
+FgsgParser::ExprContext* FgsgParser::BranchContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+
+size_t FgsgParser::BranchContext::getRuleIndex() const {
+  return FgsgParser::RuleBranch;
+}
+
+antlrcpp::Any FgsgParser::BranchContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBranch(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::BranchContext* FgsgParser::branch() {
+  BranchContext *_localctx = _tracker.createInstance<BranchContext>(_ctx, getState());
+  enterRule(_localctx, 48, FgsgParser::RuleBranch);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(281);
+    successor();
+    setState(284);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if (_la == FgsgParser::COLON) {
+      setState(282);
+      match(FgsgParser::COLON);
+      setState(283);
+      dynamic_cast<BranchContext *>(_localctx)->probability = expr(0);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ArrowContext ------------------------------------------------------------------
+
+FgsgParser::ArrowContext::ArrowContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::ArrowContext::ARROW() {
+  return getToken(FgsgParser::ARROW, 0);
+}
+
+tree::TerminalNode* FgsgParser::ArrowContext::ASSIGN() {
+  return getToken(FgsgParser::ASSIGN, 0);
+}
+
+
+size_t FgsgParser::ArrowContext::getRuleIndex() const {
+  return FgsgParser::RuleArrow;
+}
+
+antlrcpp::Any FgsgParser::ArrowContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitArrow(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ArrowContext* FgsgParser::arrow() {
+  ArrowContext *_localctx = _tracker.createInstance<ArrowContext>(_ctx, getState());
+  enterRule(_localctx, 50, FgsgParser::RuleArrow);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(286);
+    _la = _input->LA(1);
+    if (!(_la == FgsgParser::ARROW
+
+    || _la == FgsgParser::ASSIGN)) {
+    _errHandler->recoverInline(this);
+    }
+    else {
+      _errHandler->reportMatch(this);
+      consume();
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- SuccessorContext ------------------------------------------------------------------
+
+FgsgParser::SuccessorContext::SuccessorContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::SuccessorContext::EPSILON() {
+  return getToken(FgsgParser::EPSILON, 0);
+}
+
+std::vector<FgsgParser::SequenceItemContext *> FgsgParser::SuccessorContext::sequenceItem() {
+  return getRuleContexts<FgsgParser::SequenceItemContext>();
+}
+
+FgsgParser::SequenceItemContext* FgsgParser::SuccessorContext::sequenceItem(size_t i) {
+  return getRuleContext<FgsgParser::SequenceItemContext>(i);
+}
+
+
+size_t FgsgParser::SuccessorContext::getRuleIndex() const {
+  return FgsgParser::RuleSuccessor;
+}
+
+antlrcpp::Any FgsgParser::SuccessorContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitSuccessor(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::SuccessorContext* FgsgParser::successor() {
+  SuccessorContext *_localctx = _tracker.createInstance<SuccessorContext>(_ctx, getState());
+  enterRule(_localctx, 52, FgsgParser::RuleSuccessor);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(294);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::EPSILON: {
+        enterOuterAlt(_localctx, 1);
+        setState(288);
+        match(FgsgParser::EPSILON);
+        break;
+      }
+
+      case FgsgParser::AND:
+      case FgsgParser::OR:
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::SLASH:
+      case FgsgParser::PERCENT:
+      case FgsgParser::CARET:
+      case FgsgParser::BANG:
+      case FgsgParser::AMP:
+      case FgsgParser::PIPE:
+      case FgsgParser::BACKSLASH:
+      case FgsgParser::DOLLAR:
+      case FgsgParser::LBRACK:
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 2);
+        setState(290); 
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+        do {
+          setState(289);
+          sequenceItem();
+          setState(292); 
+          _errHandler->sync(this);
+          _la = _input->LA(1);
+        } while ((((_la & ~ 0x3fULL) == 0) &&
+          ((1ULL << _la) & ((1ULL << FgsgParser::AND)
+          | (1ULL << FgsgParser::OR)
+          | (1ULL << FgsgParser::PLUS)
+          | (1ULL << FgsgParser::MINUS)
+          | (1ULL << FgsgParser::SLASH)
+          | (1ULL << FgsgParser::PERCENT)
+          | (1ULL << FgsgParser::CARET)
+          | (1ULL << FgsgParser::BANG)
+          | (1ULL << FgsgParser::AMP)
+          | (1ULL << FgsgParser::PIPE)
+          | (1ULL << FgsgParser::BACKSLASH)
+          | (1ULL << FgsgParser::DOLLAR)
+          | (1ULL << FgsgParser::LBRACK)
+          | (1ULL << FgsgParser::ID))) != 0));
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- SequenceItemContext ------------------------------------------------------------------
+
+FgsgParser::SequenceItemContext::SequenceItemContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+FgsgParser::ItemContext* FgsgParser::SequenceItemContext::item() {
+  return getRuleContext<FgsgParser::ItemContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::SequenceItemContext::PIPE() {
+  return getToken(FgsgParser::PIPE, 0);
+}
+
+tree::TerminalNode* FgsgParser::SequenceItemContext::OR() {
+  return getToken(FgsgParser::OR, 0);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::SequenceItemContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+
+size_t FgsgParser::SequenceItemContext::getRuleIndex() const {
+  return FgsgParser::RuleSequenceItem;
+}
+
+antlrcpp::Any FgsgParser::SequenceItemContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitSequenceItem(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::SequenceItemContext* FgsgParser::sequenceItem() {
+  SequenceItemContext *_localctx = _tracker.createInstance<SequenceItemContext>(_ctx, getState());
+  enterRule(_localctx, 54, FgsgParser::RuleSequenceItem);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(301);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::AND:
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::SLASH:
+      case FgsgParser::PERCENT:
+      case FgsgParser::CARET:
+      case FgsgParser::BANG:
+      case FgsgParser::AMP:
+      case FgsgParser::BACKSLASH:
+      case FgsgParser::DOLLAR:
+      case FgsgParser::LBRACK:
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 1);
+        setState(296);
+        item();
+        break;
+      }
+
+      case FgsgParser::OR:
+      case FgsgParser::PIPE: {
+        enterOuterAlt(_localctx, 2);
+        setState(297);
+        dynamic_cast<SequenceItemContext *>(_localctx)->symbol = _input->LT(1);
+        _la = _input->LA(1);
+        if (!(_la == FgsgParser::OR
+
+        || _la == FgsgParser::PIPE)) {
+          dynamic_cast<SequenceItemContext *>(_localctx)->symbol = _errHandler->recoverInline(this);
+        }
+        else {
+          _errHandler->reportMatch(this);
+          consume();
+        }
+        setState(299);
+        _errHandler->sync(this);
+
+        _la = _input->LA(1);
+        if (_la == FgsgParser::LPAREN) {
+          setState(298);
+          callArgs();
+        }
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ItemContext ------------------------------------------------------------------
+
+FgsgParser::ItemContext::ItemContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+
+size_t FgsgParser::ItemContext::getRuleIndex() const {
+  return FgsgParser::RuleItem;
+}
+
+void FgsgParser::ItemContext::copyFrom(ItemContext *ctx) {
+  ParserRuleContext::copyFrom(ctx);
+}
+
+//----------------- CallItemContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::CallItemContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::CallItemContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+FgsgParser::BodyContext* FgsgParser::CallItemContext::body() {
+  return getRuleContext<FgsgParser::BodyContext>(0);
+}
+
+FgsgParser::CallItemContext::CallItemContext(ItemContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::CallItemContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitCallItem(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- BracketItemContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::BracketItemContext::LBRACK() {
+  return getToken(FgsgParser::LBRACK, 0);
+}
+
+tree::TerminalNode* FgsgParser::BracketItemContext::RBRACK() {
+  return getToken(FgsgParser::RBRACK, 0);
+}
+
+std::vector<FgsgParser::SequenceItemContext *> FgsgParser::BracketItemContext::sequenceItem() {
+  return getRuleContexts<FgsgParser::SequenceItemContext>();
+}
+
+FgsgParser::SequenceItemContext* FgsgParser::BracketItemContext::sequenceItem(size_t i) {
+  return getRuleContext<FgsgParser::SequenceItemContext>(i);
+}
+
+FgsgParser::BracketItemContext::BracketItemContext(ItemContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::BracketItemContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBracketItem(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- TurtleItemContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::PLUS() {
+  return getToken(FgsgParser::PLUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::MINUS() {
+  return getToken(FgsgParser::MINUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::AMP() {
+  return getToken(FgsgParser::AMP, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::AND() {
+  return getToken(FgsgParser::AND, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::CARET() {
+  return getToken(FgsgParser::CARET, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::BACKSLASH() {
+  return getToken(FgsgParser::BACKSLASH, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::SLASH() {
+  return getToken(FgsgParser::SLASH, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::BANG() {
+  return getToken(FgsgParser::BANG, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::DOLLAR() {
+  return getToken(FgsgParser::DOLLAR, 0);
+}
+
+tree::TerminalNode* FgsgParser::TurtleItemContext::PERCENT() {
+  return getToken(FgsgParser::PERCENT, 0);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::TurtleItemContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+FgsgParser::TurtleItemContext::TurtleItemContext(ItemContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::TurtleItemContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitTurtleItem(this);
+  else
+    return visitor->visitChildren(this);
+}
+FgsgParser::ItemContext* FgsgParser::item() {
+  ItemContext *_localctx = _tracker.createInstance<ItemContext>(_ctx, getState());
+  enterRule(_localctx, 56, FgsgParser::RuleItem);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(322);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::ID: {
+        _localctx = dynamic_cast<ItemContext *>(_tracker.createInstance<FgsgParser::CallItemContext>(_localctx));
+        enterOuterAlt(_localctx, 1);
+        setState(303);
+        dynamic_cast<CallItemContext *>(_localctx)->name = match(FgsgParser::ID);
+        setState(305);
+        _errHandler->sync(this);
+
+        _la = _input->LA(1);
+        if (_la == FgsgParser::LPAREN) {
+          setState(304);
+          callArgs();
+        }
+        setState(308);
+        _errHandler->sync(this);
+
+        _la = _input->LA(1);
+        if (_la == FgsgParser::LBRACE) {
+          setState(307);
+          body();
+        }
+        break;
+      }
+
+      case FgsgParser::AND:
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::SLASH:
+      case FgsgParser::PERCENT:
+      case FgsgParser::CARET:
+      case FgsgParser::BANG:
+      case FgsgParser::AMP:
+      case FgsgParser::BACKSLASH:
+      case FgsgParser::DOLLAR: {
+        _localctx = dynamic_cast<ItemContext *>(_tracker.createInstance<FgsgParser::TurtleItemContext>(_localctx));
+        enterOuterAlt(_localctx, 2);
+        setState(310);
+        dynamic_cast<TurtleItemContext *>(_localctx)->symbol = _input->LT(1);
+        _la = _input->LA(1);
+        if (!((((_la & ~ 0x3fULL) == 0) &&
+          ((1ULL << _la) & ((1ULL << FgsgParser::AND)
+          | (1ULL << FgsgParser::PLUS)
+          | (1ULL << FgsgParser::MINUS)
+          | (1ULL << FgsgParser::SLASH)
+          | (1ULL << FgsgParser::PERCENT)
+          | (1ULL << FgsgParser::CARET)
+          | (1ULL << FgsgParser::BANG)
+          | (1ULL << FgsgParser::AMP)
+          | (1ULL << FgsgParser::BACKSLASH)
+          | (1ULL << FgsgParser::DOLLAR))) != 0))) {
+          dynamic_cast<TurtleItemContext *>(_localctx)->symbol = _errHandler->recoverInline(this);
+        }
+        else {
+          _errHandler->reportMatch(this);
+          consume();
+        }
+        setState(312);
+        _errHandler->sync(this);
+
+        _la = _input->LA(1);
+        if (_la == FgsgParser::LPAREN) {
+          setState(311);
+          callArgs();
+        }
+        break;
+      }
+
+      case FgsgParser::LBRACK: {
+        _localctx = dynamic_cast<ItemContext *>(_tracker.createInstance<FgsgParser::BracketItemContext>(_localctx));
+        enterOuterAlt(_localctx, 3);
+        setState(314);
+        match(FgsgParser::LBRACK);
+        setState(318);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+        while ((((_la & ~ 0x3fULL) == 0) &&
+          ((1ULL << _la) & ((1ULL << FgsgParser::AND)
+          | (1ULL << FgsgParser::OR)
+          | (1ULL << FgsgParser::PLUS)
+          | (1ULL << FgsgParser::MINUS)
+          | (1ULL << FgsgParser::SLASH)
+          | (1ULL << FgsgParser::PERCENT)
+          | (1ULL << FgsgParser::CARET)
+          | (1ULL << FgsgParser::BANG)
+          | (1ULL << FgsgParser::AMP)
+          | (1ULL << FgsgParser::PIPE)
+          | (1ULL << FgsgParser::BACKSLASH)
+          | (1ULL << FgsgParser::DOLLAR)
+          | (1ULL << FgsgParser::LBRACK)
+          | (1ULL << FgsgParser::ID))) != 0)) {
+          setState(315);
+          sequenceItem();
+          setState(320);
+          _errHandler->sync(this);
+          _la = _input->LA(1);
+        }
+        setState(321);
+        match(FgsgParser::RBRACK);
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- CallArgsContext ------------------------------------------------------------------
+
+FgsgParser::CallArgsContext::CallArgsContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::CallArgsContext::LPAREN() {
+  return getToken(FgsgParser::LPAREN, 0);
+}
+
+tree::TerminalNode* FgsgParser::CallArgsContext::RPAREN() {
+  return getToken(FgsgParser::RPAREN, 0);
+}
+
+std::vector<FgsgParser::ExprContext *> FgsgParser::CallArgsContext::expr() {
+  return getRuleContexts<FgsgParser::ExprContext>();
+}
+
+FgsgParser::ExprContext* FgsgParser::CallArgsContext::expr(size_t i) {
+  return getRuleContext<FgsgParser::ExprContext>(i);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::CallArgsContext::COMMA() {
+  return getTokens(FgsgParser::COMMA);
+}
+
+tree::TerminalNode* FgsgParser::CallArgsContext::COMMA(size_t i) {
+  return getToken(FgsgParser::COMMA, i);
+}
+
+
+size_t FgsgParser::CallArgsContext::getRuleIndex() const {
+  return FgsgParser::RuleCallArgs;
+}
+
+antlrcpp::Any FgsgParser::CallArgsContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitCallArgs(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::callArgs() {
+  CallArgsContext *_localctx = _tracker.createInstance<CallArgsContext>(_ctx, getState());
+  enterRule(_localctx, 58, FgsgParser::RuleCallArgs);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(324);
+    match(FgsgParser::LPAREN);
+    setState(333);
+    _errHandler->sync(this);
+
+    _la = _input->LA(1);
+    if ((((_la & ~ 0x3fULL) == 0) &&
+      ((1ULL << _la) & ((1ULL << FgsgParser::TRUE)
+      | (1ULL << FgsgParser::FALSE)
+      | (1ULL << FgsgParser::PLUS)
+      | (1ULL << FgsgParser::MINUS)
+      | (1ULL << FgsgParser::BANG)
+      | (1ULL << FgsgParser::TILDE)
+      | (1ULL << FgsgParser::LPAREN)
+      | (1ULL << FgsgParser::RELSIZE)
+      | (1ULL << FgsgParser::FLOAT)
+      | (1ULL << FgsgParser::INT)
+      | (1ULL << FgsgParser::ID)
+      | (1ULL << FgsgParser::STRING))) != 0)) {
+      setState(325);
+      expr(0);
+      setState(330);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+      while (_la == FgsgParser::COMMA) {
+        setState(326);
+        match(FgsgParser::COMMA);
+        setState(327);
+        expr(0);
+        setState(332);
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+      }
+    }
+    setState(335);
+    match(FgsgParser::RPAREN);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- BodyContext ------------------------------------------------------------------
+
+FgsgParser::BodyContext::BodyContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::BodyContext::LBRACE() {
+  return getToken(FgsgParser::LBRACE, 0);
+}
+
+std::vector<FgsgParser::BodyPartContext *> FgsgParser::BodyContext::bodyPart() {
+  return getRuleContexts<FgsgParser::BodyPartContext>();
+}
+
+FgsgParser::BodyPartContext* FgsgParser::BodyContext::bodyPart(size_t i) {
+  return getRuleContext<FgsgParser::BodyPartContext>(i);
+}
+
+tree::TerminalNode* FgsgParser::BodyContext::RBRACE() {
+  return getToken(FgsgParser::RBRACE, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::BodyContext::PIPE() {
+  return getTokens(FgsgParser::PIPE);
+}
+
+tree::TerminalNode* FgsgParser::BodyContext::PIPE(size_t i) {
+  return getToken(FgsgParser::PIPE, i);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::BodyContext::COMMA() {
+  return getTokens(FgsgParser::COMMA);
+}
+
+tree::TerminalNode* FgsgParser::BodyContext::COMMA(size_t i) {
+  return getToken(FgsgParser::COMMA, i);
+}
+
+
+size_t FgsgParser::BodyContext::getRuleIndex() const {
+  return FgsgParser::RuleBody;
+}
+
+antlrcpp::Any FgsgParser::BodyContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBody(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::BodyContext* FgsgParser::body() {
+  BodyContext *_localctx = _tracker.createInstance<BodyContext>(_ctx, getState());
+  enterRule(_localctx, 60, FgsgParser::RuleBody);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(337);
+    match(FgsgParser::LBRACE);
+    setState(338);
+    bodyPart();
+    setState(343);
+    _errHandler->sync(this);
+    _la = _input->LA(1);
+    while (_la == FgsgParser::PIPE
+
+    || _la == FgsgParser::COMMA) {
+      setState(339);
+      _la = _input->LA(1);
+      if (!(_la == FgsgParser::PIPE
+
+      || _la == FgsgParser::COMMA)) {
+      _errHandler->recoverInline(this);
+      }
+      else {
+        _errHandler->reportMatch(this);
+        consume();
+      }
+      setState(340);
+      bodyPart();
+      setState(345);
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+    }
+    setState(346);
+    match(FgsgParser::RBRACE);
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- BodyPartContext ------------------------------------------------------------------
+
+FgsgParser::BodyPartContext::BodyPartContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::BodyPartContext::EPSILON() {
+  return getToken(FgsgParser::EPSILON, 0);
+}
+
+std::vector<FgsgParser::ItemContext *> FgsgParser::BodyPartContext::item() {
+  return getRuleContexts<FgsgParser::ItemContext>();
+}
+
+FgsgParser::ItemContext* FgsgParser::BodyPartContext::item(size_t i) {
+  return getRuleContext<FgsgParser::ItemContext>(i);
+}
+
+
+size_t FgsgParser::BodyPartContext::getRuleIndex() const {
+  return FgsgParser::RuleBodyPart;
+}
+
+antlrcpp::Any FgsgParser::BodyPartContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBodyPart(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::BodyPartContext* FgsgParser::bodyPart() {
+  BodyPartContext *_localctx = _tracker.createInstance<BodyPartContext>(_ctx, getState());
+  enterRule(_localctx, 62, FgsgParser::RuleBodyPart);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(354);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::EPSILON: {
+        enterOuterAlt(_localctx, 1);
+        setState(348);
+        match(FgsgParser::EPSILON);
+        break;
+      }
+
+      case FgsgParser::AND:
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::SLASH:
+      case FgsgParser::PERCENT:
+      case FgsgParser::CARET:
+      case FgsgParser::BANG:
+      case FgsgParser::AMP:
+      case FgsgParser::BACKSLASH:
+      case FgsgParser::DOLLAR:
+      case FgsgParser::LBRACK:
+      case FgsgParser::ID: {
+        enterOuterAlt(_localctx, 2);
+        setState(350); 
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+        do {
+          setState(349);
+          item();
+          setState(352); 
+          _errHandler->sync(this);
+          _la = _input->LA(1);
+        } while ((((_la & ~ 0x3fULL) == 0) &&
+          ((1ULL << _la) & ((1ULL << FgsgParser::AND)
+          | (1ULL << FgsgParser::PLUS)
+          | (1ULL << FgsgParser::MINUS)
+          | (1ULL << FgsgParser::SLASH)
+          | (1ULL << FgsgParser::PERCENT)
+          | (1ULL << FgsgParser::CARET)
+          | (1ULL << FgsgParser::BANG)
+          | (1ULL << FgsgParser::AMP)
+          | (1ULL << FgsgParser::BACKSLASH)
+          | (1ULL << FgsgParser::DOLLAR)
+          | (1ULL << FgsgParser::LBRACK)
+          | (1ULL << FgsgParser::ID))) != 0));
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- ExprContext ------------------------------------------------------------------
+
+FgsgParser::ExprContext::ExprContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+
+size_t FgsgParser::ExprContext::getRuleIndex() const {
+  return FgsgParser::RuleExpr;
+}
+
+void FgsgParser::ExprContext::copyFrom(ExprContext *ctx) {
+  ParserRuleContext::copyFrom(ctx);
+}
+
+//----------------- UnaryExprContext ------------------------------------------------------------------
+
+FgsgParser::ExprContext* FgsgParser::UnaryExprContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::UnaryExprContext::MINUS() {
+  return getToken(FgsgParser::MINUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::UnaryExprContext::BANG() {
+  return getToken(FgsgParser::BANG, 0);
+}
+
+tree::TerminalNode* FgsgParser::UnaryExprContext::PLUS() {
+  return getToken(FgsgParser::PLUS, 0);
+}
+
+FgsgParser::UnaryExprContext::UnaryExprContext(ExprContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::UnaryExprContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitUnaryExpr(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- PrimaryExprContext ------------------------------------------------------------------
+
+FgsgParser::PrimaryContext* FgsgParser::PrimaryExprContext::primary() {
+  return getRuleContext<FgsgParser::PrimaryContext>(0);
+}
+
+FgsgParser::PrimaryExprContext::PrimaryExprContext(ExprContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::PrimaryExprContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitPrimaryExpr(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- TernaryExprContext ------------------------------------------------------------------
+
+std::vector<FgsgParser::ExprContext *> FgsgParser::TernaryExprContext::expr() {
+  return getRuleContexts<FgsgParser::ExprContext>();
+}
+
+FgsgParser::ExprContext* FgsgParser::TernaryExprContext::expr(size_t i) {
+  return getRuleContext<FgsgParser::ExprContext>(i);
+}
+
+tree::TerminalNode* FgsgParser::TernaryExprContext::QUESTION() {
+  return getToken(FgsgParser::QUESTION, 0);
+}
+
+tree::TerminalNode* FgsgParser::TernaryExprContext::COLON() {
+  return getToken(FgsgParser::COLON, 0);
+}
+
+FgsgParser::TernaryExprContext::TernaryExprContext(ExprContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::TernaryExprContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitTernaryExpr(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- BinaryExprContext ------------------------------------------------------------------
+
+std::vector<FgsgParser::ExprContext *> FgsgParser::BinaryExprContext::expr() {
+  return getRuleContexts<FgsgParser::ExprContext>();
+}
+
+FgsgParser::ExprContext* FgsgParser::BinaryExprContext::expr(size_t i) {
+  return getRuleContext<FgsgParser::ExprContext>(i);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::CARET() {
+  return getToken(FgsgParser::CARET, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::STAR() {
+  return getToken(FgsgParser::STAR, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::SLASH() {
+  return getToken(FgsgParser::SLASH, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::PERCENT() {
+  return getToken(FgsgParser::PERCENT, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::PLUS() {
+  return getToken(FgsgParser::PLUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::MINUS() {
+  return getToken(FgsgParser::MINUS, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::LT() {
+  return getToken(FgsgParser::LT, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::LE() {
+  return getToken(FgsgParser::LE, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::GT() {
+  return getToken(FgsgParser::GT, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::GE() {
+  return getToken(FgsgParser::GE, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::EQ() {
+  return getToken(FgsgParser::EQ, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::NEQ() {
+  return getToken(FgsgParser::NEQ, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::AND() {
+  return getToken(FgsgParser::AND, 0);
+}
+
+tree::TerminalNode* FgsgParser::BinaryExprContext::OR() {
+  return getToken(FgsgParser::OR, 0);
+}
+
+FgsgParser::BinaryExprContext::BinaryExprContext(ExprContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::BinaryExprContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBinaryExpr(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::ExprContext* FgsgParser::expr() {
+   return expr(0);
+}
+
+FgsgParser::ExprContext* FgsgParser::expr(int precedence) {
+  ParserRuleContext *parentContext = _ctx;
+  size_t parentState = getState();
+  FgsgParser::ExprContext *_localctx = _tracker.createInstance<ExprContext>(_ctx, parentState);
+  FgsgParser::ExprContext *previousContext = _localctx;
+  (void)previousContext; // Silence compiler, in case the context is not used by generated code.
+  size_t startState = 64;
+  enterRecursionRule(_localctx, 64, FgsgParser::RuleExpr, precedence);
+
+    size_t _la = 0;
+
+  auto onExit = finally([=] {
+    unrollRecursionContexts(parentContext);
+  });
+  try {
+    size_t alt;
+    enterOuterAlt(_localctx, 1);
+    setState(360);
+    _errHandler->sync(this);
+    switch (_input->LA(1)) {
+      case FgsgParser::TRUE:
+      case FgsgParser::FALSE:
+      case FgsgParser::TILDE:
+      case FgsgParser::LPAREN:
+      case FgsgParser::RELSIZE:
+      case FgsgParser::FLOAT:
+      case FgsgParser::INT:
+      case FgsgParser::ID:
+      case FgsgParser::STRING: {
+        _localctx = _tracker.createInstance<PrimaryExprContext>(_localctx);
+        _ctx = _localctx;
+        previousContext = _localctx;
+
+        setState(357);
+        primary();
+        break;
+      }
+
+      case FgsgParser::PLUS:
+      case FgsgParser::MINUS:
+      case FgsgParser::BANG: {
+        _localctx = _tracker.createInstance<UnaryExprContext>(_localctx);
+        _ctx = _localctx;
+        previousContext = _localctx;
+        setState(358);
+        dynamic_cast<UnaryExprContext *>(_localctx)->op = _input->LT(1);
+        _la = _input->LA(1);
+        if (!((((_la & ~ 0x3fULL) == 0) &&
+          ((1ULL << _la) & ((1ULL << FgsgParser::PLUS)
+          | (1ULL << FgsgParser::MINUS)
+          | (1ULL << FgsgParser::BANG))) != 0))) {
+          dynamic_cast<UnaryExprContext *>(_localctx)->op = _errHandler->recoverInline(this);
+        }
+        else {
+          _errHandler->reportMatch(this);
+          consume();
+        }
+        setState(359);
+        expr(8);
+        break;
+      }
+
+    default:
+      throw NoViableAltException(this);
+    }
+    _ctx->stop = _input->LT(-1);
+    setState(391);
+    _errHandler->sync(this);
+    alt = getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 46, _ctx);
+    while (alt != 2 && alt != atn::ATN::INVALID_ALT_NUMBER) {
+      if (alt == 1) {
+        if (!_parseListeners.empty())
+          triggerExitRuleEvent();
+        previousContext = _localctx;
+        setState(389);
+        _errHandler->sync(this);
+        switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 45, _ctx)) {
+        case 1: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(362);
+
+          if (!(precpred(_ctx, 9))) throw FailedPredicateException(this, "precpred(_ctx, 9)");
+          setState(363);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = match(FgsgParser::CARET);
+          setState(364);
+          expr(9);
+          break;
+        }
+
+        case 2: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(365);
+
+          if (!(precpred(_ctx, 7))) throw FailedPredicateException(this, "precpred(_ctx, 7)");
+          setState(366);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = _input->LT(1);
+          _la = _input->LA(1);
+          if (!((((_la & ~ 0x3fULL) == 0) &&
+            ((1ULL << _la) & ((1ULL << FgsgParser::STAR)
+            | (1ULL << FgsgParser::SLASH)
+            | (1ULL << FgsgParser::PERCENT))) != 0))) {
+            dynamic_cast<BinaryExprContext *>(_localctx)->op = _errHandler->recoverInline(this);
+          }
+          else {
+            _errHandler->reportMatch(this);
+            consume();
+          }
+          setState(367);
+          expr(8);
+          break;
+        }
+
+        case 3: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(368);
+
+          if (!(precpred(_ctx, 6))) throw FailedPredicateException(this, "precpred(_ctx, 6)");
+          setState(369);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = _input->LT(1);
+          _la = _input->LA(1);
+          if (!(_la == FgsgParser::PLUS
+
+          || _la == FgsgParser::MINUS)) {
+            dynamic_cast<BinaryExprContext *>(_localctx)->op = _errHandler->recoverInline(this);
+          }
+          else {
+            _errHandler->reportMatch(this);
+            consume();
+          }
+          setState(370);
+          expr(7);
+          break;
+        }
+
+        case 4: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(371);
+
+          if (!(precpred(_ctx, 5))) throw FailedPredicateException(this, "precpred(_ctx, 5)");
+          setState(372);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = _input->LT(1);
+          _la = _input->LA(1);
+          if (!((((_la & ~ 0x3fULL) == 0) &&
+            ((1ULL << _la) & ((1ULL << FgsgParser::LE)
+            | (1ULL << FgsgParser::GE)
+            | (1ULL << FgsgParser::LT)
+            | (1ULL << FgsgParser::GT))) != 0))) {
+            dynamic_cast<BinaryExprContext *>(_localctx)->op = _errHandler->recoverInline(this);
+          }
+          else {
+            _errHandler->reportMatch(this);
+            consume();
+          }
+          setState(373);
+          expr(6);
+          break;
+        }
+
+        case 5: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(374);
+
+          if (!(precpred(_ctx, 4))) throw FailedPredicateException(this, "precpred(_ctx, 4)");
+          setState(375);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = _input->LT(1);
+          _la = _input->LA(1);
+          if (!(_la == FgsgParser::EQ
+
+          || _la == FgsgParser::NEQ)) {
+            dynamic_cast<BinaryExprContext *>(_localctx)->op = _errHandler->recoverInline(this);
+          }
+          else {
+            _errHandler->reportMatch(this);
+            consume();
+          }
+          setState(376);
+          expr(5);
+          break;
+        }
+
+        case 6: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(377);
+
+          if (!(precpred(_ctx, 3))) throw FailedPredicateException(this, "precpred(_ctx, 3)");
+          setState(378);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = match(FgsgParser::AND);
+          setState(379);
+          expr(4);
+          break;
+        }
+
+        case 7: {
+          auto newContext = _tracker.createInstance<BinaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(380);
+
+          if (!(precpred(_ctx, 2))) throw FailedPredicateException(this, "precpred(_ctx, 2)");
+          setState(381);
+          dynamic_cast<BinaryExprContext *>(_localctx)->op = match(FgsgParser::OR);
+          setState(382);
+          expr(3);
+          break;
+        }
+
+        case 8: {
+          auto newContext = _tracker.createInstance<TernaryExprContext>(_tracker.createInstance<ExprContext>(parentContext, parentState));
+          _localctx = newContext;
+          pushNewRecursionContext(newContext, startState, RuleExpr);
+          setState(383);
+
+          if (!(precpred(_ctx, 1))) throw FailedPredicateException(this, "precpred(_ctx, 1)");
+          setState(384);
+          match(FgsgParser::QUESTION);
+          setState(385);
+          expr(0);
+          setState(386);
+          match(FgsgParser::COLON);
+          setState(387);
+          expr(1);
+          break;
+        }
+
+        } 
+      }
+      setState(393);
+      _errHandler->sync(this);
+      alt = getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 46, _ctx);
+    }
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+  return _localctx;
+}
+
+//----------------- PrimaryContext ------------------------------------------------------------------
+
+FgsgParser::PrimaryContext::PrimaryContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+
+size_t FgsgParser::PrimaryContext::getRuleIndex() const {
+  return FgsgParser::RulePrimary;
+}
+
+void FgsgParser::PrimaryContext::copyFrom(PrimaryContext *ctx) {
+  ParserRuleContext::copyFrom(ctx);
+}
+
+//----------------- MemberPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::MemberPrimaryContext::DOT() {
+  return getToken(FgsgParser::DOT, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::MemberPrimaryContext::ID() {
+  return getTokens(FgsgParser::ID);
+}
+
+tree::TerminalNode* FgsgParser::MemberPrimaryContext::ID(size_t i) {
+  return getToken(FgsgParser::ID, i);
+}
+
+FgsgParser::CallArgsContext* FgsgParser::MemberPrimaryContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+FgsgParser::MemberPrimaryContext::MemberPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::MemberPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitMemberPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- IdentPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::IdentPrimaryContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::IdentPrimaryContext::IdentPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::IdentPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitIdentPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- ParenPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::ParenPrimaryContext::LPAREN() {
+  return getToken(FgsgParser::LPAREN, 0);
+}
+
+FgsgParser::ExprContext* FgsgParser::ParenPrimaryContext::expr() {
+  return getRuleContext<FgsgParser::ExprContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::ParenPrimaryContext::RPAREN() {
+  return getToken(FgsgParser::RPAREN, 0);
+}
+
+FgsgParser::ParenPrimaryContext::ParenPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::ParenPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitParenPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- VectorPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::VectorPrimaryContext::LPAREN() {
+  return getToken(FgsgParser::LPAREN, 0);
+}
+
+std::vector<FgsgParser::ExprContext *> FgsgParser::VectorPrimaryContext::expr() {
+  return getRuleContexts<FgsgParser::ExprContext>();
+}
+
+FgsgParser::ExprContext* FgsgParser::VectorPrimaryContext::expr(size_t i) {
+  return getRuleContext<FgsgParser::ExprContext>(i);
+}
+
+tree::TerminalNode* FgsgParser::VectorPrimaryContext::RPAREN() {
+  return getToken(FgsgParser::RPAREN, 0);
+}
+
+std::vector<tree::TerminalNode *> FgsgParser::VectorPrimaryContext::COMMA() {
+  return getTokens(FgsgParser::COMMA);
+}
+
+tree::TerminalNode* FgsgParser::VectorPrimaryContext::COMMA(size_t i) {
+  return getToken(FgsgParser::COMMA, i);
+}
+
+FgsgParser::VectorPrimaryContext::VectorPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::VectorPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitVectorPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- StringPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::StringPrimaryContext::STRING() {
+  return getToken(FgsgParser::STRING, 0);
+}
+
+FgsgParser::StringPrimaryContext::StringPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::StringPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitStringPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- FloatSizePrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::FloatSizePrimaryContext::TILDE() {
+  return getToken(FgsgParser::TILDE, 0);
+}
+
+FgsgParser::PrimaryContext* FgsgParser::FloatSizePrimaryContext::primary() {
+  return getRuleContext<FgsgParser::PrimaryContext>(0);
+}
+
+FgsgParser::FloatSizePrimaryContext::FloatSizePrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::FloatSizePrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitFloatSizePrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- CallPrimaryContext ------------------------------------------------------------------
+
+FgsgParser::CallArgsContext* FgsgParser::CallPrimaryContext::callArgs() {
+  return getRuleContext<FgsgParser::CallArgsContext>(0);
+}
+
+tree::TerminalNode* FgsgParser::CallPrimaryContext::ID() {
+  return getToken(FgsgParser::ID, 0);
+}
+
+FgsgParser::CallPrimaryContext::CallPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::CallPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitCallPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- RelSizePrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::RelSizePrimaryContext::RELSIZE() {
+  return getToken(FgsgParser::RELSIZE, 0);
+}
+
+FgsgParser::RelSizePrimaryContext::RelSizePrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::RelSizePrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitRelSizePrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- BoolPrimaryContext ------------------------------------------------------------------
+
+tree::TerminalNode* FgsgParser::BoolPrimaryContext::TRUE() {
+  return getToken(FgsgParser::TRUE, 0);
+}
+
+tree::TerminalNode* FgsgParser::BoolPrimaryContext::FALSE() {
+  return getToken(FgsgParser::FALSE, 0);
+}
+
+FgsgParser::BoolPrimaryContext::BoolPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::BoolPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitBoolPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+//----------------- NumberPrimaryContext ------------------------------------------------------------------
+
+FgsgParser::NumberContext* FgsgParser::NumberPrimaryContext::number() {
+  return getRuleContext<FgsgParser::NumberContext>(0);
+}
+
+FgsgParser::NumberPrimaryContext::NumberPrimaryContext(PrimaryContext *ctx) { copyFrom(ctx); }
+
+antlrcpp::Any FgsgParser::NumberPrimaryContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitNumberPrimary(this);
+  else
+    return visitor->visitChildren(this);
+}
+FgsgParser::PrimaryContext* FgsgParser::primary() {
+  PrimaryContext *_localctx = _tracker.createInstance<PrimaryContext>(_ctx, getState());
+  enterRule(_localctx, 66, FgsgParser::RulePrimary);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    setState(423);
+    _errHandler->sync(this);
+    switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 49, _ctx)) {
+    case 1: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::NumberPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 1);
+      setState(394);
+      number();
+      break;
+    }
+
+    case 2: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::RelSizePrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 2);
+      setState(395);
+      match(FgsgParser::RELSIZE);
+      break;
+    }
+
+    case 3: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::StringPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 3);
+      setState(396);
+      match(FgsgParser::STRING);
+      break;
+    }
+
+    case 4: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::BoolPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 4);
+      setState(397);
+      dynamic_cast<BoolPrimaryContext *>(_localctx)->value = _input->LT(1);
+      _la = _input->LA(1);
+      if (!(_la == FgsgParser::TRUE
+
+      || _la == FgsgParser::FALSE)) {
+        dynamic_cast<BoolPrimaryContext *>(_localctx)->value = _errHandler->recoverInline(this);
+      }
+      else {
+        _errHandler->reportMatch(this);
+        consume();
+      }
+      break;
+    }
+
+    case 5: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::MemberPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 5);
+      setState(398);
+      dynamic_cast<MemberPrimaryContext *>(_localctx)->object = match(FgsgParser::ID);
+      setState(399);
+      match(FgsgParser::DOT);
+      setState(400);
+      dynamic_cast<MemberPrimaryContext *>(_localctx)->member = match(FgsgParser::ID);
+      setState(402);
+      _errHandler->sync(this);
+
+      switch (getInterpreter<atn::ParserATNSimulator>()->adaptivePredict(_input, 47, _ctx)) {
+      case 1: {
+        setState(401);
+        callArgs();
+        break;
+      }
+
+      }
+      break;
+    }
+
+    case 6: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::CallPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 6);
+      setState(404);
+      dynamic_cast<CallPrimaryContext *>(_localctx)->name = match(FgsgParser::ID);
+      setState(405);
+      callArgs();
+      break;
+    }
+
+    case 7: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::IdentPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 7);
+      setState(406);
+      dynamic_cast<IdentPrimaryContext *>(_localctx)->name = match(FgsgParser::ID);
+      break;
+    }
+
+    case 8: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::ParenPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 8);
+      setState(407);
+      match(FgsgParser::LPAREN);
+      setState(408);
+      expr(0);
+      setState(409);
+      match(FgsgParser::RPAREN);
+      break;
+    }
+
+    case 9: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::VectorPrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 9);
+      setState(411);
+      match(FgsgParser::LPAREN);
+      setState(412);
+      expr(0);
+      setState(415); 
+      _errHandler->sync(this);
+      _la = _input->LA(1);
+      do {
+        setState(413);
+        match(FgsgParser::COMMA);
+        setState(414);
+        expr(0);
+        setState(417); 
+        _errHandler->sync(this);
+        _la = _input->LA(1);
+      } while (_la == FgsgParser::COMMA);
+      setState(419);
+      match(FgsgParser::RPAREN);
+      break;
+    }
+
+    case 10: {
+      _localctx = dynamic_cast<PrimaryContext *>(_tracker.createInstance<FgsgParser::FloatSizePrimaryContext>(_localctx));
+      enterOuterAlt(_localctx, 10);
+      setState(421);
+      match(FgsgParser::TILDE);
+      setState(422);
+      primary();
+      break;
+    }
+
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+//----------------- NumberContext ------------------------------------------------------------------
+
+FgsgParser::NumberContext::NumberContext(ParserRuleContext *parent, size_t invokingState)
+  : ParserRuleContext(parent, invokingState) {
+}
+
+tree::TerminalNode* FgsgParser::NumberContext::INT() {
+  return getToken(FgsgParser::INT, 0);
+}
+
+tree::TerminalNode* FgsgParser::NumberContext::FLOAT() {
+  return getToken(FgsgParser::FLOAT, 0);
+}
+
+
+size_t FgsgParser::NumberContext::getRuleIndex() const {
+  return FgsgParser::RuleNumber;
+}
+
+antlrcpp::Any FgsgParser::NumberContext::accept(tree::ParseTreeVisitor *visitor) {
+  if (auto parserVisitor = dynamic_cast<FgsgVisitor*>(visitor))
+    return parserVisitor->visitNumber(this);
+  else
+    return visitor->visitChildren(this);
+}
+
+FgsgParser::NumberContext* FgsgParser::number() {
+  NumberContext *_localctx = _tracker.createInstance<NumberContext>(_ctx, getState());
+  enterRule(_localctx, 68, FgsgParser::RuleNumber);
+  size_t _la = 0;
+
+  auto onExit = finally([=] {
+    exitRule();
+  });
+  try {
+    enterOuterAlt(_localctx, 1);
+    setState(425);
+    _la = _input->LA(1);
+    if (!(_la == FgsgParser::FLOAT
+
+    || _la == FgsgParser::INT)) {
+    _errHandler->recoverInline(this);
+    }
+    else {
+      _errHandler->reportMatch(this);
+      consume();
+    }
+   
+  }
+  catch (RecognitionException &e) {
+    _errHandler->reportError(this, e);
+    _localctx->exception = std::current_exception();
+    _errHandler->recover(this, _localctx->exception);
+  }
+
+  return _localctx;
+}
+
+bool FgsgParser::sempred(RuleContext *context, size_t ruleIndex, size_t predicateIndex) {
+  switch (ruleIndex) {
+    case 32: return exprSempred(dynamic_cast<ExprContext *>(context), predicateIndex);
+
+  default:
+    break;
+  }
+  return true;
+}
+
+bool FgsgParser::exprSempred(ExprContext *_localctx, size_t predicateIndex) {
+  switch (predicateIndex) {
+    case 0: return precpred(_ctx, 9);
+    case 1: return precpred(_ctx, 7);
+    case 2: return precpred(_ctx, 6);
+    case 3: return precpred(_ctx, 5);
+    case 4: return precpred(_ctx, 4);
+    case 5: return precpred(_ctx, 3);
+    case 6: return precpred(_ctx, 2);
+    case 7: return precpred(_ctx, 1);
+
+  default:
+    break;
+  }
+  return true;
+}
+
+// Static vars and initialization.
+std::vector<dfa::DFA> FgsgParser::_decisionToDFA;
+atn::PredictionContextCache FgsgParser::_sharedContextCache;
+
+// We own the ATN which in turn owns the ATN states.
+atn::ATN FgsgParser::_atn;
+std::vector<uint16_t> FgsgParser::_serializedATN;
+
+std::vector<std::string> FgsgParser::_ruleNames = {
+  "program", "statement", "valueDecl", "surfaceDecl", "fieldDecl", "fieldSource", 
+  "fieldDesignItem", "fieldDesignWord", "designValue", "textureDecl", "deriveDecl", 
+  "turtleDecl", "turtleSetting", "axiomDecl", "priorityDecl", "grammarRule", 
+  "ruleLabel", "ruleHead", "leftContext", "rightContext", "contextModule", 
+  "modulePattern", "paramDecl", "ruleBody", "branch", "arrow", "successor", 
+  "sequenceItem", "item", "callArgs", "body", "bodyPart", "expr", "primary", 
+  "number"
+};
+
+std::vector<std::string> FgsgParser::_literalNames = {
+  "", "'const'", "'attr'", "'surface'", "'field'", "'texture'", "'derive'", 
+  "'turtle'", "'axiom'", "", "'true'", "'false'", "", "", "'='", "'=='", 
+  "'!='", "'<='", "'>='", "'<'", "'>'", "'&&'", "'||'", "'+'", "'-'", "'*'", 
+  "'/'", "'%'", "'^'", "'!'", "'&'", "'|'", "'\\'", "'$'", "'~'", "'?'", 
+  "':'", "';'", "','", "'.'", "'('", "')'", "'['", "']'", "'{'", "'}'"
+};
+
+std::vector<std::string> FgsgParser::_symbolicNames = {
+  "", "CONST", "ATTR", "SURFACE", "FIELD", "TEXTURE", "DERIVE", "TURTLE", 
+  "AXIOM", "PRIORITY", "TRUE", "FALSE", "EPSILON", "ARROW", "ASSIGN", "EQ", 
+  "NEQ", "LE", "GE", "LT", "GT", "AND", "OR", "PLUS", "MINUS", "STAR", "SLASH", 
+  "PERCENT", "CARET", "BANG", "AMP", "PIPE", "BACKSLASH", "DOLLAR", "TILDE", 
+  "QUESTION", "COLON", "SEMI", "COMMA", "DOT", "LPAREN", "RPAREN", "LBRACK", 
+  "RBRACK", "LBRACE", "RBRACE", "RELSIZE", "FLOAT", "INT", "ID", "STRING", 
+  "UNTERMINATED_STRING", "LINE_COMMENT", "BLOCK_COMMENT", "UNTERMINATED_COMMENT", 
+  "WS", "UNKNOWN_CHAR"
+};
+
+dfa::Vocabulary FgsgParser::_vocabulary(_literalNames, _symbolicNames);
+
+std::vector<std::string> FgsgParser::_tokenNames;
+
+FgsgParser::Initializer::Initializer() {
+	for (size_t i = 0; i < _symbolicNames.size(); ++i) {
+		std::string name = _vocabulary.getLiteralName(i);
+		if (name.empty()) {
+			name = _vocabulary.getSymbolicName(i);
+		}
+
+		if (name.empty()) {
+			_tokenNames.push_back("<INVALID>");
+		} else {
+      _tokenNames.push_back(name);
+    }
+	}
+
+  _serializedATN = {
+    0x3, 0x608b, 0xa72a, 0x8133, 0xb9ed, 0x417c, 0x3be7, 0x7786, 0x5964, 
+    0x3, 0x3a, 0x1ae, 0x4, 0x2, 0x9, 0x2, 0x4, 0x3, 0x9, 0x3, 0x4, 0x4, 
+    0x9, 0x4, 0x4, 0x5, 0x9, 0x5, 0x4, 0x6, 0x9, 0x6, 0x4, 0x7, 0x9, 0x7, 
+    0x4, 0x8, 0x9, 0x8, 0x4, 0x9, 0x9, 0x9, 0x4, 0xa, 0x9, 0xa, 0x4, 0xb, 
+    0x9, 0xb, 0x4, 0xc, 0x9, 0xc, 0x4, 0xd, 0x9, 0xd, 0x4, 0xe, 0x9, 0xe, 
+    0x4, 0xf, 0x9, 0xf, 0x4, 0x10, 0x9, 0x10, 0x4, 0x11, 0x9, 0x11, 0x4, 
+    0x12, 0x9, 0x12, 0x4, 0x13, 0x9, 0x13, 0x4, 0x14, 0x9, 0x14, 0x4, 0x15, 
+    0x9, 0x15, 0x4, 0x16, 0x9, 0x16, 0x4, 0x17, 0x9, 0x17, 0x4, 0x18, 0x9, 
+    0x18, 0x4, 0x19, 0x9, 0x19, 0x4, 0x1a, 0x9, 0x1a, 0x4, 0x1b, 0x9, 0x1b, 
+    0x4, 0x1c, 0x9, 0x1c, 0x4, 0x1d, 0x9, 0x1d, 0x4, 0x1e, 0x9, 0x1e, 0x4, 
+    0x1f, 0x9, 0x1f, 0x4, 0x20, 0x9, 0x20, 0x4, 0x21, 0x9, 0x21, 0x4, 0x22, 
+    0x9, 0x22, 0x4, 0x23, 0x9, 0x23, 0x4, 0x24, 0x9, 0x24, 0x3, 0x2, 0x7, 
+    0x2, 0x4a, 0xa, 0x2, 0xc, 0x2, 0xe, 0x2, 0x4d, 0xb, 0x2, 0x3, 0x2, 0x3, 
+    0x2, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 
+    0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x3, 0x5, 0x3, 0x5b, 0xa, 0x3, 0x3, 0x4, 
+    0x3, 0x4, 0x3, 0x4, 0x3, 0x4, 0x3, 0x4, 0x3, 0x4, 0x3, 0x5, 0x3, 0x5, 
+    0x3, 0x5, 0x3, 0x5, 0x5, 0x5, 0x67, 0xa, 0x5, 0x5, 0x5, 0x69, 0xa, 0x5, 
+    0x3, 0x5, 0x3, 0x5, 0x3, 0x6, 0x3, 0x6, 0x3, 0x6, 0x3, 0x6, 0x3, 0x6, 
+    0x3, 0x6, 0x3, 0x7, 0x3, 0x7, 0x3, 0x7, 0x3, 0x7, 0x7, 0x7, 0x77, 0xa, 
+    0x7, 0xc, 0x7, 0xe, 0x7, 0x7a, 0xb, 0x7, 0x3, 0x7, 0x3, 0x7, 0x3, 0x7, 
+    0x5, 0x7, 0x7f, 0xa, 0x7, 0x5, 0x7, 0x81, 0xa, 0x7, 0x3, 0x8, 0x3, 0x8, 
+    0x7, 0x8, 0x85, 0xa, 0x8, 0xc, 0x8, 0xe, 0x8, 0x88, 0xb, 0x8, 0x3, 0x8, 
+    0x3, 0x8, 0x3, 0x9, 0x3, 0x9, 0x5, 0x9, 0x8e, 0xa, 0x9, 0x3, 0x9, 0x5, 
+    0x9, 0x91, 0xa, 0x9, 0x3, 0xa, 0x5, 0xa, 0x94, 0xa, 0xa, 0x3, 0xa, 0x3, 
+    0xa, 0x3, 0xa, 0x3, 0xa, 0x3, 0xa, 0x3, 0xa, 0x3, 0xa, 0x3, 0xa, 0x7, 
+    0xa, 0x9e, 0xa, 0xa, 0xc, 0xa, 0xe, 0xa, 0xa1, 0xb, 0xa, 0x3, 0xa, 0x3, 
+    0xa, 0x5, 0xa, 0xa5, 0xa, 0xa, 0x3, 0xb, 0x3, 0xb, 0x3, 0xb, 0x3, 0xb, 
+    0x3, 0xb, 0x3, 0xb, 0x3, 0xc, 0x3, 0xc, 0x3, 0xc, 0x5, 0xc, 0xb0, 0xa, 
+    0xc, 0x3, 0xc, 0x3, 0xc, 0x3, 0xd, 0x3, 0xd, 0x7, 0xd, 0xb6, 0xa, 0xd, 
+    0xc, 0xd, 0xe, 0xd, 0xb9, 0xb, 0xd, 0x3, 0xd, 0x3, 0xd, 0x3, 0xe, 0x3, 
+    0xe, 0x3, 0xe, 0x3, 0xf, 0x3, 0xf, 0x3, 0xf, 0x3, 0xf, 0x3, 0xf, 0x3, 
+    0x10, 0x3, 0x10, 0x5, 0x10, 0xc7, 0xa, 0x10, 0x3, 0x10, 0x3, 0x10, 0x3, 
+    0x10, 0x3, 0x11, 0x3, 0x11, 0x3, 0x11, 0x5, 0x11, 0xcf, 0xa, 0x11, 0x3, 
+    0x11, 0x3, 0x11, 0x3, 0x11, 0x5, 0x11, 0xd4, 0xa, 0x11, 0x3, 0x11, 0x3, 
+    0x11, 0x3, 0x11, 0x3, 0x11, 0x3, 0x12, 0x3, 0x12, 0x3, 0x13, 0x3, 0x13, 
+    0x3, 0x13, 0x5, 0x13, 0xdf, 0xa, 0x13, 0x3, 0x13, 0x3, 0x13, 0x3, 0x13, 
+    0x5, 0x13, 0xe4, 0xa, 0x13, 0x3, 0x14, 0x6, 0x14, 0xe7, 0xa, 0x14, 0xd, 
+    0x14, 0xe, 0x14, 0xe8, 0x3, 0x15, 0x6, 0x15, 0xec, 0xa, 0x15, 0xd, 0x15, 
+    0xe, 0x15, 0xed, 0x3, 0x16, 0x3, 0x16, 0x3, 0x16, 0x5, 0x16, 0xf3, 0xa, 
+    0x16, 0x3, 0x17, 0x3, 0x17, 0x3, 0x17, 0x3, 0x17, 0x3, 0x17, 0x7, 0x17, 
+    0xfa, 0xa, 0x17, 0xc, 0x17, 0xe, 0x17, 0xfd, 0xb, 0x17, 0x5, 0x17, 0xff, 
+    0xa, 0x17, 0x3, 0x17, 0x5, 0x17, 0x102, 0xa, 0x17, 0x3, 0x18, 0x3, 0x18, 
+    0x3, 0x19, 0x3, 0x19, 0x3, 0x19, 0x3, 0x19, 0x7, 0x19, 0x10a, 0xa, 0x19, 
+    0xc, 0x19, 0xe, 0x19, 0x10d, 0xb, 0x19, 0x3, 0x19, 0x3, 0x19, 0x3, 0x19, 
+    0x3, 0x19, 0x3, 0x19, 0x3, 0x19, 0x7, 0x19, 0x115, 0xa, 0x19, 0xc, 0x19, 
+    0xe, 0x19, 0x118, 0xb, 0x19, 0x5, 0x19, 0x11a, 0xa, 0x19, 0x3, 0x1a, 
+    0x3, 0x1a, 0x3, 0x1a, 0x5, 0x1a, 0x11f, 0xa, 0x1a, 0x3, 0x1b, 0x3, 0x1b, 
+    0x3, 0x1c, 0x3, 0x1c, 0x6, 0x1c, 0x125, 0xa, 0x1c, 0xd, 0x1c, 0xe, 0x1c, 
+    0x126, 0x5, 0x1c, 0x129, 0xa, 0x1c, 0x3, 0x1d, 0x3, 0x1d, 0x3, 0x1d, 
+    0x5, 0x1d, 0x12e, 0xa, 0x1d, 0x5, 0x1d, 0x130, 0xa, 0x1d, 0x3, 0x1e, 
+    0x3, 0x1e, 0x5, 0x1e, 0x134, 0xa, 0x1e, 0x3, 0x1e, 0x5, 0x1e, 0x137, 
+    0xa, 0x1e, 0x3, 0x1e, 0x3, 0x1e, 0x5, 0x1e, 0x13b, 0xa, 0x1e, 0x3, 0x1e, 
+    0x3, 0x1e, 0x7, 0x1e, 0x13f, 0xa, 0x1e, 0xc, 0x1e, 0xe, 0x1e, 0x142, 
+    0xb, 0x1e, 0x3, 0x1e, 0x5, 0x1e, 0x145, 0xa, 0x1e, 0x3, 0x1f, 0x3, 0x1f, 
+    0x3, 0x1f, 0x3, 0x1f, 0x7, 0x1f, 0x14b, 0xa, 0x1f, 0xc, 0x1f, 0xe, 0x1f, 
+    0x14e, 0xb, 0x1f, 0x5, 0x1f, 0x150, 0xa, 0x1f, 0x3, 0x1f, 0x3, 0x1f, 
+    0x3, 0x20, 0x3, 0x20, 0x3, 0x20, 0x3, 0x20, 0x7, 0x20, 0x158, 0xa, 0x20, 
+    0xc, 0x20, 0xe, 0x20, 0x15b, 0xb, 0x20, 0x3, 0x20, 0x3, 0x20, 0x3, 0x21, 
+    0x3, 0x21, 0x6, 0x21, 0x161, 0xa, 0x21, 0xd, 0x21, 0xe, 0x21, 0x162, 
+    0x5, 0x21, 0x165, 0xa, 0x21, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 
+    0x5, 0x22, 0x16b, 0xa, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 
+    0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 
+    0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 
+    0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 
+    0x22, 0x3, 0x22, 0x3, 0x22, 0x3, 0x22, 0x7, 0x22, 0x188, 0xa, 0x22, 
+    0xc, 0x22, 0xe, 0x22, 0x18b, 0xb, 0x22, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 
+    0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x5, 0x23, 0x195, 
+    0xa, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 
+    0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x3, 0x23, 0x6, 0x23, 
+    0x1a2, 0xa, 0x23, 0xd, 0x23, 0xe, 0x23, 0x1a3, 0x3, 0x23, 0x3, 0x23, 
+    0x3, 0x23, 0x3, 0x23, 0x5, 0x23, 0x1aa, 0xa, 0x23, 0x3, 0x24, 0x3, 0x24, 
+    0x3, 0x24, 0x2, 0x3, 0x42, 0x25, 0x2, 0x4, 0x6, 0x8, 0xa, 0xc, 0xe, 
+    0x10, 0x12, 0x14, 0x16, 0x18, 0x1a, 0x1c, 0x1e, 0x20, 0x22, 0x24, 0x26, 
+    0x28, 0x2a, 0x2c, 0x2e, 0x30, 0x32, 0x34, 0x36, 0x38, 0x3a, 0x3c, 0x3e, 
+    0x40, 0x42, 0x44, 0x46, 0x2, 0xf, 0x3, 0x2, 0x3, 0x4, 0x3, 0x2, 0x19, 
+    0x1a, 0x3, 0x2, 0x32, 0x33, 0x3, 0x2, 0xf, 0x10, 0x4, 0x2, 0x18, 0x18, 
+    0x21, 0x21, 0x6, 0x2, 0x17, 0x17, 0x19, 0x1a, 0x1c, 0x20, 0x22, 0x23, 
+    0x4, 0x2, 0x21, 0x21, 0x28, 0x28, 0x4, 0x2, 0x19, 0x1a, 0x1f, 0x1f, 
+    0x3, 0x2, 0x1b, 0x1d, 0x3, 0x2, 0x13, 0x16, 0x3, 0x2, 0x11, 0x12, 0x3, 
+    0x2, 0xc, 0xd, 0x3, 0x2, 0x31, 0x32, 0x2, 0x1d7, 0x2, 0x4b, 0x3, 0x2, 
+    0x2, 0x2, 0x4, 0x5a, 0x3, 0x2, 0x2, 0x2, 0x6, 0x5c, 0x3, 0x2, 0x2, 0x2, 
+    0x8, 0x62, 0x3, 0x2, 0x2, 0x2, 0xa, 0x6c, 0x3, 0x2, 0x2, 0x2, 0xc, 0x80, 
+    0x3, 0x2, 0x2, 0x2, 0xe, 0x82, 0x3, 0x2, 0x2, 0x2, 0x10, 0x90, 0x3, 
+    0x2, 0x2, 0x2, 0x12, 0x93, 0x3, 0x2, 0x2, 0x2, 0x14, 0xa6, 0x3, 0x2, 
+    0x2, 0x2, 0x16, 0xac, 0x3, 0x2, 0x2, 0x2, 0x18, 0xb3, 0x3, 0x2, 0x2, 
+    0x2, 0x1a, 0xbc, 0x3, 0x2, 0x2, 0x2, 0x1c, 0xbf, 0x3, 0x2, 0x2, 0x2, 
+    0x1e, 0xc4, 0x3, 0x2, 0x2, 0x2, 0x20, 0xce, 0x3, 0x2, 0x2, 0x2, 0x22, 
+    0xd9, 0x3, 0x2, 0x2, 0x2, 0x24, 0xde, 0x3, 0x2, 0x2, 0x2, 0x26, 0xe6, 
+    0x3, 0x2, 0x2, 0x2, 0x28, 0xeb, 0x3, 0x2, 0x2, 0x2, 0x2a, 0xf2, 0x3, 
+    0x2, 0x2, 0x2, 0x2c, 0xf4, 0x3, 0x2, 0x2, 0x2, 0x2e, 0x103, 0x3, 0x2, 
+    0x2, 0x2, 0x30, 0x119, 0x3, 0x2, 0x2, 0x2, 0x32, 0x11b, 0x3, 0x2, 0x2, 
+    0x2, 0x34, 0x120, 0x3, 0x2, 0x2, 0x2, 0x36, 0x128, 0x3, 0x2, 0x2, 0x2, 
+    0x38, 0x12f, 0x3, 0x2, 0x2, 0x2, 0x3a, 0x144, 0x3, 0x2, 0x2, 0x2, 0x3c, 
+    0x146, 0x3, 0x2, 0x2, 0x2, 0x3e, 0x153, 0x3, 0x2, 0x2, 0x2, 0x40, 0x164, 
+    0x3, 0x2, 0x2, 0x2, 0x42, 0x16a, 0x3, 0x2, 0x2, 0x2, 0x44, 0x1a9, 0x3, 
+    0x2, 0x2, 0x2, 0x46, 0x1ab, 0x3, 0x2, 0x2, 0x2, 0x48, 0x4a, 0x5, 0x4, 
+    0x3, 0x2, 0x49, 0x48, 0x3, 0x2, 0x2, 0x2, 0x4a, 0x4d, 0x3, 0x2, 0x2, 
+    0x2, 0x4b, 0x49, 0x3, 0x2, 0x2, 0x2, 0x4b, 0x4c, 0x3, 0x2, 0x2, 0x2, 
+    0x4c, 0x4e, 0x3, 0x2, 0x2, 0x2, 0x4d, 0x4b, 0x3, 0x2, 0x2, 0x2, 0x4e, 
+    0x4f, 0x7, 0x2, 0x2, 0x3, 0x4f, 0x3, 0x3, 0x2, 0x2, 0x2, 0x50, 0x5b, 
+    0x5, 0x6, 0x4, 0x2, 0x51, 0x5b, 0x5, 0x8, 0x5, 0x2, 0x52, 0x5b, 0x5, 
+    0xa, 0x6, 0x2, 0x53, 0x5b, 0x5, 0x14, 0xb, 0x2, 0x54, 0x5b, 0x5, 0x16, 
+    0xc, 0x2, 0x55, 0x5b, 0x5, 0x18, 0xd, 0x2, 0x56, 0x5b, 0x5, 0x1c, 0xf, 
+    0x2, 0x57, 0x5b, 0x5, 0x1e, 0x10, 0x2, 0x58, 0x5b, 0x5, 0x20, 0x11, 
+    0x2, 0x59, 0x5b, 0x7, 0x27, 0x2, 0x2, 0x5a, 0x50, 0x3, 0x2, 0x2, 0x2, 
+    0x5a, 0x51, 0x3, 0x2, 0x2, 0x2, 0x5a, 0x52, 0x3, 0x2, 0x2, 0x2, 0x5a, 
+    0x53, 0x3, 0x2, 0x2, 0x2, 0x5a, 0x54, 0x3, 0x2, 0x2, 0x2, 0x5a, 0x55, 
+    0x3, 0x2, 0x2, 0x2, 0x5a, 0x56, 0x3, 0x2, 0x2, 0x2, 0x5a, 0x57, 0x3, 
+    0x2, 0x2, 0x2, 0x5a, 0x58, 0x3, 0x2, 0x2, 0x2, 0x5a, 0x59, 0x3, 0x2, 
+    0x2, 0x2, 0x5b, 0x5, 0x3, 0x2, 0x2, 0x2, 0x5c, 0x5d, 0x9, 0x2, 0x2, 
+    0x2, 0x5d, 0x5e, 0x7, 0x33, 0x2, 0x2, 0x5e, 0x5f, 0x7, 0x10, 0x2, 0x2, 
+    0x5f, 0x60, 0x5, 0x42, 0x22, 0x2, 0x60, 0x61, 0x7, 0x27, 0x2, 0x2, 0x61, 
+    0x7, 0x3, 0x2, 0x2, 0x2, 0x62, 0x68, 0x7, 0x5, 0x2, 0x2, 0x63, 0x69, 
+    0x7, 0x34, 0x2, 0x2, 0x64, 0x66, 0x7, 0x33, 0x2, 0x2, 0x65, 0x67, 0x5, 
+    0x3c, 0x1f, 0x2, 0x66, 0x65, 0x3, 0x2, 0x2, 0x2, 0x66, 0x67, 0x3, 0x2, 
+    0x2, 0x2, 0x67, 0x69, 0x3, 0x2, 0x2, 0x2, 0x68, 0x63, 0x3, 0x2, 0x2, 
+    0x2, 0x68, 0x64, 0x3, 0x2, 0x2, 0x2, 0x69, 0x6a, 0x3, 0x2, 0x2, 0x2, 
+    0x6a, 0x6b, 0x7, 0x27, 0x2, 0x2, 0x6b, 0x9, 0x3, 0x2, 0x2, 0x2, 0x6c, 
+    0x6d, 0x7, 0x6, 0x2, 0x2, 0x6d, 0x6e, 0x7, 0x33, 0x2, 0x2, 0x6e, 0x6f, 
+    0x7, 0x10, 0x2, 0x2, 0x6f, 0x70, 0x5, 0xc, 0x7, 0x2, 0x70, 0x71, 0x7, 
+    0x27, 0x2, 0x2, 0x71, 0xb, 0x3, 0x2, 0x2, 0x2, 0x72, 0x73, 0x7, 0x33, 
+    0x2, 0x2, 0x73, 0x74, 0x7, 0x33, 0x2, 0x2, 0x74, 0x78, 0x7, 0x2e, 0x2, 
+    0x2, 0x75, 0x77, 0x5, 0xe, 0x8, 0x2, 0x76, 0x75, 0x3, 0x2, 0x2, 0x2, 
+    0x77, 0x7a, 0x3, 0x2, 0x2, 0x2, 0x78, 0x76, 0x3, 0x2, 0x2, 0x2, 0x78, 
+    0x79, 0x3, 0x2, 0x2, 0x2, 0x79, 0x7b, 0x3, 0x2, 0x2, 0x2, 0x7a, 0x78, 
+    0x3, 0x2, 0x2, 0x2, 0x7b, 0x81, 0x7, 0x2f, 0x2, 0x2, 0x7c, 0x7e, 0x7, 
+    0x33, 0x2, 0x2, 0x7d, 0x7f, 0x5, 0x3c, 0x1f, 0x2, 0x7e, 0x7d, 0x3, 0x2, 
+    0x2, 0x2, 0x7e, 0x7f, 0x3, 0x2, 0x2, 0x2, 0x7f, 0x81, 0x3, 0x2, 0x2, 
+    0x2, 0x80, 0x72, 0x3, 0x2, 0x2, 0x2, 0x80, 0x7c, 0x3, 0x2, 0x2, 0x2, 
+    0x81, 0xd, 0x3, 0x2, 0x2, 0x2, 0x82, 0x86, 0x7, 0x33, 0x2, 0x2, 0x83, 
+    0x85, 0x5, 0x10, 0x9, 0x2, 0x84, 0x83, 0x3, 0x2, 0x2, 0x2, 0x85, 0x88, 
+    0x3, 0x2, 0x2, 0x2, 0x86, 0x84, 0x3, 0x2, 0x2, 0x2, 0x86, 0x87, 0x3, 
+    0x2, 0x2, 0x2, 0x87, 0x89, 0x3, 0x2, 0x2, 0x2, 0x88, 0x86, 0x3, 0x2, 
+    0x2, 0x2, 0x89, 0x8a, 0x7, 0x27, 0x2, 0x2, 0x8a, 0xf, 0x3, 0x2, 0x2, 
+    0x2, 0x8b, 0x8d, 0x7, 0x33, 0x2, 0x2, 0x8c, 0x8e, 0x5, 0x12, 0xa, 0x2, 
+    0x8d, 0x8c, 0x3, 0x2, 0x2, 0x2, 0x8d, 0x8e, 0x3, 0x2, 0x2, 0x2, 0x8e, 
+    0x91, 0x3, 0x2, 0x2, 0x2, 0x8f, 0x91, 0x5, 0x12, 0xa, 0x2, 0x90, 0x8b, 
+    0x3, 0x2, 0x2, 0x2, 0x90, 0x8f, 0x3, 0x2, 0x2, 0x2, 0x91, 0x11, 0x3, 
+    0x2, 0x2, 0x2, 0x92, 0x94, 0x9, 0x3, 0x2, 0x2, 0x93, 0x92, 0x3, 0x2, 
+    0x2, 0x2, 0x93, 0x94, 0x3, 0x2, 0x2, 0x2, 0x94, 0xa4, 0x3, 0x2, 0x2, 
+    0x2, 0x95, 0xa5, 0x5, 0x46, 0x24, 0x2, 0x96, 0xa5, 0x7, 0x34, 0x2, 0x2, 
+    0x97, 0xa5, 0x7, 0xc, 0x2, 0x2, 0x98, 0xa5, 0x7, 0xd, 0x2, 0x2, 0x99, 
+    0x9a, 0x7, 0x2a, 0x2, 0x2, 0x9a, 0x9f, 0x5, 0x42, 0x22, 0x2, 0x9b, 0x9c, 
+    0x7, 0x28, 0x2, 0x2, 0x9c, 0x9e, 0x5, 0x42, 0x22, 0x2, 0x9d, 0x9b, 0x3, 
+    0x2, 0x2, 0x2, 0x9e, 0xa1, 0x3, 0x2, 0x2, 0x2, 0x9f, 0x9d, 0x3, 0x2, 
+    0x2, 0x2, 0x9f, 0xa0, 0x3, 0x2, 0x2, 0x2, 0xa0, 0xa2, 0x3, 0x2, 0x2, 
+    0x2, 0xa1, 0x9f, 0x3, 0x2, 0x2, 0x2, 0xa2, 0xa3, 0x7, 0x2b, 0x2, 0x2, 
+    0xa3, 0xa5, 0x3, 0x2, 0x2, 0x2, 0xa4, 0x95, 0x3, 0x2, 0x2, 0x2, 0xa4, 
+    0x96, 0x3, 0x2, 0x2, 0x2, 0xa4, 0x97, 0x3, 0x2, 0x2, 0x2, 0xa4, 0x98, 
+    0x3, 0x2, 0x2, 0x2, 0xa4, 0x99, 0x3, 0x2, 0x2, 0x2, 0xa5, 0x13, 0x3, 
+    0x2, 0x2, 0x2, 0xa6, 0xa7, 0x7, 0x7, 0x2, 0x2, 0xa7, 0xa8, 0x7, 0x33, 
+    0x2, 0x2, 0xa8, 0xa9, 0x7, 0x10, 0x2, 0x2, 0xa9, 0xaa, 0x7, 0x34, 0x2, 
+    0x2, 0xaa, 0xab, 0x7, 0x27, 0x2, 0x2, 0xab, 0x15, 0x3, 0x2, 0x2, 0x2, 
+    0xac, 0xad, 0x7, 0x8, 0x2, 0x2, 0xad, 0xaf, 0x7, 0x33, 0x2, 0x2, 0xae, 
+    0xb0, 0x5, 0x42, 0x22, 0x2, 0xaf, 0xae, 0x3, 0x2, 0x2, 0x2, 0xaf, 0xb0, 
+    0x3, 0x2, 0x2, 0x2, 0xb0, 0xb1, 0x3, 0x2, 0x2, 0x2, 0xb1, 0xb2, 0x7, 
+    0x27, 0x2, 0x2, 0xb2, 0x17, 0x3, 0x2, 0x2, 0x2, 0xb3, 0xb7, 0x7, 0x9, 
+    0x2, 0x2, 0xb4, 0xb6, 0x5, 0x1a, 0xe, 0x2, 0xb5, 0xb4, 0x3, 0x2, 0x2, 
+    0x2, 0xb6, 0xb9, 0x3, 0x2, 0x2, 0x2, 0xb7, 0xb5, 0x3, 0x2, 0x2, 0x2, 
+    0xb7, 0xb8, 0x3, 0x2, 0x2, 0x2, 0xb8, 0xba, 0x3, 0x2, 0x2, 0x2, 0xb9, 
+    0xb7, 0x3, 0x2, 0x2, 0x2, 0xba, 0xbb, 0x7, 0x27, 0x2, 0x2, 0xbb, 0x19, 
+    0x3, 0x2, 0x2, 0x2, 0xbc, 0xbd, 0x7, 0x33, 0x2, 0x2, 0xbd, 0xbe, 0x5, 
+    0x42, 0x22, 0x2, 0xbe, 0x1b, 0x3, 0x2, 0x2, 0x2, 0xbf, 0xc0, 0x7, 0xa, 
+    0x2, 0x2, 0xc0, 0xc1, 0x7, 0x26, 0x2, 0x2, 0xc1, 0xc2, 0x5, 0x36, 0x1c, 
+    0x2, 0xc2, 0xc3, 0x7, 0x27, 0x2, 0x2, 0xc3, 0x1d, 0x3, 0x2, 0x2, 0x2, 
+    0xc4, 0xc6, 0x7, 0xb, 0x2, 0x2, 0xc5, 0xc7, 0x7, 0x1a, 0x2, 0x2, 0xc6, 
+    0xc5, 0x3, 0x2, 0x2, 0x2, 0xc6, 0xc7, 0x3, 0x2, 0x2, 0x2, 0xc7, 0xc8, 
+    0x3, 0x2, 0x2, 0x2, 0xc8, 0xc9, 0x7, 0x32, 0x2, 0x2, 0xc9, 0xca, 0x7, 
+    0x26, 0x2, 0x2, 0xca, 0x1f, 0x3, 0x2, 0x2, 0x2, 0xcb, 0xcc, 0x5, 0x22, 
+    0x12, 0x2, 0xcc, 0xcd, 0x7, 0x26, 0x2, 0x2, 0xcd, 0xcf, 0x3, 0x2, 0x2, 
+    0x2, 0xce, 0xcb, 0x3, 0x2, 0x2, 0x2, 0xce, 0xcf, 0x3, 0x2, 0x2, 0x2, 
+    0xcf, 0xd0, 0x3, 0x2, 0x2, 0x2, 0xd0, 0xd3, 0x5, 0x24, 0x13, 0x2, 0xd1, 
+    0xd2, 0x7, 0x26, 0x2, 0x2, 0xd2, 0xd4, 0x5, 0x42, 0x22, 0x2, 0xd3, 0xd1, 
+    0x3, 0x2, 0x2, 0x2, 0xd3, 0xd4, 0x3, 0x2, 0x2, 0x2, 0xd4, 0xd5, 0x3, 
+    0x2, 0x2, 0x2, 0xd5, 0xd6, 0x5, 0x34, 0x1b, 0x2, 0xd6, 0xd7, 0x5, 0x30, 
+    0x19, 0x2, 0xd7, 0xd8, 0x7, 0x27, 0x2, 0x2, 0xd8, 0x21, 0x3, 0x2, 0x2, 
+    0x2, 0xd9, 0xda, 0x9, 0x4, 0x2, 0x2, 0xda, 0x23, 0x3, 0x2, 0x2, 0x2, 
+    0xdb, 0xdc, 0x5, 0x26, 0x14, 0x2, 0xdc, 0xdd, 0x7, 0x15, 0x2, 0x2, 0xdd, 
+    0xdf, 0x3, 0x2, 0x2, 0x2, 0xde, 0xdb, 0x3, 0x2, 0x2, 0x2, 0xde, 0xdf, 
+    0x3, 0x2, 0x2, 0x2, 0xdf, 0xe0, 0x3, 0x2, 0x2, 0x2, 0xe0, 0xe3, 0x5, 
+    0x2c, 0x17, 0x2, 0xe1, 0xe2, 0x7, 0x16, 0x2, 0x2, 0xe2, 0xe4, 0x5, 0x28, 
+    0x15, 0x2, 0xe3, 0xe1, 0x3, 0x2, 0x2, 0x2, 0xe3, 0xe4, 0x3, 0x2, 0x2, 
+    0x2, 0xe4, 0x25, 0x3, 0x2, 0x2, 0x2, 0xe5, 0xe7, 0x5, 0x2c, 0x17, 0x2, 
+    0xe6, 0xe5, 0x3, 0x2, 0x2, 0x2, 0xe7, 0xe8, 0x3, 0x2, 0x2, 0x2, 0xe8, 
+    0xe6, 0x3, 0x2, 0x2, 0x2, 0xe8, 0xe9, 0x3, 0x2, 0x2, 0x2, 0xe9, 0x27, 
+    0x3, 0x2, 0x2, 0x2, 0xea, 0xec, 0x5, 0x2a, 0x16, 0x2, 0xeb, 0xea, 0x3, 
+    0x2, 0x2, 0x2, 0xec, 0xed, 0x3, 0x2, 0x2, 0x2, 0xed, 0xeb, 0x3, 0x2, 
+    0x2, 0x2, 0xed, 0xee, 0x3, 0x2, 0x2, 0x2, 0xee, 0x29, 0x3, 0x2, 0x2, 
+    0x2, 0xef, 0xf3, 0x5, 0x2c, 0x17, 0x2, 0xf0, 0xf3, 0x7, 0x2c, 0x2, 0x2, 
+    0xf1, 0xf3, 0x7, 0x2d, 0x2, 0x2, 0xf2, 0xef, 0x3, 0x2, 0x2, 0x2, 0xf2, 
+    0xf0, 0x3, 0x2, 0x2, 0x2, 0xf2, 0xf1, 0x3, 0x2, 0x2, 0x2, 0xf3, 0x2b, 
+    0x3, 0x2, 0x2, 0x2, 0xf4, 0x101, 0x7, 0x33, 0x2, 0x2, 0xf5, 0xfe, 0x7, 
+    0x2a, 0x2, 0x2, 0xf6, 0xfb, 0x5, 0x2e, 0x18, 0x2, 0xf7, 0xf8, 0x7, 0x28, 
+    0x2, 0x2, 0xf8, 0xfa, 0x5, 0x2e, 0x18, 0x2, 0xf9, 0xf7, 0x3, 0x2, 0x2, 
+    0x2, 0xfa, 0xfd, 0x3, 0x2, 0x2, 0x2, 0xfb, 0xf9, 0x3, 0x2, 0x2, 0x2, 
+    0xfb, 0xfc, 0x3, 0x2, 0x2, 0x2, 0xfc, 0xff, 0x3, 0x2, 0x2, 0x2, 0xfd, 
+    0xfb, 0x3, 0x2, 0x2, 0x2, 0xfe, 0xf6, 0x3, 0x2, 0x2, 0x2, 0xfe, 0xff, 
+    0x3, 0x2, 0x2, 0x2, 0xff, 0x100, 0x3, 0x2, 0x2, 0x2, 0x100, 0x102, 0x7, 
+    0x2b, 0x2, 0x2, 0x101, 0xf5, 0x3, 0x2, 0x2, 0x2, 0x101, 0x102, 0x3, 
+    0x2, 0x2, 0x2, 0x102, 0x2d, 0x3, 0x2, 0x2, 0x2, 0x103, 0x104, 0x7, 0x33, 
+    0x2, 0x2, 0x104, 0x2f, 0x3, 0x2, 0x2, 0x2, 0x105, 0x10b, 0x5, 0x32, 
+    0x1a, 0x2, 0x106, 0x107, 0x5, 0x34, 0x1b, 0x2, 0x107, 0x108, 0x5, 0x32, 
+    0x1a, 0x2, 0x108, 0x10a, 0x3, 0x2, 0x2, 0x2, 0x109, 0x106, 0x3, 0x2, 
+    0x2, 0x2, 0x10a, 0x10d, 0x3, 0x2, 0x2, 0x2, 0x10b, 0x109, 0x3, 0x2, 
+    0x2, 0x2, 0x10b, 0x10c, 0x3, 0x2, 0x2, 0x2, 0x10c, 0x11a, 0x3, 0x2, 
+    0x2, 0x2, 0x10d, 0x10b, 0x3, 0x2, 0x2, 0x2, 0x10e, 0x10f, 0x5, 0x42, 
+    0x22, 0x2, 0x10f, 0x110, 0x5, 0x34, 0x1b, 0x2, 0x110, 0x116, 0x5, 0x32, 
+    0x1a, 0x2, 0x111, 0x112, 0x5, 0x34, 0x1b, 0x2, 0x112, 0x113, 0x5, 0x32, 
+    0x1a, 0x2, 0x113, 0x115, 0x3, 0x2, 0x2, 0x2, 0x114, 0x111, 0x3, 0x2, 
+    0x2, 0x2, 0x115, 0x118, 0x3, 0x2, 0x2, 0x2, 0x116, 0x114, 0x3, 0x2, 
+    0x2, 0x2, 0x116, 0x117, 0x3, 0x2, 0x2, 0x2, 0x117, 0x11a, 0x3, 0x2, 
+    0x2, 0x2, 0x118, 0x116, 0x3, 0x2, 0x2, 0x2, 0x119, 0x105, 0x3, 0x2, 
+    0x2, 0x2, 0x119, 0x10e, 0x3, 0x2, 0x2, 0x2, 0x11a, 0x31, 0x3, 0x2, 0x2, 
+    0x2, 0x11b, 0x11e, 0x5, 0x36, 0x1c, 0x2, 0x11c, 0x11d, 0x7, 0x26, 0x2, 
+    0x2, 0x11d, 0x11f, 0x5, 0x42, 0x22, 0x2, 0x11e, 0x11c, 0x3, 0x2, 0x2, 
+    0x2, 0x11e, 0x11f, 0x3, 0x2, 0x2, 0x2, 0x11f, 0x33, 0x3, 0x2, 0x2, 0x2, 
+    0x120, 0x121, 0x9, 0x5, 0x2, 0x2, 0x121, 0x35, 0x3, 0x2, 0x2, 0x2, 0x122, 
+    0x129, 0x7, 0xe, 0x2, 0x2, 0x123, 0x125, 0x5, 0x38, 0x1d, 0x2, 0x124, 
+    0x123, 0x3, 0x2, 0x2, 0x2, 0x125, 0x126, 0x3, 0x2, 0x2, 0x2, 0x126, 
+    0x124, 0x3, 0x2, 0x2, 0x2, 0x126, 0x127, 0x3, 0x2, 0x2, 0x2, 0x127, 
+    0x129, 0x3, 0x2, 0x2, 0x2, 0x128, 0x122, 0x3, 0x2, 0x2, 0x2, 0x128, 
+    0x124, 0x3, 0x2, 0x2, 0x2, 0x129, 0x37, 0x3, 0x2, 0x2, 0x2, 0x12a, 0x130, 
+    0x5, 0x3a, 0x1e, 0x2, 0x12b, 0x12d, 0x9, 0x6, 0x2, 0x2, 0x12c, 0x12e, 
+    0x5, 0x3c, 0x1f, 0x2, 0x12d, 0x12c, 0x3, 0x2, 0x2, 0x2, 0x12d, 0x12e, 
+    0x3, 0x2, 0x2, 0x2, 0x12e, 0x130, 0x3, 0x2, 0x2, 0x2, 0x12f, 0x12a, 
+    0x3, 0x2, 0x2, 0x2, 0x12f, 0x12b, 0x3, 0x2, 0x2, 0x2, 0x130, 0x39, 0x3, 
+    0x2, 0x2, 0x2, 0x131, 0x133, 0x7, 0x33, 0x2, 0x2, 0x132, 0x134, 0x5, 
+    0x3c, 0x1f, 0x2, 0x133, 0x132, 0x3, 0x2, 0x2, 0x2, 0x133, 0x134, 0x3, 
+    0x2, 0x2, 0x2, 0x134, 0x136, 0x3, 0x2, 0x2, 0x2, 0x135, 0x137, 0x5, 
+    0x3e, 0x20, 0x2, 0x136, 0x135, 0x3, 0x2, 0x2, 0x2, 0x136, 0x137, 0x3, 
+    0x2, 0x2, 0x2, 0x137, 0x145, 0x3, 0x2, 0x2, 0x2, 0x138, 0x13a, 0x9, 
+    0x7, 0x2, 0x2, 0x139, 0x13b, 0x5, 0x3c, 0x1f, 0x2, 0x13a, 0x139, 0x3, 
+    0x2, 0x2, 0x2, 0x13a, 0x13b, 0x3, 0x2, 0x2, 0x2, 0x13b, 0x145, 0x3, 
+    0x2, 0x2, 0x2, 0x13c, 0x140, 0x7, 0x2c, 0x2, 0x2, 0x13d, 0x13f, 0x5, 
+    0x38, 0x1d, 0x2, 0x13e, 0x13d, 0x3, 0x2, 0x2, 0x2, 0x13f, 0x142, 0x3, 
+    0x2, 0x2, 0x2, 0x140, 0x13e, 0x3, 0x2, 0x2, 0x2, 0x140, 0x141, 0x3, 
+    0x2, 0x2, 0x2, 0x141, 0x143, 0x3, 0x2, 0x2, 0x2, 0x142, 0x140, 0x3, 
+    0x2, 0x2, 0x2, 0x143, 0x145, 0x7, 0x2d, 0x2, 0x2, 0x144, 0x131, 0x3, 
+    0x2, 0x2, 0x2, 0x144, 0x138, 0x3, 0x2, 0x2, 0x2, 0x144, 0x13c, 0x3, 
+    0x2, 0x2, 0x2, 0x145, 0x3b, 0x3, 0x2, 0x2, 0x2, 0x146, 0x14f, 0x7, 0x2a, 
+    0x2, 0x2, 0x147, 0x14c, 0x5, 0x42, 0x22, 0x2, 0x148, 0x149, 0x7, 0x28, 
+    0x2, 0x2, 0x149, 0x14b, 0x5, 0x42, 0x22, 0x2, 0x14a, 0x148, 0x3, 0x2, 
+    0x2, 0x2, 0x14b, 0x14e, 0x3, 0x2, 0x2, 0x2, 0x14c, 0x14a, 0x3, 0x2, 
+    0x2, 0x2, 0x14c, 0x14d, 0x3, 0x2, 0x2, 0x2, 0x14d, 0x150, 0x3, 0x2, 
+    0x2, 0x2, 0x14e, 0x14c, 0x3, 0x2, 0x2, 0x2, 0x14f, 0x147, 0x3, 0x2, 
+    0x2, 0x2, 0x14f, 0x150, 0x3, 0x2, 0x2, 0x2, 0x150, 0x151, 0x3, 0x2, 
+    0x2, 0x2, 0x151, 0x152, 0x7, 0x2b, 0x2, 0x2, 0x152, 0x3d, 0x3, 0x2, 
+    0x2, 0x2, 0x153, 0x154, 0x7, 0x2e, 0x2, 0x2, 0x154, 0x159, 0x5, 0x40, 
+    0x21, 0x2, 0x155, 0x156, 0x9, 0x8, 0x2, 0x2, 0x156, 0x158, 0x5, 0x40, 
+    0x21, 0x2, 0x157, 0x155, 0x3, 0x2, 0x2, 0x2, 0x158, 0x15b, 0x3, 0x2, 
+    0x2, 0x2, 0x159, 0x157, 0x3, 0x2, 0x2, 0x2, 0x159, 0x15a, 0x3, 0x2, 
+    0x2, 0x2, 0x15a, 0x15c, 0x3, 0x2, 0x2, 0x2, 0x15b, 0x159, 0x3, 0x2, 
+    0x2, 0x2, 0x15c, 0x15d, 0x7, 0x2f, 0x2, 0x2, 0x15d, 0x3f, 0x3, 0x2, 
+    0x2, 0x2, 0x15e, 0x165, 0x7, 0xe, 0x2, 0x2, 0x15f, 0x161, 0x5, 0x3a, 
+    0x1e, 0x2, 0x160, 0x15f, 0x3, 0x2, 0x2, 0x2, 0x161, 0x162, 0x3, 0x2, 
+    0x2, 0x2, 0x162, 0x160, 0x3, 0x2, 0x2, 0x2, 0x162, 0x163, 0x3, 0x2, 
+    0x2, 0x2, 0x163, 0x165, 0x3, 0x2, 0x2, 0x2, 0x164, 0x15e, 0x3, 0x2, 
+    0x2, 0x2, 0x164, 0x160, 0x3, 0x2, 0x2, 0x2, 0x165, 0x41, 0x3, 0x2, 0x2, 
+    0x2, 0x166, 0x167, 0x8, 0x22, 0x1, 0x2, 0x167, 0x16b, 0x5, 0x44, 0x23, 
+    0x2, 0x168, 0x169, 0x9, 0x9, 0x2, 0x2, 0x169, 0x16b, 0x5, 0x42, 0x22, 
+    0xa, 0x16a, 0x166, 0x3, 0x2, 0x2, 0x2, 0x16a, 0x168, 0x3, 0x2, 0x2, 
+    0x2, 0x16b, 0x189, 0x3, 0x2, 0x2, 0x2, 0x16c, 0x16d, 0xc, 0xb, 0x2, 
+    0x2, 0x16d, 0x16e, 0x7, 0x1e, 0x2, 0x2, 0x16e, 0x188, 0x5, 0x42, 0x22, 
+    0xb, 0x16f, 0x170, 0xc, 0x9, 0x2, 0x2, 0x170, 0x171, 0x9, 0xa, 0x2, 
+    0x2, 0x171, 0x188, 0x5, 0x42, 0x22, 0xa, 0x172, 0x173, 0xc, 0x8, 0x2, 
+    0x2, 0x173, 0x174, 0x9, 0x3, 0x2, 0x2, 0x174, 0x188, 0x5, 0x42, 0x22, 
+    0x9, 0x175, 0x176, 0xc, 0x7, 0x2, 0x2, 0x176, 0x177, 0x9, 0xb, 0x2, 
+    0x2, 0x177, 0x188, 0x5, 0x42, 0x22, 0x8, 0x178, 0x179, 0xc, 0x6, 0x2, 
+    0x2, 0x179, 0x17a, 0x9, 0xc, 0x2, 0x2, 0x17a, 0x188, 0x5, 0x42, 0x22, 
+    0x7, 0x17b, 0x17c, 0xc, 0x5, 0x2, 0x2, 0x17c, 0x17d, 0x7, 0x17, 0x2, 
+    0x2, 0x17d, 0x188, 0x5, 0x42, 0x22, 0x6, 0x17e, 0x17f, 0xc, 0x4, 0x2, 
+    0x2, 0x17f, 0x180, 0x7, 0x18, 0x2, 0x2, 0x180, 0x188, 0x5, 0x42, 0x22, 
+    0x5, 0x181, 0x182, 0xc, 0x3, 0x2, 0x2, 0x182, 0x183, 0x7, 0x25, 0x2, 
+    0x2, 0x183, 0x184, 0x5, 0x42, 0x22, 0x2, 0x184, 0x185, 0x7, 0x26, 0x2, 
+    0x2, 0x185, 0x186, 0x5, 0x42, 0x22, 0x3, 0x186, 0x188, 0x3, 0x2, 0x2, 
+    0x2, 0x187, 0x16c, 0x3, 0x2, 0x2, 0x2, 0x187, 0x16f, 0x3, 0x2, 0x2, 
+    0x2, 0x187, 0x172, 0x3, 0x2, 0x2, 0x2, 0x187, 0x175, 0x3, 0x2, 0x2, 
+    0x2, 0x187, 0x178, 0x3, 0x2, 0x2, 0x2, 0x187, 0x17b, 0x3, 0x2, 0x2, 
+    0x2, 0x187, 0x17e, 0x3, 0x2, 0x2, 0x2, 0x187, 0x181, 0x3, 0x2, 0x2, 
+    0x2, 0x188, 0x18b, 0x3, 0x2, 0x2, 0x2, 0x189, 0x187, 0x3, 0x2, 0x2, 
+    0x2, 0x189, 0x18a, 0x3, 0x2, 0x2, 0x2, 0x18a, 0x43, 0x3, 0x2, 0x2, 0x2, 
+    0x18b, 0x189, 0x3, 0x2, 0x2, 0x2, 0x18c, 0x1aa, 0x5, 0x46, 0x24, 0x2, 
+    0x18d, 0x1aa, 0x7, 0x30, 0x2, 0x2, 0x18e, 0x1aa, 0x7, 0x34, 0x2, 0x2, 
+    0x18f, 0x1aa, 0x9, 0xd, 0x2, 0x2, 0x190, 0x191, 0x7, 0x33, 0x2, 0x2, 
+    0x191, 0x192, 0x7, 0x29, 0x2, 0x2, 0x192, 0x194, 0x7, 0x33, 0x2, 0x2, 
+    0x193, 0x195, 0x5, 0x3c, 0x1f, 0x2, 0x194, 0x193, 0x3, 0x2, 0x2, 0x2, 
+    0x194, 0x195, 0x3, 0x2, 0x2, 0x2, 0x195, 0x1aa, 0x3, 0x2, 0x2, 0x2, 
+    0x196, 0x197, 0x7, 0x33, 0x2, 0x2, 0x197, 0x1aa, 0x5, 0x3c, 0x1f, 0x2, 
+    0x198, 0x1aa, 0x7, 0x33, 0x2, 0x2, 0x199, 0x19a, 0x7, 0x2a, 0x2, 0x2, 
+    0x19a, 0x19b, 0x5, 0x42, 0x22, 0x2, 0x19b, 0x19c, 0x7, 0x2b, 0x2, 0x2, 
+    0x19c, 0x1aa, 0x3, 0x2, 0x2, 0x2, 0x19d, 0x19e, 0x7, 0x2a, 0x2, 0x2, 
+    0x19e, 0x1a1, 0x5, 0x42, 0x22, 0x2, 0x19f, 0x1a0, 0x7, 0x28, 0x2, 0x2, 
+    0x1a0, 0x1a2, 0x5, 0x42, 0x22, 0x2, 0x1a1, 0x19f, 0x3, 0x2, 0x2, 0x2, 
+    0x1a2, 0x1a3, 0x3, 0x2, 0x2, 0x2, 0x1a3, 0x1a1, 0x3, 0x2, 0x2, 0x2, 
+    0x1a3, 0x1a4, 0x3, 0x2, 0x2, 0x2, 0x1a4, 0x1a5, 0x3, 0x2, 0x2, 0x2, 
+    0x1a5, 0x1a6, 0x7, 0x2b, 0x2, 0x2, 0x1a6, 0x1aa, 0x3, 0x2, 0x2, 0x2, 
+    0x1a7, 0x1a8, 0x7, 0x24, 0x2, 0x2, 0x1a8, 0x1aa, 0x5, 0x44, 0x23, 0x2, 
+    0x1a9, 0x18c, 0x3, 0x2, 0x2, 0x2, 0x1a9, 0x18d, 0x3, 0x2, 0x2, 0x2, 
+    0x1a9, 0x18e, 0x3, 0x2, 0x2, 0x2, 0x1a9, 0x18f, 0x3, 0x2, 0x2, 0x2, 
+    0x1a9, 0x190, 0x3, 0x2, 0x2, 0x2, 0x1a9, 0x196, 0x3, 0x2, 0x2, 0x2, 
+    0x1a9, 0x198, 0x3, 0x2, 0x2, 0x2, 0x1a9, 0x199, 0x3, 0x2, 0x2, 0x2, 
+    0x1a9, 0x19d, 0x3, 0x2, 0x2, 0x2, 0x1a9, 0x1a7, 0x3, 0x2, 0x2, 0x2, 
+    0x1aa, 0x45, 0x3, 0x2, 0x2, 0x2, 0x1ab, 0x1ac, 0x9, 0xe, 0x2, 0x2, 0x1ac, 
+    0x47, 0x3, 0x2, 0x2, 0x2, 0x34, 0x4b, 0x5a, 0x66, 0x68, 0x78, 0x7e, 
+    0x80, 0x86, 0x8d, 0x90, 0x93, 0x9f, 0xa4, 0xaf, 0xb7, 0xc6, 0xce, 0xd3, 
+    0xde, 0xe3, 0xe8, 0xed, 0xf2, 0xfb, 0xfe, 0x101, 0x10b, 0x116, 0x119, 
+    0x11e, 0x126, 0x128, 0x12d, 0x12f, 0x133, 0x136, 0x13a, 0x140, 0x144, 
+    0x14c, 0x14f, 0x159, 0x162, 0x164, 0x16a, 0x187, 0x189, 0x194, 0x1a3, 
+    0x1a9, 
+  };
+
+  atn::ATNDeserializer deserializer;
+  _atn = deserializer.deserialize(_serializedATN);
+
+  size_t count = _atn.getNumberOfDecisions();
+  _decisionToDFA.reserve(count);
+  for (size_t i = 0; i < count; i++) { 
+    _decisionToDFA.emplace_back(_atn.getDecisionState(i), i);
+  }
+}
+
+FgsgParser::Initializer FgsgParser::_init;
