@@ -8,6 +8,8 @@
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -59,6 +61,19 @@ RunOptions parseRunOptions(const Args& args) {
   }
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
   if (o.output.empty()) o.output = std::filesystem::path(o.file).stem().string() + ".glb";
+  // Bad output names are usage errors, found before any work is done.
+  std::string ext = std::filesystem::path(o.output).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto& known = rt::io::supportedMeshExtensions();
+  if (std::find(known.begin(), known.end(), ext) == known.end()) {
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw UsageError{"-o " + o.output + ": unknown output format (use " + list + ")"};
+  }
+  std::string previewExt = std::filesystem::path(o.preview).extension().string();
+  for (char& c : previewExt) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!o.preview.empty() && previewExt != ".png")
+    throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   return o;
 }
 

@@ -275,7 +275,7 @@ class Analyzer {
         if (res_.mode != "parallel")
           diags_.warning("W005", r.predecessor.range,
                          "context < > only matters in a parallel derivation (`derive parallel "
-                         "N;`); in a sequential one it is ignored");
+                         "N;`); in a sequential derivation this rule never applies");
       }
       for (const auto& b : r.branches) {
         if (b.probability) {
@@ -317,7 +317,8 @@ class Analyzer {
       const Rule& first = prog_.rules[s.rules.front()];
       if (sum <= 0)
         diags_.error("E015", first.range,
-                     "the probabilities of the rules for '" + s.name + "' add up to 0");
+                     "the probabilities of the rules for '" + s.name + "' add up to " +
+                         formatNumber(sum) + "; at least one must be positive");
       else if (std::abs(sum - 1.0) > 1e-9)
         diags_.warning("W003", first.range,
                        "the probabilities of the rules for '" + s.name + "' add up to " +
@@ -536,8 +537,8 @@ class Analyzer {
         if (e.kind == ExprKind::FloatSize && !e.args.empty()) typeOf(*e.args[0], w, report);
         if (!w.sizeArg && report)
           diags_.error("E026", e.range,
-                       "relative (1r) and floating (~s) sizes are only allowed as sizes of S, "
-                       "Subdiv and Repeat");
+                       "relative (1r) and floating (~s) sizes are only allowed as sizes of S and "
+                       "Subdiv");
         return record(e, ValueType::Num, report);
       case ExprKind::Vector: {
         for (const auto& a : e.args) {

@@ -38,6 +38,8 @@ struct Module {
   uint32_t firstArg = 0;
   uint32_t argCount = 0;
   uint64_t key = 0;
+  uint32_t index = 0;           // position among the symbols of its successor (Shape.index)
+  uint32_t owner = UINT32_MAX;  // symbol whose rule produced it; UINT32_MAX: the axiom
 };
 
 class Interpreter final : public QueryHost {
@@ -45,11 +47,16 @@ class Interpreter final : public QueryHost {
   Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
               std::vector<double> attrs)
       : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), shapes_(maxSlotCount(m)),
-        ruleUses_(m.rules.size(), 0) {}
+        ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)) {}
 
   static uint32_t maxSlotCount(const ir::Module& m) {
     uint32_t n = 0;
     for (const auto& s : m.symbols) n = std::max(n, s.slotCount);
+    return n;
+  }
+  static uint32_t maxRuleSlots(const ir::Module& m) {
+    uint32_t n = maxSlotCount(m);
+    for (const auto& r : m.rules) n = std::max(n, r.slotCount);
     return n;
   }
 
@@ -88,8 +95,9 @@ class Interpreter final : public QueryHost {
     for (const auto& env : m_.environment)
       throw DeriveError{env.loc, "R001",
                         env.kind + " declarations are not yet supported when running: " + env.kind +
-                            "s arrive with the field-guided surfaces work (this grammar parses "
-                            "and type-checks; `fgsg check` accepts it)"};
+                            "s arrive with " +
+                            (env.kind == "texture" ? "on-mesh marching" : "the field-guided surfaces work") +
+                            " (this grammar parses and type-checks; `fgsg check` accepts it)"};
   }
 
   // Every asset is loaded before deriving, so a missing file is reported at its I().
@@ -121,6 +129,9 @@ class Interpreter final : public QueryHost {
     out_.symbols.push_back("F");
     for (const auto& s : m_.symbols) symbolColor_.push_back(colorFor(s.name));
     symbolColor_.push_back({0.45f, 0.33f, 0.2f});  // turtle segments: bark brown
+    axiomSymbol_ = static_cast<uint32_t>(out_.symbols.size());
+    out_.symbols.push_back("axiom");
+    symbolColor_.push_back(colorFor("axiom"));
     usesOcclusion_ = moduleUsesQuery(ir::Query::ScopeOcc);
     noneId_ = stringId("none");
     partId_ = stringId("part");
@@ -338,6 +349,7 @@ class Interpreter final : public QueryHost {
     const ir::Symbol& sym = m_.symbols[shapes_.symbol(s)];
     // Copy what the rule reads: the store grows (and may move) while it runs.
     params_.assign(shapes_.params(s), shapes_.params(s) + sym.slotCount);
+    params_.resize(maxSlots_, 0.0);
     const rt::Scope scope = shapes_.scope(s);
     const uint32_t depth = shapes_.depth(s);
     rt::RandomStream rng{shapes_.key(s), 0};
@@ -362,15 +374,27 @@ class Interpreter final : public QueryHost {
     const ir::Alternative* alt = choose(sym, f);
     if (!alt) {
       ++stats_.terminals;
+      drawTurtleSymbol(sym, scope, params_.data());
       return;
     }
     ++stats_.rewrites;
     ++ruleUses_[chosenRule_];
     if ((stats_.rewrites & 4095) == 0) checkTime();
     creatorRule_ = chosenRule_;
-    execRoot(alt->ops, scope, shapes_.geom(s), shapes_.key(s), depth + 1, 0, params_.data(),
+    execRoot(alt->ops, scope, shapes_.geom(s), shapes_.key(s), depth + 1, shapes_.index(s), params_.data(),
              shapes_.symbol(s), &rng);
     creatorRule_ = UINT32_MAX;
+  }
+
+  // F is a shape symbol when rules rewrite it; where none applies it still draws like the
+  // turtle command, as after a parallel derivation. Length: its first parameter, else
+  // the turtle step.
+  void drawTurtleSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {
+    if (sym.name != "F") return;
+    State st;
+    st.scope = scope;
+    st.width = m_.turtle.width;
+    turtle(st, ir::TurtleOp::Forward, params, sym.slotCount > 0 ? 1 : 0, {});
   }
 
   // A rule with a guard or a context is specific; one without is general. Specific rules
@@ -388,6 +412,8 @@ class Interpreter final : public QueryHost {
     for (uint32_t ri : sym.rules) {
       const ir::Rule& r = m_.rules[ri];
       if (isSpecific(r) != (pass == 0)) continue;
+      // Context needs a string of neighbours: only a parallel derivation has one.
+      if (!r.left.empty() || !r.right.empty()) continue;
       if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
       for (const auto& alt : r.alternatives) {
         const double w = eval_.num(alt.probability, f);
@@ -477,7 +503,7 @@ class Interpreter final : public QueryHost {
         }
         case ir::OpKind::Instance: {
           if (op.mode != ir::InstanceMode::Plain) unsupported(op);
-          const uint32_t sym = ex.symbol == UINT32_MAX ? segmentSymbol_ : ex.symbol;
+          const uint32_t sym = ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol;
           const uint32_t count = ex.symbol == UINT32_MAX ? 0 : m_.symbols[sym].slotCount;
           placeInstance(op.index, st.scope, sym, ex.params, count, op.loc);
           break;
@@ -563,7 +589,7 @@ class Interpreter final : public QueryHost {
         emitOp.loc = op.loc;
         emit(emitOp, piece, ex, f);
       } else if (!place.asset.empty()) {
-        placeInstance(pieceAsset(place.asset, op.loc), cell, ex.symbol == UINT32_MAX ? segmentSymbol_ : ex.symbol,
+        placeInstance(pieceAsset(place.asset, op.loc), cell, ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol,
                       nullptr, 0, op.loc);
         out_.instances.back().color = place.color;
       }
@@ -699,12 +725,13 @@ class Interpreter final : public QueryHost {
     rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
     f.rng = &rng;
     appendModules(m_.axiom, f, rt::rootKey(opt_.seed), str, args);
-    for (int step = 0; step < m_.steps; ++step) {
+    bool limitHit = false;
+    for (int step = 0; step < m_.steps && !limitHit; ++step) {
       next.clear();
       nextArgs.clear();
       for (size_t i = 0; i < str.size(); ++i) {
         const Module& mod = str[i];
-        if (mod.op->kind != ir::OpKind::Emit || m_.symbols[mod.op->index].rules.empty()) {
+        if (limitHit || mod.op->kind != ir::OpKind::Emit || m_.symbols[mod.op->index].rules.empty()) {
           copyModule(mod, args, next, nextArgs);
           continue;
         }
@@ -717,20 +744,18 @@ class Interpreter final : public QueryHost {
         }
         ++stats_.rewrites;
         ++ruleUses_[chosenRule_];
-        Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), 0, this};
-        appendModules(alt->ops, rf, mod.key, next, nextArgs);
-        if (next.size() >= opt_.maxShapes) {
-          str.swap(next);
-          args.swap(nextArgs);
-          interpretString(str, args);
-          shapeLimit(alt->ops.empty() ? ir::Op{} : alt->ops.front());
-        }
+        Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), mod.index, this};
+        appendModules(alt->ops, rf, mod.key, next, nextArgs, mod.op->index);
+        // At the limit the rest of this step's string is kept unrewritten, so the
+        // turtle still draws the whole (partly older) plant.
+        if (next.size() >= opt_.maxShapes) limitHit = true;
       }
       str.swap(next);
       args.swap(nextArgs);
       checkTime();
     }
     interpretString(str, args);
+    if (limitHit) shapeLimit(ir::Op{});
   }
 
   static void copyModule(const Module& mod, const std::vector<double>& args,
@@ -744,12 +769,13 @@ class Interpreter final : public QueryHost {
 
   // Flattens a successor into string modules, evaluating every argument now.
   void appendModules(const ir::Block& ops, Frame& f, uint64_t key, std::vector<Module>& out,
-                     std::vector<double>& outArgs) {
+                     std::vector<double>& outArgs, uint32_t owner = UINT32_MAX) {
     uint32_t child = 0;
     double buf[16];
     for (const ir::Op& op : ops) {
       Module mod;
       mod.op = &op;
+      mod.owner = owner;
       mod.firstArg = static_cast<uint32_t>(outArgs.size());
       switch (op.kind) {
         case ir::OpKind::Emit: {
@@ -761,6 +787,7 @@ class Interpreter final : public QueryHost {
             slot += ir::slotWidth(a.type);
           }
           mod.argCount = target.slotCount;
+          mod.index = child;
           mod.key = rt::childKey(key, child++);
           break;
         }
@@ -800,7 +827,7 @@ class Interpreter final : public QueryHost {
       std::copy(args.begin() + str[at].firstArg, args.begin() + str[at].firstArg + sym.slotCount,
                 params_.begin());
       if (!matchLeft(r, str, args, at) || !matchRight(r, str, args, at)) continue;
-      Frame f{params_.data(), &rng, nullptr, step, 0, this};
+      Frame f{params_.data(), &rng, nullptr, step, str[at].index, this};
       if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
       for (const auto& alt : r.alternatives) {
         const double w = eval_.num(alt.probability, f);
@@ -949,7 +976,8 @@ class Interpreter final : public QueryHost {
           turtle(st, static_cast<ir::TurtleOp>(op.index), a, mod.argCount, op.loc);
           break;
         case ir::OpKind::Instance:
-          placeInstance(op.index, st.scope, segmentSymbol_, nullptr, 0, op.loc);
+          placeInstance(op.index, st.scope, mod.owner == UINT32_MAX ? axiomSymbol_ : mod.owner,
+                        nullptr, 0, op.loc);
           break;
         default: scopeCommand(st, op, a); break;
       }
@@ -980,12 +1008,13 @@ class Interpreter final : public QueryHost {
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
   std::vector<uint64_t> ruleUses_;  // applications per rule, to name a runaway one
+  uint32_t maxSlots_ = 0;           // the largest parameter block of any rule
   uint32_t chosenRule_ = 0;
   uint32_t creatorRule_ = UINT32_MAX;  // the rule whose successor is running
   bool depthLimitHit_ = false;
   rt::DeriveMessage depthWarning_;
   std::vector<std::array<float, 3>> symbolColor_;
-  uint32_t segmentAsset_ = 0, segmentSymbol_ = 0;
+  uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   bool usesOcclusion_ = false;
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
