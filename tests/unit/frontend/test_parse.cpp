@@ -658,6 +658,15 @@ TEST_CASE("never crashes: empty, garbage, unterminated, deep nesting", "[parse][
   CHECK_FALSE(g.ok);
   CHECK(g.diagnostics.size() <= 80);  // capped, not one per byte
 
+  // Found by fuzzing: ANTLR conjured a missing ')' in front of the implicit ';'.
+  Parsed conjured = parse("X~>g(A,B}[F)");
+  REQUIRE(conjured.diagnostics.size() == 1);
+  CHECK(conjured.diagnostics[0].message == "expected ',' or ')' after 'X~>g(A,B', found '}'");
+  Parsed missingColon = parse("priority 1\nA ~> B;");
+  REQUIRE(missingColon.diagnostics.size() == 1);
+  CHECK(missingColon.diagnostics[0].message == "expected ':' after 'priority 1', found the end of the line");
+  CHECK(missingColon.rules() == std::vector<std::string>{"A ~> B"});
+
   CHECK_FALSE(parse("A ~> B(\"never closed").ok);
   CHECK_FALSE(parse("A ~> B{ C | ").ok);
   CHECK_FALSE(parse("field F = design tensor { center at").ok);
