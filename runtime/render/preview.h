@@ -14,8 +14,9 @@
 
 namespace fgsg::rt::render {
 
-// A mesh counts as flat in Z when its Z extent is below this fraction of its largest.
-constexpr double kFlatPreviewRatio = 0.02;
+// A mesh counts as flat in Z when its Z extent is below this fraction of its largest:
+// planar patterns of shallow shapes (FGSG Fig. 4 tori) are still seen from above.
+constexpr double kFlatPreviewRatio = 0.1;
 
 struct PreviewOptions {
   int width = 800;
