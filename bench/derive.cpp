@@ -26,12 +26,12 @@ const char* kPlanar = R"(
   A(n) ~> Leaf;
 )";
 
-// The same pattern placing a torus at every leaf: instances carry 4x4 transforms.
+// The same pattern placing a cube at every leaf: instances carry 4x4 transforms.
 const char* kPlanarInstances = R"(
   attr depth = 18;
   Axiom ~> A(0);
   A(n) : n < depth ~> [ Rz(60) T(0.6, 0, 0) A(n + 1) ] [ Rz(-60) T(0.6, 0, 0) A(n + 1) ];
-  A(n) ~> S(1, 1, 0.6) I("torus");
+  A(n) ~> S(0.5, 0.5, 0.3) I("cube");
 )";
 
 // A stochastic variant: guards, Rand and weighted alternatives on every shape.

@@ -182,11 +182,13 @@ int synthCommand(const Args& args) {
   if (stats) {
     std::fprintf(stderr,
                  "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
-                 "\"assignments\":%llu,\"propagation_steps\":%llu,\"blocks\":%d,\"blocks_failed\":%d,"
+                 "\"assignments\":%llu,\"propagation_steps\":%llu,\"support_misses\":%llu,"
+                 "\"blocks\":%d,\"blocks_failed\":%d,"
                  "\"block_retries\":%d,\"attempts\":%d,\"catalog_bytes\":%zu}\n",
                  r.ok ? "true" : "false", r.consistent ? "true" : "false", o.size.nx, o.size.ny, o.size.nz,
                  ex.labelCount(), r.stats.seconds, (unsigned long long)r.stats.assignments,
-                 (unsigned long long)r.stats.propagationSteps, r.stats.blocks, r.stats.blocksFailed,
+                 (unsigned long long)r.stats.propagationSteps, (unsigned long long)r.stats.supportMisses,
+                 r.stats.blocks, r.stats.blocksFailed,
                  r.stats.blockRetries, r.stats.attempts, r.stats.catalogBytes);
   }
   if (!r.ok) {

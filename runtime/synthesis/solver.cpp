@@ -3,7 +3,6 @@
 // blocks shifted by half a block, reverting a block that fails). Both run through one
 // routine, `runBlock`: whole-grid synthesis is the block that is the whole grid.
 #include "runtime/synthesis/catalog.h"
-#include "runtime/synthesis/catalog_support.h"
 #include "runtime/synthesis/random.h"
 #include "runtime/synthesis/synthesis.h"
 
@@ -26,7 +25,7 @@ struct Problem {
   const Example& ex;
   const SynthesisOptions& o;
   GridSize size;
-  int k = 0, W = 0;
+  int k = 0, W = 0;                          // W: words per domain, paddedWordsFor(k)
   TransitionTable t;
   SiteGraph g;
   std::vector<Word> baseDom;                 // per cell: labels borders/masks/symmetry allow
@@ -75,8 +74,8 @@ bool compile(Problem& P, std::string& error) {
     for (uint16_t r : o.weights.region)
       if (r >= o.weights.factor.size()) { error = "per-position weights name an unknown region"; return false; }
   }
-  P.W = wordsFor(P.k);
-  P.t = buildTransitions(ex);
+  P.W = paddedWordsFor(P.k);
+  P.t = buildTransitions(ex, P.W);
   P.g = makeGridGraph(o.size, o.periodic);
 
   // Symmetry links: one relation T_f per symmetry, a link p -> σ(p) per cell.
@@ -118,35 +117,41 @@ bool compile(Problem& P, std::string& error) {
   BorderSpec border = o.border ? *o.border : ex.border;
   P.baseDom.assign(size_t(o.size.count()) * size_t(P.W), 0);
   const int n[3] = {o.size.nx, o.size.ny, o.size.nz};
-  std::vector<Word> one(static_cast<size_t>(P.W));
-  for (int64_t c = 0; c < o.size.count(); ++c) {
-    Word* d = &P.baseDom[size_t(c) * size_t(P.W)];
-    const size_t r = o.weights.region.empty() ? 0 : o.weights.region[size_t(c)];
-    std::copy_n(&regionDom[r * size_t(P.W)], P.W, d);
-    const int p[3] = {int(c % n[0]), int((c / n[0]) % n[1]), int(c / (int64_t(n[0]) * n[1]))};
-    for (int f = 0; f < 6; ++f) {
-      const int axis = f / 2;
-      if (o.periodic[size_t(axis)]) continue;
-      if (p[axis] != (f % 2 == 0 ? 0 : n[axis] - 1)) continue;
-      if (axis == 2 && ex.dims == 2) continue;  // a planar model has no z faces
-      const int32_t fixed = border.fixed[size_t(f)], out = border.outside[size_t(f)];
-      if (!border.only[size_t(f)].empty()) {
-        std::fill(one.begin(), one.end(), 0);
-        for (int32_t l : border.only[size_t(f)])
-          if (l >= 0 && l < P.k) setBit(one.data(), l);
-        for (int w = 0; w < P.W; ++w) d[w] &= one[size_t(w)];
-      }
-      if (fixed >= 0 && fixed < P.k) {
-        std::fill(one.begin(), one.end(), 0);
-        setBit(one.data(), fixed);
-        for (int w = 0; w < P.W; ++w) d[w] &= one[size_t(w)];
-      }
-      // The virtual outside cell lies across the face; this cell is at relation f from it
-      // (xmin: the cell is at +x of the outside cell, relation +x = 0 = face xmin).
-      if (out >= 0 && out < P.k)
-        for (int w = 0; w < P.W; ++w) d[w] &= P.t.row(f, out)[w];
+  // Per face: the labels its cells may hold (all when the face is unconstrained).
+  std::vector<Word> faceMask(6 * size_t(P.W), ~Word(0));
+  for (int f = 0; f < 6; ++f) {
+    Word* m = &faceMask[size_t(f) * size_t(P.W)];
+    const int axis = f / 2;
+    if (o.periodic[size_t(axis)] || (axis == 2 && ex.dims == 2)) continue;  // planar: no z faces
+    const int32_t fixed = border.fixed[size_t(f)], out = border.outside[size_t(f)];
+    std::vector<Word> one(static_cast<size_t>(P.W), 0);
+    if (!border.only[size_t(f)].empty()) {
+      for (int32_t l : border.only[size_t(f)])
+        if (l >= 0 && l < P.k) setBit(one.data(), l);
+      for (int w = 0; w < P.W; ++w) m[w] &= one[size_t(w)];
     }
+    if (fixed >= 0 && fixed < P.k) {
+      std::fill(one.begin(), one.end(), 0);
+      setBit(one.data(), fixed);
+      for (int w = 0; w < P.W; ++w) m[w] &= one[size_t(w)];
+    }
+    // The virtual outside cell lies across the face; this cell is at relation f from it
+    // (xmin: the cell is at +x of the outside cell, relation +x = 0 = face xmin).
+    if (out >= 0 && out < P.k)
+      for (int w = 0; w < P.W; ++w) m[w] &= P.t.row(f, out)[w];
   }
+  int64_t c = 0;
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x, ++c) {
+        Word* d = &P.baseDom[size_t(c) * size_t(P.W)];
+        const size_t r = o.weights.region.empty() ? 0 : o.weights.region[size_t(c)];
+        std::copy_n(&regionDom[r * size_t(P.W)], P.W, d);
+        const int p[3] = {x, y, z};
+        for (int f = 0; f < 6; ++f)
+          if (p[f / 2] == (f % 2 == 0 ? 0 : n[f / 2] - 1))
+            for (int w = 0; w < P.W; ++w) d[w] &= faceMask[size_t(f) * size_t(P.W) + size_t(w)];
+      }
   for (const auto& [c, f] : selfMaps) {
     Word* d = &P.baseDom[size_t(c) * size_t(P.W)];
     for (int b = 0; b < P.k; ++b)
@@ -167,7 +172,8 @@ bool compile(Problem& P, std::string& error) {
   return true;
 }
 
-template <class Catalog>
+// NW = P.W words per domain, fixed at compile time so every domain loop unrolls.
+template <int NW>
 class Solver {
  public:
   Solver(Problem& P, LabelGrid& M, SynthesisStats& stats, uint64_t seed)
@@ -176,20 +182,21 @@ class Solver {
 
   size_t bytes() const { return cat_.bytes(); }
   uint64_t pops() const { return cat_.pops(); }
+  uint64_t supportMisses() const { return cat_.memoMisses(); }
 
   // Re-synthesizes `sites` (sorted) with every other cell fixed to its label in M. On
   // success M holds the new labels; on failure M is untouched and `fail` says why.
   bool runBlock(const std::vector<int32_t>& sites, bool trivial, Order order, SynthesisFailure& fail) {
-    const int W = P_.W;
+    constexpr int W = NW;
     for (int32_t s : sites) {
-      cat_.setActive(s, true);
+      cat_.activate(s, P_.base(s));
       assigned_[size_t(s)] = 0;
-      std::copy_n(P_.base(s), W, cat_.domain(s));
     }
     bool ok = init(sites, fail) && assignAll(sites, trivial, order, fail);
     if (ok)
       for (int32_t s : sites) M_[s] = firstBit(cat_.domain(s), W);
-    for (int32_t s : sites) cat_.setActive(s, false);
+    cat_.clearQueue();  // sites queued before init failed must not leak into the next block
+    for (int32_t s : sites) cat_.deactivate(s);
     return ok;
   }
 
@@ -204,7 +211,7 @@ class Solver {
   // Applies the fixed cells around the block to its domains (Algorithm 3.4 lines 12-17),
   // then propagates.
   bool init(const std::vector<int32_t>& sites, SynthesisFailure& fail) {
-    const int W = P_.W;
+    constexpr int W = NW;
     const SiteGraph& g = P_.g;
     for (int32_t s : sites) {
       Word* d = cat_.domain(s);
@@ -238,7 +245,7 @@ class Solver {
 
   int choose(int64_t site, bool trivial, const Word* restrictTo = nullptr) {
     const Word* d = cat_.domain(site);
-    const int W = P_.W;
+    constexpr int W = NW;
     const auto& w = P_.weights(site);
     if (trivial) {
       // The trivial initial model: empty space where possible, else background, else the
@@ -284,11 +291,9 @@ class Solver {
   // Assigns one site and propagates (Algorithm 3.1 lines 9-14).
   bool assignOne(int64_t s, bool trivial, SynthesisFailure& fail, const Word* restrictTo = nullptr) {
     if (limitsHit(fail, s)) return false;
-    const int W = P_.W;
-    Word* d = cat_.domain(s);
     assigned_[size_t(s)] = 1;
     ++stats_.assignments;
-    if (popcount(d, W) == 1) return true;  // already decided by propagation
+    if (singleLabel<NW>(cat_.domain(s)) >= 0) return true;  // already decided by propagation
     const int b = choose(s, trivial, restrictTo);
     if (b < 0) return failAt(s, fail);
     cat_.assign(s, b);
@@ -310,7 +315,7 @@ class Solver {
   bool assignMinEntropy(const std::vector<int32_t>& sites, SynthesisFailure& fail) {
     using Entry = std::tuple<int, uint32_t, int32_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-    const int W = P_.W;
+    constexpr int W = NW;
     for (int32_t s : sites) heap.push({popcount(cat_.domain(s), W), uint32_t(rng_.next()), s});
     cat_.trackChanges(true);
     bool ok = true;
@@ -332,7 +337,7 @@ class Solver {
   // already carries one, growing from seeds; once growth stops, connect labels are removed
   // from every remaining cell.
   bool assignGrowing(const std::vector<int32_t>& sites, SynthesisFailure& fail) {
-    const int W = P_.W;
+    constexpr int W = NW;
     const Word* conn = P_.connectMask.data();
     std::vector<int32_t> frontier;
     auto hasConnect = [&](const Word* d) {
@@ -393,7 +398,7 @@ class Solver {
   Problem& P_;
   LabelGrid& M_;
   SynthesisStats& stats_;
-  Catalog cat_;
+  BitsetCatalog<NW> cat_;
   Rng rng_;
   std::vector<uint8_t> assigned_, mark_;
 };
@@ -414,7 +419,7 @@ void describe(SynthesisFailure& f, const Problem& P) {
     f.message += " (whole-grid synthesis)";
 }
 
-template <class Catalog>
+template <int NW>
 void run(Problem& P, SynthesisResult& R) {
   const SynthesisOptions& o = P.o;
   const GridSize n = o.size;
@@ -426,8 +431,9 @@ void run(Problem& P, SynthesisResult& R) {
   std::vector<int32_t> all(static_cast<size_t>(N));
   for (int64_t i = 0; i < N; ++i) all[size_t(i)] = int32_t(i);
 
-  auto finish = [&](Solver<Catalog>& S) {
+  auto finish = [&](Solver<NW>& S) {
     R.stats.propagationSteps += S.pops();
+    R.stats.supportMisses += S.supportMisses();
     R.stats.catalogBytes = std::max(R.stats.catalogBytes,
         S.bytes() + P.baseDom.size() * sizeof(Word) + P.g.neighbor.size() * 4 +
         P.g.linkSite.size() * 6 + size_t(P.t.relationCount()) * size_t(P.k) * size_t(P.W) * sizeof(Word));
@@ -436,7 +442,7 @@ void run(Problem& P, SynthesisResult& R) {
   if (!blocks) {
     for (int attempt = 0; attempt < std::max(1, o.attempts); ++attempt) {
       ++R.stats.attempts;
-      Solver<Catalog> S(P, R.labels, R.stats, o.seed + uint64_t(attempt) * 0x9e3779b97f4a7c15ULL);
+      Solver<NW> S(P, R.labels, R.stats, o.seed + uint64_t(attempt) * 0x9e3779b97f4a7c15ULL);
       SynthesisFailure f;
       const bool ok = S.runBlock(all, false, order, f);
       finish(S);
@@ -449,7 +455,7 @@ void run(Problem& P, SynthesisResult& R) {
   }
 
   // Algorithm 3.4.
-  Solver<Catalog> S(P, R.labels, R.stats, o.seed);
+  Solver<NW> S(P, R.labels, R.stats, o.seed);
   SynthesisFailure f;
   if (!S.runBlock(all, true, Order::kScanline, f)) {
     describe(f, P);
@@ -548,8 +554,15 @@ SynthesisResult synthesize(const Example& ex, const SynthesisOptions& options) n
       }
     const uint64_t passes = uint64_t(std::max(1, options.blockPasses)) * uint64_t(std::max(1, options.attempts));
     P.maxAssignments = options.maxAssignments ? options.maxAssignments : 64ULL * uint64_t(options.size.count()) * passes + 1024;
-    if (options.propagator == Propagator::kSupportCount) run<SupportCatalog>(P, R);
-    else run<BitsetCatalog>(P, R);
+    switch (P.W) {  // paddedWordsFor(k <= 4096)
+      case 1: run<1>(P, R); break;
+      case 2: run<2>(P, R); break;
+      case 4: run<4>(P, R); break;
+      case 8: run<8>(P, R); break;
+      case 16: run<16>(P, R); break;
+      case 32: run<32>(P, R); break;
+      default: run<64>(P, R); break;
+    }
   } catch (const std::bad_alloc&) {
     R.ok = R.consistent = false;
     R.failure.kind = SynthesisFailure::kBadOptions;

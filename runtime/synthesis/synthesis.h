@@ -28,7 +28,6 @@
 namespace fgsg::rt::synthesis {
 
 enum class CellOrder { kScanline, kMinEntropy };
-enum class Propagator { kBitset, kSupportCount };
 
 struct SynthesisOptions {
   GridSize size{16, 16, 1};
@@ -40,7 +39,6 @@ struct SynthesisOptions {
   int blockPasses = 1;    // sweeps over all blocks
   int attempts = 1;       // whole-grid mode: restarts after a contradiction
   CellOrder order = CellOrder::kScanline;
-  Propagator propagator = Propagator::kBitset;
   bool uniformWeights = false;  // ignore example frequencies (the thesis's equal chance)
   std::array<bool, 3> periodic{false, false, false};
   std::optional<BorderSpec> border;  // unset: the example's own border declarations
@@ -64,6 +62,7 @@ struct SynthesisFailure {
 struct SynthesisStats {
   uint64_t assignments = 0;
   uint64_t propagationSteps = 0;   // sites popped by propagation
+  uint64_t supportMisses = 0;      // pops whose support was not memoised (catalog.h)
   int blocks = 0, blocksFailed = 0, blockRetries = 0;
   int attempts = 0;
   double seconds = 0;

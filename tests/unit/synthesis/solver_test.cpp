@@ -55,27 +55,15 @@ TEST_CASE("every example synthesizes a checker-clean model (whole grid and block
   }
 }
 
-TEST_CASE("minimum-entropy order and support-count propagation give checker-clean models", "[synthesis][solver]") {
+TEST_CASE("minimum-entropy order gives checker-clean models", "[synthesis][solver]") {
   Example ex = load("castle.txt");
   SynthesisOptions o;
   o.size = {20, 20, 6};
   o.attempts = 20;
   o.order = CellOrder::kMinEntropy;
   CHECK(runChecked(ex, o).ok);
-  o.order = CellOrder::kScanline;
-  o.propagator = Propagator::kSupportCount;
-  SynthesisResult a = runChecked(ex, o);
-  CHECK(a.ok);
-  o.propagator = Propagator::kBitset;
-  SynthesisResult b = runChecked(ex, o);
-  // Both propagators compute the same catalog, so the same seed gives the same model.
-  CHECK(a.labels == b.labels);
   o.block = {8, 8, 6};
-  o.propagator = Propagator::kSupportCount;
-  SynthesisResult c = runChecked(ex, o);
-  o.propagator = Propagator::kBitset;
-  SynthesisResult d = runChecked(ex, o);
-  CHECK(c.labels == d.labels);
+  CHECK(runChecked(ex, o).ok);
 }
 
 TEST_CASE("block modification never breaks consistency, even when blocks fail", "[synthesis][solver][blocks]") {
