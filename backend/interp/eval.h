@@ -46,6 +46,7 @@ class Evaluator {
   double num(const ir::Expr& e, const Frame& f) const {
     if (e.op == ir::ExprOp::Const) return e.num;
     if (e.op == ir::ExprOp::Param) return f.params[e.index];
+    if (e.op == ir::ExprOp::Attr) return attrs_[3 * e.index];
     return numSlow(e, f);
   }
   rt::Vec3 vec(const ir::Expr& e, const Frame& f) const;

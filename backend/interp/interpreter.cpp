@@ -46,7 +46,7 @@ class Interpreter final : public QueryHost {
  public:
   Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
               std::vector<double> attrs)
-      : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), shapes_(maxSlotCount(m)),
+      : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
         ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)) {}
 
   static uint32_t maxSlotCount(const ir::Module& m) {
@@ -325,42 +325,31 @@ class Interpreter final : public QueryHost {
     std::vector<double> none;
     execRoot(m_.axiom, rt::Scope{}, rt::GeomRef{}, rt::rootKey(opt_.seed), 0, 0, none.data(),
              UINT32_MAX);
+    WaitingShape shape;
     while (true) {
       auto bucket = buckets_.begin();
       while (bucket != buckets_.end() && bucket->second.empty()) ++bucket;
       if (bucket == buckets_.end()) break;
-      uint32_t s;
-      if (m_.mode == ir::DeriveMode::DepthFirst) {
-        s = bucket->second.back();
-        bucket->second.pop_back();
-      } else {
-        s = bucket->second.front();
-        bucket->second.pop_front();
-        // Breadth-first, the next shapes were written long ago and are cold: fetch them
-        // while this one is derived.
-        if (bucket->second.size() > 2) shapes_.prefetch(bucket->second[2]);
-      }
-      deriveShape(s);
-      shapes_.release(s);
+      // Taken out by copy: the queues grow (and may move) while the shape is derived.
+      bucket->second.pop(shape, params_);
+      deriveShape(shape);
     }
   }
 
-  void deriveShape(uint32_t s) {
-    const ir::Symbol& sym = m_.symbols[shapes_.symbol(s)];
-    // Copy what the rule reads: the store grows (and may move) while it runs.
-    params_.assign(shapes_.params(s), shapes_.params(s) + sym.slotCount);
-    params_.resize(maxSlots_, 0.0);
-    const rt::Scope scope = shapes_.scope(s);
-    const uint32_t depth = shapes_.depth(s);
-    rt::RandomStream rng{shapes_.key(s), 0};
-    Frame f{params_.data(), &rng, &scope, depth, shapes_.index(s), this};
+  void deriveShape(const WaitingShape& shape) {
+    const ir::Symbol& sym = m_.symbols[shape.symbol];
+    params_.resize(maxSlots_, 0.0);  // room for context parameters of any rule
+    const rt::Scope& scope = shape.scope;
+    const uint32_t depth = shape.depth;
+    rt::RandomStream rng{shape.key, 0};
+    Frame f{params_.data(), &rng, &scope, depth, shape.index, this};
     if (depth >= opt_.maxDepth) {
       // The depth limit cuts the derivation tree: deeper shapes stay terminal and the
       // rest of the tree is still derived. Named: the rule that created the shape.
       ++stats_.terminals;
       if (!depthLimitHit_) {
         depthLimitHit_ = true;
-        const uint32_t creator = shapes_.creator(s);
+        const uint32_t creator = shape.creator;
         const ir::Rule* r = creator == UINT32_MAX ? nullptr : &m_.rules[creator];
         depthWarning_ = {false, "R004", r ? r->loc.line : 0, r ? r->loc.col : 0,
                          "depth limit " + std::to_string(opt_.maxDepth) +
@@ -381,8 +370,8 @@ class Interpreter final : public QueryHost {
     ++ruleUses_[chosenRule_];
     if ((stats_.rewrites & 4095) == 0) checkTime();
     creatorRule_ = chosenRule_;
-    execRoot(alt->ops, scope, shapes_.geom(s), shapes_.key(s), depth + 1, shapes_.index(s), params_.data(),
-             shapes_.symbol(s), &rng);
+    execRoot(alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
+             shape.symbol, &rng);
     creatorRule_ = UINT32_MAX;
   }
 
@@ -406,6 +395,15 @@ class Interpreter final : public QueryHost {
 
   // Picks one alternative among the rules whose guard holds, weights normalised.
   const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f) {
+    // The common case: one unguarded rule with one branch of constant positive weight.
+    if (sym.rules.size() == 1) {
+      const ir::Rule& only = m_.rules[sym.rules[0]];
+      if (!isSpecific(only) && only.alternatives.size() == 1 &&
+          only.alternatives[0].probability.isConst() && only.alternatives[0].probability.num > 0) {
+        chosenRule_ = sym.rules[0];
+        return &only.alternatives[0];
+      }
+    }
     candidates_.clear();
     double total = 0;
     for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
@@ -450,14 +448,23 @@ class Interpreter final : public QueryHost {
     st.width = m_.turtle.width;
     st.stackBase = stack_.size();
     Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
-    children_.clear();
+    const bool depthFirst = m_.mode == ir::DeriveMode::DepthFirst;
+    if (depthFirst) {
+      marks_.clear();
+      for (const auto& [priority, queue] : buckets_) marks_.emplace_back(priority, queue.mark());
+    }
     Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
     execBlock(ops, st, ex, f);
     stack_.resize(st.stackBase);  // a successor may leave '[' open: close it
-    if (m_.mode == ir::DeriveMode::DepthFirst) {
-      for (auto it = children_.rbegin(); it != children_.rend(); ++it) enqueue(*it);
-    } else {
-      for (uint32_t c : children_) enqueue(c);
+    if (depthFirst) {
+      // A stack gives back the last shape first: reverse what this successor created so
+      // its first shape is derived first.
+      for (auto& [priority, queue] : buckets_) {
+        size_t mark = 0;
+        for (const auto& [p, m] : marks_)
+          if (p == priority) mark = m;
+        queue.reverseSince(mark);
+      }
     }
   }
 
@@ -470,13 +477,11 @@ class Interpreter final : public QueryHost {
     uint32_t childCount;
   };
 
-  void enqueue(uint32_t s) { bucketFor(m_.symbols[shapes_.symbol(s)].priority).push_back(s); }
-
   // Shapes wait in one queue per priority, highest priority first; most grammars have one.
-  std::deque<uint32_t>& bucketFor(int priority) {
+  ShapeQueue& bucketFor(int priority) {
     for (auto& [p, q] : buckets_)
       if (p == priority) return q;
-    buckets_.emplace_back(priority, std::deque<uint32_t>{});
+    buckets_.emplace_back(priority, ShapeQueue(paramStride_, m_.mode == ir::DeriveMode::DepthFirst));
     std::sort(buckets_.begin(), buckets_.end(),
               [](const auto& a, const auto& b) { return a.first > b.first; });
     return bucketFor(priority);
@@ -651,10 +656,15 @@ class Interpreter final : public QueryHost {
       ++stats_.terminals;
       return;
     }
-    const uint32_t id = shapes_.add(op.index, st.scope, st.geom, ex.depth, index,
-                                    rt::childKey(ex.key, index), creatorRule_, slots,
-                                    target.slotCount);
-    children_.push_back(id);
+    WaitingShape shape;
+    shape.key = rt::childKey(ex.key, index);
+    shape.symbol = op.index;
+    shape.depth = ex.depth;
+    shape.index = index;
+    shape.creator = creatorRule_;
+    shape.geom = st.geom;
+    shape.scope = st.scope;
+    bucketFor(target.priority).push(shape, slots, target.slotCount);
   }
 
   [[noreturn]] void shapeLimit(const ir::Op& op) {
@@ -998,11 +1008,11 @@ class Interpreter final : public QueryHost {
   std::vector<int> assetIndex_;
   rt::InstanceList out_;
   rt::DeriveStats stats_;
-  ShapeStore shapes_;
+  uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
   rt::GeometryArena arena_;
   rt::OcclusionIndex occluders_;
-  std::vector<std::pair<int, std::deque<uint32_t>>> buckets_;
-  std::vector<uint32_t> children_;
+  std::vector<std::pair<int, ShapeQueue>> buckets_;
+  std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
   std::vector<Saved> stack_;
   std::map<std::string, rt::synthesis::Example> examples_;
   std::vector<double> params_;

@@ -1,7 +1,10 @@
-// The live shapes of a sequential derivation, stored as structure-of-arrays. A shape's
-// slot is recycled once it has been derived, and parameters live in one pool with a
-// fixed stride (the largest parameter block of any symbol), so deriving allocates
-// nothing per shape and memory follows the number of shapes waiting, not the total.
+// The shapes of a sequential derivation that wait to be derived, one queue per priority.
+// Shapes are stored as records in the order they are taken: breadth-first a queue reads
+// from its front and appends at its back; depth-first it is a stack. Both walk memory
+// sequentially, which matters: a wide breadth-first frontier holds millions of shapes,
+// and reading them in scattered order made the derivation wait on memory. Nothing is
+// allocated per shape; parameters sit in one pool with a fixed stride (the largest
+// parameter block of any symbol).
 #pragma once
 
 #include "runtime/geometry.h"
@@ -9,69 +12,96 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace fgsg::backend {
 
-class ShapeStore {
+// A shape taken out of its queue, with everything deriving it needs.
+struct WaitingShape {
+  uint64_t key = 0;
+  uint32_t symbol = 0, depth = 0, index = 0;
+  uint32_t creator = UINT32_MAX;  // the rule that created it (UINT32_MAX: the axiom)
+  rt::GeomRef geom;
+  rt::Scope scope;
+};
+
+class ShapeQueue {
  public:
-  explicit ShapeStore(uint32_t paramStride = 0) : stride_(std::max<uint32_t>(paramStride, 1)) {}
+  ShapeQueue(uint32_t paramStride, bool lastInFirstOut)
+      : stride_(std::max<uint32_t>(paramStride, 1)), lifo_(lastInFirstOut) {}
 
-  uint32_t add(uint32_t symbol, const rt::Scope& scope, const rt::GeomRef& geom, uint32_t depth,
-               uint32_t index, uint64_t key, uint32_t creator, const double* params,
-               uint32_t slotCount) {
-    uint32_t s;
-    if (!free_.empty()) {
-      s = free_.back();
-      free_.pop_back();
-    } else {
-      s = static_cast<uint32_t>(symbol_.size());
-      symbol_.emplace_back(), scope_.emplace_back(), geom_.emplace_back(), depth_.emplace_back();
-      index_.emplace_back(), key_.emplace_back(), creator_.emplace_back();
-      params_.resize(params_.size() + stride_);
+  void push(const WaitingShape& shape, const double* params, uint32_t slotCount) {
+    if (tail_ == chunks_.size() * kChunk) grow();
+    Chunk& c = *chunks_[tail_ / kChunk];
+    const size_t i = tail_ % kChunk;
+    c.shapes[i] = shape;
+    std::copy(params, params + slotCount, c.params.begin() + i * stride_);
+    ++tail_;
+  }
+
+  bool empty() const { return head_ == tail_; }
+
+  // Takes the next shape; its parameters are copied to `params` (stride values).
+  void pop(WaitingShape& out, std::vector<double>& params) {
+    const size_t at = lifo_ ? tail_ - 1 : head_;
+    const Chunk& c = *chunks_[at / kChunk];
+    const size_t i = at % kChunk;
+    out = c.shapes[i];
+    params.assign(c.params.begin() + i * stride_, c.params.begin() + (i + 1) * stride_);
+    if (lifo_) {
+      --tail_;
+      return;
     }
-    symbol_[s] = symbol;
-    scope_[s] = scope;
-    geom_[s] = geom;
-    depth_[s] = depth;
-    index_[s] = index;
-    key_[s] = key;
-    creator_[s] = creator;
-    std::copy(params, params + slotCount, params_.begin() + static_cast<size_t>(s) * stride_);
-    return s;
+    ++head_;
+    if (head_ == tail_) {
+      head_ = tail_ = 0;
+    } else if (head_ == kChunk) {
+      // The first chunk is used up: move it to the back for reuse.
+      std::rotate(chunks_.begin(), chunks_.begin() + 1, chunks_.end());
+      head_ -= kChunk;
+      tail_ -= kChunk;
+    } else if (i + 4 < kChunk) {
+      __builtin_prefetch(&c.shapes[i + 4]);
+      __builtin_prefetch(reinterpret_cast<const char*>(&c.shapes[i + 4]) + 64);
+      __builtin_prefetch(reinterpret_cast<const char*>(&c.shapes[i + 4]) + 128);
+    }
   }
 
-  void prefetch(uint32_t s) const {
-    __builtin_prefetch(&scope_[s]);
-    __builtin_prefetch(reinterpret_cast<const char*>(&scope_[s]) + 64);
-    __builtin_prefetch(params_.data() + static_cast<size_t>(s) * stride_);
-    __builtin_prefetch(&key_[s]);
+  // The position the next push goes to; with reverseSince, a stack hands out the
+  // shapes one successor created in the order the successor wrote them.
+  size_t mark() const { return tail_; }
+  void reverseSince(size_t mark) {
+    if (!lifo_) return;
+    for (size_t a = mark, b = tail_ - 1; tail_ > 0 && a < b; ++a, --b) {
+      Chunk& ca = *chunks_[a / kChunk];
+      Chunk& cb = *chunks_[b / kChunk];
+      std::swap(ca.shapes[a % kChunk], cb.shapes[b % kChunk]);
+      std::swap_ranges(ca.params.begin() + (a % kChunk) * stride_,
+                       ca.params.begin() + (a % kChunk + 1) * stride_,
+                       cb.params.begin() + (b % kChunk) * stride_);
+    }
   }
-
-  // The shape has been derived: its slot may be reused.
-  void release(uint32_t s) { free_.push_back(s); }
-
-  size_t live() const { return symbol_.size() - free_.size(); }
-  uint32_t symbol(uint32_t s) const { return symbol_[s]; }
-  const rt::Scope& scope(uint32_t s) const { return scope_[s]; }
-  const rt::GeomRef& geom(uint32_t s) const { return geom_[s]; }
-  uint32_t depth(uint32_t s) const { return depth_[s]; }
-  uint32_t index(uint32_t s) const { return index_[s]; }
-  uint64_t key(uint32_t s) const { return key_[s]; }
-  uint32_t creator(uint32_t s) const { return creator_[s]; }  // rule index or UINT32_MAX
-  const double* params(uint32_t s) const { return params_.data() + static_cast<size_t>(s) * stride_; }
 
  private:
+  // Shapes live in fixed chunks that are recycled, so a queue never copies the shapes it
+  // holds when it grows or drains.
+  static constexpr size_t kChunk = 4096;
+  struct Chunk {
+    std::vector<WaitingShape> shapes;
+    std::vector<double> params;
+  };
+  void grow() {
+    auto c = std::make_unique<Chunk>();
+    c->shapes.resize(kChunk);
+    c->params.resize(kChunk * stride_);
+    chunks_.push_back(std::move(c));
+  }
+
   uint32_t stride_;
-  std::vector<uint32_t> symbol_;
-  std::vector<rt::Scope> scope_;
-  std::vector<rt::GeomRef> geom_;
-  std::vector<uint32_t> depth_;
-  std::vector<uint32_t> index_;
-  std::vector<uint64_t> key_;
-  std::vector<uint32_t> creator_;
-  std::vector<double> params_;
-  std::vector<uint32_t> free_;
+  bool lifo_;
+  size_t head_ = 0, tail_ = 0;  // positions over the chunks in order
+  std::vector<std::unique_ptr<Chunk>> chunks_;
 };
 
 }  // namespace fgsg::backend
