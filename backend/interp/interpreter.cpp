@@ -89,6 +89,13 @@ class Interpreter final : public QueryHost {
   }
 
  private:
+  // A branch of a rule that applies, with its weight.
+  struct Candidate {
+    const ir::Alternative* alt;
+    uint32_t rule;
+    double weight;
+  };
+
   // ------------------------------------------------------------ set-up
 
   void checkEnvironment() {
@@ -413,28 +420,39 @@ class Interpreter final : public QueryHost {
       // Context needs a string of neighbours: only a parallel derivation has one.
       if (!r.left.empty() || !r.right.empty()) continue;
       if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
-      for (const auto& alt : r.alternatives) {
-        const double w = eval_.num(alt.probability, f);
-        if (!(w >= 0) || !std::isfinite(w))
-          throw DeriveError{alt.probability.loc, "R008",
-                            "a probability evaluated to " + std::to_string(w) +
-                                "; probabilities must be finite and not negative"};
-        if (w > 0) {
-          candidates_.push_back({&alt, ri, w});
-          total += w;
-        }
-      }
+      addCandidates(r, ri, f, total);
     }
     if (candidates_.empty()) return nullptr;
-    chosenRule_ = candidates_.front().rule;
-    if (candidates_.size() == 1) return candidates_.front().alt;
-    double pick = f.rng->next() * total;
-    for (const auto& c : candidates_) {
-      chosenRule_ = c.rule;
-      if (pick < c.weight) return c.alt;
-      pick -= c.weight;
+    const Candidate& pick = pickCandidate(*f.rng, total);
+    chosenRule_ = pick.rule;
+    return pick.alt;
+  }
+
+  // Adds the branches of a rule that applies, with their weights, to the candidates.
+  void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total) {
+    for (const auto& alt : r.alternatives) {
+      const double w = eval_.num(alt.probability, f);
+      if (!(w >= 0) || !std::isfinite(w))
+        throw DeriveError{alt.probability.loc, "R008",
+                          "a probability evaluated to " + std::to_string(w) +
+                              "; probabilities must be finite and not negative"};
+      if (w > 0) {
+        candidates_.push_back({&alt, ri, w});
+        total += w;
+      }
     }
-    return candidates_.back().alt;
+  }
+
+  // One candidate, chosen with probability proportional to its weight; a single
+  // candidate takes no random number, so adding an impossible branch changes nothing.
+  const Candidate& pickCandidate(rt::RandomStream& rng, double total) const {
+    if (candidates_.size() == 1) return candidates_.front();
+    double x = rng.next() * total;
+    for (const auto& c : candidates_) {
+      if (x < c.weight) return c;
+      x -= c.weight;
+    }
+    return candidates_.back();
   }
 
   // Runs one successor for a shape (or the axiom) and queues the shapes it creates.
@@ -839,23 +857,10 @@ class Interpreter final : public QueryHost {
       if (!matchLeft(r, str, args, at) || !matchRight(r, str, args, at)) continue;
       Frame f{params_.data(), &rng, nullptr, step, str[at].index, this};
       if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
-      for (const auto& alt : r.alternatives) {
-        const double w = eval_.num(alt.probability, f);
-        if (!(w >= 0) || !std::isfinite(w))
-          throw DeriveError{alt.probability.loc, "R008", "a probability must be finite and not negative"};
-        if (w > 0) candidates_.push_back({&alt, ri, w}), total += w;
-      }
+      addCandidates(r, ri, f, total);
     }
     if (candidates_.empty()) return nullptr;
-    const Candidate* pick = &candidates_.front();
-    if (candidates_.size() > 1) {
-      double x = rng.next() * total;
-      for (const auto& c : candidates_) {
-        pick = &c;
-        if (x < c.weight) break;
-        x -= c.weight;
-      }
-    }
+    const Candidate* pick = &pickCandidate(rng, total);
     chosenRule_ = pick->rule;
     // Rebuild the chosen rule's parameter block (another rule may have overwritten it).
     const ir::Rule& r = m_.rules[pick->rule];
@@ -993,12 +998,6 @@ class Interpreter final : public QueryHost {
       }
     }
   }
-
-  struct Candidate {
-    const ir::Alternative* alt;
-    uint32_t rule;
-    double weight;
-  };
 
   const ir::Module& m_;
   const rt::DeriveOptions& opt_;
