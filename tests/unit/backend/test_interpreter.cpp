@@ -342,3 +342,20 @@ TEST_CASE("Synthesize fills the scope with pieces; labels with rules become shap
   REQUIRE(missing.messages.size() == 1);
   CHECK(missing.messages[0].code == "R013");
 }
+
+TEST_CASE("Depth-first derives a shape's successors before its siblings", "[order]") {
+  const std::string rules = R"(
+    Axiom ~> A B;
+    A ~> I("cube") C D;
+    C ~> I("sphere");
+    D ~> I("ico");
+    B ~> I("disc");
+  )";
+  auto order = [](const rt::DeriveResult& r) {
+    std::string s;
+    for (const auto& inst : r.instances.instances) s += r.instances.assets[inst.asset] + " ";
+    return s;
+  };
+  CHECK(order(deriveText(rules)) == "cube disc sphere ico ");
+  CHECK(order(deriveText("derive depthfirst;\n" + rules)) == "cube sphere ico disc ");
+}
