@@ -48,7 +48,7 @@ inline void cosSinDegrees(double degrees, double& c, double& s) {
   thread_local Entry memo[64];
   uint64_t bits;
   std::memcpy(&bits, &degrees, sizeof bits);
-  Entry& e = memo[(bits ^ (bits >> 29) ^ (bits >> 47)) & 63];
+  Entry& e = memo[(bits * 0x9e3779b97f4a7c15ull) >> 58];  // all bits, sign included
   if (e.bits != bits) {
     const double r = degrees * 3.14159265358979323846 / 180.0;
     e = {bits, std::cos(r), std::sin(r)};
