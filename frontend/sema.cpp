@@ -186,11 +186,9 @@ class Analyzer {
       for (const auto& c : item.children) collectItemSymbols(c);
       return;
     }
-    if (isShapeItemNow(item)) useArity(item.name, item.args.size(), item.range, false);
+    if (isShapeItem(item, res_)) useArity(item.name, item.args.size(), item.range, false);
     for (const auto& b : item.body) collectSuccessorSymbols(b);
   }
-  // During collection the rule table is complete (rule heads are collected first).
-  bool isShapeItemNow(const Item& item) const { return isShapeItem(item, res_); }
 
   // ------------------------------------------------------------ parameter types
 
@@ -239,7 +237,7 @@ class Analyzer {
         for (const auto& c : item.children) visit(c);
         return;
       }
-      if (isShapeItemNow(item)) {
+      if (isShapeItem(item, res_)) {
         int idx = res_.findSymbol(item.name);
         if (idx >= 0) {
           auto& params = res_.symbols[idx].params;

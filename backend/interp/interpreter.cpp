@@ -13,7 +13,6 @@
 #include <chrono>
 #include <functional>
 #include <cmath>
-#include <deque>
 #include <algorithm>
 #include <map>
 
@@ -109,7 +108,6 @@ class Interpreter final : public QueryHost {
 
   // Every asset is loaded before deriving, so a missing file is reported at its I().
   void resolveAssets() {
-    assetIndex_.assign(m_.assets.size(), -1);
     std::vector<ir::Loc> firstUse(m_.assets.size());
     std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
       for (const auto& op : b) {
@@ -122,8 +120,7 @@ class Interpreter final : public QueryHost {
       for (const auto& a : r.alternatives) visit(a.ops);
     for (size_t i = 0; i < m_.assets.size(); ++i) {
       std::string error;
-      assetIndex_[i] = assets_.resolve(m_.assets[i], error);
-      if (assetIndex_[i] < 0) throw DeriveError{firstUse[i], "R003", error};
+      if (assets_.resolve(m_.assets[i], error) < 0) throw DeriveError{firstUse[i], "R003", error};
     }
   }
 
@@ -1004,7 +1001,6 @@ class Interpreter final : public QueryHost {
   rt::AssetLibrary& assets_;
   Evaluator eval_;
   Clock::time_point start_;
-  std::vector<int> assetIndex_;
   rt::InstanceList out_;
   rt::DeriveStats stats_;
   uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
