@@ -26,6 +26,7 @@
 // every case, O(sites x edges x k) counters).
 #pragma once
 
+#include "runtime/synthesis/site_array.h"
 #include "runtime/synthesis/site_graph.h"
 #include "runtime/synthesis/transitions.h"
 
@@ -101,8 +102,10 @@ template <int NW>
 class BitsetCatalog {
  public:
   BitsetCatalog(const TransitionTable& t, const SiteGraph& g)
-      : t_(t), g_(g), memo_(t), dom_(size_t(g.siteCount) * NW, 0), flags_(size_t(g.siteCount), 0),
-        queue_(std::bit_ceil(size_t(g.siteCount))), queueMask_(queue_.size() - 1) {}
+      : t_(t), g_(g), memo_(t), dom_(size_t(g.siteCount) * NW), flags_(size_t(g.siteCount)),
+        queue_(std::bit_ceil(size_t(g.siteCount))), queueMask_(queue_.size() - 1) {
+    flags_.fill(0);  // domains are written when a site is activated, before any read
+  }
 
   Word* domain(int64_t site) { return &dom_[size_t(site) * NW]; }
   const Word* domain(int64_t site) const { return &dom_[size_t(site) * NW]; }
@@ -175,10 +178,10 @@ class BitsetCatalog {
   const TransitionTable& t_;
   const SiteGraph& g_;
   SupportMemo<NW> memo_;
-  std::vector<Word> dom_;
-  std::vector<uint8_t> flags_;
+  SiteArray<Word> dom_;
+  SiteArray<uint8_t> flags_;
   // Sites to pop, first in first out: a ring buffer over [head_, tail_).
-  std::vector<int32_t> queue_;
+  SiteArray<int32_t> queue_;
   size_t queueMask_, head_ = 0, tail_ = 0;
   std::vector<int32_t> changed_;
   bool track_ = false;
@@ -187,8 +190,7 @@ class BitsetCatalog {
 
 template <int NW>
 int64_t BitsetCatalog<NW>::propagate() {
-  const int slots = g_.slots;
-  const int32_t* neighbor = g_.neighbor.data();
+  const uint8_t* face = g_.face.data();
   int64_t failed = -1;
   while (head_ != tail_ && failed < 0) {
     const int32_t v = queue_[head_++ & queueMask_];
@@ -197,9 +199,9 @@ int64_t BitsetCatalog<NW>::propagate() {
     // Active neighbours, except settled ones (see the top of this file).
     int32_t nu[kMaxSlots];
     int nd[kMaxSlots], n = 0;
-    const int32_t* nb = neighbor + size_t(v) * size_t(slots);
-    for (int d = 0; d < slots; ++d) {
-      const int32_t u = nb[d];
+    const uint8_t fv = face[size_t(v)];
+    for (int d = 0; d < kMaxSlots; ++d) {  // slots past g_.slots have no neighbour
+      const int32_t u = g_.neighbor(v, fv, d);
       if (u < 0) continue;
       const uint8_t f = flags_[size_t(u)];
       if ((f & kActive) && (f & (kDecided | kQueued)) != kDecided) {

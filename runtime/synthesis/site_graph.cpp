@@ -6,26 +6,24 @@ SiteGraph makeGridGraph(GridSize size, std::array<bool, 3> periodic) {
   SiteGraph g;
   g.siteCount = size.count();
   g.slots = size.nz > 1 ? 6 : 4;
-  g.neighbor.assign(size_t(g.siteCount) * size_t(g.slots), -1);
   const int n[3] = {size.nx, size.ny, size.nz};
-  int64_t i = 0;
+  const int64_t stride[3] = {1, int64_t(size.nx), int64_t(size.nx) * size.ny};
+  for (int d = 0; d < 6; ++d) {
+    const int axis = d / 2;
+    const int64_t sign = d % 2 == 0 ? 1 : -1;
+    g.step[size_t(d)] = int32_t(sign * stride[axis]);
+    // A periodic axis of extent 1 would make a cell its own neighbour: no wrap.
+    if (periodic[size_t(axis)] && n[axis] >= 2) g.wrap[size_t(d)] = int32_t(-sign * (n[axis] - 1) * stride[axis]);
+  }
+  g.face.resize(size_t(g.siteCount));
+  uint8_t* f = g.face.data();
   for (int z = 0; z < size.nz; ++z)
-    for (int y = 0; y < size.ny; ++y)
-      for (int x = 0; x < size.nx; ++x, ++i) {
-        const int p[3] = {x, y, z};
-        for (int d = 0; d < g.slots; ++d) {
-          const int axis = d / 2, step = d % 2 == 0 ? 1 : -1;
-          int q[3] = {p[0], p[1], p[2]};
-          q[axis] += step;
-          if (q[axis] < 0 || q[axis] >= n[axis]) {
-            // A periodic axis of extent 1 would make a cell its own neighbour: skip it.
-            if (!periodic[size_t(axis)] || n[axis] < 2) continue;
-            q[axis] = (q[axis] + n[axis]) % n[axis];
-          }
-          g.neighbor[size_t(i) * size_t(g.slots) + size_t(d)] =
-              int32_t(q[0] + int64_t(size.nx) * (q[1] + int64_t(size.ny) * q[2]));
-        }
-      }
+    for (int y = 0; y < size.ny; ++y) {
+      const uint8_t yz = uint8_t((y == size.ny - 1 ? 4 : 0) | (y == 0 ? 8 : 0) | (z == size.nz - 1 ? 16 : 0) |
+                                 (z == 0 ? 32 : 0));
+      for (int x = 0; x < size.nx; ++x)
+        *f++ = uint8_t(yz | (x == size.nx - 1 ? 1 : 0) | (x == 0 ? 2 : 0));
+    }
   return g;
 }
 

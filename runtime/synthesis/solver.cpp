@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <queue>
 #include <tuple>
@@ -28,14 +29,18 @@ struct Problem {
   int k = 0, W = 0;                          // W: words per domain, paddedWordsFor(k)
   TransitionTable t;
   SiteGraph g;
-  std::vector<Word> baseDom;                 // per cell: labels borders/masks/symmetry allow
+  // Per cell: the labels borders/masks/symmetry allow, as an index into a table of the
+  // few distinct sets (one per region and face combination, one per symmetry fixed point):
+  // 4 bytes a cell rather than a domain's 16 or more.
+  std::vector<Word> baseTable;
+  std::vector<uint32_t> baseIndex;
   std::vector<std::vector<double>> weight;   // per region: label weights
   std::vector<Word> connectMask;             // labels of the connectivity constraint
   Clock::time_point start;
   uint64_t maxAssignments = 0;
 
   Problem(const Example& e, const SynthesisOptions& opt) : ex(e), o(opt) {}
-  const Word* base(int64_t c) const { return &baseDom[size_t(c) * size_t(W)]; }
+  const Word* base(int64_t c) const { return &baseTable[size_t(baseIndex[size_t(c)]) * size_t(W)]; }
   const std::vector<double>& weights(int64_t c) const {
     return weight[o.weights.region.empty() ? 0 : o.weights.region[size_t(c)]];
   }
@@ -115,8 +120,7 @@ bool compile(Problem& P, std::string& error) {
 
   // Base domains: region ∩ borders ∩ symmetry fixed points.
   BorderSpec border = o.border ? *o.border : ex.border;
-  P.baseDom.assign(size_t(o.size.count()) * size_t(P.W), 0);
-  const int n[3] = {o.size.nx, o.size.ny, o.size.nz};
+  P.baseIndex.resize(size_t(o.size.count()));
   // Per face: the labels its cells may hold (all when the face is unconstrained).
   std::vector<Word> faceMask(6 * size_t(P.W), ~Word(0));
   for (int f = 0; f < 6; ++f) {
@@ -140,20 +144,30 @@ bool compile(Problem& P, std::string& error) {
     if (out >= 0 && out < P.k)
       for (int w = 0; w < P.W; ++w) m[w] &= P.t.row(f, out)[w];
   }
-  int64_t c = 0;
-  for (int z = 0; z < n[2]; ++z)
-    for (int y = 0; y < n[1]; ++y)
-      for (int x = 0; x < n[0]; ++x, ++c) {
-        Word* d = &P.baseDom[size_t(c) * size_t(P.W)];
-        const size_t r = o.weights.region.empty() ? 0 : o.weights.region[size_t(c)];
-        std::copy_n(&regionDom[r * size_t(P.W)], P.W, d);
-        const int p[3] = {x, y, z};
-        for (int f = 0; f < 6; ++f)
-          if (p[f / 2] == (f % 2 == 0 ? 0 : n[f / 2] - 1))
-            for (int w = 0; w < P.W; ++w) d[w] &= faceMask[size_t(f) * size_t(P.W) + size_t(w)];
-      }
+  // Face f of the border (xmin, xmax, ymin, ...) is the one slot f ^ 1 points through:
+  // the site graph's face bits, in slot order, name the border faces a cell lies on.
+  const size_t W = size_t(P.W);
+  std::vector<uint32_t> entry(regions * 64, UINT32_MAX);  // (region, face bits) -> table index
+  for (int64_t c = 0; c < o.size.count(); ++c) {
+    const size_t r = o.weights.region.empty() ? 0 : o.weights.region[size_t(c)];
+    const unsigned faces = P.g.face[size_t(c)];
+    uint32_t& e = entry[r * 64 + faces];
+    if (e == UINT32_MAX) {
+      e = uint32_t(P.baseTable.size() / W);
+      P.baseTable.insert(P.baseTable.end(), &regionDom[r * W], &regionDom[r * W] + W);
+      Word* d = &P.baseTable[size_t(e) * W];
+      for (int f = 0; f < 6; ++f)
+        if ((faces >> (f ^ 1)) & 1)
+          for (size_t w = 0; w < W; ++w) d[w] &= faceMask[size_t(f) * W + w];
+    }
+    P.baseIndex[size_t(c)] = e;
+  }
   for (const auto& [c, f] : selfMaps) {
-    Word* d = &P.baseDom[size_t(c) * size_t(P.W)];
+    const uint32_t e = uint32_t(P.baseTable.size() / W);
+    P.baseTable.insert(P.baseTable.end(), W, 0);
+    std::copy_n(P.base(c), W, &P.baseTable[size_t(e) * W]);
+    P.baseIndex[size_t(c)] = e;
+    Word* d = &P.baseTable[size_t(e) * W];
     for (int b = 0; b < P.k; ++b)
       if (f[size_t(b)] != b) d[b >> 6] &= ~(Word(1) << (b & 63));
   }
@@ -178,7 +192,7 @@ class Solver {
  public:
   Solver(Problem& P, LabelGrid& M, SynthesisStats& stats, uint64_t seed)
       : P_(P), M_(M), stats_(stats), cat_(P.t, P.g), rng_(seed),
-        assigned_(size_t(P.size.count()), 0), mark_(size_t(P.size.count()), 0) {}
+        assigned_(size_t(P.size.count())) {}
 
   size_t bytes() const { return cat_.bytes(); }
   uint64_t pops() const { return cat_.pops(); }
@@ -340,6 +354,7 @@ class Solver {
     constexpr int W = NW;
     const Word* conn = P_.connectMask.data();
     std::vector<int32_t> frontier;
+    if (mark_.empty()) mark_.assign(size_t(P_.size.count()), 0);
     auto hasConnect = [&](const Word* d) {
       for (int w = 0; w < W; ++w)
         if (d[w] & conn[w]) return true;
@@ -400,7 +415,8 @@ class Solver {
   SynthesisStats& stats_;
   BitsetCatalog<NW> cat_;
   Rng rng_;
-  std::vector<uint8_t> assigned_, mark_;
+  SiteArray<uint8_t> assigned_;  // written when a site is activated
+  std::vector<uint8_t> mark_;     // only for connectivity
 };
 
 void describe(SynthesisFailure& f, const Problem& P) {
@@ -435,7 +451,7 @@ void run(Problem& P, SynthesisResult& R) {
     R.stats.propagationSteps += S.pops();
     R.stats.supportMisses += S.supportMisses();
     R.stats.catalogBytes = std::max(R.stats.catalogBytes,
-        S.bytes() + P.baseDom.size() * sizeof(Word) + P.g.neighbor.size() * 4 +
+        S.bytes() + P.baseTable.size() * sizeof(Word) + P.baseIndex.size() * 4 + P.g.face.size() +
         P.g.linkSite.size() * 6 + size_t(P.t.relationCount()) * size_t(P.k) * size_t(P.W) * sizeof(Word));
   };
 

@@ -127,3 +127,30 @@ TEST_CASE("catalog propagation equals naive arc consistency (k = 100, two words)
   for (uint64_t seed = 1; seed <= 2; ++seed) steps += compareWithNaive<4>(ex, {6, 5, 4}, seed, 0.8);
   CHECK(steps > 20);
 }
+
+TEST_CASE("grid site graph computes the neighbours of every slot from coordinates", "[synthesis][catalog]") {
+  // Computed neighbours (face bits, steps, wraps) against the plain coordinate rule.
+  for (GridSize size : {GridSize{5, 4, 3}, GridSize{7, 3, 1}, GridSize{1, 2, 4}, GridSize{2, 2, 2}})
+    for (int per = 0; per < 8; ++per) {
+      const std::array<bool, 3> periodic{(per & 1) != 0, (per & 2) != 0, (per & 4) != 0};
+      const SiteGraph g = makeGridGraph(size, periodic);
+      CHECK(g.slots == (size.nz > 1 ? 6 : 4));
+      const int n[3] = {size.nx, size.ny, size.nz};
+      int64_t i = 0;
+      for (int z = 0; z < size.nz; ++z)
+        for (int y = 0; y < size.ny; ++y)
+          for (int x = 0; x < size.nx; ++x, ++i)
+            for (int d = 0; d < 6; ++d) {
+              int q[3] = {x, y, z};
+              const int axis = d / 2;
+              q[axis] += d % 2 == 0 ? 1 : -1;
+              int64_t expect = -1;
+              if (d < g.slots && q[axis] >= 0 && q[axis] < n[axis]) expect = q[0] + int64_t(size.nx) * (q[1] + int64_t(size.ny) * q[2]);
+              else if (d < g.slots && periodic[size_t(axis)] && n[axis] >= 2) {
+                q[axis] = (q[axis] + n[axis]) % n[axis];
+                expect = q[0] + int64_t(size.nx) * (q[1] + int64_t(size.ny) * q[2]);
+              }
+              CHECK(g.at(i, d) == expect);
+            }
+    }
+}
