@@ -1,15 +1,11 @@
 #include "backend/interp/eval.h"
 
+#include "runtime/builtins_math.h"
+
 #include <cmath>
 #include <cstdlib>
 
 namespace fgsg::backend {
-namespace {
-
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-
-}  // namespace
-
 double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
   using ir::ExprOp;
   switch (e.op) {
@@ -18,25 +14,30 @@ double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
     case ExprOp::Attr: return attrs_[3 * e.index];
     case ExprOp::Neg: return -num(e.args[0], f);
     case ExprOp::Not: return num(e.args[0], f) == 0.0 ? 1.0 : 0.0;
-    case ExprOp::Add: return num(e.args[0], f) + num(e.args[1], f);
-    case ExprOp::Sub: return num(e.args[0], f) - num(e.args[1], f);
-    case ExprOp::Mul: return num(e.args[0], f) * num(e.args[1], f);
-    case ExprOp::Div: return num(e.args[0], f) / num(e.args[1], f);
-    case ExprOp::Mod: return std::fmod(num(e.args[0], f), num(e.args[1], f));
-    case ExprOp::Pow: return std::pow(num(e.args[0], f), num(e.args[1], f));
+    // Operands are evaluated left to right, spelled out: C++ leaves the order of operands
+    // unspecified, and the order decides which Rand gets which draw.
+    case ExprOp::Add: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x + y; }
+    case ExprOp::Sub: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x - y; }
+    case ExprOp::Mul: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x * y; }
+    case ExprOp::Div: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x / y; }
+    case ExprOp::Mod: { const double x = num(e.args[0], f), y = num(e.args[1], f); return fgsg_rt_fmod(x, y); }
+    case ExprOp::Pow: { const double x = num(e.args[0], f), y = num(e.args[1], f); return fgsg_rt_pow(x, y); }
     case ExprOp::Eq:
     case ExprOp::Ne: {
       bool eq;
-      if (e.args[0].type == ir::Type::Vec3)
-        eq = vec(e.args[0], f) == vec(e.args[1], f);
-      else
-        eq = num(e.args[0], f) == num(e.args[1], f);
+      if (e.args[0].type == ir::Type::Vec3) {
+        const rt::Vec3 x = vec(e.args[0], f), y = vec(e.args[1], f);
+        eq = x == y;
+      } else {
+        const double x = num(e.args[0], f), y = num(e.args[1], f);
+        eq = x == y;
+      }
       return (e.op == ExprOp::Eq) == eq ? 1.0 : 0.0;
     }
-    case ExprOp::Lt: return num(e.args[0], f) < num(e.args[1], f) ? 1.0 : 0.0;
-    case ExprOp::Le: return num(e.args[0], f) <= num(e.args[1], f) ? 1.0 : 0.0;
-    case ExprOp::Gt: return num(e.args[0], f) > num(e.args[1], f) ? 1.0 : 0.0;
-    case ExprOp::Ge: return num(e.args[0], f) >= num(e.args[1], f) ? 1.0 : 0.0;
+    case ExprOp::Lt: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x < y ? 1.0 : 0.0; }
+    case ExprOp::Le: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x <= y ? 1.0 : 0.0; }
+    case ExprOp::Gt: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x > y ? 1.0 : 0.0; }
+    case ExprOp::Ge: { const double x = num(e.args[0], f), y = num(e.args[1], f); return x >= y ? 1.0 : 0.0; }
     case ExprOp::And: return truth(e.args[0], f) && truth(e.args[1], f) ? 1.0 : 0.0;
     case ExprOp::Or: return truth(e.args[0], f) || truth(e.args[1], f) ? 1.0 : 0.0;
     case ExprOp::Select: return truth(e.args[0], f) ? num(e.args[1], f) : num(e.args[2], f);
@@ -44,7 +45,7 @@ double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
     case ExprOp::Rand: {
       // Bounds first, then the draw: the order every engine follows.
       const double lo = num(e.args[0], f), hi = num(e.args[1], f);
-      return lo + (hi - lo) * f.rng->next();
+      return fgsg_rt_rand_scale(lo, hi, f.rng->next());
     }
     case ExprOp::Query: return query(e, f);
     case ExprOp::VecElem: return vec(e.args[0], f)[e.index];
@@ -61,17 +62,28 @@ rt::Vec3 Evaluator::vec(const ir::Expr& e, const Frame& f) const {
     case ExprOp::Attr: return {attrs_[3 * e.index], attrs_[3 * e.index + 1], attrs_[3 * e.index + 2]};
     case ExprOp::MakeVec: return {num(e.args[0], f), num(e.args[1], f), num(e.args[2], f)};
     case ExprOp::Neg: return -vec(e.args[0], f);
-    case ExprOp::Add: return vec(e.args[0], f) + vec(e.args[1], f);
-    case ExprOp::Sub: return vec(e.args[0], f) - vec(e.args[1], f);
+    case ExprOp::Add: { const rt::Vec3 x = vec(e.args[0], f), y = vec(e.args[1], f); return x + y; }
+    case ExprOp::Sub: { const rt::Vec3 x = vec(e.args[0], f), y = vec(e.args[1], f); return x - y; }
     case ExprOp::Mul:
-      if (e.args[0].type == ir::Type::Vec3) return vec(e.args[0], f) * num(e.args[1], f);
-      return num(e.args[0], f) * vec(e.args[1], f);
-    case ExprOp::Div: return vec(e.args[0], f) / num(e.args[1], f);
+      if (e.args[0].type == ir::Type::Vec3) {
+        const rt::Vec3 v = vec(e.args[0], f);
+        const double s = num(e.args[1], f);
+        return v * s;
+      } else {
+        const double s = num(e.args[0], f);
+        const rt::Vec3 v = vec(e.args[1], f);
+        return s * v;
+      }
+    case ExprOp::Div: {
+      const rt::Vec3 v = vec(e.args[0], f);
+      const double s = num(e.args[1], f);
+      return v / s;
+    }
     case ExprOp::Select: return truth(e.args[0], f) ? vec(e.args[1], f) : vec(e.args[2], f);
     case ExprOp::Call:
       if (static_cast<ir::Builtin>(e.index) == ir::Builtin::Normalize) {
         rt::Vec3 v = vec(e.args[0], f);
-        double n = v.norm();
+        double n = fgsg_rt_vec_length(v.x(), v.y(), v.z());
         return n > 0 ? rt::Vec3(v / n) : v;
       }
       break;
@@ -95,15 +107,15 @@ double Evaluator::call(const ir::Expr& e, const Frame& f) const {
   using ir::Builtin;
   auto a = [&](int k) { return num(e.args[k], f); };
   switch (static_cast<Builtin>(e.index)) {
-    case Builtin::Sin: return std::sin(a(0) * kDegToRad);
-    case Builtin::Cos: return std::cos(a(0) * kDegToRad);
-    case Builtin::Tan: return std::tan(a(0) * kDegToRad);
-    case Builtin::Asin: return std::asin(a(0)) / kDegToRad;
-    case Builtin::Acos: return std::acos(a(0)) / kDegToRad;
-    case Builtin::Atan: return std::atan(a(0)) / kDegToRad;
+    case Builtin::Sin: return fgsg_rt_sin_deg(a(0));
+    case Builtin::Cos: return fgsg_rt_cos_deg(a(0));
+    case Builtin::Tan: return fgsg_rt_tan_deg(a(0));
+    case Builtin::Asin: return fgsg_rt_asin_deg(a(0));
+    case Builtin::Acos: return fgsg_rt_acos_deg(a(0));
+    case Builtin::Atan: return fgsg_rt_atan_deg(a(0));
     case Builtin::Atan2: {
       const double y = a(0), x = a(1);
-      return std::atan2(y, x) / kDegToRad;
+      return fgsg_rt_atan2_deg(y, x);
     }
     case Builtin::Sqrt: return std::sqrt(a(0));
     case Builtin::Abs: return std::abs(a(0));
@@ -111,7 +123,7 @@ double Evaluator::call(const ir::Expr& e, const Frame& f) const {
     case Builtin::Max: { const double x = a(0), y = a(1); return std::max(x, y); }
     case Builtin::Floor: return std::floor(a(0));
     case Builtin::Ceil: return std::ceil(a(0));
-    case Builtin::Round: return std::round(a(0));
+    case Builtin::Round: return fgsg_rt_round(a(0));
     case Builtin::Clamp: {
       const double x = a(0), lo = a(1), hi = a(2);
       return std::min(std::max(x, lo), hi);
@@ -120,12 +132,18 @@ double Evaluator::call(const ir::Expr& e, const Frame& f) const {
       const double x = a(0), y = a(1), t = a(2);
       return x + (y - x) * t;
     }
-    case Builtin::Pow: { const double x = a(0), y = a(1); return std::pow(x, y); }
-    case Builtin::Exp: return std::exp(a(0));
-    case Builtin::Log: return std::log(a(0));
+    case Builtin::Pow: { const double x = a(0), y = a(1); return fgsg_rt_pow(x, y); }
+    case Builtin::Exp: return fgsg_rt_exp(a(0));
+    case Builtin::Log: return fgsg_rt_log(a(0));
     case Builtin::Sign: { const double x = a(0); return (x > 0) - (x < 0); }
-    case Builtin::Length: return vec(e.args[0], f).norm();
-    case Builtin::Dot: { rt::Vec3 x = vec(e.args[0], f); return x.dot(vec(e.args[1], f)); }
+    case Builtin::Length: {
+      const rt::Vec3 v = vec(e.args[0], f);
+      return fgsg_rt_vec_length(v.x(), v.y(), v.z());
+    }
+    case Builtin::Dot: {
+      const rt::Vec3 x = vec(e.args[0], f), y = vec(e.args[1], f);
+      return fgsg_rt_vec_dot(x.x(), x.y(), x.z(), y.x(), y.y(), y.z());
+    }
     case Builtin::Normalize: break;
   }
   throw DeriveError{e.loc, "R900", "internal: unknown builtin"};

@@ -1,0 +1,138 @@
+#include "backend/jit/jit.h"
+
+#include "runtime/abi.h"
+
+#include <llvm/ExecutionEngine/Orc/Core.h>
+#include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/TargetSelect.h>
+#include <llvm/Support/raw_ostream.h>
+#include <llvm/Target/TargetMachine.h>
+
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace fgsg::backend::jit {
+namespace {
+
+template <class T>
+T orThrow(llvm::Expected<T> value, const char* what) {
+  if (!value) throw std::runtime_error(std::string(what) + ": " + llvm::toString(value.takeError()));
+  return std::move(*value);
+}
+
+void orThrow(llvm::Error err, const char* what) {
+  if (err) throw std::runtime_error(std::string(what) + ": " + llvm::toString(std::move(err)));
+}
+
+void initNativeTarget() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    llvm::InitializeNativeTarget();
+    llvm::InitializeNativeTargetAsmPrinter();
+  });
+}
+
+}  // namespace
+
+struct Jit::Impl {
+  std::unique_ptr<llvm::orc::LLJIT> lljit;
+  std::unique_ptr<llvm::TargetMachine> tm;  // for the optimisation pipeline
+  uint64_t units = 0;
+  std::string lastIR;
+
+  void defineRuntimeSymbols() {
+    llvm::orc::SymbolMap symbols;
+    auto add = [&](const char* name, auto* fn) {
+      symbols[lljit->mangleAndIntern(name)] = {llvm::orc::ExecutorAddr::fromPtr(fn),
+                                               llvm::JITSymbolFlags::Exported |
+                                                   llvm::JITSymbolFlags::Callable};
+    };
+#define FGSG_RT_FN(name, ret, ...) add(#name, &name);
+#include "runtime/abi.def"
+    // libm functions the code generator itself may call for intrinsics on CPUs
+    // without SSE4.1 (llvm.floor / llvm.ceil).
+    add("floor", static_cast<double (*)(double)>(&::floor));
+    add("ceil", static_cast<double (*)(double)>(&::ceil));
+    orThrow(lljit->getMainJITDylib().define(llvm::orc::absoluteSymbols(std::move(symbols))),
+            "JIT: runtime symbols");
+  }
+
+  void optimize(llvm::Module& m) {
+    llvm::LoopAnalysisManager lam;
+    llvm::FunctionAnalysisManager fam;
+    llvm::CGSCCAnalysisManager cgam;
+    llvm::ModuleAnalysisManager mam;
+    llvm::PassBuilder pb(tm.get());
+    pb.registerModuleAnalyses(mam);
+    pb.registerCGSCCAnalyses(cgam);
+    pb.registerFunctionAnalyses(fam);
+    pb.registerLoopAnalyses(lam);
+    pb.crossRegisterProxies(lam, fam, cgam, mam);
+    llvm::ModulePassManager mpm = pb.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O2);
+    mpm.run(m, mam);
+  }
+};
+
+Jit::Jit() : impl_(std::make_unique<Impl>()) {
+  initNativeTarget();
+  auto jtmb = orThrow(llvm::orc::JITTargetMachineBuilder::detectHost(), "JIT: host target");
+  jtmb.setCodeGenOptLevel(llvm::CodeGenOptLevel::Default);
+  impl_->tm = orThrow(jtmb.createTargetMachine(), "JIT: target machine");
+  impl_->lljit = orThrow(llvm::orc::LLJITBuilder()
+                             .setJITTargetMachineBuilder(jtmb)
+                             .setLinkProcessSymbolsByDefault(false)
+                             .setPlatformSetUp(llvm::orc::setUpInactivePlatform)
+                             .create(),
+                         "JIT: LLJIT");
+  impl_->defineRuntimeSymbols();
+}
+
+Jit::~Jit() = default;
+
+const std::string& Jit::lastIR() const { return impl_->lastIR; }
+
+CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
+  Impl& j = *impl_;
+  const std::string prefix = "fgsg_expr_u" + std::to_string(j.units++) + "_";
+  auto context = std::make_unique<llvm::LLVMContext>();
+  auto module = std::make_unique<llvm::Module>(prefix + "module", *context);
+  module->setDataLayout(j.lljit->getDataLayout());
+  module->setTargetTriple(j.lljit->getTargetTriple().str());
+
+  CompiledExprs out;
+  for (size_t i = 0; i < exprs.size(); ++i) {
+    emitExpr(*module, *exprs[i], prefix + std::to_string(i));
+    out.vec_.push_back(exprs[i]->type == ir::Type::Vec3);
+  }
+  std::string problems;
+  llvm::raw_string_ostream problemStream(problems);
+  if (llvm::verifyModule(*module, &problemStream))
+    throw std::logic_error("internal: the JIT generated invalid LLVM IR: " + problems);
+  j.optimize(*module);
+  j.lastIR.clear();
+  llvm::raw_string_ostream irStream(j.lastIR);
+  module->print(irStream, nullptr);
+
+  auto& dylib = j.lljit->getMainJITDylib();
+  llvm::orc::ResourceTrackerSP tracker = dylib.createResourceTracker();
+  orThrow(j.lljit->addIRModule(tracker, llvm::orc::ThreadSafeModule(std::move(module), std::move(context))),
+          "JIT: add module");
+  out.unit_ = std::shared_ptr<void>(nullptr, [tracker](void*) {
+    if (llvm::Error err = tracker->remove()) llvm::consumeError(std::move(err));
+  });
+  for (size_t i = 0; i < exprs.size(); ++i) {
+    auto addr = orThrow(j.lljit->lookup(prefix + std::to_string(i)), "JIT: lookup");
+    out.fns_.push_back(addr.toPtr<void*>());
+  }
+  return out;
+}
+
+}  // namespace fgsg::backend::jit

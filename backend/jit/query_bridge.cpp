@@ -1,0 +1,69 @@
+#include "backend/jit/query_bridge.h"
+
+namespace fgsg::backend::jit {
+
+int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t extra,
+                            const double* args, uint32_t nargs, int32_t line, int32_t col,
+                            double* out) noexcept {
+  auto& self = *static_cast<QueryBridge*>(user);
+  const Frame& f = self.frame_;
+  const auto q = static_cast<ir::Query>(kind);
+  const ir::Loc at{line, col};
+  const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex &&
+                          q != ir::Query::Field && q != ir::Query::Texture;
+  if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
+  try {
+    switch (q) {
+      case ir::Query::ScopeSx: *out = f.scope->S.x(); return FGSG_OK;
+      case ir::Query::ScopeSy: *out = f.scope->S.y(); return FGSG_OK;
+      case ir::Query::ScopeSz: *out = f.scope->S.z(); return FGSG_OK;
+      case ir::Query::ScopePx: *out = f.scope->P.x(); return FGSG_OK;
+      case ir::Query::ScopePy: *out = f.scope->P.y(); return FGSG_OK;
+      case ir::Query::ScopePz: *out = f.scope->P.z(); return FGSG_OK;
+      case ir::Query::ShapeDepth: *out = f.depth; return FGSG_OK;
+      case ir::Query::ShapeIndex: *out = f.index; return FGSG_OK;
+      case ir::Query::ShapeVisible:
+        if (nargs < 1) return FGSG_E_INTERNAL;
+        *out = f.host->visible(*f.scope, self.m_.strings.at(static_cast<size_t>(args[0])), at);
+        return FGSG_OK;
+      case ir::Query::ScopeOcc: *out = f.host->occlusion(*f.scope, at); return FGSG_OK;
+      case ir::Query::Field: return FGSG_E_FIELD;
+      case ir::Query::Texture: return FGSG_E_TEXTURE;
+    }
+    return FGSG_E_INTERNAL;
+  } catch (const DeriveError& e) {
+    self.hostError_ = e;
+  } catch (const std::exception& e) {
+    self.hostError_ = DeriveError{at, "R900", std::string("internal: ") + e.what()};
+  } catch (...) {
+    self.hostError_ = DeriveError{at, "R900", "internal: the query host failed"};
+  }
+  (void)env, (void)extra;
+  return FGSG_E_HOST;
+}
+
+DeriveError QueryBridge::error(const FgsgContext& ctx) const {
+  const ir::Loc at{ctx.errorLine, ctx.errorCol};
+  switch (static_cast<FgsgErrorCode>(ctx.errorCode)) {
+    case FGSG_OK: break;
+    case FGSG_E_VEC_UNAVAILABLE:
+      return {at, "R001", "this vector value is not available yet (field queries arrive "
+                          "with surfaces and fields)"};
+    case FGSG_E_FIELD:
+      return {at, "R001", "field queries are not yet supported: surfaces and fields arrive with "
+                          "the field-guided surfaces work; this grammar parses and type-checks"};
+    case FGSG_E_TEXTURE:
+      return {at, "R001", "texture contexts are not yet supported: they arrive with on-mesh "
+                          "marching; this grammar parses and type-checks"};
+    case FGSG_E_NO_SCOPE:
+      return {at, "R006", "scope queries cannot be answered while a parallel derivation rewrites "
+                          "its string: modules get their scope only when the turtle interprets it"};
+    case FGSG_E_HOST:
+      if (hostError_) return *hostError_;
+      break;
+    case FGSG_E_INTERNAL: return {at, "R900", "internal: an expression the JIT cannot evaluate"};
+  }
+  return {at, "R900", "internal: unknown JIT error " + std::to_string(ctx.errorCode)};
+}
+
+}  // namespace fgsg::backend::jit
