@@ -671,7 +671,7 @@ class Interpreter final : public QueryHost {
       ++stats_.terminals;
       return;
     }
-    WaitingShape shape;
+    WaitingShape& shape = bucketFor(target.priority).push(slots, target.slotCount);
     shape.key = rt::childKey(ex.key, index);
     shape.symbol = op.index;
     shape.depth = ex.depth;
@@ -679,7 +679,6 @@ class Interpreter final : public QueryHost {
     shape.creator = creatorRule_;
     shape.geom = st.geom;
     shape.scope = st.scope;
-    bucketFor(target.priority).push(shape, slots, target.slotCount);
   }
 
   [[noreturn]] void shapeLimit(const ir::Op& op) {

@@ -31,13 +31,15 @@ class ShapeQueue {
   ShapeQueue(uint32_t paramStride, bool lastInFirstOut)
       : stride_(std::max<uint32_t>(paramStride, 1)), lifo_(lastInFirstOut) {}
 
-  void push(const WaitingShape& shape, const double* params, uint32_t slotCount) {
+  // Appends a shape with its parameters; the caller fills in the returned record (in
+  // place: a record is large, and this is the hot path of every derivation).
+  WaitingShape& push(const double* params, uint32_t slotCount) {
     if (tail_ == chunks_.size() * kChunk) grow();
     Chunk& c = *chunks_[tail_ / kChunk];
     const size_t i = tail_ % kChunk;
-    c.shapes[i] = shape;
     std::copy(params, params + slotCount, c.params.begin() + i * stride_);
     ++tail_;
+    return c.shapes[i];
   }
 
   bool empty() const { return head_ == tail_; }
