@@ -7,13 +7,12 @@
 #include "runtime/random.h"
 #include "runtime/synthesis/synthesis.h"
 
-#include <filesystem>
-
+#include <algorithm>
 #include <array>
 #include <chrono>
-#include <functional>
 #include <cmath>
-#include <algorithm>
+#include <filesystem>
+#include <functional>
 #include <map>
 
 namespace fgsg::backend {
