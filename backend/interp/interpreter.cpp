@@ -456,11 +456,7 @@ class Interpreter final : public QueryHost {
                 uint64_t key, uint32_t depth, uint32_t index, const double* params,
                 uint32_t symbol, rt::RandomStream* rng = nullptr) {
     rt::RandomStream own{key, 0};
-    State st;
-    st.scope = scope;
-    st.geom = geom;
-    st.width = m_.turtle.width;
-    st.stackBase = stack_.size();
+    State st{scope, geom, m_.turtle.width, stack_.size()};
     Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
     const bool depthFirst = m_.mode == ir::DeriveMode::DepthFirst;
     if (depthFirst) {
@@ -704,11 +700,7 @@ class Interpreter final : public QueryHost {
 
   void runBody(const ir::Block& body, const rt::Scope& scope, const rt::GeomRef& geom,
                const State& outer, Exec& ex, Frame& f) {
-    State inner;
-    inner.scope = scope;
-    inner.geom = geom;
-    inner.width = outer.width;
-    inner.stackBase = stack_.size();
+    State inner{scope, geom, outer.width, stack_.size()};
     execBlock(body, inner, ex, f);
     stack_.resize(inner.stackBase);
     f.scope = &outer.scope;
