@@ -19,11 +19,18 @@ struct Instance {
   uint32_t paramCount = 0;
 };
 
+// How a parameter's slots read: a number, a boolean (0/1), a string (an index into
+// InstanceList::strings) or a vector (three slots).
+enum class ParamKind : uint8_t { Number, Boolean, String, Vector };
+
 struct InstanceList {
   std::vector<std::string> assets;   // asset names as written in the grammar
   std::vector<std::string> symbols;  // symbol names
   std::vector<Instance> instances;
-  std::vector<double> params;        // parameter values, numbers as written
+  std::vector<double> params;        // parameter slots of all instances
+  // Per symbol, the kinds of its parameters; a symbol without an entry has plain numbers.
+  std::vector<std::vector<ParamKind>> paramKinds;
+  std::vector<std::string> strings;  // the texts string parameters refer to
 };
 
 }  // namespace fgsg::rt

@@ -125,7 +125,17 @@ class Interpreter final : public QueryHost {
 
   void initOutput() {
     out_.assets = m_.assets;
-    for (const auto& s : m_.symbols) out_.symbols.push_back(s.name);
+    out_.strings = m_.strings;
+    for (const auto& s : m_.symbols) {
+      out_.symbols.push_back(s.name);
+      std::vector<rt::ParamKind> kinds;
+      for (ir::Type t : s.paramTypes)
+        kinds.push_back(t == ir::Type::Bool  ? rt::ParamKind::Boolean
+                        : t == ir::Type::Str ? rt::ParamKind::String
+                        : t == ir::Type::Vec3 ? rt::ParamKind::Vector
+                                              : rt::ParamKind::Number);
+      out_.paramKinds.push_back(std::move(kinds));
+    }
     segmentAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back("cylinder");
     segmentSymbol_ = static_cast<uint32_t>(out_.symbols.size());

@@ -65,6 +65,42 @@ void appendName(std::string& out, const std::vector<std::string>& table, uint32_
     out += "null";
 }
 
+// Parameters as their kinds say: numbers, true/false, the string's text, [x,y,z].
+void appendParams(std::string& out, const InstanceList& list, const Instance& inst) {
+  static const std::vector<ParamKind> kNone;
+  const auto& kinds = inst.symbol < list.paramKinds.size() ? list.paramKinds[inst.symbol] : kNone;
+  auto slot = [&](uint32_t k) {
+    const size_t at = size_t(inst.firstParam) + k;
+    return k < inst.paramCount && at < list.params.size() ? list.params[at] : NAN;
+  };
+  uint32_t k = 0;
+  for (size_t p = 0; k < inst.paramCount; ++p) {
+    if (p) out += ',';
+    const ParamKind kind = p < kinds.size() ? kinds[p] : ParamKind::Number;
+    const double v = slot(k);
+    switch (kind) {
+      case ParamKind::Number: appendNumber(out, v); k += 1; break;
+      case ParamKind::Boolean: out += v != 0 ? "true" : "false"; k += 1; break;
+      case ParamKind::String:
+        if (v >= 0 && v < double(list.strings.size()))
+          appendString(out, list.strings[size_t(v)]);
+        else
+          out += "null";
+        k += 1;
+        break;
+      case ParamKind::Vector:
+        out += '[';
+        for (int c = 0; c < 3; ++c) {
+          if (c) out += ',';
+          appendNumber(out, slot(k + c));
+        }
+        out += ']';
+        k += 3;
+        break;
+    }
+  }
+}
+
 }  // namespace
 
 std::string encodeInstancesJson(const InstanceList& list) {
@@ -85,11 +121,7 @@ std::string encodeInstancesJson(const InstanceList& list) {
     out += ",\"color\":";
     appendArray(out, inst.color, appendNumber<float>);
     out += ",\"params\":[";
-    for (uint32_t p = 0; p < inst.paramCount; ++p) {
-      if (p) out += ',';
-      const size_t at = size_t(inst.firstParam) + p;
-      appendNumber(out, at < list.params.size() ? list.params[at] : NAN);
-    }
+    appendParams(out, list, inst);
     out += "]}";
   }
   out += "\n]}\n";

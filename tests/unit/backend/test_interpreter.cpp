@@ -1,4 +1,5 @@
 #include "derive_helpers.h"
+#include "runtime/io/write_instances.h"
 
 #include <catch2/catch.hpp>
 
@@ -358,4 +359,14 @@ TEST_CASE("Depth-first derives a shape's successors before its siblings", "[orde
   };
   CHECK(order(deriveText(rules)) == "cube disc sphere ico ");
   CHECK(order(deriveText("derive depthfirst;\n" + rules)) == "cube sphere ico disc ");
+}
+
+TEST_CASE("Instances JSON writes parameters by their type", "[output]") {
+  auto r = deriveText(R"(
+    Axiom ~> A("door", true, (1, 2, 3), 4.5);
+    A(name, open, v, n) ~> I("cube");
+  )");
+  REQUIRE(r.ok);
+  const std::string json = rt::io::encodeInstancesJson(r.instances);
+  CHECK(json.find("\"params\":[\"door\",true,[1,2,3],4.5]") != std::string::npos);
 }
