@@ -784,7 +784,30 @@ class Analyzer {
         }
         return true;
       }
+      case ExprKind::Vector: {
+        if (e.args.size() != 3) return false;
+        out = {};
+        out.type = ValueType::Vec3;
+        for (int k = 0; k < 3; ++k) {
+          ConstValue c;
+          if (!evalConst(*e.args[k], c) || c.type != ValueType::Num) return false;
+          out.vec[k] = c.num;
+        }
+        return true;
+      }
       case ExprKind::Call: {
+        if (e.args.size() == 2) {
+          ConstValue a, b;
+          if (!evalConst(*e.args[0], a) || !evalConst(*e.args[1], b) || a.type != ValueType::Num ||
+              b.type != ValueType::Num)
+            return false;
+          out = {};
+          if (e.text == "min") out.num = std::min(a.num, b.num);
+          else if (e.text == "max") out.num = std::max(a.num, b.num);
+          else if (e.text == "pow") out.num = std::pow(a.num, b.num);
+          else return false;
+          return true;
+        }
         if (e.args.size() != 1) return false;
         ConstValue a;
         if (!evalConst(*e.args[0], a) || a.type != ValueType::Num) return false;

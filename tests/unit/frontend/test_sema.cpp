@@ -139,3 +139,11 @@ TEST_CASE("Constants are evaluated and must be constant", "[sema]") {
   auto twice = analyse("const w = 1;\nconst w = 2;\nA ~> I(\"cube\");");
   CHECK(has(twice, "E022", 2, 1));
 }
+
+TEST_CASE("Constant vectors and two-argument math fold", "[sema]") {
+  auto a = analyse("const v = (1, 2, 3);\nconst w = max(2, pow(2, 3));\nA ~> I(\"cube\");");
+  REQUIRE(a.ok);
+  CHECK(a.sema.constants.at("v").type == ValueType::Vec3);
+  CHECK(a.sema.constants.at("v").vec[2] == 3);
+  CHECK(a.sema.constants.at("w").num == 8);
+}
