@@ -36,35 +36,44 @@ struct Scope {
   Vec3 toWorld(const Vec3& local) const { return P + axes * local; }
 };
 
-// Rotates the scope's axes by `degrees` about its own local axis 0/1/2 (the CGA and FGSG
-// convention: Rz turns X towards Y).
-// cos and sin of an angle in degrees. Grammars turn by a few angles over and over, so a
-// small per-thread memo of exact results saves most of the trigonometry.
-inline void cosSinDegrees(double degrees, double& c, double& s) {
+// cos and sin of an angle in degrees, remembered: grammars turn by a few angles over and
+// over. A derivation owns one memo (no thread-local state, which costs a call per access
+// in position-independent code); results are exactly std::cos/std::sin's.
+class TrigMemo {
+ public:
+  void cosSin(double degrees, double& c, double& s) {
+    uint64_t bits;
+    std::memcpy(&bits, &degrees, sizeof bits);
+    Entry& e = memo_[(bits * 0x9e3779b97f4a7c15ull) >> 58];  // all bits, sign included
+    if (e.bits != bits) {
+      const double r = degrees * 3.14159265358979323846 / 180.0;
+      e = {bits, std::cos(r), std::sin(r)};
+    }
+    c = e.c;
+    s = e.s;
+  }
+
+ private:
   struct Entry {
     uint64_t bits = 0;  // the angle's bit pattern: -0 and +0 are different keys
     double c = 1, s = 0;
   };
-  thread_local Entry memo[64];
-  uint64_t bits;
-  std::memcpy(&bits, &degrees, sizeof bits);
-  Entry& e = memo[(bits * 0x9e3779b97f4a7c15ull) >> 58];  // all bits, sign included
-  if (e.bits != bits) {
-    const double r = degrees * 3.14159265358979323846 / 180.0;
-    e = {bits, std::cos(r), std::sin(r)};
-  }
-  c = e.c;
-  s = e.s;
-}
+  Entry memo_[64];
+};
 
-inline void rotateLocal(Scope& s, int axis, double degrees) {
-  // Only the two axes in the plane of rotation move: a turn about Z takes X towards Y.
-  double c, sn;
-  cosSinDegrees(degrees, c, sn);
+// Rotates the scope's axes about its own local axis 0/1/2 by the angle whose cosine and
+// sine are given (the CGA and FGSG convention: Rz turns X towards Y). Only the two axes
+// in the plane of rotation move.
+inline void rotateLocal(Scope& s, int axis, double c, double sn) {
   const int i = (axis + 1) % 3, j = (axis + 2) % 3;
   const Vec3 a = s.axes.col(i), b = s.axes.col(j);
   s.axes.col(i) = c * a + sn * b;
   s.axes.col(j) = c * b - sn * a;
+}
+
+inline void rotateLocal(Scope& s, int axis, double degrees) {
+  const double r = degrees * 3.14159265358979323846 / 180.0;
+  rotateLocal(s, axis, std::cos(r), std::sin(r));
 }
 
 }  // namespace fgsg::rt

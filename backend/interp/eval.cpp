@@ -94,15 +94,6 @@ rt::Vec3 Evaluator::vec(const ir::Expr& e, const Frame& f) const {
                                    "with surfaces and fields)"};
 }
 
-void Evaluator::store(const ir::Expr& e, const Frame& f, double* out) const {
-  if (e.type == ir::Type::Vec3) {
-    rt::Vec3 v = vec(e, f);
-    out[0] = v.x(), out[1] = v.y(), out[2] = v.z();
-  } else {
-    out[0] = num(e, f);
-  }
-}
-
 double Evaluator::call(const ir::Expr& e, const Frame& f) const {
   using ir::Builtin;
   auto a = [&](int k) { return num(e.args[k], f); };

@@ -52,7 +52,14 @@ class Evaluator {
   rt::Vec3 vec(const ir::Expr& e, const Frame& f) const;
   bool truth(const ir::Expr& e, const Frame& f) const { return num(e, f) != 0.0; }
   // Writes a value of any type into slots (1 or 3 doubles).
-  void store(const ir::Expr& e, const Frame& f, double* out) const;
+  void store(const ir::Expr& e, const Frame& f, double* out) const {
+    if (e.type == ir::Type::Vec3) {
+      const rt::Vec3 v = vec(e, f);
+      out[0] = v.x(), out[1] = v.y(), out[2] = v.z();
+    } else {
+      out[0] = num(e, f);
+    }
+  }
   const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
 
  private:

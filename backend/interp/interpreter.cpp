@@ -222,6 +222,12 @@ class Interpreter final : public QueryHost {
 
   // ------------------------------------------------------------ ops shared by both modes
 
+  void turn(rt::Scope& scope, int axis, double degrees) {
+    double c, s;
+    trig_.cosSin(degrees, c, s);
+    rt::rotateLocal(scope, axis, c, s);
+  }
+
   // The scope a successor works on. Its [ ] stack lives in one shared vector above
   // `stackBase`, so pushing allocates nothing once the vector has grown.
   struct Saved {
@@ -272,13 +278,13 @@ class Interpreter final : public QueryHost {
         break;
       }
       case TurtleOp::Move: st.scope.P += step * st.scope.Y(); break;
-      case TurtleOp::Left: rt::rotateLocal(st.scope, 2, angle); break;
-      case TurtleOp::Right: rt::rotateLocal(st.scope, 2, -angle); break;
-      case TurtleOp::PitchDown: rt::rotateLocal(st.scope, 0, angle); break;
-      case TurtleOp::PitchUp: rt::rotateLocal(st.scope, 0, -angle); break;
-      case TurtleOp::RollLeft: rt::rotateLocal(st.scope, 1, angle); break;
-      case TurtleOp::RollRight: rt::rotateLocal(st.scope, 1, -angle); break;
-      case TurtleOp::TurnAround: rt::rotateLocal(st.scope, 2, 180.0); break;
+      case TurtleOp::Left: turn(st.scope, 2, angle); break;
+      case TurtleOp::Right: turn(st.scope, 2, -angle); break;
+      case TurtleOp::PitchDown: turn(st.scope, 0, angle); break;
+      case TurtleOp::PitchUp: turn(st.scope, 0, -angle); break;
+      case TurtleOp::RollLeft: turn(st.scope, 1, angle); break;
+      case TurtleOp::RollRight: turn(st.scope, 1, -angle); break;
+      case TurtleOp::TurnAround: turn(st.scope, 2, 180.0); break;
       case TurtleOp::Width:
         if (n > 0) st.width = args[0];
         break;
@@ -292,11 +298,11 @@ class Interpreter final : public QueryHost {
       case ir::OpKind::Translate: st.scope.P += st.scope.axes * rt::Vec3(a[0], a[1], a[2]); break;
       case ir::OpKind::Rotate:
         if (op.index < 3) {
-          rt::rotateLocal(st.scope, static_cast<int>(op.index), a[0]);
+          turn(st.scope, static_cast<int>(op.index), a[0]);
         } else {
-          rt::rotateLocal(st.scope, 0, a[0]);
-          rt::rotateLocal(st.scope, 1, a[1]);
-          rt::rotateLocal(st.scope, 2, a[2]);
+          turn(st.scope, 0, a[0]);
+          turn(st.scope, 1, a[1]);
+          turn(st.scope, 2, a[2]);
         }
         break;
       case ir::OpKind::RotateNormal: rt::rotateAboutNormal(st.scope, kPlaneNormal, a[0]); break;
@@ -1009,6 +1015,7 @@ class Interpreter final : public QueryHost {
   std::vector<std::pair<int, ShapeQueue>> buckets_;
   std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
   std::vector<Saved> stack_;
+  rt::TrigMemo trig_;
   std::map<std::string, rt::synthesis::Example> examples_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
