@@ -518,12 +518,26 @@ class Interpreter final : public QueryHost {
     for (const ir::Op& op : ops) {
       f.scope = &st.scope;
       switch (op.kind) {
-        case ir::OpKind::Translate:
+        // The commands of nearly every successor are applied here directly, without
+        // going through the argument buffer (the hot path of every derivation).
+        case ir::OpKind::Translate: {
+          const double x = eval_.num(op.args[0], f), y = eval_.num(op.args[1], f),
+                       z = eval_.num(op.args[2], f);
+          st.scope.P += st.scope.axes * rt::Vec3(x, y, z);
+          break;
+        }
         case ir::OpKind::Rotate:
+          if (op.index < 3) {
+            turn(st.scope, static_cast<int>(op.index), eval_.num(op.args[0], f));
+            break;
+          }
+          evalArgs(op, f, buf);
+          scopeCommand(st, op, buf);
+          break;
+        case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width}); break;
+        case ir::OpKind::Pop:
         case ir::OpKind::RotateNormal:
         case ir::OpKind::Scale:
-        case ir::OpKind::Push:
-        case ir::OpKind::Pop:
           evalArgs(op, f, buf);
           scopeCommand(st, op, buf);
           break;

@@ -10,9 +10,13 @@
 #include "runtime/geometry.h"
 #include "runtime/scope.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace fgsg::backend {
@@ -87,18 +91,30 @@ class ShapeQueue {
 
  private:
   // Shapes live in fixed chunks that are recycled, so a queue never copies the shapes it
-  // holds when it grows or drains.
-  static constexpr size_t kChunk = 4096;
+  // holds when it grows or drains. A chunk's records fill one 2 MiB block, aligned and
+  // offered to the kernel as a huge page: a wide frontier touches hundreds of MiB, and
+  // faulting them in 4 KiB at a time cost more than deriving the shapes.
+  static constexpr size_t kBlockBytes = size_t(2) << 20;
+  static constexpr size_t kChunk = kBlockBytes / sizeof(WaitingShape);
   struct Chunk {
-    std::vector<WaitingShape> shapes;
+    explicit Chunk(uint32_t stride) : params(kChunk * stride) {
+      void* block = std::aligned_alloc(kBlockBytes, kBlockBytes);
+      if (!block) throw std::bad_alloc();
+      madvise(block, kBlockBytes, MADV_HUGEPAGE);  // a hint; without it, plain pages
+      shapes = static_cast<WaitingShape*>(block);
+      std::uninitialized_default_construct_n(shapes, kChunk);
+    }
+    ~Chunk() {
+      std::destroy_n(shapes, kChunk);
+      std::free(shapes);
+    }
+    Chunk(const Chunk&) = delete;
+    Chunk& operator=(const Chunk&) = delete;
+
+    WaitingShape* shapes = nullptr;
     std::vector<double> params;
   };
-  void grow() {
-    auto c = std::make_unique<Chunk>();
-    c->shapes.resize(kChunk);
-    c->params.resize(kChunk * stride_);
-    chunks_.push_back(std::move(c));
-  }
+  void grow() { chunks_.push_back(std::make_unique<Chunk>(stride_)); }
 
   uint32_t stride_;
   bool lifo_;
