@@ -99,7 +99,7 @@ int synthCommand(const Args& args) {
     } else if (a == "--labels") {
       if (!value(labelsOut)) return usage("--labels needs a file name");
     } else if (a == "-o" || a == "--output") {
-      if (!value(meshOut)) return usage("-o needs a file name (.glb .gltf .obj .ply)");
+      if (!value(meshOut)) return usage("-o needs a file name (.glb .obj .ply)");
     } else if (a == "--preview") {
       if (!value(previewOut)) return usage("--preview needs a .png file name");
     } else if (a == "--mask") {
