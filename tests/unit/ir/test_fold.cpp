@@ -7,12 +7,7 @@
 #include "ir/printer.h"
 #include "ir/verifier.h"
 
-namespace fgsg::ir::testing {
-// Defined in test_ir.cpp.
-Module sampleModule();
-Expr param(uint32_t slot, Type t = Type::Num);
-Expr binary(ExprOp op, Type t, Expr a, Expr b);
-}  // namespace fgsg::ir::testing
+#include "ir_test_helpers.h"
 
 using namespace fgsg::ir;
 using testing::binary;

@@ -1,5 +1,5 @@
 // Module tables, expression factories, the builtin tables, and the sample module the
-// printer, verifier and fold tests share (declared in those files, defined here).
+// printer, verifier and fold tests share (declared in ir_test_helpers.h, defined here).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -8,10 +8,11 @@
 
 #include "ir/builtins.h"
 #include "ir/ir.h"
+#include "ir_test_helpers.h"
 
 namespace fgsg::ir::testing {
 
-Expr param(uint32_t slot, Type t = Type::Num) {
+Expr param(uint32_t slot, Type t) {
   Expr e;
   e.op = ExprOp::Param;
   e.type = t;
