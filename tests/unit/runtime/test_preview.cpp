@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "scratch_files.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,20 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratchDir(const std::string& name) {
-  // Under the build tree, one folder per test case: cases may run as parallel processes.
-  const fs::path dir = fs::path(FGSG_BINARY_DIR) / "test-scratch" / "preview" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratchDir(const std::string& name) { return fgsg::test::scratchDir("preview", name); }
+using fgsg::test::readFile;
 
 std::array<uint8_t, 3> pixel(const Image& img, int x, int y) {
   const uint8_t* p = &img.rgb[3 * (size_t(y) * img.width + x)];

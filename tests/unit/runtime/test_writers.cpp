@@ -9,6 +9,8 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <catch2/catch.hpp>
+
+#include "scratch_files.h"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -24,20 +26,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratchDir(const std::string& name) {
-  // Under the build tree, one folder per test case: cases may run as parallel processes.
-  const fs::path dir = fs::path(FGSG_BINARY_DIR) / "test-scratch" / "writers" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratchDir(const std::string& name) { return fgsg::test::scratchDir("writers", name); }
+using fgsg::test::readFile;
 
 // Two coloured cubes and a flattened one: sharp normals, several colours, 28 triangles.
 Mesh sampleMesh() {
