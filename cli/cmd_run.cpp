@@ -47,7 +47,8 @@ RunOptions parseRunOptions(const Args& args) {
     else if (f == "--max-seconds") {
       o.derive.maxSeconds = r.numberValue(f);
       if (o.derive.maxSeconds <= 0) throw UsageError{"--max-seconds must be positive"};
-    } else if (f == "--stats") o.stats = true;
+    } else if (f == "--collide-all") o.derive.collideAll = true;
+    else if (f == "--stats") o.stats = true;
     else if (f == "--quiet" || f == "-q") o.quiet = true;
     else if (f == "--set") {
       std::string kv = r.value(f);
@@ -163,6 +164,13 @@ int runCommand(const Args& args) {
                 (unsigned long long)s.shapesCreated, (unsigned long long)s.rewrites,
                 (unsigned long long)s.terminals, (unsigned long long)s.instances,
                 mesh.triangleCount());
+    // Collision figures only for grammars that test, merge or draw lines (FGSG §4.4).
+    const std::pair<const char*, uint64_t> placement[] = {
+        {"collision.tests", s.collisionTests}, {"collision.hits", s.collisions},
+        {"merges", s.merges},                  {"line.segments", s.lineSegments},
+        {"line.joined", s.linesJoined},        {"lock.removed", s.locksRemoved}};
+    for (const auto& [name, value] : placement)
+      if (value > 0) std::printf("%s %llu\n", name, (unsigned long long)value);
     std::printf("time.parse %.6f\ntime.analyze %.6f\ntime.lower %.6f\ntime.derive %.6f\n"
                 "time.assemble %.6f\ntime.write %.6f\ntime.preview %.6f\n",
                 t.parseSeconds, t.analyzeSeconds, t.lowerSeconds, deriveSeconds, assembleSeconds,

@@ -11,7 +11,7 @@ const char* kHelp = R"(fgsg - field-guided shape grammars: grow geometry from .f
 usage:
   fgsg run FILE [-o out.glb|.obj|.ply] [--seed N] [--set name=value]...
                 [--preview out.png] [--instances out.json] [--max-shapes N]
-                [--max-depth N] [--max-seconds S] [--stats] [--quiet]
+                [--max-depth N] [--max-seconds S] [--collide-all] [--stats] [--quiet]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE             print the typed IR after constant folding
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis

@@ -167,6 +167,20 @@ struct TurtleDecl {  // turtle angle 60 step 1 width 0.05;
   std::vector<std::pair<std::string, ExprPtr>> settings;
 };
 
+// One word of a `collision` declaration: a name (`all`, `centre` ...) or a number (a
+// radius; negative when written with '-').
+struct CollisionWord {
+  SourceRange range;
+  std::string word;  // empty for a number
+  double number = 0.0;
+  bool isNumber() const { return word.empty(); }
+};
+
+struct CollisionDecl {  // collision all;  collision centre 0.3;  collision all geodesic 0.25;
+  SourceRange range;
+  std::vector<CollisionWord> words;
+};
+
 struct AxiomDecl {  // axiom: S(20,0,12) footprint;
   SourceRange range;
   Successor successor;
@@ -181,6 +195,7 @@ struct Program {
   std::vector<TextureDecl> textures;
   std::vector<DeriveDecl> derives;
   std::vector<TurtleDecl> turtles;
+  std::vector<CollisionDecl> collisions;
   std::vector<AxiomDecl> axioms;
 };
 

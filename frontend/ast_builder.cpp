@@ -72,6 +72,7 @@ void AstBuilder::addStatement(P::StatementContext* ctx) {
   else if (auto* c = ctx->textureDecl()) program_.textures.push_back(buildTextureDecl(c));
   else if (auto* c = ctx->deriveDecl()) program_.derives.push_back(buildDeriveDecl(c));
   else if (auto* c = ctx->turtleDecl()) program_.turtles.push_back(buildTurtleDecl(c));
+  else if (auto* c = ctx->collisionDecl()) program_.collisions.push_back(buildCollisionDecl(c));
   else if (auto* c = ctx->axiomDecl()) program_.axioms.push_back(buildAxiomDecl(c));
   else if (auto* c = ctx->priorityDecl()) applyPriorityDecl(c);
   else if (auto* c = ctx->grammarRule()) program_.rules.push_back(buildRule(c));
@@ -194,6 +195,23 @@ TurtleDecl AstBuilder::buildTurtleDecl(P::TurtleDeclContext* ctx) {
   d.range = rangeOf(ctx);
   for (auto* setting : ctx->turtleSetting()) {
     d.settings.emplace_back(text(setting->name), buildExpr(setting->value));
+  }
+  return d;
+}
+
+CollisionDecl AstBuilder::buildCollisionDecl(P::CollisionDeclContext* ctx) {
+  CollisionDecl d;
+  d.range = rangeOf(ctx);
+  for (auto* word : ctx->collisionWord()) {
+    CollisionWord w;
+    w.range = rangeOf(word);
+    if (word->word) {
+      w.word = text(word->word);
+    } else if (auto* n = word->number()) {
+      w.number = parseNumber(n->getText());
+      if (word->sign) w.number = -w.number;
+    }
+    d.words.push_back(std::move(w));
   }
   return d;
 }

@@ -27,6 +27,7 @@ class AstBuilder {
   TextureDecl buildTextureDecl(P::TextureDeclContext* ctx);
   DeriveDecl buildDeriveDecl(P::DeriveDeclContext* ctx);
   TurtleDecl buildTurtleDecl(P::TurtleDeclContext* ctx);
+  CollisionDecl buildCollisionDecl(P::CollisionDeclContext* ctx);
   AxiomDecl buildAxiomDecl(P::AxiomDeclContext* ctx);
   void applyPriorityDecl(P::PriorityDeclContext* ctx);
 

@@ -5,9 +5,7 @@
 namespace fgsg::frontend {
 namespace {
 
-constexpr const char* kCollisions = "collision-tested instancing (IC, IM, Lock collisions)";
 constexpr const char* kMarching = "on-mesh marching (Buron et al.)";
-constexpr const char* kLines = "Line/LineSeg merging";
 constexpr const char* kSolvers = "solver commands in grammars";
 
 const CommandInfo kCommands[] = {
@@ -22,9 +20,9 @@ const CommandInfo kCommands[] = {
     {CommandId::RotateNormal, "RS", 1, 1, BodyRule::None, "RS(degrees)", nullptr},
     {CommandId::Scale, "S", 3, 3, BodyRule::None, "S(sx, sy, sz)", nullptr},
     {CommandId::Instance, "I", 1, 1, BodyRule::None, "I(\"asset\")", nullptr},
-    {CommandId::InstanceCollide, "IC", 1, 1, BodyRule::None, "IC(\"asset\")", kCollisions},
+    {CommandId::InstanceCollide, "IC", 1, 1, BodyRule::None, "IC(\"asset\")", nullptr},
     {CommandId::InstanceMerge, "IM", 3, 3, BodyRule::None, "IM(\"asset\", maxDist, maxAngle)",
-     kCollisions},
+     nullptr},
     {CommandId::Subdiv, "Subdiv", 2, -1, BodyRule::PerSize, "Subdiv(\"X\", s1, s2, ...){ a | b ... }",
      nullptr},
     {CommandId::Repeat, "Repeat", 2, 4, BodyRule::One, "Repeat(\"X\", s){ tile }", nullptr},
@@ -37,8 +35,8 @@ const CommandInfo kCommands[] = {
     {CommandId::Marching, "Marching", 3, 3, BodyRule::AtLeastOne,
      "Marching(length, angle, cond){ Top, Extruded }", kMarching},
     {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", kMarching},
-    {CommandId::Line, "Line", 0, -1, BodyRule::Optional, "Line(...)", kLines},
-    {CommandId::LineSeg, "LineSeg", 0, -1, BodyRule::Optional, "LineSeg(...)", kLines},
+    {CommandId::Line, "Line", 0, 2, BodyRule::None, "Line(width, merge)", nullptr},
+    {CommandId::LineSeg, "LineSeg", 0, 1, BodyRule::None, "LineSeg(length)", nullptr},
     {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,
      "Synthesize(\"example.txt\", nx, ny, nz)", nullptr},
     {CommandId::Evolve, "Evolve", 0, -1, BodyRule::Optional, "Evolve(...)", kSolvers},

@@ -20,7 +20,7 @@ enum class BodyRule {
   PerSize,     // one body part per size argument (Subdiv)
   One,         // exactly one part (Repeat, Comp, Roof)
   AtLeastOne,  // Lock, Branch, Marching
-  Optional,    // Line / LineSeg / solvers may take one
+  Optional,    // solver hand-offs (Evolve, Cells) may take one
 };
 
 struct CommandInfo {

@@ -85,7 +85,8 @@ bool isStatementKeyword(size_t type) {
   switch (type) {
     case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
     case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::DERIVE:
-    case FgsgLexer::TURTLE: case FgsgLexer::AXIOM: case FgsgLexer::PRIORITY:
+    case FgsgLexer::TURTLE: case FgsgLexer::COLLISION: case FgsgLexer::AXIOM:
+    case FgsgLexer::PRIORITY:
       return true;
     default:
       return false;

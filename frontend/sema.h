@@ -61,6 +61,13 @@ struct SemaResult {
   std::string mode = "breadthfirst";
   int steps = 0;
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
+  // `collision ...;` (the first declaration): every I() tested (all), and the metric
+  // "mesh", "centre" or "geodesic" with its radius (0 for mesh).
+  bool collisionDeclared = false;
+  bool collisionAll = false;
+  std::string collisionMetric = "mesh";
+  double collisionRadius = 0.0;
+  SourceRange collisionRange;
 
   int findSymbol(const std::string& name) const {
     auto it = symbolIndex.find(name);

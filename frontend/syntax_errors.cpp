@@ -116,7 +116,8 @@ std::string describeExpected(IntervalSet set, const antlr4::dfa::Vocabulary& voc
   if (set.size() > 1) set.remove(Token::EOF);
 
   group({P::CONST, P::PRIORITY, P::ID}, {P::CONST, P::ATTR, P::SURFACE, P::FIELD, P::TEXTURE,
-        P::DERIVE, P::TURTLE, P::AXIOM, P::PRIORITY, P::ID, P::INT, P::SEMI}, "a rule or a declaration");
+        P::DERIVE, P::TURTLE, P::COLLISION, P::AXIOM, P::PRIORITY, P::ID, P::INT, P::SEMI},
+        "a rule or a declaration");
   // Where a successor may start, so may a Müller guard: "a successor" says enough.
   group({P::ID, P::LBRACK, P::PLUS}, {P::ID, P::LBRACK, P::PLUS, P::MINUS, P::AMP, P::AND, P::CARET,
         P::BACKSLASH, P::SLASH, P::BANG, P::DOLLAR, P::PERCENT, P::PIPE, P::OR, P::EPSILON,
@@ -294,6 +295,9 @@ void SyntaxErrorStrategy::reportExpected(Parser* parser, Token* at, const Interv
       !rule->ruleBody()->branch().back()->probability) {
     what = "';' or a successor";
   }
+  // `collision centre(0.3);`: name the settings rather than "a name, '-', a number".
+  if (dynamic_cast<FgsgParser::CollisionDeclContext*>(parser->getContext()))
+    what = "a collision setting (all, mesh, centre R, geodesic R) or ';'";
   report(parser, at, "expected " + what + after(parser, at) + ", found " + describeToken(at));
 }
 

@@ -23,6 +23,7 @@ statement
   | textureDecl
   | deriveDecl
   | turtleDecl
+  | collisionDecl
   | axiomDecl
   | priorityDecl
   | grammarRule
@@ -62,6 +63,12 @@ deriveDecl  : DERIVE order=ID steps=expr? ';' ;
 
 turtleDecl  : TURTLE turtleSetting* ';' ;
 turtleSetting : name=ID value=expr ;
+
+// `collision all centre 0.25;`: words and radii in any order; the front end checks them
+// (a radius follows `centre` / `geodesic`; a '-' is accepted so that a negative radius
+// gets a clear message instead of a syntax error).
+collisionDecl : COLLISION collisionWord* ';' ;
+collisionWord : word=ID | sign='-'? number ;
 
 axiomDecl   : AXIOM ':' successor ';' ;
 
@@ -162,6 +169,7 @@ FIELD    : 'field' ;
 TEXTURE  : 'texture' ;
 DERIVE   : 'derive' ;
 TURTLE   : 'turtle' ;
+COLLISION: 'collision' ;
 AXIOM    : 'axiom' ;
 PRIORITY : 'priority' | 'PRIORITY' ;
 TRUE     : 'true' ;

@@ -96,7 +96,9 @@ enum class OpKind : uint8_t {
   Comp,          // str = selector id; bodies: one, applied to every component
   Extrude,       // args[0] height
   Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
-  Lock,          // bodies: derived as one unit (collision arrives with IC)
+  Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
+  Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
+  LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
   Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
@@ -196,6 +198,18 @@ struct EnvDecl {
   Loc loc;
 };
 
+// How collision-tested instancing decides that two instances collide (FGSG §4.4), set
+// by `collision ...;`: the exact meshes (default), or their centres closer than
+// `radius` (Euclidean; geodesic on a surface, which on the plane is the same).
+enum class CollisionMetric : uint8_t { Mesh, Centre, Geodesic };
+
+struct CollisionSettings {
+  bool all = false;  // `collision all;`: every I() is tested as IC (FGSG's global flag)
+  CollisionMetric metric = CollisionMetric::Mesh;
+  double radius = 0.0;  // Centre / Geodesic: the distance below which two collide
+  Loc loc;              // the declaration (line 0: none)
+};
+
 struct Module {
   std::string sourceName;
   std::vector<Symbol> symbols;
@@ -207,6 +221,7 @@ struct Module {
   DeriveMode mode = DeriveMode::BreadthFirst;
   int steps = 0;  // parallel derivation steps
   TurtleSettings turtle;
+  CollisionSettings collision;
   std::vector<EnvDecl> environment;
 
   uint32_t internString(const std::string& s);

@@ -10,6 +10,10 @@ namespace {
 
 using namespace fgsg::frontend;
 
+// Line(width, merge) without arguments: a thin line that merges into the lines it meets.
+constexpr double kDefaultLineWidth = 0.05;
+constexpr bool kDefaultLineMerge = true;
+
 Type toType(ValueType t) {
   switch (t) {
     case ValueType::Bool: return Type::Bool;
@@ -47,6 +51,7 @@ class Lowerer {
                                            : DeriveMode::BreadthFirst;
     m_.steps = sema_.steps;
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth};
+    lowerCollision();
     return std::move(m_);
   }
 
@@ -127,6 +132,16 @@ class Lowerer {
     m_.axiom.push_back(std::move(emit));
   }
 
+  void lowerCollision() {
+    CollisionSettings& c = m_.collision;
+    c.all = sema_.collisionAll;
+    c.metric = sema_.collisionMetric == "centre"     ? CollisionMetric::Centre
+               : sema_.collisionMetric == "geodesic" ? CollisionMetric::Geodesic
+                                                     : CollisionMetric::Mesh;
+    c.radius = c.metric == CollisionMetric::Mesh ? 0.0 : sema_.collisionRadius;
+    if (sema_.collisionDeclared) c.loc = toLoc(sema_.collisionRange);
+  }
+
   void lowerEnvironment() {
     for (const auto& s : prog_.surfaces)
       m_.environment.push_back({"surface", s.path.empty() ? s.generator : s.path,
@@ -202,7 +217,6 @@ class Lowerer {
                                                          : InstanceMode::Merge;
         op.index = m_.internAsset(constString(*item.args[0]));
         allArgs(1);
-        if (cmd.laterIssue) op.why = cmd.laterIssue;
         break;
       case CommandId::Subdiv:
         op.kind = OpKind::Subdiv;
@@ -235,6 +249,17 @@ class Lowerer {
         allArgs(1);
         break;
       case CommandId::Lock: op.kind = OpKind::Lock; break;
+      case CommandId::Line: {
+        // Always two arguments: the defaults are filled in here, not by the runtime.
+        op.kind = OpKind::Line;
+        allArgs(0);
+        Expr width = Expr::number(kDefaultLineWidth), merge = Expr::boolean(kDefaultLineMerge);
+        width.loc = merge.loc = op.loc;
+        if (op.args.size() < 1) op.args.push_back(std::move(width));
+        if (op.args.size() < 2) op.args.push_back(std::move(merge));
+        break;
+      }
+      case CommandId::LineSeg: op.kind = OpKind::LineSeg; allArgs(0); break;
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));

@@ -83,6 +83,17 @@ class Printer {
         m_.turtle.width != defaults.width)
       line(0, "turtle angle " + printNumber(m_.turtle.angle) + " step " +
                   printNumber(m_.turtle.step) + " width " + printNumber(m_.turtle.width));
+    if (m_.collision.all || m_.collision.metric != CollisionMetric::Mesh) {
+      std::string c = "collision";
+      if (m_.collision.all) c += " all";
+      switch (m_.collision.metric) {
+        case CollisionMetric::Mesh: break;
+        case CollisionMetric::Centre: c += " centre " + printNumber(m_.collision.radius); break;
+        case CollisionMetric::Geodesic: c += " geodesic " + printNumber(m_.collision.radius); break;
+        default: c += " metric#" + std::to_string(static_cast<int>(m_.collision.metric));
+      }
+      line(0, c);
+    }
     for (const EnvDecl& d : m_.environment) {
       std::string s = "env " + d.kind;
       if (!d.name.empty()) s += " " + d.name;
@@ -264,6 +275,8 @@ class Printer {
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
       case OpKind::Lock: text = "lock"; break;
+      case OpKind::Line: text = withArgs("line"); break;
+      case OpKind::LineSeg: text = withArgs("lineseg"); break;
       case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ir/builtins.h"
+#include "ir/printer.h"
 
 namespace fgsg::ir {
 
@@ -27,6 +28,8 @@ const char* opName(OpKind k) {
     case OpKind::Extrude: return "extrude";
     case OpKind::Roof: return "roof";
     case OpKind::Lock: return "lock";
+    case OpKind::Line: return "line";
+    case OpKind::LineSeg: return "lineseg";
     case OpKind::Synthesize: return "synthesize";
     case OpKind::Unsupported: return "unsupported";
   }
@@ -42,6 +45,7 @@ class Verifier {
   bool run() {
     const size_t before = problems_.size();
     if (m_.steps < 0) problem("negative derivation steps " + std::to_string(m_.steps));
+    collision();
     for (size_t i = 0; i < m_.attrs.size(); ++i) {
       Scoped s(*this, "attr " + m_.attrs[i].name);
       const Attr& a = m_.attrs[i];
@@ -76,6 +80,18 @@ class Verifier {
 
   void expectType(const Expr& e, Type t, const char* role) {
     if (e.type != t) problem(std::string(role) + " is " + str(e.type) + ", expected " + str(t));
+  }
+
+  void collision() {
+    const CollisionSettings& c = m_.collision;
+    Scoped s(*this, "collision");
+    if (c.metric > CollisionMetric::Geodesic) {
+      problem("bad metric " + std::to_string(static_cast<int>(c.metric)));
+      return;
+    }
+    if (c.metric != CollisionMetric::Mesh && !(c.radius > 0 && std::isfinite(c.radius)))
+      problem("radius " + printNumber(c.radius) + " must be positive for the " +
+              (c.metric == CollisionMetric::Centre ? "centre" : "geodesic") + " metric");
   }
 
   // ------------------------------------------------------------ symbols and rules
@@ -306,6 +322,22 @@ class Verifier {
       case OpKind::Lock:
         if (op.bodies.empty()) problem("no bodies");
         numArgs(op, r, 0);
+        break;
+      case OpKind::Line:
+        expectBodies(op, 0);
+        if (op.args.size() != 2) {
+          problem(std::to_string(op.args.size()) + " arguments, expected 2 (width, merge)");
+        } else {
+          expectType(op.args[0], Type::Num, "width");
+          expectType(op.args[1], Type::Bool, "merge");
+        }
+        for (const Expr& a : op.args) expr(a, r);
+        break;
+      case OpKind::LineSeg:
+        expectBodies(op, 0);
+        if (op.args.size() > 1)
+          problem(std::to_string(op.args.size()) + " arguments, expected 0 or 1 (length)");
+        numArgs(op, r, op.args.size());
         break;
       case OpKind::Synthesize:
         stringId(op.str);

@@ -69,6 +69,14 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitCollisionDecl(FgsgParser::CollisionDeclContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
+  virtual antlrcpp::Any visitCollisionWord(FgsgParser::CollisionWordContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitAxiomDecl(FgsgParser::AxiomDeclContext *ctx) override {
     return visitChildren(ctx);
   }

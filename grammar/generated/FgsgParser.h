@@ -14,27 +14,28 @@ class  FgsgParser : public antlr4::Parser {
 public:
   enum {
     CONST = 1, ATTR = 2, SURFACE = 3, FIELD = 4, TEXTURE = 5, DERIVE = 6, 
-    TURTLE = 7, AXIOM = 8, PRIORITY = 9, TRUE = 10, FALSE = 11, EPSILON = 12, 
-    ARROW = 13, ASSIGN = 14, EQ = 15, NEQ = 16, LE = 17, GE = 18, LT = 19, 
-    GT = 20, AND = 21, OR = 22, PLUS = 23, MINUS = 24, STAR = 25, SLASH = 26, 
-    PERCENT = 27, CARET = 28, BANG = 29, AMP = 30, PIPE = 31, BACKSLASH = 32, 
-    DOLLAR = 33, TILDE = 34, QUESTION = 35, COLON = 36, SEMI = 37, COMMA = 38, 
-    DOT = 39, LPAREN = 40, RPAREN = 41, LBRACK = 42, RBRACK = 43, LBRACE = 44, 
-    RBRACE = 45, RELSIZE = 46, FLOAT = 47, INT = 48, ID = 49, STRING = 50, 
-    UNTERMINATED_STRING = 51, LINE_COMMENT = 52, BLOCK_COMMENT = 53, UNTERMINATED_COMMENT = 54, 
-    WS = 55, UNKNOWN_CHAR = 56
+    TURTLE = 7, COLLISION = 8, AXIOM = 9, PRIORITY = 10, TRUE = 11, FALSE = 12, 
+    EPSILON = 13, ARROW = 14, ASSIGN = 15, EQ = 16, NEQ = 17, LE = 18, GE = 19, 
+    LT = 20, GT = 21, AND = 22, OR = 23, PLUS = 24, MINUS = 25, STAR = 26, 
+    SLASH = 27, PERCENT = 28, CARET = 29, BANG = 30, AMP = 31, PIPE = 32, 
+    BACKSLASH = 33, DOLLAR = 34, TILDE = 35, QUESTION = 36, COLON = 37, 
+    SEMI = 38, COMMA = 39, DOT = 40, LPAREN = 41, RPAREN = 42, LBRACK = 43, 
+    RBRACK = 44, LBRACE = 45, RBRACE = 46, RELSIZE = 47, FLOAT = 48, INT = 49, 
+    ID = 50, STRING = 51, UNTERMINATED_STRING = 52, LINE_COMMENT = 53, BLOCK_COMMENT = 54, 
+    UNTERMINATED_COMMENT = 55, WS = 56, UNKNOWN_CHAR = 57
   };
 
   enum {
     RuleProgram = 0, RuleStatement = 1, RuleValueDecl = 2, RuleSurfaceDecl = 3, 
     RuleFieldDecl = 4, RuleFieldSource = 5, RuleFieldDesignItem = 6, RuleFieldDesignWord = 7, 
     RuleDesignValue = 8, RuleTextureDecl = 9, RuleDeriveDecl = 10, RuleTurtleDecl = 11, 
-    RuleTurtleSetting = 12, RuleAxiomDecl = 13, RulePriorityDecl = 14, RuleGrammarRule = 15, 
-    RuleRuleLabel = 16, RuleRuleHead = 17, RuleLeftContext = 18, RuleRightContext = 19, 
-    RuleContextModule = 20, RuleModulePattern = 21, RuleParamDecl = 22, 
-    RuleRuleBody = 23, RuleBranch = 24, RuleArrow = 25, RuleSuccessor = 26, 
-    RuleSequenceItem = 27, RuleItem = 28, RuleCallArgs = 29, RuleBody = 30, 
-    RuleBodyPart = 31, RuleExpr = 32, RulePrimary = 33, RuleNumber = 34
+    RuleTurtleSetting = 12, RuleCollisionDecl = 13, RuleCollisionWord = 14, 
+    RuleAxiomDecl = 15, RulePriorityDecl = 16, RuleGrammarRule = 17, RuleRuleLabel = 18, 
+    RuleRuleHead = 19, RuleLeftContext = 20, RuleRightContext = 21, RuleContextModule = 22, 
+    RuleModulePattern = 23, RuleParamDecl = 24, RuleRuleBody = 25, RuleBranch = 26, 
+    RuleArrow = 27, RuleSuccessor = 28, RuleSequenceItem = 29, RuleItem = 30, 
+    RuleCallArgs = 31, RuleBody = 32, RuleBodyPart = 33, RuleExpr = 34, 
+    RulePrimary = 35, RuleNumber = 36
   };
 
   FgsgParser(antlr4::TokenStream *input);
@@ -60,6 +61,8 @@ public:
   class DeriveDeclContext;
   class TurtleDeclContext;
   class TurtleSettingContext;
+  class CollisionDeclContext;
+  class CollisionWordContext;
   class AxiomDeclContext;
   class PriorityDeclContext;
   class GrammarRuleContext;
@@ -107,6 +110,7 @@ public:
     TextureDeclContext *textureDecl();
     DeriveDeclContext *deriveDecl();
     TurtleDeclContext *turtleDecl();
+    CollisionDeclContext *collisionDecl();
     AxiomDeclContext *axiomDecl();
     PriorityDeclContext *priorityDecl();
     GrammarRuleContext *grammarRule();
@@ -310,6 +314,37 @@ public:
   };
 
   TurtleSettingContext* turtleSetting();
+
+  class  CollisionDeclContext : public antlr4::ParserRuleContext {
+  public:
+    CollisionDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *COLLISION();
+    antlr4::tree::TerminalNode *SEMI();
+    std::vector<CollisionWordContext *> collisionWord();
+    CollisionWordContext* collisionWord(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  CollisionDeclContext* collisionDecl();
+
+  class  CollisionWordContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *word = nullptr;;
+    antlr4::Token *sign = nullptr;;
+    CollisionWordContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *ID();
+    NumberContext *number();
+    antlr4::tree::TerminalNode *MINUS();
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  CollisionWordContext* collisionWord();
 
   class  AxiomDeclContext : public antlr4::ParserRuleContext {
   public:

@@ -46,6 +46,10 @@ public:
 
     virtual antlrcpp::Any visitTurtleSetting(FgsgParser::TurtleSettingContext *context) = 0;
 
+    virtual antlrcpp::Any visitCollisionDecl(FgsgParser::CollisionDeclContext *context) = 0;
+
+    virtual antlrcpp::Any visitCollisionWord(FgsgParser::CollisionWordContext *context) = 0;
+
     virtual antlrcpp::Any visitAxiomDecl(FgsgParser::AxiomDeclContext *context) = 0;
 
     virtual antlrcpp::Any visitPriorityDecl(FgsgParser::PriorityDeclContext *context) = 0;

@@ -279,6 +279,57 @@ TEST_CASE("texture, derive, turtle, axiom declarations", "[parse][decl]") {
   CHECK(dump(p.program.axioms[0].successor) == "S(20, 0, 12) footprint");
 }
 
+TEST_CASE("collision declarations: words and radii", "[parse][decl]") {
+  Parsed p = parseOk(
+      "collision all;\n"
+      "collision mesh;\n"
+      "collision centre 0.3;\n"
+      "collision all center .25;\n"
+      "collision geodesic -2 all;\n"
+      "collision;\n");
+  const auto& c = p.program.collisions;
+  REQUIRE(c.size() == 6);
+  auto words = [](const CollisionDecl& d) {
+    std::string out;
+    for (const auto& w : d.words) {
+      std::ostringstream n;
+      n << w.number;
+      (out += out.empty() ? "" : " ") += w.isNumber() ? "#" + n.str() : w.word;
+    }
+    return out;
+  };
+  CHECK(words(c[0]) == "all");
+  CHECK(words(c[1]) == "mesh");
+  CHECK(words(c[2]) == "centre #0.3");
+  CHECK(words(c[3]) == "all center #0.25");
+  CHECK(words(c[4]) == "geodesic #-2 all");  // the sign is kept for sema to reject
+  CHECK(words(c[5]).empty());
+  // Ranges: the declaration from its keyword; a signed number from its '-'.
+  CHECK(c[3].range.begin.line == 4);
+  CHECK(c[3].range.begin.col == 1);
+  CHECK(c[3].words[2].range.begin.col == 22);
+  CHECK(c[4].words[1].range.begin.col == 20);
+  CHECK(c[4].words[1].range.end.col == 21);
+}
+
+TEST_CASE("collision is a keyword: it starts a statement and is no name", "[parse][decl]") {
+  // Without ';' the line break ends the rule before it and the declaration before the next.
+  Parsed p = parseOk("Axiom ~> A\ncollision all centre 0.5\nA ~> I(\"cube\")\n");
+  CHECK(p.rules() == std::vector<std::string>{"Axiom ~> A", "A ~> I(\"cube\")"});
+  REQUIRE(p.program.collisions.size() == 1);
+  CHECK(p.program.collisions[0].words.size() == 3);
+
+  Parsed bad = parse("collision ~> A;");
+  CHECK_FALSE(bad.ok);
+  Parsed call = parse("collision centre(0.3);");
+  REQUIRE(call.diagnostics.size() == 1);
+  CHECK(call.diagnostics[0].code == "E002");
+  CHECK(call.diagnostics[0].range.begin.col == 17);
+  CHECK(call.diagnostics[0].message ==
+        "expected a collision setting (all, mesh, centre R, geodesic R) or ';' after "
+        "'collision centre', found '('");
+}
+
 TEST_CASE("priority headers set the priority of the rules that follow", "[parse][decl]") {
   Parsed p = parseOk("A ~> B;\nPRIORITY 1:\nC ~> D;\nE ~> F;\npriority 3:\nG ~> H;\n");
   REQUIRE(p.program.rules.size() == 4);

@@ -1,4 +1,5 @@
 // Semantic analysis: names, arity, inferred types, bodies, probabilities, reachability.
+#include "frontend/builtins.h"
 #include "frontend/parse.h"
 #include "frontend/sema.h"
 
@@ -146,4 +147,169 @@ TEST_CASE("Constant vectors and two-argument math fold", "[sema]") {
   CHECK(a.sema.constants.at("v").type == ValueType::Vec3);
   CHECK(a.sema.constants.at("v").vec[2] == 3);
   CHECK(a.sema.constants.at("w").num == 8);
+}
+
+// ------------------------------------------------------------ collision and lines
+
+namespace {
+
+// Only the diagnostics with this code, as "line:col" strings.
+std::vector<std::string> where(const Analysed& a, const std::string& code) {
+  std::vector<std::string> out;
+  for (const auto& d : a.diags)
+    if (d.code == code)
+      out.push_back(std::to_string(d.range.begin.line) + ":" + std::to_string(d.range.begin.col));
+  return out;
+}
+
+std::string messageOf(const Analysed& a, const std::string& code) {
+  for (const auto& d : a.diags)
+    if (d.code == code) return d.message;
+  return "";
+}
+
+const char* kRules = "\nA ~> I(\"cube\");";
+
+}  // namespace
+
+TEST_CASE("collision declarations: every form", "[sema][collision]") {
+  auto none = analyse(std::string("A ~> I(\"cube\");"));
+  REQUIRE(none.ok);
+  CHECK_FALSE(none.sema.collisionDeclared);
+  CHECK_FALSE(none.sema.collisionAll);
+  CHECK(none.sema.collisionMetric == "mesh");
+
+  auto all = analyse(std::string("collision all;") + kRules);
+  REQUIRE(all.ok);
+  CHECK(all.sema.collisionDeclared);
+  CHECK(all.sema.collisionAll);
+  CHECK(all.sema.collisionMetric == "mesh");
+  CHECK(all.sema.collisionRange.begin.line == 1);
+
+  auto mesh = analyse(std::string("collision mesh;") + kRules);
+  REQUIRE(mesh.ok);
+  CHECK_FALSE(mesh.sema.collisionAll);
+  CHECK(mesh.sema.collisionMetric == "mesh");
+  CHECK(mesh.sema.collisionRadius == 0);
+
+  for (const char* spelling : {"centre", "center"}) {
+    auto c = analyse(std::string("collision ") + spelling + " 0.3;" + kRules);
+    REQUIRE(c.ok);
+    CHECK_FALSE(c.sema.collisionAll);
+    CHECK(c.sema.collisionMetric == "centre");
+    CHECK(c.sema.collisionRadius == 0.3);
+  }
+
+  auto geo = analyse(std::string("collision geodesic 0.3;") + kRules);
+  REQUIRE(geo.ok);
+  CHECK(geo.sema.collisionMetric == "geodesic");
+  CHECK(geo.sema.collisionRadius == 0.3);
+
+  for (const char* text : {"collision all centre 0.25;", "collision centre 0.25 all;"}) {
+    auto both = analyse(std::string(text) + kRules);
+    REQUIRE(both.ok);
+    CHECK(both.sema.collisionAll);
+    CHECK(both.sema.collisionMetric == "centre");
+    CHECK(both.sema.collisionRadius == 0.25);
+  }
+
+  // The radius may name a number const.
+  auto named = analyse(std::string("const r = 0.5 / 2;\ncollision all geodesic r;") + kRules);
+  REQUIRE(named.ok);
+  CHECK(named.sema.collisionMetric == "geodesic");
+  CHECK(named.sema.collisionRadius == 0.25);
+}
+
+TEST_CASE("collision declarations: each mistake with its code and column", "[sema][collision]") {
+  // E030: an unknown word (the valid ones are listed), or no word at all.
+  auto unknown = analyse(std::string("collision all centr 0.3;") + kRules);
+  CHECK_FALSE(unknown.ok);
+  CHECK(where(unknown, "E030") == std::vector<std::string>{"1:15"});
+  CHECK(messageOf(unknown, "E030") ==
+        "unknown collision setting 'centr' (expected all, mesh, centre R, center R or geodesic R)");
+  CHECK(where(unknown, "E031") == std::vector<std::string>{"1:21"});  // its number, left over
+  auto empty = analyse(std::string("collision;") + kRules);
+  CHECK(where(empty, "E030") == std::vector<std::string>{"1:1"});
+  auto stringConst = analyse(std::string("const r = \"x\";\ncollision centre r;") + kRules);
+  CHECK(where(stringConst, "E031") == std::vector<std::string>{"2:11"});
+  CHECK(where(stringConst, "E030") == std::vector<std::string>{"2:18"});
+
+  // E031: centre / geodesic without a positive radius; a number anywhere else.
+  auto missing = analyse(std::string("collision centre;") + kRules);
+  CHECK_FALSE(missing.ok);
+  CHECK(where(missing, "E031") == std::vector<std::string>{"1:11"});
+  CHECK(messageOf(missing, "E031") == "'centre' needs a radius: `collision centre 0.3;`");
+  auto missingBeforeAll = analyse(std::string("collision geodesic all;") + kRules);
+  CHECK(where(missingBeforeAll, "E031") == std::vector<std::string>{"1:11"});
+  auto zero = analyse(std::string("collision geodesic 0;") + kRules);
+  CHECK(where(zero, "E031") == std::vector<std::string>{"1:20"});
+  CHECK(messageOf(zero, "E031") == "the radius of 'geodesic' must be a positive number, got 0");
+  auto negative = analyse(std::string("collision center -0.5;") + kRules);
+  CHECK(where(negative, "E031") == std::vector<std::string>{"1:18"});
+  CHECK(messageOf(negative, "E031") == "the radius of 'center' must be a positive number, got -0.5");
+  auto stray = analyse(std::string("collision all 0.3;") + kRules);
+  CHECK(where(stray, "E031") == std::vector<std::string>{"1:15"});
+  CHECK(messageOf(stray, "E031") ==
+        "a number in `collision` is the radius after 'centre' or 'geodesic', and 'all' takes "
+        "none: `collision centre 0.3;`");
+  auto meshRadius = analyse(std::string("collision mesh 2;") + kRules);
+  CHECK(where(meshRadius, "E031") == std::vector<std::string>{"1:16"});
+  auto first = analyse(std::string("collision 0.3 centre 1;") + kRules);
+  CHECK(where(first, "E031") == std::vector<std::string>{"1:11"});
+
+  // E032: two metrics, a word twice, a second declaration.
+  auto twoMetrics = analyse(std::string("collision mesh geodesic 0.2;") + kRules);
+  CHECK_FALSE(twoMetrics.ok);
+  CHECK(where(twoMetrics, "E032") == std::vector<std::string>{"1:16"});
+  CHECK(messageOf(twoMetrics, "E032") ==
+        "two collision metrics, 'mesh' and 'geodesic': choose one (mesh, centre R or geodesic R)");
+  CHECK(where(twoMetrics, "E031").empty());  // geodesic's radius is still read as its radius
+  auto allTwice = analyse(std::string("collision all centre 1 all;") + kRules);
+  CHECK(where(allTwice, "E032") == std::vector<std::string>{"1:24"});
+  auto second = analyse(std::string("collision all;\nA ~> I(\"cube\");\ncollision centre 0.3;"));
+  CHECK_FALSE(second.ok);
+  CHECK(where(second, "E032") == std::vector<std::string>{"3:1"});
+  CHECK(messageOf(second, "E032") ==
+        "only one `collision` declaration is allowed (the first is on line 1); write all its "
+        "settings in one: `collision all centre 0.3;`");
+  // The first declaration still counts.
+  CHECK(second.sema.collisionAll);
+  CHECK(second.sema.collisionMetric == "mesh");
+}
+
+TEST_CASE("Line and LineSeg: optional arguments, checked types, no body", "[sema][lines]") {
+  auto ok = analyse(
+      "Axiom ~> Line() LineSeg() Line(0.1) LineSeg(2) Line(0.1, false) Grow(3, true);\n"
+      "Grow(n, m) ~> Line(n / 10, m && n > 1) LineSeg(n);");
+  INFO(ok.diags.size());
+  CHECK(ok.ok);
+  CHECK(ok.diags.empty());
+
+  auto types = analyse("Axiom ~> Line(\"wide\", 1) LineSeg(true);");
+  CHECK_FALSE(types.ok);
+  CHECK(where(types, "E013") == std::vector<std::string>{"1:15", "1:34"});
+  CHECK(where(types, "E014") == std::vector<std::string>{"1:23"});
+  CHECK(messageOf(types, "E014") == "the merge flag of 'Line' must be a boolean, but this is a number");
+
+  auto arity = analyse("Axiom ~> Line(1, true, 2) LineSeg(1, 2);");
+  CHECK(where(arity, "E016") == std::vector<std::string>{"1:10", "1:27"});
+  CHECK(messageOf(arity, "E016") == "'Line' takes 0 to 2 arguments, got 3: Line(width, merge)");
+
+  auto body = analyse("Axiom ~> Line(1){ A } LineSeg{ A };\nA ~> I(\"cube\");");
+  CHECK(where(body, "E018") == std::vector<std::string>{"1:10", "1:23"});
+}
+
+TEST_CASE("IC and IM type-check and wait for no later issue", "[sema][collision]") {
+  for (const char* name : {"IC", "IM", "Line", "LineSeg"}) {
+    const CommandInfo* cmd = findCommand(name);
+    REQUIRE(cmd != nullptr);
+    CHECK(cmd->laterIssue == nullptr);
+    CHECK(cmd->body == BodyRule::None);
+  }
+  auto ok = analyse("Axiom ~> IC(\"cube\") IM(\"cube\", 0.1, 30) A(0.2);\nA(d) ~> IM(\"ico\", d, d * 90);");
+  CHECK(ok.ok);
+  auto bad = analyse("Axiom ~> IM(\"cube\", \"far\", true);");
+  CHECK(where(bad, "E013") == std::vector<std::string>{"1:21", "1:28"});
+  auto asset = analyse("Axiom ~> IC(3);");
+  CHECK(where(asset, "E017") == std::vector<std::string>{"1:13"});
 }
