@@ -370,4 +370,29 @@ int AssetLibrary::resolve(const std::string& name, std::string& error) {
   return byName_[name] = int(meshes_.size() - 1);
 }
 
+int AssetLibrary::addGenerated(const std::string& name, const Mesh& world,
+                               std::array<double, 16>& unitBoxToWorld) {
+  Builder b;
+  for (size_t v = 0; v < world.vertexCount(); ++v) {
+    b.p.emplace_back(world.positions[3 * v], world.positions[3 * v + 1], world.positions[3 * v + 2]);
+    b.n.emplace_back(world.normals[3 * v], world.normals[3 * v + 1], world.normals[3 * v + 2]);
+  }
+  b.idx = world.indices;
+  V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);
+  for (const V3& q : b.p) {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const V3 extent = b.p.empty() ? V3::Zero() : V3(hi - lo);
+  unitBoxToWorld.fill(0.0);
+  for (int a = 0; a < 3; ++a) {
+    // A flat axis was snapped to 0 in the unit box: scale 0 puts it back at lo.
+    unitBoxToWorld[5 * a] = extent[a] <= kFlatRelTolerance * extent.maxCoeff() ? 0.0 : extent[a];
+    unitBoxToWorld[12 + a] = b.p.empty() ? 0.0 : lo[a];
+  }
+  unitBoxToWorld[15] = 1.0;
+  meshes_.push_back(normaliseToUnitBox(b));
+  return byName_[name] = int(meshes_.size() - 1);
+}
+
 }  // namespace fgsg::rt

@@ -6,6 +6,7 @@
 
 #include "runtime/mesh.h"
 
+#include <array>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -29,6 +30,11 @@ class AssetLibrary {
   // unknown name or an unreadable file gives -1 and a message in `error`.
   int resolve(const std::string& name, std::string& error);
   const Mesh& mesh(int index) const { return meshes_[index]; }
+
+  // Registers geometry the derivation built itself (a swept line) under `name`: it is
+  // normalised into the unit box like every asset, and `unitBoxToWorld` (column-major
+  // 4x4) receives the transform that puts it back where it was built.
+  int addGenerated(const std::string& name, const Mesh& world, std::array<double, 16>& unitBoxToWorld);
 
  private:
   std::vector<std::string> searchDirs_;

@@ -17,6 +17,7 @@ struct DeriveOptions {
   double maxSeconds = 120.0;
   std::vector<std::pair<std::string, std::string>> attrOverrides;  // --set name=value
   std::vector<std::string> assetDirs;  // where asset files are looked up
+  bool collideAll = false;  // --collide-all: every I() is collision-tested, as IC
 };
 
 struct DeriveStats {
@@ -25,6 +26,12 @@ struct DeriveStats {
   uint64_t terminals = 0;      // shapes no rule replaced
   uint64_t instances = 0;      // instances placed
   uint64_t stringLength = 0;   // parallel derivations: modules in the final string
+  uint64_t collisionTests = 0; // instances tested by IC (or under `collision all`)
+  uint64_t collisions = 0;     // of those, rejected: the rest of their production culled
+  uint64_t merges = 0;         // IM instances merged into an earlier one
+  uint64_t lineSegments = 0;   // LineSeg segments kept
+  uint64_t linesJoined = 0;    // lines ended at an intersection (merged or stopped)
+  uint64_t locksRemoved = 0;   // Lock sets removed whole because one of their shapes collided
   double deriveSeconds = 0.0;
 };
 

@@ -5,6 +5,7 @@
 
 #include "runtime/scope.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace fgsg::rt {
@@ -14,6 +15,9 @@ enum class Occlusion { None, Partial, Full };
 class OcclusionIndex {
  public:
   void add(const Scope& box);
+  // Undo for all-or-nothing placement (Lock): keeps the first `count` boxes.
+  size_t size() const { return boxes_.size(); }
+  void truncate(size_t count) { boxes_.resize(std::min(count, boxes_.size())); }
   // Touching faces do not count: the query box is shrunk by a small tolerance first.
   Occlusion test(const Scope& query) const;
 

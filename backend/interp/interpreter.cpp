@@ -1,5 +1,6 @@
 #include "backend/interp/interpreter.h"
 
+#include "backend/interp/collision_placement.h"
 #include "backend/interp/eval.h"
 #include "backend/interp/shape_store.h"
 #include "runtime/cga/cga.h"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 
 namespace fgsg::backend {
 namespace {
@@ -72,10 +74,12 @@ class Interpreter final : public QueryHost {
         runSequential();
       result.ok = true;
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
+      appendLineTubes(lines_, assets_, out_, symbolColor_);
     } catch (const LimitReached& limit) {
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
       result.ok = true;
       result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
+      appendLineTubes(lines_, assets_, out_, symbolColor_);
     } catch (const DeriveError& e) {
       result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
     }
@@ -97,6 +101,10 @@ class Interpreter final : public QueryHost {
   // ------------------------------------------------------------ set-up
 
   void checkEnvironment() {
+    if (m_.mode == ir::DeriveMode::Parallel && (m_.collision.all || opt_.collideAll))
+      throw DeriveError{m_.collision.loc, "R009",
+                        "collision tests need a sequential derivation: a collision culls the rest "
+                        "of one production, and an L-system rewrites every module at once"};
     for (const auto& env : m_.environment)
       throw DeriveError{env.loc, "R001",
                         env.kind + " declarations are not yet supported when running: " + env.kind +
@@ -146,9 +154,79 @@ class Interpreter final : public QueryHost {
     out_.symbols.push_back("axiom");
     symbolColor_.push_back(colorFor("axiom"));
     usesOcclusion_ = moduleUsesQuery(ir::Query::ScopeOcc);
+    testAll_ = m_.collision.all || opt_.collideAll;
+    if (testAll_ || moduleUses([](const ir::Op& op) {
+          return op.kind == ir::OpKind::Lock ||
+                 (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain);
+        }))
+      collisions_ = std::make_unique<CollisionPlacement>(assets_, out_, m_.collision);
+    findEagerSymbols();
     noneId_ = stringId("none");
     partId_ = stringId("part");
     fullId_ = stringId("full");
+  }
+
+  // Whether any op of the grammar satisfies `pred`.
+  template <class Pred>
+  bool moduleUses(Pred pred) const {
+    std::function<bool(const ir::Block&)> inBlock = [&](const ir::Block& b) {
+      for (const auto& op : b) {
+        if (pred(op)) return true;
+        for (const auto& body : op.bodies)
+          if (inBlock(body)) return true;
+      }
+      return false;
+    };
+    for (const auto& r : m_.rules)
+      for (const auto& alt : r.alternatives)
+        if (inBlock(alt.ops)) return true;
+    return inBlock(m_.axiom);
+  }
+
+  // FGSG §4.4: "we derive simple rules that only place one shape in a depth-first manner
+  // to detect collisions". A symbol is simple when each of its successors writes at most
+  // one shape that has rules, itself simple (a chain C ~> F, F ~> IC(...)), without
+  // recursion, and something in the chain can collide (IC, I under `collision all`, or
+  // a line segment). A simple symbol is derived on the spot, where its successor writes
+  // it; a collision inside counts as its own and culls the rest of that production.
+  void findEagerSymbols() {
+    const size_t n = m_.symbols.size();
+    enum Mark : uint8_t { Unseen, Visiting, Done };
+    std::vector<Mark> mark(n, Unseen);
+    std::vector<uint8_t> simple(n, 0), collides(n, 0);
+    std::function<void(uint32_t)> visit = [&](uint32_t s) {
+      mark[s] = Visiting;
+      bool ok = true, hit = false;
+      int growing = 0;  // shapes with rules written by the successor being scanned
+      std::function<void(const ir::Block&)> scan = [&](const ir::Block& b) {
+        for (const auto& op : b) {
+          if (op.kind == ir::OpKind::Instance)
+            hit |= op.mode == ir::InstanceMode::Collide || (op.mode == ir::InstanceMode::Plain && testAll_);
+          if (op.kind == ir::OpKind::LineSeg) hit = true;
+          if (op.kind == ir::OpKind::Emit && !m_.symbols[op.index].rules.empty()) {
+            if (++growing > 1) ok = false;
+            if (mark[op.index] == Unseen) visit(op.index);
+            if (mark[op.index] == Visiting || !simple[op.index]) ok = false;  // recursion
+            hit |= collides[op.index] != 0;
+          }
+          for (const auto& body : op.bodies) scan(body);
+        }
+      };
+      for (uint32_t ri : m_.symbols[s].rules)
+        for (const auto& alt : m_.rules[ri].alternatives) {
+          growing = 0;
+          scan(alt.ops);
+        }
+      simple[s] = ok;
+      collides[s] = hit;
+      mark[s] = Done;
+    };
+    eager_.assign(n, 0);
+    for (uint32_t s = 0; s < n; ++s) {
+      if (m_.symbols[s].rules.empty()) continue;
+      if (mark[s] == Unseen) visit(s);
+      eager_[s] = simple[s] && collides[s];
+    }
   }
 
   bool moduleUsesQuery(ir::Query q) const {
@@ -234,12 +312,14 @@ class Interpreter final : public QueryHost {
     rt::Scope scope;
     rt::GeomRef geom;
     double width;
+    rt::LineCursor line;
   };
   struct State {
     rt::Scope scope;
     rt::GeomRef geom;
     double width = 0.1;
     size_t stackBase = 0;
+    rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
   };
 
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
@@ -261,6 +341,44 @@ class Interpreter final : public QueryHost {
     out_.params.insert(out_.params.end(), params, params + paramCount);
     out_.instances.push_back(inst);
     if (usesOcclusion_) occluders_.add(scope);
+    if (collisions_) collisions_->placed();
+  }
+
+  // I, IC and IM. False when a collision rejected the instance: the caller culls the
+  // rest of its production.
+  bool placeChecked(const ir::Op& op, const rt::Scope& scope, uint32_t symbol, const double* params,
+                    uint32_t paramCount, const Frame& f) {
+    if (!collisions_) {
+      placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+      return true;
+    }
+    const rt::Mat4 t = scope.unitBoxToWorld();
+    if (!t.allFinite())  // placeInstance words the error
+      placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+    if (op.mode == ir::InstanceMode::Merge) {
+      const double maxDist = eval_.num(op.args[0], f), maxAngle = eval_.num(op.args[1], f);
+      if (!(maxDist >= 0) || !(maxAngle >= 0) || !std::isfinite(maxDist) || !std::isfinite(maxAngle))
+        throw DeriveError{op.loc, "R014",
+                          "IM(\"" + m_.assets[op.index] + "\", maxDist, maxAngle): the thresholds must be "
+                          "finite and not negative, got " + std::to_string(maxDist) + " and " +
+                          std::to_string(maxAngle)};
+      if (collisions_->mergeInto(op.index, t, maxDist, maxAngle)) {
+        ++stats_.merges;
+        return true;
+      }
+      placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+      collisions_->placedMergeable(op.index, t, maxDist);
+      return true;
+    }
+    if (op.mode == ir::InstanceMode::Collide || testAll_) {
+      ++stats_.collisionTests;
+      if (!collisions_->fits(op.index, t)) {
+        ++stats_.collisions;
+        return false;
+      }
+    }
+    placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+    return true;
   }
 
   void turtle(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc) {
@@ -310,13 +428,14 @@ class Interpreter final : public QueryHost {
         for (int k = 0; k < 3; ++k)
           st.scope.S[k] = a[2 * k + 1] == static_cast<double>(ir::Size::Relative) ? a[2 * k] * st.scope.S[k] : a[2 * k];
         break;
-      case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width}); break;
+      case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width, st.line}); break;
       case ir::OpKind::Pop:
         if (stack_.size() <= st.stackBase)
           throw DeriveError{op.loc, "R007", "']' without a matching '[' in this string"};
         st.scope = stack_.back().scope;
         st.geom = stack_.back().geom;
         st.width = stack_.back().width;
+        st.line = stack_.back().line;
         stack_.pop_back();
         break;
       default: break;
@@ -336,6 +455,19 @@ class Interpreter final : public QueryHost {
     for (const auto& a : op.args) buf[n++] = eval_.num(a, f);
     return n;
   }
+
+  // What one running successor knows: its random stream, key and parameters, the
+  // children it has written so far, and whether a collision culled its rest.
+  struct Exec {
+    rt::RandomStream* rng;
+    uint64_t key;
+    uint32_t depth;   // depth of the shapes this successor creates
+    uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
+    const double* params;
+    uint32_t childCount;
+    bool culled = false;    // the rest of this production is dropped (FGSG §4.4)
+    bool collided = false;  // ... because something in it collided
+  };
 
   // ------------------------------------------------------------ sequential derivation
 
@@ -363,20 +495,7 @@ class Interpreter final : public QueryHost {
     rt::RandomStream rng{shape.key, 0};
     Frame f{params_.data(), &rng, &scope, depth, shape.index, this};
     if (depth >= opt_.maxDepth) {
-      // The depth limit cuts the derivation tree: deeper shapes stay terminal and the
-      // rest of the tree is still derived. Named: the rule that created the shape.
-      ++stats_.terminals;
-      if (!depthLimitHit_) {
-        depthLimitHit_ = true;
-        const uint32_t creator = shape.creator;
-        const ir::Rule* r = creator == UINT32_MAX ? nullptr : &m_.rules[creator];
-        depthWarning_ = {false, "R004", r ? r->loc.line : 0, r ? r->loc.col : 0,
-                         "depth limit " + std::to_string(opt_.maxDepth) +
-                             " (--max-depth) reached: " +
-                             (r ? "rule '" + r->label + "' keeps creating '" + sym.name + "'"
-                                : std::string("the axiom")) +
-                             "; shapes at that depth stay terminal"};
-      }
+      depthLimit(sym, shape.creator);
       return;
     }
     const ir::Alternative* alt = choose(sym, f);
@@ -390,8 +509,58 @@ class Interpreter final : public QueryHost {
     if ((stats_.rewrites & 4095) == 0) checkTime();
     creatorRule_ = chosenRule_;
     execRoot(alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
-             shape.symbol, &rng);
+             shape.symbol, &rng, shape.line);
     creatorRule_ = UINT32_MAX;
+  }
+
+  // The depth limit cuts the derivation tree: deeper shapes stay terminal and the rest
+  // of the tree is still derived. Named: the rule that created the shape.
+  void depthLimit(const ir::Symbol& sym, uint32_t creator) {
+    ++stats_.terminals;
+    if (depthLimitHit_) return;
+    depthLimitHit_ = true;
+    const ir::Rule* r = creator == UINT32_MAX ? nullptr : &m_.rules[creator];
+    depthWarning_ = {false, "R004", r ? r->loc.line : 0, r ? r->loc.col : 0,
+                     "depth limit " + std::to_string(opt_.maxDepth) + " (--max-depth) reached: " +
+                         (r ? "rule '" + r->label + "' keeps creating '" + sym.name + "'"
+                            : std::string("the axiom")) +
+                         "; shapes at that depth stay terminal"};
+  }
+
+  // Derives a shape where its successor writes it, depth-first to the end (an eager
+  // symbol, or any shape inside a Lock). True when a collision happened anywhere in
+  // its derivation: the shape counts as in collision.
+  bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
+                 uint32_t index) {
+    const ir::Symbol& sym = m_.symbols[symbol];
+    const uint64_t key = rt::childKey(parent.key, index);
+    const uint32_t depth = parent.depth;
+    std::vector<double> params(std::max(maxSlots_, 1u), 0.0);
+    std::copy(slots, slots + sym.slotCount, params.begin());
+    rt::RandomStream rng{key, 0};
+    Frame f{params.data(), &rng, &at.scope, depth, index, this};
+    if (depth >= opt_.maxDepth) {
+      depthLimit(sym, creatorRule_);
+      return false;
+    }
+    const ir::Alternative* alt = choose(sym, f);
+    if (!alt) {
+      ++stats_.terminals;
+      drawTurtleSymbol(sym, at.scope, params.data());
+      return false;
+    }
+    ++stats_.rewrites;
+    ++ruleUses_[chosenRule_];
+    if ((stats_.rewrites & 4095) == 0) checkTime();
+    const uint32_t outerCreator = creatorRule_;
+    creatorRule_ = chosenRule_;
+    State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line};
+    Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
+    f.scope = &st.scope;
+    execBlock(alt->ops, st, ex, f);
+    stack_.resize(st.stackBase);
+    creatorRule_ = outerCreator;
+    return ex.collided;
   }
 
   // F is a shape symbol when rules rewrite it; where none applies it still draws like the
@@ -470,9 +639,9 @@ class Interpreter final : public QueryHost {
   // Runs one successor for a shape (or the axiom) and queues the shapes it creates.
   void execRoot(const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom,
                 uint64_t key, uint32_t depth, uint32_t index, const double* params,
-                uint32_t symbol, rt::RandomStream* rng = nullptr) {
+                uint32_t symbol, rt::RandomStream* rng = nullptr, rt::LineCursor line = {}) {
     rt::RandomStream own{key, 0};
-    State st{scope, geom, m_.turtle.width, stack_.size()};
+    State st{scope, geom, m_.turtle.width, stack_.size(), line};
     Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
     const bool depthFirst = m_.mode == ir::DeriveMode::DepthFirst;
     if (depthFirst) {
@@ -493,15 +662,6 @@ class Interpreter final : public QueryHost {
       }
     }
   }
-
-  struct Exec {
-    rt::RandomStream* rng;
-    uint64_t key;
-    uint32_t depth;   // depth of the shapes this successor creates
-    uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
-    const double* params;
-    uint32_t childCount;
-  };
 
   // Shapes wait in one queue per priority, highest priority first; most grammars have one.
   ShapeQueue& bucketFor(int priority) {
@@ -534,7 +694,7 @@ class Interpreter final : public QueryHost {
           evalArgs(op, f, buf);
           scopeCommand(st, op, buf);
           break;
-        case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width}); break;
+        case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width, st.line}); break;
         case ir::OpKind::Pop:
         case ir::OpKind::RotateNormal:
         case ir::OpKind::Scale:
@@ -547,10 +707,9 @@ class Interpreter final : public QueryHost {
           break;
         }
         case ir::OpKind::Instance: {
-          if (op.mode != ir::InstanceMode::Plain) unsupported(op);
           const uint32_t sym = ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol;
           const uint32_t count = ex.symbol == UINT32_MAX ? 0 : m_.symbols[sym].slotCount;
-          placeInstance(op.index, st.scope, sym, ex.params, count, op.loc);
+          if (!placeChecked(op, st.scope, sym, ex.params, count, f)) ex.culled = ex.collided = true;
           break;
         }
         case ir::OpKind::Emit: emit(op, st, ex, f); break;
@@ -575,14 +734,75 @@ class Interpreter final : public QueryHost {
           runBody(op.bodies[0], part.scope, part.geom, st, ex, f);
           break;
         }
-        case ir::OpKind::Lock:
-          // Without collision-tested instancing nothing can collide, so the set is
-          // simply derived in order; IC brings the all-or-nothing test.
-          for (const auto& body : op.bodies) runBody(body, st.scope, st.geom, st, ex, f);
-          break;
+        case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
+        case ir::OpKind::Line: startLine(op, st, ex, f); break;
+        case ir::OpKind::LineSeg: extendLine(op, st, ex, f); break;
         case ir::OpKind::Synthesize: synthesizeInto(op, st, ex, f); break;
         case ir::OpKind::Unsupported: unsupported(op);
       }
+      if (ex.culled) return;
+    }
+  }
+
+  // Lock{ A | B | ... }: the parts and everything derived from them are placed as one
+  // unit, depth-first; a collision anywhere in the set removes all of it and culls the
+  // rest of the production.
+  void lockedSet(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    const CollisionPlacement::Transaction undo = collisions_->begin(lines_);
+    const size_t occluders = occluders_.size();
+    ++lockDepth_;
+    for (const auto& body : op.bodies) {
+      runBody(body, st.scope, st.geom, st, ex, f);
+      if (ex.culled) break;
+    }
+    --lockDepth_;
+    if (ex.collided) {
+      collisions_->rollback(undo, lines_);
+      occluders_.truncate(occluders);
+      ++stats_.locksRemoved;
+    }
+  }
+
+  // Line(width, merge): a new line starts at the scope's origin.
+  void startLine(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    const double width = eval_.num(op.args[0], f);
+    const bool merge = eval_.truth(op.args[1], f);
+    if (!(width > 0) || !std::isfinite(width))
+      throw DeriveError{op.loc, "R014",
+                        "Line(width, merge): the width must be a positive number, got " +
+                            std::to_string(width)};
+    if (!st.scope.P.allFinite())
+      throw DeriveError{op.loc, "R005", "this line's start point is not finite"};
+    st.line = lines_.start(st.scope.P, {width, merge},
+                           ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol);
+  }
+
+  // LineSeg(length?): moves `length` along the scope's X first, then extends the line to
+  // the scope's origin. Reaching another line ends this one there: the rest of the
+  // production (which would continue it) is culled.
+  void extendLine(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+    if (!op.args.empty()) st.scope.P += eval_.num(op.args[0], f) * st.scope.X();
+    if (!st.line.valid())
+      throw DeriveError{op.loc, "R014",
+                        "LineSeg outside a line: start one with Line(width) in this successor or in "
+                        "one that created this shape"};
+    if (!st.scope.P.allFinite())
+      throw DeriveError{op.loc, "R005",
+                        "this line segment's end is not finite (a parameter became NaN or infinite)"};
+    rt::Vec3 end;
+    switch (lines_.extend(st.line, st.scope.P, &end)) {
+      case rt::SegmentOutcome::Added: ++stats_.lineSegments; break;
+      case rt::SegmentOutcome::Joined:
+        ++stats_.lineSegments;
+        ++stats_.linesJoined;
+        st.scope.P = end;
+        ex.culled = true;
+        break;
+      case rt::SegmentOutcome::Stopped:
+        ++stats_.linesJoined;
+        ex.culled = ex.collided = true;
+        break;
+      case rt::SegmentOutcome::Ended: ex.culled = true; break;
     }
   }
 
@@ -669,6 +889,13 @@ class Interpreter final : public QueryHost {
     return static_cast<uint32_t>(out_.assets.size() - 1);
   }
 
+  [[noreturn]] void sequentialOnly(const ir::Op& op) {
+    throw DeriveError{op.loc, "R009",
+                      "'" + op.name + "' cannot appear in a parallel (L-system) derivation: a "
+                      "collision or a line ending culls the rest of one production, which needs a "
+                      "sequential derivation"};
+  }
+
   [[noreturn]] void unsupported(const ir::Op& op) {
     throw DeriveError{op.loc, "R001",
                       "'" + op.name + "' is not yet supported when running: it arrives with " +
@@ -696,12 +923,17 @@ class Interpreter final : public QueryHost {
       ++stats_.terminals;
       return;
     }
+    if (eager_[op.index] || lockDepth_ > 0) {
+      if (deriveNow(op.index, slots, st, ex, index)) ex.culled = ex.collided = true;
+      return;
+    }
     WaitingShape& shape = bucketFor(target.priority).push(slots, target.slotCount);
     shape.key = rt::childKey(ex.key, index);
     shape.symbol = op.index;
     shape.depth = ex.depth;
     shape.index = index;
     shape.creator = creatorRule_;
+    shape.line = st.line;
     shape.geom = st.geom;
     shape.scope = st.scope;
   }
@@ -730,7 +962,7 @@ class Interpreter final : public QueryHost {
 
   void runBody(const ir::Block& body, const rt::Scope& scope, const rt::GeomRef& geom,
                const State& outer, Exec& ex, Frame& f) {
-    State inner{scope, geom, outer.width, stack_.size()};
+    State inner{scope, geom, outer.width, stack_.size(), outer.line};
     execBlock(body, inner, ex, f);
     stack_.resize(inner.stackBase);
     f.scope = &outer.scope;
@@ -757,6 +989,7 @@ class Interpreter final : public QueryHost {
       if (parts[i].empty) continue;
       const ir::Block& body = op.kind == ir::OpKind::Subdiv ? op.bodies[i] : op.bodies[0];
       runBody(body, parts[i].scope, parts[i].geom, st, ex, f);
+      if (ex.culled) return;
     }
   }
 
@@ -844,11 +1077,14 @@ class Interpreter final : public QueryHost {
         case ir::OpKind::Pop:
         case ir::OpKind::Turtle:
         case ir::OpKind::Instance:
-          if (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain) unsupported(op);
+          if (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain) sequentialOnly(op);
           mod.argCount = evalArgs(op, f, buf);
           outArgs.insert(outArgs.end(), buf, buf + mod.argCount);
           break;
         case ir::OpKind::Unsupported: unsupported(op);
+        case ir::OpKind::Lock:
+        case ir::OpKind::Line:
+        case ir::OpKind::LineSeg: sequentialOnly(op);
         default:
           throw DeriveError{op.loc, "R009",
                             "'" + op.name + "' cannot appear in a parallel (L-system) derivation: "
@@ -1042,6 +1278,12 @@ class Interpreter final : public QueryHost {
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   bool usesOcclusion_ = false;
+  // Collision-tested instancing, merging, Lock and lines (FGSG §4.4).
+  std::unique_ptr<CollisionPlacement> collisions_;  // null: the grammar never collides
+  bool testAll_ = false;        // every I() is tested (`collision all;`, --collide-all)
+  std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
+  uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
+  rt::LineNetwork lines_;
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
 };

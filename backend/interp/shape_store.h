@@ -8,6 +8,7 @@
 #pragma once
 
 #include "runtime/geometry.h"
+#include "runtime/lines/line_network.h"
 #include "runtime/scope.h"
 
 #include <sys/mman.h>
@@ -26,6 +27,7 @@ struct WaitingShape {
   uint64_t key = 0;
   uint32_t symbol = 0, depth = 0, index = 0;
   uint32_t creator = UINT32_MAX;  // the rule that created it (UINT32_MAX: the axiom)
+  rt::LineCursor line;            // the line its LineSeg commands extend, if any
   rt::GeomRef geom;
   rt::Scope scope;
 };

@@ -1,0 +1,97 @@
+#include "backend/interp/collision_placement.h"
+
+#include <stdexcept>
+
+namespace fgsg::backend {
+namespace {
+
+rt::CollisionTest testFor(const ir::CollisionSettings& s) {
+  // On the plane geodesic and Euclidean centre distances are the same; on surfaces the
+  // geodesic one arrives with the surfaces work.
+  return s.metric == ir::CollisionMetric::Mesh ? rt::CollisionTest::Mesh : rt::CollisionTest::Centre;
+}
+
+rt::Mat4 transformOf(const rt::Instance& inst) {
+  return Eigen::Map<const rt::Mat4>(inst.transform.data());
+}
+
+}  // namespace
+
+CollisionPlacement::CollisionPlacement(rt::AssetLibrary& assets, rt::InstanceList& out,
+                                       const ir::CollisionSettings& settings)
+    : assets_(assets), out_(out), world_(assets, testFor(settings), settings.radius) {}
+
+int CollisionPlacement::mesh(uint32_t asset) {
+  if (asset >= meshOf_.size()) meshOf_.resize(asset + 1, -1);
+  if (meshOf_[asset] < 0) {
+    std::string error;
+    meshOf_[asset] = assets_.resolve(out_.assets[asset], error);
+    // Every asset is resolved before deriving; one that fails here is a bug.
+    if (meshOf_[asset] < 0) throw std::logic_error("collision test of an unresolved asset: " + error);
+  }
+  return meshOf_[asset];
+}
+
+void CollisionPlacement::setTransform(rt::Instance& inst, const rt::Mat4& m) {
+  for (int k = 0; k < 16; ++k) inst.transform[k] = m.data()[k];
+}
+
+bool CollisionPlacement::fits(uint32_t asset, const rt::Mat4& transform) {
+  return !world_.collides(mesh(asset), transform);
+}
+
+void CollisionPlacement::placed() {
+  const rt::Instance& inst = out_.instances.back();
+  world_.add(mesh(inst.asset), transformOf(inst));
+}
+
+bool CollisionPlacement::mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist,
+                                   double maxAngle) {
+  rt::MergeIndex::Merge merge;
+  if (!merges_.find(asset, transform, maxDist, maxAngle, merge)) return false;
+  merges_.apply(merge);
+  setTransform(out_.instances[merge.target], merge.transform);
+  world_.move(merge.target, merge.transform);
+  return true;
+}
+
+void CollisionPlacement::placedMergeable(uint32_t asset, const rt::Mat4& transform, double maxDist) {
+  merges_.add(asset, out_.instances.size() - 1, transform, maxDist);
+}
+
+CollisionPlacement::Transaction CollisionPlacement::begin(const rt::LineNetwork& lines) const {
+  return {out_.instances.size(), out_.params.size(), world_.mark(), merges_.mark(), lines.mark()};
+}
+
+void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) {
+  // Merges first: they may have moved instances older than the transaction back.
+  for (const auto& [target, before] : merges_.rollback(t.merges)) {
+    if (target >= t.instances) continue;  // removed below anyway
+    setTransform(out_.instances[target], before);
+    world_.move(target, before);
+  }
+  world_.rollback(t.obstacles);
+  out_.instances.resize(t.instances);
+  out_.params.resize(t.params);
+  lines.rollback(t.lines);
+}
+
+void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
+                     rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor) {
+  for (uint32_t c = 0; c < lines.chainCount(); ++c) {
+    if (lines.points(c).size() < 2) continue;
+    const rt::Mesh tube = lines.sweep(c);
+    if (tube.empty()) continue;
+    const std::string name = "<line " + std::to_string(c) + ">";
+    rt::Instance inst;
+    assets.addGenerated(name, tube, inst.transform);
+    inst.asset = static_cast<uint32_t>(out.assets.size());
+    out.assets.push_back(name);
+    inst.symbol = lines.owner(c);
+    inst.color = symbolColor[inst.symbol];
+    inst.firstParam = static_cast<uint32_t>(out.params.size());
+    out.instances.push_back(inst);
+  }
+}
+
+}  // namespace fgsg::backend

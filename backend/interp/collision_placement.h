@@ -1,0 +1,63 @@
+// Instances placed when collisions matter (FGSG §4.4): every instance placed so far is
+// an obstacle; IC asks whether a new one fits, IM merges it into an earlier twin, and a
+// Lock set is placed all or nothing (a transaction the derivation can roll back).
+#pragma once
+
+#include "ir/ir.h"
+#include "runtime/assets.h"
+#include "runtime/collision/collision_world.h"
+#include "runtime/collision/merge_index.h"
+#include "runtime/derivation.h"
+#include "runtime/instances.h"
+#include "runtime/lines/line_network.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fgsg::backend {
+
+class CollisionPlacement {
+ public:
+  CollisionPlacement(rt::AssetLibrary& assets, rt::InstanceList& out,
+                     const ir::CollisionSettings& settings);
+
+  // Whether an instance of `asset` (an index into the output's assets) mapped by
+  // `transform` is free of every obstacle. False with a message in `error` when its
+  // asset cannot be loaded.
+  bool fits(uint32_t asset, const rt::Mat4& transform);
+  // Records the instance just appended to the output as an obstacle.
+  void placed();
+
+  // IM: merges into an earlier instance of the same asset within the thresholds (moving
+  // it, in the output too) and returns true; false when the instance must be placed, after
+  // which placedMergeable() records it.
+  bool mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist, double maxAngle);
+  void placedMergeable(uint32_t asset, const rt::Mat4& transform, double maxDist);
+
+  // Lock: everything placed, merged or drawn as a line after begin() can be undone.
+  struct Transaction {
+    size_t instances = 0, params = 0, obstacles = 0, merges = 0, lines = 0;
+  };
+  Transaction begin(const rt::LineNetwork& lines) const;
+  void rollback(const Transaction& t, rt::LineNetwork& lines);
+
+  uint64_t narrowPhaseTests() const { return world_.narrowPhaseTests(); }
+
+ private:
+  int mesh(uint32_t asset);
+  static void setTransform(rt::Instance& inst, const rt::Mat4& m);
+
+  rt::AssetLibrary& assets_;
+  rt::InstanceList& out_;
+  rt::CollisionWorld world_;
+  rt::MergeIndex merges_;
+  std::vector<int> meshOf_;  // output asset -> library mesh (-1: not yet resolved)
+};
+
+// Appends every line of `lines` (two points or more) to the output as one smooth swept
+// tube, registered in `assets` as generated geometry named "<line N>".
+void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
+                     rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor);
+
+}  // namespace fgsg::backend

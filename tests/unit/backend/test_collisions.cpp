@@ -1,0 +1,203 @@
+// Collision-tested instancing (FGSG §4.4) in the interpreter: IC culls the rest of its
+// production; a collision deeper in a simple placing rule still culls its writer's
+// rest; Lock is all or nothing; IM merges within its thresholds; lines join where they
+// meet; and an independent brute-force check finds no two tested instances intersecting.
+#include "brute_force_intersection.h"
+#include "derive_helpers.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+using namespace fgsg;
+using namespace fgsg::test;
+
+namespace {
+
+// The symbols whose instances a result holds, in placement order ("B" for each of B's).
+std::string placedBy(const rt::DeriveResult& r) {
+  std::string s;
+  for (const auto& inst : r.instances.instances) s += r.instances.symbols[inst.symbol] + " ";
+  return s;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// An obstacle at the origin; B D E each place a sphere far away from everything else.
+const std::string kPieces = R"(
+Obstacle ~> I("cube")
+B ~> T(10, 0, 0) I("sphere")
+D ~> T(20, 0, 0) I("sphere")
+E ~> T(30, 0, 0) I("sphere")
+)";
+
+}  // namespace
+
+TEST_CASE("IC culls the rest of its production on a collision", "[collision]") {
+  // FGSG: "A ~> B I("X.obj") D E ... we would further derive shape B, but cull D and E".
+  auto hit = deriveText("Axiom ~> Obstacle A\nA ~> B IC(\"cube\") D E\n" + kPieces);
+  REQUIRE(hit.ok);
+  CHECK(placedBy(hit) == "Obstacle B ");
+  CHECK(hit.stats.collisionTests == 1);
+  CHECK(hit.stats.collisions == 1);
+  auto miss = deriveText("Axiom ~> Obstacle A\nA ~> B T(0, 5, 0) IC(\"cube\") D E\n" + kPieces);
+  REQUIRE(miss.ok);
+  CHECK(placedBy(miss) == "Obstacle A B D E ");
+  CHECK(miss.stats.collisions == 0);
+}
+
+TEST_CASE("A collision deeper in a simple placing rule culls its writer's rest", "[collision]") {
+  // FGSG: "A ~> B C D E; C ~> F; F ~> I("X.obj")": C is derived depth-first on the spot,
+  // its collision counts as C's, and D and E are culled.
+  const std::string rules = "A ~> B C D E\nC ~> F\nF ~> IC(\"cube\")\n" + kPieces;
+  auto hit = deriveText("Axiom ~> Obstacle A\n" + rules);
+  REQUIRE(hit.ok);
+  CHECK(placedBy(hit) == "Obstacle B ");
+  CHECK(hit.stats.collisions == 1);
+  auto miss = deriveText("Axiom ~> Obstacle T(0, 5, 0) A\n" + rules);
+  REQUIRE(miss.ok);
+  // F is placed as C is written, before B (queued) is derived.
+  CHECK(placedBy(miss) == "Obstacle F B D E ");
+}
+
+TEST_CASE("A shape that grows further is not derived early", "[collision]") {
+  // G recurses, so it waits in the queue as usual; its own collision culls only its own
+  // production.
+  auto r = deriveText("Axiom ~> Obstacle A\nA ~> G D\nG ~> IC(\"cube\") T(1, 0, 0) G\n" + kPieces,
+                      [] { rt::DeriveOptions o; o.maxDepth = 5; return o; }());
+  REQUIRE(r.ok);
+  CHECK(placedBy(r) == "Obstacle D ");
+  CHECK(r.stats.collisions == 1);
+}
+
+TEST_CASE("Lock places its set all or nothing", "[collision][lock]") {
+  const std::string rules = R"(
+L ~> Lock{ P | Q } X
+P ~> T(5, 0, 0) IC("sphere")
+Q ~> IC("cube")
+X ~> T(40, 0, 0) I("disc")
+)";
+  auto blocked = deriveText("Axiom ~> Obstacle L\n" + rules + kPieces);
+  REQUIRE(blocked.ok);
+  CHECK(placedBy(blocked) == "Obstacle ");  // P's sphere fitted but went with Q's cube; X culled
+  CHECK(blocked.stats.locksRemoved == 1);
+  auto free = deriveText("Axiom ~> Obstacle T(0, 7, 0) L\n" + rules + kPieces);
+  REQUIRE(free.ok);
+  CHECK(placedBy(free) == "Obstacle P Q X ");
+  CHECK(free.stats.locksRemoved == 0);
+}
+
+TEST_CASE("IM merges an instance into its twin within the thresholds only", "[collision][merge]") {
+  auto near = deriveText("Axiom ~> IM(\"cube\", 0.5, 10) T(0.4, 0, 0) RS(8) IM(\"cube\", 0.5, 10)");
+  REQUIRE(near.ok);
+  REQUIRE(near.instances.instances.size() == 1);
+  CHECK(near.stats.merges == 1);
+  // Half way between the two: centres (0.5, 0.5, 0.5) and (0.9, 0.5, 0.5) turned 8 degrees.
+  const Eigen::Vector3d c = unitPoint(near.instances.instances[0], 0.5, 0.5, 0.5);
+  const double a = 8 * M_PI / 180;
+  const Eigen::Vector3d second(0.4 + 0.5 * std::cos(a) - 0.5 * std::sin(a),
+                               0.5 * std::sin(a) + 0.5 * std::cos(a), 0.5);
+  CHECK((c - 0.5 * (Eigen::Vector3d(0.5, 0.5, 0.5) + second)).norm() < 1e-12);
+  auto far = deriveText("Axiom ~> IM(\"cube\", 0.5, 10) T(0.6, 0, 0) IM(\"cube\", 0.5, 10)");
+  CHECK(far.instances.instances.size() == 2);
+  auto turned = deriveText("Axiom ~> IM(\"cube\", 0.5, 10) RS(12) IM(\"cube\", 0.5, 10)");
+  CHECK(turned.instances.instances.size() == 2);
+  CHECK(turned.stats.merges == 0);
+}
+
+TEST_CASE("Collision-tested patterns have no intersecting instances", "[collision][bruteforce]") {
+  std::string grammar = readFile(std::string(FGSG_SOURCE_DIR) + "/examples/fig1_cracks_plane.fgsg");
+  REQUIRE(!grammar.empty());
+  rt::DeriveOptions opt;
+  opt.collideAll = true;
+  opt.maxDepth = 14;
+  opt.seed = 7;
+  auto r = deriveText(grammar, opt);
+  REQUIRE(r.ok);
+  REQUIRE(r.stats.collisions > 0);  // the cracks do run into each other
+  std::vector<size_t> all(r.instances.instances.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  rt::AssetLibrary library;
+  library.addSearchDir(std::string(FGSG_SOURCE_DIR) + "/examples/assets");
+  CHECK(intersectingPairs(r.instances, all, library).empty());
+  // Without the tests, the same grammar overlaps: the check can fail.
+  opt.collideAll = false;
+  opt.maxDepth = 8;
+  auto loose = deriveText(grammar, opt);
+  std::vector<size_t> some(loose.instances.instances.size());
+  for (size_t i = 0; i < some.size(); ++i) some[i] = i;
+  CHECK_FALSE(intersectingPairs(loose.instances, some, library).empty());
+  // Deterministic: the same seed gives the same instances.
+  opt.collideAll = true;
+  opt.maxDepth = 14;
+  auto again = deriveText(grammar, opt);
+  REQUIRE(again.instances.instances.size() == r.instances.instances.size());
+  for (size_t i = 0; i < r.instances.instances.size(); ++i)
+    CHECK(again.instances.instances[i].transform == r.instances.instances[i].transform);
+}
+
+TEST_CASE("Collision tests need a sequential derivation", "[collision][errors]") {
+  auto r = deriveText("derive parallel 2;\nAxiom ~> A\nA ~> IC(\"cube\") A");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R009");
+  CHECK(r.messages[0].line == 3);
+  CHECK(r.messages[0].col == 6);
+}
+
+TEST_CASE("Locked flowers are whole or absent, and never touch", "[collision][lock]") {
+  std::string grammar = readFile(std::string(FGSG_SOURCE_DIR) + "/examples/lock_flowers.fgsg");
+  REQUIRE(!grammar.empty());
+  rt::DeriveOptions opt;
+  opt.attrOverrides = {{"flowers", "60"}};
+  auto r = deriveText(grammar, opt);
+  REQUIRE(r.ok);
+  CHECK(r.stats.locksRemoved > 0);
+  size_t stems = 0, petals = 0;
+  for (const auto& inst : r.instances.instances) {
+    const std::string& by = r.instances.symbols[inst.symbol];
+    stems += by == "Stem";
+    petals += by == "Petal";
+  }
+  CHECK(stems > 10);
+  CHECK(petals == 5 * stems);
+  CHECK(stems + petals == r.instances.instances.size());
+  CHECK(stems + r.stats.locksRemoved == 60);
+  std::vector<size_t> all(r.instances.instances.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  rt::AssetLibrary library;
+  CHECK(intersectingPairs(r.instances, all, library).empty());
+}
+
+TEST_CASE("A line that reaches another ends exactly on it", "[collision][lines]") {
+  auto r = deriveText(R"(
+start = [ T(-2, 0, 0) Line(0.1, true) LineSeg(4) ] [ T(0, -1.05, 0) RS(90) Line(0.1, true) V ]
+V ~> LineSeg(0.3) V
+)");
+  REQUIRE(r.ok);
+  CHECK(r.stats.linesJoined == 1);
+  // The horizontal one, then up to -0.75 -0.45 -0.15 (tubes 0.15 apart: clear of each
+  // other) and the join at 0.
+  CHECK(r.stats.lineSegments == 5);
+  REQUIRE(r.instances.instances.size() == 2);  // one tube per line
+  const auto& vertical = r.instances.instances[1];
+  CHECK(r.instances.assets[vertical.asset] == "<line 1>");
+  // The tube's box runs from its start cap at y = -1.05 to its end cap on the other line's axis.
+  CHECK(unitPoint(vertical, 0, 0, 0).y() == Approx(-1.05).margin(1e-9));
+  CHECK(unitPoint(vertical, 1, 1, 1).y() == Approx(0).margin(1e-9));
+  CHECK(unitPoint(vertical, 0.5, 0.5, 0.5).x() == Approx(0).margin(1e-9));
+}
+
+TEST_CASE("LineSeg outside a line is an error at the command", "[collision][lines][errors]") {
+  auto r = deriveText("start = T(1, 0, 0) LineSeg(1)");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R014");
+  CHECK(r.messages[0].col == 20);
+}
