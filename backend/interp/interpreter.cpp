@@ -790,10 +790,12 @@ class Interpreter final : public QueryHost {
       throw DeriveError{op.loc, "R005",
                         "this line segment's end is not finite (a parameter became NaN or infinite)"};
     rt::Vec3 end;
-    switch (lines_.extend(st.line, st.scope.P, &end)) {
-      case rt::SegmentOutcome::Added: ++stats_.lineSegments; break;
+    const size_t before = lines_.segmentCount();  // a zero-length step adds nothing
+    const rt::SegmentOutcome outcome = lines_.extend(st.line, st.scope.P, &end);
+    stats_.lineSegments += lines_.segmentCount() - before;
+    switch (outcome) {
+      case rt::SegmentOutcome::Added: break;
       case rt::SegmentOutcome::Joined:
-        ++stats_.lineSegments;
         ++stats_.linesJoined;
         st.scope.P = end;
         ex.culled = true;

@@ -17,7 +17,7 @@
 namespace fgsg::rt {
 
 struct LineStyle {
-  double width = 0.05;  // diameter of the tube; negative or NaN count as 0
+  double width = 0.05;  // diameter of the tube; negative or not finite counts as 0
   bool merge = true;    // join a line it runs into (else stop before it)
 };
 
