@@ -1,0 +1,88 @@
+#include "runtime/surface/surface_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace fgsg::rt::surface {
+
+void SurfaceMesh::buildTopology() {
+  const size_t nv = vertices.size(), nf = faces.size();
+  neighbours.assign(nf, {-1, -1, -1});
+  faceNormals.assign(nf, Vec3::Zero());
+  faceAreas.assign(nf, 0.0);
+  vertexNormals.assign(nv, Vec3::Zero());
+  vertexFace.assign(nv, -1);
+  boundaryVertex.assign(nv, 0);
+  // Half-edge (a -> b) of face f, edge k: its twin is (b -> a) in the neighbour.
+  std::unordered_map<uint64_t, std::pair<int, int>> halfEdges;
+  halfEdges.reserve(3 * nf);
+  auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
+  double edgeSum = 0;
+  size_t edgeCount = 0;
+  for (size_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) halfEdges[key(faces[f][k], faces[f][(k + 1) % 3])] = {int(f), k};
+  for (size_t f = 0; f < nf; ++f) {
+    const auto& t = faces[f];
+    for (int k = 0; k < 3; ++k) {
+      auto it = halfEdges.find(key(t[(k + 1) % 3], t[k]));
+      if (it != halfEdges.end()) neighbours[f][k] = it->second.first;
+      edgeSum += (vertices[t[(k + 1) % 3]] - vertices[t[k]]).norm();
+      ++edgeCount;
+      if (vertexFace[t[k]] < 0) vertexFace[t[k]] = int(f);
+    }
+    const Vec3 n = (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
+    faceAreas[f] = 0.5 * n.norm();
+    faceNormals[f] = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::UnitZ();
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = (vertices[t[(k + 1) % 3]] - vertices[t[k]]).normalized();
+      const Vec3 b = (vertices[t[(k + 2) % 3]] - vertices[t[k]]).normalized();
+      const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+      vertexNormals[t[k]] += angle * faceNormals[f];
+    }
+  }
+  for (size_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (neighbours[f][k] < 0) {
+        boundaryVertex[faces[f][k]] = 1;
+        boundaryVertex[faces[f][(k + 1) % 3]] = 1;
+        // A boundary vertex's fan walk starts at its boundary face.
+        vertexFace[faces[f][k]] = int(f);
+      }
+  for (auto& n : vertexNormals) n = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::UnitZ();
+  meanEdgeLength = edgeCount ? edgeSum / edgeCount : 0.0;
+  boundsMin = Vec3::Constant(INFINITY);
+  boundsMax = Vec3::Constant(-INFINITY);
+  for (const Vec3& v : vertices) {
+    boundsMin = boundsMin.cwiseMin(v);
+    boundsMax = boundsMax.cwiseMax(v);
+  }
+  if (vertices.empty()) boundsMin = boundsMax = Vec3::Zero();
+}
+
+std::vector<int> SurfaceMesh::facesAround(int v) const {
+  std::vector<int> ring;
+  const int start = vertexFace[v];
+  if (start < 0) return ring;
+  // Walk clockwise to the boundary (or all the way round), then collect counter-clockwise.
+  int f = start;
+  if (boundaryVertex[v]) {
+    for (size_t guard = 0; guard <= faces.size(); ++guard) {
+      const int k = cornerOf(f, v);
+      const int prev = neighbours[f][(k + 2) % 3];  // across the edge entering v
+      if (prev < 0 || prev == start) break;
+      f = prev;
+    }
+  }
+  const int first = f;
+  for (size_t guard = 0; guard <= faces.size(); ++guard) {
+    ring.push_back(f);
+    const int k = cornerOf(f, v);
+    const int next = neighbours[f][k];  // across the edge leaving v
+    if (next < 0 || next == first) break;
+    f = next;
+  }
+  return ring;
+}
+
+}  // namespace fgsg::rt::surface
