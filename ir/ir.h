@@ -210,6 +210,36 @@ struct CollisionSettings {
   Loc loc;              // the declaration (line 0: none)
 };
 
+// `surface "bunny.off";` or `surface torus(2, 0.6);`: what the grammar grows on (none:
+// the plane). Arguments are constants, evaluated by the compiler.
+struct SurfaceSpec {
+  bool present = false;
+  std::string path;       // a mesh file, as written (relative to the grammar's folder)
+  std::string generator;  // or a procedural surface: torus sphere plane genus2 cylinder
+  std::vector<double> args;
+  Loc loc;
+};
+
+// One item of a field design block, `wedge at (0.2, 0.1, 0.9) decay 2;`: its kind and its
+// words with their constant values (a number: one value; a vector: three; none: empty).
+struct FieldDesignSpec {
+  std::string kind;  // regular wedge trisector node centre saddle smooth
+  std::vector<std::pair<std::string, std::vector<double>>> words;  // keyword -> values
+  Loc loc;
+};
+
+// `field F1 = tensor("foot.tfield");`, `field F2 = design tensor { ... };`,
+// `field K = curvature;`. Listed in declaration order; a field query names its field
+// through Module::environment (kind "field", same name).
+struct FieldSpec {
+  std::string name;
+  std::string source;  // "file" | "design" | "curvature"
+  std::string kind;    // "tensor" | "vector" (curvature: "tensor")
+  std::string path;    // file sources
+  std::vector<FieldDesignSpec> design;
+  Loc loc;
+};
+
 struct Module {
   std::string sourceName;
   std::vector<Symbol> symbols;
@@ -222,6 +252,8 @@ struct Module {
   int steps = 0;  // parallel derivation steps
   TurtleSettings turtle;
   CollisionSettings collision;
+  SurfaceSpec surface;
+  std::vector<FieldSpec> fields;
   std::vector<EnvDecl> environment;
 
   uint32_t internString(const std::string& s);
