@@ -33,3 +33,6 @@ fi
 
 # The official glTF validator (npm) judges the .glb files the tests write.
 "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/install-gltf-validator.sh"
+
+# Real-world test meshes from CGAL's data (tests/data/README.md); offline once fetched.
+"$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/fetch-test-meshes.sh"
