@@ -1,0 +1,279 @@
+#include "runtime/field/tangent_field.h"
+
+#include "runtime/field/singularities.h"
+
+#include <cmath>
+
+namespace fgsg::rt::field {
+
+namespace {
+
+// A point's vector (or deviatoric tensor part) this much smaller than the largest at the
+// face's corners counts as zero: the field has no direction there.
+constexpr double kDegenerateRelative = 1e-12;
+constexpr double kPi = 3.14159265358979323846;
+
+// Half the difference of the eigenvalues: how anisotropic a symmetric tensor is.
+double deviatoric(const Mat2& t) {
+  return std::hypot(0.5 * (t(0, 0) - t(1, 1)), 0.5 * (t(0, 1) + t(1, 0)));
+}
+
+Vec2 unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+}  // namespace
+
+LocalEigen eigenOf(const Mat2& t) {
+  const double mean = 0.5 * (t(0, 0) + t(1, 1));
+  const double h = 0.5 * (t(0, 0) - t(1, 1)), b = 0.5 * (t(0, 1) + t(1, 0));
+  const double r = std::hypot(h, b);
+  return {mean + r, mean - r, 0.5 * std::atan2(b, h)};
+}
+
+TangentField::TangentField(std::shared_ptr<const TangentFrames> frames, FieldType type)
+    : frames_(std::move(frames)), type_(type) {
+  if (type_ == FieldType::Vector)
+    vectors_.assign(frames_->vertexCount(), Vec2::Zero());
+  else
+    tensors_.assign(frames_->vertexCount(), Mat2::Zero());
+}
+
+TangentField::TangentField(const TangentField& other)
+    : frames_(other.frames_), type_(other.type_), vectors_(other.vectors_),
+      tensors_(other.tensors_) {}
+
+TangentField& TangentField::operator=(const TangentField& other) {
+  if (this == &other) return *this;
+  frames_ = other.frames_;
+  type_ = other.type_;
+  vectors_ = other.vectors_;
+  tensors_ = other.tensors_;
+  std::lock_guard<std::mutex> lock(cacheMutex_);
+  perFace_.clear();
+  all_.clear();
+  invalidate();
+  return *this;
+}
+
+void TangentField::setVertexVector(int v, const Vec2& value) {
+  vectors_[v] = value;
+  invalidate();
+}
+
+void TangentField::setVertexTensor(int v, const Mat2& value) {
+  tensors_[v] = 0.5 * (value + value.transpose());
+  invalidate();
+}
+
+void TangentField::setVertexVectors(std::vector<Vec2> values) {
+  vectors_ = std::move(values);
+  vectors_.resize(vertexCount(), Vec2::Zero());
+  invalidate();
+}
+
+void TangentField::setVertexTensors(std::vector<Mat2> values) {
+  tensors_ = std::move(values);
+  tensors_.resize(vertexCount(), Mat2::Zero());
+  for (Mat2& t : tensors_) t = 0.5 * (t + t.transpose()).eval();
+  invalidate();
+}
+
+void TangentField::setVertexVectorWorld(int v, const Vec3& value) {
+  setVertexVector(v, frames_->vertexFrame(v).toLocal(value));
+}
+
+void TangentField::setVertexTensorWorld(int v, const Mat3& value) {
+  const Mat3 symmetric = 0.5 * (value + value.transpose());
+  setVertexTensor(v, frames_->vertexFrame(v).tensorToLocal(symmetric));
+}
+
+Vec3 TangentField::vertexVectorWorld(int v) const {
+  return frames_->vertexFrame(v).toWorld(vectors_[v]);
+}
+
+Mat3 TangentField::vertexTensorWorld(int v) const {
+  return frames_->vertexFrame(v).tensorToWorld(tensors_[v]);
+}
+
+std::array<Vec2, 3> TangentField::cornerVectors(int f) const {
+  const auto& t = mesh().faces[f];
+  std::array<Vec2, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    if (!isTensor()) {
+      out[k] = frames_->vectorToFace(f, k, vectors_[t[k]]);
+    } else {
+      const LocalEigen e = eigenOf(frames_->tensorToFace(f, k, tensors_[t[k]]));
+      out[k] = e.value1 * unit(e.angle);
+    }
+  }
+  return out;
+}
+
+std::array<Mat2, 3> TangentField::cornerTensors(int f) const {
+  const auto& t = mesh().faces[f];
+  std::array<Mat2, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    if (isTensor()) {
+      out[k] = frames_->tensorToFace(f, k, tensors_[t[k]]);
+    } else {
+      const Vec2 v = frames_->vectorToFace(f, k, vectors_[t[k]]);
+      const double len = v.norm();
+      out[k] = len > 0 ? Mat2(v * v.transpose() / len) : Mat2::Zero();
+    }
+  }
+  return out;
+}
+
+Vec2 TangentField::localVector(const SurfacePoint& p) const {
+  if (isTensor()) {
+    const LocalEigen e = eigenOf(tensor(p));
+    return e.value1 * unit(e.angle);
+  }
+  const auto c = cornerVectors(p.face);
+  return p.bary[0] * c[0] + p.bary[1] * c[1] + p.bary[2] * c[2];
+}
+
+Mat2 TangentField::tensor(const SurfacePoint& p) const {
+  if (!isTensor()) {
+    const Vec2 v = localVector(p);
+    const double len = v.norm();
+    return len > 0 ? Mat2(v * v.transpose() / len) : Mat2::Zero();
+  }
+  const auto c = cornerTensors(p.face);
+  return p.bary[0] * c[0] + p.bary[1] * c[1] + p.bary[2] * c[2];
+}
+
+Vec3 TangentField::vector(const SurfacePoint& p) const {
+  return frames_->frameAt(p).toWorld(localVector(p));
+}
+
+Eigen2 TangentField::eigen(const SurfacePoint& p) const {
+  const Frame fp = frames_->frameAt(p);
+  Eigen2 out;
+  double angle = 0;
+  if (isTensor()) {
+    const LocalEigen e = eigenOf(tensor(p));
+    out.value1 = e.value1;
+    out.value2 = e.value2;
+    angle = e.angle;
+  } else {
+    const Vec2 v = localVector(p);
+    out.value1 = v.norm();
+    angle = out.value1 > 0 ? std::atan2(v.y(), v.x()) : 0.0;
+  }
+  out.vector1 = fp.toWorld(unit(angle));
+  out.vector2 = fp.toWorld(unit(angle + kPi / 2));
+  return out;
+}
+
+std::array<Vec2, 3> TangentField::eigenvectorCorners(const SurfacePoint& p,
+                                                     Eigenvector which) const {
+  if (!isTensor()) return cornerVectors(p.face);
+  const auto c = cornerTensors(p.face);
+  const double turn = which == Eigenvector::Major ? 0.0 : kPi / 2;
+  // The eigenvector at p orients the corners; at an isotropic p, the first corner's.
+  const Mat2 tp = p.bary[0] * c[0] + p.bary[1] * c[1] + p.bary[2] * c[2];
+  const LocalEigen ep = eigenOf(tp);
+  Vec2 reference = unit(ep.angle + turn);
+  std::array<Vec2, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    const LocalEigen e = eigenOf(c[k]);
+    const double value = which == Eigenvector::Major ? e.value1 : e.value2;
+    out[k] = std::abs(value) * unit(e.angle + turn);
+  }
+  if (deviatoric(tp) <= 0) reference = unit(eigenOf(c[0]).angle + turn);
+  for (Vec2& v : out)
+    if (v.dot(reference) < 0) v = -v;
+  return out;
+}
+
+Mat2 TangentField::jacobianOf(int face, const std::array<Vec2, 3>& c) const {
+  Mat2 dv;
+  dv << c[1] - c[0], c[2] - c[0];
+  return dv * frames_->faceInverseEdges(face);
+}
+
+Mat2 TangentField::jacobian(const SurfacePoint& p, Eigenvector which) const {
+  return jacobianOf(p.face, eigenvectorCorners(p, which));
+}
+
+Mat3 TangentField::jacobianWorld(const SurfacePoint& p, Eigenvector which) const {
+  const Frame& f = frames_->faceFrame(p.face);
+  Eigen::Matrix<double, 3, 2> E;
+  E << f.e1, f.e2;
+  return E * jacobian(p, which) * E.transpose();
+}
+
+TensorGradient TangentField::tensorGradient(const SurfacePoint& p) const {
+  const auto c = cornerTensors(p.face);
+  const Mat2& inv = frames_->faceInverseEdges(p.face);
+  TensorGradient g;
+  g.dx = (c[1] - c[0]) * inv(0, 0) + (c[2] - c[0]) * inv(1, 0);
+  g.dy = (c[1] - c[0]) * inv(0, 1) + (c[2] - c[0]) * inv(1, 1);
+  return g;
+}
+
+double TangentField::divergence(const SurfacePoint& p, Eigenvector which) const {
+  return jacobian(p, which).trace();
+}
+
+double TangentField::curl(const SurfacePoint& p, Eigenvector which) const {
+  const Mat2 J = jacobian(p, which);
+  return J(1, 0) - J(0, 1);
+}
+
+double TangentField::angle(const SurfacePoint& p, const Vec3& axis, Eigenvector which) const {
+  Vec3 dir;
+  if (!direction(p, dir)) return 0;
+  const Frame fp = frames_->frameAt(p);
+  const Vec2 a = fp.toLocal(axis);
+  if (a.squaredNorm() == 0) return 0;
+  Vec2 u = fp.toLocal(dir);
+  if (isTensor() && which == Eigenvector::Minor) u = Vec2(-u.y(), u.x());
+  double ang = std::atan2(a.x() * u.y() - a.y() * u.x(), a.dot(u));
+  if (isTensor()) {
+    if (ang > kPi / 2) ang -= kPi;
+    if (ang <= -kPi / 2) ang += kPi;
+  }
+  return ang * 180 / kPi;
+}
+
+bool TangentField::direction(const SurfacePoint& p, Vec3& out) const {
+  double scale = 0, magnitude = 0, angle = 0;
+  if (isTensor()) {
+    const auto c = cornerTensors(p.face);
+    for (const Mat2& t : c) scale = std::max(scale, deviatoric(t));
+    const Mat2 t = p.bary[0] * c[0] + p.bary[1] * c[1] + p.bary[2] * c[2];
+    magnitude = deviatoric(t);
+    angle = eigenOf(t).angle;
+  } else {
+    const auto c = cornerVectors(p.face);
+    for (const Vec2& v : c) scale = std::max(scale, v.norm());
+    const Vec2 v = p.bary[0] * c[0] + p.bary[1] * c[1] + p.bary[2] * c[2];
+    magnitude = v.norm();
+    angle = std::atan2(v.y(), v.x());
+  }
+  if (!(magnitude > kDegenerateRelative * scale) || magnitude == 0) return false;
+  out = frames_->frameAt(p).toWorld(unit(angle));
+  return true;
+}
+
+void TangentField::buildCache() const {
+  std::lock_guard<std::mutex> lock(cacheMutex_);
+  if (cacheReady_.load(std::memory_order_acquire)) return;
+  all_ = findDegeneracies(*this);
+  perFace_.assign(mesh().faceCount(), {});
+  for (const Degeneracy& d : all_) perFace_[d.face].push_back(d);
+  cacheReady_.store(true, std::memory_order_release);
+}
+
+const std::vector<Degeneracy>& TangentField::degeneraciesIn(int face) const {
+  if (!cacheReady_.load(std::memory_order_acquire)) buildCache();
+  return perFace_[face];
+}
+
+const std::vector<Degeneracy>& TangentField::degeneracies() const {
+  if (!cacheReady_.load(std::memory_order_acquire)) buildCache();
+  return all_;
+}
+
+}  // namespace fgsg::rt::field

@@ -1,0 +1,142 @@
+// A vector or symmetric tensor field on a surface mesh (FGSG §4.2, §4.3): values stored
+// at vertices in their tangent frames, interpolated continuously inside triangles by the
+// piecewise scheme of Zhang et al. 2007: the three corner values are transported into
+// the face plane (minimal rotation of the vertex normal onto the face normal) and blended
+// barycentrically. Every query of FGSG §4.3 is answered here: the value, eigenvalues and
+// eigenvectors, Jacobian / tensor gradient (constant per face), divergence and curl, the
+// angle to a scope axis, lengths; and what tracing needs (DirectionField).
+//
+// Local quantities (tensor(), jacobian(), tensorGradient()) are in the face frame of the
+// point's face (TangentFrames::faceFrame). World vectors (vector(), eigen()) lie in the
+// tangent plane of the point's smooth normal, p.normal(mesh): the face-plane result is
+// carried there by the minimal rotation of the face normal onto it.
+//
+// Editing (set*) is not thread-safe; once edits are done any number of threads may query
+// at the same time (the degeneracy cache is built once, under a lock).
+#pragma once
+
+#include "runtime/field/direction_field.h"
+#include "runtime/field/tangent_frames.h"
+
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace fgsg::rt::field {
+
+enum class FieldType { Vector, Tensor };
+// Which eigenvector field a tensor query means (vector fields ignore it).
+enum class Eigenvector { Major, Minor };
+
+// Eigen decomposition at a point: value1 >= value2; vector1, vector2 unit, world, with
+// vector2 = n x vector1. A vector field answers value1 = its length, value2 = 0, vector1 =
+// its direction. Where the direction is undefined (a zero vector, an isotropic tensor)
+// the vectors are the frame's axes: ask direction() whether they mean anything.
+struct Eigen2 {
+  double value1 = 0, value2 = 0;
+  Vec3 vector1 = Vec3::UnitX(), vector2 = Vec3::UnitY();
+};
+
+// The gradient of a tensor field, in the face frame: dT/dx and dT/dy (constant per face).
+struct TensorGradient {
+  Mat2 dx = Mat2::Zero(), dy = Mat2::Zero();
+};
+
+class TangentField : public DirectionField {
+ public:
+  // A zero field of the given type over the frames' mesh.
+  TangentField(std::shared_ptr<const TangentFrames> frames, FieldType type);
+  TangentField(const TangentField& other);
+  TangentField& operator=(const TangentField& other);
+
+  FieldType type() const { return type_; }
+  bool isTensor() const { return type_ == FieldType::Tensor; }
+  const TangentFrames& frames() const { return *frames_; }
+  const std::shared_ptr<const TangentFrames>& sharedFrames() const { return frames_; }
+  const SurfaceMesh& mesh() const { return frames_->mesh(); }
+  size_t vertexCount() const { return frames_->vertexCount(); }
+
+  // ---- values at vertices, in the vertex frames ----
+  // Vector fields use the vectors, tensor fields the (symmetric) tensors.
+  const Vec2& vertexVector(int v) const { return vectors_[v]; }
+  const Mat2& vertexTensor(int v) const { return tensors_[v]; }
+  const std::vector<Vec2>& vertexVectors() const { return vectors_; }
+  const std::vector<Mat2>& vertexTensors() const { return tensors_; }
+  void setVertexVector(int v, const Vec2& value);
+  void setVertexTensor(int v, const Mat2& value);  // symmetrised
+  void setVertexVectors(std::vector<Vec2> values);
+  void setVertexTensors(std::vector<Mat2> values);
+  // World forms: a vector is projected onto the tangent plane, a 3x3 tensor restricted to
+  // it (E^T T E with E = [e1 e2]); reading back gives E v and E T E^T.
+  void setVertexVectorWorld(int v, const Vec3& value);
+  void setVertexTensorWorld(int v, const Mat3& value);
+  Vec3 vertexVectorWorld(int v) const;
+  Mat3 vertexTensorWorld(int v) const;
+
+  // The corner values of face f transported into its frame. A vector field's "tensor" is
+  // v v^T / |v| (eigenvalues |v| and 0, major eigenvector v).
+  std::array<Vec2, 3> cornerVectors(int f) const;
+  std::array<Mat2, 3> cornerTensors(int f) const;
+
+  // ---- evaluation at a surface point ----
+  // The interpolated value in the face frame.
+  Vec2 localVector(const SurfacePoint& p) const;  // a tensor field: value1 * vector1
+  Mat2 tensor(const SurfacePoint& p) const;
+  // The world tangent vector: the vector, or a tensor's major eigenvector scaled by its
+  // eigenvalue (its sign is arbitrary).
+  Vec3 vector(const SurfacePoint& p) const;
+  Eigen2 eigen(const SurfacePoint& p) const;
+  double length1(const SurfacePoint& p) const { return std::abs(eigen(p).value1); }
+  double length2(const SurfacePoint& p) const { return std::abs(eigen(p).value2); }
+  // The Jacobian of the vector field, or of a tensor's eigenvector field (the eigenvector
+  // scaled by its |eigenvalue|, corner signs aligned with the one at p), in the face
+  // frame: J(i, j) = d v_i / d x_j. Constant per face for vector fields.
+  Mat2 jacobian(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
+  // The same as a world 3x3 map of the tangent plane, E J E^T (face frame axes E).
+  Mat3 jacobianWorld(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
+  TensorGradient tensorGradient(const SurfacePoint& p) const;
+  // trace(J), and J(1,0) - J(0,1) (counter-clockwise about the face normal positive).
+  double divergence(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
+  double curl(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
+  // The signed angle in degrees from `axis` (projected onto the tangent plane at p) to
+  // vector1 or vector2, counter-clockwise about the normal: (-180, 180] for vector
+  // fields, (-90, 90] for tensors (a line has no sign). 0 where either is undefined.
+  double angle(const SurfacePoint& p, const Vec3& axis,
+               Eigenvector which = Eigenvector::Major) const;
+
+  // ---- DirectionField ----
+  bool direction(const SurfacePoint& p, Vec3& out) const override;
+  bool isLineField() const override { return isTensor(); }
+  const std::vector<Degeneracy>& degeneraciesIn(int face) const override;
+  // Every degenerate point, ordered by face.
+  const std::vector<Degeneracy>& degeneracies() const;
+
+ private:
+  void invalidate() { cacheReady_.store(false, std::memory_order_release); }
+  void buildCache() const;
+  // The eigenvector field's corner values, signs aligned with the direction at p.
+  std::array<Vec2, 3> eigenvectorCorners(const SurfacePoint& p, Eigenvector which) const;
+  Mat2 jacobianOf(int face, const std::array<Vec2, 3>& corners) const;
+
+  std::shared_ptr<const TangentFrames> frames_;
+  FieldType type_;
+  std::vector<Vec2> vectors_;
+  std::vector<Mat2> tensors_;
+
+  mutable std::mutex cacheMutex_;
+  mutable std::atomic<bool> cacheReady_{false};
+  mutable std::vector<std::vector<Degeneracy>> perFace_;
+  mutable std::vector<Degeneracy> all_;
+};
+
+// Eigen decomposition of a symmetric 2x2 tensor: values (major first) and the angle of
+// the major eigenvector, in (-pi/2, pi/2].
+struct LocalEigen {
+  double value1 = 0, value2 = 0, angle = 0;
+};
+LocalEigen eigenOf(const Mat2& t);
+
+}  // namespace fgsg::rt::field
