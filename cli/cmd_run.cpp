@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -48,7 +49,19 @@ RunOptions parseRunOptions(const Args& args) {
       o.derive.maxSeconds = r.numberValue(f);
       if (o.derive.maxSeconds <= 0) throw UsageError{"--max-seconds must be positive"};
     } else if (f == "--collide-all") o.derive.collideAll = true;
-    else if (f == "--stats") o.stats = true;
+    else if (f == "--surface") {
+      o.derive.surfaceOverride = r.value(f);
+      if (o.derive.surfaceOverride.empty()) throw UsageError{"--surface needs a mesh file name"};
+    } else if (f == "--repair-surface") o.derive.repairSurface = true;
+    else if (f == "--surface-size") {
+      o.derive.surfaceSize = r.numberValue(f);
+      if (!(o.derive.surfaceSize > 0) || !std::isfinite(o.derive.surfaceSize))
+        throw UsageError{"--surface-size must be a positive number"};
+    }
+    else if (f == "--start") {
+      r.pointValue(f, o.derive.start);
+      o.derive.hasStart = true;
+    } else if (f == "--stats") o.stats = true;
     else if (f == "--quiet" || f == "-q") o.quiet = true;
     else if (f == "--set") {
       std::string kv = r.value(f);
@@ -106,8 +119,29 @@ int runCommand(const Args& args) {
     std::cerr << "fgsg run: " << e.message << "\n";
     return 2;
   }
+  if (!opt.derive.surfaceOverride.empty()) {
+    // Relative to the working directory, not to the grammar's folder.
+    std::error_code ec;
+    const std::filesystem::path surface = std::filesystem::absolute(opt.derive.surfaceOverride, ec);
+    if (ec || !std::filesystem::is_regular_file(surface, ec)) {
+      std::cerr << "fgsg run: --surface " << opt.derive.surfaceOverride
+                << (std::filesystem::is_directory(surface, ec) ? ": is a directory, not a mesh file"
+                                                               : ": no such file")
+                << "\n";
+      return 1;
+    }
+    opt.derive.surfaceOverride = surface.lexically_normal().string();
+  }
   auto compiled = compileFile(opt.file, !opt.quiet);
   if (!compiled) return 1;
+  if (!compiled->module.surface.present && opt.derive.surfaceOverride.empty() &&
+      (opt.derive.hasStart || opt.derive.repairSurface || opt.derive.surfaceSize > 0)) {
+    std::cerr << "fgsg run: "
+              << (opt.derive.hasStart ? "--start" : opt.derive.repairSurface ? "--repair-surface" : "--surface-size")
+              << " needs a surface: " << opt.file
+              << " declares none (it grows on the plane) and --surface is not given\n";
+    return 2;
+  }
 
   const auto grammarDir = std::filesystem::path(opt.file).parent_path();
   rt::AssetLibrary assets;

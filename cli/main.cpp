@@ -12,12 +12,19 @@ usage:
   fgsg run FILE [-o out.glb|.obj|.ply] [--seed N] [--set name=value]...
                 [--preview out.png] [--instances out.json] [--max-shapes N]
                 [--max-depth N] [--max-seconds S] [--collide-all] [--stats] [--quiet]
+                [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE             print the typed IR after constant folding
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
+  --surface FILE     grow on this mesh instead of the grammar's surface (path relative
+                     to the current directory)
+  --surface-size S   centre the surface and scale it so its largest extent is S
+  --repair-surface   repair what can be repaired in the surface mesh instead of failing
+  --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
+                     (default: closest to the centre of the surface's bounding box)
 Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
 Documentation: docs/language.md, docs/cli.md.
 )";

@@ -46,4 +46,27 @@ double OptionReader::numberValue(const std::string& flag) {
   return d;
 }
 
+void OptionReader::pointValue(const std::string& flag, double out[3]) {
+  const std::string v = value(flag);
+  auto bad = [&]() {
+    return UsageError{flag + " expects a point x,y,z (three numbers separated by commas, e.g. " +
+                      flag + " 0,0.5,1), got '" + v + "'"};
+  };
+  size_t from = 0;
+  for (int k = 0; k < 3; ++k) {
+    const size_t comma = v.find(',', from);
+    if ((k < 2) != (comma != std::string::npos)) throw bad();
+    std::string part = v.substr(from, k < 2 ? comma - from : std::string::npos);
+    const size_t first = part.find_first_not_of(" \t");
+    const size_t last = part.find_last_not_of(" \t");
+    if (first == std::string::npos) throw bad();
+    part = part.substr(first, last - first + 1);
+    char* end = nullptr;
+    const double d = std::strtod(part.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(d)) throw bad();
+    out[k] = d;
+    from = comma + 1;
+  }
+}
+
 }  // namespace fgsg::cli

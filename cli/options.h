@@ -25,6 +25,8 @@ class OptionReader {
   std::string value(const std::string& flag);
   uint64_t unsignedValue(const std::string& flag);
   double numberValue(const std::string& flag);
+  // `--start 1,2.5,-3`: three finite numbers separated by commas (spaces allowed).
+  void pointValue(const std::string& flag, double out[3]);
 
   // Splits `--flag=value` into flag and pending value.
   std::string flag();

@@ -122,6 +122,8 @@ struct ValueDecl {  // const name = expr;   attr name = expr;
 
 struct SurfaceDecl {  // surface "bunny.off";   surface torus(2, 0.6);
   SourceRange range;
+  SourceRange target;     // the path string, or the generator with its arguments
+  SourceRange nameRange;  // the generator's name (the path string for a file)
   std::string path;       // non-empty for a file
   std::string generator;  // non-empty for a procedural surface
   std::vector<ExprPtr> args;
@@ -129,19 +131,26 @@ struct SurfaceDecl {  // surface "bunny.off";   surface torus(2, 0.6);
 
 // One statement of a field design block: `wedge at (0.2,0.1,0.9) decay 2;` becomes
 // kind "wedge" and words [("at", vector expr), ("decay", 2)]. A word without a value
-// has a null expr; a value without a keyword has an empty keyword.
+// has a null expr; a value without a keyword has an empty keyword. A bare name is always
+// a keyword here (`decay d` is two words); sema reads a name that is a const as the
+// previous keyword's value.
 struct FieldDesignWord {
+  SourceRange range;  // the keyword and its value
   std::string keyword;
   ExprPtr value;
 };
 struct FieldDesignItem {
   SourceRange range;
+  SourceRange kindRange;
   std::string kind;
   std::vector<FieldDesignWord> words;
 };
 
 struct FieldDecl {
   SourceRange range;
+  SourceRange nameRange;
+  SourceRange sourceRange;    // everything after '='
+  SourceRange functionRange;  // tensor / vector / curvature / the call's name
   std::string name;
   std::string source;     // "file" | "design" | "curvature" | "call"
   std::string function;   // tensor / vector for file and design, or the call's name

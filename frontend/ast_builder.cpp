@@ -94,8 +94,11 @@ SurfaceDecl AstBuilder::buildSurfaceDecl(P::SurfaceDeclContext* ctx) {
   d.range = rangeOf(ctx);
   if (ctx->path) {
     d.path = unquote(text(ctx->path));
+    d.target = d.nameRange = rangeOf(ctx->path);
   } else {
     d.generator = text(ctx->generator);
+    d.target = d.nameRange = rangeOf(ctx->generator);
+    if (ctx->callArgs()) d.target.end = rangeOf(ctx->callArgs()).end;
     d.args = buildCallArgs(ctx->callArgs());
   }
   return d;
@@ -107,8 +110,11 @@ FieldDecl AstBuilder::buildFieldDecl(P::FieldDeclContext* ctx) {
   FieldDecl d;
   d.range = rangeOf(ctx);
   d.name = text(ctx->name);
+  d.nameRange = rangeOf(ctx->name);
   P::FieldSourceContext* src = ctx->fieldSource();
   if (!src) return d;
+  d.sourceRange = rangeOf(src);
+  d.functionRange = rangeOf(src->function);
   d.function = text(src->function);
   if (src->designWord) {
     if (text(src->designWord) != "design") {
@@ -137,9 +143,11 @@ FieldDecl AstBuilder::buildFieldDecl(P::FieldDeclContext* ctx) {
 FieldDesignItem AstBuilder::buildFieldDesignItem(P::FieldDesignItemContext* ctx) {
   FieldDesignItem item;
   item.range = rangeOf(ctx);
+  item.kindRange = rangeOf(ctx->kind);
   item.kind = text(ctx->kind);
   for (auto* word : ctx->fieldDesignWord()) {
     FieldDesignWord w;
+    w.range = rangeOf(word);
     w.keyword = text(word->keyword);
     w.value = buildDesignValue(word->designValue());
     item.words.push_back(std::move(w));
@@ -161,6 +169,7 @@ ExprPtr AstBuilder::buildDesignValue(P::DesignValueContext* ctx) {
     value->boolean = ctx->TRUE() != nullptr;
   } else if (exprs.size() == 1) {
     value = buildExpr(exprs[0]);
+    if (value) value->range = rangeOf(ctx);  // point at the parentheses too
   } else {
     value = makeExpr(ExprKind::Vector, rangeOf(ctx));
     for (auto* e : exprs) value->args.push_back(buildExpr(e));

@@ -1,6 +1,7 @@
 #include "frontend/sema.h"
 
 #include "frontend/builtins.h"
+#include "frontend/sema_environment.h"
 
 #include <cmath>
 #include <functional>
@@ -92,6 +93,8 @@ class Analyzer {
     }
     if (prog_.surfaces.size() > 1)
       diags_.error("E029", prog_.surfaces[1].range, "only one surface may be declared");
+    checkSurfaceAndFields(prog_, res_, diags_,
+                          [this](const Expr& e, ConstValue& v) { return evalConst(e, v); });
     for (const auto& d : prog_.derives) {
       if (d.mode == "parallel") {
         ConstValue steps;

@@ -46,12 +46,43 @@ struct NameRef {
   ConstValue value;   // Const, Builtin (pi)
 };
 
+// `surface ...;` evaluated: a mesh file or a procedural surface with constant arguments.
+struct SurfaceInfo {
+  bool present = false;
+  std::string path;       // a mesh file, as written
+  std::string generator;  // or: torus sphere plane genus2 cylinder
+  std::vector<double> args;
+  SourceRange range;
+};
+
+// One item of a field design block, evaluated: `center at vertex 120 decay 2;` becomes
+// kind "centre" with words ("vertex", {120}), ("decay", {2}); `smooth 300;` kind
+// "smooth" with ("iterations", {300}); `at (x, y, z)` is ("at", {x, y, z}).
+struct FieldDesignInfo {
+  std::string kind;
+  std::vector<std::pair<std::string, std::vector<double>>> words;
+  SourceRange range;
+};
+
+// `field NAME = ...;` evaluated: source "file" | "design" | "curvature", kind "tensor" |
+// "vector" (curvature: "tensor").
+struct FieldInfo {
+  std::string name;
+  std::string source;
+  std::string kind;
+  std::string path;
+  std::vector<FieldDesignInfo> design;
+  SourceRange range;
+};
+
 struct SemaResult {
   std::vector<SymbolInfo> symbols;
   std::map<std::string, size_t> symbolIndex;
   std::vector<AttrInfo> attrs;
   std::map<std::string, ConstValue> constants;
-  std::vector<std::string> fields, textures;
+  std::vector<std::string> fields, textures;  // declared names (for queries)
+  SurfaceInfo surface;                 // the first `surface` declaration, if any
+  std::vector<FieldInfo> fieldSpecs;   // the fields that check out, in declaration order
   std::unordered_map<const Expr*, ValueType> exprTypes;
   std::unordered_map<const Expr*, NameRef> names;  // Ident expressions
   // Per rule: the names and types of its parameters (predecessor, then left and right

@@ -298,7 +298,25 @@ void SyntaxErrorStrategy::reportExpected(Parser* parser, Token* at, const Interv
   // `collision centre(0.3);`: name the settings rather than "a name, '-', a number".
   if (dynamic_cast<FgsgParser::CollisionDeclContext*>(parser->getContext()))
     what = "a collision setting (all, mesh, centre R, geodesic R) or ';'";
-  report(parser, at, "expected " + what + after(parser, at) + ", found " + describeToken(at));
+  std::string hint;
+  // `decay 2 * k;` in a field design: values are single words unless parenthesised.
+  auto* ctx = parser->getContext();
+  const bool inDesign = dynamic_cast<FgsgParser::FieldDesignItemContext*>(ctx) ||
+                        dynamic_cast<FgsgParser::FieldDesignWordContext*>(ctx) ||
+                        dynamic_cast<FgsgParser::DesignValueContext*>(ctx);
+  if (inDesign && expected.contains(static_cast<size_t>(FgsgParser::SEMI)))
+    what = "a keyword (at, decay, strength ...), a value or ';'";
+  if (inDesign && at) {
+    switch (at->getType()) {
+      case FgsgParser::STAR: case FgsgParser::SLASH: case FgsgParser::PERCENT:
+      case FgsgParser::CARET: case FgsgParser::PLUS: case FgsgParser::MINUS:
+        hint = " (a design value is a number, a point, a const name or an expression in "
+               "parentheses: `decay (2 * k)`)";
+        break;
+      default: break;
+    }
+  }
+  report(parser, at, "expected " + what + after(parser, at) + ", found " + describeToken(at) + hint);
 }
 
 Token* SyntaxErrorStrategy::singleTokenDeletion(Parser* parser) {

@@ -150,6 +150,29 @@ class Lowerer {
       m_.environment.push_back({"field", f.name, f.source, toLoc(f.range)});
     for (const auto& t : prog_.textures)
       m_.environment.push_back({"texture", t.name, t.path, toLoc(t.range)});
+    lowerSurfaceAndFields();
+  }
+
+  // The surface and fields as sema evaluated them: constants only, names as written.
+  void lowerSurfaceAndFields() {
+    const SurfaceInfo& s = sema_.surface;
+    if (s.present) {
+      m_.surface.present = true;
+      m_.surface.path = s.path;
+      m_.surface.generator = s.generator;
+      m_.surface.args = s.args;
+      m_.surface.loc = toLoc(s.range);
+    }
+    for (const FieldInfo& f : sema_.fieldSpecs) {
+      FieldSpec out;
+      out.name = f.name;
+      out.source = f.source;
+      out.kind = f.kind;
+      out.path = f.path;
+      out.loc = toLoc(f.range);
+      for (const FieldDesignInfo& d : f.design) out.design.push_back({d.kind, d.words, toLoc(d.range)});
+      m_.fields.push_back(std::move(out));
+    }
   }
 
   // ------------------------------------------------------------ successors

@@ -94,6 +94,8 @@ class Printer {
       }
       line(0, c);
     }
+    if (m_.surface.present) line(0, surfaceLine(m_.surface));
+    for (const FieldSpec& f : m_.fields) line(0, fieldLine(f));
     for (const EnvDecl& d : m_.environment) {
       std::string s = "env " + d.kind;
       if (!d.name.empty()) s += " " + d.name;
@@ -115,6 +117,38 @@ class Printer {
     block(nullptr, m_.axiom, 1);
     for (const Rule& r : m_.rules) rule(r);
     return std::move(out_);
+  }
+
+  // `surface torus(2, 0.6)`, `surface "bunny.off"`
+  static std::string surfaceLine(const SurfaceSpec& s) {
+    if (s.generator.empty()) return "surface " + quoted(s.path);
+    std::string text = "surface " + s.generator + "(";
+    for (size_t i = 0; i < s.args.size(); ++i) text += (i ? ", " : "") + printNumber(s.args[i]);
+    return text + ")";
+  }
+
+  // One value: `2`; three: `(0.2, 0.1, 0.9)`; none: nothing.
+  static std::string designValues(const std::vector<double>& values) {
+    if (values.size() == 1) return " " + printNumber(values[0]);
+    if (values.empty()) return "";
+    std::string text = " (";
+    for (size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + printNumber(values[i]);
+    return text + ")";
+  }
+
+  // `field F1 = tensor("foot.tfield")`, `field K = curvature`,
+  // `field F2 = design tensor { wedge vertex 120 decay 2; smooth iterations 300 }`
+  static std::string fieldLine(const FieldSpec& f) {
+    std::string text = "field " + f.name + " = ";
+    if (f.source == "curvature") return text + "curvature";
+    if (f.source == "file") return text + f.kind + "(" + quoted(f.path) + ")";
+    if (f.source != "design") return text + "source#" + quoted(f.source);
+    text += "design " + f.kind + " {";
+    for (size_t i = 0; i < f.design.size(); ++i) {
+      text += (i ? "; " : " ") + f.design[i].kind;
+      for (const auto& [keyword, values] : f.design[i].words) text += " " + keyword + designValues(values);
+    }
+    return text + " }";
   }
 
   void rule(const Rule& r) {

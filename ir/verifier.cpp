@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <iterator>
 #include <cmath>
 
 #include "ir/builtins.h"
@@ -46,6 +47,8 @@ class Verifier {
     const size_t before = problems_.size();
     if (m_.steps < 0) problem("negative derivation steps " + std::to_string(m_.steps));
     collision();
+    surface();
+    fields();
     for (size_t i = 0; i < m_.attrs.size(); ++i) {
       Scoped s(*this, "attr " + m_.attrs[i].name);
       const Attr& a = m_.attrs[i];
@@ -92,6 +95,104 @@ class Verifier {
     if (c.metric != CollisionMetric::Mesh && !(c.radius > 0 && std::isfinite(c.radius)))
       problem("radius " + printNumber(c.radius) + " must be positive for the " +
               (c.metric == CollisionMetric::Centre ? "centre" : "geodesic") + " metric");
+  }
+
+  // ------------------------------------------------------------ environment
+
+  void finite(const std::vector<double>& values, const std::string& what) {
+    for (double v : values)
+      if (!std::isfinite(v)) problem(what + " " + printNumber(v) + " is not finite");
+  }
+
+  void surface() {
+    const SurfaceSpec& s = m_.surface;
+    Scoped sc(*this, "surface");
+    if (!s.present) {
+      if (!s.path.empty() || !s.generator.empty() || !s.args.empty())
+        problem("not present, but has a path, generator or arguments");
+      return;
+    }
+    if (s.path.empty() == s.generator.empty()) {
+      problem("needs exactly one of a path and a generator");
+      return;
+    }
+    if (!s.path.empty()) {
+      if (!s.args.empty()) problem("a file surface has no arguments");
+      return;
+    }
+    static const std::pair<const char*, size_t> kGenerators[] = {
+        {"torus", 2}, {"sphere", 1}, {"plane", 2}, {"genus2", 0}, {"cylinder", 2}};
+    const auto* g = std::find_if(std::begin(kGenerators), std::end(kGenerators),
+                                 [&](const auto& k) { return s.generator == k.first; });
+    if (g == std::end(kGenerators)) {
+      problem("unknown generator '" + s.generator + "'");
+      return;
+    }
+    if (s.args.size() != g->second)
+      problem(s.generator + " takes " + std::to_string(g->second) + " arguments, has " +
+              std::to_string(s.args.size()));
+    finite(s.args, "argument");
+  }
+
+  void fields() {
+    if (!m_.fields.empty() && !m_.surface.present)
+      problem("fields without a surface");
+    std::vector<std::string> names;
+    for (const FieldSpec& f : m_.fields) {
+      Scoped sc(*this, "field " + f.name);
+      if (f.name.empty()) problem("has no name");
+      if (std::find(names.begin(), names.end(), f.name) != names.end()) problem("name is not unique");
+      names.push_back(f.name);
+      if (f.kind != "tensor" && f.kind != "vector") problem("bad kind '" + f.kind + "'");
+      if (f.source == "file") {
+        if (f.path.empty()) problem("file source without a path");
+      } else if (f.source == "curvature") {
+        if (f.kind != "tensor") problem("a curvature field is a tensor field");
+      } else if (f.source != "design") {
+        problem("bad source '" + f.source + "'");
+      }
+      if (f.source != "design" && !f.design.empty()) problem("design items on a " + f.source + " field");
+      if (f.source != "file" && !f.path.empty()) problem("a path on a " + f.source + " field");
+      for (const FieldDesignSpec& d : f.design) designItem(d);
+    }
+  }
+
+  void designItem(const FieldDesignSpec& d) {
+    static const char* kKinds[] = {"regular", "wedge", "trisector", "node", "centre", "saddle", "smooth"};
+    Scoped sc(*this, "design " + d.kind);
+    if (std::find_if(std::begin(kKinds), std::end(kKinds), [&](const char* k) { return d.kind == k; }) ==
+        std::end(kKinds)) {
+      problem("unknown kind");
+      return;
+    }
+    // keyword -> number of values
+    static const std::pair<const char*, size_t> kWords[] = {
+        {"vertex", 1}, {"at", 3},       {"decay", 1},     {"direction", 3},
+        {"angle", 1},  {"strength", 1}, {"iterations", 1}};
+    bool positioned = false;
+    for (const auto& [keyword, values] : d.words) {
+      const auto* w = std::find_if(std::begin(kWords), std::end(kWords),
+                                   [&](const auto& k) { return keyword == k.first; });
+      if (w == std::end(kWords)) {
+        problem("unknown keyword '" + keyword + "'");
+        continue;
+      }
+      if ((keyword == "iterations") != (d.kind == "smooth"))
+        problem("keyword '" + keyword + "' does not belong to a " + d.kind);
+      if ((keyword == "direction" || keyword == "angle") && d.kind != "regular")
+        problem("keyword '" + keyword + "' is for regular elements only");
+      if (values.size() != w->second)
+        problem("'" + keyword + "' has " + std::to_string(values.size()) + " values, expected " +
+                std::to_string(w->second));
+      finite(values, "'" + keyword + "' value");
+      if ((keyword == "vertex" || keyword == "iterations") && !values.empty() &&
+          !(values[0] >= 0 && values[0] == std::floor(values[0])))
+        problem("'" + keyword + "' " + printNumber(values[0]) + " is not a whole number >= 0");
+      if (keyword == "decay" && !values.empty() && !(values[0] > 0))
+        problem("decay " + printNumber(values[0]) + " is not positive");
+      if (keyword == "vertex" || keyword == "at") positioned = true;
+    }
+    if (d.kind != "smooth" && !positioned) problem("has no position (vertex or at)");
   }
 
   // ------------------------------------------------------------ symbols and rules

@@ -18,6 +18,18 @@ struct DeriveOptions {
   std::vector<std::pair<std::string, std::string>> attrOverrides;  // --set name=value
   std::vector<std::string> assetDirs;  // where asset files are looked up
   bool collideAll = false;  // --collide-all: every I() is collision-tested, as IC
+  // --surface FILE: a mesh file replacing the grammar's surface (empty: the grammar's);
+  // the CLI makes the path absolute (it is relative to the working directory).
+  std::string surfaceOverride;
+  bool repairSurface = false;  // --repair-surface: repair the mesh's repairable problems
+  // --start x,y,z: the axiom's scope starts at the surface point closest to `start`
+  // (without it: the point closest to the centre of the surface's bounding box).
+  bool hasStart = false;
+  double start[3] = {0, 0, 0};
+  // --surface-size S: the surface is centred at the origin and scaled uniformly so its
+  // largest bounding-box extent is S (0: as it is). Meshes come in any unit; a grammar's
+  // steps do not.
+  double surfaceSize = 0.0;
 };
 
 struct DeriveStats {

@@ -721,6 +721,14 @@ TEST_CASE("never crashes: empty, garbage, unterminated, deep nesting", "[parse][
   CHECK_FALSE(parse("A ~> B(\"never closed").ok);
   CHECK_FALSE(parse("A ~> B{ C | ").ok);
   CHECK_FALSE(parse("field F = design tensor { center at").ok);
+  Parsed arithmetic = parse("field F = design tensor { wedge at vertex 0 decay 2 * k; };");
+  REQUIRE(arithmetic.diagnostics.size() == 1);
+  CHECK(arithmetic.diagnostics[0].range.begin.col == 53);
+  CHECK(arithmetic.diagnostics[0].message ==
+        "expected a keyword (at, decay, strength ...), a value or ';' after '...esign tensor { "
+        "wedge at vertex 0 decay 2', found '*' (a design value is a number, a point, a const "
+        "name or an expression in parentheses: `decay (2 * k)`)");
+  CHECK(parse("field F = design tensor { wedge at vertex 0 decay (2 * k); };").ok);
 
   const std::string deepParens = std::string(200, '(') + "1" + std::string(200, ')');
   CHECK(parse("const x = " + deepParens + ";").ok);

@@ -120,6 +120,7 @@ TEST_CASE("Queries: fields must be declared, Scope and Shape members exist", "[s
   auto a = analyse("S : F1.mincurv >= 0 ~> I(\"cube\");");
   CHECK(has(a, "E025", 1, 5));
   auto ok = analyse(R"(
+    surface torus(2, 0.6);
     field F1 = curvature;
     texture mask = "paint.png";
     G : F1.mincurv >= 0 && context.mask(texCoord) > 0.5 && Scope.sx > 1 && Shape.depth < 4

@@ -217,3 +217,93 @@ TEST_CASE("verifier: collision radius and Line / LineSeg arguments", "[ir][verif
   boolLength.rules[0].alternatives[0].ops[1].args[0] = Expr::boolean(false);
   expectProblem(boolLength, "op 1 (lineseg): argument is bool, expected num");
 }
+
+TEST_CASE("lower: surface and fields, evaluated, in declaration order", "[ir][lower][environment]") {
+  Module plane = compile("A ~> I(\"cube\");");
+  CHECK_FALSE(plane.surface.present);
+  CHECK(plane.fields.empty());
+
+  Module file = compile("surface \"meshes/bunny.off\";\nA ~> I(\"cube\");");
+  CHECK(file.surface.present);
+  CHECK(file.surface.path == "meshes/bunny.off");
+  CHECK(file.surface.generator.empty());
+  CHECK(file.surface.args.empty());
+  CHECK(file.surface.loc.line == 1);
+  CHECK(file.surface.loc.col == 1);
+
+  Module m = compile(R"(const R = 2;
+const n = 120;
+surface torus(R, R * 0.3);
+field F1 = tensor("foot.tfield");
+field F2 = design tensor { center at vertex n; wedge at (0.2,0.1,0.9) decay 2; smooth 300; };
+field K = curvature;
+field V = design vector { regular at vertex 4 angle 45 strength 2; saddle at (0, 0, 1); };
+A : F1.value1 > K.mincurv ~> T(V.length, 0, 0) I("cube");
+)");
+  CHECK(m.surface.present);
+  CHECK(m.surface.generator == "torus");
+  CHECK(m.surface.path.empty());
+  REQUIRE(m.surface.args.size() == 2);
+  CHECK(m.surface.args[0] == 2);
+  CHECK(m.surface.args[1] == Approx(0.6));
+  CHECK(m.surface.loc.line == 3);
+
+  using Words = std::vector<std::pair<std::string, std::vector<double>>>;
+  REQUIRE(m.fields.size() == 4);
+  CHECK(m.fields[0].name == "F1");
+  CHECK(m.fields[0].source == "file");
+  CHECK(m.fields[0].kind == "tensor");
+  CHECK(m.fields[0].path == "foot.tfield");
+  CHECK(m.fields[0].design.empty());
+  CHECK(m.fields[0].loc.line == 4);
+
+  const FieldSpec& f2 = m.fields[1];
+  CHECK(f2.name == "F2");
+  CHECK(f2.source == "design");
+  CHECK(f2.kind == "tensor");
+  CHECK(f2.path.empty());
+  REQUIRE(f2.design.size() == 3);
+  CHECK(f2.design[0].kind == "centre");
+  CHECK(f2.design[0].words == Words{{"vertex", {120}}});
+  CHECK(f2.design[0].loc.line == 5);
+  CHECK(f2.design[0].loc.col == 28);
+  CHECK(f2.design[1].kind == "wedge");
+  CHECK(f2.design[1].words == Words{{"at", {0.2, 0.1, 0.9}}, {"decay", {2}}});
+  CHECK(f2.design[1].loc.col == 48);
+  CHECK(f2.design[2].kind == "smooth");
+  CHECK(f2.design[2].words == Words{{"iterations", {300}}});
+
+  CHECK(m.fields[2].name == "K");
+  CHECK(m.fields[2].source == "curvature");
+  CHECK(m.fields[2].kind == "tensor");
+
+  const FieldSpec& v = m.fields[3];
+  CHECK(v.kind == "vector");
+  REQUIRE(v.design.size() == 2);
+  CHECK(v.design[0].words == Words{{"vertex", {4}}, {"angle", {45}}, {"strength", {2}}});
+  CHECK(v.design[1].kind == "saddle");
+  CHECK(v.design[1].words == Words{{"at", {0, 0, 1}}});
+
+  // The environment entries the queries name are kept as they were.
+  REQUIRE(m.environment.size() == 5);
+  CHECK(m.environment[0].kind == "surface");
+  CHECK(m.environment[1].kind == "field");
+  CHECK(m.environment[1].name == "F1");
+  CHECK(m.environment[4].name == "V");
+  const Expr& guard = m.rules[0].guard;
+  REQUIRE(guard.args.size() == 2);
+  CHECK(guard.args[0].env == 1);
+  CHECK(guard.args[1].env == 3);
+
+  std::vector<std::string> problems;
+  CHECK(verifyModule(m, problems));
+
+  const std::string printed = printModule(m);
+  CHECK(printed.find("\nsurface torus(2, 0.6)\n"
+                     "field F1 = tensor(\"foot.tfield\")\n"
+                     "field F2 = design tensor { centre vertex 120; wedge at (0.2, 0.1, 0.9) decay 2; "
+                     "smooth iterations 300 }\n"
+                     "field K = curvature\n"
+                     "field V = design vector { regular vertex 4 angle 45 strength 2; saddle at (0, 0, 1) }\n"
+                     "env surface torus \"procedural\"\n") != std::string::npos);
+}

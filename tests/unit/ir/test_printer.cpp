@@ -271,3 +271,60 @@ TEST_CASE("printer: context rules", "[ir][printer]") {
         "  alt weight 1\n"
         "    (empty)\n");
 }
+
+TEST_CASE("printer: surface and fields, one line each", "[ir][printer][environment]") {
+  Module m;
+  m.sourceName = "t.fgsg";
+  m.surface.present = true;
+  m.surface.generator = "torus";
+  m.surface.args = {2, 0.6};
+  FieldSpec file;
+  file.name = "F1";
+  file.source = "file";
+  file.kind = "tensor";
+  file.path = "foot \"1\".tfield";
+  FieldSpec design;
+  design.name = "F2";
+  design.source = "design";
+  design.kind = "tensor";
+  design.design = {{"wedge", {{"vertex", {120}}, {"decay", {2}}}, {}},
+                   {"regular", {{"at", {0.2, -0.1, 0.9}}, {"direction", {1, 0, 0}}}, {}},
+                   {"smooth", {{"iterations", {300}}}, {}}};
+  FieldSpec curvature;
+  curvature.name = "K";
+  curvature.source = "curvature";
+  curvature.kind = "tensor";
+  FieldSpec vec;
+  vec.name = "V";
+  vec.source = "file";
+  vec.kind = "vector";
+  vec.path = "v.vfield";
+  FieldSpec empty;
+  empty.name = "E";
+  empty.source = "design";
+  empty.kind = "vector";
+  m.fields = {file, design, curvature, vec, empty};
+  m.axiom = {};
+  CHECK(printModule(m) == R"(module "t.fgsg"
+derive breadthfirst
+surface torus(2, 0.6)
+field F1 = tensor("foot \"1\".tfield")
+field F2 = design tensor { wedge vertex 120 decay 2; regular at (0.2, -0.1, 0.9) direction (1, 0, 0); smooth iterations 300 }
+field K = curvature
+field V = vector("v.vfield")
+field E = design vector { }
+axiom
+  (empty)
+)");
+
+  Module f;
+  f.surface.present = true;
+  f.surface.path = "bunny.off";
+  CHECK(printModule(f).find("\nsurface \"bunny.off\"\n") != std::string::npos);
+  f.surface = {};
+  f.surface.present = true;
+  f.surface.generator = "genus2";
+  CHECK(printModule(f).find("\nsurface genus2()\n") != std::string::npos);
+  f.surface.present = false;
+  CHECK(printModule(f).find("surface") == std::string::npos);
+}

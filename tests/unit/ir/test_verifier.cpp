@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "ir/builtins.h"
@@ -314,4 +316,118 @@ TEST_CASE("verifier: attribute default must be a constant of its type", "[ir][ve
   Module m = testing::sampleModule();
   m.attrs[0].value = binary(ExprOp::Add, N, Expr::number(1), Expr::number(2));
   expectProblem(m, "attr height: default value is not a constant");
+}
+
+namespace {
+Module withSurface() {
+  Module m = testing::sampleModule();
+  m.surface.present = true;
+  m.surface.generator = "torus";
+  m.surface.args = {2, 0.6};
+  FieldSpec f;
+  f.name = "F";
+  f.source = "design";
+  f.kind = "tensor";
+  f.design = {{"wedge", {{"vertex", {3}}, {"decay", {2}}}, {}},
+              {"regular", {{"at", {0, 0, 1}}, {"angle", {30}}}, {}},
+              {"smooth", {{"iterations", {10}}}, {}}};
+  m.fields.push_back(f);
+  FieldSpec k;
+  k.name = "K";
+  k.source = "curvature";
+  k.kind = "tensor";
+  m.fields.push_back(k);
+  return m;
+}
+}  // namespace
+
+TEST_CASE("verifier: surface", "[ir][verifier][environment]") {
+  std::vector<std::string> problems;
+  Module ok = withSurface();
+  CHECK(verifyModule(ok, problems));
+  INFO(joined(problems));
+
+  Module file = testing::sampleModule();
+  file.surface.present = true;
+  file.surface.path = "bunny.off";
+  CHECK(verifyModule(file, problems));
+
+  Module m = withSurface();
+  m.surface.generator = "klein";
+  expectProblem(m, "surface: unknown generator 'klein'");
+  m = withSurface();
+  m.surface.args = {2};
+  expectProblem(m, "surface: torus takes 2 arguments, has 1");
+  m = withSurface();
+  m.surface.args[1] = std::nan("");
+  expectProblem(m, "surface: argument nan is not finite");
+  m = withSurface();
+  m.surface.path = "b.off";
+  expectProblem(m, "surface: needs exactly one of a path and a generator");
+  m = withSurface();
+  m.surface.generator.clear();
+  m.surface.path = "b.off";
+  expectProblem(m, "surface: a file surface has no arguments");
+  Module absent = testing::sampleModule();
+  absent.surface.path = "b.off";
+  expectProblem(absent, "surface: not present");
+}
+
+TEST_CASE("verifier: fields", "[ir][verifier][environment]") {
+  Module m = withSurface();
+  m.surface = {};
+  expectProblem(m, "fields without a surface");
+
+  m = withSurface();
+  m.fields[1].name = "F";
+  expectProblem(m, "field F: name is not unique");
+  m = withSurface();
+  m.fields[0].kind = "matrix";
+  expectProblem(m, "field F: bad kind 'matrix'");
+  m = withSurface();
+  m.fields[1].source = "blend";
+  expectProblem(m, "field K: bad source 'blend'");
+  m = withSurface();
+  m.fields[1].kind = "vector";
+  expectProblem(m, "field K: a curvature field is a tensor field");
+  m = withSurface();
+  m.fields[1].source = "file";
+  expectProblem(m, "field K: file source without a path");
+  m = withSurface();
+  m.fields[1].path = "k.tfield";
+  expectProblem(m, "field K: a path on a curvature field");
+  m = withSurface();
+  m.fields[1].design = m.fields[0].design;
+  expectProblem(m, "field K: design items on a curvature field");
+
+  m = withSurface();
+  m.fields[0].design[0].kind = "center";
+  expectProblem(m, "field F design center: unknown kind");
+  m = withSurface();
+  m.fields[0].design[0].words[1].first = "decai";
+  expectProblem(m, "field F design wedge: unknown keyword 'decai'");
+  m = withSurface();
+  m.fields[0].design[0].words[1].second = {1, 2, 3};
+  expectProblem(m, "field F design wedge: 'decay' has 3 values, expected 1");
+  m = withSurface();
+  m.fields[0].design[0].words[1].second = {std::numeric_limits<double>::infinity()};
+  expectProblem(m, "field F design wedge: 'decay' value inf is not finite");
+  m = withSurface();
+  m.fields[0].design[0].words[1].second = {0};
+  expectProblem(m, "field F design wedge: decay 0 is not positive");
+  m = withSurface();
+  m.fields[0].design[0].words[0].second = {2.5};
+  expectProblem(m, "field F design wedge: 'vertex' 2.5 is not a whole number >= 0");
+  m = withSurface();
+  m.fields[0].design[0].words.erase(m.fields[0].design[0].words.begin());
+  expectProblem(m, "field F design wedge: has no position (vertex or at)");
+  m = withSurface();
+  m.fields[0].design[0].words.push_back({"angle", {30}});
+  expectProblem(m, "field F design wedge: keyword 'angle' is for regular elements only");
+  m = withSurface();
+  m.fields[0].design[2].words[0].first = "decay";
+  expectProblem(m, "field F design smooth: keyword 'decay' does not belong to a smooth");
+  m = withSurface();
+  m.fields[0].design[1].words.push_back({"iterations", {3}});
+  expectProblem(m, "field F design regular: keyword 'iterations' does not belong to a regular");
 }
