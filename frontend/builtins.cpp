@@ -19,6 +19,8 @@ const CommandInfo kCommands[] = {
     {CommandId::RotateZ, "RZ", 1, 1, BodyRule::None, "RZ(degrees)", nullptr},
     {CommandId::RotateNormal, "RS", 1, 1, BodyRule::None, "RS(degrees)", nullptr},
     {CommandId::Scale, "S", 3, 3, BodyRule::None, "S(sx, sy, sz)", nullptr},
+    // The same command for grammars whose shapes are named S (FGSG Fig. 11's glyphs).
+    {CommandId::Scale, "Size", 3, 3, BodyRule::None, "Size(sx, sy, sz)", nullptr},
     {CommandId::Instance, "I", 1, 1, BodyRule::None, "I(\"asset\")", nullptr},
     {CommandId::InstanceCollide, "IC", 1, 1, BodyRule::None, "IC(\"asset\")", nullptr},
     {CommandId::InstanceMerge, "IM", 3, 3, BodyRule::None, "IM(\"asset\", maxDist, maxAngle)",
@@ -69,7 +71,7 @@ bool isFieldMember(const std::string& m, bool& isVector) {
   static const char* kVectors[] = {"vector", "vector1", "vector2", "gradient", "curl"};
   static const char* kScalars[] = {"value",  "value1",  "value2",  "length",   "length1",
                                    "length2", "Xangle", "Xangle1", "Xangle2",  "Yangle1",
-                                   "div",     "mincurv", "maxcurv", "meancurv", "gausscurv"};
+                                   "div",     "mincurv", "maxcurv", "meancurv", "gausscurv", "intensity"};
   for (const char* v : kVectors)
     if (m == v) return isVector = true, true;
   for (const char* s : kScalars)

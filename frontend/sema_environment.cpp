@@ -23,6 +23,8 @@ std::string argumentName(const std::string& generator, size_t k) {
   static const std::map<std::string, std::vector<const char*>> kNames = {
       {"torus", {"R", "r"}}, {"sphere", {"r"}}, {"plane", {"w", "h"}}, {"cylinder", {"r", "h"}}};
   auto it = kNames.find(generator);
+  const SurfaceGeneratorInfo* g = findSurfaceGenerator(generator);
+  if (g && k == static_cast<size_t>(g->args)) return "resolution";
   if (it == kNames.end() || k >= it->second.size()) return "argument " + std::to_string(k + 1);
   return it->second[k];
 }
@@ -109,11 +111,13 @@ class EnvironmentChecker {
       return false;
     }
     const int n = static_cast<int>(d.args.size());
-    if (n != g->args) {
+    // After its arguments a generator may take one more: its resolution (segments around
+    // the tube or along the plane's longer side, sphere subdivisions, genus-2 levels).
+    if (n != g->args && n != g->args + 1) {
       diags_.error("E033", d.target,
                    "'" + d.generator + "' takes " + std::to_string(g->args) + " argument" +
-                       (g->args == 1 ? "" : "s") + ", got " + std::to_string(n) + ": " +
-                       g->signature);
+                       (g->args == 1 ? "" : "s") + " and an optional resolution, got " +
+                       std::to_string(n) + ": " + g->signature);
       return false;
     }
     bool ok = true;
@@ -176,8 +180,9 @@ class EnvironmentChecker {
     if (f.source == "file") {
       path = f.path;
       isFile = true;
-    } else if ((f.function == "tensor" || f.function == "vector") && f.args.size() == 1) {
-      ConstValue v;  // tensor(pathConst)
+    } else if ((f.function == "tensor" || f.function == "vector" || f.function == "image") &&
+               f.args.size() == 1) {
+      ConstValue v;  // tensor(pathConst), image(pathConst)
       if (eval_(*f.args[0], v) && v.type == ValueType::Str) {
         path = v.str;
         isFile = true;
@@ -190,8 +195,9 @@ class EnvironmentChecker {
                          (f.function == "tensor" ? "tfield" : "vfield") + "\")`");
         return false;
       }
-      out.source = "file";
-      out.kind = f.function;
+      // image("cat.pgm"): the structure tensor of the image's gradients (FGSG Fig. 12).
+      out.source = f.function == "image" ? "image" : "file";
+      out.kind = f.function == "image" ? "tensor" : f.function;
       out.path = path;
       return ok;
     }
@@ -200,6 +206,10 @@ class EnvironmentChecker {
                    "'" + f.function + "' loads a field from a file and takes its path as a constant "
                    "string: `" + f.function + "(\"foot." + (f.function == "tensor" ? "tfield" : "vfield") +
                        "\")`; to design one, write `design " + f.function + " { ... }`");
+    } else if (f.function == "image") {
+      diags_.error("E035", f.args.size() == 1 ? f.args[0]->range : f.sourceRange,
+                   "'image' reads a picture (PNG, JPEG, PGM ...) and takes its path as a constant "
+                   "string: `image(\"cat.png\")`");
     } else if (f.function == "curvature") {
       diags_.error("E035", f.sourceRange,
                    "'curvature' takes no arguments: `field " + f.name + " = curvature;` is the "
@@ -212,7 +222,7 @@ class EnvironmentChecker {
       diags_.error("E035", f.functionRange.begin.line ? f.functionRange : f.sourceRange,
                    "unknown field source '" + f.function +
                        "' (expected tensor(\"file\"), vector(\"file\"), design tensor { ... }, "
-                       "design vector { ... } or curvature)");
+                       "design vector { ... }, curvature or image(\"file\"))");
     }
     return false;
   }

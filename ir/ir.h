@@ -233,9 +233,9 @@ struct FieldDesignSpec {
 // through Module::environment (kind "field", same name).
 struct FieldSpec {
   std::string name;
-  std::string source;  // "file" | "design" | "curvature"
-  std::string kind;    // "tensor" | "vector" (curvature: "tensor")
-  std::string path;    // file sources
+  std::string source;  // "file" | "design" | "curvature" | "image"
+  std::string kind;    // "tensor" | "vector" (curvature, image: "tensor")
+  std::string path;    // file and image sources
   std::vector<FieldDesignSpec> design;
   Loc loc;
 };

@@ -142,6 +142,7 @@ class Printer {
     std::string text = "field " + f.name + " = ";
     if (f.source == "curvature") return text + "curvature";
     if (f.source == "file") return text + f.kind + "(" + quoted(f.path) + ")";
+    if (f.source == "image") return text + "image(" + quoted(f.path) + ")";
     if (f.source != "design") return text + "source#" + quoted(f.source);
     text += "design " + f.kind + " {";
     for (size_t i = 0; i < f.design.size(); ++i) {

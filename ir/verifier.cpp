@@ -128,7 +128,8 @@ class Verifier {
       problem("unknown generator '" + s.generator + "'");
       return;
     }
-    if (s.args.size() != g->second)
+    // The generator's arguments, then optionally its resolution.
+    if (s.args.size() != g->second && s.args.size() != g->second + 1)
       problem(s.generator + " takes " + std::to_string(g->second) + " arguments, has " +
               std::to_string(s.args.size()));
     finite(s.args, "argument");
@@ -144,15 +145,17 @@ class Verifier {
       if (std::find(names.begin(), names.end(), f.name) != names.end()) problem("name is not unique");
       names.push_back(f.name);
       if (f.kind != "tensor" && f.kind != "vector") problem("bad kind '" + f.kind + "'");
-      if (f.source == "file") {
-        if (f.path.empty()) problem("file source without a path");
+      if (f.source == "file" || f.source == "image") {
+        if (f.path.empty()) problem(f.source + " source without a path");
+        if (f.source == "image" && f.kind != "tensor") problem("an image field is a tensor field");
       } else if (f.source == "curvature") {
         if (f.kind != "tensor") problem("a curvature field is a tensor field");
       } else if (f.source != "design") {
         problem("bad source '" + f.source + "'");
       }
       if (f.source != "design" && !f.design.empty()) problem("design items on a " + f.source + " field");
-      if (f.source != "file" && !f.path.empty()) problem("a path on a " + f.source + " field");
+      if (f.source != "file" && f.source != "image" && !f.path.empty())
+        problem("a path on a " + f.source + " field");
       for (const FieldDesignSpec& d : f.design) designItem(d);
     }
   }

@@ -13,7 +13,7 @@
 enum FgsgErrorCode : int32_t {
   FGSG_OK = 0,
   FGSG_E_VEC_UNAVAILABLE = 1,  // R001: a vector value not available yet (vector queries)
-  FGSG_E_FIELD = 2,            // R001: field queries are not supported yet
+  FGSG_E_FIELD = 2,            // retired (field queries are answered by the host); kept for numbering
   FGSG_E_TEXTURE = 3,          // R001: texture contexts are not supported yet
   FGSG_E_NO_SCOPE = 4,         // R006: a scope query in a parallel rewriting step
   FGSG_E_HOST = 5,             // the query host failed; its message is in the host

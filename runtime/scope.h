@@ -20,6 +20,11 @@ struct Scope {
   Vec3 P = Vec3::Zero();
   Mat3 axes = Mat3::Identity();  // columns: X, Y, Z
   Vec3 S = Vec3::Ones();
+  // On a surface (FGSG §4.3) the scope stands on a surface point: a face (-1: no
+  // surface, the plane) and barycentric coordinates, lifted `lift` along the normal.
+  int32_t face = -1;
+  Vec3 bary = Vec3::Zero();
+  double lift = 0.0;
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

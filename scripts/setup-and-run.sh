@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian bookworm machine to a first result: installs what is
-# missing, builds (Release) and runs the main example, writing out/building.glb and the
-# preview out/building.png.
+# missing, builds (Release) and runs the main example: stems and leaves growing along a
+# designed field over the embedded torus (FGSG Fig. 13), writing out/stem_leaf.glb and
+# the preview out/stem_leaf.png.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 mkdir -p "$root/out"
-"$root/build/bin/fgsg" run "$root/examples/mueller_building.fgsg" \
-  -o "$root/out/building.glb" --preview "$root/out/building.png" --stats
-echo "fgsg: open out/building.glb in Blender (File > Import > glTF 2.0); preview in out/building.png"
+"$root/build/bin/fgsg" run "$root/examples/stem_leaf.fgsg" \
+  -o "$root/out/stem_leaf.glb" --preview "$root/out/stem_leaf.png" --stats
+echo "fgsg: open out/stem_leaf.glb in Blender (File > Import > glTF 2.0); preview in out/stem_leaf.png"

@@ -87,11 +87,18 @@ rt::Vec3 Evaluator::vec(const ir::Expr& e, const Frame& f) const {
         return n > 0 ? rt::Vec3(v / n) : v;
       }
       break;
-    case ExprOp::Query: break;
+    case ExprOp::Query:
+      if (static_cast<ir::Query>(e.index) == ir::Query::Field) {
+        if (!f.scope)
+          throw DeriveError{e.loc, "R006",
+                            "scope queries cannot be answered while a parallel derivation rewrites "
+                            "its string: modules get their scope only when the turtle interprets it"};
+        return f.host->fieldVector(*f.scope, e.env, m_.strings[e.extra], e.loc);
+      }
+      break;
     default: break;
   }
-  throw DeriveError{e.loc, "R001", "this vector value is not available yet (field queries arrive "
-                                   "with surfaces and fields)"};
+  throw DeriveError{e.loc, "R900", "internal error: a vector expression the interpreter cannot read"};
 }
 
 double Evaluator::call(const ir::Expr& e, const Frame& f) const {
@@ -143,8 +150,7 @@ double Evaluator::call(const ir::Expr& e, const Frame& f) const {
 double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   using ir::Query;
   const auto q = static_cast<Query>(e.index);
-  const bool needsScope = q != Query::ShapeDepth && q != Query::ShapeIndex &&
-                          q != Query::Field && q != Query::Texture;
+  const bool needsScope = q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Texture;
   if (needsScope && !f.scope)
     throw DeriveError{e.loc, "R006",
                       "scope queries cannot be answered while a parallel derivation rewrites "
@@ -161,9 +167,7 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
     case Query::ShapeVisible: return f.host->visible(*f.scope, string(num(e.args[0], f)), e.loc);
     case Query::ScopeOcc: return f.host->occlusion(*f.scope, e.loc);
     case Query::Field:
-      throw DeriveError{e.loc, "R001",
-                        "field queries are not yet supported: surfaces and fields arrive with the "
-                        "field-guided surfaces work; this grammar parses and type-checks"};
+      return f.host->fieldNumber(*f.scope, e.env, m_.strings[e.extra], e.loc);
     case Query::Texture:
       throw DeriveError{e.loc, "R001",
                         "texture contexts are not yet supported: they arrive with on-mesh "

@@ -26,6 +26,11 @@ struct QueryHost {
   virtual ~QueryHost() = default;
   virtual double visible(const rt::Scope& scope, const std::string& target, ir::Loc at) = 0;
   virtual double occlusion(const rt::Scope& scope, ir::Loc at) = 0;  // a string id
+  // F.member of the field at environment entry `env`, at the scope's surface point.
+  virtual double fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member,
+                             ir::Loc at) = 0;
+  virtual rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member,
+                               ir::Loc at) = 0;
 };
 
 struct Frame {

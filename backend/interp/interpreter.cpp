@@ -3,6 +3,7 @@
 #include "backend/interp/collision_placement.h"
 #include "backend/interp/eval.h"
 #include "backend/interp/shape_store.h"
+#include "backend/interp/surface_world.h"
 #include "runtime/cga/cga.h"
 #include "runtime/occlusion.h"
 #include "runtime/random.h"
@@ -75,11 +76,13 @@ class Interpreter final : public QueryHost {
       result.ok = true;
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
       appendLineTubes(lines_, assets_, out_, symbolColor_);
+      appendSurface();
     } catch (const LimitReached& limit) {
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
       result.ok = true;
       result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
       appendLineTubes(lines_, assets_, out_, symbolColor_);
+      appendSurface();
     } catch (const DeriveError& e) {
       result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
     }
@@ -98,6 +101,21 @@ class Interpreter final : public QueryHost {
     double weight;
   };
 
+  // The surface the pattern grew on is part of the output, in a neutral grey.
+  void appendSurface() {
+    if (!surface_) return;
+    rt::Instance inst;
+    const std::string name = "<surface>";
+    assets_.addGenerated(name, surface_->surfaceMesh(), inst.transform);
+    inst.asset = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back(name);
+    inst.symbol = static_cast<uint32_t>(out_.symbols.size());
+    out_.symbols.push_back("surface");
+    inst.color = {0.72f, 0.72f, 0.7f};
+    inst.firstParam = static_cast<uint32_t>(out_.params.size());
+    out_.instances.push_back(inst);
+  }
+
   // ------------------------------------------------------------ set-up
 
   void checkEnvironment() {
@@ -105,12 +123,19 @@ class Interpreter final : public QueryHost {
       throw DeriveError{m_.collision.loc, "R009",
                         "collision tests need a sequential derivation: a collision culls the rest "
                         "of one production, and an L-system rewrites every module at once"};
+    if (m_.surface.present || !opt_.surfaceOverride.empty()) {
+      if (m_.mode == ir::DeriveMode::Parallel)
+        throw DeriveError{m_.surface.loc, "R009",
+                          "a surface needs a sequential derivation: L-system turtles draw on the "
+                          "plane"};
+      surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs);
+    }
     for (const auto& env : m_.environment)
-      throw DeriveError{env.loc, "R001",
-                        env.kind + " declarations are not yet supported when running: " + env.kind +
-                            "s arrive with " +
-                            (env.kind == "texture" ? "on-mesh marching" : "the field-guided surfaces work") +
-                            " (this grammar parses and type-checks; `fgsg check` accepts it)"};
+      if (env.kind == "texture")
+        throw DeriveError{env.loc, "R001",
+                          "texture declarations are not yet supported when running: textures "
+                          "arrive with on-mesh marching (this grammar parses and type-checks; "
+                          "`fgsg check` accepts it)"};
   }
 
   // Every asset is loaded before deriving, so a missing file is reported at its I().
@@ -298,7 +323,28 @@ class Interpreter final : public QueryHost {
     return noneId_;
   }
 
+  // Fields live on surfaces: the compiler refuses a field without one.
+  double fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member,
+                     ir::Loc at) override {
+    if (!surface_) throw DeriveError{at, "R016", "field queries need a surface"};
+    return surface_->fieldNumber(scope, env, member, at);
+  }
+  rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member,
+                       ir::Loc at) override {
+    if (!surface_) throw DeriveError{at, "R016", "field queries need a surface"};
+    return surface_->fieldVector(scope, env, member, at);
+  }
+
   // ------------------------------------------------------------ ops shared by both modes
+
+  // T: on the plane a vector addition in the scope's frame; on a surface a trace along
+  // the first field (FGSG §4.3).
+  void translate(rt::Scope& scope, double x, double y, double z) {
+    if (surface_)
+      surface_->translate(scope, x, y, z);
+    else
+      scope.P += scope.axes * rt::Vec3(x, y, z);
+  }
 
   void turn(rt::Scope& scope, int axis, double degrees) {
     double c, s;
@@ -413,7 +459,7 @@ class Interpreter final : public QueryHost {
   // (value, size kind).
   void scopeCommand(State& st, const ir::Op& op, const double* a) {
     switch (op.kind) {
-      case ir::OpKind::Translate: st.scope.P += st.scope.axes * rt::Vec3(a[0], a[1], a[2]); break;
+      case ir::OpKind::Translate: translate(st.scope, a[0], a[1], a[2]); break;
       case ir::OpKind::Rotate:
         if (op.index < 3) {
           turn(st.scope, static_cast<int>(op.index), a[0]);
@@ -423,7 +469,12 @@ class Interpreter final : public QueryHost {
           turn(st.scope, 2, a[2]);
         }
         break;
-      case ir::OpKind::RotateNormal: rt::rotateAboutNormal(st.scope, kPlaneNormal, a[0]); break;
+      case ir::OpKind::RotateNormal:
+        if (surface_)
+          surface_->rotateAboutNormal(st.scope, a[0]);
+        else
+          rt::rotateAboutNormal(st.scope, kPlaneNormal, a[0]);
+        break;
       case ir::OpKind::Scale:
         for (int k = 0; k < 3; ++k)
           st.scope.S[k] = a[2 * k + 1] == static_cast<double>(ir::Size::Relative) ? a[2 * k] * st.scope.S[k] : a[2 * k];
@@ -474,7 +525,8 @@ class Interpreter final : public QueryHost {
   void runSequential() {
     streetDirection_ = rt::Vec3::UnitZ();
     std::vector<double> none;
-    execRoot(m_.axiom, rt::Scope{}, rt::GeomRef{}, rt::rootKey(opt_.seed), 0, 0, none.data(),
+    execRoot(m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{},
+             rt::rootKey(opt_.seed), 0, 0, none.data(),
              UINT32_MAX);
     WaitingShape shape;
     while (true) {
@@ -683,7 +735,7 @@ class Interpreter final : public QueryHost {
         case ir::OpKind::Translate: {
           const double x = eval_.num(op.args[0], f), y = eval_.num(op.args[1], f),
                        z = eval_.num(op.args[2], f);
-          st.scope.P += st.scope.axes * rt::Vec3(x, y, z);
+          translate(st.scope, x, y, z);
           break;
         }
         case ir::OpKind::Rotate:
@@ -1280,6 +1332,7 @@ class Interpreter final : public QueryHost {
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   bool usesOcclusion_ = false;
+  std::unique_ptr<SurfaceWorld> surface_;  // null: the grammar grows on the plane
   // Collision-tested instancing, merging, Lock and lines (FGSG §4.4).
   std::unique_ptr<CollisionPlacement> collisions_;  // null: the grammar never collides
   bool testAll_ = false;        // every I() is tested (`collision all;`, --collide-all)

@@ -274,8 +274,14 @@ class ExprCodegen {
   llvm::Value* query(const Expr& e) {
     const auto q = static_cast<ir::Query>(e.index);
     // Not supported by any engine yet: an error before any argument is evaluated.
-    if (q == ir::Query::Field) return raiseNum(FGSG_E_FIELD, e.loc);
     if (q == ir::Query::Texture) return raiseNum(FGSG_E_TEXTURE, e.loc);
+    return askHost(e, -1);
+  }
+
+  // One call to the query host; `lane` >= 0 asks for that component of a vector field
+  // member (passed as the one argument).
+  llvm::Value* askHost(const Expr& e, int lane) {
+    const auto q = static_cast<ir::Query>(e.index);
     if (!queryOut_) {
       llvm::IRBuilderBase::InsertPointGuard guard(b_);
       b_.SetInsertPoint(entry_, entry_->getFirstInsertionPt());
@@ -286,6 +292,9 @@ class ExprCodegen {
     uint32_t nargs = 0;
     if (q == ir::Query::ShapeVisible) {
       b_.CreateStore(num(e.args[0]), queryArgs_);
+      nargs = 1;
+    } else if (lane >= 0) {
+      b_.CreateStore(f64(lane), queryArgs_);
       nargs = 1;
     }
     llvm::Value* status = call("fgsg_rt_query",
@@ -349,6 +358,10 @@ class ExprCodegen {
           for (int k = 0; k < 3; ++k) r[k] = b_.CreateSelect(positive, b_.CreateFDiv(v[k], n), v[k]);
           return r;
         }
+        break;
+      case ExprOp::Query:
+        if (static_cast<ir::Query>(e.index) == ir::Query::Field)
+          return {askHost(e, 0), askHost(e, 1), askHost(e, 2)};
         break;
       default: break;
     }

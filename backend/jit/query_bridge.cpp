@@ -10,7 +10,7 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   const auto q = static_cast<ir::Query>(kind);
   const ir::Loc at{line, col};
   const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex &&
-                          q != ir::Query::Field && q != ir::Query::Texture;
+                          q != ir::Query::Texture;
   if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
   try {
     switch (q) {
@@ -27,7 +27,12 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
         *out = f.host->visible(*f.scope, self.m_.strings.at(static_cast<size_t>(args[0])), at);
         return FGSG_OK;
       case ir::Query::ScopeOcc: *out = f.host->occlusion(*f.scope, at); return FGSG_OK;
-      case ir::Query::Field: return FGSG_E_FIELD;
+      case ir::Query::Field:
+        // With one argument: that component (0, 1, 2) of a vector member.
+        *out = nargs == 1 ? f.host->fieldVector(*f.scope, env, self.m_.strings.at(extra), at)
+                                [static_cast<int>(args[0])]
+                          : f.host->fieldNumber(*f.scope, env, self.m_.strings.at(extra), at);
+        return FGSG_OK;
       case ir::Query::Texture: return FGSG_E_TEXTURE;
     }
     return FGSG_E_INTERNAL;
@@ -38,20 +43,16 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   } catch (...) {
     self.hostError_ = DeriveError{at, "R900", "internal: the query host failed"};
   }
-  (void)env, (void)extra;
   return FGSG_E_HOST;
 }
 
 DeriveError QueryBridge::error(const FgsgContext& ctx) const {
   const ir::Loc at{ctx.errorLine, ctx.errorCol};
   switch (static_cast<FgsgErrorCode>(ctx.errorCode)) {
-    case FGSG_OK: break;
+    case FGSG_OK:
+    case FGSG_E_FIELD: break;
     case FGSG_E_VEC_UNAVAILABLE:
-      return {at, "R001", "this vector value is not available yet (field queries arrive "
-                          "with surfaces and fields)"};
-    case FGSG_E_FIELD:
-      return {at, "R001", "field queries are not yet supported: surfaces and fields arrive with "
-                          "the field-guided surfaces work; this grammar parses and type-checks"};
+      return {at, "R900", "internal error: a vector expression the interpreter cannot read"};
     case FGSG_E_TEXTURE:
       return {at, "R001", "texture contexts are not yet supported: they arrive with on-mesh "
                           "marching; this grammar parses and type-checks"};

@@ -108,9 +108,15 @@ TEST_CASE("surface errors: generator, argument count, empty file name (E033)", "
             "unknown surface 'bunny' (expected torus(R, r), sphere(r), plane(w, h), genus2() or "
             "cylinder(r, h); a mesh file is written as a string: `surface \"bunny.off\";`)");
   onlyError(declarations("surface torus(2);"), "E033", 1, 9,
-            "'torus' takes 2 arguments, got 1: torus(R, r)");
-  onlyError(declarations("surface sphere;"), "E033", 1, 9, "'sphere' takes 1 argument, got 0: sphere(r)");
-  onlyError(declarations("surface genus2(1);"), "E033", 1, 9, "'genus2' takes 0 arguments, got 1");
+            "'torus' takes 2 arguments and an optional resolution, got 1: torus(R, r)");
+  onlyError(declarations("surface sphere;"), "E033", 1, 9,
+            "'sphere' takes 1 argument and an optional resolution, got 0: sphere(r)");
+  onlyError(declarations("surface genus2(1, 2);"), "E033", 1, 9,
+            "'genus2' takes 0 arguments and an optional resolution, got 2");
+  // The optional resolution after the arguments is accepted.
+  CHECK(declarations("surface plane(16, 16, 128);").ok);
+  onlyError(declarations("surface plane(16, 16, 0);"), "E034", 1, 23,
+            "'resolution' of plane(w, h) must be a positive number, got 0");
   onlyError(declarations("surface \"\";"), "E033", 1, 9, "the surface's file name is empty");
 }
 
@@ -243,7 +249,8 @@ TEST_CASE("field sources (E035)", "[sema][environment]") {
   const std::string s = "surface sphere(1);\n";
   onlyError(declarations(s + "field F = blend(A, B);"), "E035", 2, 11,
             "unknown field source 'blend' (expected tensor(\"file\"), vector(\"file\"), design "
-            "tensor { ... }, design vector { ... } or curvature)");
+            "tensor { ... }, design vector { ... }, curvature or image(\"file\"))");
+  onlyError(declarations(s + "field F = image(3);"), "E035", 2, 17, "'image' reads a picture");
   onlyError(declarations(s + "field F = tensor(1);"), "E035", 2, 18,
             "'tensor' loads a field from a file and takes its path as a constant string");
   onlyError(declarations(s + "field F = vector;"), "E035", 2, 11, "'vector' loads a field from a file");

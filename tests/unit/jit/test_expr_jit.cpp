@@ -289,6 +289,12 @@ struct Host : backend::QueryHost {
     return target.size();
   }
   double occlusion(const rt::Scope&, ir::Loc) override { return 7; }
+  double fieldNumber(const rt::Scope&, uint32_t env, const std::string& member, ir::Loc) override {
+    return 100.0 * env + member.size();
+  }
+  rt::Vec3 fieldVector(const rt::Scope&, uint32_t, const std::string&, ir::Loc) override {
+    return rt::Vec3(1, 2, 3);
+  }
 };
 
 Expr query(ir::Query q, std::vector<Expr> args = {}) {
@@ -322,12 +328,15 @@ TEST_CASE("jit: queries go through the host; a refused query is an error in the 
     exprs.push_back(node(ExprOp::Add, Type::Num, {query(static_cast<ir::Query>(q)), rand(num(0), num(1))}));
   exprs.push_back(query(ir::Query::ShapeVisible, {Expr::string(street)}));
   exprs.push_back(query(ir::Query::ScopeOcc, {Expr::string(street)}));
-  const size_t firstError = exprs.size();
-  exprs.push_back(node(ExprOp::Add, Type::Num, {query(ir::Query::ShapeVisible, {Expr::string(refused)}), rand(num(0), num(1))}));
-  exprs.push_back(query(ir::Query::Field));
+  Expr field = query(ir::Query::Field);  // the host answers 100 * env + the member's length
+  field.env = 2;
+  field.extra = refused;
+  exprs.push_back(field);
   Expr vq = node(ExprOp::Query, Type::Vec3, {}, static_cast<uint32_t>(ir::Query::Field));
   vq.loc = {3, 14};
   exprs.push_back(call(Builtin::Length, {vq}));
+  const size_t firstError = exprs.size();
+  exprs.push_back(node(ExprOp::Add, Type::Num, {query(ir::Query::ShapeVisible, {Expr::string(refused)}), rand(num(0), num(1))}));
 
   backend::jit::Jit jit;
   std::vector<const Expr*> ptrs;

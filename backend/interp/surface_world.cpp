@@ -1,0 +1,355 @@
+#include "backend/interp/surface_world.h"
+
+#include "runtime/field/curvature.h"
+#include "runtime/field/design.h"
+#include "runtime/field/field_file.h"
+#include "runtime/field/image_field.h"
+#include "runtime/field/smooth.h"
+#include "runtime/field/tangent_field.h"
+#include "runtime/field/tangent_frames.h"
+#include "runtime/field/trace.h"
+#include "runtime/surface/load_surface.h"
+#include "runtime/surface/locate.h"
+#include "runtime/surface/procedural.h"
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+namespace fgsg::backend {
+namespace {
+
+namespace fs = std::filesystem;
+using rt::Vec3;
+using rt::surface::SurfaceMesh;
+using rt::surface::SurfacePoint;
+
+constexpr double kPi = 3.14159265358979323846;
+// A tangent direction shorter than this (relative) has no direction: the scope's X axis
+// stood along the normal, or T moved only along it.
+constexpr double kTinyDirection = 1e-12;
+
+// `v` laid into the tangent plane of `n`, unit length; `fallback` when v is along n.
+Vec3 tangent(const Vec3& v, const Vec3& n, const Vec3& fallback) {
+  Vec3 t = v - n * n.dot(v);
+  if (t.norm() > kTinyDirection * std::max(1.0, v.norm())) return t.normalized();
+  t = fallback - n * n.dot(fallback);
+  if (t.norm() > kTinyDirection) return t.normalized();
+  return n.unitOrthogonal();
+}
+
+// --surface-size: centred at the origin, the largest extent made `size`.
+void resize(SurfaceMesh& m, double size) {
+  const Vec3 centre = 0.5 * (m.boundsMin + m.boundsMax);
+  const double extent = (m.boundsMax - m.boundsMin).maxCoeff();
+  if (!(extent > 0)) return;
+  for (Vec3& v : m.vertices) v = (v - centre) * (size / extent);
+  m.buildTopology();
+}
+
+}  // namespace
+
+struct SurfaceWorld::Impl {
+  struct Field {
+    std::string name;
+    std::unique_ptr<rt::field::TangentField> values;
+    bool curvature = false;  // `curvature`: answers mincurv ... gausscurv
+    std::unique_ptr<rt::field::Picture> picture;  // `image(...)`: answers intensity
+  };
+
+  SurfaceMesh mesh;
+  std::unique_ptr<rt::surface::SurfaceLocator> locator;
+  std::shared_ptr<const rt::field::TangentFrames> frames;
+  std::vector<Field> fields;        // in declaration order; the first guides T
+  std::vector<int> fieldOfEnv;      // Module::environment index -> fields index (-1: none)
+  Vec3 start = Vec3::Zero();
+
+  // The scope's surface point; a scope made without one (a synthesized piece) is snapped.
+  SurfacePoint pointOf(const rt::Scope& s) const {
+    if (s.face >= 0) return {s.face, s.bary};
+    return locator->closestPoint(s.P);
+  }
+
+  // Puts the scope on `p` with X along `x` (laid into the tangent plane), keeping lift.
+  void place(rt::Scope& s, const SurfacePoint& p, const Vec3& x) const {
+    const Vec3 n = p.normal(mesh);
+    const Vec3 X = tangent(x, n, s.axes.col(0));
+    s.face = p.face;
+    s.bary = p.bary;
+    s.axes.col(0) = X;
+    s.axes.col(1) = n.cross(X);
+    s.axes.col(2) = n;
+    s.P = p.position(mesh) + s.lift * n;
+  }
+};
+
+SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
+                           const std::vector<std::string>& searchDirs)
+    : impl_(std::make_unique<Impl>()) {
+  const ir::SurfaceSpec& spec = m.surface;
+  std::string error;
+  rt::surface::SurfaceLoadOptions load;
+  load.repair = options.repairSurface;
+  bool ok = false;
+  if (!options.surfaceOverride.empty()) {
+    ok = rt::surface::loadSurface(options.surfaceOverride, impl_->mesh, error, load);
+  } else if (!spec.path.empty()) {
+    std::string path = spec.path;
+    for (const auto& dir : searchDirs) {
+      std::error_code ec;
+      if (fs::is_regular_file(fs::path(dir) / spec.path, ec)) {
+        path = (fs::path(dir) / spec.path).string();
+        break;
+      }
+    }
+    ok = rt::surface::loadSurface(path, impl_->mesh, error, load);
+  } else {
+    ok = rt::surface::makeProceduralSurface(spec.generator, spec.args, impl_->mesh, error);
+  }
+  if (!ok) throw DeriveError{spec.loc, "R015", error};
+  if (options.surfaceSize > 0) resize(impl_->mesh, options.surfaceSize);
+  impl_->locator = std::make_unique<rt::surface::SurfaceLocator>(impl_->mesh);
+  buildFields(m, searchDirs);
+  impl_->start = options.hasStart ? Vec3(options.start[0], options.start[1], options.start[2])
+                                  : Vec3(0.5 * (impl_->mesh.boundsMin + impl_->mesh.boundsMax));
+}
+
+SurfaceWorld::~SurfaceWorld() = default;
+
+namespace {
+
+std::string findFile(const std::string& name, const std::vector<std::string>& dirs) {
+  for (const auto& dir : dirs) {
+    std::error_code ec;
+    if (fs::is_regular_file(fs::path(dir) / name, ec)) return (fs::path(dir) / name).string();
+  }
+  return name;
+}
+
+const std::vector<double>* word(const ir::FieldDesignSpec& item, const std::string& key) {
+  for (const auto& [k, values] : item.words)
+    if (k == key) return &values;
+  return nullptr;
+}
+
+}  // namespace
+
+void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::string>& searchDirs) {
+  Impl& w = *impl_;
+  namespace field = rt::field;
+  w.frames = std::make_shared<const field::TangentFrames>(w.mesh);
+  std::unique_ptr<field::FieldDesigner> designer;  // factorised once, on first use
+  for (const ir::FieldSpec& spec : m.fields) {
+    const field::FieldType type =
+        spec.kind == "vector" ? field::FieldType::Vector : field::FieldType::Tensor;
+    Impl::Field f;
+    f.name = spec.name;
+    std::string error;
+    if (spec.source == "file") {
+      std::optional<field::TangentField> loaded;
+      if (!field::loadField(findFile(spec.path, searchDirs), w.frames, loaded, error))
+        throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
+      if (loaded->type() != type)
+        throw DeriveError{spec.loc, "R015",
+                          "field " + spec.name + ": \"" + spec.path + "\" holds a " +
+                              (loaded->isTensor() ? "tensor" : "vector") + " field, the declaration says " +
+                              spec.kind};
+      f.values = std::make_unique<field::TangentField>(std::move(*loaded));
+    } else if (spec.source == "image") {
+      f.picture = std::make_unique<field::Picture>();
+      if (!f.picture->load(findFile(spec.path, searchDirs), error))
+        throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
+      f.values = std::make_unique<field::TangentField>(field::imageField(w.frames, *f.picture));
+    } else if (spec.source == "curvature") {
+      f.values = std::make_unique<field::TangentField>(field::curvatureTensor(w.frames));
+      f.curvature = true;
+    } else {
+      if (!designer) designer = std::make_unique<field::FieldDesigner>(w.frames);
+      if (!designer->ok())
+        throw DeriveError{spec.loc, "R015",
+                          "field " + spec.name + ": geodesic distances cannot be computed on this "
+                          "surface (its Laplacian does not factorise)"};
+      f.values = std::make_unique<field::TangentField>(w.frames, type);
+      int smoothing = 0;  // applied once the elements are summed, wherever `smooth` stands
+      for (const ir::FieldDesignSpec& item : spec.design) {
+        if (item.kind == "smooth") {
+          const auto* n = word(item, "iterations");
+          smoothing += n ? static_cast<int>((*n)[0]) : 0;
+          continue;
+        }
+        field::DesignElement e;
+        static const std::pair<const char*, field::ElementKind> kKinds[] = {
+            {"regular", field::ElementKind::Regular}, {"wedge", field::ElementKind::Wedge},
+            {"trisector", field::ElementKind::Trisector}, {"node", field::ElementKind::Node},
+            {"centre", field::ElementKind::Centre}, {"saddle", field::ElementKind::Saddle}};
+        for (const auto& [name, kind] : kKinds)
+          if (item.kind == name) e.kind = kind;
+        if (const auto* v = word(item, "vertex")) {
+          const double index = (*v)[0];
+          if (!(index >= 0) || index >= static_cast<double>(w.mesh.vertexCount()))
+            throw DeriveError{item.loc, "R015",
+                              "field " + spec.name + ": vertex " + std::to_string(int64_t(index)) +
+                                  " does not exist (the surface has " +
+                                  std::to_string(w.mesh.vertexCount()) + " vertices)"};
+          e.at = rt::surface::atVertex(w.mesh, static_cast<int>(index));
+        } else if (const auto* at = word(item, "at")) {
+          e.at = w.locator->closestPoint(Vec3((*at)[0], (*at)[1], (*at)[2]));
+        } else {
+          e.at = w.locator->closestPoint(w.start);
+        }
+        if (const auto* d = word(item, "decay")) e.decay = (*d)[0];
+        if (const auto* s = word(item, "strength")) e.strength = (*s)[0];
+        const Vec3 n = e.at.normal(w.mesh);
+        if (const auto* dir = word(item, "direction")) {
+          e.direction = Vec3((*dir)[0], (*dir)[1], (*dir)[2]);
+        } else {
+          // `angle a`: degrees counter-clockwise from the world X axis laid into the
+          // tangent plane (the default direction).
+          const auto* a = word(item, "angle");
+          e.direction = rt::field::rotateAbout(tangent(Vec3::UnitX(), n, Vec3::UnitY()), n,
+                                               a ? (*a)[0] * kPi / 180.0 : 0.0);
+        }
+        if (!designer->add(e, *f.values, error))
+          throw DeriveError{item.loc, "R015", "field " + spec.name + ": " + error};
+      }
+      if (smoothing > 0) field::smooth(*f.values, smoothing);
+    }
+    w.fields.push_back(std::move(f));
+  }
+  w.fieldOfEnv.assign(m.environment.size(), -1);
+  for (size_t k = 0; k < m.environment.size(); ++k)
+    for (size_t i = 0; i < w.fields.size(); ++i)
+      if (m.environment[k].kind == "field" && m.environment[k].name == w.fields[i].name)
+        w.fieldOfEnv[k] = static_cast<int>(i);
+}
+
+rt::Scope SurfaceWorld::startScope() const {
+  rt::Scope s;
+  const SurfacePoint p = impl_->locator->closestPoint(impl_->start);
+  Vec3 x = Vec3::UnitX();
+  if (!impl_->fields.empty()) impl_->fields[0].values->direction(p, x);  // else keep world X
+  impl_->place(s, p, x);
+  return s;
+}
+
+void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) const {
+  const Impl& w = *impl_;
+  s.lift += tz;
+  const SurfacePoint from = w.pointOf(s);
+  const Vec3 n = from.normal(w.mesh);
+  const double length = std::hypot(tx, ty);
+  const Vec3 along = s.axes * Vec3(tx, ty, 0);
+  if (length == 0 || (along - n * n.dot(along)).norm() <= kTinyDirection * length) {
+    w.place(s, from, s.axes.col(0));
+    return;
+  }
+  const Vec3 d = tangent(along, n, s.axes.col(0));
+  const Vec3 x = tangent(s.axes.col(0), n, s.axes.col(1));
+  Vec3 u;
+  if (!w.fields.empty() && w.fields[0].values->direction(from, u)) {
+    // Along the first field: the curve keeps the angle the move makes with the field,
+    // and the scope keeps the angle its X axis makes with it (FGSG §4.3, Fig. 8).
+    const rt::field::DirectionField& guide = *w.fields[0].values;
+    if (guide.isLineField() && u.dot(d) < 0) u = -u;  // the eigenvector's sign on d's side
+    const double angle = rt::field::orientedAngle(u, d, n);
+    const double keepX = rt::field::orientedAngle(u, x, n);
+    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, angle, length);
+    const Vec3 nEnd = r.end.normal(w.mesh);
+    const Vec3 uEnd = r.fieldDirection.norm() > 0 ? r.fieldDirection
+                                                  : rt::field::rotateAbout(r.direction, nEnd, -angle);
+    w.place(s, r.end, rt::field::rotateAbout(uEnd, nEnd, keepX));
+    return;
+  }
+  // Without a field the scope rides a straightest geodesic and keeps its angle to it.
+  const double keep = rt::field::orientedAngle(d, x, n);
+  const rt::field::TraceResult r = rt::field::traceGeodesic(w.mesh, from, d, length);
+  const Vec3 nEnd = r.end.normal(w.mesh);
+  w.place(s, r.end, rt::field::rotateAbout(r.direction, nEnd, keep));
+}
+
+void SurfaceWorld::rotateAboutNormal(rt::Scope& s, double degrees) const {
+  const Vec3 n = impl_->pointOf(s).normal(impl_->mesh);
+  s.axes = Eigen::AngleAxisd(degrees * kPi / 180.0, n).toRotationMatrix() * s.axes;
+}
+
+namespace {
+
+[[noreturn]] void notAnswered(ir::Loc at, const std::string& field, const std::string& member,
+                              const std::string& why) {
+  throw DeriveError{at, "R016", field + "." + member + ": " + why};
+}
+
+}  // namespace
+
+const rt::field::TangentField& SurfaceWorld::fieldAt(uint32_t env, ir::Loc at) const {
+  const int i = env < impl_->fieldOfEnv.size() ? impl_->fieldOfEnv[env] : -1;
+  if (i < 0) throw DeriveError{at, "R900", "internal error: a field query without its field"};
+  return *impl_->fields[i].values;
+}
+
+double SurfaceWorld::fieldNumber(const rt::Scope& s, uint32_t env, const std::string& member,
+                                 ir::Loc at) const {
+  namespace field = rt::field;
+  const field::TangentField& f = fieldAt(env, at);
+  const Impl::Field& named = impl_->fields[impl_->fieldOfEnv[env]];
+  const SurfacePoint p = impl_->pointOf(s);
+  const field::Eigen2 e = f.eigen(p);
+  if (member == "value" || member == "value1") return e.value1;
+  if (member == "value2") return e.value2;
+  if (member == "length" || member == "length1") return std::abs(e.value1);
+  if (member == "length2") return std::abs(e.value2);
+  if (member == "Xangle" || member == "Xangle1") return f.angle(p, s.axes.col(0));
+  if (member == "Xangle2") return f.angle(p, s.axes.col(0), field::Eigenvector::Minor);
+  if (member == "Yangle1") return f.angle(p, s.axes.col(1));
+  if (member == "div") return f.divergence(p);
+  if (member == "intensity") {
+    if (!named.picture)
+      notAnswered(at, named.name, member, "only a field made from a picture (`image(\"...\")`) has an "
+                                          "intensity");
+    return named.picture->under(impl_->mesh, p.position(impl_->mesh));
+  }
+  if (member == "mincurv" || member == "maxcurv" || member == "meancurv" || member == "gausscurv") {
+    if (!named.curvature)
+      notAnswered(at, named.name, member, "curvatures are answered by a curvature field (`field " +
+                                              named.name + " = curvature;`)");
+    const field::Curvatures c = field::curvaturesAt(f, p);
+    return member == "mincurv" ? c.min : member == "maxcurv" ? c.max : member == "meancurv" ? c.mean : c.gauss;
+  }
+  notAnswered(at, named.name, member, "not a number-valued field member");
+}
+
+rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::string& member,
+                                   ir::Loc at) const {
+  namespace field = rt::field;
+  const field::TangentField& f = fieldAt(env, at);
+  const SurfacePoint p = impl_->pointOf(s);
+  const field::Eigen2 e = f.eigen(p);
+  const Vec3 n = p.normal(impl_->mesh);
+  if (member == "vector") return f.isTensor() ? Vec3(e.value1 * e.vector1) : f.vector(p);
+  if (member == "vector1") return e.value1 * e.vector1;
+  if (member == "vector2") return e.value2 * e.vector2;
+  if (member == "curl") return f.curl(p) * n;
+  if (member == "gradient") {
+    // Of the major eigenvalue (a vector field: its length), as a world tangent vector:
+    // J^T v for the unit direction v, with J the eigenvector field's Jacobian.
+    return f.jacobianWorld(p).transpose() * e.vector1;
+  }
+  notAnswered(at, impl_->fields[impl_->fieldOfEnv[env]].name, member, "not a vector-valued field member");
+}
+
+rt::Mesh SurfaceWorld::surfaceMesh() const {
+  rt::Mesh out;
+  const SurfaceMesh& m = impl_->mesh;
+  for (size_t v = 0; v < m.vertexCount(); ++v)
+    for (int k = 0; k < 3; ++k) {
+      out.positions.push_back(static_cast<float>(m.vertices[v][k]));
+      out.normals.push_back(static_cast<float>(m.vertexNormals[v][k]));
+    }
+  for (const auto& f : m.faces)
+    for (int k = 0; k < 3; ++k) out.indices.push_back(static_cast<uint32_t>(f[k]));
+  return out;
+}
+
+size_t SurfaceWorld::faceCount() const { return impl_->mesh.faceCount(); }
+
+}  // namespace fgsg::backend

@@ -1,0 +1,57 @@
+// The environment of a field-guided grammar (FGSG §4): the surface it grows on and the
+// fields declared on it. Scopes stand on surface points; T traces along the first
+// field (or a straightest geodesic without one), RS turns about the surface normal,
+// and field queries read the fields at the scope's surface point.
+#pragma once
+
+#include "backend/interp/eval.h"
+#include "ir/ir.h"
+#include "runtime/derivation.h"
+#include "runtime/mesh.h"
+#include "runtime/scope.h"
+
+#include <memory>
+
+namespace fgsg::rt::field {
+class TangentField;
+}
+#include <string>
+#include <vector>
+
+namespace fgsg::backend {
+
+class SurfaceWorld {
+ public:
+  // Builds the module's surface (or --surface's) and its fields. Files are looked up in
+  // `searchDirs` (the grammar's folder first). Throws DeriveError at the declaration.
+  SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
+               const std::vector<std::string>& searchDirs);
+  ~SurfaceWorld();
+
+  // Where the axiom starts: on the surface point closest to --start (default: to the
+  // centre of the surface's bounding box), Z along the normal, X along the first field
+  // (without one: the world X axis laid into the tangent plane).
+  rt::Scope startScope() const;
+  // T(tx, ty, tz): (tx, ty) traces along the surface, tz lifts along the normal.
+  void translate(rt::Scope& s, double tx, double ty, double tz) const;
+  // RS(a): turns the scope about the surface normal at its point.
+  void rotateAboutNormal(rt::Scope& s, double degrees) const;
+
+  // F.member at the scope's surface point (members as in docs/language.md).
+  double fieldNumber(const rt::Scope& s, uint32_t env, const std::string& member, ir::Loc at) const;
+  rt::Vec3 fieldVector(const rt::Scope& s, uint32_t env, const std::string& member,
+                       ir::Loc at) const;
+
+  // The surface as output geometry (world space, smooth normals).
+  rt::Mesh surfaceMesh() const;
+  size_t faceCount() const;
+
+ private:
+  void buildFields(const ir::Module& m, const std::vector<std::string>& searchDirs);
+  const rt::field::TangentField& fieldAt(uint32_t env, ir::Loc at) const;
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fgsg::backend
