@@ -23,6 +23,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Shapes derived where they are written (Lock sets) nest native calls: beyond this depth
+// the set is refused rather than the stack overflowing.
+constexpr uint32_t kMaxOnTheSpotDepth = 2000;
+
 // Without a surface, patterns grow on the XY plane: RS() turns about its normal.
 const rt::Vec3 kPlaneNormal = rt::Vec3::UnitZ();
 
@@ -585,6 +589,17 @@ class Interpreter final : public QueryHost {
   bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
                  uint32_t index) {
     const ir::Symbol& sym = m_.symbols[symbol];
+    // Simple symbols cannot recurse, but a Lock set can: each level is a native call.
+    if (onTheSpot_ >= kMaxOnTheSpotDepth)
+      throw DeriveError{m_.rules[creatorRule_ == UINT32_MAX ? sym.rules[0] : creatorRule_].loc, "R017",
+                        "a Lock set grew " + std::to_string(kMaxOnTheSpotDepth) +
+                            " shapes deep: a set is derived as one unit, so it must end; '" +
+                            sym.name + "' keeps creating itself"};
+    struct Nesting {
+      uint32_t& n;
+      explicit Nesting(uint32_t& c) : n(++c) {}
+      ~Nesting() { --n; }
+    } nesting(onTheSpot_);
     const uint64_t key = rt::childKey(parent.key, index);
     const uint32_t depth = parent.depth;
     std::vector<double> params(std::max(maxSlots_, 1u), 0.0);
@@ -1338,6 +1353,7 @@ class Interpreter final : public QueryHost {
   bool testAll_ = false;        // every I() is tested (`collision all;`, --collide-all)
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
+  uint32_t onTheSpot_ = 0;      // shapes being derived where they are written, nested
   rt::LineNetwork lines_;
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();

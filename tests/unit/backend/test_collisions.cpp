@@ -201,3 +201,11 @@ TEST_CASE("LineSeg outside a line is an error at the command", "[collision][line
   CHECK(r.messages[0].code == "R014");
   CHECK(r.messages[0].col == 20);
 }
+
+TEST_CASE("A Lock set that never ends is refused, not a crash", "[collision][lock][errors]") {
+  auto r = deriveText("Axiom ~> Lock{ G }\nG ~> T(2, 0, 0) IC(\"cube\") G");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R017");
+  CHECK(r.messages[0].line == 2);
+}
