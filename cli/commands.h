@@ -13,5 +13,6 @@ int runCommand(const Args& args);    // fgsg run FILE ...
 int checkCommand(const Args& args);  // fgsg check FILE
 int irCommand(const Args& args);     // fgsg ir FILE
 int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
+int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
 
 }  // namespace fgsg::cli

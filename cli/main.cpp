@@ -16,6 +16,7 @@ usage:
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE             print the typed IR after constant folding
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
+  fgsg repl                build a grammar interactively (:help inside; a script on stdin)
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   if (cmd == "check") return fgsg::cli::checkCommand(args);
   if (cmd == "ir") return fgsg::cli::irCommand(args);
   if (cmd == "synth") return fgsg::cli::synthCommand(args);
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth; see fgsg --help)\n";
+  if (cmd == "repl") return fgsg::cli::replCommand(args);
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl; see fgsg --help)\n";
   return 2;
 }
