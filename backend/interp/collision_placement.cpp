@@ -19,7 +19,8 @@ rt::Mat4 transformOf(const rt::Instance& inst) {
 
 CollisionPlacement::CollisionPlacement(rt::AssetLibrary& assets, rt::InstanceList& out,
                                        const ir::CollisionSettings& settings)
-    : assets_(assets), out_(out), world_(assets, testFor(settings), settings.radius) {}
+    : assets_(assets), out_(out), world_(assets, testFor(settings), settings.radius),
+      radius_(settings.radius) {}
 
 int CollisionPlacement::mesh(uint32_t asset) {
   if (asset >= meshOf_.size()) meshOf_.resize(asset + 1, -1);
@@ -36,13 +37,17 @@ void CollisionPlacement::setTransform(rt::Instance& inst, const rt::Mat4& m) {
   for (int k = 0; k < 16; ++k) inst.transform[k] = m.data()[k];
 }
 
-bool CollisionPlacement::fits(uint32_t asset, const rt::Mat4& transform) {
-  return !world_.collides(mesh(asset), transform);
+bool CollisionPlacement::fits(uint32_t asset, const rt::Mat4& transform, const rt::Scope& scope) {
+  if (!alongSurface_) return !world_.collides(mesh(asset), transform);
+  return !world_.collides(mesh(asset), transform, [&](size_t obstacle) {
+    return alongSurface_(scope, placedFrom_[obstacle], radius_) < radius_;
+  });
 }
 
-void CollisionPlacement::placed() {
+void CollisionPlacement::placed(const rt::Scope& scope) {
   const rt::Instance& inst = out_.instances.back();
   world_.add(mesh(inst.asset), transformOf(inst));
+  placedFrom_.push_back(scope);
 }
 
 bool CollisionPlacement::mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist,
@@ -71,6 +76,7 @@ void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) 
     world_.move(target, before);
   }
   world_.rollback(t.obstacles);
+  placedFrom_.resize(t.obstacles);
   out_.instances.resize(t.instances);
   out_.params.resize(t.params);
   lines.rollback(t.lines);

@@ -11,6 +11,7 @@
 #include "runtime/instances.h"
 #include "runtime/lines/line_network.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,12 +23,17 @@ class CollisionPlacement {
   CollisionPlacement(rt::AssetLibrary& assets, rt::InstanceList& out,
                      const ir::CollisionSettings& settings);
 
+  // Geodesic centre distance (`collision geodesic R;` on a surface): the distance along
+  // the surface between two scopes' surface points, or a value >= `limit` when it is
+  // at least that.
+  using SurfaceDistance = std::function<double(const rt::Scope& a, const rt::Scope& b, double limit)>;
+  void measureAlongSurface(SurfaceDistance distance) { alongSurface_ = std::move(distance); }
+
   // Whether an instance of `asset` (an index into the output's assets) mapped by
-  // `transform` is free of every obstacle. False with a message in `error` when its
-  // asset cannot be loaded.
-  bool fits(uint32_t asset, const rt::Mat4& transform);
-  // Records the instance just appended to the output as an obstacle.
-  void placed();
+  // `transform`, placed from `scope`, is free of every obstacle.
+  bool fits(uint32_t asset, const rt::Mat4& transform, const rt::Scope& scope);
+  // Records the instance just appended to the output, placed from `scope`, as an obstacle.
+  void placed(const rt::Scope& scope);
 
   // IM: merges into an earlier instance of the same asset within the thresholds (moving
   // it, in the output too) and returns true; false when the instance must be placed, after
@@ -51,6 +57,9 @@ class CollisionPlacement {
   rt::AssetLibrary& assets_;
   rt::InstanceList& out_;
   rt::CollisionWorld world_;
+  double radius_ = 0;
+  SurfaceDistance alongSurface_;    // set: centre distances are measured along the surface
+  std::vector<rt::Scope> placedFrom_;  // per obstacle, the scope it was placed from
   rt::MergeIndex merges_;
   std::vector<int> meshOf_;  // output asset -> library mesh (-1: not yet resolved)
 };

@@ -189,6 +189,10 @@ class Interpreter final : public QueryHost {
                  (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain);
         }))
       collisions_ = std::make_unique<CollisionPlacement>(assets_, out_, m_.collision);
+    if (collisions_ && surface_ && m_.collision.metric == ir::CollisionMetric::Geodesic)
+      collisions_->measureAlongSurface([this](const rt::Scope& a, const rt::Scope& b, double limit) {
+        return surface_->geodesicDistance(a, b, limit);
+      });
     findEagerSymbols();
     noneId_ = stringId("none");
     partId_ = stringId("part");
@@ -391,7 +395,7 @@ class Interpreter final : public QueryHost {
     out_.params.insert(out_.params.end(), params, params + paramCount);
     out_.instances.push_back(inst);
     if (usesOcclusion_) occluders_.add(scope);
-    if (collisions_) collisions_->placed();
+    if (collisions_) collisions_->placed(scope);
   }
 
   // I, IC and IM. False when a collision rejected the instance: the caller culls the
@@ -422,7 +426,7 @@ class Interpreter final : public QueryHost {
     }
     if (op.mode == ir::InstanceMode::Collide || testAll_) {
       ++stats_.collisionTests;
-      if (!collisions_->fits(op.index, t)) {
+      if (!collisions_->fits(op.index, t, scope)) {
         ++stats_.collisions;
         return false;
       }

@@ -12,8 +12,11 @@
 #include "runtime/surface/locate.h"
 #include "runtime/surface/procedural.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <queue>
+#include <unordered_map>
 #include <optional>
 
 namespace fgsg::backend {
@@ -62,6 +65,7 @@ struct SurfaceWorld::Impl {
   std::shared_ptr<const rt::field::TangentFrames> frames;
   std::vector<Field> fields;        // in declaration order; the first guides T
   std::vector<int> fieldOfEnv;      // Module::environment index -> fields index (-1: none)
+  std::vector<std::vector<int>> vertexFaces;  // for geodesic distances, built on first use
   Vec3 start = Vec3::Zero();
 
   // The scope's surface point; a scope made without one (a synthesized piece) is snapped.
@@ -335,6 +339,87 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
     return f.jacobianWorld(p).transpose() * e.vector1;
   }
   notAnswered(at, impl_->fields[impl_->fieldOfEnv[env]].name, member, "not a vector-valued field member");
+}
+
+namespace {
+
+// Fast marching's update of corner c from corners a and b of one triangle, whose
+// distances da and db are known: the distance from a virtual point source unfolded into
+// the triangle's plane, when its ray to c crosses the edge ab; else along an edge.
+double marchUpdate(const Vec3& a, const Vec3& b, const Vec3& c, double da, double db) {
+  const double viaEdges = std::min(da + (c - a).norm(), db + (c - b).norm());
+  const Vec3 ab = b - a;
+  const double L = ab.norm();
+  if (L == 0) return viaEdges;
+  const Vec3 e = ab / L;
+  // Source s in the plane with |s - a| = da, |s - b| = db, on the far side of ab from c.
+  const double x = (da * da - db * db + L * L) / (2 * L);
+  const double h2 = da * da - x * x;
+  if (h2 < 0) return viaEdges;
+  const Vec3 ac = c - a;
+  Vec3 n = ac - e * e.dot(ac);  // towards c, orthogonal to ab
+  const double nLen = n.norm();
+  if (nLen == 0) return viaEdges;
+  n /= nLen;
+  const Vec3 s = a + e * x - n * std::sqrt(h2);
+  // The straight path s -> c must cross the segment ab (upwind condition).
+  const double cx = e.dot(ac), cy = nLen, sy = -std::sqrt(h2);
+  const double t = -sy / (cy - sy);  // where the path meets the line of ab
+  const double crossX = x + t * (cx - x);
+  if (crossX < 0 || crossX > L) return viaEdges;
+  return std::min(viaEdges, (c - s).norm());
+}
+
+}  // namespace
+
+double SurfaceWorld::geodesicDistance(const rt::Scope& a, const rt::Scope& b, double limit) const {
+  Impl& w = *impl_;
+  const SurfaceMesh& m = w.mesh;
+  const SurfacePoint p = w.pointOf(a), q = w.pointOf(b);
+  const Vec3 from = p.position(m), to = q.position(m);
+  if (p.face == q.face) return (from - to).norm();
+  if (w.vertexFaces.empty()) {
+    w.vertexFaces.resize(m.vertexCount());
+    for (size_t f = 0; f < m.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) w.vertexFaces[m.faces[f][k]].push_back(static_cast<int>(f));
+  }
+  // Distances grow outward from p's corners (reached straight from p); a corner is final
+  // when it leaves the queue, and updates the corners of its triangles from there.
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  std::unordered_map<int, double> dist;
+  std::unordered_map<int, bool> done;
+  auto offer = [&](int v, double d) {
+    auto it = dist.find(v);
+    if (it == dist.end() || d < it->second) {
+      dist[v] = d;
+      open.push({d, v});
+    }
+  };
+  for (int k = 0; k < 3; ++k) offer(m.faces[p.face][k], (m.vertices[m.faces[p.face][k]] - from).norm());
+  double best = limit;
+  const auto& target = m.faces[q.face];
+  while (!open.empty()) {
+    const auto [d, v] = open.top();
+    open.pop();
+    if (done[v] || d > dist[v]) continue;
+    if (d >= best) break;
+    done[v] = true;
+    for (int k = 0; k < 3; ++k)
+      if (target[k] == v) best = std::min(best, d + (m.vertices[v] - to).norm());
+    for (int f : w.vertexFaces[v]) {
+      const auto& t = m.faces[f];
+      for (int k = 0; k < 3; ++k) {
+        const int c = t[k];
+        if (c == v || done[c]) continue;
+        const int o = t[0] != v && t[0] != c ? t[0] : t[1] != v && t[1] != c ? t[1] : t[2];
+        double dc = d + (m.vertices[c] - m.vertices[v]).norm();
+        if (done[o]) dc = std::min(dc, marchUpdate(m.vertices[v], m.vertices[o], m.vertices[c], d, dist[o]));
+        if (dc < best) offer(c, dc);
+      }
+    }
+  }
+  return best;
 }
 
 rt::Mesh SurfaceWorld::surfaceMesh() const {

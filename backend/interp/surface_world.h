@@ -42,6 +42,12 @@ class SurfaceWorld {
   rt::Vec3 fieldVector(const rt::Scope& s, uint32_t env, const std::string& member,
                        ir::Loc at) const;
 
+  // The distance along the surface between the scopes' surface points (`collision
+  // geodesic R`), by fast marching over the triangles (Kimmel & Sethian) from the first
+  // point's face to the second's; points in one face are measured straight. Stops at
+  // `limit`, returning a value >= limit beyond it.
+  double geodesicDistance(const rt::Scope& a, const rt::Scope& b, double limit) const;
+
   // The surface as output geometry (world space, smooth normals).
   rt::Mesh surfaceMesh() const;
   size_t faceCount() const;

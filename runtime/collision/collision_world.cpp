@@ -222,7 +222,7 @@ struct CollisionWorld::Impl {
            (static_cast<uint64_t>(z) * 0x165667B19E3779F9ull);
   }
 
-  bool centreCollides(const Vec3& c) const {
+  bool centreCollides(const Vec3& c, const std::function<bool(size_t)>& confirm) const {
     int64_t cell[3];
     cellOf(c, cell);
     for (int64_t dx = -1; dx <= 1; ++dx)
@@ -231,7 +231,7 @@ struct CollisionWorld::Impl {
           auto it = centreGrid.find(cellKey(cell[0] + dx, cell[1] + dy, cell[2] + dz));
           if (it == centreGrid.end()) continue;
           for (size_t id : it->second)
-            if ((obstacles[id].centre - c).norm() < radius) return true;
+            if ((obstacles[id].centre - c).norm() < radius && (!confirm || confirm(id))) return true;
         }
     return false;
   }
@@ -271,11 +271,12 @@ CollisionWorld::CollisionWorld(const AssetLibrary& assets, CollisionTest test, d
 
 CollisionWorld::~CollisionWorld() = default;
 
-bool CollisionWorld::collides(int mesh, const Mat4& unitBoxToWorld) {
+bool CollisionWorld::collides(int mesh, const Mat4& unitBoxToWorld,
+                              const std::function<bool(size_t)>& confirm) {
   Impl& w = *impl_;
   if (w.obstacles.empty()) return false;
   Obstacle query = w.makeObstacle(mesh, unitBoxToWorld);
-  if (w.test == CollisionTest::Centre) return w.centreCollides(query.centre);
+  if (w.test == CollisionTest::Centre) return w.centreCollides(query.centre, confirm);
   Impl::Query state{&w};
   w.broadPhase.collide(query.object.get(), &state, Impl::onCandidate);
   return state.hit;

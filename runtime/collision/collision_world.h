@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace fgsg::rt {
@@ -29,8 +30,12 @@ class CollisionWorld {
   CollisionWorld& operator=(const CollisionWorld&) = delete;
 
   // Would an instance of asset `mesh` mapped by `unitBoxToWorld` collide with an
-  // obstacle? Touching counts as colliding. Does not add it.
-  bool collides(int mesh, const Mat4& unitBoxToWorld);
+  // obstacle? Touching counts as colliding. Does not add it. With the centre test,
+  // `confirm`, when given, has the last word on each obstacle whose centre lies within
+  // the radius (a geodesic distance is never shorter than the Euclidean one, so those
+  // are the only candidates).
+  bool collides(int mesh, const Mat4& unitBoxToWorld,
+                const std::function<bool(size_t obstacle)>& confirm = nullptr);
   // Adds an instance as an obstacle; returns its id (ids count up from 0).
   size_t add(int mesh, const Mat4& unitBoxToWorld);
   // Moves obstacle `id` (a merged IM instance attracted towards its twin).

@@ -119,3 +119,23 @@ A(x) ~> I("cube")
   CHECK(notCurvature.messages[0].code == "R016");
   CHECK(notCurvature.messages[0].line == 4);
 }
+
+TEST_CASE("Geodesic centre distance measures along the surface", "[surface][collision]") {
+  // On the unit sphere, 2.2 along a great circle is 1.78 straight through: closer than
+  // 1.9 in space, farther along the surface.
+  const std::string rules = R"(
+Axiom ~> Size(0.01, 0.01, 0.01) I("cube") T(2.2, 0, 0) I("cube")
+)";
+  auto straight = deriveText("surface sphere(1);\ncollision all centre 1.9;\n" + rules);
+  auto along = deriveText("surface sphere(1);\ncollision all geodesic 1.9;\n" + rules);
+  REQUIRE(straight.ok);
+  REQUIRE(along.ok);
+  CHECK(straight.instances.instances.size() == 2);  // one cube and the sphere
+  CHECK(straight.stats.collisions == 1);
+  CHECK(along.instances.instances.size() == 3);
+  CHECK(along.stats.collisions == 0);
+  // And 1.7 along the surface does collide.
+  auto near = deriveText("surface sphere(1);\ncollision all geodesic 1.9;\n"
+                         "Axiom ~> Size(0.01, 0.01, 0.01) I(\"cube\") T(1.7, 0, 0) I(\"cube\")");
+  CHECK(near.stats.collisions == 1);
+}
