@@ -27,14 +27,16 @@ constexpr double kFieldStep = 1.0;
 // shorter than kAimFloor of the longest step, lest a curve skimming an edge crawl.
 constexpr double kAimPast = 1.05;
 constexpr double kAimFloor = 0.25;
-// A chord shorter than this (of a unit-speed step) means the field turned by about 90
+// A chord shorter than this (of a unit-speed step) means the field turned by about 105
 // degrees or more within the step: the step is halved, down to kStepFloor of the face
 // size. A field still turning that fast there has a zero in the step: a vector field's
 // streamline ends at it (a sink, or a saddle reached along its separatrix); a line
 // field's (an unlisted degenerate point) takes a plain Euler step across it. (Gentler
-// turns are left to RK4: on real meshes they are the surface bending under the field.)
-constexpr double kShortChord = 0.9;
-constexpr double kStepFloor = 1e-4;
+// turns are left to RK4: on real meshes they are mostly the surface bending under the
+// field, and halving for them costs a fifth more field queries.) The floor places a
+// zero to a thousandth of a face, far below anything a grammar places there.
+constexpr double kShortChord = 0.8;
+constexpr double kStepFloor = 1e-3;
 // A vector field turning by more than 120 degrees between two steps: the curve ran
 // through a zero of the field and ends there. A line field has no such turn (its sign
 // follows the curve).
@@ -165,9 +167,14 @@ class Streamline {
   // face), the direction there brought back the same way into this face's plane.
   bool fieldAlong(const Face& face, const Vec3& b, const Vec3& db, const Vec3& disp,
                   Vec3& out) const;
-  // The face across the edge opposite corner i of `face` (null at the boundary), loaded
-  // once per face visit.
-  const Face* across(const Face& face, int i) const;
+  // Face g, loaded (null when degenerate): faces around the curve are asked for again
+  // and again (stages beyond an edge, then the crossing), so a few are kept.
+  const Face* faceOf(int g) const;
+  // The face across the edge opposite corner i of `face` (null at the boundary).
+  const Face* across(const Face& face, int i) const {
+    const int g = m_.neighbours[face.f][(i + 1) % 3];
+    return g < 0 ? nullptr : faceOf(g);
+  }
   // The curve's tangent from the field direction f (the field turned by the angle), on
   // ref's side for a line field.
   Vec3 turn(const Vec3& f, const Vec3& n, const Vec3& ref) const {
@@ -224,8 +231,8 @@ class Streamline {
   Face face_;
   Vec3 b_, dir_;
   bool endedInJump_ = false;
-  mutable Face across_[3];  // the neighbours of the face last asked about
-  mutable int acrossOf_[3] = {-1, -1, -1};
+  static constexpr int kCachedFaces = 16;  // direct-mapped by face index
+  mutable Face cache_[kCachedFaces];
 };
 
 bool Streamline::fieldAt(const Face& face, const Vec3& b, Vec3& out) const {
@@ -246,14 +253,10 @@ bool Streamline::fieldAt(const Face& face, const Vec3& b, Vec3& out) const {
   return true;
 }
 
-const Face* Streamline::across(const Face& face, int i) const {
-  const int g = m_.neighbours[face.f][(i + 1) % 3];
-  if (g < 0) return nullptr;
-  if (acrossOf_[i] != face.f || across_[i].f != g) {
-    across_[i].load(m_, g);
-    acrossOf_[i] = face.f;
-  }
-  return across_[i].degenerate ? nullptr : &across_[i];
+const Face* Streamline::faceOf(int g) const {
+  Face& slot = cache_[g % kCachedFaces];
+  if (slot.f != g) slot.load(m_, g);
+  return slot.degenerate ? nullptr : &slot;
 }
 
 bool Streamline::fieldAlong(const Face& face, const Vec3& b, const Vec3& db, const Vec3& disp,
@@ -282,7 +285,7 @@ bool Streamline::fieldAlong(const Face& face, const Vec3& b, const Vec3& db, con
   } folds[kStageHops];
   int count = 0;
   const Face* here = &face;
-  Face further[2];
+  Face reached;
   Vec3 at = b, dir = disp;
   double left = dir.norm();
   if (!(left > 0)) return fieldAt(face, b, out);
@@ -299,18 +302,12 @@ bool Streamline::fieldAlong(const Face& face, const Vec3& b, const Vec3& db, con
     at = cleanBary(at);
     left -= e.t;
     if (count == kStageHops || zeroCount(at) >= 2) break;  // far enough, or a vertex
-    const Face* next = nullptr;
-    if (count == 0) {
-      next = across(face, e.i);
-    } else if (const int g = m_.neighbours[here->f][(e.i + 1) % 3]; g >= 0) {
-      Face& slot = further[count & 1];
-      slot.load(m_, g);
-      next = &slot;
-    }
+    const Face* next = across(*here, e.i);
     const Vec3 edge = (here->v[(e.i + 2) % 3] - here->v[(e.i + 1) % 3]).normalized();
     if (!next || !carryAcross(m_, *here, *next, e.i, at, dir)) break;  // the boundary
     folds[count++] = {edge, here->n, next->n};
-    here = next;
+    reached = *next;  // a copy: the next face asked for may take its cache slot
+    here = &reached;
   }
   Vec3 f;
   if (!fieldAt(*here, at, f)) return false;
@@ -357,8 +354,11 @@ bool Streamline::leaveVertex(int k) {
   int h;
   Vec3 d;
   if (!enterFan(m_, v, face_.f, t, nv, h, d)) return false;
-  if (h != face_.f) face_.load(m_, h);
-  if (face_.degenerate) return false;
+  if (h != face_.f) {
+    const Face* g = faceOf(h);
+    if (!g) return false;
+    face_ = *g;
+  }
   b_ = Vec3::Zero();
   b_[m_.cornerOf(h, v)] = 1;
   dir_ = d;

@@ -77,43 +77,12 @@ void Face::load(const SurfaceMesh& m, int face) {
   height = twiceArea / std::sqrt(longest2);
 }
 
-Vec3 cleanBary(Vec3 b) {
-  for (int i = 0; i < 3; ++i)
-    if (!(b[i] > kSnap)) b[i] = 0;
-  const double sum = b[0] + b[1] + b[2];
-  if (!(sum > 0) || !std::isfinite(sum)) return Vec3::Constant(1.0 / 3);
-  b /= sum;
-  return b;
-}
-
-Vec3 carry(const Vec3& u, const Vec3& from, const Vec3& to) {
-  // The rotation about from x to by their angle: u - ((a+b).u / (1+c)) (a+b) + 2 (a.u) b.
-  const double c = from.dot(to);
-  if (c > -1 + 1e-12) {
-    const Vec3 s = from + to;
-    return u - (s.dot(u) / (1 + c)) * s + (2 * from.dot(u)) * to;
-  }
-  // Opposite normals (a mesh folded onto itself): half a turn about an axis in the plane.
-  Vec3 axis = from.cross(std::abs(from.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized();
-  return 2 * axis.dot(u) * axis - u;
-}
-
 bool tangentPart(const Vec3& d, const Vec3& n, Vec3& out) {
   out = d - d.dot(n) * n;
   const double len = out.norm();
   if (!(len > 1e-12 * d.norm()) || !std::isfinite(len)) return false;
   out /= len;
   return true;
-}
-
-Exit exitOf(const Face& face, const Vec3& b, const Vec3& rate) {
-  Exit e{std::numeric_limits<double>::infinity(), -1};
-  for (int i = 0; i < 3; ++i)
-    if (face.leaves(rate[i], i)) {
-      const double t = b[i] / -rate[i];
-      if (t < e.t) e = {t, i};
-    }
-  return e;
 }
 
 bool carryAcross(const SurfaceMesh& m, const Face& from, const Face& to, int i, Vec3& b,
@@ -128,7 +97,7 @@ bool carryAcross(const SurfaceMesh& m, const Face& from, const Face& to, int i, 
   Vec3 nb = Vec3::Zero();
   nb[ka] = b[a];
   nb[kc] = b[c];
-  b = cleanBary(nb);
+  b = nb;  // b[i] == 0: the other two already sum to 1
   const double len = d.norm();
   dir = len > 0 ? Vec3(d / len) : e;
   return true;

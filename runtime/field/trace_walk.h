@@ -7,6 +7,7 @@
 #include "runtime/surface/surface_mesh.h"
 
 #include <cmath>
+#include <limits>
 
 namespace fgsg::rt::field::trace_detail {
 
@@ -62,7 +63,13 @@ struct Face {
 };
 
 // Rounding cleaned: coordinates at or below kSnap (and NaN) become 0, the rest sum to 1.
-Vec3 cleanBary(Vec3 b);
+inline Vec3 cleanBary(Vec3 b) {
+  for (int i = 0; i < 3; ++i)
+    if (!(b[i] > kSnap)) b[i] = 0;
+  const double sum = b[0] + b[1] + b[2];
+  if (!(sum > 0) || !std::isfinite(sum)) return Vec3::Constant(1.0 / 3);
+  return b / sum;
+}
 inline int zeroCount(const Vec3& b) { return (b[0] == 0) + (b[1] == 0) + (b[2] == 0); }
 inline int largest(const Vec3& b) {
   return b[0] >= b[1] ? (b[0] >= b[2] ? 0 : 2) : (b[1] >= b[2] ? 1 : 2);
@@ -70,7 +77,18 @@ inline int largest(const Vec3& b) {
 
 // The minimal rotation taking unit `from` to unit `to`, applied to u (a half-turn about an
 // axis orthogonal to `from` when they are opposite).
-Vec3 carry(const Vec3& u, const Vec3& from, const Vec3& to);
+inline Vec3 carry(const Vec3& u, const Vec3& from, const Vec3& to) {
+  // The rotation about from x to by their angle: u - ((a+b).u / (1+c)) (a+b) + 2 (a.u) b.
+  const double c = from.dot(to);
+  if (c > -1 + 1e-12) {
+    const Vec3 s = from + to;
+    return u - (s.dot(u) / (1 + c)) * s + (2 * from.dot(u)) * to;
+  }
+  // Opposite normals (a mesh folded onto itself): half a turn about an axis in the plane.
+  const Vec3 axis =
+      from.cross(std::abs(from.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized();
+  return 2 * axis.dot(u) * axis - u;
+}
 // The unit part of d orthogonal to unit n; false when there is none to speak of.
 bool tangentPart(const Vec3& d, const Vec3& n, Vec3& out);
 
@@ -80,7 +98,15 @@ struct Exit {
   double t;
   int i;
 };
-Exit exitOf(const Face& face, const Vec3& b, const Vec3& rate);
+inline Exit exitOf(const Face& face, const Vec3& b, const Vec3& rate) {
+  Exit e{std::numeric_limits<double>::infinity(), -1};
+  for (int i = 0; i < 3; ++i)
+    if (face.leaves(rate[i], i)) {
+      const double t = b[i] / -rate[i];
+      if (t < e.t) e = {t, i};
+    }
+  return e;
+}
 
 // Carries the point b (on the edge opposite corner i of `face`, b[i] == 0) and the unit
 // direction dir into the face across that edge, dir unfolded about the edge. False at

@@ -64,7 +64,8 @@ std::vector<int> SurfaceMesh::facesAround(int v) const {
   std::vector<int> ring;
   const int start = vertexFace[v];
   if (start < 0) return ring;
-  // Walk clockwise to the boundary (or all the way round), then collect counter-clockwise.
+  // Walk one way to the boundary (or all the way round), then collect going the other way:
+  // across each face's edge leaving v, which turns clockwise seen from outside.
   int f = start;
   if (boundaryVertex[v]) {
     for (size_t guard = 0; guard <= faces.size(); ++guard) {

@@ -34,8 +34,8 @@ struct SurfaceMesh {
 
   size_t vertexCount() const { return vertices.size(); }
   size_t faceCount() const { return faces.size(); }
-  // The faces around vertex v in counter-clockwise order (starting at a boundary face
-  // when v is on the boundary).
+  // The faces around vertex v in clockwise order seen from outside (starting at a
+  // boundary face when v is on the boundary).
   std::vector<int> facesAround(int v) const;
   // Index (0..2) of vertex v in face f, or -1.
   int cornerOf(int f, int v) const {

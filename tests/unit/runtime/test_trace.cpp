@@ -272,9 +272,11 @@ Vec3 randomTangent(const SurfaceMesh& m, const SurfacePoint& p, std::mt19937& rn
   }
 }
 
-// `count` random geodesic traces and as many field traces (a vector field and a line
-// field, each half the time) on m, lengths up to three times the mesh's size. Every
-// result is checked; every 7th trace is repeated and must come out the same.
+// `count` random geodesic traces and as many field traces (a vector field, a line field,
+// and the line field with wedges and trisectors listed in every 40th face so that the
+// reflection heuristic runs all over, a third of the time each) on m, lengths up to three
+// times the mesh's size. Every result is checked; every 7th trace is repeated and must
+// come out the same.
 void randomTraces(const SurfaceMesh& m, int count, uint32_t seed) {
   std::mt19937 rng(seed);
   const double size = (m.boundsMax - m.boundsMin).norm();
@@ -286,6 +288,10 @@ void randomTraces(const SurfaceMesh& m, int count, uint32_t seed) {
            0.4 * Vec3(std::sin(7 * y.y()), std::cos(5 * y.z()), std::sin(6 * y.x()));
   };
   const AnalyticField vectors(m, smooth), lines(m, smooth, true);
+  AnalyticField jumpy(m, smooth, true);
+  for (size_t f = 0; f < m.faces.size(); f += 40)
+    jumpy.addDegeneracy({int(f), Vec3(0.2, 0.3, 0.5)},
+                        f % 80 ? Degeneracy::Wedge : Degeneracy::Trisector, f % 80 ? 1 : -1);
   int failures = 0, stopped = 0, repeats = 0;
   long crossings = 0;
   std::string first;
@@ -295,7 +301,7 @@ void randomTraces(const SurfaceMesh& m, int count, uint32_t seed) {
     const double length = 3 * size * u(rng) * u(rng);
     const double angle = (u(rng) - 0.5) * 2 * kPi;
     const bool geodesic = i < count;
-    const DirectionField& field = i % 2 ? lines : vectors;
+    const DirectionField& field = i % 3 == 0 ? vectors : (i % 3 == 1 ? lines : jumpy);
     auto trace = [&] {
       return geodesic ? traceGeodesic(m, start, dir, length)
                       : traceField(m, field, start, dir, angle, length);
