@@ -4,6 +4,7 @@
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_collisions [--quick] [--depth N]
 #include "backend/interp/interpreter.h"
+#include "bench/bench_grammar.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
@@ -24,24 +25,9 @@ namespace {
 using namespace fgsg;
 using Clock = std::chrono::steady_clock;
 
-ir::Module compileFile(const std::string& path) {
-  frontend::SourceFile file;
-  std::string error;
-  if (!ir::readSourceFile(path, file, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    std::exit(1);
-  }
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    diags.print(std::cerr);
-    std::exit(1);
-  }
-  return m;
-}
-
 void crackPattern(int reps, uint32_t depth) {
-  const ir::Module m = compileFile(std::string(FGSG_SOURCE_DIR) + "/examples/fig1_cracks_plane.fgsg");
+  const ir::Module m = bench::compileGrammarFile(std::string(FGSG_SOURCE_DIR) +
+                                                 "/examples/fig1_cracks_plane.fgsg");
   rt::DeriveOptions opt;
   opt.collideAll = true;
   opt.maxDepth = depth;

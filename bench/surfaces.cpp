@@ -5,6 +5,7 @@
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_surfaces [--quick]
 #include "backend/interp/interpreter.h"
+#include "bench/bench_grammar.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
@@ -19,25 +20,9 @@ namespace {
 
 using namespace fgsg;
 
-ir::Module compileFile(const std::string& path) {
-  frontend::SourceFile file;
-  std::string error;
-  if (!ir::readSourceFile(path, file, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    std::exit(1);
-  }
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    diags.print(std::cerr);
-    std::exit(1);
-  }
-  return m;
-}
-
 void example(const char* name, int reps) {
   const std::string dir = std::string(FGSG_SOURCE_DIR) + "/examples";
-  const ir::Module m = compileFile(dir + "/" + name + ".fgsg");
+  const ir::Module m = bench::compileGrammarFile(dir + "/" + name + ".fgsg");
   rt::DeriveOptions opt;
   opt.assetDirs = {dir, dir + "/assets"};
   double best = 1e30;

@@ -1,0 +1,31 @@
+// Shared by the benchmark programs: a grammar file compiled to IR, or the program stops
+// with the diagnostics (a benchmark has nothing sensible to measure otherwise).
+#pragma once
+
+#include "frontend/diagnostics.h"
+#include "ir/pipeline.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace fgsg::bench {
+
+inline ir::Module compileGrammarFile(const std::string& path) {
+  frontend::SourceFile file;
+  std::string error;
+  if (!ir::readSourceFile(path, file, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  }
+  frontend::Diagnostics diags(&file);
+  ir::Module m;
+  if (!ir::compileSource(file, m, diags)) {
+    diags.print(std::cerr);
+    std::exit(1);
+  }
+  return m;
+}
+
+}  // namespace fgsg::bench
