@@ -81,6 +81,11 @@ inline void rotateLocal(Scope& s, int axis, double degrees) {
   rotateLocal(s, axis, std::cos(r), std::sin(r));
 }
 
+// The centre of an instance's unit box in world space, from its unit-box-to-world map.
+inline Vec3 instanceCentre(const Mat4& unitBoxToWorld) {
+  return (unitBoxToWorld * Eigen::Vector4d(0.5, 0.5, 0.5, 1.0)).head<3>();
+}
+
 }  // namespace fgsg::rt
 
 namespace fgsg::rt {

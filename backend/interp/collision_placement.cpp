@@ -60,8 +60,8 @@ bool CollisionPlacement::mergeInto(uint32_t asset, const rt::Mat4& transform, do
   return true;
 }
 
-void CollisionPlacement::placedMergeable(uint32_t asset, const rt::Mat4& transform, double maxDist) {
-  merges_.add(asset, out_.instances.size() - 1, transform, maxDist);
+void CollisionPlacement::placedMergeable(uint32_t asset, const rt::Mat4& transform) {
+  merges_.add(asset, out_.instances.size() - 1, transform);
 }
 
 CollisionPlacement::Transaction CollisionPlacement::begin(const rt::LineNetwork& lines) const {

@@ -39,7 +39,7 @@ class CollisionPlacement {
   // it, in the output too) and returns true; false when the instance must be placed, after
   // which placedMergeable() records it.
   bool mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist, double maxAngle);
-  void placedMergeable(uint32_t asset, const rt::Mat4& transform, double maxDist);
+  void placedMergeable(uint32_t asset, const rt::Mat4& transform);
 
   // Lock: everything placed, merged or drawn as a line after begin() can be undone.
   struct Transaction {

@@ -421,7 +421,7 @@ class Interpreter final : public QueryHost {
         return true;
       }
       placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
-      collisions_->placedMergeable(op.index, t, maxDist);
+      collisions_->placedMergeable(op.index, t);
       return true;
     }
     if (op.mode == ir::InstanceMode::Collide || testAll_) {

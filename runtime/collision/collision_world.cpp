@@ -1,5 +1,7 @@
 #include "runtime/collision/collision_world.h"
 
+#include "runtime/point_grid.h"
+
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBBRSS.h>
@@ -155,7 +157,6 @@ struct Obstacle {
   std::shared_ptr<ScaledShape> shape;
   std::unique_ptr<fcl::CollisionObjectd> object;  // Mesh test only
   Vec3 centre;
-  int64_t cell[3] = {0, 0, 0};  // Centre test only
 };
 
 }  // namespace
@@ -169,10 +170,13 @@ struct CollisionWorld::Impl {
   std::map<std::tuple<int, uint64_t, uint64_t, uint64_t>, std::shared_ptr<ScaledShape>> shapes;
   std::vector<Obstacle> obstacles;
   fcl::DynamicAABBTreeCollisionManagerd broadPhase;
-  std::unordered_map<uint64_t, std::vector<size_t>> centreGrid;
+  PointGrid centres;  // Centre test only: ids as in `obstacles`
+  mutable std::vector<uint32_t> nearby;
   uint64_t narrowTests = 0;
 
-  Impl(const AssetLibrary& a, CollisionTest t, double r) : assets(a), test(t), radius(r) {}
+  Impl(const AssetLibrary& a, CollisionTest t, double r) : assets(a), test(t), radius(r) {
+    if (test == CollisionTest::Centre) centres.reserveRadius(radius);
+  }
 
   const WeldedAsset& weldedAsset(int mesh) {
     auto it = welded.find(mesh);
@@ -190,7 +194,7 @@ struct CollisionWorld::Impl {
   Obstacle makeObstacle(int mesh, const Mat4& M) {
     Obstacle o;
     o.mesh = mesh;
-    o.centre = (M * Eigen::Vector4d(0.5, 0.5, 0.5, 1.0)).head<3>();
+    o.centre = instanceCentre(M);
     if (test == CollisionTest::Centre) return o;
     const WeldedAsset& asset = weldedAsset(mesh);
     const Decomposed d = decompose(M);
@@ -213,26 +217,10 @@ struct CollisionWorld::Impl {
     return o;
   }
 
-  void cellOf(const Vec3& p, int64_t* c) const {
-    for (int k = 0; k < 3; ++k) c[k] = static_cast<int64_t>(std::floor(p[k] / radius));
-  }
-  static uint64_t cellKey(int64_t x, int64_t y, int64_t z) {
-    return (static_cast<uint64_t>(x) * 0x9E3779B97F4A7C15ull) ^
-           (static_cast<uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) ^
-           (static_cast<uint64_t>(z) * 0x165667B19E3779F9ull);
-  }
-
   bool centreCollides(const Vec3& c, const std::function<bool(size_t)>& confirm) const {
-    int64_t cell[3];
-    cellOf(c, cell);
-    for (int64_t dx = -1; dx <= 1; ++dx)
-      for (int64_t dy = -1; dy <= 1; ++dy)
-        for (int64_t dz = -1; dz <= 1; ++dz) {
-          auto it = centreGrid.find(cellKey(cell[0] + dx, cell[1] + dy, cell[2] + dz));
-          if (it == centreGrid.end()) continue;
-          for (size_t id : it->second)
-            if ((obstacles[id].centre - c).norm() < radius && (!confirm || confirm(id))) return true;
-        }
+    centres.near(c, radius, nearby);
+    for (uint32_t id : nearby)
+      if ((obstacles[id].centre - c).norm() < radius && (!confirm || confirm(id))) return true;
     return false;
   }
 
@@ -287,8 +275,7 @@ size_t CollisionWorld::add(int mesh, const Mat4& unitBoxToWorld) {
   Obstacle o = w.makeObstacle(mesh, unitBoxToWorld);
   const size_t id = w.obstacles.size();
   if (w.test == CollisionTest::Centre) {
-    w.cellOf(o.centre, o.cell);
-    w.centreGrid[Impl::cellKey(o.cell[0], o.cell[1], o.cell[2])].push_back(id);
+    w.centres.add(o.centre);
   } else {
     w.broadPhase.registerObject(o.object.get());
   }
@@ -301,11 +288,7 @@ void CollisionWorld::move(size_t id, const Mat4& unitBoxToWorld) {
   Obstacle& old = w.obstacles[id];
   Obstacle moved = w.makeObstacle(old.mesh, unitBoxToWorld);
   if (w.test == CollisionTest::Centre) {
-    auto& cell = w.centreGrid[Impl::cellKey(old.cell[0], old.cell[1], old.cell[2])];
-    cell.erase(std::find(cell.begin(), cell.end(), id));
-    w.cellOf(moved.centre, moved.cell);
-    auto& to = w.centreGrid[Impl::cellKey(moved.cell[0], moved.cell[1], moved.cell[2])];
-    to.insert(std::lower_bound(to.begin(), to.end(), id), id);  // keep ids ascending
+    w.centres.move(static_cast<uint32_t>(id), moved.centre);
   } else {
     w.broadPhase.unregisterObject(old.object.get());
     w.broadPhase.registerObject(moved.object.get());
@@ -320,8 +303,7 @@ void CollisionWorld::rollback(size_t mark) {
   while (w.obstacles.size() > mark) {
     Obstacle& o = w.obstacles.back();
     if (w.test == CollisionTest::Centre) {
-      auto& cell = w.centreGrid[Impl::cellKey(o.cell[0], o.cell[1], o.cell[2])];
-      cell.pop_back();  // ids are kept ascending: the newest is last
+      w.centres.removeLast();
     } else {
       w.broadPhase.unregisterObject(o.object.get());
     }

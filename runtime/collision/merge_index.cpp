@@ -8,6 +8,9 @@ namespace fgsg::rt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// The search grid's smallest reach: a merge distance of 0 still finds an instance at the
+// very same place.
+constexpr double kSmallestReach = 1e-9;
 
 // An instance transform as rotation, per-axis size and centre (scope transforms are
 // rotation x size; a mirror is folded into the first size).
@@ -51,85 +54,47 @@ double angleDegrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
 
 }  // namespace
 
-Vec3 instanceCentre(const Mat4& M) {
-  return (M * Eigen::Vector4d(0.5, 0.5, 0.5, 1.0)).head<3>();
-}
-
-void MergeIndex::cellOf(const Vec3& p, int64_t* c) const {
-  for (int k = 0; k < 3; ++k) c[k] = static_cast<int64_t>(std::floor(p[k] / cell_));
-}
-
-uint64_t MergeIndex::key(int64_t x, int64_t y, int64_t z) {
-  return (static_cast<uint64_t>(x) * 0x9E3779B97F4A7C15ull) ^
-         (static_cast<uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) ^
-         (static_cast<uint64_t>(z) * 0x165667B19E3779F9ull);
-}
-
-void MergeIndex::linkToCell(size_t id) {
-  int64_t c[3];
-  cellOf(instanceCentre(entries_.at(id).transform), c);
-  cellOfId_[id] = {c[0], c[1], c[2]};
-  auto& bucket = grid_[key(c[0], c[1], c[2])];
-  bucket.insert(std::lower_bound(bucket.begin(), bucket.end(), id), id);
-}
-
-void MergeIndex::unlinkFromCell(size_t id) {
-  const auto& c = cellOfId_.at(id);
-  auto& bucket = grid_[key(c[0], c[1], c[2])];
-  bucket.erase(std::lower_bound(bucket.begin(), bucket.end(), id));
-  cellOfId_.erase(id);
-}
-
 bool MergeIndex::find(uint32_t asset, const Mat4& transform, double maxDist,
-                      double maxAngleDegrees, Merge& out) const {
+                      double maxAngleDegrees, Merge& out) {
   if (entries_.empty() || !(maxDist >= 0)) return false;
   const Pose query = poseOf(transform);
-  int64_t c[3];
-  cellOf(query.centre, c);
-  const int64_t reach = static_cast<int64_t>(std::ceil(maxDist / cell_));
+  centres_.reserveRadius(std::max(maxDist, kSmallestReach));
+  centres_.near(query.centre, maxDist, nearby_);
   double best = std::numeric_limits<double>::infinity();
-  size_t bestId = 0;
-  for (int64_t dx = -reach; dx <= reach; ++dx)
-    for (int64_t dy = -reach; dy <= reach; ++dy)
-      for (int64_t dz = -reach; dz <= reach; ++dz) {
-        auto it = grid_.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
-        if (it == grid_.end()) continue;
-        for (size_t id : it->second) {
-          const Entry& e = entries_.at(id);
-          if (e.asset != asset) continue;
-          const Pose other = poseOf(e.transform);
-          const double d = (other.centre - query.centre).norm();
-          if (d > maxDist || angleDegrees(other.rotation, query.rotation) > maxAngleDegrees) continue;
-          if (d < best || (d == best && id < bestId)) best = d, bestId = id;
-        }
-      }
+  uint32_t bestSlot = 0;
+  for (uint32_t slot : nearby_) {  // ascending: on a tie the earlier instance stays
+    const Entry& e = entries_[slot];
+    if (e.asset != asset) continue;
+    const Pose other = poseOf(e.transform);
+    const double d = (other.centre - query.centre).norm();
+    if (d > maxDist || angleDegrees(other.rotation, query.rotation) > maxAngleDegrees) continue;
+    if (d < best) best = d, bestSlot = slot;
+  }
   if (!std::isfinite(best)) return false;
   // The earlier instance moves to the mean of all it stands for, this one included.
-  const Entry& target = entries_.at(bestId);
+  const Entry& target = entries_[bestSlot];
   const Pose a = poseOf(target.transform);
   const double w = 1.0 / (target.count + 1);
   Pose merged;
   merged.centre = (1 - w) * a.centre + w * query.centre;
   merged.size = (1 - w) * a.size + w * query.size;
   merged.rotation = a.rotation.slerp(w, query.rotation);
-  out = {bestId, transformOf(merged)};
+  out = {target.id, transformOf(merged), bestSlot};
   return true;
 }
 
-void MergeIndex::add(uint32_t asset, size_t id, const Mat4& transform, double maxDist) {
-  if (cell_ == 0) cell_ = maxDist > 0 && std::isfinite(maxDist) ? maxDist : 1.0;
-  entries_[id] = {asset, transform, 1};
-  linkToCell(id);
-  log_.push_back({true, id, Mat4::Identity()});
+void MergeIndex::add(uint32_t asset, size_t id, const Mat4& transform) {
+  const uint32_t slot = centres_.add(instanceCentre(transform));
+  entries_.push_back({asset, id, transform, 1});
+  log_.push_back({true, slot, Mat4::Identity()});
 }
 
 void MergeIndex::apply(const Merge& m) {
-  Entry& e = entries_.at(m.target);
-  log_.push_back({false, m.target, e.transform});
-  unlinkFromCell(m.target);
+  Entry& e = entries_[m.slot];
+  log_.push_back({false, m.slot, e.transform});
   e.transform = m.transform;
   ++e.count;
-  linkToCell(m.target);
+  centres_.move(m.slot, instanceCentre(m.transform));
 }
 
 std::vector<std::pair<size_t, Mat4>> MergeIndex::rollback(size_t mark) {
@@ -137,16 +102,16 @@ std::vector<std::pair<size_t, Mat4>> MergeIndex::rollback(size_t mark) {
   while (log_.size() > mark) {
     const LogItem item = log_.back();
     log_.pop_back();
-    unlinkFromCell(item.id);
-    if (item.added) {
-      entries_.erase(item.id);
+    if (item.added) {  // adds are undone newest first, as the grid removes them
+      centres_.removeLast();
+      entries_.pop_back();
       continue;
     }
-    Entry& e = entries_.at(item.id);
+    Entry& e = entries_[item.slot];
     e.transform = item.before;
     --e.count;
-    linkToCell(item.id);
-    undone.emplace_back(item.id, item.before);
+    centres_.move(item.slot, instanceCentre(item.before));
+    undone.emplace_back(e.id, item.before);
   }
   return undone;
 }

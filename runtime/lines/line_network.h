@@ -7,7 +7,7 @@
 // extend a line from the same point make a branch: the second one forks a new chain.
 #pragma once
 
-#include "runtime/lines/segment_grid.h"
+#include "runtime/point_grid.h"
 #include "runtime/mesh.h"
 #include "runtime/scope.h"
 
@@ -99,7 +99,7 @@ class LineNetwork {
 
   std::vector<Chain> chains_;
   std::vector<Segment> segments_;  // by id, in the order they were added
-  SegmentGrid grid_;               // segment centres, ids as in segments_
+  PointGrid grid_;               // segment centres, ids as in segments_
   std::vector<Event> journal_;     // what was added, in order: rollback pops it
   double longest_ = 0;             // longest segment tested or stored so far
   double widest_ = 0;              // widest line so far

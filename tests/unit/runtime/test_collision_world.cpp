@@ -112,7 +112,7 @@ TEST_CASE("rollback removes the obstacles added after the mark", "[collision]") 
 
 TEST_CASE("merging respects the distance and angle thresholds", "[collision][merge]") {
   MergeIndex index;
-  index.add(0, 0, box({0, 0, 0}, {1, 1, 1}), 0.5);
+  index.add(0, 0, box({0, 0, 0}, {1, 1, 1}));
   MergeIndex::Merge m;
   CHECK_FALSE(index.find(0, box({0.51, 0, 0}, {1, 1, 1}), 0.5, 10, m));  // too far
   CHECK_FALSE(index.find(0, box({0.2, 0, 0}, {1, 1, 1}, 11), 0.5, 10, m));  // turned too much

@@ -1,7 +1,7 @@
 // Linear structures (FGSG §4.4): lines clipped where they meet, forks, rollback, the
 // segment grid, and the tube meshes swept along lines.
 #include "runtime/lines/line_network.h"
-#include "runtime/lines/segment_grid.h"
+#include "runtime/point_grid.h"
 #include "runtime/lines/tube.h"
 
 #include <Eigen/Geometry>
@@ -386,7 +386,7 @@ TEST_CASE("the segment grid reports the entries within a radius, ascending", "[l
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-10, 10);
   std::vector<Vec3> centres;
-  SegmentGrid grid;
+  PointGrid grid;
   grid.reserveRadius(0.5);
   for (int i = 0; i < 400; ++i) {
     centres.emplace_back(u(rng), u(rng), u(rng) * 0.1);

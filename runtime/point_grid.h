@@ -1,6 +1,7 @@
-// A uniform hash grid over points (the centres of line segments): which entries lie within
-// a radius of a query point. Entries are numbered densely in insertion order and removed
-// newest first, which is all that line networks and their rollback need.
+// A uniform hash grid over points (the centres of line segments, of collision-tested or
+// mergeable instances): which entries lie within a radius of a query point. Entries are
+// numbered densely in insertion order, may move, and are removed newest first, which is
+// what line networks, collision worlds, merging and their rollbacks need.
 #pragma once
 
 #include "runtime/scope.h"
@@ -13,7 +14,7 @@
 
 namespace fgsg::rt {
 
-class SegmentGrid {
+class PointGrid {
  public:
   // Adds an entry and returns its id (the number of entries before it).
   uint32_t add(const Vec3& centre) {
@@ -34,6 +35,19 @@ class SegmentGrid {
     centres_.pop_back();
   }
 
+  // Moves entry `id` to `centre` (a merged instance attracted towards its twin).
+  void move(uint32_t id, const Vec3& centre) {
+    if (cell_ > 0) {
+      auto it = cells_.find(keyOf(centres_[id]));
+      it->second.erase(std::lower_bound(it->second.begin(), it->second.end(), id));
+      if (it->second.empty()) cells_.erase(it);
+      auto& to = cells_[keyOf(centre)];
+      to.insert(std::lower_bound(to.begin(), to.end(), id), id);  // keep ids ascending
+    }
+    centres_[id] = centre;
+  }
+
+  const Vec3& centre(uint32_t id) const { return centres_[id]; }
   size_t size() const { return centres_.size(); }
   double cellSize() const { return cell_; }
 
