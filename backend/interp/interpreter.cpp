@@ -5,6 +5,7 @@
 #include "backend/interp/shape_store.h"
 #include "backend/interp/surface_world.h"
 #include "runtime/cga/cga.h"
+#include "runtime/io/find_file.h"
 #include "runtime/occlusion.h"
 #include "runtime/random.h"
 #include "runtime/synthesis/synthesis.h"
@@ -13,7 +14,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -937,14 +937,7 @@ class Interpreter final : public QueryHost {
   const rt::synthesis::Example& loadExample(const std::string& name, ir::Loc at) {
     auto it = examples_.find(name);
     if (it != examples_.end()) return it->second;
-    std::string path = name;
-    for (const auto& dir : opt_.assetDirs) {
-      std::error_code ec;
-      if (std::filesystem::is_regular_file(std::filesystem::path(dir) / name, ec)) {
-        path = (std::filesystem::path(dir) / name).string();
-        break;
-      }
-    }
+    const std::string path = rt::io::findFile(name, opt_.assetDirs);
     rt::synthesis::Example example;
     rt::synthesis::Diagnostics diags;
     if (!rt::synthesis::loadExample(path, example, diags))

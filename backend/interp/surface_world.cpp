@@ -8,13 +8,13 @@
 #include "runtime/field/tangent_field.h"
 #include "runtime/field/tangent_frames.h"
 #include "runtime/field/trace.h"
+#include "runtime/io/find_file.h"
 #include "runtime/surface/load_surface.h"
 #include "runtime/surface/locate.h"
 #include "runtime/surface/procedural.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <queue>
 #include <unordered_map>
 #include <optional>
@@ -22,7 +22,6 @@
 namespace fgsg::backend {
 namespace {
 
-namespace fs = std::filesystem;
 using rt::Vec3;
 using rt::surface::SurfaceMesh;
 using rt::surface::SurfacePoint;
@@ -98,15 +97,8 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
   if (!options.surfaceOverride.empty()) {
     ok = rt::surface::loadSurface(options.surfaceOverride, impl_->mesh, error, load);
   } else if (!spec.path.empty()) {
-    std::string path = spec.path;
-    for (const auto& dir : searchDirs) {
-      std::error_code ec;
-      if (fs::is_regular_file(fs::path(dir) / spec.path, ec)) {
-        path = (fs::path(dir) / spec.path).string();
-        break;
-      }
-    }
-    ok = rt::surface::loadSurface(path, impl_->mesh, error, load);
+    ok = rt::surface::loadSurface(rt::io::findFile(spec.path, searchDirs), impl_->mesh, error,
+                                  load);
   } else {
     ok = rt::surface::makeProceduralSurface(spec.generator, spec.args, impl_->mesh, error);
   }
@@ -121,14 +113,6 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
 SurfaceWorld::~SurfaceWorld() = default;
 
 namespace {
-
-std::string findFile(const std::string& name, const std::vector<std::string>& dirs) {
-  for (const auto& dir : dirs) {
-    std::error_code ec;
-    if (fs::is_regular_file(fs::path(dir) / name, ec)) return (fs::path(dir) / name).string();
-  }
-  return name;
-}
 
 const std::vector<double>* word(const ir::FieldDesignSpec& item, const std::string& key) {
   for (const auto& [k, values] : item.words)
@@ -151,7 +135,7 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
     std::string error;
     if (spec.source == "file") {
       std::optional<field::TangentField> loaded;
-      if (!field::loadField(findFile(spec.path, searchDirs), w.frames, loaded, error))
+      if (!field::loadField(rt::io::findFile(spec.path, searchDirs), w.frames, loaded, error))
         throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
       if (loaded->type() != type)
         throw DeriveError{spec.loc, "R015",
@@ -161,7 +145,7 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
       f.values = std::make_unique<field::TangentField>(std::move(*loaded));
     } else if (spec.source == "image") {
       f.picture = std::make_unique<field::Picture>();
-      if (!f.picture->load(findFile(spec.path, searchDirs), error))
+      if (!f.picture->load(rt::io::findFile(spec.path, searchDirs), error))
         throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
       f.values = std::make_unique<field::TangentField>(field::imageField(w.frames, *f.picture));
     } else if (spec.source == "curvature") {
