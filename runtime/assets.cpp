@@ -395,4 +395,16 @@ int AssetLibrary::addGenerated(const std::string& name, const Mesh& world,
   return byName_[name] = int(meshes_.size() - 1);
 }
 
+void placeGenerated(AssetLibrary& library, InstanceList& out, const std::string& name,
+                    const Mesh& world, uint32_t symbol, const std::array<float, 3>& color) {
+  Instance inst;
+  library.addGenerated(name, world, inst.transform);
+  inst.asset = static_cast<uint32_t>(out.assets.size());
+  out.assets.push_back(name);
+  inst.symbol = symbol;
+  inst.color = color;
+  inst.firstParam = static_cast<uint32_t>(out.params.size());
+  out.instances.push_back(inst);
+}
+
 }  // namespace fgsg::rt

@@ -4,6 +4,7 @@
 // instance fills its scope box.
 #pragma once
 
+#include "runtime/instances.h"
 #include "runtime/mesh.h"
 
 #include <array>
@@ -41,5 +42,10 @@ class AssetLibrary {
   std::vector<Mesh> meshes_;
   std::unordered_map<std::string, int> byName_;
 };
+
+// Registers geometry the derivation built (the surface, a swept line) in `library` under
+// `name` and places it once in `out`, where it was built, for `symbol` in `color`.
+void placeGenerated(AssetLibrary& library, InstanceList& out, const std::string& name,
+                    const Mesh& world, uint32_t symbol, const std::array<float, 3>& color);
 
 }  // namespace fgsg::rt

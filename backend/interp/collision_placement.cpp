@@ -88,15 +88,8 @@ void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
     if (lines.points(c).size() < 2) continue;
     const rt::Mesh tube = lines.sweep(c);
     if (tube.empty()) continue;
-    const std::string name = "<line " + std::to_string(c) + ">";
-    rt::Instance inst;
-    assets.addGenerated(name, tube, inst.transform);
-    inst.asset = static_cast<uint32_t>(out.assets.size());
-    out.assets.push_back(name);
-    inst.symbol = lines.owner(c);
-    inst.color = symbolColor[inst.symbol];
-    inst.firstParam = static_cast<uint32_t>(out.params.size());
-    out.instances.push_back(inst);
+    rt::placeGenerated(assets, out, "<line " + std::to_string(c) + ">", tube, lines.owner(c),
+                       symbolColor[lines.owner(c)]);
   }
 }
 

@@ -108,16 +108,9 @@ class Interpreter final : public QueryHost {
   // The surface the pattern grew on is part of the output, in a neutral grey.
   void appendSurface() {
     if (!surface_) return;
-    rt::Instance inst;
-    const std::string name = "<surface>";
-    assets_.addGenerated(name, surface_->surfaceMesh(), inst.transform);
-    inst.asset = static_cast<uint32_t>(out_.assets.size());
-    out_.assets.push_back(name);
-    inst.symbol = static_cast<uint32_t>(out_.symbols.size());
     out_.symbols.push_back("surface");
-    inst.color = {0.72f, 0.72f, 0.7f};
-    inst.firstParam = static_cast<uint32_t>(out_.params.size());
-    out_.instances.push_back(inst);
+    rt::placeGenerated(assets_, out_, "<surface>", surface_->surfaceMesh(),
+                       static_cast<uint32_t>(out_.symbols.size() - 1), {0.72f, 0.72f, 0.7f});
   }
 
   // ------------------------------------------------------------ set-up
