@@ -89,10 +89,7 @@ rt::Vec3 Evaluator::vec(const ir::Expr& e, const Frame& f) const {
       break;
     case ExprOp::Query:
       if (static_cast<ir::Query>(e.index) == ir::Query::Field) {
-        if (!f.scope)
-          throw DeriveError{e.loc, "R006",
-                            "scope queries cannot be answered while a parallel derivation rewrites "
-                            "its string: modules get their scope only when the turtle interprets it"};
+        requireScope(e, f);
         return f.host->fieldVector(*f.scope, e.env, m_.strings[e.extra], e.loc);
       }
       break;
@@ -147,14 +144,17 @@ double Evaluator::call(const ir::Expr& e, const Frame& f) const {
   throw DeriveError{e.loc, "R900", "internal: unknown builtin"};
 }
 
-double Evaluator::query(const ir::Expr& e, const Frame& f) const {
-  using ir::Query;
-  const auto q = static_cast<Query>(e.index);
-  const bool needsScope = q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Texture;
-  if (needsScope && !f.scope)
+void Evaluator::requireScope(const ir::Expr& e, const Frame& f) {
+  if (!f.scope)
     throw DeriveError{e.loc, "R006",
                       "scope queries cannot be answered while a parallel derivation rewrites "
                       "its string: modules get their scope only when the turtle interprets it"};
+}
+
+double Evaluator::query(const ir::Expr& e, const Frame& f) const {
+  using ir::Query;
+  const auto q = static_cast<Query>(e.index);
+  if (q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Texture) requireScope(e, f);
   switch (q) {
     case Query::ScopeSx: return f.scope->S.x();
     case Query::ScopeSy: return f.scope->S.y();

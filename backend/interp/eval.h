@@ -71,6 +71,8 @@ class Evaluator {
   double numSlow(const ir::Expr& e, const Frame& f) const;
   double call(const ir::Expr& e, const Frame& f) const;
   double query(const ir::Expr& e, const Frame& f) const;
+  // R006 for a query that needs a scope where there is none (a parallel rewriting step).
+  static void requireScope(const ir::Expr& e, const Frame& f);
 
   const ir::Module& m_;
   std::vector<double> attrs_;  // three slots per attribute
