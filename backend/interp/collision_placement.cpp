@@ -47,7 +47,7 @@ bool CollisionPlacement::fits(uint32_t asset, const rt::Mat4& transform, const r
 void CollisionPlacement::placed(const rt::Scope& scope) {
   const rt::Instance& inst = out_.instances.back();
   world_.add(mesh(inst.asset), transformOf(inst));
-  placedFrom_.push_back(scope);
+  if (alongSurface_) placedFrom_.push_back(scope);  // only geodesic distances read it
 }
 
 bool CollisionPlacement::mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist,
@@ -76,7 +76,7 @@ void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) 
     world_.move(target, before);
   }
   world_.rollback(t.obstacles);
-  placedFrom_.resize(t.obstacles);
+  if (alongSurface_) placedFrom_.resize(t.obstacles);
   out_.instances.resize(t.instances);
   out_.params.resize(t.params);
   lines.rollback(t.lines);

@@ -27,6 +27,7 @@ class CollisionPlacement {
   // the surface between two scopes' surface points, or a value >= `limit` when it is
   // at least that.
   using SurfaceDistance = std::function<double(const rt::Scope& a, const rt::Scope& b, double limit)>;
+  // Set before anything is placed.
   void measureAlongSurface(SurfaceDistance distance) { alongSurface_ = std::move(distance); }
 
   // Whether an instance of `asset` (an index into the output's assets) mapped by
@@ -59,7 +60,7 @@ class CollisionPlacement {
   rt::CollisionWorld world_;
   double radius_ = 0;
   SurfaceDistance alongSurface_;    // set: centre distances are measured along the surface
-  std::vector<rt::Scope> placedFrom_;  // per obstacle, the scope it was placed from
+  std::vector<rt::Scope> placedFrom_;  // geodesic only: per obstacle, the scope it was placed from
   rt::MergeIndex merges_;
   std::vector<int> meshOf_;  // output asset -> library mesh (-1: not yet resolved)
 };
