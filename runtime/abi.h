@@ -6,6 +6,7 @@
 #include "runtime/builtins_math.h"
 #include "runtime/random.h"
 
+#include <cstddef>
 #include <cstdint>
 
 // Errors generated code can report (fgsg_rt_error) or a query can answer with. The
@@ -29,6 +30,9 @@ using FgsgQueryFn = int32_t (*)(void* user, uint32_t kind, uint32_t env, uint32_
                                 double* out) noexcept;
 
 struct FgsgContext {
+  // Nonzero once the running block must return: an error was reported, or the engine
+  // culled the rest of the production. The one field generated code reads (offset 0).
+  int32_t stop = 0;
   fgsg::rt::RandomStream* rng = nullptr;  // the shape's stream (Rand)
   FgsgQueryFn query = nullptr;            // the engine's query host
   void* queryUser = nullptr;
@@ -36,6 +40,34 @@ struct FgsgContext {
   int32_t errorCode = FGSG_OK;
   int32_t errorLine = 0;
   int32_t errorCol = 0;
+};
+
+static_assert(offsetof(FgsgContext, stop) == 0, "generated code reads ctx->stop at offset 0");
+
+// Bumped whenever the layout below or an entry point's meaning changes: a compiled
+// library refuses to run against a runtime of another version.
+#define FGSG_ABI_VERSION 1u
+
+// A compiled grammar as generated code lays it out: one constant in each JIT unit and
+// in each compiled library. Block ids, rule and alternative indices are those of
+// ir::ProgramLayout (ir/program_layout.h) for the grammar's IR.
+//   block(ctx, params, attrs): runs one successor (or split body); params is the rule's
+//     parameter block, attrs three slots per attribute.
+//   guard / weight(params, attrs, ctx): a rule's guard (null: none), an alternative's
+//     probability (null: a constant the engine reads from the IR).
+typedef void (*FgsgBlockFn)(FgsgContext* ctx, const double* params, const double* attrs);
+typedef double (*FgsgValueFn)(const double* params, const double* attrs, FgsgContext* ctx);
+
+struct FgsgProgram {
+  uint32_t abiVersion;
+  uint32_t blockCount;
+  const FgsgBlockFn* blocks;
+  uint32_t ruleCount;
+  const FgsgValueFn* guards;
+  uint32_t alternativeCount;
+  const FgsgValueFn* weights;
+  const char* source;      // the grammar's text (compiled libraries; null in the JIT)
+  const char* sourceName;  // its file name as compiled, for diagnostics and relative paths
 };
 
 extern "C" {

@@ -4,6 +4,9 @@
 #include "backend/interp/eval.h"
 #include "backend/interp/shape_store.h"
 #include "backend/interp/surface_world.h"
+#include "backend/jit/query_bridge.h"
+#include "ir/program_layout.h"
+#include "runtime/abi.h"
 #include "runtime/cga/cga.h"
 #include "runtime/io/find_file.h"
 #include "runtime/occlusion.h"
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <exception>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -47,12 +51,81 @@ struct Module {
   uint32_t owner = UINT32_MAX;  // symbol whose rule produced it; UINT32_MAX: the axiom
 };
 
+// The scope a successor works on. Its [ ] stack lives in one shared vector above
+// `stackBase`, so pushing allocates nothing once the vector has grown.
+struct Saved {
+  rt::Scope scope;
+  rt::GeomRef geom;
+  double width;
+  rt::LineCursor line;
+};
+struct State {
+  rt::Scope scope;
+  rt::GeomRef geom;
+  double width = 0.1;
+  size_t stackBase = 0;
+  rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
+};
+
+// What one running successor knows: its random stream, key and parameters, the
+// children it has written so far, and whether a collision culled its rest.
+struct Exec {
+  rt::RandomStream* rng;
+  uint64_t key;
+  uint32_t depth;   // depth of the shapes this successor creates
+  uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
+  const double* params;
+  uint32_t childCount;
+  bool culled = false;    // the rest of this production is dropped (FGSG §4.4)
+  bool collided = false;  // ... because something in it collided
+};
+
+// Room for one op's evaluated arguments: on the stack unless a split has many sizes.
+struct ArgBuffer {
+  double small[16];
+  std::vector<double> big;
+  double* reserve(uint32_t n) {
+    if (n <= 16) return small;
+    big.resize(n);
+    return big.data();
+  }
+};
+
+// A parallel derivation's next string, which a successor's modules are appended to.
+struct StringTarget {
+  std::vector<Module>* out;
+  std::vector<double>* args;
+  uint64_t key;     // the rewritten module's key (its children's keys derive from it)
+  uint32_t owner;   // the symbol rewritten (UINT32_MAX: the axiom)
+  uint32_t child = 0;
+};
+
+class Interpreter;
+
+// The context of one compiled block while it runs: the runtime entry points at the
+// bottom of this file find the engine and the successor's state through it. What the
+// engine throws is caught there and kept here until the block has returned, so no
+// exception unwinds through generated frames.
+struct NativeCall : FgsgContext {
+  Interpreter* engine = nullptr;
+  State* st = nullptr;  // sequential: the successor's scope and stack
+  Exec* ex = nullptr;
+  Frame* f = nullptr;
+  StringTarget* string = nullptr;  // parallel: where modules are appended
+  std::exception_ptr thrown;
+
+  template <class Fn>
+  void guard(Fn&& fn) noexcept;
+};
+
 class Interpreter final : public QueryHost {
  public:
   Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
-              std::vector<double> attrs)
+              std::vector<double> attrs, const FgsgProgram* program = nullptr)
       : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
-        ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)) {}
+        ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program) {
+    if (program_) layout_ = ir::layoutProgram(m_);
+  }
 
   static uint32_t maxSlotCount(const ir::Module& m) {
     uint32_t n = 0;
@@ -70,6 +143,7 @@ class Interpreter final : public QueryHost {
     const auto start = Clock::now();
     start_ = start;
     try {
+      checkProgram();
       checkEnvironment();
       resolveAssets();
       initOutput();
@@ -114,6 +188,23 @@ class Interpreter final : public QueryHost {
   }
 
   // ------------------------------------------------------------ set-up
+
+  // Compiled code must come from this very grammar: its tables are numbered by its IR.
+  void checkProgram() const {
+    if (!program_) return;
+    const FgsgProgram& p = *program_;
+    if (p.abiVersion != FGSG_ABI_VERSION)
+      throw DeriveError{{}, "R900", "compiled code for runtime ABI " + std::to_string(p.abiVersion) +
+                                        ", but this runtime is ABI " + std::to_string(FGSG_ABI_VERSION) +
+                                        ": compile the grammar again"};
+    if (p.blockCount != layout_.blocks.size() || p.ruleCount != m_.rules.size() ||
+        p.alternativeCount != layout_.alternativeCount)
+      throw DeriveError{{}, "R900", "the compiled code does not match this grammar (" +
+                                        std::to_string(p.blockCount) + " blocks and " +
+                                        std::to_string(p.ruleCount) + " rules compiled, " +
+                                        std::to_string(layout_.blocks.size()) + " and " +
+                                        std::to_string(m_.rules.size()) + " in the grammar)"};
+  }
 
   void checkEnvironment() {
     if (m_.mode == ir::DeriveMode::Parallel && (m_.collision.all || opt_.collideAll))
@@ -353,22 +444,6 @@ class Interpreter final : public QueryHost {
     rt::rotateLocal(scope, axis, c, s);
   }
 
-  // The scope a successor works on. Its [ ] stack lives in one shared vector above
-  // `stackBase`, so pushing allocates nothing once the vector has grown.
-  struct Saved {
-    rt::Scope scope;
-    rt::GeomRef geom;
-    double width;
-    rt::LineCursor line;
-  };
-  struct State {
-    rt::Scope scope;
-    rt::GeomRef geom;
-    double width = 0.1;
-    size_t stackBase = 0;
-    rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
-  };
-
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
                      const double* params, uint32_t paramCount, ir::Loc loc) {
     rt::Instance inst;
@@ -394,7 +469,7 @@ class Interpreter final : public QueryHost {
   // I, IC and IM. False when a collision rejected the instance: the caller culls the
   // rest of its production.
   bool placeChecked(const ir::Op& op, const rt::Scope& scope, uint32_t symbol, const double* params,
-                    uint32_t paramCount, const Frame& f) {
+                    uint32_t paramCount, const double* args) {
     if (!collisions_) {
       placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
       return true;
@@ -403,7 +478,7 @@ class Interpreter final : public QueryHost {
     if (!t.allFinite())  // placeInstance words the error
       placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
     if (op.mode == ir::InstanceMode::Merge) {
-      const double maxDist = eval_.num(op.args[0], f), maxAngle = eval_.num(op.args[1], f);
+      const double maxDist = args[0], maxAngle = args[1];
       if (!(maxDist >= 0) || !(maxAngle >= 0) || !std::isfinite(maxDist) || !std::isfinite(maxAngle))
         throw DeriveError{op.loc, "R014",
                           "IM(\"" + m_.assets[op.index] + "\", maxDist, maxAngle): the thresholds must be "
@@ -456,8 +531,7 @@ class Interpreter final : public QueryHost {
     }
   }
 
-  // Applies a scope command whose arguments are already evaluated. Scale takes pairs
-  // (value, size kind).
+  // Applies a scope command whose arguments are already evaluated.
   void scopeCommand(State& st, const ir::Op& op, const double* a) {
     switch (op.kind) {
       case ir::OpKind::Translate: translate(st.scope, a[0], a[1], a[2]); break;
@@ -478,7 +552,7 @@ class Interpreter final : public QueryHost {
         break;
       case ir::OpKind::Scale:
         for (int k = 0; k < 3; ++k)
-          st.scope.S[k] = a[2 * k + 1] == static_cast<double>(ir::Size::Relative) ? a[2 * k] * st.scope.S[k] : a[2 * k];
+          st.scope.S[k] = op.sizes[k].kind == ir::Size::Relative ? a[k] * st.scope.S[k] : a[k];
         break;
       case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width, st.line}); break;
       case ir::OpKind::Pop:
@@ -494,39 +568,24 @@ class Interpreter final : public QueryHost {
     }
   }
 
-  // Evaluates the arguments of a scope, turtle or instance command into `buf`.
-  uint32_t evalArgs(const ir::Op& op, const Frame& f, double* buf) {
-    if (op.kind == ir::OpKind::Scale) {
-      for (size_t k = 0; k < 3; ++k) {
-        buf[2 * k] = eval_.num(op.sizes[k].value, f);
-        buf[2 * k + 1] = op.sizes[k].kind;
-      }
-      return 6;
-    }
-    uint32_t n = 0;
-    for (const auto& a : op.args) buf[n++] = eval_.num(a, f);
-    return n;
+  // Evaluates an op's arguments as compiled code does (runtime/abi.def): op.args, then
+  // each size's value, in order. An unsupported op is refused before any of them.
+  const double* evalOpArgs(const ir::Op& op, const Frame& f, ArgBuffer& buf, uint32_t& n) {
+    n = op.kind == ir::OpKind::Unsupported ? 0 : static_cast<uint32_t>(op.args.size() + op.sizes.size());
+    double* out = buf.reserve(n);
+    uint32_t k = 0;
+    if (op.kind == ir::OpKind::Unsupported) return out;
+    for (const auto& a : op.args) out[k++] = eval_.num(a, f);
+    for (const auto& sz : op.sizes) out[k++] = eval_.num(sz.value, f);
+    return out;
   }
-
-  // What one running successor knows: its random stream, key and parameters, the
-  // children it has written so far, and whether a collision culled its rest.
-  struct Exec {
-    rt::RandomStream* rng;
-    uint64_t key;
-    uint32_t depth;   // depth of the shapes this successor creates
-    uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
-    const double* params;
-    uint32_t childCount;
-    bool culled = false;    // the rest of this production is dropped (FGSG §4.4)
-    bool collided = false;  // ... because something in it collided
-  };
 
   // ------------------------------------------------------------ sequential derivation
 
   void runSequential() {
     streetDirection_ = rt::Vec3::UnitZ();
     std::vector<double> none;
-    execRoot(m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{},
+    execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{},
              rt::rootKey(opt_.seed), 0, 0, none.data(),
              UINT32_MAX);
     WaitingShape shape;
@@ -561,7 +620,7 @@ class Interpreter final : public QueryHost {
     ++ruleUses_[chosenRule_];
     if ((stats_.rewrites & 4095) == 0) checkTime();
     creatorRule_ = chosenRule_;
-    execRoot(alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
+    execRoot(blockOf(alt), alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
              shape.symbol, &rng, shape.line);
     creatorRule_ = UINT32_MAX;
   }
@@ -621,7 +680,7 @@ class Interpreter final : public QueryHost {
     State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line};
     Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
     f.scope = &st.scope;
-    execBlock(alt->ops, st, ex, f);
+    runBlock(blockOf(alt), alt->ops, st, ex, f);
     stack_.resize(st.stackBase);
     creatorRule_ = outerCreator;
     return ex.collided;
@@ -664,7 +723,7 @@ class Interpreter final : public QueryHost {
       if (isSpecific(r) != (pass == 0)) continue;
       // Context needs a string of neighbours: only a parallel derivation has one.
       if (!r.left.empty() || !r.right.empty()) continue;
-      if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
+      if (r.hasGuard && !guardHolds(ri, f)) continue;
       addCandidates(r, ri, f, total);
     }
     if (candidates_.empty()) return nullptr;
@@ -673,10 +732,80 @@ class Interpreter final : public QueryHost {
     return pick.alt;
   }
 
+  bool guardHolds(uint32_t rule, const Frame& f) {
+    const FgsgValueFn compiled = program_ ? program_->guards[rule] : nullptr;
+    return compiled ? callValue(compiled, f) != 0.0 : eval_.truth(m_.rules[rule].guard, f);
+  }
+
+  // ------------------------------------------------------------ compiled code
+
+  // The block id of an alternative of the rule just chosen.
+  uint32_t blockOf(const ir::Alternative* alt) const {
+    if (!program_) return 0;
+    const ir::Rule& r = m_.rules[chosenRule_];
+    return layout_.alternativeBlock(chosenRule_, static_cast<uint32_t>(alt - r.alternatives.data()));
+  }
+
+  // A compiled guard or probability; its query or error turns into the interpreter's.
+  double callValue(FgsgValueFn fn, const Frame& f) {
+    NativeCall call;
+    call.engine = this;
+    jit::QueryBridge bridge(m_, f);
+    bridge.attach(call);
+    const double v = fn(f.params, eval_.attrData(), &call);
+    if (call.errorCode != FGSG_OK) throw bridge.error(call);
+    return v;
+  }
+
+  // Runs a compiled successor on st; what its ops threw is rethrown once it returned.
+  void runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
+    f.scope = &st.scope;
+    NativeCall call;
+    call.engine = this;
+    call.st = &st;
+    call.ex = &ex;
+    call.f = &f;
+    jit::QueryBridge bridge(m_, f);
+    bridge.attach(call);
+    program_->blocks[block](&call, f.params, eval_.attrData());
+    f.scope = &st.scope;
+    if (call.thrown) std::rethrow_exception(call.thrown);
+    if (call.errorCode != FGSG_OK) throw bridge.error(call);
+  }
+
+ public:
+  // The runtime entry points of compiled code (runtime/abi.def), for a sequential
+  // derivation (call.st set) or a parallel rewriting step (call.string set).
+  void nativeEmit(NativeCall& call, uint32_t op, const double* slots) {
+    if (call.string)
+      appendModule(*layout_.ops[op], slots, m_.symbols[layout_.ops[op]->index].slotCount, *call.string);
+    else
+      emit(*layout_.ops[op], slots, *call.st, *call.ex);
+  }
+  void nativeOp(NativeCall& call, uint32_t op, const double* args, uint32_t n) {
+    if (op >= layout_.ops.size()) throw DeriveError{{}, "R900", "internal: compiled code names op " + std::to_string(op)};
+    if (call.string)
+      appendModule(*layout_.ops[op], args, n, *call.string);
+    else
+      applyOp(*layout_.ops[op], args, n, *call.st, *call.ex, *call.f);
+  }
+  void nativeTranslate(NativeCall& call, double x, double y, double z) { translate(call.st->scope, x, y, z); }
+  void nativeRotate(NativeCall& call, uint32_t axis, double degrees) {
+    turn(call.st->scope, static_cast<int>(axis), degrees);
+  }
+  void nativePush(NativeCall& call) {
+    const State& st = *call.st;
+    stack_.push_back({st.scope, st.geom, st.width, st.line});
+  }
+  void nativePop(NativeCall& call, uint32_t op) { scopeCommand(*call.st, *layout_.ops[op], nullptr); }
+
+ private:
   // Adds the branches of a rule that applies, with their weights, to the candidates.
   void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total) {
     for (const auto& alt : r.alternatives) {
-      const double w = eval_.num(alt.probability, f);
+      const FgsgValueFn compiled =
+          program_ ? program_->weights[layout_.firstAlternative[ri] + (&alt - r.alternatives.data())] : nullptr;
+      const double w = compiled ? callValue(compiled, f) : eval_.num(alt.probability, f);
       if (!(w >= 0) || !std::isfinite(w))
         throw DeriveError{alt.probability.loc, "R008",
                           "a probability evaluated to " + std::to_string(w) +
@@ -701,7 +830,7 @@ class Interpreter final : public QueryHost {
   }
 
   // Runs one successor for a shape (or the axiom) and queues the shapes it creates.
-  void execRoot(const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom,
+  void execRoot(uint32_t block, const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom,
                 uint64_t key, uint32_t depth, uint32_t index, const double* params,
                 uint32_t symbol, rt::RandomStream* rng = nullptr, rt::LineCursor line = {}) {
     rt::RandomStream own{key, 0};
@@ -713,7 +842,7 @@ class Interpreter final : public QueryHost {
       for (const auto& [priority, queue] : buckets_) marks_.emplace_back(priority, queue.mark());
     }
     Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
-    execBlock(ops, st, ex, f);
+    runBlock(block, ops, st, ex, f);
     stack_.resize(st.stackBase);  // a successor may leave '[' open: close it
     if (depthFirst) {
       // A stack gives back the last shape first: reverse what this successor created so
@@ -737,8 +866,16 @@ class Interpreter final : public QueryHost {
     return bucketFor(priority);
   }
 
+  // Runs a block: its compiled code when the derivation has a program, else its IR.
+  void runBlock(uint32_t block, const ir::Block& ops, State& st, Exec& ex, Frame& f) {
+    if (program_)
+      runNative(block, st, ex, f);
+    else
+      execBlock(ops, st, ex, f);
+  }
+
   void execBlock(const ir::Block& ops, State& st, Exec& ex, Frame& f) {
-    double buf[16];
+    ArgBuffer buf;
     for (const ir::Op& op : ops) {
       f.scope = &st.scope;
       switch (op.kind) {
@@ -755,56 +892,77 @@ class Interpreter final : public QueryHost {
             turn(st.scope, static_cast<int>(op.index), eval_.num(op.args[0], f));
             break;
           }
-          evalArgs(op, f, buf);
-          scopeCommand(st, op, buf);
+          applyEvaluated(op, st, ex, f, buf);
           break;
         case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width, st.line}); break;
-        case ir::OpKind::Pop:
-        case ir::OpKind::RotateNormal:
-        case ir::OpKind::Scale:
-          evalArgs(op, f, buf);
-          scopeCommand(st, op, buf);
-          break;
-        case ir::OpKind::Turtle: {
-          uint32_t n = evalArgs(op, f, buf);
-          turtle(st, static_cast<ir::TurtleOp>(op.index), buf, n, op.loc);
-          break;
-        }
-        case ir::OpKind::Instance: {
-          const uint32_t sym = ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol;
-          const uint32_t count = ex.symbol == UINT32_MAX ? 0 : m_.symbols[sym].slotCount;
-          if (!placeChecked(op, st.scope, sym, ex.params, count, f)) ex.culled = ex.collided = true;
+        case ir::OpKind::Emit: {
+          double local[64];
+          std::vector<double> big;
+          const ir::Symbol& target = m_.symbols[op.index];
+          double* slots = target.slotCount <= 64 ? local : (big.resize(target.slotCount), big.data());
+          uint32_t slot = 0;
+          for (const auto& a : op.args) {
+            eval_.store(a, f, slots + slot);
+            slot += ir::slotWidth(a.type);
+          }
+          emit(op, slots, st, ex);
           break;
         }
-        case ir::OpKind::Emit: emit(op, st, ex, f); break;
-        case ir::OpKind::Subdiv:
-        case ir::OpKind::Repeat:
-        case ir::OpKind::Comp: split(op, st, ex, f); break;
-        case ir::OpKind::Extrude: {
-          rt::cga::Part part;
-          std::string error;
-          if (!rt::cga::extrude(st.scope, st.geom, eval_.num(op.args[0], f), arena_, part, error))
-            throw DeriveError{op.loc, "R002", error};
-          st.scope = part.scope;
-          st.geom = part.geom;
-          break;
-        }
-        case ir::OpKind::Roof: {
-          rt::cga::Part part;
-          std::string error;
-          if (!rt::cga::roof(st.scope, st.geom, m_.strings[op.str], eval_.num(op.args[0], f), arena_,
-                             part, error))
-            throw DeriveError{op.loc, "R002", error};
-          runBody(op.bodies[0], part.scope, part.geom, st, ex, f);
-          break;
-        }
-        case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
-        case ir::OpKind::Line: startLine(op, st, ex, f); break;
-        case ir::OpKind::LineSeg: extendLine(op, st, ex, f); break;
-        case ir::OpKind::Synthesize: synthesizeInto(op, st, ex, f); break;
-        case ir::OpKind::Unsupported: unsupported(op);
+        default: applyEvaluated(op, st, ex, f, buf); break;
       }
       if (ex.culled) return;
+    }
+  }
+
+  void applyEvaluated(const ir::Op& op, State& st, Exec& ex, Frame& f, ArgBuffer& buf) {
+    uint32_t n = 0;
+    const double* a = evalOpArgs(op, f, buf, n);
+    applyOp(op, a, n, st, ex, f);
+  }
+
+  // Applies one op of a successor with its arguments evaluated (evalOpArgs' layout):
+  // shared by the IR walk above and compiled code (fgsg_rt_op).
+  void applyOp(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+    switch (op.kind) {
+      case ir::OpKind::Translate: translate(st.scope, a[0], a[1], a[2]); break;
+      case ir::OpKind::Rotate:
+      case ir::OpKind::RotateNormal:
+      case ir::OpKind::Scale:
+      case ir::OpKind::Push:
+      case ir::OpKind::Pop: scopeCommand(st, op, a); break;
+      case ir::OpKind::Turtle: turtle(st, static_cast<ir::TurtleOp>(op.index), a, n, op.loc); break;
+      case ir::OpKind::Instance: {
+        const uint32_t sym = ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol;
+        const uint32_t count = ex.symbol == UINT32_MAX ? 0 : m_.symbols[sym].slotCount;
+        if (!placeChecked(op, st.scope, sym, ex.params, count, a)) ex.culled = ex.collided = true;
+        break;
+      }
+      case ir::OpKind::Emit: emit(op, a, st, ex); break;
+      case ir::OpKind::Subdiv:
+      case ir::OpKind::Repeat:
+      case ir::OpKind::Comp: split(op, a, st, ex, f); break;
+      case ir::OpKind::Extrude: {
+        rt::cga::Part part;
+        std::string error;
+        if (!rt::cga::extrude(st.scope, st.geom, a[0], arena_, part, error))
+          throw DeriveError{op.loc, "R002", error};
+        st.scope = part.scope;
+        st.geom = part.geom;
+        break;
+      }
+      case ir::OpKind::Roof: {
+        rt::cga::Part part;
+        std::string error;
+        if (!rt::cga::roof(st.scope, st.geom, m_.strings[op.str], a[0], arena_, part, error))
+          throw DeriveError{op.loc, "R002", error};
+        runBody(op, 0, part.scope, part.geom, st, ex, f);
+        break;
+      }
+      case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
+      case ir::OpKind::Line: startLine(op, a, st, ex); break;
+      case ir::OpKind::LineSeg: extendLine(op, n > 0 ? a : nullptr, st, ex); break;
+      case ir::OpKind::Synthesize: synthesizeInto(op, a, st, ex, f); break;
+      case ir::OpKind::Unsupported: unsupported(op);
     }
   }
 
@@ -815,8 +973,8 @@ class Interpreter final : public QueryHost {
     const CollisionPlacement::Transaction undo = collisions_->begin(lines_);
     const size_t occluders = occluders_.size();
     ++lockDepth_;
-    for (const auto& body : op.bodies) {
-      runBody(body, st.scope, st.geom, st, ex, f);
+    for (size_t k = 0; k < op.bodies.size(); ++k) {
+      runBody(op, k, st.scope, st.geom, st, ex, f);
       if (ex.culled) break;
     }
     --lockDepth_;
@@ -828,9 +986,9 @@ class Interpreter final : public QueryHost {
   }
 
   // Line(width, merge): a new line starts at the scope's origin.
-  void startLine(const ir::Op& op, State& st, Exec& ex, Frame& f) {
-    const double width = eval_.num(op.args[0], f);
-    const bool merge = eval_.truth(op.args[1], f);
+  void startLine(const ir::Op& op, const double* a, State& st, Exec& ex) {
+    const double width = a[0];
+    const bool merge = a[1] != 0.0;
     if (!(width > 0) || !std::isfinite(width))
       throw DeriveError{op.loc, "R014",
                         "Line(width, merge): the width must be a positive number, got " +
@@ -844,8 +1002,8 @@ class Interpreter final : public QueryHost {
   // LineSeg(length?): moves `length` along the scope's X first, then extends the line to
   // the scope's origin. Reaching another line ends this one there: the rest of the
   // production (which would continue it) is culled.
-  void extendLine(const ir::Op& op, State& st, Exec& ex, Frame& f) {
-    if (!op.args.empty()) st.scope.P += eval_.num(op.args[0], f) * st.scope.X();
+  void extendLine(const ir::Op& op, const double* length, State& st, Exec& ex) {
+    if (length) st.scope.P += *length * st.scope.X();
     if (!st.line.valid())
       throw DeriveError{op.loc, "R014",
                         "LineSeg outside a line: start one with Line(width) in this successor or in "
@@ -876,13 +1034,13 @@ class Interpreter final : public QueryHost {
   // nx x ny x nz grid of pieces (grid z along the scope's Y, grid y against its Z). A
   // piece whose label names a symbol with rules becomes a shape of that symbol in its
   // cell, to be derived further; any other piece places its asset.
-  void synthesizeInto(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  void synthesizeInto(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
     const std::string& name = m_.strings[op.str];
     const rt::synthesis::Example& example = loadExample(name, op.loc);
     rt::synthesis::SynthesisOptions so;
     int n[3];
     for (int k = 0; k < 3; ++k) {
-      const double v = eval_.num(op.args[k], f);
+      const double v = a[k];
       if (!(v >= 1) || v > 4096 || v != std::floor(v))
         throw DeriveError{op.loc, "R012", "Synthesize: grid sizes must be whole numbers from 1 to 4096"};
       n[k] = static_cast<int>(v);
@@ -918,7 +1076,8 @@ class Interpreter final : public QueryHost {
         emitOp.kind = ir::OpKind::Emit;
         emitOp.index = static_cast<uint32_t>(sym);
         emitOp.loc = op.loc;
-        emit(emitOp, piece, ex, f);
+        const double noSlots = 0;
+        emit(emitOp, &noSlots, piece, ex);
       } else if (!place.asset.empty()) {
         placeInstance(pieceAsset(place.asset, op.loc), cell, ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol,
                       nullptr, 0, op.loc);
@@ -961,20 +1120,9 @@ class Interpreter final : public QueryHost {
                           op.why + " (this grammar parses and type-checks)"};
   }
 
-  void emit(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  // Writes a shape of op's symbol with its parameter slots evaluated.
+  void emit(const ir::Op& op, const double* slots, State& st, Exec& ex) {
     const ir::Symbol& target = m_.symbols[op.index];
-    double buf[64];
-    std::vector<double> big;
-    double* slots = buf;
-    if (target.slotCount > 64) {
-      big.resize(target.slotCount);
-      slots = big.data();
-    }
-    uint32_t slot = 0;
-    for (const auto& a : op.args) {
-      eval_.store(a, f, slots + slot);
-      slot += ir::slotWidth(a.type);
-    }
     if (stats_.shapesCreated >= opt_.maxShapes) shapeLimit(op);
     const uint32_t index = ex.childCount++;
     ++stats_.shapesCreated;
@@ -1019,26 +1167,26 @@ class Interpreter final : public QueryHost {
                          {}};
   }
 
-  void runBody(const ir::Block& body, const rt::Scope& scope, const rt::GeomRef& geom,
+  // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
+  void runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
                const State& outer, Exec& ex, Frame& f) {
     State inner{scope, geom, outer.width, stack_.size(), outer.line};
-    execBlock(body, inner, ex, f);
+    runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);
     stack_.resize(inner.stackBase);
     f.scope = &outer.scope;
   }
 
-  void split(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  void split(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
     std::vector<rt::cga::Part> parts;
     std::string error;
     bool ok = false;
     if (op.kind == ir::OpKind::Subdiv) {
       std::vector<rt::cga::SizeValue> sizes;
-      for (const auto& s : op.sizes)
-        sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(s.kind), eval_.num(s.value, f)});
+      for (size_t k = 0; k < op.sizes.size(); ++k)
+        sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(op.sizes[k].kind), a[k]});
       ok = rt::cga::subdivide(st.scope, st.geom, static_cast<int>(op.index), sizes, arena_, parts, error);
     } else if (op.kind == ir::OpKind::Repeat) {
-      std::vector<double> sizes;
-      for (const auto& s : op.sizes) sizes.push_back(eval_.num(s.value, f));
+      std::vector<double> sizes(a, a + op.sizes.size());
       ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, arena_, parts, error);
     } else {
       ok = rt::cga::components(st.scope, st.geom, m_.strings[op.str], arena_, parts, error);
@@ -1046,8 +1194,7 @@ class Interpreter final : public QueryHost {
     if (!ok) throw DeriveError{op.loc, "R002", error};
     for (size_t i = 0; i < parts.size(); ++i) {
       if (parts[i].empty) continue;
-      const ir::Block& body = op.kind == ir::OpKind::Subdiv ? op.bodies[i] : op.bodies[0];
-      runBody(body, parts[i].scope, parts[i].geom, st, ex, f);
+      runBody(op, op.kind == ir::OpKind::Subdiv ? i : 0, parts[i].scope, parts[i].geom, st, ex, f);
       if (ex.culled) return;
     }
   }
@@ -1061,7 +1208,7 @@ class Interpreter final : public QueryHost {
     Frame f{none.data(), nullptr, nullptr, 0, 0, this};
     rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
     f.rng = &rng;
-    appendModules(m_.axiom, f, rt::rootKey(opt_.seed), str, args);
+    appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str, args);
     bool limitHit = false;
     for (int step = 0; step < m_.steps && !limitHit; ++step) {
       next.clear();
@@ -1082,7 +1229,7 @@ class Interpreter final : public QueryHost {
         ++stats_.rewrites;
         ++ruleUses_[chosenRule_];
         Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), mod.index, this};
-        appendModules(alt->ops, rf, mod.key, next, nextArgs, mod.op->index);
+        appendModules(blockOf(alt), alt->ops, rf, mod.key, next, nextArgs, mod.op->index);
         // At the limit the rest of this step's string is kept unrewritten, so the
         // turtle still draws the whole (partly older) plant.
         if (next.size() >= opt_.maxShapes) limitHit = true;
@@ -1105,52 +1252,82 @@ class Interpreter final : public QueryHost {
   }
 
   // Flattens a successor into string modules, evaluating every argument now.
-  void appendModules(const ir::Block& ops, Frame& f, uint64_t key, std::vector<Module>& out,
+  void appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, std::vector<Module>& out,
                      std::vector<double>& outArgs, uint32_t owner = UINT32_MAX) {
-    uint32_t child = 0;
-    double buf[16];
-    for (const ir::Op& op : ops) {
-      Module mod;
-      mod.op = &op;
-      mod.owner = owner;
-      mod.firstArg = static_cast<uint32_t>(outArgs.size());
-      switch (op.kind) {
-        case ir::OpKind::Emit: {
-          const ir::Symbol& target = m_.symbols[op.index];
-          outArgs.resize(outArgs.size() + target.slotCount);
-          uint32_t slot = mod.firstArg;
-          for (const auto& a : op.args) {
-            eval_.store(a, f, outArgs.data() + slot);
-            slot += ir::slotWidth(a.type);
-          }
-          mod.argCount = target.slotCount;
-          mod.index = child;
-          mod.key = rt::childKey(key, child++);
-          break;
-        }
-        case ir::OpKind::Translate:
-        case ir::OpKind::Rotate:
-        case ir::OpKind::RotateNormal:
-        case ir::OpKind::Scale:
-        case ir::OpKind::Push:
-        case ir::OpKind::Pop:
-        case ir::OpKind::Turtle:
-        case ir::OpKind::Instance:
-          if (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain) sequentialOnly(op);
-          mod.argCount = evalArgs(op, f, buf);
-          outArgs.insert(outArgs.end(), buf, buf + mod.argCount);
-          break;
-        case ir::OpKind::Unsupported: unsupported(op);
-        case ir::OpKind::Lock:
-        case ir::OpKind::Line:
-        case ir::OpKind::LineSeg: sequentialOnly(op);
-        default:
-          throw DeriveError{op.loc, "R009",
-                            "'" + op.name + "' cannot appear in a parallel (L-system) derivation: "
-                            "split and component commands need a sequential derivation"};
-      }
-      out.push_back(mod);
+    StringTarget target{&out, &outArgs, key, owner};
+    if (program_) {
+      NativeCall call;
+      call.engine = this;
+      call.f = &f;
+      call.string = &target;
+      jit::QueryBridge bridge(m_, f);
+      bridge.attach(call);
+      program_->blocks[block](&call, f.params, eval_.attrData());
+      if (call.thrown) std::rethrow_exception(call.thrown);
+      if (call.errorCode != FGSG_OK) throw bridge.error(call);
+      return;
     }
+    ArgBuffer buf;
+    double slots[64];
+    std::vector<double> big;
+    for (const ir::Op& op : ops) {
+      if (op.kind == ir::OpKind::Emit) {
+        const uint32_t count = m_.symbols[op.index].slotCount;
+        double* at = count <= 64 ? slots : (big.resize(count), big.data());
+        uint32_t slot = 0;
+        for (const auto& a : op.args) {
+          eval_.store(a, f, at + slot);
+          slot += ir::slotWidth(a.type);
+        }
+        appendModule(op, at, count, target);
+        continue;
+      }
+      checkParallelOp(op);
+      uint32_t n = 0;
+      const double* a = evalOpArgs(op, f, buf, n);
+      appendModule(op, a, n, target);
+    }
+  }
+
+  // Ops a string can hold: symbols, scope and turtle commands, plain instances.
+  void checkParallelOp(const ir::Op& op) {
+    switch (op.kind) {
+      case ir::OpKind::Emit:
+      case ir::OpKind::Translate:
+      case ir::OpKind::Rotate:
+      case ir::OpKind::RotateNormal:
+      case ir::OpKind::Scale:
+      case ir::OpKind::Push:
+      case ir::OpKind::Pop:
+      case ir::OpKind::Turtle: return;
+      case ir::OpKind::Instance:
+        if (op.mode != ir::InstanceMode::Plain) sequentialOnly(op);
+        return;
+      case ir::OpKind::Unsupported: unsupported(op);
+      case ir::OpKind::Lock:
+      case ir::OpKind::Line:
+      case ir::OpKind::LineSeg: sequentialOnly(op);
+      default:
+        throw DeriveError{op.loc, "R009",
+                          "'" + op.name + "' cannot appear in a parallel (L-system) derivation: "
+                          "split and component commands need a sequential derivation"};
+    }
+  }
+
+  // Appends one module with its evaluated arguments (a symbol's: its parameter slots).
+  void appendModule(const ir::Op& op, const double* args, uint32_t n, StringTarget& t) {
+    checkParallelOp(op);
+    Module mod;
+    mod.op = &op;
+    mod.owner = t.owner;
+    mod.firstArg = static_cast<uint32_t>(t.args->size());
+    mod.argCount = n;
+    t.args->insert(t.args->end(), args, args + n);
+    if (op.kind == ir::OpKind::Emit) {
+      mod.index = t.child;
+      mod.key = rt::childKey(t.key, t.child++);
+    }
+    t.out->push_back(mod);
   }
 
   // Rule choice for one module of the string: context must match, then the guard.
@@ -1168,7 +1345,7 @@ class Interpreter final : public QueryHost {
                 params_.begin());
       if (!matchLeft(r, str, args, at) || !matchRight(r, str, args, at)) continue;
       Frame f{params_.data(), &rng, nullptr, step, str[at].index, this};
-      if (r.hasGuard && !eval_.truth(r.guard, f)) continue;
+      if (r.hasGuard && !guardHolds(ri, f)) continue;
       addCandidates(r, ri, f, total);
     }
     if (candidates_.empty()) return nullptr;
@@ -1347,7 +1524,20 @@ class Interpreter final : public QueryHost {
   rt::LineNetwork lines_;
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
+  const FgsgProgram* program_ = nullptr;  // compiled code (deriveCompiled), else the IR is walked
+  ir::ProgramLayout layout_;               // how program_ numbers blocks and ops
 };
+
+template <class Fn>
+void NativeCall::guard(Fn&& fn) noexcept {
+  try {
+    fn();
+    if (ex && ex->culled) stop = 1;
+  } catch (...) {
+    thrown = std::current_exception();
+    stop = 1;
+  }
+}
 
 }  // namespace
 
@@ -1365,4 +1555,58 @@ rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& op
   return Interpreter(local, options, assets, std::move(attrs)).run();
 }
 
+rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& program,
+                                const rt::DeriveOptions& options, rt::AssetLibrary& assets) {
+  ir::Module local = module;
+  std::vector<double> attrs;
+  try {
+    attrs = attributeSlots(local, options.attrOverrides);
+  } catch (const DeriveError& e) {
+    rt::DeriveResult r;
+    r.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+    return r;
+  }
+  return Interpreter(local, options, assets, std::move(attrs), &program).run();
+}
+
 }  // namespace fgsg::backend
+
+// ---------------------------------------------------------------- runtime entry points
+// Called by compiled successors (runtime/abi.def); each forwards to the engine that
+// runs the block and keeps whatever it throws in the call's context.
+
+using fgsg::backend::NativeCall;
+
+extern "C" {
+
+void fgsg_rt_emit(FgsgContext* ctx, uint32_t op, const double* slots) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->nativeEmit(call, op, slots); });
+}
+
+void fgsg_rt_op(FgsgContext* ctx, uint32_t op, const double* args, uint32_t n) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->nativeOp(call, op, args, n); });
+}
+
+void fgsg_rt_translate(FgsgContext* ctx, double x, double y, double z) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->nativeTranslate(call, x, y, z); });
+}
+
+void fgsg_rt_rotate(FgsgContext* ctx, uint32_t axis, double degrees) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.engine->nativeRotate(call, axis, degrees);
+}
+
+void fgsg_rt_push(FgsgContext* ctx) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->nativePush(call); });
+}
+
+void fgsg_rt_pop(FgsgContext* ctx, uint32_t op) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->nativePop(call, op); });
+}
+
+}  // extern "C"

@@ -1,5 +1,7 @@
 #include "backend/jit/jit.h"
 
+#include "backend/codegen/program_codegen.h"
+#include "backend/jit/object_cache.h"
 #include "runtime/abi.h"
 
 #include <llvm/ExecutionEngine/Orc/Core.h>
@@ -11,9 +13,11 @@
 #include <llvm/IR/Verifier.h>
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Support/TargetSelect.h>
+#include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/raw_ostream.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -65,6 +69,36 @@ struct Jit::Impl {
             "JIT: runtime symbols");
   }
 
+  // Links a grammar's object into a JITDylib of its own (so every unit can name its
+  // table `fgsg_program`; the runtime's symbols come from the main JITDylib). False when
+  // the object cannot be linked or lacks the table.
+  bool link(const std::string& object, CompiledProgram& out) {
+    auto& session = lljit->getExecutionSession();
+    auto created = lljit->createJITDylib("fgsg_unit_" + std::to_string(units++));
+    if (!created) throw std::runtime_error("JIT: unit: " + llvm::toString(created.takeError()));
+    llvm::orc::JITDylib& unit = *created;
+    unit.addToLinkOrder(lljit->getMainJITDylib());
+    llvm::orc::ResourceTrackerSP tracker = unit.createResourceTracker();
+    out.unit_ = std::shared_ptr<void>(nullptr, [&session, &unit, tracker](void*) {
+      if (llvm::Error err = tracker->remove()) llvm::consumeError(std::move(err));
+      if (llvm::Error err = session.removeJITDylib(unit)) llvm::consumeError(std::move(err));
+    });
+    llvm::Error added = lljit->addObjectFile(tracker, llvm::MemoryBuffer::getMemBufferCopy(object, "fgsg_program.o"));
+    if (added) {
+      llvm::consumeError(std::move(added));
+      out.unit_.reset();
+      return false;
+    }
+    auto table = lljit->lookup(unit, "fgsg_program");
+    if (!table) {
+      llvm::consumeError(table.takeError());
+      out.unit_.reset();
+      return false;
+    }
+    out.program_ = table->toPtr<const FgsgProgram*>();
+    return true;
+  }
+
   void optimize(llvm::Module& m) {
     llvm::LoopAnalysisManager lam;
     llvm::FunctionAnalysisManager fam;
@@ -109,7 +143,7 @@ CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
 
   CompiledExprs out;
   for (size_t i = 0; i < exprs.size(); ++i) {
-    emitExpr(*module, *exprs[i], prefix + std::to_string(i));
+    codegen::emitExpr(*module, *exprs[i], prefix + std::to_string(i));
     out.vec_.push_back(exprs[i]->type == ir::Type::Vec3);
   }
   std::string problems;
@@ -132,6 +166,23 @@ CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
     auto addr = orThrow(j.lljit->lookup(prefix + std::to_string(i)), "JIT: lookup");
     out.fns_.push_back(addr.toPtr<void*>());
   }
+  return out;
+}
+
+CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string key = ObjectCache::key(m, source);
+  CompiledProgram out;
+  if (std::optional<std::string> cached = cache.load(key)) {
+    out.fromCache_ = true;
+    if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below
+  }
+  if (!out.fromCache_) {
+    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host);
+    if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
+    cache.store(key, object);
+  }
+  out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

@@ -4,14 +4,20 @@
 // unit with its own ResourceTracker: its code lives as long as the returned object.
 #pragma once
 
-#include "backend/jit/expr_codegen.h"
+#include "backend/codegen/expr_codegen.h"
 #include "ir/ir.h"
+
+struct FgsgProgram;
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fgsg::backend::jit {
+
+using codegen::NumFn;
+using codegen::VecFn;
 
 // The functions of one compiled unit, in the order of the expressions given. Must
 // not outlive the Jit that made it.
@@ -29,6 +35,24 @@ class CompiledExprs {
   std::shared_ptr<void> unit_;  // releases the unit's ResourceTracker
 };
 
+// A whole grammar compiled for deriveCompiled (backend/interp/interpreter.h). Must not
+// outlive the Jit that made it.
+class CompiledProgram {
+ public:
+  const FgsgProgram& program() const { return *program_; }
+  bool fromCache() const { return fromCache_; }
+  double seconds() const { return seconds_; }  // compiling (or loading) and linking
+
+ private:
+  friend class Jit;
+  const FgsgProgram* program_ = nullptr;
+  bool fromCache_ = false;
+  double seconds_ = 0.0;
+  std::shared_ptr<void> unit_;  // releases the unit's JITDylib and ResourceTracker
+};
+
+class ObjectCache;
+
 class Jit {
  public:
   Jit();  // throws std::runtime_error when no native target can be set up
@@ -38,6 +62,11 @@ class Jit {
 
   // Compiles every expression into one unit (one function each, see expr_codegen.h).
   CompiledExprs compile(const std::vector<const ir::Expr*>& exprs);
+
+  // Compiles a grammar (see backend/codegen/program_codegen.h) into a unit of its own,
+  // or loads its object from `cache` when it holds one for this grammar and machine.
+  // `source` is the grammar's text (part of the cache key). Throws std::runtime_error.
+  CompiledProgram compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache);
 
   // The optimised LLVM IR of the last unit compiled, for debugging and tests.
   const std::string& lastIR() const;

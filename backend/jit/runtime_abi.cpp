@@ -11,6 +11,7 @@ double fgsg_rt_rand(FgsgContext* ctx, double lo, double hi) noexcept {
 void fgsg_rt_error(FgsgContext* ctx, int32_t code, int32_t line, int32_t col) noexcept {
   if (ctx->errorCode != FGSG_OK) return;  // the first error is the one reported
   ctx->errorCode = code;
+  ctx->stop = 1;
   ctx->errorLine = line;
   ctx->errorCol = col;
 }

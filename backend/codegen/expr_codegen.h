@@ -21,7 +21,7 @@ class Module;
 
 struct FgsgContext;
 
-namespace fgsg::backend::jit {
+namespace fgsg::backend::codegen {
 
 using NumFn = double (*)(const double* params, const double* attrs, FgsgContext* ctx);
 using VecFn = void (*)(const double* params, const double* attrs, FgsgContext* ctx, double* out);
@@ -32,4 +32,4 @@ void declareRuntime(llvm::Module& m);
 // Emits the function `name` computing e into m (declaring the runtime as needed).
 llvm::Function* emitExpr(llvm::Module& m, const ir::Expr& e, const std::string& name);
 
-}  // namespace fgsg::backend::jit
+}  // namespace fgsg::backend::codegen

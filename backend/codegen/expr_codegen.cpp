@@ -1,4 +1,4 @@
-#include "backend/jit/expr_codegen.h"
+#include "backend/codegen/expr_codegen.h"
 
 #include "runtime/abi.h"
 
@@ -14,7 +14,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace fgsg::backend::jit {
+namespace fgsg::backend::codegen {
 namespace {
 
 using ir::Builtin;
@@ -397,4 +397,4 @@ llvm::Function* emitExpr(llvm::Module& m, const ir::Expr& e, const std::string& 
   return ExprCodegen(m, e, name).run();
 }
 
-}  // namespace fgsg::backend::jit
+}  // namespace fgsg::backend::codegen

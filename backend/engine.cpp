@@ -1,0 +1,38 @@
+#include "backend/engine.h"
+
+#include "backend/interp/interpreter.h"
+#include "backend/jit/jit.h"
+#include "backend/jit/object_cache.h"
+
+#include <stdexcept>
+
+namespace fgsg::backend {
+
+std::optional<Engine> parseEngine(const std::string& name) {
+  if (name == "interp") return Engine::Interpreter;
+  if (name == "jit") return Engine::Jit;
+  return std::nullopt;
+}
+
+rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::string& source,
+                        const rt::DeriveOptions& options, rt::AssetLibrary& assets,
+                        EngineReport* report) {
+  if (engine == Engine::Interpreter) return interpret(module, options, assets);
+  try {
+    jit::Jit jit;
+    const jit::CompiledProgram code = jit.compileProgram(module, source, jit::ObjectCache());
+    if (report) {
+      report->compileSeconds = code.seconds();
+      report->fromCache = code.fromCache();
+    }
+    return deriveCompiled(module, code.program(), options, assets);
+  } catch (const std::exception& e) {
+    rt::DeriveResult failed;
+    failed.messages.push_back({true, "R900", 0, 0,
+                               std::string("the JIT cannot compile this grammar: ") + e.what() +
+                                   " (--engine=interp runs it without compiling)"});
+    return failed;
+  }
+}
+
+}  // namespace fgsg::backend
