@@ -31,8 +31,18 @@ using FgsgQueryFn = int32_t (*)(void* user, uint32_t kind, uint32_t env, uint32_
 
 struct FgsgContext {
   // Nonzero once the running block must return: an error was reported, or the engine
-  // culled the rest of the production. The one field generated code reads (offset 0).
+  // culled the rest of the production.
   int32_t stop = 0;
+  // Direct derivation (FgsgDirectFn) met what only the engine's own order reports
+  // exactly (a limit, an error): the engine derives the grammar again without it.
+  int32_t inexact = 0;
+  // Direct derivation's counts, added to the engine's statistics afterwards, and its
+  // limits: shapes it may still create, the depth at which a shape stays terminal.
+  uint64_t shapes = 0;
+  uint64_t rewrites = 0;
+  uint64_t terminals = 0;
+  uint64_t shapeBudget = 0;
+  uint32_t depthLimit = 0;
   fgsg::rt::RandomStream* rng = nullptr;  // the shape's stream (Rand)
   FgsgQueryFn query = nullptr;            // the engine's query host
   void* queryUser = nullptr;
@@ -42,11 +52,16 @@ struct FgsgContext {
   int32_t errorCol = 0;
 };
 
-static_assert(offsetof(FgsgContext, stop) == 0, "generated code reads ctx->stop at offset 0");
+// Generated code reads and writes these fields at these offsets (program_codegen.cpp).
+static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact) == 4 &&
+                  offsetof(FgsgContext, shapes) == 8 && offsetof(FgsgContext, rewrites) == 16 &&
+                  offsetof(FgsgContext, terminals) == 24 && offsetof(FgsgContext, shapeBudget) == 32 &&
+                  offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, rng) == 48,
+              "the context layout generated code assumes");
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 1u
+#define FGSG_ABI_VERSION 2u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of
@@ -57,6 +72,12 @@ static_assert(offsetof(FgsgContext, stop) == 0, "generated code reads ctx->stop 
 //     probability (null: a constant the engine reads from the IR).
 typedef void (*FgsgBlockFn)(FgsgContext* ctx, const double* params, const double* attrs);
 typedef double (*FgsgValueFn)(const double* params, const double* attrs, FgsgContext* ctx);
+// Derives a shape of a "direct" symbol and everything it creates, at once and in native
+// code: a symbol whose rules only move, turn and scale the scope and create shapes of
+// direct or ruleless symbols (no instances, splits or queries), so the order its
+// shapes are derived in changes nothing in the result. scope: an rt::Scope (copied).
+typedef void (*FgsgDirectFn)(FgsgContext* ctx, const void* scope, const double* slots, uint64_t key,
+                             uint32_t depth, const double* attrs);
 
 struct FgsgProgram {
   uint32_t abiVersion;
@@ -68,6 +89,9 @@ struct FgsgProgram {
   const FgsgValueFn* weights;
   const char* source;      // the grammar's text (compiled libraries; null in the JIT)
   const char* sourceName;  // its file name as compiled, for diagnostics and relative paths
+  uint32_t symbolCount;
+  const FgsgDirectFn* direct;  // by symbol: null unless the symbol is direct
+  uint32_t scopeSize;          // sizeof(rt::Scope) the direct code was compiled for
 };
 
 extern "C" {

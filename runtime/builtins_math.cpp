@@ -1,4 +1,5 @@
 #include "runtime/builtins_math.h"
+#include "runtime/random.h"
 
 #include "runtime/scope.h"
 
@@ -36,3 +37,7 @@ double fgsg_rt_vec_dot(double ax, double ay, double az, double bx, double by, do
 }
 
 }  // extern "C"
+
+extern "C" uint64_t fgsg_rt_child_key(uint64_t parent, uint64_t index) noexcept {
+  return fgsg::rt::childKey(parent, index);
+}

@@ -3,6 +3,7 @@
 #include "backend/codegen/expr_codegen.h"
 #include "ir/program_layout.h"
 #include "runtime/abi.h"
+#include "runtime/scope.h"
 
 #include <llvm/IR/Constants.h>
 #include <llvm/IR/Function.h>
@@ -31,6 +32,69 @@ bool cannotFail(const ir::Expr& e) {
   return e.op == ir::ExprOp::Const || e.op == ir::ExprOp::Param || e.op == ir::ExprOp::Attr;
 }
 
+bool hasQuery(const ir::Expr& e) {
+  if (e.op == ir::ExprOp::Query) return true;
+  for (const auto& a : e.args)
+    if (hasQuery(a)) return true;
+  return false;
+}
+
+// Rules that a sequential derivation can choose: those without context.
+bool choosable(const ir::Rule& r) { return r.left.empty() && r.right.empty(); }
+
+// The direct symbols (runtime/abi.h, FgsgDirectFn): the largest set whose successors
+// only use scope commands and create shapes of ruleless or direct symbols, with
+// brackets that balance, and no query anywhere. Sequential derivations only.
+std::vector<bool> findDirectSymbols(const ir::Module& m) {
+  std::vector<bool> direct(m.symbols.size(), false);
+  if (m.mode == ir::DeriveMode::Parallel) return direct;
+  for (size_t s = 0; s < m.symbols.size(); ++s) {
+    const ir::Symbol& sym = m.symbols[s];
+    bool ok = !sym.rules.empty() && sym.name != "F";  // F draws when no rule applies
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = m.rules[ri];
+      if (!choosable(r)) continue;
+      if (r.hasGuard && hasQuery(r.guard)) ok = false;
+      for (const auto& alt : r.alternatives) {
+        if (hasQuery(alt.probability)) ok = false;
+        int depth = 0;
+        for (const ir::Op& op : alt.ops) {
+          switch (op.kind) {
+            case OpKind::Translate:
+            case OpKind::Rotate:
+            case OpKind::RotateNormal:
+            case OpKind::Scale:
+            case OpKind::Emit: break;
+            case OpKind::Push: ++depth; break;
+            case OpKind::Pop: ok &= --depth >= 0; break;
+            default: ok = false;
+          }
+          for (const auto& a : op.args) ok &= !hasQuery(a);
+          for (const auto& sz : op.sizes) ok &= !hasQuery(sz.value);
+        }
+        ok &= depth == 0;
+      }
+    }
+    direct[s] = ok;
+  }
+  // A symbol creating a shape that is neither ruleless nor direct is not direct.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t s = 0; s < m.symbols.size(); ++s) {
+      if (!direct[s]) continue;
+      for (uint32_t ri : m.symbols[s].rules)
+        for (const auto& alt : m.rules[ri].alternatives)
+          for (const ir::Op& op : alt.ops)
+            if (op.kind == OpKind::Emit && !m.symbols[op.index].rules.empty() && !direct[op.index] &&
+                direct[s]) {
+              direct[s] = false;
+              changed = true;
+            }
+    }
+  }
+  return direct;
+}
+
 class ProgramCodegen {
  public:
   ProgramCodegen(llvm::Module& out, const ir::Module& m, const ProgramCodegenOptions& o)
@@ -51,7 +115,19 @@ class ProgramCodegen {
                                       : value(p, "fgsg_weight_" + std::to_string(r) + "_" + std::to_string(a)));
       }
     }
-    table(blocks, guards, weights);
+    const std::vector<bool> isDirect = findDirectSymbols(ir_);
+    directFns_.assign(ir_.symbols.size(), nullptr);
+    auto* directType = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, ptr_, b_.getInt64Ty(), b_.getInt32Ty(), ptr_}, false);
+    for (size_t s = 0; s < ir_.symbols.size(); ++s)
+      if (isDirect[s])
+        directFns_[s] = llvm::Function::Create(directType, llvm::Function::InternalLinkage,
+                                               "fgsg_direct_" + ir_.symbols[s].name, m_);
+    std::vector<llvm::Constant*> direct;
+    for (size_t s = 0; s < ir_.symbols.size(); ++s) {
+      if (directFns_[s]) directSymbol(static_cast<uint32_t>(s));
+      direct.push_back(directFns_[s] ? static_cast<llvm::Constant*>(directFns_[s]) : nullPtr());
+    }
+    table(blocks, guards, weights, direct);
   }
 
  private:
@@ -107,6 +183,13 @@ class ProgramCodegen {
   }
 
   llvm::Value* num(const ir::Expr& e) {
+    // Constants, parameters and attributes, most arguments, are read in place; every
+    // other expression is a function of its own that the optimiser inlines.
+    if (e.op == ir::ExprOp::Const && e.type != ir::Type::Vec3) return llvm::ConstantFP::get(b_.getDoubleTy(), e.num);
+    if (e.op == ir::ExprOp::Param && e.type != ir::Type::Vec3)
+      return b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), params_, e.index));
+    if (e.op == ir::ExprOp::Attr && e.type != ir::Type::Vec3)
+      return b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), attrs_, 3 * e.index));
     llvm::Function* f = emitExpr(m_, e, "fgsg_expr_" + std::to_string(exprs_++));
     f->setLinkage(llvm::GlobalValue::InternalLinkage);
     return b_.CreateCall(f, {params_, attrs_, ctx_});
@@ -206,17 +289,298 @@ class ProgramCodegen {
 
   // The FgsgProgram constant (runtime/abi.h), field for field.
   void table(const std::vector<llvm::Constant*>& blocks, const std::vector<llvm::Constant*>& guards,
-             const std::vector<llvm::Constant*>& weights) {
+             const std::vector<llvm::Constant*>& weights, const std::vector<llvm::Constant*>& direct) {
     llvm::Type* i32 = b_.getInt32Ty();
-    auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_});
+    auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_, i32, ptr_, i32});
     auto count = [&](size_t n) { return llvm::ConstantInt::get(i32, n); };
     llvm::Constant* init = llvm::ConstantStruct::get(
         type, {count(FGSG_ABI_VERSION), count(blocks.size()), array(blocks, "fgsg_blocks"),
                count(guards.size()), array(guards, "fgsg_guards"), count(weights.size()),
                array(weights, "fgsg_weights"),
                opt_.embedSource ? string(opt_.source, "fgsg_source") : nullPtr(),
-               opt_.embedSource ? string(opt_.sourceName, "fgsg_source_name") : nullPtr()});
+               opt_.embedSource ? string(opt_.sourceName, "fgsg_source_name") : nullPtr(),
+               count(direct.size()), array(direct, "fgsg_direct"), count(sizeof(rt::Scope))});
     new llvm::GlobalVariable(m_, type, true, llvm::GlobalValue::ExternalLinkage, init, opt_.tableSymbol);
+  }
+
+  // ---------------------------------------------------------------- direct derivation
+
+  // Fields of FgsgContext generated code uses (offsets checked in runtime/abi.h).
+  enum ContextField : uint64_t { kStop = 0, kInexact = 4, kShapes = 8, kRewrites = 16,
+                                 kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kRng = 48 };
+  llvm::Value* field(uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_, offset); }
+  llvm::Value* loadU64(uint64_t offset) { return b_.CreateLoad(b_.getInt64Ty(), field(offset)); }
+  void bump(uint64_t offset) { b_.CreateStore(b_.CreateAdd(loadU64(offset), b_.getInt64(1)), field(offset)); }
+  llvm::Value* zero() { return llvm::ConstantFP::get(b_.getDoubleTy(), 0.0); }
+  llvm::BasicBlock* newBlock(const char* name) { return llvm::BasicBlock::Create(c_, name, fn_, exit_); }
+
+  // Marks the derivation inexact (the engine derives it again its own way) and returns.
+  void giveUpIf(llvm::Value* cond) {
+    llvm::BasicBlock* fail = newBlock("inexact");
+    llvm::BasicBlock* go = newBlock("go");
+    b_.CreateCondBr(cond, fail, go);
+    b_.SetInsertPoint(fail);
+    b_.CreateStore(b_.getInt32(1), field(kInexact));
+    b_.CreateStore(b_.getInt32(1), field(kStop));
+    b_.CreateBr(exit_);
+    b_.SetInsertPoint(go);
+  }
+
+  llvm::Value* frameSlots(llvm::Type* type, size_t n) {
+    llvm::IRBuilderBase::InsertPointGuard guard(b_);
+    b_.SetInsertPoint(entry_, entry_->begin());
+    llvm::AllocaInst* a = b_.CreateAlloca(type, b_.getInt32(static_cast<uint32_t>(n)));
+    a->setAlignment(llvm::Align(16));  // an rt::Scope lives in some of them
+    return a;
+  }
+
+  // What Interpreter::deriveShape and choose do for one shape, with the successor's ops
+  // applied to a scope in this frame and created direct shapes derived by a call.
+  void directSymbol(uint32_t s) {
+    const ir::Symbol& sym = ir_.symbols[s];
+    fn_ = directFns_[s];
+    fn_->addFnAttr(llvm::Attribute::NoUnwind);
+    // Direct symbols call each other, often in cycles: inlining them into one another
+    // multiplies code (and compile time) for little gain.
+    fn_->addFnAttr(llvm::Attribute::NoInline);
+    ctx_ = fn_->getArg(0);
+    llvm::Value* scopeIn = fn_->getArg(1);
+    llvm::Value* slots = fn_->getArg(2);
+    key_ = fn_->getArg(3);
+    depth_ = fn_->getArg(4);
+    attrs_ = fn_->getArg(5);
+    entry_ = llvm::BasicBlock::Create(c_, "entry", fn_);
+    exit_ = llvm::BasicBlock::Create(c_, "return", fn_);
+    b_.SetInsertPoint(exit_);
+    b_.CreateRetVoid();
+    llvm::BasicBlock* body = newBlock("shape");
+    b_.SetInsertPoint(body);
+
+    // A shape at the depth limit stays terminal and the engine warns: its order matters.
+    giveUpIf(b_.CreateICmpUGE(depth_, b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimit))));
+    uint32_t slotsNeeded = std::max(sym.slotCount, 1u);
+    size_t alternatives = 0;
+    for (uint32_t ri : sym.rules) {
+      slotsNeeded = std::max(slotsNeeded, ir_.rules[ri].slotCount);
+      alternatives += ir_.rules[ri].alternatives.size();
+    }
+    params_ = frameSlots(b_.getDoubleTy(), slotsNeeded);
+    for (uint32_t k = 0; k < slotsNeeded; ++k)
+      b_.CreateStore(k < sym.slotCount ? b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), slots, k))
+                                       : zero(),
+                     b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), params_, k));
+    rng_ = frameSlots(b_.getInt64Ty(), 2);  // rt::RandomStream{key, counter 0}
+    b_.CreateStore(key_, rng_);
+    b_.CreateStore(b_.getInt64(0), b_.CreateConstInBoundsGEP1_64(b_.getInt64Ty(), rng_, 1));
+    b_.CreateStore(rng_, field(kRng));
+    scope_ = frameSlots(b_.getInt8Ty(), sizeof(rt::Scope));
+    b_.CreateMemCpy(scope_, llvm::MaybeAlign(8), scopeIn, llvm::MaybeAlign(8), sizeof(rt::Scope));
+
+    // Candidates (global alternative index, weight), collected as Interpreter::choose
+    // does: rules with a guard first, those without only when none applies.
+    const size_t room = std::max<size_t>(alternatives, 1);
+    llvm::Value* candAlt = frameSlots(b_.getInt32Ty(), room);
+    llvm::Value* candWeight = frameSlots(b_.getDoubleTy(), room);
+    llvm::Value* count = frameSlots(b_.getInt32Ty(), 1);
+    llvm::Value* total = frameSlots(b_.getDoubleTy(), 1);
+    b_.CreateStore(b_.getInt32(0), count);
+    b_.CreateStore(zero(), total);
+    for (int pass = 0; pass < 2; ++pass) {
+      llvm::BasicBlock* passBlock = newBlock(pass == 0 ? "specific" : "general");
+      llvm::BasicBlock* after = newBlock("collected");
+      if (pass == 1)
+        b_.CreateCondBr(b_.CreateICmpEQ(b_.CreateLoad(b_.getInt32Ty(), count), b_.getInt32(0)), passBlock, after);
+      else
+        b_.CreateBr(passBlock);
+      b_.SetInsertPoint(passBlock);
+      for (uint32_t ri : sym.rules) {
+        const ir::Rule& r = ir_.rules[ri];
+        if (!choosable(r) || r.hasGuard != (pass == 0)) continue;
+        llvm::BasicBlock* next = newBlock("next_rule");
+        if (r.hasGuard) {
+          llvm::Value* g = num(r.guard);
+          checkStop();
+          llvm::BasicBlock* holds = newBlock("holds");
+          b_.CreateCondBr(b_.CreateFCmpUNE(g, zero()), holds, next);
+          b_.SetInsertPoint(holds);
+        }
+        for (size_t a = 0; a < r.alternatives.size(); ++a) {
+          llvm::Value* w = num(r.alternatives[a].probability);
+          checkStop();
+          // R008 (a negative or non-finite weight) is the engine's to report.
+          llvm::Value* finite = b_.CreateFCmpONE(b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, w),
+                                                 llvm::ConstantFP::getInfinity(b_.getDoubleTy()));
+          giveUpIf(b_.CreateNot(b_.CreateAnd(b_.CreateFCmpOGE(w, zero()), finite)));
+          llvm::BasicBlock* add = newBlock("candidate");
+          llvm::BasicBlock* skip = newBlock("no_candidate");
+          b_.CreateCondBr(b_.CreateFCmpOGT(w, zero()), add, skip);
+          b_.SetInsertPoint(add);
+          llvm::Value* n = b_.CreateLoad(b_.getInt32Ty(), count);
+          b_.CreateStore(b_.getInt32(layout_.firstAlternative[ri] + static_cast<uint32_t>(a)),
+                         b_.CreateInBoundsGEP(b_.getInt32Ty(), candAlt, n));
+          b_.CreateStore(w, b_.CreateInBoundsGEP(b_.getDoubleTy(), candWeight, n));
+          b_.CreateStore(b_.CreateAdd(n, b_.getInt32(1)), count);
+          b_.CreateStore(b_.CreateFAdd(b_.CreateLoad(b_.getDoubleTy(), total), w), total);
+          b_.CreateBr(skip);
+          b_.SetInsertPoint(skip);
+        }
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+      }
+      b_.CreateBr(after);
+      b_.SetInsertPoint(after);
+    }
+    // No rule applies: the shape is terminal.
+    llvm::Value* n = b_.CreateLoad(b_.getInt32Ty(), count);
+    llvm::BasicBlock* terminal = newBlock("terminal");
+    llvm::BasicBlock* rewrite = newBlock("rewrite");
+    b_.CreateCondBr(b_.CreateICmpEQ(n, b_.getInt32(0)), terminal, rewrite);
+    b_.SetInsertPoint(terminal);
+    bump(kTerminals);
+    b_.CreateBr(exit_);
+    // One candidate takes no random number; several: x = next() * total, then the walk
+    // of Interpreter::pickCandidate (the last one when rounding leaves x beyond all).
+    b_.SetInsertPoint(rewrite);
+    llvm::Value* chosen = frameSlots(b_.getInt32Ty(), 1);
+    b_.CreateStore(b_.CreateLoad(b_.getInt32Ty(), candAlt), chosen);
+    llvm::BasicBlock* pick = newBlock("pick");
+    llvm::BasicBlock* apply = newBlock("apply");
+    b_.CreateCondBr(b_.CreateICmpUGT(n, b_.getInt32(1)), pick, apply);
+    b_.SetInsertPoint(pick);
+    {
+      llvm::Value* x = frameSlots(b_.getDoubleTy(), 1);
+      llvm::Value* i = frameSlots(b_.getInt32Ty(), 1);
+      b_.CreateStore(b_.CreateFMul(call("fgsg_rt_next", {ctx_}), b_.CreateLoad(b_.getDoubleTy(), total)), x);
+      b_.CreateStore(b_.getInt32(0), i);
+      b_.CreateStore(b_.CreateLoad(b_.getInt32Ty(), b_.CreateInBoundsGEP(b_.getInt32Ty(), candAlt, b_.CreateSub(n, b_.getInt32(1)))), chosen);
+      llvm::BasicBlock* loop = newBlock("walk");
+      llvm::BasicBlock* test = newBlock("walk_test");
+      llvm::BasicBlock* found = newBlock("found");
+      llvm::BasicBlock* step = newBlock("walk_next");
+      b_.CreateBr(loop);
+      b_.SetInsertPoint(loop);
+      llvm::Value* iv = b_.CreateLoad(b_.getInt32Ty(), i);
+      b_.CreateCondBr(b_.CreateICmpULT(iv, n), test, apply);
+      b_.SetInsertPoint(test);
+      llvm::Value* w = b_.CreateLoad(b_.getDoubleTy(), b_.CreateInBoundsGEP(b_.getDoubleTy(), candWeight, iv));
+      llvm::Value* xv = b_.CreateLoad(b_.getDoubleTy(), x);
+      b_.CreateCondBr(b_.CreateFCmpOLT(xv, w), found, step);
+      b_.SetInsertPoint(found);
+      b_.CreateStore(b_.CreateLoad(b_.getInt32Ty(), b_.CreateInBoundsGEP(b_.getInt32Ty(), candAlt, iv)), chosen);
+      b_.CreateBr(apply);
+      b_.SetInsertPoint(step);
+      b_.CreateStore(b_.CreateFSub(xv, w), x);
+      b_.CreateStore(b_.CreateAdd(iv, b_.getInt32(1)), i);
+      b_.CreateBr(loop);
+    }
+    b_.SetInsertPoint(apply);
+    // Every 4096 rewrites the engine checks --max-seconds.
+    bump(kRewrites);
+    {
+      llvm::Value* low = b_.CreateAnd(loadU64(kRewrites), b_.getInt64(4095));
+      llvm::BasicBlock* check = newBlock("check_time");
+      llvm::BasicBlock* go = newBlock("go");
+      b_.CreateCondBr(b_.CreateICmpEQ(low, b_.getInt64(0)), check, go);
+      b_.SetInsertPoint(check);
+      call("fgsg_rt_check_time", {ctx_});
+      checkStop();
+      b_.CreateBr(go);
+      b_.SetInsertPoint(go);
+    }
+    llvm::SwitchInst* sw = b_.CreateSwitch(b_.CreateLoad(b_.getInt32Ty(), chosen), exit_);
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = ir_.rules[ri];
+      if (!choosable(r)) continue;
+      for (size_t a = 0; a < r.alternatives.size(); ++a) {
+        llvm::BasicBlock* alt = newBlock("alternative");
+        sw->addCase(b_.getInt32(layout_.firstAlternative[ri] + static_cast<uint32_t>(a)), alt);
+        b_.SetInsertPoint(alt);
+        directSuccessor(r.alternatives[a].ops);
+        b_.CreateBr(exit_);
+      }
+    }
+    b_.SetInsertPoint(entry_);
+    b_.CreateBr(body);
+  }
+
+  // A successor's ops on the frame's scope; [ ] save and restore it in frame slots.
+  void directSuccessor(const ir::Block& ops) {
+    std::vector<llvm::Value*> saved;
+    int depth = 0;
+    uint32_t child = 0;
+    for (const ir::Op& op : ops) {
+      bool mayFail = false;
+      for (const auto& a : op.args) mayFail |= !cannotFail(a);
+      for (const auto& sz : op.sizes) mayFail |= !cannotFail(sz.value);
+      switch (op.kind) {
+        case OpKind::Translate: {
+          llvm::Value* x = num(op.args[0]);
+          llvm::Value* y = num(op.args[1]);
+          llvm::Value* z = num(op.args[2]);
+          if (mayFail) checkStop();
+          call("fgsg_rt_direct_translate", {ctx_, scope_, x, y, z});
+          break;
+        }
+        case OpKind::Rotate: {
+          std::vector<llvm::Value*> angles;
+          for (const auto& a : op.args) angles.push_back(num(a));
+          if (mayFail) checkStop();
+          if (op.index < 3)
+            call("fgsg_rt_direct_turn", {ctx_, scope_, u32(op.index), angles[0]});
+          else
+            for (uint32_t k = 0; k < 3; ++k) call("fgsg_rt_direct_turn", {ctx_, scope_, u32(k), angles[k]});
+          break;
+        }
+        case OpKind::RotateNormal: {
+          llvm::Value* a = num(op.args[0]);
+          if (mayFail) checkStop();
+          call("fgsg_rt_direct_rotate_normal", {ctx_, scope_, a});
+          break;
+        }
+        case OpKind::Scale: {
+          llvm::Value* sizes = buffer(3);
+          uint32_t relative = 0;
+          for (uint32_t k = 0; k < 3; ++k) {
+            store(op.sizes[k].value, sizes, k);
+            if (op.sizes[k].kind == ir::Size::Relative) relative |= 1u << k;
+          }
+          if (mayFail) checkStop();
+          call("fgsg_rt_direct_scale", {ctx_, scope_, sizes, u32(relative)});
+          break;
+        }
+        case OpKind::Push:
+          if (depth == static_cast<int>(saved.size())) saved.push_back(frameSlots(b_.getInt8Ty(), sizeof(rt::Scope)));
+          b_.CreateMemCpy(saved[depth++], llvm::MaybeAlign(8), scope_, llvm::MaybeAlign(8), sizeof(rt::Scope));
+          break;
+        case OpKind::Pop:
+          b_.CreateMemCpy(scope_, llvm::MaybeAlign(8), saved[--depth], llvm::MaybeAlign(8), sizeof(rt::Scope));
+          break;
+        case OpKind::Emit: {
+          const ir::Symbol& target = ir_.symbols[op.index];
+          llvm::Value* args = buffer(target.slotCount);
+          uint32_t slot = 0;
+          for (const auto& a : op.args) {
+            store(a, args, slot);
+            slot += ir::slotWidth(a.type);
+          }
+          if (mayFail) checkStop();
+          // Interpreter::emit: the shape limit first, then the shape is counted.
+          giveUpIf(b_.CreateICmpUGE(loadU64(kShapes), loadU64(kShapeBudget)));
+          bump(kShapes);
+          const uint32_t index = child++;
+          if (target.rules.empty()) {
+            bump(kTerminals);
+            break;
+          }
+          llvm::Value* key = call("fgsg_rt_child_key", {key_, b_.getInt64(index)});
+          b_.CreateCall(directFns_[op.index], {ctx_, scope_, args, key, b_.CreateAdd(depth_, b_.getInt32(1)), attrs_});
+          checkStop();
+          b_.CreateStore(rng_, field(kRng));  // the child drew from its own stream
+          break;
+        }
+        default: break;  // not in a direct symbol (findDirectSymbols)
+      }
+    }
   }
 
   llvm::Module& m_;
@@ -233,6 +597,11 @@ class ProgramCodegen {
   llvm::BasicBlock* entry_ = nullptr;
   llvm::BasicBlock* exit_ = nullptr;
   uint64_t exprs_ = 0;
+  std::vector<llvm::Function*> directFns_;  // by symbol: null unless direct
+  llvm::Value* key_ = nullptr;    // direct code: the shape's key, depth, stream and scope
+  llvm::Value* depth_ = nullptr;
+  llvm::Value* rng_ = nullptr;
+  llvm::Value* scope_ = nullptr;
 };
 
 void initTargets() {

@@ -106,6 +106,9 @@ class Interpreter;
 // bottom of this file find the engine and the successor's state through it. What the
 // engine throws is caught there and kept here until the block has returned, so no
 // exception unwinds through generated frames.
+// Thrown when direct derivation gives up; run() ends and deriveCompiled starts again.
+struct InexactDirect {};
+
 struct NativeCall : FgsgContext {
   Interpreter* engine = nullptr;
   State* st = nullptr;  // sequential: the successor's scope and stack
@@ -121,9 +124,9 @@ struct NativeCall : FgsgContext {
 class Interpreter final : public QueryHost {
  public:
   Interpreter(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
-              std::vector<double> attrs, const FgsgProgram* program = nullptr)
+              std::vector<double> attrs, const FgsgProgram* program = nullptr, bool direct = false)
       : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
-        ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program) {
+        ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct) {
     if (program_) layout_ = ir::layoutProgram(m_);
   }
 
@@ -145,6 +148,8 @@ class Interpreter final : public QueryHost {
     try {
       checkProgram();
       checkEnvironment();
+      // Direct code applies scope commands on the plane (on a surface T traces).
+      direct_ = direct_ && program_ && program_->direct && !surface_ && m_.mode != ir::DeriveMode::Parallel;
       resolveAssets();
       initOutput();
       if (m_.mode == ir::DeriveMode::Parallel)
@@ -163,6 +168,8 @@ class Interpreter final : public QueryHost {
       appendSurface();
     } catch (const DeriveError& e) {
       result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+    } catch (const InexactDirect&) {
+      inexactDirect_ = true;
     }
     stats_.deriveSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats_.instances = out_.instances.size();
@@ -198,7 +205,8 @@ class Interpreter final : public QueryHost {
                                         ", but this runtime is ABI " + std::to_string(FGSG_ABI_VERSION) +
                                         ": compile the grammar again"};
     if (p.blockCount != layout_.blocks.size() || p.ruleCount != m_.rules.size() ||
-        p.alternativeCount != layout_.alternativeCount)
+        p.alternativeCount != layout_.alternativeCount || p.symbolCount != m_.symbols.size() ||
+        p.scopeSize != sizeof(rt::Scope))
       throw DeriveError{{}, "R900", "the compiled code does not match this grammar (" +
                                         std::to_string(p.blockCount) + " blocks and " +
                                         std::to_string(p.ruleCount) + " rules compiled, " +
@@ -757,6 +765,24 @@ class Interpreter final : public QueryHost {
     return v;
   }
 
+  // Derives a direct shape and its whole subtree now, in compiled code (FgsgDirectFn):
+  // nothing it creates is observable but its counts. What only this engine's own order
+  // reports exactly (a limit, an error) makes the whole derivation start again without
+  // direct derivation (deriveCompiled).
+  void deriveDirect(uint32_t symbol, const double* slots, const rt::Scope& scope, uint64_t key,
+                    uint32_t depth) {
+    NativeCall call;
+    call.engine = this;
+    call.shapeBudget = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
+    call.depthLimit = opt_.maxDepth;
+    program_->direct[symbol](&call, &scope, slots, key, depth, eval_.attrData());
+    stats_.shapesCreated += call.shapes;
+    stats_.rewrites += call.rewrites;
+    stats_.terminals += call.terminals;
+    if (call.thrown) std::rethrow_exception(call.thrown);
+    if (call.inexact || call.errorCode != FGSG_OK) throw InexactDirect{};
+  }
+
   // Runs a compiled successor on st; what its ops threw is rethrown once it returned.
   void runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
     f.scope = &st.scope;
@@ -798,6 +824,12 @@ class Interpreter final : public QueryHost {
     stack_.push_back({st.scope, st.geom, st.width, st.line});
   }
   void nativePop(NativeCall& call, uint32_t op) { scopeCommand(*call.st, *layout_.ops[op], nullptr); }
+  // Direct derivation's scope commands: on the plane, as translate() and turn().
+  void directTranslate(rt::Scope& s, double x, double y, double z) { s.P += s.axes * rt::Vec3(x, y, z); }
+  void directTurn(rt::Scope& s, uint32_t axis, double degrees) { turn(s, static_cast<int>(axis), degrees); }
+  void directTimeCheck() { checkTime(); }
+  // Whether the last run() stopped because direct derivation could not be exact.
+  bool needsExactRun() const { return inexactDirect_; }
 
  private:
   // Adds the branches of a rule that applies, with their weights, to the candidates.
@@ -1128,6 +1160,10 @@ class Interpreter final : public QueryHost {
     ++stats_.shapesCreated;
     if (target.rules.empty()) {  // a terminal: nothing will ever read it again
       ++stats_.terminals;
+      return;
+    }
+    if (direct_ && program_->direct[op.index]) {
+      deriveDirect(op.index, slots, st.scope, rt::childKey(ex.key, index), ex.depth);
       return;
     }
     if (eager_[op.index] || lockDepth_ > 0) {
@@ -1525,6 +1561,8 @@ class Interpreter final : public QueryHost {
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
   const FgsgProgram* program_ = nullptr;  // compiled code (deriveCompiled), else the IR is walked
+  bool direct_ = false;          // direct symbols are derived by their compiled code at once
+  bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
   ir::ProgramLayout layout_;               // how program_ numbers blocks and ops
 };
 
@@ -1566,7 +1604,13 @@ rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& pro
     r.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
     return r;
   }
-  return Interpreter(local, options, assets, std::move(attrs), &program).run();
+  // Direct derivation first; where it could not be exact, the engine's own order.
+  {
+    Interpreter fast(local, options, assets, attrs, &program, true);
+    rt::DeriveResult result = fast.run();
+    if (!fast.needsExactRun()) return result;
+  }
+  return Interpreter(local, options, assets, std::move(attrs), &program, false).run();
 }
 
 }  // namespace fgsg::backend
@@ -1607,6 +1651,28 @@ void fgsg_rt_push(FgsgContext* ctx) noexcept {
 void fgsg_rt_pop(FgsgContext* ctx, uint32_t op) noexcept {
   auto& call = *static_cast<NativeCall*>(ctx);
   call.guard([&] { call.engine->nativePop(call, op); });
+}
+
+void fgsg_rt_direct_translate(FgsgContext* ctx, void* scope, double x, double y, double z) noexcept {
+  static_cast<NativeCall*>(ctx)->engine->directTranslate(*static_cast<fgsg::rt::Scope*>(scope), x, y, z);
+}
+
+void fgsg_rt_direct_turn(FgsgContext* ctx, void* scope, uint32_t axis, double degrees) noexcept {
+  static_cast<NativeCall*>(ctx)->engine->directTurn(*static_cast<fgsg::rt::Scope*>(scope), axis, degrees);
+}
+
+void fgsg_rt_direct_rotate_normal(FgsgContext*, void* scope, double degrees) noexcept {
+  fgsg::rt::rotateAboutNormal(*static_cast<fgsg::rt::Scope*>(scope), fgsg::rt::Vec3::UnitZ(), degrees);
+}
+
+void fgsg_rt_direct_scale(FgsgContext*, void* scope, const double* sizes, uint32_t relative) noexcept {
+  auto& s = *static_cast<fgsg::rt::Scope*>(scope);
+  for (int k = 0; k < 3; ++k) s.S[k] = (relative >> k) & 1 ? sizes[k] * s.S[k] : sizes[k];
+}
+
+void fgsg_rt_check_time(FgsgContext* ctx) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] { call.engine->directTimeCheck(); });
 }
 
 }  // extern "C"

@@ -8,6 +8,8 @@ double fgsg_rt_rand(FgsgContext* ctx, double lo, double hi) noexcept {
   return fgsg_rt_rand_scale(lo, hi, ctx->rng->next());
 }
 
+double fgsg_rt_next(FgsgContext* ctx) noexcept { return ctx->rng->next(); }
+
 void fgsg_rt_error(FgsgContext* ctx, int32_t code, int32_t line, int32_t col) noexcept {
   if (ctx->errorCode != FGSG_OK) return;  // the first error is the one reported
   ctx->errorCode = code;
