@@ -1,0 +1,186 @@
+// Whole grammars through the JIT (deriveCompiled) against the interpreter: the same
+// instances bit for bit, the same statistics and the same messages, also where direct
+// derivation must give way to the engine's own order (limits, errors); the object
+// cache; a program that does not belong to the grammar.
+#include "backend/interp/interpreter.h"
+#include "backend/jit/jit.h"
+#include "backend/jit/object_cache.h"
+#include "frontend/diagnostics.h"
+#include "ir/pipeline.h"
+#include "ir/program_layout.h"
+#include "runtime/abi.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace {
+
+using namespace fgsg;
+
+ir::Module compile(const std::string& text) {
+  auto file = frontend::SourceFile::make("test.fgsg", text);
+  frontend::Diagnostics diags(&file);
+  ir::Module m;
+  if (!ir::compileSource(file, m, diags)) {
+    diags.print(std::cerr);
+    FAIL("the test grammar does not compile");
+  }
+  return m;
+}
+
+const backend::jit::ObjectCache kNoCache{std::string()};
+
+void requireSame(const rt::DeriveResult& a, const rt::DeriveResult& b) {
+  REQUIRE(a.ok == b.ok);
+  REQUIRE(a.messages.size() == b.messages.size());
+  for (size_t i = 0; i < a.messages.size(); ++i) {
+    CHECK(a.messages[i].code == b.messages[i].code);
+    CHECK(a.messages[i].line == b.messages[i].line);
+    CHECK(a.messages[i].message == b.messages[i].message);
+  }
+  CHECK(a.stats.shapesCreated == b.stats.shapesCreated);
+  CHECK(a.stats.rewrites == b.stats.rewrites);
+  CHECK(a.stats.terminals == b.stats.terminals);
+  REQUIRE(a.instances.instances.size() == b.instances.instances.size());
+  for (size_t i = 0; i < a.instances.instances.size(); ++i) {
+    CHECK(a.instances.instances[i].transform == b.instances.instances[i].transform);
+    CHECK(a.instances.instances[i].asset == b.instances.instances[i].asset);
+  }
+  CHECK(a.instances.params == b.instances.params);
+}
+
+// Derives `text` both ways with `options`; returns the interpreter's result.
+rt::DeriveResult bothEngines(const std::string& text, const rt::DeriveOptions& options = {}) {
+  const ir::Module m = compile(text);
+  backend::jit::Jit jit;
+  const auto code = jit.compileProgram(m, text, kNoCache);
+  rt::AssetLibrary assets;
+  rt::DeriveResult interp = backend::interpret(m, options, assets);
+  rt::DeriveResult jitted = backend::deriveCompiled(m, code.program(), options, assets);
+  requireSame(interp, jitted);
+  return interp;
+}
+
+// Direct symbols (A, B) feeding symbols that place instances, with random weights.
+const char* kMixed = R"(
+  attr depth = 9;
+  Axiom ~> A(0) T(3, 0, 0) Tree(0);
+  A(n) : n < depth ~> [ Rz(Rand(20, 40)) T(0.5, 0, 0) A(n + 1) ] [ Rz(-50) T(0.5, 0, 0) A(n + 1) ] B(n + 1) : 0.9
+                   ~> [ Rz(-30) S(1r, 0.5r, 1r) T(0.4, 0, 0) A(n + 2) ] : 0.1;
+  A(n) ~> Leaf;
+  B(n) ~> R(10, 20, 30) A(n + 1);
+  Tree(n) : n < 5 ~> [ Rz(25) T(0, 1, 0) Tree(n + 1) ] [ Rz(-25) T(0, 1, 0) Tree(n + 1) ] I("cube");
+  Tree(n) ~> S(0.3, 0.3, 0.3) I("sphere");
+)";
+
+}  // namespace
+
+TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
+  SECTION("direct symbols next to instancing ones") {
+    const auto r = bothEngines(kMixed);
+    CHECK(r.stats.shapesCreated > 1000);
+    CHECK(r.instances.instances.size() == 63);
+  }
+  SECTION("several seeds") {
+    for (uint64_t seed : {1u, 7u, 12345u}) {
+      rt::DeriveOptions o;
+      o.seed = seed;
+      bothEngines(kMixed, o);
+    }
+  }
+  SECTION("splits, components and parameters of every type") {
+    bothEngines(R"(
+      Lot ~> S(10, 8, 6) Mass("brick", (1, 2, 3), true);
+      Mass(s, v, b) : b ~> Comp("faces") { Face(2) };
+      Face(k) ~> Subdiv("X", 1r, 2, ~1) { Tile(k) | Tile(k * 2) | I("cube") };
+      Tile(k) : Scope.sx > 1 ~> Repeat("Y", 1.5) { I("cube") } : k ~> T(0, 0, 0.1) I("sphere") : 1;
+      Tile(k) ~> I("cube");
+    )");
+  }
+  SECTION("an L-system with context") {
+    bothEngines(R"(
+      derive parallel 5;
+      axiom: B(1) A A A;
+      B(x) < A -> B(x + 1) F(x);
+      A -> A [ +(20) F(1) ];
+    )");
+  }
+  SECTION("the shape limit: direct derivation gives way to the engine's order") {
+    rt::DeriveOptions o;
+    o.maxShapes = 500;
+    const auto r = bothEngines(kMixed, o);
+    REQUIRE(!r.messages.empty());
+    CHECK(r.messages.back().code == "R004");
+  }
+  SECTION("the depth limit") {
+    rt::DeriveOptions o;
+    o.maxDepth = 4;
+    const auto r = bothEngines(kMixed, o);
+    REQUIRE(!r.messages.empty());
+    CHECK(r.messages[0].code == "R004");
+  }
+  SECTION("a negative probability in a direct symbol is the interpreter's R008") {
+    const auto r = bothEngines(R"(
+      Axiom ~> I("cube") A(3);
+      A(n) ~> T(1, 0, 0) A(n - 1) : n - 4 ~> B : 1;
+      B ~> Leaf;
+    )");
+    REQUIRE(!r.ok);
+    CHECK(r.messages[0].code == "R008");
+  }
+}
+
+TEST_CASE("the program layout numbers every block and op once") {
+  const ir::Module m = compile(kMixed);
+  const ir::ProgramLayout layout = ir::layoutProgram(m);
+  CHECK(layout.blocks[0] == &m.axiom);
+  CHECK(layout.alternativeCount == 7);
+  CHECK(layout.blocks.size() == 1 + layout.alternativeCount);  // no split bodies here
+  for (uint32_t id = 0; id < layout.ops.size(); ++id) CHECK(layout.opId(*layout.ops[id]) == id);
+}
+
+TEST_CASE("the object cache answers the second compile and survives a damaged file") {
+  const auto folder = std::filesystem::temp_directory_path() / "fgsg-test-object-cache";
+  std::filesystem::remove_all(folder);
+  const backend::jit::ObjectCache cache(folder.string());
+  const ir::Module m = compile(kMixed);
+  backend::jit::Jit jit;
+  rt::AssetLibrary assets;
+  const rt::DeriveResult reference = backend::interpret(m, {}, assets);
+  {
+    const auto first = jit.compileProgram(m, kMixed, cache);
+    CHECK_FALSE(first.fromCache());
+    const auto second = jit.compileProgram(m, kMixed, cache);
+    CHECK(second.fromCache());
+    requireSame(reference, backend::deriveCompiled(m, second.program(), {}, assets));
+  }
+  // Another grammar text is another key.
+  const std::string other = std::string(kMixed) + "\n// a comment\n";
+  CHECK(backend::jit::ObjectCache::key(m, other) != backend::jit::ObjectCache::key(m, kMixed));
+  // A file cut short is a miss: the grammar is compiled again and the file replaced.
+  const auto file = folder / (backend::jit::ObjectCache::key(m, kMixed) + ".o");
+  REQUIRE(std::filesystem::exists(file));
+  std::filesystem::resize_file(file, 100);
+  const auto again = jit.compileProgram(m, kMixed, cache);
+  CHECK_FALSE(again.fromCache());
+  requireSame(reference, backend::deriveCompiled(m, again.program(), {}, assets));
+  CHECK(std::filesystem::file_size(file) > 100);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("a program compiled from another grammar is refused") {
+  const ir::Module m = compile(kMixed);
+  const std::string otherText = "Axiom ~> A; A ~> I(\"cube\");";
+  const ir::Module other = compile(otherText);
+  backend::jit::Jit jit;
+  const auto code = jit.compileProgram(other, otherText, kNoCache);
+  rt::AssetLibrary assets;
+  const rt::DeriveResult r = backend::deriveCompiled(m, code.program(), {}, assets);
+  REQUIRE_FALSE(r.ok);
+  CHECK(r.messages[0].code == "R900");
+  CHECK_THAT(r.messages[0].message, Catch::Contains("does not match this grammar"));
+}
