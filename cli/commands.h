@@ -14,5 +14,6 @@ int checkCommand(const Args& args);  // fgsg check FILE
 int irCommand(const Args& args);     // fgsg ir FILE
 int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
 int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
+int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
 
 }  // namespace fgsg::cli

@@ -17,6 +17,8 @@ usage:
   fgsg ir FILE             print the typed IR after constant folding
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg repl                build a grammar interactively (:help inside; a script on stdin)
+  fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]
+                           compile to a shared library and its C header NAME.h
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -26,6 +28,9 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --repair-surface   repair what can be repaired in the surface mesh instead of failing
   --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
                      (default: closest to the centre of the surface's bounding box)
+compile writes lib + FILE's stem + .so when -o is not given, and NAME.h beside the
+library (or in --header DIR); the library runs through the C API of libfgsg.so with
+the same results as fgsg run (docs/cli.md).
 Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
 Documentation: docs/language.md, docs/cli.md.
 )";
@@ -49,6 +54,7 @@ int main(int argc, char** argv) {
   if (cmd == "ir") return fgsg::cli::irCommand(args);
   if (cmd == "synth") return fgsg::cli::synthCommand(args);
   if (cmd == "repl") return fgsg::cli::replCommand(args);
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl; see fgsg --help)\n";
+  if (cmd == "compile") return fgsg::cli::compileCommand(args);
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile; see fgsg --help)\n";
   return 2;
 }

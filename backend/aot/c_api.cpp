@@ -1,0 +1,457 @@
+// The C API of libfgsg.so (backend/aot/fgsg_api.h): a compiled grammar library's
+// program run by the engine, with the options and outputs of `fgsg run`. Every entry
+// point catches everything: no C++ exception crosses into C. Generators share no
+// mutable state, so several can derive at once in different threads.
+#include "backend/aot/fgsg_api.h"
+
+#include "backend/interp/interpreter.h"
+#include "frontend/diagnostics.h"
+#include "ir/pipeline.h"
+#include "runtime/abi.h"
+#include "runtime/assemble.h"
+#include "runtime/io/write_mesh.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace {
+
+// Every runtime entry point generated code may call (runtime/abi.def), referenced once
+// so that the linker takes them all from the static libraries into libfgsg.so, where
+// the version script exports them to compiled grammar libraries.
+#define FGSG_RT_FN(name, ret, ...) reinterpret_cast<const void*>(&name),
+[[maybe_unused]] __attribute__((used)) const void* const kRuntimeEntryPoints[] = {
+#include "runtime/abi.def"
+};
+
+}  // namespace
+
+using namespace fgsg;
+
+struct fgsg_generator {
+  const FgsgProgram* program = nullptr;
+  std::string unusable;  // why the program cannot be used; empty when it can
+  std::string lastError;
+  std::string compileWarnings;
+  std::string warnings;  // compileWarnings + those of the last generate
+
+  frontend::SourceFile source;
+  ir::Module module;
+  rt::DeriveOptions options;
+  std::vector<std::string> extraAssetDirs;  // "asset-dir" options, in order
+
+  // The last generation.
+  std::unique_ptr<rt::AssetLibrary> assets;
+  bool hasResult = false;
+  rt::DeriveResult result;
+  rt::Mesh mesh;
+  std::vector<double> transforms;
+  std::vector<uint32_t> instanceAssets;
+};
+
+namespace {
+
+const char* const kNullGenerator = "fgsg: no generator (NULL)";
+
+// Compiles the program's grammar text into g->module; false with the diagnostics in
+// g->unusable. The ANTLR runtime's parser caches (ATN, DFA, prediction contexts) are
+// static members shared by every parser and the 4.9 runtime does not promise that they
+// may be updated from two threads at once, so compilations take turns; derivations,
+// the expensive part, run concurrently.
+bool compileProgramSource(fgsg_generator* g) {
+  const FgsgProgram* p = g->program;
+  const std::string name = p->sourceName && *p->sourceName ? p->sourceName : "<compiled grammar>";
+  g->source = frontend::SourceFile::make(name, p->source);
+  frontend::Diagnostics diags(&g->source);
+  bool ok;
+  {
+    static std::mutex frontendMutex;
+    std::lock_guard<std::mutex> lock(frontendMutex);
+    ok = ir::compileSource(g->source, g->module, diags);
+  }
+  std::string errors;
+  std::string* to = &errors;  // a note goes with the diagnostic before it
+  for (const auto& d : diags.all()) {
+    if (d.severity != frontend::Severity::Note)
+      to = d.severity == frontend::Severity::Warning ? &g->compileWarnings : &errors;
+    *to += diags.format(d) + "\n";
+  }
+  if (!ok) {
+    g->unusable = errors.empty() ? name + ": the grammar does not compile\n" : errors;
+    g->unusable += std::to_string(diags.errorCount()) + " error" + (diags.errorCount() == 1 ? "" : "s") +
+                   " in " + name;
+    return false;
+  }
+  g->warnings = g->compileWarnings;
+  return true;
+}
+
+// Runs `body` for a usable generator: sets lastError from its outcome and turns every
+// exception into a failure.
+template <class F>
+int guarded(fgsg_generator* g, F&& body) noexcept {
+  if (!g) return 1;
+  const char* failure = nullptr;
+  std::string what;
+  try {
+    if (!g->unusable.empty()) {
+      g->lastError = g->unusable;
+      return 1;
+    }
+    std::string error;
+    if (!body(error)) {
+      g->lastError = error.empty() ? "fgsg: failed" : error;
+      return 1;
+    }
+    g->lastError.clear();
+    return 0;
+  } catch (const std::bad_alloc&) {
+    failure = "fgsg: out of memory";
+  } catch (const std::exception& e) {
+    failure = "fgsg: internal error: ";
+    try {
+      what = e.what();
+    } catch (...) {
+    }
+  } catch (...) {
+    failure = "fgsg: internal error";
+  }
+  try {
+    g->lastError = failure + what;
+  } catch (...) {
+    g->lastError.clear();  // no memory left even for the message
+  }
+  return 1;
+}
+
+bool parseUnsigned(const std::string& v, uint64_t& out) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+  if (v.empty() || v[0] == '-' || v[0] == '+' || std::isspace(static_cast<unsigned char>(v[0])) ||
+      *end != '\0' || errno == ERANGE)
+    return false;
+  out = n;
+  return true;
+}
+
+bool parseNumber(const std::string& v, double& out) {
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !std::isfinite(d)) return false;
+  out = d;
+  return true;
+}
+
+// "x,y,z": three finite numbers separated by commas, spaces allowed (as --start).
+bool parsePoint(const std::string& v, double out[3]) {
+  size_t from = 0;
+  double p[3];
+  for (int k = 0; k < 3; ++k) {
+    const size_t comma = v.find(',', from);
+    if ((k < 2) != (comma != std::string::npos)) return false;
+    std::string part = v.substr(from, k < 2 ? comma - from : std::string::npos);
+    const size_t first = part.find_first_not_of(" \t");
+    const size_t last = part.find_last_not_of(" \t");
+    if (first == std::string::npos) return false;
+    part = part.substr(first, last - first + 1);
+    if (!parseNumber(part, p[k])) return false;
+    from = comma + 1;
+  }
+  for (int k = 0; k < 3; ++k) out[k] = p[k];
+  return true;
+}
+
+bool parseSwitch(const char* value, bool& out) {
+  if (!value || !*value || std::strcmp(value, "1") == 0) {
+    out = true;
+    return true;
+  }
+  if (std::strcmp(value, "0") == 0) {
+    out = false;
+    return true;
+  }
+  return false;
+}
+
+void clearResult(fgsg_generator* g) {
+  g->hasResult = false;
+  g->result = rt::DeriveResult{};
+  g->mesh = rt::Mesh{};
+  g->transforms.clear();
+  g->instanceAssets.clear();
+  g->assets.reset();
+  g->warnings = g->compileWarnings;
+}
+
+bool generate(fgsg_generator* g, std::string& error) {
+  clearResult(g);
+  rt::DeriveOptions opt = g->options;
+  if (!g->module.surface.present && opt.surfaceOverride.empty() &&
+      (opt.hasStart || opt.repairSurface || opt.surfaceSize > 0)) {
+    error = std::string("fgsg: option ") +
+            (opt.hasStart ? "start" : opt.repairSurface ? "repair-surface" : "surface-size") +
+            " needs a surface: " + g->source.name +
+            " declares none (it grows on the plane) and no surface is set";
+    return false;
+  }
+
+  // As fgsg run: the grammar's folder and its assets/ folder, then the added folders.
+  const auto grammarDir = std::filesystem::path(g->source.name).parent_path();
+  auto assets = std::make_unique<rt::AssetLibrary>();
+  std::vector<std::string> dirs = {(grammarDir.empty() ? std::filesystem::path(".") : grammarDir).string(),
+                                   (grammarDir / "assets").string()};
+  dirs.insert(dirs.end(), g->extraAssetDirs.begin(), g->extraAssetDirs.end());
+  for (const auto& dir : dirs) {
+    assets->addSearchDir(dir);
+    opt.assetDirs.push_back(dir);
+  }
+
+  rt::DeriveResult result = backend::deriveCompiled(g->module, *g->program, opt, *assets);
+  frontend::Diagnostics diags(&g->source);
+  std::string warnings;
+  for (const auto& m : result.messages) {
+    frontend::SourceRange at{{m.line, m.col}, {m.line, m.col}};
+    if (m.isError)
+      diags.error(m.code, at, m.message);
+    else
+      diags.warning(m.code, at, m.message);
+  }
+  for (const auto& d : diags.all()) {
+    if (d.severity == frontend::Severity::Warning) warnings += diags.format(d) + "\n";
+  }
+  g->warnings += warnings;
+  if (diags.hasErrors() || !result.ok) {
+    // Every message, errors and warnings in the order reported, as fgsg run prints them.
+    for (const auto& d : diags.all()) error += (error.empty() ? "" : "\n") + diags.format(d);
+    if (error.empty()) error = "fgsg: the derivation failed";
+    return false;
+  }
+
+  std::vector<int> meshOf;
+  if (!rt::resolveAssets(result.instances, *assets, meshOf, error)) {
+    error = "fgsg: " + error;
+    return false;
+  }
+  g->mesh = rt::assembleInstances(result.instances, *assets, meshOf);
+  const auto& list = result.instances.instances;
+  g->transforms.reserve(16 * list.size());
+  g->instanceAssets.reserve(list.size());
+  for (const auto& inst : list) {
+    g->transforms.insert(g->transforms.end(), inst.transform.begin(), inst.transform.end());
+    g->instanceAssets.push_back(inst.asset);
+  }
+  g->result = std::move(result);
+  g->assets = std::move(assets);
+  g->hasResult = true;
+  return true;
+}
+
+template <class T>
+const T* dataOrNull(const std::vector<T>& v) {
+  return v.empty() ? nullptr : v.data();
+}
+
+}  // namespace
+
+extern "C" {
+
+FGSG_API fgsg_generator* fgsg_generator_create(const struct FgsgProgram* program) {
+  fgsg_generator* g = nullptr;
+  try {
+    g = new fgsg_generator;
+    g->program = program;
+    if (!program) {
+      g->unusable = "fgsg: no program (NULL)";
+    } else if (program->abiVersion != FGSG_ABI_VERSION) {
+      g->unusable = "fgsg: the program was compiled for ABI version " +
+                    std::to_string(program->abiVersion) + ", this libfgsg runs version " +
+                    std::to_string(FGSG_ABI_VERSION) + ": compile the grammar again with this fgsg";
+    } else if (!program->source) {
+      g->unusable = "fgsg: the program carries no grammar text (not built by fgsg compile?)";
+    } else {
+      compileProgramSource(g);
+    }
+    g->lastError = g->unusable;
+    return g;
+  } catch (...) {
+    // Out of memory (or worse): without a generator there is nowhere to say why.
+    delete g;
+    return nullptr;
+  }
+}
+
+FGSG_API void fgsg_generator_free(fgsg_generator* g) {
+  try {
+    delete g;
+  } catch (...) {
+  }
+}
+
+FGSG_API const char* fgsg_last_error(const fgsg_generator* g) {
+  return g ? g->lastError.c_str() : kNullGenerator;
+}
+
+FGSG_API const char* fgsg_warnings(const fgsg_generator* g) { return g ? g->warnings.c_str() : ""; }
+
+FGSG_API int fgsg_set_seed(fgsg_generator* g, uint64_t seed) {
+  return guarded(g, [&](std::string&) {
+    g->options.seed = seed;
+    return true;
+  });
+}
+
+FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char* value) {
+  return guarded(g, [&](std::string& error) {
+    if (!name || !*name) {
+      error = "fgsg_set_attribute: no attribute name given";
+      return false;
+    }
+    if (!value) {
+      error = std::string("fgsg_set_attribute ") + name + ": no value given (NULL)";
+      return false;
+    }
+    // Kept in order like repeated --set flags: the engine checks them, the last one wins.
+    g->options.attrOverrides.push_back({name, value});
+    return true;
+  });
+}
+
+FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path) {
+  return guarded(g, [&](std::string& error) {
+    if (!mesh_path || !*mesh_path) {
+      g->options.surfaceOverride.clear();
+      return true;
+    }
+    // Relative to the working directory, not to the grammar's folder (as fgsg run).
+    std::error_code ec;
+    const std::filesystem::path surface = std::filesystem::absolute(mesh_path, ec);
+    if (ec || !std::filesystem::is_regular_file(surface, ec)) {
+      error = std::string("fgsg_set_surface ") + mesh_path +
+              (std::filesystem::is_directory(surface, ec) ? ": is a directory, not a mesh file"
+                                                          : ": no such file");
+      return false;
+    }
+    g->options.surfaceOverride = surface.lexically_normal().string();
+    return true;
+  });
+}
+
+FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* value) {
+  return guarded(g, [&](std::string& error) {
+    const std::string n = name ? name : "";
+    const std::string v = value ? value : "";
+    auto bad = [&](const std::string& expected) {
+      error = "fgsg_set_option " + n + ": expected " + expected + ", got " +
+              (value ? "'" + v + "'" : std::string("NULL"));
+      return false;
+    };
+    rt::DeriveOptions& o = g->options;
+    if (n == "collide-all" || n == "repair-surface") {
+      bool on;
+      if (!parseSwitch(value, on)) return bad("NULL, \"\", \"1\" or \"0\"");
+      (n == "collide-all" ? o.collideAll : o.repairSurface) = on;
+    } else if (n == "surface-size") {
+      double s;
+      if (!parseNumber(v, s) || !(s > 0)) return bad("a positive number");
+      o.surfaceSize = s;
+    } else if (n == "start") {
+      if (!parsePoint(v, o.start)) return bad("a point x,y,z (three numbers separated by commas)");
+      o.hasStart = true;
+    } else if (n == "max-shapes") {
+      uint64_t m;
+      if (!parseUnsigned(v, m)) return bad("a whole number >= 0");
+      o.maxShapes = m;
+    } else if (n == "max-depth") {
+      uint64_t m;
+      if (!parseUnsigned(v, m) || m > std::numeric_limits<uint32_t>::max())
+        return bad("a whole number from 0 to 4294967295");
+      o.maxDepth = static_cast<uint32_t>(m);
+    } else if (n == "max-seconds") {
+      double s;
+      if (!parseNumber(v, s) || !(s > 0)) return bad("a positive number of seconds");
+      o.maxSeconds = s;
+    } else if (n == "asset-dir") {
+      if (v.empty()) return bad("a folder name");
+      g->extraAssetDirs.push_back(v);
+    } else {
+      error = "fgsg_set_option: unknown option " + (name ? "'" + n + "'" : std::string("NULL")) +
+              " (collide-all, repair-surface, surface-size, start, max-shapes, max-depth, "
+              "max-seconds, asset-dir)";
+      return false;
+    }
+    return true;
+  });
+}
+
+FGSG_API int fgsg_generate(fgsg_generator* g) {
+  const int rc = guarded(g, [&](std::string& error) { return generate(g, error); });
+  if (rc != 0 && g && g->unusable.empty()) {
+    try {
+      const std::string warnings = g->warnings;
+      clearResult(g);
+      g->warnings = warnings;
+    } catch (...) {
+    }
+  }
+  return rc;
+}
+
+FGSG_API size_t fgsg_vertex_count(const fgsg_generator* g) { return g ? g->mesh.vertexCount() : 0; }
+FGSG_API const float* fgsg_positions(const fgsg_generator* g) {
+  return g ? dataOrNull(g->mesh.positions) : nullptr;
+}
+FGSG_API const float* fgsg_normals(const fgsg_generator* g) {
+  return g ? dataOrNull(g->mesh.normals) : nullptr;
+}
+FGSG_API const float* fgsg_colors(const fgsg_generator* g) {
+  return g ? dataOrNull(g->mesh.colors) : nullptr;
+}
+FGSG_API size_t fgsg_index_count(const fgsg_generator* g) { return g ? g->mesh.indices.size() : 0; }
+FGSG_API const uint32_t* fgsg_indices(const fgsg_generator* g) {
+  return g ? dataOrNull(g->mesh.indices) : nullptr;
+}
+
+FGSG_API size_t fgsg_instance_count(const fgsg_generator* g) {
+  return g ? g->instanceAssets.size() : 0;
+}
+FGSG_API const double* fgsg_instance_transforms(const fgsg_generator* g) {
+  return g ? dataOrNull(g->transforms) : nullptr;
+}
+FGSG_API const uint32_t* fgsg_instance_assets(const fgsg_generator* g) {
+  return g ? dataOrNull(g->instanceAssets) : nullptr;
+}
+FGSG_API const char* fgsg_asset_name(const fgsg_generator* g, uint32_t asset) {
+  if (!g || !g->hasResult || asset >= g->result.instances.assets.size()) return nullptr;
+  return g->result.instances.assets[asset].c_str();
+}
+
+FGSG_API int fgsg_write(fgsg_generator* g, const char* path) {
+  return guarded(g, [&](std::string& error) {
+    if (!path || !*path) {
+      error = "fgsg_write: no file name given";
+      return false;
+    }
+    if (!g->hasResult) {
+      error = std::string("fgsg_write ") + path + ": nothing generated yet (call fgsg_generate first)";
+      return false;
+    }
+    if (!rt::io::writeMesh(g->mesh, path, error)) {
+      error = "fgsg_write: " + error;
+      return false;
+    }
+    return true;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,109 @@
+/* fgsg C API: run a grammar compiled ahead of time (`fgsg compile`) from C or any
+ * language with a C FFI. Link with -lfgsg (libfgsg.so); the compiled grammar library
+ * (libNAME.so, header NAME.h) provides the program constant.
+ *
+ *   fgsg_generator* g = NAME_create();         // or fgsg_generator_create(&fgsg_program_NAME)
+ *   fgsg_set_seed(g, 7);
+ *   if (fgsg_generate(g) != 0) fprintf(stderr, "%s\n", fgsg_last_error(g));
+ *   ... fgsg_positions(g), fgsg_indices(g) ...  or  fgsg_write(g, "out.glb");
+ *   fgsg_generator_free(g);
+ *
+ * Every function that can fail returns 0 on success and nonzero on failure; then
+ * fgsg_last_error says why. Generators share no mutable state: several may run at
+ * once in different threads (one generator must not be used by two threads at once).
+ * Results are exactly those of `fgsg run` with the same seed and options. */
+#ifndef FGSG_API_H
+#define FGSG_API_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__)
+#define FGSG_API __attribute__((visibility("default")))
+#else
+#define FGSG_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The compiled grammar: a constant exported by a library built with `fgsg compile`. */
+struct FgsgProgram;
+
+/* One grammar with its options and the result of its last generation. */
+typedef struct fgsg_generator fgsg_generator;
+
+/* A generator for `program`. Returns NULL only when out of memory. When the program
+ * cannot be used (built for another ABI version, its grammar text does not compile)
+ * the generator is still returned, every later call on it fails, and fgsg_last_error
+ * says why. */
+FGSG_API fgsg_generator* fgsg_generator_create(const struct FgsgProgram* program);
+
+/* Releases the generator and its results. NULL is ignored. */
+FGSG_API void fgsg_generator_free(fgsg_generator* g);
+
+/* Why the last call on `g` failed; "" after a call that succeeded. Never NULL. Valid
+ * until the next call on `g`. */
+FGSG_API const char* fgsg_last_error(const fgsg_generator* g);
+
+/* The warnings of the grammar's compilation and of the last fgsg_generate, formatted
+ * like `fgsg run` prints them (file:line:col: warning[CODE]: message, the source line,
+ * a caret); "" when none. */
+FGSG_API const char* fgsg_warnings(const fgsg_generator* g);
+
+/* The random seed (as `fgsg run --seed`; default 1). */
+FGSG_API int fgsg_set_seed(fgsg_generator* g, uint64_t seed);
+
+/* Overrides a grammar attribute (as `fgsg run --set name=value`). The name and value
+ * are checked against the grammar when generating, as the CLI does. */
+FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char* value);
+
+/* Grows on this mesh file instead of the grammar's surface (as `fgsg run --surface`;
+ * relative paths are relative to the current directory). The file must exist. NULL or
+ * "" goes back to the grammar's own surface. */
+FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path);
+
+/* An option named as the `fgsg run` flag without its dashes:
+ *   "collide-all", "repair-surface"   value NULL, "" or "1" (on), "0" (off)
+ *   "surface-size"                    a positive number
+ *   "start"                           "x,y,z"
+ *   "max-shapes", "max-depth"         a whole number >= 0
+ *   "max-seconds"                     a positive number
+ *   "asset-dir"                       adds a folder to search for assets and data files
+ *                                     (after the grammar's folder and its assets/)
+ * An unknown name or a bad value fails and changes nothing. */
+FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* value);
+
+/* Derives the grammar and assembles its mesh. The results below stay valid until the
+ * next fgsg_generate or fgsg_generator_free. On failure the results are empty and
+ * fgsg_last_error holds the derivation's messages (file:line:col: error[CODE]: ...). */
+FGSG_API int fgsg_generate(fgsg_generator* g);
+
+/* The assembled mesh of the last successful fgsg_generate (0 / NULL before one). */
+FGSG_API size_t fgsg_vertex_count(const fgsg_generator* g);
+FGSG_API const float* fgsg_positions(const fgsg_generator* g); /* x y z per vertex */
+FGSG_API const float* fgsg_normals(const fgsg_generator* g);   /* x y z per vertex */
+FGSG_API const float* fgsg_colors(const fgsg_generator* g);    /* r g b per vertex; may be NULL */
+FGSG_API size_t fgsg_index_count(const fgsg_generator* g);     /* 3 per triangle */
+FGSG_API const uint32_t* fgsg_indices(const fgsg_generator* g);
+
+/* The instances the derivation placed: per instance 16 doubles (a column-major 4x4
+ * matrix mapping the asset's unit box [0,1]^3 into world space) and an asset index. */
+FGSG_API size_t fgsg_instance_count(const fgsg_generator* g);
+FGSG_API const double* fgsg_instance_transforms(const fgsg_generator* g);
+FGSG_API const uint32_t* fgsg_instance_assets(const fgsg_generator* g);
+/* The name of an asset index as written in the grammar ("cube", "leaf.obj"); NULL when
+ * out of range. */
+FGSG_API const char* fgsg_asset_name(const fgsg_generator* g, uint32_t asset);
+
+/* Writes the last result's mesh as `fgsg run -o path` does (the same bytes for the same
+ * seed and options); the extension picks the format: .glb, .obj or .ply. The file is
+ * replaced atomically. */
+FGSG_API int fgsg_write(fgsg_generator* g, const char* path);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FGSG_API_H */

@@ -1,0 +1,106 @@
+// fgsg compile: a grammar compiled ahead of time into a shared library libNAME.so
+// (exporting `fgsg_program_NAME`) and its C header NAME.h, to run through the C API of
+// libfgsg.so (backend/aot/fgsg_api.h) with fgsg run's results.
+#include "backend/aot/library_header.h"
+#include "backend/aot/link_library.h"
+#include "backend/codegen/program_codegen.h"
+#include "cli/commands.h"
+#include "cli/compile_file.h"
+#include "cli/options.h"
+#include "runtime/io/atomic_file.h"
+
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace fgsg::cli {
+namespace {
+
+struct CompileOptions {
+  std::string file;
+  std::string output;
+  std::string headerDir;  // empty: the library's folder
+  bool quiet = false;
+  std::string name;       // NAME of libNAME.so
+};
+
+CompileOptions parseCompileOptions(const Args& args) {
+  CompileOptions o;
+  OptionReader r(args);
+  while (!r.done()) {
+    if (r.peek().empty() || r.peek()[0] != '-') {
+      if (!o.file.empty()) throw UsageError{"more than one grammar file given ('" + o.file + "', '" + r.peek() + "')"};
+      o.file = r.next();
+      continue;
+    }
+    const std::string f = r.flag();
+    if (f == "-o" || f == "--output") o.output = r.value(f);
+    else if (f == "--header") {
+      o.headerDir = r.value(f);
+      if (o.headerDir.empty()) throw UsageError{"--header needs a folder name"};
+    } else if (f == "--quiet" || f == "-q") o.quiet = true;
+    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
+  }
+  if (o.file.empty()) throw UsageError{"no grammar file given: fgsg compile FILE -o libNAME.so"};
+  if (o.output.empty()) o.output = "lib" + std::filesystem::path(o.file).stem().string() + ".so";
+  try {
+    o.name = backend::aot::librarySymbolName(o.output);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError{"-o " + std::string(e.what())};
+  }
+  return o;
+}
+
+}  // namespace
+
+int compileCommand(const Args& args) {
+  CompileOptions opt;
+  try {
+    opt = parseCompileOptions(args);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg compile: " << e.message << "\n";
+    return 2;
+  }
+  // Found first: without libfgsg.so there is nothing to link against.
+  std::string error;
+  const std::string libDir = backend::aot::findRuntimeLibraryDir(error);
+  if (libDir.empty()) {
+    std::cerr << "fgsg compile: " << error << "\n";
+    return 1;
+  }
+
+  auto compiled = compileFile(opt.file, !opt.quiet);
+  if (!compiled) return 1;
+
+  backend::codegen::ProgramCodegenOptions codegen;
+  codegen.tableSymbol = "fgsg_program_" + opt.name;
+  codegen.embedSource = true;
+  codegen.source = compiled->source.text;
+  codegen.sourceName = opt.file;  // as fgsg run names it: diagnostics, the asset folders
+  std::string object;
+  try {
+    object = backend::codegen::compileProgramObject(compiled->module, codegen,
+                                                    backend::codegen::CpuTarget::Generic);
+  } catch (const std::exception& e) {
+    std::cerr << "fgsg compile: " << opt.file << ": " << e.what() << "\n";
+    return 1;
+  }
+
+  if (!backend::aot::linkSharedLibrary(object, opt.output, libDir, error)) {
+    std::cerr << "fgsg compile: " << error << "\n";
+    return 1;
+  }
+  const std::filesystem::path headerDir =
+      !opt.headerDir.empty() ? std::filesystem::path(opt.headerDir)
+                             : std::filesystem::path(opt.output).parent_path();
+  const std::string header = (headerDir / (opt.name + ".h")).string();
+  if (!rt::io::writeFileAtomically(header, backend::aot::libraryHeader(opt.name), error)) {
+    std::cerr << "fgsg compile: " << error << "\n";
+    return 1;
+  }
+  if (!opt.quiet) std::cerr << "wrote " << opt.output << " and " << header << "\n";
+  return 0;
+}
+
+}  // namespace fgsg::cli

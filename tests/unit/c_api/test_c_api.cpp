@@ -1,0 +1,337 @@
+// The C API of libfgsg.so (backend/aot/fgsg_api.h), linked as a user links it. The
+// error paths use hand-made programs; the rest a grammar compiled with `fgsg compile`
+// at test time (so these tests need the fgsg executable and a C compiler).
+#include "backend/aot/fgsg_api.h"
+#include "runtime/abi.h"  // struct FgsgProgram, FGSG_ABI_VERSION
+
+#include <catch2/catch.hpp>
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kSimpleGrammar = "attr height = 3;\nAxiom ~> S(1, height, 1) I(\"cube\");\n";
+
+// A program with the grammar's text and no compiled code: enough for everything before
+// fgsg_generate.
+FgsgProgram textOnlyProgram(const char* source, const char* sourceName = "simple.fgsg",
+                            uint32_t abiVersion = FGSG_ABI_VERSION) {
+  FgsgProgram p{};
+  p.abiVersion = abiVersion;
+  p.source = source;
+  p.sourceName = sourceName;
+  return p;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A scratch folder for this test process, removed at exit.
+const fs::path& scratchDir() {
+  struct Dir {
+    fs::path path;
+    Dir() {
+      std::string tmpl = (fs::temp_directory_path() / "fgsg-c-api-XXXXXX").string();
+      if (!::mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+      path = tmpl;
+    }
+    ~Dir() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static Dir dir;
+  return dir.path;
+}
+
+int runProgram(const std::vector<std::string>& args, const fs::path& log) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  pid_t pid;
+  const int rc = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) return -1;
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// examples/stem_leaf.fgsg compiled once per test process with `fgsg compile` (the
+// absolute path as its source name, so its asset folders do not depend on the cwd).
+const FgsgProgram& stemLeafProgram() {
+  static const FgsgProgram* program = [] {
+    const fs::path lib = scratchDir() / "libstem_leaf.so";
+    const fs::path log = scratchDir() / "compile.log";
+    const int rc = runProgram({FGSG_EXE, "compile", FGSG_SOURCE_DIR "/examples/stem_leaf.fgsg", "-o",
+                               lib.string(), "--quiet"},
+                              log);
+    if (rc != 0) FAIL("fgsg compile failed (exit " << rc << "):\n" << readFile(log));
+    void* handle = ::dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) FAIL("dlopen: " << ::dlerror());
+    auto* p = static_cast<const FgsgProgram*>(::dlsym(handle, "fgsg_program_stem_leaf"));
+    if (!p) FAIL("no fgsg_program_stem_leaf in " << lib);
+    return p;
+  }();
+  return *program;
+}
+
+struct Generator {
+  fgsg_generator* g;
+  explicit Generator(const FgsgProgram* p) : g(fgsg_generator_create(p)) { REQUIRE(g != nullptr); }
+  ~Generator() { fgsg_generator_free(g); }
+  operator fgsg_generator*() const { return g; }
+  std::string error() const { return fgsg_last_error(g); }
+};
+
+// The mesh of one generation with `seed`, as the bytes fgsg_write gives for a .ply.
+std::string generateBytes(fgsg_generator* g, uint64_t seed, const std::string& fileName) {
+  if (fgsg_set_seed(g, seed) != 0 || fgsg_generate(g) != 0) return "error: " + std::string(fgsg_last_error(g));
+  const fs::path out = scratchDir() / fileName;
+  if (fgsg_write(g, out.c_str()) != 0) return "error: " + std::string(fgsg_last_error(g));
+  std::string bytes = readFile(out);
+  // The arrays as well, so that the accessors are covered too.
+  bytes.append(reinterpret_cast<const char*>(fgsg_positions(g)), fgsg_vertex_count(g) * 3 * sizeof(float));
+  bytes.append(reinterpret_cast<const char*>(fgsg_indices(g)), fgsg_index_count(g) * sizeof(uint32_t));
+  bytes.append(reinterpret_cast<const char*>(fgsg_instance_transforms(g)),
+               fgsg_instance_count(g) * 16 * sizeof(double));
+  return bytes;
+}
+
+}  // namespace
+
+TEST_CASE("a NULL generator or program fails cleanly", "[c_api]") {
+  CHECK(std::string(fgsg_last_error(nullptr)).size() > 0);
+  CHECK(std::string(fgsg_warnings(nullptr)).empty());
+  CHECK(fgsg_set_seed(nullptr, 1) != 0);
+  CHECK(fgsg_generate(nullptr) != 0);
+  CHECK(fgsg_write(nullptr, "x.glb") != 0);
+  CHECK(fgsg_vertex_count(nullptr) == 0);
+  CHECK(fgsg_positions(nullptr) == nullptr);
+  CHECK(fgsg_asset_name(nullptr, 0) == nullptr);
+  fgsg_generator_free(nullptr);
+
+  Generator g(nullptr);
+  CHECK_THAT(g.error(), Catch::Contains("no program"));
+  CHECK(fgsg_generate(g) != 0);
+}
+
+TEST_CASE("a program built for another ABI version is refused, and every call says so", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(kSimpleGrammar, "simple.fgsg", FGSG_ABI_VERSION + 1);
+  Generator g(&p);
+  const std::string why = g.error();
+  CHECK_THAT(why, Catch::Contains("ABI version " + std::to_string(FGSG_ABI_VERSION + 1)));
+  CHECK(fgsg_set_seed(g, 3) != 0);
+  CHECK(fgsg_set_option(g, "collide-all", nullptr) != 0);
+  CHECK(fgsg_generate(g) != 0);
+  CHECK(g.error() == why);
+  CHECK(fgsg_vertex_count(g) == 0);
+  CHECK(fgsg_write(g, (scratchDir() / "never.glb").c_str()) != 0);
+  CHECK_FALSE(fs::exists(scratchDir() / "never.glb"));
+}
+
+TEST_CASE("a program whose grammar text does not compile reports its diagnostics", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram("Axiom ~> S(1, 2 I(\"cube\");\n", "broken.fgsg");
+  Generator g(&p);
+  CHECK_THAT(g.error(), Catch::Contains("broken.fgsg:1:"));
+  CHECK_THAT(g.error(), Catch::Contains("error["));
+  CHECK(fgsg_generate(g) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("broken.fgsg:1:"));
+}
+
+TEST_CASE("the grammar's compile warnings are in fgsg_warnings, not errors", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram("Axiom ~> I(\"cube\");\nUnused ~> I(\"cube\");\n", "warn.fgsg");
+  Generator g(&p);
+  CHECK(g.error().empty());
+  CHECK_THAT(fgsg_warnings(g), Catch::Contains("warn.fgsg:2:1: warning[W002]"));
+  CHECK(fgsg_set_seed(g, 2) == 0);
+}
+
+TEST_CASE("fgsg_set_option: unknown names and bad values fail with a message and change nothing", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(kSimpleGrammar);
+  Generator g(&p);
+  REQUIRE(g.error().empty());
+
+  CHECK(fgsg_set_option(g, "bogus", "1") != 0);
+  CHECK_THAT(g.error(), Catch::Contains("unknown option 'bogus'"));
+  CHECK(fgsg_set_option(g, nullptr, "1") != 0);
+  CHECK_THAT(g.error(), Catch::Contains("unknown option NULL"));
+  CHECK(fgsg_set_option(g, "--max-shapes", "3") != 0);  // names come without dashes
+
+  const std::pair<const char*, const char*> bad[] = {
+      {"collide-all", "yes"},   {"repair-surface", "2"}, {"surface-size", "0"},
+      {"surface-size", "-1"},   {"surface-size", "big"}, {"surface-size", "inf"},
+      {"start", "1,2"},         {"start", "1,2,3,4"},    {"start", "a,b,c"},
+      {"start", nullptr},       {"max-shapes", "-3"},    {"max-shapes", "1e3"},
+      {"max-shapes", ""},       {"max-depth", "4294967296"}, {"max-seconds", "0"},
+      {"max-seconds", "abc"},   {"asset-dir", ""},       {"asset-dir", nullptr}};
+  for (const auto& [name, value] : bad) {
+    INFO(name << " = " << (value ? value : "NULL"));
+    CHECK(fgsg_set_option(g, name, value) != 0);
+    CHECK_THAT(g.error(), Catch::Contains(std::string("fgsg_set_option ") + name + ": expected"));
+  }
+
+  const std::pair<const char*, const char*> good[] = {
+      {"collide-all", nullptr}, {"collide-all", ""},    {"collide-all", "1"},  {"collide-all", "0"},
+      {"repair-surface", "1"},  {"surface-size", "8"},  {"start", "0, 0.5 ,-1"},
+      {"max-shapes", "1000"},   {"max-depth", "50"},    {"max-seconds", "2.5"},
+      {"asset-dir", "/tmp"}};
+  for (const auto& [name, value] : good) {
+    INFO(name << " = " << (value ? value : "NULL"));
+    CHECK(fgsg_set_option(g, name, value) == 0);
+    CHECK(g.error().empty());
+  }
+}
+
+TEST_CASE("attribute, surface and write errors", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(kSimpleGrammar);
+  Generator g(&p);
+  CHECK(fgsg_set_attribute(g, nullptr, "1") != 0);
+  CHECK(fgsg_set_attribute(g, "", "1") != 0);
+  CHECK(fgsg_set_attribute(g, "height", nullptr) != 0);
+  CHECK(fgsg_set_attribute(g, "height", "5") == 0);  // checked when generating
+
+  CHECK(fgsg_set_surface(g, "no/such/mesh.off") != 0);
+  CHECK_THAT(g.error(), Catch::Contains("no/such/mesh.off: no such file"));
+  CHECK(fgsg_set_surface(g, scratchDir().c_str()) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("is a directory"));
+  CHECK(fgsg_set_surface(g, FGSG_SOURCE_DIR "/tests/data/meshes/bunny00.off") == 0);
+  CHECK(fgsg_set_surface(g, nullptr) == 0);  // back to the grammar's own
+
+  CHECK(fgsg_write(g, (scratchDir() / "early.glb").c_str()) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("nothing generated yet"));
+  CHECK(fgsg_write(g, nullptr) != 0);
+}
+
+TEST_CASE("surface options on a grammar without a surface fail when generating", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(kSimpleGrammar);
+  Generator g(&p);
+  REQUIRE(fgsg_set_option(g, "start", "1,2,3") == 0);
+  CHECK(fgsg_generate(g) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("start needs a surface"));
+}
+
+TEST_CASE("a program whose tables do not match its grammar is an error, not a crash", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(kSimpleGrammar);  // no blocks at all
+  Generator g(&p);
+  CHECK(fgsg_generate(g) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("R900"));
+  CHECK(fgsg_vertex_count(g) == 0);
+}
+
+TEST_CASE("a compiled library generates, and its results read through the accessors", "[c_api][compiled]") {
+  Generator g(&stemLeafProgram());
+  REQUIRE(g.error().empty());
+  REQUIRE(fgsg_set_seed(g, 2) == 0);
+  REQUIRE(fgsg_generate(g) == 0);
+  CHECK(g.error().empty());
+  const size_t vertices = fgsg_vertex_count(g);
+  CHECK(vertices > 0);
+  CHECK(fgsg_positions(g) != nullptr);
+  CHECK(fgsg_normals(g) != nullptr);
+  CHECK(fgsg_index_count(g) % 3 == 0);
+  CHECK(fgsg_index_count(g) > 0);
+  const uint32_t* indices = fgsg_indices(g);
+  CHECK(*std::max_element(indices, indices + fgsg_index_count(g)) < vertices);
+  const size_t instances = fgsg_instance_count(g);
+  CHECK(instances > 0);
+  CHECK(fgsg_instance_transforms(g) != nullptr);
+  const uint32_t* assets = fgsg_instance_assets(g);
+  uint32_t maxAsset = 0;
+  for (size_t i = 0; i < instances; ++i) maxAsset = std::max(maxAsset, assets[i]);
+  for (uint32_t a = 0; a <= maxAsset; ++a) REQUIRE(fgsg_asset_name(g, a) != nullptr);
+  CHECK(fgsg_asset_name(g, maxAsset + 1000) == nullptr);
+  const std::string first = fgsg_asset_name(g, assets[0]);
+  CHECK((first == "cube" || first == "sphere" || first == "surface"));
+
+  // An unknown attribute fails when generating (R010, as fgsg run --set); the results go.
+  REQUIRE(fgsg_set_attribute(g, "no_such_attr", "1") == 0);
+  CHECK(fgsg_generate(g) != 0);
+  CHECK_THAT(g.error(), Catch::Contains("R010"));
+  CHECK_THAT(g.error(), Catch::Contains("no_such_attr"));
+  CHECK(fgsg_vertex_count(g) == 0);
+  CHECK(fgsg_instance_count(g) == 0);
+  CHECK(fgsg_write(g, (scratchDir() / "after-error.glb").c_str()) != 0);
+}
+
+TEST_CASE("a limit reached is a warning in fgsg_warnings, with its source location", "[c_api][compiled]") {
+  Generator g(&stemLeafProgram());
+  REQUIRE(fgsg_set_option(g, "max-shapes", "40") == 0);
+  REQUIRE(fgsg_generate(g) == 0);
+  const std::string warnings = fgsg_warnings(g);
+  CHECK_THAT(warnings, Catch::Contains("stem_leaf.fgsg"));
+  CHECK_THAT(warnings, Catch::Contains("warning["));
+}
+
+TEST_CASE("two generators in two threads give the bytes of one generator run twice", "[c_api][compiled]") {
+  const FgsgProgram& p = stemLeafProgram();
+  std::string sequential[2];
+  {
+    Generator g(&p);
+    sequential[0] = generateBytes(g, 11, "seq-11.ply");
+    sequential[1] = generateBytes(g, 12, "seq-12.ply");
+  }
+  REQUIRE(sequential[0].rfind("error", 0) != 0);
+  REQUIRE(sequential[1].rfind("error", 0) != 0);
+  CHECK(sequential[0] != sequential[1]);  // the seed matters
+
+  std::string parallel[2];
+  {
+    Generator a(&p), b(&p);
+    std::thread ta([&] { parallel[0] = generateBytes(a, 11, "par-11.ply"); });
+    std::thread tb([&] { parallel[1] = generateBytes(b, 12, "par-12.ply"); });
+    ta.join();
+    tb.join();
+  }
+  CHECK(parallel[0] == sequential[0]);
+  CHECK(parallel[1] == sequential[1]);
+
+  // Created in the threads too (the grammar text compiles in each).
+  std::string created[2];
+  std::thread tc([&] { Generator g(&p); created[0] = generateBytes(g, 11, "new-11.ply"); });
+  std::thread td([&] { Generator g(&p); created[1] = generateBytes(g, 12, "new-12.ply"); });
+  tc.join();
+  td.join();
+  CHECK(created[0] == sequential[0]);
+  CHECK(created[1] == sequential[1]);
+}
+
+TEST_CASE("fgsg_write gives fgsg run's bytes for the same seed and options", "[c_api][compiled]") {
+  Generator g(&stemLeafProgram());
+  REQUIRE(fgsg_set_seed(g, 5) == 0);
+  REQUIRE(fgsg_set_option(g, "max-shapes", "3000") == 0);
+  REQUIRE(fgsg_generate(g) == 0);
+  const fs::path lib = scratchDir() / "lib.glb", cli = scratchDir() / "cli.glb";
+  REQUIRE(fgsg_write(g, lib.c_str()) == 0);
+  const int rc = runProgram({FGSG_EXE, "run", FGSG_SOURCE_DIR "/examples/stem_leaf.fgsg", "--seed", "5",
+                             "--max-shapes", "3000", "-o", cli.string(), "--quiet"},
+                            scratchDir() / "run.log");
+  REQUIRE(rc == 0);
+  CHECK(readFile(lib) == readFile(cli));
+  CHECK(fgsg_write(g, (scratchDir() / "x.unknown").c_str()) != 0);
+  CHECK_THAT(g.error(), Catch::Contains(".unknown"));
+}
