@@ -51,7 +51,7 @@ llvm::Function* declare(llvm::Module& m, const char* name, llvm::FunctionType* t
 class ExprCodegen {
  public:
   ExprCodegen(llvm::Module& m, const Expr& e, const std::string& name)
-      : m_(m), c_(m.getContext()), b_(c_), root_(e) {
+      : m_(m), c_(m.getContext()), b_(c_), root_(&e) {
     declareRuntime(m);
     isVec_ = e.type == ir::Type::Vec3;
     llvm::Type* ptr = llvm::PointerType::getUnqual(c_);
@@ -72,17 +72,47 @@ class ExprCodegen {
     b_.SetInsertPoint(entry_);
   }
 
+  // Inline: the code goes where `outer` stands, in its function; an error branches to
+  // `fail` once reported; allocas go to `allocas` (the function's entry block).
+  ExprCodegen(llvm::Module& m, llvm::IRBuilderBase& outer, const InlineSite& site)
+      : m_(m), c_(m.getContext()), b_(c_), root_(nullptr), outer_(&outer) {
+    declareRuntime(m);
+    fn_ = outer.GetInsertBlock()->getParent();
+    entry_ = site.allocas;
+    fail_ = site.fail;
+    params_ = site.params;
+    attrs_ = site.attrs;
+    ctx_ = site.ctx;
+    b_.SetInsertPoint(outer.GetInsertBlock(), outer.GetInsertPoint());
+  }
+
   llvm::Function* run() {
     if (isVec_) {
       llvm::Value* out = fn_->getArg(3);
       out->setName("out");
-      Vec v = vec(root_);
+      Vec v = vec(*root_);
       for (int k = 0; k < 3; ++k) b_.CreateStore(v[k], gep(out, k));
       b_.CreateRetVoid();
     } else {
-      b_.CreateRet(num(root_));
+      b_.CreateRet(num(*root_));
     }
     return fn_;
+  }
+
+  llvm::Value* inlineNum(const Expr& e) {
+    llvm::Value* v = num(e);
+    outer_->SetInsertPoint(b_.GetInsertBlock(), b_.GetInsertPoint());
+    return v;
+  }
+
+  void inlineStore(const Expr& e, llvm::Value* out) {
+    if (e.type == ir::Type::Vec3) {
+      Vec v = vec(e);
+      for (int k = 0; k < 3; ++k) b_.CreateStore(v[k], gep(out, k));
+    } else {
+      b_.CreateStore(num(e), out);
+    }
+    outer_->SetInsertPoint(b_.GetInsertBlock(), b_.GetInsertPoint());
   }
 
  private:
@@ -371,7 +401,8 @@ class ExprCodegen {
   llvm::Module& m_;
   llvm::LLVMContext& c_;
   llvm::IRBuilder<> b_;
-  const Expr& root_;
+  const Expr* root_;                       // a function of its own: its expression
+  llvm::IRBuilderBase* outer_ = nullptr;     // inline: the caller's builder
   bool isVec_ = false;
   llvm::Function* fn_ = nullptr;
   llvm::Value* params_ = nullptr;
@@ -395,6 +426,15 @@ void declareRuntime(llvm::Module& m) {
 
 llvm::Function* emitExpr(llvm::Module& m, const ir::Expr& e, const std::string& name) {
   return ExprCodegen(m, e, name).run();
+}
+
+llvm::Value* emitNumInline(llvm::Module& m, llvm::IRBuilderBase& b, const InlineSite& site, const ir::Expr& e) {
+  return ExprCodegen(m, b, site).inlineNum(e);
+}
+
+void emitStoreInline(llvm::Module& m, llvm::IRBuilderBase& b, const InlineSite& site, const ir::Expr& e,
+                     llvm::Value* out) {
+  ExprCodegen(m, b, site).inlineStore(e, out);
 }
 
 }  // namespace fgsg::backend::codegen

@@ -15,8 +15,11 @@
 #include <string>
 
 namespace llvm {
+class BasicBlock;
 class Function;
+class IRBuilderBase;
 class Module;
+class Value;
 }  // namespace llvm
 
 struct FgsgContext;
@@ -31,5 +34,22 @@ void declareRuntime(llvm::Module& m);
 
 // Emits the function `name` computing e into m (declaring the runtime as needed).
 llvm::Function* emitExpr(llvm::Module& m, const ir::Expr& e, const std::string& name);
+
+// Where an expression is emitted inline, inside a function of the caller's: its
+// parameter block, attributes and context, the entry block for stack slots, and the
+// block an error branches to once it has been reported through the context.
+struct InlineSite {
+  llvm::Value* params;
+  llvm::Value* attrs;
+  llvm::Value* ctx;
+  llvm::BasicBlock* allocas;
+  llvm::BasicBlock* fail;
+};
+
+// e (a number, boolean or string id) computed at b's insert point; b is left after it.
+llvm::Value* emitNumInline(llvm::Module& m, llvm::IRBuilderBase& b, const InlineSite& site, const ir::Expr& e);
+// e (of any type: 1 or 3 doubles) stored at out.
+void emitStoreInline(llvm::Module& m, llvm::IRBuilderBase& b, const InlineSite& site, const ir::Expr& e,
+                     llvm::Value* out);
 
 }  // namespace fgsg::backend::codegen

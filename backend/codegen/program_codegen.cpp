@@ -19,6 +19,8 @@
 #include <llvm/Target/TargetMachine.h>
 #include <llvm/TargetParser/Host.h>
 
+#include <chrono>
+#include <cmath>
 #include <mutex>
 #include <stdexcept>
 
@@ -27,9 +29,13 @@ namespace {
 
 using ir::OpKind;
 
-// Expressions that read a value without any call cannot report an error.
+// Only queries report errors at run time (the IR is type-checked and verified, so the
+// code generator's internal-error paths are unreachable); anything else cannot fail.
 bool cannotFail(const ir::Expr& e) {
-  return e.op == ir::ExprOp::Const || e.op == ir::ExprOp::Param || e.op == ir::ExprOp::Attr;
+  if (e.op == ir::ExprOp::Query) return false;
+  for (const auto& a : e.args)
+    if (!cannotFail(a)) return false;
+  return true;
 }
 
 bool hasQuery(const ir::Expr& e) {
@@ -182,29 +188,14 @@ class ProgramCodegen {
     b_.SetInsertPoint(go);
   }
 
-  llvm::Value* num(const ir::Expr& e) {
-    // Constants, parameters and attributes, most arguments, are read in place; every
-    // other expression is a function of its own that the optimiser inlines.
-    if (e.op == ir::ExprOp::Const && e.type != ir::Type::Vec3) return llvm::ConstantFP::get(b_.getDoubleTy(), e.num);
-    if (e.op == ir::ExprOp::Param && e.type != ir::Type::Vec3)
-      return b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), params_, e.index));
-    if (e.op == ir::ExprOp::Attr && e.type != ir::Type::Vec3)
-      return b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), attrs_, 3 * e.index));
-    llvm::Function* f = emitExpr(m_, e, "fgsg_expr_" + std::to_string(exprs_++));
-    f->setLinkage(llvm::GlobalValue::InternalLinkage);
-    return b_.CreateCall(f, {params_, attrs_, ctx_});
-  }
+  // Expressions are emitted in place; an error they report makes the block return.
+  InlineSite site() { return {params_, attrs_, ctx_, entry_, exit_}; }
+
+  llvm::Value* num(const ir::Expr& e) { return emitNumInline(m_, b_, site(), e); }
 
   // Writes e (1 or 3 slots) at out[slot].
   void store(const ir::Expr& e, llvm::Value* out, uint32_t slot) {
-    llvm::Value* at = b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), out, slot);
-    if (e.type != ir::Type::Vec3) {
-      b_.CreateStore(num(e), at);
-      return;
-    }
-    llvm::Function* f = emitExpr(m_, e, "fgsg_expr_" + std::to_string(exprs_++));
-    f->setLinkage(llvm::GlobalValue::InternalLinkage);
-    b_.CreateCall(f, {params_, attrs_, ctx_, at});
+    emitStoreInline(m_, b_, site(), e, b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), out, slot));
   }
 
   llvm::Value* u32(uint32_t v) { return b_.getInt32(v); }
@@ -314,15 +305,19 @@ class ProgramCodegen {
   llvm::Value* zero() { return llvm::ConstantFP::get(b_.getDoubleTy(), 0.0); }
   llvm::BasicBlock* newBlock(const char* name) { return llvm::BasicBlock::Create(c_, name, fn_, exit_); }
 
-  // Marks the derivation inexact (the engine derives it again its own way) and returns.
+  // Marks the derivation inexact (the engine derives it again its own way) and returns:
+  // one block per function that every such place branches to.
   void giveUpIf(llvm::Value* cond) {
-    llvm::BasicBlock* fail = newBlock("inexact");
+    if (!giveUp_) {
+      llvm::IRBuilderBase::InsertPointGuard guard(b_);
+      giveUp_ = newBlock("inexact");
+      b_.SetInsertPoint(giveUp_);
+      b_.CreateStore(b_.getInt32(1), field(kInexact));
+      b_.CreateStore(b_.getInt32(1), field(kStop));
+      b_.CreateBr(exit_);
+    }
     llvm::BasicBlock* go = newBlock("go");
-    b_.CreateCondBr(cond, fail, go);
-    b_.SetInsertPoint(fail);
-    b_.CreateStore(b_.getInt32(1), field(kInexact));
-    b_.CreateStore(b_.getInt32(1), field(kStop));
-    b_.CreateBr(exit_);
+    b_.CreateCondBr(cond, giveUp_, go);
     b_.SetInsertPoint(go);
   }
 
@@ -351,6 +346,7 @@ class ProgramCodegen {
     attrs_ = fn_->getArg(5);
     entry_ = llvm::BasicBlock::Create(c_, "entry", fn_);
     exit_ = llvm::BasicBlock::Create(c_, "return", fn_);
+    giveUp_ = nullptr;
     b_.SetInsertPoint(exit_);
     b_.CreateRetVoid();
     llvm::BasicBlock* body = newBlock("shape");
@@ -399,22 +395,34 @@ class ProgramCodegen {
         llvm::BasicBlock* next = newBlock("next_rule");
         if (r.hasGuard) {
           llvm::Value* g = num(r.guard);
-          checkStop();
+          if (!cannotFail(r.guard)) checkStop();
           llvm::BasicBlock* holds = newBlock("holds");
           b_.CreateCondBr(b_.CreateFCmpUNE(g, zero()), holds, next);
           b_.SetInsertPoint(holds);
         }
         for (size_t a = 0; a < r.alternatives.size(); ++a) {
-          llvm::Value* w = num(r.alternatives[a].probability);
-          checkStop();
-          // R008 (a negative or non-finite weight) is the engine's to report.
-          llvm::Value* finite = b_.CreateFCmpONE(b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, w),
-                                                 llvm::ConstantFP::getInfinity(b_.getDoubleTy()));
-          giveUpIf(b_.CreateNot(b_.CreateAnd(b_.CreateFCmpOGE(w, zero()), finite)));
-          llvm::BasicBlock* add = newBlock("candidate");
+          const ir::Expr& weight = r.alternatives[a].probability;
           llvm::BasicBlock* skip = newBlock("no_candidate");
-          b_.CreateCondBr(b_.CreateFCmpOGT(w, zero()), add, skip);
-          b_.SetInsertPoint(add);
+          llvm::Value* w = num(weight);
+          if (weight.isConst()) {
+            // Known now: an invalid weight always gives up, zero is never a candidate.
+            if (!(weight.num >= 0) || !std::isfinite(weight.num)) {
+              giveUpIf(b_.getTrue());
+            } else if (weight.num == 0) {
+              b_.CreateBr(skip);
+              b_.SetInsertPoint(skip);
+              continue;
+            }
+          } else {
+            if (!cannotFail(weight)) checkStop();
+            // R008 (a negative or non-finite weight) is the engine's to report.
+            llvm::Value* finite = b_.CreateFCmpONE(b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, w),
+                                                   llvm::ConstantFP::getInfinity(b_.getDoubleTy()));
+            giveUpIf(b_.CreateNot(b_.CreateAnd(b_.CreateFCmpOGE(w, zero()), finite)));
+            llvm::BasicBlock* positive = newBlock("candidate");
+            b_.CreateCondBr(b_.CreateFCmpOGT(w, zero()), positive, skip);
+            b_.SetInsertPoint(positive);
+          }
           llvm::Value* n = b_.CreateLoad(b_.getInt32Ty(), count);
           b_.CreateStore(b_.getInt32(layout_.firstAlternative[ri] + static_cast<uint32_t>(a)),
                          b_.CreateInBoundsGEP(b_.getInt32Ty(), candAlt, n));
@@ -596,12 +604,12 @@ class ProgramCodegen {
   llvm::Value* attrs_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
   llvm::BasicBlock* exit_ = nullptr;
-  uint64_t exprs_ = 0;
   std::vector<llvm::Function*> directFns_;  // by symbol: null unless direct
   llvm::Value* key_ = nullptr;    // direct code: the shape's key, depth, stream and scope
   llvm::Value* depth_ = nullptr;
   llvm::Value* rng_ = nullptr;
   llvm::Value* scope_ = nullptr;
+  llvm::BasicBlock* giveUp_ = nullptr;  // direct code: where an inexact derivation leaves
 };
 
 void initTargets() {
@@ -612,7 +620,7 @@ void initTargets() {
   });
 }
 
-std::unique_ptr<llvm::TargetMachine> targetMachine(CpuTarget cpu) {
+std::unique_ptr<llvm::TargetMachine> targetMachine(CpuTarget cpu, CodeQuality quality) {
   initTargets();
   const std::string triple = llvm::sys::getProcessTriple();
   std::string error;
@@ -628,7 +636,7 @@ std::unique_ptr<llvm::TargetMachine> targetMachine(CpuTarget cpu) {
   }
   std::unique_ptr<llvm::TargetMachine> tm(target->createTargetMachine(
       triple, name, features, llvm::TargetOptions(), llvm::Reloc::PIC_, std::nullopt,
-      llvm::CodeGenOptLevel::Default));
+      quality == CodeQuality::Baseline ? llvm::CodeGenOptLevel::None : llvm::CodeGenOptLevel::Default));
   if (!tm) throw std::runtime_error("LLVM cannot make a target machine for " + triple);
   return tm;
 }
@@ -654,8 +662,15 @@ void emitProgram(llvm::Module& out, const ir::Module& m, const ProgramCodegenOpt
 }
 
 std::string compileProgramObject(const ir::Module& m, const ProgramCodegenOptions& options,
-                                 CpuTarget cpu) {
-  std::unique_ptr<llvm::TargetMachine> tm = targetMachine(cpu);
+                                 CpuTarget cpu, CodeQuality quality, ObjectCompileTimes* times) {
+  using Clock = std::chrono::steady_clock;
+  auto t = Clock::now();
+  auto lap = [&t](double* into) {
+    const auto now = Clock::now();
+    if (into) *into = std::chrono::duration<double>(now - t).count();
+    t = now;
+  };
+  std::unique_ptr<llvm::TargetMachine> tm = targetMachine(cpu, quality);
   llvm::LLVMContext context;
   llvm::Module module("fgsg_program", context);
   module.setDataLayout(tm->createDataLayout());
@@ -665,13 +680,16 @@ std::string compileProgramObject(const ir::Module& m, const ProgramCodegenOption
   llvm::raw_string_ostream problemStream(problems);
   if (llvm::verifyModule(module, &problemStream))
     throw std::logic_error("internal: the code generator made invalid LLVM IR: " + problems);
+  lap(times ? &times->emit : nullptr);
   optimize(module, *tm);
+  lap(times ? &times->optimize : nullptr);
   llvm::SmallVector<char, 0> object;
   llvm::raw_svector_ostream stream(object);
   llvm::legacy::PassManager passes;
   if (tm->addPassesToEmitFile(passes, stream, nullptr, llvm::CodeGenFileType::ObjectFile))
     throw std::runtime_error("LLVM cannot emit object files for " + module.getTargetTriple());
   passes.run(module);
+  lap(times ? &times->machine : nullptr);
   return std::string(object.begin(), object.end());
 }
 

@@ -29,9 +29,22 @@ void emitProgram(llvm::Module& out, const ir::Module& m, const ProgramCodegenOpt
 // baseline of the architecture, so it runs on any machine of that kind.
 enum class CpuTarget { Host, Generic };
 
+// Both run the O2 pipeline on the IR; machine code is then either generated quickly
+// (fast instruction selection and register allocation: the JIT's first tier, runnable
+// soonest) or with every optimisation (libraries, the JIT's cache).
+enum class CodeQuality { Baseline, Optimized };
+
+// Seconds spent in each step of compileProgramObject.
+struct ObjectCompileTimes {
+  double emit = 0.0;      // IR -> LLVM IR
+  double optimize = 0.0;  // the O2 pipeline
+  double machine = 0.0;   // instruction selection to the object file
+};
+
 // The grammar compiled (O2) to a relocatable position-independent ELF object, as bytes.
 // Throws std::runtime_error when LLVM cannot set up the target.
 std::string compileProgramObject(const ir::Module& m, const ProgramCodegenOptions& options,
-                                 CpuTarget cpu);
+                                 CpuTarget cpu, CodeQuality quality = CodeQuality::Optimized,
+                                 ObjectCompileTimes* times = nullptr);
 
 }  // namespace fgsg::backend::codegen

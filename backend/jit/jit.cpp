@@ -19,9 +19,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace fgsg::backend::jit {
 namespace {
@@ -51,6 +54,11 @@ struct Jit::Impl {
   std::unique_ptr<llvm::TargetMachine> tm;  // for the optimisation pipeline
   uint64_t units = 0;
   std::string lastIR;
+  std::vector<std::thread> background;  // optimising compiles for the cache (Tiering::Tiered)
+
+  ~Impl() {
+    for (auto& t : background) t.join();
+  }
 
   void defineRuntimeSymbols() {
     llvm::orc::SymbolMap symbols;
@@ -65,6 +73,11 @@ struct Jit::Impl {
     // without SSE4.1 (llvm.floor / llvm.ceil).
     add("floor", static_cast<double (*)(double)>(&::floor));
     add("ceil", static_cast<double (*)(double)>(&::ceil));
+    // ... and the C library's block moves, which it may call for large copies (a scope
+    // saved by '[' in direct derivation) instead of expanding them inline.
+    add("memcpy", &::memcpy);
+    add("memmove", &::memmove);
+    add("memset", &::memset);
     orThrow(lljit->getMainJITDylib().define(llvm::orc::absoluteSymbols(std::move(symbols))),
             "JIT: runtime symbols");
   }
@@ -133,6 +146,11 @@ Jit::~Jit() = default;
 
 const std::string& Jit::lastIR() const { return impl_->lastIR; }
 
+void Jit::waitForCache() {
+  for (auto& t : impl_->background) t.join();
+  impl_->background.clear();
+}
+
 CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
   Impl& j = *impl_;
   const std::string prefix = "fgsg_expr_u" + std::to_string(j.units++) + "_";
@@ -169,7 +187,8 @@ CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
   return out;
 }
 
-CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache) {
+CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache,
+                                    Tiering tiering) {
   const auto start = std::chrono::steady_clock::now();
   const std::string key = ObjectCache::key(m, source);
   CompiledProgram out;
@@ -178,9 +197,22 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
     if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below
   }
   if (!out.fromCache_) {
-    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host);
+    const bool tiered = tiering == Tiering::Tiered && !cache.folder().empty();
+    const auto quality = tiered ? codegen::CodeQuality::Baseline : codegen::CodeQuality::Optimized;
+    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host, quality);
     if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
-    cache.store(key, object);
+    out.optimized_ = !tiered;
+    if (tiered)
+      impl_->background.emplace_back([m, cache, key] {
+        try {
+          cache.store(key, codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host,
+                                                         codegen::CodeQuality::Optimized));
+        } catch (...) {
+          // The next run compiles again; nothing is lost but time.
+        }
+      });
+    else
+      cache.store(key, object);
   }
   out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -41,12 +41,14 @@ class CompiledProgram {
  public:
   const FgsgProgram& program() const { return *program_; }
   bool fromCache() const { return fromCache_; }
+  bool optimized() const { return optimized_; }  // false: the first tier's machine code
   double seconds() const { return seconds_; }  // compiling (or loading) and linking
 
  private:
   friend class Jit;
   const FgsgProgram* program_ = nullptr;
   bool fromCache_ = false;
+  bool optimized_ = true;
   double seconds_ = 0.0;
   std::shared_ptr<void> unit_;  // releases the unit's JITDylib and ResourceTracker
 };
@@ -63,10 +65,21 @@ class Jit {
   // Compiles every expression into one unit (one function each, see expr_codegen.h).
   CompiledExprs compile(const std::vector<const ir::Expr*>& exprs);
 
+  // How a grammar missing from the cache is compiled. Tiered: its code is linked as
+  // soon as the first tier is ready (CodeQuality::Baseline) while the optimised object
+  // is compiled on another thread and stored in the cache for the next run (the Jit's
+  // destructor waits for it). Optimized: the optimised object at once.
+  enum class Tiering { Tiered, Optimized };
+
   // Compiles a grammar (see backend/codegen/program_codegen.h) into a unit of its own,
   // or loads its object from `cache` when it holds one for this grammar and machine.
-  // `source` is the grammar's text (part of the cache key). Throws std::runtime_error.
-  CompiledProgram compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache);
+  // `source` is the grammar's text (part of the cache key). Without a cache folder the
+  // optimised code is compiled at once. Throws std::runtime_error.
+  CompiledProgram compileProgram(const ir::Module& m, const std::string& source, const ObjectCache& cache,
+                                 Tiering tiering = Tiering::Tiered);
+
+  // Waits until the optimising compiles of Tiering::Tiered are in the cache.
+  void waitForCache();
 
   // The optimised LLVM IR of the last unit compiled, for debugging and tests.
   const std::string& lastIR() const;
