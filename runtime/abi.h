@@ -44,6 +44,9 @@ struct FgsgContext {
   uint64_t shapeBudget = 0;
   uint32_t depthLimit = 0;
   fgsg::rt::RandomStream* rng = nullptr;  // the shape's stream (Rand)
+  // Direct derivation: shapes visited so far (each shape's preorder number, which puts
+  // the instances it places in the interpreter's order afterwards).
+  uint64_t visits = 0;
   FgsgQueryFn query = nullptr;            // the engine's query host
   void* queryUser = nullptr;
   // The first error reported, FGSG_OK while none.
@@ -56,12 +59,13 @@ struct FgsgContext {
 static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact) == 4 &&
                   offsetof(FgsgContext, shapes) == 8 && offsetof(FgsgContext, rewrites) == 16 &&
                   offsetof(FgsgContext, terminals) == 24 && offsetof(FgsgContext, shapeBudget) == 32 &&
-                  offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, rng) == 48,
+                  offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, rng) == 48 &&
+                  offsetof(FgsgContext, visits) == 56,
               "the context layout generated code assumes");
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 2u
+#define FGSG_ABI_VERSION 3u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of
@@ -73,9 +77,12 @@ static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact)
 typedef void (*FgsgBlockFn)(FgsgContext* ctx, const double* params, const double* attrs);
 typedef double (*FgsgValueFn)(const double* params, const double* attrs, FgsgContext* ctx);
 // Derives a shape of a "direct" symbol and everything it creates, at once and in native
-// code: a symbol whose rules only move, turn and scale the scope and create shapes of
-// direct or ruleless symbols (no instances, splits or queries), so the order its
-// shapes are derived in changes nothing in the result. scope: an rt::Scope (copied).
+// code: a symbol whose rules only move, turn and scale the scope, place plain instances
+// and create shapes of direct or ruleless symbols (no splits, collisions or queries).
+// Without instances the order its shapes are derived in changes nothing in the result;
+// with them, the engine puts the instances in its own order afterwards (by depth and
+// preorder), so it uses such symbols only where nothing else can observe the order.
+// scope: an rt::Scope (copied).
 typedef void (*FgsgDirectFn)(FgsgContext* ctx, const void* scope, const double* slots, uint64_t key,
                              uint32_t depth, const double* attrs);
 
@@ -91,6 +98,7 @@ struct FgsgProgram {
   const char* sourceName;  // its file name as compiled, for diagnostics and relative paths
   uint32_t symbolCount;
   const FgsgDirectFn* direct;  // by symbol: null unless the symbol is direct
+  const uint8_t* directPlaces;  // by symbol: 1 when a direct symbol's shapes may place instances
   uint32_t scopeSize;          // sizeof(rt::Scope) the direct code was compiled for
 };
 

@@ -49,10 +49,12 @@ bool hasQuery(const ir::Expr& e) {
 bool choosable(const ir::Rule& r) { return r.left.empty() && r.right.empty(); }
 
 // The direct symbols (runtime/abi.h, FgsgDirectFn): the largest set whose successors
-// only use scope commands and create shapes of ruleless or direct symbols, with
-// brackets that balance, and no query anywhere. Sequential derivations only.
-std::vector<bool> findDirectSymbols(const ir::Module& m) {
+// only use scope commands, place plain instances and create shapes of ruleless or
+// direct symbols, with brackets that balance, and no query anywhere. Sequential
+// derivations only. `places`: the symbol's shapes may place instances.
+std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& places) {
   std::vector<bool> direct(m.symbols.size(), false);
+  places.assign(m.symbols.size(), false);
   if (m.mode == ir::DeriveMode::Parallel) return direct;
   for (size_t s = 0; s < m.symbols.size(); ++s) {
     const ir::Symbol& sym = m.symbols[s];
@@ -71,6 +73,10 @@ std::vector<bool> findDirectSymbols(const ir::Module& m) {
             case OpKind::RotateNormal:
             case OpKind::Scale:
             case OpKind::Emit: break;
+            case OpKind::Instance:
+              ok &= op.mode == ir::InstanceMode::Plain;
+              places[s] = true;
+              break;
             case OpKind::Push: ++depth; break;
             case OpKind::Pop: ok &= --depth >= 0; break;
             default: ok = false;
@@ -98,6 +104,20 @@ std::vector<bool> findDirectSymbols(const ir::Module& m) {
             }
     }
   }
+  // Placing spreads to the symbols whose shapes create placing ones.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t s = 0; s < m.symbols.size(); ++s) {
+      if (!direct[s] || places[s]) continue;
+      for (uint32_t ri : m.symbols[s].rules)
+        for (const auto& alt : m.rules[ri].alternatives)
+          for (const ir::Op& op : alt.ops)
+            if (op.kind == OpKind::Emit && direct[op.index] && places[op.index] && !places[s]) {
+              places[s] = true;
+              changed = true;
+            }
+    }
+  }
   return direct;
 }
 
@@ -121,19 +141,21 @@ class ProgramCodegen {
                                       : value(p, "fgsg_weight_" + std::to_string(r) + "_" + std::to_string(a)));
       }
     }
-    const std::vector<bool> isDirect = findDirectSymbols(ir_);
+    std::vector<bool> places;
+    const std::vector<bool> isDirect = findDirectSymbols(ir_, places);
     directFns_.assign(ir_.symbols.size(), nullptr);
     auto* directType = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, ptr_, b_.getInt64Ty(), b_.getInt32Ty(), ptr_}, false);
     for (size_t s = 0; s < ir_.symbols.size(); ++s)
       if (isDirect[s])
         directFns_[s] = llvm::Function::Create(directType, llvm::Function::InternalLinkage,
                                                "fgsg_direct_" + ir_.symbols[s].name, m_);
-    std::vector<llvm::Constant*> direct;
+    std::vector<llvm::Constant*> direct, placing;
     for (size_t s = 0; s < ir_.symbols.size(); ++s) {
       if (directFns_[s]) directSymbol(static_cast<uint32_t>(s));
       direct.push_back(directFns_[s] ? static_cast<llvm::Constant*>(directFns_[s]) : nullPtr());
+      placing.push_back(b_.getInt8(isDirect[s] && places[s] ? 1 : 0));
     }
-    table(blocks, guards, weights, direct);
+    table(blocks, guards, weights, direct, placing);
   }
 
  private:
@@ -280,9 +302,16 @@ class ProgramCodegen {
 
   // The FgsgProgram constant (runtime/abi.h), field for field.
   void table(const std::vector<llvm::Constant*>& blocks, const std::vector<llvm::Constant*>& guards,
-             const std::vector<llvm::Constant*>& weights, const std::vector<llvm::Constant*>& direct) {
+             const std::vector<llvm::Constant*>& weights, const std::vector<llvm::Constant*>& direct,
+             const std::vector<llvm::Constant*>& placing) {
     llvm::Type* i32 = b_.getInt32Ty();
-    auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_, i32, ptr_, i32});
+    auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_, i32, ptr_, ptr_, i32});
+    llvm::Constant* placingArray = nullPtr();
+    if (!placing.empty()) {
+      auto* bytes = llvm::ArrayType::get(b_.getInt8Ty(), placing.size());
+      placingArray = new llvm::GlobalVariable(m_, bytes, true, llvm::GlobalValue::PrivateLinkage,
+                                              llvm::ConstantArray::get(bytes, placing), "fgsg_direct_places");
+    }
     auto count = [&](size_t n) { return llvm::ConstantInt::get(i32, n); };
     llvm::Constant* init = llvm::ConstantStruct::get(
         type, {count(FGSG_ABI_VERSION), count(blocks.size()), array(blocks, "fgsg_blocks"),
@@ -290,7 +319,7 @@ class ProgramCodegen {
                array(weights, "fgsg_weights"),
                opt_.embedSource ? string(opt_.source, "fgsg_source") : nullPtr(),
                opt_.embedSource ? string(opt_.sourceName, "fgsg_source_name") : nullPtr(),
-               count(direct.size()), array(direct, "fgsg_direct"), count(sizeof(rt::Scope))});
+               count(direct.size()), array(direct, "fgsg_direct"), placingArray, count(sizeof(rt::Scope))});
     new llvm::GlobalVariable(m_, type, true, llvm::GlobalValue::ExternalLinkage, init, opt_.tableSymbol);
   }
 
@@ -298,7 +327,8 @@ class ProgramCodegen {
 
   // Fields of FgsgContext generated code uses (offsets checked in runtime/abi.h).
   enum ContextField : uint64_t { kStop = 0, kInexact = 4, kShapes = 8, kRewrites = 16,
-                                 kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kRng = 48 };
+                                 kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kRng = 48,
+                                 kVisits = 56 };
   llvm::Value* field(uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_, offset); }
   llvm::Value* loadU64(uint64_t offset) { return b_.CreateLoad(b_.getInt64Ty(), field(offset)); }
   void bump(uint64_t offset) { b_.CreateStore(b_.CreateAdd(loadU64(offset), b_.getInt64(1)), field(offset)); }
@@ -354,6 +384,9 @@ class ProgramCodegen {
 
     // A shape at the depth limit stays terminal and the engine warns: its order matters.
     giveUpIf(b_.CreateICmpUGE(depth_, b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimit))));
+    symbol_ = s;
+    preorder_ = loadU64(kVisits);
+    b_.CreateStore(b_.CreateAdd(preorder_, b_.getInt64(1)), field(kVisits));
     uint32_t slotsNeeded = std::max(sym.slotCount, 1u);
     size_t alternatives = 0;
     for (uint32_t ri : sym.rules) {
@@ -556,6 +589,11 @@ class ProgramCodegen {
           call("fgsg_rt_direct_scale", {ctx_, scope_, sizes, u32(relative)});
           break;
         }
+        case OpKind::Instance:  // plain: no arguments
+          call("fgsg_rt_direct_instance", {ctx_, scope_, u32(layout_.opId(op)), u32(symbol_), params_, depth_,
+                                           preorder_});
+          checkStop();
+          break;
         case OpKind::Push:
           if (depth == static_cast<int>(saved.size())) saved.push_back(frameSlots(b_.getInt8Ty(), sizeof(rt::Scope)));
           b_.CreateMemCpy(saved[depth++], llvm::MaybeAlign(8), scope_, llvm::MaybeAlign(8), sizeof(rt::Scope));
@@ -610,6 +648,8 @@ class ProgramCodegen {
   llvm::Value* rng_ = nullptr;
   llvm::Value* scope_ = nullptr;
   llvm::BasicBlock* giveUp_ = nullptr;  // direct code: where an inexact derivation leaves
+  uint32_t symbol_ = 0;                  // direct code: the symbol derived
+  llvm::Value* preorder_ = nullptr;      // ... and the shape's preorder number
 };
 
 void initTargets() {

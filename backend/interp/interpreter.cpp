@@ -152,18 +152,21 @@ class Interpreter final : public QueryHost {
       direct_ = direct_ && program_ && program_->direct && !surface_ && m_.mode != ir::DeriveMode::Parallel;
       resolveAssets();
       initOutput();
+      orderedDirect_ = direct_ && canOrderDirectInstances();
       if (m_.mode == ir::DeriveMode::Parallel)
         runParallel();
       else
         runSequential();
       result.ok = true;
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
+      orderDirectInstances();
       appendLineTubes(lines_, assets_, out_, symbolColor_);
       appendSurface();
     } catch (const LimitReached& limit) {
       if (depthLimitHit_) result.messages.push_back(depthWarning_);
       result.ok = true;
       result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
+      orderDirectInstances();
       appendLineTubes(lines_, assets_, out_, symbolColor_);
       appendSurface();
     } catch (const DeriveError& e) {
@@ -204,7 +207,7 @@ class Interpreter final : public QueryHost {
       throw DeriveError{{}, "R900", "compiled code for runtime ABI " + std::to_string(p.abiVersion) +
                                         ", but this runtime is ABI " + std::to_string(FGSG_ABI_VERSION) +
                                         ": compile the grammar again"};
-    if (p.blockCount != layout_.blocks.size() || p.ruleCount != m_.rules.size() ||
+    if ((p.direct && !p.directPlaces) || p.blockCount != layout_.blocks.size() || p.ruleCount != m_.rules.size() ||
         p.alternativeCount != layout_.alternativeCount || p.symbolCount != m_.symbols.size() ||
         p.scopeSize != sizeof(rt::Scope))
       throw DeriveError{{}, "R900", "the compiled code does not match this grammar (" +
@@ -470,6 +473,7 @@ class Interpreter final : public QueryHost {
     inst.paramCount = paramCount;
     out_.params.insert(out_.params.end(), params, params + paramCount);
     out_.instances.push_back(inst);
+    if (orderedDirect_) placedBy_.push_back(placingShape_);
     if (usesOcclusion_) occluders_.add(scope);
     if (collisions_) collisions_->placed(scope);
   }
@@ -765,6 +769,76 @@ class Interpreter final : public QueryHost {
     return v;
   }
 
+  // Whether direct symbols that place instances may be used: when nothing but the
+  // instances' order could tell (no collisions, merges, lines or occlusion queries),
+  // and every shape the axiom leads to is direct or has no rules, all of one priority,
+  // so that the interpreter's order is that of (depth, preorder) of the placing shapes
+  // (breadth-first) or of their preorder (depth-first): orderDirectInstances restores it.
+  bool canOrderDirectInstances() const {
+    if (!program_->directPlaces || collisions_ || usesOcclusion_ || testAll_) return false;
+    std::vector<uint8_t> seen(m_.symbols.size(), 0);
+    std::vector<uint32_t> todo;
+    std::function<void(const ir::Block&)> scan = [&](const ir::Block& b) {
+      for (const auto& op : b) {
+        if (op.kind == ir::OpKind::Emit && !seen[op.index]) {
+          seen[op.index] = 1;
+          todo.push_back(op.index);
+        }
+        for (const auto& body : op.bodies) scan(body);
+      }
+    };
+    scan(m_.axiom);
+    bool first = true;
+    int priority = 0;
+    while (!todo.empty()) {
+      const uint32_t s = todo.back();
+      todo.pop_back();
+      const ir::Symbol& sym = m_.symbols[s];
+      if (sym.rules.empty()) continue;
+      if (!program_->direct[s] || (!first && sym.priority != priority)) return false;
+      priority = sym.priority;
+      first = false;
+      for (uint32_t ri : sym.rules)
+        for (const auto& alt : m_.rules[ri].alternatives) scan(alt.ops);
+    }
+    return true;
+  }
+
+  // Puts the instances placed while direct shapes were derived into the interpreter's
+  // order: by the placing shape's depth, then preorder (breadth-first), or by preorder
+  // alone (depth-first); a stable sort keeps each successor's own order.
+  void orderDirectInstances() {
+    if (!orderedDirect_ || placedBy_.size() != out_.instances.size()) return;
+    const bool breadthFirst = m_.mode == ir::DeriveMode::BreadthFirst;
+    auto before = [breadthFirst](const PlacingShape& x, const PlacingShape& y) {
+      if (breadthFirst && x.depth != y.depth) return x.depth < y.depth;
+      return x.preorder < y.preorder;
+    };
+    // Often already so (depth-first, or every instance placed at one depth).
+    if (std::is_sorted(placedBy_.begin(), placedBy_.end(), before)) {
+      placedBy_.clear();
+      return;
+    }
+    std::vector<uint32_t> order(out_.instances.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
+    std::vector<rt::Instance> instances;
+    std::vector<double> params;
+    instances.reserve(order.size());
+    params.reserve(out_.params.size());
+    for (uint32_t i : order) {
+      rt::Instance inst = out_.instances[i];
+      const uint32_t first = inst.firstParam;
+      inst.firstParam = static_cast<uint32_t>(params.size());
+      params.insert(params.end(), out_.params.begin() + first, out_.params.begin() + first + inst.paramCount);
+      instances.push_back(inst);
+    }
+    out_.instances = std::move(instances);
+    out_.params = std::move(params);
+    placedBy_.clear();
+  }
+
   // Derives a direct shape and its whole subtree now, in compiled code (FgsgDirectFn):
   // nothing it creates is observable but its counts. What only this engine's own order
   // reports exactly (a limit, an error) makes the whole derivation start again without
@@ -775,11 +849,24 @@ class Interpreter final : public QueryHost {
     call.engine = this;
     call.shapeBudget = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
     call.depthLimit = opt_.maxDepth;
+    call.visits = visits_;
     program_->direct[symbol](&call, &scope, slots, key, depth, eval_.attrData());
+    visits_ = call.visits;
     stats_.shapesCreated += call.shapes;
     stats_.rewrites += call.rewrites;
     stats_.terminals += call.terminals;
-    if (call.thrown) std::rethrow_exception(call.thrown);
+    placingShape_ = {};
+    if (call.thrown) {
+      // --max-seconds ends any engine where it is; every other problem is reported in
+      // the interpreter's order.
+      try {
+        std::rethrow_exception(call.thrown);
+      } catch (const LimitReached&) {
+        throw;
+      } catch (...) {
+        throw InexactDirect{};
+      }
+    }
     if (call.inexact || call.errorCode != FGSG_OK) throw InexactDirect{};
   }
 
@@ -828,6 +915,11 @@ class Interpreter final : public QueryHost {
   void directTranslate(rt::Scope& s, double x, double y, double z) { s.P += s.axes * rt::Vec3(x, y, z); }
   void directTurn(rt::Scope& s, uint32_t axis, double degrees) { turn(s, static_cast<int>(axis), degrees); }
   void directTimeCheck() { checkTime(); }
+  void directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
+                      uint64_t preorder) {
+    placingShape_ = {depth, preorder};
+    placeInstance(layout_.ops[op]->index, s, symbol, params, m_.symbols[symbol].slotCount, layout_.ops[op]->loc);
+  }
   // Whether the last run() stopped because direct derivation could not be exact.
   bool needsExactRun() const { return inexactDirect_; }
 
@@ -1162,7 +1254,7 @@ class Interpreter final : public QueryHost {
       ++stats_.terminals;
       return;
     }
-    if (direct_ && program_->direct[op.index]) {
+    if (direct_ && program_->direct[op.index] && (orderedDirect_ || !program_->directPlaces[op.index])) {
       deriveDirect(op.index, slots, st.scope, rt::childKey(ex.key, index), ex.depth);
       return;
     }
@@ -1562,6 +1654,14 @@ class Interpreter final : public QueryHost {
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
   const FgsgProgram* program_ = nullptr;  // compiled code (deriveCompiled), else the IR is walked
   bool direct_ = false;          // direct symbols are derived by their compiled code at once
+  bool orderedDirect_ = false;   // ... including those placing instances (canOrderDirectInstances)
+  struct PlacingShape {
+    uint32_t depth = 0;
+    uint64_t preorder = 0;  // the axiom: 0; direct shapes from 1 on
+  };
+  PlacingShape placingShape_;            // the shape whose instance is being placed
+  std::vector<PlacingShape> placedBy_;   // per instance, while orderedDirect_
+  uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
   bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
   ir::ProgramLayout layout_;               // how program_ numbers blocks and ops
 };
@@ -1668,6 +1768,14 @@ void fgsg_rt_direct_rotate_normal(FgsgContext*, void* scope, double degrees) noe
 void fgsg_rt_direct_scale(FgsgContext*, void* scope, const double* sizes, uint32_t relative) noexcept {
   auto& s = *static_cast<fgsg::rt::Scope*>(scope);
   for (int k = 0; k < 3; ++k) s.S[k] = (relative >> k) & 1 ? sizes[k] * s.S[k] : sizes[k];
+}
+
+void fgsg_rt_direct_instance(FgsgContext* ctx, void* scope, uint32_t op, uint32_t symbol, const double* params,
+                             uint32_t depth, uint64_t preorder) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  call.guard([&] {
+    call.engine->directInstance(*static_cast<fgsg::rt::Scope*>(scope), op, symbol, params, depth, preorder);
+  });
 }
 
 void fgsg_rt_check_time(FgsgContext* ctx) noexcept {
