@@ -92,6 +92,33 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
       bothEngines(kMixed, o);
     }
   }
+  SECTION("instances placed at every depth come out in breadth-first order") {
+    // Direct code derives depth-first; the engine puts the instances back in order.
+    const auto r = bothEngines(R"(
+      Axiom ~> I("sphere") Tree(0) T(5, 0, 0) Tree(1);
+      Tree(n) : n < 6 ~> I("cube") [ Rz(30) T(0, 1, 0) Tree(n + 1) ] [ Rz(-30) T(0, 1, 0) Tree(n + 2) ]
+                         S(0.2, 0.2, 0.2) I("cube");
+      Tree(n) ~> S(0.3, 0.3, 0.3) I("sphere");
+    )");
+    CHECK(r.instances.instances.size() == 99);
+  }
+  SECTION("depth-first derivation") {
+    bothEngines(R"(
+      derive depthfirst;
+      Axiom ~> Tree(0) I("sphere");
+      Tree(n) : n < 6 ~> [ Rz(30) T(0, 1, 0) Tree(n + 1) ] I("cube") [ Rz(-30) T(0, 1, 0) Tree(n + 2) ];
+      Tree(n) ~> S(0.3, 0.3, 0.3) I("sphere");
+    )");
+  }
+  SECTION("priorities: the order is the engine's own") {
+    bothEngines(R"(
+      Axiom ~> Low(0) High(0);
+      priority 1:
+      High(n) : n < 4 ~> [ T(1, 0, 0) High(n + 1) ] I("cube") Low(n);
+      priority 0:
+      Low(n) : n < 3 ~> T(0, 1, 0) I("sphere") Low(n + 1);
+    )");
+  }
   SECTION("splits, components and parameters of every type") {
     bothEngines(R"(
       Lot ~> S(10, 8, 6) Mass("brick", (1, 2, 3), true);
