@@ -115,6 +115,7 @@ bool parseUnsigned(const std::string& s, uint64_t& out) {
 class Repl {
  public:
   explicit Repl(bool interactive) : interactive_(interactive) {}
+  repl::Session& session() { return session_; }
 
   // Handles one complete input; false when it failed.
   bool handle(const std::string& raw, bool& quit) {
@@ -252,12 +253,20 @@ class Repl {
 }  // namespace
 
 int replCommand(const Args& args) {
-  if (!args.empty()) {
-    std::cerr << "usage: fgsg repl   (reads a script from stdin when it is not a terminal)\n";
-    return 2;
+  backend::Engine engine = backend::Engine::Jit;
+  for (const std::string& a : args) {
+    const std::string prefix = "--engine=";
+    const auto parsed = a.rfind(prefix, 0) == 0 ? backend::parseEngine(a.substr(prefix.size())) : std::nullopt;
+    if (!parsed) {
+      std::cerr << "usage: fgsg repl [--engine=jit|interp]   (reads a script from stdin when it is "
+                   "not a terminal)\n";
+      return 2;
+    }
+    engine = *parsed;
   }
   const bool interactive = isatty(STDIN_FILENO);
   Repl repl(interactive);
+  repl.session().setEngine(engine);
   bool anyFailed = false;
   bool quit = false;
   std::string pending;

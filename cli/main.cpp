@@ -13,10 +13,11 @@ usage:
                 [--preview out.png] [--instances out.json] [--max-shapes N]
                 [--max-depth N] [--max-seconds S] [--collide-all] [--stats] [--quiet]
                 [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
+                [--engine jit|interp]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE             print the typed IR after constant folding
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
-  fgsg repl                build a grammar interactively (:help inside; a script on stdin)
+  fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
   fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]
                            compile to a shared library and its C header NAME.h
   fgsg --help | --version
@@ -28,6 +29,8 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --repair-surface   repair what can be repaired in the surface mesh instead of failing
   --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
                      (default: closest to the centre of the surface's bounding box)
+  --engine E         jit (default): compile the rules to native code first (cached in
+                     $FGSG_CACHE_DIR or ~/.cache/fgsg); interp: the reference interpreter
 compile writes lib + FILE's stem + .so when -o is not given, and NAME.h beside the
 library (or in --header DIR); the library runs through the C API of libfgsg.so with
 the same results as fgsg run (docs/cli.md).

@@ -361,7 +361,7 @@ bool Session::derive(uint32_t maxDepth, rt::DeriveResult& result, size_t& triang
     assets.addSearchDir(dir);
     opt.assetDirs.push_back(dir);
   }
-  result = backend::interpret(*module_, opt, assets);
+  result = backend::derive(engine_, *module_, assembled_.source.text, opt, assets);
   bool ok = true;
   for (const auto& m : result.messages) {
     frontend::Diagnostic d;

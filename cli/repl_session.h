@@ -10,6 +10,7 @@
 // as it was. Diagnostics are mapped back to the input (`<repl:N>`) or file they came from.
 #pragma once
 
+#include "backend/engine.h"
 #include "frontend/diagnostics.h"
 #include "ir/ir.h"
 #include "runtime/derivation.h"
@@ -59,6 +60,9 @@ class Session {
 
   bool setAttribute(const std::string& name, const std::string& value, std::string& error);
   void setSeed(uint64_t seed) { seed_ = seed; }
+  // The JIT (default) compiles the session's current text for every :derive (from the
+  // object cache when it is unchanged), so a redefined rule never runs stale code.
+  void setEngine(backend::Engine engine) { engine_ = engine; }
   void reset();
 
   // The session grammar as one .fgsg text that `fgsg run` reads.
@@ -82,6 +86,7 @@ class Session {
   Assembled assembled_;                 // and the text it was compiled from
   int priority_ = 0;                    // the `priority N:` in force for the next rule
   uint64_t seed_ = 1;
+  backend::Engine engine_ = backend::Engine::Jit;
   std::vector<std::pair<std::string, std::string>> overrides_;
 };
 
