@@ -9,6 +9,13 @@ namespace fgsg::backend::aot {
 
 namespace {
 
+// The runtime entry points generated code calls, as C prototypes: runtime/abi.def
+// expanded once more (its C++ types are C types here).
+#define FGSG_RT_FN(name, ret, ...) #ret " " #name "(" #__VA_ARGS__ ");\n"
+constexpr const char kRuntimePrototypes[] =
+#include "runtime/abi.def"
+    ;
+
 bool isAsciiLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
 
@@ -46,7 +53,11 @@ std::string libraryHeader(const std::string& name) {
   out += "extern const struct FgsgProgram fgsg_program_" + name + ";\n\n";
   out += "/* A generator for this grammar (free it with fgsg_generator_free). */\n";
   out += "static inline fgsg_generator* " + name + "_create(void) {\n";
-  out += "  return fgsg_generator_create(&fgsg_program_" + name + ");\n}\n";
+  out += "  return fgsg_generator_create(&fgsg_program_" + name + ");\n}\n\n";
+  out += "/* The runtime entry points lib" + name + ".so calls (libfgsg.so exports them; for\n";
+  out += " * reference, not for use: their context comes from the engine). runtime/abi.def. */\n";
+  out += "typedef struct FgsgContext FgsgContext;\n";
+  out += kRuntimePrototypes;
   out += "\n#ifdef __cplusplus\n}\n#endif\n\n#endif /* " + guard + " */\n";
   return out;
 }

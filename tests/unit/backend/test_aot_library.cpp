@@ -55,6 +55,9 @@ TEST_CASE("NAME.h holds the C API, the program's declaration and NAME_create", "
   CHECK(h.find("static inline fgsg_generator* stem_leaf_create(void) {\n"
                "  return fgsg_generator_create(&fgsg_program_stem_leaf);\n}") != std::string::npos);
   CHECK(h.find("extern \"C\"") != std::string::npos);
+  // runtime/abi.def expanded once more: every entry point compiled code calls.
+  CHECK(h.find("void fgsg_rt_emit(FgsgContext*, uint32_t, const double*);\n") != std::string::npos);
+  CHECK(h.find("uint64_t fgsg_rt_child_key(uint64_t, uint64_t);\n") != std::string::npos);
   const std::string end = "#endif /* FGSG_LIBRARY_stem_leaf_H */\n";
   CHECK(h.compare(h.size() - end.size(), end.size(), end) == 0);
 }
