@@ -41,6 +41,16 @@ struct Scope {
   Vec3 toWorld(const Vec3& local) const { return P + axes * local; }
 };
 
+// Compiled code reads and writes P and axes in place (backend/codegen/program_codegen.cpp).
+static_assert(sizeof(Vec3) == 24 && sizeof(Mat3) == 72, "Eigen's fixed-size types hold their doubles");
+
+// T(x, y, z) on the plane: the origin moves by x X + y Y + z Z. Written out operation by
+// operation, so compiled code repeats it bit for bit (the build turns off floating-point
+// contraction, which would fuse these into FMAs on some CPUs).
+inline void translateLocal(Scope& s, double x, double y, double z) {
+  for (int k = 0; k < 3; ++k) s.P[k] = s.P[k] + ((s.axes(k, 0) * x + s.axes(k, 1) * y) + s.axes(k, 2) * z);
+}
+
 // cos and sin of an angle in degrees, remembered: grammars turn by a few angles over and
 // over. A derivation owns one memo (no thread-local state, which costs a call per access
 // in position-independent code); results are exactly std::cos/std::sin's.

@@ -20,6 +20,7 @@
 #include <llvm/TargetParser/Host.h>
 
 #include <chrono>
+#include <cstddef>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -377,6 +378,7 @@ class ProgramCodegen {
     entry_ = llvm::BasicBlock::Create(c_, "entry", fn_);
     exit_ = llvm::BasicBlock::Create(c_, "return", fn_);
     giveUp_ = nullptr;
+    cosSin_ = nullptr;
     b_.SetInsertPoint(exit_);
     b_.CreateRetVoid();
     llvm::BasicBlock* body = newBlock("shape");
@@ -405,8 +407,124 @@ class ProgramCodegen {
     scope_ = frameSlots(b_.getInt8Ty(), sizeof(rt::Scope));
     b_.CreateMemCpy(scope_, llvm::MaybeAlign(8), scopeIn, llvm::MaybeAlign(8), sizeof(rt::Scope));
 
-    // Candidates (global alternative index, weight), collected as Interpreter::choose
-    // does: rules with a guard first, those without only when none applies.
+    llvm::Value* chosen = frameSlots(b_.getInt32Ty(), 1);
+    llvm::BasicBlock* apply = newBlock("apply");
+    if (constantChoice(sym))
+      chooseStatic(sym, chosen, apply);
+    else
+      chooseDynamic(sym, chosen, apply, alternatives);
+    b_.SetInsertPoint(apply);
+    // Every 4096 rewrites the engine checks --max-seconds.
+    bump(kRewrites);
+    {
+      llvm::Value* low = b_.CreateAnd(loadU64(kRewrites), b_.getInt64(4095));
+      llvm::BasicBlock* check = newBlock("check_time");
+      llvm::BasicBlock* go = newBlock("go");
+      b_.CreateCondBr(b_.CreateICmpEQ(low, b_.getInt64(0)), check, go);
+      b_.SetInsertPoint(check);
+      call("fgsg_rt_check_time", {ctx_});
+      checkStop();
+      b_.CreateBr(go);
+      b_.SetInsertPoint(go);
+    }
+    llvm::SwitchInst* sw = b_.CreateSwitch(b_.CreateLoad(b_.getInt32Ty(), chosen), exit_);
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = ir_.rules[ri];
+      if (!choosable(r)) continue;
+      for (size_t a = 0; a < r.alternatives.size(); ++a) {
+        llvm::BasicBlock* alt = newBlock("alternative");
+        sw->addCase(b_.getInt32(layout_.firstAlternative[ri] + static_cast<uint32_t>(a)), alt);
+        b_.SetInsertPoint(alt);
+        directSuccessor(r.alternatives[a].ops);
+        b_.CreateBr(exit_);
+      }
+    }
+    b_.SetInsertPoint(entry_);
+    b_.CreateBr(body);
+  }
+
+  // Weights all constant and valid, at most one rule with a guard: which alternatives
+  // are candidates depends only on that guard, so the choice is decided in code.
+  bool constantChoice(const ir::Symbol& sym) const {
+    int guarded = 0;
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = ir_.rules[ri];
+      if (!choosable(r)) continue;
+      guarded += r.hasGuard;
+      for (const auto& alt : r.alternatives)
+        if (!alt.probability.isConst() || !(alt.probability.num >= 0) || !std::isfinite(alt.probability.num))
+          return false;
+    }
+    return guarded <= 1;
+  }
+
+  // Interpreter::choose with the candidate lists known: the guarded rule's positive
+  // alternatives when its guard holds, else those of the rules without a guard; with
+  // several, x = next() * total and the walk of pickCandidate over constant weights.
+  void chooseStatic(const ir::Symbol& sym, llvm::Value* chosen, llvm::BasicBlock* apply) {
+    struct Candidate {
+      uint32_t alt;
+      double weight;
+    };
+    auto pick = [&](const std::vector<Candidate>& list) {
+      if (list.size() == 1) {
+        b_.CreateStore(b_.getInt32(list[0].alt), chosen);
+        b_.CreateBr(apply);
+        return;
+      }
+      double total = 0;
+      for (const auto& c : list) total += c.weight;
+      llvm::Value* x = b_.CreateFMul(call("fgsg_rt_next", {ctx_}), llvm::ConstantFP::get(b_.getDoubleTy(), total));
+      for (size_t i = 0; i + 1 < list.size(); ++i) {
+        llvm::Value* w = llvm::ConstantFP::get(b_.getDoubleTy(), list[i].weight);
+        llvm::BasicBlock* found = newBlock("found");
+        llvm::BasicBlock* next = newBlock("walk_next");
+        b_.CreateCondBr(b_.CreateFCmpOLT(x, w), found, next);
+        b_.SetInsertPoint(found);
+        b_.CreateStore(b_.getInt32(list[i].alt), chosen);
+        b_.CreateBr(apply);
+        b_.SetInsertPoint(next);
+        x = b_.CreateFSub(x, w);
+      }
+      b_.CreateStore(b_.getInt32(list.back().alt), chosen);  // also when rounding leaves x beyond all
+      b_.CreateBr(apply);
+    };
+    auto positive = [&](uint32_t ri, std::vector<Candidate>& list) {
+      const ir::Rule& r = ir_.rules[ri];
+      for (size_t a = 0; a < r.alternatives.size(); ++a)
+        if (r.alternatives[a].probability.num > 0)
+          list.push_back({layout_.firstAlternative[ri] + static_cast<uint32_t>(a), r.alternatives[a].probability.num});
+    };
+    std::vector<Candidate> general;
+    for (uint32_t ri : sym.rules)
+      if (choosable(ir_.rules[ri]) && !ir_.rules[ri].hasGuard) positive(ri, general);
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = ir_.rules[ri];
+      if (!choosable(r) || !r.hasGuard) continue;
+      std::vector<Candidate> specific;
+      positive(ri, specific);
+      llvm::Value* g = num(r.guard);  // evaluated in any case: it may draw random numbers
+      if (!cannotFail(r.guard)) checkStop();
+      if (specific.empty()) continue;  // a guard that holds still leaves no candidate
+      llvm::BasicBlock* holds = newBlock("holds");
+      llvm::BasicBlock* otherwise = newBlock("general");
+      b_.CreateCondBr(b_.CreateFCmpUNE(g, zero()), holds, otherwise);
+      b_.SetInsertPoint(holds);
+      pick(specific);
+      b_.SetInsertPoint(otherwise);
+    }
+    if (general.empty()) {  // no rule applies: the shape is terminal
+      bump(kTerminals);
+      b_.CreateBr(exit_);
+      return;
+    }
+    pick(general);
+  }
+
+  // Interpreter::choose in general: candidates (global alternative index, weight)
+  // collected at run time, rules with a guard first, those without only when none
+  // applies.
+  void chooseDynamic(const ir::Symbol& sym, llvm::Value* chosen, llvm::BasicBlock* apply, size_t alternatives) {
     const size_t room = std::max<size_t>(alternatives, 1);
     llvm::Value* candAlt = frameSlots(b_.getInt32Ty(), room);
     llvm::Value* candWeight = frameSlots(b_.getDoubleTy(), room);
@@ -482,10 +600,8 @@ class ProgramCodegen {
     // One candidate takes no random number; several: x = next() * total, then the walk
     // of Interpreter::pickCandidate (the last one when rounding leaves x beyond all).
     b_.SetInsertPoint(rewrite);
-    llvm::Value* chosen = frameSlots(b_.getInt32Ty(), 1);
     b_.CreateStore(b_.CreateLoad(b_.getInt32Ty(), candAlt), chosen);
     llvm::BasicBlock* pick = newBlock("pick");
-    llvm::BasicBlock* apply = newBlock("apply");
     b_.CreateCondBr(b_.CreateICmpUGT(n, b_.getInt32(1)), pick, apply);
     b_.SetInsertPoint(pick);
     {
@@ -514,34 +630,49 @@ class ProgramCodegen {
       b_.CreateStore(b_.CreateAdd(iv, b_.getInt32(1)), i);
       b_.CreateBr(loop);
     }
-    b_.SetInsertPoint(apply);
-    // Every 4096 rewrites the engine checks --max-seconds.
-    bump(kRewrites);
-    {
-      llvm::Value* low = b_.CreateAnd(loadU64(kRewrites), b_.getInt64(4095));
-      llvm::BasicBlock* check = newBlock("check_time");
-      llvm::BasicBlock* go = newBlock("go");
-      b_.CreateCondBr(b_.CreateICmpEQ(low, b_.getInt64(0)), check, go);
-      b_.SetInsertPoint(check);
-      call("fgsg_rt_check_time", {ctx_});
-      checkStop();
-      b_.CreateBr(go);
-      b_.SetInsertPoint(go);
+  }
+
+  // The frame scope's doubles: P (0..2), then axes column by column (3 + 3 column + row).
+  static_assert(offsetof(rt::Scope, P) == 0 && offsetof(rt::Scope, axes) == 24, "rt::Scope's layout");
+  llvm::Value* scopeSlot(uint32_t index) { return b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), scope_, index); }
+  llvm::Value* scopeLoad(uint32_t index) { return b_.CreateLoad(b_.getDoubleTy(), scopeSlot(index)); }
+
+  // rt::translateLocal, operation for operation.
+  void translateLocal(llvm::Value* x, llvm::Value* y, llvm::Value* z) {
+    for (uint32_t k = 0; k < 3; ++k) {
+      llvm::Value* sum = b_.CreateFAdd(b_.CreateFMul(scopeLoad(3 + k), x), b_.CreateFMul(scopeLoad(6 + k), y));
+      sum = b_.CreateFAdd(sum, b_.CreateFMul(scopeLoad(9 + k), z));
+      b_.CreateStore(b_.CreateFAdd(scopeLoad(k), sum), scopeSlot(k));
     }
-    llvm::SwitchInst* sw = b_.CreateSwitch(b_.CreateLoad(b_.getInt32Ty(), chosen), exit_);
-    for (uint32_t ri : sym.rules) {
-      const ir::Rule& r = ir_.rules[ri];
-      if (!choosable(r)) continue;
-      for (size_t a = 0; a < r.alternatives.size(); ++a) {
-        llvm::BasicBlock* alt = newBlock("alternative");
-        sw->addCase(b_.getInt32(layout_.firstAlternative[ri] + static_cast<uint32_t>(a)), alt);
-        b_.SetInsertPoint(alt);
-        directSuccessor(r.alternatives[a].ops);
-        b_.CreateBr(exit_);
-      }
+  }
+
+  // Interpreter::turn: cos and sin from the engine's memo, then rt::rotateLocal in place.
+  void rotateLocal(uint32_t axis, llvm::Value* degrees) {
+    if (!cosSin_) cosSin_ = buffer(2);
+    call("fgsg_rt_direct_cos_sin", {ctx_, degrees, cosSin_});
+    llvm::Value* c = b_.CreateLoad(b_.getDoubleTy(), cosSin_);
+    llvm::Value* sn = b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), cosSin_, 1));
+    const uint32_t i = (axis + 1) % 3, j = (axis + 2) % 3;
+    llvm::Value* a[3];
+    llvm::Value* b[3];
+    for (uint32_t k = 0; k < 3; ++k) {
+      a[k] = scopeLoad(3 + 3 * i + k);
+      b[k] = scopeLoad(3 + 3 * j + k);
     }
-    b_.SetInsertPoint(entry_);
-    b_.CreateBr(body);
+    for (uint32_t k = 0; k < 3; ++k) {
+      b_.CreateStore(b_.CreateFAdd(b_.CreateFMul(c, a[k]), b_.CreateFMul(sn, b[k])), scopeSlot(3 + 3 * i + k));
+      b_.CreateStore(b_.CreateFSub(b_.CreateFMul(c, b[k]), b_.CreateFMul(sn, a[k])), scopeSlot(3 + 3 * j + k));
+    }
+  }
+
+  // rt::childKey(parent, index) in place: mix64(parent ^ mix64(index + constant)), the
+  // inner mix folded now. Integer arithmetic: the same bits as the runtime's.
+  llvm::Value* childKey(llvm::Value* parent, uint64_t index) {
+    llvm::Value* x = b_.CreateXor(parent, b_.getInt64(rt::mix64(index + 0x632be59bd9b4e019ull)));
+    x = b_.CreateAdd(x, b_.getInt64(0x9e3779b97f4a7c15ull));
+    x = b_.CreateMul(b_.CreateXor(x, b_.CreateLShr(x, 30)), b_.getInt64(0xbf58476d1ce4e5b9ull));
+    x = b_.CreateMul(b_.CreateXor(x, b_.CreateLShr(x, 27)), b_.getInt64(0x94d049bb133111ebull));
+    return b_.CreateXor(x, b_.CreateLShr(x, 31));
   }
 
   // A successor's ops on the frame's scope; [ ] save and restore it in frame slots.
@@ -559,7 +690,7 @@ class ProgramCodegen {
           llvm::Value* y = num(op.args[1]);
           llvm::Value* z = num(op.args[2]);
           if (mayFail) checkStop();
-          call("fgsg_rt_direct_translate", {ctx_, scope_, x, y, z});
+          translateLocal(x, y, z);
           break;
         }
         case OpKind::Rotate: {
@@ -567,9 +698,9 @@ class ProgramCodegen {
           for (const auto& a : op.args) angles.push_back(num(a));
           if (mayFail) checkStop();
           if (op.index < 3)
-            call("fgsg_rt_direct_turn", {ctx_, scope_, u32(op.index), angles[0]});
+            rotateLocal(op.index, angles[0]);
           else
-            for (uint32_t k = 0; k < 3; ++k) call("fgsg_rt_direct_turn", {ctx_, scope_, u32(k), angles[k]});
+            for (uint32_t k = 0; k < 3; ++k) rotateLocal(k, angles[k]);
           break;
         }
         case OpKind::RotateNormal: {
@@ -618,7 +749,7 @@ class ProgramCodegen {
             bump(kTerminals);
             break;
           }
-          llvm::Value* key = call("fgsg_rt_child_key", {key_, b_.getInt64(index)});
+          llvm::Value* key = childKey(key_, index);
           b_.CreateCall(directFns_[op.index], {ctx_, scope_, args, key, b_.CreateAdd(depth_, b_.getInt32(1)), attrs_});
           checkStop();
           b_.CreateStore(rng_, field(kRng));  // the child drew from its own stream
@@ -649,6 +780,7 @@ class ProgramCodegen {
   llvm::Value* scope_ = nullptr;
   llvm::BasicBlock* giveUp_ = nullptr;  // direct code: where an inexact derivation leaves
   uint32_t symbol_ = 0;                  // direct code: the symbol derived
+  llvm::Value* cosSin_ = nullptr;        // direct code: the memo's answer for a turn
   llvm::Value* preorder_ = nullptr;      // ... and the shape's preorder number
 };
 

@@ -446,7 +446,7 @@ class Interpreter final : public QueryHost {
     if (surface_)
       surface_->translate(scope, x, y, z);
     else
-      scope.P += scope.axes * rt::Vec3(x, y, z);
+      rt::translateLocal(scope, x, y, z);
   }
 
   void turn(rt::Scope& scope, int axis, double degrees) {
@@ -911,9 +911,8 @@ class Interpreter final : public QueryHost {
     stack_.push_back({st.scope, st.geom, st.width, st.line});
   }
   void nativePop(NativeCall& call, uint32_t op) { scopeCommand(*call.st, *layout_.ops[op], nullptr); }
-  // Direct derivation's scope commands: on the plane, as translate() and turn().
-  void directTranslate(rt::Scope& s, double x, double y, double z) { s.P += s.axes * rt::Vec3(x, y, z); }
-  void directTurn(rt::Scope& s, uint32_t axis, double degrees) { turn(s, static_cast<int>(axis), degrees); }
+  // Direct derivation turns as turn() does, with the cosine and sine of this memo.
+  void directCosSin(double degrees, double* out) { trig_.cosSin(degrees, out[0], out[1]); }
   void directTimeCheck() { checkTime(); }
   void directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
                       uint64_t preorder) {
@@ -1753,12 +1752,8 @@ void fgsg_rt_pop(FgsgContext* ctx, uint32_t op) noexcept {
   call.guard([&] { call.engine->nativePop(call, op); });
 }
 
-void fgsg_rt_direct_translate(FgsgContext* ctx, void* scope, double x, double y, double z) noexcept {
-  static_cast<NativeCall*>(ctx)->engine->directTranslate(*static_cast<fgsg::rt::Scope*>(scope), x, y, z);
-}
-
-void fgsg_rt_direct_turn(FgsgContext* ctx, void* scope, uint32_t axis, double degrees) noexcept {
-  static_cast<NativeCall*>(ctx)->engine->directTurn(*static_cast<fgsg::rt::Scope*>(scope), axis, degrees);
+void fgsg_rt_direct_cos_sin(FgsgContext* ctx, double degrees, double* out) noexcept {
+  static_cast<NativeCall*>(ctx)->engine->directCosSin(degrees, out);
 }
 
 void fgsg_rt_direct_rotate_normal(FgsgContext*, void* scope, double degrees) noexcept {
