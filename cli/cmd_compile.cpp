@@ -29,11 +29,7 @@ CompileOptions parseCompileOptions(const Args& args) {
   CompileOptions o;
   OptionReader r(args);
   while (!r.done()) {
-    if (r.peek().empty() || r.peek()[0] != '-') {
-      if (!o.file.empty()) throw UsageError{"more than one grammar file given ('" + o.file + "', '" + r.peek() + "')"};
-      o.file = r.next();
-      continue;
-    }
+    if (r.grammarFile(o.file)) continue;
     const std::string f = r.flag();
     if (f == "-o" || f == "--output") o.output = r.value(f);
     else if (f == "--header") {

@@ -34,11 +34,7 @@ RunOptions parseRunOptions(const Args& args) {
   RunOptions o;
   OptionReader r(args);
   while (!r.done()) {
-    if (r.peek().empty() || r.peek()[0] != '-') {
-      if (!o.file.empty()) throw UsageError{"more than one grammar file given ('" + o.file + "', '" + r.peek() + "')"};
-      o.file = r.next();
-      continue;
-    }
+    if (r.grammarFile(o.file)) continue;
     const std::string f = r.flag();
     if (f == "-o" || f == "--output") o.output = r.value(f);
     else if (f == "--seed") o.derive.seed = r.unsignedValue(f);
@@ -105,13 +101,7 @@ double since(std::chrono::steady_clock::time_point t) {
 // Prints derivation messages like compile diagnostics: location, source line, caret.
 bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& source) {
   frontend::Diagnostics diags(&source);
-  for (const auto& m : result.messages) {
-    frontend::SourceRange at{{m.line, m.col}, {m.line, m.col}};
-    if (m.isError)
-      diags.error(m.code, at, m.message);
-    else
-      diags.warning(m.code, at, m.message);
-  }
+  backend::addDeriveMessages(result, diags);
   diags.print(std::cerr);
   return !diags.hasErrors();
 }

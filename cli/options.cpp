@@ -6,6 +6,13 @@
 
 namespace fgsg::cli {
 
+bool OptionReader::grammarFile(std::string& file) {
+  if (!peek().empty() && peek()[0] == '-') return false;
+  if (!file.empty()) throw UsageError{"more than one grammar file given ('" + file + "', '" + peek() + "')"};
+  file = next();
+  return true;
+}
+
 std::string OptionReader::flag() {
   std::string a = next();
   hasPending_ = false;

@@ -31,6 +31,10 @@ class OptionReader {
   // Splits `--flag=value` into flag and pending value.
   std::string flag();
 
+  // When the next argument is not a flag, takes it as the grammar file and returns true;
+  // a second file is a usage error.
+  bool grammarFile(std::string& file);
+
  private:
   const std::vector<std::string>& args_;
   size_t pos_ = 0;

@@ -4,6 +4,7 @@
 // mutable state, so several can derive at once in different threads.
 #include "backend/aot/fgsg_api.h"
 
+#include "backend/engine.h"
 #include "backend/interp/interpreter.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
@@ -220,13 +221,7 @@ bool generate(fgsg_generator* g, std::string& error) {
   rt::DeriveResult result = backend::deriveCompiled(g->module, *g->program, opt, *assets);
   frontend::Diagnostics diags(&g->source);
   std::string warnings;
-  for (const auto& m : result.messages) {
-    frontend::SourceRange at{{m.line, m.col}, {m.line, m.col}};
-    if (m.isError)
-      diags.error(m.code, at, m.message);
-    else
-      diags.warning(m.code, at, m.message);
-  }
+  backend::addDeriveMessages(result, diags);
   for (const auto& d : diags.all()) {
     if (d.severity == frontend::Severity::Warning) warnings += diags.format(d) + "\n";
   }

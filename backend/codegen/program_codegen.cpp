@@ -223,6 +223,17 @@ class ProgramCodegen {
 
   llvm::Value* u32(uint32_t v) { return b_.getInt32(v); }
 
+  // The parameter slots of the shape an Emit op writes, in a stack buffer.
+  llvm::Value* emitSlots(const ir::Op& op) {
+    llvm::Value* slots = buffer(ir_.symbols[op.index].slotCount);
+    uint32_t slot = 0;
+    for (const auto& a : op.args) {
+      store(a, slots, slot);
+      slot += ir::slotWidth(a.type);
+    }
+    return slots;
+  }
+
   void op(const ir::Op& op) {
     const uint32_t id = layout_.opId(op);
     const bool sequential = ir_.mode != ir::DeriveMode::Parallel;
@@ -231,13 +242,7 @@ class ProgramCodegen {
     for (const auto& s : op.sizes) mayFail |= !cannotFail(s.value);
     switch (op.kind) {
       case OpKind::Emit: {
-        const ir::Symbol& target = ir_.symbols[op.index];
-        llvm::Value* slots = buffer(target.slotCount);
-        uint32_t slot = 0;
-        for (const auto& a : op.args) {
-          store(a, slots, slot);
-          slot += ir::slotWidth(a.type);
-        }
+        llvm::Value* slots = emitSlots(op);
         if (mayFail) checkStop();
         call("fgsg_rt_emit", {ctx_, u32(id), slots});
         checkStop();
@@ -734,12 +739,7 @@ class ProgramCodegen {
           break;
         case OpKind::Emit: {
           const ir::Symbol& target = ir_.symbols[op.index];
-          llvm::Value* args = buffer(target.slotCount);
-          uint32_t slot = 0;
-          for (const auto& a : op.args) {
-            store(a, args, slot);
-            slot += ir::slotWidth(a.type);
-          }
+          llvm::Value* args = emitSlots(op);
           if (mayFail) checkStop();
           // Interpreter::emit: the shape limit first, then the shape is counted.
           giveUpIf(b_.CreateICmpUGE(loadU64(kShapes), loadU64(kShapeBudget)));

@@ -580,6 +580,17 @@ class Interpreter final : public QueryHost {
     }
   }
 
+  // The parameter slots of the shape an Emit op writes (a vector takes three).
+  const double* evalSlots(const ir::Op& op, const Frame& f, ArgBuffer& buf) {
+    double* slots = buf.reserve(m_.symbols[op.index].slotCount);
+    uint32_t slot = 0;
+    for (const auto& a : op.args) {
+      eval_.store(a, f, slots + slot);
+      slot += ir::slotWidth(a.type);
+    }
+    return slots;
+  }
+
   // Evaluates an op's arguments as compiled code does (runtime/abi.def): op.args, then
   // each size's value, in order. An unsupported op is refused before any of them.
   const double* evalOpArgs(const ir::Op& op, const Frame& f, ArgBuffer& buf, uint32_t& n) {
@@ -1018,19 +1029,7 @@ class Interpreter final : public QueryHost {
           applyEvaluated(op, st, ex, f, buf);
           break;
         case ir::OpKind::Push: stack_.push_back({st.scope, st.geom, st.width, st.line}); break;
-        case ir::OpKind::Emit: {
-          double local[64];
-          std::vector<double> big;
-          const ir::Symbol& target = m_.symbols[op.index];
-          double* slots = target.slotCount <= 64 ? local : (big.resize(target.slotCount), big.data());
-          uint32_t slot = 0;
-          for (const auto& a : op.args) {
-            eval_.store(a, f, slots + slot);
-            slot += ir::slotWidth(a.type);
-          }
-          emit(op, slots, st, ex);
-          break;
-        }
+        case ir::OpKind::Emit: emit(op, evalSlots(op, f, buf), st, ex); break;
         default: applyEvaluated(op, st, ex, f, buf); break;
       }
       if (ex.culled) return;
@@ -1395,18 +1394,9 @@ class Interpreter final : public QueryHost {
       return;
     }
     ArgBuffer buf;
-    double slots[64];
-    std::vector<double> big;
     for (const ir::Op& op : ops) {
       if (op.kind == ir::OpKind::Emit) {
-        const uint32_t count = m_.symbols[op.index].slotCount;
-        double* at = count <= 64 ? slots : (big.resize(count), big.data());
-        uint32_t slot = 0;
-        for (const auto& a : op.args) {
-          eval_.store(a, f, at + slot);
-          slot += ir::slotWidth(a.type);
-        }
-        appendModule(op, at, count, target);
+        appendModule(op, evalSlots(op, f, buf), m_.symbols[op.index].slotCount, target);
         continue;
       }
       checkParallelOp(op);
