@@ -3,7 +3,6 @@
 // and gives the same results bit for bit. `fgsg run --engine=interp|jit`; JIT default.
 #pragma once
 
-#include "frontend/diagnostics.h"
 #include "ir/ir.h"
 #include "runtime/assets.h"
 #include "runtime/derivation.h"
@@ -27,9 +26,5 @@ struct EngineReport {
 rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::string& source,
                         const rt::DeriveOptions& options, rt::AssetLibrary& assets,
                         EngineReport* report = nullptr);
-
-// A derivation's messages (R… errors, R004 warnings) as diagnostics of the grammar's
-// source, so they print like compile diagnostics: location, source line, caret.
-void addDeriveMessages(const rt::DeriveResult& result, frontend::Diagnostics& diags);
 
 }  // namespace fgsg::backend

@@ -1,4 +1,5 @@
 // fgsg run: compile a grammar, derive it, and write the mesh, preview and instances.
+#include "backend/derive_messages.h"
 #include "backend/engine.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"

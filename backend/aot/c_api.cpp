@@ -4,7 +4,7 @@
 // mutable state, so several can derive at once in different threads.
 #include "backend/aot/fgsg_api.h"
 
-#include "backend/engine.h"
+#include "backend/derive_messages.h"
 #include "backend/interp/interpreter.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
