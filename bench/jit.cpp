@@ -71,19 +71,24 @@ void compare(const char* name, const char* text, int reps, backend::jit::Jit& ji
   const ir::Module m = compile(text);
   rt::AssetLibrary assets;
   const auto code = jit.compileProgram(m, text, backend::jit::ObjectCache(std::string()));
-  rt::DeriveResult ri, rj;
+  const auto firstTier = jit.compileProgram(m, text, backend::jit::ObjectCache(std::string()),
+                                            backend::jit::Jit::Tiering::Baseline);
+  rt::DeriveResult ri, rj, rb;
   const double interp = best(reps, [&] { return backend::interpret(m, {}, assets); }, ri);
   const double jitted = best(reps, [&] { return backend::deriveCompiled(m, code.program(), {}, assets); }, rj);
-  if (!same(ri, rj)) {
+  const double baseline = best(reps, [&] { return backend::deriveCompiled(m, firstTier.program(), {}, assets); }, rb);
+  if (!same(ri, rj) || !same(ri, rb)) {
     std::fprintf(stderr, "%s: the JIT's result differs from the interpreter's\n", name);
     std::exit(1);
   }
   const auto& s = rj.stats;
   std::printf("{\"bench\":\"jit\",\"grammar\":\"%s\",\"shapes\":%llu,\"terminals\":%llu,"
               "\"interp_s\":%.6f,\"jit_s\":%.6f,\"speedup\":%.2f,\"jit_terminals_per_s\":%.0f,"
-              "\"jit_shapes_per_s\":%.0f,\"interp_terminals_per_s\":%.0f}\n",
+              "\"jit_shapes_per_s\":%.0f,\"interp_terminals_per_s\":%.0f,\"first_tier_s\":%.6f,"
+              "\"first_tier_speedup\":%.2f}\n",
               name, (unsigned long long)s.shapesCreated, (unsigned long long)s.terminals, interp, jitted,
-              interp / jitted, s.terminals / jitted, s.shapesCreated / jitted, s.terminals / interp);
+              interp / jitted, s.terminals / jitted, s.shapesCreated / jitted, s.terminals / interp, baseline,
+              interp / baseline);
   std::fflush(stdout);
 }
 

@@ -29,9 +29,10 @@ void emitProgram(llvm::Module& out, const ir::Module& m, const ProgramCodegenOpt
 // baseline of the architecture, so it runs on any machine of that kind.
 enum class CpuTarget { Host, Generic };
 
-// Both run the O2 pipeline on the IR; machine code is then either generated quickly
-// (fast instruction selection and register allocation: the JIT's first tier, runnable
-// soonest) or with every optimisation (libraries, the JIT's cache).
+// Optimized: the O2 pipeline and every optimisation of machine code (libraries, the
+// JIT's cache). Baseline: the JIT's first tier, runnable soonest: a short pipeline
+// (registers for stack slots, redundancy, constant branches) and fast instruction
+// selection and register allocation.
 enum class CodeQuality { Baseline, Optimized };
 
 // Seconds spent in each step of compileProgramObject.

@@ -192,6 +192,14 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
   const auto start = std::chrono::steady_clock::now();
   const std::string key = ObjectCache::key(m, source);
   CompiledProgram out;
+  if (tiering == Tiering::Baseline) {
+    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host,
+                                                             codegen::CodeQuality::Baseline);
+    if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
+    out.optimized_ = false;
+    out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
   if (std::optional<std::string> cached = cache.load(key)) {
     out.fromCache_ = true;
     if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below

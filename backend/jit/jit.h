@@ -68,8 +68,9 @@ class Jit {
   // How a grammar missing from the cache is compiled. Tiered: its code is linked as
   // soon as the first tier is ready (CodeQuality::Baseline) while the optimised object
   // is compiled on another thread and stored in the cache for the next run (the Jit's
-  // destructor waits for it). Optimized: the optimised object at once.
-  enum class Tiering { Tiered, Optimized };
+  // destructor waits for it). Optimized: the optimised object at once. Baseline: the
+  // first tier only, never cached (to measure it).
+  enum class Tiering { Tiered, Optimized, Baseline };
 
   // Compiles a grammar (see backend/codegen/program_codegen.h) into a unit of its own,
   // or loads its object from `cache` when it holds one for this grammar and machine.
