@@ -4,6 +4,7 @@
 #include "backend/jit/jit.h"
 #include "backend/jit/object_cache.h"
 
+#include <memory>
 #include <stdexcept>
 
 namespace fgsg::backend {
@@ -16,11 +17,12 @@ std::optional<Engine> parseEngine(const std::string& name) {
 
 rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::string& source,
                         const rt::DeriveOptions& options, rt::AssetLibrary& assets,
-                        EngineReport* report) {
+                        EngineReport* report, jit::Jit* jit) {
   if (engine == Engine::Interpreter) return interpret(module, options, assets);
   try {
-    jit::Jit jit;
-    const jit::CompiledProgram code = jit.compileProgram(module, source, jit::ObjectCache());
+    std::unique_ptr<jit::Jit> own;
+    if (!jit) jit = (own = std::make_unique<jit::Jit>()).get();
+    const jit::CompiledProgram code = jit->compileProgram(module, source, jit::ObjectCache());
     if (report) {
       report->compileSeconds = code.seconds();
       report->fromCache = code.fromCache();

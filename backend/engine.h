@@ -12,6 +12,10 @@
 
 namespace fgsg::backend {
 
+namespace jit {
+class Jit;
+}
+
 enum class Engine { Interpreter, Jit };
 
 // "interp" / "jit"; nullopt for anything else.
@@ -22,9 +26,11 @@ struct EngineReport {
   bool fromCache = false;       // JIT: the object came from the cache
 };
 
-// `source` is the grammar's text (the JIT's cache key includes it).
+// `source` is the grammar's text (the JIT's cache key includes it). `jit`: the JIT to
+// compile with, which then finishes its background work when the caller destroys it
+// (null: one of the call's own, which waits before returning).
 rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::string& source,
                         const rt::DeriveOptions& options, rt::AssetLibrary& assets,
-                        EngineReport* report = nullptr);
+                        EngineReport* report = nullptr, jit::Jit* jit = nullptr);
 
 }  // namespace fgsg::backend

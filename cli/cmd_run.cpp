@@ -1,6 +1,7 @@
 // fgsg run: compile a grammar, derive it, and write the mesh, preview and instances.
 #include "backend/derive_messages.h"
 #include "backend/engine.h"
+#include "backend/jit/jit.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 namespace fgsg::cli {
 namespace {
@@ -148,10 +150,21 @@ int runCommand(const Args& args) {
     opt.derive.assetDirs.push_back(dir.string());  // data files such as synthesis examples
   }
 
+  // The JIT lives until the command ends: on a grammar's first run it compiles the
+  // optimised code for the cache while the output is written.
+  std::unique_ptr<backend::jit::Jit> jit;
+  if (opt.engine == backend::Engine::Jit) {
+    try {
+      jit = std::make_unique<backend::jit::Jit>();
+    } catch (const std::exception& e) {
+      std::cerr << "fgsg run: the JIT cannot start: " << e.what() << " (--engine=interp runs without it)\n";
+      return 1;
+    }
+  }
   auto t0 = std::chrono::steady_clock::now();
   backend::EngineReport engineReport;
   rt::DeriveResult result = backend::derive(opt.engine, compiled->module, compiled->source.text,
-                                            opt.derive, assets, &engineReport);
+                                            opt.derive, assets, &engineReport, jit.get());
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
   if (!reportMessages(result, compiled->source)) return 1;
 
