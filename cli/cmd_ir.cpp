@@ -1,3 +1,4 @@
+#include "backend/codegen/program_codegen.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "ir/printer.h"
@@ -7,13 +8,34 @@
 namespace fgsg::cli {
 
 int irCommand(const Args& args) {
-  if (args.size() != 1 || args[0].rfind("-", 0) == 0) {
-    std::cerr << "usage: fgsg ir FILE\n";
+  std::string file;
+  bool llvmText = false;
+  for (const std::string& a : args) {
+    if (a == "--llvm") {
+      llvmText = true;
+    } else if (a.rfind("-", 0) == 0 || !file.empty()) {
+      std::cerr << "usage: fgsg ir FILE [--llvm]\n";
+      return 2;
+    } else {
+      file = a;
+    }
+  }
+  if (file.empty()) {
+    std::cerr << "usage: fgsg ir FILE [--llvm]\n";
     return 2;
   }
-  auto compiled = compileFile(args[0], false);
+  auto compiled = compileFile(file, false);
   if (!compiled) return 1;
-  std::cout << ir::printModule(compiled->module);
+  if (!llvmText) {
+    std::cout << ir::printModule(compiled->module);
+    return 0;
+  }
+  try {
+    std::cout << backend::codegen::programLLVMText(compiled->module);
+  } catch (const std::exception& e) {
+    std::cerr << "fgsg ir: " << e.what() << "\n";
+    return 1;
+  }
   return 0;
 }
 

@@ -15,7 +15,7 @@ usage:
                 [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp]
   fgsg check FILE          report errors and warnings; exit 1 on errors
-  fgsg ir FILE             print the typed IR after constant folding
+  fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
   fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]

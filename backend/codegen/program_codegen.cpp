@@ -851,6 +851,20 @@ void emitProgram(llvm::Module& out, const ir::Module& m, const ProgramCodegenOpt
   ProgramCodegen(out, m, options).run();
 }
 
+std::string programLLVMText(const ir::Module& m) {
+  std::unique_ptr<llvm::TargetMachine> tm = targetMachine(CpuTarget::Host, CodeQuality::Optimized);
+  llvm::LLVMContext context;
+  llvm::Module module("fgsg_program", context);
+  module.setDataLayout(tm->createDataLayout());
+  module.setTargetTriple(tm->getTargetTriple().str());
+  emitProgram(module, m, {});
+  optimize(module, *tm, CodeQuality::Optimized);
+  std::string text;
+  llvm::raw_string_ostream out(text);
+  module.print(out, nullptr);
+  return text;
+}
+
 std::string compileProgramObject(const ir::Module& m, const ProgramCodegenOptions& options,
                                  CpuTarget cpu, CodeQuality quality, ObjectCompileTimes* times) {
   using Clock = std::chrono::steady_clock;

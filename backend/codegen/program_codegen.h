@@ -42,6 +42,9 @@ struct ObjectCompileTimes {
   double machine = 0.0;   // instruction selection to the object file
 };
 
+// The grammar's LLVM IR as text, after the O2 pipeline (`fgsg ir --llvm`).
+std::string programLLVMText(const ir::Module& m);
+
 // The grammar compiled (O2) to a relocatable position-independent ELF object, as bytes.
 // Throws std::runtime_error when LLVM cannot set up the target.
 std::string compileProgramObject(const ir::Module& m, const ProgramCodegenOptions& options,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fgsg run --engine and the JIT's object cache as a user meets them: a bad engine name is
+# fgsg run --engine, the JIT's object cache and fgsg ir --llvm as a user meets them: a bad engine name is
 # a usage error (exit 2); a second run of a grammar takes its code from the cache; a
 # cache that is off or cannot be written changes nothing in the output.
 set -uo pipefail
@@ -36,4 +36,10 @@ cmp "$tmp/a.glb" "$tmp/d.glb" || fail "unwritable cache: other bytes"
 
 "$fgsg" run "$grammar" --engine interp -q -o "$tmp/e.glb" || fail "--engine interp failed"
 cmp "$tmp/a.glb" "$tmp/e.glb" || fail "interpreter and JIT differ"
+# fgsg ir --llvm shows what the JIT compiles: Fig. 4's symbols are derived directly.
+"$fgsg" ir "$root/examples/fig4_local_pattern.fgsg" --llvm >"$tmp/ll" || fail "fgsg ir --llvm failed"
+grep -q "^define internal void @fgsg_direct_A(" "$tmp/ll" || fail "no direct function for A in fgsg ir --llvm"
+grep -q "^@fgsg_program = " "$tmp/ll" || fail "no program table in fgsg ir --llvm"
+"$fgsg" ir --llvm >/dev/null 2>&1
+[ $? -eq 2 ] || fail "fgsg ir --llvm without a file: expected exit code 2"
 echo "ok: engine flag and object cache"
