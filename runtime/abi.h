@@ -65,7 +65,7 @@ static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact)
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 4u
+#define FGSG_ABI_VERSION 5u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of

@@ -41,3 +41,7 @@ double fgsg_rt_vec_dot(double ax, double ay, double az, double bx, double by, do
 extern "C" uint64_t fgsg_rt_child_key(uint64_t parent, uint64_t index) noexcept {
   return fgsg::rt::childKey(parent, index);
 }
+
+extern "C" void fgsg_rt_cos_sin_deg(double degrees, double* out) noexcept {
+  fgsg::rt::cosSinDegrees(degrees, out[0], out[1]);
+}

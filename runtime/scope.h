@@ -54,6 +54,13 @@ inline void translateLocal(Scope& s, double x, double y, double z) {
 // cos and sin of an angle in degrees, remembered: grammars turn by a few angles over and
 // over. A derivation owns one memo (no thread-local state, which costs a call per access
 // in position-independent code); results are exactly std::cos/std::sin's.
+// cos and sin of an angle in degrees, as every turn of a scope computes them.
+inline void cosSinDegrees(double degrees, double& c, double& s) {
+  const double r = degrees * 3.14159265358979323846 / 180.0;
+  c = std::cos(r);
+  s = std::sin(r);
+}
+
 class TrigMemo {
  public:
   void cosSin(double degrees, double& c, double& s) {
@@ -61,8 +68,8 @@ class TrigMemo {
     std::memcpy(&bits, &degrees, sizeof bits);
     Entry& e = memo_[(bits * 0x9e3779b97f4a7c15ull) >> 58];  // all bits, sign included
     if (e.bits != bits) {
-      const double r = degrees * 3.14159265358979323846 / 180.0;
-      e = {bits, std::cos(r), std::sin(r)};
+      e.bits = bits;
+      cosSinDegrees(degrees, e.c, e.s);
     }
     c = e.c;
     s = e.s;

@@ -655,10 +655,14 @@ class ProgramCodegen {
     }
   }
 
-  // Interpreter::turn: cos and sin from the engine's memo, then rt::rotateLocal in place.
+  // Interpreter::turn: cos and sin (from the engine's memo for a constant angle, which
+  // it will hold; computed afresh for one that varies), then rt::rotateLocal in place.
   void rotateLocal(uint32_t axis, llvm::Value* degrees) {
     if (!cosSin_) cosSin_ = buffer(2);
-    call("fgsg_rt_direct_cos_sin", {ctx_, degrees, cosSin_});
+    if (llvm::isa<llvm::Constant>(degrees))
+      call("fgsg_rt_direct_cos_sin", {ctx_, degrees, cosSin_});
+    else
+      call("fgsg_rt_cos_sin_deg", {degrees, cosSin_});
     llvm::Value* c = b_.CreateLoad(b_.getDoubleTy(), cosSin_);
     llvm::Value* sn = b_.CreateLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_64(b_.getDoubleTy(), cosSin_, 1));
     const uint32_t i = (axis + 1) % 3, j = (axis + 2) % 3;
