@@ -192,24 +192,19 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
   const auto start = std::chrono::steady_clock::now();
   const std::string key = ObjectCache::key(m, source);
   CompiledProgram out;
-  if (tiering == Tiering::Baseline) {
-    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host,
-                                                             codegen::CodeQuality::Baseline);
-    if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
-    out.optimized_ = false;
-    out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return out;
-  }
-  if (std::optional<std::string> cached = cache.load(key)) {
-    out.fromCache_ = true;
-    if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below
+  if (tiering != Tiering::Baseline) {
+    if (std::optional<std::string> cached = cache.load(key)) {
+      out.fromCache_ = true;
+      if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below
+    }
   }
   if (!out.fromCache_) {
     const bool tiered = tiering == Tiering::Tiered && !cache.folder().empty();
-    const auto quality = tiered ? codegen::CodeQuality::Baseline : codegen::CodeQuality::Optimized;
-    const std::string object = codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host, quality);
+    const bool firstTier = tiered || tiering == Tiering::Baseline;
+    const std::string object = codegen::compileProgramObject(
+        m, {}, codegen::CpuTarget::Host, firstTier ? codegen::CodeQuality::Baseline : codegen::CodeQuality::Optimized);
     if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
-    out.optimized_ = !tiered;
+    out.optimized_ = !firstTier;
     if (tiered)
       impl_->background.emplace_back([m, cache, key] {
         try {
@@ -219,7 +214,7 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
           // The next run compiles again; nothing is lost but time.
         }
       });
-    else
+    else if (!firstTier)
       cache.store(key, object);
   }
   out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
