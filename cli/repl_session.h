@@ -87,6 +87,9 @@ class Session {
   int priority_ = 0;                    // the `priority N:` in force for the next rule
   uint64_t seed_ = 1;
   backend::Engine engine_ = backend::Engine::Jit;
+  // One JIT for the session, made at the first :derive: its optimising compiles for the
+  // cache run while the user types.
+  std::shared_ptr<backend::jit::Jit> jit_;
   std::vector<std::pair<std::string, std::string>> overrides_;
 };
 
