@@ -12,13 +12,7 @@
 
 namespace fgsg::bench {
 
-inline ir::Module compileGrammarFile(const std::string& path) {
-  frontend::SourceFile file;
-  std::string error;
-  if (!ir::readSourceFile(path, file, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    std::exit(1);
-  }
+inline ir::Module compileGrammar(const frontend::SourceFile& file) {
   frontend::Diagnostics diags(&file);
   ir::Module m;
   if (!ir::compileSource(file, m, diags)) {
@@ -26,6 +20,21 @@ inline ir::Module compileGrammarFile(const std::string& path) {
     std::exit(1);
   }
   return m;
+}
+
+inline ir::Module compileGrammarFile(const std::string& path) {
+  frontend::SourceFile file;
+  std::string error;
+  if (!ir::readSourceFile(path, file, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  }
+  return compileGrammar(file);
+}
+
+// A grammar given as text (the benchmarks' own), named bench.fgsg in diagnostics.
+inline ir::Module compileGrammarText(const std::string& text) {
+  return compileGrammar(frontend::SourceFile::make("bench.fgsg", text));
 }
 
 }  // namespace fgsg::bench

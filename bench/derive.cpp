@@ -3,6 +3,7 @@
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_derive [--quick]
 #include "backend/interp/interpreter.h"
+#include "bench/bench_grammar.h"
 #include "bench/bench_grammars.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
@@ -20,17 +21,7 @@ namespace {
 using namespace fgsg;
 using namespace fgsg::bench;
 
-ir::Module compile(const char* text) {
-  auto file = frontend::SourceFile::make("bench.fgsg", text);
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    std::fputs("bench grammar does not compile\n", stderr);
-    diags.print(std::cerr);
-    std::exit(1);
-  }
-  return m;
-}
+ir::Module compile(const char* text) { return bench::compileGrammarText(text); }
 
 struct Best {
   double seconds = 1e30;

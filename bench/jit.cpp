@@ -6,6 +6,7 @@
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
 #include "backend/jit/object_cache.h"
+#include "bench/bench_grammar.h"
 #include "bench/bench_grammars.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
@@ -28,16 +29,7 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-ir::Module compile(const std::string& text) {
-  auto file = frontend::SourceFile::make("bench.fgsg", text);
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    diags.print(std::cerr);
-    std::exit(1);
-  }
-  return m;
-}
+ir::Module compile(const std::string& text) { return bench::compileGrammarText(text); }
 
 template <class Derive>
 double best(int reps, Derive derive, rt::DeriveResult& last) {

@@ -1668,31 +1668,39 @@ void NativeCall::guard(Fn&& fn) noexcept {
 
 }  // namespace
 
-rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& options,
-                           rt::AssetLibrary& assets) {
-  ir::Module local = module;  // --set may add strings to the table
-  std::vector<double> attrs;
+namespace {
+
+// The module as one derivation reads it (--set may add strings to its table) and the
+// attribute slots; false with the error in `failed`.
+bool prepare(const ir::Module& module, const rt::DeriveOptions& options, ir::Module& local,
+             std::vector<double>& attrs, rt::DeriveResult& failed) {
+  local = module;
   try {
     attrs = attributeSlots(local, options.attrOverrides);
+    return true;
   } catch (const DeriveError& e) {
-    rt::DeriveResult r;
-    r.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
-    return r;
+    failed.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+    return false;
   }
+}
+
+}  // namespace
+
+rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& options,
+                           rt::AssetLibrary& assets) {
+  ir::Module local;
+  std::vector<double> attrs;
+  rt::DeriveResult failed;
+  if (!prepare(module, options, local, attrs, failed)) return failed;
   return Interpreter(local, options, assets, std::move(attrs)).run();
 }
 
 rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& program,
                                 const rt::DeriveOptions& options, rt::AssetLibrary& assets) {
-  ir::Module local = module;
+  ir::Module local;
   std::vector<double> attrs;
-  try {
-    attrs = attributeSlots(local, options.attrOverrides);
-  } catch (const DeriveError& e) {
-    rt::DeriveResult r;
-    r.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
-    return r;
-  }
+  rt::DeriveResult failed;
+  if (!prepare(module, options, local, attrs, failed)) return failed;
   // Direct derivation first; where it could not be exact, the engine's own order.
   {
     Interpreter fast(local, options, assets, attrs, &program, true);
