@@ -787,6 +787,8 @@ class Interpreter final : public QueryHost {
   // (breadth-first) or of their preorder (depth-first): orderDirectInstances restores it.
   bool canOrderDirectInstances() const {
     if (!program_->directPlaces || collisions_ || usesOcclusion_ || testAll_) return false;
+    // Synthesize creates shapes of the symbols its example names, not written as Emit.
+    if (moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Synthesize; })) return false;
     std::vector<uint8_t> seen(m_.symbols.size(), 0);
     std::vector<uint32_t> todo;
     std::function<void(const ir::Block&)> scan = [&](const ir::Block& b) {

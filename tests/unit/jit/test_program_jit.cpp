@@ -119,6 +119,20 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
       Low(n) : n < 3 ~> T(0, 1, 0) I("sphere") Low(n + 1);
     )");
   }
+  SECTION("model synthesis in the axiom, its pieces' symbols placing instances") {
+    const auto dir = std::filesystem::temp_directory_path() / "fgsg-test-jit-synthesis";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "stripes.txt") << "label g quad\nlabel W cube\nsize 4 2 1\nlayer 0\ng W g W\ng W g W\n";
+    rt::DeriveOptions o;
+    o.assetDirs = {dir.string()};
+    const auto r = bothEngines(R"(
+      axiom: S(8, 1, 6) Synthesize("stripes.txt", 8, 6, 1) T(0, 2, 0) W;
+      W ~> I("sphere") T(0, 0, 1) V;
+      V ~> I("cube");
+    )", o);
+    CHECK(r.instances.instances.size() == 24 + 2 * 25);
+    std::filesystem::remove_all(dir);
+  }
   SECTION("splits, components and parameters of every type") {
     bothEngines(R"(
       Lot ~> S(10, 8, 6) Mass("brick", (1, 2, 3), true);
