@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <string>
 
 namespace {
@@ -172,6 +173,65 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
     )");
     REQUIRE(!r.ok);
     CHECK(r.messages[0].code == "R008");
+  }
+}
+
+namespace {
+
+// A random grammar of the kind direct derivation handles (scope commands, brackets,
+// instances, guards, weights including 0, Rand), sometimes depth-first.
+std::string randomGrammar(uint32_t seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](std::initializer_list<const char*> options) {
+    return std::string(options.begin()[rng() % options.size()]);
+  };
+  auto chance = [&](double p) { return (rng() % 1000) < p * 1000; };
+  const int symbols = 2 + static_cast<int>(rng() % 4);
+  auto symbol = [&] { return "S" + std::to_string(rng() % symbols); };
+  auto successor = [&] {
+    std::string out;
+    const int ops = 1 + static_cast<int>(rng() % 5);
+    for (int i = 0; i < ops; ++i) {
+      const uint32_t k = rng() % 10;
+      if (k < 2) out += "T(" + pick({"0.5", "Rand(0, 1)", "n * 0.1"}) + ", " + pick({"0", "0.3"}) + ", 0) ";
+      else if (k < 4) out += "Rz(" + pick({"30", "-45", "Rand(-90, 90)", "n * 7"}) + ") ";
+      else if (k < 5) out += "S(" + pick({"0.9", "1r"}) + ", " + pick({"0.5r", "1"}) + ", 1r) ";
+      else if (k < 6) out += "I(\"" + pick({"cube", "sphere"}) + "\") ";
+      else if (k < 8) out += symbol() + "(n + 1) ";
+      else out += "[ Rz(" + pick({"20", "-20"}) + ") T(0, 1, 0) " + symbol() + "(n + 1) ] ";
+    }
+    return out;
+  };
+  std::string g = chance(0.5) ? "derive depthfirst;\n" : "";
+  g += "attr lim = " + std::to_string(2 + rng() % 4) + ";\nAxiom ~> ";
+  for (uint32_t i = 0, n = 1 + rng() % 3; i < n; ++i) g += symbol() + "(0) ";
+  g += chance(0.5) ? "I(\"cube\");\n" : ";\n";
+  for (int s = 0; s < symbols; ++s) {
+    const std::string name = "S" + std::to_string(s);
+    if (chance(0.8)) {
+      g += name + "(n) : n < lim";
+      for (uint32_t a = 0, n = 1 + rng() % 3; a < n; ++a) g += " ~> " + successor() + ": " + pick({"1", "0.5", "2", "0"});
+      g += ";\n";
+    }
+    if (chance(0.7)) g += name + "(n) ~> " + (chance(0.5) ? successor() : std::string("I(\"sphere\")")) + ";\n";
+  }
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("random grammars derive alike with both engines, also where limits stop them") {
+  for (uint32_t seed = 1; seed <= 60; ++seed) {
+    INFO("grammar " << seed << ":\n" << randomGrammar(seed));
+    rt::DeriveOptions free;
+    free.maxShapes = 100000;
+    free.maxDepth = 40;
+    bothEngines(randomGrammar(seed), free);
+    rt::DeriveOptions tight;
+    tight.maxShapes = 2000;
+    tight.maxDepth = 8;
+    tight.seed = seed;
+    bothEngines(randomGrammar(seed), tight);
   }
 }
 
