@@ -19,10 +19,11 @@ constexpr int kMaxGenus2Levels = 6;
 // Splits every cell of a (columns + 1) x (rows + 1) vertex grid, vertex (i, j) at
 // index j * (columns + 1) + i, into two triangles, counter-clockwise when i runs along
 // the first and j along the second tangent of an outward frame. `wrapI` closes the grid
-// around in i (the last column joins the first).
-void gridFaces(SurfaceMesh& m, int columns, int rows, bool wrapI) {
+// around in i (the last column joins the first), `wrapJ` in j (the last row joins the
+// first; the vertices then hold `rows` rows, not rows + 1).
+void gridFaces(SurfaceMesh& m, int columns, int rows, bool wrapI, bool wrapJ = false) {
   const int stride = wrapI ? columns : columns + 1;
-  auto at = [&](int i, int j) { return j * stride + (wrapI ? i % columns : i); };
+  auto at = [&](int i, int j) { return (wrapJ ? j % rows : j) * stride + (wrapI ? i % columns : i); };
   m.faces.reserve(size_t(2) * columns * rows);
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
@@ -297,20 +298,7 @@ SurfaceMesh torus(double R, double r, int segments) {
   }
   // d/du x d/dv points away from the tube's centre line: (u, v) is an outward frame. The
   // last row joins the first, so the grid wraps in both directions.
-  const int stride = rings;
-  m.faces.reserve(size_t(2) * rings * segments);
-  for (int j = 0; j < segments; ++j)
-    for (int i = 0; i < rings; ++i) {
-      const int i1 = (i + 1) % rings, j1 = (j + 1) % segments;
-      const int a = j * stride + i, b = j * stride + i1, c = j1 * stride + i1, d = j1 * stride + i;
-      if ((i + j) % 2 == 0) {
-        m.faces.push_back({a, b, c});
-        m.faces.push_back({a, c, d});
-      } else {
-        m.faces.push_back({a, b, d});
-        m.faces.push_back({b, c, d});
-      }
-    }
+  gridFaces(m, rings, segments, true, true);
   return finish(std::move(m));
 }
 
