@@ -3,6 +3,7 @@
 // prompts); otherwise it reads a script line by line and prints only results and
 // diagnostics, exiting 1 when any input failed.
 #include "cli/commands.h"
+#include "cli/derive_stats.h"
 #include "cli/repl_session.h"
 #include "ir/pipeline.h"
 #include "ir/printer.h"
@@ -89,15 +90,7 @@ std::string trim(const std::string& s) {
 }
 
 void printStats(const rt::DeriveStats& s, size_t triangles) {
-  std::printf("shapes %llu\nrewrites %llu\nterminals %llu\ninstances %llu\ntriangles %zu\n",
-              (unsigned long long)s.shapesCreated, (unsigned long long)s.rewrites,
-              (unsigned long long)s.terminals, (unsigned long long)s.instances, triangles);
-  const std::pair<const char*, uint64_t> placement[] = {
-      {"collision.tests", s.collisionTests}, {"collision.hits", s.collisions},
-      {"merges", s.merges},                  {"line.segments", s.lineSegments},
-      {"line.joined", s.linesJoined},        {"lock.removed", s.locksRemoved}};
-  for (const auto& [name, value] : placement)
-    if (value > 0) std::printf("%s %llu\n", name, (unsigned long long)value);
+  printDeriveStats(s, triangles);
   std::fflush(stdout);
 }
 

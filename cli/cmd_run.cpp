@@ -4,6 +4,7 @@
 #include "backend/jit/jit.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
+#include "cli/derive_stats.h"
 #include "cli/options.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_instances.h"
@@ -207,17 +208,7 @@ int runCommand(const Args& args) {
   if (opt.stats) {
     const auto& s = result.stats;
     const auto& t = compiled->times;
-    std::printf("shapes %llu\nrewrites %llu\nterminals %llu\ninstances %llu\ntriangles %zu\n",
-                (unsigned long long)s.shapesCreated, (unsigned long long)s.rewrites,
-                (unsigned long long)s.terminals, (unsigned long long)s.instances,
-                mesh.triangleCount());
-    // Collision figures only for grammars that test, merge or draw lines (FGSG §4.4).
-    const std::pair<const char*, uint64_t> placement[] = {
-        {"collision.tests", s.collisionTests}, {"collision.hits", s.collisions},
-        {"merges", s.merges},                  {"line.segments", s.lineSegments},
-        {"line.joined", s.linesJoined},        {"lock.removed", s.locksRemoved}};
-    for (const auto& [name, value] : placement)
-      if (value > 0) std::printf("%s %llu\n", name, (unsigned long long)value);
+    printDeriveStats(s, mesh.triangleCount());
     std::printf("time.parse %.6f\ntime.analyze %.6f\ntime.lower %.6f\ntime.compile %.6f\n"
                 "time.derive %.6f\ntime.assemble %.6f\ntime.write %.6f\ntime.preview %.6f\n",
                 t.parseSeconds, t.analyzeSeconds, t.lowerSeconds, engineReport.compileSeconds,
