@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Shared by the reliability scripts: run a command under a time limit and check how it
+# ended. Sourced as `. "$(dirname "$0")/lib.sh"` after `fgsg=$1 root=$2`.
+set -uo pipefail
+fgsg=${1:?fgsg binary}
+root=${2:?source dir}
+inputs="$root/tests/reliability/inputs"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+test_name=$(basename "$0" .sh)
+fail() { echo "FAIL [$test_name]: $*" >&2; exit 1; }
+
+# expect CODE PATTERN -- COMMAND...: COMMAND ends (within 60 s) with exit code CODE and
+# its stderr matches the extended regex PATTERN; its stderr is left in $tmp/err.
+expect() {
+  local code=$1 pattern=$2
+  shift 3
+  timeout 60 "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  [ "$got" -eq "$code" ] || { cat "$tmp/err" >&2; fail "'$*': exit $got, expected $code"; }
+  grep -qE -- "$pattern" "$tmp/err" || { cat "$tmp/err" >&2; fail "'$*': no message matching '$pattern'"; }
+}
+
+# same_message COMMAND...: three runs print the same stderr (no uninitialised reads).
+same_message() {
+  timeout 60 "$@" >/dev/null 2>"$tmp/m1"; timeout 60 "$@" >/dev/null 2>"$tmp/m2"
+  cmp -s "$tmp/m1" "$tmp/m2" || fail "'$*' prints other messages on each run"
+}
