@@ -5,6 +5,7 @@
 #include "backend/jit/object_cache.h"
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace fgsg::backend {
@@ -19,15 +20,13 @@ rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::stri
                         const rt::DeriveOptions& options, rt::AssetLibrary& assets,
                         EngineReport* report, jit::Jit* jit) {
   if (engine == Engine::Interpreter) return interpret(module, options, assets);
+  // Only a failure to compile is the JIT's: what deriving throws is reported by
+  // deriveCompiled like the interpreter's.
+  std::unique_ptr<jit::Jit> own;
+  std::optional<jit::CompiledProgram> code;
   try {
-    std::unique_ptr<jit::Jit> own;
     if (!jit) jit = (own = std::make_unique<jit::Jit>()).get();
-    const jit::CompiledProgram code = jit->compileProgram(module, source, jit::ObjectCache());
-    if (report) {
-      report->compileSeconds = code.seconds();
-      report->fromCache = code.fromCache();
-    }
-    return deriveCompiled(module, code.program(), options, assets);
+    code.emplace(jit->compileProgram(module, source, jit::ObjectCache()));
   } catch (const std::exception& e) {
     rt::DeriveResult failed;
     failed.messages.push_back({true, "R900", 0, 0,
@@ -35,6 +34,11 @@ rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::stri
                                    " (--engine=interp runs it without compiling)"});
     return failed;
   }
+  if (report) {
+    report->compileSeconds = code->seconds();
+    report->fromCache = code->fromCache();
+  }
+  return deriveCompiled(module, code->program(), options, assets);
 }
 
 }  // namespace fgsg::backend

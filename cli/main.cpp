@@ -2,6 +2,8 @@
 #include "cli/commands.h"
 
 #include <cstring>
+#include <exception>
+#include <new>
 #include <iostream>
 
 namespace {
@@ -52,12 +54,22 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = args[0];
   args.erase(args.begin());
-  if (cmd == "run") return fgsg::cli::runCommand(args);
-  if (cmd == "check") return fgsg::cli::checkCommand(args);
-  if (cmd == "ir") return fgsg::cli::irCommand(args);
-  if (cmd == "synth") return fgsg::cli::synthCommand(args);
-  if (cmd == "repl") return fgsg::cli::replCommand(args);
-  if (cmd == "compile") return fgsg::cli::compileCommand(args);
+  // The one boundary every command's exceptions stop at: a message and exit 1, never an
+  // abort. Commands report what they expect themselves; this is for what they did not.
+  try {
+    if (cmd == "run") return fgsg::cli::runCommand(args);
+    if (cmd == "check") return fgsg::cli::checkCommand(args);
+    if (cmd == "ir") return fgsg::cli::irCommand(args);
+    if (cmd == "synth") return fgsg::cli::synthCommand(args);
+    if (cmd == "repl") return fgsg::cli::replCommand(args);
+    if (cmd == "compile") return fgsg::cli::compileCommand(args);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
+    return 1;
+  }
   std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile; see fgsg --help)\n";
   return 2;
 }

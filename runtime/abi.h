@@ -47,6 +47,10 @@ struct FgsgContext {
   // Direct derivation: shapes visited so far (each shape's preorder number, which puts
   // the instances it places in the interpreter's order afterwards).
   uint64_t visits = 0;
+  // Direct derivation recurses natively: a shape whose frame would start below this
+  // address gives up instead (runtime/stack_budget.h), and the engine derives again in
+  // its own order without recursion. 0: no floor.
+  uint64_t stackFloor = 0;
   FgsgQueryFn query = nullptr;            // the engine's query host
   void* queryUser = nullptr;
   // The first error reported, FGSG_OK while none.
@@ -60,12 +64,12 @@ static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact)
                   offsetof(FgsgContext, shapes) == 8 && offsetof(FgsgContext, rewrites) == 16 &&
                   offsetof(FgsgContext, terminals) == 24 && offsetof(FgsgContext, shapeBudget) == 32 &&
                   offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, rng) == 48 &&
-                  offsetof(FgsgContext, visits) == 56,
+                  offsetof(FgsgContext, visits) == 56 && offsetof(FgsgContext, stackFloor) == 64,
               "the context layout generated code assumes");
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 5u
+#define FGSG_ABI_VERSION 6u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of

@@ -338,7 +338,7 @@ class ProgramCodegen {
   // Fields of FgsgContext generated code uses (offsets checked in runtime/abi.h).
   enum ContextField : uint64_t { kStop = 0, kInexact = 4, kShapes = 8, kRewrites = 16,
                                  kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kRng = 48,
-                                 kVisits = 56 };
+                                 kVisits = 56, kStackFloor = 64 };
   llvm::Value* field(uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_, offset); }
   llvm::Value* loadU64(uint64_t offset) { return b_.CreateLoad(b_.getInt64Ty(), field(offset)); }
   void bump(uint64_t offset) { b_.CreateStore(b_.CreateAdd(loadU64(offset), b_.getInt64(1)), field(offset)); }
@@ -395,6 +395,10 @@ class ProgramCodegen {
 
     // A shape at the depth limit stays terminal and the engine warns: its order matters.
     giveUpIf(b_.CreateICmpUGE(depth_, b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimit))));
+    // Native recursion stops before the thread's stack runs out; the engine's own order
+    // needs no stack per level.
+    llvm::Value* frame = b_.CreateIntrinsic(llvm::Intrinsic::frameaddress, {ptr_}, {b_.getInt32(0)});
+    giveUpIf(b_.CreateICmpULT(b_.CreatePtrToInt(frame, b_.getInt64Ty()), loadU64(kStackFloor)));
     symbol_ = s;
     preorder_ = loadU64(kVisits);
     b_.CreateStore(b_.CreateAdd(preorder_, b_.getInt64(1)), field(kVisits));

@@ -10,7 +10,9 @@
 #include "runtime/cga/cga.h"
 #include "runtime/io/find_file.h"
 #include "runtime/occlusion.h"
+#include "runtime/fresh_stack.h"
 #include "runtime/random.h"
+#include "runtime/stack_budget.h"
 #include "runtime/synthesis/synthesis.h"
 
 #include <algorithm>
@@ -145,6 +147,7 @@ class Interpreter final : public QueryHost {
     rt::DeriveResult result;
     const auto start = Clock::now();
     start_ = start;
+    stackFloor_ = rt::stackFloor();
     try {
       checkProgram();
       checkEnvironment();
@@ -674,6 +677,7 @@ class Interpreter final : public QueryHost {
                         "a Lock set grew " + std::to_string(kMaxOnTheSpotDepth) +
                             " shapes deep: a set is derived as one unit, so it must end; '" +
                             sym.name + "' keeps creating itself"};
+    if (rt::belowStackFloor(stackFloor_)) return deriveNowOnFreshStack(symbol, slots, at, parent, index);
     struct Nesting {
       uint32_t& n;
       explicit Nesting(uint32_t& c) : n(++c) {}
@@ -707,6 +711,23 @@ class Interpreter final : public QueryHost {
     stack_.resize(st.stackBase);
     creatorRule_ = outerCreator;
     return ex.collided;
+  }
+
+  // deriveNow, continued on a stack of its own: Lock sets nest as deep as the grammar
+  // makes them (up to kMaxOnTheSpotDepth) whatever the caller's stack.
+  bool deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
+                             uint32_t index) {
+    struct RestoreFloor {
+      uintptr_t& floor;
+      uintptr_t saved;
+      ~RestoreFloor() { floor = saved; }
+    } restore{stackFloor_, stackFloor_};
+    bool collided = false;
+    rt::runOnFreshStack([&] {
+      stackFloor_ = rt::stackFloor();
+      collided = deriveNow(symbol, slots, at, parent, index);
+    });
+    return collided;
   }
 
   // F is a shape symbol when rules rewrite it; where none applies it still draws like the
@@ -863,6 +884,7 @@ class Interpreter final : public QueryHost {
     call.shapeBudget = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
     call.depthLimit = opt_.maxDepth;
     call.visits = visits_;
+    call.stackFloor = stackFloor_;
     program_->direct[symbol](&call, &scope, slots, key, depth, eval_.attrData());
     visits_ = call.visits;
     stats_.shapesCreated += call.shapes;
@@ -1654,6 +1676,7 @@ class Interpreter final : public QueryHost {
   std::vector<PlacingShape> placedBy_;   // per instance, while orderedDirect_
   uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
   bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
+  uintptr_t stackFloor_ = 0;     // recursion (direct code, Lock sets) stays above this frame address
   ir::ProgramLayout layout_;               // how program_ numbers blocks and ops
 };
 
@@ -1686,30 +1709,56 @@ bool prepare(const ir::Module& module, const rt::DeriveOptions& options, ir::Mod
   }
 }
 
+// What escapes a derivation (no memory; a bug) becomes its one error here, so every
+// caller — fgsg run, the REPL, the C API — reports it alike and none aborts.
+rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
+  rt::DeriveResult failed;
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const std::bad_alloc&) {
+    failed.messages.push_back({true, "R018", 0, 0,
+                               "out of memory while deriving: the grammar needs more memory than this "
+                               "machine gives it (lower --max-shapes or --max-depth); nothing was written"});
+  } catch (const std::exception& e) {
+    failed.messages.push_back({true, "R900", 0, 0, std::string("internal error while deriving: ") + e.what()});
+  } catch (...) {
+    failed.messages.push_back({true, "R900", 0, 0, "internal error while deriving"});
+  }
+  return failed;
+}
+
 }  // namespace
 
 rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& options,
                            rt::AssetLibrary& assets) {
-  ir::Module local;
-  std::vector<double> attrs;
-  rt::DeriveResult failed;
-  if (!prepare(module, options, local, attrs, failed)) return failed;
-  return Interpreter(local, options, assets, std::move(attrs)).run();
+  try {
+    ir::Module local;
+    std::vector<double> attrs;
+    rt::DeriveResult failed;
+    if (!prepare(module, options, local, attrs, failed)) return failed;
+    return Interpreter(local, options, assets, std::move(attrs)).run();
+  } catch (...) {
+    return escapedFailure(std::current_exception());
+  }
 }
 
 rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& program,
                                 const rt::DeriveOptions& options, rt::AssetLibrary& assets) {
-  ir::Module local;
-  std::vector<double> attrs;
-  rt::DeriveResult failed;
-  if (!prepare(module, options, local, attrs, failed)) return failed;
-  // Direct derivation first; where it could not be exact, the engine's own order.
-  {
-    Interpreter fast(local, options, assets, attrs, &program, true);
-    rt::DeriveResult result = fast.run();
-    if (!fast.needsExactRun()) return result;
+  try {
+    ir::Module local;
+    std::vector<double> attrs;
+    rt::DeriveResult failed;
+    if (!prepare(module, options, local, attrs, failed)) return failed;
+    // Direct derivation first; where it could not be exact, the engine's own order.
+    {
+      Interpreter fast(local, options, assets, attrs, &program, true);
+      rt::DeriveResult result = fast.run();
+      if (!fast.needsExactRun()) return result;
+    }
+    return Interpreter(local, options, assets, std::move(attrs), &program, false).run();
+  } catch (...) {
+    return escapedFailure(std::current_exception());
   }
-  return Interpreter(local, options, assets, std::move(attrs), &program, false).run();
 }
 
 }  // namespace fgsg::backend

@@ -182,6 +182,8 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
           e.at = rt::surface::atVertex(w.mesh, static_cast<int>(index));
         } else if (const auto* at = word(item, "at")) {
           e.at = w.locator->closestPoint(Vec3((*at)[0], (*at)[1], (*at)[2]));
+          if (!e.at.valid())
+            throw DeriveError{item.loc, "R015", "field " + spec.name + ": the point after 'at' is not a number"};
         } else {
           e.at = w.locator->closestPoint(w.start);
         }

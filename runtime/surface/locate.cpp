@@ -113,20 +113,39 @@ int SurfaceLocator::build(int first, int count, std::vector<Vec3>& centroids) {
   return index;
 }
 
-SurfacePoint SurfaceLocator::closestPoint(const Vec3& p, double* distance) const {
+// A point as far from the surface as `p` in the same direction, but near enough that
+// squared distances stay finite: beyond ~1e154 they overflow to infinity and every box
+// would look as far as the best face. Seen from 1e12 surface sizes away the answer is the
+// same point (the surface's extreme point in that direction) up to rounding.
+Vec3 SurfaceLocator::withinRange(const Vec3& p) const {
+  const Vec3 centre = (nodes_[0].lo + nodes_[0].hi) / 2;
+  const double size = std::max((nodes_[0].hi - nodes_[0].lo).norm(), 1e-300);
+  const double reach = 1e12 * size;
+  // Infinite coordinates are taken as the largest finite ones: a direction remains.
+  const double big = std::numeric_limits<double>::max();
+  const Vec3 q = p.cwiseMax(-big).cwiseMin(big);
+  const Vec3 d = q - centre;
+  const double scale = d.cwiseAbs().maxCoeff();  // |d| without overflowing
+  if (!std::isfinite(scale) || scale * std::sqrt(3.0) <= reach) return q;
+  const Vec3 unit = (d / scale).normalized();
+  return centre + reach * unit;
+}
+
+SurfacePoint SurfaceLocator::closestPoint(const Vec3& pIn, double* distance) const {
   SurfacePoint best;
   double bestSq = std::numeric_limits<double>::infinity();
-  if (nodes_.empty()) {
-    if (distance) *distance = bestSq;
+  if (nodes_.empty() || pIn.hasNaN()) {
+    if (distance) *distance = pIn.hasNaN() ? std::numeric_limits<double>::quiet_NaN() : bestSq;
     return best;
   }
+  const Vec3 p = withinRange(pIn);
   // Depth first, nearer child first, pruning boxes farther than the best so far.
   std::vector<std::pair<double, int>> stack = {
       {boxDistanceSquared(p, nodes_[0].lo, nodes_[0].hi), 0}};
   while (!stack.empty()) {
     const auto [boxSq, index] = stack.back();
     stack.pop_back();
-    if (boxSq >= bestSq) continue;
+    if (best.valid() && boxSq >= bestSq) continue;
     const Node& node = nodes_[index];
     if (node.right < 0) {
       for (int i = node.first; i < node.first + node.count; ++i) {
@@ -136,7 +155,7 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& p, double* distance) const
         const Vec3 q = closestPointOnTriangle(p, mesh_.vertices[t[0]], mesh_.vertices[t[1]],
                                               mesh_.vertices[t[2]], bary);
         const double sq = (q - p).squaredNorm();
-        if (sq < bestSq) {
+        if (sq < bestSq || !best.valid()) {
           bestSq = sq;
           best.face = f;
           best.bary = bary;
@@ -156,7 +175,7 @@ SurfacePoint SurfaceLocator::closestPoint(const Vec3& p, double* distance) const
       stack.push_back({dr, right});
     }
   }
-  if (distance) *distance = std::sqrt(bestSq);
+  if (distance) *distance = p == pIn ? std::sqrt(bestSq) : (best.position(mesh_) - pIn).norm();
   return best;
 }
 

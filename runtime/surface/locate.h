@@ -21,7 +21,9 @@ class SurfaceLocator {
   SurfaceLocator(SurfaceMesh&&) = delete;  // it would outlive a temporary mesh
 
   // The surface point closest to p (exact, up to rounding; ties go to the face found
-  // first); invalid only for a mesh without faces. `distance`, when given, receives |p - q|.
+  // first; for points beyond 1e12 surface sizes, the closest to a point that far in p's
+  // direction). Invalid only for a mesh without faces or a p with a NaN coordinate.
+  // `distance`, when given, receives |p - q|.
   SurfacePoint closestPoint(const Vec3& p, double* distance = nullptr) const;
 
   const SurfaceMesh& mesh() const { return mesh_; }
@@ -33,6 +35,7 @@ class SurfaceLocator {
     int right = -1;            // an inner node: children at index + 1 and `right`
   };
   int build(int first, int count, std::vector<Vec3>& centroids);
+  Vec3 withinRange(const Vec3& p) const;
 
   const SurfaceMesh& mesh_;
   std::vector<int> order_;

@@ -335,3 +335,66 @@ TEST_CASE("fgsg_write gives fgsg run's bytes for the same seed and options", "[c
   CHECK(fgsg_write(g, (scratchDir() / "x.unknown").c_str()) != 0);
   CHECK_THAT(g.error(), Catch::Contains(".unknown"));
 }
+
+namespace {
+
+// Runs `fn` on a thread with a stack of `bytes`, as a host with small worker stacks would.
+void onSmallStack(size_t bytes, void (*fn)(void*), void* arg) {
+  struct Call {
+    void (*fn)(void*);
+    void* arg;
+  } call{fn, arg};
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, bytes);
+  pthread_t thread;
+  REQUIRE(pthread_create(
+              &thread, &attr,
+              [](void* c) -> void* {
+                auto* call = static_cast<Call*>(c);
+                call->fn(call->arg);
+                return nullptr;
+              },
+              &call) == 0);
+  pthread_attr_destroy(&attr);
+  pthread_join(thread, nullptr);
+}
+
+}  // namespace
+
+TEST_CASE("a deep grammar derives on a host thread with a 256 KiB stack, as on the main thread",
+          "[c_api]") {
+  // 20 000 levels of direct derivation would need ~5 MB of native stack.
+  const fs::path grammar = scratchDir() / "deep_chain.fgsg";
+  std::ofstream(grammar) << "axiom: A(0);\nA(k): k < 20000 ~> I(\"cube\") T(1, 0, 0) A(k + 1);\n";
+  const fs::path lib = scratchDir() / "libdeep_chain.so";
+  const fs::path log = scratchDir() / "compile_deep.log";
+  REQUIRE(runProgram({FGSG_EXE, "compile", grammar.string(), "-o", lib.string(), "--quiet"}, log) == 0);
+  void* handle = ::dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
+  REQUIRE(handle != nullptr);
+  auto* program = static_cast<const FgsgProgram*>(::dlsym(handle, "fgsg_program_deep_chain"));
+  REQUIRE(program != nullptr);
+
+  struct Run {
+    const FgsgProgram* program;
+    int status = -1;
+    size_t instances = 0;
+    std::vector<double> transforms;
+  };
+  const auto derive = [](void* arg) {
+    auto* run = static_cast<Run*>(arg);
+    fgsg_generator* g = fgsg_generator_create(run->program);
+    run->status = fgsg_generate(g);
+    run->instances = fgsg_instance_count(g);
+    const double* t = fgsg_instance_transforms(g);
+    if (t) run->transforms.assign(t, t + 16 * run->instances);
+    fgsg_generator_free(g);
+  };
+  Run small{program}, main{program};
+  onSmallStack(256 << 10, derive, &small);
+  derive(&main);
+  CHECK(small.status == 0);
+  CHECK(small.instances == 20000);
+  CHECK(main.instances == 20000);
+  CHECK(small.transforms == main.transforms);
+}
