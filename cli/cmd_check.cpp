@@ -1,3 +1,4 @@
+#include "cli/check_data_files.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 
@@ -12,6 +13,14 @@ int checkCommand(const Args& args) {
   }
   auto compiled = compileFile(args[0]);
   if (!compiled) return 1;
+  frontend::Diagnostics dataDiags(&compiled->source);
+  checkDataFiles(compiled->module, args[0], dataDiags);
+  if (dataDiags.hasErrors()) {
+    dataDiags.print(std::cerr);
+    std::cerr << dataDiags.errorCount() << " error" << (dataDiags.errorCount() == 1 ? "" : "s") << " in "
+              << args[0] << "\n";
+    return 1;
+  }
   std::cout << args[0] << ": ok, " << compiled->module.rules.size() << " rule"
             << (compiled->module.rules.size() == 1 ? "" : "s") << ", " << compiled->warnings
             << " warning" << (compiled->warnings == 1 ? "" : "s") << "\n";

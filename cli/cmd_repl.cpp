@@ -148,7 +148,7 @@ class Repl {
     if (name == ":derive") {
       uint64_t depth = 0;
       if (!arg.empty() && (!parseUnsigned(arg, depth) || depth == 0 || depth > 1'000'000))
-        return fail(":derive takes an optional maximum depth (a whole number >= 1), got '" + arg + "'");
+        return fail(":derive takes an optional maximum depth (a whole number from 1 to 1000000), got '" + arg + "'");
       rt::DeriveResult result;
       size_t triangles = 0;
       if (!session_.derive(static_cast<uint32_t>(depth), result, triangles, std::cerr)) return false;
@@ -165,7 +165,7 @@ class Repl {
     }
     if (name == ":seed") {
       uint64_t seed = 0;
-      if (!parseUnsigned(arg, seed)) return fail(":seed takes a whole number, got '" + arg + "'");
+      if (!parseUnsigned(arg, seed)) return fail(":seed takes a whole number from 0 to 18446744073709551615, got '" + arg + "'");
       session_.setSeed(seed);
       return true;
     }

@@ -51,7 +51,7 @@ RunOptions parseRunOptions(const Args& args) {
     else if (f == "--preview") o.preview = r.value(f);
     else if (f == "--instances") o.instances = r.value(f);
     else if (f == "--max-shapes") o.derive.maxShapes = r.unsignedValue(f);
-    else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f));
+    else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f, 0, UINT32_MAX));
     else if (f == "--max-seconds") {
       o.derive.maxSeconds = r.numberValue(f);
       if (o.derive.maxSeconds <= 0) throw UsageError{"--max-seconds must be positive"};

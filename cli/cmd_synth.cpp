@@ -33,9 +33,17 @@ int usage(const std::string& msg) {
   return 2;
 }
 
+constexpr long long kMaxExtent = 1 << 20;  // cells along one axis, as in label-grid files
+
 bool toInt(const std::string& s, long long lo, long long hi, long long& v) {
   auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && v >= lo && v <= hi;
+}
+
+// Digits with an optional sign, of any length: meant as a number, in range or not.
+bool looksLikeInteger(const std::string& s) {
+  const size_t from = !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;
+  return s.size() > from && s.find_first_not_of("0123456789", from) == std::string::npos;
 }
 
 bool toDouble(const std::string& s, double& v) {
@@ -82,19 +90,22 @@ int synthCommand(const Args& args) {
     if (a == "--size") {
       long long n[3];
       for (int k = 0; k < 3; ++k) {
-        if (i + 1 >= args.size() || !toInt(args[i + 1], 1, 1 << 20, n[k])) {
-          if (k == 2) { n[2] = 1; break; }  // Z may be left out for a planar model
-          return usage("--size needs X Y [Z]: positive integers");
-        }
+        // Z may be left out for a planar model: a next argument that is no integer at all
+        // is the example file; one out of range is still an error, not a file name.
+        const bool integer = i + 1 < args.size() && looksLikeInteger(args[i + 1]);
+        if (k == 2 && !integer) { n[2] = 1; break; }
+        if (!integer || !toInt(args[i + 1], 1, kMaxExtent, n[k]))
+          return usage("--size needs X Y [Z]: whole numbers from 1 to " + std::to_string(kMaxExtent));
         ++i;
       }
       o.size = {int(n[0]), int(n[1]), int(n[2])};
       haveSize = true;
     } else if (a == "--block") {
-      if (!intValue(0, 1 << 20, v)) return usage("--block needs a block size N >= 0 (0: whole grid)");
+      if (!intValue(0, kMaxExtent, v))
+        return usage("--block needs a block size N from 0 to " + std::to_string(kMaxExtent) + " (0: whole grid)");
       o.block = {int(v), int(v), int(v)};
     } else if (a == "--seed") {
-      if (!value(s) || !toInt(s, 0, INT64_MAX, v)) return usage("--seed needs a non-negative integer");
+      if (!value(s) || !toInt(s, 0, INT64_MAX, v)) return usage("--seed needs a whole number from 0 to " + std::to_string(INT64_MAX));
       o.seed = uint64_t(v);
     } else if (a == "--labels") {
       if (!value(labelsOut)) return usage("--labels needs a file name");
@@ -120,19 +131,20 @@ int synthCommand(const Args& args) {
       if (!intValue(1, 100000, v)) return usage("--attempts needs an integer 1..100000");
       o.attempts = int(v);
     } else if (a == "--connect") {
-      if (!intValue(1, 100000, v)) return usage("--connect needs a seed count >= 1");
+      if (!intValue(1, 100000, v)) return usage("--connect needs a seed count from 1 to 100000");
       connectSeeds = int(v);
     } else if (a == "--max-steps") {
-      if (!intValue(1, INT64_MAX, v)) return usage("--max-steps needs a positive integer");
+      if (!intValue(1, INT64_MAX, v)) return usage("--max-steps needs a whole number from 1 to " + std::to_string(INT64_MAX));
       o.maxAssignments = uint64_t(v);
     } else if (a == "--time-limit") {
-      if (!value(s) || !toDouble(s, o.timeLimitSeconds)) return usage("--time-limit needs seconds >= 0");
+      if (!value(s) || !toDouble(s, o.timeLimitSeconds)) return usage("--time-limit needs seconds from 0 to 1e9");
     } else if (a == "--cell") {
-      if (!value(s) || !toDouble(s, cell) || cell <= 0) return usage("--cell needs a size > 0");
+      if (!value(s) || !toDouble(s, cell) || cell <= 0) return usage("--cell needs a size greater than 0 and below 1e9");
     } else if (a == "--symmetry") {
       SymmetrySpec sym;
       if (!value(s) || !parseSymmetry(s, sym))
-        return usage("--symmetry is mirror-x, mirror-y, rotate-90, rotate-180, translate-x:N or translate-y:N");
+        return usage("--symmetry is mirror-x, mirror-y, rotate-90, rotate-180, translate-x:N or translate-y:N "
+                     "(N from 1 to " + std::to_string(kMaxTranslation) + ")");
       o.symmetry.push_back(sym);
     } else if (a.rfind("--border", 0) == 0) {
       std::string spec = a.size() > 8 && a[8] == '=' ? a.substr(9) : "";

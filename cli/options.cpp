@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -34,13 +35,16 @@ std::string OptionReader::value(const std::string& flag) {
   return next();
 }
 
-uint64_t OptionReader::unsignedValue(const std::string& flag) {
+uint64_t OptionReader::unsignedValue(const std::string& flag, uint64_t lo, uint64_t hi) {
   std::string v = value(flag);
   char* end = nullptr;
   errno = 0;
   unsigned long long n = std::strtoull(v.c_str(), &end, 10);
-  if (v.empty() || v[0] == '-' || *end != '\0' || errno == ERANGE)
-    throw UsageError{flag + " expects a whole number >= 0, got '" + v + "'"};
+  // strtoull skips blanks and accepts a sign: only plain digits are a whole number here.
+  if (v.empty() || !std::isdigit(static_cast<unsigned char>(v[0])) || *end != '\0' || errno == ERANGE ||
+      n < lo || n > hi)
+    throw UsageError{flag + " expects a whole number from " + std::to_string(lo) + " to " +
+                     std::to_string(hi) + ", got '" + v + "'"};
   return n;
 }
 

@@ -23,7 +23,9 @@ class OptionReader {
 
   // The value of the option just read (`--seed 4` or `--seed=4`).
   std::string value(const std::string& flag);
-  uint64_t unsignedValue(const std::string& flag);
+  // A whole number from lo to hi; anything else (a sign, a fraction, too large) is a usage
+  // error naming the flag and the range, never a wrapped or truncated value.
+  uint64_t unsignedValue(const std::string& flag, uint64_t lo = 0, uint64_t hi = UINT64_MAX);
   double numberValue(const std::string& flag);
   // `--start 1,2.5,-3`: three finite numbers separated by commas (spaces allowed).
   void pointValue(const std::string& flag, double out[3]);

@@ -12,6 +12,7 @@
 #include "runtime/random.h"
 
 #include <algorithm>
+#include <charconv>
 #include <iostream>
 #include <sstream>
 
@@ -217,7 +218,14 @@ bool Session::addStatements(std::shared_ptr<const SourceFile> input, std::ostrea
       size_t j = i + 1;
       bool negative = false;
       if (j < l.tokens.size() && l.tokens[j]->getType() == FgsgLexer::MINUS) negative = true, ++j;
-      if (j < l.tokens.size()) priority = std::stoi(l.tokens[j]->getText()) * (negative ? -1 : 1);
+      // A level that is not a small integer keeps the current one: compiling the
+      // statement reports it (E002), so no exception may escape here.
+      int level = 0;
+      if (j < l.tokens.size()) {
+        const std::string digits = l.tokens[j]->getText();
+        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), level);
+        if (ec == std::errc() && end == digits.data() + digits.size()) priority = negative ? -level : level;
+      }
       i = j + 2;
       continue;
     }

@@ -3,6 +3,8 @@
 #include "frontend/lex.h"
 
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 
 namespace fgsg::frontend {
 
@@ -29,12 +31,6 @@ SourceRange rangeOf(const antlr4::ParserRuleContext* ctx) {
 
 SourceRange rangeOf(const Token* t) { return t ? tokenRange(t) : SourceRange{}; }
 
-double parseNumber(std::string s) {
-  if (!s.empty() && s.back() == 'r') s.pop_back();  // relative size 0.5r
-  double value = 0.0;
-  std::from_chars(s.data(), s.data() + s.size(), value);
-  return value;
-}
 
 // "a \"b\"" -> a "b"; also \\ \n \t. An unknown escape keeps the character.
 std::string unquote(const std::string& literal) {
@@ -217,7 +213,7 @@ CollisionDecl AstBuilder::buildCollisionDecl(P::CollisionDeclContext* ctx) {
     if (word->word) {
       w.word = text(word->word);
     } else if (auto* n = word->number()) {
-      w.number = parseNumber(n->getText());
+      w.number = literalNumber(n->getText(), rangeOf(n));
       if (word->sign) w.number = -w.number;
     }
     d.words.push_back(std::move(w));
@@ -450,7 +446,7 @@ ExprPtr AstBuilder::buildPrimary(P::PrimaryContext* ctx) {
   if (auto* c = dynamic_cast<P::NumberPrimaryContext*>(ctx)) return buildNumber(c->number());
   if (auto* c = dynamic_cast<P::RelSizePrimaryContext*>(ctx)) {
     auto e = makeExpr(ExprKind::RelSize, rangeOf(ctx));
-    e->number = parseNumber(c->getText());
+    e->number = literalNumber(c->getText(), rangeOf(ctx));
     return e;
   }
   if (auto* c = dynamic_cast<P::StringPrimaryContext*>(ctx)) {
@@ -493,8 +489,24 @@ ExprPtr AstBuilder::buildPrimary(P::PrimaryContext* ctx) {
 ExprPtr AstBuilder::buildNumber(P::NumberContext* ctx) {
   if (!ctx) return nullptr;
   auto e = makeExpr(ExprKind::Number, rangeOf(ctx));
-  e->number = parseNumber(ctx->getText());
+  e->number = literalNumber(ctx->getText(), rangeOf(ctx));
   return e;
+}
+
+double AstBuilder::literalNumber(const std::string& text, const SourceRange& at) {
+  std::string s = text;
+  if (!s.empty() && s.back() == 'r') s.pop_back();  // relative size 0.5r
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    // Too small for a double is (about) 0; too large has no value at all. (The program
+    // keeps the C locale, so strtod reads the '.' as from_chars does.)
+    const double nearest = std::strtod(s.c_str(), nullptr);
+    if (!std::isinf(nearest)) return nearest;
+    diags_.error("E002", at, "the number " + text + " is too large (numbers are at most about 1.8e308)");
+    return 0.0;
+  }
+  return value;
 }
 
 ExprPtr AstBuilder::buildMember(P::MemberPrimaryContext* ctx) {

@@ -55,6 +55,9 @@ class AstBuilder {
   ExprPtr buildTernary(P::TernaryExprContext* ctx);
   ExprPtr buildPrimary(P::PrimaryContext* ctx);
   ExprPtr buildNumber(P::NumberContext* ctx);
+  // The value of a number literal (`2.5`, `1e3`, `0.5r`); one beyond the largest double
+  // is E002 at `at` (not a silent 0 or infinity).
+  double literalNumber(const std::string& text, const SourceRange& at);
   ExprPtr buildMember(P::MemberPrimaryContext* ctx);
   ExprPtr buildVector(P::VectorPrimaryContext* ctx);
 

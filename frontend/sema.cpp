@@ -30,6 +30,7 @@ bool isShapeItem(const Item& item, const SemaResult& sema) {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxParallelSteps = 2147483647;  // INT32_MAX: ir::Module::steps is an int
 
 // Where an expression is being checked: inside a rule (its parameters are visible),
 // and whether a relative/floating size is allowed at this position.
@@ -66,6 +67,12 @@ class Analyzer {
       }
       ConstValue value;
       if (!evalConst(*v.value, value)) {
+        // Its uses are not reported again as unknown names (E010): this is the one error.
+        failedValues_.insert(v.name);
+        if (const Expr* zero = zeroDivisor(*v.value)) {
+          diags_.error("E027", zero->range, "division by zero");
+          continue;
+        }
         diags_.error("E023", v.value->range,
                      std::string(v.isAttr ? "the default of attr '" : "const '") + v.name +
                          "' must be a constant expression (numbers, strings, earlier "
@@ -98,10 +105,21 @@ class Analyzer {
     for (const auto& d : prog_.derives) {
       if (d.mode == "parallel") {
         ConstValue steps;
+        if (d.steps && !evalConst(*d.steps, steps)) {
+          if (const Expr* zero = zeroDivisor(*d.steps)) {
+            diags_.error("E027", zero->range, "division by zero");
+            continue;
+          }
+        }
+        // The step count is an int in the IR: larger values are refused, not wrapped.
         if (!d.steps || !evalConst(*d.steps, steps) || steps.type != ValueType::Num ||
-            steps.num < 0 || steps.num != std::floor(steps.num)) {
-          diags_.error("E029", d.range,
-                       "`derive parallel N;` needs a constant whole number of steps N >= 0");
+            !(steps.num >= 0) || steps.num > kMaxParallelSteps || steps.num != std::floor(steps.num)) {
+          diags_.error("E029", d.steps ? d.steps->range : d.range,
+                       "`derive parallel N;` needs a constant whole number of steps N from 0 to " +
+                           std::to_string(kMaxParallelSteps) +
+                           (d.steps && evalConst(*d.steps, steps) && steps.type == ValueType::Num
+                                ? ", got " + wholeNumberText(steps.num)
+                                : std::string()));
           continue;
         }
         res_.steps = static_cast<int>(steps.num);
@@ -717,6 +735,7 @@ class Analyzer {
       if (report) res_.names[&e] = NameRef{NameRef::Builtin, 0, v};
       return record(e, ValueType::Num, report);
     }
+    if (failedValues_.count(e.text)) return ValueType::Unknown;  // reported at its declaration
     if (report)
       diags_.error("E010", e.range,
                    "unknown name '" + e.text + "'" +
@@ -849,6 +868,19 @@ class Analyzer {
 
   // ------------------------------------------------------------ constants
 
+  // The divisor of a `/` or `%` inside `e` that is a constant zero, if any: why a constant
+  // expression has no value (E027 rather than "not a constant expression").
+  const Expr* zeroDivisor(const Expr& e) const {
+    ConstValue divisor;
+    if (e.kind == ExprKind::Binary && (e.text == "/" || e.text == "%") && e.args.size() == 2 &&
+        evalConst(*e.args[1], divisor) && divisor.type == ValueType::Num && divisor.num == 0)
+      return e.args[1].get();
+    for (const auto& arg : e.args)
+      if (arg)
+        if (const Expr* zero = zeroDivisor(*arg)) return zero;
+    return nullptr;
+  }
+
   bool evalConst(const Expr& e, ConstValue& out) const {
     switch (e.kind) {
       case ExprKind::Number: out = {}; out.num = e.number; return true;
@@ -941,6 +973,13 @@ class Analyzer {
     }
   }
 
+  // All the digits of a large whole number (4294967297, not 4.29497e+09).
+  static std::string wholeNumberText(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return buf;
+  }
+
   static std::string formatNumber(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -1024,6 +1063,7 @@ class Analyzer {
   const Program& prog_;
   SemaResult& res_;
   Diagnostics& diags_;
+  std::set<std::string> failedValues_;  // consts/attrs whose declaration was an error
 };
 
 }  // namespace

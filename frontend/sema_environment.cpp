@@ -523,9 +523,9 @@ class EnvironmentChecker {
     std::string problem;
     if (!std::isfinite(x)) problem = what + " must be a finite number, got " + number(x);
     else if ((key == "vertex" || key == "iterations") && !wholeNumber(x))
-      problem = key == "vertex" ? "a vertex number is a whole number >= 0, got " + number(x)
-                                : "the number of smoothing iterations is a whole number >= 0, got " +
-                                      number(x);
+      problem = key == "vertex" ? "a vertex number is a whole number from 0 to 2147483647, got " + number(x)
+                                : "the number of smoothing iterations is a whole number from 0 to "
+                                  "2147483647, got " + number(x);
     else if (key == "decay" && !(x > 0))
       problem = "'decay' must be positive, got " + number(x);
     if (!problem.empty()) {

@@ -5,6 +5,7 @@
 #include "backend/aot/fgsg_api.h"
 
 #include "backend/derive_messages.h"
+#include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
@@ -316,7 +317,13 @@ FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char*
       error = std::string("fgsg_set_attribute ") + name + ": no value given (NULL)";
       return false;
     }
-    // Kept in order like repeated --set flags: the engine checks them, the last one wins.
+    // Checked now, not at the next fgsg_generate: a bad one kept would fail every later
+    // generation with no way to take it back. Kept in order like repeated --set flags.
+    const std::string problem = backend::attributeOverrideProblem(g->module, name, value);
+    if (!problem.empty()) {
+      error = "fgsg_set_attribute " + problem;
+      return false;
+    }
     g->options.attrOverrides.push_back({name, value});
     return true;
   });

@@ -56,7 +56,9 @@ FGSG_API const char* fgsg_warnings(const fgsg_generator* g);
 FGSG_API int fgsg_set_seed(fgsg_generator* g, uint64_t seed);
 
 /* Overrides a grammar attribute (as `fgsg run --set name=value`). The name and value
- * are checked against the grammar when generating, as the CLI does. */
+ * are checked against the grammar here: an unknown name or a value not of the
+ * attribute's type (number, true/false, "x,y,z") returns nonzero with the reason in
+ * fgsg_last_error and leaves the generator as it was. */
 FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char* value);
 
 /* Grows on this mesh file instead of the grammar's surface (as `fgsg run --surface`;

@@ -176,6 +176,55 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   throw DeriveError{e.loc, "R900", "internal: unknown query"};
 }
 
+namespace {
+
+// Reads `text` as a value of attribute `a` into out[0..2]; false when it is not one. A
+// string takes any text (the caller interns it).
+bool readAttributeValue(const ir::Module& m, int a, const std::string& text, double out[3],
+                        std::string& expected) {
+  switch (m.attrs[a].type) {
+    case ir::Type::Num: {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      expected = "a number";
+      if (text.empty() || *end != '\0' || !std::isfinite(v)) return false;
+      out[0] = v;
+      return true;
+    }
+    case ir::Type::Bool:
+      expected = "true or false";
+      if (text != "true" && text != "false" && text != "1" && text != "0") return false;
+      out[0] = (text == "true" || text == "1") ? 1.0 : 0.0;
+      return true;
+    case ir::Type::Str: return true;
+    case ir::Type::Vec3: {
+      double x, y, z;
+      char tail;
+      expected = "x,y,z";
+      if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3) return false;
+      out[0] = x, out[1] = y, out[2] = z;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string attributeOverrideProblem(const ir::Module& m, const std::string& name, const std::string& text) {
+  const int a = m.findAttr(name);
+  if (a < 0) {
+    std::string known;
+    for (const auto& at : m.attrs) known += (known.empty() ? "" : ", ") + at.name;
+    return name + ": the grammar declares no attr '" + name + "'" +
+           (known.empty() ? " (it declares none)" : " (attrs: " + known + ")");
+  }
+  double value[3];
+  std::string expected;
+  if (!readAttributeValue(m, a, text, value, expected)) return name + "=" + text + ": expected " + expected;
+  return "";
+}
+
 std::vector<double> attributeSlots(
     ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides) {
   std::vector<double> slots(3 * m.attrs.size(), 0.0);
@@ -186,39 +235,13 @@ std::vector<double> attributeSlots(
     slots[3 * i + 2] = v.vec[2];
   }
   for (const auto& [name, text] : overrides) {
-    int a = m.findAttr(name);
-    if (a < 0) {
-      std::string known;
-      for (const auto& at : m.attrs) known += (known.empty() ? "" : ", ") + at.name;
-      throw DeriveError{{}, "R010",
-                        "--set " + name + ": the grammar declares no attr '" + name + "'" +
-                            (known.empty() ? " (it declares none)" : " (attrs: " + known + ")")};
-    }
+    const std::string problem = attributeOverrideProblem(m, name, text);
+    if (!problem.empty()) throw DeriveError{{}, "R010", "--set " + problem};
+    const int a = m.findAttr(name);
     double* out = &slots[3 * a];
-    switch (m.attrs[a].type) {
-      case ir::Type::Num: {
-        char* end = nullptr;
-        double v = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != '\0' || !std::isfinite(v))
-          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected a number"};
-        out[0] = v;
-        break;
-      }
-      case ir::Type::Bool:
-        if (text != "true" && text != "false" && text != "1" && text != "0")
-          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected true or false"};
-        out[0] = (text == "true" || text == "1") ? 1.0 : 0.0;
-        break;
-      case ir::Type::Str: out[0] = m.internString(text); break;
-      case ir::Type::Vec3: {
-        double x, y, z;
-        char tail;
-        if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3)
-          throw DeriveError{{}, "R010", "--set " + name + "=" + text + ": expected x,y,z"};
-        out[0] = x, out[1] = y, out[2] = z;
-        break;
-      }
-    }
+    std::string expected;
+    readAttributeValue(m, a, text, out, expected);
+    if (m.attrs[a].type == ir::Type::Str) out[0] = m.internString(text);
   }
   return slots;
 }

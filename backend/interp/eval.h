@@ -80,6 +80,11 @@ class Evaluator {
   std::vector<double> attrs_;  // three slots per attribute
 };
 
+// Why `name=text` cannot override an attribute of m: an unknown name, or a value that is
+// not of the attribute's type ("count=lots: expected a number"); empty when it can. Shared
+// by `--set` (checked when deriving) and fgsg_set_attribute (checked when set).
+std::string attributeOverrideProblem(const ir::Module& m, const std::string& name, const std::string& text);
+
 // The attribute values for a derivation: defaults, with `--set name=value` overrides
 // parsed by the attribute's type. Throws DeriveError for an unknown name or a bad value.
 std::vector<double> attributeSlots(

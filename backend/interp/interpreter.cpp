@@ -5,10 +5,10 @@
 #include "backend/interp/shape_store.h"
 #include "backend/interp/surface_world.h"
 #include "backend/jit/query_bridge.h"
+#include "backend/synthesis_examples.h"
 #include "ir/program_layout.h"
 #include "runtime/abi.h"
 #include "runtime/cga/cga.h"
-#include "runtime/io/find_file.h"
 #include "runtime/occlusion.h"
 #include "runtime/fresh_stack.h"
 #include "runtime/random.h"
@@ -1235,12 +1235,9 @@ class Interpreter final : public QueryHost {
   const rt::synthesis::Example& loadExample(const std::string& name, ir::Loc at) {
     auto it = examples_.find(name);
     if (it != examples_.end()) return it->second;
-    const std::string path = rt::io::findFile(name, opt_.assetDirs);
     rt::synthesis::Example example;
-    rt::synthesis::Diagnostics diags;
-    if (!rt::synthesis::loadExample(path, example, diags))
-      throw DeriveError{at, "R013", "Synthesize: cannot use the example \"" + name + "\":\n" +
-                                        rt::synthesis::formatDiagnostics(diags)};
+    std::string message;
+    if (!loadSynthesisExample(name, opt_.assetDirs, example, message)) throw DeriveError{at, "R013", message};
     return examples_.emplace(name, std::move(example)).first->second;
   }
 

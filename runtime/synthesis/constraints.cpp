@@ -27,7 +27,8 @@ bool parseSymmetry(const std::string& text, SymmetrySpec& out) {
       if (translate != !arg.empty()) return false;
       if (translate) {
         auto r = std::from_chars(arg.data(), arg.data() + arg.size(), out.offset);
-        if (r.ec != std::errc() || r.ptr != arg.data() + arg.size() || out.offset < 1) return false;
+        if (r.ec != std::errc() || r.ptr != arg.data() + arg.size() || out.offset < 1 || out.offset > kMaxTranslation)
+          return false;  // larger shifts leave every grid (1 << 20 cells a side) and overflow x + N
       }
       return true;
     }

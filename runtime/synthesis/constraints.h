@@ -18,6 +18,7 @@ struct SymmetrySpec {
   int offset = 0;  // translation distance in cells (Translate*)
 };
 const char* symmetryName(SymmetrySpec::Kind k);
+constexpr int kMaxTranslation = 1 << 20;  // N of translate-x:N / translate-y:N
 bool parseSymmetry(const std::string& text, SymmetrySpec& out);  // "mirror-x", "translate-x:8", ...
 
 // σ(p) for one cell; -1 when σ(p) leaves the grid (translations) or the grid does not

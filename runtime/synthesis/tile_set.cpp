@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <set>
 
 namespace fgsg::rt::synthesis {
@@ -53,24 +54,57 @@ int lineOfString(std::string_view text, const std::string& needle) {
   return line;
 }
 
-}  // namespace
+// "a number (3)": what a wrong-typed field holds, short enough for one message line.
+std::string describe(const json& v) {
+  std::string text = v.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return std::string(v.type_name()) + " (" + text + ")";
+}
 
-bool parseTileSetJson(std::string_view text, const std::string& fileName, Example& out,
-                      Diagnostics& diags) {
-  out = Example{};
-  out.path = fileName;
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    int line, col;
-    std::string src;
-    lineCol(text, e.byte > 0 ? e.byte - 1 : 0, line, col, src);
-    std::string msg = e.what();
-    auto p = msg.find("parse error");
-    diags.push_back({fileName, line, col, "E711", "malformed JSON: " + (p == std::string::npos ? msg : msg.substr(p)), src});
+// Reads the optional fields of one JSON object (a tile, a border entry). A field that is
+// present with another type is reported with what was expected, instead of letting
+// nlohmann's typed accessors throw.
+class FieldReader {
+ public:
+  using Fail = std::function<void(const std::string&)>;
+  FieldReader(const json& object, std::string owner, Fail fail)
+      : object_(object), owner_(std::move(owner)), fail_(std::move(fail)) {}
+
+  // Each returns false (after reporting) when the field is there with the wrong type;
+  // an absent field leaves `out` at its default.
+  bool string(const char* key, std::string& out, const char* expected = "a string") {
+    const json* v = find(key);
+    if (!v) return true;
+    if (!v->is_string()) return wrong(key, expected, *v);
+    out = v->get<std::string>();
+    return true;
+  }
+  bool boolean(const char* key, bool& out) {
+    const json* v = find(key);
+    if (!v) return true;
+    if (!v->is_boolean()) return wrong(key, "true or false", *v);
+    out = v->get<bool>();
+    return true;
+  }
+
+ private:
+  const json* find(const char* key) const {
+    auto it = object_.find(key);
+    return it == object_.end() ? nullptr : &*it;
+  }
+  bool wrong(const char* key, const char* expected, const json& v) {
+    fail_(owner_ + ": \"" + key + "\" must be " + expected + ", got " + describe(v));
     return false;
   }
+
+  const json& object_;
+  std::string owner_;
+  Fail fail_;
+};
+
+// Reads the tile set from the parsed document; reports and returns false on bad content.
+bool readTileSet(const json& doc, std::string_view text, const std::string& fileName, Example& out,
+                 Diagnostics& diags) {
   const size_t diagStart = diags.size();
   auto fail = [&](const std::string& near, std::string msg) {
     diags.push_back({fileName, lineOfString(text, near), 0, "E712", std::move(msg), ""});
@@ -95,18 +129,26 @@ bool parseTileSetJson(std::string_view text, const std::string& fileName, Exampl
     const std::string name = t["name"];
     for (const auto& ti : tiles)
       if (ti.name == name) fail(name, "tile `" + name + "` declared twice");
-    std::string symName = t.value("symmetry", std::string("X"));
+    FieldReader fields(t, "tile `" + name + "`", [&](const std::string& msg) { fail(name, msg); });
+    std::string symName = "X";
+    Piece base;
+    base.asset = "cube";
+    bool background = false, empty = false;
+    bool typesOk = fields.string("symmetry", symName, "a symmetry class X, L, T, I, \\ or F (a string)");
+    typesOk &= fields.string("asset", base.asset, "an asset name (a string; \"none\" for no asset)");
+    typesOk &= fields.boolean("background", background);
+    typesOk &= fields.boolean("empty", empty);
+    typesOk &= fields.boolean("connect", base.connect);
+    if (!typesOk) continue;
     SymmetryClass sym;
     if (!symmetryClass(symName, sym)) {
       fail(symName, "tile `" + name + "`: unknown symmetry class `" + symName + "` (X L T I \\ F)");
       continue;
     }
-    Piece base;
-    base.asset = t.value("asset", std::string("cube"));
     if (base.asset == "none") base.asset.clear();
     base.weight = 1.0;
     if (t.contains("weight")) {
-      if (!t["weight"].is_number() || t["weight"].get<double>() < 0) fail(name, "tile `" + name + "`: weight must be a number >= 0");
+      if (!t["weight"].is_number() || t["weight"].get<double>() < 0) fail(name, "tile `" + name + "`: \"weight\" must be a number >= 0, got " + describe(t["weight"]));
       else base.weight = t["weight"].get<double>();
     }
     if (t.contains("color")) {
@@ -116,13 +158,12 @@ bool parseTileSetJson(std::string_view text, const std::string& fileName, Exampl
         base.hasColor = true;
         base.color = {float((v >> 16) & 255) / 255.f, float((v >> 8) & 255) / 255.f, float(v & 255) / 255.f};
       } else {
-        fail(name, "tile `" + name + "`: color must be \"#rrggbb\"");
+        fail(name, "tile `" + name + "`: \"color\" must be a string \"#rrggbb\", got " + describe(t["color"]));
       }
     }
-    base.background = t.value("background", false) || t.value("empty", false);
-    base.connect = t.value("connect", false);
+    base.background = background || empty;
     const int32_t first = int32_t(out.labels.size());
-    if (t.value("empty", false)) out.emptyLabel = first;
+    if (empty) out.emptyLabel = first;
     tiles.push_back({name, sym, first});
     for (int v = 0; v < sym.cardinality; ++v) {
       Piece p = base;
@@ -207,11 +248,19 @@ bool parseTileSetJson(std::string_view text, const std::string& fileName, Exampl
           }
       }
   }
-  if (doc.contains("border") && doc["border"].is_object()) {
+  if (doc.contains("border") && !doc["border"].is_object()) {
+    fail("border", "\"border\" must be an object {\"FACE\": \"LABEL\", ...}, got " + describe(doc["border"]));
+  } else if (doc.contains("border")) {
     for (auto it = doc["border"].begin(); it != doc["border"].end(); ++it) {
       int face = faceFromName(it.key());
-      bool fixed = it.value().is_object() && it.value().value("fixed", false);
-      const json& lab = it.value().is_object() ? it.value().value("label", json()) : it.value();
+      bool fixed = false;
+      json lab = it.value();
+      if (it.value().is_object()) {
+        FieldReader entry(it.value(), "border entry `" + it.key() + "`",
+                          [&](const std::string& msg) { fail(it.key(), msg); });
+        if (!entry.boolean("fixed", fixed)) continue;
+        lab = it.value().contains("label") ? it.value()["label"] : json();
+      }
       int32_t l = -1;
       if (face < 0 || !lab.is_string() || (l = out.findLabel(lab.get<std::string>())) < 0) {
         fail(it.key(), "bad border entry `" + it.key() + "`: expected FACE: \"LABEL\" with a face xmin..zmax and a known label");
@@ -227,6 +276,37 @@ bool parseTileSetJson(std::string_view text, const std::string& fileName, Exampl
     for (int32_t l = 0; l < k; ++l)
       if (out.labels[size_t(l)].background) { out.emptyLabel = l; break; }
   return true;
+}
+
+}  // namespace
+
+bool parseTileSetJson(std::string_view text, const std::string& fileName, Example& out,
+                      Diagnostics& diags) {
+  out = Example{};
+  out.path = fileName;
+  json doc;
+  try {
+    doc = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    int line, col;
+    std::string src;
+    lineCol(text, e.byte > 0 ? e.byte - 1 : 0, line, col, src);
+    std::string msg = e.what();
+    auto p = msg.find("parse error");
+    diags.push_back({fileName, line, col, "E711", "malformed JSON: " + (p == std::string::npos ? msg : msg.substr(p)), src});
+    return false;
+  } catch (const json::exception& e) {  // a number too large for a double (out_of_range)
+    diags.push_back({fileName, 0, 0, "E711", std::string("malformed JSON: ") + e.what(), ""});
+    return false;
+  }
+  try {
+    return readTileSet(doc, text, fileName, out, diags);
+  } catch (const json::exception& e) {
+    // Every field is type-checked before it is read; this only keeps a missed case an
+    // error about the file rather than an abort.
+    diags.push_back({fileName, 0, 0, "E712", std::string("unexpected JSON content: ") + e.what(), ""});
+    return false;
+  }
 }
 
 }  // namespace fgsg::rt::synthesis

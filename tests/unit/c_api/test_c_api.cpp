@@ -213,7 +213,7 @@ TEST_CASE("attribute, surface and write errors", "[c_api]") {
   CHECK(fgsg_set_attribute(g, nullptr, "1") != 0);
   CHECK(fgsg_set_attribute(g, "", "1") != 0);
   CHECK(fgsg_set_attribute(g, "height", nullptr) != 0);
-  CHECK(fgsg_set_attribute(g, "height", "5") == 0);  // checked when generating
+  CHECK(fgsg_set_attribute(g, "height", "5") == 0);
 
   CHECK(fgsg_set_surface(g, "no/such/mesh.off") != 0);
   CHECK_THAT(g.error(), Catch::Contains("no/such/mesh.off: no such file"));
@@ -268,11 +268,10 @@ TEST_CASE("a compiled library generates, and its results read through the access
   const std::string first = fgsg_asset_name(g, assets[0]);
   CHECK((first == "cube" || first == "sphere" || first == "surface"));
 
-  // An unknown attribute fails when generating (R010, as fgsg run --set); the results go.
-  REQUIRE(fgsg_set_attribute(g, "no_such_attr", "1") == 0);
+  // A generation that fails (a surface file that is no mesh) takes the results with it.
+  REQUIRE(fgsg_set_surface(g, FGSG_SOURCE_DIR "/examples/stem_leaf.fgsg") == 0);
   CHECK(fgsg_generate(g) != 0);
-  CHECK_THAT(g.error(), Catch::Contains("R010"));
-  CHECK_THAT(g.error(), Catch::Contains("no_such_attr"));
+  CHECK_THAT(g.error(), Catch::Contains("stem_leaf.fgsg"));
   CHECK(fgsg_vertex_count(g) == 0);
   CHECK(fgsg_instance_count(g) == 0);
   CHECK(fgsg_write(g, (scratchDir() / "after-error.glb").c_str()) != 0);
@@ -397,4 +396,42 @@ TEST_CASE("a deep grammar derives on a host thread with a 256 KiB stack, as on t
   CHECK(small.instances == 20000);
   CHECK(main.instances == 20000);
   CHECK(small.transforms == main.transforms);
+
+TEST_CASE("fgsg_set_attribute refuses an unknown name or a value of the wrong kind, changing nothing",
+          "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(
+      "attr height = 3;\nattr flat = false;\nattr tip = (0, 1, 0);\nattr label = \"a\";\n"
+      "Axiom ~> S(1, height, 1) I(\"cube\");\n");
+  Generator g(&p);
+  REQUIRE(g.error().empty());
+  CHECK(fgsg_set_attribute(g, "no_such_attr", "1") != 0);
+  CHECK(g.error() == "fgsg_set_attribute no_such_attr: the grammar declares no attr 'no_such_attr' "
+                     "(attrs: height, flat, tip, label)");
+  const std::pair<const char*, const char*> wrongKind[] = {
+      {"height", "tall"}, {"height", ""}, {"height", "inf"}, {"flat", "yes"}, {"tip", "1,2"}};
+  for (const auto& [name, value] : wrongKind) {
+    INFO(name << " = " << value);
+    CHECK(fgsg_set_attribute(g, name, value) != 0);
+    CHECK_THAT(g.error(), Catch::StartsWith(std::string("fgsg_set_attribute ") + name + "=" + value + ": expected"));
+  }
+  CHECK(fgsg_set_attribute(g, "flat", "yes") != 0);
+  CHECK_THAT(g.error(), Catch::EndsWith("expected true or false"));
+  CHECK(fgsg_set_attribute(g, "tip", "1,2") != 0);
+  CHECK_THAT(g.error(), Catch::EndsWith("expected x,y,z"));
+  // Good values of every kind are accepted and clear the error.
+  CHECK(fgsg_set_attribute(g, "height", "7.5") == 0);
+  CHECK(g.error().empty());
+  CHECK(fgsg_set_attribute(g, "flat", "1") == 0);
+  CHECK(fgsg_set_attribute(g, "tip", "0,2,0") == 0);
+  CHECK(fgsg_set_attribute(g, "label", "any text") == 0);
+}
+
+TEST_CASE("a refused attribute leaves later generations as they were", "[c_api][compiled]") {
+  Generator g(&stemLeafProgram());
+  const std::string before = generateBytes(g, 3, "attr-before.ply");
+  REQUIRE(before.rfind("error: ", 0) != 0);
+  CHECK(fgsg_set_attribute(g, "no_such_attr", "1") != 0);
+  CHECK_THAT(g.error(), Catch::Contains("no_such_attr"));
+  CHECK(generateBytes(g, 3, "attr-after.ply") == before);
+  CHECK(g.error().empty());
 }

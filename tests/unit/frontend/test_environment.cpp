@@ -337,14 +337,14 @@ TEST_CASE("design values (E040)", "[sema][environment]") {
   onlyError(design("wedge at vertex 0 decay a;"), "E040", 4, kItems + 24,
             "the value of 'decay' must be a constant, and 'a' is an attr");
   onlyError(design("wedge at vertex 1.5;"), "E040", 4, kItems + 16,
-            "a vertex number is a whole number >= 0, got 1.5");
+            "a vertex number is a whole number from 0 to 2147483647, got 1.5");
   onlyError(design("wedge at vertex -1;"), "E040", 4, kItems + 16, "got -1");
   onlyError(design("wedge at vertex 0 decay 0;"), "E040", 4, kItems + 24, "'decay' must be positive, got 0");
   onlyError(design("wedge at vertex 0 decay (-d);"), "E040", 4, kItems + 24, "got -2");
   onlyError(design("regular at vertex 0 direction (0, 0, 0);"), "E040", 4, kItems + 30,
             "a direction must not be (0, 0, 0)");
   onlyError(design("wedge at vertex 0; smooth 2.5;"), "E040", 4, kItems + 26,
-            "the number of smoothing iterations is a whole number >= 0, got 2.5");
+            "the number of smoothing iterations is a whole number from 0 to 2147483647, got 2.5");
 }
 
 TEST_CASE("design values may name constants", "[sema][environment]") {

@@ -749,3 +749,24 @@ TEST_CASE("never crashes: empty, garbage, unterminated, deep nesting", "[parse][
   for (int i = 0; i < 20000; ++i) sum += " + 1";
   CHECK_FALSE(parse(sum + ";").ok);
 }
+
+TEST_CASE("a number literal beyond a double is E002 where it stands, not a silent 0", "[parse][error]") {
+  Parsed p = parse("const big = 1e400;\nA ~> S(2.5e308r, 1, 1) B;\ncollision centre 1e999;\n");
+  CHECK_FALSE(p.ok);
+  INFO(p.printed);
+  REQUIRE(p.diagnostics.size() == 3);
+  const int columns[] = {13, 8, 18};
+  for (int k = 0; k < 3; ++k) {
+    CHECK(p.diagnostics[k].code == "E002");
+    CHECK(p.diagnostics[k].range.begin.line == k + 1);
+    CHECK(p.diagnostics[k].range.begin.col == columns[k]);
+  }
+  CHECK(p.diagnostics[0].message == "the number 1e400 is too large (numbers are at most about 1.8e308)");
+  CHECK(p.diagnostics[1].message.find("the number 2.5e308r is too large") == 0);
+  // Too small is (about) zero, and the largest double is a number.
+  Parsed q = parse("const tiny = 1e-400;\nconst most = 1.7976931348623157e308;\n");
+  CHECK(q.ok);
+  REQUIRE(q.program.values.size() == 2);
+  CHECK(dump(q.program.values[0].value) == "0");
+  CHECK(q.program.values[1].value->number == 1.7976931348623157e308);
+}

@@ -314,3 +314,33 @@ TEST_CASE("IC and IM type-check and wait for no later issue", "[sema][collision]
   auto asset = analyse("Axiom ~> IC(3);");
   CHECK(where(asset, "E017") == std::vector<std::string>{"1:13"});
 }
+
+TEST_CASE("a constant divided by zero is E027 at the divisor, alone", "[sema][constants]") {
+  auto a = analyse("const z = 1 / (2 - 2);\nattr h = 3 % 0;\nAxiom ~> S(z, h, 1) I(\"cube\");\n");
+  CHECK_FALSE(a.ok);
+  REQUIRE(a.diags.size() == 2);
+  CHECK(has(a, "E027", 1, 15));
+  CHECK(has(a, "E027", 2, 14));
+  CHECK(a.diags[0].message == "division by zero");
+  // A constant that is not one for another reason is still E023, and its uses say nothing.
+  auto b = analyse("const w = Rand(1, 2);\nAxiom ~> S(w, w, 1) I(\"cube\");\n");
+  REQUIRE(b.diags.size() == 1);
+  CHECK(has(b, "E023", 1, 11));
+}
+
+TEST_CASE("derive parallel takes 0 to 2147483647 steps; larger is E029 with the range", "[sema]") {
+  CHECK(analyse("derive parallel 2147483647;\naxiom: F(1);\nF(l) -> F(l);\n").sema.steps == 2147483647);
+  for (const char* steps : {"2147483648", "4294967297", "1e300", "-1", "2.5"}) {
+    INFO(steps);
+    auto a = analyse(std::string("derive parallel ") + steps + ";\naxiom: F(1);\nF(l) -> F(l);\n");
+    CHECK_FALSE(a.ok);
+    REQUIRE(a.diags.size() == 1);
+    CHECK(has(a, "E029", 1, 17));
+    CHECK_THAT(a.diags[0].message, Catch::Contains("N from 0 to 2147483647"));
+  }
+  auto a = analyse("derive parallel 4294967297;\naxiom: F(1);\nF(l) -> F(l);\n");
+  CHECK_THAT(a.diags[0].message, Catch::EndsWith(", got 4294967297"));
+  auto z = analyse("derive parallel 4 / 0;\naxiom: F(1);\nF(l) -> F(l);\n");
+  REQUIRE(z.diags.size() == 1);
+  CHECK(has(z, "E027", 1, 21));
+}

@@ -116,6 +116,73 @@ TEST_CASE("tile set: malformed JSON and bad rules are reported", "[synthesis][fo
   CHECK_THAT(formatDiagnostics(d), Catch::Contains("bad neighbour rule"));
 }
 
+namespace {
+// The diagnostics of a tile set that must not load: one or more, each E712 (bad content)
+// or E711 (not JSON), never an exception.
+std::string tileSetErrors(const std::string& json) {
+  Example ex;
+  Diagnostics d;
+  bool ok = true;
+  REQUIRE_NOTHROW(ok = parseTileSetJson(json, "t.json", ex, d));
+  CHECK_FALSE(ok);
+  REQUIRE(!d.empty());
+  return formatDiagnostics(d);
+}
+}  // namespace
+
+TEST_CASE("tile set: a field of the wrong type is a located error naming the tile and key",
+          "[synthesis][format][errors]") {
+  const std::string rules = R"(, "neighbors": [{"left": "a", "right": "a"}]})";
+  struct Case {
+    const char* tiles;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {R"({"tiles": [{"name": "a", "symmetry": 3}])",
+       "tile `a`: \"symmetry\" must be a symmetry class X, L, T, I, \\ or F (a string), got number (3)"},
+      {R"({"tiles": [{"name": "a", "asset": 5}])",
+       "tile `a`: \"asset\" must be an asset name (a string; \"none\" for no asset), got number (5)"},
+      {R"({"tiles": [{"name": "a", "empty": "yes"}])", "tile `a`: \"empty\" must be true or false, got string (\"yes\")"},
+      {R"({"tiles": [{"name": "a", "connect": 1}])", "tile `a`: \"connect\" must be true or false, got number (1)"},
+      {R"({"tiles": [{"name": "a", "background": 0}])", "tile `a`: \"background\" must be true or false, got number (0)"},
+      {R"({"tiles": [{"name": "a", "weight": "heavy"}])", "tile `a`: \"weight\" must be a number >= 0, got string (\"heavy\")"},
+      {R"({"tiles": [{"name": "a", "color": 255}])", "tile `a`: \"color\" must be a string \"#rrggbb\", got number (255)"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.tiles);
+    const std::string errors = tileSetErrors(std::string(c.tiles) + rules);
+    CHECK(errors.rfind("t.json:1:", 0) == 0);  // the file and the tile's line
+    CHECK_THAT(errors, Catch::Contains("error[E712]: " + std::string(c.expected)));
+  }
+  // The line is the tile's, in a file of several lines.
+  const std::string errors = tileSetErrors("{\"tiles\": [\n  {\"name\": \"b\"},\n  {\"name\": \"a\", \"symmetry\": []}\n]}");
+  CHECK(errors.rfind("t.json:3:", 0) == 0);
+  CHECK_THAT(errors, Catch::Contains("got array ([])"));
+}
+
+TEST_CASE("tile set: bad border entries and values JSON cannot hold are errors", "[synthesis][format][errors]") {
+  const std::string tiles = R"({"tiles": [{"name": "a"}], "neighbors": [{"left": "a", "right": "a"}])";
+  CHECK_THAT(tileSetErrors(tiles + R"(, "border": {"xmin": {"label": "a", "fixed": "yes"}}})"),
+             Catch::Contains("border entry `xmin`: \"fixed\" must be true or false, got string (\"yes\")"));
+  CHECK_THAT(tileSetErrors(tiles + R"(, "border": {"xmin": {"label": 7}}})"), Catch::Contains("bad border entry `xmin`"));
+  CHECK_THAT(tileSetErrors(tiles + R"(, "border": ["xmin"]})"),
+             Catch::Contains("\"border\" must be an object {\"FACE\": \"LABEL\", ...}, got array"));
+  CHECK_THAT(tileSetErrors(tiles + R"(, "neighbors": 5})"), Catch::Contains("\"neighbors\" must be an array"));
+  CHECK_THAT(tileSetErrors(R"({"tiles": [{"name": 1}]})"), Catch::Contains("every tile needs a \"name\" string"));
+  CHECK_THAT(tileSetErrors(R"({"tiles": {"name": "a"}})"), Catch::Contains("a tile set is an object with a \"tiles\" array"));
+  // A number beyond a double is reported by the reader, not thrown.
+  CHECK_THAT(tileSetErrors(R"({"tiles": [{"name": "a", "weight": 1e400}]})"), Catch::Contains("error[E711]"));
+  // Good values of every field still load.
+  Example ex;
+  Diagnostics d;
+  CHECK(parseTileSetJson(R"({"tiles": [{"name": "a", "symmetry": "L", "asset": "none", "empty": true,
+      "connect": false, "background": true, "weight": 2, "color": "#ff0000"}],
+      "border": {"xmin": {"label": "a", "fixed": true}, "xmax": "a.1"}})", "t.json", ex, d));
+  CHECK(d.empty());
+  CHECK(ex.labelCount() == 4);
+  CHECK(ex.border.fixed[0] == 0);
+}
+
 TEST_CASE("example image: each colour a label", "[synthesis][format]") {
   Example ex = load("flowers.png");
   CHECK(ex.labelCount() == 6);

@@ -1,0 +1,24 @@
+#include "cli/check_data_files.h"
+
+#include "backend/synthesis_examples.h"
+
+#include <filesystem>
+#include <set>
+
+namespace fgsg::cli {
+
+void checkDataFiles(const ir::Module& module, const std::string& grammarPath, frontend::Diagnostics& diags) {
+  const auto grammarDir = std::filesystem::path(grammarPath).parent_path();
+  const std::vector<std::string> dirs = {(grammarDir.empty() ? std::filesystem::path(".") : grammarDir).string(),
+                                         (grammarDir / "assets").string()};
+  std::set<std::string> seen;  // each file once, at its first call (run stops there too)
+  for (const auto& call : backend::synthesizeCalls(module)) {
+    if (!seen.insert(call.example).second) continue;
+    rt::synthesis::Example example;
+    std::string message;
+    if (!backend::loadSynthesisExample(call.example, dirs, example, message))
+      diags.error("R013", {{call.at.line, call.at.col}, {call.at.line, call.at.col}}, message);
+  }
+}
+
+}  // namespace fgsg::cli
