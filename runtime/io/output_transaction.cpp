@@ -63,7 +63,7 @@ OutputTransaction::~OutputTransaction() { abandon(); }
 bool OutputTransaction::stage(const std::string& path, std::string_view bytes, std::string& error) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-    error = describe("write", path, EISDIR);
+    error = describe("replace", path, EISDIR);
     return false;
   }
   // Beside the target: rename is atomic only within one file system.
