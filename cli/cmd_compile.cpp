@@ -7,7 +7,7 @@
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
-#include "runtime/io/atomic_file.h"
+#include "runtime/io/output_transaction.h"
 
 #include <exception>
 #include <filesystem>
@@ -83,15 +83,18 @@ int compileCommand(const Args& args) {
     return 1;
   }
 
-  if (!backend::aot::linkSharedLibrary(object, opt.output, libDir, error)) {
-    std::cerr << "fgsg compile: " << error << "\n";
-    return 1;
-  }
+  // The header is staged before linking and committed after it: a header that cannot be
+  // written leaves the old library in place, a failed link leaves the old header.
   const std::filesystem::path headerDir =
       !opt.headerDir.empty() ? std::filesystem::path(opt.headerDir)
                              : std::filesystem::path(opt.output).parent_path();
   const std::string header = (headerDir / (opt.name + ".h")).string();
-  if (!rt::io::writeFileAtomically(header, backend::aot::libraryHeader(opt.name), error)) {
+  rt::io::OutputTransaction outputs;
+  if (!outputs.stage(header, backend::aot::libraryHeader(opt.name), error)) {
+    std::cerr << "fgsg compile: " << error << "\n";
+    return 1;
+  }
+  if (!backend::aot::linkSharedLibrary(object, opt.output, libDir, error) || !outputs.commit(error)) {
     std::cerr << "fgsg compile: " << error << "\n";
     return 1;
   }

@@ -179,27 +179,34 @@ int runCommand(const Args& args) {
   rt::Mesh mesh = rt::assembleInstances(result.instances, assets, meshOf);
   const double assembleSeconds = since(t0);
 
+  // One transaction: the mesh, the instances and the preview are all written to temps
+  // first and replace their targets only when every one of them succeeded.
+  rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
-  if (!rt::io::writeMesh(mesh, opt.output, error)) {
+  if (!rt::io::stageMesh(mesh, opt.output, outputs, error) ||
+      (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error))) {
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
-  if (!opt.instances.empty() && !rt::io::writeInstancesJson(result.instances, opt.instances, error)) {
-    std::cerr << "fgsg run: " << error << "\n";
-    return 1;
-  }
-  const double writeSeconds = since(t0);
+  double writeSeconds = since(t0);
 
   t0 = std::chrono::steady_clock::now();
   if (!opt.preview.empty()) {
     std::string warning;
-    if (!rt::render::renderPreview(mesh, rt::render::PreviewOptions{}, opt.preview, error, &warning)) {
+    if (!rt::render::stagePreview(mesh, rt::render::PreviewOptions{}, opt.preview, outputs, error, &warning)) {
       std::cerr << "fgsg run: " << error << "\n";
       return 1;
     }
     if (!warning.empty() && !opt.quiet) std::cerr << "fgsg run: warning: " << warning << "\n";
   }
   const double previewSeconds = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  if (!outputs.commit(error)) {
+    std::cerr << "fgsg run: " << error << "\n";
+    return 1;
+  }
+  writeSeconds += since(t0);
 
   if (!opt.quiet)
     std::cerr << "wrote " << opt.output << " (" << result.instances.instances.size()

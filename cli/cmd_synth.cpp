@@ -12,7 +12,6 @@
 
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <string>
 
 namespace fgsg::cli {
@@ -223,11 +222,13 @@ int synthCommand(const Args& args) {
     return 1;
   }
 
+  // The label grid, mesh and preview are staged and replace their files together, only
+  // when all of them could be written.
+  rt::io::OutputTransaction outputs;
   if (!labelsOut.empty()) {
-    std::ofstream out(labelsOut, std::ios::binary);
-    out << writeLabelGridText(r.labels, ex);
-    if (!out) {
-      std::fprintf(stderr, "%s: error[E742]: cannot write the label grid\n", labelsOut.c_str());
+    std::string err;
+    if (!outputs.stage(labelsOut, writeLabelGridText(r.labels, ex), err)) {
+      std::fprintf(stderr, "%s: error[E742]: cannot write the label grid: %s\n", labelsOut.c_str(), err.c_str());
       return 1;
     }
   }
@@ -245,19 +246,23 @@ int synthCommand(const Args& args) {
       return 1;
     }
     rt::Mesh mesh = rt::assembleInstances(list, lib, meshOf);
-    if (!meshOut.empty() && !rt::io::writeMesh(mesh, meshOut, err)) {
+    if (!meshOut.empty() && !rt::io::stageMesh(mesh, meshOut, outputs, err)) {
       std::fprintf(stderr, "%s: error[E744]: %s\n", meshOut.c_str(), err.c_str());
       return 1;
     }
     if (!previewOut.empty()) {
       rt::render::PreviewOptions po;
       std::string warning;
-      if (!rt::render::renderPreview(mesh, po, previewOut, err, &warning)) {
+      if (!rt::render::stagePreview(mesh, po, previewOut, outputs, err, &warning)) {
         std::fprintf(stderr, "%s: error[E745]: %s\n", previewOut.c_str(), err.c_str());
         return 1;
       }
       if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", previewOut.c_str(), warning.c_str());
     }
+  }
+  if (std::string err; !outputs.commit(err)) {
+    std::fprintf(stderr, "fgsg synth: error[E742]: %s\n", err.c_str());
+    return 1;
   }
   return r.ok ? 0 : 1;
 }

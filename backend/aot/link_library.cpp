@@ -1,5 +1,8 @@
 #include "backend/aot/link_library.h"
 
+#include "runtime/io/output_transaction.h"
+#include "runtime/io/temp_cleanup.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -23,11 +26,18 @@ namespace fs = std::filesystem;
 
 std::string errnoText(int e) { return std::strerror(e); }
 
-// Removes a file when it goes out of scope (unless released).
+// Removes a file when it goes out of scope (unless released), and on SIGINT/SIGTERM
+// while it exists.
 struct TempFile {
   std::string path;
+  int cleanupSlot = -1;
+  void track(std::string p) {
+    path = std::move(p);
+    cleanupSlot = rt::io::registerTempForCleanup(path.c_str());
+  }
   ~TempFile() {
     if (!path.empty()) ::unlink(path.c_str());
+    rt::io::releaseTempCleanup(cleanupSlot);
   }
 };
 
@@ -146,7 +156,8 @@ bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
     error = "cannot create a temporary file " + objTemplate + ": " + errnoText(errno);
     return false;
   }
-  TempFile objFile{objName.data()};
+  TempFile objFile;
+  objFile.track(objName.data());
   const bool written = writeAll(objFd, object);
   const int writeErrno = errno;
   ::close(objFd);
@@ -158,22 +169,15 @@ bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
   // The library, beside its final name: rename is atomic only within one file system.
   // The name is reserved with O_EXCL and then left to the linker to replace.
   TempFile libFile;
-  for (int attempt = 0; attempt < 100 && libFile.path.empty(); ++attempt) {
-    const std::string candidate = (outDir / ("." + out.filename().string() + ".tmp-" +
-                                             std::to_string(::getpid()) + "-" + std::to_string(attempt)))
-                                      .string();
-    const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd >= 0) {
-      ::close(fd);
-      libFile.path = candidate;
-    } else if (errno != EEXIST) {
+  {
+    std::string name;
+    const int fd = rt::io::createUniqueFile((outDir / ("." + out.filename().string() + ".tmp-")).string(), name);
+    if (fd < 0) {
       error = "cannot write in " + outDir.string() + ": " + errnoText(errno);
       return false;
     }
-  }
-  if (libFile.path.empty()) {
-    error = "cannot create a temporary file in " + outDir.string();
-    return false;
+    ::close(fd);
+    libFile.track(name);
   }
 
   std::vector<std::string> args = compilerCommand();

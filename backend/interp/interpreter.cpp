@@ -9,8 +9,9 @@
 #include "ir/program_layout.h"
 #include "runtime/abi.h"
 #include "runtime/cga/cga.h"
-#include "runtime/occlusion.h"
+#include "runtime/float_range.h"
 #include "runtime/fresh_stack.h"
+#include "runtime/occlusion.h"
 #include "runtime/random.h"
 #include "runtime/stack_budget.h"
 #include "runtime/synthesis/synthesis.h"
@@ -470,6 +471,14 @@ class Interpreter final : public QueryHost {
         throw DeriveError{loc, "R005",
                           "this instance's scope is not finite (a parameter became NaN or "
                           "infinite, e.g. sqrt of a negative number or a division by zero)"};
+    }
+    if (const double reach = rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", reach);
+      throw DeriveError{loc, "R005",
+                        "this instance of '" + out_.symbols[symbol] + "' reaches coordinate " + text +
+                            ", beyond what mesh files store (32-bit floats, up to 3.4e+38): a scale, "
+                            "extrusion or translation grew too large"};
     }
     inst.color = symbolColor_[symbol];
     inst.firstParam = static_cast<uint32_t>(out_.params.size());

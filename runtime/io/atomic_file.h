@@ -1,6 +1,7 @@
 // Writes a whole file or nothing: the bytes go to a temporary file next to the target,
 // are flushed to disk, and only then renamed over it, so a reader (or a crash) never sees
-// a partially written output.
+// a partially written output. A one-file OutputTransaction (output_transaction.h): the
+// temporary has a random name created exclusively, never following a link.
 #pragma once
 
 #include <string>

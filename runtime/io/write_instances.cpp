@@ -1,10 +1,10 @@
 #include "runtime/io/write_instances.h"
 
-#include "runtime/io/atomic_file.h"
-
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <new>
 
 namespace fgsg::rt::io {
 
@@ -128,8 +128,33 @@ std::string encodeInstancesJson(const InstanceList& list) {
   return out;
 }
 
+bool stageInstancesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs,
+                        std::string& error) {
+  for (size_t i = 0; i < list.instances.size(); ++i) {
+    const Instance& inst = list.instances[i];
+    const bool finite = std::all_of(inst.transform.begin(), inst.transform.end(), [](double v) { return std::isfinite(v); }) &&
+                        std::all_of(inst.color.begin(), inst.color.end(), [](float v) { return std::isfinite(v); });
+    if (!finite) {
+      error = "cannot write '" + path + "': instance " + std::to_string(i) + " (symbol '" +
+              (inst.symbol < list.symbols.size() ? list.symbols[inst.symbol] : std::string("?")) +
+              "') has a transform or colour that is not finite";
+      return false;
+    }
+  }
+  std::string bytes;
+  try {
+    bytes = encodeInstancesJson(list);
+  } catch (const std::bad_alloc&) {
+    error = "cannot write '" + path + "': out of memory while encoding " + std::to_string(list.instances.size()) +
+            " instances";
+    return false;
+  }
+  return outputs.stage(path, bytes, error);
+}
+
 bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error) {
-  return writeFileAtomically(path, encodeInstancesJson(list), error);
+  OutputTransaction one;
+  return stageInstancesJson(list, path, one, error) && one.commit(error);
 }
 
 }  // namespace fgsg::rt::io

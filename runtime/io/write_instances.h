@@ -8,6 +8,7 @@
 #pragma once
 
 #include "runtime/instances.h"
+#include "runtime/io/output_transaction.h"
 
 #include <string>
 
@@ -15,7 +16,12 @@ namespace fgsg::rt::io {
 
 std::string encodeInstancesJson(const InstanceList& list);
 
-// Encodes and replaces `path` atomically; false and a message in `error` on failure.
+// Checks that every transform and colour is finite (a file must not carry them as null),
+// encodes and stages the file in `outputs`; false and a message naming `path` otherwise.
+bool stageInstancesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs,
+                        std::string& error);
+
+// Stages and commits alone: replaces `path` atomically; false and a message on failure.
 bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error);
 
 }  // namespace fgsg::rt::io

@@ -1,6 +1,6 @@
 #include "runtime/io/write_mesh.h"
 
-#include "runtime/io/atomic_file.h"
+#include "runtime/io/output_transaction.h"
 
 // Debian links the tinygltf implementation as a shared library: only the declarations here.
 #include <tiny_gltf.h>
@@ -9,8 +9,11 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 
 namespace fgsg::rt::io {
 
@@ -128,11 +131,23 @@ bool encodeGlb(const Mesh& mesh, std::string& bytes, std::string& error) {
 
   std::ostringstream out;
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true)) {
-    error = "cannot encode the mesh as glTF";
+  // A stream that cannot grow (out of memory) only sets its badbit: without this check
+  // the file would be cut short while its header declares the full length.
+  if (!writer.WriteGltfSceneToStream(&model, out, false, true) || !out) {
+    error = "cannot encode the mesh as glTF (out of memory?)";
     return false;
   }
+  model = tinygltf::Model();  // the buffer's copy of the mesh is no longer needed
   bytes = std::move(out).str();
+  // The GLB header's third word is the length of the whole file.
+  uint32_t declared = 0;
+  if (bytes.size() >= 12) std::memcpy(&declared, bytes.data() + 8, sizeof declared);
+  if (bytes.size() < 12 || declared != bytes.size()) {
+    error = "the glTF encoder produced " + std::to_string(bytes.size()) +
+            " bytes while the file's header declares " + std::to_string(declared);
+    bytes.clear();
+    return false;
+  }
   return true;
 }
 
@@ -204,16 +219,25 @@ std::string lower(std::string s) {
   return s;
 }
 
-}  // namespace
-
-const std::vector<std::string>& supportedMeshExtensions() {
+const std::vector<std::string>& knownExtensions() {
   static const std::vector<std::string> exts = {".glb", ".obj", ".ply"};
   return exts;
 }
 
-bool encodeMesh(const Mesh& mesh, const std::string& extension, std::string& bytes,
-                std::string& error) {
-  const std::string ext = lower(extension);
+bool findNonFiniteVertex(const Mesh& mesh, std::string& error) {
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (std::isfinite(mesh.positions[i])) continue;
+    const size_t v = i / 3;
+    error = "vertex " + std::to_string(v) + " is not finite (" + std::to_string(mesh.positions[3 * v]) + ", " +
+            std::to_string(mesh.positions[3 * v + 1]) + ", " + std::to_string(mesh.positions[3 * v + 2]) +
+            "): mesh files store 32-bit floats, up to about 3.4e38";
+    return true;
+  }
+  return false;
+}
+
+bool encodeKnownFormat(const Mesh& mesh, const std::string& ext, const std::string& extension,
+                       std::string& bytes, std::string& error) {
   if (ext == ".glb") return encodeGlb(mesh, bytes, error);
   if (ext == ".obj") {
     bytes = encodeObj(mesh);
@@ -224,20 +248,49 @@ bool encodeMesh(const Mesh& mesh, const std::string& extension, std::string& byt
     return true;
   }
   std::string list;
-  for (const auto& e : supportedMeshExtensions()) list += (list.empty() ? "" : ", ") + e;
+  for (const auto& e : knownExtensions()) list += (list.empty() ? "" : ", ") + e;
   error = (extension.empty() ? std::string("no file extension to choose a mesh format by")
                              : "unsupported mesh format '" + extension + "'") +
           " (supported: " + list + ")";
   return false;
 }
 
-bool writeMesh(const Mesh& mesh, const std::string& path, std::string& error) {
+}  // namespace
+
+const std::vector<std::string>& supportedMeshExtensions() { return knownExtensions(); }
+
+bool encodeMesh(const Mesh& mesh, const std::string& extension, std::string& bytes,
+                std::string& error) {
+  const std::string ext = lower(extension);
+  if (std::find(supportedMeshExtensions().begin(), supportedMeshExtensions().end(), ext) !=
+          supportedMeshExtensions().end() &&
+      findNonFiniteVertex(mesh, error))
+    return false;
+  try {
+    return encodeKnownFormat(mesh, ext, extension, bytes, error);
+  } catch (const std::bad_alloc&) {
+    bytes.clear();
+    error = "out of memory while encoding " + std::to_string(mesh.triangleCount()) + " triangles";
+    return false;
+  } catch (const std::length_error&) {
+    bytes.clear();
+    error = "the encoded mesh would be too large (" + std::to_string(mesh.triangleCount()) + " triangles)";
+    return false;
+  }
+}
+
+bool stageMesh(const Mesh& mesh, const std::string& path, OutputTransaction& outputs, std::string& error) {
   std::string bytes;
   if (!encodeMesh(mesh, std::filesystem::path(path).extension().string(), bytes, error)) {
     error = "cannot write '" + path + "': " + error;
     return false;
   }
-  return writeFileAtomically(path, bytes, error);
+  return outputs.stage(path, bytes, error);
+}
+
+bool writeMesh(const Mesh& mesh, const std::string& path, std::string& error) {
+  OutputTransaction one;
+  return stageMesh(mesh, path, one, error) && one.commit(error);
 }
 
 }  // namespace fgsg::rt::io

@@ -3,6 +3,7 @@
 // written atomically and their bytes depend only on the mesh (no timestamps).
 #pragma once
 
+#include "runtime/io/output_transaction.h"
 #include "runtime/mesh.h"
 
 #include <string>
@@ -14,9 +15,14 @@ namespace fgsg::rt::io {
 const std::vector<std::string>& supportedMeshExtensions();
 
 // Encodes the mesh in the format named by `extension` (".glb", ".obj", ".ply"; any case)
-// into `bytes`. False and a message in `error` for an unknown extension.
+// into `bytes`. False and a message in `error` for an unknown extension, a vertex that
+// is not finite (files store 32-bit floats), or running out of memory; the encoders'
+// output is checked (stream state, sizes against the header), never cut short.
 bool encodeMesh(const Mesh& mesh, const std::string& extension, std::string& bytes,
                 std::string& error);
+
+// Encodes by the extension of `path` and stages it in `outputs` (written on commit).
+bool stageMesh(const Mesh& mesh, const std::string& path, OutputTransaction& outputs, std::string& error);
 
 // Encodes by the extension of `path` and replaces the file atomically. An empty mesh
 // still gives a valid file (a glTF scene without meshes, an OBJ/PLY with no elements).

@@ -1,6 +1,5 @@
 #include "runtime/render/preview.h"
 
-#include "runtime/io/atomic_file.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -215,6 +214,12 @@ Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
 
 bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
                    std::string& error, std::string* warning) {
+  io::OutputTransaction one;
+  return stagePreview(mesh, options, pngPath, one, error, warning) && one.commit(error);
+}
+
+bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
+                  io::OutputTransaction& outputs, std::string& error, std::string* warning) {
   if (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384) {
     error = "preview size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
             " is out of range (1..16384)";
@@ -227,7 +232,7 @@ bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::s
     error = "cannot encode the preview as PNG";
     return false;
   }
-  return io::writeFileAtomically(pngPath, png, error);
+  return outputs.stage(pngPath, png, error);
 }
 
 }  // namespace fgsg::rt::render

@@ -6,6 +6,7 @@
 // 2x2 supersampled. Deterministic bytes.
 #pragma once
 
+#include "runtime/io/output_transaction.h"
 #include "runtime/mesh.h"
 
 #include <cstdint>
@@ -37,5 +38,9 @@ Image renderImage(const Mesh& mesh, const PreviewOptions& options);
 // shows the background and `warning` (when given) says so.
 bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
                    std::string& error, std::string* warning = nullptr);
+
+// The same, staged in `outputs` (written when the caller commits all its outputs).
+bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
+                  io::OutputTransaction& outputs, std::string& error, std::string* warning = nullptr);
 
 }  // namespace fgsg::rt::render

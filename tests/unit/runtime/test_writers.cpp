@@ -1,7 +1,9 @@
 // Output files: atomic writes, mesh writers (round-tripped through OpenMesh, GLB parsed
 // and checked by the Khronos validator) and the instance JSON.
 #include "runtime/assemble.h"
+#include "runtime/float_range.h"
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/output_transaction.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
 
@@ -20,6 +22,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 using namespace fgsg::rt;
 namespace fs = std::filesystem;
@@ -159,6 +163,7 @@ TEST_CASE("atomic writes replace the whole file or nothing", "[writers]") {
     fs::create_directories(dir / "taken" / "child");  // a non-empty directory cannot be replaced
     CHECK_FALSE(io::writeFileAtomically((dir / "taken").string(), "bytes", error));
     CHECK_THAT(error, Catch::Contains("cannot replace"));
+    CHECK_THAT(error, Catch::Contains("Is a directory"));
     CHECK(filesIn(dir) == std::vector<std::string>{"taken"});
     CHECK(fs::is_directory(dir / "taken" / "child"));
   }
@@ -301,4 +306,137 @@ TEST_CASE("instance JSON is exact and parses back", "[writers]") {
   CHECK(readFile(dir / "out.json") == text);
   CHECK_FALSE(io::writeInstancesJson(list, (dir / "missing" / "out.json").string(), error));
   CHECK(filesIn(dir) == std::vector<std::string>{"out.json"});
+}
+
+// ---- output safety: temporaries, transactions, what may reach a file -------------------
+
+TEST_CASE("a link planted at the old predictable temp name is never written through", "[writers][outputs]") {
+  const fs::path dir = scratchDir("planted_link");
+  const fs::path victim = dir / "victim.txt";
+  std::ofstream(victim) << "precious";
+  // Before: every writer used PATH.tmp.<pid>, opened with O_TRUNC and following links.
+  const fs::path target = dir / "out.glb";
+  fs::create_symlink(victim, target.string() + ".tmp." + std::to_string(::getpid()));
+  std::string error;
+  REQUIRE(io::writeMesh(sampleMesh(), target.string(), error));
+  CHECK(readFile(victim) == "precious");
+  CHECK(fs::is_symlink(target.string() + ".tmp." + std::to_string(::getpid())));
+  CHECK(fs::is_regular_file(fs::symlink_status(target)));
+  CHECK(filesIn(dir).size() == 3);  // the victim, the planted link, the output: no temporary
+}
+
+TEST_CASE("temporaries are new files with random names, created exclusively", "[writers][outputs]") {
+  const fs::path dir = scratchDir("unique");
+  std::string a, b;
+  const int fa = io::createUniqueFile((dir / "x.tmp.").string(), a);
+  const int fb = io::createUniqueFile((dir / "x.tmp.").string(), b);
+  REQUIRE(fa >= 0);
+  REQUIRE(fb >= 0);
+  ::close(fa);
+  ::close(fb);
+  CHECK(a != b);
+  CHECK(a.size() == (dir / "x.tmp.").string().size() + 8);
+  std::string error;
+  CHECK_FALSE(io::createUniqueFile((dir / "missing" / "x.tmp.").string(), a) >= 0);
+}
+
+TEST_CASE("a transaction replaces all its files or none", "[writers][outputs]") {
+  const fs::path dir = scratchDir("transaction");
+  std::ofstream(dir / "mesh.obj") << "old mesh";
+  std::string error;
+  SECTION("one output that cannot be written keeps the others' old contents") {
+    {
+      io::OutputTransaction outputs;
+      REQUIRE(io::stageMesh(sampleMesh(), (dir / "mesh.obj").string(), outputs, error));
+      CHECK_FALSE(outputs.stage((dir / "missing" / "instances.json").string(), "{}", error));
+      CHECK_THAT(error, Catch::Contains("missing/instances.json"));
+    }  // dropped without commit
+    CHECK(readFile(dir / "mesh.obj") == "old mesh");
+    CHECK(filesIn(dir) == std::vector<std::string>{"mesh.obj"});
+  }
+  SECTION("a folder in the way is found when staging, before anything is replaced") {
+    fs::create_directories(dir / "busy.json");
+    io::OutputTransaction outputs;
+    REQUIRE(outputs.stage((dir / "mesh.obj").string(), "new mesh", error));
+    CHECK_FALSE(outputs.stage((dir / "busy.json").string(), "{}", error));
+    CHECK_THAT(error, Catch::Contains("Is a directory"));
+    outputs.abandon();
+    CHECK(readFile(dir / "mesh.obj") == "old mesh");
+    CHECK(filesIn(dir) == std::vector<std::string>{"busy.json", "mesh.obj"});
+  }
+  SECTION("all staged: commit replaces every file") {
+    io::OutputTransaction outputs;
+    REQUIRE(outputs.stage((dir / "mesh.obj").string(), "new mesh", error));
+    REQUIRE(outputs.stage((dir / "instances.json").string(), "{}", error));
+    CHECK(readFile(dir / "mesh.obj") == "old mesh");  // nothing replaced before commit
+    REQUIRE(outputs.commit(error));
+    CHECK(readFile(dir / "mesh.obj") == "new mesh");
+    CHECK(readFile(dir / "instances.json") == "{}");
+    CHECK(filesIn(dir) == std::vector<std::string>{"instances.json", "mesh.obj"});
+  }
+}
+
+TEST_CASE("threads writing the same path all succeed and leave one whole result", "[writers][outputs]") {
+  const fs::path dir = scratchDir("threads");
+  const std::string target = (dir / "same.txt").string();
+  constexpr int kThreads = 8;
+  std::vector<std::string> contents;
+  for (int t = 0; t < kThreads; ++t) contents.push_back(std::string(100000 + t, char('a' + t)));
+  std::vector<int> ok(kThreads, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 20; ++round) {
+        std::string error;
+        ok[t] += io::writeFileAtomically(target, contents[t], error);
+        std::string distinct;
+        ok[t] += io::writeFileAtomically((dir / ("own" + std::to_string(t))).string(), contents[t], distinct);
+      }
+    });
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < kThreads; ++t) CHECK(ok[t] == 40);
+  const std::string final = readFile(target);
+  CHECK(std::find(contents.begin(), contents.end(), final) != contents.end());
+  for (int t = 0; t < kThreads; ++t) CHECK(readFile(dir / ("own" + std::to_string(t))) == contents[t]);
+  CHECK(filesIn(dir).size() == kThreads + 1);
+}
+
+TEST_CASE("non-finite vertices and transforms never reach a file", "[writers][outputs]") {
+  const fs::path dir = scratchDir("non_finite");
+  Mesh m = sampleMesh();
+  m.positions[4] = INFINITY;
+  std::string bytes, error;
+  for (const char* ext : {".glb", ".obj", ".ply"}) {
+    CHECK_FALSE(io::encodeMesh(m, ext, bytes, error));
+    CHECK_THAT(error, Catch::Contains("vertex 1 is not finite"));
+  }
+  std::ofstream(dir / "old.glb") << "old";
+  CHECK_FALSE(io::writeMesh(m, (dir / "old.glb").string(), error));
+  CHECK_THAT(error, Catch::Contains("old.glb"));
+  CHECK(readFile(dir / "old.glb") == "old");
+
+  InstanceList list;
+  list.assets = {"cube"};
+  list.symbols = {"A", "B"};
+  Instance fine, huge;
+  fine.transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  huge = fine;
+  huge.symbol = 1;
+  huge.transform[12] = -INFINITY;
+  list.instances = {fine, huge};
+  CHECK_FALSE(io::writeInstancesJson(list, (dir / "i.json").string(), error));
+  CHECK_THAT(error, Catch::Contains("instance 1 (symbol 'B')"));
+  CHECK(filesIn(dir) == std::vector<std::string>{"old.glb"});
+}
+
+TEST_CASE("an instance whose vertices would overflow a float is detected", "[writers][outputs]") {
+  Mat4 t = Mat4::Identity();
+  CHECK(unitBoxFitsFloat(t));
+  t(0, 0) = 1e38;
+  CHECK(unitBoxFitsFloat(t));
+  t(0, 3) = 3e38;  // 1e38 + 3e38 is past FLT_MAX
+  CHECK_FALSE(unitBoxFitsFloat(t));
+  CHECK(unitBoxReach(t) == Approx(4e38));
+  t(0, 3) = NAN;
+  CHECK_FALSE(unitBoxFitsFloat(t));
 }

@@ -1,0 +1,32 @@
+// Mesh files (glTF, OBJ, PLY) store coordinates as 32-bit floats: a transform that is
+// finite in double precision can still place vertices beyond ±3.4e38, which would be
+// written as inf. Engines check every instance with this before placing it.
+#pragma once
+
+#include "runtime/scope.h"
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
+namespace fgsg::rt {
+
+// The largest magnitude any coordinate of the unit box's image under `t` reaches (the
+// corners bound it: the map is affine); infinity when some value is not finite.
+inline double unitBoxReach(const Mat4& t) {
+  double reach = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector4d p = t * Eigen::Vector4d(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1, 1.0);
+    for (int d = 0; d < 3; ++d) {
+      const double a = std::fabs(p[d]);
+      if (!std::isfinite(a)) return std::numeric_limits<double>::infinity();
+      reach = std::max(reach, a);
+    }
+  }
+  return reach;
+}
+
+// True when every vertex of an instance placed by `t` fits a 32-bit float.
+inline bool unitBoxFitsFloat(const Mat4& t) { return unitBoxReach(t) <= double(FLT_MAX); }
+
+}  // namespace fgsg::rt

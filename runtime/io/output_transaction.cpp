@@ -1,0 +1,121 @@
+#include "runtime/io/output_transaction.h"
+
+#include "runtime/io/temp_cleanup.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace fgsg::rt::io {
+
+namespace {
+
+std::string describe(const std::string& what, const std::string& path, int err) {
+  return "cannot " + what + " '" + path + "': " + std::strerror(err);
+}
+
+bool writeAll(int fd, std::string_view bytes) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    // At most 1 GiB a call: Linux writes no more than about 2 GiB at once anyway.
+    const ssize_t n = ::write(fd, bytes.data() + done, std::min<size_t>(bytes.size() - done, 1u << 30));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    if (n == 0) {  // no progress and no error: say so rather than loop
+      errno = EIO;
+      return false;
+    }
+    done += size_t(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+int createUniqueFile(const std::string& prefix, std::string& name) {
+  static const char kAlphabet[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    unsigned char random[8];
+    if (::getrandom(random, sizeof random, 0) != ssize_t(sizeof random)) {
+      // No entropy source (a very old kernel or a sandbox): still unique enough with the
+      // address of a local and the attempt, since O_EXCL catches any collision.
+      uint64_t fallback = uint64_t(reinterpret_cast<uintptr_t>(&random)) ^ (uint64_t(::getpid()) << 20) ^ attempt;
+      std::memcpy(random, &fallback, sizeof random);
+    }
+    name = prefix;
+    for (unsigned char r : random) name += kAlphabet[r % (sizeof kAlphabet - 1)];
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
+}
+
+OutputTransaction::~OutputTransaction() { abandon(); }
+
+bool OutputTransaction::stage(const std::string& path, std::string_view bytes, std::string& error) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    error = describe("replace", path, EISDIR);
+    return false;
+  }
+  // Beside the target: rename is atomic only within one file system.
+  std::string temp;
+  const int fd = createUniqueFile(path + ".tmp.", temp);
+  if (fd < 0) {
+    error = describe("write", path, errno);
+    return false;
+  }
+  const int slot = registerTempForCleanup(temp.c_str());
+  const auto fail = [&](const std::string& what, int err) {
+    ::unlink(temp.c_str());
+    releaseTempCleanup(slot);
+    error = describe(what, path, err);
+    return false;
+  };
+  if (!writeAll(fd, bytes)) {
+    const int err = errno;
+    ::close(fd);
+    return fail("write", err);
+  }
+  if (::fsync(fd) != 0) {
+    const int err = errno;
+    ::close(fd);
+    return fail("write", err);
+  }
+  if (::close(fd) != 0) return fail("write", errno);
+  staged_.push_back({path, temp, slot});
+  return true;
+}
+
+bool OutputTransaction::commit(std::string& error) {
+  for (size_t i = 0; i < staged_.size(); ++i) {
+    Staged& s = staged_[i];
+    if (::rename(s.temp.c_str(), s.target.c_str()) != 0) {
+      error = describe("replace", s.target, errno);
+      staged_.erase(staged_.begin(), staged_.begin() + long(i));
+      abandon();
+      return false;
+    }
+    releaseTempCleanup(s.cleanupSlot);
+  }
+  staged_.clear();
+  return true;
+}
+
+void OutputTransaction::abandon() {
+  for (const Staged& s : staged_) {
+    ::unlink(s.temp.c_str());
+    releaseTempCleanup(s.cleanupSlot);
+  }
+  staged_.clear();
+}
+
+}  // namespace fgsg::rt::io
