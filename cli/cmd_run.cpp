@@ -7,6 +7,7 @@
 #include "cli/derive_stats.h"
 #include "cli/options.h"
 #include "runtime/assemble.h"
+#include "runtime/io/read_input.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
@@ -124,11 +125,9 @@ int runCommand(const Args& args) {
     // Relative to the working directory, not to the grammar's folder.
     std::error_code ec;
     const std::filesystem::path surface = std::filesystem::absolute(opt.derive.surfaceOverride, ec);
-    if (ec || !std::filesystem::is_regular_file(surface, ec)) {
-      std::cerr << "fgsg run: --surface " << opt.derive.surfaceOverride
-                << (std::filesystem::is_directory(surface, ec) ? ": is a directory, not a mesh file"
-                                                               : ": no such file")
-                << "\n";
+    std::string error;
+    if (!rt::io::checkInputFile(opt.derive.surfaceOverride, "a mesh file", error)) {
+      std::cerr << "fgsg run: --surface " << error << "\n";
       return 1;
     }
     opt.derive.surfaceOverride = surface.lexically_normal().string();

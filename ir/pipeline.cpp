@@ -5,11 +5,10 @@
 #include "ir/fold.h"
 #include "ir/lower.h"
 #include "ir/verifier.h"
+#include "runtime/io/read_input.h"
 
 #include <chrono>
-#include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace fgsg::ir {
 namespace {
@@ -50,23 +49,9 @@ bool compileSource(const frontend::SourceFile& file, Module& out, frontend::Diag
 }
 
 bool readSourceFile(const std::string& path, frontend::SourceFile& out, std::string& error) {
-  struct stat st{};
-  if (stat(path.c_str(), &st) != 0) {
-    error = path + ": no such file";
-    return false;
-  }
-  if (S_ISDIR(st.st_mode)) {
-    error = path + ": is a directory, not a grammar file";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = path + ": cannot be read (permission denied?)";
-    return false;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  out = frontend::SourceFile::make(path, text.str());
+  std::string text;
+  if (!rt::io::readInputFile(path, "a grammar file", text, error)) return false;
+  out = frontend::SourceFile::make(path, std::move(text));
   return true;
 }
 

@@ -1,7 +1,10 @@
 #include "runtime/assets.h"
 
+#include "runtime/io/read_mesh_file.h"
+
 // OpenMesh requires its IO header before the mesh kernel so the readers get registered.
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/importer/ImporterT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <Eigen/Core>
@@ -259,18 +262,29 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
             "' (supported: .obj .ply .off .stl)";
     return false;
   }
-  OMesh om;
-  // OpenMesh reports problems on its own error stream; we report them ourselves.
-  const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
-  omerr().disable();
-  omlog().disable();
-  const bool ok = OpenMesh::IO::read_mesh(om, path);
-  if (errWasOn) omerr().enable();
-  if (logWasOn) omlog().enable();
-  if (!ok) {
-    error = "cannot read asset file '" + path + "' (not a valid " + ext.substr(1) + " file?)";
+  io::MeshFileContent file;
+  if (!io::readMeshFile(path, file, error)) {
+    error = "cannot read asset file: " + error;
     return false;
   }
+  // Built as OpenMesh's readers would: ImporterT splits non-manifold faces off and drops
+  // faces with a repeated corner; the TriMesh fan-triangulates polygons.
+  OMesh om;
+  OpenMesh::IO::ImporterT<OMesh> importer(om);
+  const bool errWasOn = omerr().is_enabled();
+  omerr().disable();  // it reports each such face on its own error stream
+  std::vector<OpenMesh::VertexHandle> handles;
+  handles.reserve(file.vertices.size());
+  for (const auto& p : file.vertices)
+    handles.push_back(importer.add_vertex(OpenMesh::Vec3d(p[0], p[1], p[2])));
+  std::vector<OpenMesh::VertexHandle> corners;
+  for (size_t f = 0; f < file.polygonCount(); ++f) {
+    corners.clear();
+    for (size_t c = file.polygonStart[f]; c < file.polygonStart[f + 1]; ++c)
+      corners.push_back(handles[size_t(file.corners[c])]);
+    importer.add_face(corners);
+  }
+  if (errWasOn) omerr().enable();
   if (om.n_faces() == 0) {
     error = "asset file '" + path + "' contains no faces";
     return false;

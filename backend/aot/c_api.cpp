@@ -9,6 +9,7 @@
 #include "backend/interp/interpreter.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
+#include "runtime/io/read_input.h"
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_mesh.h"
@@ -338,10 +339,9 @@ FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path) {
     // Relative to the working directory, not to the grammar's folder (as fgsg run).
     std::error_code ec;
     const std::filesystem::path surface = std::filesystem::absolute(mesh_path, ec);
-    if (ec || !std::filesystem::is_regular_file(surface, ec)) {
-      error = std::string("fgsg_set_surface ") + mesh_path +
-              (std::filesystem::is_directory(surface, ec) ? ": is a directory, not a mesh file"
-                                                          : ": no such file");
+    std::string refused;
+    if (!rt::io::checkInputFile(mesh_path, "a mesh file", refused)) {
+      error = "fgsg_set_surface " + refused;
       return false;
     }
     g->options.surfaceOverride = surface.lexically_normal().string();

@@ -1,6 +1,7 @@
 #include "runtime/field/field_file.h"
 
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/read_input.h"
 
 #include <cctype>
 #include <charconv>
@@ -180,14 +181,9 @@ bool parseField(std::string_view text, const std::string& name,
 
 bool loadField(const std::string& path, std::shared_ptr<const TangentFrames> frames,
                std::optional<TangentField>& out, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = path + ": cannot open the field file";
-    return false;
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseField(buffer.str(), path, std::move(frames), out, error);
+  std::string text;
+  if (!io::readInputFile(path, "a field file", text, error)) return false;
+  return parseField(text, path, std::move(frames), out, error);
 }
 
 std::string formatField(const TangentField& field, FieldCoordinates coordinates) {

@@ -1,16 +1,12 @@
 #include "runtime/surface/load_surface.h"
 
-// OpenMesh requires its IO header before the mesh kernel so the readers get registered.
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/IO/importer/ImporterT.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include "runtime/io/read_mesh_file.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <numeric>
 #include <sstream>
@@ -21,82 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// ---------------------------------------------------------------------------------------
-// Reading: OpenMesh parses the formats; a mesh kernel would silently split non-manifold
-// faces off (ImporterT duplicates their vertices), so faces are caught raw instead and the
-// validation below sees the file as it is.
-
-struct DoubleTraits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;  // keep the file's precision where it has more than float
-  using Normal = OpenMesh::Vec3d;
-};
-using RawMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
-
-class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
- public:
-  explicit RawImporter(RawMesh& vertices) : ImporterT(vertices) {}
-
-  // Vertices go to the kernel (readers may attach properties to them); faces stay here.
-  OpenMesh::FaceHandle add_face(const VHandles& corners) override {
-    std::vector<int> polygon;
-    polygon.reserve(corners.size());
-    for (auto v : corners) polygon.push_back(v.idx());
-    polygons.push_back(std::move(polygon));
-    return OpenMesh::FaceHandle(int(polygons.size() - 1));
-  }
-  size_t n_faces() const override { return polygons.size(); }
-  // These would walk the kernel's (absent) faces; a surface needs none of them.
-  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                          const std::vector<OpenMesh::Vec2f>&) override {}
-  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                          const std::vector<OpenMesh::Vec3f>&) override {}
-  void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
-
-  std::vector<std::vector<int>> polygons;
-};
-
 std::string lowerExtension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
-}
-
-// OpenMesh's text readers cannot parse "nan" or "inf": they stop short or read garbage
-// without saying so. So text files are scanned for such coordinates first, to name the
-// line. Binary files carry non-finite floats through to validation.
-bool findNonFiniteText(const std::string& path, const std::string& ext, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  size_t lineNo = 0;
-  bool data = ext != ".ply";  // PLY: only after the header, and only when it is ASCII
-  while (std::getline(in, line)) {
-    ++lineNo;
-    std::istringstream tokens(line);
-    std::string first;
-    if (!(tokens >> first)) continue;
-    if (ext == ".ply" && !data) {
-      if (first == "format" && line.find("ascii") == std::string::npos) return true;
-      data = first == "end_header";
-      continue;
-    }
-    if (lineNo == 1 && ext == ".stl" && first != "solid") return true;  // binary STL
-    if ((ext == ".obj" && first != "v") || (ext == ".stl" && first != "vertex") || first[0] == '#')
-      continue;
-    for (std::string t = first; !t.empty(); t.clear(), tokens >> t) {
-      std::string lower = t;
-      std::transform(lower.begin(), lower.end(), lower.begin(),
-                     [](unsigned char c) { return char(std::tolower(c)); });
-      const size_t sign = lower[0] == '-' || lower[0] == '+';
-      if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
-        error = path + ":" + std::to_string(lineNo) + ": vertex coordinate '" + t +
-                "' is not a finite number";
-        return false;
-      }
-    }
-  }
-  return true;
 }
 
 // Reads vertices and fan-triangulated polygons; false with a message when the file cannot
@@ -108,53 +33,17 @@ bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::s
             "' (supported: .obj .ply .off .stl)";
     return false;
   }
-  std::error_code ec;
-  if (!fs::exists(path, ec)) {
-    error = path + ": no such file";
-    return false;
-  }
-  if (!fs::is_regular_file(path, ec) || !std::ifstream(path, std::ios::binary).good()) {
-    error = path + ": cannot open the file for reading";
-    return false;
-  }
-  if (fs::file_size(path, ec) == 0) {
-    error = path + ": the file is empty (no faces)";
-    return false;
-  }
-  if (!findNonFiniteText(path, ext, error)) return false;
-  RawMesh vertices;
-  RawImporter importer(vertices);
-  OpenMesh::IO::Options opt;
-  // OpenMesh reports problems on its own error stream; we report them ourselves.
-  const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
-  omerr().disable();
-  omlog().disable();
-  const bool ok = OpenMesh::IO::IOManager().read(path, importer, opt);
-  if (errWasOn) omerr().enable();
-  if (logWasOn) omlog().enable();
-  if (!ok) {
-    error = path + ": cannot read the file (not a valid " + ext.substr(1) + " file?)";
-    return false;
-  }
-  mesh.vertices.reserve(vertices.n_vertices());
-  for (auto v : vertices.vertices()) {
-    const auto& p = vertices.point(v);
-    mesh.vertices.emplace_back(p[0], p[1], p[2]);
-  }
+  io::MeshFileContent file;
+  if (!io::readMeshFile(path, file, error)) return false;
+  mesh.vertices.reserve(file.vertices.size());
+  for (const auto& p : file.vertices) mesh.vertices.emplace_back(p[0], p[1], p[2]);
   polygonal = false;
-  for (size_t i = 0; i < importer.polygons.size(); ++i) {
-    const auto& poly = importer.polygons[i];
-    // OpenMesh hands over such faces when it misreads a line (OFF comments or face colours
-    // it does not expect); what follows them cannot be trusted.
-    if (poly.size() < 3) {
-      error = path + ": face " + std::to_string(i) + " has " + std::to_string(poly.size()) +
-              " corners (the file is malformed, or in a variant of the format OpenMesh cannot "
-              "read)";
-      return false;
-    }
-    polygonal |= poly.size() > 3;
-    for (size_t k = 1; k + 1 < poly.size(); ++k)
-      mesh.faces.push_back({poly[0], poly[k], poly[k + 1]});
+  mesh.faces.reserve(file.corners.size() - 2 * file.polygonCount());
+  for (size_t f = 0; f < file.polygonCount(); ++f) {
+    const int* poly = file.corners.data() + file.polygonStart[f];
+    const size_t n = file.cornerCount(f);
+    polygonal |= n > 3;
+    for (size_t k = 1; k + 1 < n; ++k) mesh.faces.push_back({poly[0], poly[k], poly[k + 1]});
   }
   return true;
 }
@@ -314,12 +203,11 @@ Analysis analyse(const SurfaceMesh& m) {
         keys.push_back({t, f});
       }
     std::sort(keys.begin(), keys.end());
-    for (size_t i = 1; i < keys.size(); ++i)
-      if (keys[i].first == keys[i - 1].first) {
-        int first = keys[i - 1].second;
-        for (size_t j = i - 1; j > 0 && keys[j - 1].first == keys[i].first; --j)
-          first = keys[j - 1].second;
-        const int f = keys[i].second;
+    size_t runStart = 0;  // where the run of equal corners that keys[i] belongs to starts
+    for (size_t i = 1; i < keys.size(); ++i) {
+      if (keys[i].first != keys[runStart].first) runStart = i;
+      if (i != runStart) {
+        const int first = keys[runStart].second, f = keys[i].second;
         active[f] = 0;
         a.duplicate[f] = 1;
         a.add(kDuplicate, [=] {
@@ -327,6 +215,7 @@ Analysis analyse(const SurfaceMesh& m) {
                  " have the same corners (duplicate face)";
         });
       }
+    }
   }
 
   // The faces around each vertex, as a compressed list.

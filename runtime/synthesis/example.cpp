@@ -1,5 +1,7 @@
 #include "runtime/synthesis/example.h"
 
+#include "runtime/io/read_input.h"
+
 #include <algorithm>
 #include <fstream>
 #include <set>
@@ -92,15 +94,13 @@ BorderSpec closedLikeExample(const Example& ex, BorderSpec b) {
 bool loadExample(const std::string& path, Example& out, Diagnostics& diags) {
   const std::string ext = extensionOf(path);
   if (ext == "png") return loadExampleImage(path, out, diags);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diags.push_back({path, 0, 0, "E701", "cannot open example file", ""});
+  std::string text, error;
+  if (!io::readInputFile(path, "an example file", text, error)) {
+    diags.push_back({path, 0, 0, "E701", "cannot open example file: " + io::withoutPath(error, path), ""});
     return false;
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (ext == "json") return parseTileSetJson(ss.str(), path, out, diags);
-  return parseExampleText(ss.str(), path, out, diags);
+  if (ext == "json") return parseTileSetJson(text, path, out, diags);
+  return parseExampleText(text, path, out, diags);
 }
 
 }  // namespace fgsg::rt::synthesis

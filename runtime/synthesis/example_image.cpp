@@ -1,5 +1,6 @@
 // A labelled example image: each distinct colour is a label named by its hex value
 // ("ff8800"), placed as a flat coloured quad. Image row 0 is the top (y = ny-1).
+#include "runtime/io/read_input.h"
 #include "runtime/synthesis/example.h"
 #include "runtime/synthesis/image_reader.h"
 
@@ -16,7 +17,7 @@ bool loadExampleImage(const std::string& path, Example& out, Diagnostics& diags)
   RgbImage img;
   std::string err;
   if (!readRgbImage(path, img, err)) {
-    diags.push_back({path, 0, 0, "E721", err, ""});
+    diags.push_back({path, 0, 0, "E721", io::withoutPath(err, path), ""});
     return false;
   }
   std::unordered_map<uint32_t, int32_t> byColor;

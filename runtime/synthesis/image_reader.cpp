@@ -1,5 +1,7 @@
 #include "runtime/synthesis/image_reader.h"
 
+#include "runtime/io/read_input.h"
+
 // Static linkage: other runtime files may carry their own stb_image implementation.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
@@ -15,15 +17,29 @@
 
 namespace fgsg::rt::synthesis {
 
+namespace {
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
+}  // namespace
+
 bool readRgbImage(const std::string& path, RgbImage& out, std::string& error) {
+  std::string bytes;
+  if (!io::readInputFile(path, "an image file", bytes, error)) return false;
+  const auto* data8 = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = int(bytes.size());  // within the input cap, far below INT_MAX
   int w = 0, h = 0, n = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 3);
+  // The size first: a small file can declare a huge picture.
+  if (stbi_info_from_memory(data8, length, &w, &h, &n) &&
+      (w <= 0 || h <= 0 || int64_t(w) * h > kMaxImagePixels)) {
+    error = "image is empty or too large";
+    return false;
+  }
+  unsigned char* data = stbi_load_from_memory(data8, length, &w, &h, &n, 3);
   if (!data) {
     const char* why = stbi_failure_reason();
     error = std::string("cannot read image: ") + (why ? why : "unknown error");
     return false;
   }
-  if (w <= 0 || h <= 0 || int64_t(w) * h > (int64_t(1) << 26)) {
+  if (w <= 0 || h <= 0 || int64_t(w) * h > kMaxImagePixels) {
     stbi_image_free(data);
     error = "image is empty or too large";
     return false;

@@ -1,0 +1,172 @@
+#include "runtime/io/read_mesh_file.h"
+
+#include "runtime/io/check_ply.h"
+#include "runtime/io/read_input.h"
+#include "runtime/io/read_off.h"
+
+// OpenMesh requires its IO header before the mesh kernel so the readers get registered.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/importer/ImporterT.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <algorithm>
+#include <filesystem>
+#include <new>
+#include <sstream>
+
+namespace fgsg::rt::io {
+
+namespace {
+
+// A mesh kernel would silently split non-manifold faces off (ImporterT duplicates their
+// vertices), so faces are caught raw and the caller sees the file as it is.
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;  // keep the file's precision where it has more than float
+  using Normal = OpenMesh::Vec3d;
+};
+using RawMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
+
+class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
+ public:
+  RawImporter(RawMesh& vertices, MeshFileContent& out) : ImporterT(vertices), out_(out) {}
+
+  // Vertices go to the kernel (readers may attach properties to them); faces stay here.
+  OpenMesh::FaceHandle add_face(const VHandles& corners) override {
+    for (auto v : corners) out_.corners.push_back(v.idx());
+    out_.polygonStart.push_back(out_.corners.size());
+    return OpenMesh::FaceHandle(int(out_.polygonCount() - 1));
+  }
+  size_t n_faces() const override { return out_.polygonCount(); }
+  // These would walk the kernel's (absent) faces; a surface needs none of them.
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>&) override {}
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec3f>&) override {}
+  void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+
+ private:
+  MeshFileContent& out_;
+};
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// OpenMesh's text readers cannot parse "nan" or "inf": they stop short or read garbage
+// without saying so. So text files are scanned for such coordinates first, to name the
+// line. Binary files carry non-finite floats through to the caller's checks.
+bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
+                       std::string& error) {
+  size_t lineNo = 0, pos = 0;
+  bool data = ext != ".ply";  // PLY: only after the header, and only when it is ASCII
+  std::string line;
+  while (pos < bytes.size()) {
+    size_t end = bytes.find('\n', pos);
+    if (end == std::string_view::npos) end = bytes.size();
+    line.assign(bytes.substr(pos, end - pos));
+    pos = end + 1;
+    ++lineNo;
+    std::istringstream tokens(line);
+    std::string first;
+    if (!(tokens >> first)) continue;
+    if (ext == ".ply" && !data) {
+      if (first == "format" && line.find("ascii") == std::string::npos) return true;
+      data = first == "end_header";
+      continue;
+    }
+    if (lineNo == 1 && ext == ".stl" && first != "solid") return true;  // binary STL
+    if ((ext == ".obj" && first != "v") || (ext == ".stl" && first != "vertex") || first[0] == '#')
+      continue;
+    for (std::string t = first; !t.empty(); t.clear(), tokens >> t) {
+      std::string lower = t;
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+                     [](unsigned char c) { return char(std::tolower(c)); });
+      const size_t sign = lower[0] == '-' || lower[0] == '+';
+      if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
+        error = path + ":" + std::to_string(lineNo) + ": vertex coordinate '" + t +
+                "' is not a finite number";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// OBJ, PLY and STL through OpenMesh (by path: the STL reader tells binary from text by the
+// file's size, and welds coincident corners).
+bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileContent& out,
+                      std::string& error) {
+  RawMesh vertices;
+  RawImporter importer(vertices, out);
+  OpenMesh::IO::Options opt;
+  // OpenMesh reports problems on its own error stream; we report them ourselves.
+  const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
+  omerr().disable();
+  omlog().disable();
+  bool ok = false;
+  try {
+    ok = OpenMesh::IO::IOManager().read(path, importer, opt);
+  } catch (const std::exception&) {
+    ok = false;  // a count the checks above did not foresee: still the file's fault
+  }
+  if (errWasOn) omerr().enable();
+  if (logWasOn) omlog().enable();
+  if (!ok) {
+    error = path + ": cannot read the file (not a valid " + ext.substr(1) + " file?)";
+    return false;
+  }
+  out.vertices.reserve(vertices.n_vertices());
+  for (auto v : vertices.vertices()) {
+    const auto& p = vertices.point(v);
+    out.vertices.push_back({p[0], p[1], p[2]});
+  }
+  const long long nv = (long long)out.vertices.size();
+  for (size_t f = 0; f < out.polygonCount(); ++f) {
+    // OpenMesh hands over such faces when it misreads a line (face colours it does not
+    // expect); what follows them cannot be trusted.
+    if (out.cornerCount(f) < 3) {
+      error = path + ": face " + std::to_string(f) + " has " + std::to_string(out.cornerCount(f)) +
+              " corners (the file is malformed, or in a variant of the format OpenMesh cannot "
+              "read)";
+      return false;
+    }
+    for (size_t c = out.polygonStart[f]; c < out.polygonStart[f + 1]; ++c)
+      if (out.corners[c] < 0 || out.corners[c] >= nv) {
+        error = path + ": face " + std::to_string(f) + " refers to vertex " +
+                std::to_string(out.corners[c]) + ", but there are only " + std::to_string(nv) +
+                " vertices";
+        return false;
+      }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error) {
+  out = MeshFileContent{};
+  std::string bytes;
+  if (!readInputFile(path, "a mesh file", bytes, error)) return false;
+  if (bytes.empty()) {
+    error = path + ": the file is empty (no faces)";
+    return false;
+  }
+  const std::string ext = lowerExtension(path);
+  bool ok = false;
+  if (ext == ".off") {
+    ok = parseOff(path, bytes, out, error);
+  } else {
+    ok = (ext != ".ply" || checkPlyStructure(path, bytes, error)) &&
+         findNonFiniteText(path, ext, bytes, error);
+    bytes = std::string();  // OpenMesh reads the file itself
+    ok = ok && readWithOpenMesh(path, ext, out, error);
+  }
+  if (!ok) out = MeshFileContent{};
+  return ok;
+}
+
+}  // namespace fgsg::rt::io

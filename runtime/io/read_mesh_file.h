@@ -1,0 +1,34 @@
+// Mesh files (OBJ, PLY, OFF, STL) read as they are, for surfaces and instanced assets alike.
+// Nothing is allocated by a count the file declares until the file is known to be large
+// enough to hold it, so a forged header fails at once with the file and line instead of
+// exhausting memory. OFF is parsed here (OpenMesh's reader misreads comments after the
+// header and trusts its counts); PLY is checked element by element before OpenMesh reads it;
+// OBJ and STL carry no counts and go to OpenMesh directly.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::io {
+
+struct MeshFileContent {
+  std::vector<std::array<double, 3>> vertices;
+  // Polygon p has the corners corners[polygonStart[p]] .. corners[polygonStart[p + 1] - 1];
+  // every polygon has at least three, each a valid vertex index.
+  std::vector<int> corners;
+  std::vector<size_t> polygonStart = {0};
+
+  size_t polygonCount() const { return polygonStart.size() - 1; }
+  size_t cornerCount(size_t p) const { return polygonStart[p + 1] - polygonStart[p]; }
+};
+
+// Reads `path` (a regular file within kMaxInputBytes; the format by its extension, which
+// the caller has checked is .obj, .ply, .off or .stl). False with one located message
+// ("PATH:LINE: ..." where a line is known, else "PATH: ...") when the file cannot be read,
+// declares more than it holds, spells a coordinate that is not finite, or has a face with
+// fewer than three corners or an index out of range.
+bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error);
+
+}  // namespace fgsg::rt::io
