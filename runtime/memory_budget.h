@@ -26,10 +26,11 @@ uint64_t defaultMemoryBudget();
 uint64_t residentMemoryBytes();
 
 // Bytes an assembled and written instance of an asset with this many vertices and
-// triangles takes: float positions, normals and colours, uint32 indices, and the
-// encoded file built in memory before it is written.
+// triangles takes at the peak: float positions, normals and colours and uint32 indices
+// once in the mesh, and about three times over while the file is encoded in memory (a
+// growing buffer, then its copy); measured: a 1.2 M-triangle .glb peaks at 4.3 times.
 constexpr uint64_t outputBytes(uint64_t vertices, uint64_t triangles) {
-  return 2 * (vertices * 9 * sizeof(float) + triangles * 3 * sizeof(uint32_t));
+  return 4 * (vertices * 9 * sizeof(float) + triangles * 3 * sizeof(uint32_t));
 }
 
 }  // namespace fgsg::rt
