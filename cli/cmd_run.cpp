@@ -9,6 +9,7 @@
 #include "runtime/assemble.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/write_instances.h"
+#include "runtime/memory_budget.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
 
@@ -17,9 +18,12 @@
 #include <cmath>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <optional>
 
 namespace fgsg::cli {
 namespace {
@@ -55,7 +59,12 @@ RunOptions parseRunOptions(const Args& args) {
     else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f, 0, UINT32_MAX));
     else if (f == "--max-seconds") {
       o.derive.maxSeconds = r.numberValue(f);
-      if (o.derive.maxSeconds <= 0) throw UsageError{"--max-seconds must be positive"};
+      if (!(o.derive.maxSeconds > 0)) throw UsageError{"--max-seconds must be positive"};
+    } else if (f == "--max-memory") {
+      const std::string size = r.value(f);
+      const std::optional<uint64_t> bytes = rt::parseMemorySize(size);
+      if (!bytes) throw UsageError{"--max-memory " + size + ": expected a size such as 512M or 2G"};
+      o.derive.maxMemoryBytes = *bytes;
     } else if (f == "--collide-all") o.derive.collideAll = true;
     else if (f == "--surface") {
       o.derive.surfaceOverride = r.value(f);
@@ -111,9 +120,9 @@ bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& 
   return !diags.hasErrors();
 }
 
-}  // namespace
-
-int runCommand(const Args& args) {
+// The whole command; `jit` is the caller's, so that it is destroyed (waiting for its
+// background compile, within --max-seconds) before the process ends.
+int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
   RunOptions opt;
   try {
     opt = parseRunOptions(args);
@@ -152,7 +161,6 @@ int runCommand(const Args& args) {
 
   // The JIT lives until the command ends: on a grammar's first run it compiles the
   // optimised code for the cache while the output is written.
-  std::unique_ptr<backend::jit::Jit> jit;
   if (opt.engine == backend::Engine::Jit) {
     try {
       jit = std::make_unique<backend::jit::Jit>();
@@ -162,6 +170,10 @@ int runCommand(const Args& args) {
     }
   }
   auto t0 = std::chrono::steady_clock::now();
+  // The cache's optimising compile is awaited only within --max-seconds of this start.
+  if (jit)
+    jit->stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
   backend::EngineReport engineReport;
   rt::DeriveResult result = backend::derive(opt.engine, compiled->module, compiled->source.text,
                                             opt.derive, assets, &engineReport, jit.get());
@@ -175,7 +187,18 @@ int runCommand(const Args& args) {
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
-  rt::Mesh mesh = rt::assembleInstances(result.instances, assets, meshOf);
+  rt::Mesh mesh;
+  try {
+    mesh = rt::assembleInstances(result.instances, assets, meshOf);
+  } catch (const std::bad_alloc&) {
+    rt::DeriveResult failed;
+    failed.messages.push_back({true, "R020", 0, 0,
+                               "out of memory assembling " + std::to_string(result.instances.instances.size()) +
+                                   " instances into one mesh; nothing was written (--max-memory stops the "
+                                   "derivation earlier, keeping what fits)"});
+    reportMessages(failed, compiled->source);
+    return 1;
+  }
   const double assembleSeconds = since(t0);
 
   // One transaction: the mesh, the instances and the preview are all written to temps
@@ -226,6 +249,22 @@ int runCommand(const Args& args) {
                                                                                : "jit");
   }
   return 0;
+}
+
+}  // namespace
+
+int runCommand(const Args& args) {
+  std::unique_ptr<backend::jit::Jit> jit;
+  const int code = run(args, jit);
+  jit.reset();
+  if (backend::jit::abandonedCompiles() > 0) {
+    // A background compile still runs LLVM: end without destroying its static objects.
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 }  // namespace fgsg::cli

@@ -13,8 +13,8 @@ const char* kHelp = R"(fgsg - field-guided shape grammars: grow geometry from .f
 usage:
   fgsg run FILE [-o out.glb|.obj|.ply] [--seed N] [--set name=value]...
                 [--preview out.png] [--instances out.json] [--max-shapes N]
-                [--max-depth N] [--max-seconds S] [--collide-all] [--stats] [--quiet]
-                [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
+                [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
+                [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
@@ -31,6 +31,10 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --repair-surface   repair what can be repaired in the surface mesh instead of failing
   --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
                      (default: closest to the centre of the surface's bounding box)
+  --max-seconds S    stop deriving after S seconds (default 120), keeping what was
+                     derived; field design, tracing and synthesis are bounded too
+  --max-memory SIZE  stop deriving when it holds SIZE (512M, 2G; default half the
+                     RAM), counting the mesh its instances will become; kept likewise
   --engine E         jit (default): compile the rules to native code first (cached in
                      $FGSG_CACHE_DIR or ~/.cache/fgsg); interp: the reference interpreter
 compile writes lib + FILE's stem + .so when -o is not given, and NAME.h beside the

@@ -4,6 +4,7 @@
 
 #include "runtime/instances.h"
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,7 +15,13 @@ struct DeriveOptions {
   uint64_t seed = 1;
   uint64_t maxShapes = 20'000'000;  // shapes created in all
   uint32_t maxDepth = 100'000;      // derivation depth of one shape
-  double maxSeconds = 120.0;
+  double maxSeconds = 120.0;  // wall clock, from `startedAt` (runtime/deadline.h)
+  // When the --max-seconds clock started; the default: when the derivation starts. A
+  // derivation run twice (the JIT's direct derivation, then the engine's order) shares it.
+  std::chrono::steady_clock::time_point startedAt{};
+  // --max-memory: resident memory plus the instances' future mesh (runtime/memory_budget.h);
+  // 0: rt::defaultMemoryBudget().
+  uint64_t maxMemoryBytes = 0;
   std::vector<std::pair<std::string, std::string>> attrOverrides;  // --set name=value
   std::vector<std::string> assetDirs;  // where asset files are looked up
   bool collideAll = false;  // --collide-all: every I() is collision-tested, as IC

@@ -13,6 +13,7 @@
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/memory_budget.h"
 
 #include <cerrno>
 #include <cmath>
@@ -24,6 +25,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -383,13 +385,17 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       double s;
       if (!parseNumber(v, s) || !(s > 0)) return bad("a positive number of seconds");
       o.maxSeconds = s;
+    } else if (n == "max-memory") {
+      const std::optional<uint64_t> bytes = fgsg::rt::parseMemorySize(v);
+      if (!bytes) return bad("a size such as 512M or 2G");
+      o.maxMemoryBytes = *bytes;
     } else if (n == "asset-dir") {
       if (v.empty()) return bad("a folder name");
       g->extraAssetDirs.push_back(v);
     } else {
       error = "fgsg_set_option: unknown option " + (name ? "'" + n + "'" : std::string("NULL")) +
               " (collide-all, repair-surface, surface-size, start, max-shapes, max-depth, "
-              "max-seconds, asset-dir)";
+              "max-seconds, max-memory, asset-dir)";
       return false;
     }
     return true;

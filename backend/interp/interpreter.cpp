@@ -9,8 +9,10 @@
 #include "ir/program_layout.h"
 #include "runtime/abi.h"
 #include "runtime/cga/cga.h"
+#include "runtime/deadline.h"
 #include "runtime/float_range.h"
 #include "runtime/fresh_stack.h"
+#include "runtime/memory_budget.h"
 #include "runtime/occlusion.h"
 #include "runtime/random.h"
 #include "runtime/stack_budget.h"
@@ -24,6 +26,8 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <new>
+#include <optional>
 
 namespace fgsg::backend {
 namespace {
@@ -147,7 +151,8 @@ class Interpreter final : public QueryHost {
   rt::DeriveResult run() {
     rt::DeriveResult result;
     const auto start = Clock::now();
-    start_ = start;
+    deadline_ = rt::Deadline(opt_.startedAt == Clock::time_point{} ? start : opt_.startedAt, opt_.maxSeconds);
+    memoryBudget_ = opt_.maxMemoryBytes ? opt_.maxMemoryBytes : rt::defaultMemoryBudget();
     stackFloor_ = rt::stackFloor();
     try {
       checkProgram();
@@ -167,12 +172,11 @@ class Interpreter final : public QueryHost {
       appendLineTubes(lines_, assets_, out_, symbolColor_);
       appendSurface();
     } catch (const LimitReached& limit) {
-      if (depthLimitHit_) result.messages.push_back(depthWarning_);
-      result.ok = true;
-      result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
-      orderDirectInstances();
-      appendLineTubes(lines_, assets_, out_, symbolColor_);
-      appendSurface();
+      keepAfter(limit, result);
+    } catch (const rt::TimeLimitReached&) {  // from a trace, deep in the runtime
+      keepAfter(timeLimit(), result);
+    } catch (const std::bad_alloc&) {
+      outOfMemory(result);
     } catch (const DeriveError& e) {
       result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
     } catch (const InexactDirect&) {
@@ -192,6 +196,35 @@ class Interpreter final : public QueryHost {
     uint32_t rule;
     double weight;
   };
+
+  // A limit ends the derivation: what was derived is kept, with the R004 warning.
+  void keepAfter(const LimitReached& limit, rt::DeriveResult& result) {
+    if (depthLimitHit_) result.messages.push_back(depthWarning_);
+    result.ok = true;
+    result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
+    try {
+      orderDirectInstances();
+      appendLineTubes(lines_, assets_, out_, symbolColor_);
+      appendSurface();
+    } catch (const std::bad_alloc&) {
+      result.messages.clear();
+      outOfMemory(result);
+    }
+  }
+
+  // Memory ran out before the budget noticed (a single huge allocation, or a budget over
+  // what the system gives): nothing is kept, and the error names the rule that ran away.
+  void outOfMemory(rt::DeriveResult& result) {
+    out_ = rt::InstanceList{};
+    buckets_.clear();
+    result.ok = false;
+    const auto [who, loc] = runaway(ir::Loc{});
+    result.messages.push_back({true, "R020", loc.line, loc.col,
+                               "out of memory while deriving (" + rt::formatMemorySize(rt::residentMemoryBytes()) +
+                                   " in use): " + who +
+                                   " ran away; nothing is written (--max-memory stops a derivation "
+                                   "earlier and keeps its shapes)"});
+  }
 
   // The surface the pattern grew on is part of the output, in a neutral grey.
   void appendSurface() {
@@ -231,7 +264,7 @@ class Interpreter final : public QueryHost {
         throw DeriveError{m_.surface.loc, "R009",
                           "a surface needs a sequential derivation: L-system turtles draw on the "
                           "plane"};
-      surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs);
+      surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
     }
     for (const auto& env : m_.environment)
       if (env.kind == "texture")
@@ -653,7 +686,7 @@ class Interpreter final : public QueryHost {
     }
     ++stats_.rewrites;
     ++ruleUses_[chosenRule_];
-    if ((stats_.rewrites & 4095) == 0) checkTime();
+    pollLimits();
     creatorRule_ = chosenRule_;
     execRoot(blockOf(alt), alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
              shape.symbol, &rng, shape.line);
@@ -710,7 +743,7 @@ class Interpreter final : public QueryHost {
     }
     ++stats_.rewrites;
     ++ruleUses_[chosenRule_];
-    if ((stats_.rewrites & 4095) == 0) checkTime();
+    pollLimits();
     const uint32_t outerCreator = creatorRule_;
     creatorRule_ = chosenRule_;
     State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line};
@@ -906,6 +939,8 @@ class Interpreter final : public QueryHost {
       try {
         std::rethrow_exception(call.thrown);
       } catch (const LimitReached&) {
+        throw;
+      } catch (const std::bad_alloc&) {
         throw;
       } catch (...) {
         throw InexactDirect{};
@@ -1203,8 +1238,9 @@ class Interpreter final : public QueryHost {
     so.size = {n[0], n[1], n[2]};
     so.seed = rt::childKey(ex.key, 0x8000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
     so.attempts = 10;  // whole-grid synthesis restarts after a contradiction
-    so.timeLimitSeconds = std::max(1.0, opt_.maxSeconds);
+    so.deadline = &deadline_;  // the solver stops with the derivation's time
     const rt::synthesis::SynthesisResult result = rt::synthesis::synthesize(example, so);
+    if (!result.ok && deadline_.expiredNow()) throw timeLimit();
     if (!result.ok)
       throw DeriveError{op.loc, "R013", "Synthesize(\"" + name + "\"): " + result.failure.message};
     rt::synthesis::PlacementFrame frame;
@@ -1301,26 +1337,72 @@ class Interpreter final : public QueryHost {
     shape.scope = st.scope;
   }
 
-  [[noreturn]] void shapeLimit(const ir::Op& op) {
+  // The most applied rule, named for a limit message, and where it is (`axiomAt` when
+  // no rule was applied).
+  std::pair<std::string, ir::Loc> runaway(ir::Loc axiomAt) const {
     uint32_t worst = 0;
     uint64_t uses = 0;
     for (uint32_t rule = 0; rule < ruleUses_.size(); ++rule)
       if (ruleUses_[rule] > uses) worst = rule, uses = ruleUses_[rule];
-    std::string who = uses == 0 ? std::string("the axiom")
-                                        : "rule '" + m_.rules[worst].label + "' (applied " +
-                                              std::to_string(uses) + " times)";
+    if (uses == 0) return {"the axiom", axiomAt};
+    return {"rule '" + m_.rules[worst].label + "' (applied " + std::to_string(uses) + " times)",
+            m_.rules[worst].loc};
+  }
+
+  [[noreturn]] void shapeLimit(const ir::Op& op) {
+    const auto [who, loc] = runaway(op.loc);
     throw LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) +
                            " shapes (--max-shapes): " + who +
                            " ran away; the shapes derived so far are kept",
-                       uses == 0 ? op.loc : m_.rules[worst].loc};
+                       loc};
   }
 
+  LimitReached timeLimit() const {
+    return {"derivation stopped after " + std::to_string(opt_.maxSeconds) +
+                " s (--max-seconds); the shapes derived so far are kept",
+            {}};
+  }
+
+  // --max-seconds and --max-memory, asked at every unit of work (a rewrite, a module):
+  // the deadline reads the clock about every 0.1 ms, the memory is read every 10 ms.
+  std::optional<LimitReached> limitsReached() {
+    if (deadline_.expired()) return timeLimit();
+    if (deadline_.lastRead() - memoryCheckedAt_ >= std::chrono::milliseconds(10)) return memoryLimit();
+    return std::nullopt;
+  }
+  void pollLimits() {
+    if (auto limit = limitsReached()) throw *limit;
+  }
+  // The same, reading the clock now: for callers that are already rare (every 4096
+  // directly derived shapes, a parallel step).
   void checkTime() {
-    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
-    if (t > opt_.maxSeconds)
-      throw LimitReached{"derivation stopped after " + std::to_string(opt_.maxSeconds) +
-                             " s (--max-seconds); the shapes derived so far are kept",
-                         {}};
+    if (deadline_.expiredNow()) throw timeLimit();
+    if (deadline_.lastRead() - memoryCheckedAt_ >= std::chrono::milliseconds(10))
+      if (auto limit = memoryLimit()) throw *limit;
+  }
+
+  // What the derivation holds: resident memory, plus the mesh and file the instances
+  // placed so far will become (counted once per instance, as they come).
+  std::optional<LimitReached> memoryLimit() {
+    memoryCheckedAt_ = deadline_.lastRead();
+    for (; instancesCounted_ < out_.instances.size(); ++instancesCounted_)
+      instanceBytes_ += assetOutputBytes(out_.instances[instancesCounted_].asset);
+    const uint64_t held = rt::residentMemoryBytes() + instanceBytes_;
+    if (held <= memoryBudget_) return std::nullopt;
+    const auto [who, loc] = runaway(ir::Loc{});
+    return LimitReached{"derivation stopped at " + rt::formatMemorySize(held) + " of memory (--max-memory " +
+                            rt::formatMemorySize(memoryBudget_) + ", with the instances' mesh to come): " + who +
+                            " ran away; the shapes derived so far are kept",
+                        loc};
+  }
+  uint64_t assetOutputBytes(uint32_t asset) {
+    while (assetBytes_.size() <= asset && assetBytes_.size() < out_.assets.size()) {
+      std::string error;
+      const int index = assets_.resolve(out_.assets[assetBytes_.size()], error);
+      const rt::Mesh* mesh = index >= 0 ? &assets_.mesh(index) : nullptr;
+      assetBytes_.push_back(mesh ? rt::outputBytes(mesh->vertexCount(), mesh->triangleCount()) : 0);
+    }
+    return asset < assetBytes_.size() ? assetBytes_[asset] : 0;
   }
 
   // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
@@ -1366,6 +1448,7 @@ class Interpreter final : public QueryHost {
     f.rng = &rng;
     appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str, args);
     bool limitHit = false;
+    std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
     for (int step = 0; step < m_.steps && !limitHit; ++step) {
       next.clear();
       nextArgs.clear();
@@ -1389,12 +1472,14 @@ class Interpreter final : public QueryHost {
         // At the limit the rest of this step's string is kept unrewritten, so the
         // turtle still draws the whole (partly older) plant.
         if (next.size() >= opt_.maxShapes) limitHit = true;
+        if (!limitHit && (stopped = limitsReached())) limitHit = true;
       }
       str.swap(next);
       args.swap(nextArgs);
-      checkTime();
+      if (!limitHit && deadline_.expiredNow()) stopped = timeLimit(), limitHit = true;
     }
     interpretString(str, args);
+    if (stopped) throw *stopped;
     if (limitHit) shapeLimit(ir::Op{});
   }
 
@@ -1639,7 +1724,12 @@ class Interpreter final : public QueryHost {
   const rt::DeriveOptions& opt_;
   rt::AssetLibrary& assets_;
   Evaluator eval_;
-  Clock::time_point start_;
+  rt::Deadline deadline_;                // --max-seconds, passed down to traces and fields
+  uint64_t memoryBudget_ = 0;            // --max-memory
+  Clock::time_point memoryCheckedAt_{};  // the last memory reading
+  size_t instancesCounted_ = 0;          // instances whose output bytes are in instanceBytes_
+  uint64_t instanceBytes_ = 0;
+  std::vector<uint64_t> assetBytes_;     // output bytes of one instance, per out_.assets entry
   rt::InstanceList out_;
   rt::DeriveStats stats_;
   uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
@@ -1722,9 +1812,10 @@ rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
   try {
     std::rethrow_exception(thrown);
   } catch (const std::bad_alloc&) {
-    failed.messages.push_back({true, "R018", 0, 0,
+    failed.messages.push_back({true, "R020", 0, 0,
                                "out of memory while deriving: the grammar needs more memory than this "
-                               "machine gives it (lower --max-shapes or --max-depth); nothing was written"});
+                               "machine gives it (--max-memory stops a derivation earlier and keeps its "
+                               "shapes); nothing is written"});
   } catch (const std::exception& e) {
     failed.messages.push_back({true, "R900", 0, 0, std::string("internal error while deriving: ") + e.what()});
   } catch (...) {
@@ -1755,13 +1846,16 @@ rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& pro
     std::vector<double> attrs;
     rt::DeriveResult failed;
     if (!prepare(module, options, local, attrs, failed)) return failed;
-    // Direct derivation first; where it could not be exact, the engine's own order.
+    // Direct derivation first; where it could not be exact, the engine's own order, within
+    // the same --max-seconds.
+    rt::DeriveOptions timed = options;
+    if (timed.startedAt == std::chrono::steady_clock::time_point{}) timed.startedAt = std::chrono::steady_clock::now();
     {
-      Interpreter fast(local, options, assets, attrs, &program, true);
+      Interpreter fast(local, timed, assets, attrs, &program, true);
       rt::DeriveResult result = fast.run();
       if (!fast.needsExactRun()) return result;
     }
-    return Interpreter(local, options, assets, std::move(attrs), &program, false).run();
+    return Interpreter(local, timed, assets, std::move(attrs), &program, false).run();
   } catch (...) {
     return escapedFailure(std::current_exception());
   }

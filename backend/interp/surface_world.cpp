@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <queue>
 #include <unordered_map>
 #include <optional>
@@ -52,6 +53,7 @@ void resize(SurfaceMesh& m, double size) {
 }  // namespace
 
 struct SurfaceWorld::Impl {
+  rt::Deadline* deadline = nullptr;  // --max-seconds: traces, design and smoothing ask it
   struct Field {
     std::string name;
     std::unique_ptr<rt::field::TangentField> values;
@@ -87,8 +89,9 @@ struct SurfaceWorld::Impl {
 };
 
 SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
-                           const std::vector<std::string>& searchDirs)
+                           const std::vector<std::string>& searchDirs, rt::Deadline* deadline)
     : impl_(std::make_unique<Impl>()) {
+  impl_->deadline = deadline;
   const ir::SurfaceSpec& spec = m.surface;
   std::string error;
   rt::surface::SurfaceLoadOptions load;
@@ -127,7 +130,7 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
   namespace field = rt::field;
   w.frames = std::make_shared<const field::TangentFrames>(w.mesh);
   std::unique_ptr<field::FieldDesigner> designer;  // factorised once, on first use
-  for (const ir::FieldSpec& spec : m.fields) {
+  for (const ir::FieldSpec& spec : m.fields) try {
     const field::FieldType type =
         spec.kind == "vector" ? field::FieldType::Vector : field::FieldType::Tensor;
     Impl::Field f;
@@ -199,12 +202,22 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
           e.direction = rt::field::rotateAbout(tangent(Vec3::UnitX(), n, Vec3::UnitY()), n,
                                                a ? (*a)[0] * kPi / 180.0 : 0.0);
         }
+        if (w.deadline) w.deadline->check();
         if (!designer->add(e, *f.values, error))
           throw DeriveError{item.loc, "R015", "field " + spec.name + ": " + error};
       }
-      if (smoothing > 0) field::smooth(*f.values, smoothing);
+      field::SmoothOptions smoothOptions;
+      smoothOptions.deadline = w.deadline;
+      if (smoothing > 0) field::smooth(*f.values, smoothing, smoothOptions);
     }
     w.fields.push_back(std::move(f));
+  } catch (const rt::TimeLimitReached& limit) {
+    // Nothing can be derived without the field: an error, not a kept (empty) result.
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", limit.seconds);
+    throw DeriveError{spec.loc, "R021",
+                      "field " + spec.name + ": designing it did not end within --max-seconds " + seconds +
+                          " (its design elements and smoothing iterations take longer); nothing was derived"};
   }
   w.fieldOfEnv.assign(m.environment.size(), -1);
   for (size_t k = 0; k < m.environment.size(); ++k)
@@ -243,7 +256,7 @@ void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) cons
     if (guide.isLineField() && u.dot(d) < 0) u = -u;  // the eigenvector's sign on d's side
     const double angle = rt::field::orientedAngle(u, d, n);
     const double keepX = rt::field::orientedAngle(u, x, n);
-    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, angle, length);
+    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, angle, length, w.deadline);
     const Vec3 nEnd = r.end.normal(w.mesh);
     const Vec3 uEnd = r.fieldDirection.norm() > 0 ? r.fieldDirection
                                                   : rt::field::rotateAbout(r.direction, nEnd, -angle);
@@ -252,7 +265,7 @@ void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) cons
   }
   // Without a field the scope rides a straightest geodesic and keeps its angle to it.
   const double keep = rt::field::orientedAngle(d, x, n);
-  const rt::field::TraceResult r = rt::field::traceGeodesic(w.mesh, from, d, length);
+  const rt::field::TraceResult r = rt::field::traceGeodesic(w.mesh, from, d, length, w.deadline);
   const Vec3 nEnd = r.end.normal(w.mesh);
   w.place(s, r.end, rt::field::rotateAbout(r.direction, nEnd, keep));
 }

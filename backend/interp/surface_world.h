@@ -6,6 +6,7 @@
 
 #include "backend/interp/eval.h"
 #include "ir/ir.h"
+#include "runtime/deadline.h"
 #include "runtime/derivation.h"
 #include "runtime/mesh.h"
 #include "runtime/scope.h"
@@ -24,8 +25,10 @@ class SurfaceWorld {
  public:
   // Builds the module's surface (or --surface's) and its fields. Files are looked up in
   // `searchDirs` (the grammar's folder first). Throws DeriveError at the declaration.
+  // `deadline` (--max-seconds) bounds field design and smoothing (an expired one is R021
+  // at the field) and every trace (which then throws rt::TimeLimitReached).
   SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
-               const std::vector<std::string>& searchDirs);
+               const std::vector<std::string>& searchDirs, rt::Deadline* deadline = nullptr);
   ~SurfaceWorld();
 
   // Where the axiom starts: on the surface point closest to --start (default: to the

@@ -17,8 +17,10 @@
 #include <llvm/Support/raw_ostream.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
@@ -49,15 +51,44 @@ void initNativeTarget() {
 
 }  // namespace
 
+// What a background compile and the Jit waiting for it share.
+struct BackgroundState {
+  std::mutex mutex;
+  std::condition_variable ended;
+  bool done = false;       // the compile (and its store) is over
+  bool abandoned = false;  // nobody waits any more: do not store
+};
+
+static std::atomic<int> abandonedCount{0};
+
 struct Jit::Impl {
   std::unique_ptr<llvm::orc::LLJIT> lljit;
   std::unique_ptr<llvm::TargetMachine> tm;  // for the optimisation pipeline
   uint64_t units = 0;
   std::string lastIR;
-  std::vector<std::thread> background;  // optimising compiles for the cache (Tiering::Tiered)
+  // An optimising compile for the cache (Tiering::Tiered), on its own thread.
+  struct Background {
+    std::thread thread;
+    std::shared_ptr<BackgroundState> state;
+  };
+  std::vector<Background> background;
+  std::chrono::steady_clock::time_point waitLimit = std::chrono::steady_clock::time_point::max();
 
   ~Impl() {
-    for (auto& t : background) t.join();
+    for (auto& job : background) {
+      bool done;
+      {
+        std::unique_lock<std::mutex> lock(job.state->mutex);
+        done = job.state->ended.wait_until(lock, waitLimit, [&] { return job.state->done; });
+        if (!done) job.state->abandoned = true;  // checked before storing, under the lock
+      }
+      if (done) {
+        job.thread.join();
+      } else {
+        job.thread.detach();
+        ++abandonedCount;
+      }
+    }
   }
 
   void defineRuntimeSymbols() {
@@ -147,9 +178,13 @@ Jit::~Jit() = default;
 const std::string& Jit::lastIR() const { return impl_->lastIR; }
 
 void Jit::waitForCache() {
-  for (auto& t : impl_->background) t.join();
+  for (auto& job : impl_->background) job.thread.join();
   impl_->background.clear();
 }
+
+void Jit::stopWaitingAt(std::chrono::steady_clock::time_point limit) { impl_->waitLimit = limit; }
+
+int abandonedCompiles() { return abandonedCount.load(); }
 
 CompiledExprs Jit::compile(const std::vector<const ir::Expr*>& exprs) {
   Impl& j = *impl_;
@@ -205,17 +240,25 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
         m, {}, codegen::CpuTarget::Host, firstTier ? codegen::CodeQuality::Baseline : codegen::CodeQuality::Optimized);
     if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
     out.optimized_ = !firstTier;
-    if (tiered)
-      impl_->background.emplace_back([m, cache, key] {
+    if (tiered) {
+      auto state = std::make_shared<BackgroundState>();
+      std::thread thread([m, cache, key, state] {
         try {
-          cache.store(key, codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host,
-                                                         codegen::CodeQuality::Optimized));
+          const std::string object =
+              codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host, codegen::CodeQuality::Optimized);
+          std::lock_guard<std::mutex> lock(state->mutex);
+          if (!state->abandoned) cache.store(key, object);
         } catch (...) {
           // The next run compiles again; nothing is lost but time.
         }
+        std::lock_guard<std::mutex> lock(state->mutex);
+        state->done = true;
+        state->ended.notify_all();
       });
-    else if (!firstTier)
+      impl_->background.push_back({std::move(thread), std::move(state)});
+    } else if (!firstTier) {
       cache.store(key, object);
+    }
   }
   out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

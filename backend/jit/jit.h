@@ -4,6 +4,8 @@
 // unit with its own ResourceTracker: its code lives as long as the returned object.
 #pragma once
 
+#include <chrono>
+
 #include "backend/codegen/expr_codegen.h"
 #include "ir/ir.h"
 
@@ -55,6 +57,11 @@ class CompiledProgram {
 
 class ObjectCache;
 
+// Background compiles abandoned by a Jit destroyed before they ended (stopWaitingAt). A
+// process with any must end with std::_Exit after flushing its output: their threads
+// still use LLVM, whose static objects an ordinary exit would destroy under them.
+int abandonedCompiles();
+
 class Jit {
  public:
   Jit();  // throws std::runtime_error when no native target can be set up
@@ -81,6 +88,10 @@ class Jit {
 
   // Waits until the optimising compiles of Tiering::Tiered are in the cache.
   void waitForCache();
+  // The destructor waits for those compiles until `limit` at the latest (fgsg run's
+  // --max-seconds): one still running then is abandoned, its object never stored (it only
+  // fills the cache), and its thread left to the process's end; see abandonedCompiles().
+  void stopWaitingAt(std::chrono::steady_clock::time_point limit);
 
   // The optimised LLVM IR of the last unit compiled, for debugging and tests.
   const std::string& lastIR() const;

@@ -20,6 +20,7 @@ void sweep(const TangentFrames& frames, const std::vector<double>& rotRe,
   const int n = int(frames.vertexCount());
   const bool tensor = !in.mean.empty();
   for (int v = 0; v < n; ++v) {
+    if (o.deadline && (v & 255) == 0) o.deadline->check();
     const int begin = frames.neighbourBegin(v), end = frames.neighbourEnd(v);
     if (begin == end || (o.locked && (*o.locked)[v])) {
       out.re[v] = in.re[v];

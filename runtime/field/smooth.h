@@ -6,6 +6,7 @@
 // cancel as the field gets smoother.
 #pragma once
 
+#include "runtime/deadline.h"
 #include "runtime/field/tangent_field.h"
 
 #include <cstdint>
@@ -20,6 +21,9 @@ struct SmoothOptions {
   double step = 0.5;
   // Vertices marked non-zero keep their values (design elements the user placed).
   const std::vector<uint8_t>* locked = nullptr;
+  // --max-seconds: asked for every block of vertices; smoothing throws TimeLimitReached
+  // when it expires (the field is then left as it was).
+  Deadline* deadline = nullptr;
 };
 
 void smooth(TangentField& field, int iterations, const SmoothOptions& options = {});

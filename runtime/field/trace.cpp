@@ -24,7 +24,8 @@ Vec3 rotateAbout(const Vec3& v, const Vec3& n, double angle) {
   return c * v + s * n.cross(v) + (1 - c) * n.dot(v) * n;
 }
 
-TraceResult traceGeodesic(const SurfaceMesh& m, SurfacePoint start, Vec3 dir, double length) {
+TraceResult traceGeodesic(const SurfaceMesh& m, SurfacePoint start, Vec3 dir, double length,
+                          Deadline* deadline) {
   if (start.face < 0 || size_t(start.face) >= m.faces.size())
     throw std::invalid_argument("traceGeodesic: the start is not a face of the mesh");
   if (!(length > 0)) length = 0;  // NaN too
@@ -43,6 +44,7 @@ TraceResult traceGeodesic(const SurfaceMesh& m, SurfacePoint start, Vec3 dir, do
   }
   double remaining = length, minHeight = face.height;
   for (size_t step = 1; remaining > 0; ++step) {
+    if (deadline) deadline->check();
     if (step > kIterBase + kIterPerHeight * length / minHeight) {
       r.stopped = true;
       break;

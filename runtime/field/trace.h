@@ -12,6 +12,7 @@
 // positive (or NaN) traces nothing.
 #pragma once
 
+#include "runtime/deadline.h"
 #include "runtime/field/direction_field.h"
 
 namespace fgsg::rt::field {
@@ -44,7 +45,10 @@ struct TraceResult {
 // for arc length `length` (unfolded across each edge; through a vertex it leaves with
 // half the vertex's angle sum on either side; through a boundary vertex it goes straight
 // on when the fan has room for it on one side, else it stops there).
-TraceResult traceGeodesic(const SurfaceMesh& mesh, SurfacePoint start, Vec3 dir, double length);
+// `deadline` (--max-seconds), when given, is asked at every step: a trace whose time is up
+// throws TimeLimitReached.
+TraceResult traceGeodesic(const SurfaceMesh& mesh, SurfacePoint start, Vec3 dir, double length,
+                          Deadline* deadline = nullptr);
 
 // With a field: the (hyper)streamline leaving `start` at oriented angle `angle` (radians,
 // counter-clockwise about the surface normal) to the field, i.e. whose tangent is the
@@ -60,7 +64,7 @@ TraceResult traceGeodesic(const SurfaceMesh& mesh, SurfacePoint start, Vec3 dir,
 // jump the angle between `fieldDirection` and `direction` is no longer `angle`. A vector
 // field's streamline stops at a zero of the field (stopped = true), as at the boundary.
 TraceResult traceField(const SurfaceMesh& mesh, const DirectionField& field, SurfacePoint start,
-                       Vec3 initialDir, double angle, double length);
+                       Vec3 initialDir, double angle, double length, Deadline* deadline = nullptr);
 
 // The oriented angle from a to b about the unit normal n, in (-pi, pi] (both taken in the
 // plane orthogonal to n; 0 when either has no part there).

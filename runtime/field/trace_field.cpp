@@ -148,8 +148,8 @@ double crossingFraction(const Stages& st, double b0, double a, double c, double 
 
 class Streamline {
  public:
-  Streamline(const SurfaceMesh& m, const DirectionField& field, double angle)
-      : m_(m), field_(field), line_(field.isLineField()) {
+  Streamline(const SurfaceMesh& m, const DirectionField& field, double angle, Deadline* deadline)
+      : m_(m), field_(field), line_(field.isLineField()), deadline_(deadline) {
     setAngle(angle);
   }
 
@@ -227,6 +227,7 @@ class Streamline {
   const SurfaceMesh& m_;
   const DirectionField& field_;
   const bool line_;
+  Deadline* deadline_;  // null: no time limit
   double cosA_ = 1, sinA_ = 0;
   Face face_;
   Vec3 b_, dir_;
@@ -432,6 +433,7 @@ TraceResult Streamline::run(SurfacePoint start, const Vec3& initialDir, double l
   bool singular = false;
   Stages st;
   for (size_t step = 1; remaining > 0; ++step) {
+    if (deadline_) deadline_->check();
     if (face_.f != visiting) {
       visiting = face_.f;
       jumpedIn = -1;  // a new visit may jump again
@@ -612,12 +614,12 @@ TraceResult Streamline::run(SurfacePoint start, const Vec3& initialDir, double l
 }  // namespace
 
 TraceResult traceField(const SurfaceMesh& m, const DirectionField& field, SurfacePoint start,
-                       Vec3 initialDir, double angle, double length) {
+                       Vec3 initialDir, double angle, double length, Deadline* deadline) {
   if (start.face < 0 || size_t(start.face) >= m.faces.size())
     throw std::invalid_argument("traceField: the start is not a face of the mesh");
   if (!(length > 0)) length = 0;
   if (!std::isfinite(angle)) angle = 0;
-  return Streamline(m, field, angle).run(start, initialDir, length);
+  return Streamline(m, field, angle, deadline).run(start, initialDir, length);
 }
 
 }  // namespace fgsg::rt::field

@@ -2,6 +2,7 @@
 // Algorithm 3.4 (start from a trivial consistent model, then re-synthesize overlapping
 // blocks shifted by half a block, reverting a block that fails). Both run through one
 // routine, `runBlock`: whole-grid synthesis is the block that is the whole grid.
+#include "runtime/memory_budget.h"
 #include "runtime/synthesis/catalog.h"
 #include "runtime/synthesis/random.h"
 #include "runtime/synthesis/synthesis.h"
@@ -37,7 +38,11 @@ struct Problem {
   std::vector<std::vector<double>> weight;   // per region: label weights
   std::vector<Word> connectMask;             // labels of the connectivity constraint
   Clock::time_point start;
+  Deadline deadline;  // timeLimitSeconds from the start
   uint64_t maxAssignments = 0;
+
+  // Asked at every assignment; reads the clock about every 0.1 ms (runtime/deadline.h).
+  bool timeUp() { return deadline.expired() || (o.deadline && o.deadline->expired()); }
 
   Problem(const Example& e, const SynthesisOptions& opt) : ex(e), o(opt) {}
   const Word* base(int64_t c) const { return &baseTable[size_t(baseIndex[size_t(c)]) * size_t(W)]; }
@@ -251,9 +256,7 @@ class Solver {
 
   bool limitsHit(SynthesisFailure& fail, int64_t site) {
     if (stats_.assignments >= P_.maxAssignments) return !failAt(site, fail, SynthesisFailure::kStepLimit);
-    if ((stats_.assignments & 255) == 0 &&
-        std::chrono::duration<double>(Clock::now() - P_.start).count() > P_.o.timeLimitSeconds)
-      return !failAt(site, fail, SynthesisFailure::kTimeLimit);
+    if (P_.timeUp()) return !failAt(site, fail, SynthesisFailure::kTimeLimit);
     return false;
   }
 
@@ -551,14 +554,31 @@ SynthesisResult synthesize(const Example& ex, const SynthesisOptions& options) n
   try {
     Problem P(ex, options);
     P.start = t0;
+    P.deadline = Deadline(t0, options.timeLimitSeconds);
     std::string error;
     R.pieces = ex.labels;
+    // A grid that cannot fit is refused at once, not after minutes of setting it up.
+    const uint64_t cells = uint64_t(std::max<int64_t>(0, options.size.count()));
+    const uint64_t perCell = 24 + 16 * uint64_t(sizeof(Word)) * uint64_t(paddedWordsFor(std::max(1, ex.labelCount())));
+    const uint64_t available = availableMemoryBytes();
+    if (available > 0 && cells > available / perCell) {
+      R.failure.kind = SynthesisFailure::kBadOptions;
+      R.failure.message = "a grid of " + std::to_string(cells) + " cells needs about " +
+                          formatMemorySize(cells * perCell) + " of memory (" + std::to_string(perCell) +
+                          " bytes a cell), more than the " + formatMemorySize(available) + " this machine has";
+      return R;
+    }
     if (!compile(P, error)) {
       R.failure.kind = SynthesisFailure::kBadOptions;
       R.failure.message = error;
       return R;
     }
-    for (int64_t c = 0; c < options.size.count(); ++c)
+    for (int64_t c = 0; c < options.size.count(); ++c) {
+      if (P.timeUp()) {
+        R.failure.kind = SynthesisFailure::kTimeLimit;
+        R.failure.message = "time limit reached while setting up the grid";
+        return R;
+      }
       if (firstBit(P.base(c), P.W) < 0) {
         R.failure.kind = SynthesisFailure::kContradiction;
         R.failure.cell = LabelGrid(GridSize{options.size.nx, options.size.ny, 1}).cell(0);
@@ -568,6 +588,7 @@ SynthesisResult synthesize(const Example& ex, const SynthesisOptions& options) n
                             ": the border, mask and symmetry constraints exclude every label";
         return R;
       }
+    }
     const uint64_t passes = uint64_t(std::max(1, options.blockPasses)) * uint64_t(std::max(1, options.attempts));
     P.maxAssignments = options.maxAssignments ? options.maxAssignments : 64ULL * uint64_t(options.size.count()) * passes + 1024;
     switch (P.W) {  // paddedWordsFor(k <= 4096)

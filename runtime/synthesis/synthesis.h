@@ -13,6 +13,7 @@
 // exceptions (they may be called from JIT-compiled grammar code).
 #pragma once
 
+#include "runtime/deadline.h"
 #include "runtime/synthesis/constraints.h"
 #include "runtime/synthesis/diagnostic.h"
 #include "runtime/synthesis/example.h"
@@ -48,6 +49,9 @@ struct SynthesisOptions {
   // Limits: a run never hangs. 0 assignments = 64 x (cells) x (passes).
   uint64_t maxAssignments = 0;
   double timeLimitSeconds = 30.0;
+  // A caller's own clock as well (fgsg run's --max-seconds for Synthesize): the solver
+  // also stops, with kTimeLimit, when it expires. Null: timeLimitSeconds alone.
+  Deadline* deadline = nullptr;
 };
 
 struct SynthesisFailure {

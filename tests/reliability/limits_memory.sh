@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# --max-memory stops a runaway derivation with the kept-result warning (R004, exit 0)
+# before memory runs out, counting the mesh its instances will become; bad sizes are
+# usage errors.
+. "$(dirname "$0")/lib.sh"
+export FGSG_CACHE_DIR=off
+
+stopped='warning\[R004\]: derivation stopped at [0-9.]+M of memory \(--max-memory 200M, with the instances. mesh to come\): rule .A#0. \(applied [0-9]+ times\) ran away; the shapes derived so far are kept'
+for engine in interp jit; do
+  expect 0 "$stopped" -- "$fgsg" run "$inputs/limits_runaway.fgsg" --engine "$engine" --max-memory 200M \
+    --max-depth 1000 --max-shapes 1000000000 -o "$tmp/runaway.glb"
+  [ -s "$tmp/runaway.glb" ] || fail "the kept result was not written ($engine)"
+done
+# FGSG Fig. 1's cracks without --max-depth (120 s and an abort on bad_alloc before).
+expect 0 "fig1_cracks_plane\.fgsg:[0-9]+:[0-9]+: warning\[R004\]: derivation stopped at [0-9.]+M of memory \(--max-memory 200M" -- \
+  "$fgsg" run "$root/examples/fig1_cracks_plane.fgsg" --max-memory 200M -o "$tmp/fig1.glb"
+
+# The process never holds much more than the budget (assembling and writing included).
+if [ -x /usr/bin/time ]; then
+peak=$( { /usr/bin/time -f '%M' "$fgsg" run "$inputs/limits_runaway.fgsg" --engine interp --max-memory 200M \
+  --max-depth 1000 --max-shapes 1000000000 -o "$tmp/peak.glb" 2>&1 >/dev/null; } | tail -1)
+[ "$peak" -lt 330000 ] || fail "peak resident memory ${peak} KB under --max-memory 200M"
+fi
+
+for bad in 0 12X -5 1.5Q M ''; do
+  expect 2 'fgsg run: --max-memory .*: expected a size such as 512M or 2G' -- \
+    "$fgsg" run "$inputs/limits_runaway.fgsg" --max-memory "$bad"
+done
+expect 0 'derivation stopped at 1000 shapes' -- \
+  "$fgsg" run "$inputs/limits_runaway.fgsg" --max-memory=1.5G --max-shapes 1000 -o "$tmp/ok.glb"
+exit 0

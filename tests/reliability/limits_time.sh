@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# --max-seconds bounds every phase by wall clock: a derivation whose rewrites are each
+# slow (long traces on a surface), a runaway queue, an L-system step, field smoothing
+# and model synthesis all end soon after the limit. Bounds are loose (a loaded 2-core
+# machine runs the tests) but far below what the inputs would take unbounded (minutes).
+. "$(dirname "$0")/lib.sh"
+export FGSG_CACHE_DIR=off
+
+# within SECONDS -- COMMAND...: like expect, and the command ends within SECONDS.
+within() {
+  local limit=$1 code=$2 pattern=$3
+  shift 4
+  local t0 t1
+  t0=$(date +%s.%N)
+  expect "$code" "$pattern" -- "$@"
+  t1=$(date +%s.%N)
+  awk -v a="$t0" -v b="$t1" -v l="$limit" 'BEGIN { exit !(b - a < l) }' ||
+    fail "'$*' took $(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }') s, more than $limit s"
+}
+
+stopped='warning\[R004\]: derivation stopped after 1\.0+ s \(--max-seconds\); the shapes derived so far are kept'
+for engine in interp jit; do
+  within 4 0 "$stopped" -- "$fgsg" run "$inputs/limits_long_traces.fgsg" --engine "$engine" --max-seconds 1 \
+    -o "$tmp/traces.obj" --stats
+  [ -s "$tmp/traces.obj" ] || fail "the kept result of the traces was not written ($engine)"
+  # The derivation itself stops within 10 % of the limit (plus a scheduling slice).
+  awk '$1 == "time.derive" { exit !($2 >= 1.0 && $2 < 1.15) }' "$tmp/out" ||
+    fail "time.derive $(awk '$1 == "time.derive" { print $2 }' "$tmp/out") for --max-seconds 1 ($engine)"
+  within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_runaway_bare.fgsg" --engine "$engine" --max-seconds 1 \
+    --max-depth 1000 --max-shapes 1000000000 -o "$tmp/runaway.glb"
+done
+# Parallel: stopped inside a step; the string so far is drawn (instances written).
+within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_parallel.fgsg" --engine interp --max-seconds 1 \
+  --max-shapes 1000000000 -o "$tmp/parallel.glb"
+grep -qE 'wrote .*\(([1-9][0-9]*) instances' "$tmp/err" || fail "the parallel result kept no instances"
+
+# Field design: nothing can be derived without the field, so an error at its declaration.
+within 4 1 'limits_smooth_forever\.fgsg:3:1: error\[R021\]: field F1: designing it did not end within --max-seconds 1' -- \
+  "$fgsg" run "$inputs/limits_smooth_forever.fgsg" --max-seconds 1 -o "$tmp/smooth.obj"
+[ ! -e "$tmp/smooth.obj" ] || fail "a field that was not designed still wrote a mesh"
+
+# Model synthesis: a grid too large for the machine is refused at once; a large one that
+# fits stops at --time-limit.
+within 4 1 'needs about [0-9.]+[GT] of memory' -- \
+  "$fgsg" synth "$root/examples/synthesis/castle.txt" --size 4096 4096 4096 --labels "$tmp/l.txt"
+within 5 1 'time limit \(1\.0+ s\) reached' -- \
+  "$fgsg" synth "$root/examples/synthesis/landscape.txt" --size 3000 3000 1 --time-limit 1 --labels "$tmp/l.txt"
+exit 0
