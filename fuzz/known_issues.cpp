@@ -1,0 +1,112 @@
+#include "fuzz/known_issues.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <string>
+
+namespace fgsg::fuzz {
+namespace {
+
+bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+// Reads the next whitespace-separated token from `text` at `pos`, skipping `#` comments.
+std::string_view nextToken(std::string_view text, size_t& pos) {
+  while (pos < text.size()) {
+    if (isSpace(text[pos])) {
+      ++pos;
+    } else if (text[pos] == '#') {
+      while (pos < text.size() && text[pos] != '\n') ++pos;
+    } else {
+      break;
+    }
+  }
+  const size_t begin = pos;
+  while (pos < text.size() && !isSpace(text[pos])) ++pos;
+  return text.substr(begin, pos - begin);
+}
+
+// The token as a count; -1 for anything that is not a plain non-negative integer, and a
+// huge value for one too long to hold.
+long long asCount(std::string_view token) {
+  if (token.empty() || token.size() > 15) return token.empty() ? -1 : (1LL << 60);
+  for (char c : token)
+    if (!isDigit(c)) return -1;
+  return std::atoll(std::string(token).c_str());
+}
+
+}  // namespace
+
+bool hasOverflowingParallelCount(std::string_view text) {
+  for (size_t at = text.find("parallel"); at != std::string_view::npos;
+       at = text.find("parallel", at + 1)) {
+    size_t p = at + 8;
+    while (p < text.size() && !isDigit(text[p]) && p < at + 64) ++p;
+    size_t digits = 0;
+    while (p + digits < text.size() && (isDigit(text[p + digits]) || text[p + digits] == '.')) ++digits;
+    if (digits >= 10 || text.substr(p, 16).find_first_of("eE") != std::string_view::npos) return true;
+  }
+  return false;
+}
+
+bool namesDeviceFile(std::string_view text) { return text.find("/dev") != std::string_view::npos; }
+
+bool hasHugeNumber(std::string_view text) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (!isDigit(text[i]) || (i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_')))
+      continue;
+    size_t intDigits = 0;
+    while (i < text.size() && isDigit(text[i])) ++i, ++intDigits;
+    if (intDigits > 6) return true;
+    while (i < text.size() && (isDigit(text[i]) || text[i] == '.')) ++i;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+      size_t j = i + 1;
+      if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+      size_t expDigits = 0;
+      int exponent = 0;
+      while (j < text.size() && isDigit(text[j])) exponent = exponent * 10 + (text[j++] - '0'), ++expDigits;
+      if (expDigits > 2 || exponent >= 6) return true;
+      i = j;
+    }
+  }
+  return false;
+}
+
+bool hasImpossibleMeshCounts(std::string_view text) {
+  size_t pos = 0;
+  const std::string_view magic = nextToken(text, pos);
+  if (magic.size() >= 3 && magic.substr(magic.size() - 3) == "OFF") {
+    // [ST][C][N][4]OFF, then vertex, face and edge counts.
+    const long long nv = asCount(nextToken(text, pos));
+    const long long nf = asCount(nextToken(text, pos));
+    if (nv < 0 || nf < 0) return true;  // negative or malformed counts
+    // Every vertex and face needs at least two characters.
+    if (nv > static_cast<long long>(text.size()) || nf > static_cast<long long>(text.size())) return true;
+    // A face line with a negative corner count (repro 09): a line of four or more tokens
+    // whose first is a negative integer (vertex lines hold three coordinates).
+    for (size_t nl = text.find('\n', pos); nl != std::string_view::npos; nl = text.find('\n', nl + 1)) {
+      const size_t end = std::min(text.find('\n', nl + 1), text.size());
+      std::string_view line = text.substr(nl + 1, end - nl - 1);
+      size_t q = 0;
+      const std::string_view first = nextToken(line, q);
+      if (first.size() < 2 || first[0] != '-' || asCount(first.substr(1)) < 0) continue;
+      int tokens = 1;
+      while (!nextToken(line, q).empty()) ++tokens;
+      if (tokens >= 4) return true;
+    }
+    return false;
+  }
+  if (magic == "ply") {
+    // "element NAME COUNT" lines: binary bodies make any count possible to claim.
+    for (size_t at = text.find("element"); at != std::string_view::npos; at = text.find("element", at + 1)) {
+      size_t p = at + 7;
+      nextToken(text, p);
+      const long long n = asCount(nextToken(text, p));
+      if (n < 0 || n > static_cast<long long>(text.size())) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace fgsg::fuzz

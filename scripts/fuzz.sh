@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/, clang-19 with ASan + UBSan) into build-fuzz/ and runs
+# each for its share of MINUTES (default 10), then prints executions, speed, coverage and
+# findings per target. Findings (crash-*, timeout-*, oom-*, leak-* inputs) are kept in
+# build-fuzz/findings/<target>/, the growing corpora in build-fuzz/corpus/<target>/.
+#
+#   scripts/fuzz.sh [MINUTES]
+#   FUZZ_TARGETS="fuzz_frontend" scripts/fuzz.sh 60      # one target for the whole hour
+#
+# A target that stops on a finding is restarted for the rest of its time, so one run can
+# report several. docs/testing.md describes the targets and their oracles.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build-fuzz"
+minutes=${1:-10}
+targets=(${FUZZ_TARGETS:-fuzz_frontend fuzz_run fuzz_mesh fuzz_synthesis_example})
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+cxx=${FUZZ_CXX:-clang++-19}
+cc=${FUZZ_CC:-clang-19}
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+cmake -S "$root" -B "$build" -G Ninja -DFGSG_FUZZ=ON -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" "${launcher[@]}" \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" >/dev/null
+cmake --build "$build" -j "$jobs" --target "${targets[@]}"
+
+# Seed corpora: every grammar and synthesis example in the tree, the small test meshes
+# and the hand-made ones in fuzz/seeds/ (large meshes are past the targets' size cap).
+seed() {
+  local dir="$build/seeds/$1"; shift
+  rm -rf "$dir"; mkdir -p "$dir"
+  local f
+  for f in "$@"; do
+    [ -f "$f" ] && [ "$(stat -c %s "$f")" -le 16384 ] && cp "$f" "$dir/$(echo "${f#"$root"/}" | tr / _)"
+  done
+  return 0
+}
+shopt -s nullglob
+grammars=("$root"/examples/*.fgsg "$root"/tests/cases/*/*.fgsg "$root"/tests/reliability/inputs/*.fgsg
+          "$root"/tests/repl/*.script "$root"/bench/*.fgsg "$root"/bench/*/*.fgsg)
+seed fuzz_frontend "${grammars[@]}"
+seed fuzz_run "${grammars[@]}"
+seed fuzz_mesh "$root"/fuzz/seeds/mesh/* "$root"/tests/data/meshes/*.{off,ply,stl,obj} "$root"/tests/reliability/inputs/*.{off,ply,stl,obj}
+seed fuzz_synthesis_example "$root"/examples/synthesis/*.{txt,json} "$root"/tests/reliability/inputs/*.json \
+  "$root"/tests/unit/synthesis/data/*
+
+# allocator_may_return_null: an absurd allocation throws std::bad_alloc as in Release (the
+# targets know which of those are already reported) instead of ending the run.
+export ASAN_OPTIONS="allocator_may_return_null=1:max_allocation_size_mb=2048:detect_stack_use_after_return=0:${ASAN_OPTIONS_EXTRA:-}"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The JIT keeps process-lifetime LLVM state; leak checks there only report LLVM.
+declare -A extra=([fuzz_run]="-detect_leaks=0" [fuzz_frontend]="-dict=$root/fuzz/fgsg.dict")
+extra[fuzz_run]+=" -dict=$root/fuzz/fgsg.dict"
+
+share=$((minutes * 60 / ${#targets[@]}))
+summary="$build/fuzz-summary.txt"
+printf '%-24s %12s %9s %8s %8s %9s\n' target executions exec/s cov features findings >"$summary"
+for t in "${targets[@]}"; do
+  corpus="$build/corpus/$t" findings="$build/findings/$t" log="$build/logs/$t.log"
+  mkdir -p "$corpus" "$findings" "$(dirname "$log")"
+  : >"$log"
+  end=$((SECONDS + share))
+  while [ $((end - SECONDS)) -gt 5 ]; do
+    # shellcheck disable=SC2086
+    "$build/bin/$t" -max_total_time=$((end - SECONDS)) -timeout=10 -rss_limit_mb=4096 \
+      -malloc_limit_mb=4096 -max_len=8192 -print_final_stats=1 -artifact_prefix="$findings/" \
+      ${extra[$t]:-} "$corpus" "$build/seeds/$t" >>"$log" 2>&1 || true
+  done
+  # Totals over the restarts: each libFuzzer run ends with "stat::number_of_executed_units".
+  runs=$(awk '/stat::number_of_executed_units/ {s += $2} END {print s + 0}' "$log")
+  secs=$share
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | awk '{print $2}')
+  ft=$(grep -oE 'ft: [0-9]+' "$log" | tail -1 | awk '{print $2}')
+  found=$(find "$findings" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'oom-*' -o -name 'leak-*' -o -name 'slow-unit-*' \) | wc -l)
+  printf '%-24s %12s %9s %8s %8s %9s\n' "$t" "$runs" "$((runs / (secs > 0 ? secs : 1)))" "${cov:-0}" "${ft:-0}" "$found" >>"$summary"
+done
+cat "$summary"
+echo "findings: $build/findings/<target>/ (reproduce: build-fuzz/bin/<target> FILE); logs: $build/logs/"

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds fgsg with AddressSanitizer + UndefinedBehaviorSanitizer (g++) into build-asan/ and
+# runs the whole CTest suite there. Not part of the normal test command: the build takes
+# as long as a Release one and the suite runs 2-4x slower (docs/testing.md).
+#
+#   scripts/sanitize.sh [ctest arguments...]     e.g.  scripts/sanitize.sh -R 'runtime:'
+#
+# Any sanitizer report aborts the process that made it, so it fails its test; the reports
+# land in build-asan/Testing/Temporary/LastTest.log.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build-asan"
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+
+# -O1 keeps the suite's run time bearable; frame pointers give whole stacks in reports;
+# UB is an error (no recovery), so a test that triggers it fails instead of printing a
+# line nobody reads. NDEBUG as in Release: the shipped code is what is checked.
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g1"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ "${launcher[@]}" \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+cmake --build "$build" -j "$jobs"
+
+# detect_leaks: LLVM's JIT and ANTLR keep process-lifetime caches that LeakSanitizer reports
+# at exit; those libraries are suppressed by name (sanitize.supp), our own leaks are not.
+# verify_asan_link_order=0: tests/aot links programs built by plain cc against the
+# sanitized libfgsg.so, so the ASan runtime is not the first library they load.
+# allocator_may_return_null=1: a huge allocation throws std::bad_alloc as in Release,
+# which the code must turn into a located error, instead of ASan stopping the process.
+export ASAN_OPTIONS="detect_leaks=1:verify_asan_link_order=0:allocator_may_return_null=1:detect_stack_use_after_return=0:abort_on_error=0:${ASAN_OPTIONS_EXTRA:-}"
+export LSAN_OPTIONS="suppressions=$root/scripts/sanitize.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+cd "$build"
+# A hang still ends: a test without its own limit stops after 600 s.
+ctest -j "$jobs" --output-on-failure --timeout 600 "$@" | tee "$build/sanitize-ctest.log"
