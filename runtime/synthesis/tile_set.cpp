@@ -148,8 +148,10 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
     if (base.asset == "none") base.asset.clear();
     base.weight = 1.0;
     if (t.contains("weight")) {
-      if (!t["weight"].is_number() || t["weight"].get<double>() < 0) fail(name, "tile `" + name + "`: \"weight\" must be a number >= 0, got " + describe(t["weight"]));
-      else base.weight = t["weight"].get<double>();
+      if (!t["weight"].is_number() || t["weight"].get<double>() < 0)
+        fail(name, "tile `" + name + "`: \"weight\" must be a number >= 0, got " + describe(t["weight"]));
+      else
+        base.weight = t["weight"].get<double>();
     }
     if (t.contains("color")) {
       std::string c = t["color"].is_string() ? t["color"].get<std::string>() : "";
