@@ -134,6 +134,11 @@ class Analyzer {
     for (const auto& t : prog_.turtles) {
       for (const auto& [key, expr] : t.settings) {
         ConstValue v;
+        if (expr && !evalConst(*expr, v))
+          if (const Expr* zero = zeroDivisor(*expr)) {
+            diags_.error("E027", zero->range, "division by zero");
+            continue;
+          }
         if (!expr || !evalConst(*expr, v) || v.type != ValueType::Num) {
           diags_.error("E029", t.range, "turtle setting '" + key + "' needs a constant number");
           continue;

@@ -54,6 +54,25 @@ int lineOfString(std::string_view text, const std::string& needle) {
   return line;
 }
 
+// The line of `"key"` in the object that `"owner"` names or opens (a tile's name, a border
+// face), for a wrong-typed field: from the '{' before the owner (a tile's fields may come
+// before its name) or, with `after`, the first '{' after it, to that object's '}'. The
+// owner's line when the key is not found there. Tile fields hold no nested objects.
+int lineOfKey(std::string_view text, const std::string& owner, const std::string& key, bool after) {
+  const size_t at = text.find("\"" + owner + "\"");
+  if (at == std::string_view::npos) return 0;
+  const size_t open = after ? text.find('{', at) : text.rfind('{', at);
+  size_t where = at;
+  if (open != std::string_view::npos) {
+    const size_t found = text.find("\"" + key + "\"", open);
+    const size_t close = text.find('}', open);
+    if (found != std::string_view::npos && (close == std::string_view::npos || found < close)) where = found;
+  }
+  int line = 1;
+  for (size_t i = 0; i < where; ++i) line += text[i] == '\n';
+  return line;
+}
+
 // "a number (3)": what a wrong-typed field holds, short enough for one message line.
 std::string describe(const json& v) {
   std::string text = v.dump();
@@ -66,7 +85,7 @@ std::string describe(const json& v) {
 // nlohmann's typed accessors throw.
 class FieldReader {
  public:
-  using Fail = std::function<void(const std::string&)>;
+  using Fail = std::function<void(const std::string& key, const std::string& message)>;
   FieldReader(const json& object, std::string owner, Fail fail)
       : object_(object), owner_(std::move(owner)), fail_(std::move(fail)) {}
 
@@ -93,7 +112,7 @@ class FieldReader {
     return it == object_.end() ? nullptr : &*it;
   }
   bool wrong(const char* key, const char* expected, const json& v) {
-    fail_(owner_ + ": \"" + key + "\" must be " + expected + ", got " + describe(v));
+    fail_(key, owner_ + ": \"" + key + "\" must be " + expected + ", got " + describe(v));
     return false;
   }
 
@@ -108,6 +127,9 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
   const size_t diagStart = diags.size();
   auto fail = [&](const std::string& near, std::string msg) {
     diags.push_back({fileName, lineOfString(text, near), 0, "E712", std::move(msg), ""});
+  };
+  auto failAtKey = [&](const std::string& owner, bool after, const std::string& key, const std::string& msg) {
+    diags.push_back({fileName, lineOfKey(text, owner, key, after), 0, "E712", msg, ""});
   };
   if (!doc.is_object() || !doc.contains("tiles") || !doc["tiles"].is_array()) {
     diags.push_back({fileName, 1, 1, "E712", "a tile set is an object with a \"tiles\" array", ""});
@@ -129,7 +151,9 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
     const std::string name = t["name"];
     for (const auto& ti : tiles)
       if (ti.name == name) fail(name, "tile `" + name + "` declared twice");
-    FieldReader fields(t, "tile `" + name + "`", [&](const std::string& msg) { fail(name, msg); });
+    FieldReader fields(t, "tile `" + name + "`", [&](const std::string& key, const std::string& msg) {
+      failAtKey(name, false, key, msg);
+    });
     std::string symName = "X";
     Piece base;
     base.asset = "cube";
@@ -148,8 +172,10 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
     if (base.asset == "none") base.asset.clear();
     base.weight = 1.0;
     if (t.contains("weight")) {
-      if (!t["weight"].is_number() || t["weight"].get<double>() < 0) fail(name, "tile `" + name + "`: \"weight\" must be a number >= 0, got " + describe(t["weight"]));
-      else base.weight = t["weight"].get<double>();
+      if (!t["weight"].is_number() || t["weight"].get<double>() < 0)
+        failAtKey(name, false, "weight", "tile `" + name + "`: \"weight\" must be a number >= 0, got " + describe(t["weight"]));
+      else
+        base.weight = t["weight"].get<double>();
     }
     if (t.contains("color")) {
       std::string c = t["color"].is_string() ? t["color"].get<std::string>() : "";
@@ -158,7 +184,7 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
         base.hasColor = true;
         base.color = {float((v >> 16) & 255) / 255.f, float((v >> 8) & 255) / 255.f, float(v & 255) / 255.f};
       } else {
-        fail(name, "tile `" + name + "`: \"color\" must be a string \"#rrggbb\", got " + describe(t["color"]));
+        failAtKey(name, false, "color", "tile `" + name + "`: \"color\" must be a string \"#rrggbb\", got " + describe(t["color"]));
       }
     }
     base.background = background || empty;
@@ -257,7 +283,7 @@ bool readTileSet(const json& doc, std::string_view text, const std::string& file
       json lab = it.value();
       if (it.value().is_object()) {
         FieldReader entry(it.value(), "border entry `" + it.key() + "`",
-                          [&](const std::string& msg) { fail(it.key(), msg); });
+                          [&](const std::string& key, const std::string& msg) { failAtKey(it.key(), true, key, msg); });
         if (!entry.boolean("fixed", fixed)) continue;
         lab = it.value().contains("label") ? it.value()["label"] : json();
       }

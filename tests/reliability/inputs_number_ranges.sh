@@ -46,4 +46,12 @@ synth_usage '--connect needs a seed count from 1 to 100000' --size 4 4 1 --conne
 synth_usage '--max-steps needs a whole number from 1 to 9223372036854775807' --size 4 4 1 --max-steps 0
 synth_usage '--symmetry is .* \(N from 1 to 1048576\)' --size 4 4 1 --symmetry translate-x:4294967297
 synth_usage '--time-limit needs seconds from 0 to 1e9' --size 4 4 1 --time-limit 1e10
+
+# The REPL's numbers too; a priority too large for an int is the compile error, not a crash.
+printf 'priority 99999999999:\n:seed 18446744073709551616\n:derive 1000001\n:quit\n' > "$tmp/session"
+expect 1 ":seed takes a whole number from 0 to 18446744073709551615, got '18446744073709551616'" \
+  -- bash -c '"$0" repl < "$1"' "$fgsg" "$tmp/session"
+grep -q ":derive takes an optional maximum depth (a whole number from 1 to 1000000), got '1000001'" "$tmp/err" ||
+  fail ":derive 1000001 is not refused with its range"
+grep -q "error\[E002\]: priority '99999999999' is not a small integer" "$tmp/err" || fail "no E002 for the priority"
 exit 0

@@ -343,4 +343,7 @@ TEST_CASE("derive parallel takes 0 to 2147483647 steps; larger is E029 with the 
   auto z = analyse("derive parallel 4 / 0;\naxiom: F(1);\nF(l) -> F(l);\n");
   REQUIRE(z.diags.size() == 1);
   CHECK(has(z, "E027", 1, 21));
+  auto t = analyse("turtle angle 90 % (1 - 1);\naxiom: F(1);\nF(l) -> F(l);\n");
+  REQUIRE(t.diags.size() == 1);
+  CHECK(has(t, "E027", 1, 19));
 }

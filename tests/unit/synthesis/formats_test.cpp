@@ -154,10 +154,16 @@ TEST_CASE("tile set: a field of the wrong type is a located error naming the til
     CHECK(errors.rfind("t.json:1:", 0) == 0);  // the file and the tile's line
     CHECK_THAT(errors, Catch::Contains("error[E712]: " + std::string(c.expected)));
   }
-  // The line is the tile's, in a file of several lines.
-  const std::string errors = tileSetErrors("{\"tiles\": [\n  {\"name\": \"b\"},\n  {\"name\": \"a\", \"symmetry\": []}\n]}");
-  CHECK(errors.rfind("t.json:3:", 0) == 0);
-  CHECK_THAT(errors, Catch::Contains("got array ([])"));
+  // In a file of several lines, the line is the key's, within its tile (before or after
+  // the name); for a border entry, within the entry.
+  const std::string errors = tileSetErrors(
+      "{\"tiles\": [\n  {\"name\": \"b\", \"connect\": true,\n   \"weight\": -1},\n  {\"symmetry\": \"X\",\n"
+      "   \"connect\": 2,\n   \"name\": \"a\"}\n]}");
+  CHECK_THAT(errors, Catch::Contains("t.json:3: error[E712]: tile `b`: \"weight\" must be a number >= 0, got number (-1)"));
+  CHECK_THAT(errors, Catch::Contains("t.json:5: error[E712]: tile `a`: \"connect\" must be true or false, got number (2)"));
+  CHECK_THAT(tileSetErrors("{\"tiles\": [{\"name\": \"a\"}],\n \"border\": {\"xmax\": {\"label\": \"a\", \"fixed\": true},\n"
+                           "  \"xmin\": {\"label\": \"a\",\n   \"fixed\": 1}}}"),
+             Catch::Contains("t.json:4: error[E712]: border entry `xmin`: \"fixed\" must be true or false"));
 }
 
 TEST_CASE("tile set: bad border entries and values JSON cannot hold are errors", "[synthesis][format][errors]") {
