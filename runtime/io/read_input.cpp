@@ -100,8 +100,9 @@ bool readInputFile(const std::string& path, const std::string& what, std::string
     close(fd);
     return false;
   }
-  // Reads up to one byte past the cap, so a file that grows meanwhile is still bounded.
-  out.resize(size_t(st.st_size));
+  // One spare byte: the end of a file that kept its size is found without growing the
+  // buffer. Reads up to one byte past the cap, so a file that grows meanwhile is bounded.
+  out.resize(size_t(st.st_size) + 1);
   size_t have = 0;
   for (;;) {
     if (have == out.size()) {

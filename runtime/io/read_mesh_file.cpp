@@ -136,9 +136,11 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
     }
     for (size_t c = out.polygonStart[f]; c < out.polygonStart[f + 1]; ++c)
       if (out.corners[c] < 0 || out.corners[c] >= nv) {
+        // OBJ counts vertices from 1: name the index as the file spells it.
+        const bool obj = ext == ".obj";
         error = path + ": face " + std::to_string(f) + " refers to vertex " +
-                std::to_string(out.corners[c]) + ", but there are only " + std::to_string(nv) +
-                " vertices";
+                std::to_string(out.corners[c] + (obj ? 1 : 0)) + ", but there are only " +
+                std::to_string(nv) + " vertices" + (obj ? " (counting from 1)" : "");
         return false;
       }
   }

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <numeric>
+#include <vector>
 
 namespace fgsg::rt::surface {
 
@@ -14,19 +15,34 @@ void SurfaceMesh::buildTopology() {
   vertexNormals.assign(nv, Vec3::Zero());
   vertexFace.assign(nv, -1);
   boundaryVertex.assign(nv, 0);
-  // Half-edge (a -> b) of face f, edge k: its twin is (b -> a) in the neighbour.
-  std::unordered_map<uint64_t, std::pair<int, int>> halfEdges;
-  halfEdges.reserve(3 * nf);
-  auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
+  // Half-edge (a -> b) of face f, edge k: its twin is (b -> a) in the neighbour. The
+  // half-edges leaving each vertex, as one compressed list sorted by where they go, find
+  // it by a binary search (a hash map of millions of half-edges was most of the load time).
+  struct Leaving {
+    int to, face;
+    bool operator<(const Leaving& o) const { return to != o.to ? to < o.to : face < o.face; }
+  };
+  std::vector<size_t> first(nv + 1, 0);
+  for (const auto& t : faces)
+    for (int v : t) ++first[size_t(v) + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Leaving> leaving(3 * nf);
+  {
+    std::vector<size_t> fill(first.begin(), first.end() - 1);
+    for (size_t f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k)
+        leaving[fill[size_t(faces[f][k])]++] = {faces[f][(k + 1) % 3], int(f)};
+  }
+  for (size_t v = 0; v < nv; ++v) std::sort(leaving.begin() + first[v], leaving.begin() + first[v + 1]);
   double edgeSum = 0;
   size_t edgeCount = 0;
-  for (size_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) halfEdges[key(faces[f][k], faces[f][(k + 1) % 3])] = {int(f), k};
   for (size_t f = 0; f < nf; ++f) {
     const auto& t = faces[f];
     for (int k = 0; k < 3; ++k) {
-      auto it = halfEdges.find(key(t[(k + 1) % 3], t[k]));
-      if (it != halfEdges.end()) neighbours[f][k] = it->second.first;
+      const size_t b = size_t(t[(k + 1) % 3]);
+      const auto end = leaving.begin() + first[b + 1];
+      const auto it = std::lower_bound(leaving.begin() + first[b], end, Leaving{t[k], -1});
+      if (it != end && it->to == t[k]) neighbours[f][k] = it->face;
       edgeSum += (vertices[t[(k + 1) % 3]] - vertices[t[k]]).norm();
       ++edgeCount;
       if (vertexFace[t[k]] < 0) vertexFace[t[k]] = int(f);

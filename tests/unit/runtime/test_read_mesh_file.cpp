@@ -143,3 +143,10 @@ TEST_CASE("PLY: counts are checked against the bytes before OpenMesh reads",
           return s;
         }()) == ": face 0 refers to vertex 7, but there are only 3 vertices");
 }
+
+TEST_CASE("OBJ: an index out of range is named as the file spells it", "[read_mesh_file]") {
+  CHECK(errorOf("i.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") ==
+        ": face 0 refers to vertex 9, but there are only 3 vertices (counting from 1)");
+  const auto m = read("ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n");
+  CHECK(m.corners == std::vector<int>{0, 1, 2});
+}
