@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <sstream>
 
 namespace fgsg::cli {
@@ -110,8 +111,21 @@ class Repl {
   explicit Repl(bool interactive) : interactive_(interactive) {}
   repl::Session& session() { return session_; }
 
-  // Handles one complete input; false when it failed.
+  // Handles one complete input; false when it failed. Whatever it throws ends that input,
+  // never the session: the grammar typed so far is kept.
   bool handle(const std::string& raw, bool& quit) {
+    try {
+      return handleInput(raw, quit);
+    } catch (const std::bad_alloc&) {
+      std::cerr << "error: out of memory; the session and its grammar are kept\n";
+    } catch (const std::exception& e) {
+      std::cerr << "error: internal error: " << e.what() << " (please report it; the session is kept)\n";
+    }
+    return false;
+  }
+
+ private:
+  bool handleInput(const std::string& raw, bool& quit) {
     const std::string text = trim(raw);
     if (text.empty()) return true;
     ++inputs_;
@@ -125,7 +139,6 @@ class Repl {
     return true;
   }
 
- private:
   bool fail(const std::string& message) {
     std::cerr << "error: " << message << "\n";
     return false;

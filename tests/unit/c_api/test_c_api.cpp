@@ -396,6 +396,7 @@ TEST_CASE("a deep grammar derives on a host thread with a 256 KiB stack, as on t
   CHECK(small.instances == 20000);
   CHECK(main.instances == 20000);
   CHECK(small.transforms == main.transforms);
+}
 
 TEST_CASE("fgsg_set_attribute refuses an unknown name or a value of the wrong kind, changing nothing",
           "[c_api]") {
