@@ -70,13 +70,17 @@ class Deadline {
   static constexpr int64_t kMaxStride = 1024;
 
   bool poll() noexcept {
+    if (expired_) {  // sticky, and every later question comes straight here
+      countdown_ = 0;
+      return true;
+    }
     const Clock::time_point now = Clock::now();
     const auto gap = now - last_;
     last_ = now;
     if (gap < std::chrono::microseconds(50)) stride_ = std::min(stride_ * 2, kMaxStride);
     else if (gap > std::chrono::microseconds(200)) stride_ = std::max<int64_t>(1, stride_ / 4);
     countdown_ = stride_;
-    if (now >= end_) expired_ = true;
+    if (now >= end_) expired_ = true, countdown_ = 0;
     return expired_;
   }
 

@@ -1238,7 +1238,8 @@ class Interpreter final : public QueryHost {
     so.size = {n[0], n[1], n[2]};
     so.seed = rt::childKey(ex.key, 0x8000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
     so.attempts = 10;  // whole-grid synthesis restarts after a contradiction
-    so.deadline = &deadline_;  // the solver stops with the derivation's time
+    so.timeLimitSeconds = std::max(1.0, opt_.maxSeconds);
+    so.deadline = &deadline_;  // and with the derivation's own clock
     const rt::synthesis::SynthesisResult result = rt::synthesis::synthesize(example, so);
     if (!result.ok && deadline_.expiredNow()) throw timeLimit();
     if (!result.ok)
