@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fcntl.h>
 #include <sys/random.h>
 #include <sys/stat.h>
@@ -70,7 +71,11 @@ bool OutputTransaction::stage(const std::string& path, std::string_view bytes, s
   std::string temp;
   const int fd = createUniqueFile(path + ".tmp.", temp);
   if (fd < 0) {
-    error = describe("write", path, errno);
+    const int err = errno;
+    error = describe("write", path, err);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    if (err == ENOENT && ::stat(folder.empty() ? "." : folder.c_str(), &st) != 0)
+      error += " (the folder " + folder + " does not exist)";
     return false;
   }
   const int slot = registerTempForCleanup(temp.c_str());
