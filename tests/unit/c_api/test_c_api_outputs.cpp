@@ -26,7 +26,7 @@ std::string readText(const fs::path& path) {
 
 }  // namespace
 
-TEST_CASE("fgsg_generate refuses coordinates past a float's range; fgsg_write keeps the old file", "[c_api][outputs]") {
+TEST_CASE("fgsg_generate refuses coordinates past a float's range and fgsg_write keeps the old file", "[c_api][outputs]") {
   std::string tmpl = (fs::temp_directory_path() / "fgsg-c-api-outputs-XXXXXX").string();
   REQUIRE(::mkdtemp(tmpl.data()) != nullptr);
   const fs::path dir = tmpl;
