@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <csignal>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -68,12 +71,22 @@ bool OutputTransaction::stage(const std::string& path, std::string_view bytes, s
   }
   // Beside the target: rename is atomic only within one file system.
   std::string temp;
+  // Terminating signals wait until the new temporary is registered for removal.
+  sigset_t terminating, previous;
+  sigemptyset(&terminating);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&terminating, sig);
+  ::pthread_sigmask(SIG_BLOCK, &terminating, &previous);
   const int fd = createUniqueFile(path + ".tmp.", temp);
+  const int createErrno = errno;
+  const int slot = fd >= 0 ? registerTempForCleanup(temp.c_str()) : -1;
+  ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   if (fd < 0) {
-    error = describe("write", path, errno);
+    error = describe("write", path, createErrno);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    if (createErrno == ENOENT && ::stat(folder.empty() ? "." : folder.c_str(), &st) != 0)
+      error += " (the folder " + folder + " does not exist)";
     return false;
   }
-  const int slot = registerTempForCleanup(temp.c_str());
   const auto fail = [&](const std::string& what, int err) {
     ::unlink(temp.c_str());
     releaseTempCleanup(slot);

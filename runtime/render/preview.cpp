@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -226,10 +227,15 @@ bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::st
     return false;
   }
   if (mesh.empty() && warning) *warning = "the mesh is empty: the preview shows only the background";
-  const Image img = renderImage(mesh, options);
   std::string png;
-  if (!stbi_write_png_to_func(appendBytes, &png, img.width, img.height, 3, img.rgb.data(), img.width * 3)) {
-    error = "cannot encode the preview as PNG";
+  try {
+    const Image img = renderImage(mesh, options);
+    if (!stbi_write_png_to_func(appendBytes, &png, img.width, img.height, 3, img.rgb.data(), img.width * 3)) {
+      error = "cannot write '" + pngPath + "': cannot encode the preview as PNG";
+      return false;
+    }
+  } catch (const std::bad_alloc&) {
+    error = "cannot write '" + pngPath + "': out of memory while rendering the preview";
     return false;
   }
   return outputs.stage(pngPath, png, error);
