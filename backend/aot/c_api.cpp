@@ -324,7 +324,7 @@ FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char*
     // generation with no way to take it back. Kept in order like repeated --set flags.
     const std::string problem = backend::attributeOverrideProblem(g->module, name, value);
     if (!problem.empty()) {
-      error = "fgsg_set_attribute " + problem;
+      error = "error[R010]: fgsg_set_attribute " + problem;  // R010 as for fgsg run --set
       return false;
     }
     g->options.attrOverrides.push_back({name, value});

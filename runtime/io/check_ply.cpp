@@ -85,10 +85,15 @@ bool checkPlyStructure(const std::string& path, std::string_view bytes, std::str
     if (tokens.empty() || tokens[0] == "comment" || tokens[0] == "obj_info") continue;
     if (tokens[0] == "end_header") {
       ended = true;
-    } else if (tokens[0] == "format" && tokens.size() >= 2) {
-      format = std::string(tokens[1]);
+    } else if (tokens[0] == "format") {
+      // OpenMesh's reader hangs on a format line without its version: require all of it.
+      format = tokens.size() >= 2 ? std::string(tokens[1]) : std::string();
       if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
-        error = at(line) + "unknown PLY format '" + format + "'";
+        error = at(line) + "unknown PLY format '" + format + "' (ascii, binary_little_endian or binary_big_endian)";
+        return false;
+      }
+      if (tokens.size() != 3 || tokens[2] != "1.0") {
+        error = at(line) + "the format line must read 'format " + format + " 1.0' (PLY version 1.0)";
         return false;
       }
     } else if (tokens[0] == "element" && tokens.size() == 3) {

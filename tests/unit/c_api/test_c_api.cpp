@@ -406,14 +406,14 @@ TEST_CASE("fgsg_set_attribute refuses an unknown name or a value of the wrong ki
   Generator g(&p);
   REQUIRE(g.error().empty());
   CHECK(fgsg_set_attribute(g, "no_such_attr", "1") != 0);
-  CHECK(g.error() == "fgsg_set_attribute no_such_attr: the grammar declares no attr 'no_such_attr' "
+  CHECK(g.error() == "error[R010]: fgsg_set_attribute no_such_attr: the grammar declares no attr 'no_such_attr' "
                      "(attrs: height, flat, tip, label)");
   const std::pair<const char*, const char*> wrongKind[] = {
       {"height", "tall"}, {"height", ""}, {"height", "inf"}, {"flat", "yes"}, {"tip", "1,2"}};
   for (const auto& [name, value] : wrongKind) {
     INFO(name << " = " << value);
     CHECK(fgsg_set_attribute(g, name, value) != 0);
-    CHECK_THAT(g.error(), Catch::StartsWith(std::string("fgsg_set_attribute ") + name + "=" + value + ": expected"));
+    CHECK_THAT(g.error(), Catch::StartsWith(std::string("error[R010]: fgsg_set_attribute ") + name + "=" + value + ": expected"));
   }
   CHECK(fgsg_set_attribute(g, "flat", "yes") != 0);
   CHECK_THAT(g.error(), Catch::EndsWith("expected true or false"));
