@@ -38,7 +38,16 @@ long long asCount(std::string_view token) {
 
 }  // namespace
 
+bool filtersOn() {
+  static const bool on = [] {
+    const char* all = std::getenv("FGSG_FUZZ_ALL_INPUTS");
+    return !(all && std::string(all) == "1");
+  }();
+  return on;
+}
+
 bool hasOverflowingParallelCount(std::string_view text) {
+  if (!filtersOn()) return false;
   for (size_t at = text.find("parallel"); at != std::string_view::npos;
        at = text.find("parallel", at + 1)) {
     size_t p = at + 8;
@@ -50,9 +59,12 @@ bool hasOverflowingParallelCount(std::string_view text) {
   return false;
 }
 
-bool namesDeviceFile(std::string_view text) { return text.find("/dev") != std::string_view::npos; }
+bool namesDeviceFile(std::string_view text) {
+  return filtersOn() && text.find("/dev") != std::string_view::npos;
+}
 
 bool hasHugeNumber(std::string_view text) {
+  if (!filtersOn()) return false;
   for (size_t i = 0; i < text.size(); ++i) {
     if (!isDigit(text[i]) || (i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_')))
       continue;
@@ -74,6 +86,7 @@ bool hasHugeNumber(std::string_view text) {
 }
 
 bool hasImpossibleMeshCounts(std::string_view text) {
+  if (!filtersOn()) return false;
   size_t pos = 0;
   const std::string_view magic = nextToken(text, pos);
   if (magic.size() >= 3 && magic.substr(magic.size() - 3) == "OFF") {

@@ -9,6 +9,10 @@
 
 namespace fgsg::fuzz {
 
+// False when FGSG_FUZZ_ALL_INPUTS=1: every filter below lets everything through, to check
+// that the fixes have landed.
+bool filtersOn();
+
 // `derive parallel 4294967297` (repro parallel_int_overflow): a count past the int range
 // is cast from double in sema (E999 / UBSan float-cast-overflow).
 bool hasOverflowingParallelCount(std::string_view text);
