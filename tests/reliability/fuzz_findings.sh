@@ -13,3 +13,11 @@ for input in fuzz_ply_no_end_header.ply fuzz_ply_truncated_header.ply; do
   done
   same_message "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=interp -o "$tmp/x.obj"
 done
+
+# fuzz_mesh on main after the PLY header check (runtime/io/check_ply.cpp) landed: a format
+# line without a readable version ("format ascii", "format ascii \xef1.0") passes the
+# check, and OpenMesh's PLY reader then loops forever reading the header.
+for input in fuzz_ply_format_without_version.ply fuzz_ply_format_bad_version.ply; do
+  expect 1 "$input:2: .*format" -- \
+    "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=interp -o "$tmp/x.obj"
+done
