@@ -122,4 +122,17 @@ bool hasImpossibleMeshCounts(std::string_view text) {
   return false;
 }
 
+bool hasUnreadablePlyVersion(std::string_view text) {
+  if (!filtersOn() || text.substr(0, 3) != "ply") return false;
+  const size_t at = text.find("format");
+  if (at == std::string_view::npos) return false;
+  size_t pos = at + 6;
+  nextToken(text, pos);  // ascii / binary_little_endian / binary_big_endian
+  const size_t lineEnd = text.find('\n', at);
+  const size_t versionAt = text.find_first_not_of(" \t", pos);
+  return versionAt == std::string_view::npos || versionAt >= lineEnd ||
+         text.substr(versionAt, 4).find("1.0") != 0 ||
+         (versionAt + 3 < text.size() && !isSpace(text[versionAt + 3]));
+}
+
 }  // namespace fgsg::fuzz

@@ -29,4 +29,8 @@ bool hasHugeNumber(std::string_view text);
 // an OFF face line with a negative corner count (repro 09: the reader hangs).
 bool hasImpossibleMeshCounts(std::string_view text);
 
+// A PLY "format" line whose version is not 1.0 (tests/reliability/fuzz_findings.sh): the
+// header check lets it through and OpenMesh's PLY reader loops forever on it.
+bool hasUnreadablePlyVersion(std::string_view text);
+
 }  // namespace fgsg::fuzz
