@@ -46,7 +46,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // Known (repro 14): duplicate detection is quadratic; small files keep runs fast anyway.
   if (size > 16384) return -1;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  if (fgsg::fuzz::hasImpossibleMeshCounts(bytes) || fgsg::fuzz::hasUnreadablePlyVersion(bytes)) return -1;
+  if (fgsg::fuzz::hasImpossibleMeshCounts(bytes) || fgsg::fuzz::hasUnreadablePlyVersion(bytes) ||
+      fgsg::fuzz::hasObjCornerWithoutVertex(bytes))
+    return -1;
 
   static const std::string folder = scratchFolder();
   const std::string path = folder + "/input" + guessExtension(bytes);

@@ -122,6 +122,25 @@ bool hasImpossibleMeshCounts(std::string_view text) {
   return false;
 }
 
+bool hasObjCornerWithoutVertex(std::string_view text) {
+  if (!filtersOn()) return false;
+  for (size_t lineStart = 0; lineStart < text.size();) {
+    size_t lineEnd = text.find('\n', lineStart);
+    if (lineEnd == std::string_view::npos) lineEnd = text.size();
+    const std::string_view line = text.substr(lineStart, lineEnd - lineStart);
+    size_t q = 0;
+    if (nextToken(line, q) == "f") {
+      // Any corner whose vertex field is empty or not a number.
+      for (std::string_view corner = nextToken(line, q); !corner.empty(); corner = nextToken(line, q)) {
+        const char c = corner[0];
+        if (!(isDigit(c) || ((c == '-' || c == '+') && corner.size() > 1 && isDigit(corner[1])))) return true;
+      }
+    }
+    lineStart = lineEnd + 1;
+  }
+  return false;
+}
+
 bool hasUnreadablePlyVersion(std::string_view text) {
   if (!filtersOn() || text.substr(0, 3) != "ply") return false;
   const size_t at = text.find("format");

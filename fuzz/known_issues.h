@@ -33,4 +33,8 @@ bool hasImpossibleMeshCounts(std::string_view text);
 // header check lets it through and OpenMesh's PLY reader loops forever on it.
 bool hasUnreadablePlyVersion(std::string_view text);
 
+// An OBJ face corner without a vertex index ("f /1 /2 /3", tests/reliability/
+// fuzz_findings.sh): OpenMesh's OBJ reader asserts (abort).
+bool hasObjCornerWithoutVertex(std::string_view text);
+
 }  // namespace fgsg::fuzz

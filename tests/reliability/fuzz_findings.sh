@@ -21,3 +21,11 @@ for input in fuzz_ply_format_without_version.ply fuzz_ply_format_bad_version.ply
   expect 1 "$input:2: .*format" -- \
     "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=interp -o "$tmp/x.obj"
 done
+
+# fuzz_mesh: an OBJ face whose corners name no vertex ("f /1 /2 /3", texture indices only)
+# trips an assertion in OpenMesh's OBJ reader (OBJReader.cc:633, !vhandles.empty()): the
+# whole process aborts (exit 134) in both engines.
+for engine in interp jit; do
+  expect 1 "fuzz_obj_face_without_vertex.obj:4: " -- \
+    "$fgsg" run "$surface_grammar" --surface "$inputs/fuzz_obj_face_without_vertex.obj" --engine=$engine -o "$tmp/x.obj"
+done
