@@ -38,7 +38,16 @@ long long asCount(std::string_view token) {
 
 }  // namespace
 
+bool filtersOn() {
+  static const bool on = [] {
+    const char* all = std::getenv("FGSG_FUZZ_ALL_INPUTS");
+    return !(all && std::string(all) == "1");
+  }();
+  return on;
+}
+
 bool hasOverflowingParallelCount(std::string_view text) {
+  if (!filtersOn()) return false;
   for (size_t at = text.find("parallel"); at != std::string_view::npos;
        at = text.find("parallel", at + 1)) {
     size_t p = at + 8;
@@ -50,9 +59,12 @@ bool hasOverflowingParallelCount(std::string_view text) {
   return false;
 }
 
-bool namesDeviceFile(std::string_view text) { return text.find("/dev") != std::string_view::npos; }
+bool namesDeviceFile(std::string_view text) {
+  return filtersOn() && text.find("/dev") != std::string_view::npos;
+}
 
 bool hasHugeNumber(std::string_view text) {
+  if (!filtersOn()) return false;
   for (size_t i = 0; i < text.size(); ++i) {
     if (!isDigit(text[i]) || (i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_')))
       continue;
@@ -74,6 +86,7 @@ bool hasHugeNumber(std::string_view text) {
 }
 
 bool hasImpossibleMeshCounts(std::string_view text) {
+  if (!filtersOn()) return false;
   size_t pos = 0;
   const std::string_view magic = nextToken(text, pos);
   if (magic.size() >= 3 && magic.substr(magic.size() - 3) == "OFF") {
@@ -107,6 +120,38 @@ bool hasImpossibleMeshCounts(std::string_view text) {
     }
   }
   return false;
+}
+
+bool hasObjCornerWithoutVertex(std::string_view text) {
+  if (!filtersOn()) return false;
+  for (size_t lineStart = 0; lineStart < text.size();) {
+    size_t lineEnd = text.find('\n', lineStart);
+    if (lineEnd == std::string_view::npos) lineEnd = text.size();
+    const std::string_view line = text.substr(lineStart, lineEnd - lineStart);
+    size_t q = 0;
+    if (nextToken(line, q) == "f") {
+      // Any corner whose vertex field is empty or not a number.
+      for (std::string_view corner = nextToken(line, q); !corner.empty(); corner = nextToken(line, q)) {
+        const char c = corner[0];
+        if (!(isDigit(c) || ((c == '-' || c == '+') && corner.size() > 1 && isDigit(corner[1])))) return true;
+      }
+    }
+    lineStart = lineEnd + 1;
+  }
+  return false;
+}
+
+bool hasUnreadablePlyVersion(std::string_view text) {
+  if (!filtersOn() || text.substr(0, 3) != "ply") return false;
+  const size_t at = text.find("format");
+  if (at == std::string_view::npos) return false;
+  size_t pos = at + 6;
+  nextToken(text, pos);  // ascii / binary_little_endian / binary_big_endian
+  const size_t lineEnd = text.find('\n', at);
+  const size_t versionAt = text.find_first_not_of(" \t", pos);
+  return versionAt == std::string_view::npos || versionAt >= lineEnd ||
+         text.substr(versionAt, 4).find("1.0") != 0 ||
+         (versionAt + 3 < text.size() && !isSpace(text[versionAt + 3]));
 }
 
 }  // namespace fgsg::fuzz
