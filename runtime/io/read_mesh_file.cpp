@@ -10,6 +10,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <new>
 #include <sstream>
@@ -96,6 +97,30 @@ bool findNonFiniteText(const std::string& path, const std::string& ext, std::str
   return true;
 }
 
+// OpenMesh's OBJ reader asserts (aborting the process) on a face corner that names no
+// vertex, such as `f /1 /2 /3`: every corner must start with a vertex index.
+bool checkObjFaces(const std::string& path, std::string_view bytes, std::string& error) {
+  size_t lineNo = 0, pos = 0;
+  while (pos < bytes.size()) {
+    size_t end = bytes.find('\n', pos);
+    if (end == std::string_view::npos) end = bytes.size();
+    std::istringstream tokens{std::string(bytes.substr(pos, end - pos))};
+    pos = end + 1;
+    ++lineNo;
+    std::string first, corner;
+    if (!(tokens >> first) || first != "f") continue;
+    while (tokens >> corner) {
+      const size_t sign = corner[0] == '-';
+      if (corner.size() <= sign || !std::isdigit(static_cast<unsigned char>(corner[sign]))) {
+        error = path + ":" + std::to_string(lineNo) + ": face corner '" + corner +
+                "' names no vertex (a corner is v, v/vt, v//vn or v/vt/vn)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // OBJ, PLY and STL through OpenMesh (by path: the STL reader tells binary from text by the
 // file's size, and welds coincident corners).
 bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileContent& out,
@@ -163,7 +188,7 @@ bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& er
     ok = parseOff(path, bytes, out, error);
   } else {
     ok = (ext != ".ply" || checkPlyStructure(path, bytes, error)) &&
-         findNonFiniteText(path, ext, bytes, error);
+         (ext != ".obj" || checkObjFaces(path, bytes, error)) && findNonFiniteText(path, ext, bytes, error);
     bytes = std::string();  // OpenMesh reads the file itself
     ok = ok && readWithOpenMesh(path, ext, out, error);
   }
