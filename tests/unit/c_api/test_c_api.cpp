@@ -81,22 +81,25 @@ int runProgram(const std::vector<std::string>& args, const fs::path& log) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// examples/stem_leaf.fgsg compiled once per test process with `fgsg compile` (the
-// absolute path as its source name, so its asset folders do not depend on the cwd).
+// `grammar` compiled with `fgsg compile` into the scratch folder and loaded: its
+// fgsg_program_<stem> (the grammar's absolute path is its source name, so its asset
+// folders do not depend on the cwd).
+const FgsgProgram* compileAndLoad(const fs::path& grammar) {
+  const std::string stem = grammar.stem().string();
+  const fs::path lib = scratchDir() / ("lib" + stem + ".so");
+  const fs::path log = scratchDir() / ("compile_" + stem + ".log");
+  const int rc = runProgram({FGSG_EXE, "compile", grammar.string(), "-o", lib.string(), "--quiet"}, log);
+  if (rc != 0) FAIL("fgsg compile failed (exit " << rc << "):\n" << readFile(log));
+  void* handle = ::dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) FAIL("dlopen: " << ::dlerror());
+  auto* p = static_cast<const FgsgProgram*>(::dlsym(handle, ("fgsg_program_" + stem).c_str()));
+  if (!p) FAIL("no fgsg_program_" << stem << " in " << lib);
+  return p;
+}
+
+// examples/stem_leaf.fgsg, compiled once per test process.
 const FgsgProgram& stemLeafProgram() {
-  static const FgsgProgram* program = [] {
-    const fs::path lib = scratchDir() / "libstem_leaf.so";
-    const fs::path log = scratchDir() / "compile.log";
-    const int rc = runProgram({FGSG_EXE, "compile", FGSG_SOURCE_DIR "/examples/stem_leaf.fgsg", "-o",
-                               lib.string(), "--quiet"},
-                              log);
-    if (rc != 0) FAIL("fgsg compile failed (exit " << rc << "):\n" << readFile(log));
-    void* handle = ::dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) FAIL("dlopen: " << ::dlerror());
-    auto* p = static_cast<const FgsgProgram*>(::dlsym(handle, "fgsg_program_stem_leaf"));
-    if (!p) FAIL("no fgsg_program_stem_leaf in " << lib);
-    return p;
-  }();
+  static const FgsgProgram* program = compileAndLoad(FGSG_SOURCE_DIR "/examples/stem_leaf.fgsg");
   return *program;
 }
 
@@ -366,13 +369,7 @@ TEST_CASE("a deep grammar derives on a host thread with a 256 KiB stack, as on t
   // 20 000 levels of direct derivation would need ~5 MB of native stack.
   const fs::path grammar = scratchDir() / "deep_chain.fgsg";
   std::ofstream(grammar) << "axiom: A(0);\nA(k): k < 20000 ~> I(\"cube\") T(1, 0, 0) A(k + 1);\n";
-  const fs::path lib = scratchDir() / "libdeep_chain.so";
-  const fs::path log = scratchDir() / "compile_deep.log";
-  REQUIRE(runProgram({FGSG_EXE, "compile", grammar.string(), "-o", lib.string(), "--quiet"}, log) == 0);
-  void* handle = ::dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
-  REQUIRE(handle != nullptr);
-  auto* program = static_cast<const FgsgProgram*>(::dlsym(handle, "fgsg_program_deep_chain"));
-  REQUIRE(program != nullptr);
+  const FgsgProgram* program = compileAndLoad(grammar);
 
   struct Run {
     const FgsgProgram* program;
