@@ -4,7 +4,6 @@
 // an internal compiler error (E999: the verifier rejected lowered IR), a compile that
 // fails without an error, and an error whose location lies outside the text.
 #include "frontend/diagnostics.h"
-#include "fuzz/known_issues.h"
 #include "ir/pipeline.h"
 #include "ir/printer.h"
 
@@ -26,7 +25,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace fgsg;
   if (size > 16384) return -1;  // long inputs only slow the search down
   const std::string text(reinterpret_cast<const char*>(data), size);
-  if (fuzz::hasOverflowingParallelCount(text)) return -1;
 
   const frontend::SourceFile source = frontend::SourceFile::make("fuzz.fgsg", text);
   frontend::Diagnostics diags(&source);

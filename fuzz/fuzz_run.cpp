@@ -10,7 +10,6 @@
 #include "backend/jit/jit.h"
 #include "backend/jit/object_cache.h"
 #include "frontend/diagnostics.h"
-#include "fuzz/known_issues.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_instances.h"
@@ -53,8 +52,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace fgsg;
   if (size > 8192) return -1;
   const std::string text(reinterpret_cast<const char*>(data), size);
-  if (fuzz::hasOverflowingParallelCount(text) || fuzz::namesDeviceFile(text) || fuzz::hasHugeNumber(text))
-    return -1;
 
   const frontend::SourceFile source = frontend::SourceFile::make("fuzz.fgsg", text);
   frontend::Diagnostics diags(&source);
