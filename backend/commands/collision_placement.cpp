@@ -1,4 +1,4 @@
-#include "backend/interp/collision_placement.h"
+#include "backend/commands/collision_placement.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "backend/interp/surface_world.h"
+#include "backend/commands/surface_world.h"
 
 #include "runtime/field/curvature.h"
 #include "runtime/field/design.h"

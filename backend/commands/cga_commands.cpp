@@ -1,0 +1,59 @@
+#include "backend/commands/cga_commands.h"
+
+#include "backend/engine/derivation.h"
+#include "runtime/cga/cga.h"
+
+namespace fgsg::backend {
+
+std::vector<ir::OpKind> CgaCommands::kinds() const {
+  using K = ir::OpKind;
+  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Roof};
+}
+
+void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec& ex, Frame& f) {
+  switch (op.kind) {
+    case ir::OpKind::Extrude: {
+      rt::cga::Part part;
+      std::string error;
+      if (!rt::cga::extrude(st.scope, st.geom, a[0], d_.arena(), part, error))
+        throw DeriveError{op.loc, "R002", error};
+      st.scope = part.scope;
+      st.geom = part.geom;
+      break;
+    }
+    case ir::OpKind::Roof: {
+      rt::cga::Part part;
+      std::string error;
+      if (!rt::cga::roof(st.scope, st.geom, d_.module().strings[op.str], a[0], d_.arena(), part, error))
+        throw DeriveError{op.loc, "R002", error};
+      d_.runBody(op, 0, part.scope, part.geom, st, ex, f);
+      break;
+    }
+    default: split(op, a, st, ex, f); break;
+  }
+}
+
+void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
+  std::vector<rt::cga::Part> parts;
+  std::string error;
+  bool ok = false;
+  if (op.kind == ir::OpKind::Subdiv) {
+    std::vector<rt::cga::SizeValue> sizes;
+    for (size_t k = 0; k < op.sizes.size(); ++k)
+      sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(op.sizes[k].kind), a[k]});
+    ok = rt::cga::subdivide(st.scope, st.geom, static_cast<int>(op.index), sizes, d_.arena(), parts, error);
+  } else if (op.kind == ir::OpKind::Repeat) {
+    std::vector<double> sizes(a, a + op.sizes.size());
+    ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, d_.arena(), parts, error);
+  } else {
+    ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error);
+  }
+  if (!ok) throw DeriveError{op.loc, "R002", error};
+  for (size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].empty) continue;
+    d_.runBody(op, op.kind == ir::OpKind::Subdiv ? i : 0, parts[i].scope, parts[i].geom, st, ex, f);
+    if (ex.culled) return;
+  }
+}
+
+}  // namespace fgsg::backend

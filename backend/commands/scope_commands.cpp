@@ -1,0 +1,46 @@
+#include "backend/commands/scope_commands.h"
+
+namespace fgsg::backend {
+
+std::vector<ir::OpKind> ScopeCommands::kinds() const {
+  using K = ir::OpKind;
+  return {K::Translate, K::Rotate, K::RotateNormal, K::Scale, K::Push, K::Pop};
+}
+
+void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
+  switch (op.kind) {
+    case ir::OpKind::Translate: translate(st.scope, a[0], a[1], a[2]); break;
+    case ir::OpKind::Rotate:
+      if (op.index < 3) {
+        turn(st.scope, static_cast<int>(op.index), a[0]);
+      } else {
+        turn(st.scope, 0, a[0]);
+        turn(st.scope, 1, a[1]);
+        turn(st.scope, 2, a[2]);
+      }
+      break;
+    case ir::OpKind::RotateNormal:
+      if (surface_)
+        surface_->rotateAboutNormal(st.scope, a[0]);
+      else
+        rt::rotateAboutNormal(st.scope, kPlaneNormal, a[0]);
+      break;
+    case ir::OpKind::Scale:
+      for (int k = 0; k < 3; ++k)
+        st.scope.S[k] = op.sizes[k].kind == ir::Size::Relative ? a[k] * st.scope.S[k] : a[k];
+      break;
+    case ir::OpKind::Push: push(st); break;
+    case ir::OpKind::Pop:
+      if (stack_.size() <= st.stackBase)
+        throw DeriveError{op.loc, "R007", "']' without a matching '[' in this string"};
+      st.scope = stack_.back().scope;
+      st.geom = stack_.back().geom;
+      st.width = stack_.back().width;
+      st.line = stack_.back().line;
+      stack_.pop_back();
+      break;
+    default: break;
+  }
+}
+
+}  // namespace fgsg::backend

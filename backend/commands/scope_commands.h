@@ -1,0 +1,56 @@
+// Scope and transforms: T, Rx/Ry/Rz/R, RS, S and the [ ] stack (CGA's scope commands,
+// ABOP's branches). On a surface, T traces along the first field and RS turns about the
+// surface normal (commands/surface_world.h); on the plane both are plain vector algebra.
+// translate, turn and push are inline: they are the hot path of every derivation.
+#pragma once
+
+#include "backend/commands/command_family.h"
+#include "backend/commands/surface_world.h"
+
+#include <memory>
+#include <vector>
+
+namespace fgsg::backend {
+
+// Without a surface, patterns grow on the XY plane: RS() turns about its normal.
+inline const rt::Vec3 kPlaneNormal = rt::Vec3::UnitZ();
+
+class ScopeCommands final : public CommandFamily {
+ public:
+  // `surface`: the derivation's surface (null on the plane; set once the engine has
+  // built it); `stack`: the derivation's shared [ ] stack.
+  ScopeCommands(const std::unique_ptr<SurfaceWorld>& surface, std::vector<Saved>& stack)
+      : surface_(surface), stack_(stack) {}
+
+  std::vector<ir::OpKind> kinds() const override;
+  void apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec&, Frame&) override { command(st, op, a); }
+
+  // Applies a scope command whose arguments are already evaluated.
+  void command(State& st, const ir::Op& op, const double* a);
+
+  // T: on the plane a vector addition in the scope's frame; on a surface a trace along
+  // the first field (FGSG §4.3).
+  void translate(rt::Scope& scope, double x, double y, double z) {
+    if (surface_)
+      surface_->translate(scope, x, y, z);
+    else
+      rt::translateLocal(scope, x, y, z);
+  }
+
+  void turn(rt::Scope& scope, int axis, double degrees) {
+    double c, s;
+    trig_.cosSin(degrees, c, s);
+    rt::rotateLocal(scope, axis, c, s);
+  }
+  // Direct derivation turns as turn() does, with the cosine and sine of this memo.
+  void cosSin(double degrees, double* out) { trig_.cosSin(degrees, out[0], out[1]); }
+
+  void push(const State& st) { stack_.push_back({st.scope, st.geom, st.width, st.line}); }
+
+ private:
+  const std::unique_ptr<SurfaceWorld>& surface_;
+  std::vector<Saved>& stack_;
+  rt::TrigMemo trig_;
+};
+
+}  // namespace fgsg::backend

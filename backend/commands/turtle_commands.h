@@ -1,0 +1,34 @@
+// The turtle (ABOP): F and f draw and move along the heading (scope Y), + - & ^ \ / |
+// turn, ! sets the width. A segment is a cylinder instance of the turtle's width.
+#pragma once
+
+#include "backend/commands/command_family.h"
+#include "backend/commands/scope_commands.h"
+
+namespace fgsg::backend {
+
+class Derivation;
+
+class TurtleCommands final : public CommandFamily {
+ public:
+  TurtleCommands(Derivation& derivation, ScopeCommands& scope) : d_(derivation), scope_(scope) {}
+
+  std::vector<ir::OpKind> kinds() const override { return {ir::OpKind::Turtle}; }
+  void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec&, Frame&) override {
+    command(st, static_cast<ir::TurtleOp>(op.index), a, n, op.loc);
+  }
+
+  // One turtle command; without an argument the grammar's default angle or step.
+  void command(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc);
+
+  // F is a shape symbol when rules rewrite it; where none applies it still draws like the
+  // turtle command, as after a parallel derivation. Length: its first parameter, else
+  // the turtle step.
+  void drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params);
+
+ private:
+  Derivation& d_;
+  ScopeCommands& scope_;
+};
+
+}  // namespace fgsg::backend

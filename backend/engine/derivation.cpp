@@ -1,0 +1,179 @@
+#include "backend/engine/derivation.h"
+
+#include "runtime/memory_budget.h"
+#include "runtime/stack_budget.h"
+
+#include <algorithm>
+#include <new>
+#include <stdexcept>
+#include <string>
+
+namespace fgsg::backend {
+
+using Clock = std::chrono::steady_clock;
+
+Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets,
+                       std::vector<double> attrs, const FgsgProgram* program, bool direct)
+    : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
+      ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
+      scope_(surface_, stack_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this) {
+  if (program_) layout_ = ir::layoutProgram(m_);
+  for (CommandFamily* family : {static_cast<CommandFamily*>(&scope_), static_cast<CommandFamily*>(&turtle_),
+                                static_cast<CommandFamily*>(&cga_), static_cast<CommandFamily*>(&collide_),
+                                static_cast<CommandFamily*>(&synthesis_)})
+    registerFamily(*family);
+  // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
+  for (size_t k = 0; k < familyOf_.size(); ++k) {
+    const auto kind = static_cast<ir::OpKind>(k);
+    if (!familyOf_[k] && kind != ir::OpKind::Emit && kind != ir::OpKind::Unsupported)
+      throw std::logic_error("no command family applies op kind " + std::to_string(k));
+  }
+}
+
+void Derivation::registerFamily(CommandFamily& family) {
+  for (ir::OpKind kind : family.kinds()) {
+    CommandFamily*& slot = familyOf_[static_cast<size_t>(kind)];
+    if (slot) throw std::logic_error("two command families apply op kind " + std::to_string(static_cast<int>(kind)));
+    slot = &family;
+  }
+}
+
+uint32_t Derivation::maxSlotCount(const ir::Module& m) {
+  uint32_t n = 0;
+  for (const auto& s : m.symbols) n = std::max(n, s.slotCount);
+  return n;
+}
+
+uint32_t Derivation::maxRuleSlots(const ir::Module& m) {
+  uint32_t n = maxSlotCount(m);
+  for (const auto& r : m.rules) n = std::max(n, r.slotCount);
+  return n;
+}
+
+rt::DeriveResult Derivation::run() {
+  rt::DeriveResult result;
+  const auto start = Clock::now();
+  deadline_ = rt::Deadline(opt_.startedAt == Clock::time_point{} ? start : opt_.startedAt, opt_.maxSeconds);
+  memoryBudget_ = opt_.maxMemoryBytes ? opt_.maxMemoryBytes : rt::defaultMemoryBudget();
+  stackFloor_ = rt::stackFloor();
+  try {
+    checkProgram();
+    checkEnvironment();
+    // Direct code applies scope commands on the plane (on a surface T traces).
+    direct_ = direct_ && program_ && program_->direct && !surface_ && m_.mode != ir::DeriveMode::Parallel;
+    resolveAssets();
+    initOutput();
+    orderedDirect_ = direct_ && canOrderDirectInstances();
+    if (m_.mode == ir::DeriveMode::Parallel)
+      runParallel();
+    else
+      runSequential();
+    result.ok = true;
+    if (depthLimitHit_) result.messages.push_back(depthWarning_);
+    orderDirectInstances();
+    appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
+    appendSurface();
+  } catch (const LimitReached& limit) {
+    keepAfter(limit, result);
+  } catch (const rt::TimeLimitReached&) {  // from a trace, deep in the runtime
+    keepAfter(timeLimit(), result);
+  } catch (const std::bad_alloc&) {
+    outOfMemory(result);
+  } catch (const DeriveError& e) {
+    result.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
+  } catch (const InexactDirect&) {
+    inexactDirect_ = true;
+  }
+  stats_.deriveSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  stats_.instances = out_.instances.size();
+  result.stats = stats_;
+  result.instances = std::move(out_);
+  return result;
+}
+
+// A limit ends the derivation: what was derived is kept, with the R004 warning.
+void Derivation::keepAfter(const LimitReached& limit, rt::DeriveResult& result) {
+  if (depthLimitHit_) result.messages.push_back(depthWarning_);
+  result.ok = true;
+  result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
+  try {
+    orderDirectInstances();
+    appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
+    appendSurface();
+  } catch (const std::bad_alloc&) {
+    result.messages.clear();
+    outOfMemory(result);
+  }
+}
+
+// Memory ran out before the budget noticed (a single huge allocation, or a budget over
+// what the system gives): nothing is kept, and the error names the rule that ran away.
+void Derivation::outOfMemory(rt::DeriveResult& result) {
+  out_ = rt::InstanceList{};
+  buckets_.clear();
+  result.ok = false;
+  const auto [who, loc] = runaway(ir::Loc{});
+  result.messages.push_back({true, "R020", loc.line, loc.col,
+                             "out of memory while deriving (" + rt::formatMemorySize(rt::residentMemoryBytes()) +
+                                 " in use): " + who +
+                                 " ran away; nothing is written (--max-memory stops a derivation "
+                                 "earlier and keeps its shapes)"});
+}
+
+// Compiled code must come from this very grammar: its tables are numbered by its IR.
+void Derivation::checkProgram() const {
+  if (!program_) return;
+  const FgsgProgram& p = *program_;
+  if (p.abiVersion != FGSG_ABI_VERSION)
+    throw DeriveError{{}, "R900", "compiled code for runtime ABI " + std::to_string(p.abiVersion) +
+                                      ", but this runtime is ABI " + std::to_string(FGSG_ABI_VERSION) +
+                                      ": compile the grammar again"};
+  if ((p.direct && !p.directPlaces) || p.blockCount != layout_.blocks.size() || p.ruleCount != m_.rules.size() ||
+      p.alternativeCount != layout_.alternativeCount || p.symbolCount != m_.symbols.size() ||
+      p.scopeSize != sizeof(rt::Scope))
+    throw DeriveError{{}, "R900", "the compiled code does not match this grammar (" +
+                                      std::to_string(p.blockCount) + " blocks and " +
+                                      std::to_string(p.ruleCount) + " rules compiled, " +
+                                      std::to_string(layout_.blocks.size()) + " and " +
+                                      std::to_string(m_.rules.size()) + " in the grammar)"};
+}
+
+void Derivation::checkEnvironment() {
+  if (m_.mode == ir::DeriveMode::Parallel && (m_.collision.all || opt_.collideAll))
+    throw DeriveError{m_.collision.loc, "R009",
+                      "collision tests need a sequential derivation: a collision culls the rest "
+                      "of one production, and an L-system rewrites every module at once"};
+  if (m_.surface.present || !opt_.surfaceOverride.empty()) {
+    if (m_.mode == ir::DeriveMode::Parallel)
+      throw DeriveError{m_.surface.loc, "R009",
+                        "a surface needs a sequential derivation: L-system turtles draw on the "
+                        "plane"};
+    surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+  }
+  for (const auto& env : m_.environment)
+    if (env.kind == "texture")
+      throw DeriveError{env.loc, "R001",
+                        "texture declarations are not yet supported when running: textures "
+                        "arrive with on-mesh marching (this grammar parses and type-checks; "
+                        "`fgsg check` accepts it)"};
+}
+
+// Every asset is loaded before deriving, so a missing file is reported at its I().
+void Derivation::resolveAssets() {
+  std::vector<ir::Loc> firstUse(m_.assets.size());
+  std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
+    for (const auto& op : b) {
+      if (op.kind == ir::OpKind::Instance && firstUse[op.index].line == 0) firstUse[op.index] = op.loc;
+      for (const auto& body : op.bodies) visit(body);
+    }
+  };
+  visit(m_.axiom);
+  for (const auto& r : m_.rules)
+    for (const auto& a : r.alternatives) visit(a.ops);
+  for (size_t i = 0; i < m_.assets.size(); ++i) {
+    std::string error;
+    if (assets_.resolve(m_.assets[i], error) < 0) throw DeriveError{firstUse[i], "R003", error};
+  }
+}
+
+}  // namespace fgsg::backend

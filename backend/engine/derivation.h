@@ -1,0 +1,286 @@
+// The engine core: one derivation of a grammar, sequential (CGA/FGSG: one shape at a
+// time by priority, then breadth- or depth-first) or parallel (L-systems: every module
+// of a string per step, then the turtle). It owns the shapes waiting to be derived, the
+// rule choice, the derivation order, the limits, the random streams, the output and the
+// bridge that compiled code calls (runtime/abi.def) — and nothing about what a command
+// does: each op goes to the command family that registered its kind
+// (backend/commands/, docs/design.md "Adding a command").
+//
+// Its member functions are defined by concern:
+//   derivation.cpp         run(), set-up, how a derivation ends
+//   derivation_order.cpp   the sequential order: queues, successors, Emit, Lock-style
+//                          on-the-spot derivation, op dispatch
+//   rule_choice.cpp        guards, specific before general rules, weighted choice
+//   limits.cpp             --max-depth/-shapes/-seconds/-memory and their messages
+//   instance_output.cpp    the instance list: symbols, colours, placing, final order
+//   grammar_facts.cpp      what the grammar uses, found once before deriving
+//   queries.cpp            Shape.visible / occlusion / field queries
+//   native_bridge.cpp      compiled blocks, guards, weights and direct derivation
+//   parallel_rewriter.cpp  the L-system string rewriter and its turtle interpretation
+#pragma once
+
+#include "backend/commands/cga_commands.h"
+#include "backend/commands/collision_commands.h"
+#include "backend/commands/scope_commands.h"
+#include "backend/commands/surface_world.h"
+#include "backend/commands/synthesis_command.h"
+#include "backend/commands/turtle_commands.h"
+#include "backend/engine/limit_reached.h"
+#include "backend/engine/native_call.h"
+#include "backend/engine/parallel_string.h"
+#include "backend/engine/shape_store.h"
+#include "backend/engine/successor.h"
+#include "backend/interp/eval.h"
+#include "ir/program_layout.h"
+#include "runtime/abi.h"
+#include "runtime/assets.h"
+#include "runtime/deadline.h"
+#include "runtime/derivation.h"
+#include "runtime/geometry.h"
+#include "runtime/occlusion.h"
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgsg::backend {
+
+class Derivation final : public QueryHost {
+ public:
+  // `program`: the grammar's compiled code (deriveCompiled), else the IR is walked;
+  // `direct`: direct symbols are derived by their compiled code at once.
+  Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::AssetLibrary& assets, std::vector<double> attrs,
+             const FgsgProgram* program = nullptr, bool direct = false);
+
+  rt::DeriveResult run();
+  // Whether the last run() stopped because direct derivation could not be exact.
+  bool needsExactRun() const { return inexactDirect_; }
+
+  // ------------------------------------------------ what command modules use
+  const ir::Module& module() const { return m_; }
+  const rt::DeriveOptions& options() const { return opt_; }
+  rt::AssetLibrary& assets() { return assets_; }
+  rt::InstanceList& output() { return out_; }
+  rt::DeriveStats& stats() { return stats_; }
+  rt::GeometryArena& arena() { return arena_; }
+  rt::OcclusionIndex& occluders() { return occluders_; }
+  const std::unique_ptr<SurfaceWorld>& surface() const { return surface_; }
+  size_t scopeStackSize() const { return stack_.size(); }
+  rt::Deadline& deadline() { return deadline_; }
+  LimitReached timeLimit() const;
+  // The symbol an instance of this successor is recorded under ("axiom" for the axiom).
+  uint32_t placingSymbol(const Exec& ex) const { return ex.symbol == UINT32_MAX ? axiomSymbol_ : ex.symbol; }
+  // Turtle segments: a cylinder asset under a symbol "F" of their own.
+  uint32_t segmentAsset() const { return segmentAsset_; }
+  uint32_t segmentSymbol() const { return segmentSymbol_; }
+
+  // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
+  // or reaches past float range).
+  void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
+                     uint32_t paramCount, ir::Loc loc);
+  // Writes a shape of op's symbol with its parameter slots evaluated.
+  void emit(const ir::Op& op, const double* slots, State& st, Exec& ex);
+  // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
+  void runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom, const State& outer,
+               Exec& ex, Frame& f);
+  // Inside a Lock every shape is derived where it is written.
+  void enterLock() { ++lockDepth_; }
+  void leaveLock() { --lockDepth_; }
+
+  // ------------------------------------------------ queries (QueryHost)
+  double visible(const rt::Scope& scope, const std::string& target, ir::Loc at) override;
+  double occlusion(const rt::Scope& scope, ir::Loc at) override;
+  double fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
+  rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
+
+  // ------------------------------------------------ the runtime entry points of compiled
+  // code (runtime/abi.def, native_bridge.cpp), for a sequential derivation (call.st set)
+  // or a parallel rewriting step (call.string set).
+  void nativeEmit(NativeCall& call, uint32_t op, const double* slots);
+  void nativeOp(NativeCall& call, uint32_t op, const double* args, uint32_t n);
+  void nativeTranslate(NativeCall& call, double x, double y, double z) { scope_.translate(call.st->scope, x, y, z); }
+  void nativeRotate(NativeCall& call, uint32_t axis, double degrees) {
+    scope_.turn(call.st->scope, static_cast<int>(axis), degrees);
+  }
+  void nativePush(NativeCall& call) { scope_.push(*call.st); }
+  void nativePop(NativeCall& call, uint32_t op) { scope_.command(*call.st, *layout_.ops[op], nullptr); }
+  void directCosSin(double degrees, double* out) { scope_.cosSin(degrees, out); }
+  void directTimeCheck() { checkTime(); }
+  void directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
+                      uint64_t preorder);
+
+ private:
+  // A branch of a rule that applies, with its weight.
+  struct Candidate {
+    const ir::Alternative* alt;
+    uint32_t rule;
+    double weight;
+  };
+  // The shape (depth, preorder number) that placed an instance in direct code.
+  struct PlacingShape {
+    uint32_t depth = 0;
+    uint64_t preorder = 0;  // the axiom: 0; direct shapes from 1 on
+  };
+
+  static uint32_t maxSlotCount(const ir::Module& m);
+  static uint32_t maxRuleSlots(const ir::Module& m);
+
+  // derivation.cpp
+  void keepAfter(const LimitReached& limit, rt::DeriveResult& result);
+  void outOfMemory(rt::DeriveResult& result);
+  void checkProgram() const;
+  void checkEnvironment();
+  void resolveAssets();
+  void registerFamily(CommandFamily& family);
+
+  // derivation_order.cpp
+  void runSequential();
+  void deriveShape(const WaitingShape& shape);
+  bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent, uint32_t index);
+  bool deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
+                             uint32_t index);
+  void execRoot(uint32_t block, const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom, uint64_t key,
+                uint32_t depth, uint32_t index, const double* params, uint32_t symbol,
+                rt::RandomStream* rng = nullptr, rt::LineCursor line = {});
+  ShapeQueue& bucketFor(int priority);
+  void runBlock(uint32_t block, const ir::Block& ops, State& st, Exec& ex, Frame& f);
+  void execBlock(const ir::Block& ops, State& st, Exec& ex, Frame& f);
+  void applyEvaluated(const ir::Op& op, State& st, Exec& ex, Frame& f, ArgBuffer& buf);
+  void applyOp(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f);
+  const double* evalSlots(const ir::Op& op, const Frame& f, ArgBuffer& buf);
+  const double* evalOpArgs(const ir::Op& op, const Frame& f, ArgBuffer& buf, uint32_t& n);
+  [[noreturn]] void unsupported(const ir::Op& op);
+
+  // rule_choice.cpp
+  static bool isSpecific(const ir::Rule& r);
+  const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f);
+  bool guardHolds(uint32_t rule, const Frame& f);
+  void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total);
+  const Candidate& pickCandidate(rt::RandomStream& rng, double total) const;
+
+  // limits.cpp
+  void depthLimit(const ir::Symbol& sym, uint32_t creator);
+  std::pair<std::string, ir::Loc> runaway(ir::Loc axiomAt) const;
+  [[noreturn]] void shapeLimit(const ir::Op& op);
+  std::optional<LimitReached> limitsReached();
+  void pollLimits();
+  void checkTime();
+  std::optional<LimitReached> memoryLimit();
+  uint64_t assetOutputBytes(uint32_t asset);
+
+  // instance_output.cpp
+  void initOutput();
+  static std::array<float, 3> colorFor(const std::string& name);
+  void appendSurface();
+  void orderDirectInstances();
+
+  // grammar_facts.cpp
+  template <class Pred>
+  bool moduleUses(Pred pred) const;
+  bool moduleUsesQuery(ir::Query q) const;
+  void findEagerSymbols();
+  bool canOrderDirectInstances() const;
+  double stringId(const std::string& s) const;
+
+  // native_bridge.cpp
+  uint32_t blockOf(const ir::Alternative* alt) const;
+  double callValue(FgsgValueFn fn, const Frame& f);
+  void deriveDirect(uint32_t symbol, const double* slots, const rt::Scope& scope, uint64_t key, uint32_t depth);
+  void runNative(uint32_t block, State& st, Exec& ex, Frame& f);
+
+  // parallel_rewriter.cpp
+  void runParallel();
+  static void copyModule(const StringModule& mod, const std::vector<double>& args, std::vector<StringModule>& out,
+                         std::vector<double>& outArgs);
+  void appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, std::vector<StringModule>& out,
+                     std::vector<double>& outArgs, uint32_t owner = UINT32_MAX);
+  void checkParallelOp(const ir::Op& op);
+  void appendModule(const ir::Op& op, const double* args, uint32_t n, StringTarget& t);
+  const ir::Alternative* chooseInString(const ir::Symbol& sym, const std::vector<StringModule>& str,
+                                        const std::vector<double>& args, size_t at, rt::RandomStream& rng,
+                                        uint32_t step);
+  void bind(const ir::ContextModule& cm, const StringModule& mod, const std::vector<double>& args);
+  bool matchLeft(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
+                 size_t at);
+  bool matchRight(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
+                  size_t at);
+  void interpretString(const std::vector<StringModule>& str, const std::vector<double>& args);
+  [[noreturn]] void sequentialOnly(const ir::Op& op);
+
+  const ir::Module& m_;
+  const rt::DeriveOptions& opt_;
+  rt::AssetLibrary& assets_;
+  Evaluator eval_;
+  rt::Deadline deadline_;                // --max-seconds, passed down to traces and fields
+  uint64_t memoryBudget_ = 0;            // --max-memory
+  std::chrono::steady_clock::time_point memoryCheckedAt_{};  // the last memory reading
+  size_t instancesCounted_ = 0;          // instances whose output bytes are in instanceBytes_
+  uint64_t instanceBytes_ = 0;
+  std::vector<uint64_t> assetBytes_;     // output bytes of one instance, per out_.assets entry
+  rt::InstanceList out_;
+  rt::DeriveStats stats_;
+  uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
+  rt::GeometryArena arena_;
+  rt::OcclusionIndex occluders_;
+  std::vector<std::pair<int, ShapeQueue>> buckets_;
+  std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
+  std::vector<Saved> stack_;
+  std::vector<double> params_;
+  std::vector<Candidate> candidates_;
+  std::vector<uint64_t> ruleUses_;  // applications per rule, to name a runaway one
+  uint32_t maxSlots_ = 0;           // the largest parameter block of any rule
+  uint32_t chosenRule_ = 0;
+  uint32_t creatorRule_ = UINT32_MAX;  // the rule whose successor is running
+  bool depthLimitHit_ = false;
+  rt::DeriveMessage depthWarning_;
+  std::vector<std::array<float, 3>> symbolColor_;
+  uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
+  bool usesOcclusion_ = false;
+  std::unique_ptr<SurfaceWorld> surface_;  // null: the grammar grows on the plane
+  std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
+  uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
+  uint32_t onTheSpot_ = 0;      // shapes being derived where they are written, nested
+  double noneId_ = -1, partId_ = -1, fullId_ = -1;
+  rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();
+  const FgsgProgram* program_ = nullptr;  // compiled code (deriveCompiled), else the IR is walked
+  bool direct_ = false;          // direct symbols are derived by their compiled code at once
+  bool orderedDirect_ = false;   // ... including those placing instances (canOrderDirectInstances)
+  PlacingShape placingShape_;            // the shape whose instance is being placed
+  std::vector<PlacingShape> placedBy_;   // per instance, while orderedDirect_
+  uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
+  bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
+  uintptr_t stackFloor_ = 0;     // recursion (direct code, Lock sets) stays above this frame address
+  ir::ProgramLayout layout_;     // how program_ numbers blocks and ops
+
+  // The command families, and which one applies each op kind.
+  ScopeCommands scope_;
+  TurtleCommands turtle_;
+  CgaCommands cga_;
+  CollisionCommands collide_;
+  SynthesisCommand synthesis_;
+  std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
+};
+
+// Whether any op of the grammar satisfies `pred`.
+template <class Pred>
+bool Derivation::moduleUses(Pred pred) const {
+  std::function<bool(const ir::Block&)> inBlock = [&](const ir::Block& b) {
+    for (const auto& op : b) {
+      if (pred(op)) return true;
+      for (const auto& body : op.bodies)
+        if (inBlock(body)) return true;
+    }
+    return false;
+  };
+  for (const auto& r : m_.rules)
+    for (const auto& alt : r.alternatives)
+      if (inBlock(alt.ops)) return true;
+  return inBlock(m_.axiom);
+}
+
+}  // namespace fgsg::backend

@@ -1,0 +1,139 @@
+// The derivation's output: the instance list with its symbol, asset and colour tables,
+// each instance placed (and checked to be finite), the surface appended, and the order of
+// instances that direct code placed restored to the engine's own.
+#include "backend/engine/derivation.h"
+
+#include "runtime/float_range.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace fgsg::backend {
+
+void Derivation::initOutput() {
+  out_.assets = m_.assets;
+  out_.strings = m_.strings;
+  for (const auto& s : m_.symbols) {
+    out_.symbols.push_back(s.name);
+    std::vector<rt::ParamKind> kinds;
+    for (ir::Type t : s.paramTypes)
+      kinds.push_back(t == ir::Type::Bool  ? rt::ParamKind::Boolean
+                      : t == ir::Type::Str ? rt::ParamKind::String
+                      : t == ir::Type::Vec3 ? rt::ParamKind::Vector
+                                            : rt::ParamKind::Number);
+    out_.paramKinds.push_back(std::move(kinds));
+  }
+  segmentAsset_ = static_cast<uint32_t>(out_.assets.size());
+  out_.assets.push_back("cylinder");
+  segmentSymbol_ = static_cast<uint32_t>(out_.symbols.size());
+  out_.symbols.push_back("F");
+  for (const auto& s : m_.symbols) symbolColor_.push_back(colorFor(s.name));
+  symbolColor_.push_back({0.45f, 0.33f, 0.2f});  // turtle segments: bark brown
+  axiomSymbol_ = static_cast<uint32_t>(out_.symbols.size());
+  out_.symbols.push_back("axiom");
+  symbolColor_.push_back(colorFor("axiom"));
+  usesOcclusion_ = moduleUsesQuery(ir::Query::ScopeOcc);
+  collide_.prepare(moduleUses([](const ir::Op& op) {
+    return op.kind == ir::OpKind::Lock || (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain);
+  }));
+  findEagerSymbols();
+  noneId_ = stringId("none");
+  partId_ = stringId("part");
+  fullId_ = stringId("full");
+}
+
+std::array<float, 3> Derivation::colorFor(const std::string& name) {
+  // A stable pastel hue per symbol, so parts of a pattern are told apart in previews.
+  const double h = (rt::mix64(std::hash<std::string>{}(name)) % 360) / 60.0;
+  const double x = 1 - std::abs(std::fmod(h, 2.0) - 1);
+  double r = 0, g = 0, b = 0;
+  switch (static_cast<int>(h)) {
+    case 0: r = 1, g = x; break;
+    case 1: r = x, g = 1; break;
+    case 2: g = 1, b = x; break;
+    case 3: g = x, b = 1; break;
+    case 4: r = x, b = 1; break;
+    default: r = 1, b = x; break;
+  }
+  auto pastel = [](double c) { return static_cast<float>(0.35 + 0.55 * c); };
+  return {pastel(r), pastel(g), pastel(b)};
+}
+
+void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
+                   const double* params, uint32_t paramCount, ir::Loc loc) {
+  rt::Instance inst;
+  inst.asset = asset;
+  inst.symbol = symbol;
+  const rt::Mat4 t = scope.unitBoxToWorld();
+  for (int k = 0; k < 16; ++k) {
+    inst.transform[k] = t.data()[k];
+    if (!std::isfinite(inst.transform[k]))
+      throw DeriveError{loc, "R005",
+                        "this instance's scope is not finite (a parameter became NaN or "
+                        "infinite, e.g. sqrt of a negative number or a division by zero)"};
+  }
+  if (const double reach = rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", reach);
+    throw DeriveError{loc, "R005",
+                      "this instance of '" + out_.symbols[symbol] + "' reaches coordinate " + text +
+                          ", beyond what mesh files store (32-bit floats, up to 3.4e+38): a scale, "
+                          "extrusion or translation grew too large"};
+  }
+  inst.color = symbolColor_[symbol];
+  inst.firstParam = static_cast<uint32_t>(out_.params.size());
+  inst.paramCount = paramCount;
+  out_.params.insert(out_.params.end(), params, params + paramCount);
+  out_.instances.push_back(inst);
+  if (orderedDirect_) placedBy_.push_back(placingShape_);
+  if (usesOcclusion_) occluders_.add(scope);
+  collide_.placed(scope);
+}
+
+// The surface the pattern grew on is part of the output, in a neutral grey.
+void Derivation::appendSurface() {
+  if (!surface_) return;
+  out_.symbols.push_back("surface");
+  rt::placeGenerated(assets_, out_, "<surface>", surface_->surfaceMesh(),
+                     static_cast<uint32_t>(out_.symbols.size() - 1), {0.72f, 0.72f, 0.7f});
+}
+
+// Puts the instances placed while direct shapes were derived into the interpreter's
+// order: by the placing shape's depth, then preorder (breadth-first), or by preorder
+// alone (depth-first); a stable sort keeps each successor's own order.
+void Derivation::orderDirectInstances() {
+  if (!orderedDirect_ || placedBy_.size() != out_.instances.size()) return;
+  const bool breadthFirst = m_.mode == ir::DeriveMode::BreadthFirst;
+  auto before = [breadthFirst](const PlacingShape& x, const PlacingShape& y) {
+    if (breadthFirst && x.depth != y.depth) return x.depth < y.depth;
+    return x.preorder < y.preorder;
+  };
+  // Often already so (depth-first, or every instance placed at one depth).
+  if (std::is_sorted(placedBy_.begin(), placedBy_.end(), before)) {
+    placedBy_.clear();
+    return;
+  }
+  std::vector<uint32_t> order(out_.instances.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
+  std::vector<rt::Instance> instances;
+  std::vector<double> params;
+  instances.reserve(order.size());
+  params.reserve(out_.params.size());
+  for (uint32_t i : order) {
+    rt::Instance inst = out_.instances[i];
+    const uint32_t first = inst.firstParam;
+    inst.firstParam = static_cast<uint32_t>(params.size());
+    params.insert(params.end(), out_.params.begin() + first, out_.params.begin() + first + inst.paramCount);
+    instances.push_back(inst);
+  }
+  out_.instances = std::move(instances);
+  out_.params = std::move(params);
+  placedBy_.clear();
+}
+
+}  // namespace fgsg::backend

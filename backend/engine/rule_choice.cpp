@@ -1,0 +1,80 @@
+// Rule choice: which rules of a symbol apply (guards; context in a parallel string,
+// parallel_rewriter.cpp), specific rules before general ones, and one alternative drawn
+// by weight from the shape's own random stream.
+#include "backend/engine/derivation.h"
+
+#include <cmath>
+#include <string>
+
+namespace fgsg::backend {
+
+// A rule with a guard or a context is specific; one without is general. Specific rules
+// that apply are preferred (ABOP's precedence of context-sensitive productions; CGA's
+// guarded rule before its fallback); general rules are candidates only otherwise.
+bool Derivation::isSpecific(const ir::Rule& r) {
+  return r.hasGuard || !r.left.empty() || !r.right.empty();
+}
+
+// Picks one alternative among the rules whose guard holds, weights normalised.
+const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f) {
+  // The common case: one unguarded rule with one branch of constant positive weight.
+  if (sym.rules.size() == 1) {
+    const ir::Rule& only = m_.rules[sym.rules[0]];
+    if (!isSpecific(only) && only.alternatives.size() == 1 &&
+        only.alternatives[0].probability.isConst() && only.alternatives[0].probability.num > 0) {
+      chosenRule_ = sym.rules[0];
+      return &only.alternatives[0];
+    }
+  }
+  candidates_.clear();
+  double total = 0;
+  for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
+  for (uint32_t ri : sym.rules) {
+    const ir::Rule& r = m_.rules[ri];
+    if (isSpecific(r) != (pass == 0)) continue;
+    // Context needs a string of neighbours: only a parallel derivation has one.
+    if (!r.left.empty() || !r.right.empty()) continue;
+    if (r.hasGuard && !guardHolds(ri, f)) continue;
+    addCandidates(r, ri, f, total);
+  }
+  if (candidates_.empty()) return nullptr;
+  const Candidate& pick = pickCandidate(*f.rng, total);
+  chosenRule_ = pick.rule;
+  return pick.alt;
+}
+
+bool Derivation::guardHolds(uint32_t rule, const Frame& f) {
+  const FgsgValueFn compiled = program_ ? program_->guards[rule] : nullptr;
+  return compiled ? callValue(compiled, f) != 0.0 : eval_.truth(m_.rules[rule].guard, f);
+}
+
+// Adds the branches of a rule that applies, with their weights, to the candidates.
+void Derivation::addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total) {
+  for (const auto& alt : r.alternatives) {
+    const FgsgValueFn compiled =
+        program_ ? program_->weights[layout_.firstAlternative[ri] + (&alt - r.alternatives.data())] : nullptr;
+    const double w = compiled ? callValue(compiled, f) : eval_.num(alt.probability, f);
+    if (!(w >= 0) || !std::isfinite(w))
+      throw DeriveError{alt.probability.loc, "R008",
+                        "a probability evaluated to " + std::to_string(w) +
+                            "; probabilities must be finite and not negative"};
+    if (w > 0) {
+      candidates_.push_back({&alt, ri, w});
+      total += w;
+    }
+  }
+}
+
+// One candidate, chosen with probability proportional to its weight; a single
+// candidate takes no random number, so adding an impossible branch changes nothing.
+const Derivation::Candidate& Derivation::pickCandidate(rt::RandomStream& rng, double total) const {
+  if (candidates_.size() == 1) return candidates_.front();
+  double x = rng.next() * total;
+  for (const auto& c : candidates_) {
+    if (x < c.weight) return c;
+    x -= c.weight;
+  }
+  return candidates_.back();
+}
+
+}  // namespace fgsg::backend

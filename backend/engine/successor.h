@@ -1,0 +1,57 @@
+// What one running successor works on: its scope and [ ] stack (State), what it knows
+// about itself (Exec), and room for one op's evaluated arguments. The core and every
+// command module (backend/commands/) pass these along.
+#pragma once
+
+#include "runtime/geometry.h"
+#include "runtime/lines/line_network.h"
+#include "runtime/random.h"
+#include "runtime/scope.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace fgsg::backend {
+
+// The scope a successor works on. Its [ ] stack lives in one shared vector above
+// `stackBase`, so pushing allocates nothing once the vector has grown.
+struct Saved {
+  rt::Scope scope;
+  rt::GeomRef geom;
+  double width;
+  rt::LineCursor line;
+};
+struct State {
+  rt::Scope scope;
+  rt::GeomRef geom;
+  double width = 0.1;
+  size_t stackBase = 0;
+  rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
+};
+
+// What one running successor knows: its random stream, key and parameters, the
+// children it has written so far, and whether a collision culled its rest.
+struct Exec {
+  rt::RandomStream* rng;
+  uint64_t key;
+  uint32_t depth;   // depth of the shapes this successor creates
+  uint32_t symbol;  // the shape being rewritten (UINT32_MAX for the axiom)
+  const double* params;
+  uint32_t childCount;
+  bool culled = false;    // the rest of this production is dropped (FGSG §4.4)
+  bool collided = false;  // ... because something in it collided
+};
+
+// Room for one op's evaluated arguments: on the stack unless a split has many sizes.
+struct ArgBuffer {
+  double small[16];
+  std::vector<double> big;
+  double* reserve(uint32_t n) {
+    if (n <= 16) return small;
+    big.resize(n);
+    return big.data();
+  }
+};
+
+}  // namespace fgsg::backend
