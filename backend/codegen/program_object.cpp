@@ -44,8 +44,11 @@ std::unique_ptr<llvm::TargetMachine> targetMachine(CpuTarget cpu, CodeQuality qu
   std::string name = "generic", features;
   if (cpu == CpuTarget::Host) {
     name = llvm::sys::getHostCPUName().str();
-    for (const auto& [feature, on] : llvm::sys::getHostCPUFeatures())
-      features += (features.empty() ? "" : ",") + std::string(on ? "+" : "-") + feature.str();
+    for (const auto& [feature, on] : llvm::sys::getHostCPUFeatures()) {
+      if (!features.empty()) features += ',';
+      features += on ? '+' : '-';
+      features += feature.str();
+    }
   } else if (llvm::Triple(triple).getArch() == llvm::Triple::x86_64) {
     name = "x86-64";
   }
