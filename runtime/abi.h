@@ -59,7 +59,7 @@ struct FgsgContext {
   int32_t errorCol = 0;
 };
 
-// Generated code reads and writes these fields at these offsets (program_codegen.cpp).
+// Generated code reads and writes these fields at these offsets (program_codegen_internal.h).
 static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact) == 4 &&
                   offsetof(FgsgContext, shapes) == 8 && offsetof(FgsgContext, rewrites) == 16 &&
                   offsetof(FgsgContext, terminals) == 24 && offsetof(FgsgContext, shapeBudget) == 32 &&

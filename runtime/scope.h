@@ -41,7 +41,7 @@ struct Scope {
   Vec3 toWorld(const Vec3& local) const { return P + axes * local; }
 };
 
-// Compiled code reads and writes P and axes in place (backend/codegen/program_codegen.cpp).
+// Compiled code reads and writes P and axes in place (backend/codegen/direct_codegen.cpp).
 static_assert(sizeof(Vec3) == 24 && sizeof(Mat3) == 72, "Eigen's fixed-size types hold their doubles");
 
 // T(x, y, z) on the plane: the origin moves by x X + y Y + z Z. Written out operation by

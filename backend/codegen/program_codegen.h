@@ -3,6 +3,7 @@
 // the FgsgProgram constant that lists them (runtime/abi.h). Successors call the
 // runtime's op entry points (runtime/abi.def) with their arguments computed inline,
 // in the interpreter's order, so the engine sees exactly the same values.
+// program_codegen_internal.h lists the files that emit each part.
 #pragma once
 
 #include "ir/ir.h"
