@@ -1,0 +1,162 @@
+// Checking a command item (S, Subdiv, Repeat, Comp, I, ...): its argument count, the
+// type of each argument, the constant strings some take (axes, selectors, roof kinds,
+// assets), and its { } body against the command's BodyRule (frontend/builtins.h).
+
+#include "frontend/sema_analyzer.h"
+
+#include "frontend/builtins.h"
+
+#include <set>
+#include <string>
+
+namespace fgsg::frontend::sema_detail {
+
+namespace {
+
+int axisMask(const std::string& axes) {
+  int mask = 0;
+  for (char c : axes) {
+    int bit = (c == 'X' || c == 'x') ? 1 : (c == 'Y' || c == 'y') ? 2 : (c == 'Z' || c == 'z') ? 4 : -1;
+    if (bit < 0 || (mask & bit)) return -1;
+    mask |= bit;
+  }
+  return mask;
+}
+
+}  // namespace
+
+void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Where& w) {
+  const int n = static_cast<int>(item.args.size());
+  if (n < cmd.minArgs || (cmd.maxArgs >= 0 && n > cmd.maxArgs)) {
+    diags_.error("E016", item.range,
+                 "'" + item.name + "' takes " +
+                     (cmd.minArgs == cmd.maxArgs ? std::to_string(cmd.minArgs)
+                      : cmd.maxArgs < 0 ? "at least " + std::to_string(cmd.minArgs)
+                                        : std::to_string(cmd.minArgs) + " to " +
+                                              std::to_string(cmd.maxArgs)) +
+                     " argument" + (cmd.maxArgs == 1 ? "" : "s") + ", got " +
+                     std::to_string(n) + ": " + cmd.signature);
+    return;
+  }
+  checkBody(item, cmd);
+  auto stringArg = [&](size_t k, const char* what) -> std::string {
+    ConstValue v;
+    if (!evalConst(*item.args[k], v) || v.type != ValueType::Str) {
+      diags_.error("E017", item.args[k]->range,
+                   std::string("the ") + what + " of '" + item.name + "' must be a constant string: " +
+                       cmd.signature);
+      return {};
+    }
+    res_.exprTypes[item.args[k].get()] = ValueType::Str;
+    return v.str;
+  };
+  auto numArgs = [&](size_t from, bool sizes) {
+    for (size_t k = from; k < item.args.size(); ++k)
+      expect(*item.args[k], Where{w.rule, sizes}, ValueType::Num, "this argument");
+  };
+  switch (cmd.id) {
+    case CommandId::Scale: numArgs(0, true); break;
+    case CommandId::Instance:
+    case CommandId::InstanceCollide: stringArg(0, "asset"); break;
+    case CommandId::InstanceMerge:
+      stringArg(0, "asset");
+      numArgs(1, false);
+      break;
+    case CommandId::Subdiv: {
+      std::string axis = stringArg(0, "axis");
+      int mask = axisMask(axis);
+      if (!axis.empty() && (mask != 1 && mask != 2 && mask != 4))
+        diags_.error("E028", item.args[0]->range,
+                     "Subdiv splits along one axis: \"X\", \"Y\" or \"Z\", not \"" + axis + "\"");
+      numArgs(1, true);
+      break;
+    }
+    case CommandId::Repeat: {
+      std::string axes = stringArg(0, "axes");
+      int mask = axisMask(axes);
+      if (!axes.empty() && mask <= 0)
+        diags_.error("E028", item.args[0]->range,
+                     "Repeat axes must be letters X, Y, Z each at most once, not \"" + axes + "\"");
+      else if (!axes.empty() && static_cast<int>(axes.size()) != n - 1)
+        diags_.error("E016", item.range,
+                     "Repeat(\"" + axes + "\", ...) needs one size per axis: " +
+                         std::to_string(axes.size()) + " expected, got " + std::to_string(n - 1));
+      numArgs(1, false);
+      break;
+    }
+    case CommandId::Comp: {
+      static const std::set<std::string> kSelectors = {
+          "faces", "sidefaces", "top", "bottom", "front", "back", "left", "right",
+          "edges", "sideedges", "topedges", "bottomedges"};
+      std::string sel = stringArg(0, "selector");
+      if (!sel.empty() && !kSelectors.count(sel))
+        diags_.error("E028", item.args[0]->range,
+                     "unknown component selector \"" + sel +
+                         "\" (faces, sidefaces, top, bottom, front, back, left, right, edges, "
+                         "sideedges, topedges, bottomedges)");
+      break;
+    }
+    case CommandId::Roof: {
+      std::string kind = stringArg(0, "roof kind");
+      if (!kind.empty() && kind != "hipped" && kind != "gable" && kind != "pyramid")
+        diags_.error("E028", item.args[0]->range,
+                     "unknown roof kind \"" + kind + "\" (hipped, gable or pyramid)");
+      numArgs(1, false);
+      break;
+    }
+    case CommandId::Marching:
+      expect(*item.args[0], w, ValueType::Num, "the marching length");
+      expect(*item.args[1], w, ValueType::Num, "the marching angle");
+      expect(*item.args[2], w, ValueType::Bool, "the marching condition");
+      break;
+    case CommandId::Synthesize:
+      stringArg(0, "example file");
+      numArgs(1, false);
+      break;
+    case CommandId::Line:
+      if (n > 0) expect(*item.args[0], w, ValueType::Num, "the width of 'Line'");
+      if (n > 1) expect(*item.args[1], w, ValueType::Bool, "the merge flag of 'Line'");
+      break;
+    case CommandId::LineSeg:
+      if (n > 0) expect(*item.args[0], w, ValueType::Num, "the length of 'LineSeg'");
+      break;
+    case CommandId::Evolve:
+    case CommandId::Cells:
+      for (const auto& a : item.args) typeOf(*a, w, true);
+      break;
+    default: numArgs(0, false); break;
+  }
+  for (const auto& b : item.body) checkSuccessor(b, w);
+}
+
+void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
+  const size_t parts = item.body.size();
+  switch (cmd.body) {
+    case BodyRule::None:
+      if (item.hasBody)
+        diags_.error("E018", item.range, "'" + item.name + "' takes no { } body: " + cmd.signature);
+      break;
+    case BodyRule::PerSize:
+      if (!item.hasBody)
+        diags_.error("E018", item.range, "'" + item.name + "' needs a { } body: " + cmd.signature);
+      else if (parts != item.args.size() - 1)
+        diags_.error("E018", item.range,
+                     "'" + item.name + "' has " + std::to_string(item.args.size() - 1) +
+                         " size" + (item.args.size() == 2 ? "" : "s") + " but " +
+                         std::to_string(parts) + " body part" + (parts == 1 ? "" : "s") +
+                         "; write one part per size, separated by '|'");
+      break;
+    case BodyRule::One:
+      if (!item.hasBody || parts != 1)
+        diags_.error("E018", item.range,
+                     "'" + item.name + "' needs exactly one { } body part: " + cmd.signature);
+      break;
+    case BodyRule::AtLeastOne:
+      if (!item.hasBody || parts == 0)
+        diags_.error("E018", item.range, "'" + item.name + "' needs a { } body: " + cmd.signature);
+      break;
+    case BodyRule::Optional: break;
+  }
+}
+
+}  // namespace fgsg::frontend::sema_detail

@@ -1,0 +1,119 @@
+// Semantic analysis of the declarations that give a grammar its values and settings:
+// `const` and `attr` (evaluated once, here, so that rules see constants), the names of
+// `field` and `texture` declarations (for queries), the surface count, `derive` and
+// `turtle`. The surface and field bodies themselves are sema_environment.cpp's.
+
+#include "frontend/sema_analyzer.h"
+#include "frontend/sema_environment.h"
+
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace fgsg::frontend::sema_detail {
+
+namespace {
+
+constexpr int kMaxParallelSteps = 2147483647;  // INT32_MAX: ir::Module::steps is an int
+
+}  // namespace
+
+void Analyzer::collectValues() {
+  std::set<std::string> seen;
+  for (const auto& v : prog_.values) {
+    if (!seen.insert(v.name).second) {
+      diags_.error("E022", v.range, "'" + v.name + "' is declared twice");
+      continue;
+    }
+    ConstValue value;
+    if (!evalConst(*v.value, value)) {
+      // Its uses are not reported again as unknown names (E010): this is the one error.
+      failedValues_.insert(v.name);
+      if (const Expr* zero = zeroDivisor(*v.value)) {
+        diags_.error("E027", zero->range, "division by zero");
+        continue;
+      }
+      diags_.error("E023", v.value->range,
+                   std::string(v.isAttr ? "the default of attr '" : "const '") + v.name +
+                       "' must be a constant expression (numbers, strings, earlier "
+                       "constants and math functions)");
+      continue;
+    }
+    if (v.isAttr)
+      res_.attrs.push_back({v.name, value, v.range});
+    else
+      res_.constants[v.name] = value;
+  }
+}
+
+void Analyzer::collectEnvironment() {
+  std::set<std::string> names;
+  for (const auto& f : prog_.fields) {
+    if (!names.insert(f.name).second)
+      diags_.error("E022", f.range, "field '" + f.name + "' is declared twice");
+    res_.fields.push_back(f.name);
+  }
+  for (const auto& t : prog_.textures) {
+    if (!names.insert(t.name).second)
+      diags_.error("E022", t.range, "texture '" + t.name + "' is declared twice");
+    res_.textures.push_back(t.name);
+  }
+  if (prog_.surfaces.size() > 1)
+    diags_.error("E029", prog_.surfaces[1].range, "only one surface may be declared");
+  checkSurfaceAndFields(prog_, res_, diags_,
+                        [this](const Expr& e, ConstValue& v) { return evalConst(e, v); });
+  for (const auto& d : prog_.derives) {
+    if (d.mode == "parallel") {
+      ConstValue steps;
+      if (d.steps && !evalConst(*d.steps, steps)) {
+        if (const Expr* zero = zeroDivisor(*d.steps)) {
+          diags_.error("E027", zero->range, "division by zero");
+          continue;
+        }
+      }
+      // The step count is an int in the IR: larger values are refused, not wrapped.
+      if (!d.steps || !evalConst(*d.steps, steps) || steps.type != ValueType::Num ||
+          !(steps.num >= 0) || steps.num > kMaxParallelSteps || steps.num != std::floor(steps.num)) {
+        diags_.error("E029", d.steps ? d.steps->range : d.range,
+                     "`derive parallel N;` needs a constant whole number of steps N from 0 to " +
+                         std::to_string(kMaxParallelSteps) +
+                         (d.steps && evalConst(*d.steps, steps) && steps.type == ValueType::Num
+                              ? ", got " + wholeNumberText(steps.num)
+                              : std::string()));
+        continue;
+      }
+      res_.steps = static_cast<int>(steps.num);
+    } else if (d.mode != "breadthfirst" && d.mode != "depthfirst") {
+      diags_.error("E029", d.range,
+                   "unknown derivation mode '" + d.mode +
+                       "' (expected parallel N, breadthfirst or depthfirst)");
+      continue;
+    }
+    res_.mode = d.mode;
+  }
+  for (const auto& t : prog_.turtles) {
+    for (const auto& [key, expr] : t.settings) {
+      ConstValue v;
+      if (expr && !evalConst(*expr, v))
+        if (const Expr* zero = zeroDivisor(*expr)) {
+          diags_.error("E027", zero->range, "division by zero");
+          continue;
+        }
+      if (!expr || !evalConst(*expr, v) || v.type != ValueType::Num) {
+        diags_.error("E029", t.range, "turtle setting '" + key + "' needs a constant number");
+        continue;
+      }
+      if (key == "angle")
+        res_.turtleAngle = v.num;
+      else if (key == "step")
+        res_.turtleStep = v.num;
+      else if (key == "width")
+        res_.turtleWidth = v.num;
+      else
+        diags_.error("E029", t.range,
+                     "unknown turtle setting '" + key + "' (expected angle, step or width)");
+    }
+  }
+}
+
+}  // namespace fgsg::frontend::sema_detail

@@ -1,0 +1,242 @@
+// Expressions: the type of every expression (recorded in SemaResult::exprTypes), how each
+// identifier resolves (SemaResult::names), and the errors of operators, function calls,
+// and Scope/Shape/field/texture queries.
+
+#include "frontend/sema_analyzer.h"
+
+#include "frontend/builtins.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fgsg::frontend::sema_detail {
+
+void Analyzer::expect(const Expr& e, const Where& w, ValueType want, const std::string& what) {
+  ValueType t = typeOf(e, w, true);
+  if (t != ValueType::Unknown && t != want)
+    diags_.error(want == ValueType::Bool ? "E014" : "E013", e.range,
+                 what + " must be a " + valueTypeName(want) + ", but this is a " +
+                     valueTypeName(t));
+}
+
+ValueType Analyzer::record(const Expr& e, ValueType t, bool report) {
+  if (report) res_.exprTypes[&e] = t;
+  return t;
+}
+
+ValueType Analyzer::typeOf(const Expr& e, const Where& w, bool report) {
+  switch (e.kind) {
+    case ExprKind::Number: return record(e, ValueType::Num, report);
+    case ExprKind::Bool: return record(e, ValueType::Bool, report);
+    case ExprKind::String: return record(e, ValueType::Str, report);
+    case ExprKind::RelSize:
+    case ExprKind::FloatSize:
+      if (e.kind == ExprKind::FloatSize && !e.args.empty()) typeOf(*e.args[0], w, report);
+      if (!w.sizeArg && report)
+        diags_.error("E026", e.range,
+                     "relative (1r) and floating (~s) sizes are only allowed as sizes of S and "
+                     "Subdiv");
+      return record(e, ValueType::Num, report);
+    case ExprKind::Vector: {
+      for (const auto& a : e.args) {
+        ValueType t = typeOf(*a, Where{w.rule, false}, report);
+        if (report && t != ValueType::Num && t != ValueType::Unknown)
+          diags_.error("E013", a->range, "a vector's components must be numbers");
+      }
+      if (e.args.size() != 3 && report)
+        diags_.error("E013", e.range, "a vector literal has exactly three components");
+      return record(e, ValueType::Vec3, report);
+    }
+    case ExprKind::Ident: return typeOfIdent(e, w, report);
+    case ExprKind::Unary: {
+      ValueType t = typeOf(*e.args[0], Where{w.rule, false}, report);
+      if (e.text == "!") {
+        if (report && t != ValueType::Bool && t != ValueType::Unknown)
+          diags_.error("E013", e.range, "'!' needs a boolean, got a " + std::string(valueTypeName(t)));
+        return record(e, ValueType::Bool, report);
+      }
+      if (report && t != ValueType::Num && t != ValueType::Vec3 && t != ValueType::Unknown)
+        diags_.error("E013", e.range,
+                     "'" + e.text + "' needs a number, got a " + std::string(valueTypeName(t)));
+      return record(e, t, report);
+    }
+    case ExprKind::Binary: return typeOfBinary(e, w, report);
+    case ExprKind::Ternary: {
+      Where inner{w.rule, false};
+      ValueType c = typeOf(*e.args[0], inner, report);
+      if (report && c != ValueType::Bool && c != ValueType::Unknown)
+        diags_.error("E014", e.args[0]->range, "the condition of '?:' must be a boolean");
+      ValueType a = typeOf(*e.args[1], inner, report), b = typeOf(*e.args[2], inner, report);
+      if (a != ValueType::Unknown && b != ValueType::Unknown && a != b) {
+        if (report)
+          diags_.error("E013", e.range,
+                       std::string("both branches of '?:' must have one type, got ") +
+                           valueTypeName(a) + " and " + valueTypeName(b));
+        return record(e, ValueType::Unknown, report);
+      }
+      return record(e, a != ValueType::Unknown ? a : b, report);
+    }
+    case ExprKind::Call: return typeOfCall(e, w, report);
+    case ExprKind::Member: return typeOfMember(e, w, report);
+  }
+  return ValueType::Unknown;
+}
+
+ValueType Analyzer::typeOfIdent(const Expr& e, const Where& w, bool report) {
+  if (w.rule >= 0) {
+    const auto& params = res_.ruleParams[w.rule];
+    for (size_t k = 0; k < params.size(); ++k)
+      if (params[k].first == e.text) {
+        if (report) res_.names[&e] = NameRef{NameRef::Param, k, {}};
+        return record(e, params[k].second, report);
+      }
+  }
+  auto c = res_.constants.find(e.text);
+  if (c != res_.constants.end()) {
+    if (report) res_.names[&e] = NameRef{NameRef::Const, 0, c->second};
+    return record(e, c->second.type, report);
+  }
+  for (size_t k = 0; k < res_.attrs.size(); ++k)
+    if (res_.attrs[k].name == e.text) {
+      if (report) res_.names[&e] = NameRef{NameRef::Attr, k, {}};
+      return record(e, res_.attrs[k].value.type, report);
+    }
+  if (e.text == "pi" || e.text == "PI") {
+    ConstValue v;
+    v.num = kPi;
+    if (report) res_.names[&e] = NameRef{NameRef::Builtin, 0, v};
+    return record(e, ValueType::Num, report);
+  }
+  if (failedValues_.count(e.text)) return ValueType::Unknown;  // reported at its declaration
+  if (report)
+    diags_.error("E010", e.range,
+                 "unknown name '" + e.text + "'" +
+                     (w.rule >= 0 ? " (not a parameter of this rule, a const or an attr)"
+                                  : " (not a const or an attr)"));
+  return ValueType::Unknown;
+}
+
+ValueType Analyzer::typeOfBinary(const Expr& e, const Where& w, bool report) {
+  Where inner{w.rule, false};
+  ValueType a = typeOf(*e.args[0], inner, report), b = typeOf(*e.args[1], inner, report);
+  const std::string& op = e.text;
+  auto bad = [&](const std::string& need) {
+    if (report)
+      diags_.error("E013", e.range,
+                   "'" + op + "' needs " + need + ", got " + valueTypeName(a) + " and " +
+                       valueTypeName(b));
+    return record(e, ValueType::Unknown, report);
+  };
+  const bool unknown = a == ValueType::Unknown || b == ValueType::Unknown;
+  ConstValue divisor;
+  if (report && (op == "/" || op == "%") && evalConst(*e.args[1], divisor) &&
+      divisor.type == ValueType::Num && divisor.num == 0)
+    diags_.error("E027", e.args[1]->range, "division by zero");
+  if (op == "&&" || op == "||") {
+    if (!unknown && (a != ValueType::Bool || b != ValueType::Bool)) return bad("booleans");
+    return record(e, ValueType::Bool, report);
+  }
+  if (op == "==" || op == "!=") {
+    if (!unknown && a != b) return bad("two values of one type");
+    return record(e, ValueType::Bool, report);
+  }
+  if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+    if (!unknown && (a != ValueType::Num || b != ValueType::Num)) return bad("numbers");
+    return record(e, ValueType::Bool, report);
+  }
+  if (unknown) return record(e, a == ValueType::Unknown ? b : a, report);
+  if (a == ValueType::Num && b == ValueType::Num) return record(e, ValueType::Num, report);
+  if ((op == "+" || op == "-") && a == ValueType::Vec3 && b == ValueType::Vec3)
+    return record(e, ValueType::Vec3, report);
+  if (op == "*" && ((a == ValueType::Vec3 && b == ValueType::Num) ||
+                    (a == ValueType::Num && b == ValueType::Vec3)))
+    return record(e, ValueType::Vec3, report);
+  if (op == "/" && a == ValueType::Vec3 && b == ValueType::Num)
+    return record(e, ValueType::Vec3, report);
+  return bad("numbers");
+}
+
+ValueType Analyzer::typeOfCall(const Expr& e, const Where& w, bool report) {
+  const FunctionInfo* f = findFunction(e.text);
+  Where inner{w.rule, false};
+  std::vector<ValueType> args;
+  for (const auto& a : e.args) args.push_back(typeOf(*a, inner, report));
+  if (!f) {
+    if (report)
+      diags_.error("E011", e.range,
+                   "unknown function '" + e.text +
+                       "' (math: sin cos tan asin acos atan atan2 sqrt abs min max floor ceil "
+                       "round clamp lerp pow exp log sign; vectors: length dot normalize; "
+                       "random: Rand(a, b))");
+    return ValueType::Unknown;
+  }
+  const int n = static_cast<int>(e.args.size());
+  if (n < f->minArgs || n > f->maxArgs) {
+    if (report)
+      diags_.error("E012", e.range,
+                   "'" + e.text + "' takes " + std::to_string(f->minArgs) + " argument" +
+                       (f->minArgs == 1 ? "" : "s") + ", got " + std::to_string(n));
+    return ValueType::Unknown;
+  }
+  const std::string name = e.text;
+  const bool vectorFn = name == "length" || name == "dot" || name == "normalize";
+  for (size_t k = 0; k < args.size(); ++k) {
+    ValueType want = vectorFn ? ValueType::Vec3 : ValueType::Num;
+    if (args[k] != ValueType::Unknown && args[k] != want && report)
+      diags_.error("E013", e.args[k]->range,
+                   "argument " + std::to_string(k + 1) + " of '" + name + "' must be a " +
+                       valueTypeName(want) + ", got a " + valueTypeName(args[k]));
+  }
+  return record(e, name == "normalize" ? ValueType::Vec3 : ValueType::Num, report);
+}
+
+ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
+  Where inner{w.rule, false};
+  // context.mask(texCoord): the texture coordinate is the scope's own, named not computed.
+  const bool textureLookup = e.object == "context";
+  if (!textureLookup)
+    for (const auto& a : e.args) typeOf(*a, inner, report);
+  auto fail = [&](const std::string& msg) {
+    if (report) diags_.error("E025", e.range, msg);
+    return ValueType::Unknown;
+  };
+  if (e.object == "Scope") {
+    static const std::set<std::string> kScope = {"sx", "sy", "sz", "px", "py", "pz"};
+    if (kScope.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
+    if (e.text == "occ" && e.hasCall && e.args.size() == 1)
+      return record(e, ValueType::Str, report);
+    return fail("unknown scope query 'Scope." + e.text +
+                "' (Scope.sx sy sz px py pz, Scope.occ(\"noparent\"))");
+  }
+  if (e.object == "Shape") {
+    if ((e.text == "depth" || e.text == "index") && !e.hasCall)
+      return record(e, ValueType::Num, report);
+    if (e.text == "visible" && e.hasCall && e.args.size() == 1)
+      return record(e, ValueType::Bool, report);
+    return fail("unknown shape query 'Shape." + e.text +
+                "' (Shape.depth, Shape.index, Shape.visible(\"street\"))");
+  }
+  if (textureLookup) {
+    if (e.args.size() > 1 || (e.args.size() == 1 && (e.args[0]->kind != ExprKind::Ident ||
+                                                      e.args[0]->text != "texCoord")))
+      return fail("a texture context is sampled at the scope's texture coordinate: write "
+                  "context." + e.text + "(texCoord)");
+    for (const auto& t : res_.textures)
+      if (t == e.text) return record(e, ValueType::Num, report);
+    return fail("'context." + e.text + "' names no texture; declare it with `texture " +
+                e.text + " = \"file.png\";`");
+  }
+  for (const auto& f : res_.fields)
+    if (f == e.object) {
+      bool vec = false;
+      if (!isFieldMember(e.text, vec) || e.hasCall)
+        return fail("unknown field query '" + e.object + "." + e.text +
+                    "' (vector1 vector2 value1 value2 length1 Xangle1 div curl gradient "
+                    "mincurv maxcurv meancurv gausscurv ...)");
+      return record(e, vec ? ValueType::Vec3 : ValueType::Num, report);
+    }
+  return fail("'" + e.object + "' is not a field, a texture context, Scope or Shape");
+}
+
+}  // namespace fgsg::frontend::sema_detail

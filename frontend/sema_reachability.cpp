@@ -1,0 +1,86 @@
+// Where the derivation starts and what it can reach: the axiom or the start symbol
+// (E024), then the warnings about rules that can never apply (W002) and shapes that have
+// no rule (W001).
+
+#include "frontend/sema_analyzer.h"
+
+#include "frontend/builtins.h"
+
+#include <functional>
+#include <vector>
+
+namespace fgsg::frontend::sema_detail {
+
+void Analyzer::checkStart() {
+  if (prog_.axioms.size() > 1)
+    diags_.error("E024", prog_.axioms[1].range, "only one axiom may be declared");
+  if (!prog_.axioms.empty()) return;
+  for (const char* name : {"Axiom", "axiom", "start", "Start", "Lot", "footprint"}) {
+    int s = res_.findSymbol(name);
+    if (s >= 0 && !res_.symbols[s].rules.empty()) {
+      if (!res_.symbols[s].params.empty()) {
+        diags_.error("E024", res_.symbols[s].firstUse,
+                     std::string("the start symbol '") + name +
+                         "' must not take parameters; declare `axiom: " + name + "(...);`");
+        return;
+      }
+      res_.startSymbol = name;
+      return;
+    }
+  }
+  if (prog_.rules.empty()) {
+    diags_.error("E024", SourceRange{{1, 1}, {1, 1}}, "the grammar has no rules and no axiom");
+    return;
+  }
+  const Rule& first = prog_.rules.front();
+  if (!first.predecessor.params.empty()) {
+    diags_.error("E024", first.predecessor.range,
+                 "no start: declare `axiom: ...;` or write a rule for Axiom or start (the first "
+                 "rule's predecessor takes parameters, so it cannot start the derivation)");
+    return;
+  }
+  res_.startSymbol = first.predecessor.name;
+}
+
+void Analyzer::checkReachability() {
+  std::vector<size_t> work;
+  auto mark = [&](const std::string& name) {
+    int s = res_.findSymbol(name);
+    if (s >= 0 && !res_.symbols[s].reachable) {
+      res_.symbols[s].reachable = true;
+      work.push_back(static_cast<size_t>(s));
+    }
+  };
+  bool synthesizes = false;  // pieces of a synthesized model may be any symbol
+  std::function<void(const Item&)> visit = [&](const Item& item) {
+    if (item.kind == ItemKind::Bracket)
+      for (const auto& c : item.children) visit(c);
+    if (item.kind == ItemKind::Call && item.name == "Synthesize" && !isShapeItem(item, res_))
+      synthesizes = true;
+    if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(item.name);
+    for (const auto& b : item.body)
+      for (const auto& c : b.items) visit(c);
+  };
+  if (!res_.startSymbol.empty()) mark(res_.startSymbol);
+  for (const auto& a : prog_.axioms)
+    for (const auto& item : a.successor.items) visit(item);
+  while (!work.empty()) {
+    size_t s = work.back();
+    work.pop_back();
+    for (size_t ri : res_.symbols[s].rules)
+      for (const auto& b : prog_.rules[ri].branches)
+        for (const auto& item : b.successor.items) visit(item);
+  }
+  for (const auto& s : res_.symbols) {
+    if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()))
+      diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
+                     "the rules for '" + s.name + "' can never apply: no derivation from the "
+                     "start creates a '" + s.name + "'");
+    else if (s.reachable && s.rules.empty() && !findCommand(s.name))
+      diags_.warning("W001", s.firstUse,
+                     "'" + s.name + "' has no rule: it stays a terminal shape and places no "
+                     "geometry");
+  }
+}
+
+}  // namespace fgsg::frontend::sema_detail

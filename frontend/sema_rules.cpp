@@ -1,0 +1,126 @@
+// Checking rules: parameters declared twice, guards, contexts outside a parallel
+// derivation, probabilities (each and their sums per symbol), and the items of successors
+// and axioms: turtle symbols, shape items against their symbol's parameter types, and
+// commands (handed to sema_commands.cpp).
+
+#include "frontend/sema_analyzer.h"
+
+#include "frontend/builtins.h"
+
+#include <cmath>
+#include <set>
+
+namespace fgsg::frontend::sema_detail {
+
+void Analyzer::checkRules() {
+  for (size_t i = 0; i < prog_.rules.size(); ++i) {
+    const Rule& r = prog_.rules[i];
+    Where w{static_cast<int>(i), false};
+    std::set<std::string> names;
+    for (const auto& [name, type] : res_.ruleParams[i])
+      if (!names.insert(name).second)
+        diags_.error("E021", r.range, "parameter '" + name + "' is declared twice in this rule");
+    if (r.guard) expect(*r.guard, w, ValueType::Bool, "a guard");
+    if (!r.leftContext.empty() || !r.rightContext.empty()) {
+      if (res_.mode != "parallel")
+        diags_.warning("W005", r.predecessor.range,
+                       "context < > only matters in a parallel derivation (`derive parallel "
+                       "N;`); in a sequential derivation this rule never applies");
+    }
+    for (const auto& b : r.branches) {
+      if (b.probability) {
+        expect(*b.probability, w, ValueType::Num, "a probability");
+        ConstValue v;
+        if (evalConst(*b.probability, v) && v.type == ValueType::Num && v.num < 0)
+          diags_.error("E015", b.probability->range, "a probability must not be negative");
+      }
+      checkSuccessor(b.successor, w);
+    }
+  }
+  for (const auto& a : prog_.axioms) checkSuccessor(a.successor, Where{});
+  checkProbabilitySums();
+}
+
+// Weights are normalised among the rules whose guards hold; a sum other than 1 over
+// unguarded constant weights is legal but worth a word, a zero sum is a mistake.
+void Analyzer::checkProbabilitySums() {
+  for (const auto& s : res_.symbols) {
+    double sum = 0;
+    bool allConst = true, anyExplicit = false;
+    for (size_t ri : s.rules) {
+      const Rule& r = prog_.rules[ri];
+      if (r.guard) allConst = false;
+      for (const auto& b : r.branches) {
+        if (!b.probability) {
+          sum += 1;
+          continue;
+        }
+        anyExplicit = true;
+        ConstValue v;
+        if (evalConst(*b.probability, v) && v.type == ValueType::Num)
+          sum += v.num;
+        else
+          allConst = false;
+      }
+    }
+    if (!allConst || !anyExplicit || s.rules.empty()) continue;
+    const Rule& first = prog_.rules[s.rules.front()];
+    if (sum <= 0)
+      diags_.error("E015", first.range,
+                   "the probabilities of the rules for '" + s.name + "' add up to " +
+                       formatNumber(sum) + "; at least one must be positive");
+    else if (std::abs(sum - 1.0) > 1e-9)
+      diags_.warning("W003", first.range,
+                     "the probabilities of the rules for '" + s.name + "' add up to " +
+                         formatNumber(sum) + "; they are normalised to 1");
+  }
+}
+
+void Analyzer::checkSuccessor(const Successor& s, const Where& w) {
+  for (const auto& item : s.items) checkItem(item, w);
+}
+
+void Analyzer::checkItem(const Item& item, const Where& w) {
+  switch (item.kind) {
+    case ItemKind::Bracket:
+      for (const auto& c : item.children) checkItem(c, w);
+      return;
+    case ItemKind::Turtle:
+      if (item.name == "$" || item.name == "%")
+        diags_.error("E016", item.range,
+                     "turtle symbol '" + item.name + "' (" +
+                         (item.name == "$" ? "roll to horizontal" : "cut branch") +
+                         ") is not supported yet; use + - & ^ \\ / | ! instead");
+      if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");
+      if (item.args.size() > 1)
+        diags_.error("E016", item.range,
+                     "turtle symbol '" + item.name + "' takes at most one argument");
+      for (const auto& a : item.args) expect(*a, w, ValueType::Num, "a turtle argument");
+      return;
+    case ItemKind::Call: break;
+  }
+  if (isShapeItem(item, res_)) {
+    checkShapeItem(item, w);
+    return;
+  }
+  checkCommand(item, *findCommand(item.name), w);
+}
+
+void Analyzer::checkShapeItem(const Item& item, const Where& w) {
+  int idx = res_.findSymbol(item.name);
+  if (item.hasBody)
+    diags_.error("E018", item.range,
+                 "'" + item.name + "' is a shape symbol, not a command: it takes no { } body");
+  if (idx < 0) return;
+  const auto& params = res_.symbols[idx].params;
+  for (size_t k = 0; k < item.args.size(); ++k) {
+    ValueType t = typeOf(*item.args[k], w, true);
+    if (k < params.size() && t != ValueType::Unknown && t != params[k])
+      diags_.error("E020", item.args[k]->range,
+                   "argument " + std::to_string(k + 1) + " of '" + item.name + "' is a " +
+                       valueTypeName(t) + " here but a " + valueTypeName(params[k]) +
+                       " elsewhere");
+  }
+}
+
+}  // namespace fgsg::frontend::sema_detail
