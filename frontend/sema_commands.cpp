@@ -1,4 +1,4 @@
-// Checking a command item (S, Subdiv, Repeat, Comp, I, ...): its argument count, the
+// Checking a command item (S, Subdiv, Repeat, Comp, Center, I, ...): its argument count, the
 // type of each argument, the constant strings some take (axes, selectors, roof kinds,
 // assets), and its { } body against the command's BodyRule (frontend/builtins.h).
 
@@ -39,9 +39,11 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     return;
   }
   checkBody(item, cmd);
+  bool stringOk = false;  // the last stringArg was a constant string (possibly empty)
   auto stringArg = [&](size_t k, const char* what) -> std::string {
     ConstValue v;
-    if (!evalConst(*item.args[k], v) || v.type != ValueType::Str) {
+    stringOk = evalConst(*item.args[k], v) && v.type == ValueType::Str;
+    if (!stringOk) {
       diags_.error("E017", item.args[k]->range,
                    std::string("the ") + what + " of '" + item.name + "' must be a constant string: " +
                        cmd.signature);
@@ -65,7 +67,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::Subdiv: {
       std::string axis = stringArg(0, "axis");
       int mask = axisMask(axis);
-      if (!axis.empty() && (mask != 1 && mask != 2 && mask != 4))
+      if (stringOk && (mask != 1 && mask != 2 && mask != 4))
         diags_.error("E028", item.args[0]->range,
                      "Subdiv splits along one axis: \"X\", \"Y\" or \"Z\", not \"" + axis + "\"");
       numArgs(1, true);
@@ -74,14 +76,21 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::Repeat: {
       std::string axes = stringArg(0, "axes");
       int mask = axisMask(axes);
-      if (!axes.empty() && mask <= 0)
+      if (stringOk && mask <= 0)
         diags_.error("E028", item.args[0]->range,
                      "Repeat axes must be letters X, Y, Z each at most once, not \"" + axes + "\"");
-      else if (!axes.empty() && static_cast<int>(axes.size()) != n - 1)
+      else if (stringOk && static_cast<int>(axes.size()) != n - 1)
         diags_.error("E016", item.range,
                      "Repeat(\"" + axes + "\", ...) needs one size per axis: " +
                          std::to_string(axes.size()) + " expected, got " + std::to_string(n - 1));
       numArgs(1, false);
+      break;
+    }
+    case CommandId::Center: {
+      const std::string axes = stringArg(0, "axes");
+      if (stringOk && axisMask(axes) <= 0)
+        diags_.error("E028", item.args[0]->range,
+                     "Center axes must be letters X, Y, Z each at most once, as in \"xz\", not \"" + axes + "\"");
       break;
     }
     case CommandId::Comp: {
@@ -89,7 +98,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
           "faces", "sidefaces", "top", "bottom", "front", "back", "left", "right",
           "edges", "sideedges", "topedges", "bottomedges"};
       std::string sel = stringArg(0, "selector");
-      if (!sel.empty() && !kSelectors.count(sel))
+      if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
                          "\" (faces, sidefaces, top, bottom, front, back, left, right, edges, "
@@ -98,7 +107,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Roof: {
       std::string kind = stringArg(0, "roof kind");
-      if (!kind.empty() && kind != "hipped" && kind != "gable" && kind != "pyramid")
+      if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid")
         diags_.error("E028", item.args[0]->range,
                      "unknown roof kind \"" + kind + "\" (hipped, gable or pyramid)");
       numArgs(1, false);

@@ -100,6 +100,7 @@ enum class OpKind : uint8_t {
   Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
   LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
   Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
+  Center,        // index = axes mask (1 X, 2 Y, 4 Z): centre the scope in the successor's first scope
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

@@ -272,6 +272,10 @@ class Lowerer {
         allArgs(1);
         break;
       case CommandId::Lock: op.kind = OpKind::Lock; break;
+      case CommandId::Center:
+        op.kind = OpKind::Center;
+        for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));
+        break;
       case CommandId::Line: {
         // Always two arguments: the defaults are filled in here, not by the runtime.
         op.kind = OpKind::Line;

@@ -264,6 +264,14 @@ class Printer {
     return axis < 3 ? std::string(1, "xyz"[axis]) : "axis#" + std::to_string(axis);
   }
 
+  // An axes mask (1 X, 2 Y, 4 Z) as the letters it selects: "xz".
+  static std::string axesName(uint32_t mask) {
+    std::string axes;
+    for (uint32_t a = 0; a < 3; ++a)
+      if (mask & (1u << a)) axes += "xyz"[a];
+    return mask > 7 || axes.empty() ? "mask#" + std::to_string(mask) : axes;
+  }
+
   void writeOp(const Rule* r, const Op& op, int depth) {
     auto withArgs = [&](std::string s) {
       return op.args.empty() ? s : s + " " + list(r, op.args);
@@ -298,14 +306,8 @@ class Printer {
         break;
       }
       case OpKind::Subdiv: text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes); break;
-      case OpKind::Repeat: {
-        std::string axes;
-        for (uint32_t a = 0; a < 3; ++a)
-          if (op.index & (1u << a)) axes += "xyz"[a];
-        if (op.index > 7 || axes.empty()) axes = "mask#" + std::to_string(op.index);
-        text = "repeat " + axes + " " + sizeList(r, op.sizes);
-        break;
-      }
+      case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
+      case OpKind::Center: text = "center " + axesName(op.index); break;
       case OpKind::Comp: text = "comp " + stringLit(op.str); break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;

@@ -32,6 +32,7 @@ const char* opName(OpKind k) {
     case OpKind::Line: return "line";
     case OpKind::LineSeg: return "lineseg";
     case OpKind::Synthesize: return "synthesize";
+    case OpKind::Center: return "center";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -418,6 +419,10 @@ class Verifier {
         numArgs(op, r, 0);
         break;
       case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Center:
+        if (op.index == 0 || op.index > 7) problem("axes mask " + std::to_string(op.index));
+        numArgs(op, r, 0);
+        break;
       case OpKind::Roof:
         stringId(op.str);
         if (op.bodies.size() > 1) expectBodies(op, 1);  // the body is optional

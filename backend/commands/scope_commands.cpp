@@ -4,7 +4,7 @@ namespace fgsg::backend {
 
 std::vector<ir::OpKind> ScopeCommands::kinds() const {
   using K = ir::OpKind;
-  return {K::Translate, K::Rotate, K::RotateNormal, K::Scale, K::Push, K::Pop};
+  return {K::Translate, K::Rotate, K::RotateNormal, K::Scale, K::Push, K::Pop, K::Center};
 }
 
 void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
@@ -39,8 +39,26 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
       st.line = stack_.back().line;
       stack_.pop_back();
       break;
+    case ir::OpKind::Center: center(st, op); break;
     default: break;
   }
+}
+
+// CGA's center(axes): moves the scope, along each selected axis of its own, so that its
+// centre lines up with the centre of the scope the successor (or split body) started
+// with. Sizes and orientation stay.
+void ScopeCommands::center(State& st, const ir::Op& op) {
+  if (surface_)
+    throw DeriveError{op.loc, "R009",
+                      "Center moves the scope through space, but on a surface the scope stands on a "
+                      "surface point: move it along the surface with T"};
+  if (!st.origin) throw DeriveError{op.loc, "R900", "internal: Center without the successor's first scope"};
+  const rt::Scope& origin = *st.origin;
+  const rt::Vec3 from = st.scope.P + st.scope.axes * (0.5 * st.scope.S);
+  const rt::Vec3 to = origin.P + origin.axes * (0.5 * origin.S);
+  const rt::Vec3 shift = to - from;
+  for (int k = 0; k < 3; ++k)
+    if (op.index & (1u << k)) st.scope.P += shift.dot(st.scope.axes.col(k)) * st.scope.axes.col(k);
 }
 
 }  // namespace fgsg::backend

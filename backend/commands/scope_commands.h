@@ -1,5 +1,5 @@
-// Scope and transforms: T, Rx/Ry/Rz/R, RS, S and the [ ] stack (CGA's scope commands,
-// ABOP's branches). On a surface, T traces along the first field and RS turns about the
+// Scope and transforms: T, Rx/Ry/Rz/R, RS, S, Center and the [ ] stack (CGA's scope
+// commands, ABOP's branches). On a surface, T traces along the first field and RS turns about the
 // surface normal (commands/surface_world.h); on the plane both are plain vector algebra.
 // translate, turn and push are inline: they are the hot path of every derivation.
 #pragma once
@@ -48,6 +48,8 @@ class ScopeCommands final : public CommandFamily {
   void push(const State& st) { stack_.push_back({st.scope, st.geom, st.width, st.line}); }
 
  private:
+  void center(State& st, const ir::Op& op);
+
   const std::unique_ptr<SurfaceWorld>& surface_;
   std::vector<Saved>& stack_;
   rt::TrigMemo trig_;

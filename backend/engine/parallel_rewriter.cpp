@@ -115,6 +115,11 @@ void Derivation::checkParallelOp(const ir::Op& op) {
     case ir::OpKind::Lock:
     case ir::OpKind::Line:
     case ir::OpKind::LineSeg: sequentialOnly(op);
+    case ir::OpKind::Center:
+      throw DeriveError{op.loc, "R009",
+                        "'Center' cannot appear in a parallel (L-system) derivation: it centres the "
+                        "scope in the scope its successor started with, which a module of a string "
+                        "does not have"};
     default:
       throw DeriveError{op.loc, "R009",
                         "'" + op.name + "' cannot appear in a parallel (L-system) derivation: "

@@ -28,6 +28,7 @@ struct State {
   double width = 0.1;
   size_t stackBase = 0;
   rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
+  const rt::Scope* origin = nullptr;  // the scope the successor or body started with (Center)
 };
 
 // What one running successor knows: its random stream, key and parameters, the

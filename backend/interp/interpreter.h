@@ -1,8 +1,8 @@
-// The reference engine: executes the IR directly. Sequential (CGA/FGSG) derivations
-// rewrite one shape at a time by priority, then breadth- or depth-first; parallel
-// (L-system) derivations rewrite every module of a string per step and interpret the
-// final string with the turtle. Other engines must produce exactly its results.
-// Compiled code runs inside the same engine (deriveCompiled).
+// The reference engine: executes the IR directly, in one backend/engine/ Derivation.
+// Sequential (CGA/FGSG) derivations rewrite one shape at a time by priority, then
+// breadth- or depth-first; parallel (L-system) derivations rewrite every module of a
+// string per step and interpret the final string with the turtle. Other engines must
+// produce exactly its results. Compiled code runs inside the same engine (deriveCompiled).
 #pragma once
 
 #include "ir/ir.h"

@@ -48,6 +48,43 @@ TEST_CASE("Subdiv shares the remaining length among relative sizes", "[cga]") {
   CHECK(r.instances.assets[insts[1].asset] == "sphere");
 }
 
+TEST_CASE("Center lines the scope up with the centre of the scope its successor or body started with", "[cga]") {
+  auto r = deriveText(R"(
+    axiom: S(10, 6, 4) Lot;
+    Lot ~> Subdiv("X", 4, 6){ S(1, 1, 1) Center("xyz") I("cube") | Turned };
+    Turned ~> Rz(90) S(2, 2, 2) Center("xz") I("cube");
+  )");
+  REQUIRE(r.ok);
+  const auto& insts = r.instances.instances;
+  REQUIRE(insts.size() == 2);
+  // The first body starts on the part 0..4 x 0..6 x 0..4: a unit cube centred in it.
+  const auto mid = unitPoint(insts[0], 0.5, 0.5, 0.5);
+  CHECK(mid.x() == Approx(2.0));
+  CHECK(mid.y() == Approx(3.0));
+  CHECK(mid.z() == Approx(2.0));
+  // Turned starts on the part 4..10: centred along its own X (world +Y) and Z only;
+  // along its Y (world -X) the cube stays where Rz left it, centre x = 4 - 1.
+  const auto turned = unitPoint(insts[1], 0.5, 0.5, 0.5);
+  CHECK(turned.x() == Approx(3.0));
+  CHECK(turned.y() == Approx(3.0));
+  CHECK(turned.z() == Approx(2.0));
+  CHECK((unitPoint(insts[1], 1, 0, 0) - unitPoint(insts[1], 0, 0, 0)).y() == Approx(2.0));
+}
+
+TEST_CASE("Center is refused where there is no scope to centre in, or it would leave the surface", "[errors]") {
+  auto parallel = deriveText("derive parallel 2;\naxiom: A;\nA ~> Center(\"x\") F;");
+  CHECK_FALSE(parallel.ok);
+  REQUIRE(parallel.messages.size() == 1);
+  CHECK(parallel.messages[0].code == "R009");
+  CHECK(parallel.messages[0].line == 3);
+  CHECK(parallel.messages[0].col == 6);
+  auto surface = deriveText("surface plane(4, 4);\naxiom: A;\nA ~> S(1, 1, 1) Center(\"xy\") I(\"cube\");");
+  CHECK_FALSE(surface.ok);
+  REQUIRE(surface.messages.size() == 1);
+  CHECK(surface.messages[0].code == "R009");
+  CHECK(surface.messages[0].message.find("along the surface with T") != std::string::npos);
+}
+
 TEST_CASE("Scope commands compose as in FGSG Fig. 4: rotate, then translate along the new X", "[scope]") {
   auto r = deriveText(R"(
     Axiom ~> [ Rz(90) T(2, 0, 0) I("cube") ] T(0, 0, 5) S(1, 2, 3) I("cube");
