@@ -91,6 +91,7 @@ struct SemaResult {
   std::string startSymbol;  // the symbol the derivation starts from when no axiom is given
   std::string mode = "breadthfirst";
   int steps = 0;
+  int depthBound = -1;  // `derive breadthfirst N;`: shapes at depth >= N stay terminal; -1: none
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
   // `collision ...;` (the first declaration): every I() tested (all), and the metric
   // "mesh", "centre" or "geodesic" with its radius (0 for mesh).

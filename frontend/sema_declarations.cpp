@@ -14,7 +14,7 @@ namespace fgsg::frontend::sema_detail {
 
 namespace {
 
-constexpr int kMaxParallelSteps = 2147483647;  // INT32_MAX: ir::Module::steps is an int
+constexpr int kMaxDeriveCount = 2147483647;  // INT32_MAX: ir::Module::steps and depthBound are ints
 
 }  // namespace
 
@@ -62,33 +62,38 @@ void Analyzer::collectEnvironment() {
     diags_.error("E029", prog_.surfaces[1].range, "only one surface may be declared");
   checkSurfaceAndFields(prog_, res_, diags_,
                         [this](const Expr& e, ConstValue& v) { return evalConst(e, v); });
+  // The last `derive` wins. Its number is the step count of a parallel derivation and
+  // the depth bound of a sequential one (both: how many levels are rewritten).
   for (const auto& d : prog_.derives) {
-    if (d.mode == "parallel") {
-      ConstValue steps;
-      if (d.steps && !evalConst(*d.steps, steps)) {
-        if (const Expr* zero = zeroDivisor(*d.steps)) {
-          diags_.error("E027", zero->range, "division by zero");
-          continue;
-        }
-      }
-      // The step count is an int in the IR: larger values are refused, not wrapped.
-      if (!d.steps || !evalConst(*d.steps, steps) || steps.type != ValueType::Num ||
-          !(steps.num >= 0) || steps.num > kMaxParallelSteps || steps.num != std::floor(steps.num)) {
-        diags_.error("E029", d.steps ? d.steps->range : d.range,
-                     "`derive parallel N;` needs a constant whole number of steps N from 0 to " +
-                         std::to_string(kMaxParallelSteps) +
-                         (d.steps && evalConst(*d.steps, steps) && steps.type == ValueType::Num
-                              ? ", got " + wholeNumberText(steps.num)
-                              : std::string()));
-        continue;
-      }
-      res_.steps = static_cast<int>(steps.num);
-    } else if (d.mode != "breadthfirst" && d.mode != "depthfirst") {
+    const bool parallel = d.mode == "parallel";
+    if (!parallel && d.mode != "breadthfirst" && d.mode != "depthfirst") {
       diags_.error("E029", d.range,
                    "unknown derivation mode '" + d.mode +
-                       "' (expected parallel N, breadthfirst or depthfirst)");
+                       "' (expected parallel N, or breadthfirst or depthfirst with an optional depth bound N)");
       continue;
     }
+    ConstValue count;
+    if (d.steps && !evalConst(*d.steps, count)) {
+      if (const Expr* zero = zeroDivisor(*d.steps)) {
+        diags_.error("E027", zero->range, "division by zero");
+        continue;
+      }
+    }
+    // The count is an int in the IR: larger values are refused, not wrapped.
+    if ((parallel || d.steps) &&
+        (!d.steps || !evalConst(*d.steps, count) || count.type != ValueType::Num || !(count.num >= 0) ||
+         count.num > kMaxDeriveCount || count.num != std::floor(count.num))) {
+      diags_.error("E029", d.steps ? d.steps->range : d.range,
+                   (parallel ? "`derive parallel N;` needs a constant whole number of steps N from 0 to "
+                             : "`derive " + d.mode + " N;` bounds the depth: N must be a constant whole number from 0 to ") +
+                       std::to_string(kMaxDeriveCount) +
+                       (d.steps && evalConst(*d.steps, count) && count.type == ValueType::Num
+                            ? ", got " + wholeNumberText(count.num)
+                            : std::string()));
+      continue;
+    }
+    if (parallel) res_.steps = static_cast<int>(count.num);
+    res_.depthBound = !parallel && d.steps ? static_cast<int>(count.num) : -1;
     res_.mode = d.mode;
   }
   for (const auto& t : prog_.turtles) {

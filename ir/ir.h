@@ -251,6 +251,9 @@ struct Module {
   Block axiom;
   DeriveMode mode = DeriveMode::BreadthFirst;
   int steps = 0;  // parallel derivation steps
+  // `derive breadthfirst N;` / `derive depthfirst N;`: the grammar's own depth bound,
+  // shapes at depth >= N stay terminal (as --max-depth N, without its warning); -1: none.
+  int depthBound = -1;
   TurtleSettings turtle;
   CollisionSettings collision;
   SurfaceSpec surface;

@@ -50,6 +50,7 @@ class Lowerer {
               : sema_.mode == "depthfirst" ? DeriveMode::DepthFirst
                                            : DeriveMode::BreadthFirst;
     m_.steps = sema_.steps;
+    m_.depthBound = sema_.depthBound;
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth};
     lowerCollision();
     return std::move(m_);

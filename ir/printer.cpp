@@ -77,6 +77,7 @@ class Printer {
       case DeriveMode::Parallel: derive += "parallel"; break;
     }
     if (m_.mode == DeriveMode::Parallel || m_.steps != 0) derive += " " + std::to_string(m_.steps);
+    if (m_.mode != DeriveMode::Parallel && m_.depthBound >= 0) derive += " " + std::to_string(m_.depthBound);
     line(0, derive);
     const TurtleSettings defaults;
     if (m_.turtle.angle != defaults.angle || m_.turtle.step != defaults.step ||

@@ -43,6 +43,9 @@ struct FgsgContext {
   uint64_t terminals = 0;
   uint64_t shapeBudget = 0;
   uint32_t depthLimit = 0;
+  // 1: the depth limit is the grammar's own (`derive breadthfirst N;`): a shape there
+  // stays terminal without a warning, so direct code counts it instead of giving up.
+  uint32_t depthLimitQuiet = 0;
   fgsg::rt::RandomStream* rng = nullptr;  // the shape's stream (Rand)
   // Direct derivation: shapes visited so far (each shape's preorder number, which puts
   // the instances it places in the interpreter's order afterwards).
@@ -63,13 +66,14 @@ struct FgsgContext {
 static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact) == 4 &&
                   offsetof(FgsgContext, shapes) == 8 && offsetof(FgsgContext, rewrites) == 16 &&
                   offsetof(FgsgContext, terminals) == 24 && offsetof(FgsgContext, shapeBudget) == 32 &&
-                  offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, rng) == 48 &&
+                  offsetof(FgsgContext, depthLimit) == 40 && offsetof(FgsgContext, depthLimitQuiet) == 44 &&
+                  offsetof(FgsgContext, rng) == 48 &&
                   offsetof(FgsgContext, visits) == 56 && offsetof(FgsgContext, stackFloor) == 64,
               "the context layout generated code assumes");
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 6u
+#define FGSG_ABI_VERSION 7u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of

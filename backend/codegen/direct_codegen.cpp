@@ -1,5 +1,5 @@
 // Direct (inlined) derivation: a direct symbol's function derives one shape the way
-// the interpreter does, giving up to the engine (inexact) at the depth limit or near the
+// the interpreter does, giving up to the engine (inexact) at --max-depth or near the
 // thread's stack floor, applying the chosen successor's ops to a scope in its own frame
 // (T and turns written out as the runtime's, [ ] by copies) and calling the direct
 // functions of the shapes it creates. The choice of alternative: direct_choice.cpp.
@@ -60,8 +60,19 @@ void ProgramCodegen::directSymbol(uint32_t s) {
   llvm::BasicBlock* body = newBlock("shape");
   b_.SetInsertPoint(body);
 
-  // A shape at the depth limit stays terminal and the engine warns: its order matters.
-  giveUpIf(b_.CreateICmpUGE(depth_, b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimit))));
+  // A shape at the depth limit stays terminal. At --max-depth the engine warns, in its
+  // own order: give up. At the grammar's own bound (`derive breadthfirst N;`) no warning
+  // comes: count the terminal here.
+  {
+    llvm::BasicBlock* atLimit = newBlock("at_depth_limit");
+    llvm::BasicBlock* below = newBlock("below_depth_limit");
+    b_.CreateCondBr(b_.CreateICmpUGE(depth_, b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimit))), atLimit, below);
+    b_.SetInsertPoint(atLimit);
+    giveUpIf(b_.CreateICmpEQ(b_.CreateLoad(b_.getInt32Ty(), field(kDepthLimitQuiet)), b_.getInt32(0)));
+    bump(kTerminals);
+    b_.CreateBr(exit_);
+    b_.SetInsertPoint(below);
+  }
   // Native recursion stops before the thread's stack runs out; the engine's own order
   // needs no stack per level.
   llvm::Value* frame = b_.CreateIntrinsic(llvm::Intrinsic::frameaddress, {ptr_}, {b_.getInt32(0)});

@@ -107,7 +107,7 @@ class ProgramCodegen {
 
   // Fields of FgsgContext generated code uses (offsets checked in runtime/abi.h).
   enum ContextField : uint64_t { kStop = 0, kInexact = 4, kShapes = 8, kRewrites = 16,
-                                 kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kRng = 48,
+                                 kTerminals = 24, kShapeBudget = 32, kDepthLimit = 40, kDepthLimitQuiet = 44, kRng = 48,
                                  kVisits = 56, kStackFloor = 64 };
   llvm::Value* field(uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_, offset); }
   llvm::Value* loadU64(uint64_t offset) { return b_.CreateLoad(b_.getInt64Ty(), field(offset)); }

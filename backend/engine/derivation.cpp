@@ -18,6 +18,12 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
       scope_(surface_, stack_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
+  maxDepth_ = opt_.maxDepth;
+  if (m_.mode != ir::DeriveMode::Parallel && m_.depthBound >= 0 &&
+      static_cast<uint32_t>(m_.depthBound) <= maxDepth_) {
+    maxDepth_ = static_cast<uint32_t>(m_.depthBound);
+    depthBoundIsGrammars_ = true;
+  }
   for (CommandFamily* family : {static_cast<CommandFamily*>(&scope_), static_cast<CommandFamily*>(&turtle_),
                                 static_cast<CommandFamily*>(&cga_), static_cast<CommandFamily*>(&collide_),
                                 static_cast<CommandFamily*>(&synthesis_)})

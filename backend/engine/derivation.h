@@ -236,6 +236,10 @@ class Derivation final : public QueryHost {
   uint32_t maxSlots_ = 0;           // the largest parameter block of any rule
   uint32_t chosenRule_ = 0;
   uint32_t creatorRule_ = UINT32_MAX;  // the rule whose successor is running
+  // Shapes at depth >= maxDepth_ stay terminal: --max-depth or the grammar's own bound
+  // (`derive breadthfirst N;`), the smaller; the grammar's is reached without a warning.
+  uint32_t maxDepth_ = 0;
+  bool depthBoundIsGrammars_ = false;
   bool depthLimitHit_ = false;
   rt::DeriveMessage depthWarning_;
   std::vector<std::array<float, 3>> symbolColor_;

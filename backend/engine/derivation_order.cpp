@@ -42,7 +42,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
   const uint32_t depth = shape.depth;
   rt::RandomStream rng{shape.key, 0};
   Frame f{params_.data(), &rng, &scope, depth, shape.index, this};
-  if (depth >= opt_.maxDepth) {
+  if (depth >= maxDepth_) {
     depthLimit(sym, shape.creator);
     return;
   }
@@ -85,7 +85,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   std::copy(slots, slots + sym.slotCount, params.begin());
   rt::RandomStream rng{key, 0};
   Frame f{params.data(), &rng, &at.scope, depth, index, this};
-  if (depth >= opt_.maxDepth) {
+  if (depth >= maxDepth_) {
     depthLimit(sym, creatorRule_);
     return false;
   }

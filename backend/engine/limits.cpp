@@ -12,7 +12,7 @@ namespace fgsg::backend {
 // of the tree is still derived. Named: the rule that created the shape.
 void Derivation::depthLimit(const ir::Symbol& sym, uint32_t creator) {
   ++stats_.terminals;
-  if (depthLimitHit_) return;
+  if (depthLimitHit_ || depthBoundIsGrammars_) return;  // the grammar's own bound is its design
   depthLimitHit_ = true;
   const ir::Rule* r = creator == UINT32_MAX ? nullptr : &m_.rules[creator];
   depthWarning_ = {false, "R004", r ? r->loc.line : 0, r ? r->loc.col : 0,

@@ -39,7 +39,8 @@ void Derivation::deriveDirect(uint32_t symbol, const double* slots, const rt::Sc
   NativeCall call;
   call.engine = this;
   call.shapeBudget = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
-  call.depthLimit = opt_.maxDepth;
+  call.depthLimit = maxDepth_;
+  call.depthLimitQuiet = depthBoundIsGrammars_ ? 1 : 0;
   call.visits = visits_;
   call.stackFloor = stackFloor_;
   program_->direct[symbol](&call, &scope, slots, key, depth, eval_.attrData());

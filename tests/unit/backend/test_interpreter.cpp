@@ -286,6 +286,28 @@ TEST_CASE("Limits stop a runaway grammar, name its rule and keep the result", "[
   CHECK(deep.messages[0].line == 2);
 }
 
+TEST_CASE("A grammar's own depth bound ends it quietly; a smaller --max-depth still warns", "[limits]") {
+  const std::string chain = "derive depthfirst 3;\naxiom: A(0);\nA(k) ~> I(\"cube\") T(1, 0, 0) A(k + 1);";
+  auto own = deriveText(chain);
+  REQUIRE(own.ok);
+  CHECK(own.messages.empty());
+  CHECK(own.instances.instances.size() == 3);
+  CHECK(own.stats.terminals == 1);
+  rt::DeriveOptions shallow;
+  shallow.maxDepth = 2;
+  auto flag = deriveText(chain, shallow);
+  REQUIRE(flag.ok);
+  CHECK(flag.instances.instances.size() == 2);
+  REQUIRE(flag.messages.size() == 1);
+  CHECK(flag.messages[0].code == "R004");
+  CHECK(flag.messages[0].message.find("depth limit 2 (--max-depth)") != std::string::npos);
+  rt::DeriveOptions deep;
+  deep.maxDepth = 10;  // the grammar's 3 is smaller: it applies, without a warning
+  auto both = deriveText(chain, deep);
+  CHECK(both.messages.empty());
+  CHECK(both.instances.instances.size() == 3);
+}
+
 TEST_CASE("Constructs whose runtime comes later fail clearly when run", "[errors]") {
   auto r = deriveText("Axiom ~> Marching(0.1, 30, true){ Top, Ext };\nTop ~> I(\"cube\");\nExt ~> I(\"cube\");");
   CHECK_FALSE(r.ok);
