@@ -179,6 +179,11 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
                                             opt.derive, assets, &engineReport, jit.get());
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
   if (!reportMessages(result, compiled->source)) return 1;
+  // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started
+  // (the JIT's compile excluded), the tenth a limit may overshoot, but has at least 0.1 S
+  // of its own, so that a derivation stopped at its limit still writes what it kept.
+  const double assemblySeconds = std::max(1.1 * opt.derive.maxSeconds - deriveSeconds, 0.1 * opt.derive.maxSeconds);
+  const rt::Deadline assemblyDeadline = rt::Deadline::after(assemblySeconds);
 
   t0 = std::chrono::steady_clock::now();
   std::vector<int> meshOf;
@@ -189,7 +194,18 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
   }
   rt::Mesh mesh;
   try {
-    mesh = rt::assembleInstances(result.instances, assets, meshOf);
+    size_t assembled = 0;
+    mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled);
+    if (assembled < result.instances.instances.size()) {
+      rt::DeriveResult cut;
+      cut.messages.push_back({false, "R004", 0, 0,
+                              "assembly stopped after " + std::to_string(opt.derive.maxSeconds) +
+                                  " s (--max-seconds): the first " + std::to_string(assembled) + " of " +
+                                  std::to_string(result.instances.instances.size()) +
+                                  " instances are written"});
+      reportMessages(cut, compiled->source);
+      result.instances.instances.resize(assembled);  // --instances lists what the mesh holds
+    }
   } catch (const std::bad_alloc&) {
     rt::DeriveResult failed;
     failed.messages.push_back({true, "R020", 0, 0,

@@ -144,32 +144,65 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 }
 
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
-                       const std::vector<int>& meshOf) {
-  // Pass 1 counts each instance's output; prefix sums give every instance its own output
-  // range, so pass 2 writes in parallel yet the bytes do not depend on the scheduling.
-  const std::vector<Counts> counts = countAll(list, library, meshOf);
-  const size_t n = counts.size();
-  std::vector<size_t> firstVertex(n + 1, 0), firstTriangle(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) {
-    firstVertex[i + 1] = firstVertex[i] + counts[i].vertices;
-    firstTriangle[i + 1] = firstTriangle[i] + counts[i].triangles;
-  }
+                       const std::vector<int>& meshOf, const Deadline* deadline, size_t* assembled) {
+  // Block by block, in list order: pass 1 counts each instance's output; prefix sums
+  // give every instance its own output range, so pass 2 writes in parallel yet the bytes
+  // depend neither on the scheduling nor on the blocks. A block is a millisecond or so of
+  // work, so a deadline is noticed in time.
+  constexpr size_t kBlockTriangles = 4096;
+  const size_t n = list.instances.size();
   Mesh out;
-  out.positions.resize(3 * firstVertex[n]);
-  out.normals.resize(3 * firstVertex[n]);
-  out.colors.resize(3 * firstVertex[n]);
-  out.indices.resize(3 * firstTriangle[n]);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
-    Scratch s;
-    for (size_t i = r.begin(); i != r.end(); ++i) {
-      const Instance& inst = list.instances[i];
-      const Mesh* m = assetOf(inst, library, meshOf);
-      if (!m || counts[i].triangles == 0) continue;
-      const Placement p = placementOf(inst);
-      classify(*m, p, s);
-      emit(*m, inst, p, s, firstVertex[i], firstTriangle[i], out);
+  std::vector<Counts> counts;
+  std::vector<size_t> firstVertex, firstTriangle;
+  // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
+  // arrays never move while they grow block by block.
+  size_t maxVertices = 0, maxTriangles = 0;
+  for (const Instance& inst : list.instances)
+    if (const Mesh* m = assetOf(inst, library, meshOf)) maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
+  out.positions.reserve(3 * maxVertices);
+  out.normals.reserve(3 * maxVertices);
+  out.colors.reserve(3 * maxVertices);
+  out.indices.reserve(3 * maxTriangles);
+  size_t begin = 0;
+  while (begin < n && !(deadline && deadline->passed())) {
+    size_t end = begin, work = 0;
+    while (end < n && (end == begin || work < kBlockTriangles)) {
+      const Mesh* m = assetOf(list.instances[end++], library, meshOf);
+      work += 1 + (m ? m->triangleCount() : 0);
     }
-  });
+    const size_t k = end - begin;
+    counts.assign(k, Counts{});
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
+      Scratch s;
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        const Instance& inst = list.instances[begin + i];
+        if (const Mesh* m = assetOf(inst, library, meshOf)) counts[i] = classify(*m, placementOf(inst), s);
+      }
+    });
+    firstVertex.assign(k + 1, out.positions.size() / 3);
+    firstTriangle.assign(k + 1, out.indices.size() / 3);
+    for (size_t i = 0; i < k; ++i) {
+      firstVertex[i + 1] = firstVertex[i] + counts[i].vertices;
+      firstTriangle[i + 1] = firstTriangle[i] + counts[i].triangles;
+    }
+    out.positions.resize(3 * firstVertex[k]);
+    out.normals.resize(3 * firstVertex[k]);
+    out.colors.resize(3 * firstVertex[k]);
+    out.indices.resize(3 * firstTriangle[k]);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
+      Scratch s;
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        const Instance& inst = list.instances[begin + i];
+        const Mesh* m = assetOf(inst, library, meshOf);
+        if (!m || counts[i].triangles == 0) continue;
+        const Placement p = placementOf(inst);
+        classify(*m, p, s);
+        emit(*m, inst, p, s, firstVertex[i], firstTriangle[i], out);
+      }
+    });
+    begin = end;
+  }
+  if (assembled) *assembled = begin;
   return out;
 }
 

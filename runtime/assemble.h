@@ -4,6 +4,7 @@
 #pragma once
 
 #include "runtime/assets.h"
+#include "runtime/deadline.h"
 #include "runtime/instances.h"
 #include "runtime/mesh.h"
 
@@ -25,8 +26,12 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 // The assembled mesh: positions by the instance transform, normals by its cofactor matrix
 // (correct even when one scale is zero), vertex colours from Instance::color, degenerate
 // triangles and the vertices only they used left out. Instances are emitted in list order.
+// With a `deadline`, the instances are assembled in blocks of a few thousand triangles
+// and no block starts once it has passed: the mesh holds the first `*assembled`
+// instances (all of them when it did not pass).
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
-                       const std::vector<int>& meshOf);
+                       const std::vector<int>& meshOf, const Deadline* deadline = nullptr,
+                       size_t* assembled = nullptr);
 
 // The number of triangles assembleInstances would produce, without building the mesh.
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
