@@ -15,7 +15,8 @@ std::vector<ir::OpKind> CollisionCommands::kinds() const {
 void CollisionCommands::prepare(bool grammarCollides) {
   const ir::Module& m = d_.module();
   testAll_ = m.collision.all || d_.options().collideAll;
-  if (testAll_ || grammarCollides) placement_ = std::make_unique<CollisionPlacement>(d_.assets(), d_.output(), m.collision);
+  if (testAll_ || grammarCollides)
+    placement_ = std::make_unique<CollisionPlacement>(d_.assets(), d_.output(), m.collision);
   if (placement_ && d_.surface() && m.collision.metric == ir::CollisionMetric::Geodesic)
     placement_->measureAlongSurface([this](const rt::Scope& a, const rt::Scope& b, double limit) {
       return d_.surface()->geodesicDistance(a, b, limit);

@@ -65,7 +65,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
 // symbol, or any shape inside a Lock). True when a collision happened anywhere in
 // its derivation: the shape counts as in collision.
 bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
-               uint32_t index) {
+                           uint32_t index) {
   const ir::Symbol& sym = m_.symbols[symbol];
   // Simple symbols cannot recurse, but a Lock set can: each level is a native call.
   if (onTheSpot_ >= kMaxOnTheSpotDepth)
@@ -112,7 +112,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
 // deriveNow, continued on a stack of its own: Lock sets nest as deep as the grammar
 // makes them (up to kMaxOnTheSpotDepth) whatever the caller's stack.
 bool Derivation::deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
-                           uint32_t index) {
+                                       uint32_t index) {
   struct RestoreFloor {
     uintptr_t& floor;
     uintptr_t saved;
@@ -128,8 +128,8 @@ bool Derivation::deriveNowOnFreshStack(uint32_t symbol, const double* slots, con
 
 // Runs one successor for a shape (or the axiom) and queues the shapes it creates.
 void Derivation::execRoot(uint32_t block, const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom,
-              uint64_t key, uint32_t depth, uint32_t index, const double* params,
-              uint32_t symbol, rt::RandomStream* rng, rt::LineCursor line) {
+                          uint64_t key, uint32_t depth, uint32_t index, const double* params,
+                          uint32_t symbol, rt::RandomStream* rng, rt::LineCursor line) {
   rt::RandomStream own{key, 0};
   State st{scope, geom, m_.turtle.width, stack_.size(), line, &scope};
   Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
@@ -216,7 +216,7 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 
 // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
-             const State& outer, Exec& ex, Frame& f) {
+                         const State& outer, Exec& ex, Frame& f) {
   State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope};
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);
   stack_.resize(inner.stackBase);

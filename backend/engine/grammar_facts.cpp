@@ -50,7 +50,8 @@ void Derivation::findEagerSymbols() {
     std::function<void(const ir::Block&)> scan = [&](const ir::Block& b) {
       for (const auto& op : b) {
         if (op.kind == ir::OpKind::Instance)
-          hit |= op.mode == ir::InstanceMode::Collide || (op.mode == ir::InstanceMode::Plain && collide_.testsEveryInstance());
+          hit |= op.mode == ir::InstanceMode::Collide ||
+                 (op.mode == ir::InstanceMode::Plain && collide_.testsEveryInstance());
         if (op.kind == ir::OpKind::LineSeg) hit = true;
         if (op.kind == ir::OpKind::Emit && !m_.symbols[op.index].rules.empty()) {
           if (++growing > 1) ok = false;

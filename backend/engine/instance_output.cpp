@@ -63,7 +63,7 @@ std::array<float, 3> Derivation::colorFor(const std::string& name) {
 }
 
 void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
-                   const double* params, uint32_t paramCount, ir::Loc loc) {
+                               const double* params, uint32_t paramCount, ir::Loc loc) {
   rt::Instance inst;
   inst.asset = asset;
   inst.symbol = symbol;

@@ -35,7 +35,7 @@ double Derivation::callValue(FgsgValueFn fn, const Frame& f) {
 // reports exactly (a limit, an error) makes the whole derivation start again without
 // direct derivation (deriveCompiled).
 void Derivation::deriveDirect(uint32_t symbol, const double* slots, const rt::Scope& scope, uint64_t key,
-                  uint32_t depth) {
+                              uint32_t depth) {
   NativeCall call;
   call.engine = this;
   call.shapeBudget = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
@@ -91,7 +91,8 @@ void Derivation::nativeEmit(NativeCall& call, uint32_t op, const double* slots) 
 }
 
 void Derivation::nativeOp(NativeCall& call, uint32_t op, const double* args, uint32_t n) {
-  if (op >= layout_.ops.size()) throw DeriveError{{}, "R900", "internal: compiled code names op " + std::to_string(op)};
+  if (op >= layout_.ops.size())
+    throw DeriveError{{}, "R900", "internal: compiled code names op " + std::to_string(op)};
   if (call.string)
     appendModule(*layout_.ops[op], args, n, *call.string);
   else
@@ -99,7 +100,7 @@ void Derivation::nativeOp(NativeCall& call, uint32_t op, const double* args, uin
 }
 
 void Derivation::directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
-                    uint64_t preorder) {
+                                uint64_t preorder) {
   placingShape_ = {depth, preorder};
   placeInstance(layout_.ops[op]->index, s, symbol, params, m_.symbols[symbol].slotCount, layout_.ops[op]->loc);
 }

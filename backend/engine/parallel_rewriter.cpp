@@ -60,7 +60,7 @@ void Derivation::runParallel() {
 }
 
 void Derivation::copyModule(const StringModule& mod, const std::vector<double>& args,
-                       std::vector<StringModule>& out, std::vector<double>& outArgs) {
+                            std::vector<StringModule>& out, std::vector<double>& outArgs) {
   StringModule copy = mod;
   copy.firstArg = static_cast<uint32_t>(outArgs.size());
   outArgs.insert(outArgs.end(), args.begin() + mod.firstArg,
@@ -69,8 +69,8 @@ void Derivation::copyModule(const StringModule& mod, const std::vector<double>& 
 }
 
 // Flattens a successor into string modules, evaluating every argument now.
-void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, std::vector<StringModule>& out,
-                   std::vector<double>& outArgs, uint32_t owner) {
+void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key,
+                               std::vector<StringModule>& out, std::vector<double>& outArgs, uint32_t owner) {
   StringTarget target{&out, &outArgs, key, owner};
   if (program_) {
     NativeCall call;
@@ -145,8 +145,8 @@ void Derivation::appendModule(const ir::Op& op, const double* args, uint32_t n, 
 
 // Rule choice for one module of the string: context must match, then the guard.
 const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const std::vector<StringModule>& str,
-                                      const std::vector<double>& args, size_t at,
-                                      rt::RandomStream& rng, uint32_t step) {
+                                                  const std::vector<double>& args, size_t at,
+                                                  rt::RandomStream& rng, uint32_t step) {
   candidates_.clear();
   double total = 0;
   for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
@@ -187,7 +187,7 @@ void Derivation::bind(const ir::ContextModule& cm, const StringModule& mod, cons
 // ABOP left context: walk left over symbols, skipping commands and whole branches,
 // and stepping out of the current branch into its parent.
 bool Derivation::matchLeft(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-               size_t at) {
+                           size_t at) {
   long j = static_cast<long>(at) - 1;
   for (long p = static_cast<long>(r.left.size()) - 1; p >= 0; --p) {
     const ir::ContextModule& cm = r.left[p];
@@ -217,7 +217,7 @@ bool Derivation::matchLeft(const ir::Rule& r, const std::vector<StringModule>& s
 // ABOP right context: a pattern symbol may descend into branches of the string that
 // the pattern skips; a pattern ']' skips to the end of the current branch.
 bool Derivation::matchRight(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-                size_t at) {
+                            size_t at) {
   size_t j = at + 1;
   const size_t n = str.size();
   auto skipBranch = [&](size_t from) {  // from is a '['; returns the index after its ']'

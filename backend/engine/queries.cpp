@@ -24,13 +24,13 @@ double Derivation::occlusion(const rt::Scope& scope, ir::Loc) {
 
 // Fields live on surfaces: the compiler refuses a field without one.
 double Derivation::fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member,
-                   ir::Loc at) {
+                               ir::Loc at) {
   if (!surface_) throw DeriveError{at, "R016", "field queries need a surface"};
   return surface_->fieldNumber(scope, env, member, at);
 }
 
 rt::Vec3 Derivation::fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member,
-                     ir::Loc at) {
+                                 ir::Loc at) {
   if (!surface_) throw DeriveError{at, "R016", "field queries need a surface"};
   return surface_->fieldVector(scope, env, member, at);
 }
