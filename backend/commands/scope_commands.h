@@ -1,6 +1,7 @@
 // Scope and transforms: T, Rx/Ry/Rz/R, RS, S, Center and the [ ] stack (CGA's scope
-// commands, ABOP's branches). On a surface, T traces along the first field and RS turns about the
-// surface normal (commands/surface_world.h); on the plane both are plain vector algebra.
+// commands, ABOP's branches). On a surface, T traces along the first field and RS turns
+// about the surface normal (commands/surface_world.h); on the plane both are plain
+// vector algebra.
 // translate, turn and push are inline: they are the hot path of every derivation.
 #pragma once
 

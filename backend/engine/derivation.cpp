@@ -1,3 +1,7 @@
+// A derivation from start to end: the command families registered by op kind, the
+// set-up (compiled code checked against the grammar, surface, assets, output tables) and
+// how run() ends: a limit keeps what was derived (R004), running out of memory keeps
+// nothing (R020), a DeriveError is the located error.
 #include "backend/engine/derivation.h"
 
 #include "runtime/memory_budget.h"
@@ -24,10 +28,8 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
     maxDepth_ = static_cast<uint32_t>(m_.depthBound);
     depthBoundIsGrammars_ = true;
   }
-  for (CommandFamily* family : {static_cast<CommandFamily*>(&scope_), static_cast<CommandFamily*>(&turtle_),
-                                static_cast<CommandFamily*>(&cga_), static_cast<CommandFamily*>(&collide_),
-                                static_cast<CommandFamily*>(&synthesis_)})
-    registerFamily(*family);
+  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_};
+  for (CommandFamily* family : families) registerFamily(*family);
   // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {
     const auto kind = static_cast<ir::OpKind>(k);
@@ -39,7 +41,8 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
 void Derivation::registerFamily(CommandFamily& family) {
   for (ir::OpKind kind : family.kinds()) {
     CommandFamily*& slot = familyOf_[static_cast<size_t>(kind)];
-    if (slot) throw std::logic_error("two command families apply op kind " + std::to_string(static_cast<int>(kind)));
+    if (slot)
+      throw std::logic_error("two command families apply op kind " + std::to_string(static_cast<int>(kind)));
     slot = &family;
   }
 }
