@@ -1,6 +1,7 @@
 #include "runtime/io/check_ply.h"
 
 #include <charconv>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -73,6 +74,18 @@ bool checkPlyStructure(const std::string& path, std::string_view bytes, std::str
     ++line;
     size_t end = bytes.find('\n', pos);
     if (end == std::string_view::npos) end = bytes.size();
+    // The header is text. A control byte (a form feed, NUL) splits or ends words for
+    // OpenMesh's reader where this check does not, and it then loops forever on the
+    // header; bytes from 0x80 (UTF-8 in comments and names) split nothing.
+    for (size_t i = pos; i < end; ++i) {
+      const auto c = static_cast<unsigned char>(bytes[i]);
+      if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+        char code[8];
+        std::snprintf(code, sizeof code, "0x%02x", c);
+        error = at(line) + "the PLY header holds the control byte " + code + ", which is not text";
+        return false;
+      }
+    }
     const auto tokens = split(bytes.substr(pos, end - pos));
     pos = end + 1;
     if (line == 1) {

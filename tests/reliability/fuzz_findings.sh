@@ -6,9 +6,12 @@ surface_grammar="$root/examples/fig4_on_surface.fgsg"
 
 # fuzz_mesh: a PLY header without 'end_header' (a truncated file) made OpenMesh's PLY
 # reader loop forever at the end of the file, printing "Unsupported entry type".
+# (The truncated one also holds a NUL byte in its header, which is reported first.)
 for input in fuzz_ply_no_end_header.ply fuzz_ply_truncated_header.ply; do
+  message="$input: the PLY header has no 'end_header' line"
+  [ $input = fuzz_ply_truncated_header.ply ] && message="$input:4: the PLY header holds the control byte 0x00"
   for engine in interp jit; do
-    expect 1 "$input: the PLY header has no 'end_header' line" -- \
+    expect 1 "$message" -- \
       "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=$engine -o "$tmp/x.obj"
   done
   same_message "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=interp -o "$tmp/x.obj"
@@ -20,6 +23,14 @@ done
 for input in fuzz_ply_format_without_version.ply fuzz_ply_format_bad_version.ply; do
   expect 1 "$input:2: .*format" -- \
     "$fgsg" run "$surface_grammar" --surface "$inputs/$input" --engine=interp -o "$tmp/x.obj"
+done
+
+# fuzz_mesh (2026-12-02, the filters gone): a control byte in a PLY header line (here a
+# form feed inside an element name) splits words for OpenMesh's reader but not for the
+# header check, and OpenMesh then loops forever on the header.
+for engine in interp jit; do
+  expect 1 "fuzz_ply_form_feed_in_header.ply:7: the PLY header holds the control byte 0x0c, which is not text" -- \
+    "$fgsg" run "$surface_grammar" --surface "$inputs/fuzz_ply_form_feed_in_header.ply" --engine=$engine -o "$tmp/x.obj"
 done
 
 # fuzz_mesh: an OBJ face whose corners name no vertex ("f /1 /2 /3", texture indices only)
