@@ -20,6 +20,11 @@ namespace fgsg::rt::synthesis {
 
 namespace {
 
+// Words of the format that cannot name a label: a grid written back would not read.
+bool isKeyword(std::string_view name) {
+  return name == "size" || name == "label" || name == "border" || name == "layer" || name == "fgsg-labels";
+}
+
 struct Token {
   std::string_view text;
   int column = 0;  // 1-based
@@ -143,7 +148,7 @@ bool parseExampleText(std::string_view text, const std::string& fileName, Exampl
       if (!cells.empty()) { error(lineNo, toks[0].column, "E703", "labels must be declared before the grid rows", line); continue; }
       if (toks.size() < 3) { error(lineNo, toks[0].column, "E703", "expected `label NAME ASSET [options]`", line); continue; }
       std::string name(toks[1].text);
-      if (name == "size" || name == "label" || name == "border" || name == "layer" || name == "fgsg-labels") {
+      if (isKeyword(name)) {
         error(lineNo, toks[1].column, "E703", "`" + name + "` is a keyword, not a label name", line);
         continue;
       }
@@ -226,6 +231,11 @@ bool parseExampleText(std::string_view text, const std::string& fileName, Exampl
       if (it == byName.end()) {
         if (declared) {
           error(lineNo, t.column, "E707", "unknown label `" + std::string(t.text) + "`", line);
+          cells.push_back(0);
+          continue;
+        }
+        if (isKeyword(t.text)) {  // a cell would make it a label of that name
+          error(lineNo, t.column, "E703", "`" + std::string(t.text) + "` is a keyword, not a label name", line);
           cells.push_back(0);
           continue;
         }

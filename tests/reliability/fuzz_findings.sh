@@ -33,6 +33,11 @@ for engine in interp jit; do
     "$fgsg" run "$surface_grammar" --surface "$inputs/fuzz_ply_form_feed_in_header.ply" --engine=$engine -o "$tmp/x.obj"
 done
 
+# fuzz_synthesis_example (2026-12-02): a grid cell named `layer` became a label of that
+# name, and the grid written back as fgsg-labels could not be read again (E703 there).
+expect 1 "fuzz_grid_cell_named_layer.txt:4:3: error\[E703\]: .layer. is a keyword, not a label name" -- \
+  "$fgsg" synth "$inputs/fuzz_grid_cell_named_layer.txt" --size 4 4 1 --labels "$tmp/labels.txt"
+
 # fuzz_mesh: an OBJ face whose corners name no vertex ("f /1 /2 /3", texture indices only)
 # trips an assertion in OpenMesh's OBJ reader (OBJReader.cc:633, !vhandles.empty()): the
 # whole process aborts (exit 134) in both engines.
