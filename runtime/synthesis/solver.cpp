@@ -8,6 +8,7 @@
 #include "runtime/synthesis/synthesis.h"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -554,7 +555,9 @@ SynthesisResult synthesize(const Example& ex, const SynthesisOptions& options) n
   try {
     Problem P(ex, options);
     P.start = t0;
-    P.deadline = Deadline(t0, options.timeLimitSeconds);
+    // A limit of 0 s is up at once (a Deadline reads 0 as "never").
+    P.deadline = Deadline(t0, options.timeLimitSeconds > 0 ? options.timeLimitSeconds
+                                                           : std::numeric_limits<double>::min());
     std::string error;
     R.pieces = ex.labels;
     // A grid that cannot fit is refused at once, not after minutes of setting it up.

@@ -178,7 +178,7 @@ const char* kBranchy = R"(
 
 }  // namespace
 
-TEST_CASE("The same seed gives the same result; another seed another", "[random]") {
+TEST_CASE("The same seed gives the same result, another seed another", "[random]") {
   rt::DeriveOptions a;
   a.seed = 11;
   auto r1 = deriveText(kBranchy, a), r2 = deriveText(kBranchy, a);
@@ -286,7 +286,7 @@ TEST_CASE("Limits stop a runaway grammar, name its rule and keep the result", "[
   CHECK(deep.messages[0].line == 2);
 }
 
-TEST_CASE("A grammar's own depth bound ends it quietly; a smaller --max-depth still warns", "[limits]") {
+TEST_CASE("A grammar's own depth bound ends it quietly, a smaller --max-depth still warns", "[limits]") {
   const std::string chain = "derive depthfirst 3;\naxiom: A(0);\nA(k) ~> I(\"cube\") T(1, 0, 0) A(k + 1);";
   auto own = deriveText(chain);
   REQUIRE(own.ok);
@@ -365,7 +365,7 @@ TEST_CASE("The Müller building example derives one door on the street side", "[
     }
 }
 
-TEST_CASE("Synthesize fills the scope with pieces; labels with rules become shapes", "[synthesis]") {
+TEST_CASE("Synthesize fills the scope with pieces, labels with rules become shapes", "[synthesis]") {
   // Columns of wall and ground alternate along X in the example, so they do in any
   // consistent model.
   const std::string dir = std::string(FGSG_BINARY_DIR) + "/test-scratch";

@@ -397,7 +397,7 @@ TEST_CASE("Müller's guarded form: a non-successor after the first arrow is the 
   CHECK(onlyRule("A ~> B(1) C ~> D;") == "A ~> B(1) C ~> D");
 }
 
-TEST_CASE("the ';' after a rule may be left out at the end of a line", "[parse][rule]") {
+TEST_CASE("the ',' after a rule may be left out at the end of a line", "[parse][rule]") {
   Parsed fig1 = parseOk(
       "start = S(0.5, 0.5, 0.5) F\n"
       "F = [ RS(Rand(-5, 5)) T(Rand(0.6, 0.65), 0, 0) M C z ] F ;\n"
@@ -480,7 +480,7 @@ TEST_CASE("the empty successor", "[parse][successor]") {
   }
 }
 
-TEST_CASE("relative and floating sizes; '~>' is still the arrow", "[parse][successor]") {
+TEST_CASE("relative and floating sizes, '~>' is still the arrow", "[parse][successor]") {
   CHECK(onlyRule("A ~> S(1r, 0.5r, 2r);") == "A ~> S(1r, 0.5r, 2r)");
   CHECK(onlyRule("A~>Repeat(\"X\",~window_width){ T(~2) };") == "A ~> Repeat(\"X\", (~ window_width)){ T((~ 2)) }");
   Parsed p = parseOk("A ~> S(1r, ~2);");

@@ -328,7 +328,7 @@ TEST_CASE("a constant divided by zero is E027 at the divisor, alone", "[sema][co
   CHECK(has(b, "E023", 1, 11));
 }
 
-TEST_CASE("derive parallel takes 0 to 2147483647 steps; larger is E029 with the range", "[sema]") {
+TEST_CASE("derive parallel takes 0 to 2147483647 steps, larger is E029 with the range", "[sema]") {
   CHECK(analyse("derive parallel 2147483647;\naxiom: F(1);\nF(l) -> F(l);\n").sema.steps == 2147483647);
   for (const char* steps : {"2147483648", "4294967297", "1e300", "-1", "2.5"}) {
     INFO(steps);

@@ -74,7 +74,7 @@ TEST_CASE("lower: collision settings", "[ir][lower][collision]") {
   CHECK(mesh.collision.loc.line == 1);
 }
 
-TEST_CASE("lower: Line always has width and merge; LineSeg 0 or 1 argument", "[ir][lower][lines]") {
+TEST_CASE("lower: Line always has width and merge, LineSeg 0 or 1 argument", "[ir][lower][lines]") {
   Module m = compile(
       "Axiom ~> Line() LineSeg() Line(0.2) LineSeg(1.5) Line(0.3, false) Grow(0.1);\n"
       "Grow(w) ~> Line(w) LineSeg(w * 2);");

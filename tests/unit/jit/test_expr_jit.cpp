@@ -305,7 +305,7 @@ Expr query(ir::Query q, std::vector<Expr> args = {}) {
 
 }  // namespace
 
-TEST_CASE("jit: queries go through the host; a refused query is an error in the context", "[jit]") {
+TEST_CASE("jit: queries go through the host, a refused query is an error in the context", "[jit]") {
   ir::Module m;
   const uint32_t street = m.internString("street"), refused = m.internString("refused");
   rt::Scope scope;

@@ -6,12 +6,15 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace fgsg::test {
 
-// An empty folder under the build tree, one per test case (cases may run as parallel
-// processes): <build>/test-scratch/<group>/<name>.
+// An empty folder under the build tree: <build>/test-scratch/<group>/<pid>-<name>. Test
+// cases run as parallel processes, and names made from a counter repeat across them.
 inline std::filesystem::path scratchDir(const std::string& group, const std::string& name) {
-  const auto dir = std::filesystem::path(FGSG_BINARY_DIR) / "test-scratch" / group / name;
+  const auto dir = std::filesystem::path(FGSG_BINARY_DIR) / "test-scratch" / group /
+                   (std::to_string(::getpid()) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

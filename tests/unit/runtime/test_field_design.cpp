@@ -272,7 +272,7 @@ TEST_CASE("a wedge on a sphere: one +1/2 point near it, indices summing to chi",
   CHECK(indexSumTimesTwo(field.degeneracies()) == 4);  // line-field indices sum to chi = 2
 }
 
-TEST_CASE("several elements add up; a designed field on a torus has index sum 0", "[field]") {
+TEST_CASE("several elements add up, a designed field on a torus has index sum 0", "[field]") {
   const SurfaceMesh m = testing::torus(48, 24, 2.0, 0.7);
   auto frames = TangentFrames::make(m);
   FieldDesigner designer(frames);

@@ -74,7 +74,7 @@ TEST_CASE("saved field files load back from disk", "[field]") {
   CHECK(error == path + ".missing: no such file");
 }
 
-TEST_CASE("world values are projected onto the tangent plane; comments are skipped",
+TEST_CASE("world values are projected onto the tangent plane, comments are skipped",
           "[field]") {
   const SurfaceMesh m = testing::flatGrid(1, 1, 0, 0, 1, 1, 0);  // 4 vertices, normal +Z
   auto frames = TangentFrames::make(m);

@@ -169,7 +169,7 @@ TEST_CASE("a constant tensor's eigenvalues and eigenvectors are exact", "[field]
   CHECK(field.isLineField());
 }
 
-TEST_CASE("vector angles are signed and span a full turn; zero fields have no direction",
+TEST_CASE("vector angles are signed and span a full turn, zero fields have no direction",
           "[field]") {
   const SurfaceMesh m = testing::flatGrid(3, 3, 0, 0, 1, 1, 0.2);
   auto frames = TangentFrames::make(m);

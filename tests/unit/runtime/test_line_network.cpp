@@ -321,7 +321,7 @@ TEST_CASE("a line does not meet its own previous segment but a loop meets itself
   CHECK(net.points(loop.chain).size() == 5);
 }
 
-TEST_CASE("zero-length and non-finite segments are ignored; invalid cursors are ended",
+TEST_CASE("zero-length and non-finite segments are ignored, invalid cursors are ended",
           "[lines]") {
   LineNetwork net;
   LineCursor c = net.start({1, 2, 3}, {}, 0);

@@ -96,7 +96,7 @@ TEST_CASE("block modification never breaks consistency, even when blocks fail", 
   }
 }
 
-TEST_CASE("determinism: a seed gives one model; seeds differ", "[synthesis][solver]") {
+TEST_CASE("determinism: a seed gives one model, seeds differ", "[synthesis][solver]") {
   for (const auto& c : kCases) {
     Example ex = load(c.file);
     SynthesisOptions o;
@@ -231,7 +231,7 @@ TEST_CASE("connectivity: connect labels grow from one seed into one group", "[sy
   CHECK(ok >= 8);
 }
 
-TEST_CASE("failure reports say where and why; limits stop runs", "[synthesis][errors]") {
+TEST_CASE("failure reports say where and why, limits stop runs", "[synthesis][errors]") {
   // A 2-label alternation with nothing to end it: no 3-wide model exists.
   Example ex = parse("size 2 1\nA B\n");
   SynthesisOptions o;
