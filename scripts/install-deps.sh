@@ -12,6 +12,7 @@ packages=(
   libtbb-dev libfcl-dev libembree-dev
   libtinygltf-dev libstb-dev libedit-dev
   nlohmann-json3-dev
+  libcgal-dev libgmp-dev libmpfr-dev libassimp-dev libnanoflann-dev
   zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev
 )
 

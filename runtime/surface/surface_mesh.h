@@ -15,6 +15,9 @@ namespace fgsg::rt::surface {
 struct SurfaceMesh {
   std::vector<Vec3> vertices;
   std::vector<std::array<int, 3>> faces;  // counter-clockwise seen from outside
+  // The file's texture coordinates per face corner (u right, v up), when it has them:
+  // what a painted texture context is sampled with. Empty: none (an atlas is generated).
+  std::vector<std::array<Eigen::Vector2d, 3>> textureUV;
 
   // ---- filled by buildTopology() ----
   // Across edge k of face f (from faces[f][k] to faces[f][(k + 1) % 3]): the neighbouring
