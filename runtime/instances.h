@@ -17,6 +17,20 @@ struct Instance {
   std::array<float, 3> color{0.8f, 0.8f, 0.8f};
   uint32_t firstParam = 0;      // into InstanceList::params
   uint32_t paramCount = 0;
+  // A smooth terminal (Buron et al. §6): index into InstanceList::curves of the marching
+  // segment its unit box is bent along; UINT32_MAX: placed rigidly by `transform`.
+  uint32_t curve = UINT32_MAX;
+};
+
+// The path of one marching segment as a smooth terminal follows it: the cubic Bezier
+// from the segment's start to its end (control points in world space) and the surface
+// normals at both ends. An instance on it is bent so that its unit box's X axis runs
+// along the curve: a point at (x, y, z) of the straight scope (`transform`, whose X runs
+// from control[0] to control[3]) goes to B(x) + y' Y(x) + z' Z(x) for the frame along
+// the curve (runtime/marching/smooth_curves.h).
+struct CurveSegment {
+  std::array<std::array<double, 3>, 4> control{};
+  std::array<double, 3> normal0{}, normal1{};
 };
 
 // How a parameter's slots read: a number, a boolean (0/1), a string (an index into
@@ -31,6 +45,7 @@ struct InstanceList {
   // Per symbol, the kinds of its parameters; a symbol without an entry has plain numbers.
   std::vector<std::vector<ParamKind>> paramKinds;
   std::vector<std::string> strings;  // the texts string parameters refer to
+  std::vector<CurveSegment> curves;  // smooth terminals' paths (Instance::curve)
 };
 
 }  // namespace fgsg::rt
