@@ -1,0 +1,215 @@
+// Smooth terminals' curves (runtime/marching/smooth_curves.h): ends on the nodes, tangent
+// to the surface, C1 where segments meet (continuations, branches, seeds), straight on
+// straight polylines.
+#include "runtime/marching/curve_frame.h"
+#include "runtime/marching/smooth_curves.h"
+
+#include "tests/unit/marching/march_graphs.h"
+
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+
+using namespace fgsg::rt;
+using namespace fgsg::rt::marching;
+using fgsg::test::Graph;
+
+namespace {
+
+Vec3 control(const CurveSegment& c, int i) { return controlPoint(c, i); }
+Vec3 normal0(const CurveSegment& c) { return Vec3(c.normal0[0], c.normal0[1], c.normal0[2]); }
+Vec3 normal1(const CurveSegment& c) { return Vec3(c.normal1[0], c.normal1[1], c.normal1[2]); }
+Vec3 P(const Vec3& n, const Vec3& v) { return v - n * n.dot(v); }
+
+}  // namespace
+
+TEST_CASE("smooth curves start and end exactly on their nodes", "[smooth]") {
+  const Graph g = fgsg::test::sphereWalk(7, 40, 2.0);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  REQUIRE(curves.size() == g.segments.size());
+  for (size_t s = 0; s < curves.size(); ++s) {
+    const Vec3 a = g.nodes[g.segments[s].from].position, b = g.nodes[g.segments[s].to].position;
+    CHECK(control(curves[s], 0) == a);
+    CHECK(control(curves[s], 3) == b);
+    CHECK(bezierPoint(curves[s], 0.0) == a);
+    CHECK(bezierPoint(curves[s], 1.0) == b);
+    CHECK(normal0(curves[s]) == g.nodes[g.segments[s].from].normal);
+    CHECK(normal1(curves[s]) == g.nodes[g.segments[s].to].normal);
+  }
+}
+
+TEST_CASE("smooth curves are C1 and tangent to a sphere along a random polyline", "[smooth]") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Graph g = fgsg::test::sphereWalk(seed, 60, 2.0);
+    const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+    for (size_t s = 0; s + 1 < curves.size(); ++s) {
+      INFO("seed " << seed << ", joint after segment " << s);
+      const Vec3 in = bezierDerivative(curves[s], 1.0), out = bezierDerivative(curves[s + 1], 0.0);
+      CHECK((in - out).norm() < 1e-9);
+      CHECK(in.norm() > 1e-3);
+      // The frames agree, so bent terminals join.
+      const CurveFrame f1 = curveFrame(curves[s], 1.0), f2 = curveFrame(curves[s + 1], 0.0);
+      CHECK((f1.point - f2.point).norm() < 1e-9);
+      CHECK((f1.tangent - f2.tangent).norm() < 1e-9);
+      CHECK((f1.up - f2.up).norm() < 1e-9);
+      CHECK((f1.side - f2.side).norm() < 1e-9);
+    }
+    for (const CurveSegment& c : curves) {
+      // In the tangent plane at both ends, and the handles within a third of the chord.
+      const double chord = (control(c, 3) - control(c, 0)).norm();
+      CHECK(std::abs((control(c, 1) - control(c, 0)).dot(normal0(c))) < 1e-12);
+      CHECK(std::abs((control(c, 3) - control(c, 2)).dot(normal1(c))) < 1e-12);
+      CHECK((control(c, 1) - control(c, 0)).norm() <= chord / 3 + 1e-12);
+      CHECK((control(c, 3) - control(c, 2)).norm() <= chord / 3 + 1e-12);
+      CHECK(std::abs(curveFrame(c, 0.0).tangent.dot(normal0(c))) < 1e-12);
+      CHECK(std::abs(curveFrame(c, 1.0).tangent.dot(normal1(c))) < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("an inner node's tangent is the paper's: the projected sum of the segment directions", "[smooth]") {
+  const Graph g = fgsg::test::sphereWalk(11, 5, 1.5);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  for (size_t i = 1; i + 1 < g.nodes.size(); ++i) {
+    const Vec3 p = g.nodes[i].position, n = g.nodes[i].normal;
+    const Vec3 prev = g.nodes[i - 1].position, next = g.nodes[i + 1].position;
+    const Vec3 t = P(n, (p - prev).normalized() + (next - p).normalized()).normalized();
+    const double h = std::min(0.5 * (std::abs(t.dot(p - prev)) + std::abs(t.dot(next - p))),
+                              std::min((p - prev).norm(), (next - p).norm())) / 3;
+    CHECK((control(curves[i], 1) - (p + h * t)).norm() < 1e-12);
+    CHECK((control(curves[i - 1], 2) - (p - h * t)).norm() < 1e-12);
+  }
+  // At the ends, the one segment's own direction, projected.
+  const Vec3 a = g.nodes[0].position, b = g.nodes[1].position, n = g.nodes[0].normal;
+  const Vec3 t = P(n, b - a).normalized();
+  CHECK((control(curves[0], 1) - (a + std::abs(t.dot(b - a)) / 3 * t)).norm() < 1e-12);
+}
+
+TEST_CASE("a branch node gives all three of its curves one derivative", "[smooth]") {
+  Graph g;
+  const double r = 3.0;
+  const uint32_t a = g.add(fgsg::test::onSphere(Vec3(-0.4, 0.05, 1), r), Vec3(-0.4, 0.05, 1));
+  const uint32_t b = g.add(Vec3(0, 0, r), Vec3(0, 0, 1));
+  const uint32_t c = g.add(fgsg::test::onSphere(Vec3(0.3, -0.1, 1), r), Vec3(0.3, -0.1, 1));
+  const uint32_t d = g.add(fgsg::test::onSphere(Vec3(0.2, 0.35, 1), r), Vec3(0.2, 0.35, 1));
+  g.join(a, b);  // into the branch point
+  g.join(b, c);  // the main branch on
+  g.join(b, d);  // the side branch
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  const Vec3 in = bezierDerivative(curves[0], 1.0);
+  CHECK((bezierDerivative(curves[1], 0.0) - in).norm() < 1e-9);
+  CHECK((bezierDerivative(curves[2], 0.0) - in).norm() < 1e-9);
+  // The average over all three, projected: in the tangent plane z = const at b.
+  const Vec3 pb = g.nodes[b].position;
+  const Vec3 sum = (pb - g.nodes[a].position).normalized() + (g.nodes[c].position - pb).normalized() +
+                   (g.nodes[d].position - pb).normalized();
+  const Vec3 t = P(Vec3(0, 0, 1), sum).normalized();
+  CHECK((in.normalized() - t).norm() < 1e-12);
+  CHECK(std::abs(in.z()) < 1e-12);
+  for (int k = 1; k < 3; ++k) {
+    const CurveFrame f = curveFrame(curves[size_t(k)], 0.0), f0 = curveFrame(curves[0], 1.0);
+    CHECK((f.tangent - f0.tangent).norm() < 1e-9);
+    CHECK((f.up - f0.up).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("a straight evenly spaced polyline on a plane gives straight curves at thirds", "[smooth]") {
+  const Vec3 n = Vec3(0.2, -0.3, 1).normalized();
+  const Vec3 dir = n.unitOrthogonal();
+  Graph g;
+  for (int i = 0; i < 5; ++i) g.add(Vec3(1, 2, 3) + 0.7 * i * dir, n);
+  for (uint32_t i = 0; i + 1 < 5; ++i) g.join(i, i + 1);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  for (const CurveSegment& c : curves) {
+    const Vec3 a = control(c, 0), b = control(c, 3);
+    CHECK((control(c, 1) - (a + (b - a) / 3)).norm() < 1e-12);
+    CHECK((control(c, 2) - (b - (b - a) / 3)).norm() < 1e-12);
+    for (double x : {0.1, 0.25, 0.5, 0.9}) CHECK((bezierPoint(c, x) - (a + x * (b - a))).norm() < 1e-12);
+  }
+}
+
+TEST_CASE("a seed growing two ways is one smooth curve through it", "[smooth]") {
+  const Vec3 n(0, 0, 1);
+  SECTION("opposite directions: straight through") {
+    Graph g;
+    const uint32_t seed = g.add(Vec3(0, 0, 0), n);
+    g.add(Vec3(1, 0, 0), n);
+    g.add(Vec3(-0.5, 0, 0), n);
+    g.join(seed, 1);
+    g.join(seed, 2);
+    const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+    // Reversing one of them joins the two C1.
+    CHECK((bezierDerivative(curves[0], 0.0) + bezierDerivative(curves[1], 0.0)).norm() < 1e-12);
+    CHECK(bezierDerivative(curves[0], 0.0).x() > 0);
+    for (const CurveSegment& c : curves)
+      for (double x : {0.2, 0.6}) CHECK(std::abs(bezierPoint(c, x).y()) < 1e-15);
+  }
+  SECTION("an acute angle: they leave together along the bisector") {
+    Graph g;
+    const uint32_t seed = g.add(Vec3(0, 0, 0), n);
+    g.add(Vec3(1, 0.4, 0), n);
+    g.add(Vec3(1, -0.4, 0), n);
+    g.join(seed, 1);
+    g.join(seed, 2);
+    const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+    const Vec3 d = bezierDerivative(curves[0], 0.0);
+    CHECK((bezierDerivative(curves[1], 0.0) - d).norm() < 1e-12);
+    CHECK((d.normalized() - Vec3(1, 0, 0)).norm() < 1e-12);
+  }
+  SECTION("two marches meeting head on at one node") {
+    Graph g;
+    g.add(Vec3(-1, 0, 0), n);
+    g.add(Vec3(1, 0, 0), n);
+    const uint32_t meet = g.add(Vec3(0, 0.1, 0), n);
+    g.join(0, meet);
+    g.join(1, meet);
+    const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+    CHECK((bezierDerivative(curves[0], 1.0) + bezierDerivative(curves[1], 1.0)).norm() < 1e-12);
+    CHECK((bezierDerivative(curves[0], 1.0).normalized() - Vec3(1, 0, 0)).norm() < 1e-12);
+  }
+}
+
+TEST_CASE("a march turning straight back keeps a tangent and stays C1", "[smooth]") {
+  const Vec3 n(0, 0, 1);
+  Graph g;
+  g.add(Vec3(0, 0, 0), n);
+  g.add(Vec3(1, 0, 0), n);
+  g.add(Vec3(0.5, 0, 0), n);
+  g.join(0, 1);
+  g.join(1, 2);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  const Vec3 in = bezierDerivative(curves[0], 1.0);
+  CHECK((bezierDerivative(curves[1], 0.0) - in).norm() < 1e-12);
+  // The first segment's direction: the march overshoots and comes back.
+  CHECK((in.normalized() - Vec3(1, 0, 0)).norm() < 1e-12);
+  CHECK(in.norm() == Approx(3 * 0.5 / 3).epsilon(1e-12));  // h: a third of the shorter segment
+}
+
+TEST_CASE("zero-length segments are points and leave their neighbours alone", "[smooth]") {
+  const Vec3 n(0, 0, 1);
+  Graph g;
+  g.add(Vec3(0, 0, 0), n);
+  g.add(Vec3(1, 0, 0), n);
+  g.add(Vec3(1, 0, 0), n);  // a step that went nowhere
+  g.add(Vec3(2, 0, 0), n);
+  g.join(0, 1);
+  g.join(1, 2);
+  g.join(2, 3);
+  g.join(3, 3);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  for (int k = 0; k < 4; ++k) CHECK(control(curves[1], k) == Vec3(1, 0, 0));
+  for (int k = 0; k < 4; ++k) CHECK(control(curves[3], k) == Vec3(2, 0, 0));
+  // Nodes 1 and 2 each see one real segment: an end, handle a third of it.
+  CHECK((control(curves[0], 2) - Vec3(2.0 / 3, 0, 0)).norm() < 1e-15);
+  CHECK((control(curves[2], 1) - Vec3(4.0 / 3, 0, 0)).norm() < 1e-15);
+}
+
+TEST_CASE("a segment naming a missing node is refused", "[smooth]") {
+  Graph g;
+  g.add(Vec3(0, 0, 0), Vec3(0, 0, 1));
+  g.add(Vec3(1, 0, 0), Vec3(0, 0, 1));
+  g.join(0, 1);
+  g.join(1, 5);
+  CHECK_THROWS_WITH(smoothSegments(g.nodes, g.segments),
+                    "smoothSegments: segment 1 joins nodes 1 and 5, but there are 2 nodes");
+}
