@@ -1,11 +1,16 @@
 #include "runtime/assemble.h"
 
+#include "runtime/marching/curve_bend.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace fgsg::rt {
 
@@ -22,9 +27,11 @@ struct Placement {
   Matrix4d M;
   Matrix3d normalMatrix;  // cofactor of the linear part, sign-fixed for mirrors
   bool flip = false;      // a mirroring transform: reverse winding to keep it outward
+  // A smooth terminal (Instance::curve): bent along its curve after M.
+  std::optional<marching::CurveBend> bend;
 };
 
-Placement placementOf(const Instance& inst) {
+Placement placementOf(const Instance& inst, const InstanceList& list) {
   Placement p;
   p.M = Eigen::Map<const Matrix4d>(inst.transform.data());  // column-major like Eigen
   const Matrix3d A = p.M.block<3, 3>(0, 0);
@@ -40,12 +47,14 @@ Placement placementOf(const Instance& inst) {
   const double scale = a1.norm() * a2.norm() * a3.norm();
   p.flip = A.determinant() < -1e-9 * scale;
   if (p.flip) p.normalMatrix = -p.normalMatrix;
+  if (inst.curve != UINT32_MAX) p.bend.emplace(list.curves[inst.curve], inst.transform);
   return p;
 }
 
 // Per-instance working set, reused across the instances a task handles.
 struct Scratch {
   std::vector<Vector3d> world;    // asset vertices in world space
+  std::vector<Matrix3d> turn;     // bent instances: how each vertex's normal turns
   std::vector<uint32_t> remap;    // asset vertex -> output vertex within the instance
   std::vector<uint8_t> keepTri;   // triangle survives the area test
 };
@@ -61,6 +70,14 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s) {
   for (size_t v = 0; v < nv; ++v) {
     const Vector3d q(asset.positions[3 * v], asset.positions[3 * v + 1], asset.positions[3 * v + 2]);
     s.world[v] = p.M.block<3, 3>(0, 0) * q + p.M.block<3, 1>(0, 3);
+  }
+  if (p.bend) {
+    s.turn.resize(nv);
+    for (size_t v = 0; v < nv; ++v) {
+      const marching::BentPoint b = p.bend->atRigid(s.world[v]);
+      s.world[v] = b.position;
+      s.turn[v] = b.rotation;
+    }
   }
   s.remap.assign(nv, kUnused);
   s.keepTri.assign(nt, 0);
@@ -95,7 +112,7 @@ std::vector<Counts> countAll(const InstanceList& list, const AssetLibrary& libra
                       for (size_t i = r.begin(); i != r.end(); ++i) {
                         const Instance& inst = list.instances[i];
                         if (const Mesh* m = assetOf(inst, library, meshOf))
-                          counts[i] = classify(*m, placementOf(inst), s);
+                          counts[i] = classify(*m, placementOf(inst, list), s);
                       }
                     });
   return counts;
@@ -111,6 +128,7 @@ void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scr
                                               asset.normals[3 * v + 2])
                                    : Vector3d::Zero();
     Vector3d n = p.normalMatrix * n0;
+    if (p.bend) n = s.turn[v] * n;
     const double len = n.norm();
     n = len > 0 ? Vector3d(n / len) : Vector3d(0, 0, 1);
     for (int d = 0; d < 3; ++d) {
@@ -128,6 +146,16 @@ void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scr
     out.indices[3 * t + 1] = base + s.remap[tri[p.flip ? 2 : 1]];
     out.indices[3 * t + 2] = base + s.remap[tri[p.flip ? 1 : 2]];
     ++t;
+  }
+}
+
+// A curve index that names no curve is the engine's bug, said before any work starts.
+void checkCurves(const InstanceList& list) {
+  for (size_t i = 0; i < list.instances.size(); ++i) {
+    const uint32_t c = list.instances[i].curve;
+    if (c != UINT32_MAX && c >= list.curves.size())
+      throw std::out_of_range("instance " + std::to_string(i) + " follows curve " + std::to_string(c) +
+                              ", but the instance list has " + std::to_string(list.curves.size()) + " curves");
   }
 }
 
@@ -150,6 +178,7 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
   // depend neither on the scheduling nor on the blocks. A block is a millisecond or so of
   // work, so a deadline is noticed in time.
   constexpr size_t kBlockTriangles = 4096;
+  checkCurves(list);
   const size_t n = list.instances.size();
   Mesh out;
   std::vector<Counts> counts;
@@ -176,7 +205,7 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
       Scratch s;
       for (size_t i = r.begin(); i != r.end(); ++i) {
         const Instance& inst = list.instances[begin + i];
-        if (const Mesh* m = assetOf(inst, library, meshOf)) counts[i] = classify(*m, placementOf(inst), s);
+        if (const Mesh* m = assetOf(inst, library, meshOf)) counts[i] = classify(*m, placementOf(inst, list), s);
       }
     });
     firstVertex.assign(k + 1, out.positions.size() / 3);
@@ -195,7 +224,7 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
         const Instance& inst = list.instances[begin + i];
         const Mesh* m = assetOf(inst, library, meshOf);
         if (!m || counts[i].triangles == 0) continue;
-        const Placement p = placementOf(inst);
+        const Placement p = placementOf(inst, list);
         classify(*m, p, s);
         emit(*m, inst, p, s, firstVertex[i], firstTriangle[i], out);
       }
@@ -208,6 +237,7 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
 
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
                       const std::vector<int>& meshOf) {
+  checkCurves(list);
   size_t total = 0;
   for (const Counts& c : countAll(list, library, meshOf)) total += c.triangles;
   return total;

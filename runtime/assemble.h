@@ -26,6 +26,9 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 // The assembled mesh: positions by the instance transform, normals by its cofactor matrix
 // (correct even when one scale is zero), vertex colours from Instance::color, degenerate
 // triangles and the vertices only they used left out. Instances are emitted in list order.
+// A smooth terminal (Instance::curve set) is then bent along list.curves[curve]
+// (runtime/marching/curve_bend.h); a curve index past list.curves throws
+// std::out_of_range, here and in countTriangles.
 // With a `deadline`, the instances are assembled in blocks of a few thousand triangles
 // and no block starts once it has passed: the mesh holds the first `*assembled`
 // instances (all of them when it did not pass).
