@@ -22,6 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using V3 = Eigen::Vector3d;
+using V2 = Eigen::Vector2d;
 
 constexpr double kPi = 3.14159265358979323846;
 // An axis whose extent is below this fraction of the largest extent is flat: it is
@@ -31,15 +32,21 @@ constexpr double kFlatRelTolerance = 1e-6;
 // angle is below this, and sharp (split vertices) above it.
 constexpr double kCreaseAngleDegrees = 30.0;
 
-// A primitive under construction, in natural coordinates and double precision.
+// A primitive under construction, in natural coordinates and double precision. Texture
+// coordinates (`uv`, u v with v up) are either given for every vertex or for none.
 struct Builder {
   std::vector<V3> p, n;
+  std::vector<V2> uv;
   std::vector<uint32_t> idx;
 
   uint32_t vertex(const V3& pos, const V3& nrm) {
     p.push_back(pos);
     n.push_back(nrm.normalized());
     return uint32_t(p.size() - 1);
+  }
+  uint32_t vertex(const V3& pos, const V3& nrm, const V2& texCoord) {
+    uv.push_back(texCoord);
+    return vertex(pos, nrm);
   }
   void tri(uint32_t a, uint32_t b, uint32_t c) { idx.insert(idx.end(), {a, b, c}); }
 };
@@ -171,6 +178,39 @@ void buildQuad(Builder& b) {
   b.tri(0, 2, 3);
 }
 
+// Bark for marching terminals (Buron et al. 2015: "a bark cylinder (216 polygons)"): an
+// open tube along X, `sides` around and `rings` along, smooth. u runs around (the angle
+// about +X from +Y towards +Z, over [0,1] with a seam column of its own), v along X from
+// 0 to 1, so a bark image's grain follows the branch; quads are not mirrored in UV space.
+void buildBark(Builder& b, int sides, int rings) {
+  const auto cs = circle(sides);
+  for (int i = 0; i <= rings; ++i) {
+    const double x = double(i) / rings;
+    for (int j = 0; j <= sides; ++j) {
+      const auto [c, s] = cs[j % sides];
+      b.vertex({x, c, s}, {0, c, s}, {double(j) / sides, x});
+    }
+  }
+  const auto at = [&](int i, int j) { return uint32_t(i * (sides + 1) + j); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sides; ++j) {
+      // Around (j) then along (i) is counter-clockwise seen from outside.
+      b.tri(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      b.tri(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+}
+
+// A leaf card for marching terminals: the unit square in the XY plane facing +Z, its
+// texture upright seen from +Z (u = x, v = y). One-sided geometry: the glTF material is
+// double-sided, and a second face would fight the first in depth.
+void buildLeaf(Builder& b) {
+  const V3 n(0, 0, 1);
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+    b.vertex({x, y, 0}, n, {x, y});
+  b.tri(0, 1, 2);
+  b.tri(0, 2, 3);
+}
+
 void buildDisc(Builder& b, int segments) {
   const V3 n(0, 0, 1);
   const uint32_t centre = b.vertex({0, 0, 0}, n);
@@ -197,6 +237,9 @@ Mesh normaliseToUnitBox(const Builder& b) {
   Mesh m;
   m.positions.reserve(3 * b.p.size());
   m.normals.reserve(3 * b.p.size());
+  // Texture coordinates stay as they are: they address the texture, not the box.
+  if (!b.uv.empty() && b.uv.size() == b.p.size())
+    for (const V2& t : b.uv) m.texcoords.insert(m.texcoords.end(), {float(t[0]), float(t[1])});
   for (size_t i = 0; i < b.p.size(); ++i) {
     V3 nn = b.n[i].cwiseProduct(normalScale);
     if (nn.norm() > 0) nn.normalize();
@@ -328,8 +371,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<std::string>& builtinPrimitiveNames() {
-  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus",
-                                                 "ico",  "quad",     "disc"};
+  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus", "ico",
+                                                 "quad", "disc",     "bark",   "leaf"};
   return names;
 }
 
@@ -342,6 +385,8 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
       {"ico", buildIcosphere},
       {"quad", buildQuad},
       {"disc", [](Builder& b) { buildDisc(b, 32); }},
+      {"bark", [](Builder& b) { buildBark(b, 24, 9); }},  // 216 quads, as the paper's
+      {"leaf", buildLeaf},
   };
   auto it = builders.find(name);
   if (it == builders.end()) return false;
