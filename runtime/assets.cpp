@@ -258,7 +258,10 @@ using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 // Gives every face corner the area-weighted mean normal of the faces around its vertex
 // that lie within the crease angle of the corner's own face, then merges corners of a
 // vertex whose normals agree. Sharp edges stay sharp; curved surfaces stay smooth.
-void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris, Builder& out) {
+// `cornerUV` (parallel to `tris`, or empty) keeps texture seams: corners of a vertex merge
+// only when their texture coordinates are equal too.
+void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris,
+                   const std::vector<V2>& cornerUV, Builder& out) {
   const size_t faceCount = tris.size() / 3;
   std::vector<V3> area(faceCount), unit(faceCount);
   std::vector<std::vector<uint32_t>> facesOf(pos.size());
@@ -280,11 +283,12 @@ void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris
       }
       if (sum.norm() == 0) sum = all;
       const V3 n = sum.norm() > 0 ? V3(sum.normalized()) : V3(0, 0, 1);
+      const bool withUV = !cornerUV.empty();
       uint32_t index = UINT32_MAX;
       for (uint32_t c : copies[v])
-        if (out.n[c].dot(n) > 1.0 - 1e-9) index = c;
+        if (out.n[c].dot(n) > 1.0 - 1e-9 && (!withUV || out.uv[c] == cornerUV[3 * f + k])) index = c;
       if (index == UINT32_MAX) {
-        index = out.vertex(pos[v], n);
+        index = withUV ? out.vertex(pos[v], n, cornerUV[3 * f + k]) : out.vertex(pos[v], n);
         copies[v].push_back(index);
       }
       out.idx.push_back(index);
@@ -296,6 +300,26 @@ std::string lowerExtension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
+}
+
+// Where a triangle of a loaded asset came from: the file's polygon (the TriMesh fans
+// polygons into triangles), and the first vertex ImporterT would add when it splits the
+// polygon off as non-manifold (it copies the corners, in order, from there).
+struct TriangleSource {
+  size_t polygon = 0, firstCopy = 0;
+};
+
+// The file's texture coordinate at the corner of the triangle's polygon that vertex `v`
+// of the imported mesh stands for.
+V2 cornerUVOf(const io::MeshFileContent& file, const TriangleSource& src, int v) {
+  const size_t first = file.polygonStart[src.polygon], end = file.polygonStart[src.polygon + 1];
+  size_t corner = first;
+  if (size_t(v) >= src.firstCopy)
+    corner += size_t(v) - src.firstCopy;
+  else  // ImporterT refuses polygons that repeat a vertex, so the corner is unique
+    while (corner + 1 < end && file.corners[corner] != v) ++corner;
+  corner = std::min(corner, end - 1);
+  return {file.cornerUV[corner][0], file.cornerUV[corner][1]};
 }
 
 bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
@@ -321,11 +345,14 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   for (const auto& p : file.vertices)
     handles.push_back(importer.add_vertex(OpenMesh::Vec3d(p[0], p[1], p[2])));
   std::vector<OpenMesh::VertexHandle> corners;
+  std::vector<TriangleSource> sourceOf;  // per triangle, for its texture coordinates
   for (size_t f = 0; f < file.polygonCount(); ++f) {
     corners.clear();
     for (size_t c = file.polygonStart[f]; c < file.polygonStart[f + 1]; ++c)
       corners.push_back(handles[size_t(file.corners[c])]);
+    const size_t verticesBefore = om.n_vertices();
     importer.add_face(corners);
+    sourceOf.resize(om.n_faces(), TriangleSource{f, verticesBefore});
   }
   if (errWasOn) omerr().enable();
   if (om.n_faces() == 0) {
@@ -354,10 +381,14 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   }
   std::vector<uint32_t> tris;
   tris.reserve(3 * om.n_faces());
+  std::vector<V2> cornerUV;
   for (auto f : om.faces())  // a TriMesh has triangulated every polygon on import
-    for (auto v : f.vertices()) tris.push_back(uint32_t(v.idx()));
+    for (auto v : f.vertices()) {
+      tris.push_back(uint32_t(v.idx()));
+      if (!file.cornerUV.empty()) cornerUV.push_back(cornerUVOf(file, sourceOf[size_t(f.idx())], v.idx()));
+    }
   Builder b;
-  creaseNormals(pos, tris, b);
+  creaseNormals(pos, tris, cornerUV, b);
   out = normaliseToUnitBox(b);
   return true;
 }
@@ -435,6 +466,8 @@ int AssetLibrary::addGenerated(const std::string& name, const Mesh& world,
   for (size_t v = 0; v < world.vertexCount(); ++v) {
     b.p.emplace_back(world.positions[3 * v], world.positions[3 * v + 1], world.positions[3 * v + 2]);
     b.n.emplace_back(world.normals[3 * v], world.normals[3 * v + 1], world.normals[3 * v + 2]);
+    if (world.texcoords.size() == 2 * world.vertexCount())
+      b.uv.emplace_back(world.texcoords[2 * v], world.texcoords[2 * v + 1]);
   }
   b.idx = world.indices;
   V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);

@@ -2,7 +2,7 @@
 // and the marching terminals bark leaf) and mesh files (OBJ, PLY, OFF, STL via OpenMesh).
 // Every asset is normalised into the unit cube [0,1]^3 (its bounding box stretched to fit;
 // flat axes stay flat) so an instance fills its scope box. Texture coordinates are kept
-// as they are: bark and leaf have them.
+// as they are: bark and leaf have them, and files that give them (OBJ vt, PLY u v).
 #pragma once
 
 #include "runtime/instances.h"
