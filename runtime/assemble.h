@@ -24,8 +24,10 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
                    std::string& error);
 
 // The assembled mesh: positions by the instance transform, normals by its cofactor matrix
-// (correct even when one scale is zero), vertex colours from Instance::color, degenerate
-// triangles and the vertices only they used left out. Instances are emitted in list order.
+// (correct even when one scale is zero), vertex colours from Instance::color, texture
+// coordinates as the asset has them, degenerate triangles and the vertices only they used
+// left out. Instances are emitted in list order. The mesh has texture coordinates when any
+// instance's asset has them; vertices of assets without them then get (0, 0).
 // With a `deadline`, the instances are assembled in blocks of a few thousand triangles
 // and no block starts once it has passed: the mesh holds the first `*assembled`
 // instances (all of them when it did not pass).

@@ -1,9 +1,12 @@
-// Texture coordinates from file to asset: read per corner from OBJ and PLY, kept by
-// asset loading (seams split vertices, normalisation leaves them alone).
+// Texture coordinates from file to output mesh: read per corner from OBJ and PLY, kept by
+// asset loading (seams split vertices, normalisation leaves them alone), carried through
+// assembly unchanged while positions move.
+#include "runtime/assemble.h"
 #include "runtime/assets.h"
 #include "runtime/io/read_mesh_file.h"
 #include "scratch_files.h"
 
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -188,4 +191,89 @@ TEST_CASE("PLY assets keep their per-vertex texture coordinates", "[texcoords][a
     CHECK(texcoord(m, v)[0] == 0.5f + 0.25f * position(m, v)[0]);
     CHECK(texcoord(m, v)[1] == 0.5f + 0.25f * position(m, v)[1]);
   }
+}
+
+namespace {
+
+struct Scene {
+  InstanceList list;
+  AssetLibrary library;
+  std::vector<int> meshOf;
+
+  void add(const std::string& asset, const Eigen::Matrix4d& transform) {
+    uint32_t index = 0;
+    while (index < list.assets.size() && list.assets[index] != asset) ++index;
+    if (index == list.assets.size()) list.assets.push_back(asset);
+    Instance inst;
+    inst.asset = index;
+    Eigen::Map<Eigen::Matrix4d>(inst.transform.data()) = transform;  // column-major
+    list.instances.push_back(inst);
+  }
+  Mesh assemble() {
+    std::string error;
+    REQUIRE(resolveAssets(list, library, meshOf, error));
+    return assembleInstances(list, library, meshOf);
+  }
+};
+
+Eigen::Matrix4d placement(double angle, Eigen::Vector3d scale, Eigen::Vector3d move) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<3, 3>(0, 0) = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() *
+                        scale.asDiagonal();
+  m.block<3, 1>(0, 3) = move;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("assembly moves positions and keeps texture coordinates", "[texcoords][assemble]") {
+  Scene scene;
+  const Eigen::Matrix4d a = placement(0.7, {2, 0.5, 0.5}, {1, 2, 3});
+  const Eigen::Matrix4d mirror = placement(-1.2, {-1, 3, 1}, {-4, 0, 1});
+  scene.add("bark", a);
+  scene.add("leaf", mirror);
+  scene.add("bark", mirror);
+  const Mesh out = scene.assemble();
+  Mesh bark, leaf;
+  REQUIRE(makeBuiltinPrimitive("bark", bark));
+  REQUIRE(makeBuiltinPrimitive("leaf", leaf));
+  REQUIRE(out.vertexCount() == 2 * bark.vertexCount() + leaf.vertexCount());
+  REQUIRE(out.hasTexcoords());
+  size_t at = 0;
+  for (const auto& [asset, transform] : {std::pair{&bark, a}, {&leaf, mirror}, {&bark, mirror}}) {
+    for (size_t v = 0; v < asset->vertexCount(); ++v, ++at) {
+      INFO("output vertex " << at);
+      CHECK(texcoord(out, at) == texcoord(*asset, v));
+      const Eigen::Vector3d p(asset->positions[3 * v], asset->positions[3 * v + 1],
+                              asset->positions[3 * v + 2]);
+      const Eigen::Vector3d q = transform.block<3, 3>(0, 0) * p + transform.block<3, 1>(0, 3);
+      for (int d = 0; d < 3; ++d) CHECK(out.positions[3 * at + d] == Approx(q[d]).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("assets without texture coordinates get (0, 0) beside ones with them", "[texcoords][assemble]") {
+  Scene mixed;
+  mixed.add("cube", placement(0, {1, 1, 1}, {0, 0, 0}));
+  mixed.add("leaf", placement(0, {1, 1, 1}, {2, 0, 0}));
+  const Mesh out = mixed.assemble();
+  REQUIRE(out.vertexCount() == 24 + 4);
+  REQUIRE(out.hasTexcoords());
+  for (size_t v = 0; v < 24; ++v) CHECK(texcoord(out, v) == std::array<float, 2>{0, 0});
+  for (size_t v = 24; v < 28; ++v)  // the leaf: u = x, v = y in its own box
+    CHECK(texcoord(out, v) == std::array<float, 2>{out.positions[3 * v] - 2, out.positions[3 * v + 1]});
+
+  Scene plain;
+  plain.add("cube", placement(0.3, {1, 2, 1}, {0, 0, 0}));
+  plain.add("cylinder", placement(0, {1, 1, 1}, {2, 0, 0}));
+  CHECK(plain.assemble().texcoords.empty());
+}
+
+TEST_CASE("an instance flattened away leaves no texture coordinates behind", "[texcoords][assemble]") {
+  Scene scene;
+  scene.add("leaf", placement(0, {0, 1, 1}, {0, 0, 0}));  // zero width: both triangles vanish
+  scene.add("bark", placement(0, {1, 1, 1}, {0, 0, 0}));
+  const Mesh out = scene.assemble();
+  CHECK(out.vertexCount() == 250);
+  CHECK(out.texcoords.size() == 2 * 250);
 }
