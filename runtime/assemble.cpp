@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -136,6 +137,12 @@ void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scr
       out.normals[o + d] = float(n[d]);
       out.colors[o + d] = inst.color[d];
     }
+    // Texture coordinates pass through unchanged; (0, 0) for an asset without them.
+    if (!out.texcoords.empty()) {
+      const size_t ot = 2 * (firstVertex + s.remap[v]);
+      const bool has = asset.hasTexcoords();
+      for (int d = 0; d < 2; ++d) out.texcoords[ot + d] = has ? asset.texcoords[2 * v + d] : 0.0f;
+    }
   }
   size_t t = firstTriangle;
   for (size_t a = 0; a < s.keepTri.size(); ++a) {
@@ -192,6 +199,12 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
   out.normals.reserve(3 * maxVertices);
   out.colors.reserve(3 * maxVertices);
   out.indices.reserve(3 * maxTriangles);
+  const bool withTexcoords =
+      std::any_of(list.instances.begin(), list.instances.end(), [&](const Instance& inst) {
+        const Mesh* m = assetOf(inst, library, meshOf);
+        return m && m->hasTexcoords();
+      });
+  if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
   size_t begin = 0;
   while (begin < n && !(deadline && deadline->passed())) {
     size_t end = begin, work = 0;
@@ -218,6 +231,7 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
     out.normals.resize(3 * firstVertex[k]);
     out.colors.resize(3 * firstVertex[k]);
     out.indices.resize(3 * firstTriangle[k]);
+    if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       Scratch s;
       for (size_t i = r.begin(); i != r.end(); ++i) {

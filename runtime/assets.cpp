@@ -22,6 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using V3 = Eigen::Vector3d;
+using V2 = Eigen::Vector2d;
 
 constexpr double kPi = 3.14159265358979323846;
 // An axis whose extent is below this fraction of the largest extent is flat: it is
@@ -31,15 +32,21 @@ constexpr double kFlatRelTolerance = 1e-6;
 // angle is below this, and sharp (split vertices) above it.
 constexpr double kCreaseAngleDegrees = 30.0;
 
-// A primitive under construction, in natural coordinates and double precision.
+// A primitive under construction, in natural coordinates and double precision. Texture
+// coordinates (`uv`, u v with v up) are either given for every vertex or for none.
 struct Builder {
   std::vector<V3> p, n;
+  std::vector<V2> uv;
   std::vector<uint32_t> idx;
 
   uint32_t vertex(const V3& pos, const V3& nrm) {
     p.push_back(pos);
     n.push_back(nrm.normalized());
     return uint32_t(p.size() - 1);
+  }
+  uint32_t vertex(const V3& pos, const V3& nrm, const V2& texCoord) {
+    uv.push_back(texCoord);
+    return vertex(pos, nrm);
   }
   void tri(uint32_t a, uint32_t b, uint32_t c) { idx.insert(idx.end(), {a, b, c}); }
 };
@@ -171,6 +178,39 @@ void buildQuad(Builder& b) {
   b.tri(0, 2, 3);
 }
 
+// Bark for marching terminals (Buron et al. 2015: "a bark cylinder (216 polygons)"): an
+// open tube along X, `sides` around and `rings` along, smooth. u runs around (the angle
+// about +X from +Y towards +Z, over [0,1] with a seam column of its own), v along X from
+// 0 to 1, so a bark image's grain follows the branch; quads are not mirrored in UV space.
+void buildBark(Builder& b, int sides, int rings) {
+  const auto cs = circle(sides);
+  for (int i = 0; i <= rings; ++i) {
+    const double x = double(i) / rings;
+    for (int j = 0; j <= sides; ++j) {
+      const auto [c, s] = cs[j % sides];
+      b.vertex({x, c, s}, {0, c, s}, {double(j) / sides, x});
+    }
+  }
+  const auto at = [&](int i, int j) { return uint32_t(i * (sides + 1) + j); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sides; ++j) {
+      // Around (j) then along (i) is counter-clockwise seen from outside.
+      b.tri(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      b.tri(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+}
+
+// A leaf card for marching terminals: the unit square in the XY plane facing +Z, its
+// texture upright seen from +Z (u = x, v = y). One-sided geometry: the glTF material is
+// double-sided, and a second face would fight the first in depth.
+void buildLeaf(Builder& b) {
+  const V3 n(0, 0, 1);
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+    b.vertex({x, y, 0}, n, {x, y});
+  b.tri(0, 1, 2);
+  b.tri(0, 2, 3);
+}
+
 void buildDisc(Builder& b, int segments) {
   const V3 n(0, 0, 1);
   const uint32_t centre = b.vertex({0, 0, 0}, n);
@@ -197,6 +237,9 @@ Mesh normaliseToUnitBox(const Builder& b) {
   Mesh m;
   m.positions.reserve(3 * b.p.size());
   m.normals.reserve(3 * b.p.size());
+  // Texture coordinates stay as they are: they address the texture, not the box.
+  if (!b.uv.empty() && b.uv.size() == b.p.size())
+    for (const V2& t : b.uv) m.texcoords.insert(m.texcoords.end(), {float(t[0]), float(t[1])});
   for (size_t i = 0; i < b.p.size(); ++i) {
     V3 nn = b.n[i].cwiseProduct(normalScale);
     if (nn.norm() > 0) nn.normalize();
@@ -215,7 +258,10 @@ using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 // Gives every face corner the area-weighted mean normal of the faces around its vertex
 // that lie within the crease angle of the corner's own face, then merges corners of a
 // vertex whose normals agree. Sharp edges stay sharp; curved surfaces stay smooth.
-void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris, Builder& out) {
+// `cornerUV` (parallel to `tris`, or empty) keeps texture seams: corners of a vertex merge
+// only when their texture coordinates are equal too.
+void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris,
+                   const std::vector<V2>& cornerUV, Builder& out) {
   const size_t faceCount = tris.size() / 3;
   std::vector<V3> area(faceCount), unit(faceCount);
   std::vector<std::vector<uint32_t>> facesOf(pos.size());
@@ -237,11 +283,12 @@ void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris
       }
       if (sum.norm() == 0) sum = all;
       const V3 n = sum.norm() > 0 ? V3(sum.normalized()) : V3(0, 0, 1);
+      const bool withUV = !cornerUV.empty();
       uint32_t index = UINT32_MAX;
       for (uint32_t c : copies[v])
-        if (out.n[c].dot(n) > 1.0 - 1e-9) index = c;
+        if (out.n[c].dot(n) > 1.0 - 1e-9 && (!withUV || out.uv[c] == cornerUV[3 * f + k])) index = c;
       if (index == UINT32_MAX) {
-        index = out.vertex(pos[v], n);
+        index = withUV ? out.vertex(pos[v], n, cornerUV[3 * f + k]) : out.vertex(pos[v], n);
         copies[v].push_back(index);
       }
       out.idx.push_back(index);
@@ -253,6 +300,26 @@ std::string lowerExtension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
+}
+
+// Where a triangle of a loaded asset came from: the file's polygon (the TriMesh fans
+// polygons into triangles), and the first vertex ImporterT would add when it splits the
+// polygon off as non-manifold (it copies the corners, in order, from there).
+struct TriangleSource {
+  size_t polygon = 0, firstCopy = 0;
+};
+
+// The file's texture coordinate at the corner of the triangle's polygon that vertex `v`
+// of the imported mesh stands for.
+V2 cornerUVOf(const io::MeshFileContent& file, const TriangleSource& src, int v) {
+  const size_t first = file.polygonStart[src.polygon], end = file.polygonStart[src.polygon + 1];
+  size_t corner = first;
+  if (size_t(v) >= src.firstCopy)
+    corner += size_t(v) - src.firstCopy;
+  else  // ImporterT refuses polygons that repeat a vertex, so the corner is unique
+    while (corner + 1 < end && file.corners[corner] != v) ++corner;
+  corner = std::min(corner, end - 1);
+  return {file.cornerUV[corner][0], file.cornerUV[corner][1]};
 }
 
 bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
@@ -278,11 +345,14 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   for (const auto& p : file.vertices)
     handles.push_back(importer.add_vertex(OpenMesh::Vec3d(p[0], p[1], p[2])));
   std::vector<OpenMesh::VertexHandle> corners;
+  std::vector<TriangleSource> sourceOf;  // per triangle, for its texture coordinates
   for (size_t f = 0; f < file.polygonCount(); ++f) {
     corners.clear();
     for (size_t c = file.polygonStart[f]; c < file.polygonStart[f + 1]; ++c)
       corners.push_back(handles[size_t(file.corners[c])]);
+    const size_t verticesBefore = om.n_vertices();
     importer.add_face(corners);
+    sourceOf.resize(om.n_faces(), TriangleSource{f, verticesBefore});
   }
   if (errWasOn) omerr().enable();
   if (om.n_faces() == 0) {
@@ -311,10 +381,14 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   }
   std::vector<uint32_t> tris;
   tris.reserve(3 * om.n_faces());
+  std::vector<V2> cornerUV;
   for (auto f : om.faces())  // a TriMesh has triangulated every polygon on import
-    for (auto v : f.vertices()) tris.push_back(uint32_t(v.idx()));
+    for (auto v : f.vertices()) {
+      tris.push_back(uint32_t(v.idx()));
+      if (!file.cornerUV.empty()) cornerUV.push_back(cornerUVOf(file, sourceOf[size_t(f.idx())], v.idx()));
+    }
   Builder b;
-  creaseNormals(pos, tris, b);
+  creaseNormals(pos, tris, cornerUV, b);
   out = normaliseToUnitBox(b);
   return true;
 }
@@ -328,8 +402,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<std::string>& builtinPrimitiveNames() {
-  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus",
-                                                 "ico",  "quad",     "disc"};
+  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus", "ico",
+                                                 "quad", "disc",     "bark",   "leaf"};
   return names;
 }
 
@@ -342,6 +416,8 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
       {"ico", buildIcosphere},
       {"quad", buildQuad},
       {"disc", [](Builder& b) { buildDisc(b, 32); }},
+      {"bark", [](Builder& b) { buildBark(b, 24, 9); }},  // 216 quads, as the paper's
+      {"leaf", buildLeaf},
   };
   auto it = builders.find(name);
   if (it == builders.end()) return false;
@@ -390,6 +466,8 @@ int AssetLibrary::addGenerated(const std::string& name, const Mesh& world,
   for (size_t v = 0; v < world.vertexCount(); ++v) {
     b.p.emplace_back(world.positions[3 * v], world.positions[3 * v + 1], world.positions[3 * v + 2]);
     b.n.emplace_back(world.normals[3 * v], world.normals[3 * v + 1], world.normals[3 * v + 2]);
+    if (world.texcoords.size() == 2 * world.vertexCount())
+      b.uv.emplace_back(world.texcoords[2 * v], world.texcoords[2 * v + 1]);
   }
   b.idx = world.indices;
   V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);

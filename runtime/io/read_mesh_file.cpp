@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <new>
 #include <sstream>
@@ -38,16 +39,30 @@ class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
     return OpenMesh::FaceHandle(int(out_.polygonCount() - 1));
   }
   size_t n_faces() const override { return out_.polygonCount(); }
-  // These would walk the kernel's (absent) faces; a surface needs none of them.
-  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                          const std::vector<OpenMesh::Vec2f>&) override {}
+  // The OBJ reader hands over a face's texture coordinates right after the face, one per
+  // corner in corner order (the base class would walk the kernel's absent faces).
+  void add_face_texcoords(OpenMesh::FaceHandle face, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>& uv) override {
+    // Counted only while every face so far had them, and only as one per corner.
+    const size_t f = size_t(face.idx());
+    if (f != facesWithUV_ || f + 1 != out_.polygonCount() || uv.size() != out_.cornerCount(f)) return;
+    for (const auto& t : uv) faceUV_.push_back({double(t[0]), double(t[1])});
+    ++facesWithUV_;
+  }
   void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
                           const std::vector<OpenMesh::Vec3f>&) override {}
   void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void set_face_texindex(OpenMesh::FaceHandle, int) override {}
 
+  // The corners' coordinates when every face had them, in face order; else empty.
+  std::vector<std::array<double, 2>> faceUV() const {
+    return facesWithUV_ == out_.polygonCount() ? faceUV_ : std::vector<std::array<double, 2>>{};
+  }
+
  private:
   MeshFileContent& out_;
+  std::vector<std::array<double, 2>> faceUV_;
+  size_t facesWithUV_ = 0;  // the leading faces, all with coordinates
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -80,7 +95,8 @@ bool findNonFiniteText(const std::string& path, const std::string& ext, std::str
       continue;
     }
     if (lineNo == 1 && ext == ".stl" && first != "solid") return true;  // binary STL
-    if ((ext == ".obj" && first != "v") || (ext == ".stl" && first != "vertex") || first[0] == '#')
+    const bool obj = ext == ".obj";
+    if ((obj && first != "v" && first != "vt") || (ext == ".stl" && first != "vertex") || first[0] == '#')
       continue;
     for (std::string t = first; !t.empty(); t.clear(), tokens >> t) {
       std::string lower = t;
@@ -88,7 +104,8 @@ bool findNonFiniteText(const std::string& path, const std::string& ext, std::str
                      [](unsigned char c) { return char(std::tolower(c)); });
       const size_t sign = lower[0] == '-' || lower[0] == '+';
       if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
-        error = path + ":" + std::to_string(lineNo) + ": vertex coordinate '" + t +
+        error = path + ":" + std::to_string(lineNo) + ": " +
+                (obj && first == "vt" ? "texture" : "vertex") + " coordinate '" + t +
                 "' is not a finite number";
         return false;
       }
@@ -128,6 +145,12 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
   RawMesh vertices;
   RawImporter importer(vertices, out);
   OpenMesh::IO::Options opt;
+  // Texture coordinates: OBJ's per face corner (seams keep both sides), PLY's per vertex.
+  if (ext == ".obj") opt += OpenMesh::IO::Options::FaceTexCoord;
+  if (ext == ".ply") {
+    vertices.request_vertex_texcoords2D();
+    opt += OpenMesh::IO::Options::VertexTexCoord;
+  }
   // OpenMesh reports problems on its own error stream; we report them ourselves.
   const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
   omerr().disable();
@@ -169,6 +192,21 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
         return false;
       }
   }
+  if (ext == ".obj") out.cornerUV = importer.faceUV();
+  if (ext == ".ply" && opt.vertex_has_texcoord()) {
+    out.cornerUV.reserve(out.corners.size());
+    for (int v : out.corners) {
+      const auto& t = vertices.texcoord2D(OpenMesh::VertexHandle(v));
+      out.cornerUV.push_back({double(t[0]), double(t[1])});
+    }
+  }
+  for (size_t c = 0; c < out.cornerUV.size(); ++c)
+    if (!std::isfinite(out.cornerUV[c][0]) || !std::isfinite(out.cornerUV[c][1])) {
+      // Binary PLY carries them through; a writer must never see one.
+      error = path + ": vertex " + std::to_string(out.corners[c]) + " has a texture coordinate "
+              "that is not a finite number";
+      return false;
+    }
   return true;
 }
 

@@ -3,7 +3,8 @@
 // enough to hold it, so a forged header fails at once with the file and line instead of
 // exhausting memory. OFF is parsed here (OpenMesh's reader misreads comments after the
 // header and trusts its counts); PLY is checked element by element before OpenMesh reads it;
-// OBJ and STL carry no counts and go to OpenMesh directly.
+// OBJ and STL carry no counts and go to OpenMesh directly. Texture coordinates come from
+// OBJ (`vt`, per face corner) and PLY (vertex properties u v / s t, per vertex).
 #pragma once
 
 #include <array>
@@ -19,6 +20,10 @@ struct MeshFileContent {
   // every polygon has at least three, each a valid vertex index.
   std::vector<int> corners;
   std::vector<size_t> polygonStart = {0};
+  // The texture coordinate (u, v; v up, as OBJ and PLY spell them) of every corner,
+  // parallel to `corners`. Empty when the file has none, or has them for some faces only:
+  // a partial set cannot texture the whole mesh consistently.
+  std::vector<std::array<double, 2>> cornerUV;
 
   size_t polygonCount() const { return polygonStart.size() - 1; }
   size_t cornerCount(size_t p) const { return polygonStart[p + 1] - polygonStart[p]; }

@@ -79,6 +79,20 @@ int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bo
   return int(model.accessors.size() - 1);
 }
 
+// glTF puts the texture's origin at the top left (v down); the mesh's v is up.
+int addTexcoordAccessor(tinygltf::Model& model, const std::vector<float>& uvUp) {
+  std::vector<float> uvDown(uvUp);
+  for (size_t i = 1; i < uvDown.size(); i += 2) uvDown[i] = 1.0f - uvDown[i];
+  tinygltf::Accessor acc;
+  acc.bufferView = addBufferView(model, uvDown.data(), uvDown.size() * sizeof(float),
+                                 TINYGLTF_TARGET_ARRAY_BUFFER);
+  acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  acc.type = TINYGLTF_TYPE_VEC2;
+  acc.count = uvDown.size() / 2;
+  model.accessors.push_back(acc);
+  return int(model.accessors.size() - 1);
+}
+
 bool encodeGlb(const Mesh& mesh, std::string& bytes, std::string& error) {
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -99,6 +113,7 @@ bool encodeGlb(const Mesh& mesh, std::string& bytes, std::string& error) {
       std::transform(mesh.colors.begin(), mesh.colors.end(), colors.begin(), clamp01);
       prim.attributes["COLOR_0"] = addVec3Accessor(model, colors, false);
     }
+    if (mesh.hasTexcoords()) prim.attributes["TEXCOORD_0"] = addTexcoordAccessor(model, mesh.texcoords);
     tinygltf::Accessor idx;
     idx.bufferView = addBufferView(model, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
                                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
@@ -156,6 +171,7 @@ bool encodeGlb(const Mesh& mesh, std::string& bytes, std::string& error) {
 std::string encodeObj(const Mesh& mesh) {
   const bool colored = hasColors(mesh);
   const bool withNormals = mesh.normals.size() == mesh.positions.size();
+  const bool withTexcoords = mesh.hasTexcoords();
   std::string out = "# fgsg\n";
   out.reserve(mesh.vertexCount() * (colored ? 110 : 80) + mesh.triangleCount() * 40);  // typical lines
   for (size_t v = 0; v < mesh.vertexCount(); ++v) {
@@ -164,6 +180,11 @@ std::string encodeObj(const Mesh& mesh) {
     // "v x y z r g b" is the common vertex colour extension (MeshLab, Blender, OpenMesh).
     if (colored)
       for (int d = 0; d < 3; ++d) out += ' ', appendFloat(out, clamp01(mesh.colors[3 * v + d]));
+    out += '\n';
+  }
+  for (size_t v = 0; withTexcoords && v < mesh.vertexCount(); ++v) {
+    out += "vt";  // OBJ's v is up, as the mesh's
+    for (int d = 0; d < 2; ++d) out += ' ', appendFloat(out, mesh.texcoords[2 * v + d]);
     out += '\n';
   }
   for (size_t v = 0; withNormals && v < mesh.vertexCount(); ++v) {
@@ -176,7 +197,8 @@ std::string encodeObj(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const uint64_t i = uint64_t(mesh.indices[3 * t + k]) + 1;  // OBJ counts from 1
       out += ' ', appendInteger(out, i);
-      if (withNormals) out += "//", appendInteger(out, i);
+      if (withTexcoords) out += '/', appendInteger(out, i);  // v/vt, v/vt/vn
+      if (withNormals) out += withTexcoords ? "/" : "//", appendInteger(out, i);
     }
     out += '\n';
   }
@@ -188,18 +210,21 @@ std::string encodeObj(const Mesh& mesh) {
 std::string encodePly(const Mesh& mesh) {
   const bool colored = hasColors(mesh);
   const bool withNormals = mesh.normals.size() == mesh.positions.size();
+  const bool withTexcoords = mesh.hasTexcoords();
   std::string out = "ply\nformat binary_little_endian 1.0\ncomment fgsg\n";
   out += "element vertex " + std::to_string(mesh.vertexCount()) + "\n";
   out += "property float x\nproperty float y\nproperty float z\n";
   if (withNormals) out += "property float nx\nproperty float ny\nproperty float nz\n";
+  if (withTexcoords) out += "property float u\nproperty float v\n";  // v up
   if (colored) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   out += "element face " + std::to_string(mesh.triangleCount()) + "\n";
   out += "property list uchar uint vertex_indices\nend_header\n";
-  out.reserve(out.size() + mesh.vertexCount() * (12 + (withNormals ? 12 : 0) + (colored ? 3 : 0)) +
-              mesh.triangleCount() * 13);
+  const size_t vertexBytes = 12 + (withNormals ? 12 : 0) + (withTexcoords ? 8 : 0) + (colored ? 3 : 0);
+  out.reserve(out.size() + mesh.vertexCount() * vertexBytes + mesh.triangleCount() * 13);
   for (size_t v = 0; v < mesh.vertexCount(); ++v) {
     appendRaw(out, &mesh.positions[3 * v], 3);
     if (withNormals) appendRaw(out, &mesh.normals[3 * v], 3);
+    if (withTexcoords) appendRaw(out, &mesh.texcoords[2 * v], 2);
     if (colored) {
       unsigned char rgb[3];
       for (int d = 0; d < 3; ++d) rgb[d] = (unsigned char)std::lround(clamp01(mesh.colors[3 * v + d]) * 255.0f);
@@ -233,6 +258,11 @@ bool findNonFiniteVertex(const Mesh& mesh, std::string& error) {
             "): mesh files store 32-bit floats, up to about 3.4e38";
     return true;
   }
+  for (size_t i = 0; mesh.hasTexcoords() && i < mesh.texcoords.size(); ++i)
+    if (!std::isfinite(mesh.texcoords[i])) {
+      error = "the texture coordinate of vertex " + std::to_string(i / 2) + " is not finite";
+      return true;
+    }
   return false;
 }
 

@@ -1,6 +1,9 @@
 // Writes an assembled mesh to a file whose extension picks the format: .glb (glTF 2.0
-// binary), .obj (Wavefront, with normals) or .ply (binary little endian). Files are
-// written atomically and their bytes depend only on the mesh (no timestamps).
+// binary), .obj (Wavefront, with normals) or .ply (binary little endian). Texture
+// coordinates, when the mesh has them, go out as TEXCOORD_0 (v flipped: glTF's v runs
+// down), `vt` with `f v/vt/vn`, and PLY `u v`; a mesh without them gives the same bytes as
+// before they existed. Files are written atomically and their bytes depend only on the
+// mesh (no timestamps).
 #pragma once
 
 #include "runtime/io/output_transaction.h"

@@ -90,7 +90,8 @@ void checkNormals(const Mesh& m) {
 
 TEST_CASE("built-in primitives are listed in a stable order", "[assets]") {
   CHECK(builtinPrimitiveNames() ==
-        std::vector<std::string>{"cube", "cylinder", "sphere", "torus", "ico", "quad", "disc"});
+        std::vector<std::string>{"cube", "cylinder", "sphere", "torus", "ico", "quad", "disc", "bark",
+                                 "leaf"});
   Mesh m;
   CHECK_FALSE(makeBuiltinPrimitive("Torus", m));  // names are exact
   CHECK_FALSE(makeBuiltinPrimitive("box", m));
@@ -107,6 +108,7 @@ TEST_CASE("closed primitives fill the unit cube, are watertight and face outward
     CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
     CHECK(m.boundsMax() == std::array<float, 3>{1, 1, 1});
     CHECK(m.colors.empty());
+    CHECK(m.texcoords.empty());  // only the marching terminals have them
     CHECK(watertight(m));
     CHECK(signedVolume(m) > 0);
     checkNormals(m);
@@ -153,8 +155,71 @@ TEST_CASE("flat primitives lie in z = 0 facing +Z", "[assets]") {
       CHECK(m.positions[3 * v + 2] == 0.0f);
       CHECK(m.normals[3 * v + 2] == 1.0f);
     }
+    CHECK(m.texcoords.empty());
     checkNormals(m);
   }
+}
+
+namespace {
+
+// Twice the signed area of triangle t in texture space: positive when the texture is not
+// mirrored on the triangle's front side (its corners run counter-clockwise in UV too).
+double uvArea2(const Mesh& m, size_t t) {
+  const auto uv = [&](int k) {
+    const uint32_t v = m.indices[3 * t + k];
+    return std::array<double, 2>{m.texcoords[2 * v], m.texcoords[2 * v + 1]};
+  };
+  const auto a = uv(0), b = uv(1), c = uv(2);
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+}  // namespace
+
+TEST_CASE("bark is a 24 x 9 tube along X of radius 0.5 with smooth normals and UVs", "[assets]") {
+  Mesh m;
+  REQUIRE(makeBuiltinPrimitive("bark", m));
+  CHECK(m.triangleCount() == 432);  // 216 quads, the paper's bark cylinder
+  CHECK(m.vertexCount() == 250);    // 25 per ring (a seam column) x 10 rings
+  CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
+  CHECK(m.boundsMax() == std::array<float, 3>{1, 1, 1});
+  REQUIRE(m.texcoords.size() == 2 * m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    INFO("vertex " << v);
+    const double y = m.positions[3 * v + 1] - 0.5, z = m.positions[3 * v + 2] - 0.5;
+    CHECK(std::hypot(y, z) == Approx(0.5).margin(1e-6));
+    // Smooth: the normal is the radial direction, with no X part.
+    CHECK(m.normals[3 * v] == 0.0f);
+    CHECK(m.normals[3 * v + 1] == Approx(2 * y).margin(1e-6));
+    CHECK(m.normals[3 * v + 2] == Approx(2 * z).margin(1e-6));
+    const float u = m.texcoords[2 * v], tv = m.texcoords[2 * v + 1];
+    CHECK(u >= 0.0f);
+    CHECK(u <= 1.0f);
+    CHECK(tv == m.positions[3 * v]);  // v runs along X
+    // u runs around X from +Y towards +Z.
+    const double angle = std::atan2(z, y), around = angle < -1e-9 ? angle + 2 * M_PI : angle;
+    if (u < 1.0f) CHECK(u == Approx(around / (2 * M_PI)).margin(1e-6));
+  }
+  checkNormals(m);
+  for (size_t t = 0; t < m.triangleCount(); ++t) {
+    INFO("triangle " << t);
+    CHECK(uvArea2(m, t) > 0);  // not mirrored, and no triangle wraps across the seam
+    CHECK(uvArea2(m, t) == Approx(1.0 / (24 * 9)));
+  }
+}
+
+TEST_CASE("leaf is the XY unit square facing +Z with UVs covering it", "[assets]") {
+  Mesh m;
+  REQUIRE(makeBuiltinPrimitive("leaf", m));
+  CHECK(m.triangleCount() == 2);
+  CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
+  CHECK(m.boundsMax() == std::array<float, 3>{1, 1, 0});
+  REQUIRE(m.texcoords.size() == 2 * m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    CHECK(m.texcoords[2 * v] == m.positions[3 * v]);          // u = x
+    CHECK(m.texcoords[2 * v + 1] == m.positions[3 * v + 1]);  // v = y
+  }
+  CHECK(uvArea2(m, 0) + uvArea2(m, 1) == 2.0);  // the whole square, upright seen from +Z
+  checkNormals(m);
 }
 
 TEST_CASE("computeNormals gives area-weighted unit normals", "[assets]") {

@@ -440,3 +440,141 @@ TEST_CASE("an instance whose vertices would overflow a float is detected", "[wri
   t(0, 3) = NAN;
   CHECK_FALSE(unitBoxFitsFloat(t));
 }
+
+// ---- texture coordinates -----------------------------------------------------------------
+
+namespace {
+
+// Bark, a leaf and a cube (which has no texture coordinates: it gets (0, 0)).
+Mesh texturedMesh() {
+  InstanceList list;
+  list.assets = {"bark", "leaf", "cube"};
+  for (uint32_t a = 0; a < 3; ++a) {
+    Instance inst;
+    inst.asset = a;
+    inst.transform = {1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0.5, 0, 1.5 * a, 0, 0, 1};
+    list.instances.push_back(inst);
+  }
+  AssetLibrary lib;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(resolveAssets(list, lib, meshOf, error));
+  Mesh m = assembleInstances(list, lib, meshOf);
+  REQUIRE(m.hasTexcoords());
+  return m;
+}
+
+std::vector<std::string> linesStartingWith(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+TEST_CASE("GLB carries texture coordinates as TEXCOORD_0 with v flipped and validates",
+          "[writers][gltf][texcoords]") {
+  const fs::path dir = scratchDir("glb_uv");
+  const Mesh m = texturedMesh();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "uv.glb").string(), error));
+  const Glb g = parseGlb(readFile(dir / "uv.glb"));
+  const auto& prim = g.json["meshes"][0]["primitives"][0];
+  REQUIRE(prim["attributes"].contains("TEXCOORD_0"));
+  const auto& uv = g.json["accessors"][prim["attributes"]["TEXCOORD_0"].get<int>()];
+  CHECK(uv["type"] == "VEC2");
+  CHECK(uv["componentType"] == 5126);
+  REQUIRE(uv["count"] == m.vertexCount());
+  const auto& view = g.json["bufferViews"][uv["bufferView"].get<int>()];
+  REQUIRE(view["byteLength"] == m.vertexCount() * 8);
+  std::vector<float> stored(2 * m.vertexCount());
+  std::memcpy(stored.data(), g.bin.data() + view.value("byteOffset", 0) + uv.value("byteOffset", 0),
+              stored.size() * sizeof(float));
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    CHECK(stored[2 * v] == m.texcoords[2 * v]);
+    CHECK(stored[2 * v + 1] == 1.0f - m.texcoords[2 * v + 1]);  // glTF's v runs down
+  }
+  CHECK(g.bin.size() == m.vertexCount() * 44 + m.indices.size() * 4);
+  requireValidGltf(dir / "uv.glb");
+}
+
+TEST_CASE("OBJ writes vt lines and v/vt/vn corners", "[writers][texcoords]") {
+  const fs::path dir = scratchDir("obj_uv");
+  const Mesh m = texturedMesh();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "uv.obj").string(), error));
+  const std::string obj = readFile(dir / "uv.obj");
+  const auto vt = linesStartingWith(obj, "vt ");
+  REQUIRE(vt.size() == m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    std::istringstream line(vt[v].substr(3));
+    float u = -1, tv = -1;
+    line >> u >> tv;
+    CHECK(u == m.texcoords[2 * v]);  // exact: shortest round-trip text
+    CHECK(tv == m.texcoords[2 * v + 1]);
+  }
+  const auto f = linesStartingWith(obj, "f ");
+  REQUIRE(f.size() == m.triangleCount());
+  const auto corner = [](uint32_t i) {
+    const std::string n = std::to_string(i + 1);
+    return n + "/" + n + "/" + n;
+  };
+  CHECK(f[0] == "f " + corner(m.indices[0]) + " " + corner(m.indices[1]) + " " + corner(m.indices[2]));
+
+  // OpenMesh reads the coordinates back at the vertices they were written for.
+  OMesh om;
+  om.request_vertex_texcoords2D();
+  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexTexCoord;
+  REQUIRE(OpenMesh::IO::read_mesh(om, (dir / "uv.obj").string(), opt));
+  REQUIRE(opt.check(OpenMesh::IO::Options::VertexTexCoord));
+  REQUIRE(om.n_vertices() == m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const auto t = om.texcoord2D(om.vertex_handle(int(v)));
+    CHECK(t[0] == m.texcoords[2 * v]);
+    CHECK(t[1] == m.texcoords[2 * v + 1]);
+  }
+}
+
+TEST_CASE("PLY writes u v per vertex", "[writers][texcoords]") {
+  const fs::path dir = scratchDir("ply_uv");
+  const Mesh m = texturedMesh();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "uv.ply").string(), error));
+  const std::string ply = readFile(dir / "uv.ply");
+  CHECK_THAT(ply, Catch::Contains("property float nz\nproperty float u\nproperty float v\n"
+                                  "property uchar red\n"));
+  const size_t header = ply.find("end_header\n") + 11;
+  CHECK(ply.size() == header + m.vertexCount() * 35 + m.triangleCount() * 13);
+  OMesh om;
+  om.request_vertex_texcoords2D();
+  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexTexCoord;
+  REQUIRE(OpenMesh::IO::read_mesh(om, (dir / "uv.ply").string(), opt));
+  REQUIRE(opt.check(OpenMesh::IO::Options::VertexTexCoord));
+  REQUIRE(om.n_vertices() == m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const auto t = om.texcoord2D(om.vertex_handle(int(v)));
+    CHECK(t[0] == m.texcoords[2 * v]);
+    CHECK(t[1] == m.texcoords[2 * v + 1]);
+  }
+}
+
+TEST_CASE("meshes without texture coordinates write none", "[writers][texcoords]") {
+  const Mesh m = sampleMesh();
+  REQUIRE(m.texcoords.empty());
+  std::string glb, obj, ply, error;
+  REQUIRE(io::encodeMesh(m, ".glb", glb, error));
+  REQUIRE(io::encodeMesh(m, ".obj", obj, error));
+  REQUIRE(io::encodeMesh(m, ".ply", ply, error));
+  CHECK_FALSE(parseGlb(glb).json["meshes"][0]["primitives"][0]["attributes"].contains("TEXCOORD_0"));
+  CHECK(linesStartingWith(obj, "vt").empty());
+  CHECK_THAT(ply, !Catch::Contains("property float u\n"));
+  // A texture coordinate that is not finite never reaches a file.
+  Mesh bad = texturedMesh();
+  bad.texcoords[7] = NAN;
+  for (const char* ext : {".glb", ".obj", ".ply"}) {
+    CHECK_FALSE(io::encodeMesh(bad, ext, glb, error));
+    CHECK_THAT(error, Catch::Contains("texture coordinate of vertex 3 is not finite"));
+  }
+}
