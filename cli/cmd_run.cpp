@@ -6,7 +6,9 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
+#include "cli/seed_points.h"
 #include "runtime/assemble.h"
+#include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/memory_budget.h"
@@ -74,6 +76,19 @@ RunOptions parseRunOptions(const Args& args) {
       o.derive.surfaceSize = r.numberValue(f);
       if (!(o.derive.surfaceSize > 0) || !std::isfinite(o.derive.surfaceSize))
         throw UsageError{"--surface-size must be a positive number"};
+    }
+    else if (f == "--seed-points") {
+      std::string error;
+      if (!readSeedPoints(r.value(f), o.derive.seeds, error)) throw UsageError{error};
+    } else if (f == "--march-candidates")
+      o.derive.marchCandidates = static_cast<int>(r.unsignedValue(f, 0, 64));
+    else if (f == "--atlas-resolution")
+      o.derive.atlasResolution = static_cast<int>(r.unsignedValue(f, 16, 8192));
+    else if (f == "--march-units") {
+      const std::string unit = r.value(f);
+      if (unit != "surface" && unit != "texels")
+        throw UsageError{"--march-units " + unit + ": use surface (3D distance, the default) or texels"};
+      o.derive.marchInTexels = unit == "texels";
     }
     else if (f == "--start") {
       r.pointValue(f, o.derive.start);
@@ -144,9 +159,12 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
   auto compiled = compileFile(opt.file, !opt.quiet);
   if (!compiled) return 1;
   if (!compiled->module.surface.present && opt.derive.surfaceOverride.empty() &&
-      (opt.derive.hasStart || opt.derive.repairSurface || opt.derive.surfaceSize > 0)) {
+      (opt.derive.hasStart || opt.derive.repairSurface || opt.derive.surfaceSize > 0 || !opt.derive.seeds.empty())) {
     std::cerr << "fgsg run: "
-              << (opt.derive.hasStart ? "--start" : opt.derive.repairSurface ? "--repair-surface" : "--surface-size")
+              << (opt.derive.hasStart         ? "--start"
+                  : opt.derive.repairSurface  ? "--repair-surface"
+                  : !opt.derive.seeds.empty() ? "--seed-points"
+                                              : "--surface-size")
               << " needs a surface: " << opt.file
               << " declares none (it grows on the plane) and --surface is not given\n";
     return 2;
@@ -158,6 +176,7 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
     assets.addSearchDir(dir.string());
     opt.derive.assetDirs.push_back(dir.string());  // data files such as synthesis examples
   }
+  if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.derive.atlasCacheDir = cache + "/atlas";
 
   // The JIT lives until the command ends: on a grammar's first run it compiles the
   // optimised code for the cache while the output is written.

@@ -15,5 +15,6 @@ int irCommand(const Args& args);     // fgsg ir FILE
 int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
 int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
 int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
+int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)
 
 }  // namespace fgsg::cli

@@ -15,13 +15,17 @@ usage:
                 [--preview out.png] [--instances out.json] [--max-shapes N]
                 [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
-                [--engine jit|interp]
+                [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
+                [--atlas-resolution N] [--march-units surface|texels]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
   fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]
                            compile to a shared library and its C header NAME.h
+  fgsg atlas MESH [--preview atlas.png] [--resolution N] [--paint x,y,z,r]... [--mask m.png]
+                           lay MESH out for on-mesh marching (cached); draw the atlas, or
+                           paint a mask for a texture context with sphere brushes
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -31,6 +35,11 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --repair-surface   repair what can be repaired in the surface mesh instead of failing
   --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
                      (default: closest to the centre of the surface's bounding box)
+  --seed-points S    on-mesh marching: start the axiom once per seed, S a file of
+                     "x y z [dx dy dz]" lines or an inline list "x,y,z;x,y,z:dx,dy,dz"
+  --march-candidates N  directions tried around a failed Marching condition (default 8)
+  --atlas-resolution N  side of the marching geometry image in texels (default 1024)
+  --march-units U    Marching's length: surface (3D distance, default) or texels
   --max-seconds S    stop deriving after S seconds (default 120), keeping what was
                      derived; field design, tracing and synthesis are bounded too
   --max-memory SIZE  stop deriving when it holds SIZE (512M, 2G; default half the
@@ -67,6 +76,7 @@ int main(int argc, char** argv) {
     if (cmd == "synth") return fgsg::cli::synthCommand(args);
     if (cmd == "repl") return fgsg::cli::replCommand(args);
     if (cmd == "compile") return fgsg::cli::compileCommand(args);
+    if (cmd == "atlas") return fgsg::cli::atlasCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -74,6 +84,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas; see fgsg --help)\n";
   return 2;
 }

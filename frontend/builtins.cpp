@@ -5,7 +5,6 @@
 namespace fgsg::frontend {
 namespace {
 
-constexpr const char* kMarching = "on-mesh marching (Buron et al.)";
 constexpr const char* kSolvers = "solver commands in grammars";
 
 const CommandInfo kCommands[] = {
@@ -36,8 +35,8 @@ const CommandInfo kCommands[] = {
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
     {CommandId::Marching, "Marching", 3, 3, BodyRule::AtLeastOne,
-     "Marching(length, angle, cond){ Top, Extruded }", kMarching},
-    {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", kMarching},
+     "Marching(length, angle, cond){ Top, Extruded }", nullptr},
+    {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", nullptr},
     {CommandId::Line, "Line", 0, 2, BodyRule::None, "Line(width, merge)", nullptr},
     {CommandId::LineSeg, "LineSeg", 0, 1, BodyRule::None, "LineSeg(length)", nullptr},
     {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,

@@ -163,6 +163,11 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
     case BodyRule::AtLeastOne:
       if (!item.hasBody || parts == 0)
         diags_.error("E018", item.range, "'" + item.name + "' needs a { } body: " + cmd.signature);
+      else if (cmd.id == CommandId::Marching && parts > 2)
+        diags_.error("E018", item.range,
+                     "'Marching' has " + std::to_string(parts) +
+                         " body parts; it takes the Top part and optionally the Extruded part: " +
+                         cmd.signature);
       break;
     case BodyRule::Optional: break;
   }

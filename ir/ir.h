@@ -101,6 +101,9 @@ enum class OpKind : uint8_t {
   LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
   Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
   Center,        // index = axes mask (1 X, 2 Y, 4 Z): centre the scope in the successor's first scope
+  Marching,      // args length, angle; bodies: Top, Extruded, then the condition block (Buron et al. §5)
+  MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
+  Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

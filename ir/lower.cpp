@@ -288,6 +288,21 @@ class Lowerer {
         break;
       }
       case CommandId::LineSeg: op.kind = OpKind::LineSeg; allArgs(0); break;
+      case CommandId::Marching: {
+        // The condition is evaluated at each candidate destination, so it is a block of
+        // its own (the last body) that the engine runs there, not an argument.
+        op.kind = OpKind::Marching;
+        op.args.push_back(expr(*item.args[0]));
+        op.args.push_back(expr(*item.args[1]));
+        if (op.bodies.size() < 2) op.bodies.emplace_back();  // no Extruded part written
+        Op test;
+        test.kind = OpKind::MarchCondition;
+        test.loc = toLoc(item.args[2]->range);
+        test.args.push_back(expr(*item.args[2]));
+        op.bodies.emplace_back().push_back(std::move(test));
+        break;
+      }
+      case CommandId::Branch: op.kind = OpKind::Branch; allArgs(0); break;
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));

@@ -33,6 +33,9 @@ const char* opName(OpKind k) {
     case OpKind::LineSeg: return "lineseg";
     case OpKind::Synthesize: return "synthesize";
     case OpKind::Center: return "center";
+    case OpKind::Marching: return "marching";
+    case OpKind::MarchCondition: return "march-condition";
+    case OpKind::Branch: return "branch";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -452,6 +455,27 @@ class Verifier {
         stringId(op.str);
         expectBodies(op, 0);
         numArgs(op, r, 3);
+        break;
+      case OpKind::Marching:
+        // Top, Extruded, and the condition block: one MarchCondition op.
+        expectBodies(op, 3);
+        numArgs(op, r, 2);
+        if (op.bodies.size() == 3 &&
+            (op.bodies[2].size() != 1 || op.bodies[2][0].kind != OpKind::MarchCondition))
+          problem("the condition body is not one march-condition op");
+        break;
+      case OpKind::MarchCondition:
+        expectBodies(op, 0);
+        if (op.args.size() != 1) {
+          problem(std::to_string(op.args.size()) + " arguments, expected 1 (the condition)");
+        } else {
+          expectType(op.args[0], Type::Bool, "condition");
+          expr(op.args[0], r);
+        }
+        break;
+      case OpKind::Branch:
+        if (op.bodies.empty()) problem("no bodies");
+        numArgs(op, r, 1);
         break;
       case OpKind::Unsupported:
         if (op.name.empty()) problem("no construct name");

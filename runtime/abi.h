@@ -15,7 +15,7 @@ enum FgsgErrorCode : int32_t {
   FGSG_OK = 0,
   FGSG_E_VEC_UNAVAILABLE = 1,  // R001: a vector value not available yet (vector queries)
   FGSG_E_FIELD = 2,            // retired (field queries are answered by the host); kept for numbering
-  FGSG_E_TEXTURE = 3,          // R001: texture contexts are not supported yet
+  FGSG_E_UNUSED_3 = 3,         // was: texture contexts not supported (ABI 7 and before)
   FGSG_E_NO_SCOPE = 4,         // R006: a scope query in a parallel rewriting step
   FGSG_E_HOST = 5,             // the query host failed; its message is in the host
   FGSG_E_INTERNAL = 6,         // R900: a compiler bug (vector used as a number, ...)
@@ -73,7 +73,7 @@ static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact)
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 7u
+#define FGSG_ABI_VERSION 8u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of

@@ -37,6 +37,23 @@ struct DeriveOptions {
   // largest bounding-box extent is S (0: as it is). Meshes come in any unit; a grammar's
   // steps do not.
   double surfaceSize = 0.0;
+
+  // --seed-points: the axiom starts once per seed (on-mesh marching grows one plant per
+  // seed), on the surface point closest to `point`, X along `direction` when given. Empty:
+  // one start, as --start says.
+  struct Seed {
+    double point[3] = {0, 0, 0};
+    bool hasDirection = false;
+    double direction[3] = {1, 0, 0};
+  };
+  std::vector<Seed> seeds;
+  // Marching (Buron et al. §5, §8): when the condition fails straight ahead, this many
+  // other directions are tried, spread evenly over the half circle ahead (half on each
+  // side, nearest first); 0: none.
+  int marchCandidates = 8;
+  int atlasResolution = 1024;   // --atlas-resolution: the geometry image's side in texels
+  bool marchInTexels = false;   // --march-units texels: Marching's length in texels (the paper's)
+  std::string atlasCacheDir;    // prepared surfaces are kept here ("": not kept)
 };
 
 struct DeriveStats {

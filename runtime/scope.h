@@ -23,8 +23,13 @@ struct Scope {
   // On a surface (FGSG §4.3) the scope stands on a surface point: a face (-1: no
   // surface, the plane) and barycentric coordinates, lifted `lift` along the normal.
   int32_t face = -1;
+  // On-mesh marching (Buron et al.): the march point this scope stands on (a node of the
+  // derivation's march graph; -1: none yet) and, for a Marching's Extruded part, the
+  // segment it spans (-1: none), along which its terminals are bent.
+  int32_t marchNode = -1;
   Vec3 bary = Vec3::Zero();
   double lift = 0.0;
+  int32_t marchSegment = -1;
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

@@ -301,12 +301,7 @@ class ExprCodegen {
     return raiseNum(FGSG_E_INTERNAL, e.loc);
   }
 
-  llvm::Value* query(const Expr& e) {
-    const auto q = static_cast<ir::Query>(e.index);
-    // Not supported by any engine yet: an error before any argument is evaluated.
-    if (q == ir::Query::Texture) return raiseNum(FGSG_E_TEXTURE, e.loc);
-    return askHost(e, -1);
-  }
+  llvm::Value* query(const Expr& e) { return askHost(e, -1); }
 
   // One call to the query host; `lane` >= 0 asks for that component of a vector field
   // member (passed as the one argument).

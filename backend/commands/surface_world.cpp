@@ -235,6 +235,24 @@ rt::Scope SurfaceWorld::startScope() const {
   return s;
 }
 
+rt::Scope SurfaceWorld::startScopeAt(const Vec3& point, const Vec3* direction) const {
+  rt::Scope s;
+  const SurfacePoint p = impl_->locator->closestPoint(point);
+  Vec3 x = Vec3::UnitX();
+  if (direction)
+    x = *direction;
+  else if (!impl_->fields.empty())
+    impl_->fields[0].values->direction(p, x);
+  impl_->place(s, p, x);
+  return s;
+}
+
+void SurfaceWorld::placeOn(rt::Scope& s, int face, const Vec3& bary, const Vec3& x) const {
+  impl_->place(s, SurfacePoint{face, bary}, x);
+}
+
+const SurfaceMesh& SurfaceWorld::mesh() const { return impl_->mesh; }
+
 void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) const {
   const Impl& w = *impl_;
   s.lift += tz;

@@ -16,6 +16,9 @@
 namespace fgsg::rt::field {
 class TangentField;
 }
+namespace fgsg::rt::surface {
+struct SurfaceMesh;
+}
 #include <string>
 #include <vector>
 
@@ -35,6 +38,14 @@ class SurfaceWorld {
   // centre of the surface's bounding box), Z along the normal, X along the first field
   // (without one: the world X axis laid into the tangent plane).
   rt::Scope startScope() const;
+  // A seed's start (--seed-points): on the surface point closest to `point`, X along
+  // `direction` laid into the tangent plane (null: as startScope() chooses).
+  rt::Scope startScopeAt(const rt::Vec3& point, const rt::Vec3* direction) const;
+  // Puts `s` on surface point (face, bary) with X along `x` laid into the tangent plane,
+  // Z the normal, keeping its lift (the destination of a march).
+  void placeOn(rt::Scope& s, int face, const rt::Vec3& bary, const rt::Vec3& x) const;
+  // The surface itself, in world space (after --surface-size).
+  const rt::surface::SurfaceMesh& mesh() const;
   // T(tx, ty, tz): (tx, ty) traces along the surface, tz lifts along the normal.
   void translate(rt::Scope& s, double tx, double ty, double tz) const;
   // RS(a): turns the scope about the surface normal at its point.

@@ -20,7 +20,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
                        std::vector<double> attrs, const FgsgProgram* program, bool direct)
     : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
-      scope_(surface_, stack_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this) {
+      scope_(surface_, stack_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;
   if (m_.mode != ir::DeriveMode::Parallel && m_.depthBound >= 0 &&
@@ -28,7 +28,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
     maxDepth_ = static_cast<uint32_t>(m_.depthBound);
     depthBoundIsGrammars_ = true;
   }
-  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_};
+  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_, &marching_};
   for (CommandFamily* family : families) registerFamily(*family);
   // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {
@@ -81,6 +81,7 @@ rt::DeriveResult Derivation::run() {
     if (depthLimitHit_) result.messages.push_back(depthWarning_);
     orderDirectInstances();
     appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
+    appendCurves();
     appendSurface();
   } catch (const LimitReached& limit) {
     keepAfter(limit, result);
@@ -108,6 +109,7 @@ void Derivation::keepAfter(const LimitReached& limit, rt::DeriveResult& result) 
   try {
     orderDirectInstances();
     appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
+    appendCurves();
     appendSurface();
   } catch (const std::bad_alloc&) {
     result.messages.clear();
@@ -159,12 +161,7 @@ void Derivation::checkEnvironment() {
                         "plane"};
     surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
   }
-  for (const auto& env : m_.environment)
-    if (env.kind == "texture")
-      throw DeriveError{env.loc, "R001",
-                        "texture declarations are not yet supported when running: textures "
-                        "arrive with on-mesh marching (this grammar parses and type-checks; "
-                        "`fgsg check` accepts it)"};
+  marching_.loadTextures();
 }
 
 // Every asset is loaded before deriving, so a missing file is reported at its I().

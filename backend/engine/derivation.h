@@ -21,6 +21,7 @@
 
 #include "backend/commands/cga_commands.h"
 #include "backend/commands/collision_commands.h"
+#include "backend/commands/marching_commands.h"
 #include "backend/commands/scope_commands.h"
 #include "backend/commands/surface_world.h"
 #include "backend/commands/synthesis_command.h"
@@ -97,6 +98,7 @@ class Derivation final : public QueryHost {
   double occlusion(const rt::Scope& scope, ir::Loc at) override;
   double fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
   rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
+  double texture(const rt::Scope& scope, uint32_t env, ir::Loc at) override;
 
   // ------------------------------------------------ the runtime entry points of compiled
   // code (runtime/abi.def, native_bridge.cpp), for a sequential derivation (call.st set)
@@ -177,6 +179,7 @@ class Derivation final : public QueryHost {
   void initOutput();
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
+  void appendCurves();
   void orderDirectInstances();
 
   // grammar_facts.cpp
@@ -267,6 +270,7 @@ class Derivation final : public QueryHost {
   CgaCommands cga_;
   CollisionCommands collide_;
   SynthesisCommand synthesis_;
+  MarchingCommands marching_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
 

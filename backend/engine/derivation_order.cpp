@@ -21,9 +21,21 @@ constexpr uint32_t kMaxOnTheSpotDepth = 2000;
 void Derivation::runSequential() {
   streetDirection_ = rt::Vec3::UnitZ();
   std::vector<double> none;
-  execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{},
-           rt::rootKey(opt_.seed), 0, 0, none.data(),
-           UINT32_MAX);
+  const uint64_t root = rt::rootKey(opt_.seed);
+  if (opt_.seeds.empty() || !surface_) {
+    execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{}, root, 0, 0, none.data(),
+             UINT32_MAX);
+  } else {
+    // One axiom per seed (on-mesh marching's plants), each with a random stream of its
+    // own: seed k grows alike whatever the other seeds are.
+    for (size_t k = 0; k < opt_.seeds.size(); ++k) {
+      const auto& seed = opt_.seeds[k];
+      const rt::Vec3 at(seed.point[0], seed.point[1], seed.point[2]);
+      const rt::Vec3 heading(seed.direction[0], seed.direction[1], seed.direction[2]);
+      execRoot(0, m_.axiom, surface_->startScopeAt(at, seed.hasDirection ? &heading : nullptr), rt::GeomRef{},
+               rt::childKey(root, static_cast<uint32_t>(k)), 0, static_cast<uint32_t>(k), none.data(), UINT32_MAX);
+    }
+  }
   WaitingShape shape;
   while (true) {
     auto bucket = buckets_.begin();

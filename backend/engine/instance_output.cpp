@@ -84,6 +84,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                           "extrusion or translation grew too large"};
   }
   inst.color = symbolColor_[symbol];
+  if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;
   out_.params.insert(out_.params.end(), params, params + paramCount);
@@ -92,6 +93,10 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   if (usesOcclusion_) occluders_.add(scope);
   collide_.placed(scope);
 }
+
+// Smooth terminals are bent along their march segment's curve (Buron et al. §6), known
+// only now that every march has ended.
+void Derivation::appendCurves() { out_.curves = marching_.curves(); }
 
 // The surface the pattern grew on is part of the output, in a neutral grey.
 void Derivation::appendSurface() {

@@ -35,4 +35,8 @@ rt::Vec3 Derivation::fieldVector(const rt::Scope& scope, uint32_t env, const std
   return surface_->fieldVector(scope, env, member, at);
 }
 
+double Derivation::texture(const rt::Scope& scope, uint32_t env, ir::Loc at) {
+  return marching_.sampleTexture(scope, env, at);
+}
+
 }  // namespace fgsg::backend

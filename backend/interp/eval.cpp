@@ -154,7 +154,7 @@ void Evaluator::requireScope(const ir::Expr& e, const Frame& f) {
 double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   using ir::Query;
   const auto q = static_cast<Query>(e.index);
-  if (q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Texture) requireScope(e, f);
+  if (q != Query::ShapeDepth && q != Query::ShapeIndex) requireScope(e, f);
   switch (q) {
     case Query::ScopeSx: return f.scope->S.x();
     case Query::ScopeSy: return f.scope->S.y();
@@ -168,10 +168,7 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
     case Query::ScopeOcc: return f.host->occlusion(*f.scope, e.loc);
     case Query::Field:
       return f.host->fieldNumber(*f.scope, e.env, m_.strings[e.extra], e.loc);
-    case Query::Texture:
-      throw DeriveError{e.loc, "R001",
-                        "texture contexts are not yet supported: they arrive with on-mesh "
-                        "marching; this grammar parses and type-checks"};
+    case Query::Texture: return f.host->texture(*f.scope, e.env, e.loc);
   }
   throw DeriveError{e.loc, "R900", "internal: unknown query"};
 }

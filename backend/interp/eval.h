@@ -31,6 +31,9 @@ struct QueryHost {
                              ir::Loc at) = 0;
   virtual rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member,
                                ir::Loc at) = 0;
+  // context.NAME(texCoord): the texture at environment entry `env`, sampled at the
+  // scope's surface point.
+  virtual double texture(const rt::Scope& scope, uint32_t env, ir::Loc at) = 0;
 };
 
 struct Frame {

@@ -2,6 +2,7 @@
 
 #include "ir/printer.h"
 #include "runtime/abi.h"
+#include "runtime/io/cache_folder.h"
 #include "runtime/io/atomic_file.h"
 
 #include <llvm/ADT/StringMap.h>
@@ -34,19 +35,9 @@ std::string buildIdentity() {
   return "unknown-build";
 }
 
-std::string defaultFolder() {
-  if (const char* dir = std::getenv("FGSG_CACHE_DIR")) {
-    const std::string d = dir;
-    return d == "off" ? std::string() : d;
-  }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/fgsg";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/fgsg";
-  return {};
-}
-
 }  // namespace
 
-ObjectCache::ObjectCache() : folder_(defaultFolder()) {}
+ObjectCache::ObjectCache() : folder_(rt::io::cacheFolder()) {}
 ObjectCache::ObjectCache(std::string folder) : folder_(std::move(folder)) {}
 
 std::string ObjectCache::key(const ir::Module& m, const std::string& source) {

@@ -9,8 +9,7 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   const Frame& f = self.frame_;
   const auto q = static_cast<ir::Query>(kind);
   const ir::Loc at{line, col};
-  const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex &&
-                          q != ir::Query::Texture;
+  const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex;
   if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
   try {
     switch (q) {
@@ -33,7 +32,7 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
                                 [static_cast<int>(args[0])]
                           : f.host->fieldNumber(*f.scope, env, self.m_.strings.at(extra), at);
         return FGSG_OK;
-      case ir::Query::Texture: return FGSG_E_TEXTURE;
+      case ir::Query::Texture: *out = f.host->texture(*f.scope, env, at); return FGSG_OK;
     }
     return FGSG_E_INTERNAL;
   } catch (const DeriveError& e) {
@@ -50,12 +49,10 @@ DeriveError QueryBridge::error(const FgsgContext& ctx) const {
   const ir::Loc at{ctx.errorLine, ctx.errorCol};
   switch (static_cast<FgsgErrorCode>(ctx.errorCode)) {
     case FGSG_OK:
+    case FGSG_E_UNUSED_3:
     case FGSG_E_FIELD: break;
     case FGSG_E_VEC_UNAVAILABLE:
       return {at, "R900", "internal error: a vector expression the interpreter cannot read"};
-    case FGSG_E_TEXTURE:
-      return {at, "R001", "texture contexts are not yet supported: they arrive with on-mesh "
-                          "marching; this grammar parses and type-checks"};
     case FGSG_E_NO_SCOPE:
       return {at, "R006", "scope queries cannot be answered while a parallel derivation rewrites "
                           "its string: modules get their scope only when the turtle interprets it"};

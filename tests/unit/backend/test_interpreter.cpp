@@ -309,13 +309,23 @@ TEST_CASE("A grammar's own depth bound ends it quietly, a smaller --max-depth st
 }
 
 TEST_CASE("Constructs whose runtime comes later fail clearly when run", "[errors]") {
-  auto r = deriveText("Axiom ~> Marching(0.1, 30, true){ Top, Ext };\nTop ~> I(\"cube\");\nExt ~> I(\"cube\");");
+  auto r = deriveText("Axiom ~> Evolve(10){ Top };\nTop ~> I(\"cube\");");
   CHECK_FALSE(r.ok);
   REQUIRE(r.messages.size() == 1);
   CHECK(r.messages[0].code == "R001");
   CHECK(r.messages[0].line == 1);
   CHECK(r.messages[0].col == 10);
   CHECK(r.messages[0].message.find("not yet supported") != std::string::npos);
+}
+
+TEST_CASE("Marching on the plane is a located error asking for a surface", "[errors][marching]") {
+  auto r = deriveText("Axiom ~> Marching(0.1, 30, true){ Top, Ext };\nTop ~> I(\"cube\");\nExt ~> I(\"cube\");");
+  CHECK_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R022");
+  CHECK(r.messages[0].line == 1);
+  CHECK(r.messages[0].col == 10);
+  CHECK(r.messages[0].message.find("need a surface") != std::string::npos);
 }
 
 TEST_CASE("A missing asset is reported at its I()", "[errors]") {

@@ -295,6 +295,7 @@ struct Host : backend::QueryHost {
   rt::Vec3 fieldVector(const rt::Scope&, uint32_t, const std::string&, ir::Loc) override {
     return rt::Vec3(1, 2, 3);
   }
+  double texture(const rt::Scope&, uint32_t env, ir::Loc) override { return 0.5 + env; }
 };
 
 Expr query(ir::Query q, std::vector<Expr> args = {}) {

@@ -1,0 +1,198 @@
+#include "backend/commands/marching_commands.h"
+
+#include "backend/engine/derivation.h"
+#include "runtime/io/find_file.h"
+#include "runtime/marching/marching_surface.h"
+#include "runtime/marching/smooth_curves.h"
+#include "runtime/texture/texture_map.h"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+namespace fgsg::backend {
+namespace {
+
+using rt::Vec3;
+using rt::marching::MarchingSurface;
+using rt::marching::MarchPoint;
+
+// Branch(n) makes at most this many branches: beyond, a grammar has a bug, not a plant.
+constexpr double kMaxBranches = 1000;
+
+// Prepared surfaces are shared by every derivation of a process (the REPL re-derives,
+// `fgsg run --seed-points` derives per seed): the key is the surface's content.
+std::shared_ptr<const MarchingSurface> preparedSurface(const rt::surface::SurfaceMesh& mesh,
+                                                        const rt::marching::MarchingOptions& options,
+                                                        std::string& error) {
+  static std::mutex guard;
+  static std::map<std::pair<const void*, int>, std::weak_ptr<const MarchingSurface>> kept;
+  std::lock_guard<std::mutex> lock(guard);
+  auto& slot = kept[{&mesh, options.resolution}];
+  if (auto alive = slot.lock()) return alive;
+  auto made = MarchingSurface::prepare(mesh, options, error);
+  slot = made;
+  return made;
+}
+
+// The direction `turn` degrees counter-clockwise (seen from outside) from d in the image.
+rt::marching::Vec2 turned(const rt::marching::Vec2& d, double degrees) {
+  const double r = degrees * 3.14159265358979323846 / 180.0;
+  const double c = std::cos(r), s = std::sin(r);
+  return {c * d.x() - s * d.y(), s * d.x() + c * d.y()};
+}
+
+}  // namespace
+
+MarchingCommands::MarchingCommands(Derivation& derivation) : d_(derivation) {}
+MarchingCommands::~MarchingCommands() = default;
+
+std::vector<ir::OpKind> MarchingCommands::kinds() const {
+  using K = ir::OpKind;
+  return {K::Marching, K::MarchCondition, K::Branch};
+}
+
+void MarchingCommands::apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec& ex, Frame& f) {
+  switch (op.kind) {
+    case ir::OpKind::Marching: march(op, a, st, ex, f); break;
+    case ir::OpKind::MarchCondition: condition_ = a[0] != 0.0; break;
+    default: branch(op, a, st, ex, f); break;
+  }
+}
+
+void MarchingCommands::loadTextures() {
+  const ir::Module& m = d_.module();
+  textures_.clear();
+  textures_.resize(m.environment.size());
+  for (size_t k = 0; k < m.environment.size(); ++k) {
+    const auto& env = m.environment[k];
+    if (env.kind != "texture") continue;
+    auto texture = std::make_unique<rt::texture::TextureMap>();
+    std::string error;
+    if (!texture->load(rt::io::findFile(env.detail, d_.options().assetDirs), error))
+      throw DeriveError{env.loc, "R023", "texture '" + env.name + "': " + error};
+    textures_[k] = std::move(texture);
+  }
+}
+
+const MarchingSurface& MarchingCommands::surface(ir::Loc at) {
+  if (surface_) return *surface_;
+  if (!d_.surface())
+    throw DeriveError{at, "R022",
+                      "on-mesh marching and texture contexts need a surface: declare one "
+                      "(`surface \"bunny.off\";`) or pass --surface MESH"};
+  rt::marching::MarchingOptions options;
+  options.resolution = d_.options().atlasResolution;
+  options.cacheDir = d_.options().atlasCacheDir;
+  std::string error;
+  surface_ = preparedSurface(d_.surface()->mesh(), options, error);
+  if (!surface_) throw DeriveError{at, "R023", "the surface cannot be laid out for marching: " + error};
+  return *surface_;
+}
+
+double MarchingCommands::sampleTexture(const rt::Scope& scope, uint32_t env, ir::Loc at) {
+  const MarchingSurface& s = surface(at);
+  if (scope.face < 0)
+    throw DeriveError{at, "R022", "a texture context is sampled at a point of the surface, and this scope is on none"};
+  const rt::marching::Vec2 uv = s.texCoord({scope.face, scope.bary});
+  return textures_.at(env)->sample(uv.x(), uv.y());
+}
+
+int32_t MarchingCommands::nodeAt(const rt::Scope& scope) {
+  if (scope.marchNode >= 0) return scope.marchNode;
+  nodes_.push_back({scope.P, scope.Z()});
+  return static_cast<int32_t>(nodes_.size() - 1);
+}
+
+// Marching(length, angle, cond){ Top, Extruded } (§5): the scope's X, turned by `angle`
+// about the normal, is the marching direction; the first direction whose destination
+// satisfies `cond` wins — straight ahead first, then marchCandidates others spread over
+// the half circle ahead, nearest first, alternating sides (§8). Without one the march
+// stops here and nothing is derived.
+void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
+  const double length = a[0], angle = a[1];
+  if (!(std::isfinite(length) && length > 0))
+    throw DeriveError{op.loc, "R024", "the marching length must be a positive number, but it is " +
+                                          std::to_string(length)};
+  if (!std::isfinite(angle))
+    throw DeriveError{op.loc, "R024", "the marching angle is not a finite number"};
+  const MarchingSurface& s = surface(op.loc);
+  if (st.scope.face < 0)
+    throw DeriveError{op.loc, "R022", "Marching starts from a point of the surface, and this scope is on none"};
+  ++marches_;
+  const auto& options = d_.options();
+  const auto unit = options.marchInTexels ? rt::marching::LengthUnit::Image : rt::marching::LengthUnit::Surface;
+  MarchPoint from = s.place({st.scope.face, st.scope.bary}, st.scope.X());
+  const rt::marching::Vec2 ahead = turned(from.dir, angle);
+  const int sides = std::max(0, options.marchCandidates);
+  const double spacing = sides > 0 ? 180.0 / (sides + (sides % 2 ? 1 : 2)) : 0.0;
+  for (int k = 0; k <= sides; ++k) {
+    // 0, +1, -1, +2, -2 ... steps of `spacing` degrees: all strictly inside ±90°.
+    const int step = (k + 1) / 2;
+    from.dir = turned(ahead, (k % 2 ? 1 : -1) * step * spacing);
+    MarchPoint to;
+    if (!s.march(from, length, unit, to)) continue;  // the surface's edge came first
+    rt::Scope top = st.scope;
+    d_.surface()->placeOn(top, to.at.face, to.at.bary, s.direction(to));
+    condition_ = false;
+    d_.runBody(op, 2, top, st.geom, st, ex, f);
+    if (ex.culled) return;
+    if (!condition_) continue;
+    // The destination is a new node; the segment to it carries the Extruded part.
+    const int32_t start = nodeAt(st.scope);
+    nodes_.push_back({top.P, top.Z()});
+    top.marchNode = static_cast<int32_t>(nodes_.size() - 1);
+    top.marchSegment = -1;
+    segments_.push_back({static_cast<uint32_t>(start), static_cast<uint32_t>(top.marchNode)});
+    rt::Scope extruded = chord(st.scope, top, static_cast<int32_t>(segments_.size() - 1));
+    extruded.marchNode = start;
+    d_.runBody(op, 0, top, st.geom, st, ex, f);
+    if (ex.culled) return;
+    d_.runBody(op, 1, extruded, st.geom, st, ex, f);
+    return;
+  }
+  ++stopped_;
+}
+
+// The Extruded part's scope: X along the straight segment from `from` to `to`, Z the
+// mean of their normals (made square to X), as long as the segment, keeping the other
+// sizes, placed so that the segment runs along the middle of its bottom face: a unit
+// terminal across Y and Z (the `bark` cylinder) rests on the surface.
+rt::Scope MarchingCommands::chord(const rt::Scope& from, const rt::Scope& to, int32_t segment) {
+  rt::Scope s = from;
+  const Vec3 along = to.P - from.P;
+  const double length = along.norm();
+  const Vec3 x = length > 0 ? Vec3(along / length) : from.X();
+  Vec3 z = from.Z() + to.Z();
+  z -= x * x.dot(z);
+  if (z.norm() < 1e-12) z = from.Z() - x * x.dot(from.Z());
+  z.normalize();
+  s.axes.col(0) = x;
+  s.axes.col(1) = z.cross(x);
+  s.axes.col(2) = z;
+  s.S.x() = length;
+  s.P = from.P - 0.5 * s.S.y() * s.axes.col(1);
+  s.marchSegment = segment;
+  return s;
+}
+
+// Branch(n){ A, B }: n branches leave the scope's point — the first n-1 derive A, the
+// last derives the last part (with one part, all derive it), in that order.
+void MarchingCommands::branch(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
+  const double n = a[0];
+  if (!(n >= 0 && n <= kMaxBranches && n == std::floor(n)))
+    throw DeriveError{op.loc, "R024", "Branch(n) takes a whole number of branches from 0 to 1000"};
+  const size_t count = static_cast<size_t>(n);
+  if (st.scope.face >= 0 && count > 0) st.scope.marchNode = nodeAt(st.scope);
+  for (size_t k = 0; k < count; ++k) {
+    const size_t body = k + 1 < count ? 0 : op.bodies.size() - 1;
+    d_.runBody(op, body, st.scope, st.geom, st, ex, f);
+    if (ex.culled) return;
+  }
+}
+
+std::vector<rt::CurveSegment> MarchingCommands::curves() const {
+  return rt::marching::smoothSegments(nodes_, segments_);
+}
+
+}  // namespace fgsg::backend

@@ -1,0 +1,66 @@
+// On-mesh marching (Buron et al. 2015): `Marching(length, angle, cond){ Top, Extruded }`
+// walks the scope along the surface through its indirection geometry image (§5), tries
+// other directions on the half circle ahead when `cond` fails at the destination (§8),
+// and derives Top at the destination before Extruded on the segment (§6's depth-first
+// order); `Branch(n){ A, B }` splits a march into n. Texture contexts
+// (`context.mask(texCoord)`, §4) are sampled here too: they share the surface's texture
+// coordinates. Every march point and segment is kept as a graph, from which the smooth
+// terminals' Bezier curves are built once the derivation ends (§6).
+#pragma once
+
+#include "backend/commands/command_family.h"
+#include "runtime/instances.h"
+#include "runtime/marching/march_graph.h"
+#include "runtime/scope.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::marching {
+class MarchingSurface;
+}
+namespace fgsg::rt::texture {
+class TextureMap;
+}
+
+namespace fgsg::backend {
+
+class Derivation;
+
+class MarchingCommands final : public CommandFamily {
+ public:
+  explicit MarchingCommands(Derivation& derivation);
+  ~MarchingCommands() override;
+
+  std::vector<ir::OpKind> kinds() const override;
+  void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) override;
+
+  // Before deriving: loads the grammar's textures (a missing or unreadable one is an
+  // error at its declaration).
+  void loadTextures();
+  // context.NAME(texCoord) at the scope's surface point.
+  double sampleTexture(const rt::Scope& scope, uint32_t env, ir::Loc at);
+  // After deriving: the Bezier path of every march segment, indexed as the instances'
+  // `curve` (runtime/instances.h).
+  std::vector<rt::CurveSegment> curves() const;
+  uint64_t marches() const { return marches_; }
+  uint64_t marchesStopped() const { return stopped_; }
+
+ private:
+  const rt::marching::MarchingSurface& surface(ir::Loc at);
+  void march(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f);
+  void branch(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f);
+  int32_t nodeAt(const rt::Scope& scope);
+  static rt::Scope chord(const rt::Scope& from, const rt::Scope& to, int32_t segment);
+
+  Derivation& d_;
+  std::shared_ptr<const rt::marching::MarchingSurface> surface_;
+  std::vector<std::unique_ptr<rt::texture::TextureMap>> textures_;  // by environment index
+  std::vector<rt::marching::MarchNode> nodes_;
+  std::vector<rt::marching::MarchSegment> segments_;
+  bool condition_ = false;  // what the last MarchCondition said
+  uint64_t marches_ = 0, stopped_ = 0;
+};
+
+}  // namespace fgsg::backend

@@ -1,0 +1,119 @@
+// On-mesh marching (Buron et al. 2015): the paper's Table 1 and Fig. 11 / Table 2 here.
+//  * atlas: laying a ~100 K-triangle mesh out and rasterizing its 1024^2 indirection
+//    geometry image, without the cache (anchor: 0.54 to 1 s on the paper's machine);
+//  * ivy: examples/ivy.fgsg from 1 to 256 seeds on the same mesh — the derivation
+//    (marching included) and the assembly of the smooth terminals (bent bark, leaves)
+//    into one mesh, with the terminal polygons per second (anchor: 4.48 M polygons in
+//    136 ms, about 33 M/s, on a GTX 480). Polygons are the bark's quads and the leaves'
+//    quads, as the paper counts them: triangles / 2.
+// Prints one JSON object per line; the best of several repetitions is reported.
+//   build/bin/bench_ivy [--quick] [--mesh tests/data/meshes/refined_elephant.off]
+#include "backend/interp/interpreter.h"
+#include "bench/bench_grammar.h"
+#include "runtime/assemble.h"
+#include "runtime/marching/marching_surface.h"
+#include "runtime/surface/load_surface.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+
+namespace {
+
+using namespace fgsg;
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void atlas(const std::string& mesh, int reps) {
+  rt::surface::SurfaceMesh surface;
+  std::string error;
+  if (!rt::surface::loadSurface(mesh, surface, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  }
+  double best = 1e30;
+  rt::marching::PrepareStats stats;
+  for (int i = 0; i < reps; ++i) {
+    rt::marching::MarchingOptions options;  // no cache folder: built every time
+    rt::marching::PrepareStats s;
+    const auto t = Clock::now();
+    if (!rt::marching::MarchingSurface::prepare(surface, options, error, &s)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      std::exit(1);
+    }
+    const double seconds = since(t);
+    if (seconds < best) best = seconds, stats = s;
+  }
+  std::printf("{\"bench\":\"atlas\",\"faces\":%zu,\"resolution\":1024,\"charts\":%d,\"atlas_s\":%.4f,"
+              "\"image_s\":%.4f,\"seconds\":%.4f}\n",
+              surface.faceCount(), stats.charts, stats.atlasSeconds, stats.imageSeconds, best);
+  std::fflush(stdout);
+}
+
+void ivy(const std::string& mesh, int seeds, int reps) {
+  const std::string dir = std::string(FGSG_SOURCE_DIR) + "/examples";
+  static const ir::Module m = bench::compileGrammarFile(dir + "/ivy.fgsg");
+  rt::DeriveOptions opt;
+  opt.assetDirs = {dir, dir + "/assets"};
+  opt.surfaceOverride = mesh;
+  opt.surfaceSize = 2;
+  // Seeds spread over the surface's bounding cube; each snaps to the closest surface point.
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for (int k = 0; k < seeds; ++k) {
+    rt::DeriveOptions::Seed s;
+    for (double& c : s.point) c = coordinate(random);
+    opt.seeds.push_back(s);
+  }
+  double bestDerive = 1e30, bestAssemble = 1e30;
+  size_t triangles = 0, instances = 0;
+  for (int i = 0; i < reps; ++i) {
+    rt::AssetLibrary assets;
+    for (const auto& d : opt.assetDirs) assets.addSearchDir(d);
+    rt::DeriveResult r = backend::interpret(m, opt, assets);
+    if (!r.ok) {
+      std::fprintf(stderr, "ivy: %s\n", r.messages.empty() ? "?" : r.messages[0].message.c_str());
+      std::exit(1);
+    }
+    r.instances.instances.pop_back();  // the surface's own mesh
+    std::vector<int> meshOf;
+    std::string error;
+    if (!rt::resolveAssets(r.instances, assets, meshOf, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      std::exit(1);
+    }
+    const auto t = Clock::now();
+    const rt::Mesh out = rt::assembleInstances(r.instances, assets, meshOf);
+    const double assemble = since(t);
+    bestDerive = std::min(bestDerive, r.stats.deriveSeconds);
+    bestAssemble = std::min(bestAssemble, assemble);
+    triangles = out.triangleCount();
+    instances = r.instances.instances.size();
+  }
+  const double polygons = triangles / 2.0, seconds = bestDerive + bestAssemble;
+  std::printf("{\"bench\":\"ivy\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"derive_s\":%.4f,"
+              "\"assemble_s\":%.4f,\"seconds\":%.4f,\"polygons_per_s\":%.0f}\n",
+              seeds, instances, triangles, bestDerive, bestAssemble, seconds, polygons / seconds);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  std::string mesh = std::string(FGSG_SOURCE_DIR) + "/tests/data/meshes/refined_elephant.off";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc) mesh = argv[++i];
+  }
+  const int reps = quick ? 1 : 3;
+  atlas(mesh, reps);
+  for (int seeds : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
+    if (quick && seeds > 16) break;
+    ivy(mesh, seeds, reps);
+  }
+  return 0;
+}

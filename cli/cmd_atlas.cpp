@@ -1,0 +1,136 @@
+// fgsg atlas: lay a mesh out for on-mesh marching (its atlas and indirection geometry
+// image, cached like `fgsg run` caches them), say what was built, and optionally draw
+// it (--preview) or paint a mask for a texture context (--paint ... --mask).
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "runtime/io/cache_folder.h"
+#include "runtime/io/read_input.h"
+#include "runtime/marching/atlas_preview.h"
+#include "runtime/marching/marching_surface.h"
+#include "runtime/surface/load_surface.h"
+#include "runtime/texture/paint_mask.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace fgsg::cli {
+namespace {
+
+struct AtlasOptions {
+  std::string mesh;
+  std::string preview;
+  std::string mask;
+  int maskSize = 1024;
+  int resolution = 1024;
+  bool repair = false;
+  double surfaceSize = 0;
+  std::vector<rt::texture::Brush> brushes;
+};
+
+bool pngName(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+AtlasOptions parseAtlasOptions(const Args& args) {
+  AtlasOptions o;
+  OptionReader r(args);
+  while (!r.done()) {
+    if (r.grammarFile(o.mesh)) continue;
+    const std::string f = r.flag();
+    if (f == "--preview") o.preview = r.value(f);
+    else if (f == "--resolution") o.resolution = static_cast<int>(r.unsignedValue(f, 16, 8192));
+    else if (f == "--repair-surface") o.repair = true;
+    else if (f == "--surface-size") {
+      o.surfaceSize = r.numberValue(f);
+      if (!(o.surfaceSize > 0) || !std::isfinite(o.surfaceSize))
+        throw UsageError{"--surface-size must be a positive number"};
+    } else if (f == "--paint") {
+      // x,y,z,r: a sphere brush in the mesh's coordinates.
+      const std::string v = r.value(f);
+      double c[4];
+      if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3]) != 4 || !(c[3] > 0) ||
+          !std::isfinite(c[0] + c[1] + c[2] + c[3]))
+        throw UsageError{"--paint expects a sphere x,y,z,radius (a positive radius), got '" + v + "'"};
+      o.brushes.push_back({rt::Vec3(c[0], c[1], c[2]), c[3]});
+    } else if (f == "--mask") o.mask = r.value(f);
+    else if (f == "--mask-size") o.maskSize = static_cast<int>(r.unsignedValue(f, 8, 8192));
+    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
+  }
+  if (o.mesh.empty()) throw UsageError{"no mesh given: fgsg atlas MESH [--preview atlas.png]"};
+  if (!o.preview.empty() && !pngName(o.preview))
+    throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
+  if (!o.mask.empty() && !pngName(o.mask)) throw UsageError{"--mask " + o.mask + ": masks are PNG files (name it .png)"};
+  if (!o.brushes.empty() && o.mask.empty()) throw UsageError{"--paint needs --mask FILE.png to write the mask to"};
+  return o;
+}
+
+// --surface-size as fgsg run applies it: centred at the origin, largest extent `size`.
+void resize(rt::surface::SurfaceMesh& m, double size) {
+  const rt::Vec3 centre = 0.5 * (m.boundsMin + m.boundsMax);
+  const double extent = (m.boundsMax - m.boundsMin).maxCoeff();
+  if (!(extent > 0)) return;
+  for (rt::Vec3& v : m.vertices) v = (v - centre) * (size / extent);
+  m.buildTopology();
+}
+
+}  // namespace
+
+int atlasCommand(const Args& args) {
+  AtlasOptions opt;
+  try {
+    opt = parseAtlasOptions(args);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg atlas: " << e.message << "\n";
+    return 2;
+  }
+  std::string error;
+  if (!rt::io::checkInputFile(opt.mesh, "a mesh file", error)) {
+    std::cerr << "fgsg atlas: " << error << "\n";
+    return 1;
+  }
+  rt::surface::SurfaceMesh mesh;
+  rt::surface::SurfaceLoadOptions load;
+  load.repair = opt.repair;
+  if (!rt::surface::loadSurface(opt.mesh, mesh, error, load)) {
+    std::cerr << "fgsg atlas: " << error << "\n";
+    return 1;
+  }
+  if (opt.surfaceSize > 0) resize(mesh, opt.surfaceSize);
+  rt::marching::MarchingOptions options;
+  options.resolution = opt.resolution;
+  if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) options.cacheDir = cache + "/atlas";
+  rt::marching::PrepareStats stats;
+  const auto started = std::chrono::steady_clock::now();
+  const auto surface = rt::marching::MarchingSurface::prepare(mesh, options, error, &stats);
+  if (!surface) {
+    std::cerr << "fgsg atlas: " << opt.mesh << ": " << error << "\n";
+    return 1;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::printf("%s: %zu faces, %d charts (%s), %dx%d geometry image, %s in %.3f s\n", opt.mesh.c_str(),
+              mesh.faceCount(), stats.charts, stats.meshUV ? "the mesh's own texture coordinates" : "generated",
+              opt.resolution, opt.resolution, stats.fromCache ? "read from the cache" : "built", seconds);
+  if (!opt.preview.empty()) {
+    if (!rt::marching::writeAtlasPreview(*surface, opt.preview, error)) {
+      std::cerr << "fgsg atlas: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s\n", opt.preview.c_str());
+  }
+  if (!opt.mask.empty()) {
+    const rt::texture::MaskImage mask = rt::texture::paintMask(*surface, opt.maskSize, opt.brushes);
+    if (!rt::texture::writeMaskPng(mask, opt.mask, error)) {
+      std::cerr << "fgsg atlas: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s (%dx%d, %zu brushes)\n", opt.mask.c_str(), opt.maskSize, opt.maskSize, opt.brushes.size());
+  }
+  return 0;
+}
+
+}  // namespace fgsg::cli

@@ -1,0 +1,214 @@
+// The Marching and Branch commands and texture contexts as grammars use them (Buron et
+// al. 2015): straight marches on a flat surface, conditions read at the destination,
+// painted masks, branches, seeds, smooth terminals and the errors.
+#include "derive_helpers.h"
+#include "../runtime/scratch_files.h"
+#include "runtime/marching/marching_surface.h"
+#include "runtime/surface/procedural.h"
+#include "runtime/texture/paint_mask.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace fgsg;
+using fgsg::test::deriveText;
+using fgsg::test::unitPoint;
+
+namespace {
+
+// The instances of `asset`, in output order.
+std::vector<const rt::Instance*> instancesOf(const rt::DeriveResult& r, const std::string& asset) {
+  std::vector<const rt::Instance*> out;
+  for (const auto& inst : r.instances.instances)
+    if (r.instances.assets[inst.asset] == asset) out.push_back(&inst);
+  return out;
+}
+
+rt::DeriveOptions inFolder(const std::filesystem::path& dir) {
+  rt::DeriveOptions o;
+  o.assetDirs.push_back(dir.string());
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("Marching on a flat surface walks straight steps of exactly its length", "[marching]") {
+  auto r = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = Walk(0)
+    Walk(n) : n < 12 ~> Marching(0.1, 0, true){ Mark Walk(n + 1) }
+    Mark ~> I("cube")
+  )");
+  REQUIRE(r.ok);
+  const auto marks = instancesOf(r, "cube");
+  REQUIRE(marks.size() == 12);
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero();  // the start: the plane's centre
+  for (size_t k = 0; k < marks.size(); ++k) {
+    const Eigen::Vector3d p = unitPoint(*marks[k], 0, 0, 0);
+    CHECK((p - previous).norm() == Approx(0.1).margin(1e-9));
+    CHECK(p.x() == Approx(0.1 * (k + 1)).margin(1e-9));  // along the start's X: world X
+    CHECK(p.y() == Approx(0.0).margin(1e-9));
+    CHECK(p.z() == Approx(0.0).margin(1e-12));
+    previous = p;
+  }
+}
+
+TEST_CASE("Marching turns by its angle counter-clockwise about the normal, like RS", "[marching]") {
+  auto r = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = Marching(0.5, 90, true){ I("cube") }
+  )");
+  REQUIRE(r.ok);
+  const auto marks = instancesOf(r, "cube");
+  REQUIRE(marks.size() == 1);
+  const Eigen::Vector3d p = unitPoint(*marks[0], 0, 0, 0);
+  CHECK(p.x() == Approx(0.0).margin(1e-9));
+  CHECK(p.y() == Approx(0.5).margin(1e-9));
+}
+
+TEST_CASE("Extruded spans the segment and its terminals get the segment's smooth curve", "[marching]") {
+  auto r = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = S(1, 0.02, 0.02) Walk(0)
+    Walk(n) : n < 5 ~> Marching(0.2, 10, true){ Walk(n + 1), I("cube") }
+  )");
+  REQUIRE(r.ok);
+  const auto pieces = instancesOf(r, "cube");
+  REQUIRE(pieces.size() == 5);
+  REQUIRE(r.instances.curves.size() == 5);
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const rt::Instance& inst = *pieces[k];
+    REQUIRE(inst.curve < r.instances.curves.size());
+    const rt::CurveSegment& c = r.instances.curves[inst.curve];
+    const Eigen::Vector3d a(c.control[0][0], c.control[0][1], c.control[0][2]);
+    const Eigen::Vector3d b(c.control[3][0], c.control[3][1], c.control[3][2]);
+    CHECK((b - a).norm() == Approx(0.2).margin(1e-9));
+    // The scope's X runs along the segment, as long as it; the segment is the middle
+    // line of the scope's bottom face.
+    CHECK((unitPoint(inst, 1, 0.5, 0) - unitPoint(inst, 0, 0.5, 0) - (b - a)).norm() < 1e-9);
+    CHECK((unitPoint(inst, 0, 0.5, 0) - a).norm() < 1e-9);
+  }
+  // Consecutive curves share their joint, with one derivative there (C1).
+  for (size_t k = 0; k + 1 < r.instances.curves.size(); ++k) {
+    const auto& c0 = r.instances.curves[pieces[k]->curve];
+    const auto& c1 = r.instances.curves[pieces[k + 1]->curve];
+    for (int i = 0; i < 3; ++i) {
+      CHECK(c0.control[3][i] == Approx(c1.control[0][i]).margin(1e-12));
+      CHECK(c0.control[3][i] - c0.control[2][i] == Approx(c1.control[1][i] - c1.control[0][i]).margin(1e-9));
+    }
+  }
+}
+
+TEST_CASE("A failed condition tries the half circle ahead and stops when nothing holds", "[marching]") {
+  // Only destinations with y <= 0.25 are allowed, heading +Y: straight ahead fails after
+  // two steps, then the sideways candidates carry on along the line y <= 0.25.
+  auto r = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = RS(90) Walk(0)
+    Walk(n) : n < 8 ~> Marching(0.1, 0, Scope.py <= 0.25){ I("cube") Walk(n + 1) }
+  )");
+  REQUIRE(r.ok);
+  const auto marks = instancesOf(r, "cube");
+  REQUIRE(marks.size() == 8);
+  for (const auto* m : marks) CHECK(unitPoint(*m, 0, 0, 0).y() <= 0.25 + 1e-12);
+  CHECK(unitPoint(*marks[1], 0, 0, 0).y() == Approx(0.2).margin(1e-9));
+
+  rt::DeriveOptions straightOnly;
+  straightOnly.marchCandidates = 0;
+  auto stopped = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = RS(90) Walk(0)
+    Walk(n) : n < 8 ~> Marching(0.1, 0, Scope.py <= 0.25){ I("cube") Walk(n + 1) }
+  )", straightOnly);
+  REQUIRE(stopped.ok);
+  CHECK(instancesOf(stopped, "cube").size() == 2);
+}
+
+TEST_CASE("A painted mask keeps the march inside the painted area", "[marching][texture]") {
+  const auto dir = test::scratchDir("marching", "mask");
+  // Paint the disc of radius 0.6 around (0.5, 0, 0) on the very surface the grammar uses.
+  rt::surface::SurfaceMesh plane;
+  std::string error;
+  REQUIRE(rt::surface::makeProceduralSurface("plane", {4, 4, 32}, plane, error));
+  const auto surface = rt::marching::MarchingSurface::prepare(plane, {}, error);
+  REQUIRE(surface);
+  const auto mask = rt::texture::paintMask(*surface, 512, {{rt::Vec3(0.5, 0, 0), 0.6}});
+  REQUIRE(rt::texture::writeMaskPng(mask, (dir / "disc.png").string(), error));
+  auto r = deriveText(R"(
+    surface plane(4, 4, 32);
+    texture disc = "disc.png";
+    start = Walk(0)
+    Walk(n) : n < 40 ~> Marching(0.05, Rand(-30, 30), context.disc(texCoord) > 0.5){ I("cube") Walk(n + 1) }
+  )", inFolder(dir));
+  REQUIRE(r.ok);
+  const auto marks = instancesOf(r, "cube");
+  CHECK(marks.size() == 40);
+  const double pixel = 4.0 * std::sqrt(2.0) / 512;  // the atlas spreads 4 x 4 over at most 512 pixels
+  for (const auto* m : marks) CHECK((unitPoint(*m, 0, 0, 0) - rt::Vec3(0.5, 0, 0)).norm() <= 0.6 + 2 * pixel);
+}
+
+TEST_CASE("Branch(n) derives its first part n-1 times and its last part once", "[marching]") {
+  auto r = deriveText(R"(
+    surface plane(4, 4, 8);
+    start = Branch(4){ I("cube"), I("sphere") } Branch(2){ I("torus") }
+  )");
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "cube") == 3);
+  CHECK(test::countAsset(r, "sphere") == 1);
+  CHECK(test::countAsset(r, "torus") == 2);
+}
+
+TEST_CASE("Each seed grows with its own random stream", "[marching]") {
+  const std::string grammar = R"(
+    surface sphere(1);
+    start = Walk(0)
+    Walk(n) : n < 6 ~> Marching(0.1, Rand(-40, 40), true){ I("cube") Walk(n + 1) }
+  )";
+  rt::DeriveOptions one, two;
+  one.seeds.resize(1);
+  one.seeds[0].point[2] = 1;
+  two.seeds = one.seeds;
+  two.seeds.resize(2);
+  two.seeds[1].point[0] = 1;
+  auto a = deriveText(grammar, one), b = deriveText(grammar, two);
+  REQUIRE(a.ok);
+  REQUIRE(b.ok);
+  REQUIRE(a.instances.instances.size() == 6 + 1);  // and the surface
+  REQUIRE(b.instances.instances.size() == 12 + 1);
+  // The first seed's plant is the same alone or with another: its stream is its own.
+  std::vector<Eigen::Vector3d> alone, together;
+  for (const auto* m : instancesOf(a, "cube")) alone.push_back(unitPoint(*m, 0, 0, 0));
+  for (const auto* m : instancesOf(b, "cube"))
+    if (unitPoint(*m, 0, 0, 0).z() > 0.3) together.push_back(unitPoint(*m, 0, 0, 0));
+  REQUIRE(alone.size() == together.size());
+  for (const auto& p : alone) {
+    bool found = false;
+    for (const auto& q : together) found |= (p - q).norm() < 1e-12;
+    CHECK(found);
+  }
+  for (const auto& p : alone) CHECK(p.norm() == Approx(1.0).margin(0.02));  // on the sphere
+}
+
+TEST_CASE("Marching and texture errors are located and name the problem", "[marching][errors]") {
+  auto plane = deriveText("start = Marching(0.1, 0, true){ I(\"cube\") }");
+  REQUIRE(plane.messages.size() == 1);
+  CHECK(plane.messages[0].code == "R022");
+
+  auto negative = deriveText("surface plane(2, 2);\nstart = Marching(-0.1, 0, true){ I(\"cube\") }");
+  REQUIRE(negative.messages.size() == 1);
+  CHECK(negative.messages[0].code == "R024");
+  CHECK(negative.messages[0].line == 2);
+  CHECK(negative.messages[0].col == 9);
+
+  auto branches = deriveText("surface plane(2, 2);\nstart = Branch(2.5){ I(\"cube\") }");
+  REQUIRE(branches.messages.size() == 1);
+  CHECK(branches.messages[0].code == "R024");
+
+  const auto dir = test::scratchDir("marching", "missing");
+  auto missing = deriveText("surface plane(2, 2);\ntexture paint = \"nowhere.png\";\nstart = I(\"cube\")", inFolder(dir));
+  REQUIRE(missing.messages.size() == 1);
+  CHECK(missing.messages[0].code == "R023");
+  CHECK(missing.messages[0].line == 2);
+  CHECK(missing.messages[0].message.find("nowhere.png") != std::string::npos);
+}
