@@ -1,0 +1,55 @@
+// Generated atlases (buildAtlas) of the test meshes, one core: charts, time (best of
+// several runs, the surface already loaded) and coverage (the share of the unit square
+// the charts cover). The goal: well under 0.5 s for a 100 K-triangle mesh.
+// Prints one JSON object per line.
+//   build/bin/bench_atlas [--quick] [MESH.off ...]   (default: tests/data/meshes' large ones)
+#include "runtime/atlas/atlas.h"
+#include "runtime/surface/load_surface.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv) {
+  using namespace fgsg::rt;
+  int runs = 5;
+  std::vector<std::string> paths;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0)
+      runs = 1;
+    else
+      paths.push_back(argv[i]);
+  }
+  if (paths.empty())
+    for (const char* name : {"bunny00.off", "armadillo.off", "elephant.off", "ChineseDragon-10kv.off",
+                             "refined_elephant.off"})
+      paths.push_back(std::string(FGSG_SOURCE_DIR) + "/tests/data/meshes/" + name);
+  for (const std::string& path : paths) {
+    surface::SurfaceMesh mesh;
+    std::string error;
+    if (!surface::loadSurface(path, mesh, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+    atlas::Atlas a;
+    double best = 1e30;
+    for (int r = 0; r < runs; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      if (!atlas::buildAtlas(mesh, {}, a, error)) {
+        std::fprintf(stderr, "%s: %s\n", path.c_str(), error.c_str());
+        return 1;
+      }
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    double covered = 0;
+    for (const auto& t : a.cornerUV)
+      covered += 0.5 * ((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    std::printf("{\"mesh\": \"%s\", \"faces\": %zu, \"charts\": %d, \"seconds\": %.4f, \"coverage\": %.3f}\n",
+                name.c_str(), mesh.faces.size(), a.chartCount, best, covered);
+  }
+  return 0;
+}
