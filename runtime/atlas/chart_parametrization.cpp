@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
+#include <complex>
 
 namespace fgsg::rt::atlas {
 
@@ -57,28 +58,36 @@ bool parametrizeConformal(const surface::SurfaceMesh& mesh, const ChartMesh& cha
   uv[pinA] = Vec2(0, 0);
   uv[pinB] = Vec2((position(pinB) - position(pinA)).norm(), 0);
 
-  // Unknowns: u and v of every vertex but the pins, interleaved (u_i at 2i, v_i at 2i+1).
+  // Unknowns: z = u + iv of every vertex but the pins. The energy is z^H H z / 2 with H
+  // Hermitian, so the system is half the size of the real one in (u, v) and its
+  // factorization about half the work.
+  using Complex = std::complex<double>;
   std::vector<int> unknown(n, -1);
   int free = 0;
   for (int v = 0; v < n; ++v)
     if (v != pinA && v != pinB) unknown[v] = free++;
-  const int size = 2 * free;
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(12 * chart.triangles.size() + 4 * chart.boundaryEdges.size());
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
-  // Adds `w` to the Hessian at (coordinate a of vertex i, coordinate b of vertex j); a
-  // pinned partner moves the term to the right-hand side.
-  auto add = [&](int i, int a, int j, int b, double w) {
-    if (unknown[i] < 0) return;
-    const int row = 2 * unknown[i] + a;
-    if (unknown[j] < 0)
-      rhs[row] -= w * uv[j][b];
-    else
-      entries.emplace_back(row, 2 * unknown[j] + b, w);
+  std::vector<Complex> z(n, 0.0);
+  z[pinB] = Complex(uv[pinB].x(), 0);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(free);
+  std::vector<double> diagonal(free, 0.0);
+  std::vector<Eigen::Triplet<Complex>> lower;  // the factorization reads the lower half
+  lower.reserve(3 * chart.triangles.size() + chart.boundaryEdges.size() + free);
+  // H(i, j) += w and H(j, i) += conj(w); a pinned partner moves the term to the right.
+  auto couple = [&](int i, int j, Complex w) {
+    const int a = unknown[i], b = unknown[j];
+    if (a >= 0 && b >= 0) {
+      if (a > b)
+        lower.emplace_back(a, b, w);
+      else
+        lower.emplace_back(b, a, std::conj(w));
+    } else if (a >= 0) {
+      rhs[a] -= w * z[j];
+    } else if (b >= 0) {
+      rhs[b] -= std::conj(w) * z[i];
+    }
   };
 
-  // Dirichlet energy: a quarter of cot(angle) times the squared difference across the
-  // opposite edge, for u and for v alike.
+  // Dirichlet energy: half of cot(angle) times |z_i - z_j|^2 across the opposite edge.
   for (const auto& t : chart.triangles) {
     const auto flat = flatten(position(t[0]), position(t[1]), position(t[2]));
     const double twiceArea = twiceSignedArea(flat);
@@ -86,31 +95,23 @@ bool parametrizeConformal(const surface::SurfaceMesh& mesh, const ChartMesh& cha
       const Vec2 a = flat[(k + 1) % 3] - flat[k], b = flat[(k + 2) % 3] - flat[k];
       const double halfCot = 0.5 * a.dot(b) / twiceArea;
       const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-      for (int c = 0; c < 2; ++c) {
-        add(i, c, i, c, halfCot);
-        add(j, c, j, c, halfCot);
-        add(i, c, j, c, -halfCot);
-        add(j, c, i, c, -halfCot);
-      }
+      if (unknown[i] >= 0) diagonal[unknown[i]] += halfCot;
+      if (unknown[j] >= 0) diagonal[unknown[j]] += halfCot;
+      couple(i, j, -halfCot);
     }
   }
-  // Minus the flat area: half of (u_i v_j - u_j v_i) per boundary edge i -> j.
-  for (const auto& e : chart.boundaryEdges) {
-    const int i = e[0], j = e[1];
-    add(i, 0, j, 1, -0.5);
-    add(j, 1, i, 0, -0.5);
-    add(j, 0, i, 1, 0.5);
-    add(i, 1, j, 0, 0.5);
-  }
+  // Minus the flat area: Im(conj(z_i) z_j) / 2 per boundary edge i -> j.
+  for (const auto& e : chart.boundaryEdges) couple(e[0], e[1], Complex(0, 0.5));
+  for (int a = 0; a < free; ++a) lower.emplace_back(a, a, diagonal[a]);
 
-  Eigen::SparseMatrix<double> system(size, size);
-  system.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+  Eigen::SparseMatrix<Complex> system(free, free);
+  system.setFromTriplets(lower.begin(), lower.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> solver(system);
   if (solver.info() != Eigen::Success) return false;
-  const Eigen::VectorXd x = solver.solve(rhs);
+  const Eigen::VectorXcd x = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !x.allFinite()) return false;
   for (int v = 0; v < n; ++v)
-    if (unknown[v] >= 0) uv[v] = Vec2(x[2 * unknown[v]], x[2 * unknown[v] + 1]);
+    if (unknown[v] >= 0) uv[v] = Vec2(x[unknown[v]].real(), x[unknown[v]].imag());
   return true;
 }
 
