@@ -1,6 +1,6 @@
-// Generated atlases (buildAtlas) of the test meshes, one core: charts, time (best of
-// several runs, the surface already loaded) and coverage (the share of the unit square
-// the charts cover). The goal: well under 0.5 s for a 100 K-triangle mesh.
+// Generated atlases (buildAtlas) of the test meshes, charts flattened on all cores:
+// charts, time (best of several runs, the surface already loaded) and coverage (the share
+// of the unit square the charts cover). The goal: well under 0.5 s for a 100 K-triangle mesh.
 // Prints one JSON object per line.
 //   build/bin/bench_atlas [--quick] [MESH.off ...]   (default: tests/data/meshes' large ones)
 #include "runtime/atlas/atlas.h"

@@ -9,6 +9,10 @@
 #include "runtime/atlas/chart_segmentation.h"
 #include "runtime/atlas/chart_splitting.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace fgsg::rt::atlas {
@@ -31,31 +35,42 @@ bool buildAtlas(const surface::SurfaceMesh& mesh, const AtlasOptions& options, A
   Segmentation segmentation = growCharts(mesh, centroids, options.maxNormalDeviation);
   cleanUpCharts(mesh, segmentation);
 
-  // Charts waiting to be flattened, each with a label of its own in `label`.
+  // Charts waiting to be flattened, each with a label of its own in `label`. They are
+  // flattened in waves, in parallel (each chart on its own); the ones that fail are split
+  // in order and make the next wave, so the result does not depend on the threads.
   std::vector<int> label = segmentation.faceChart;
-  std::vector<std::vector<int>> pending(segmentation.chartCount);
-  for (size_t f = 0; f < nf; ++f) pending[label[f]].push_back(int(f));
+  std::vector<std::vector<int>> wave(segmentation.chartCount);
+  for (size_t f = 0; f < nf; ++f) wave[label[f]].push_back(int(f));
   int nextLabel = segmentation.chartCount;
-  ChartMeshScratch meshScratch;
+  tbb::enumerable_thread_specific<ChartMeshScratch> meshScratch;
   SplitScratch splitScratch;
   std::vector<FlatChart> flat;
-  for (size_t next = 0; next < pending.size(); ++next) {
-    std::vector<int> faces = std::move(pending[next]);
-    const ChartMesh chart = extractChart(mesh, faces, label, meshScratch);
-    FlatChart laid;
-    if (chart.isDisk() && flattenChart(mesh, chart, laid)) {
-      flat.push_back(std::move(laid));
-      continue;
+  while (!wave.empty()) {
+    std::vector<FlatChart> laid(wave.size());
+    std::vector<uint8_t> done(wave.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, wave.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) {
+        const ChartMesh chart = extractChart(mesh, wave[i], label, meshScratch.local());
+        done[i] = chart.isDisk() && flattenChart(mesh, chart, laid[i]);
+      }
+    });
+    std::vector<std::vector<int>> next;
+    for (size_t i = 0; i < wave.size(); ++i) {
+      if (done[i]) {
+        flat.push_back(std::move(laid[i]));
+        continue;
+      }
+      if (wave[i].size() == 1) {  // validated surfaces have no such face
+        error = "atlas: face " + std::to_string(wave[i][0]) + " cannot be laid flat (degenerate?)";
+        return false;
+      }
+      auto halves = bisectChart(mesh, centroids, wave[i], label, splitScratch);
+      for (int f : halves[1]) label[f] = nextLabel;
+      ++nextLabel;
+      next.push_back(std::move(halves[0]));
+      next.push_back(std::move(halves[1]));
     }
-    if (chart.faces.size() == 1) {  // validated surfaces have no such face
-      error = "atlas: face " + std::to_string(chart.faces[0]) + " cannot be laid flat (degenerate?)";
-      return false;
-    }
-    auto halves = bisectChart(mesh, centroids, chart.faces, label, splitScratch);
-    for (int f : halves[1]) label[f] = nextLabel;
-    ++nextLabel;
-    pending.push_back(std::move(halves[0]));
-    pending.push_back(std::move(halves[1]));
+    wave = std::move(next);
   }
   // Chart numbers by their lowest face, whatever order splitting produced them in.
   std::sort(flat.begin(), flat.end(),
