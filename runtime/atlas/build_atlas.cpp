@@ -4,6 +4,7 @@
 
 #include "runtime/atlas/chart_cleanup.h"
 #include "runtime/atlas/chart_flattening.h"
+#include "runtime/atlas/chart_merging.h"
 #include "runtime/atlas/chart_mesh.h"
 #include "runtime/atlas/chart_packing.h"
 #include "runtime/atlas/chart_segmentation.h"
@@ -16,6 +17,29 @@
 #include <algorithm>
 
 namespace fgsg::rt::atlas {
+
+namespace {
+
+// The faces along the shortest boundary loop but the longest (the outer one, most likely):
+// a cut through that hole removes it at the cost of one more chart.
+std::vector<int> facesAlongInnerLoop(const surface::SurfaceMesh& mesh, const ChartMesh& chart) {
+  std::vector<double> length(chart.boundaryLoops, 0.0);
+  for (size_t e = 0; e < chart.boundaryEdges.size(); ++e) {
+    const auto& edge = chart.boundaryEdges[e];
+    length[chart.boundaryLoop[e]] +=
+        (mesh.vertices[chart.meshVertex[edge[1]]] - mesh.vertices[chart.meshVertex[edge[0]]]).norm();
+  }
+  const int outer = int(std::max_element(length.begin(), length.end()) - length.begin());
+  int inner = -1;
+  for (int l = 0; l < chart.boundaryLoops; ++l)
+    if (l != outer && (inner < 0 || length[l] < length[inner])) inner = l;
+  std::vector<int> faces;
+  for (size_t e = 0; e < chart.boundaryEdges.size(); ++e)
+    if (chart.boundaryLoop[e] == inner) faces.push_back(chart.faces[chart.boundaryFace[e]]);
+  return faces;
+}
+
+}  // namespace
 
 bool buildAtlas(const surface::SurfaceMesh& mesh, const AtlasOptions& options, Atlas& out,
                 std::string& error) {
@@ -33,6 +57,7 @@ bool buildAtlas(const surface::SurfaceMesh& mesh, const AtlasOptions& options, A
 
   const std::vector<Vec3> centroids = faceCentroids(mesh);
   Segmentation segmentation = growCharts(mesh, centroids, options.maxNormalDeviation);
+  mergeCompatibleCharts(mesh, options.maxNormalDeviation, segmentation);
   cleanUpCharts(mesh, segmentation);
 
   // Charts waiting to be flattened, each with a label of its own in `label`. They are
@@ -48,10 +73,12 @@ bool buildAtlas(const surface::SurfaceMesh& mesh, const AtlasOptions& options, A
   while (!wave.empty()) {
     std::vector<FlatChart> laid(wave.size());
     std::vector<uint8_t> done(wave.size(), 0);
+    std::vector<std::vector<int>> hole(wave.size());  // where to cut a chart with holes
     tbb::parallel_for(tbb::blocked_range<size_t>(0, wave.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) {
         const ChartMesh chart = extractChart(mesh, wave[i], label, meshScratch.local());
         done[i] = chart.isDisk() && flattenChart(mesh, chart, laid[i]);
+        if (!done[i] && chart.boundaryLoops > 1) hole[i] = facesAlongInnerLoop(mesh, chart);
       }
     });
     std::vector<std::vector<int>> next;
@@ -64,7 +91,7 @@ bool buildAtlas(const surface::SurfaceMesh& mesh, const AtlasOptions& options, A
         error = "atlas: face " + std::to_string(wave[i][0]) + " cannot be laid flat (degenerate?)";
         return false;
       }
-      auto halves = bisectChart(mesh, centroids, wave[i], label, splitScratch);
+      auto halves = bisectChart(mesh, centroids, wave[i], label, splitScratch, hole[i]);
       for (int f : halves[1]) label[f] = nextLabel;
       ++nextLabel;
       next.push_back(std::move(halves[0]));

@@ -44,6 +44,7 @@ ChartMesh extractChart(const surface::SurfaceMesh& mesh, std::vector<int> faces,
       const int g = mesh.neighbours[f][k];
       if (!inChart(g)) {
         chart.boundaryEdges.push_back({3 * i + k, 3 * i + (k + 1) % 3});  // corners for now
+        chart.boundaryFace.push_back(i);
         continue;
       }
       if (g < f) continue;  // each inner edge once
@@ -72,13 +73,15 @@ ChartMesh extractChart(const surface::SurfaceMesh& mesh, std::vector<int> faces,
 
   // A fan that is not a full ring has one boundary edge leaving it and one arriving, so
   // the boundary edges chain into loops.
-  std::vector<int> next(chart.vertexCount(), -1);
-  for (const auto& e : chart.boundaryEdges) next[e[0]] = e[1];
-  std::vector<uint8_t> seen(chart.vertexCount(), 0);
-  for (const auto& e : chart.boundaryEdges) {
-    if (seen[e[0]]) continue;
+  const int nv = chart.vertexCount();
+  std::vector<int> leaving(nv, -1);  // the boundary edge leaving each vertex
+  for (int e = 0; e < int(chart.boundaryEdges.size()); ++e) leaving[chart.boundaryEdges[e][0]] = e;
+  chart.boundaryLoop.assign(chart.boundaryEdges.size(), -1);
+  for (int e = 0; e < int(chart.boundaryEdges.size()); ++e) {
+    if (chart.boundaryLoop[e] >= 0) continue;
+    for (int walk = e; walk >= 0 && chart.boundaryLoop[walk] < 0; walk = leaving[chart.boundaryEdges[walk][1]])
+      chart.boundaryLoop[walk] = chart.boundaryLoops;
     ++chart.boundaryLoops;
-    for (int v = e[0]; v >= 0 && !seen[v]; v = next[v]) seen[v] = 1;
   }
   return chart;
 }

@@ -18,6 +18,8 @@ struct ChartMesh {
   // Boundary edges as (from, to) chart vertices, running with their face (counter-
   // clockwise), so the chart lies to the left.
   std::vector<std::array<int, 2>> boundaryEdges;
+  std::vector<int> boundaryFace;  // per boundary edge: its chart face
+  std::vector<int> boundaryLoop;  // per boundary edge: its loop, 0 .. boundaryLoops-1
   int boundaryLoops = 0;
   bool connected = true;  // over shared edges
 

@@ -60,14 +60,27 @@ int growFrom(const surface::SurfaceMesh& mesh, const std::vector<Vec3>& centroid
 std::array<std::vector<int>, 2> bisectChart(const surface::SurfaceMesh& mesh,
                                             const std::vector<Vec3>& centroids,
                                             const std::vector<int>& faces,
-                                            const std::vector<int>& faceLabel, SplitScratch& scratch) {
+                                            const std::vector<int>& faceLabel, SplitScratch& scratch,
+                                            const std::vector<int>& aroundHole) {
   scratch.distance.resize(mesh.faces.size());
   scratch.source.resize(mesh.faces.size());
   const int label = faceLabel[faces[0]];
-  const int first = *std::min_element(faces.begin(), faces.end());
-  // Two sweeps find two faces about as far apart as the chart allows.
-  const int a = growFrom(mesh, centroids, faces, faceLabel, label, {first}, scratch);
-  const int b = growFrom(mesh, centroids, faces, faceLabel, label, {a}, scratch);
+  int a = -1, b = -1;
+  if (!aroundHole.empty()) {
+    // The hole's lowest face, and the face along the hole farthest from it.
+    a = *std::min_element(aroundHole.begin(), aroundHole.end());
+    growFrom(mesh, centroids, faces, faceLabel, label, {a}, scratch);
+    for (int f : aroundHole)
+      if (f != a && (b < 0 || scratch.distance[f] > scratch.distance[b] ||
+                     (scratch.distance[f] == scratch.distance[b] && f < b)))
+        b = f;
+  }
+  if (b < 0) {
+    // Two sweeps find two faces about as far apart as the chart allows.
+    const int first = *std::min_element(faces.begin(), faces.end());
+    a = growFrom(mesh, centroids, faces, faceLabel, label, {first}, scratch);
+    b = growFrom(mesh, centroids, faces, faceLabel, label, {a}, scratch);
+  }
   growFrom(mesh, centroids, faces, faceLabel, label, {a, b}, scratch);
   std::array<std::vector<int>, 2> halves;
   for (int f : faces) halves[scratch.source[f] == 1 ? 1 : 0].push_back(f);

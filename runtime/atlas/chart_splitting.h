@@ -19,10 +19,13 @@ struct SplitScratch {
 
 // Splits `faces` (a connected set of at least two faces, all labelled
 // faceLabel[faces[0]], distances measured between `centroids`) in two non-empty, connected
-// halves, each ascending. Deterministic.
+// halves, each ascending. Deterministic. With `aroundHole` (the chart's faces along one
+// inner boundary loop), the two halves grow from opposite sides of that hole, so the cut
+// runs through it and the hole is gone from both; otherwise from the chart's two ends.
 std::array<std::vector<int>, 2> bisectChart(const surface::SurfaceMesh& mesh,
                                             const std::vector<Vec3>& centroids,
                                             const std::vector<int>& faces,
-                                            const std::vector<int>& faceLabel, SplitScratch& scratch);
+                                            const std::vector<int>& faceLabel, SplitScratch& scratch,
+                                            const std::vector<int>& aroundHole = {});
 
 }  // namespace fgsg::rt::atlas
