@@ -84,7 +84,9 @@ TEST_CASE("atlases of real meshes: packed, gutters kept, uniform density, bounde
     const char* name;
     double meanStretchBound;
   };
-  for (const Case& c : {Case{"bunny00.off", 1.2}, Case{"elephant.off", 1.2}, Case{"armadillo.off", 1.2}}) {
+  // Measured mean stretch (largest over smallest singular value, area-weighted): bunny
+  // 1.006, elephant 1.028, armadillo 1.025; the bounds keep a margin of about 5%.
+  for (const Case& c : {Case{"bunny00.off", 1.06}, Case{"elephant.off", 1.08}, Case{"armadillo.off", 1.08}}) {
     INFO(c.name);
     const surface::SurfaceMesh mesh = loadTestMesh(c.name);
     atlas::AtlasOptions options;
@@ -98,7 +100,7 @@ TEST_CASE("atlases of real meshes: packed, gutters kept, uniform density, bounde
                 figures.maxStretch);
     requireUniformDensity(figures);
     REQUIRE(figures.meanStretch < c.meanStretchBound);
-    REQUIRE(figures.coverage > 0.3);
+    REQUIRE(figures.coverage > 0.3);  // measured 0.41, 0.42, 0.375
   }
 }
 
