@@ -124,6 +124,48 @@ void writeSeamGltf(const fs::path& dir, const std::string& bufferUri, const std:
 })");
 }
 
+// kSeamObj as COLLADA, placed by `matrix` (16 numbers, row by row).
+void writeSeamDae(const fs::path& path, const std::string& matrix) {
+  writeBytes(path, R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="seam" name="seam">
+      <mesh>
+        <source id="seam-positions">
+          <float_array id="seam-positions-array" count="18">0 0 0 1 0 0 2 0 0 0 1 0 1 1 0 2 1 0</float_array>
+          <technique_common><accessor source="#seam-positions-array" count="6" stride="3">
+            <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+          </accessor></technique_common>
+        </source>
+        <source id="seam-uv">
+          <float_array id="seam-uv-array" count="16">0 0 0.25 0 0.25 0.25 0 0.25 0.5 0.5 0.75 0.5 0.75 0.75 0.5 0.75</float_array>
+          <technique_common><accessor source="#seam-uv-array" count="8" stride="2">
+            <param name="S" type="float"/><param name="T" type="float"/>
+          </accessor></technique_common>
+        </source>
+        <vertices id="seam-vertices"><input semantic="POSITION" source="#seam-positions"/></vertices>
+        <triangles count="4">
+          <input semantic="VERTEX" source="#seam-vertices" offset="0"/>
+          <input semantic="TEXCOORD" source="#seam-uv" offset="1" set="0"/>
+          <p>0 0 1 1 4 2  0 0 4 2 3 3  1 4 2 5 5 6  1 4 5 6 4 7</p>
+        </triangles>
+      </mesh>
+    </geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="Scene" name="Scene">
+      <node id="seam-node" name="seam-node">
+        <matrix>)" + matrix + R"(</matrix>
+        <instance_geometry url="#seam"/>
+      </node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#Scene"/></scene>
+</COLLADA>
+)");
+}
+
 }  // namespace
 
 TEST_CASE("OBJ texture coordinates come back per corner, the seam welded", "[textured mesh]") {
@@ -173,6 +215,34 @@ TEST_CASE("glTF TEXCOORD_0 comes back per corner with v turned up, the seam weld
   const fs::path dir = scratchDir("gltf");
   writeSeamGltf(dir, "seam.bin");
   requireSeamCorners(load(dir / "seam.gltf"));
+}
+
+TEST_CASE("COLLADA texture coordinates come back per corner, the seam welded", "[textured mesh]") {
+  const fs::path dir = scratchDir("dae");
+  writeSeamDae(dir / "seam.dae", "1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1");
+  requireSeamCorners(load(dir / "seam.dae"));
+}
+
+TEST_CASE("a node that mirrors its mesh keeps the faces counter-clockwise", "[textured mesh]") {
+  // x -> -x, moved by 3: each face's corners come back in the order 0, 2, 1, each with
+  // its own coordinate, so the faces still face +z.
+  const fs::path dir = scratchDir("dae-mirror");
+  writeSeamDae(dir / "mirror.dae", "-1 0 0 3  0 1 0 0  0 0 1 0  0 0 0 1");
+  const surface::SurfaceMesh mesh = load(dir / "mirror.dae");
+  REQUIRE(mesh.faces.size() == 4);
+  for (int f = 0; f < 4; ++f) {
+    REQUIRE(mesh.faceNormals[f].isApprox(Vec3(0, 0, 1)));
+    for (int k = 0; k < 3; ++k) {
+      const Corner& c = kSeamCorners[f][k == 0 ? 0 : 3 - k];
+      REQUIRE(mesh.vertices[mesh.faces[f][k]] == Vec3(3 - c.position.x(), c.position.y(), c.position.z()));
+      REQUIRE(mesh.textureUV[f][k] == c.uv);
+    }
+  }
+  // The texture now runs clockwise over the surface: mirrored, and said so.
+  atlas::Atlas a;
+  std::string error;
+  REQUIRE_FALSE(atlas::atlasFromTextureUV(mesh, {}, a, error));
+  REQUIRE(error.rfind("texture coordinates are mirrored: 2 of 2 charts run clockwise", 0) == 0);
 }
 
 TEST_CASE("overlapping texture coordinates in a file get the located error", "[textured mesh]") {
