@@ -2,13 +2,15 @@
 // charts, time (best of several runs, the surface already loaded) and coverage (the share
 // of the unit square the charts cover). The goal: well under 0.5 s for a 100 K-triangle mesh.
 // Prints one JSON object per line.
-//   build/bin/bench_atlas [--quick] [MESH.off ...]   (default: tests/data/meshes' large ones)
+//   build/bin/bench_atlas [--quick] [--deviation DEGREES] [MESH.off ...]
+//   (default: tests/data/meshes' large ones, AtlasOptions' default deviation)
 #include "runtime/atlas/atlas.h"
 #include "runtime/surface/load_surface.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -17,9 +19,12 @@ int main(int argc, char** argv) {
   using namespace fgsg::rt;
   int runs = 5;
   std::vector<std::string> paths;
+  atlas::AtlasOptions options;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0)
       runs = 1;
+    else if (std::strcmp(argv[i], "--deviation") == 0 && i + 1 < argc)
+      options.maxNormalDeviation = std::atof(argv[++i]);
     else
       paths.push_back(argv[i]);
   }
@@ -38,7 +43,7 @@ int main(int argc, char** argv) {
     double best = 1e30;
     for (int r = 0; r < runs; ++r) {
       const auto start = std::chrono::steady_clock::now();
-      if (!atlas::buildAtlas(mesh, {}, a, error)) {
+      if (!atlas::buildAtlas(mesh, options, a, error)) {
         std::fprintf(stderr, "%s: %s\n", path.c_str(), error.c_str());
         return 1;
       }
