@@ -20,6 +20,9 @@ namespace {
 // Overlaps shallower than this fraction of the layout's size are the rounding of
 // coordinates stored as floats where two charts touch, not reuse of the same texels.
 constexpr double kOverlapTolerance = 1e-6;
+// Texture coordinates repeat a texture a few times at most; far beyond that they are
+// garbage, and their extent would overflow the overlap search.
+constexpr double kMaxCoordinate = 1e9;
 
 std::string fmt(const Vec2& p) {
   char buf[64];
@@ -100,16 +103,12 @@ bool atlasFromTextureUV(const surface::SurfaceMesh& mesh, const AtlasOptions& op
 
   // Each check names the faces; later checks rely on the earlier ones passing.
   std::vector<int> bad;
+  auto unusable = [](const Vec2& p) { return !p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxCoordinate; };
   for (size_t f = 0; f < nf; ++f)
-    for (const Vec2& p : mesh.textureUV[f])
-      if (!p.allFinite()) {
-        bad.push_back(int(f));
-        break;
-      }
+    if (std::any_of(mesh.textureUV[f].begin(), mesh.textureUV[f].end(), unusable)) bad.push_back(int(f));
   if (!bad.empty()) {
-    error = "texture coordinates are not finite numbers at " + faceList(bad) + " (first: " +
-            fmt(*std::find_if(mesh.textureUV[bad[0]].begin(), mesh.textureUV[bad[0]].end(),
-                              [](const Vec2& p) { return !p.allFinite(); })) +
+    error = "texture coordinates are not finite numbers (or beyond +-1e9) at " + faceList(bad) +
+            " (first: " + fmt(*std::find_if(mesh.textureUV[bad[0]].begin(), mesh.textureUV[bad[0]].end(), unusable)) +
             ")";
     return false;
   }

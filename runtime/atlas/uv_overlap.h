@@ -1,5 +1,5 @@
-// Whether any two triangles of a flat layout overlap: a chart that folds over itself
-// (generated atlases) or texture coordinates that reuse the same place twice (files).
+// Whether any two triangles of a flat layout overlap: texture coordinates that use the
+// same place twice (mirrored halves sharing one texture, stacked islands).
 // Triangles are binned into a uniform grid about the size of a triangle, so a sound layout
 // is checked in time proportional to its size rather than to its square.
 #pragma once
@@ -20,7 +20,8 @@ struct UVOverlap {
 // The first overlapping pair in a deterministic scan. Triangles that only touch (a shared
 // edge or corner, or an edge lying along another) do not overlap: interiors must
 // intersect by more than `tolerance` (in the triangles' units) across every separating
-// direction. Triangles must not be degenerate; either orientation is accepted.
+// direction. Triangles must not be degenerate and their coordinates must stay within
+// about 1e150 (so the layout's extent is finite); either orientation is accepted.
 UVOverlap findUVOverlap(const std::vector<std::array<Vec2, 3>>& triangles, double tolerance);
 
 }  // namespace fgsg::rt::atlas

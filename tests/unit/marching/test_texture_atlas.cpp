@@ -138,7 +138,11 @@ TEST_CASE("degenerate and non-finite texture coordinates are named", "[texture a
           "surface there cannot be told apart in a texture");
   mesh = twoSquares(Vec2(0, 0), Vec2(0.5, 0.5));
   mesh.textureUV[2][1].y() = NAN;
-  REQUIRE(failure(mesh) == "texture coordinates are not finite numbers at face 2 (first: (0.75, nan))");
+  REQUIRE(failure(mesh) == "texture coordinates are not finite numbers (or beyond +-1e9) at face 2 (first: (0.75, nan))");
+  mesh = twoSquares(Vec2(0, 0), Vec2(0.5, 0.5));
+  mesh.textureUV[0][0].x() = mesh.textureUV[1][0].x() = -1e300;
+  REQUIRE(failure(mesh) ==
+          "texture coordinates are not finite numbers (or beyond +-1e9) at faces 0 and 1 (first: (-1e+300, 0))");
 }
 
 TEST_CASE("a surface without texture coordinates has no texture atlas", "[texture atlas]") {
