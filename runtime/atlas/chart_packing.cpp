@@ -16,7 +16,10 @@ struct Extent {
 
 // Texels a chart's content spans at `scale` texels per unit: its extent rounded up,
 // strictly larger than the extent so rounding cannot push a corner into the next texel.
-int contentTexels(double extent, double scale) { return int(std::floor(extent * scale + 1e-6)) + 1; }
+// Anything wider than any image is capped (it cannot fit anyway) before it overflows.
+int contentTexels(double extent, double scale) {
+  return int(std::min(std::floor(extent * scale + 1e-6), double(1 << 30))) + 1;
+}
 
 struct Placement {
   int x = 0, y = 0;  // the box's lower left texel within the packing area

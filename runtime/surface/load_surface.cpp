@@ -38,13 +38,11 @@ bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::s
     return false;
   }
   // Texture coordinates come through assimp; files without them stay with the readers
-  // that check every count first. A file that cannot be read here is reported by those.
+  // that check every count first.
   if (ext != ".off" && ext != ".stl") {
-    std::string bytes, ignored;
-    const bool onlyAssimp = ext != ".obj" && ext != ".ply";
-    if (onlyAssimp || (io::readInputFile(path, "a mesh file", bytes, ignored) &&
-                       readsThroughAssimp(ext, bytes)))
-      return readTexturedMesh(path, mesh, polygonal, error);
+    std::string bytes;
+    if (!io::readInputFile(path, "a mesh file", bytes, error)) return false;
+    if (readsThroughAssimp(ext, bytes)) return readTexturedMesh(path, bytes, mesh, polygonal, error);
   }
   io::MeshFileContent file;
   if (!io::readMeshFile(path, file, error)) return false;

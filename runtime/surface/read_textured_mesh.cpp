@@ -10,8 +10,8 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -60,60 +60,73 @@ bool objHasTextureCoordinates(std::string_view bytes) {
   return vt && faceUsesVt;
 }
 
+// The next word of `line` from `pos` on (empty at the end), `pos` moved past it.
+std::string_view nextWord(std::string_view line, size_t& pos) {
+  const size_t b = line.find_first_not_of(" \t", pos);
+  if (b == std::string_view::npos) return pos = line.size(), std::string_view();
+  const size_t e = std::min(line.find_first_of(" \t", b), line.size());
+  pos = e;
+  return line.substr(b, e - b);
+}
+
+// "nan", "inf", "-inf", "+NaN(...)", "infinity": what text readers misread.
+bool spellsNonFinite(std::string_view word) {
+  const size_t sign = !word.empty() && (word[0] == '-' || word[0] == '+');
+  if (word.size() < sign + 3) return false;
+  char lower[3];
+  for (int i = 0; i < 3; ++i) lower[i] = char(std::tolower(static_cast<unsigned char>(word[sign + i])));
+  return std::string_view(lower, 3) == "nan" || std::string_view(lower, 3) == "inf";
+}
+
 // assimp's OBJ reader reads "nan" as a number and takes a corner naming a texture
 // coordinate that does not exist without a word. So every `v` and `vt` line is checked
 // for non-finite numbers, and every face corner's indices against the counts, first.
 bool checkObjText(const std::string& path, std::string_view bytes, std::string& error) {
-  long long vertices = 0, coordinates = 0;
+  long long total[2] = {0, 0};  // vertices, texture coordinates
   forEachLine(bytes, [&](std::string_view line) {
     const std::string_view word = firstWord(line);
-    vertices += word == "v";
-    coordinates += word == "vt";
+    total[0] += word == "v";
+    total[1] += word == "vt";
     return true;
   });
-  long long seenVertices = 0, seenCoordinates = 0, lineNo = 0;
+  long long seen[2] = {0, 0}, lineNo = 0;
+  const char* const noun[2] = {"vertex", "texture coordinate"};
   bool ok = true;
   forEachLine(bytes, [&](std::string_view line) {
     ++lineNo;
-    const std::string_view word = firstWord(line);
-    const std::string at = path + ":" + std::to_string(lineNo) + ": ";
-    std::istringstream tokens{std::string(line)};
-    std::string token;
-    tokens >> token;
+    auto fail = [&](const std::string& message) {
+      error = path + ":" + std::to_string(lineNo) + ": " + message;
+      return ok = false;
+    };
+    size_t pos = 0;
+    const std::string_view word = nextWord(line, pos);
     if (word == "v" || word == "vt") {
-      (word == "v" ? seenVertices : seenCoordinates)++;
-      while (tokens >> token) {
-        std::string lower = token;
-        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        const size_t sign = lower[0] == '-' || lower[0] == '+';
-        if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
-          error = at + (word == "v" ? "vertex coordinate '" : "texture coordinate '") + token +
-                  "' is not a finite number";
-          return ok = false;
-        }
-      }
+      const int kind = word == "vt";
+      ++seen[kind];
+      for (std::string_view t = nextWord(line, pos); !t.empty(); t = nextWord(line, pos))
+        if (spellsNonFinite(t))
+          return fail(std::string(kind ? "texture" : "vertex") + " coordinate '" + std::string(t) +
+                      "' is not a finite number");
     } else if (word == "f") {
-      while (tokens >> token) {
-        // v, v/vt, v//vn or v/vt/vn: the first two checked (negative: counted back from
-        // the last one so far).
-        const size_t slash = token.find('/');
-        const std::string parts[2] = {token.substr(0, slash),
-                                      slash == std::string::npos ? std::string()
-                                                                 : token.substr(slash + 1, token.find('/', slash + 1) - slash - 1)};
-        const long long total[2] = {vertices, coordinates}, seen[2] = {seenVertices, seenCoordinates};
-        const char* const noun[2] = {"vertex", "texture coordinate"};
-        for (int i = 0; i < 2; ++i) {
-          if (i == 1 && parts[1].empty()) continue;
-          char* end = nullptr;
-          const long long index = std::strtoll(parts[i].c_str(), &end, 10);
-          const bool valid = !parts[i].empty() && *end == '\0' &&
-                             (index > 0 ? index <= total[i] : index < 0 && -index <= seen[i]);
-          if (!valid) {
-            error = at + "face corner '" + token + "' names " + noun[i] + " '" + parts[i] +
-                    "', but there are " + std::to_string(index < 0 ? seen[i] : total[i]) +
-                    (index < 0 ? " so far" : "") + " (counting from 1)";
-            return ok = false;
-          }
+      // v, v/vt, v//vn or v/vt/vn: the first two checked (negative: counted back from the
+      // last one so far).
+      for (std::string_view t = nextWord(line, pos); !t.empty(); t = nextWord(line, pos)) {
+        const size_t slash = t.find('/');
+        const std::string_view part[2] = {
+            t.substr(0, slash),
+            slash == std::string_view::npos ? std::string_view()
+                                            : t.substr(slash + 1, t.find('/', slash + 1) - slash - 1)};
+        for (int kind = 0; kind < 2; ++kind) {
+          if (kind == 1 && part[1].empty()) continue;
+          long long index = 0;
+          const auto [end, status] = std::from_chars(part[kind].data(), part[kind].data() + part[kind].size(), index);
+          const bool valid = !part[kind].empty() && status == std::errc() && end == part[kind].data() + part[kind].size() &&
+                             (index > 0 ? index <= total[kind] : index < 0 && -index <= seen[kind]);
+          if (!valid)
+            return fail("face corner '" + std::string(t) + "' names " + noun[kind] + " '" +
+                        std::string(part[kind]) + "', but there are " +
+                        std::to_string(index < 0 ? seen[kind] : total[kind]) + (index < 0 ? " so far" : "") +
+                        " (counting from 1)");
         }
       }
     }
@@ -191,23 +204,21 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes) {
   return false;
 }
 
-bool readTexturedMesh(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::string& error) {
+bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
+                      std::string& error) {
   mesh = SurfaceMesh{};
   polygonal = false;
-  {
-    std::string bytes;
-    if (!io::readInputFile(path, "a mesh file", bytes, error)) return false;
-    if (bytes.empty()) {
-      error = path + ": the file is empty (no faces)";
-      return false;
-    }
-    // assimp's PLY reader trusts the header's counts; the same check as for OpenMesh's.
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext == ".ply" && !io::checkPlyStructure(path, bytes, error)) return false;
-    if ((ext == ".ply" || ext == ".obj") && !io::findNonFiniteText(path, ext, bytes, error)) return false;
-    if (ext == ".obj" && !checkObjText(path, bytes, error)) return false;
+  if (bytes.empty()) {
+    error = path + ": the file is empty (no faces)";
+    return false;
   }
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  // assimp's PLY reader trusts the header's counts and reads "nan": the same checks as for
+  // OpenMesh's.
+  if (ext == ".ply" && !(io::checkPlyStructure(path, bytes, error) && io::findNonFiniteText(path, ext, bytes, error)))
+    return false;
+  if (ext == ".obj" && !checkObjText(path, bytes, error)) return false;
 
   Assimp::Importer importer;
   importer.SetIOHandler(new CheckedIOSystem);  // the importer owns it

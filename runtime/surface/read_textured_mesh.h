@@ -24,7 +24,10 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes);
 // points and lines are ignored. `textureUV` is filled when the meshes have coordinates in
 // their first channel (all of them, or it is an error), and left empty when none has.
 // False with a message starting with `path` when the file cannot be read or holds
-// non-finite numbers. `polygonal`: some polygon had more than three corners.
-bool readTexturedMesh(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::string& error);
+// non-finite numbers. `bytes` is the file's content as io::readInputFile read it (assimp
+// reads the file itself; the text formats are checked in `bytes` first). `polygonal`: some
+// polygon had more than three corners.
+bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
+                      std::string& error);
 
 }  // namespace fgsg::rt::surface
