@@ -20,13 +20,15 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes);
 
 // Reads the whole scene: every mesh of every node, placed by its node's transform (faces
 // of a mirroring transform are turned back to counter-clockwise), polygons fan-
-// triangulated, faces numbered in node order (depth first), then in each mesh's order;
-// points and lines are ignored. `textureUV` is filled when the meshes have coordinates in
-// their first channel (all of them, or it is an error), and left empty when none has.
-// False with a message starting with `path` when the file cannot be read or holds
-// non-finite numbers. `bytes` is the file's content as io::readInputFile read it (assimp
-// reads the file itself; the text formats are checked in `bytes` first). `polygonal`: some
-// polygon had more than three corners.
+// triangulated, faces numbered in node order (depth first), then in each mesh's order (an
+// OBJ with several materials becomes one mesh per material, so its faces may be numbered
+// out of file order); points and lines are ignored. `textureUV` is filled when the meshes
+// have coordinates in their first channel (all of them, or it is an error), and left empty
+// when none has; they are v-up as everywhere in fgsg (glTF's v runs down the image,
+// assimp turns it: 1 - v). `bytes` is the file's content as io::readInputFile read it
+// (assimp reads the file itself; the text formats are checked in `bytes` first). False
+// with a message starting with `path` when the file cannot be read or holds non-finite
+// numbers. `polygonal`: some polygon had more than three corners.
 bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
                       std::string& error);
 
