@@ -72,48 +72,6 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-// OpenMesh's text readers cannot parse "nan" or "inf": they stop short or read garbage
-// without saying so. So text files are scanned for such coordinates first, to name the
-// line. Binary files carry non-finite floats through to the caller's checks.
-bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
-                       std::string& error) {
-  size_t lineNo = 0, pos = 0;
-  bool data = ext != ".ply";  // PLY: only after the header, and only when it is ASCII
-  std::string line;
-  while (pos < bytes.size()) {
-    size_t end = bytes.find('\n', pos);
-    if (end == std::string_view::npos) end = bytes.size();
-    line.assign(bytes.substr(pos, end - pos));
-    pos = end + 1;
-    ++lineNo;
-    std::istringstream tokens(line);
-    std::string first;
-    if (!(tokens >> first)) continue;
-    if (ext == ".ply" && !data) {
-      if (first == "format" && line.find("ascii") == std::string::npos) return true;
-      data = first == "end_header";
-      continue;
-    }
-    if (lineNo == 1 && ext == ".stl" && first != "solid") return true;  // binary STL
-    const bool obj = ext == ".obj";
-    if ((obj && first != "v" && first != "vt") || (ext == ".stl" && first != "vertex") || first[0] == '#')
-      continue;
-    for (std::string t = first; !t.empty(); t.clear(), tokens >> t) {
-      std::string lower = t;
-      std::transform(lower.begin(), lower.end(), lower.begin(),
-                     [](unsigned char c) { return char(std::tolower(c)); });
-      const size_t sign = lower[0] == '-' || lower[0] == '+';
-      if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
-        error = path + ":" + std::to_string(lineNo) + ": " +
-                (obj && first == "vt" ? "texture" : "vertex") + " coordinate '" + t +
-                "' is not a finite number";
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 // OpenMesh's OBJ reader asserts (aborting the process) on a face corner that names no
 // vertex, such as `f /1 /2 /3`: every corner must start with a vertex index.
 bool checkObjFaces(const std::string& path, std::string_view bytes, std::string& error) {
@@ -211,6 +169,45 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
 }
 
 }  // namespace
+
+bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
+                       std::string& error) {
+  size_t lineNo = 0, pos = 0;
+  bool data = ext != ".ply";  // PLY: only after the header, and only when it is ASCII
+  std::string line;
+  while (pos < bytes.size()) {
+    size_t end = bytes.find('\n', pos);
+    if (end == std::string_view::npos) end = bytes.size();
+    line.assign(bytes.substr(pos, end - pos));
+    pos = end + 1;
+    ++lineNo;
+    std::istringstream tokens(line);
+    std::string first;
+    if (!(tokens >> first)) continue;
+    if (ext == ".ply" && !data) {
+      if (first == "format" && line.find("ascii") == std::string::npos) return true;
+      data = first == "end_header";
+      continue;
+    }
+    if (lineNo == 1 && ext == ".stl" && first != "solid") return true;  // binary STL
+    const bool obj = ext == ".obj";
+    if ((obj && first != "v" && first != "vt") || (ext == ".stl" && first != "vertex") || first[0] == '#')
+      continue;
+    for (std::string t = first; !t.empty(); t.clear(), tokens >> t) {
+      std::string lower = t;
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+                     [](unsigned char c) { return char(std::tolower(c)); });
+      const size_t sign = lower[0] == '-' || lower[0] == '+';
+      if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
+        error = path + ":" + std::to_string(lineNo) + ": " +
+                (obj && first == "vt" ? "texture" : "vertex") + " coordinate '" + t +
+                "' is not a finite number";
+        return false;
+      }
+    }
+  }
+  return true;
+}
 
 bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error) {
   out = MeshFileContent{};

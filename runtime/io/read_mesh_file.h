@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fgsg::rt::io {
@@ -35,5 +36,13 @@ struct MeshFileContent {
 // declares more than it holds, spells a coordinate that is not finite, or has a face with
 // fewer than three corners or an index out of range.
 bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error);
+
+// Text readers (OpenMesh's, assimp's) cannot parse "nan" or "inf": they stop short or read
+// garbage without saying so. So text files (`ext` .obj, .ply or .stl, lower case) are
+// scanned for such vertex coordinates first, to name the line ("PATH:LINE: vertex
+// coordinate 'nan' is not a finite number"). True for binary files, whose non-finite
+// floats reach the caller's checks.
+bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
+                       std::string& error);
 
 }  // namespace fgsg::rt::io

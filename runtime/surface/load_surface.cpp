@@ -1,6 +1,8 @@
 #include "runtime/surface/load_surface.h"
 
+#include "runtime/io/read_input.h"
 #include "runtime/io/read_mesh_file.h"
+#include "runtime/surface/read_textured_mesh.h"
 
 #include <algorithm>
 #include <array>
@@ -24,14 +26,23 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-// Reads vertices and fan-triangulated polygons; false with a message when the file cannot
-// be read at all. `polygonal` tells whether any polygon had more than three corners.
+// Reads vertices and fan-triangulated polygons (and texture coordinates, where the file
+// has them); false with a message when the file cannot be read at all. `polygonal` tells
+// whether any polygon had more than three corners.
 bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::string& error) {
   const std::string ext = lowerExtension(path);
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+  static const char* const kFormats[] = {".obj", ".ply", ".off", ".stl", ".gltf", ".glb", ".fbx", ".dae"};
+  if (std::find(std::begin(kFormats), std::end(kFormats), ext) == std::end(kFormats)) {
     error = path + ": unknown surface format '" + (ext.empty() ? std::string("(none)") : ext) +
-            "' (supported: .obj .ply .off .stl)";
+            "' (supported: .obj .ply .off .stl .gltf .glb .fbx .dae)";
     return false;
+  }
+  // Texture coordinates come through assimp; files without them stay with the readers
+  // that check every count first.
+  if (ext != ".off" && ext != ".stl") {
+    std::string bytes;
+    if (!io::readInputFile(path, "a mesh file", bytes, error)) return false;
+    if (readsThroughAssimp(ext, bytes)) return readTexturedMesh(path, bytes, mesh, polygonal, error);
   }
   io::MeshFileContent file;
   if (!io::readMeshFile(path, file, error)) return false;
@@ -390,6 +401,7 @@ size_t reorient(SurfaceMesh& m, const Analysis& a) {
     for (int f : component)
       if (flip[f]) {
         std::swap(m.faces[f][1], m.faces[f][2]);
+        if (!m.textureUV.empty()) std::swap(m.textureUV[f][1], m.textureUV[f][2]);
         ++flipped;
       }
   }
@@ -431,7 +443,10 @@ SurfaceRepairReport repairSurface(SurfaceMesh& m) {
   Analysis a = analyse(m);
   if (a.badIndices) return report;  // nothing here can be trusted to renumber
 
-  // Faces without area or repeating another carry nothing a surface needs.
+  // Faces without area or repeating another carry nothing a surface needs. Texture
+  // coordinates, per face corner, go with their faces.
+  const bool textured = m.textureUV.size() == m.faces.size();
+  if (!textured) m.textureUV.clear();
   size_t kept = 0;
   for (size_t f = 0; f < m.faces.size(); ++f) {
     if (a.degenerate[f]) {
@@ -439,10 +454,12 @@ SurfaceRepairReport repairSurface(SurfaceMesh& m) {
     } else if (a.duplicate[f]) {
       ++report.duplicateFaces;
     } else {
+      if (textured) m.textureUV[kept] = m.textureUV[f];
       m.faces[kept++] = m.faces[f];
     }
   }
   m.faces.resize(kept);
+  if (textured) m.textureUV.resize(kept);
   if (report.degenerateFaces || report.duplicateFaces) a = analyse(m);
 
   report.flippedFaces = reorient(m, a);

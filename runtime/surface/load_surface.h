@@ -1,4 +1,5 @@
-// Surfaces from mesh files (OBJ, PLY, OFF, STL read through OpenMesh) and the validation
+// Surfaces from mesh files (OBJ, PLY, OFF, STL read through OpenMesh; glTF, FBX, COLLADA
+// and OBJ or PLY with texture coordinates through assimp) and the validation
 // every surface passes before a grammar grows on it: tracing and field design walk
 // adjacency, so a non-manifold edge or a flipped face would send them astray far from the
 // cause. Problems are reported with element indices; the sound repairs (dropping what
@@ -39,10 +40,11 @@ struct SurfaceRepairReport {
 };
 
 // Reads a triangle mesh (polygons are fan-triangulated; coincident STL corners are welded
-// by OpenMesh's reader), repairs it when asked, validates it and builds its topology. On
-// failure `out` is left empty and `error` holds one problem per line, each starting with
-// `path`, and a hint when --repair-surface would fix them. `repaired`, when given,
-// receives what the repair changed.
+// by OpenMesh's reader, corners assimp splits at texture seams by read_textured_mesh.h)
+// with the file's texture coordinates in `textureUV` when it has them, repairs it when
+// asked, validates it and builds its topology. On failure `out` is left empty and `error`
+// holds one problem per line, each starting with `path`, and a hint when --repair-surface
+// would fix them. `repaired`, when given, receives what the repair changed.
 bool loadSurface(const std::string& path, SurfaceMesh& out, std::string& error,
                  const SurfaceLoadOptions& options = {}, SurfaceRepairReport* repaired = nullptr);
 
@@ -56,6 +58,7 @@ bool validateSurface(const SurfaceMesh& mesh, std::vector<std::string>& problems
 // The sound repairs of SurfaceLoadOptions::repair on vertices and faces (topology is
 // cleared; call buildTopology() after validating). Leaves non-manifold and non-finite
 // geometry alone, and a component that cannot be oriented (a Moebius strip) as it was.
+// Texture coordinates stay with their faces (dropped with them, turned with them).
 SurfaceRepairReport repairSurface(SurfaceMesh& mesh);
 
 }  // namespace fgsg::rt::surface

@@ -380,7 +380,7 @@ TEST_CASE("loading reports each kind of broken input clearly", "[surface]") {
     CHECK_FALSE(loadSurface((dir / "nothing.off").string(), m, error));
     CHECK_THAT(error, Catch::Contains("nothing.off: no such file"));
     CHECK_THAT(loadError("unreadable", "mesh.xyz", "whatever"),
-               Catch::Contains("unknown surface format '.xyz' (supported: .obj .ply .off .stl)"));
+               Catch::Contains("unknown surface format '.xyz' (supported: .obj .ply .off .stl .gltf .glb .fbx .dae)"));
     CHECK_THAT(loadError("unreadable", "mesh", kGridOff),
                Catch::Contains("unknown surface format"));
     CHECK_THAT(loadError("unreadable", "empty.obj", ""),
