@@ -1,0 +1,126 @@
+#include "runtime/marching/chart_walk.h"
+
+#include "runtime/surface/locate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fgsg::rt::marching {
+
+namespace {
+
+// Faces a walk or a landing search may visit before giving up: far more than the few
+// texels they cover on any sound atlas, few enough to bound a query.
+constexpr int kMaxWalkFaces = 1 << 16;
+constexpr int kMaxLandingFaces = 256;
+// Rates of change this small relative to the largest are rounding, not a crossing.
+constexpr double kAlongEdge = 1e-10;
+
+}  // namespace
+
+Vec3 tidyBary(const Vec3& bary) {
+  const Vec3 b = bary.cwiseMax(0.0);
+  const double sum = b.sum();
+  return sum > 0 ? Vec3(b / sum) : Vec3(1.0 / 3, 1.0 / 3, 1.0 / 3);
+}
+
+FaceExit faceExit(const ImageTriangle& t, const Vec3& bary, const Vec2& d) {
+  const Vec3 rate = t.baryRate(d);
+  // A line along an edge leaves neither face through it; rounding must not make it
+  // leave both in turn (each at length 0, forever).
+  const double along = kAlongEdge * rate.cwiseAbs().maxCoeff();
+  FaceExit e;
+  e.length = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (!(rate[i] < -along)) continue;
+    const double length = std::max(0.0, bary[i]) / -rate[i];
+    if (e.corner < 0 || length < e.length || (length == e.length && rate[i] < rate[e.corner])) {
+      e.length = length;
+      e.corner = i;
+    }
+  }
+  if (e.corner >= 0) e.edge = (e.corner + 1) % 3;
+  return e;
+}
+
+Vec3 baryAcross(const surface::SurfaceMesh& mesh, int f, int edge, const Vec3& bary, int g) {
+  const int a = mesh.faces[f][edge], b = mesh.faces[f][(edge + 1) % 3];
+  Vec3 out = Vec3::Zero();
+  out[mesh.cornerOf(g, a)] = std::max(0.0, bary[edge]);
+  out[mesh.cornerOf(g, b)] = std::max(0.0, bary[(edge + 1) % 3]);
+  return tidyBary(out);
+}
+
+bool walkTo(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>& triangles, ChartPoint& p,
+            const Vec2& x) {
+  for (int visited = 0; visited < kMaxWalkFaces; ++visited) {
+    const ImageTriangle& t = triangles[p.face];
+    const Vec2 here = t.imagePoint(p.bary);
+    const Vec2 offset = x - here;
+    const double remaining = offset.norm();
+    const Vec3 atX = t.baryOf(x);
+    if (remaining == 0 || atX.minCoeff() >= 0) {
+      p.bary = tidyBary(atX);
+      return true;
+    }
+    const Vec2 d = offset / remaining;
+    const FaceExit e = faceExit(t, p.bary, d);
+    if (e.edge < 0) return false;
+    if (e.length >= remaining) {  // rounding: x is on this face's border
+      p.bary = tidyBary(p.bary + remaining * t.baryRate(d));
+      return true;
+    }
+    Vec3 exitBary = p.bary + e.length * t.baryRate(d);
+    exitBary[e.corner] = 0;
+    p.bary = tidyBary(exitBary);
+    const int g = t.continuation[e.edge];
+    if (g < 0) return false;
+    p.bary = baryAcross(mesh, p.face, e.edge, p.bary, g);
+    p.face = g;
+  }
+  return false;
+}
+
+bool landNear(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>& triangles, int start,
+              const Vec3& P, double tolerance, ChartPoint& out) {
+  struct Candidate {
+    int face;
+    double distance;
+    Vec3 bary;
+  };
+  auto measure = [&](int f) {
+    const auto& v = mesh.faces[f];
+    Candidate c{f, 0, Vec3::Zero()};
+    const Vec3 q = surface::closestPointOnTriangle(P, mesh.vertices[v[0]], mesh.vertices[v[1]],
+                                                   mesh.vertices[v[2]], c.bary);
+    c.distance = (q - P).norm();
+    return c;
+  };
+  std::vector<int> visited{start};
+  std::vector<Candidate> frontier{measure(start)};
+  Candidate best = frontier.front();
+  while (!frontier.empty() && best.distance > tolerance) {
+    const auto nearest = std::min_element(frontier.begin(), frontier.end(),
+                                          [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+    const Candidate here = *nearest;
+    frontier.erase(nearest);
+    if (here.distance < best.distance) best = here;
+    for (int k = 0; k < 3; ++k) {
+      const int g = triangles[here.face].continuation[k];
+      if (g < 0 || int(visited.size()) >= kMaxLandingFaces ||
+          std::find(visited.begin(), visited.end(), g) != visited.end())
+        continue;
+      visited.push_back(g);
+      const Candidate next = measure(g);
+      // Ties pass (a closest point at a shared vertex or edge is as close from every
+      // face around it), so the search crosses to the face that holds P.
+      if (next.distance <= here.distance + tolerance) frontier.push_back(next);
+    }
+  }
+  out.face = best.face;
+  out.bary = tidyBary(best.bary);
+  return best.distance <= tolerance;
+}
+
+}  // namespace fgsg::rt::marching
