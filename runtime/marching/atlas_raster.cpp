@@ -5,6 +5,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -31,23 +32,41 @@ uint64_t pack(float distanceSquared, int face) {
 int packedFace(uint64_t v) { return int(uint32_t(v)); }
 bool packedHoldsCentre(uint64_t v) { return (v >> 32) == 0; }
 
-// Separating axes: the two image axes and the three edge normals.
-bool squareOverlaps(const ImageTriangle& t, double x0, double y0) {
-  const double minX = std::min({t.corner[0].x(), t.corner[1].x(), t.corner[2].x()});
-  const double maxX = std::max({t.corner[0].x(), t.corner[1].x(), t.corner[2].x()});
-  const double minY = std::min({t.corner[0].y(), t.corner[1].y(), t.corner[2].y()});
-  const double maxY = std::max({t.corner[0].y(), t.corner[1].y(), t.corner[2].y()});
-  if (x0 + 1 <= minX + kMinOverlap || x0 >= maxX - kMinOverlap || y0 + 1 <= minY + kMinOverlap ||
-      y0 >= maxY - kMinOverlap)
-    return false;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 e = t.corner[(k + 1) % 3] - t.corner[k];
-    const Vec2 outward = Vec2(e.y(), -e.x()).normalized();  // counter-clockwise: inside on the left
-    const double squareLow = outward.dot(Vec2(x0, y0)) + std::min(0.0, outward.x()) + std::min(0.0, outward.y());
-    if (squareLow >= outward.dot(t.corner[k]) - kMinOverlap) return false;
+// A face's image triangle as the texel tests need it: its box, and each edge's outward
+// unit normal with the edge's offset along it (a point p is inside when
+// normal[k] . p <= offset[k] for all k).
+struct EdgeTests {
+  Vec2 low, high;
+  std::array<Vec2, 3> normal;
+  std::array<double, 3> offset;
+
+  explicit EdgeTests(const ImageTriangle& t) {
+    low = t.corner[0].cwiseMin(t.corner[1]).cwiseMin(t.corner[2]);
+    high = t.corner[0].cwiseMax(t.corner[1]).cwiseMax(t.corner[2]);
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 e = t.corner[(k + 1) % 3] - t.corner[k];
+      normal[k] = Vec2(e.y(), -e.x()).normalized();  // counter-clockwise: inside on the left
+      offset[k] = normal[k].dot(t.corner[k]);
+    }
   }
-  return true;
-}
+  // Separating axes: the two image axes and the three edge normals.
+  bool overlapsSquare(double x0, double y0) const {
+    if (x0 + 1 <= low.x() + kMinOverlap || x0 >= high.x() - kMinOverlap || y0 + 1 <= low.y() + kMinOverlap ||
+        y0 >= high.y() - kMinOverlap)
+      return false;
+    for (int k = 0; k < 3; ++k) {
+      const double squareLow = normal[k].x() * x0 + normal[k].y() * y0 + std::min(0.0, normal[k].x()) +
+                               std::min(0.0, normal[k].y());
+      if (squareLow >= offset[k] - kMinOverlap) return false;
+    }
+    return true;
+  }
+  bool holds(const Vec2& p) const {
+    for (int k = 0; k < 3; ++k)
+      if (normal[k].dot(p) > offset[k]) return false;
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -60,17 +79,16 @@ AtlasRaster rasterizeAtlas(const std::vector<ImageTriangle>& triangles, int size
   tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 256), [&](const auto& r) {
     for (size_t f = r.begin(); f < r.end(); ++f) {
       const ImageTriangle& t = triangles[f];
-      const auto [lowX, highX] = std::minmax({t.corner[0].x(), t.corner[1].x(), t.corner[2].x()});
-      const auto [lowY, highY] = std::minmax({t.corner[0].y(), t.corner[1].y(), t.corner[2].y()});
-      const int x0 = std::max(0, int(std::floor(lowX))), x1 = std::min(size - 1, int(std::ceil(highX)) - 1);
-      const int y0 = std::max(0, int(std::floor(lowY))), y1 = std::min(size - 1, int(std::ceil(highY)) - 1);
+      const EdgeTests tests(t);
+      const int x0 = std::max(0, int(std::floor(tests.low.x()))), x1 = std::min(size - 1, int(std::ceil(tests.high.x())) - 1);
+      const int y0 = std::max(0, int(std::floor(tests.low.y()))), y1 = std::min(size - 1, int(std::ceil(tests.high.y())) - 1);
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
-          if (!squareOverlaps(t, x, y)) continue;
+          if (!tests.overlapsSquare(x, y)) continue;
           const Vec2 centre(x + 0.5, y + 0.5);
           // A centre outside every triangle keeps a positive distance, however small,
           // so that it never passes for one inside.
-          const float d2 = t.baryOf(centre).minCoeff() >= 0
+          const float d2 = tests.holds(centre)
                                ? 0.0f
                                : std::max(float((t.imagePoint(t.closestBary(centre)) - centre).squaredNorm()),
                                           std::numeric_limits<float>::min());

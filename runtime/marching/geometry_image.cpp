@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 
@@ -21,14 +22,20 @@ constexpr double kCellsPerSegment = 4;
 
 GeometryImage GeometryImage::build(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>& triangles,
                                    int size) {
+  using Clock = std::chrono::steady_clock;
+  auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   GeometryImage img;
+  const auto started = Clock::now();
   AtlasRaster raster = rasterizeAtlas(triangles, size);
+  const auto rasterized = Clock::now();
   img.texels_.size = size;
   img.texels_.face = std::move(raster.face);
   img.derive(mesh, triangles);  // chart_ and position_ (no pointers yet)
+  const auto located = Clock::now();
   PointerLayout layout = findIndirectionPointers(triangles, size, img.texels_.face, img.chart_, img.position_);
   img.texels_.pointerCount = std::move(layout.count);
   img.texels_.pointers = std::move(layout.pointers);
+  const auto pointed = Clock::now();
   img.texels_.kind.assign(size_t(size) * size, uint8_t(TexelKind::Background));
   for (size_t i = 0; i < img.texels_.kind.size(); ++i)
     if (img.texels_.face[i] >= 0)
@@ -37,6 +44,10 @@ GeometryImage GeometryImage::build(const surface::SurfaceMesh& mesh, const std::
       img.texels_.kind[i] = uint8_t(TexelKind::Indirection);
   img.derive(mesh, triangles);
   img.stats_.conservativeTexels = raster.conservativeTexels;
+  img.stats_.rasterSeconds = seconds(started, rasterized);
+  img.stats_.pointSeconds = seconds(rasterized, located);
+  img.stats_.pointerSeconds = seconds(located, pointed);
+  img.stats_.levelSeconds = seconds(pointed, Clock::now());
   return img;
 }
 

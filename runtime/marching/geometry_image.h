@@ -27,6 +27,9 @@ struct ImageStats {
   size_t indirectionTexels = 0;
   size_t pointers = 0;
   size_t boundaryPointers = 0;    // pointers without a target: the surface's own boundary
+  // build()'s wall time by phase: rasterization, texel surface points, pointers (with
+  // their kd-tree), the rest (coarse levels, indices).
+  double rasterSeconds = 0, pointSeconds = 0, pointerSeconds = 0, levelSeconds = 0;
 };
 
 // What a geometry image is made of; everything else is derived from it (the disk cache

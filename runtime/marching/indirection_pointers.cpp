@@ -86,22 +86,28 @@ PointerLayout findIndirectionPointers(const std::vector<ImageTriangle>& triangle
   for (size_t i = 0; i < texels; ++i) start[i + 1] = start[i] + out.count[i];
   out.pointers.assign(start[texels], IndirectionPointer{});
 
-  // Inner-border texels: inner texels with a neighbour that is not of their chart.
+  // Inner-border texels: inner texels with a neighbour that is not of their chart;
+  // found row by row in parallel, gathered in row order (the tree is then the same
+  // whatever the scheduling).
+  std::vector<std::vector<int32_t>> borderRows(size);
+  tbb::parallel_for(tbb::blocked_range<int>(0, size, 16), [&](const auto& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < size; ++x) {
+        const size_t i = size_t(y) * size + x;
+        if (chart[i] < 0) continue;
+        for (const auto& [dx, dy] : kRing)
+          if (!inside(x + dx, y + dy) || chart[size_t(y + dy) * size + (x + dx)] != chart[i]) {
+            borderRows[y].push_back(int32_t(i));
+            break;
+          }
+      }
+  });
   BorderCloud cloud;
   std::vector<int32_t> texelOf;
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) {
-      const size_t i = size_t(y) * size + x;
-      if (chart[i] < 0) continue;
-      bool border = false;
-      for (const auto& [dx, dy] : kRing)
-        if (!inside(x + dx, y + dy) || chart[size_t(y + dy) * size + (x + dx)] != chart[i]) {
-          border = true;
-          break;
-        }
-      if (!border) continue;
+  for (const auto& row : borderRows)
+    for (int32_t i : row) {
       cloud.points.push_back(position[i]);
-      texelOf.push_back(int32_t(i));
+      texelOf.push_back(i);
     }
   BorderTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
 
