@@ -14,6 +14,8 @@ namespace {
 // texels they cover on any sound atlas, few enough to bound a query.
 constexpr int kMaxWalkFaces = 1 << 16;
 constexpr int kMaxLandingFaces = 256;
+// A landing search looks at faces up to this many times the start face's distance.
+constexpr double kLandingReach = 1.5;
 // Rates of change this small relative to the largest are rounding, not a crossing.
 constexpr double kAlongEdge = 1e-10;
 
@@ -100,6 +102,7 @@ bool landNear(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>
   std::vector<int> visited{start};
   std::vector<Candidate> frontier{measure(start)};
   Candidate best = frontier.front();
+  const double reach = kLandingReach * best.distance + tolerance;
   while (!frontier.empty() && best.distance > tolerance) {
     const auto nearest = std::min_element(frontier.begin(), frontier.end(),
                                           [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
@@ -113,9 +116,10 @@ bool landNear(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>
         continue;
       visited.push_back(g);
       const Candidate next = measure(g);
-      // Ties pass (a closest point at a shared vertex or edge is as close from every
-      // face around it), so the search crosses to the face that holds P.
-      if (next.distance <= here.distance + tolerance) frontier.push_back(next);
+      // Not only faces closer than this one: along a jagged chart border in 3D the way
+      // to P can lead a little farther first. Anything within the start's reach (with
+      // room) is looked at, nearest first.
+      if (next.distance <= reach) frontier.push_back(next);
     }
   }
   out.face = best.face;

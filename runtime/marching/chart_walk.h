@@ -42,8 +42,8 @@ bool walkTo(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>& 
             const Vec2& x);
 
 // The point of `start`'s chart closest in 3D to P, searched from face `start` over the
-// faces that continue it, as long as they come no farther from P. True when within
-// `tolerance` of P.
+// faces that continue it, nearest first, among those no more than 1.5 times as far
+// from P as the start (at most 256 faces). True when within `tolerance` of P.
 bool landNear(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>& triangles, int start,
               const Vec3& P, double tolerance, ChartPoint& out);
 

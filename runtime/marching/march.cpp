@@ -57,8 +57,10 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
   tr = MarchTrace{};
   to = from;
   if (from.at.face < 0 || from.at.face >= int(s.triangles.size()) || !from.at.bary.allFinite() ||
-      !from.dir.allFinite() || !(from.dir.norm() > 0) || !std::isfinite(length))
+      !from.dir.allFinite() || !(from.dir.norm() > 0) || !std::isfinite(length)) {
+    tr.end = MarchEnd::Refused;
     return false;
+  }
   ChartPoint p{from.at.face, tidyBary(from.at.bary)};
   Vec2 d = from.dir.normalized();
   to = marchPoint(s, p, d);
@@ -69,6 +71,7 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
   double path = 0;            // 3D path length so far (Surface)
   int still = 0;
   bool newChart = true;  // the coarse look pays only where a chart's line begins
+  MarchEnd stop = MarchEnd::FaceLimit;  // unless the loop stops otherwise
   while (tr.pieces < kMaxPieces) {
     ++tr.pieces;
     const ImageTriangle& t = s.triangles[p.face];
@@ -89,7 +92,10 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
       }
     }
     const FaceExit e = faceExit(t, p.bary, d);
-    if (e.edge < 0) break;  // no direction in this face: cannot happen for a unit d
+    if (e.edge < 0) {  // no direction in this face: cannot happen for a unit d
+      stop = MarchEnd::NoProgress;
+      break;
+    }
     const Vec3 rate = t.baryRate(d);
     Vec3 exitBary = p.bary + e.length * rate;
     exitBary[e.corner] = 0;
@@ -112,12 +118,16 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
       path += (b - a).norm();
       if (path > kMaxPathPerLength * length) {
         p.bary = exitBary;
+        stop = MarchEnd::PathTooLong;
         break;
       }
     }
     p.bary = exitBary;
     still = e.length > kStillTexels ? 0 : still + 1;
-    if (still > kMaxStillPieces) break;
+    if (still > kMaxStillPieces) {
+      stop = MarchEnd::NoProgress;
+      break;
+    }
     const int g = t.continuation[e.edge];
     if (g >= 0) {
       p.bary = baryAcross(s.mesh, p.face, e.edge, p.bary, g);
@@ -126,7 +136,8 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
     }
     SeamJump jump;
     if (!jumpAcrossSeam(s, p.face, e.edge, p.bary, d, jump)) {
-      to = marchPoint(s, p, d);  // the surface's own boundary
+      to = marchPoint(s, p, d);
+      tr.end = MarchEnd::Boundary;
       return false;
     }
     ++(jump.viaPointer ? tr.pointerJumps : tr.adjacencyJumps);
@@ -135,6 +146,7 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
     newChart = true;
   }
   to = marchPoint(s, p, d);
+  tr.end = stop;
   return false;
 }
 

@@ -43,8 +43,19 @@ struct PrepareStats {
   double atlasSeconds = 0, imageSeconds = 0;
 };
 
+// How a march ended: the first arrives (true), the others return false.
+enum class MarchEnd {
+  Arrived,
+  Boundary,     // the surface's own boundary (an open mesh)
+  PathTooLong,  // a surface length the path did not reach within 8 x its length
+  NoProgress,   // 4096 crossings in a row without moving
+  FaceLimit,    // 2^22 faces crossed
+  Refused,      // an invalid start, a zero direction or a non-finite length
+};
+
 // What one march did (tests and benchmarks look; the engine passes none).
 struct MarchTrace {
+  MarchEnd end = MarchEnd::Arrived;
   int pieces = 0;          // straight pieces, one per face crossed
   int pointerJumps = 0;    // chart changes through an indirection pointer (§5)
   // Chart changes where no pointer around the exit landed on the exit point and the
