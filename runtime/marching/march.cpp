@@ -81,12 +81,10 @@ bool MarchingSurface::march(const MarchPoint& from, double length, LengthUnit un
       // face under its end is found from that texel's own face, walking to the end.
       const Vec2 here = t.imagePoint(p.bary), end = here + remaining * d;
       if (s.image.segmentInChart(here, end, t.chart)) {
-        const int texel = s.image.texelAt(end);
-        const int f = s.image.face(texel);
-        ChartPoint q{f, s.triangles[f].closestBary(Vec2(texel % s.image.size() + 0.5, texel / s.image.size() + 0.5))};
-        if (walkTo(s.mesh, s.triangles, q, end)) {
+        MarchPoint q;
+        if (locate(end, d, q)) {
           tr.coarse = true;
-          to = marchPoint(s, q, d);
+          to = q;
           return true;
         }
       }

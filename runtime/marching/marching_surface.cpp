@@ -75,6 +75,33 @@ MarchPoint MarchingSurface::place(const surface::SurfacePoint& p, const Vec3& di
   return m;
 }
 
+surface::SurfacePoint MarchingSurface::texelPoint(int texel) const {
+  const Impl& s = *impl_;
+  surface::SurfacePoint p;
+  const int n = s.image.size();
+  if (texel < 0 || texel >= n * n || s.image.face(texel) < 0) return p;
+  p.face = s.image.face(texel);
+  p.bary = s.triangles[p.face].closestBary(Vec2(texel % n + 0.5, texel / n + 0.5));
+  return p;
+}
+
+bool MarchingSurface::locate(const Vec2& image, const Vec2& dir, MarchPoint& out) const {
+  const Impl& s = *impl_;
+  const int n = s.image.size();
+  if (!image.allFinite() || image.minCoeff() < 0 || image.maxCoeff() > n) return false;
+  const surface::SurfacePoint start = texelPoint(s.image.texelAt(image));
+  if (!start.valid()) return false;
+  ChartPoint p{start.face, start.bary};
+  const bool inside = walkTo(s.mesh, s.triangles, p, image);
+  const ImageTriangle& t = s.triangles[p.face];
+  out.at.face = p.face;
+  out.at.bary = p.bary;
+  out.image = t.imagePoint(p.bary);
+  out.chart = t.chart;
+  out.dir = dir.norm() > 0 && dir.allFinite() ? Vec2(dir.normalized()) : Vec2(1, 0);
+  return inside;
+}
+
 Vec3 MarchingSurface::position(const MarchPoint& p) const { return p.at.position(impl_->mesh); }
 
 Vec3 MarchingSurface::normal(const MarchPoint& p) const { return p.at.normal(impl_->mesh); }

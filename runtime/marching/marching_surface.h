@@ -118,6 +118,16 @@ class MarchingSurface {
   bool march(const MarchPoint& from, double length, LengthUnit unit, MarchPoint& to) const;
   bool march(const MarchPoint& from, double length, LengthUnit unit, MarchPoint& to, MarchTrace* trace) const;
 
+  // The march point at image position `image` (texels) heading along image direction
+  // `dir`: the exact surface point there, found from the covering texel's face by a walk
+  // in its chart. False when no chart covers the position (a background or indirection
+  // texel, or a conservative texel's part outside its chart: `out` is then the chart's
+  // border point on the way, or left as it was when there is no chart at all).
+  bool locate(const Vec2& image, const Vec2& dir, MarchPoint& out) const;
+  // The surface point of an inner texel (the closest point of its face to the texel's
+  // centre); invalid (face -1) for other texels.
+  surface::SurfacePoint texelPoint(int texel) const;
+
   Vec3 position(const MarchPoint& p) const;
   Vec3 normal(const MarchPoint& p) const;    // smooth, unit
   Vec3 direction(const MarchPoint& p) const; // p.dir as a unit 3D tangent

@@ -3,6 +3,7 @@
 #include "march_fixtures.h"
 
 #include <cmath>
+#include <random>
 
 using namespace fgsg::rt;
 using namespace fgsg::rt::marching;
@@ -93,4 +94,45 @@ TEST_CASE("a march across a cube edge keeps its angle with the edge", "[marching
     REQUIRE(s->march(placeAt(*s, start, dir), (expected - start).norm(), LengthUnit::Surface, to));
     CHECK((s->position(to) - expected).norm() < 1e-9);
   }
+}
+
+TEST_CASE("an image position locates the exact surface point under it", "[marching][march][cube]") {
+  const auto s = prepared(chartedCube(8, 512));
+  const surface::SurfaceLocator locator(s->mesh());
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> coord(0, 512);
+  int located = 0, refused = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 image(coord(rng), coord(rng));
+    MarchPoint p;
+    const int texel = s->image().texelAt(image);
+    if (!s->locate(image, Vec2(0, 1), p)) {
+      ++refused;
+      // Outside every chart: a texel no chart covers, or a conservative one's outside.
+      if (s->image().kind(texel) == TexelKind::Inner) CHECK((p.image - image).norm() < 1.5);
+      continue;
+    }
+    ++located;
+    REQUIRE(consistent(*s, p));
+    REQUIRE((p.image - image).norm() < 1e-9);
+    double distance = 1;
+    locator.closestPoint(s->position(p), &distance);
+    REQUIRE(distance < 1e-12);
+    // Placing at the located point gives the same image position back.
+    REQUIRE((s->place(p.at, s->direction(p)).image - image).norm() < 1e-9);
+    // The texel's own point is its centre (the chart holds it) or the chart's point
+    // nearest to it, inside the texel's square.
+    const surface::SurfacePoint centre = s->texelPoint(texel);
+    REQUIRE(centre.valid());
+    const auto& uv = s->atlas().cornerUV[centre.face];
+    const Vec2 at = (centre.bary[0] * uv[0] + centre.bary[1] * uv[1] + centre.bary[2] * uv[2]) * 512;
+    REQUIRE((at - Vec2(texel % 512 + 0.5, texel / 512 + 0.5)).cwiseAbs().maxCoeff() <= 0.5 + 1e-9);
+  }
+  // Six charts of about 162 texels each side in 512^2: about 60 % covered.
+  CHECK(located > 10000);
+  CHECK(refused > 5000);
+  CHECK_FALSE(s->texelPoint(0).valid());
+  MarchPoint untouched;
+  CHECK_FALSE(s->locate(Vec2(-1, 3), Vec2(1, 0), untouched));
+  CHECK(untouched.at.face == -1);
 }
