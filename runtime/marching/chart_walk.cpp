@@ -3,6 +3,7 @@
 #include "runtime/surface/locate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -99,27 +100,31 @@ bool landNear(const surface::SurfaceMesh& mesh, const std::vector<ImageTriangle>
     c.distance = (q - P).norm();
     return c;
   };
-  std::vector<int> visited{start};
-  std::vector<Candidate> frontier{measure(start)};
-  Candidate best = frontier.front();
+  // Fixed buffers: a landing happens at every jump, from many threads.
+  std::array<int, kMaxLandingFaces> visited;
+  std::array<Candidate, kMaxLandingFaces> frontier;
+  int seen = 1, open = 1;
+  visited[0] = start;
+  frontier[0] = measure(start);
+  Candidate best = frontier[0];
   const double reach = kLandingReach * best.distance + tolerance;
-  while (!frontier.empty() && best.distance > tolerance) {
-    const auto nearest = std::min_element(frontier.begin(), frontier.end(),
-                                          [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
-    const Candidate here = *nearest;
-    frontier.erase(nearest);
+  while (open > 0 && best.distance > tolerance) {
+    int nearest = 0;
+    for (int i = 1; i < open; ++i)
+      if (frontier[i].distance < frontier[nearest].distance) nearest = i;
+    const Candidate here = frontier[nearest];
+    frontier[nearest] = frontier[--open];
     if (here.distance < best.distance) best = here;
     for (int k = 0; k < 3; ++k) {
       const int g = triangles[here.face].continuation[k];
-      if (g < 0 || int(visited.size()) >= kMaxLandingFaces ||
-          std::find(visited.begin(), visited.end(), g) != visited.end())
+      if (g < 0 || seen == kMaxLandingFaces || std::find(visited.begin(), visited.begin() + seen, g) != visited.begin() + seen)
         continue;
-      visited.push_back(g);
+      visited[seen++] = g;
       const Candidate next = measure(g);
       // Not only faces closer than this one: along a jagged chart border in 3D the way
       // to P can lead a little farther first. Anything within the start's reach (with
       // room) is looked at, nearest first.
-      if (next.distance <= reach) frontier.push_back(next);
+      if (next.distance <= reach) frontier[open++] = next;
     }
   }
   out.face = best.face;

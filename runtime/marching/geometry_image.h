@@ -5,6 +5,11 @@
 // background texel next to a chart, holding pointers to where the surface continues).
 // Coarser levels (each halving the side) record which cells lie wholly inside one chart,
 // so a long straight march can be checked in a few lookups. Read-only once built.
+//
+// Per texel it stores the kind, the face, the chart and the centre's surface point as
+// floats (26 bytes a texel with the pointer index); the centre's barycentric coordinates
+// are recomputed from the face when wanted (MarchingSurface::texelPoint), exactly and
+// cheaply, rather than stored.
 #pragma once
 
 #include "runtime/marching/image_triangles.h"

@@ -108,7 +108,7 @@ class MarchingSurface {
   // from.image and from.chart are recomputed from them.
   //
   // LengthUnit::Surface: `to` is the first point along the path whose straight 3D
-  // distance from the start is `length` (to rounding: 1e-12 relative on any mesh).
+  // distance from the start is `length` (to rounding, about 1e-16 of the coordinates).
   // False also when the path grows 8 x `length` long without getting that far (a
   // length larger than the surface allows). LengthUnit::Image: `length` texels of image
   // path (jumps cost nothing). A length <= 0 stays at `from` (true); a non-finite one, an

@@ -3,6 +3,7 @@
 #include "runtime/marching/marching_surface_impl.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace fgsg::rt::marching {
@@ -17,8 +18,9 @@ constexpr double kProbeStep = 0.25;
 // §5.1 compares the candidates' targets as seen from the current position P_cur; the
 // march's exact stand-in is a point on the path this many texel lengths before the exit.
 constexpr double kReferenceBackTexels = 2;
-// Pointers tried (best first) before the mesh's own neighbour is taken.
+// Pointers tried (best first) before the mesh's own neighbour is taken, and looked at.
 constexpr int kMaxLandingTries = 6;
+constexpr int kMaxCandidates = 64;
 // A landing back in the same chart this close (texels) to the exit would only bounce.
 constexpr double kMinSelfJumpTexels = 0.5;
 
@@ -71,34 +73,36 @@ bool jumpAcrossSeam(const MarchingSurface::Impl& s, int f, int edge, const Vec3&
     }
     if (img.chart(texel) == chart) near = texel;
   }
-  // §5.1: the candidates are the pointers for this chart around P0 and P_near.
-  std::vector<int> targets;
+  // §5.1: the candidates are the pointers for this chart around P0 and P_near (fixed
+  // buffers: a jump happens often, from many threads).
+  std::array<int, kMaxCandidates> targets;
+  int count = 0;
   auto collect = [&](int centre, int radius) {
     const int n = img.size(), cx = centre % n, cy = centre / n;
     for (int y = std::max(0, cy - radius); y <= std::min(n - 1, cy + radius); ++y)
       for (int x2 = std::max(0, cx - radius); x2 <= std::min(n - 1, cx + radius); ++x2)
         for (const IndirectionPointer& p : img.pointers(img.index(x2, y)))
-          if (p.chart == chart && p.target >= 0 && std::find(targets.begin(), targets.end(), p.target) == targets.end())
-            targets.push_back(p.target);
+          if (p.chart == chart && p.target >= 0 && count < kMaxCandidates &&
+              std::find(targets.begin(), targets.begin() + count, p.target) == targets.begin() + count)
+            targets[count++] = p.target;
   };
   if (first >= 0) collect(first, 1);
   collect(near, 1);
-  if (targets.empty()) collect(near, 2);
+  if (count == 0) collect(near, 2);
 
   // ... best first: the target whose direction from P_cur is closest to the marching
   // direction r (P_cur a point of the path just before the exit).
   const Vec3 r = (t.toSurface * d).normalized();
   const Vec3 from = P - kReferenceBackTexels * t.texelLength * r;
-  auto alignment = [&](int target) { return (img.position(target).cast<double>() - from).normalized().dot(r); };
-  std::vector<std::pair<double, int>> ranked;
-  for (int target : targets) ranked.emplace_back(-alignment(target), target);
-  std::sort(ranked.begin(), ranked.end());
+  std::array<std::pair<double, int>, kMaxCandidates> ranked;
+  for (int i = 0; i < count; ++i)
+    ranked[i] = {-(img.position(targets[i]).cast<double>() - from).normalized().dot(r), targets[i]};
+  std::sort(ranked.begin(), ranked.begin() + count);
 
   // The pointer says which chart and where about; the landing is the exact seam point
   // there, so the path stays continuous to rounding whatever the resolution.
-  int tries = 0;
-  for (const auto& [score, target] : ranked) {
-    if (tries++ == kMaxLandingTries) break;
+  for (int i = 0; i < std::min(count, kMaxLandingTries); ++i) {
+    const int target = ranked[i].second;
     ChartPoint landing;
     if (!landNear(s.mesh, s.triangles, img.face(target), P, s.landingTolerance, landing)) continue;
     const ImageTriangle& lt = s.triangles[landing.face];
@@ -108,8 +112,10 @@ bool jumpAcrossSeam(const MarchingSurface::Impl& s, int f, int edge, const Vec3&
     out.dir = turnAcross(s, f, edge, landing.face, d);
     return true;
   }
-  // No pointer landed on the exit point (a chart touching another without a gutter, a
-  // sliver lost in rasterization): the mesh's own neighbour across the edge is exact.
+  // No pointer landed on the exit point: a slit in the chart narrower than a texel (no
+  // indirection texel in it), charts touching without a gutter, a pointer into a chart
+  // that holds the exit point only far away. The mesh's own neighbour across the edge
+  // is exact.
   const int g = s.mesh.neighbours[f][edge];
   if (g < 0) return false;  // the surface's own boundary
   out.landing = ChartPoint{g, baryAcross(s.mesh, f, edge, bary, g)};
