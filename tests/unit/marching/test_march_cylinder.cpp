@@ -61,3 +61,21 @@ TEST_CASE("a march up the cylinder stops at the rim", "[marching][march][cylinde
     }
   }
 }
+
+TEST_CASE("a chart cut open along a seam of its own is crossed through its own pointers",
+          "[marching][march][cylinder]") {
+  // The whole cylinder unrolled as one chart: its two cut edges lie a chart's width apart
+  // in the image, and their pointers lead from one to the other.
+  const auto s = prepared(chartedCylinder(1, 2, kSegments, 24, 1));
+  const double texelsPerUnit = (0.5 - 8.0 / 1024) * 1024 / (kSegments * kChord);
+  const Vec3 start(std::cos(0.3), std::sin(0.3), -0.41);
+  const Vec3 around(-std::sin(0.3), std::cos(0.3), 0);
+  const MarchPoint from = placeAt(*s, start, around);
+  MarchPoint back;
+  MarchTrace trace;
+  REQUIRE(s->march(from, kSegments * kChord * texelsPerUnit, LengthUnit::Image, back, &trace));
+  CHECK(trace.pointerJumps == 1);
+  CHECK(trace.adjacencyJumps == 0);
+  CHECK((s->position(back) - s->position(from)).norm() < 1e-9);
+  CHECK((s->direction(back) - s->direction(from)).norm() < 1e-9);
+}
