@@ -56,7 +56,27 @@ AtlasOptions parseAtlasOptions(const Args& args) {
       if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3]) != 4 || !(c[3] > 0) ||
           !std::isfinite(c[0] + c[1] + c[2] + c[3]))
         throw UsageError{"--paint expects a sphere x,y,z,radius (a positive radius), got '" + v + "'"};
-      o.brushes.push_back({rt::Vec3(c[0], c[1], c[2]), c[3]});
+      rt::texture::Brush sphere;
+      sphere.centre = rt::Vec3(c[0], c[1], c[2]);
+      sphere.radius = c[3];
+      o.brushes.push_back(sphere);
+    } else if (f == "--paint-slab") {
+      // x,y,z,nx,ny,nz,w: the band within w of the plane through (x,y,z) square to n.
+      const std::string v = r.value(f);
+      double c[7];
+      const bool read = std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3], &c[4],
+                                    &c[5], &c[6]) == 7;
+      const rt::Vec3 n(c[3], c[4], c[5]);
+      if (!read || !(c[6] > 0) || !std::isfinite(c[0] + c[1] + c[2] + c[6]) || !(n.norm() > 0) ||
+          !std::isfinite(n.norm()))
+        throw UsageError{"--paint-slab expects x,y,z,nx,ny,nz,halfwidth (a non-zero normal, a positive width), got '" +
+                         v + "'"};
+      rt::texture::Brush slab;
+      slab.centre = rt::Vec3(c[0], c[1], c[2]);
+      slab.radius = c[6];
+      slab.slab = true;
+      slab.normal = n.normalized();
+      o.brushes.push_back(slab);
     } else if (f == "--mask") o.mask = r.value(f);
     else if (f == "--mask-size") o.maskSize = static_cast<int>(r.unsignedValue(f, 8, 8192));
     else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
@@ -65,7 +85,8 @@ AtlasOptions parseAtlasOptions(const Args& args) {
   if (!o.preview.empty() && !pngName(o.preview))
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   if (!o.mask.empty() && !pngName(o.mask)) throw UsageError{"--mask " + o.mask + ": masks are PNG files (name it .png)"};
-  if (!o.brushes.empty() && o.mask.empty()) throw UsageError{"--paint needs --mask FILE.png to write the mask to"};
+  if (!o.brushes.empty() && o.mask.empty())
+    throw UsageError{"--paint and --paint-slab need --mask FILE.png to write the mask to"};
   return o;
 }
 

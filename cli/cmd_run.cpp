@@ -78,8 +78,11 @@ RunOptions parseRunOptions(const Args& args) {
         throw UsageError{"--surface-size must be a positive number"};
     }
     else if (f == "--seed-points") {
+      // Repeatable: each flag adds its seeds.
       std::string error;
-      if (!readSeedPoints(r.value(f), o.derive.seeds, error)) throw UsageError{error};
+      std::vector<rt::DeriveOptions::Seed> more;
+      if (!readSeedPoints(r.value(f), more, error)) throw UsageError{error};
+      o.derive.seeds.insert(o.derive.seeds.end(), more.begin(), more.end());
     } else if (f == "--march-candidates")
       o.derive.marchCandidates = static_cast<int>(r.unsignedValue(f, 0, 64));
     else if (f == "--atlas-resolution")

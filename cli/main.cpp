@@ -23,9 +23,10 @@ usage:
   fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
   fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]
                            compile to a shared library and its C header NAME.h
-  fgsg atlas MESH [--preview atlas.png] [--resolution N] [--paint x,y,z,r]... [--mask m.png]
+  fgsg atlas MESH [--preview atlas.png] [--resolution N] [--paint x,y,z,r]...
+                 [--paint-slab x,y,z,nx,ny,nz,w]... [--mask m.png]
                            lay MESH out for on-mesh marching (cached); draw the atlas, or
-                           paint a mask for a texture context with sphere brushes
+                           paint a mask for a texture context with brushes
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -36,7 +37,8 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
                      (default: closest to the centre of the surface's bounding box)
   --seed-points S    on-mesh marching: start the axiom once per seed, S a file of
-                     "x y z [dx dy dz]" lines or an inline list "x,y,z;x,y,z:dx,dy,dz"
+                     "x y z [dx dy dz]" lines, a seed x,y,z[:dx,dy,dz] or a quoted list
+                     "x,y,z;x,y,z"; repeatable
   --march-candidates N  directions tried around a failed Marching condition (default 8)
   --atlas-resolution N  side of the marching geometry image in texels (default 1024)
   --march-units U    Marching's length: surface (3D distance, default) or texels

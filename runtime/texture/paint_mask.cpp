@@ -53,7 +53,7 @@ MaskImage paintMask(const marching::MarchingSurface& surface, int size, const st
         if (b0 < 0 || b1 < 0 || b2 < 0) continue;
         const Vec3 point = surface::SurfacePoint{f, Vec3(b0, b1, b2)}.position(mesh);
         bool inside = false;
-        for (const Brush& brush : brushes) inside |= (point - brush.centre).norm() <= brush.radius;
+        for (const Brush& brush : brushes) inside |= brush.covers(point);
         int8_t& s = state[static_cast<size_t>(size - 1 - y) * size + x];  // row 0 at the top
         s = std::max<int8_t>(s, inside ? 1 : 0);
       }

@@ -66,7 +66,7 @@ expect 1 "error\[R023\].*overlap" -- "$fgsg" run walk.fgsg --surface overlap.obj
 # fgsg atlas: flags, and a damaged cache is rebuilt, never trusted.
 expect 2 "no mesh given" -- "$fgsg" atlas
 expect 2 "paint expects a sphere" -- "$fgsg" atlas "$root/tests/data/meshes/elephant.off" --paint 1,2,3 --mask m.png
-expect 2 "paint needs --mask" -- "$fgsg" atlas "$root/tests/data/meshes/elephant.off" --paint 1,2,3,4
+expect 2 "paint-slab need --mask" -- "$fgsg" atlas "$root/tests/data/meshes/elephant.off" --paint 1,2,3,4
 expect 2 "previews are PNG" -- "$fgsg" atlas "$root/tests/data/meshes/elephant.off" --preview atlas.jpg
 "$fgsg" atlas "$root/tests/data/meshes/elephant.off" --resolution 256 > first.txt || fail "fgsg atlas failed"
 grep -q "built" first.txt || fail "the first atlas was not built: $(cat first.txt)"
