@@ -6,7 +6,7 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
-#include "cli/seed_points.h"
+#include "runtime/io/seed_points.h"
 #include "runtime/assemble.h"
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
@@ -81,9 +81,14 @@ RunOptions parseRunOptions(const Args& args) {
       // Repeatable: each flag adds its seeds.
       std::string error;
       std::vector<rt::DeriveOptions::Seed> more;
-      if (!readSeedPoints(r.value(f), more, error)) throw UsageError{error};
+      if (!rt::io::readSeedPoints(r.value(f), more, error)) throw UsageError{error};
       o.derive.seeds.insert(o.derive.seeds.end(), more.begin(), more.end());
-    } else if (f == "--march-candidates")
+    } else if (f == "--seed-density") {
+      o.derive.seedDensity = r.value(f);
+      if (o.derive.seedDensity.empty()) throw UsageError{"--seed-density needs a texture name"};
+    } else if (f == "--seed-count")
+      o.derive.seedCount = static_cast<uint32_t>(r.unsignedValue(f, 1, 1'000'000));
+    else if (f == "--march-candidates")
       o.derive.marchCandidates = static_cast<int>(r.unsignedValue(f, 0, 64));
     else if (f == "--atlas-resolution")
       o.derive.atlasResolution = static_cast<int>(r.unsignedValue(f, 16, 8192));
@@ -109,6 +114,8 @@ RunOptions parseRunOptions(const Args& args) {
     }
   }
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
+  if (o.derive.seedDensity.empty() != (o.derive.seedCount == 0))
+    throw UsageError{"--seed-density NAME and --seed-count N go together: N seeds drawn where texture NAME is bright"};
   if (o.output.empty()) o.output = std::filesystem::path(o.file).stem().string() + ".glb";
   // Bad output names are usage errors, found before any work is done.
   std::string ext = std::filesystem::path(o.output).extension().string();

@@ -39,6 +39,8 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --seed-points S    on-mesh marching: start the axiom once per seed, S a file of
                      "x y z [dx dy dz]" lines, a seed x,y,z[:dx,dy,dz] or a quoted list
                      "x,y,z;x,y,z"; repeatable
+  --seed-density T --seed-count N  N more seeds drawn where the grammar's texture T is
+                     bright (density proportional to its value and the area)
   --march-candidates N  directions tried around a failed Marching condition (default 8)
   --atlas-resolution N  side of the marching geometry image in texels (default 1024)
   --march-units U    Marching's length: surface (3D distance, default) or texels

@@ -47,6 +47,10 @@ struct DeriveOptions {
     double direction[3] = {1, 0, 0};
   };
   std::vector<Seed> seeds;
+  // --seed-density NAME --seed-count N: N more seeds drawn on the surface with a density
+  // proportional to the grammar's texture NAME (times the area), from the run's seed.
+  std::string seedDensity;
+  uint32_t seedCount = 0;
   // Marching (Buron et al. §5, §8): when the condition fails straight ahead, this many
   // other directions are tried, spread evenly over the half circle ahead (half on each
   // side, nearest first); 0: none.

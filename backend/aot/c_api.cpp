@@ -9,7 +9,9 @@
 #include "backend/interp/interpreter.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
+#include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
+#include "runtime/io/seed_points.h"
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_mesh.h"
@@ -222,6 +224,7 @@ bool generate(fgsg_generator* g, std::string& error) {
     opt.assetDirs.push_back(dir);
   }
 
+  if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.atlasCacheDir = cache + "/atlas";
   rt::DeriveResult result = backend::deriveCompiled(g->module, *g->program, opt, *assets);
   frontend::Diagnostics diags(&g->source);
   std::string warnings;
@@ -389,13 +392,34 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       const std::optional<uint64_t> bytes = fgsg::rt::parseMemorySize(v);
       if (!bytes) return bad("a size such as 512M or 2G");
       o.maxMemoryBytes = *bytes;
+    } else if (n == "seed-points") {
+      std::vector<rt::DeriveOptions::Seed> more;
+      std::string why;
+      if (!rt::io::readSeedPoints(v, more, why)) return bad("seeds x,y,z[:dx,dy,dz] (" + why + ")");
+      o.seeds.insert(o.seeds.end(), more.begin(), more.end());
+    } else if (n == "seed-density") {
+      if (v.empty()) return bad("a texture name");
+      o.seedDensity = v;
+    } else if (n == "seed-count" || n == "march-candidates" || n == "atlas-resolution") {
+      uint64_t m;
+      const uint64_t lo = n == "atlas-resolution" ? 16 : n == "seed-count" ? 1 : 0;
+      const uint64_t hi = n == "atlas-resolution" ? 8192 : n == "seed-count" ? 1'000'000 : 64;
+      if (!parseUnsigned(v, m) || m < lo || m > hi)
+        return bad("a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+      if (n == "seed-count") o.seedCount = static_cast<uint32_t>(m);
+      else if (n == "march-candidates") o.marchCandidates = static_cast<int>(m);
+      else o.atlasResolution = static_cast<int>(m);
+    } else if (n == "march-units") {
+      if (v != "surface" && v != "texels") return bad("surface or texels");
+      o.marchInTexels = v == "texels";
     } else if (n == "asset-dir") {
       if (v.empty()) return bad("a folder name");
       g->extraAssetDirs.push_back(v);
     } else {
       error = "fgsg_set_option: unknown option " + (name ? "'" + n + "'" : std::string("NULL")) +
               " (collide-all, repair-surface, surface-size, start, max-shapes, max-depth, "
-              "max-seconds, max-memory, asset-dir)";
+              "max-seconds, max-memory, asset-dir, seed-points, seed-density, seed-count, "
+              "march-candidates, atlas-resolution, march-units)";
       return false;
     }
     return true;

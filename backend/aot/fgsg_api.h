@@ -74,6 +74,11 @@ FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path);
  *   "max-seconds"                     a positive number
  *   "asset-dir"                       adds a folder to search for assets and data files
  *                                     (after the grammar's folder and its assets/)
+ *   "seed-points"                     adds seeds "x,y,z[:dx,dy,dz]", ';' between them, or
+ *                                     a seed file (on-mesh marching, as fgsg run)
+ *   "seed-density", "seed-count"      a texture name; 1 to 1000000 seeds drawn by it
+ *   "march-candidates"                0 to 64;  "atlas-resolution": 16 to 8192
+ *   "march-units"                     "surface" or "texels"
  * An unknown name or a bad value fails and changes nothing. */
 FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* value);
 

@@ -6,6 +6,7 @@
 #include "runtime/marching/smooth_curves.h"
 #include "runtime/texture/texture_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -96,6 +97,40 @@ double MarchingCommands::sampleTexture(const rt::Scope& scope, uint32_t env, ir:
     throw DeriveError{at, "R022", "a texture context is sampled at a point of the surface, and this scope is on none"};
   const rt::marching::Vec2 uv = s.texCoord({scope.face, scope.bary});
   return textures_.at(env)->sample(uv.x(), uv.y());
+}
+
+std::vector<Vec3> MarchingCommands::densitySeeds(const std::string& name, uint32_t count, uint64_t key) {
+  const ir::Module& m = d_.module();
+  size_t env = m.environment.size();
+  for (size_t k = 0; k < m.environment.size(); ++k)
+    if (m.environment[k].kind == "texture" && m.environment[k].name == name) env = k;
+  if (env == m.environment.size())
+    throw DeriveError{{}, "R023", "--seed-density " + name + ": the grammar declares no texture '" + name +
+                                      "' (texture " + name + " = \"paint.png\";)"};
+  const MarchingSurface& s = surface({});
+  const auto& mesh = s.mesh();
+  // Each face weighs its area times the texture at its centre; draws walk the running sum.
+  std::vector<double> total(mesh.faceCount());
+  double sum = 0;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const rt::marching::Vec2 uv = s.texCoord({static_cast<int>(f), Vec3(1.0 / 3, 1.0 / 3, 1.0 / 3)});
+    sum += mesh.faceAreas[f] * std::max(0.0, textures_[env]->sample(uv.x(), uv.y()));
+    total[f] = sum;
+  }
+  if (!(sum > 0))
+    throw DeriveError{m.environment[env].loc, "R023",
+                      "--seed-density " + name + ": the texture is black all over the surface: no seed can be drawn"};
+  rt::RandomStream rng{key, 0};
+  std::vector<Vec3> points;
+  for (uint32_t k = 0; k < count; ++k) {
+    const double at = rng.next() * sum;
+    const size_t f = std::min<size_t>(std::upper_bound(total.begin(), total.end(), at) - total.begin(),
+                                      mesh.faceCount() - 1);
+    double a = rng.next(), b = rng.next();
+    if (a + b > 1) a = 1 - a, b = 1 - b;  // uniform in the triangle
+    points.push_back(rt::surface::SurfacePoint{static_cast<int>(f), Vec3(1 - a - b, a, b)}.position(mesh));
+  }
+  return points;
 }
 
 int32_t MarchingCommands::nodeAt(const rt::Scope& scope) {

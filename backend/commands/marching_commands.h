@@ -39,6 +39,9 @@ class MarchingCommands final : public CommandFamily {
   // Before deriving: loads the grammar's textures (a missing or unreadable one is an
   // error at its declaration).
   void loadTextures();
+  // `count` surface points drawn with a density proportional to texture `name` (a
+  // declared texture; R022/R023 otherwise) times the area, from `key`: --seed-density.
+  std::vector<rt::Vec3> densitySeeds(const std::string& name, uint32_t count, uint64_t key);
   // context.NAME(texCoord) at the scope's surface point.
   double sampleTexture(const rt::Scope& scope, uint32_t env, ir::Loc at);
   // After deriving: the Bezier path of every march segment, indexed as the instances'

@@ -22,14 +22,21 @@ void Derivation::runSequential() {
   streetDirection_ = rt::Vec3::UnitZ();
   std::vector<double> none;
   const uint64_t root = rt::rootKey(opt_.seed);
-  if (opt_.seeds.empty() || !surface_) {
+  std::vector<rt::DeriveOptions::Seed> seeds = opt_.seeds;
+  if (opt_.seedCount > 0 && surface_)
+    for (const rt::Vec3& p : marching_.densitySeeds(opt_.seedDensity, opt_.seedCount, rt::childKey(root, ~0ull))) {
+      rt::DeriveOptions::Seed s;
+      for (int k = 0; k < 3; ++k) s.point[k] = p[k];
+      seeds.push_back(s);
+    }
+  if (seeds.empty() || !surface_) {
     execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{}, root, 0, 0, none.data(),
              UINT32_MAX);
   } else {
     // One axiom per seed (on-mesh marching's plants), each with a random stream of its
     // own: seed k grows alike whatever the other seeds are.
-    for (size_t k = 0; k < opt_.seeds.size(); ++k) {
-      const auto& seed = opt_.seeds[k];
+    for (size_t k = 0; k < seeds.size(); ++k) {
+      const auto& seed = seeds[k];
       const rt::Vec3 at(seed.point[0], seed.point[1], seed.point[2]);
       const rt::Vec3 heading(seed.direction[0], seed.direction[1], seed.direction[2]);
       execRoot(0, m_.axiom, surface_->startScopeAt(at, seed.hasDirection ? &heading : nullptr), rt::GeomRef{},

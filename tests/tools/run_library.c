@@ -147,7 +147,10 @@ int main(int argc, char** argv) {
       FAIL_IF(fgsg_set_surface(g, value));
     } else if (strcmp(flag, "--surface-size") == 0 || strcmp(flag, "--start") == 0 ||
                strcmp(flag, "--max-shapes") == 0 || strcmp(flag, "--max-depth") == 0 ||
-               strcmp(flag, "--max-seconds") == 0 || strcmp(flag, "--asset-dir") == 0) {
+               strcmp(flag, "--max-seconds") == 0 || strcmp(flag, "--asset-dir") == 0 ||
+               strcmp(flag, "--seed-points") == 0 || strcmp(flag, "--seed-density") == 0 ||
+               strcmp(flag, "--seed-count") == 0 || strcmp(flag, "--march-candidates") == 0 ||
+               strcmp(flag, "--atlas-resolution") == 0 || strcmp(flag, "--march-units") == 0) {
       FAIL_WITH(2, fgsg_set_option(g, flag + 2, value));
     } else {
       rc = usage("unknown option", flag);

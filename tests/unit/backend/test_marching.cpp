@@ -212,3 +212,34 @@ TEST_CASE("Marching and texture errors are located and name the problem", "[marc
   CHECK(missing.messages[0].line == 2);
   CHECK(missing.messages[0].message.find("nowhere.png") != std::string::npos);
 }
+
+TEST_CASE("Seeds drawn by density from a texture sprout only where it is painted", "[marching][texture]") {
+  const auto dir = test::scratchDir("marching", "density");
+  rt::surface::SurfaceMesh plane;
+  std::string error;
+  REQUIRE(rt::surface::makeProceduralSurface("plane", {4, 4, 32}, plane, error));
+  const auto surface = rt::marching::MarchingSurface::prepare(plane, {}, error);
+  REQUIRE(surface);
+  const auto mask = rt::texture::paintMask(*surface, 512, {{rt::Vec3(-1, 1, 0), 0.5}});
+  REQUIRE(rt::texture::writeMaskPng(mask, (dir / "spot.png").string(), error));
+  rt::DeriveOptions opt = inFolder(dir);
+  opt.seedDensity = "spot";
+  opt.seedCount = 50;
+  const std::string grammar = "surface plane(4, 4, 32);\ntexture spot = \"spot.png\";\nstart = I(\"cube\")";
+  auto r = deriveText(grammar, opt);
+  REQUIRE(r.ok);
+  const auto seeds = instancesOf(r, "cube");
+  REQUIRE(seeds.size() == 50);
+  const double pixel = 4.0 * std::sqrt(2.0) / 512;
+  for (const auto* s : seeds) CHECK((unitPoint(*s, 0, 0, 0) - rt::Vec3(-1, 1, 0)).norm() <= 0.5 + 2 * pixel);
+  // The same run seed draws the same seeds.
+  auto again = deriveText(grammar, opt);
+  REQUIRE(again.instances.instances.size() == r.instances.instances.size());
+  for (size_t k = 0; k < seeds.size(); ++k)
+    CHECK(again.instances.instances[k].transform == r.instances.instances[k].transform);
+
+  opt.seedDensity = "nothing";
+  auto unknown = deriveText(grammar, opt);
+  REQUIRE(unknown.messages.size() == 1);
+  CHECK(unknown.messages[0].code == "R023");
+}

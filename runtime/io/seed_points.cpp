@@ -1,4 +1,4 @@
-#include "cli/seed_points.h"
+#include "runtime/io/seed_points.h"
 
 #include "runtime/io/read_input.h"
 
@@ -6,14 +6,14 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace fgsg::cli {
+namespace fgsg::rt::io {
 namespace {
 
 // At most this many seeds: each is a whole derivation's start.
 constexpr size_t kMaxSeeds = 1'000'000;
 
 // Three or six finite numbers separated by spaces, tabs, commas or one ':'.
-bool parseSeed(std::string text, rt::DeriveOptions::Seed& seed) {
+bool parseSeed(std::string text, DeriveOptions::Seed& seed) {
   for (char& c : text)
     if (c == ',' || c == ':' || c == '\t') c = ' ';
   std::istringstream in(text);
@@ -37,7 +37,7 @@ bool parseSeed(std::string text, rt::DeriveOptions::Seed& seed) {
 
 }  // namespace
 
-bool readSeedPoints(const std::string& spec, std::vector<rt::DeriveOptions::Seed>& seeds, std::string& error) {
+bool readSeedPoints(const std::string& spec, std::vector<DeriveOptions::Seed>& seeds, std::string& error) {
   seeds.clear();
   const bool inlineList = spec.find(',') != std::string::npos;
   if (inlineList) {
@@ -45,7 +45,7 @@ bool readSeedPoints(const std::string& spec, std::vector<rt::DeriveOptions::Seed
     while (from <= spec.size()) {
       const size_t end = std::min(spec.find(';', from), spec.size());
       const std::string one = spec.substr(from, end - from);
-      rt::DeriveOptions::Seed seed;
+      DeriveOptions::Seed seed;
       if (!parseSeed(one, seed)) {
         error = "--seed-points: '" + one + "' is not a seed: x,y,z or x,y,z:dx,dy,dz (a non-zero heading)";
         return false;
@@ -56,14 +56,14 @@ bool readSeedPoints(const std::string& spec, std::vector<rt::DeriveOptions::Seed
     return true;
   }
   std::string text;
-  if (!rt::io::readInputFile(spec, "a seed file", text, error)) return false;
+  if (!readInputFile(spec, "a seed file", text, error)) return false;
   std::istringstream in(text);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (const size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    rt::DeriveOptions::Seed seed;
+    DeriveOptions::Seed seed;
     if (!parseSeed(line, seed)) {
       error = spec + ":" + std::to_string(number) + ": expected a seed \"x y z\" or \"x y z dx dy dz\" (a non-zero heading), got '" + line + "'";
       return false;
@@ -81,4 +81,4 @@ bool readSeedPoints(const std::string& spec, std::vector<rt::DeriveOptions::Seed
   return true;
 }
 
-}  // namespace fgsg::cli
+}  // namespace fgsg::rt::io

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-namespace fgsg::cli {
+namespace fgsg::rt::io {
 
 // Reads the seeds of `spec` (a file when no such inline list parses as one, see above).
 // False with a message naming the file and line, or the inline seed, on a bad entry.
-bool readSeedPoints(const std::string& spec, std::vector<rt::DeriveOptions::Seed>& seeds, std::string& error);
+bool readSeedPoints(const std::string& spec, std::vector<DeriveOptions::Seed>& seeds, std::string& error);
 
-}  // namespace fgsg::cli
+}  // namespace fgsg::rt::io
