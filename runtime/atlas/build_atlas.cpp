@@ -1,5 +1,6 @@
-// buildAtlas: segmentation, then every chart either laid flat or split in two until all
-// are (single faces always can be), then packing.
+// buildAtlas: charts grown by normal cone, merged where two fit one cone, cleaned up
+// (teeth, holes, slivers); then every chart either laid flat or split in two until all
+// are (single faces always can be); then packing.
 #include "runtime/atlas/atlas.h"
 
 #include "runtime/atlas/chart_cleanup.h"
