@@ -1,13 +1,14 @@
 // On-mesh marching (Buron et al. 2015): the paper's Table 1 and Fig. 11 / Table 2 here.
 //  * atlas: laying a ~100 K-triangle mesh out and rasterizing its 1024^2 indirection
 //    geometry image, without the cache (anchor: 0.54 to 1 s on the paper's machine);
-//  * ivy: examples/ivy.fgsg from 1 to 256 seeds on the same mesh — the derivation
+//  * ivy: examples/ivy.fgsg from 1 to 64 seeds (--max-seeds 256 on a machine with 16 GB
+//    free: each seed adds about 0.2 M polygons) on the same mesh — the derivation
 //    (marching included) and the assembly of the smooth terminals (bent bark, leaves)
 //    into one mesh, with the terminal polygons per second (anchor: 4.48 M polygons in
 //    136 ms, about 33 M/s, on a GTX 480). Polygons are the bark's quads and the leaves'
 //    quads, as the paper counts them: triangles / 2.
 // Prints one JSON object per line; the best of several repetitions is reported.
-//   build/bin/bench_ivy [--quick] [--mesh tests/data/meshes/refined_elephant.off]
+//   build/bin/bench_ivy [--quick] [--max-seeds N] [--mesh tests/data/meshes/refined_elephant.off]
 #include "backend/interp/interpreter.h"
 #include "bench/bench_grammar.h"
 #include "runtime/assemble.h"
@@ -16,6 +17,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
@@ -104,15 +106,17 @@ void ivy(const std::string& mesh, int seeds, int reps) {
 
 int main(int argc, char** argv) {
   bool quick = false;
+  int maxSeeds = 64;
   std::string mesh = std::string(FGSG_SOURCE_DIR) + "/tests/data/meshes/refined_elephant.off";
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc) mesh = argv[++i];
+    else if (std::strcmp(argv[i], "--max-seeds") == 0 && i + 1 < argc) maxSeeds = std::atoi(argv[++i]);
   }
   const int reps = quick ? 1 : 3;
   atlas(mesh, reps);
   for (int seeds : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
-    if (quick && seeds > 16) break;
+    if (seeds > maxSeeds || (quick && seeds > 8)) break;
     ivy(mesh, seeds, reps);
   }
   return 0;

@@ -37,12 +37,14 @@ head -c 40 "$root/examples/assets/ivy_anywhere.png" > paint.png  # a truncated P
 expect 1 "error\[R023\].*paint.png" -- "$fgsg" run walk.fgsg -o out.glb
 rm paint.png
 expect 1 "error\[R023\].*paint.png" -- "$fgsg" run walk.fgsg -o out.glb
-# A PNG header claiming 100000 x 100000 pixels: refused by size, not by running out of memory.
+# A valid PNG 20000 texels wide, past the documented 16384 per side: refused by its size.
 python3 - <<'P'
 import struct, zlib
 def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d) & 0xffffffff)
-open('paint.png', 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 100000, 100000, 8, 0, 0, 0, 0))
-                             + chunk(b'IDAT', zlib.compress(b'\0' * 100)) + chunk(b'IEND', b''))
+w, h = 20000, 2
+raw = b''.join(b'\0' + b'\xff' * w for _ in range(h))
+open('paint.png', 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 0, 0, 0, 0))
+                             + chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b''))
 P
 expect 1 "error\[R023\].*paint.png.*(large|size)" -- "$fgsg" run walk.fgsg -o out.glb
 
