@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <mutex>
 
 namespace fgsg::backend {
 namespace {
@@ -20,21 +18,6 @@ using rt::marching::MarchPoint;
 
 // Branch(n) makes at most this many branches: beyond, a grammar has a bug, not a plant.
 constexpr double kMaxBranches = 1000;
-
-// Prepared surfaces are shared by every derivation of a process (the REPL re-derives,
-// `fgsg run --seed-points` derives per seed): the key is the surface's content.
-std::shared_ptr<const MarchingSurface> preparedSurface(const rt::surface::SurfaceMesh& mesh,
-                                                        const rt::marching::MarchingOptions& options,
-                                                        std::string& error) {
-  static std::mutex guard;
-  static std::map<std::pair<const void*, int>, std::weak_ptr<const MarchingSurface>> kept;
-  std::lock_guard<std::mutex> lock(guard);
-  auto& slot = kept[{&mesh, options.resolution}];
-  if (auto alive = slot.lock()) return alive;
-  auto made = MarchingSurface::prepare(mesh, options, error);
-  slot = made;
-  return made;
-}
 
 // The direction `turn` degrees counter-clockwise (seen from outside) from d in the image.
 rt::marching::Vec2 turned(const rt::marching::Vec2& d, double degrees) {
@@ -86,7 +69,8 @@ const MarchingSurface& MarchingCommands::surface(ir::Loc at) {
   options.resolution = d_.options().atlasResolution;
   options.cacheDir = d_.options().atlasCacheDir;
   std::string error;
-  surface_ = preparedSurface(d_.surface()->mesh(), options, error);
+  // Laid out once per derivation; the disk cache (options.cacheDir) spares the next run.
+  surface_ = MarchingSurface::prepare(d_.surface()->mesh(), options, error);
   if (!surface_) throw DeriveError{at, "R023", "the surface cannot be laid out for marching: " + error};
   return *surface_;
 }
@@ -160,7 +144,9 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
   MarchPoint from = s.place({st.scope.face, st.scope.bary}, st.scope.X());
   const rt::marching::Vec2 ahead = turned(from.dir, angle);
   const int sides = std::max(0, options.marchCandidates);
-  const double spacing = sides > 0 ? 180.0 / (sides + (sides % 2 ? 1 : 2)) : 0.0;
+  // p per side, the farthest 90 p / (p + 0.5) degrees out: 8 give ±20, ±40, ±60, ±80.
+  const int perSide = (sides + 1) / 2;
+  const double spacing = sides > 0 ? 90.0 / (perSide + 0.5) : 0.0;
   for (int k = 0; k <= sides; ++k) {
     // 0, +1, -1, +2, -2 ... steps of `spacing` degrees: all strictly inside ±90°.
     const int step = (k + 1) / 2;
