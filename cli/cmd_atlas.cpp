@@ -90,15 +90,6 @@ AtlasOptions parseAtlasOptions(const Args& args) {
   return o;
 }
 
-// --surface-size as fgsg run applies it: centred at the origin, largest extent `size`.
-void resize(rt::surface::SurfaceMesh& m, double size) {
-  const rt::Vec3 centre = 0.5 * (m.boundsMin + m.boundsMax);
-  const double extent = (m.boundsMax - m.boundsMin).maxCoeff();
-  if (!(extent > 0)) return;
-  for (rt::Vec3& v : m.vertices) v = (v - centre) * (size / extent);
-  m.buildTopology();
-}
-
 }  // namespace
 
 int atlasCommand(const Args& args) {
@@ -121,7 +112,7 @@ int atlasCommand(const Args& args) {
     std::cerr << "fgsg atlas: " << error << "\n";
     return 1;
   }
-  if (opt.surfaceSize > 0) resize(mesh, opt.surfaceSize);
+  if (opt.surfaceSize > 0) rt::surface::fitToSize(mesh, opt.surfaceSize);
   rt::marching::MarchingOptions options;
   options.resolution = opt.resolution;
   if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) options.cacheDir = cache + "/atlas";

@@ -41,15 +41,6 @@ Vec3 tangent(const Vec3& v, const Vec3& n, const Vec3& fallback) {
   return n.unitOrthogonal();
 }
 
-// --surface-size: centred at the origin, the largest extent made `size`.
-void resize(SurfaceMesh& m, double size) {
-  const Vec3 centre = 0.5 * (m.boundsMin + m.boundsMax);
-  const double extent = (m.boundsMax - m.boundsMin).maxCoeff();
-  if (!(extent > 0)) return;
-  for (Vec3& v : m.vertices) v = (v - centre) * (size / extent);
-  m.buildTopology();
-}
-
 }  // namespace
 
 struct SurfaceWorld::Impl {
@@ -106,7 +97,7 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
     ok = rt::surface::makeProceduralSurface(spec.generator, spec.args, impl_->mesh, error);
   }
   if (!ok) throw DeriveError{spec.loc, "R015", error};
-  if (options.surfaceSize > 0) resize(impl_->mesh, options.surfaceSize);
+  if (options.surfaceSize > 0) rt::surface::fitToSize(impl_->mesh, options.surfaceSize);
   impl_->locator = std::make_unique<rt::surface::SurfaceLocator>(impl_->mesh);
   buildFields(m, searchDirs);
   impl_->start = options.hasStart ? Vec3(options.start[0], options.start[1], options.start[2])

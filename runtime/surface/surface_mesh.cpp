@@ -102,4 +102,12 @@ std::vector<int> SurfaceMesh::facesAround(int v) const {
   return ring;
 }
 
+void fitToSize(SurfaceMesh& m, double size) {
+  const Vec3 centre = 0.5 * (m.boundsMin + m.boundsMax);
+  const double extent = (m.boundsMax - m.boundsMin).maxCoeff();
+  if (!(extent > 0)) return;
+  for (Vec3& v : m.vertices) v = (v - centre) * (size / extent);
+  m.buildTopology();
+}
+
 }  // namespace fgsg::rt::surface

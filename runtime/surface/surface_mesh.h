@@ -48,6 +48,10 @@ struct SurfaceMesh {
   }
 };
 
+// --surface-size: centres the mesh at the origin and scales it uniformly so that its
+// largest bounding-box extent is `size`, topology rebuilt (a mesh of no extent stays).
+void fitToSize(SurfaceMesh& mesh, double size);
+
 // A point on the surface: a face and barycentric coordinates (b0 + b1 + b2 = 1, all
 // >= 0) with respect to its corners. A vertex or an edge point is a face point with one
 // or two zero coordinates.
