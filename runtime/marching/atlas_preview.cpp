@@ -1,31 +1,15 @@
 #include "runtime/marching/atlas_preview.h"
 
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/png_encode.h"
 #include "runtime/marching/geometry_image.h"
 
 #include <algorithm>
 #include <cmath>
 #include <new>
 
-// Our own private copy of the PNG writer, as runtime/render/preview.cpp: static
-// functions cannot clash with the stb symbols that Debian's libtinygltf exports.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image_write.h>
-#pragma GCC diagnostic pop
 
 namespace fgsg::rt::marching {
-
-namespace {
-
-void appendBytes(void* context, void* data, int size) {
-  static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-}
-
-}  // namespace
 
 Rgb chartColour(int chart) {
   const double hue = std::fmod(0.13 + 0.6180339887498949 * chart, 1.0) * 6;
@@ -84,7 +68,7 @@ bool writeAtlasPreview(const MarchingSurface& surface, const std::string& pngPat
   std::string png;
   try {
     const PreviewImage img = renderAtlasPreview(surface);
-    if (!stbi_write_png_to_func(appendBytes, &png, img.width, img.height, 3, img.rgb.data(), img.width * 3)) {
+    if (!io::encodePng(img.width, img.height, 3, img.rgb.data(), png)) {
       error = "cannot write '" + pngPath + "': cannot encode the atlas preview as PNG";
       return false;
     }

@@ -1,5 +1,6 @@
 #include "runtime/render/preview.h"
 
+#include "runtime/io/png_encode.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -13,15 +14,6 @@
 #include <cstring>
 #include <memory>
 
-// Our own private copy of the PNG writer: static functions cannot clash with the stb
-// symbols that Debian's libtinygltf exports, and no extra library is needed.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image_write.h>
-#pragma GCC diagnostic pop
 
 namespace fgsg::rt::render {
 
@@ -174,10 +166,6 @@ Vector3f shade(const Mesh& mesh, const Camera& cam, const RTCHit& hit, const Vec
 
 uint8_t toByte(float c) { return uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 
-void appendBytes(void* context, void* data, int size) {
-  static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-}
-
 }  // namespace
 
 Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
@@ -230,7 +218,7 @@ bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::st
   std::string png;
   try {
     const Image img = renderImage(mesh, options);
-    if (!stbi_write_png_to_func(appendBytes, &png, img.width, img.height, 3, img.rgb.data(), img.width * 3)) {
+    if (!io::encodePng(img.width, img.height, 3, img.rgb.data(), png)) {
       error = "cannot write '" + pngPath + "': cannot encode the preview as PNG";
       return false;
     }

@@ -1,18 +1,11 @@
 #include "runtime/texture/paint_mask.h"
 
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/png_encode.h"
 
 #include <algorithm>
 #include <cmath>
 
-// Our own private copy of the PNG writer (as runtime/render/preview.cpp).
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image_write.h>
-#pragma GCC diagnostic pop
 
 namespace fgsg::rt::texture {
 namespace {
@@ -20,10 +13,6 @@ namespace {
 // Pixels a triangle covers but the mask has not filled: 1 painted, 0 unpainted, below 0
 // not covered by any triangle.
 constexpr int8_t kUncovered = -1;
-
-void appendBytes(void* context, void* data, int size) {
-  static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
-}
 
 }  // namespace
 
@@ -83,7 +72,7 @@ MaskImage paintMask(const marching::MarchingSurface& surface, int size, const st
 
 bool writeMaskPng(const MaskImage& mask, const std::string& path, std::string& error) {
   std::string png;
-  if (!stbi_write_png_to_func(appendBytes, &png, mask.size, mask.size, 1, mask.grey.data(), mask.size)) {
+  if (!io::encodePng(mask.size, mask.size, 1, mask.grey.data(), png)) {
     error = "cannot write '" + path + "': cannot encode the mask as PNG";
     return false;
   }
