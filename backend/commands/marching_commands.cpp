@@ -141,6 +141,13 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
   ++marches_;
   const auto& options = d_.options();
   const auto unit = options.marchInTexels ? rt::marching::LengthUnit::Image : rt::marching::LengthUnit::Surface;
+  // No two points of the surface are farther apart than its bounding box's diagonal: a
+  // longer step has no destination, and would only walk far before finding so.
+  const auto& mesh = s.mesh();
+  if (unit == rt::marching::LengthUnit::Surface && length > (mesh.boundsMax - mesh.boundsMin).norm()) {
+    ++stopped_;
+    return;
+  }
   MarchPoint from = s.place({st.scope.face, st.scope.bary}, st.scope.X());
   const rt::marching::Vec2 ahead = turned(from.dir, angle);
   const int sides = std::max(0, options.marchCandidates);

@@ -243,3 +243,13 @@ TEST_CASE("Seeds drawn by density from a texture sprout only where it is painted
   REQUIRE(unknown.messages.size() == 1);
   CHECK(unknown.messages[0].code == "R023");
 }
+
+TEST_CASE("A step longer than the surface is wide stops the march at once", "[marching]") {
+  auto r = deriveText(R"(
+    surface sphere(1);
+    start = Marching(2.5, 0, true){ I("cube") } Marching(1.9, 0, true){ I("sphere") }
+  )");
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "cube") == 0);    // no two points of the unit sphere are 2.5 apart
+  CHECK(test::countAsset(r, "sphere") == 1);  // 1.9 is a chord of it
+}
