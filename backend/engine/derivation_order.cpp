@@ -22,14 +22,16 @@ void Derivation::runSequential() {
   streetDirection_ = rt::Vec3::UnitZ();
   std::vector<double> none;
   const uint64_t root = rt::rootKey(opt_.seed);
+  if ((!opt_.seeds.empty() || opt_.seedCount > 0) && !surface_)
+    throw DeriveError{{}, "R022", "seeds (--seed-points, --seed-density) stand on a surface, and this grammar grows on the plane"};
   std::vector<rt::DeriveOptions::Seed> seeds = opt_.seeds;
-  if (opt_.seedCount > 0 && surface_)
+  if (opt_.seedCount > 0)
     for (const rt::Vec3& p : marching_.densitySeeds(opt_.seedDensity, opt_.seedCount, rt::childKey(root, ~0ull))) {
       rt::DeriveOptions::Seed s;
       for (int k = 0; k < 3; ++k) s.point[k] = p[k];
       seeds.push_back(s);
     }
-  if (seeds.empty() || !surface_) {
+  if (seeds.empty()) {
     execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{}, root, 0, 0, none.data(),
              UINT32_MAX);
   } else {

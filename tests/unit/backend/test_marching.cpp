@@ -253,3 +253,12 @@ TEST_CASE("A step longer than the surface is wide stops the march at once", "[ma
   CHECK(test::countAsset(r, "cube") == 0);    // no two points of the unit sphere are 2.5 apart
   CHECK(test::countAsset(r, "sphere") == 1);  // 1.9 is a chord of it
 }
+
+TEST_CASE("Seeds without a surface are an error, not ignored", "[marching][errors]") {
+  rt::DeriveOptions opt;
+  opt.seeds.resize(1);
+  auto r = deriveText("start = I(\"cube\")", opt);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R022");
+  CHECK_FALSE(r.ok);
+}
