@@ -60,37 +60,36 @@ int addBufferView(tinygltf::Model& model, const void* bytes, size_t size, int ta
   return int(model.bufferViews.size() - 1);
 }
 
-int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bool withBounds) {
+// A float accessor of `width` components per element (VEC2 or VEC3), with its per-component
+// bounds when asked (glTF requires them for POSITION).
+int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int width, bool withBounds) {
   tinygltf::Accessor acc;
   acc.bufferView = addBufferView(model, values.data(), values.size() * sizeof(float),
                                  TINYGLTF_TARGET_ARRAY_BUFFER);
   acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  acc.type = TINYGLTF_TYPE_VEC3;
-  acc.count = values.size() / 3;
+  acc.type = width == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+  acc.count = values.size() / width;
   if (withBounds) {
-    acc.minValues.assign(3, INFINITY);
-    acc.maxValues.assign(3, -INFINITY);
+    acc.minValues.assign(width, INFINITY);
+    acc.maxValues.assign(width, -INFINITY);
     for (size_t i = 0; i < values.size(); ++i) {
-      acc.minValues[i % 3] = std::min(acc.minValues[i % 3], double(values[i]));
-      acc.maxValues[i % 3] = std::max(acc.maxValues[i % 3], double(values[i]));
+      acc.minValues[i % width] = std::min(acc.minValues[i % width], double(values[i]));
+      acc.maxValues[i % width] = std::max(acc.maxValues[i % width], double(values[i]));
     }
   }
   model.accessors.push_back(acc);
   return int(model.accessors.size() - 1);
 }
 
+int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bool withBounds) {
+  return addFloatAccessor(model, values, 3, withBounds);
+}
+
 // glTF puts the texture's origin at the top left (v down); the mesh's v is up.
 int addTexcoordAccessor(tinygltf::Model& model, const std::vector<float>& uvUp) {
   std::vector<float> uvDown(uvUp);
   for (size_t i = 1; i < uvDown.size(); i += 2) uvDown[i] = 1.0f - uvDown[i];
-  tinygltf::Accessor acc;
-  acc.bufferView = addBufferView(model, uvDown.data(), uvDown.size() * sizeof(float),
-                                 TINYGLTF_TARGET_ARRAY_BUFFER);
-  acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  acc.type = TINYGLTF_TYPE_VEC2;
-  acc.count = uvDown.size() / 2;
-  model.accessors.push_back(acc);
-  return int(model.accessors.size() - 1);
+  return addFloatAccessor(model, uvDown, 2, false);
 }
 
 bool encodeGlb(const Mesh& mesh, std::string& bytes, std::string& error) {

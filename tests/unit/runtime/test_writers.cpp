@@ -445,6 +445,22 @@ TEST_CASE("an instance whose vertices would overflow a float is detected", "[wri
 
 namespace {
 
+// OpenMesh reads a written file's texture coordinates back at the vertices they were
+// written for.
+void checkTexcoordsReadBack(const fs::path& file, const Mesh& m) {
+  OMesh om;
+  om.request_vertex_texcoords2D();
+  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexTexCoord;
+  REQUIRE(OpenMesh::IO::read_mesh(om, file.string(), opt));
+  REQUIRE(opt.check(OpenMesh::IO::Options::VertexTexCoord));
+  REQUIRE(om.n_vertices() == m.vertexCount());
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const auto t = om.texcoord2D(om.vertex_handle(int(v)));
+    CHECK(t[0] == m.texcoords[2 * v]);
+    CHECK(t[1] == m.texcoords[2 * v + 1]);
+  }
+}
+
 // Bark, a leaf and a cube (which has no texture coordinates: it gets (0, 0)).
 Mesh texturedMesh() {
   InstanceList list;
@@ -522,19 +538,7 @@ TEST_CASE("OBJ writes vt lines and v/vt/vn corners", "[writers][texcoords]") {
     return n + "/" + n + "/" + n;
   };
   CHECK(f[0] == "f " + corner(m.indices[0]) + " " + corner(m.indices[1]) + " " + corner(m.indices[2]));
-
-  // OpenMesh reads the coordinates back at the vertices they were written for.
-  OMesh om;
-  om.request_vertex_texcoords2D();
-  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexTexCoord;
-  REQUIRE(OpenMesh::IO::read_mesh(om, (dir / "uv.obj").string(), opt));
-  REQUIRE(opt.check(OpenMesh::IO::Options::VertexTexCoord));
-  REQUIRE(om.n_vertices() == m.vertexCount());
-  for (size_t v = 0; v < m.vertexCount(); ++v) {
-    const auto t = om.texcoord2D(om.vertex_handle(int(v)));
-    CHECK(t[0] == m.texcoords[2 * v]);
-    CHECK(t[1] == m.texcoords[2 * v + 1]);
-  }
+  checkTexcoordsReadBack(dir / "uv.obj", m);
 }
 
 TEST_CASE("PLY writes u v per vertex", "[writers][texcoords]") {
@@ -547,17 +551,7 @@ TEST_CASE("PLY writes u v per vertex", "[writers][texcoords]") {
                                   "property uchar red\n"));
   const size_t header = ply.find("end_header\n") + 11;
   CHECK(ply.size() == header + m.vertexCount() * 35 + m.triangleCount() * 13);
-  OMesh om;
-  om.request_vertex_texcoords2D();
-  OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexTexCoord;
-  REQUIRE(OpenMesh::IO::read_mesh(om, (dir / "uv.ply").string(), opt));
-  REQUIRE(opt.check(OpenMesh::IO::Options::VertexTexCoord));
-  REQUIRE(om.n_vertices() == m.vertexCount());
-  for (size_t v = 0; v < m.vertexCount(); ++v) {
-    const auto t = om.texcoord2D(om.vertex_handle(int(v)));
-    CHECK(t[0] == m.texcoords[2 * v]);
-    CHECK(t[1] == m.texcoords[2 * v + 1]);
-  }
+  checkTexcoordsReadBack(dir / "uv.ply", m);
 }
 
 TEST_CASE("meshes without texture coordinates write none", "[writers][texcoords]") {
