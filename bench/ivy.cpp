@@ -8,7 +8,8 @@
 //    136 ms, about 33 M/s, on a GTX 480). Polygons are the bark's quads and the leaves'
 //    quads, as the paper counts them: triangles / 2.
 // Prints one JSON object per line; the best of several repetitions is reported.
-//   build/bin/bench_ivy [--quick] [--max-seeds N] [--mesh tests/data/meshes/refined_elephant.off]
+//   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--mesh tests/data/meshes/refined_elephant.off]
+// (--seeds N: that seed count only, without the atlas line.)
 #include "backend/interp/interpreter.h"
 #include "bench/bench_grammar.h"
 #include "runtime/assemble.h"
@@ -112,14 +113,19 @@ void ivy(const std::string& mesh, int seeds, int reps) {
 
 int main(int argc, char** argv) {
   bool quick = false;
-  int maxSeeds = 64;
+  int maxSeeds = 64, onlySeeds = 0;
   std::string mesh = std::string(FGSG_SOURCE_DIR) + "/tests/data/meshes/refined_elephant.off";
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc) mesh = argv[++i];
     else if (std::strcmp(argv[i], "--max-seeds") == 0 && i + 1 < argc) maxSeeds = std::atoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc) onlySeeds = std::atoi(argv[++i]);
   }
   const int reps = quick ? 1 : 3;
+  if (onlySeeds > 0) {
+    ivy(mesh, onlySeeds, reps);
+    return 0;
+  }
   atlas(mesh, reps);
   for (int seeds : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
     if (seeds > maxSeeds || (quick && seeds > 8)) break;

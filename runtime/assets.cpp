@@ -249,7 +249,7 @@ Mesh normaliseToUnitBox(const Builder& b) {
       m.normals.push_back(float(nn[a]));
     }
   }
-  m.indices = b.idx;
+  m.indices.assign(b.idx.begin(), b.idx.end());
   return m;
 }
 
@@ -469,7 +469,7 @@ int AssetLibrary::addGenerated(const std::string& name, const Mesh& world,
     if (world.texcoords.size() == 2 * world.vertexCount())
       b.uv.emplace_back(world.texcoords[2 * v], world.texcoords[2 * v + 1]);
   }
-  b.idx = world.indices;
+  b.idx.assign(world.indices.begin(), world.indices.end());
   V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);
   for (const V3& q : b.p) {
     lo = lo.cwiseMin(q);

@@ -8,7 +8,7 @@ namespace fgsg::rt {
 
 namespace {
 
-std::array<float, 3> bound(const std::vector<float>& p, bool lower) {
+std::array<float, 3> bound(const MeshArray<float>& p, bool lower) {
   if (p.empty()) return {0.0f, 0.0f, 0.0f};
   const float init = lower ? std::numeric_limits<float>::infinity()
                            : -std::numeric_limits<float>::infinity();

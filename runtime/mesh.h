@@ -3,6 +3,8 @@
 // is written.
 #pragma once
 
+#include "runtime/mesh_array.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -11,11 +13,12 @@
 namespace fgsg::rt {
 
 struct Mesh {
-  std::vector<float> positions;  // x y z per vertex
-  std::vector<float> normals;    // x y z per vertex (unit length)
-  std::vector<float> colors;     // r g b per vertex in [0,1]; empty when none
-  std::vector<float> texcoords;  // u v per vertex (v up); empty when none
-  std::vector<uint32_t> indices; // three per triangle, counter-clockwise = front
+  // MeshArray (runtime/mesh_array.h): resize leaves new elements uninitialised.
+  MeshArray<float> positions;    // x y z per vertex
+  MeshArray<float> normals;      // x y z per vertex (unit length)
+  MeshArray<float> colors;       // r g b per vertex in [0,1]; empty when none
+  MeshArray<float> texcoords;    // u v per vertex (v up); empty when none
+  MeshArray<uint32_t> indices;   // three per triangle, counter-clockwise = front
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return indices.size() / 3; }

@@ -259,8 +259,8 @@ bool generate(fgsg_generator* g, std::string& error) {
   return true;
 }
 
-template <class T>
-const T* dataOrNull(const std::vector<T>& v) {
+template <class V>
+const typename V::value_type* dataOrNull(const V& v) {
   return v.empty() ? nullptr : v.data();
 }
 

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <new>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -62,7 +63,7 @@ int addBufferView(tinygltf::Model& model, const void* bytes, size_t size, int ta
 
 // A float accessor of `width` components per element (VEC2 or VEC3), with its per-component
 // bounds when asked (glTF requires them for POSITION).
-int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int width, bool withBounds) {
+int addFloatAccessor(tinygltf::Model& model, std::span<const float> values, int width, bool withBounds) {
   tinygltf::Accessor acc;
   acc.bufferView = addBufferView(model, values.data(), values.size() * sizeof(float),
                                  TINYGLTF_TARGET_ARRAY_BUFFER);
@@ -81,13 +82,13 @@ int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, i
   return int(model.accessors.size() - 1);
 }
 
-int addVec3Accessor(tinygltf::Model& model, const std::vector<float>& values, bool withBounds) {
+int addVec3Accessor(tinygltf::Model& model, std::span<const float> values, bool withBounds) {
   return addFloatAccessor(model, values, 3, withBounds);
 }
 
 // glTF puts the texture's origin at the top left (v down); the mesh's v is up.
-int addTexcoordAccessor(tinygltf::Model& model, const std::vector<float>& uvUp) {
-  std::vector<float> uvDown(uvUp);
+int addTexcoordAccessor(tinygltf::Model& model, std::span<const float> uvUp) {
+  std::vector<float> uvDown(uvUp.begin(), uvUp.end());
   for (size_t i = 1; i < uvDown.size(); i += 2) uvDown[i] = 1.0f - uvDown[i];
   return addFloatAccessor(model, uvDown, 2, false);
 }

@@ -40,7 +40,7 @@ Vec3 perpendicular(const Vec3& t) {
   return (e - e.dot(t) * t).normalized();
 }
 
-void push(std::vector<float>& v, const Vec3& p) {
+void push(MeshArray<float>& v, const Vec3& p) {
   v.push_back(float(p.x()));
   v.push_back(float(p.y()));
   v.push_back(float(p.z()));

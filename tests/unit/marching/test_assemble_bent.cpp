@@ -47,7 +47,7 @@ std::array<double, 16> scopeOnChord(const CurveSegment& c, double radius) {
   return out;
 }
 
-Vec3 at(const std::vector<float>& a, size_t v) { return Vec3(a[3 * v], a[3 * v + 1], a[3 * v + 2]); }
+Vec3 at(const fgsg::rt::MeshArray<float>& a, size_t v) { return Vec3(a[3 * v], a[3 * v + 1], a[3 * v + 2]); }
 
 struct BentScene {
   InstanceList list;

@@ -49,7 +49,7 @@ struct Scene {
   }
 };
 
-Eigen::Vector3d vec(const std::vector<float>& a, size_t v) { return {a[3 * v], a[3 * v + 1], a[3 * v + 2]}; }
+Eigen::Vector3d vec(const fgsg::rt::MeshArray<float>& a, size_t v) { return {a[3 * v], a[3 * v + 1], a[3 * v + 2]}; }
 
 Eigen::Vector3d faceNormal(const Mesh& m, size_t t) {
   const auto a = vec(m.positions, m.indices[3 * t]), b = vec(m.positions, m.indices[3 * t + 1]),

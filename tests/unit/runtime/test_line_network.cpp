@@ -34,7 +34,7 @@ LineCursor polyline(LineNetwork& net, const std::vector<Vec3>& points, LineStyle
   return c;
 }
 
-Vec3 vertex(const std::vector<float>& a, size_t v) {
+Vec3 vertex(const fgsg::rt::MeshArray<float>& a, size_t v) {
   return {a[3 * v], a[3 * v + 1], a[3 * v + 2]};
 }
 
