@@ -73,6 +73,9 @@ struct DeriveStats {
   uint64_t linesJoined = 0;    // lines ended at an intersection (merged or stopped)
   uint64_t locksRemoved = 0;   // Lock sets removed whole because one of their shapes collided
   double deriveSeconds = 0.0;
+  // Of deriveSeconds: making the surface ready — loading it, designing its fields,
+  // laying it out for marching (Buron et al. Table 1's preprocessing).
+  double surfaceSeconds = 0.0;
 };
 
 // A problem found while deriving, located in the grammar source.

@@ -7,6 +7,7 @@
 #include "runtime/texture/texture_map.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace fgsg::backend {
@@ -51,7 +52,7 @@ void MarchingCommands::loadTextures() {
   for (size_t k = 0; k < m.environment.size(); ++k) {
     const auto& env = m.environment[k];
     if (env.kind != "texture") continue;
-    auto texture = std::make_unique<rt::texture::TextureMap>();
+    auto texture = std::make_shared<rt::texture::TextureMap>();
     std::string error;
     if (!texture->load(rt::io::findFile(env.detail, d_.options().assetDirs), error))
       throw DeriveError{env.loc, "R023", "texture '" + env.name + "': " + error};
@@ -59,19 +60,37 @@ void MarchingCommands::loadTextures() {
   }
 }
 
-const MarchingSurface& MarchingCommands::surface(ir::Loc at) {
-  if (surface_) return *surface_;
-  if (!d_.surface())
-    throw DeriveError{at, "R022",
-                      "on-mesh marching and texture contexts need a surface: declare one "
-                      "(`surface \"bunny.off\";`) or pass --surface MESH"};
+void MarchingCommands::prepareSurface() {
+  if (prepared_) return;
+  prepared_ = true;
+  if (!d_.surface()) {
+    unpreparedCode_ = "R022";
+    unpreparedWhy_ = "on-mesh marching and texture contexts need a surface: declare one "
+                     "(`surface \"bunny.off\";`) or pass --surface MESH";
+    return;
+  }
   rt::marching::MarchingOptions options;
   options.resolution = d_.options().atlasResolution;
   options.cacheDir = d_.options().atlasCacheDir;
   std::string error;
   // Laid out once per derivation; the disk cache (options.cacheDir) spares the next run.
+  const auto start = std::chrono::steady_clock::now();
   surface_ = MarchingSurface::prepare(d_.surface()->mesh(), options, error);
-  if (!surface_) throw DeriveError{at, "R023", "the surface cannot be laid out for marching: " + error};
+  d_.stats().surfaceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!surface_) unpreparedCode_ = "R023", unpreparedWhy_ = "the surface cannot be laid out for marching: " + error;
+}
+
+void MarchingCommands::shareFrom(const MarchingCommands& other) {
+  surface_ = other.surface_;
+  prepared_ = other.prepared_;
+  unpreparedCode_ = other.unpreparedCode_;
+  unpreparedWhy_ = other.unpreparedWhy_;
+  textures_ = other.textures_;
+}
+
+const MarchingSurface& MarchingCommands::surface(ir::Loc at) {
+  prepareSurface();
+  if (!surface_) throw DeriveError{at, unpreparedCode_, unpreparedWhy_};
   return *surface_;
 }
 

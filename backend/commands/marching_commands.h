@@ -39,6 +39,12 @@ class MarchingCommands final : public CommandFamily {
   // Before deriving: loads the grammar's textures (a missing or unreadable one is an
   // error at its declaration).
   void loadTextures();
+  // Lays the surface out for marching now rather than at the first march (an error is
+  // kept and thrown where a march or texture query first needs the surface).
+  void prepareSurface();
+  // Uses `other`'s textures and prepared surface (a seed plant's derivation shares its
+  // parent's; both are only read once prepared).
+  void shareFrom(const MarchingCommands& other);
   // `count` surface points drawn with a density proportional to texture `name` (a
   // declared texture; R022/R023 otherwise) times the area, from `key`: --seed-density.
   std::vector<rt::Vec3> densitySeeds(const std::string& name, uint32_t count, uint64_t key);
@@ -59,7 +65,9 @@ class MarchingCommands final : public CommandFamily {
 
   Derivation& d_;
   std::shared_ptr<const rt::marching::MarchingSurface> surface_;
-  std::vector<std::unique_ptr<rt::texture::TextureMap>> textures_;  // by environment index
+  bool prepared_ = false;           // surface_ set, or why not in the two below
+  std::string unpreparedCode_, unpreparedWhy_;
+  std::vector<std::shared_ptr<const rt::texture::TextureMap>> textures_;  // by environment index
   std::vector<rt::marching::MarchNode> nodes_;
   std::vector<rt::marching::MarchSegment> segments_;
   bool condition_ = false;  // what the last MarchCondition said

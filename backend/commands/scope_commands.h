@@ -19,9 +19,11 @@ inline const rt::Vec3 kPlaneNormal = rt::Vec3::UnitZ();
 class ScopeCommands final : public CommandFamily {
  public:
   // `surface`: the derivation's surface (null on the plane; set once the engine has
-  // built it); `stack`: the derivation's shared [ ] stack.
-  ScopeCommands(const std::unique_ptr<SurfaceWorld>& surface, std::vector<Saved>& stack)
-      : surface_(surface), stack_(stack) {}
+  // built it); `stack`: the derivation's shared [ ] stack; `deadline`: its
+  // --max-seconds, which traces on the surface ask.
+  ScopeCommands(const std::shared_ptr<const SurfaceWorld>& surface, std::vector<Saved>& stack,
+                rt::Deadline& deadline)
+      : surface_(surface), stack_(stack), deadline_(deadline) {}
 
   std::vector<ir::OpKind> kinds() const override;
   void apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec&, Frame&) override { command(st, op, a); }
@@ -33,7 +35,7 @@ class ScopeCommands final : public CommandFamily {
   // the first field (FGSG §4.3).
   void translate(rt::Scope& scope, double x, double y, double z) {
     if (surface_)
-      surface_->translate(scope, x, y, z);
+      surface_->translate(scope, x, y, z, &deadline_);
     else
       rt::translateLocal(scope, x, y, z);
   }
@@ -51,8 +53,9 @@ class ScopeCommands final : public CommandFamily {
  private:
   void center(State& st, const ir::Op& op);
 
-  const std::unique_ptr<SurfaceWorld>& surface_;
+  const std::shared_ptr<const SurfaceWorld>& surface_;
   std::vector<Saved>& stack_;
+  rt::Deadline& deadline_;
   rt::TrigMemo trig_;
 };
 

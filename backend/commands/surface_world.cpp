@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 #include <queue>
 #include <unordered_map>
 #include <optional>
@@ -44,7 +45,7 @@ Vec3 tangent(const Vec3& v, const Vec3& n, const Vec3& fallback) {
 }  // namespace
 
 struct SurfaceWorld::Impl {
-  rt::Deadline* deadline = nullptr;  // --max-seconds: traces, design and smoothing ask it
+  rt::Deadline* deadline = nullptr;  // --max-seconds: field design and smoothing ask it
   struct Field {
     std::string name;
     std::unique_ptr<rt::field::TangentField> values;
@@ -57,7 +58,9 @@ struct SurfaceWorld::Impl {
   std::shared_ptr<const rt::field::TangentFrames> frames;
   std::vector<Field> fields;        // in declaration order; the first guides T
   std::vector<int> fieldOfEnv;      // Module::environment index -> fields index (-1: none)
-  std::vector<std::vector<int>> vertexFaces;  // for geodesic distances, built on first use
+  // For geodesic distances, built on first use (once, whichever thread asks first).
+  mutable std::once_flag vertexFacesBuilt;
+  mutable std::vector<std::vector<int>> vertexFaces;
   Vec3 start = Vec3::Zero();
 
   // The scope's surface point; a scope made without one (a synthesized piece) is snapped.
@@ -244,7 +247,7 @@ void SurfaceWorld::placeOn(rt::Scope& s, int face, const Vec3& bary, const Vec3&
 
 const SurfaceMesh& SurfaceWorld::mesh() const { return impl_->mesh; }
 
-void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) const {
+void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz, rt::Deadline* deadline) const {
   const Impl& w = *impl_;
   s.lift += tz;
   const SurfacePoint from = w.pointOf(s);
@@ -265,7 +268,7 @@ void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) cons
     if (guide.isLineField() && u.dot(d) < 0) u = -u;  // the eigenvector's sign on d's side
     const double angle = rt::field::orientedAngle(u, d, n);
     const double keepX = rt::field::orientedAngle(u, x, n);
-    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, angle, length, w.deadline);
+    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, angle, length, deadline);
     const Vec3 nEnd = r.end.normal(w.mesh);
     const Vec3 uEnd = r.fieldDirection.norm() > 0 ? r.fieldDirection
                                                   : rt::field::rotateAbout(r.direction, nEnd, -angle);
@@ -274,7 +277,7 @@ void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz) cons
   }
   // Without a field the scope rides a straightest geodesic and keeps its angle to it.
   const double keep = rt::field::orientedAngle(d, x, n);
-  const rt::field::TraceResult r = rt::field::traceGeodesic(w.mesh, from, d, length, w.deadline);
+  const rt::field::TraceResult r = rt::field::traceGeodesic(w.mesh, from, d, length, deadline);
   const Vec3 nEnd = r.end.normal(w.mesh);
   w.place(s, r.end, rt::field::rotateAbout(r.direction, nEnd, keep));
 }
@@ -381,16 +384,16 @@ double marchUpdate(const Vec3& a, const Vec3& b, const Vec3& c, double da, doubl
 }  // namespace
 
 double SurfaceWorld::geodesicDistance(const rt::Scope& a, const rt::Scope& b, double limit) const {
-  Impl& w = *impl_;
+  const Impl& w = *impl_;
   const SurfaceMesh& m = w.mesh;
   const SurfacePoint p = w.pointOf(a), q = w.pointOf(b);
   const Vec3 from = p.position(m), to = q.position(m);
   if (p.face == q.face) return (from - to).norm();
-  if (w.vertexFaces.empty()) {
+  std::call_once(w.vertexFacesBuilt, [&] {
     w.vertexFaces.resize(m.vertexCount());
     for (size_t f = 0; f < m.faceCount(); ++f)
       for (int k = 0; k < 3; ++k) w.vertexFaces[m.faces[f][k]].push_back(static_cast<int>(f));
-  }
+  });
   // Distances grow outward from p's corners (reached straight from p); a corner is final
   // when it leaves the queue, and updates the corners of its triangles from there.
   using Item = std::pair<double, int>;

@@ -29,7 +29,8 @@ class SurfaceWorld {
   // Builds the module's surface (or --surface's) and its fields. Files are looked up in
   // `searchDirs` (the grammar's folder first). Throws DeriveError at the declaration.
   // `deadline` (--max-seconds) bounds field design and smoothing (an expired one is R021
-  // at the field) and every trace (which then throws rt::TimeLimitReached).
+  // at the field). Once built, the world is only read: the const members may be called
+  // from several threads (the plants of independent seeds grow concurrently).
   SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
                const std::vector<std::string>& searchDirs, rt::Deadline* deadline = nullptr);
   ~SurfaceWorld();
@@ -46,8 +47,10 @@ class SurfaceWorld {
   void placeOn(rt::Scope& s, int face, const rt::Vec3& bary, const rt::Vec3& x) const;
   // The surface itself, in world space (after --surface-size).
   const rt::surface::SurfaceMesh& mesh() const;
-  // T(tx, ty, tz): (tx, ty) traces along the surface, tz lifts along the normal.
-  void translate(rt::Scope& s, double tx, double ty, double tz) const;
+  // T(tx, ty, tz): (tx, ty) traces along the surface, tz lifts along the normal. The
+  // trace asks `deadline` (the calling derivation's --max-seconds; null: unbounded) and
+  // throws rt::TimeLimitReached when it expires.
+  void translate(rt::Scope& s, double tx, double ty, double tz, rt::Deadline* deadline) const;
   // RS(a): turns the scope about the surface normal at its point.
   void rotateAboutNormal(rt::Scope& s, double degrees) const;
 

@@ -20,7 +20,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
                        std::vector<double> attrs, const FgsgProgram* program, bool direct)
     : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
-      scope_(surface_, stack_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this) {
+      scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;
   if (m_.mode != ir::DeriveMode::Parallel && m_.depthBound >= 0 &&
@@ -159,7 +159,9 @@ void Derivation::checkEnvironment() {
       throw DeriveError{m_.surface.loc, "R009",
                         "a surface needs a sequential derivation: L-system turtles draw on the "
                         "plane"};
-    surface_ = std::make_unique<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+    const auto start = Clock::now();
+    surface_ = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+    stats_.surfaceSeconds += std::chrono::duration<double>(Clock::now() - start).count();
   }
   marching_.loadTextures();
 }

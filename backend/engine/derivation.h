@@ -10,6 +10,8 @@
 //   derivation.cpp         run(), set-up, how a derivation ends
 //   derivation_order.cpp   the sequential order: queues, successors, Emit, Lock-style
 //                          on-the-spot derivation, op dispatch
+//   seed_plants.cpp        independent seeds' plants, each derived on its own
+//                          (concurrently) and output in seed order
 //   rule_choice.cpp        guards, specific before general rules, weighted choice
 //   limits.cpp             --max-depth/-shapes/-seconds/-memory and their messages
 //   instance_output.cpp    the instance list: symbols, colours, placing, final order
@@ -70,7 +72,7 @@ class Derivation final : public QueryHost {
   rt::DeriveStats& stats() { return stats_; }
   rt::GeometryArena& arena() { return arena_; }
   rt::OcclusionIndex& occluders() { return occluders_; }
-  const std::unique_ptr<SurfaceWorld>& surface() const { return surface_; }
+  const std::shared_ptr<const SurfaceWorld>& surface() const { return surface_; }
   size_t scopeStackSize() const { return stack_.size(); }
   rt::Deadline& deadline() { return deadline_; }
   LimitReached timeLimit() const;
@@ -142,6 +144,7 @@ class Derivation final : public QueryHost {
 
   // derivation_order.cpp
   void runSequential();
+  void deriveWaitingShapes();
   void deriveShape(const WaitingShape& shape);
   bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent, uint32_t index);
   bool deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
@@ -157,6 +160,13 @@ class Derivation final : public QueryHost {
   const double* evalSlots(const ir::Op& op, const Frame& f, ArgBuffer& buf);
   const double* evalOpArgs(const ir::Op& op, const Frame& f, ArgBuffer& buf, uint32_t& n);
   [[noreturn]] void unsupported(const ir::Op& op);
+
+  // seed_plants.cpp
+  struct Plant;
+  void deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t root);
+  void adoptParent(const Derivation& parent);
+  Plant derivePlant(const rt::Scope& start, uint64_t key, uint32_t index);
+  void mergePlants(std::vector<Plant>& plants);
 
   // rule_choice.cpp
   static bool isSpecific(const ir::Rule& r);
@@ -188,6 +198,8 @@ class Derivation final : public QueryHost {
   bool moduleUsesQuery(ir::Query q) const;
   void findEagerSymbols();
   bool canOrderDirectInstances() const;
+  bool seedsGrowApart() const;
+  bool usesMarchingSurface() const;
   double stringId(const std::string& s) const;
 
   // native_bridge.cpp
@@ -225,6 +237,10 @@ class Derivation final : public QueryHost {
   size_t instancesCounted_ = 0;          // instances whose output bytes are in instanceBytes_
   uint64_t instanceBytes_ = 0;
   std::vector<uint64_t> assetBytes_;     // output bytes of one instance, per out_.assets entry
+  // A seed plant's derivation: stats_.shapesCreated when each instance was placed (how
+  // --max-shapes cuts a plant that follows others, seed_plants.cpp).
+  bool recordShapesAtInstances_ = false;
+  std::vector<uint64_t> shapesAtInstance_;
   rt::InstanceList out_;
   rt::DeriveStats stats_;
   uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
@@ -248,7 +264,7 @@ class Derivation final : public QueryHost {
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   bool usesOcclusion_ = false;
-  std::unique_ptr<SurfaceWorld> surface_;  // null: the grammar grows on the plane
+  std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
   uint32_t onTheSpot_ = 0;      // shapes being derived where they are written, nested

@@ -24,27 +24,33 @@ void Derivation::runSequential() {
   const uint64_t root = rt::rootKey(opt_.seed);
   if ((!opt_.seeds.empty() || opt_.seedCount > 0) && !surface_)
     throw DeriveError{{}, "R022", "seeds (--seed-points, --seed-density) stand on a surface, and this grammar grows on the plane"};
-  std::vector<rt::DeriveOptions::Seed> seeds = opt_.seeds;
+  std::vector<rt::Scope> starts;
+  for (const auto& seed : opt_.seeds) {
+    const rt::Vec3 at(seed.point[0], seed.point[1], seed.point[2]);
+    const rt::Vec3 heading(seed.direction[0], seed.direction[1], seed.direction[2]);
+    starts.push_back(surface_->startScopeAt(at, seed.hasDirection ? &heading : nullptr));
+  }
   if (opt_.seedCount > 0)
-    for (const rt::Vec3& p : marching_.densitySeeds(opt_.seedDensity, opt_.seedCount, rt::childKey(root, ~0ull))) {
-      rt::DeriveOptions::Seed s;
-      for (int k = 0; k < 3; ++k) s.point[k] = p[k];
-      seeds.push_back(s);
-    }
-  if (seeds.empty()) {
+    for (const rt::Vec3& p : marching_.densitySeeds(opt_.seedDensity, opt_.seedCount, rt::childKey(root, ~0ull)))
+      starts.push_back(surface_->startScopeAt(p, nullptr));
+  if (starts.empty()) {
     execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{}, root, 0, 0, none.data(),
              UINT32_MAX);
+  } else if (starts.size() > 1 && seedsGrowApart()) {
+    deriveSeedsApart(starts, root);
+    return;
   } else {
     // One axiom per seed (on-mesh marching's plants), each with a random stream of its
-    // own: seed k grows alike whatever the other seeds are.
-    for (size_t k = 0; k < seeds.size(); ++k) {
-      const auto& seed = seeds[k];
-      const rt::Vec3 at(seed.point[0], seed.point[1], seed.point[2]);
-      const rt::Vec3 heading(seed.direction[0], seed.direction[1], seed.direction[2]);
-      execRoot(0, m_.axiom, surface_->startScopeAt(at, seed.hasDirection ? &heading : nullptr), rt::GeomRef{},
-               rt::childKey(root, static_cast<uint32_t>(k)), 0, static_cast<uint32_t>(k), none.data(), UINT32_MAX);
-    }
+    // own; plants that can meet (collisions, lines, occlusion) grow in one queue.
+    for (size_t k = 0; k < starts.size(); ++k)
+      execRoot(0, m_.axiom, starts[k], rt::GeomRef{}, rt::childKey(root, static_cast<uint32_t>(k)), 0,
+               static_cast<uint32_t>(k), none.data(), UINT32_MAX);
   }
+  deriveWaitingShapes();
+}
+
+// Takes the waiting shapes by priority, highest first, until none is left.
+void Derivation::deriveWaitingShapes() {
   WaitingShape shape;
   while (true) {
     auto bucket = buckets_.begin();

@@ -116,6 +116,28 @@ bool Derivation::canOrderDirectInstances() const {
   return true;
 }
 
+// Whether the plants of several seeds can be derived apart: when no shape can see what
+// another placed — no collision tests (IC, Lock, `collision all`, --collide-all), no
+// merges (IM), no lines (they join and stop at each other), no occlusion or visibility
+// queries, no synthesis (it places shapes of its own) — a plant grows alike alone.
+bool Derivation::seedsGrowApart() const {
+  if (m_.collision.all || opt_.collideAll) return false;
+  if (moduleUses([](const ir::Op& op) {
+        using K = ir::OpKind;
+        return op.kind == K::Lock || op.kind == K::Line || op.kind == K::LineSeg || op.kind == K::Synthesize ||
+               (op.kind == K::Instance && op.mode != ir::InstanceMode::Plain);
+      }))
+    return false;
+  return !moduleUsesQuery(ir::Query::ScopeOcc) && !moduleUsesQuery(ir::Query::ShapeVisible);
+}
+
+// Whether the grammar marches or samples a texture context: both need the surface laid
+// out as a geometry image.
+bool Derivation::usesMarchingSurface() const {
+  return moduleUsesQuery(ir::Query::Texture) ||
+         moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Marching; });
+}
+
 double Derivation::stringId(const std::string& s) const {
   for (size_t i = 0; i < m_.strings.size(); ++i)
     if (m_.strings[i] == s) return static_cast<double>(i);

@@ -89,14 +89,18 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   inst.paramCount = paramCount;
   out_.params.insert(out_.params.end(), params, params + paramCount);
   out_.instances.push_back(inst);
+  if (recordShapesAtInstances_) shapesAtInstance_.push_back(stats_.shapesCreated);
   if (orderedDirect_) placedBy_.push_back(placingShape_);
   if (usesOcclusion_) occluders_.add(scope);
   collide_.placed(scope);
 }
 
 // Smooth terminals are bent along their march segment's curve (Buron et al. §6), known
-// only now that every march has ended.
-void Derivation::appendCurves() { out_.curves = marching_.curves(); }
+// only now that every march has ended. (After seed plants the curves are theirs, merged.)
+void Derivation::appendCurves() {
+  std::vector<rt::CurveSegment> curves = marching_.curves();
+  out_.curves.insert(out_.curves.end(), curves.begin(), curves.end());
+}
 
 // The surface the pattern grew on is part of the output, in a neutral grey.
 void Derivation::appendSurface() {

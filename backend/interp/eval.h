@@ -71,6 +71,7 @@ class Evaluator {
   const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
   // The attribute slots as compiled code reads them (three per attribute).
   const double* attrData() const { return attrs_.data(); }
+  const std::vector<double>& attrSlots() const { return attrs_; }
 
  private:
   double numSlow(const ir::Expr& e, const Frame& f) const;

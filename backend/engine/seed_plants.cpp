@@ -1,0 +1,143 @@
+// Seeds whose plants cannot meet (Derivation::seedsGrowApart: no collisions, merges,
+// lines or occlusion queries) are derived apart: each seed's plant by a derivation of its
+// own, all of them concurrently (Buron et al. §7: one GPU thread per seed), sharing the
+// surface, its marching layout, the textures and the assets, which they only read. The
+// plants are then put together in seed order, so the output is the same bytes whatever
+// the number of threads — the output of deriving the seeds one after another.
+#include "backend/engine/derivation.h"
+
+#include "runtime/stack_budget.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <memory>
+#include <new>
+#include <optional>
+#include <stdexcept>
+
+namespace fgsg::backend {
+
+// What one plant's derivation left: its instances (numbered by the shared tables), its
+// counts, and how it ended.
+struct Derivation::Plant {
+  rt::InstanceList out;
+  rt::DeriveStats stats;
+  std::vector<uint64_t> shapesAtInstance;  // stats.shapesCreated when each was placed
+  std::vector<uint64_t> ruleUses;
+  std::optional<rt::DeriveMessage> depthWarning;
+  std::optional<LimitReached> limit;  // a limit ended it: what it derived is kept
+  std::optional<DeriveError> error;   // an error ended it
+  bool outOfMemory = false;
+};
+
+void Derivation::deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t root) {
+  // What the plants share is made ready here, so that they only read it: every asset
+  // resolved (and its output size known), the surface laid out for marching.
+  if (!out_.assets.empty()) assetOutputBytes(static_cast<uint32_t>(out_.assets.size() - 1));
+  if (usesMarchingSurface()) marching_.prepareSurface();
+  std::vector<Plant> plants(starts.size());
+  tbb::parallel_for(size_t(0), starts.size(), [&](size_t k) {
+    auto plant = std::make_unique<Derivation>(m_, opt_, assets_, eval_.attrSlots(), program_, false);
+    plant->adoptParent(*this);
+    plants[k] = plant->derivePlant(starts[k], rt::childKey(root, static_cast<uint32_t>(k)), static_cast<uint32_t>(k));
+  });
+  mergePlants(plants);
+}
+
+void Derivation::adoptParent(const Derivation& parent) {
+  surface_ = parent.surface_;
+  marching_.shareFrom(parent.marching_);
+  deadline_ = parent.deadline_;  // the same end, with a countdown of its own
+  memoryBudget_ = parent.memoryBudget_;
+  assetBytes_ = parent.assetBytes_;
+}
+
+// The seed's axiom (seed `index`, random stream `key`: as in one queue) and everything
+// it leads to; ended like run(), but the surface is not appended.
+Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, uint32_t index) {
+  Plant p;
+  stackFloor_ = rt::stackFloor();  // this thread's stack
+  recordShapesAtInstances_ = true;
+  try {
+    initOutput();
+    std::vector<double> none;
+    execRoot(0, m_.axiom, start, rt::GeomRef{}, key, 0, index, none.data(), UINT32_MAX);
+    deriveWaitingShapes();
+  } catch (const LimitReached& limit) {
+    p.limit = limit;
+  } catch (const rt::TimeLimitReached&) {
+    p.limit = timeLimit();
+  } catch (const std::bad_alloc&) {
+    p.outOfMemory = true;
+  } catch (const DeriveError& e) {
+    p.error = e;
+  }
+  try {
+    if (!p.error && !p.outOfMemory) appendCurves();
+  } catch (const std::bad_alloc&) {
+    p.outOfMemory = true;
+  }
+  if (depthLimitHit_) p.depthWarning = depthWarning_;
+  p.out = std::move(out_);
+  p.stats = stats_;
+  p.shapesAtInstance = std::move(shapesAtInstance_);
+  p.ruleUses = std::move(ruleUses_);
+  return p;
+}
+
+// In seed order, as if derived one after another: the first plant that failed fails the
+// derivation; --max-shapes counts the shapes of all plants, so a plant may create only
+// what the earlier ones left (its instances placed beyond are cut), and a plant a limit
+// ended is the last one kept.
+void Derivation::mergePlants(std::vector<Plant>& plants) {
+  for (Plant& p : plants) {
+    if (p.error) throw *p.error;
+    if (p.outOfMemory) throw std::bad_alloc();
+    if (p.out.assets.size() != out_.assets.size() || p.out.symbols.size() != out_.symbols.size())
+      throw std::logic_error("a seed plant numbered its assets or symbols apart from the derivation");
+    for (size_t r = 0; r < ruleUses_.size(); ++r) ruleUses_[r] += p.ruleUses[r];
+    if (p.depthWarning && !depthLimitHit_) depthLimitHit_ = true, depthWarning_ = *p.depthWarning;
+
+    const uint64_t left = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
+    size_t keep = p.out.instances.size();
+    std::optional<LimitReached> limit = p.limit;
+    if (p.stats.shapesCreated > left) {
+      keep = static_cast<size_t>(std::upper_bound(p.shapesAtInstance.begin(), p.shapesAtInstance.end(), left) -
+                                 p.shapesAtInstance.begin());
+      p.stats.shapesCreated = left;
+      const auto [who, loc] = runaway(ir::Loc{});
+      limit = LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) + " shapes (--max-shapes): " +
+                               who + " ran away; the shapes derived so far are kept",
+                           loc};
+    }
+
+    const size_t paramBase = out_.params.size(), curveBase = out_.curves.size();
+    const size_t params = keep == 0 ? 0
+                                    : size_t(p.out.instances[keep - 1].firstParam) + p.out.instances[keep - 1].paramCount;
+    out_.params.insert(out_.params.end(), p.out.params.begin(), p.out.params.begin() + params);
+    out_.curves.insert(out_.curves.end(), p.out.curves.begin(), p.out.curves.end());
+    for (size_t i = 0; i < keep; ++i) {
+      rt::Instance inst = p.out.instances[i];
+      inst.firstParam = static_cast<uint32_t>(inst.firstParam + paramBase);
+      if (inst.curve != UINT32_MAX) inst.curve = static_cast<uint32_t>(inst.curve + curveBase);
+      out_.instances.push_back(inst);
+    }
+    p.out = rt::InstanceList{};  // freed as soon as it is copied
+
+    rt::DeriveStats& s = stats_;
+    const rt::DeriveStats& q = p.stats;
+    s.shapesCreated += q.shapesCreated;
+    s.rewrites += q.rewrites;
+    s.terminals += q.terminals;
+    s.collisionTests += q.collisionTests;
+    s.collisions += q.collisions;
+    s.merges += q.merges;
+    s.lineSegments += q.lineSegments;
+    s.linesJoined += q.linesJoined;
+    s.locksRemoved += q.locksRemoved;
+    if (limit) throw *limit;
+  }
+}
+
+}  // namespace fgsg::backend
