@@ -180,6 +180,14 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, const Deadline* deadline, size_t* assembled) {
+  Mesh out;
+  assembleInstances(list, library, meshOf, out, deadline, assembled);
+  return out;
+}
+
+void assembleInstances(const InstanceList& list, const AssetLibrary& library,
+                       const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
+                       size_t* assembled) {
   // Block by block, in list order: pass 1 counts each instance's output; prefix sums
   // give every instance its own output range, so pass 2 writes in parallel yet the bytes
   // depend neither on the scheduling nor on the blocks. A block is a millisecond or so of
@@ -187,7 +195,12 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
   constexpr size_t kBlockTriangles = 4096;
   checkCurves(list);
   const size_t n = list.instances.size();
-  Mesh out;
+  // Emptied, not freed: reserve below keeps a reused mesh's memory (already faulted in).
+  out.positions.clear();
+  out.normals.clear();
+  out.colors.clear();
+  out.texcoords.clear();
+  out.indices.clear();
   std::vector<Counts> counts;
   std::vector<size_t> firstVertex, firstTriangle;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
@@ -246,7 +259,6 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
     begin = end;
   }
   if (assembled) *assembled = begin;
-  return out;
 }
 
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
