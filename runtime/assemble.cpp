@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -83,15 +84,19 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNorm
   if (withNormals) s.normal.resize(nv);
   const float* position = asset.positions.data();
   const float* normal = asset.normals.data();
+  // The bend's section is evaluated once per run of vertices with the same s (a ring of
+  // the bark tube: runtime/marching/curve_bend.h).
+  marching::BendSection section;
+  section.s = std::numeric_limits<double>::quiet_NaN();
   for (size_t v = 0; v < nv; ++v) {
     const Vector3d q(position[3 * v], position[3 * v + 1], position[3 * v + 2]);
     s.world[v] = p.A * q + p.t;
     const Matrix3d* turn = nullptr;
-    marching::BentPoint b;
     if (p.bend) {
-      b = p.bend->atRigid(s.world[v]);
-      s.world[v] = b.position;
-      turn = &b.rotation;
+      const double along = p.bend->along(q);
+      if (!(along == section.s)) section = p.bend->section(along);
+      s.world[v] = p.bend->place(section, s.world[v]).position;
+      turn = &section.rotation;
     }
     if (withNormals) {
       const Vector3d n0 = hasNormals ? Vector3d(normal[3 * v], normal[3 * v + 1], normal[3 * v + 2]) : Vector3d::Zero();

@@ -97,6 +97,11 @@ TEST_CASE("assembly bends instances with a curve and keeps the others rigid", "[
       Vec3 position = rigid, normal = (cofactor * at(asset.normals, v)).normalized();
       if (inst.curve != UINT32_MAX) {
         const BentPoint b = CurveBend(scene.list.curves[inst.curve], inst.transform).at(local);
+        // The assembler shares a section along each ring; projecting each vertex anew
+        // agrees up to rounding.
+        const BentPoint r = CurveBend(scene.list.curves[inst.curve], inst.transform).atRigid(rigid);
+        CHECK((at(out.positions, i * nv + v) - r.position).norm() < 1e-6);
+        CHECK((at(out.normals, i * nv + v) - (r.rotation * normal).normalized()).norm() < 1e-6);
         position = b.position;
         normal = (b.rotation * normal).normalized();
         largestBend = std::max(largestBend, (b.position - rigid).norm());
