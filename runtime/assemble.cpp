@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -75,6 +76,17 @@ Eigen::Vector3f outputNormal(const Placement& p, const Vector3d& assetNormal, co
   return (len > 0 ? Vector3d(n / len) : Vector3d(0, 0, 1)).cast<float>();
 }
 
+// Whether the triangle with this cross product has an area of kMinTriangleArea or more
+// (a NaN area: no). The square root is only taken within a hair of the threshold, where
+// its rounding could decide: the same answer as 0.5 |cross| >= kMinTriangleArea.
+bool largeEnough(const Vector3d& cross) {
+  constexpr double kSquared = 4 * kMinTriangleArea * kMinTriangleArea;  // |cross|^2 at the threshold
+  const double squared = cross.squaredNorm();
+  if (squared > 1.01 * kSquared) return true;
+  if (!(squared > 0.99 * kSquared)) return false;
+  return 0.5 * std::sqrt(squared) >= kMinTriangleArea;
+}
+
 // Transforms the asset's positions (and, `withNormals`, its normals) and decides which
 // triangles and vertices survive.
 Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNormals) {
@@ -109,8 +121,7 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNorm
   for (size_t t = 0; t < nt; ++t) {
     const uint32_t* tri = &asset.indices[3 * t];
     const Vector3d& a = s.world[tri[0]];
-    const double area = 0.5 * (s.world[tri[1]] - a).cross(s.world[tri[2]] - a).norm();
-    if (!(area >= kMinTriangleArea)) continue;  // also drops NaN areas
+    if (!largeEnough((s.world[tri[1]] - a).cross(s.world[tri[2]] - a))) continue;
     s.keepTri[t] = 1;
     ++c.triangles;
     for (int k = 0; k < 3; ++k) s.remap[tri[k]] = 0;

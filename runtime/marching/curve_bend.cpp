@@ -78,11 +78,6 @@ BendSection CurveBend::section(double s) const {
   return out;
 }
 
-BentPoint CurveBend::place(const BendSection& section, const Vec3& rigid) const {
-  if (length_ == 0) return {rigid, Mat3::Identity()};
-  return {section.onCurve + section.rotation * (rigid - section.chordPoint), section.rotation};
-}
-
 Vec3 bendAlongCurve(const CurveSegment& curve, const std::array<double, 16>& unitBoxToWorld, const Vec3& local) {
   return CurveBend(curve, unitBoxToWorld).at(local).position;
 }

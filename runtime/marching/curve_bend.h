@@ -66,7 +66,10 @@ class CurveBend {
   // section at s, and the bent image of `rigid` (M local) given its section.
   double along(const Vec3& local) const { return along_.dot(local) + alongAt0_; }
   BendSection section(double s) const;
-  BentPoint place(const BendSection& section, const Vec3& rigid) const;
+  BentPoint place(const BendSection& section, const Vec3& rigid) const {
+    if (length_ == 0) return {rigid, Mat3::Identity()};
+    return {section.onCurve + section.rotation * (rigid - section.chordPoint), section.rotation};
+  }
   // False when the chord has no length and points stay rigid.
   bool bends() const { return length_ > 0; }
 
