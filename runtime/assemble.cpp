@@ -241,8 +241,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   // Block by block, in list order: pass 1 builds each instance's output in a staging
   // slot of its own; prefix sums over what survived give every instance its output range,
   // so pass 2 copies in parallel yet the bytes depend neither on the scheduling nor on
-  // the blocks. A block is a millisecond or so of
-  // work, so a deadline is noticed in time.
+  // the blocks. A block is a millisecond or so of work, so a deadline is noticed in time.
   constexpr size_t kBlockTriangles = 4096;
   checkCurves(list);
   const size_t n = list.instances.size();
