@@ -8,7 +8,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -25,28 +27,30 @@ constexpr uint32_t kUnused = UINT32_MAX;
 
 // How one instance maps its asset into the world.
 struct Placement {
-  Matrix4d M;
-  Matrix3d normalMatrix;  // cofactor of the linear part, sign-fixed for mirrors
+  Matrix3d A;             // linear part of the instance transform
+  Vector3d t;             // its translation
+  Matrix3d normalMatrix;  // cofactor of A, sign-fixed for mirrors
   bool flip = false;      // a mirroring transform: reverse winding to keep it outward
-  // A smooth terminal (Instance::curve): bent along its curve after M.
+  // A smooth terminal (Instance::curve): bent along its curve after the transform.
   std::optional<marching::CurveBend> bend;
 };
 
 Placement placementOf(const Instance& inst, const InstanceList& list) {
   Placement p;
-  p.M = Eigen::Map<const Matrix4d>(inst.transform.data());  // column-major like Eigen
-  const Matrix3d A = p.M.block<3, 3>(0, 0);
+  const Eigen::Map<const Matrix4d> M(inst.transform.data());  // column-major like Eigen
+  p.A = M.block<3, 3>(0, 0);
+  p.t = M.block<3, 1>(0, 3);
   // cof(A) = [a2 x a3, a3 x a1, a1 x a2] satisfies (A u) x (A v) = cof(A) (u x v): it maps a
   // normal to the transformed surface's normal even when A is singular (a flattened box),
   // where the usual inverse transpose does not exist.
-  const Vector3d a1 = A.col(0), a2 = A.col(1), a3 = A.col(2);
+  const Vector3d a1 = p.A.col(0), a2 = p.A.col(1), a3 = p.A.col(2);
   p.normalMatrix.col(0) = a2.cross(a3);
   p.normalMatrix.col(1) = a3.cross(a1);
   p.normalMatrix.col(2) = a1.cross(a2);
   // A mirror (det < 0) turns outward normals and counter-clockwise winding inside out;
   // flipping both restores them. The tolerance keeps a flattened (det ~ 0) box unflipped.
   const double scale = a1.norm() * a2.norm() * a3.norm();
-  p.flip = A.determinant() < -1e-9 * scale;
+  p.flip = p.A.determinant() < -1e-9 * scale;
   if (p.flip) p.normalMatrix = -p.normalMatrix;
   if (inst.curve != UINT32_MAX) p.bend.emplace(list.curves[inst.curve], inst.transform);
   return p;
@@ -54,30 +58,61 @@ Placement placementOf(const Instance& inst, const InstanceList& list) {
 
 // Per-instance working set, reused across the instances a task handles.
 struct Scratch {
-  std::vector<Vector3d> world;    // asset vertices in world space
-  std::vector<Matrix3d> turn;     // bent instances: how each vertex's normal turns
-  std::vector<uint32_t> remap;    // asset vertex -> output vertex within the instance
-  std::vector<uint8_t> keepTri;   // triangle survives the area test
+  std::vector<Vector3d> world;         // asset vertices in world space
+  std::vector<Eigen::Vector3f> normal;  // their output normals
+  std::vector<uint32_t> remap;         // asset vertex -> output vertex within the instance
+  std::vector<uint8_t> keepTri;        // triangle survives the area test
 };
 
 struct Counts {
   uint32_t vertices = 0, triangles = 0;
 };
 
-// Transforms the asset's positions and decides which triangles and vertices survive.
-Counts classify(const Mesh& asset, const Placement& p, Scratch& s) {
+// The output normal: through the cofactor matrix, turned with the bend, unit length.
+Eigen::Vector3f outputNormal(const Placement& p, const Vector3d& assetNormal, const Matrix3d* turn) {
+  Vector3d n = p.normalMatrix * assetNormal;
+  if (turn) n = *turn * n;
+  const double len = n.norm();
+  return (len > 0 ? Vector3d(n / len) : Vector3d(0, 0, 1)).cast<float>();
+}
+
+// Whether the triangle with this cross product has an area of kMinTriangleArea or more
+// (a NaN area: no). The square root is only taken within a hair of the threshold, where
+// its rounding could decide: the same answer as 0.5 |cross| >= kMinTriangleArea.
+bool largeEnough(const Vector3d& cross) {
+  constexpr double kSquared = 4 * kMinTriangleArea * kMinTriangleArea;  // |cross|^2 at the threshold
+  const double squared = cross.squaredNorm();
+  if (squared > 1.01 * kSquared) return true;
+  if (!(squared > 0.99 * kSquared)) return false;
+  return 0.5 * std::sqrt(squared) >= kMinTriangleArea;
+}
+
+// Transforms the asset's positions (and, `withNormals`, its normals) and decides which
+// triangles and vertices survive.
+Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNormals) {
   const size_t nv = asset.vertexCount(), nt = asset.triangleCount();
+  const bool hasNormals = asset.normals.size() == asset.positions.size();
   s.world.resize(nv);
+  if (withNormals) s.normal.resize(nv);
+  const float* position = asset.positions.data();
+  const float* normal = asset.normals.data();
+  // The bend's section is evaluated once per run of vertices with the same s (a ring of
+  // the bark tube: runtime/marching/curve_bend.h).
+  marching::BendSection section;
+  section.s = std::numeric_limits<double>::quiet_NaN();
   for (size_t v = 0; v < nv; ++v) {
-    const Vector3d q(asset.positions[3 * v], asset.positions[3 * v + 1], asset.positions[3 * v + 2]);
-    s.world[v] = p.M.block<3, 3>(0, 0) * q + p.M.block<3, 1>(0, 3);
-  }
-  if (p.bend) {
-    s.turn.resize(nv);
-    for (size_t v = 0; v < nv; ++v) {
-      const marching::BentPoint b = p.bend->atRigid(s.world[v]);
-      s.world[v] = b.position;
-      s.turn[v] = b.rotation;
+    const Vector3d q(position[3 * v], position[3 * v + 1], position[3 * v + 2]);
+    s.world[v] = p.A * q + p.t;
+    const Matrix3d* turn = nullptr;
+    if (p.bend) {
+      const double along = p.bend->along(q);
+      if (!(along == section.s)) section = p.bend->section(along);
+      s.world[v] = p.bend->place(section, s.world[v]).position;
+      turn = &section.rotation;
+    }
+    if (withNormals) {
+      const Vector3d n0 = hasNormals ? Vector3d(normal[3 * v], normal[3 * v + 1], normal[3 * v + 2]) : Vector3d::Zero();
+      s.normal[v] = outputNormal(p, n0, turn);
     }
   }
   s.remap.assign(nv, kUnused);
@@ -86,8 +121,7 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s) {
   for (size_t t = 0; t < nt; ++t) {
     const uint32_t* tri = &asset.indices[3 * t];
     const Vector3d& a = s.world[tri[0]];
-    const double area = 0.5 * (s.world[tri[1]] - a).cross(s.world[tri[2]] - a).norm();
-    if (!(area >= kMinTriangleArea)) continue;  // also drops NaN areas
+    if (!largeEnough((s.world[tri[1]] - a).cross(s.world[tri[2]] - a))) continue;
     s.keepTri[t] = 1;
     ++c.triangles;
     for (int k = 0; k < 3; ++k) s.remap[tri[k]] = 0;
@@ -113,47 +147,63 @@ std::vector<Counts> countAll(const InstanceList& list, const AssetLibrary& libra
                       for (size_t i = r.begin(); i != r.end(); ++i) {
                         const Instance& inst = list.instances[i];
                         if (const Mesh* m = assetOf(inst, library, meshOf))
-                          counts[i] = classify(*m, placementOf(inst, list), s);
+                          counts[i] = classify(*m, placementOf(inst, list), s, false);
                       }
                     });
   return counts;
 }
 
-void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scratch& s,
-          size_t firstVertex, size_t firstTriangle, Mesh& out) {
+// A block's output before its place in the mesh is known: each instance writes what
+// survives into a slot with room for all of its asset, at slotVertex / slotTriangle
+// (indices counted from the instance's first vertex), and is then copied into place.
+// Bending a vertex costs far more than copying it: this way each is bent once.
+struct Staging {
+  std::vector<float> positions, normals, colors, texcoords;
+  std::vector<uint32_t> indices;
+  std::vector<size_t> slotVertex, slotTriangle;  // per instance of the block, and the end
+};
+
+// Writes an instance's surviving vertices and triangles into its staging slot.
+void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scratch& s, size_t slot,
+          Staging& st) {
+  const size_t vertex0 = st.slotVertex[slot];
+  float* position = st.positions.data() + 3 * vertex0;
+  float* normal = st.normals.data() + 3 * vertex0;
+  float* color = st.colors.data() + 3 * vertex0;
+  // Texture coordinates pass through unchanged; (0, 0) for an asset without them.
+  float* texcoord = st.texcoords.empty() ? nullptr : st.texcoords.data() + 2 * vertex0;
+  const bool hasTexcoords = asset.hasTexcoords();
   for (size_t v = 0; v < s.remap.size(); ++v) {
-    if (s.remap[v] == kUnused) continue;
-    const size_t o = 3 * (firstVertex + s.remap[v]);
-    const bool hasNormals = asset.normals.size() == asset.positions.size();
-    const Vector3d n0 = hasNormals ? Vector3d(asset.normals[3 * v], asset.normals[3 * v + 1],
-                                              asset.normals[3 * v + 2])
-                                   : Vector3d::Zero();
-    Vector3d n = p.normalMatrix * n0;
-    if (p.bend) n = s.turn[v] * n;
-    const double len = n.norm();
-    n = len > 0 ? Vector3d(n / len) : Vector3d(0, 0, 1);
+    const uint32_t o = s.remap[v];
+    if (o == kUnused) continue;
     for (int d = 0; d < 3; ++d) {
-      out.positions[o + d] = float(s.world[v][d]);
-      out.normals[o + d] = float(n[d]);
-      out.colors[o + d] = inst.color[d];
+      position[3 * o + d] = float(s.world[v][d]);
+      normal[3 * o + d] = s.normal[v][d];
+      color[3 * o + d] = inst.color[d];
     }
-    // Texture coordinates pass through unchanged; (0, 0) for an asset without them.
-    if (!out.texcoords.empty()) {
-      const size_t ot = 2 * (firstVertex + s.remap[v]);
-      const bool has = asset.hasTexcoords();
-      for (int d = 0; d < 2; ++d) out.texcoords[ot + d] = has ? asset.texcoords[2 * v + d] : 0.0f;
-    }
+    if (texcoord)
+      for (int d = 0; d < 2; ++d) texcoord[2 * o + d] = hasTexcoords ? asset.texcoords[2 * v + d] : 0.0f;
   }
-  size_t t = firstTriangle;
+  uint32_t* index = st.indices.data() + 3 * st.slotTriangle[slot];
   for (size_t a = 0; a < s.keepTri.size(); ++a) {
     if (!s.keepTri[a]) continue;
     const uint32_t* tri = &asset.indices[3 * a];
-    const uint32_t base = uint32_t(firstVertex);
-    out.indices[3 * t] = base + s.remap[tri[0]];
-    out.indices[3 * t + 1] = base + s.remap[tri[p.flip ? 2 : 1]];
-    out.indices[3 * t + 2] = base + s.remap[tri[p.flip ? 1 : 2]];
-    ++t;
+    *index++ = s.remap[tri[0]];
+    *index++ = s.remap[tri[p.flip ? 2 : 1]];
+    *index++ = s.remap[tri[p.flip ? 1 : 2]];
   }
+}
+
+// Copies an instance's staged output to its place in the mesh.
+void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t firstTriangle, Mesh& out) {
+  if (c.triangles == 0) return;  // nothing survived (and the slot may be past the end)
+  const size_t v = st.slotVertex[slot], t = st.slotTriangle[slot];
+  std::copy_n(&st.positions[3 * v], 3 * c.vertices, &out.positions[3 * firstVertex]);
+  std::copy_n(&st.normals[3 * v], 3 * c.vertices, &out.normals[3 * firstVertex]);
+  std::copy_n(&st.colors[3 * v], 3 * c.vertices, &out.colors[3 * firstVertex]);
+  if (!out.texcoords.empty()) std::copy_n(&st.texcoords[2 * v], 2 * c.vertices, &out.texcoords[2 * firstVertex]);
+  const uint32_t base = uint32_t(firstVertex);
+  for (size_t k = 0; k < 3 * size_t(c.triangles); ++k) out.indices[3 * firstTriangle + k] = base + st.indices[3 * t + k];
 }
 
 // A curve index that names no curve is the engine's bug, said before any work starts.
@@ -180,14 +230,27 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, const Deadline* deadline, size_t* assembled) {
-  // Block by block, in list order: pass 1 counts each instance's output; prefix sums
-  // give every instance its own output range, so pass 2 writes in parallel yet the bytes
-  // depend neither on the scheduling nor on the blocks. A block is a millisecond or so of
-  // work, so a deadline is noticed in time.
+  Mesh out;
+  assembleInstances(list, library, meshOf, out, deadline, assembled);
+  return out;
+}
+
+void assembleInstances(const InstanceList& list, const AssetLibrary& library,
+                       const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
+                       size_t* assembled) {
+  // Block by block, in list order: pass 1 builds each instance's output in a staging
+  // slot of its own; prefix sums over what survived give every instance its output range,
+  // so pass 2 copies in parallel yet the bytes depend neither on the scheduling nor on
+  // the blocks. A block is a millisecond or so of work, so a deadline is noticed in time.
   constexpr size_t kBlockTriangles = 4096;
   checkCurves(list);
   const size_t n = list.instances.size();
-  Mesh out;
+  // Emptied, not freed: reserve below keeps a reused mesh's memory (already faulted in).
+  out.positions.clear();
+  out.normals.clear();
+  out.colors.clear();
+  out.texcoords.clear();
+  out.indices.clear();
   std::vector<Counts> counts;
   std::vector<size_t> firstVertex, firstTriangle;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
@@ -205,20 +268,35 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
         return m && m->hasTexcoords();
       });
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
+  Staging st;
   size_t begin = 0;
   while (begin < n && !(deadline && deadline->passed())) {
+    // The block, and each instance's staging slot: room for its whole asset.
     size_t end = begin, work = 0;
+    st.slotVertex.assign(1, 0);
+    st.slotTriangle.assign(1, 0);
     while (end < n && (end == begin || work < kBlockTriangles)) {
       const Mesh* m = assetOf(list.instances[end++], library, meshOf);
       work += 1 + (m ? m->triangleCount() : 0);
+      st.slotVertex.push_back(st.slotVertex.back() + (m ? m->vertexCount() : 0));
+      st.slotTriangle.push_back(st.slotTriangle.back() + (m ? m->triangleCount() : 0));
     }
     const size_t k = end - begin;
+    st.positions.resize(3 * st.slotVertex[k]);
+    st.normals.resize(3 * st.slotVertex[k]);
+    st.colors.resize(3 * st.slotVertex[k]);
+    if (withTexcoords) st.texcoords.resize(2 * st.slotVertex[k]);
+    st.indices.resize(3 * st.slotTriangle[k]);
     counts.assign(k, Counts{});
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       Scratch s;
       for (size_t i = r.begin(); i != r.end(); ++i) {
         const Instance& inst = list.instances[begin + i];
-        if (const Mesh* m = assetOf(inst, library, meshOf)) counts[i] = classify(*m, placementOf(inst, list), s);
+        const Mesh* m = assetOf(inst, library, meshOf);
+        if (!m) continue;
+        const Placement p = placementOf(inst, list);
+        counts[i] = classify(*m, p, s, true);
+        emit(*m, inst, p, s, i, st);
       }
     });
     firstVertex.assign(k + 1, out.positions.size() / 3);
@@ -233,20 +311,11 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
     out.indices.resize(3 * firstTriangle[k]);
     if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
-      Scratch s;
-      for (size_t i = r.begin(); i != r.end(); ++i) {
-        const Instance& inst = list.instances[begin + i];
-        const Mesh* m = assetOf(inst, library, meshOf);
-        if (!m || counts[i].triangles == 0) continue;
-        const Placement p = placementOf(inst, list);
-        classify(*m, p, s);
-        emit(*m, inst, p, s, firstVertex[i], firstTriangle[i], out);
-      }
+      for (size_t i = r.begin(); i != r.end(); ++i) place(st, i, counts[i], firstVertex[i], firstTriangle[i], out);
     });
     begin = end;
   }
   if (assembled) *assembled = begin;
-  return out;
 }
 
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,

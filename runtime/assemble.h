@@ -37,6 +37,13 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, const Deadline* deadline = nullptr,
                        size_t* assembled = nullptr);
+// The same into `out`, whose content it replaces but whose arrays' capacity it keeps: a
+// host regenerating a model assembles into the previous mesh without faulting in fresh
+// memory again (hundreds of megabytes for on-mesh marching). The arrays end up exactly
+// as a fresh mesh's would; only their capacity may be larger.
+void assembleInstances(const InstanceList& list, const AssetLibrary& library,
+                       const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline = nullptr,
+                       size_t* assembled = nullptr);
 
 // The number of triangles assembleInstances would produce, without building the mesh.
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,

@@ -43,26 +43,38 @@ CurveBend::CurveBend(const CurveSegment& curve, const std::array<double, 16>& un
   scopeFrame_.col(0) = along;
   scopeFrame_.col(1) = up.cross(along);
   scopeFrame_.col(2) = up;
+  // s = (M local - c0) . chord / |chord|^2, as an affine function of local.
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 column = placement_.block<3, 1>(0, k);
+    const double dot = column.dot(chord_);
+    if (std::abs(dot) > 1e-12 * column.norm() * length) along_[k] = dot / (length * length);
+  }
+  alongAt0_ = (placement_.block<3, 1>(0, 3) - start_).dot(chord_) / (length * length);
 }
 
 BentPoint CurveBend::at(const Vec3& local) const {
-  return atRigid(placement_.block<3, 3>(0, 0) * local + placement_.block<3, 1>(0, 3));
+  return place(section(along(local)), placement_.block<3, 3>(0, 0) * local + placement_.block<3, 1>(0, 3));
 }
 
 BentPoint CurveBend::atRigid(const Vec3& rigid) const {
   if (length_ == 0) return {rigid, Mat3::Identity()};
-  const double s = (rigid - start_).dot(chord_) / (length_ * length_);
+  return place(section((rigid - start_).dot(chord_) / (length_ * length_)), rigid);
+}
+
+BendSection CurveBend::section(double s) const {
+  BendSection out;
+  out.s = s;
+  if (length_ == 0) return out;
   const double x = std::clamp(s, 0.0, 1.0);
   const CurveFrame f = curveFrame(curve_, x);
   Mat3 curveFrame;
   curveFrame.col(0) = f.tangent;
   curveFrame.col(1) = f.side;
   curveFrame.col(2) = f.up;
-  BentPoint out;
   out.rotation = curveFrame * scopeFrame_.transpose();
   // Beyond an end, straight on along the end tangent (B is only followed on [0, 1]).
-  const Vec3 onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
-  out.position = onCurve + out.rotation * (rigid - (start_ + s * chord_));
+  out.onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
+  out.chordPoint = start_ + s * chord_;
   return out;
 }
 

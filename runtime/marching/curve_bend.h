@@ -19,6 +19,14 @@
 // R(s) — exact for a rigid motion, the usual approximation for a bend.
 //
 // A curve whose chord has no length bends nothing: points stay where M puts them.
+//
+// Sharing along rings: B(s), chord(s) and R(s) — a BendSection — depend on s alone, so
+// the points with the same s can share one. at() computes an asset point's s as an affine
+// function of it, s = a . local + b, in which a column of M (nearly) perpendicular to the
+// chord — |cosine| below 1e-12, as a scope's Y and Z are to its X up to rounding —
+// contributes nothing. So the vertices of a ring across the asset's X axis (the same
+// local x, as on the bark tube) get exactly the same s, and evaluating the section once
+// per distinct s gives at()'s bytes. Leaving such a column out moves s by rounding only.
 #pragma once
 
 #include "runtime/instances.h"
@@ -34,15 +42,34 @@ struct BentPoint {
   Mat3 rotation;  // applies to the rigidly transformed normal
 };
 
+// The part of the bend that all points with the same s share.
+struct BendSection {
+  double s = 0;
+  Vec3 onCurve = Vec3::Zero();       // B(s); beyond an end, along the end tangent
+  Vec3 chordPoint = Vec3::Zero();    // chord(s)
+  Mat3 rotation = Mat3::Identity();  // R(s)
+};
+
 class CurveBend {
  public:
   // `unitBoxToWorld`: the instance's rigid placement, column-major (Instance::transform).
   CurveBend(const CurveSegment& curve, const std::array<double, 16>& unitBoxToWorld);
 
-  // The bent image of `local`, a point of the asset's unit box.
+  // The bent image of `local`, a point of the asset's unit box:
+  // place(section(along(local)), M local).
   BentPoint at(const Vec3& local) const;
-  // The same for a point already placed rigidly in the world (M local).
+  // The same for a point already placed rigidly in the world (M local), its s projected
+  // from the world point (equal to at()'s up to rounding).
   BentPoint atRigid(const Vec3& rigid) const;
+
+  // at() in steps, for sharing sections (see above): s of the asset point `local`, the
+  // section at s, and the bent image of `rigid` (M local) given its section.
+  double along(const Vec3& local) const { return along_.dot(local) + alongAt0_; }
+  BendSection section(double s) const;
+  BentPoint place(const BendSection& section, const Vec3& rigid) const {
+    if (length_ == 0) return {rigid, Mat3::Identity()};
+    return {section.onCurve + section.rotation * (rigid - section.chordPoint), section.rotation};
+  }
   // False when the chord has no length and points stay rigid.
   bool bends() const { return length_ > 0; }
 
@@ -52,6 +79,8 @@ class CurveBend {
   Vec3 start_, chord_;      // c0 and c3 - c0
   double length_ = 0;       // |c3 - c0|, 0: no bend
   Mat3 scopeFrame_;         // columns: chord direction, scope side, scope up
+  Vec3 along_ = Vec3::Zero();  // s = along_ . local + alongAt0_
+  double alongAt0_ = 0;
 };
 
 // One-off convenience: the bent world position of the unit-box point `local`.

@@ -8,8 +8,10 @@
 #include "tests/unit/marching/march_graphs.h"
 
 #include <catch2/catch.hpp>
+#include <tbb/task_arena.h>
 
 #include <cmath>
+#include <random>
 
 using namespace fgsg::rt;
 using namespace fgsg::rt::marching;
@@ -95,6 +97,11 @@ TEST_CASE("assembly bends instances with a curve and keeps the others rigid", "[
       Vec3 position = rigid, normal = (cofactor * at(asset.normals, v)).normalized();
       if (inst.curve != UINT32_MAX) {
         const BentPoint b = CurveBend(scene.list.curves[inst.curve], inst.transform).at(local);
+        // The assembler shares a section along each ring; projecting each vertex anew
+        // agrees up to rounding.
+        const BentPoint r = CurveBend(scene.list.curves[inst.curve], inst.transform).atRigid(rigid);
+        CHECK((at(out.positions, i * nv + v) - r.position).norm() < 1e-6);
+        CHECK((at(out.normals, i * nv + v) - (r.rotation * normal).normalized()).norm() < 1e-6);
         position = b.position;
         normal = (b.rotation * normal).normalized();
         largestBend = std::max(largestBend, (b.position - rigid).norm());
@@ -115,4 +122,42 @@ TEST_CASE("assembly refuses an instance whose curve is not in the list", "[assem
                     "instance 2 follows curve 9, but the instance list has 2 curves");
   CHECK_THROWS_WITH(countTriangles(scene.list, scene.library, scene.meshOf),
                     "instance 2 follows curve 9, but the instance list has 2 curves");
+}
+
+TEST_CASE("bent assembly bytes do not depend on the number of threads", "[assemble][bend]") {
+  // Enough bark on enough curves for many blocks, scopes of several radii and rolls, some
+  // instances rigid and one flattened.
+  BentScene scene;
+  const fgsg::test::Graph g = fgsg::test::sphereWalk(5, 40, 1.0);
+  scene.list.curves = smoothSegments(g.nodes, g.segments);
+  scene.list.assets.push_back("bark");
+  std::string error;
+  REQUIRE(resolveAssets(scene.list, scene.library, scene.meshOf, error));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  scene.list.instances.clear();
+  for (uint32_t i = 0; i < 600; ++i) {
+    Instance inst;
+    inst.asset = i % 2;
+    inst.curve = i % 9 == 0 ? UINT32_MAX : uint32_t(i % scene.list.curves.size());
+    inst.transform = scopeOnChord(scene.list.curves[i % scene.list.curves.size()], 0.01 + 0.05 * u(rng));
+    if (i == 17) std::fill_n(inst.transform.begin() + 4, 4, 0.0);  // a flattened Y column
+    inst.color = {float(u(rng)), 0.5f, 0.25f};
+    scene.list.instances.push_back(inst);
+  }
+  const Mesh parallel = assembleInstances(scene.list, scene.library, scene.meshOf);
+  Mesh serial;
+  tbb::task_arena(1).execute([&] { serial = assembleInstances(scene.list, scene.library, scene.meshOf); });
+  CHECK(parallel.positions == serial.positions);
+  CHECK(parallel.normals == serial.normals);
+  CHECK(parallel.colors == serial.colors);
+  CHECK(parallel.texcoords == serial.texcoords);
+  CHECK(parallel.indices == serial.indices);
+  CHECK(countTriangles(scene.list, scene.library, scene.meshOf) == parallel.triangleCount());
+  // Again into the mesh just assembled (its memory reused): the same arrays.
+  Mesh reused = serial;
+  tbb::task_arena(2).execute([&] { assembleInstances(scene.list, scene.library, scene.meshOf, reused); });
+  CHECK(reused.positions == parallel.positions);
+  CHECK(reused.normals == parallel.normals);
+  CHECK(reused.indices == parallel.indices);
 }

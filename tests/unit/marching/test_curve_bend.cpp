@@ -1,6 +1,6 @@
 // Bending terminals along smooth curves (runtime/marching/curve_frame.h, curve_bend.h):
 // the frame, the identity on straight segments, joints without cracks, the chord's
-// points onto the curve, beyond the ends, and flat chords.
+// points onto the curve, beyond the ends, flat chords, and rings sharing a section.
 #include "runtime/marching/curve_bend.h"
 #include "runtime/marching/curve_frame.h"
 #include "runtime/marching/smooth_curves.h"
@@ -183,4 +183,41 @@ TEST_CASE("a curve without a chord leaves its terminal rigid", "[bend]") {
   CHECK(f.point == Vec3(1, 2, 3));
   CHECK(f.up == Vec3(0, 0, 1));
   CHECK(std::abs(f.tangent.dot(f.up)) < 1e-15);
+}
+
+TEST_CASE("the points of a ring across the chord share one section", "[bend]") {
+  const Graph g = fgsg::test::sphereWalk(6, 8, 1.0);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  for (size_t i = 0; i < curves.size(); ++i) {
+    INFO("curve " << i);
+    const CurveSegment& c = curves[i];
+    const Vec3 n0(c.normal0[0], c.normal0[1], c.normal0[2]);
+    const std::array<double, 16> t = scopeOnChord(c, n0, 0.04, 0.07);
+    const CurveBend bend(c, t);
+    for (double x : {-0.25, 0.0, 0.3, 0.7, 1.0, 1.5}) {
+      const std::vector<Vec3> points = ring(x, 9);
+      const double s = bend.along(points[0]);
+      CHECK(s == Approx(x).margin(1e-12));
+      const BendSection shared = bend.section(s);
+      for (const Vec3& p : points) {
+        CHECK(bend.along(p) == s);  // exactly: Y and Z add nothing to s
+        // One section for the ring gives at()'s result exactly, and atRigid's (s projected
+        // from the world point) up to rounding.
+        const BentPoint b = bend.place(shared, rigid(t, p));
+        const BentPoint a = bend.at(p), r = bend.atRigid(rigid(t, p));
+        CHECK(b.position == a.position);
+        CHECK(b.rotation == a.rotation);
+        CHECK((b.position - r.position).norm() < 1e-12);
+        CHECK((b.rotation - r.rotation).norm() < 1e-12);
+      }
+    }
+    // A scope sheared along its chord: its Y column does add to s, and at() agrees with
+    // atRigid as before.
+    std::array<double, 16> sheared = t;
+    for (int k = 0; k < 3; ++k) sheared[4 + k] += 0.3 * sheared[k];
+    const CurveBend shearedBend(c, sheared);
+    const Vec3 p(0.5, 1.0, 0.5), q(0.5, 0.0, 0.5);
+    CHECK(shearedBend.along(p) - shearedBend.along(q) == Approx(0.3));
+    CHECK((shearedBend.at(p).position - shearedBend.atRigid(rigid(sheared, p)).position).norm() < 1e-12);
+  }
 }

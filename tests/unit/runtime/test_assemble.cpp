@@ -173,6 +173,47 @@ TEST_CASE("assembly bytes do not depend on the number of threads", "[assemble]")
   CHECK(countTriangles(s.list, s.library, s.meshOf) == parallel.triangleCount());
 }
 
+TEST_CASE("assembling into a reused mesh gives a fresh assembly's arrays", "[assemble]") {
+  Scene s;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const char* assets[] = {"sphere", "cube", "bark", "quad"};
+  for (int i = 0; i < 400; ++i) {
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t(r, c) = 5 * u(rng);
+    if (i % 5 == 0) t.col(1).head<3>().setZero();  // some flattened instances
+    s.add(assets[i % 4], toArray(t), {0.5f, float(u(rng) * 0.5 + 0.5), 0.25f});
+  }
+  const Mesh fresh = s.assemble();
+  REQUIRE(fresh.hasTexcoords());  // bark has texture coordinates, the cube does not
+  // A mesh holding more than the assembly will, in every array, and one with none.
+  Mesh larger;
+  for (int i = 0; i < 3; ++i) assembleInstances(s.list, s.library, s.meshOf, larger);  // warm, and warm again
+  larger.positions.insert(larger.positions.end(), 999, 7.0f);
+  larger.normals.insert(larger.normals.end(), 999, 7.0f);
+  larger.colors.insert(larger.colors.end(), 999, 7.0f);
+  larger.texcoords.insert(larger.texcoords.end(), 999, 7.0f);
+  larger.indices.insert(larger.indices.end(), 999, 7u);
+  Scene rigidOnly;  // no texture coordinates at all: a reused mesh's must go
+  rigidOnly.add("cube", scaleTranslate({1, 2, 3}, {0, 0, 0}));
+  Mesh withoutTexcoords = larger;
+  rigidOnly.assemble();
+  assembleInstances(rigidOnly.list, rigidOnly.library, rigidOnly.meshOf, withoutTexcoords);
+  CHECK(withoutTexcoords.texcoords.empty());
+  CHECK(withoutTexcoords.positions == rigidOnly.assemble().positions);
+  for (Mesh* reused : {&larger, &withoutTexcoords}) {
+    const float* memory = reused->positions.data();
+    assembleInstances(s.list, s.library, s.meshOf, *reused);
+    if (reused == &larger) CHECK(reused->positions.data() == memory);  // room enough: no new memory
+    CHECK(reused->positions == fresh.positions);
+    CHECK(reused->normals == fresh.normals);
+    CHECK(reused->colors == fresh.colors);
+    CHECK(reused->texcoords == fresh.texcoords);
+    CHECK(reused->indices == fresh.indices);
+  }
+}
+
 TEST_CASE("an unknown asset fails resolution with the library's message", "[assemble]") {
   Scene s;
   s.add("no_such_asset.obj", scaleTranslate({1, 1, 1}, {0, 0, 0}));
