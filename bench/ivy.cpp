@@ -3,11 +3,14 @@
 //    geometry image, without the cache (anchor: 0.54 to 1 s on the paper's machine);
 //  * ivy: examples/ivy.fgsg from 1 to 64 seeds (--max-seeds 256 on a machine with 16 GB
 //    free: each seed adds about 0.2 M polygons) on the same mesh — the derivation
-//    (marching included) and the assembly of the smooth terminals (bent bark, leaves)
-//    into one mesh, cold (into fresh memory) and warm (into the previous mesh's:
-//    assemble_warm_s, rigid_assemble_warm_s), with the terminal polygons per second
-//    (anchor: 4.48 M polygons in 136 ms, about 33 M/s, on a GTX 480). Polygons are the
-//    bark's quads and the leaves' quads, as the paper counts them: triangles / 2.
+//    (marching included, the seeds' plants on every core; derive_s leaves out the
+//    surface's loading and layout, surface_s) and the assembly of the smooth terminals
+//    (bent bark, leaves) into one mesh, cold (into fresh memory) and warm (into the
+//    previous mesh's: assemble_warm_s, rigid_assemble_warm_s), with the terminal polygons
+//    per second of derive_s + assemble_s (polygons_per_s) and of derive_s +
+//    assemble_warm_s (warm_polygons_per_s) (anchor: 4.48 M polygons in 136 ms, about
+//    33 M/s, on a GTX 480). Polygons are the bark's quads and the leaves' quads, as the
+//    paper counts them: triangles / 2.
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--mesh tests/data/meshes/refined_elephant.off]
 // (--seeds N: that seed count only, without the atlas line.)
@@ -72,7 +75,7 @@ void ivy(const std::string& mesh, int seeds, int reps) {
     for (double& c : s.point) c = coordinate(random);
     opt.seeds.push_back(s);
   }
-  double bestDerive = 1e30, bestAssemble = 1e30, bestRigid = 1e30, bestAssembleWarm = 1e30, bestRigidWarm = 1e30;
+  double bestDerive = 1e30, bestSurface = 1e30, bestAssemble = 1e30, bestRigid = 1e30, bestAssembleWarm = 1e30, bestRigidWarm = 1e30;
   size_t triangles = 0, instances = 0;
   for (int i = 0; i < reps; ++i) {
     rt::AssetLibrary assets;
@@ -109,16 +112,21 @@ void ivy(const std::string& mesh, int seeds, int reps) {
     }
     assemble(out, bestRigidWarm);
     if (out.triangleCount() != bentTriangles) std::exit(1);
-    bestDerive = std::min(bestDerive, r.stats.deriveSeconds);
+    // The paper times generation on a prepared geometry image (Table 2; the preparation
+    // is Table 1): the surface's loading and layout are reported apart.
+    bestDerive = std::min(bestDerive, r.stats.deriveSeconds - r.stats.surfaceSeconds);
+    bestSurface = std::min(bestSurface, r.stats.surfaceSeconds);
     triangles = bentTriangles;
     instances = r.instances.instances.size();
   }
-  const double polygons = triangles / 2.0, seconds = bestDerive + bestAssemble;
-  std::printf("{\"bench\":\"ivy\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"derive_s\":%.4f,"
-              "\"assemble_s\":%.4f,\"rigid_assemble_s\":%.4f,\"assemble_warm_s\":%.4f,\"rigid_assemble_warm_s\":%.4f,"
-              "\"seconds\":%.4f,\"polygons_per_s\":%.0f}\n",
-              seeds, instances, triangles, bestDerive, bestAssemble, bestRigid, bestAssembleWarm, bestRigidWarm,
-              seconds, polygons / seconds);
+  const double polygons = triangles / 2.0, seconds = bestDerive + bestAssemble,
+               warmSeconds = bestDerive + bestAssembleWarm;
+  std::printf("{\"bench\":\"ivy\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"surface_s\":%.4f,"
+              "\"derive_s\":%.4f,\"assemble_s\":%.4f,\"rigid_assemble_s\":%.4f,\"assemble_warm_s\":%.4f,"
+              "\"rigid_assemble_warm_s\":%.4f,\"seconds\":%.4f,\"polygons_per_s\":%.0f,\"warm_seconds\":%.4f,"
+              "\"warm_polygons_per_s\":%.0f}\n",
+              seeds, instances, triangles, bestSurface, bestDerive, bestAssemble, bestRigid, bestAssembleWarm,
+              bestRigidWarm, seconds, polygons / seconds, warmSeconds, polygons / warmSeconds);
   std::fflush(stdout);
 }
 

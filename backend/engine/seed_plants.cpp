@@ -91,6 +91,12 @@ Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, 
 // what the earlier ones left (its instances placed beyond are cut), and a plant a limit
 // ended is the last one kept.
 void Derivation::mergePlants(std::vector<Plant>& plants) {
+  size_t instances = 0, params = 0, curves = 0;
+  for (const Plant& p : plants)
+    instances += p.out.instances.size(), params += p.out.params.size(), curves += p.out.curves.size();
+  out_.instances.reserve(out_.instances.size() + instances + 1);  // and the surface
+  out_.params.reserve(out_.params.size() + params);
+  out_.curves.reserve(out_.curves.size() + curves);
   for (Plant& p : plants) {
     if (p.error) throw *p.error;
     if (p.outOfMemory) throw std::bad_alloc();
