@@ -7,6 +7,7 @@
 // checks ok() at the end (and may check it earlier to stop early).
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -30,7 +31,10 @@ class ByteSink {
     if (size_t(end_ - cur_) < n) flushBuffer();
     return cur_;
   }
-  void advance(char* newEnd) { cur_ = newEnd; }
+  void advance(char* newEnd) {
+    assert(newEnd >= cur_ && newEnd <= end_);  // more than room() gave overran the buffer
+    cur_ = newEnd;
+  }
   size_t bufferSize() const { return size_t(end_ - buf_.get()); }
 
   // Appends bytes: small runs are copied into the buffer, large ones go to the

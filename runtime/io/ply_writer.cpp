@@ -42,8 +42,9 @@ void writePly(const Mesh& mesh, ByteSink& out) {
     }
     out.advance(p);
   }
-  for (size_t first = 0; first < mesh.triangleCount(); first += batch) {
-    const size_t n = std::min(batch, mesh.triangleCount() - first);
+  const size_t faceBatch = std::min<size_t>(4096, out.bufferSize() / 13);
+  for (size_t first = 0; first < mesh.triangleCount(); first += faceBatch) {
+    const size_t n = std::min(faceBatch, mesh.triangleCount() - first);
     char* p = out.room(n * 13);
     for (size_t t = first; t < first + n; ++t) {
       *p++ = 3;

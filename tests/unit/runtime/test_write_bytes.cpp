@@ -319,6 +319,13 @@ void requireOracleBytes(const Mesh& m, const std::string& what) {
     const std::string want = oracleBytes(m, ext);
     INFO(firstDifference(bytes, want));
     CHECK(bytes == want);
+    // The smallest staging buffer: every batch and chunk size adapts to it.
+    std::string small;
+    {
+      io::StringSink sink(small, 4096);
+      REQUIRE(io::encodeMesh(m, ext, sink, error));
+    }
+    CHECK(small == want);
   }
 }
 
