@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <new>
 #include <csignal>
 #include <fcntl.h>
 #include <pthread.h>
@@ -20,24 +22,6 @@ namespace {
 
 std::string describe(const std::string& what, const std::string& path, int err) {
   return "cannot " + what + " '" + path + "': " + std::strerror(err);
-}
-
-bool writeAll(int fd, std::string_view bytes) {
-  size_t done = 0;
-  while (done < bytes.size()) {
-    // At most 1 GiB a call: Linux writes no more than about 2 GiB at once anyway.
-    const ssize_t n = ::write(fd, bytes.data() + done, std::min<size_t>(bytes.size() - done, 1u << 30));
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    if (n == 0) {  // no progress and no error: say so rather than loop
-      errno = EIO;
-      return false;
-    }
-    done += size_t(n);
-  }
-  return true;
 }
 
 }  // namespace
@@ -64,6 +48,35 @@ int createUniqueFile(const std::string& prefix, std::string& name) {
 OutputTransaction::~OutputTransaction() { abandon(); }
 
 bool OutputTransaction::stage(const std::string& path, std::string_view bytes, std::string& error) {
+  return stageWith(
+      path, [&](int fd, std::string&) { return writeAllToFd(fd, bytes.data(), bytes.size()); }, error);
+}
+
+bool OutputTransaction::stage(const std::string& path, const Producer& produce, std::string& error) {
+  return stageWith(
+      path,
+      [&](int fd, std::string& fillError) {
+        std::unique_ptr<FdSink> sink;
+        try {
+          sink = std::make_unique<FdSink>(fd);
+        } catch (const std::bad_alloc&) {  // its buffer
+          fillError = "out of memory";
+          return false;
+        }
+        if (!produce(*sink, fillError)) {
+          if (fillError.empty()) fillError = "the encoder failed";
+          return false;
+        }
+        if (sink->flush()) return true;
+        errno = sink->error();
+        return false;
+      },
+      error);
+}
+
+bool OutputTransaction::stageWith(const std::string& path,
+                                  const std::function<bool(int fd, std::string& fillError)>& fill,
+                                  std::string& error) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
     error = describe("replace", path, EISDIR);
@@ -93,10 +106,22 @@ bool OutputTransaction::stage(const std::string& path, std::string_view bytes, s
     error = describe(what, path, err);
     return false;
   };
-  if (!writeAll(fd, bytes)) {
+  std::string fillError;
+  bool filled = false;
+  try {
+    filled = fill(fd, fillError);
+  } catch (...) {  // e.g. out of memory while encoding: no temporary stays behind
+    ::close(fd);
+    fail("write", 0);
+    throw;
+  }
+  if (!filled) {
     const int err = errno;
     ::close(fd);
-    return fail("write", err);
+    if (fillError.empty()) return fail("write", err);
+    fail("write", 0);
+    error = "cannot write '" + path + "': " + fillError;
+    return false;
   }
   if (::fsync(fd) != 0) {
     const int err = errno;

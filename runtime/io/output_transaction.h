@@ -7,6 +7,9 @@
 // SIGTERM or SIGHUP (runtime/io/temp_cleanup.h).
 #pragma once
 
+#include "runtime/io/byte_sink.h"
+
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +27,13 @@ class OutputTransaction {
   // `error` when it cannot (no such folder, no permission, disk full, `ulimit -f`, ...).
   bool stage(const std::string& path, std::string_view bytes, std::string& error);
 
+  // Streams the temporary's bytes: `produce` puts them into the sink (which writes the
+  // file in large blocks as it goes). When `produce` fails, `error` is "cannot write
+  // 'PATH': " and its message; when a write fails, the system's reason. Either way the
+  // temporary is removed.
+  using Producer = std::function<bool(ByteSink& out, std::string& error)>;
+  bool stage(const std::string& path, const Producer& produce, std::string& error);
+
   // Renames every staged temporary over its target, in staging order. Each target was
   // checked when staged (its folder is writable, it is not a folder), so a rename fails
   // only if the file system changes meanwhile; then the outputs not yet renamed keep
@@ -39,6 +49,11 @@ class OutputTransaction {
     int cleanupSlot = -1;
   };
   std::vector<Staged> staged_;
+
+  // Creates the temporary, runs `fill` on its descriptor (false: `fillError` set, or
+  // errno when that is empty), fsyncs and closes it, and records it for commit.
+  bool stageWith(const std::string& path, const std::function<bool(int fd, std::string& fillError)>& fill,
+                 std::string& error);
 };
 
 // Creates a new file named `prefix` + random characters (O_CREAT|O_EXCL|O_NOFOLLOW|

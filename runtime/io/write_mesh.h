@@ -19,12 +19,17 @@ const std::vector<std::string>& supportedMeshExtensions();
 
 // Encodes the mesh in the format named by `extension` (".glb", ".obj", ".ply"; any case)
 // into `bytes`. False and a message in `error` for an unknown extension, a vertex that
-// is not finite (files store 32-bit floats), or running out of memory; the encoders'
-// output is checked (stream state, sizes against the header), never cut short.
+// is not finite (files store 32-bit floats), a GLB past 4 GiB, or running out of memory.
+// The same bytes writeMesh writes (tests compare them; the writers stream).
 bool encodeMesh(const Mesh& mesh, const std::string& extension, std::string& bytes,
                 std::string& error);
 
-// Encodes by the extension of `path` and stages it in `outputs` (written on commit).
+// The same, streamed into `out` (false too when a write to it failed).
+bool encodeMesh(const Mesh& mesh, const std::string& extension, ByteSink& out, std::string& error);
+
+// Encodes by the extension of `path` straight into a temporary staged in `outputs`
+// (renamed over `path` on commit): the format and the vertices are checked before the
+// temporary is created, and a failed write removes it.
 bool stageMesh(const Mesh& mesh, const std::string& path, OutputTransaction& outputs, std::string& error);
 
 // Encodes by the extension of `path` and replaces the file atomically. An empty mesh
