@@ -130,6 +130,11 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (n > 0) expect(*item.args[0], w, ValueType::Num, "the length of 'LineSeg'");
       break;
     case CommandId::Evolve:
+      stringArg(0, "tile file");
+      expect(*item.args[1], w, ValueType::Num, "the generation of 'Evolve'");
+      if (n > 2) expect(*item.args[2], w, ValueType::Num, "the rule size k of 'Evolve'");
+      if (n > 3) expect(*item.args[3], w, ValueType::Bool, "the p4 flag of 'Evolve'");
+      break;
     case CommandId::Cells:
       for (const auto& a : item.args) typeOf(*a, w, true);
       break;

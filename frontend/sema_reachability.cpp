@@ -51,11 +51,12 @@ void Analyzer::checkReachability() {
       work.push_back(static_cast<size_t>(s));
     }
   };
-  bool synthesizes = false;  // pieces of a synthesized model may be any symbol
+  bool synthesizes = false;  // pieces of a synthesized model (or Evolve's cells) may be any symbol
   std::function<void(const Item&)> visit = [&](const Item& item) {
     if (item.kind == ItemKind::Bracket)
       for (const auto& c : item.children) visit(c);
-    if (item.kind == ItemKind::Call && item.name == "Synthesize" && !isShapeItem(item, res_))
+    if (item.kind == ItemKind::Call && (item.name == "Synthesize" || item.name == "Evolve") &&
+        !isShapeItem(item, res_))
       synthesizes = true;
     if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(item.name);
     for (const auto& b : item.body)

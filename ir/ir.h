@@ -104,6 +104,7 @@ enum class OpKind : uint8_t {
   Marching,      // args length, angle; bodies: Top, Extruded, then the condition block (Buron et al. §5)
   MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
   Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
+  Evolve,        // str = tile file; args generation, then optional k (rule size) and p4 (Bool): Chan & Hui's GA pattern fills the scope
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

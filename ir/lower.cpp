@@ -303,6 +303,11 @@ class Lowerer {
         break;
       }
       case CommandId::Branch: op.kind = OpKind::Branch; allArgs(0); break;
+      case CommandId::Evolve:
+        op.kind = OpKind::Evolve;
+        op.str = m_.internString(constString(*item.args[0]));
+        allArgs(1);
+        break;
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));

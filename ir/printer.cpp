@@ -316,6 +316,7 @@ class Printer {
       case OpKind::Line: text = withArgs("line"); break;
       case OpKind::LineSeg: text = withArgs("lineseg"); break;
       case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
+      case OpKind::Evolve: text = withArgs("evolve " + stringLit(op.str)); break;
       case OpKind::Marching: text = withArgs("marching"); break;
       case OpKind::MarchCondition: text = withArgs("march-condition"); break;
       case OpKind::Branch: text = withArgs("branch"); break;

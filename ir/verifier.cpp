@@ -32,6 +32,7 @@ const char* opName(OpKind k) {
     case OpKind::Line: return "line";
     case OpKind::LineSeg: return "lineseg";
     case OpKind::Synthesize: return "synthesize";
+    case OpKind::Evolve: return "evolve";
     case OpKind::Center: return "center";
     case OpKind::Marching: return "marching";
     case OpKind::MarchCondition: return "march-condition";
@@ -455,6 +456,18 @@ class Verifier {
         stringId(op.str);
         expectBodies(op, 0);
         numArgs(op, r, 3);
+        break;
+      case OpKind::Evolve:
+        stringId(op.str);
+        expectBodies(op, 0);
+        if (op.args.empty() || op.args.size() > 3) {
+          problem(std::to_string(op.args.size()) + " arguments, expected 1 to 3 (generation, k, p4)");
+        } else {
+          for (size_t k = 0; k < op.args.size(); ++k) {
+            expectType(op.args[k], k == 2 ? Type::Bool : Type::Num, k == 2 ? "p4 flag" : "number");
+            expr(op.args[k], r);
+          }
+        }
         break;
       case OpKind::Marching:
         // Top, Extruded, and the condition block: one MarchCondition op.

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "backend/commands/cga_commands.h"
+#include "backend/commands/evolve_command.h"
 #include "backend/commands/collision_commands.h"
 #include "backend/commands/marching_commands.h"
 #include "backend/commands/scope_commands.h"
@@ -287,6 +288,7 @@ class Derivation final : public QueryHost {
   CollisionCommands collide_;
   SynthesisCommand synthesis_;
   MarchingCommands marching_;
+  EvolveCommand evolve_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
 

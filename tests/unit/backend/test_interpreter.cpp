@@ -309,7 +309,7 @@ TEST_CASE("A grammar's own depth bound ends it quietly, a smaller --max-depth st
 }
 
 TEST_CASE("Constructs whose runtime comes later fail clearly when run", "[errors]") {
-  auto r = deriveText("Axiom ~> Evolve(10){ Top };\nTop ~> I(\"cube\");");
+  auto r = deriveText("Axiom ~> Cells(10){ Top };\nTop ~> I(\"cube\");");
   CHECK_FALSE(r.ok);
   REQUIRE(r.messages.size() == 1);
   CHECK(r.messages[0].code == "R001");

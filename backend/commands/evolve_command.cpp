@@ -1,0 +1,129 @@
+#include "backend/commands/evolve_command.h"
+
+#include "backend/engine/derivation.h"
+#include "runtime/evolve/genetic.h"
+#include "runtime/evolve/lsystem2d.h"
+#include "runtime/evolve/ornament.h"
+#include "runtime/io/find_file.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fgsg::backend {
+namespace {
+
+// Patterns beyond this many cells a side are a grammar's mistake, not an ornament.
+constexpr int kMaxSide = 4096;
+
+// A whole number in [lo, hi] from an argument, or R025 naming it.
+int wholeArg(double v, int lo, int hi, const char* what, ir::Loc at) {
+  if (!(v >= lo && v <= hi && v == std::floor(v)))
+    throw DeriveError{at, "R025", std::string("Evolve: ") + what + " must be a whole number from " +
+                                      std::to_string(lo) + " to " + std::to_string(hi)};
+  return static_cast<int>(v);
+}
+
+// The cell's scope turned `turns` quarter turns counter-clockwise about its centre: the
+// box still covers the cell (its X and Y sizes swap on odd turns).
+rt::Scope turned(const rt::Scope& cell, int turns) {
+  rt::Scope s = cell;
+  const rt::Vec3 X = cell.axes.col(0), Y = cell.axes.col(1);
+  const double w = cell.S.x(), h = cell.S.y();
+  switch (turns & 3) {
+    case 1: s.axes.col(0) = Y, s.axes.col(1) = -X, s.P = cell.P + w * X, s.S.x() = h, s.S.y() = w; break;
+    case 2: s.axes.col(0) = -X, s.axes.col(1) = -Y, s.P = cell.P + w * X + h * Y; break;
+    case 3: s.axes.col(0) = -Y, s.axes.col(1) = X, s.P = cell.P + h * Y, s.S.x() = h, s.S.y() = w; break;
+    default: break;
+  }
+  return s;
+}
+
+}  // namespace
+
+void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame&) {
+  const ir::Module& m = d_.module();
+  const std::string& file = m.strings[op.str];
+  const rt::evolve::TileSet& tiles = loadTiles(file, op.loc);
+  rt::evolve::EvolveOptions o;
+  o.generation = wholeArg(a[0], 0, 12, "the generation", op.loc);
+  if (n > 1) o.ruleSide = wholeArg(a[1], 1, 16, "the rule size k", op.loc);
+  o.p4 = n > 2 && a[2] != 0.0;
+  o.seed = rt::childKey(ex.key, 0x4000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
+  o.deadline = &d_.deadline();
+  const double side = std::pow(double(o.ruleSide), o.generation) * o.axiomSide;
+  if (side > kMaxSide)
+    throw DeriveError{op.loc, "R025", "Evolve: a pattern of k^generation = " + std::to_string(int64_t(side)) +
+                                          " cells a side is past the " + std::to_string(kMaxSide) + " allowed"};
+  rt::evolve::AlleleGrid grid;
+  try {
+    rt::evolve::checkOptions(o);
+    const rt::evolve::EvolveResult result = rt::evolve::evolve(tiles, o);
+    grid = rt::evolve::expand(result.best, o.generation);
+  } catch (const std::invalid_argument& e) {
+    throw DeriveError{op.loc, "R025", std::string("Evolve: ") + e.what()};
+  }
+
+  // Row 0 is the pattern's top row: it lies at the scope's largest Y.
+  const int cells = grid.side;
+  const rt::Scope& s = st.scope;
+  const double w = s.S.x() / cells, h = s.S.y() / cells;
+  for (int r = 0; r < cells; ++r)
+    for (int c = 0; c < cells; ++c) {
+      const rt::evolve::Allele allele = grid.at(r, c);
+      rt::Scope cell = s;
+      cell.P = s.P + s.axes.col(0) * (c * w) + s.axes.col(1) * ((cells - 1 - r) * h);
+      cell.S = rt::Vec3(w, h, w);  // tile units are the cell's width, up too
+      const rt::evolve::Tile& tile = tiles.tiles[allele.symbol];
+      const int sym = m.findSymbol(tiles.loci[tile.locus].name);
+      if (sym >= 0 && !m.symbols[sym].rules.empty() && m.symbols[sym].slotCount == 0) {
+        State piece;
+        piece.scope = turned(cell, allele.turns);
+        piece.stackBase = d_.scopeStackSize();
+        ir::Op emitOp;
+        emitOp.kind = ir::OpKind::Emit;
+        emitOp.index = static_cast<uint32_t>(sym);
+        emitOp.loc = op.loc;
+        const double noSlots = 0;
+        d_.emit(emitOp, &noSlots, piece, ex);
+        continue;
+      }
+      const Ornament& orn = ornament(file, tiles, allele);
+      rt::Scope box = cell;
+      box.P = cell.P + cell.axes * orn.lo.cwiseProduct(cell.S);
+      box.S = orn.extent.cwiseProduct(cell.S);
+      d_.placeInstance(orn.asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+    }
+}
+
+const rt::evolve::TileSet& EvolveCommand::loadTiles(const std::string& name, ir::Loc at) {
+  auto it = tiles_.find(name);
+  if (it != tiles_.end()) return it->second;
+  try {
+    return tiles_.emplace(name, rt::evolve::readTileFile(rt::io::findFile(name, d_.options().assetDirs)))
+        .first->second;
+  } catch (const rt::evolve::TileFileError& e) {
+    throw DeriveError{at, "R025", std::string("Evolve: ") + e.what()};
+  }
+}
+
+// Built once per allele and registered like a swept line: normalised into the unit box,
+// with the box it came from.
+const EvolveCommand::Ornament& EvolveCommand::ornament(const std::string& file, const rt::evolve::TileSet& tiles,
+                                                       rt::evolve::Allele allele) {
+  const auto key = std::make_pair(file, allele.index());
+  auto it = ornaments_.find(key);
+  if (it != ornaments_.end()) return it->second;
+  const rt::Mesh mesh = rt::evolve::tileOrnament(tiles, allele);
+  const std::string name = "<ornament " + file + " " + tiles.tiles[allele.symbol].letter +
+                           std::to_string(90 * allele.turns) + ">";
+  std::array<double, 16> placed{};
+  d_.assets().addGenerated(name, mesh, placed);
+  Ornament o;
+  for (int k = 0; k < 3; ++k) o.extent[k] = placed[5 * k], o.lo[k] = placed[12 + k];
+  rt::InstanceList& out = d_.output();
+  o.asset = static_cast<uint32_t>(out.assets.size());
+  out.assets.push_back(name);
+  return ornaments_.emplace(key, o).first->second;
+}
+
+}  // namespace fgsg::backend

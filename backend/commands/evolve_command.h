@@ -1,0 +1,45 @@
+// Evolve("tiles.json", generation, k, p4): Chan & Hui's surface patterns (runtime/evolve/)
+// on a scope. A genetic algorithm finds a 2D L-system over the file's tiles (rules k x k,
+// default 3; the §6.1 p4 constraint when p4 is true), and its pattern at `generation`
+// (k^generation cells a side) fills the scope's XY face. A cell whose locus is named
+// after a symbol with rules and no parameters becomes a shape of that symbol, its scope
+// the cell turned by the allele's orientation; any other cell gets its tile's ornament
+// (the cross-section blended along the locus, runtime/evolve/ornament.h). The GA's seed
+// comes from the shape's random stream; tile files are loaded once per derivation.
+#pragma once
+
+#include "backend/commands/command_family.h"
+#include "runtime/evolve/tiles.h"
+#include "runtime/scope.h"
+
+#include <map>
+#include <string>
+#include <utility>
+
+namespace fgsg::backend {
+
+class Derivation;
+
+class EvolveCommand final : public CommandFamily {
+ public:
+  explicit EvolveCommand(Derivation& derivation) : d_(derivation) {}
+
+  std::vector<ir::OpKind> kinds() const override { return {ir::OpKind::Evolve}; }
+  void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) override;
+
+ private:
+  const rt::evolve::TileSet& loadTiles(const std::string& name, ir::Loc at);
+  // The ornament of `allele` as a generated asset (its index in the output's asset
+  // table) and where its bounding box sits in the unit tile.
+  struct Ornament {
+    uint32_t asset = 0;
+    rt::Vec3 lo = rt::Vec3::Zero(), extent = rt::Vec3::Zero();
+  };
+  const Ornament& ornament(const std::string& file, const rt::evolve::TileSet& tiles, rt::evolve::Allele allele);
+
+  Derivation& d_;
+  std::map<std::string, rt::evolve::TileSet> tiles_;
+  std::map<std::pair<std::string, int>, Ornament> ornaments_;
+};
+
+}  // namespace fgsg::backend
