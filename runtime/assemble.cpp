@@ -242,7 +242,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   // slot of its own; prefix sums over what survived give every instance its output range,
   // so pass 2 copies in parallel yet the bytes depend neither on the scheduling nor on
   // the blocks. A block is a millisecond or so of work, so a deadline is noticed in time.
-  constexpr size_t kBlockTriangles = 4096;
+  constexpr size_t kBlockTriangles = 32768;
   checkCurves(list);
   const size_t n = list.instances.size();
   // Emptied, not freed: reserve below keeps a reused mesh's memory (already faulted in).
