@@ -6,6 +6,7 @@
 // 2 M-triangle mesh loads in under 2 s.
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_mesh_load [--quick] [--side N]
+#include "bench/bench_clock.h"
 #include "runtime/io/read_mesh_file.h"
 #include "runtime/surface/load_surface.h"
 
@@ -22,16 +23,8 @@ namespace {
 
 using namespace fgsg;
 
-double secondsSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// Processor time of this process: on a shared machine the wall clock also counts waiting.
-double cpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
+using bench::cpuSeconds;
+using bench::secondsSince;
 
 // The grid as text OFF: vertices row by row, two counter-clockwise triangles per cell.
 void writeGridOff(const std::string& path, int side) {

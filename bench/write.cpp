@@ -8,6 +8,7 @@
 // encoder alone (into a sink that keeps nothing) is timed too.
 // Prints one JSON object per line; the best of several repetitions is reported.
 //   build/bin/bench_write [--quick] [--side N] [--dir FOLDER]
+#include "bench/bench_clock.h"
 #include "runtime/io/write_mesh.h"
 
 #include <algorithm>
@@ -28,16 +29,8 @@ namespace {
 
 using namespace fgsg;
 
-double secondsSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// Processor time of this process: on a shared machine the wall clock also counts waiting.
-double cpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
+using bench::cpuSeconds;
+using bench::secondsSince;
 
 // A gently curved height field: vertices row by row, two triangles per cell; the values
 // look like an assembled model's (not round numbers, not random bit patterns).

@@ -76,15 +76,7 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
       const rt::evolve::Tile& tile = tiles.tiles[allele.symbol];
       const int sym = m.findSymbol(tiles.loci[tile.locus].name);
       if (sym >= 0 && !m.symbols[sym].rules.empty() && m.symbols[sym].slotCount == 0) {
-        State piece;
-        piece.scope = turned(cell, allele.turns);
-        piece.stackBase = d_.scopeStackSize();
-        ir::Op emitOp;
-        emitOp.kind = ir::OpKind::Emit;
-        emitOp.index = static_cast<uint32_t>(sym);
-        emitOp.loc = op.loc;
-        const double noSlots = 0;
-        d_.emit(emitOp, &noSlots, piece, ex);
+        d_.emitShape(static_cast<uint32_t>(sym), turned(cell, allele.turns), ex, op.loc);
         continue;
       }
       const Ornament& orn = ornament(file, tiles, allele);

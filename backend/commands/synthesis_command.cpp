@@ -46,15 +46,7 @@ void SynthesisCommand::apply(const ir::Op& op, const double* a, uint32_t, State&
       cell.axes.col(k) = cell.S[k] > 0 ? rt::Vec3(world.block<3, 1>(0, k) / cell.S[k]) : st.scope.axes.col(k);
     }
     if (sym >= 0 && !m.symbols[sym].rules.empty() && m.symbols[sym].slotCount == 0) {
-      State piece;
-      piece.scope = cell;
-      piece.stackBase = d_.scopeStackSize();
-      ir::Op emitOp;
-      emitOp.kind = ir::OpKind::Emit;
-      emitOp.index = static_cast<uint32_t>(sym);
-      emitOp.loc = op.loc;
-      const double noSlots = 0;
-      d_.emit(emitOp, &noSlots, piece, ex);
+      d_.emitShape(static_cast<uint32_t>(sym), cell, ex, op.loc);
     } else if (!place.asset.empty()) {
       d_.placeInstance(pieceAsset(place.asset, op.loc), cell, d_.placingSymbol(ex), nullptr, 0, op.loc);
       d_.output().instances.back().color = place.color;

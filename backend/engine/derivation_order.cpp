@@ -279,6 +279,18 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   shape.scope = st.scope;
 }
 
+void Derivation::emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at) {
+  State piece;
+  piece.scope = scope;
+  piece.stackBase = stack_.size();
+  ir::Op op;
+  op.kind = ir::OpKind::Emit;
+  op.index = symbol;
+  op.loc = at;
+  const double noSlots = 0;
+  emit(op, &noSlots, piece, ex);
+}
+
 // The parameter slots of the shape an Emit op writes (a vector takes three).
 const double* Derivation::evalSlots(const ir::Op& op, const Frame& f, ArgBuffer& buf) {
   double* slots = buf.reserve(m_.symbols[op.index].slotCount);
