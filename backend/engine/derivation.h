@@ -183,6 +183,7 @@ class Derivation final : public QueryHost {
   void depthLimit(const ir::Symbol& sym, uint32_t creator);
   std::pair<std::string, ir::Loc> runaway(ir::Loc axiomAt) const;
   [[noreturn]] void shapeLimit(const ir::Op& op);
+  LimitReached shapeLimitReached(ir::Loc axiomAt) const;
   std::optional<LimitReached> limitsReached();
   void pollLimits();
   void checkTime();

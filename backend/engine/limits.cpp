@@ -34,12 +34,14 @@ std::pair<std::string, ir::Loc> Derivation::runaway(ir::Loc axiomAt) const {
           m_.rules[worst].loc};
 }
 
-void Derivation::shapeLimit(const ir::Op& op) {
-  const auto [who, loc] = runaway(op.loc);
-  throw LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) +
-                         " shapes (--max-shapes): " + who +
-                         " ran away; the shapes derived so far are kept",
-                     loc};
+void Derivation::shapeLimit(const ir::Op& op) { throw shapeLimitReached(op.loc); }
+
+// --max-shapes reached, named after the runaway rule (`axiomAt` when none was applied).
+LimitReached Derivation::shapeLimitReached(ir::Loc axiomAt) const {
+  const auto [who, loc] = runaway(axiomAt);
+  return {"derivation stopped at " + std::to_string(opt_.maxShapes) + " shapes (--max-shapes): " + who +
+              " ran away; the shapes derived so far are kept",
+          loc};
 }
 
 LimitReached Derivation::timeLimit() const {

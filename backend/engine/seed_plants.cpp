@@ -112,10 +112,7 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
       keep = static_cast<size_t>(std::upper_bound(p.shapesAtInstance.begin(), p.shapesAtInstance.end(), left) -
                                  p.shapesAtInstance.begin());
       p.stats.shapesCreated = left;
-      const auto [who, loc] = runaway(ir::Loc{});
-      limit = LimitReached{"derivation stopped at " + std::to_string(opt_.maxShapes) + " shapes (--max-shapes): " +
-                               who + " ran away; the shapes derived so far are kept",
-                           loc};
+      limit = shapeLimitReached(ir::Loc{});
     }
 
     const size_t paramBase = out_.params.size(), curveBase = out_.curves.size();
