@@ -9,6 +9,7 @@
 #include "ir/printer.h"
 #include "runtime/io/atomic_file.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/out_of_resources.h"
 
 #include <editline/readline.h>
 #include <unistd.h>
@@ -119,6 +120,10 @@ class Repl {
     } catch (const std::bad_alloc&) {
       std::cerr << "error: out of memory; the session and its grammar are kept\n";
     } catch (const std::exception& e) {
+      if (const std::string why = rt::outOfResources(e); !why.empty()) {
+        std::cerr << "error: out of memory (" << why << "); the session and its grammar are kept\n";
+        return false;
+      }
       std::cerr << "error: internal error: " << e.what() << " (please report it; the session is kept)\n";
     }
     return false;

@@ -1,5 +1,6 @@
 // fgsg: the command-line front door. Each subcommand lives in cmd_<name>.cpp.
 #include "cli/commands.h"
+#include "runtime/out_of_resources.h"
 
 #include <cstring>
 #include <exception>
@@ -85,6 +86,10 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
   } catch (const std::exception& e) {
+    if (const std::string why = fgsg::rt::outOfResources(e); !why.empty()) {
+      std::cerr << "fgsg " << cmd << ": out of memory (" << why << "); nothing was written\n";
+      return 1;
+    }
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }

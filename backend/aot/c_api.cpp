@@ -16,6 +16,7 @@
 #include "runtime/assemble.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/memory_budget.h"
+#include "runtime/out_of_resources.h"
 
 #include <cerrno>
 #include <cmath>
@@ -127,7 +128,11 @@ int guarded(fgsg_generator* g, F&& body) noexcept {
   } catch (const std::exception& e) {
     failure = "fgsg: internal error: ";
     try {
-      what = e.what();
+      what = rt::outOfResources(e);
+      if (!what.empty())
+        failure = "fgsg: out of memory: ";
+      else
+        what = e.what();
     } catch (...) {
     }
   } catch (...) {

@@ -3,6 +3,7 @@
 #include "backend/interp/interpreter.h"
 
 #include "backend/engine/derivation.h"
+#include "runtime/out_of_resources.h"
 
 #include <chrono>
 #include <exception>
@@ -37,7 +38,12 @@ rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
                                "machine gives it (--max-memory stops a derivation earlier and keeps its "
                                "shapes); nothing is written"});
   } catch (const std::exception& e) {
-    failed.messages.push_back({true, "R900", 0, 0, std::string("internal error while deriving: ") + e.what()});
+    if (const std::string why = rt::outOfResources(e); !why.empty())
+      failed.messages.push_back({true, "R020", 0, 0,
+                                 "out of memory while deriving (" + why +
+                                     "): the machine gives this process too little memory; nothing is written"});
+    else
+      failed.messages.push_back({true, "R900", 0, 0, std::string("internal error while deriving: ") + e.what()});
   } catch (...) {
     failed.messages.push_back({true, "R900", 0, 0, "internal error while deriving"});
   }

@@ -12,6 +12,9 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <new>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -126,9 +129,16 @@ std::shared_ptr<ScaledShape> buildShape(const WeldedAsset& asset, const Mat3& li
   tris.reserve(s->triangles.size());
   for (const auto& t : s->triangles) tris.emplace_back(t[0], t[1], t[2]);
   s->bvh = std::make_shared<Model>();
-  s->bvh->beginModel(static_cast<int>(tris.size()), static_cast<int>(s->vertices.size()));
-  s->bvh->addSubModel(s->vertices, tris);
-  s->bvh->endModel();
+  // FCL reports a failed allocation by a return code (and a line on stderr), not an
+  // exception; an unchecked one leaves a half-built tree that crashes the first query.
+  const auto check = [](int status) {
+    if (status == fcl::BVH_ERR_MODEL_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != fcl::BVH_OK) throw std::runtime_error("FCL could not build a collision tree (status " +
+                                                        std::to_string(status) + ")");
+  };
+  check(s->bvh->beginModel(static_cast<int>(tris.size()), static_cast<int>(s->vertices.size())));
+  check(s->bvh->addSubModel(s->vertices, tris));
+  check(s->bvh->endModel());
   return s;
 }
 

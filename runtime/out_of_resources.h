@@ -1,0 +1,17 @@
+// Is an exception the system running out of memory or threads, rather than a bug? The
+// boundaries that turn exceptions into diagnostics ask this so that a process short of
+// memory gets "out of memory", never "internal error".
+#pragma once
+
+#include <exception>
+#include <string>
+
+namespace fgsg::rt {
+
+// The system's own words for what ran out, or "" when `e` is something else: std::bad_alloc;
+// a std::system_error for ENOMEM or EAGAIN (std::thread); TBB's std::runtime_error
+// "pthread_create has failed: ..." when it cannot start a worker (each thread reserves its
+// stack, so a tight `ulimit -v` fails here first).
+std::string outOfResources(const std::exception& e);
+
+}  // namespace fgsg::rt
