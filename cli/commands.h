@@ -16,5 +16,6 @@ int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
 int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
 int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
 int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)
+int evolveCommand(const Args& args);   // fgsg evolve TILES.json (L-system tile patterns)
 
 }  // namespace fgsg::cli

@@ -28,6 +28,9 @@ usage:
                  [--paint-slab x,y,z,nx,ny,nz,w]... [--mask m.png]
                            lay MESH out for on-mesh marching (cached); draw the atlas, or
                            paint a mask for a texture context with brushes
+  fgsg evolve TILES.json [--k K] [--generation G] [--p4] [--seed N] [--json out.json]
+                 [--preview out.png] [--lsystem '{...}'] [...]
+                           evolve a 2D L-system tile pattern (Chan & Hui; docs/evolve.md)
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -82,6 +85,7 @@ int main(int argc, char** argv) {
     if (cmd == "repl") return fgsg::cli::replCommand(args);
     if (cmd == "compile") return fgsg::cli::compileCommand(args);
     if (cmd == "atlas") return fgsg::cli::atlasCommand(args);
+    if (cmd == "evolve") return fgsg::cli::evolveCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -93,6 +97,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve; see fgsg --help)\n";
   return 2;
 }

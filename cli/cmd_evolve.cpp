@@ -1,0 +1,286 @@
+// fgsg evolve TILES.json: the genetic algorithm of Chan & Hui 2013 (§4) on a tile file,
+// outside any grammar: it reports the best and mean fitness of every generation (a
+// progress line while it runs, on a terminal), prints the best L-system, and can write
+// it with its history as JSON (--json) and draw its pattern (--preview). With --lsystem
+// it skips the search and measures and draws the L-system given (the paper's Figs. 2-3).
+// See docs/evolve.md.
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "runtime/evolve/genetic.h"
+#include "runtime/evolve/pattern_picture.h"
+#include "runtime/io/atomic_file.h"
+#include "runtime/io/png_encode.h"
+#include "runtime/io/read_input.h"
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace fgsg::cli {
+namespace {
+
+namespace ev = rt::evolve;
+
+const char* kUsage =
+    "usage: fgsg evolve TILES.json [--k K] [--axiom-side A] [--generation G] [--p4] [--seed N]\n"
+    "                   [--population N] [--max-generations N] [--threshold F] [--parents N]\n"
+    "                   [--elite N] [--crossover P] [--mutation P] [--weights a,b,c[,d]]\n"
+    "                   [--max-seconds S] [--lsystem '{...}'] [--json out.json]\n"
+    "                   [--preview out.png] [--cell-pixels N] [-q]\n";
+
+struct EvolveCommandOptions {
+  std::string tiles, json, preview, lsystem;
+  ev::EvolveOptions ga;
+  double maxSeconds = 0;  // 0: no limit
+  int cellPixels = 32;
+  bool quiet = false;
+};
+
+bool hasExtension(const std::string& path, const char* ext) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ext;
+}
+
+double probability(OptionReader& r, const std::string& flag) {
+  const double p = r.numberValue(flag);
+  if (!(p >= 0 && p <= 1)) throw UsageError{flag + " expects a probability from 0 to 1, got " + std::to_string(p)};
+  return p;
+}
+
+// --weights a,b,c or a,b,c,d: Eq. 6's symmetry, connectivity, complexity (and p4) weights.
+ev::FitnessWeights weights(const std::string& v) {
+  double w[4] = {0, 0, 0, ev::FitnessWeights{}.p4};
+  std::istringstream in(v);
+  std::string part;
+  int n = 0;
+  while (std::getline(in, part, ',')) {
+    char* end = nullptr;
+    const double d = std::strtod(part.c_str(), &end);
+    if (n == 4 || part.empty() || *end != '\0' || !std::isfinite(d) || d < 0) n = 5;
+    if (n < 4) w[n] = d;
+    ++n;
+  }
+  if (n != 3 && n != 4)
+    throw UsageError{"--weights expects a,b,c or a,b,c,d (numbers >= 0: symmetry, connectivity, complexity, p4), got '" +
+                     v + "'"};
+  if (w[0] + w[1] + w[2] <= 0) throw UsageError{"--weights: a, b and c cannot all be 0"};
+  return {w[0], w[1], w[2], w[3]};
+}
+
+EvolveCommandOptions parseOptions(const Args& args) {
+  EvolveCommandOptions o;
+  OptionReader r(args);
+  while (!r.done()) {
+    if (!r.peek().empty() && r.peek()[0] != '-') {
+      if (!o.tiles.empty()) throw UsageError{"more than one tile file given ('" + o.tiles + "', '" + r.peek() + "')"};
+      o.tiles = r.next();
+      continue;
+    }
+    const std::string f = r.flag();
+    if (f == "--k") o.ga.ruleSide = int(r.unsignedValue(f, 1, 16));
+    else if (f == "--axiom-side") o.ga.axiomSide = int(r.unsignedValue(f, 1, 16));
+    else if (f == "--generation") o.ga.generation = int(r.unsignedValue(f, 0, 12));
+    else if (f == "--p4") o.ga.p4 = true;
+    else if (f == "--seed") o.ga.seed = r.unsignedValue(f);
+    else if (f == "--population") o.ga.population = int(r.unsignedValue(f, 2, 100000));
+    else if (f == "--max-generations") o.ga.maxGenerations = int(r.unsignedValue(f, 0, 1000000));
+    else if (f == "--threshold") o.ga.threshold = probability(r, f);
+    else if (f == "--parents") o.ga.parents = int(r.unsignedValue(f, 1, 100000));
+    else if (f == "--elite") o.ga.elite = int(r.unsignedValue(f, 0, 100000));
+    else if (f == "--crossover") o.ga.crossoverRate = probability(r, f);
+    else if (f == "--mutation") o.ga.mutationRate = probability(r, f);
+    else if (f == "--weights") o.ga.weights = weights(r.value(f));
+    else if (f == "--max-seconds") {
+      o.maxSeconds = r.numberValue(f);
+      if (!(o.maxSeconds > 0)) throw UsageError{"--max-seconds expects a positive number of seconds"};
+    } else if (f == "--lsystem") o.lsystem = r.value(f);
+    else if (f == "--json") o.json = r.value(f);
+    else if (f == "--preview") o.preview = r.value(f);
+    else if (f == "--cell-pixels") o.cellPixels = int(r.unsignedValue(f, 4, 1024));
+    else if (f == "-q" || f == "--quiet") o.quiet = true;
+    else throw UsageError{"unknown option '" + f + "'"};
+  }
+  if (o.tiles.empty()) throw UsageError{"no tile file given (docs/evolve.md describes the format)"};
+  if (!o.preview.empty() && !hasExtension(o.preview, ".png"))
+    throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
+  if (!o.json.empty() && !hasExtension(o.json, ".json"))
+    throw UsageError{"--json " + o.json + ": name the file .json"};
+  if (o.ga.parents > o.ga.population) throw UsageError{"--parents cannot exceed --population"};
+  if (o.ga.elite > o.ga.population) throw UsageError{"--elite cannot exceed --population"};
+  return o;
+}
+
+const char* stopWords(ev::StopReason s) {
+  switch (s) {
+    case ev::StopReason::kThreshold: return "threshold";
+    case ev::StopReason::kGenerationLimit: return "generation-limit";
+    case ev::StopReason::kDeadline: return "time-limit";
+  }
+  return "";
+}
+
+nlohmann::json termsJson(const ev::FitnessTerms& t) {
+  return {{"fitness", t.fitness}, {"symmetry", t.fH}, {"symmetries", t.symmetries},
+          {"connectivity", t.fCon}, {"complexity", t.fCom}, {"p4", t.fP4}};
+}
+
+std::string describeTerms(const ev::FitnessTerms& t, bool p4) {
+  char line[256];
+  std::snprintf(line, sizeof line, "fitness %.4f: symmetry %.4f (%d of 6), connectivity %.4f, complexity %.4f",
+                t.fitness, t.fH, t.symmetries, t.fCon, t.fCom);
+  std::string s = line;
+  if (p4) {
+    std::snprintf(line, sizeof line, ", p4 %.4f%s", t.fP4, t.fP4 == 1 ? " (a p4 pattern)" : "");
+    s += line;
+  }
+  return s;
+}
+
+// One transaction per file: written whole or not at all.
+bool writeFile(const std::string& path, const std::string& bytes) {
+  std::string error;
+  if (rt::io::writeFileAtomically(path, bytes, error)) return true;
+  std::cerr << "fgsg evolve: cannot write '" << path << "': " << error << "\n";
+  return false;
+}
+
+}  // namespace
+
+int evolveCommand(const Args& args) {
+  EvolveCommandOptions opt;
+  try {
+    opt = parseOptions(args);
+    ev::checkOptions(opt.ga);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg evolve: " << e.message << "\n" << kUsage;
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "fgsg evolve: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  std::string error;
+  if (!rt::io::checkInputFile(opt.tiles, "a tile file", error)) {
+    std::cerr << "fgsg evolve: " << error << "\n";
+    return 1;
+  }
+  ev::TileSet tiles;
+  try {
+    tiles = ev::readTileFile(opt.tiles);
+  } catch (const ev::TileFileError& e) {
+    std::cerr << "fgsg evolve: " << e.what() << "\n";
+    return 1;
+  }
+
+  ev::LSystem2D best;
+  ev::FitnessTerms terms;
+  std::optional<ev::EvolveResult> run;
+  const auto started = std::chrono::steady_clock::now();
+  if (!opt.lsystem.empty()) {
+    try {
+      best = ev::parseLSystem(opt.lsystem, tiles.letters());
+      ev::checkLSystem(best);
+      if (best.rules.size() != size_t(tiles.symbolCount()))
+        throw std::invalid_argument("the L-system has " + std::to_string(best.rules.size()) + " rules, the tile set " +
+                                    std::to_string(tiles.symbolCount()) + " symbols (one rule per symbol)");
+      terms = ev::PatternMeasure(tiles).evaluate(ev::expand(best, opt.ga.generation, opt.ga.maxCells), opt.ga.weights,
+                                                 opt.ga.p4);
+    } catch (const std::exception& e) {
+      std::cerr << "fgsg evolve: --lsystem '" << opt.lsystem << "': " << e.what() << "\n";
+      return 1;
+    }
+  } else {
+    rt::Deadline deadline = opt.maxSeconds > 0 ? rt::Deadline::after(opt.maxSeconds) : rt::Deadline();
+    opt.ga.deadline = &deadline;
+    const bool progressLine = !opt.quiet && isatty(STDERR_FILENO);
+    if (progressLine)
+      opt.ga.progress = [&](const ev::GenerationStats& s) {
+        std::fprintf(stderr, "\rgeneration %d of at most %d: best %.4f, mean %.4f (%.1f s)   ", s.generation,
+                     opt.ga.maxGenerations, s.best, s.mean, s.seconds);
+        std::fflush(stderr);
+      };
+    try {
+      run = ev::evolve(tiles, opt.ga);
+    } catch (const rt::TimeLimitReached&) {
+      if (progressLine) std::fputs("\n", stderr);
+      std::cerr << "fgsg evolve: --max-seconds " << opt.maxSeconds
+                << " ran out before the first population was measured; nothing was written\n";
+      return 1;
+    } catch (const std::invalid_argument& e) {
+      if (progressLine) std::fputs("\n", stderr);
+      std::cerr << "fgsg evolve: " << e.what() << "\n";
+      return 1;
+    }
+    if (progressLine) std::fputs("\r\033[K", stderr);
+    best = run->best;
+    terms = run->terms;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const std::string text = ev::formatLSystem(best, tiles.letters());
+
+  if (!opt.quiet && run) {
+    std::printf("generation  best    mean    p4\n");
+    for (const ev::GenerationStats& s : run->history)
+      std::printf("%10d  %.4f  %.4f  %.4f\n", s.generation, s.best, s.mean, s.bestP4);
+  }
+  std::printf("%s\n", text.c_str());
+  if (!opt.quiet) {
+    std::printf("%s\n", describeTerms(terms, opt.ga.p4).c_str());
+    if (run) {
+      const char* why = run->stop == ev::StopReason::kThreshold ? "the fitness threshold was reached"
+                        : run->stop == ev::StopReason::kDeadline ? "--max-seconds ran out"
+                                                                  : "the generation limit was reached";
+      std::printf("%d generations in %.2f s: %s\n", run->generations, seconds, why);
+    }
+  }
+
+  // The pattern of the measured generation, for --json and --preview.
+  ev::AlleleGrid pattern;
+  if (!opt.json.empty() || !opt.preview.empty()) pattern = ev::expand(best, opt.ga.generation, opt.ga.maxCells);
+  if (!opt.json.empty()) {
+    nlohmann::json j = {{"lsystem", text}, {"generation", opt.ga.generation}, {"k", best.ruleSide()},
+                        {"seed", opt.ga.seed}, {"p4", opt.ga.p4}, {"terms", termsJson(terms)}};
+    if (run) {
+      j["stop"] = stopWords(run->stop);
+      j["generations"] = run->generations;
+      nlohmann::json history = nlohmann::json::array();
+      for (const ev::GenerationStats& s : run->history)
+        history.push_back({{"generation", s.generation}, {"best", s.best}, {"mean", s.mean}, {"p4", s.bestP4},
+                           {"seconds", s.seconds}});
+      j["history"] = std::move(history);
+    }
+    nlohmann::json rows = nlohmann::json::array();
+    for (int r = 0; r < pattern.side; ++r) {
+      ev::AlleleGrid row(1);
+      std::string line;
+      for (int c = 0; c < pattern.side; ++c) {
+        row.at(0, 0) = pattern.at(r, c);
+        line += ev::formatGrid(row, tiles.letters());
+      }
+      rows.push_back(line);
+    }
+    j["pattern"] = std::move(rows);
+    if (!writeFile(opt.json, j.dump(1) + "\n")) return 1;
+  }
+  if (!opt.preview.empty()) {
+    const ev::PatternPicture pic = ev::drawPattern(tiles, pattern, opt.cellPixels);
+    std::string png;
+    if (!rt::io::encodePng(pic.width, pic.height, 3, pic.rgb.data(), png)) {
+      std::cerr << "fgsg evolve: cannot encode the preview picture\n";
+      return 1;
+    }
+    if (!writeFile(opt.preview, png)) return 1;
+    if (!opt.quiet) std::printf("wrote %s (%dx%d, %d cells a side)\n", opt.preview.c_str(), pic.width, pic.height,
+                                pattern.side);
+  }
+  return 0;
+}
+
+}  // namespace fgsg::cli
