@@ -1,5 +1,6 @@
 #include "cli/check_data_files.h"
 
+#include "backend/declared_tiles.h"
 #include "backend/synthesis_examples.h"
 
 #include <filesystem>
@@ -18,6 +19,14 @@ void checkDataFiles(const ir::Module& module, const std::string& grammarPath, fr
     std::string message;
     if (!backend::loadSynthesisExample(call.example, dirs, example, message))
       diags.error("R013", {{call.at.line, call.at.col}, {call.at.line, call.at.col}}, message);
+  }
+  // Declared tilesets, checked as Evolve will check them.
+  for (const ir::TileSetSpec& spec : module.tileSets) {
+    rt::evolve::TileSet tiles;
+    std::string message;
+    ir::Loc at;
+    if (!backend::declaredTileSet(spec, tiles, message, at))
+      diags.error("R025", {{at.line, at.col}, {at.line, at.col}}, "Evolve: " + message);
   }
 }
 

@@ -1,5 +1,6 @@
 // `fgsg check` beyond the grammar text: the data files it names with a constant path
-// that the run would load before deriving anything (synthesis examples), loaded as
+// that the run would load before deriving anything (synthesis examples), and the grammar's
+// declared tilesets, loaded as
 // `fgsg run` loads them, so that a bad file is found by `check` and not first by `run`.
 #pragma once
 

@@ -62,7 +62,7 @@ Lexed lexQuietly(const SourceFile& f) {
 bool isDeclKeyword(size_t type) {
   switch (type) {
     case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE: case FgsgLexer::FIELD:
-    case FgsgLexer::TEXTURE: case FgsgLexer::DERIVE: case FgsgLexer::TURTLE:
+    case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE: case FgsgLexer::TURTLE:
     case FgsgLexer::COLLISION: case FgsgLexer::AXIOM: case FgsgLexer::PRIORITY:
       return true;
     default:
@@ -113,10 +113,12 @@ std::vector<Statement> splitStatements(const std::shared_ptr<const SourceFile>& 
     }
     int braces = 0;
     size_t end = i;
+    // A field design's and a tileset's { } hold ';'.
+    const bool block = type == FgsgLexer::FIELD || type == FgsgLexer::TILESET;
     for (; end < l.tokens.size(); ++end) {
       const size_t t = l.tokens[end]->getType();
-      if (type == FgsgLexer::FIELD && t == FgsgLexer::LBRACE) ++braces;
-      if (type == FgsgLexer::FIELD && t == FgsgLexer::RBRACE) braces = std::max(0, braces - 1);
+      if (block && t == FgsgLexer::LBRACE) ++braces;
+      if (block && t == FgsgLexer::RBRACE) braces = std::max(0, braces - 1);
       if (t == FgsgLexer::SEMI && braces == 0) break;
     }
     const size_t last = end - 1;  // the last token of the statement
@@ -136,6 +138,7 @@ std::vector<Statement> splitStatements(const std::shared_ptr<const SourceFile>& 
       case FgsgLexer::CONST: case FgsgLexer::ATTR: s.key = nameAfter("value:"); break;
       case FgsgLexer::FIELD: s.key = nameAfter("field:"); break;
       case FgsgLexer::TEXTURE: s.key = nameAfter("texture:"); break;
+      case FgsgLexer::TILESET: s.key = nameAfter("tileset:"); break;
       case FgsgLexer::SURFACE: s.key = "surface"; break;
       case FgsgLexer::DERIVE: s.key = "derive"; break;
       case FgsgLexer::TURTLE: s.key = "turtle"; break;

@@ -165,6 +165,24 @@ struct TextureDecl {  // texture mask = "paint.png";
   std::string path;
 };
 
+// One item of a tileset: `locus arc = cubic((0.5, 0), ...);` is kind "locus", name "arc"
+// and one value (the call); `orientations 0, 90;` kind "orientations", no name, two values.
+struct TilesetItem {
+  SourceRange range;
+  SourceRange kindRange;
+  SourceRange nameRange;  // empty name: none written
+  std::string kind;
+  std::string name;
+  std::vector<ExprPtr> values;
+};
+
+struct TilesetDecl {  // tileset ornament { locus ...; section ...; orientations ...; symbols "AB"; }
+  SourceRange range;
+  SourceRange nameRange;
+  std::string name;
+  std::vector<TilesetItem> items;
+};
+
 struct DeriveDecl {  // derive parallel 5;  derive depthfirst;  derive breadthfirst;
   SourceRange range;
   std::string mode;
@@ -202,6 +220,7 @@ struct Program {
   std::vector<SurfaceDecl> surfaces;
   std::vector<FieldDecl> fields;
   std::vector<TextureDecl> textures;
+  std::vector<TilesetDecl> tilesets;
   std::vector<DeriveDecl> derives;
   std::vector<TurtleDecl> turtles;
   std::vector<CollisionDecl> collisions;

@@ -66,6 +66,7 @@ void AstBuilder::addStatement(P::StatementContext* ctx) {
   else if (auto* c = ctx->surfaceDecl()) program_.surfaces.push_back(buildSurfaceDecl(c));
   else if (auto* c = ctx->fieldDecl()) program_.fields.push_back(buildFieldDecl(c));
   else if (auto* c = ctx->textureDecl()) program_.textures.push_back(buildTextureDecl(c));
+  else if (auto* c = ctx->tilesetDecl()) program_.tilesets.push_back(buildTilesetDecl(c));
   else if (auto* c = ctx->deriveDecl()) program_.derives.push_back(buildDeriveDecl(c));
   else if (auto* c = ctx->turtleDecl()) program_.turtles.push_back(buildTurtleDecl(c));
   else if (auto* c = ctx->collisionDecl()) program_.collisions.push_back(buildCollisionDecl(c));
@@ -184,6 +185,26 @@ TextureDecl AstBuilder::buildTextureDecl(P::TextureDeclContext* ctx) {
   d.range = rangeOf(ctx);
   d.name = text(ctx->name);
   d.path = unquote(text(ctx->path));
+  return d;
+}
+
+TilesetDecl AstBuilder::buildTilesetDecl(P::TilesetDeclContext* ctx) {
+  TilesetDecl d;
+  d.range = rangeOf(ctx);
+  d.name = text(ctx->name);
+  d.nameRange = rangeOf(ctx->name);
+  for (auto* i : ctx->tilesetItem()) {
+    TilesetItem item;
+    item.range = rangeOf(i);
+    item.kind = text(i->kind);
+    item.kindRange = rangeOf(i->kind);
+    if (i->itemName) {
+      item.name = text(i->itemName);
+      item.nameRange = rangeOf(i->itemName);
+    }
+    for (auto* e : i->expr()) item.values.push_back(buildExpr(e));
+    d.items.push_back(std::move(item));
+  }
   return d;
 }
 

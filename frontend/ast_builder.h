@@ -25,6 +25,7 @@ class AstBuilder {
   FieldDesignItem buildFieldDesignItem(P::FieldDesignItemContext* ctx);
   ExprPtr buildDesignValue(P::DesignValueContext* ctx);
   TextureDecl buildTextureDecl(P::TextureDeclContext* ctx);
+  TilesetDecl buildTilesetDecl(P::TilesetDeclContext* ctx);
   DeriveDecl buildDeriveDecl(P::DeriveDeclContext* ctx);
   TurtleDecl buildTurtleDecl(P::TurtleDeclContext* ctx);
   CollisionDecl buildCollisionDecl(P::CollisionDeclContext* ctx);

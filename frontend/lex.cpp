@@ -84,7 +84,7 @@ class LexerErrorReporter : public antlr4::BaseErrorListener {
 bool isStatementKeyword(size_t type) {
   switch (type) {
     case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
-    case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::DERIVE:
+    case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE:
     case FgsgLexer::TURTLE: case FgsgLexer::COLLISION: case FgsgLexer::AXIOM:
     case FgsgLexer::PRIORITY:
       return true;
@@ -118,14 +118,14 @@ class ImplicitSemicolons {
   std::vector<size_t> positions() const {
     std::vector<size_t> out;
     int depth = 0;
-    bool inFieldStatement = false;  // its design block `{ ...; ...; }` holds ';'
+    bool inBlockStatement = false;  // a field design's or tileset's `{ ...; ...; }` holds ';'
     for (size_t i = 0; i < t_.size(); ++i) {
       const size_t type = t_[i]->getType();
       const bool startsStatement = type == Token::EOF || (firstOnLine(i) && (isStatementKeyword(type) ||
                                                                              startsRuleHead(i)));
       if (depth == 0 && i > 0 && startsStatement && !expectsContinuation(t_[i - 1]->getType())) {
         out.push_back(i);
-        inFieldStatement = false;
+        inBlockStatement = false;
       }
       switch (type) {
         case FgsgLexer::LPAREN: case FgsgLexer::LBRACK: case FgsgLexer::LBRACE:
@@ -134,11 +134,11 @@ class ImplicitSemicolons {
         case FgsgLexer::RPAREN: case FgsgLexer::RBRACK: case FgsgLexer::RBRACE:
           depth = std::max(depth - 1, 0);
           break;
-        case FgsgLexer::FIELD:
-          if (depth == 0) inFieldStatement = true;
+        case FgsgLexer::FIELD: case FgsgLexer::TILESET:
+          if (depth == 0) inBlockStatement = true;
           break;
         case FgsgLexer::SEMI:
-          if (!(inFieldStatement && depth > 0)) depth = 0, inFieldStatement = false;
+          if (!(inBlockStatement && depth > 0)) depth = 0, inBlockStatement = false;
           break;
         default:
           break;

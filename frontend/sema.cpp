@@ -34,6 +34,7 @@ namespace sema_detail {
 bool Analyzer::run() {
   collectValues();           // sema_declarations.cpp
   collectEnvironment();      // sema_declarations.cpp, sema_environment.cpp
+  collectTilesets();         // sema_tilesets.cpp
   collectCollision();        // sema_collision.cpp
   collectSymbols();          // sema_symbols.cpp
   inferParameterTypes();     // sema_symbols.cpp

@@ -7,6 +7,7 @@
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -36,6 +37,24 @@ struct SymbolInfo {
 struct AttrInfo {
   std::string name;
   ConstValue value;
+  SourceRange range;
+};
+
+// `tileset NAME { ... }` checked: its curves as constant points, in the order written.
+// Whether the tiles make a valid tile set (points inside the unit square, cross-sections
+// from (-1, 0) to (1, 0), one letter per locus x section) is the runtime's rule
+// (rt::evolve::validateTileSet), asked by `fgsg check` and by Evolve.
+struct TileCurveInfo {
+  std::string name;  // may be empty
+  bool cubic = false;  // a cubic Bezier (4 points), else a polyline
+  std::vector<std::array<double, 2>> points;
+  SourceRange range;
+};
+struct TilesetInfo {
+  std::string name;
+  std::vector<TileCurveInfo> loci, sections;
+  std::vector<int> orientations;  // degrees as written; empty: all four
+  std::string symbols;            // empty: A, B, C, ...
   SourceRange range;
 };
 
@@ -83,6 +102,7 @@ struct SemaResult {
   std::vector<std::string> fields, textures;  // declared names (for queries)
   SurfaceInfo surface;                 // the first `surface` declaration, if any
   std::vector<FieldInfo> fieldSpecs;   // the fields that check out, in declaration order
+  std::vector<TilesetInfo> tilesets;   // the tilesets that check out, in declaration order
   std::unordered_map<const Expr*, ValueType> exprTypes;
   std::unordered_map<const Expr*, NameRef> names;  // Ident expressions
   // Per rule: the names and types of its parameters (predecessor, then left and right

@@ -37,6 +37,10 @@ class Analyzer {
   // the surface count, the derivation mode and the turtle settings.
   void collectValues();
   void collectEnvironment();
+  // Tilesets (sema_tilesets.cpp): `tileset NAME { locus ...; section ...; ... }`.
+  void collectTilesets();
+  bool tileCurve(const TilesetItem& item, TileCurveInfo& out);
+  bool tilesetDeclared(const std::string& name) const;
 
   // Collision (sema_collision.cpp): `collision [all] [mesh | centre R | geodesic R];`.
   void collectCollision();

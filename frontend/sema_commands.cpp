@@ -130,7 +130,15 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (n > 0) expect(*item.args[0], w, ValueType::Num, "the length of 'LineSeg'");
       break;
     case CommandId::Evolve:
-      stringArg(0, "tile file");
+      // A declared tileset by name, or a tile file.
+      if (item.args[0]->kind == ExprKind::Ident && tilesetDeclared(item.args[0]->text))
+        res_.exprTypes[item.args[0].get()] = ValueType::Str;
+      else if (item.args[0]->kind == ExprKind::Ident && res_.constants.count(item.args[0]->text) == 0)
+        diags_.error("E017", item.args[0]->range,
+                     "'" + item.args[0]->text + "' is no tileset declared in this grammar (`tileset " +
+                         item.args[0]->text + " { ... }`) and no constant: " + cmd.signature);
+      else
+        stringArg(0, "tile file");
       expect(*item.args[1], w, ValueType::Num, "the generation of 'Evolve'");
       if (n > 2) expect(*item.args[2], w, ValueType::Num, "the rule size k of 'Evolve'");
       if (n > 3) expect(*item.args[3], w, ValueType::Bool, "the p4 flag of 'Evolve'");

@@ -21,6 +21,7 @@ statement
   | surfaceDecl
   | fieldDecl
   | textureDecl
+  | tilesetDecl
   | deriveDecl
   | turtleDecl
   | collisionDecl
@@ -58,6 +59,12 @@ designValue
   ;
 
 textureDecl : TEXTURE name=ID '=' path=STRING ';' ;
+
+// `tileset ornament { locus arc = cubic((0.5,0), ...); section round = polyline(...);
+// orientations 0, 90; symbols "AB"; }`: tiles for Evolve (Chan & Hui). An item is a kind,
+// an optional `name =`, then values; the front end checks which kinds take which values.
+tilesetDecl : TILESET name=ID '{' tilesetItem* '}' ';' ;
+tilesetItem : kind=ID ( itemName=ID '=' )? expr ( ',' expr )* ';' ;
 
 deriveDecl  : DERIVE order=ID steps=expr? ';' ;
 
@@ -167,6 +174,7 @@ ATTR     : 'attr' ;
 SURFACE  : 'surface' ;
 FIELD    : 'field' ;
 TEXTURE  : 'texture' ;
+TILESET  : 'tileset' ;
 DERIVE   : 'derive' ;
 TURTLE   : 'turtle' ;
 COLLISION: 'collision' ;

@@ -5,6 +5,7 @@
 // data structures: only indices into the module's tables.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -104,7 +105,7 @@ enum class OpKind : uint8_t {
   Marching,      // args length, angle; bodies: Top, Extruded, then the condition block (Buron et al. §5)
   MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
   Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
-  Evolve,        // str = tile file; args generation, then optional k (rule size) and p4 (Bool): Chan & Hui's GA pattern fills the scope
+  Evolve,        // index 0: str = tile file; index i > 0: Module::tileSets[i - 1] (str its name); args generation, then optional k (rule size) and p4 (Bool): Chan & Hui's GA pattern fills the scope
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 
@@ -245,6 +246,22 @@ struct FieldSpec {
   Loc loc;
 };
 
+// `tileset NAME { locus ...; section ...; orientations ...; symbols "..."; }`: Chan & Hui's
+// tiles for Evolve, as constants. The runtime checks them as a tile set (validateTileSet).
+struct TileCurveSpec {
+  std::string name;
+  bool cubic = false;  // a cubic Bezier (4 points), else a polyline
+  std::vector<std::array<double, 2>> points;
+  Loc loc;
+};
+struct TileSetSpec {
+  std::string name;
+  std::vector<TileCurveSpec> loci, sections;
+  std::vector<int> orientations;  // degrees; empty: all four
+  std::string symbols;            // empty: A, B, C, ...
+  Loc loc;
+};
+
 struct Module {
   std::string sourceName;
   std::vector<Symbol> symbols;
@@ -262,6 +279,7 @@ struct Module {
   CollisionSettings collision;
   SurfaceSpec surface;
   std::vector<FieldSpec> fields;
+  std::vector<TileSetSpec> tileSets;
   std::vector<EnvDecl> environment;
 
   uint32_t internString(const std::string& s);

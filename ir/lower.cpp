@@ -152,6 +152,7 @@ class Lowerer {
     for (const auto& t : prog_.textures)
       m_.environment.push_back({"texture", t.name, t.path, toLoc(t.range)});
     lowerSurfaceAndFields();
+    lowerTileSets();
   }
 
   // The surface and fields as sema evaluated them: constants only, names as written.
@@ -174,6 +175,24 @@ class Lowerer {
       for (const FieldDesignInfo& d : f.design) out.design.push_back({d.kind, d.words, toLoc(d.range)});
       m_.fields.push_back(std::move(out));
     }
+  }
+
+  void lowerTileSets() {
+    auto curves = [&](const std::vector<TileCurveInfo>& in) {
+      std::vector<TileCurveSpec> out;
+      for (const TileCurveInfo& c : in) out.push_back({c.name, c.cubic, c.points, toLoc(c.range)});
+      return out;
+    };
+    for (const TilesetInfo& t : sema_.tilesets)
+      m_.tileSets.push_back({t.name, curves(t.loci), curves(t.sections), t.orientations, t.symbols, toLoc(t.range)});
+  }
+
+  // 1 + the tileset's index when `e` names a declared tileset, else 0.
+  uint32_t tileSetReference(const frontend::Expr& e) const {
+    if (e.kind != frontend::ExprKind::Ident) return 0;
+    for (size_t i = 0; i < m_.tileSets.size(); ++i)
+      if (m_.tileSets[i].name == e.text) return static_cast<uint32_t>(i + 1);
+    return 0;
   }
 
   // ------------------------------------------------------------ successors
@@ -305,7 +324,8 @@ class Lowerer {
       case CommandId::Branch: op.kind = OpKind::Branch; allArgs(0); break;
       case CommandId::Evolve:
         op.kind = OpKind::Evolve;
-        op.str = m_.internString(constString(*item.args[0]));
+        op.index = tileSetReference(*item.args[0]);
+        op.str = m_.internString(op.index ? item.args[0]->text : constString(*item.args[0]));
         allArgs(1);
         break;
       case CommandId::Synthesize:

@@ -97,6 +97,7 @@ class Printer {
     }
     if (m_.surface.present) line(0, surfaceLine(m_.surface));
     for (const FieldSpec& f : m_.fields) line(0, fieldLine(f));
+    for (const TileSetSpec& t : m_.tileSets) tileSet(t);
     for (const EnvDecl& d : m_.environment) {
       std::string s = "env " + d.kind;
       if (!d.name.empty()) s += " " + d.name;
@@ -118,6 +119,26 @@ class Printer {
     block(nullptr, m_.axiom, 1);
     for (const Rule& r : m_.rules) rule(r);
     return std::move(out_);
+  }
+
+  // tileset ornament
+  //   locus arc cubic (0.5, 0) (0.5, 0.276) (0.724, 0.5) (1, 0.5)
+  //   orientations 0 90 180 270
+  void tileSet(const TileSetSpec& t) {
+    line(0, "tileset " + t.name);
+    auto curve = [&](const char* kind, const TileCurveSpec& c) {
+      std::string s = std::string(kind) + (c.name.empty() ? "" : " " + c.name) + (c.cubic ? " cubic" : " polyline");
+      for (const auto& p : c.points) s += " (" + printNumber(p[0]) + ", " + printNumber(p[1]) + ")";
+      line(1, s);
+    };
+    for (const TileCurveSpec& c : t.loci) curve("locus", c);
+    for (const TileCurveSpec& c : t.sections) curve("section", c);
+    if (!t.orientations.empty()) {
+      std::string s = "orientations";
+      for (int o : t.orientations) s += " " + std::to_string(o);
+      line(1, s);
+    }
+    if (!t.symbols.empty()) line(1, "symbols " + quoted(t.symbols));
   }
 
   // `surface torus(2, 0.6)`, `surface "bunny.off"`
@@ -316,7 +337,9 @@ class Printer {
       case OpKind::Line: text = withArgs("line"); break;
       case OpKind::LineSeg: text = withArgs("lineseg"); break;
       case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
-      case OpKind::Evolve: text = withArgs("evolve " + stringLit(op.str)); break;
+      case OpKind::Evolve:
+        text = withArgs("evolve " + (op.index ? "tileset " + m_.strings[op.str] : stringLit(op.str)));
+        break;
       case OpKind::Marching: text = withArgs("marching"); break;
       case OpKind::MarchCondition: text = withArgs("march-condition"); break;
       case OpKind::Branch: text = withArgs("branch"); break;

@@ -54,6 +54,7 @@ class Verifier {
     collision();
     surface();
     fields();
+    tileSets();
     for (size_t i = 0; i < m_.attrs.size(); ++i) {
       Scoped s(*this, "attr " + m_.attrs[i].name);
       const Attr& a = m_.attrs[i];
@@ -138,6 +139,25 @@ class Verifier {
       problem(s.generator + " takes " + std::to_string(g->second) + " arguments, has " +
               std::to_string(s.args.size()));
     finite(s.args, "argument");
+  }
+
+  void tileSets() {
+    std::vector<std::string> names;
+    for (const TileSetSpec& t : m_.tileSets) {
+      Scoped sc(*this, "tileset " + t.name);
+      if (t.name.empty()) problem("has no name");
+      if (std::find(names.begin(), names.end(), t.name) != names.end()) problem("name is not unique");
+      names.push_back(t.name);
+      if (t.loci.empty() || t.sections.empty()) problem("needs a locus and a section");
+      for (const auto* list : {&t.loci, &t.sections})
+        for (const TileCurveSpec& c : *list) {
+          if (c.cubic ? c.points.size() != 4 : c.points.size() < 2)
+            problem(std::to_string(c.points.size()) + " points for a " + (c.cubic ? "cubic" : "polyline"));
+          for (const auto& p : c.points) finite({p[0], p[1]}, "coordinate");
+        }
+      for (int o : t.orientations)
+        if (o != 0 && o != 90 && o != 180 && o != 270) problem("orientation " + std::to_string(o));
+    }
   }
 
   void fields() {
@@ -459,6 +479,8 @@ class Verifier {
         break;
       case OpKind::Evolve:
         stringId(op.str);
+        if (op.index > m_.tileSets.size())
+          problem("tileset " + std::to_string(op.index) + " of " + std::to_string(m_.tileSets.size()));
         expectBodies(op, 0);
         if (op.args.empty() || op.args.size() > 3) {
           problem(std::to_string(op.args.size()) + " arguments, expected 1 to 3 (generation, k, p4)");

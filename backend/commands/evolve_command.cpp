@@ -1,5 +1,6 @@
 #include "backend/commands/evolve_command.h"
 
+#include "backend/declared_tiles.h"
 #include "backend/engine/derivation.h"
 #include "runtime/evolve/genetic.h"
 #include "runtime/evolve/lsystem2d.h"
@@ -42,8 +43,9 @@ rt::Scope turned(const rt::Scope& cell, int turns) {
 
 void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame&) {
   const ir::Module& m = d_.module();
-  const std::string& file = m.strings[op.str];
-  const rt::evolve::TileSet& tiles = loadTiles(file, op.loc);
+  // Names the tiles in the cache and in the ornaments' asset names.
+  const std::string file = op.index ? "tileset " + m.strings[op.str] : m.strings[op.str];
+  const rt::evolve::TileSet& tiles = loadTiles(op, file);
   rt::evolve::EvolveOptions o;
   o.generation = wholeArg(a[0], 0, 12, "the generation", op.loc);
   if (n > 1) o.ruleSide = wholeArg(a[1], 1, 16, "the rule size k", op.loc);
@@ -87,9 +89,18 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
     }
 }
 
-const rt::evolve::TileSet& EvolveCommand::loadTiles(const std::string& name, ir::Loc at) {
+const rt::evolve::TileSet& EvolveCommand::loadTiles(const ir::Op& op, const std::string& name) {
   auto it = tiles_.find(name);
   if (it != tiles_.end()) return it->second;
+  const ir::Loc at = op.loc;
+  if (op.index) {  // declared in the grammar: its errors are located at its items
+    rt::evolve::TileSet tiles;
+    std::string message;
+    ir::Loc blamed;
+    if (!declaredTileSet(d_.module().tileSets[op.index - 1], tiles, message, blamed))
+      throw DeriveError{blamed, "R025", "Evolve: " + message};
+    return tiles_.emplace(name, std::move(tiles)).first->second;
+  }
   try {
     return tiles_.emplace(name, rt::evolve::readTileFile(rt::io::findFile(name, d_.options().assetDirs)))
         .first->second;

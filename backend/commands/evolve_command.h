@@ -1,5 +1,6 @@
-// Evolve("tiles.json", generation, k, p4): Chan & Hui's surface patterns (runtime/evolve/)
-// on a scope. A genetic algorithm finds a 2D L-system over the file's tiles (rules k x k,
+// Evolve(tileset or "tiles.json", generation, k, p4): Chan & Hui's surface patterns
+// (runtime/evolve/) on a scope. A genetic algorithm finds a 2D L-system over the tiles of a
+// `tileset` the grammar declares or of a tile file (rules k x k,
 // default 3; the §6.1 p4 constraint when p4 is true), and its pattern at `generation`
 // (k^generation cells a side) fills the scope's XY face. A cell whose locus is named
 // after a symbol with rules and no parameters becomes a shape of that symbol, its scope
@@ -28,7 +29,8 @@ class EvolveCommand final : public CommandFamily {
   void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) override;
 
  private:
-  const rt::evolve::TileSet& loadTiles(const std::string& name, ir::Loc at);
+  // The op's tiles (a declared tileset or a tile file), loaded once as `name`.
+  const rt::evolve::TileSet& loadTiles(const ir::Op& op, const std::string& name);
   // The ornament of `allele` as a generated asset (its index in the output's asset
   // table) and where its bounding box sits in the unit tile.
   struct Ornament {

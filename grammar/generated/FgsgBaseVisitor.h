@@ -57,6 +57,14 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitTilesetDecl(FgsgParser::TilesetDeclContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
+  virtual antlrcpp::Any visitTilesetItem(FgsgParser::TilesetItemContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitDeriveDecl(FgsgParser::DeriveDeclContext *ctx) override {
     return visitChildren(ctx);
   }

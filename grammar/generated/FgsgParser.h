@@ -13,29 +13,29 @@ namespace fgsg_grammar {
 class  FgsgParser : public antlr4::Parser {
 public:
   enum {
-    CONST = 1, ATTR = 2, SURFACE = 3, FIELD = 4, TEXTURE = 5, DERIVE = 6, 
-    TURTLE = 7, COLLISION = 8, AXIOM = 9, PRIORITY = 10, TRUE = 11, FALSE = 12, 
-    EPSILON = 13, ARROW = 14, ASSIGN = 15, EQ = 16, NEQ = 17, LE = 18, GE = 19, 
-    LT = 20, GT = 21, AND = 22, OR = 23, PLUS = 24, MINUS = 25, STAR = 26, 
-    SLASH = 27, PERCENT = 28, CARET = 29, BANG = 30, AMP = 31, PIPE = 32, 
-    BACKSLASH = 33, DOLLAR = 34, TILDE = 35, QUESTION = 36, COLON = 37, 
-    SEMI = 38, COMMA = 39, DOT = 40, LPAREN = 41, RPAREN = 42, LBRACK = 43, 
-    RBRACK = 44, LBRACE = 45, RBRACE = 46, RELSIZE = 47, FLOAT = 48, INT = 49, 
-    ID = 50, STRING = 51, UNTERMINATED_STRING = 52, LINE_COMMENT = 53, BLOCK_COMMENT = 54, 
-    UNTERMINATED_COMMENT = 55, WS = 56, UNKNOWN_CHAR = 57
+    CONST = 1, ATTR = 2, SURFACE = 3, FIELD = 4, TEXTURE = 5, TILESET = 6, 
+    DERIVE = 7, TURTLE = 8, COLLISION = 9, AXIOM = 10, PRIORITY = 11, TRUE = 12, 
+    FALSE = 13, EPSILON = 14, ARROW = 15, ASSIGN = 16, EQ = 17, NEQ = 18, 
+    LE = 19, GE = 20, LT = 21, GT = 22, AND = 23, OR = 24, PLUS = 25, MINUS = 26, 
+    STAR = 27, SLASH = 28, PERCENT = 29, CARET = 30, BANG = 31, AMP = 32, 
+    PIPE = 33, BACKSLASH = 34, DOLLAR = 35, TILDE = 36, QUESTION = 37, COLON = 38, 
+    SEMI = 39, COMMA = 40, DOT = 41, LPAREN = 42, RPAREN = 43, LBRACK = 44, 
+    RBRACK = 45, LBRACE = 46, RBRACE = 47, RELSIZE = 48, FLOAT = 49, INT = 50, 
+    ID = 51, STRING = 52, UNTERMINATED_STRING = 53, LINE_COMMENT = 54, BLOCK_COMMENT = 55, 
+    UNTERMINATED_COMMENT = 56, WS = 57, UNKNOWN_CHAR = 58
   };
 
   enum {
     RuleProgram = 0, RuleStatement = 1, RuleValueDecl = 2, RuleSurfaceDecl = 3, 
     RuleFieldDecl = 4, RuleFieldSource = 5, RuleFieldDesignItem = 6, RuleFieldDesignWord = 7, 
-    RuleDesignValue = 8, RuleTextureDecl = 9, RuleDeriveDecl = 10, RuleTurtleDecl = 11, 
-    RuleTurtleSetting = 12, RuleCollisionDecl = 13, RuleCollisionWord = 14, 
-    RuleAxiomDecl = 15, RulePriorityDecl = 16, RuleGrammarRule = 17, RuleRuleLabel = 18, 
-    RuleRuleHead = 19, RuleLeftContext = 20, RuleRightContext = 21, RuleContextModule = 22, 
-    RuleModulePattern = 23, RuleParamDecl = 24, RuleRuleBody = 25, RuleBranch = 26, 
-    RuleArrow = 27, RuleSuccessor = 28, RuleSequenceItem = 29, RuleItem = 30, 
-    RuleCallArgs = 31, RuleBody = 32, RuleBodyPart = 33, RuleExpr = 34, 
-    RulePrimary = 35, RuleNumber = 36
+    RuleDesignValue = 8, RuleTextureDecl = 9, RuleTilesetDecl = 10, RuleTilesetItem = 11, 
+    RuleDeriveDecl = 12, RuleTurtleDecl = 13, RuleTurtleSetting = 14, RuleCollisionDecl = 15, 
+    RuleCollisionWord = 16, RuleAxiomDecl = 17, RulePriorityDecl = 18, RuleGrammarRule = 19, 
+    RuleRuleLabel = 20, RuleRuleHead = 21, RuleLeftContext = 22, RuleRightContext = 23, 
+    RuleContextModule = 24, RuleModulePattern = 25, RuleParamDecl = 26, 
+    RuleRuleBody = 27, RuleBranch = 28, RuleArrow = 29, RuleSuccessor = 30, 
+    RuleSequenceItem = 31, RuleItem = 32, RuleCallArgs = 33, RuleBody = 34, 
+    RuleBodyPart = 35, RuleExpr = 36, RulePrimary = 37, RuleNumber = 38
   };
 
   FgsgParser(antlr4::TokenStream *input);
@@ -58,6 +58,8 @@ public:
   class FieldDesignWordContext;
   class DesignValueContext;
   class TextureDeclContext;
+  class TilesetDeclContext;
+  class TilesetItemContext;
   class DeriveDeclContext;
   class TurtleDeclContext;
   class TurtleSettingContext;
@@ -108,6 +110,7 @@ public:
     SurfaceDeclContext *surfaceDecl();
     FieldDeclContext *fieldDecl();
     TextureDeclContext *textureDecl();
+    TilesetDeclContext *tilesetDecl();
     DeriveDeclContext *deriveDecl();
     TurtleDeclContext *turtleDecl();
     CollisionDeclContext *collisionDecl();
@@ -267,6 +270,46 @@ public:
   };
 
   TextureDeclContext* textureDecl();
+
+  class  TilesetDeclContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *name = nullptr;;
+    TilesetDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *TILESET();
+    antlr4::tree::TerminalNode *LBRACE();
+    antlr4::tree::TerminalNode *RBRACE();
+    antlr4::tree::TerminalNode *SEMI();
+    antlr4::tree::TerminalNode *ID();
+    std::vector<TilesetItemContext *> tilesetItem();
+    TilesetItemContext* tilesetItem(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  TilesetDeclContext* tilesetDecl();
+
+  class  TilesetItemContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *kind = nullptr;;
+    antlr4::Token *itemName = nullptr;;
+    TilesetItemContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    std::vector<ExprContext *> expr();
+    ExprContext* expr(size_t i);
+    antlr4::tree::TerminalNode *SEMI();
+    std::vector<antlr4::tree::TerminalNode *> ID();
+    antlr4::tree::TerminalNode* ID(size_t i);
+    antlr4::tree::TerminalNode *ASSIGN();
+    std::vector<antlr4::tree::TerminalNode *> COMMA();
+    antlr4::tree::TerminalNode* COMMA(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  TilesetItemContext* tilesetItem();
 
   class  DeriveDeclContext : public antlr4::ParserRuleContext {
   public:

@@ -40,6 +40,10 @@ public:
 
     virtual antlrcpp::Any visitTextureDecl(FgsgParser::TextureDeclContext *context) = 0;
 
+    virtual antlrcpp::Any visitTilesetDecl(FgsgParser::TilesetDeclContext *context) = 0;
+
+    virtual antlrcpp::Any visitTilesetItem(FgsgParser::TilesetItemContext *context) = 0;
+
     virtual antlrcpp::Any visitDeriveDecl(FgsgParser::DeriveDeclContext *context) = 0;
 
     virtual antlrcpp::Any visitTurtleDecl(FgsgParser::TurtleDeclContext *context) = 0;

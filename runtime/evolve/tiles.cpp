@@ -260,19 +260,31 @@ TileSet parseTileSet(std::string_view text, std::string_view source) {
   }
   if (!root.contains("loci")) fail(source, "", "missing \"loci\"");
   if (!root.contains("sections")) fail(source, "", "missing \"sections\"");
+  return makeTileSet(std::move(ts.loci), std::move(ts.sections),
+                     root.contains("orientations") ? std::optional(ts.orientations) : std::nullopt,
+                     haveSymbols ? std::optional(symbols) : std::nullopt, source);
+}
 
+TileSet makeTileSet(std::vector<Locus> loci, std::vector<Section> sections, std::optional<std::vector<int>> turns,
+                    std::optional<std::string> symbols, std::string_view source) {
+  TileSet ts;
+  ts.loci = std::move(loci);
+  ts.sections = std::move(sections);
+  if (turns) ts.orientations = *turns;
+  ts.tiles.clear();
+  const bool haveSymbols = symbols.has_value();
   const size_t count = ts.loci.size() * ts.sections.size();
-  if (haveSymbols && symbols.size() != count)
+  if (haveSymbols && symbols->size() != count)
     fail(source, "symbols", "needs one letter per locus x cross-section: " + std::to_string(ts.loci.size()) + " x " +
                                 std::to_string(ts.sections.size()) + " = " + std::to_string(count) + ", got " +
-                                std::to_string(symbols.size()));
+                                std::to_string(symbols->size()));
   if (count > size_t(kMaxSymbols))
     fail(source, "", std::to_string(count) + " symbols (loci x cross-sections); at most " + std::to_string(kMaxSymbols) +
                          " (the letters A-Z, a-z)");
   for (size_t l = 0; l < ts.loci.size(); ++l)
     for (size_t s = 0; s < ts.sections.size(); ++s) {
       const size_t i = l * ts.sections.size() + s;
-      ts.tiles.push_back(Tile{haveSymbols ? symbols[i] : defaultLetter(int(i)), int(l), int(s)});
+      ts.tiles.push_back(Tile{haveSymbols ? (*symbols)[i] : defaultLetter(int(i)), int(l), int(s)});
     }
   validateTileSet(ts, source);
   return ts;

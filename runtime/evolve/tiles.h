@@ -30,6 +30,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -119,6 +120,13 @@ struct TileFileError : std::runtime_error {
 // letters, orientations in 0..3); throws TileFileError naming the first problem, with
 // `source` as the file name.
 void validateTileSet(const TileSet& tiles, std::string_view source = "tile set");
+
+// A tile set from its parts, as a tile file gives them: one symbol per locus x
+// cross-section (locus-major), lettered by `symbols` (none: A, B, C, ...), `turns` the
+// allowed orientations in quarter turns, ascending (none: all four). Validated
+// (validateTileSet); throws TileFileError naming the first problem after `source`.
+TileSet makeTileSet(std::vector<Locus> loci, std::vector<Section> sections, std::optional<std::vector<int>> turns,
+                    std::optional<std::string> symbols, std::string_view source);
 
 // Parses a tile file's text; `source` names it in errors.
 TileSet parseTileSet(std::string_view json, std::string_view source = "tile set");

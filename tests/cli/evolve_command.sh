@@ -61,4 +61,19 @@ echo '{"loci": 3}' >"$tmp/bad.json"
 expect 1 "bad.json: " "$tmp/bad.json"
 expect 1 "ran out before the first population" "$tiles" --population 100000 --max-seconds 0.001
 expect 1 "cannot write '$tmp/missing/x.json'" "$tiles" --max-generations 1 --json "$tmp/missing/x.json"
+
+# A grammar's declared tileset is checked as a tile file is: by `fgsg check` before any run,
+# at its item, and `fgsg run` says the same.
+printf 'tileset t {\n  locus a = polyline((0, 0.5), (1, 0.5));\n  section r = polyline((-1, 0), (1, 0.5));\n}\naxiom: Evolve(t, 2)\n' \
+  >"$tmp/bad_tileset.fgsg"
+for cmd in check run; do
+  out=()
+  [ $cmd = run ] && out=(-o "$tmp/never.glb")
+  "$fgsg" $cmd "$tmp/bad_tileset.fgsg" "${out[@]}" >/dev/null 2>"$tmp/err"
+  [ $? -eq 1 ] || fail "fgsg $cmd of a bad tileset: exit code"
+  grep -q "bad_tileset.fgsg:3:3: error\[R025\]: Evolve: tileset 't': sections\[0\].polyline: a cross-section runs from (-1, 0) to (1, 0)" "$tmp/err" ||
+    { cat "$tmp/err" >&2; fail "fgsg $cmd of a bad tileset: message"; }
+done
+[ -e "$tmp/never.glb" ] && fail "a failed run wrote its output"
+"$fgsg" check "$root/examples/evolve_tiles.fgsg" >/dev/null 2>&1 || fail "fgsg check examples/evolve_tiles.fgsg failed"
 exit 0

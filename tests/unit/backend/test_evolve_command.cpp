@@ -1,10 +1,11 @@
-// Evolve("tiles.json", generation, k, p4) in a grammar (backend/commands/evolve_command.h):
+// Evolve(tileset or "tiles.json", generation, k, p4) in a grammar (backend/commands/evolve_command.h):
 // the evolved pattern fills the scope cell by cell, with ornaments or with shapes of the
 // symbols the loci name, reproducibly by seed; bad arguments and files are located R025.
 #include "derive_helpers.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -104,4 +105,56 @@ TEST_CASE("Evolve's errors are located R025", "[evolve][errors]") {
   failsWith(grammar(evolveCall("1.5")), "the generation must be a whole number");
   failsWith(grammar(evolveCall("2, 0")), "the rule size k must be a whole number");
   failsWith(grammar(evolveCall("9, 4")), "cells a side");
+}
+
+namespace {
+
+// The tiles of examples/assets/ornament_tiles.json, declared in the grammar.
+const std::string kDeclared =
+    "tileset ornament {\n"
+    "  locus arc = cubic((0.5, 0), (0.5, 0.276), (0.724, 0.5), (1, 0.5));\n"
+    "  locus line = polyline((0, 0.5), (1, 0.5));\n"
+    "  section round = polyline((-1, 0), (-0.7, 0.7), (0, 1), (0.7, 0.7), (1, 0));\n"
+    "  orientations 270, 0, 180, 90;\n"
+    "  symbols \"AB\";\n"
+    "}\n";
+
+}  // namespace
+
+TEST_CASE("A tileset declared in the grammar evolves as the same tiles from a file", "[evolve][tileset]") {
+  // The GA's seed depends on where Evolve is written: the same line in both.
+  const std::string blankLines(size_t(std::count(kDeclared.begin(), kDeclared.end(), '\n')), '\n');
+  const rt::DeriveResult fromFile = deriveText(blankLines + grammar(evolveCall("3, 3, true")));
+  const rt::DeriveResult declared = deriveText(kDeclared + grammar("Evolve(ornament, 3, 3, true)"));
+  REQUIRE(fromFile.ok);
+  REQUIRE(declared.ok);
+  REQUIRE(declared.instances.instances.size() == 729);
+  REQUIRE(declared.instances.instances.size() == fromFile.instances.instances.size());
+  for (size_t i = 0; i < declared.instances.instances.size(); ++i) {
+    const auto& a = declared.instances.instances[i];
+    const auto& b = fromFile.instances.instances[i];
+    CHECK(a.transform == b.transform);
+    // "<ornament tileset ornament A90>" and "<ornament .../ornament_tiles.json A90>".
+    const std::string& na = declared.instances.assets[a.asset];
+    const std::string& nb = fromFile.instances.assets[b.asset];
+    CHECK(na.rfind("<ornament tileset ornament ", 0) == 0);
+    CHECK(na.substr(na.rfind(' ')) == nb.substr(nb.rfind(' ')));
+  }
+}
+
+TEST_CASE("A declared tileset that is no tile set is R025 at its item", "[evolve][tileset][errors]") {
+  const rt::DeriveResult r = deriveText(
+      "tileset t {\n"
+      "  locus a = polyline((0, 0.5), (1, 0.5));\n"
+      "  section r = polyline((-1, 0), (0, 1), (1, 0.5));\n"
+      "}\n"
+      "axiom: Evolve(t, 2)");
+  REQUIRE_FALSE(r.ok);
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R025");
+  CHECK(r.messages[0].line == 3);
+  CHECK(r.messages[0].col == 3);
+  CHECK(r.messages[0].message ==
+        "Evolve: tileset 't': sections[0].polyline: a cross-section runs from (-1, 0) to (1, 0) (Elber's blending, "
+        "paper §2.4); this one runs from (-1, 0) to (1, 0.5)");
 }

@@ -1,62 +1,15 @@
 // Semantic analysis of `surface` and `field` declarations (frontend/sema_environment.cpp):
 // every accepted form evaluated to constants, and every error (E033..E040) at its place.
-#include "frontend/parse.h"
-#include "frontend/sema.h"
+#include "sema_helpers.h"
 
 #include <catch2/catch.hpp>
 
 #include <sstream>
 
 using namespace fgsg::frontend;
+using namespace fgsg::frontend::test;
 
 namespace {
-
-struct Analysed {
-  SourceFile file;
-  Program program;
-  SemaResult sema;
-  std::vector<Diagnostic> diags;
-  std::string printed;
-  bool ok = false;
-};
-
-Analysed analyse(const std::string& text) {
-  Analysed a;
-  a.file = SourceFile::make("t.fgsg", text);
-  Diagnostics diags(&a.file);
-  REQUIRE(parseProgram(a.file, a.program, diags));
-  a.ok = analyze(a.program, a.sema, diags);
-  a.diags = diags.all();
-  std::ostringstream out;
-  diags.print(out);
-  a.printed = out.str();
-  return a;
-}
-
-// A grammar with a rule, so that only the declarations can be wrong.
-Analysed declarations(const std::string& decls) { return analyse(decls + "\nA ~> I(\"cube\");"); }
-
-// Exactly one error, with this code at line:col, whose message contains `words`.
-void onlyError(const Analysed& a, const std::string& code, int line, int col,
-               const std::string& words = "") {
-  INFO(a.printed);
-  CHECK_FALSE(a.ok);
-  int errors = 0;
-  for (const auto& d : a.diags) errors += d.severity == Severity::Error;
-  CHECK(errors == 1);
-  bool found = false;
-  for (const auto& d : a.diags)
-    if (d.code == code && d.range.begin.line == line && d.range.begin.col == col &&
-        d.message.find(words) != std::string::npos)
-      found = true;
-  CHECK(found);
-}
-
-bool has(const Analysed& a, const std::string& code, int line, int col) {
-  for (const auto& d : a.diags)
-    if (d.code == code && d.range.begin.line == line && d.range.begin.col == col) return true;
-  return false;
-}
 
 using Words = std::vector<std::pair<std::string, std::vector<double>>>;
 

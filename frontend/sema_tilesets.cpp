@@ -1,0 +1,157 @@
+// Semantic analysis of `tileset NAME { ... }` (Chan & Hui's tiles for Evolve): which items
+// exist, that their values are constants of the right form, and unique names. The tile
+// set's own rules (points in the unit square, cross-section ends, letters) are checked by
+// the runtime's validateTileSet, which `fgsg check` and Evolve both ask.
+#include "frontend/sema_analyzer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace fgsg::frontend::sema_detail {
+
+namespace {
+
+constexpr const char* kItemKinds = "locus, section, orientations or symbols";
+constexpr const char* kCurveForms = "polyline((x, y), (x, y), ...) or cubic(p0, p1, p2, p3)";
+
+}  // namespace
+
+// Declared, whether or not it checked out (a failing one has its own errors).
+bool Analyzer::tilesetDeclared(const std::string& name) const {
+  for (const TilesetDecl& t : prog_.tilesets)
+    if (t.name == name) return true;
+  return false;
+}
+
+// `locus arc = cubic((0.5, 0), (0.5, 0.276), (0.724, 0.5), (1, 0.5));`
+bool Analyzer::tileCurve(const TilesetItem& item, TileCurveInfo& out) {
+  out.name = item.name;
+  out.range = item.range;
+  const Expr* call = item.values.size() == 1 ? item.values[0].get() : nullptr;
+  if (!call || call->kind != ExprKind::Call || (call->text != "polyline" && call->text != "cubic")) {
+    diags_.error("E041", item.values.empty() ? item.range : item.values[0]->range,
+                 "a " + item.kind + " is one curve: " + kCurveForms);
+    return false;
+  }
+  out.cubic = call->text == "cubic";
+  if (out.cubic && call->args.size() != 4) {
+    diags_.error("E041", call->range,
+                 "a cubic has 4 points (p0, two control points, p3), got " + std::to_string(call->args.size()));
+    return false;
+  }
+  if (!out.cubic && call->args.size() < 2) {
+    diags_.error("E041", call->range, "a polyline needs 2 or more points, got " + std::to_string(call->args.size()));
+    return false;
+  }
+  bool ok = true;
+  for (const ExprPtr& p : call->args) {
+    std::array<double, 2> xy{};
+    bool good = p && p->kind == ExprKind::Vector && p->args.size() == 2 && p->args[0] && p->args[1];
+    for (size_t k = 0; good && k < 2; ++k) {
+      ConstValue v;
+      good = evalConst(*p->args[k], v) && v.type == ValueType::Num && std::isfinite(v.num);
+      xy[k] = v.num;
+    }
+    if (!good) {
+      diags_.error("E041", p ? p->range : call->range,
+                   "a point of a " + item.kind + " is (x, y): two constant numbers in parentheses");
+      ok = false;
+      continue;
+    }
+    out.points.push_back(xy);
+  }
+  return ok;
+}
+
+void Analyzer::collectTilesets() {
+  std::set<std::string> taken(res_.fields.begin(), res_.fields.end());
+  taken.insert(res_.textures.begin(), res_.textures.end());
+  for (const auto& v : prog_.values) taken.insert(v.name);
+  for (const TilesetDecl& d : prog_.tilesets) {
+    if (!taken.insert(d.name).second) {
+      diags_.error("E022", d.nameRange, "tileset '" + d.name + "' is declared twice (or names a const, attr, field or texture)");
+      continue;
+    }
+    TilesetInfo info;
+    info.name = d.name;
+    info.range = d.range;
+    bool ok = true, haveOrientations = false, haveSymbols = false;
+    std::set<std::string> loci, sections;
+    for (const TilesetItem& item : d.items) {
+      if (item.kind == "locus" || item.kind == "section") {
+        auto& names = item.kind == "locus" ? loci : sections;
+        if (!item.name.empty() && !names.insert(item.name).second) {
+          diags_.error("E041", item.nameRange, item.kind + " '" + item.name + "' is declared twice in tileset '" + d.name + "'");
+          ok = false;
+          continue;
+        }
+        TileCurveInfo curve;
+        if (!tileCurve(item, curve)) {
+          ok = false;
+          continue;
+        }
+        (item.kind == "locus" ? info.loci : info.sections).push_back(std::move(curve));
+        continue;
+      }
+      if (item.kind != "orientations" && item.kind != "symbols") {
+        diags_.error("E041", item.kindRange, "unknown tileset item '" + item.kind + "' (expected " + kItemKinds + ")");
+        ok = false;
+        continue;
+      }
+      if (!item.name.empty()) {
+        diags_.error("E041", item.nameRange, "'" + item.kind + "' takes no name: `" + item.kind +
+                                                 (item.kind == "symbols" ? " \"AB\";`" : " 0, 90, 180, 270;`"));
+        ok = false;
+        continue;
+      }
+      bool& given = item.kind == "symbols" ? haveSymbols : haveOrientations;
+      if (given) {
+        diags_.error("E041", item.kindRange, "'" + item.kind + "' is given twice in tileset '" + d.name + "'");
+        ok = false;
+        continue;
+      }
+      given = true;
+      if (item.kind == "symbols") {
+        ConstValue v;
+        const Expr* value = item.values.size() == 1 ? item.values[0].get() : nullptr;
+        if (!value || !evalConst(*value, v) || v.type != ValueType::Str) {
+          diags_.error("E041", item.values.empty() || !item.values[0] ? item.range : item.values[0]->range,
+                       "'symbols' is one constant string, a letter per locus x section: `symbols \"AB\";`");
+          ok = false;
+        } else {
+          info.symbols = v.str;
+        }
+        continue;
+      }
+      for (const ExprPtr& e : item.values) {
+        if (!e) continue;  // a syntax error, reported already
+        ConstValue v;
+        const bool number = evalConst(*e, v) && v.type == ValueType::Num;
+        const bool quarter = number && (v.num == 0 || v.num == 90 || v.num == 180 || v.num == 270);
+        if (!quarter) {
+          diags_.error("E041", e->range,
+                       "an orientation is 0, 90, 180 or 270 (degrees)" +
+                           (number ? ", got " + formatNumber(v.num) : std::string()));
+          ok = false;
+        } else if (std::find(info.orientations.begin(), info.orientations.end(), int(v.num)) != info.orientations.end()) {
+          diags_.error("E041", e->range, "orientation " + formatNumber(v.num) + " is listed twice");
+          ok = false;
+        } else {
+          info.orientations.push_back(int(v.num));
+        }
+      }
+    }
+    if (ok && (info.loci.empty() || info.sections.empty())) {
+      diags_.error("E041", d.nameRange,
+                   "tileset '" + d.name + "' needs at least one locus and one section, e.g. `locus arc = " +
+                       "cubic((0.5, 0), (0.5, 0.276), (0.724, 0.5), (1, 0.5)); section round = " +
+                       "polyline((-1, 0), (0, 1), (1, 0));`");
+      ok = false;
+    }
+    if (ok) res_.tilesets.push_back(std::move(info));
+  }
+}
+
+}  // namespace fgsg::frontend::sema_detail
