@@ -86,8 +86,12 @@ struct PolycubeMap::Impl {
   double cellSize = 0;
   Vec3 origin = Vec3::Zero();
   Vec3i cells = Vec3i::Zero();
-  std::vector<uint8_t> solid;  // per cell, x fastest
+  std::vector<uint8_t> solid;    // per cell, x fastest
+  std::vector<uint8_t> touched;  // per cell: the surface touches it
+  // (cell index, face) for every face touching a cell, sorted: the faces near a cell.
+  std::vector<std::pair<size_t, int>> cellFaces;
   size_t solidCount = 0;
+  bool enclosing = false;  // the fallback rule was used (no cell centre inside)
   std::vector<Facelet> facelets;
   std::vector<Vec3i> faceletOrigin;                // texture-space corner (a, b) = (0, 0)
   std::vector<std::array<Vec3, 4>> cornerDirection;  // d at (0,0), (1,0), (0,1), (1,1)
@@ -110,13 +114,15 @@ struct PolycubeMap::Impl {
 
   void chooseGrid(const PolycubeOptions& o);
   void markTouchedCells();
-  void fillEnclosed();
+  void chooseSolid();
+  bool centreInside(const Vec3i& c) const;
   void regularise();
   Vec3 vertexDirection(const Vec3i& v) const;
   bool regularAt(const Vec3i& v, Vec3i& lo, Vec3i& hi) const;
   void collectFacelets(size_t maxFacelets);
   void buildScene();
   bool refineHit(int face, const Vec3& p, const Vec3& d, int& outFace, Vec3& outBary) const;
+  bool castLine(const Vec3& p, const Vec3& d, int& outFace, Vec3& outBary) const;
   void nearest(const Vec3& p, int& outFace, Vec3& outBary) const;
 };
 
@@ -145,10 +151,12 @@ void PolycubeMap::Impl::chooseGrid(const PolycubeOptions& o) {
   texture.resize(mesh.vertices.size());
   for (size_t i = 0; i < texture.size(); ++i) texture[i] = (mesh.vertices[i] - origin) / cellSize;
   solid.assign(size_t(cells.x()) * cells.y() * cells.z(), 0);
+  touched.assign(solid.size(), 0);
 }
 
 void PolycubeMap::Impl::markTouchedCells() {
-  for (const auto& f : mesh.faces) {
+  for (size_t fi = 0; fi < mesh.faces.size(); ++fi) {
+    const auto& f = mesh.faces[fi];
     const Vec3 &a = texture[f[0]], &b = texture[f[1]], &c = texture[f[2]];
     const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
     Vec3i from, to;
@@ -159,23 +167,69 @@ void PolycubeMap::Impl::markTouchedCells() {
     for (int z = from.z(); z <= to.z(); ++z)
       for (int y = from.y(); y <= to.y(); ++y)
         for (int x = from.x(); x <= to.x(); ++x) {
-          uint8_t& s = solid[index(x, y, z)];
-          if (s) continue;
           const Vec3 centre(x + 0.5, y + 0.5, z + 0.5);
-          if (triangleTouchesCube(a - centre, b - centre, c - centre, 0.5 + kTouchSlack)) s = 1;
+          if (!triangleTouchesCube(a - centre, b - centre, c - centre, 0.5 + kTouchSlack)) continue;
+          touched[index(x, y, z)] = 1;
+          cellFaces.push_back({index(x, y, z), int(fi)});
         }
   }
+  std::sort(cellFaces.begin(), cellFaces.end());
 }
 
-// Flood fill the outside from the grid's border (all empty: the padding) through untouched
-// cells; every cell it does not reach is solid.
-void PolycubeMap::Impl::fillEnclosed() {
+// Is the centre of touched cell c on the inner side of the surface? The nearest surface
+// point lies within half a cell diagonal, so among the faces touching the 3x3x3 cells
+// around c; its side is the sign against the angle-weighted pseudo-normal of the feature
+// it lies on (face, edge or vertex), which is exact for a closed mesh (Baerentzen and
+// Aanaes 2005) and the nearest face's side for an open one.
+bool PolycubeMap::Impl::centreInside(const Vec3i& c) const {
+  const Vec3 centre = c.cast<double>() + Vec3::Constant(0.5);
+  double best = std::numeric_limits<double>::infinity();
+  int face = -1;
+  Vec3 bary;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Vec3i n = c + Vec3i(dx, dy, dz);
+        if (!inside(n)) continue;
+        const size_t i = index(n.x(), n.y(), n.z());
+        auto it = std::lower_bound(cellFaces.begin(), cellFaces.end(), std::pair<size_t, int>{i, -1});
+        for (; it != cellFaces.end() && it->first == i; ++it) {
+          const auto& f = mesh.faces[it->second];
+          const Vec3 b = nearestOnTriangle(centre, texture[f[0]], texture[f[1]], texture[f[2]]);
+          const double d = (b[0] * texture[f[0]] + b[1] * texture[f[1]] + b[2] * texture[f[2]] - centre).squaredNorm();
+          // Ties (a vertex or edge shared by several faces) go to the lowest face index.
+          if (d < best || (d == best && it->second < face)) best = d, face = it->second, bary = b;
+        }
+      }
+  if (face < 0) return false;
+  const auto& f = mesh.faces[face];
+  const Vec3 q = bary[0] * texture[f[0]] + bary[1] * texture[f[1]] + bary[2] * texture[f[2]];
+  Vec3 pseudo = mesh.faceNormals[face];
+  const int zeros = (bary[0] == 0) + (bary[1] == 0) + (bary[2] == 0);
+  if (zeros == 2) {
+    int k;
+    bary.maxCoeff(&k);
+    pseudo = mesh.vertexNormals[f[k]];
+  } else if (zeros == 1) {
+    int k;
+    bary.minCoeff(&k);  // the edge opposite corner k: edge (k + 1) % 3
+    const int other = mesh.neighbours[face][(k + 1) % 3];
+    if (other >= 0) pseudo += mesh.faceNormals[other];
+  }
+  return (centre - q).dot(pseudo) <= 0;
+}
+
+// The solid: a flood fill from the grid's border (all padding) through untouched cells
+// marks the outside; untouched cells it does not reach are enclosed by the surface and
+// solid; touched cells are solid when their centre is inside. When that leaves nothing
+// (a surface thinner than a cell everywhere), every touched or enclosed cell is solid.
+void PolycubeMap::Impl::chooseSolid() {
   std::vector<uint8_t> outside(solid.size(), 0);
   std::vector<Vec3i> stack;
   const auto push = [&](const Vec3i& c) {
     if (!inside(c)) return;
     const size_t i = index(c.x(), c.y(), c.z());
-    if (solid[i] || outside[i]) return;
+    if (touched[i] || outside[i]) return;
     outside[i] = 1;
     stack.push_back(c);
   };
@@ -189,9 +243,16 @@ void PolycubeMap::Impl::fillEnclosed() {
     }
   }
   solidCount = 0;
-  for (size_t i = 0; i < solid.size(); ++i) {
-    solid[i] = !outside[i];
-    solidCount += solid[i];
+  for (int z = 0; z < cells.z(); ++z)
+    for (int y = 0; y < cells.y(); ++y)
+      for (int x = 0; x < cells.x(); ++x) {
+        const size_t i = index(x, y, z);
+        solid[i] = touched[i] ? centreInside(Vec3i(x, y, z)) : !outside[i];
+        solidCount += solid[i];
+      }
+  if (solidCount == 0) {
+    enclosing = true;
+    for (size_t i = 0; i < solid.size(); ++i) solid[i] = !outside[i], solidCount += solid[i];
   }
 }
 
@@ -335,6 +396,34 @@ bool PolycubeMap::Impl::refineHit(int face, const Vec3& p, const Vec3& d, int& o
   return true;
 }
 
+// The surface point nearest p on the line p + t d, either side (t of either sign): forward
+// first, then backward no farther than the forward hit.
+bool PolycubeMap::Impl::castLine(const Vec3& p, const Vec3& d, int& outFace, Vec3& outBary) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  int face = -1;
+  Vec3 dir = d, bary;
+  float tfar = std::numeric_limits<float>::infinity();
+  for (const double sign : {1.0, -1.0}) {
+    RTCRayHit rh{};
+    rh.ray.org_x = float(p.x()), rh.ray.org_y = float(p.y()), rh.ray.org_z = float(p.z());
+    rh.ray.dir_x = float(sign * d.x()), rh.ray.dir_y = float(sign * d.y()), rh.ray.dir_z = float(sign * d.z());
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = tfar;
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &ctx, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+    face = int(rh.hit.primID);
+    bary = Vec3(1 - rh.hit.u - rh.hit.v, rh.hit.u, rh.hit.v);  // Embree's u, v weight corners 1, 2
+    dir = sign * d;
+    tfar = rh.ray.tfar;
+  }
+  if (face < 0) return false;
+  if (!refineHit(face, p, dir, outFace, outBary)) outFace = face, outBary = clampBary(bary);
+  return true;
+}
+
 // Brute force over all faces: the fallback is rare.
 void PolycubeMap::Impl::nearest(const Vec3& p, int& outFace, Vec3& outBary) const {
   double best = std::numeric_limits<double>::infinity();
@@ -361,7 +450,7 @@ PolycubeMap::PolycubeMap(const surface::SurfaceMesh& mesh, const PolycubeOptions
   m.mesh = mesh;
   m.chooseGrid(options);
   m.markTouchedCells();
-  m.fillEnclosed();
+  m.chooseSolid();
   m.regularise();
   m.collectFacelets(options.maxFacelets);
   m.buildScene();
@@ -410,25 +499,9 @@ MappedPoint PolycubeMap::map(size_t facelet, double a, double b) const {
   const auto& cd = m.cornerDirection[facelet];
   const Vec3 d = (1 - a) * (1 - b) * cd[0] + a * (1 - b) * cd[1] + (1 - a) * b * cd[2] + a * b * cd[3];
 
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
-  RTCRayHit rh{};
-  rh.ray.org_x = float(p.x()), rh.ray.org_y = float(p.y()), rh.ray.org_z = float(p.z());
-  rh.ray.dir_x = float(d.x()), rh.ray.dir_y = float(d.y()), rh.ray.dir_z = float(d.z());
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = ~0u;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(m.scene, &ctx, &rh);
-
   MappedPoint out;
-  if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-    out.hit = true;
-    const int face = int(rh.hit.primID);
-    // Embree's (u, v) weight corners 1 and 2.
-    if (!m.refineHit(face, p, d, out.face, out.bary))
-      out.face = face, out.bary = clampBary(Vec3(1 - rh.hit.u - rh.hit.v, rh.hit.u, rh.hit.v));
-  } else {
+  out.hit = m.castLine(p, d, out.face, out.bary);
+  if (!out.hit) {
     m.fallbacks.fetch_add(1, std::memory_order_relaxed);
     m.nearest(p, out.face, out.bary);
   }

@@ -1,7 +1,7 @@
 // The inverse poly-cube map of Chan & Hui 2013 §5.1 (after Tarini et al. 2004,
-// PolyCube-Maps, the paper's [14]): a polycube around a surface whose boundary is made of
-// unit squares, the "face-lets"; a 2D pattern laid on every face-let in [0,1]^2 is carried
-// onto the surface by casting a ray from each face-let point towards the surface.
+// PolyCube-Maps, the paper's [14]): a polycube approximating a surface, whose boundary is
+// made of unit squares, the "face-lets"; a 2D pattern laid on every face-let in [0,1]^2 is
+// carried onto the surface by casting a ray from each face-let point to the surface.
 //
 //   PolycubeMap pc(mesh, {.resolution = 16});
 //   for (size_t f = 0; f < pc.facelets().size(); ++f) {
@@ -17,24 +17,30 @@
 //
 // The polycube (our rule; the paper takes Tarini's hand-made polycubes). A regular grid
 // aligned with the mesh's bounding box (its minimum corner is a lattice point), `resolution`
-// cells along the largest extent, padded by two cells on every side. The solid is
-//   1. every cell the surface touches (exact triangle-box overlap test, closed cells,
-//      enlarged by 1e-4 cell so a surface lying on a cell face fills both cells), plus
-//   2. every cell enclosed by those: cells an outside flood fill (6-connected, from the
-//      grid's border, through untouched cells) does not reach. A watertight surface
-//      separates its inside from the border, so its whole inside is filled; an open one
-//      (a plane, a cylinder without caps) lets the fill in and its solid is the shell of
-//      touched cells, one or two cells thick, with face-lets on both sides of the sheet.
-//   3. regularised: at a lattice vertex where the direction of item "Projection" below
-//      does not point into the solid through every face-let meeting there (a non-manifold
-//      vertex or edge, e.g. two cells sharing only an edge, or a cell under an overhang),
-//      the smallest box of the vertex's eight cells holding all its solid cells is filled;
-//      repeated until no such vertex is left. This only adds cells inside the solid's
-//      bounding box (a box is regular everywhere), so it ends.
-// So the closed surface lies strictly inside the solid, at most about one cell diagonal
-// from the polycube's boundary, and a ray from a face-let into the solid meets it first.
-// Face-lets are the cell faces between a solid cell and an empty one, each with its
-// outward normal.
+// cells along the largest extent, padded by two empty cells on every side. A cell is solid
+//   1. when the surface touches it (exact triangle-box overlap test on the closed cell,
+//      enlarged by 1e-4 cell) and its centre is inside: on the inner side of the nearest
+//      surface point, judged by the angle-weighted pseudo-normal of the face, edge or
+//      vertex that point lies on (exact for a closed mesh; for a mesh with boundary this
+//      is the nearest face's side), or
+//   2. when the surface does not touch it and it is enclosed: an outside flood fill
+//      (6-connected, from the padding, through untouched cells) does not reach it. A
+//      watertight surface separates its inside from the padding; an open one (a plane, a
+//      cylinder without caps) lets the fill in, and its solid is the layer of touched cells
+//      behind the sheet.
+//   (When that leaves no solid cell at all, e.g. a surface thinner than a cell everywhere,
+//   every touched or enclosed cell is solid instead.)
+//   3. Regularised: at a lattice vertex where the direction d(v) below does not point into
+//      the solid through every face-let meeting there (a non-manifold vertex or edge, e.g.
+//      two cells sharing only an edge, or a cell under an overhang), the smallest box of the
+//      vertex's eight cells holding all its solid cells is filled; repeated until no such
+//      vertex is left. This only adds cells inside the solid's bounding box (a box is
+//      regular everywhere), so it ends.
+// So the polycube hugs the surface: for a closed mesh every solid cell's centre is inside
+// and the surface crosses the face-lets' neighbourhood within about a cell. Parts thinner
+// than a cell may hold no cell centre and then have no face-lets of their own (they are
+// reached only by rays passing them). Face-lets are the cell faces between a solid cell and
+// an empty one, each with its outward normal.
 //
 // Projection (§5.1.4, Table 1). Every lattice vertex v on the polycube gets the direction
 //   d(v) = componentwise sign of sum over the solid cells c around v of (centre(c) - v),
@@ -63,13 +69,16 @@
 // point. Regularisation makes d(v) . normal < 0 for every face-let at v, so D(a,b) always
 // points into the solid.
 //
-// The ray starts at the face-let point (texture space) and the first surface hit is taken
-// (Embree 3, robust mode; the hit is then recomputed in double precision on the hit
-// triangle, walking to the neighbouring triangle when the float hit was across an edge).
-// Fallback: when the ray meets nothing (possible where a thin part lies beside the ray),
-// the nearest surface point to the face-let point is taken instead and `hit` is false;
-// fallbackCount() counts these. A ray in the opposite direction is not tried: the surface
-// lies inside the solid, so anything found outwards is a different part of the surface.
+// The surface point is found on the LINE through the face-let point along D (texture
+// space): the hit nearest the point, forwards or backwards (the surface may lie on either
+// side of a face-let, since the polycube crosses it), with Embree 3 in robust mode; the hit
+// is then recomputed in double precision on the hit triangle, walking to the neighbouring
+// triangle when the float hit was across an edge. Fallback: when the line meets nothing
+// (it can pass beside a part thinner than a cell or a strongly curved one near a polycube
+// corner, and always does beyond the border of an open surface), the surface point nearest
+// the face-let point is taken instead (brute force over the faces) and `hit` is false;
+// fallbackCount() counts these. Both are functions of the face-let point alone, so the
+// fallback keeps the map seamless.
 //
 // The result (§5.1.4's last step): face and barycentric coordinates, the position, the
 // smooth normal (vertex normals interpolated, unit) and tangents: tangentU / tangentV are
@@ -119,7 +128,7 @@ struct Facelet {
 
 // A face-let point carried onto the surface.
 struct MappedPoint {
-  bool hit = false;  // false: the ray met nothing and this is the nearest surface point
+  bool hit = false;  // false: the line met nothing and this is the nearest surface point
   Vec3 position = Vec3::Zero();
   Vec3 normal = Vec3::Zero();    // smooth, unit
   Vec3 tangentU = Vec3::Zero();  // unit, orthogonal to normal
