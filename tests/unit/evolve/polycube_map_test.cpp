@@ -17,6 +17,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace fgsg::rt::evolve;
@@ -325,4 +326,19 @@ TEST_CASE("polycube map of the bunny: (almost) every point hits, seamless", "[po
     CHECK(s.vertexError < 1e-9);
     checkFrames(pc, 5);
   }
+}
+
+TEST_CASE("polycube map: map() from several threads gives the serial results", "[polycube]") {
+  const PolycubeMap pc(fgsg::rt::surface::torus(1.0, 0.4, 24), {.resolution = 10});
+  const size_t n = pc.facelets().size();
+  std::vector<Vec3> serial(n * 25), parallel(n * 25);
+  const auto run = [&](std::vector<Vec3>& out, size_t from, size_t step) {
+    for (size_t f = from; f < n; f += step)
+      for (int k = 0; k < 25; ++k) out[f * 25 + size_t(k)] = pc.map(f, (k % 5) / 4.0, (k / 5) / 4.0).position;
+  };
+  run(serial, 0, 1);
+  std::vector<std::thread> threads;
+  for (size_t t = 0; t < 4; ++t) threads.emplace_back([&, t] { run(parallel, t, 4); });
+  for (auto& t : threads) t.join();
+  CHECK(serial == parallel);
 }
