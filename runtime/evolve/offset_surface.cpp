@@ -141,9 +141,7 @@ struct Shell {
 };
 
 // ---------------------------------------------------------------------------------------
-// The uniform grid: each triangle's bounding box is entered in every cell it overlaps; a
-// pair of overlapping boxes is examined only in the cell holding the lower corner of their
-// common box, so exactly once.
+// The uniform grid: each triangle's bounding box is entered in every cell it overlaps.
 
 struct Box {
   std::array<double, 3> lo, hi;
@@ -152,25 +150,33 @@ struct Box {
 constexpr int kCellBits = 21;  // per axis, packed into a 64-bit key
 constexpr int64_t kMaxCells = (int64_t(1) << kCellBits) - 1;
 
-struct Grid {
-  std::array<double, 3> origin{};
-  double cell = 1;
+struct CellRange {  // the cells a box overlaps, inclusive
+  std::array<int64_t, 3> lo, hi;
+  size_t count() const { return size_t(hi[0] - lo[0] + 1) * size_t(hi[1] - lo[1] + 1) * size_t(hi[2] - lo[2] + 1); }
+};
 
-  int64_t coord(double x, int axis) const { return int64_t(std::floor((x - origin[axis]) / cell)); }
-  static uint64_t key(int64_t i, int64_t j, int64_t k) {
-    return (uint64_t(i) << (2 * kCellBits)) | (uint64_t(j) << kCellBits) | uint64_t(k);
-  }
-  size_t cellsOf(const Box& b) const {
-    size_t n = 1;
-    for (int a = 0; a < 3; ++a) n *= size_t(coord(b.hi[a], a) - coord(b.lo[a], a) + 1);
-    return n;
-  }
+uint64_t cellKey(int64_t i, int64_t j, int64_t k) {
+  return (uint64_t(i) << (2 * kCellBits)) | (uint64_t(j) << kCellBits) | uint64_t(k);
+}
+
+template <typename F>
+void forEachCell(const CellRange& r, F&& f) {
+  for (int64_t i = r.lo[0]; i <= r.hi[0]; ++i)
+    for (int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
+      for (int64_t k = r.lo[2]; k <= r.hi[2]; ++k) f(cellKey(i, j, k));
+}
+
+struct Entry {
+  uint64_t key;
+  int tri;
+  bool operator<(const Entry& o) const { return std::tie(key, tri) < std::tie(o.key, o.tri); }
 };
 
 // The intersecting pairs among those with at least one offset face marked in `moved` (one
 // flag per face; empty: all faces). A pair whose faces both stayed put keeps its outcome.
 std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>& moved = {}) {
   const int T = 2 * shell.F;
+  auto isMoved = [&](int t) { return !shell.isMesh(t) && (moved.empty() || moved[t]); };
   std::vector<Box> boxes(T);
   tbb::parallel_for(0, T, [&](int t) {
     const auto c = shell.corners(t);
@@ -183,43 +189,55 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
 
   // Cells about one triangle across (the mean largest box extent), coarser if the triangles
   // would fill too many cells or the grid would need more cells per axis than a key holds.
-  Grid grid;
-  std::array<double, 3> hi{};
+  // The cell size changes only the speed, never the pairs found.
+  std::array<double, 3> origin = boxes[0].lo, top = boxes[0].hi;
   double extent = 0;
-  for (int a = 0; a < 3; ++a) grid.origin[a] = hi[a] = boxes[0].lo[a];
-  for (const Box& b : boxes)
-    for (int a = 0; a < 3; ++a) {
-      grid.origin[a] = std::min(grid.origin[a], b.lo[a]);
-      hi[a] = std::max(hi[a], b.hi[a]);
-    }
-  for (const Box& b : boxes)
+  for (const Box& b : boxes) {
+    for (int a = 0; a < 3; ++a) origin[a] = std::min(origin[a], b.lo[a]), top[a] = std::max(top[a], b.hi[a]);
     extent += std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
-  double span = std::max({hi[0] - grid.origin[0], hi[1] - grid.origin[1], hi[2] - grid.origin[2]});
+  }
+  double span = std::max({top[0] - origin[0], top[1] - origin[1], top[2] - origin[2]});
   if (!(span > 0)) span = 1;  // every triangle in one point
-  grid.cell = std::max(extent / T, span / double(kMaxCells - 1));
-  if (!(grid.cell > 0)) grid.cell = span;
-  std::vector<size_t> first(T + 1, 0);  // triangle t's entries start at first[t]
+  double cell = std::max(extent / T, span / double(kMaxCells - 1));
+  std::vector<CellRange> ranges(T);
   for (;;) {
-    tbb::parallel_for(0, T, [&](int t) { first[t + 1] = grid.cellsOf(boxes[t]); });
-    first[0] = 0;
-    for (int t = 0; t < T; ++t) first[t + 1] += first[t];
-    if (first[T] <= size_t(T) * 32) break;
-    grid.cell *= 2;  // a few huge triangles: fewer, larger cells
+    tbb::parallel_for(0, T, [&](int t) {
+      for (int a = 0; a < 3; ++a) {
+        ranges[t].lo[a] = int64_t(std::floor((boxes[t].lo[a] - origin[a]) / cell));
+        ranges[t].hi[a] = int64_t(std::floor((boxes[t].hi[a] - origin[a]) / cell));
+      }
+    });
+    size_t total = 0;
+    for (const CellRange& r : ranges) total += r.count();
+    if (total <= size_t(T) * 32) break;
+    cell *= 2;  // a few huge triangles: fewer, larger cells
   }
 
-  struct Entry {
-    uint64_t key;
-    int tri;
-    bool operator<(const Entry& o) const { return std::tie(key, tri) < std::tie(o.key, o.tri); }
+  // After the first round only cells holding a moved face matter: the others' entries
+  // there are all that is kept.
+  std::vector<uint64_t> movedCells;
+  if (!moved.empty()) {
+    for (int t = 0; t < shell.F; ++t)
+      if (moved[t]) forEachCell(ranges[t], [&](uint64_t key) { movedCells.push_back(key); });
+    tbb::parallel_sort(movedCells.begin(), movedCells.end());
+    movedCells.erase(std::unique(movedCells.begin(), movedCells.end()), movedCells.end());
+  }
+  auto wanted = [&](int t, uint64_t key) {
+    return moved.empty() || isMoved(t) || std::binary_search(movedCells.begin(), movedCells.end(), key);
   };
+  std::vector<size_t> first(T + 1, 0);  // triangle t's entries start at first[t]
+  tbb::parallel_for(0, T, [&](int t) {
+    size_t n = 0;
+    forEachCell(ranges[t], [&](uint64_t key) { n += wanted(t, key); });
+    first[t + 1] = n;
+  });
+  for (int t = 0; t < T; ++t) first[t + 1] += first[t];
   std::vector<Entry> entries(first[T]);
   tbb::parallel_for(0, T, [&](int t) {
-    const Box& b = boxes[t];
     size_t e = first[t];
-    for (int64_t i = grid.coord(b.lo[0], 0); i <= grid.coord(b.hi[0], 0); ++i)
-      for (int64_t j = grid.coord(b.lo[1], 1); j <= grid.coord(b.hi[1], 1); ++j)
-        for (int64_t k = grid.coord(b.lo[2], 2); k <= grid.coord(b.hi[2], 2); ++k)
-          entries[e++] = {Grid::key(i, j, k), t};
+    forEachCell(ranges[t], [&](uint64_t key) {
+      if (wanted(t, key)) entries[e++] = {key, t};
+    });
   });
   tbb::parallel_sort(entries.begin(), entries.end());
   std::vector<size_t> cellStart;
@@ -227,7 +245,8 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
     if (e == 0 || entries[e].key != entries[e - 1].key) cellStart.push_back(e);
   cellStart.push_back(entries.size());
 
-  auto isMoved = [&](int t) { return !shell.isMesh(t) && (moved.empty() || moved[t]); };
+  // A pair whose boxes overlap is examined only in the cell of the lower corner of their
+  // common box: the cell (max of the lower cells) both boxes reach, so exactly once.
   tbb::enumerable_thread_specific<std::vector<OffsetContact>> found;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, cellStart.size() - 1), [&](const tbb::blocked_range<size_t>& r) {
     auto& out = found.local();
@@ -243,13 +262,10 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
           const int t = entries[y].tri;
           if (t == s || (t < s && isMoved(t))) continue;
           const Box &bs = boxes[s], &bt = boxes[t];
-          std::array<double, 3> low;
-          bool overlap = true;
-          for (int a = 0; a < 3; ++a) {
-            overlap = overlap && bs.lo[a] <= bt.hi[a] && bt.lo[a] <= bs.hi[a];
-            low[a] = std::max(bs.lo[a], bt.lo[a]);
-          }
-          if (!overlap || Grid::key(grid.coord(low[0], 0), grid.coord(low[1], 1), grid.coord(low[2], 2)) != key)
+          const CellRange &rs = ranges[s], &rt = ranges[t];
+          if (bs.lo[0] > bt.hi[0] || bt.lo[0] > bs.hi[0] || bs.lo[1] > bt.hi[1] || bt.lo[1] > bs.hi[1] ||
+              bs.lo[2] > bt.hi[2] || bt.lo[2] > bs.hi[2] ||
+              cellKey(std::max(rs.lo[0], rt.lo[0]), std::max(rs.lo[1], rt.lo[1]), std::max(rs.lo[2], rt.lo[2])) != key)
             continue;
           if (!intersect(shell.corners(s), shell.ids(s), shell.corners(t), shell.ids(t))) continue;
           if (shell.isMesh(t)) out.push_back({s, t - shell.F, true});
