@@ -174,6 +174,26 @@ TEST_CASE("contact is not intersection: a flat sheet, lifted evenly or pinched t
   CHECK(s.revertedVertices == 0);
 }
 
+TEST_CASE("neighbours across an edge intersect only when they fold onto each other", "[offset]") {
+  // Two triangles sharing the edge u v in the plane z = 0; with the normals set by hand,
+  // the offset lifts u, v, a straight up to z = 1 and moves b to (0.5, -0.25, 1): over the
+  // edge, onto the other triangle's side, in the same plane.
+  SurfaceMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.5, 0}, {0.5, -1, 0}};  // u v b a
+  m.faces = {{0, 1, 2}, {1, 0, 3}};
+  m.buildTopology();
+  std::vector<double> h(4, 1.0);
+  CHECK(offsetContacts(m, h).empty());  // flat: touching along the edge only
+  m.vertexNormals = {{0, 0, 1}, {0, 0, 1}, {0, -0.6, 0.8}, {0, 0, 1}};
+  h[2] = 1.25;
+  REQUIRE(m.vertices[2] + h[2] * m.vertexNormals[2] == Vec3(0.5, -0.25, 1));
+  CHECK(offsetContacts(m, h) == std::vector<OffsetContact>{{0, 1, false}});
+  CHECK(bruteContacts(m, h) == std::vector<OffsetContact>{{0, 1, false}});
+  h[2] = 0.5;  // b' = (0.5, 0.2, 0.4): on its own side, and out of the plane
+  CHECK(offsetContacts(m, h).empty());
+  CHECK(bruteContacts(m, h).empty());
+}
+
 TEST_CASE("a crowded torus hole: the full step intersects, the result does not", "[offset]") {
   // Hole radius R - r = 0.1, full step 0.1 x diagonal = 0.57: the inner side's offsets
   // cross each other around the axis.
@@ -249,6 +269,38 @@ TEST_CASE("a narrow valley: the offset of one wall crosses the other", "[offset]
   // The far corners end within the valley's width there.
   CHECK(s.height[2] < 2 * std::sin(angle / 2));
   CHECK(bruteContacts(m, s.height).empty());
+}
+
+TEST_CASE("after maxRounds, vertices still in the way go back onto the mesh", "[offset]") {
+  const SurfaceMesh m = surface::torus(1.0, 0.9, 20);
+  OffsetOptions o;
+  o.maxRounds = 2;  // one halving, then straight to 0
+  const OffsetSurface s = offsetSurface(m, o);
+  CHECK(s.intersectionFree);
+  CHECK(s.zeroedVertices > 0);
+  CHECK(s.rounds >= 3);
+  requireSane(s, m);
+  for (double h : s.height) REQUIRE((h == 0 || h == s.fullStep || h == s.fullStep / 2));
+  CHECK(bruteContacts(m, s.height).empty());
+}
+
+TEST_CASE("a mesh that intersects itself cannot have a free offset, and the rounds end", "[offset]") {
+  // Two unit spheres one apart, as one mesh: their faces cross along a circle.
+  const SurfaceMesh m = join(surface::sphere(1.0, 2), translated(surface::sphere(1.0, 2), Vec3(1, 0, 0)));
+  OffsetOptions o;
+  o.maxRounds = 5;
+  const OffsetSurface s = offsetSurface(m, o);
+  CHECK_FALSE(s.intersectionFree);
+  CHECK(s.zeroedVertices > 0);
+  requireSane(s, m);
+  // What is left is the mesh's own crossing: offset faces lying on their mesh faces.
+  const std::vector<OffsetContact> left = offsetContacts(m, s.height);
+  REQUIRE_FALSE(left.empty());
+  for (const OffsetContact& c : left) {
+    for (int v : m.faces[c.offsetFace]) REQUIRE(s.height[v] == 0);
+    if (!c.faceIsMesh)
+      for (int v : m.faces[c.face]) REQUIRE(s.height[v] == 0);
+  }
 }
 
 TEST_CASE("heightAt interpolates the vertex heights", "[offset]") {
