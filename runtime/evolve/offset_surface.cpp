@@ -29,6 +29,12 @@ using P3 = K::Point_3;
 using Segment = K::Segment_3;
 using Triangle = K::Triangle_3;
 
+// Vertex v's offset point: the one expression both the search and the result use, so that
+// the result is exactly what was searched.
+Vec3 offsetPoint(const surface::SurfaceMesh& m, const std::vector<double>& height, int v) {
+  return m.vertices[v] + height[v] * m.vertexNormals[v];
+}
+
 // ---------------------------------------------------------------------------------------
 // Exact tests between closed triangles that may be degenerate. CGAL's triangle tests
 // require proper triangles, and an offset face can collapse (its corners moved by
@@ -119,7 +125,7 @@ struct Shell {
     offsetId.resize(V);
     tbb::parallel_for(0, V, [&](int v) {
       const Vec3& x = m.vertices[v];
-      const Vec3 o = x + height[v] * m.vertexNormals[v];
+      const Vec3 o = offsetPoint(m, height, v);
       meshPoints[v] = P3(x.x(), x.y(), x.z());
       offsetPoints[v] = P3(o.x(), o.y(), o.z());
       offsetId[v] = height[v] == 0 ? v : V + v;
@@ -363,7 +369,7 @@ OffsetSurface offsetSurface(const surface::SurfaceMesh& mesh, const OffsetOption
 
   s.vertices.resize(V);
   for (int v = 0; v < V; ++v) {
-    s.vertices[v] = mesh.vertices[v] + s.height[v] * mesh.vertexNormals[v];
+    s.vertices[v] = offsetPoint(mesh, s.height, v);
     if (s.height[v] < s.fullStep) ++s.revertedVertices;
     if (s.height[v] == 0) ++s.zeroedVertices;
   }

@@ -36,6 +36,10 @@
 //     the third corners on the same side of the shared edge;
 //   - three corners are the same triangle (an offset face lying on its mesh face): never.
 // The tests use exact predicates (CGAL's filtered Epick kernel) on the double coordinates.
+// Not seen: an offset face turned right over a neighbour it shares an edge with, past their
+// common plane (they then meet only along the edge). While that edge is off the mesh such a
+// face crosses the neighbour's mesh face first, which is seen; with the edge's vertices
+// put back on the mesh (after maxRounds) it could go unnoticed.
 //
 // Search. The paper uses an octree; we use a uniform grid of the triangles' bounding boxes
 // (cells about one triangle across), each candidate pair found in exactly one cell, tested
