@@ -41,7 +41,7 @@ const CommandInfo kCommands[] = {
     {CommandId::LineSeg, "LineSeg", 0, 1, BodyRule::None, "LineSeg(length)", nullptr},
     {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,
      "Synthesize(\"example.txt\", nx, ny, nz)", nullptr},
-    {CommandId::Evolve, "Evolve", 2, 4, BodyRule::None, "Evolve(tileset or \"tiles.json\", generation, k, p4)", nullptr},
+    {CommandId::Evolve, "Evolve", 2, 5, BodyRule::None, "Evolve(tileset or \"tiles.json\", generation, k, p4, resolution)", nullptr},
     {CommandId::Cells, "Cells", 0, -1, BodyRule::Optional, "Cells(...)", kSolvers},
 };
 

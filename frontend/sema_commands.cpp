@@ -142,6 +142,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       expect(*item.args[1], w, ValueType::Num, "the generation of 'Evolve'");
       if (n > 2) expect(*item.args[2], w, ValueType::Num, "the rule size k of 'Evolve'");
       if (n > 3) expect(*item.args[3], w, ValueType::Bool, "the p4 flag of 'Evolve'");
+      if (n > 4) expect(*item.args[4], w, ValueType::Num, "the polycube resolution of 'Evolve'");
       break;
     case CommandId::Cells:
       for (const auto& a : item.args) typeOf(*a, w, true);

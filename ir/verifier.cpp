@@ -482,8 +482,8 @@ class Verifier {
         if (op.index > m_.tileSets.size())
           problem("tileset " + std::to_string(op.index) + " of " + std::to_string(m_.tileSets.size()));
         expectBodies(op, 0);
-        if (op.args.empty() || op.args.size() > 3) {
-          problem(std::to_string(op.args.size()) + " arguments, expected 1 to 3 (generation, k, p4)");
+        if (op.args.empty() || op.args.size() > 4) {
+          problem(std::to_string(op.args.size()) + " arguments, expected 1 to 4 (generation, k, p4, resolution)");
         } else {
           for (size_t k = 0; k < op.args.size(); ++k) {
             expectType(op.args[k], k == 2 ? Type::Bool : Type::Num, k == 2 ? "p4 flag" : "number");

@@ -4,7 +4,12 @@
 #include "backend/engine/derivation.h"
 #include "runtime/evolve/genetic.h"
 #include "runtime/evolve/lsystem2d.h"
+#include "runtime/evolve/offset_surface.h"
 #include "runtime/evolve/ornament.h"
+#include "runtime/evolve/polycube_map.h"
+#include "runtime/evolve/surface_ornament.h"
+#include "runtime/surface/surface_mesh.h"
+#include "backend/commands/surface_world.h"
 #include "runtime/io/find_file.h"
 
 #include <cmath>
@@ -15,6 +20,8 @@ namespace {
 
 // Patterns beyond this many cells a side are a grammar's mistake, not an ornament.
 constexpr int kMaxSide = 4096;
+// Polycube cells along the surface's largest extent when Evolve does not say.
+constexpr int kDefaultPolycubeResolution = 8;
 
 // A whole number in [lo, hi] from an argument, or R025 naming it.
 int wholeArg(double v, int lo, int hi, const char* what, ir::Loc at) {
@@ -64,6 +71,13 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
   } catch (const std::invalid_argument& e) {
     throw DeriveError{op.loc, "R025", std::string("Evolve: ") + e.what()};
   }
+  if (d_.surface()) {
+    const int resolution = n > 3 ? wholeArg(a[3], 1, rt::evolve::kMaxPolycubeResolution, "the polycube resolution",
+                                            op.loc)
+                                 : kDefaultPolycubeResolution;
+    ornamentSurface(op, file, tiles, grid, resolution, ex);
+    return;
+  }
 
   // Row 0 is the pattern's top row: it lies at the scope's largest Y.
   const int cells = grid.side;
@@ -87,6 +101,41 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
       box.S = orn.extent.cwiseProduct(cell.S);
       d_.placeInstance(orn.asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
     }
+}
+
+// On a surface (§5): the pattern on every face-let of a polycube around the surface,
+// carried onto it and no higher than the offset surface allows (§6.3); one generated asset
+// in world space. The polycube (per resolution) and the offset surface are built once.
+void EvolveCommand::ornamentSurface(const ir::Op& op, const std::string& file, const rt::evolve::TileSet& tiles,
+                                    const rt::evolve::AlleleGrid& grid, int resolution, Exec& ex) {
+  const rt::surface::SurfaceMesh& mesh = d_.surface()->mesh();
+  try {
+    auto& map = polycubes_[resolution];
+    if (!map) map = std::make_unique<rt::evolve::PolycubeMap>(mesh, rt::evolve::PolycubeOptions{0, resolution});
+    if (!offset_) {
+      rt::evolve::OffsetOptions o;
+      o.deadline = &d_.deadline();
+      offset_ = std::make_unique<rt::evolve::OffsetSurface>(rt::evolve::offsetSurface(mesh, o));
+    }
+    if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
+    const rt::evolve::OffsetSurface& room = *offset_;
+    const rt::Mesh ornament = rt::evolve::surfaceOrnament(
+        tiles, grid, *map,
+        [&](const rt::evolve::MappedPoint& p) {
+          return rt::evolve::heightAt(room, mesh, rt::surface::SurfacePoint{p.face, p.bary});
+        });
+    const std::string name = "<surface ornament " + file + " " + std::to_string(++surfaceOrnaments_) + ">";
+    std::array<double, 16> placed{};
+    d_.assets().addGenerated(name, ornament, placed);
+    rt::InstanceList& out = d_.output();
+    const auto asset = static_cast<uint32_t>(out.assets.size());
+    out.assets.push_back(name);
+    rt::Scope box;  // the world box the ornament was built in
+    for (int k = 0; k < 3; ++k) box.P[k] = placed[12 + k], box.S[k] = placed[5 * k];
+    d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+  } catch (const std::invalid_argument& e) {
+    throw DeriveError{op.loc, "R025", std::string("Evolve on the surface: ") + e.what()};
+  }
 }
 
 const rt::evolve::TileSet& EvolveCommand::loadTiles(const ir::Op& op, const std::string& name) {

@@ -10,10 +10,14 @@
 #pragma once
 
 #include "backend/commands/command_family.h"
+#include "runtime/evolve/lsystem2d.h"
+#include "runtime/evolve/offset_surface.h"
+#include "runtime/evolve/polycube_map.h"
 #include "runtime/evolve/tiles.h"
 #include "runtime/scope.h"
 
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -38,10 +42,16 @@ class EvolveCommand final : public CommandFamily {
     rt::Vec3 lo = rt::Vec3::Zero(), extent = rt::Vec3::Zero();
   };
   const Ornament& ornament(const std::string& file, const rt::evolve::TileSet& tiles, rt::evolve::Allele allele);
+  void ornamentSurface(const ir::Op& op, const std::string& file, const rt::evolve::TileSet& tiles,
+                       const rt::evolve::AlleleGrid& grid, int resolution, Exec& ex);
 
   Derivation& d_;
   std::map<std::string, rt::evolve::TileSet> tiles_;
   std::map<std::pair<std::string, int>, Ornament> ornaments_;
+  // On a surface: the polycube per resolution and the offset surface, built on first use.
+  std::map<int, std::unique_ptr<rt::evolve::PolycubeMap>> polycubes_;
+  std::unique_ptr<rt::evolve::OffsetSurface> offset_;
+  int surfaceOrnaments_ = 0;
 };
 
 }  // namespace fgsg::backend

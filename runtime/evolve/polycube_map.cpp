@@ -424,16 +424,47 @@ bool PolycubeMap::Impl::castLine(const Vec3& p, const Vec3& d, int& outFace, Vec
   return true;
 }
 
-// Brute force over all faces: the fallback is rare.
+namespace {
+
+// Embree's point query visits the faces whose (float) bounds are within the radius; each
+// is measured in double and the radius shrinks to the best so far, kept a little wider so
+// that rounding in the bounds never hides a face as near. Ties go to the lower face index:
+// the same face on every run and thread, whatever order the tree is walked in.
+struct NearestQuery {
+  const std::vector<Vec3>* texture;
+  const std::vector<std::array<int, 3>>* faces;
+  Vec3 p;
+  int face = -1;
+  Vec3 bary = Vec3::Zero();
+  double best = std::numeric_limits<double>::infinity();  // squared distance
+};
+
+bool visitNearest(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<NearestQuery*>(args->userPtr);
+  const int i = int(args->primID);
+  const auto& f = (*q->faces)[size_t(i)];
+  const auto& t = *q->texture;
+  const Vec3 b = nearestOnTriangle(q->p, t[f[0]], t[f[1]], t[f[2]]);
+  const double dist = (b[0] * t[f[0]] + b[1] * t[f[1]] + b[2] * t[f[2]] - q->p).squaredNorm();
+  if (dist > q->best || (dist == q->best && i > q->face)) return false;
+  q->best = dist, q->face = i, q->bary = b;
+  args->query->radius = float(std::sqrt(dist) * (1 + 1e-5) + 1e-6);
+  return true;
+}
+
+}  // namespace
+
+// The fallback: the surface point nearest p (texture space), through Embree's tree.
 void PolycubeMap::Impl::nearest(const Vec3& p, int& outFace, Vec3& outBary) const {
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < mesh.faces.size(); ++i) {
-    const auto& f = mesh.faces[i];
-    const Vec3 b = nearestOnTriangle(p, texture[f[0]], texture[f[1]], texture[f[2]]);
-    const Vec3 x = b[0] * texture[f[0]] + b[1] * texture[f[1]] + b[2] * texture[f[2]];
-    const double dist = (x - p).squaredNorm();
-    if (dist < best) best = dist, outFace = int(i), outBary = b;
-  }
+  NearestQuery q{&texture, &mesh.faces, p};
+  RTCPointQuery query;
+  query.x = float(p.x()), query.y = float(p.y()), query.z = float(p.z());
+  query.radius = std::numeric_limits<float>::infinity();
+  query.time = 0;
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(scene, &query, &context, visitNearest, &q);
+  outFace = q.face, outBary = q.bary;
 }
 
 PolycubeMap::PolycubeMap(const surface::SurfaceMesh& mesh, const PolycubeOptions& options)

@@ -158,3 +158,37 @@ TEST_CASE("A declared tileset that is no tile set is R025 at its item", "[evolve
         "Evolve: tileset 't': sections[0].polyline: a cross-section runs from (-1, 0) to (1, 0) (Elber's blending, "
         "paper §2.4); this one runs from (-1, 0) to (1, 0.5)");
 }
+
+TEST_CASE("On a surface Evolve ornaments the whole surface through the polycube", "[evolve][surface]") {
+  const std::string g = "surface torus(2, 0.8);\n" + kDeclared + "axiom: Evolve(ornament, 1, 3, true, 4)";
+  const rt::DeriveResult r = deriveText(g);
+  REQUIRE(r.ok);
+  CHECK(fgsg::test::countAsset(r, "<surface ornament tileset ornament 1>") == 1);
+  // In world space around the torus (R 2, r 0.8, axis Z): the ornament stands on it, at
+  // most a tenth of a pattern cell above (polycube cells 5.6 / 4 wide, 3 pattern cells
+  // each: 0.1 x 1.4 / 3 = 0.047).
+  for (const auto& inst : r.instances.instances) {
+    if (r.instances.assets[inst.asset] != "<surface ornament tileset ornament 1>") continue;
+    const Eigen::Vector3d lo = unitPoint(inst, 0, 0, 0), hi = unitPoint(inst, 1, 1, 1);
+    for (int k = 0; k < 2; ++k) {
+      CHECK(lo[k] >= -2.8 - 0.047);
+      CHECK(lo[k] <= -2.7);
+      CHECK(hi[k] <= 2.8 + 0.047);
+      CHECK(hi[k] >= 2.7);
+    }
+    CHECK(lo.z() >= -0.8 - 0.047);
+    CHECK(hi.z() <= 0.8 + 0.047);
+    CHECK(hi.z() >= 0.8 + 0.03);  // it rises
+  }
+  auto failsWith = [](const std::string& text, const std::string& part) {
+    const rt::DeriveResult bad = deriveText(text);
+    REQUIRE_FALSE(bad.ok);
+    REQUIRE(bad.messages.size() == 1);
+    CHECK(bad.messages[0].code == "R025");
+    CHECK_THAT(bad.messages[0].message, Catch::Contains(part));
+  };
+  failsWith("surface torus(2, 0.8);\n" + kDeclared + "axiom: Evolve(ornament, 1, 3, true, 0)",
+            "the polycube resolution must be a whole number from 1 to 256");
+  failsWith("surface torus(2, 0.8);\n" + kDeclared + "axiom: Evolve(ornament, 1, 3, true, 2.5)",
+            "the polycube resolution must be a whole number");
+}

@@ -1,0 +1,58 @@
+// Ornaments on a surface (Chan & Hui 2013 §5, §6.3): an evolved pattern laid on every
+// face-let of a polycube around the mesh and carried onto the surface.
+//
+// For each face-let of the inverse poly-cube map (polycube_map.h) the pattern's n x n
+// cells fill its unit square, row 0 at the top (b = 1), as on a flat panel. Each cell's
+// ornament is the flat one of its allele (ornament.h: the cross-section blended along the
+// locus between its rails, §2.4/§5.2), computed once per allele in tile units; a point
+// (x, y, z) of it, in cell (row, column), sits at the face-let point
+//   a = (column + x) / n,  b = (n - 1 - row + y) / n      (clamped to [0, 1])
+// which the map carries to the surface point P with smooth normal N; the vertex is
+//   P + N * z * w * s(P),
+// w the cell's width in world units (the face-let's edge / n) and s(P) <= 1 the height
+// limit of §6.3: with `maxHeight` given, s = min(1, maxHeight(P) / (height * w)), the
+// ornament's top (the section's y = 1, `height` of the tile options) no higher than the
+// offset surface allows there (Eq. 12's V(t)); so the ornament keeps its profile and
+// flattens only where the surface leaves no room. In-plane, the rails and the section's
+// width follow the face-let's parameterisation through the map — the paper's offset
+// curves projected into texture space (§5.2, Eq. 10).
+//
+// Where the map jumps (a thin part of the surface, thinner than a polycube cell, seen from
+// both sides by neighbouring face-let points), triangles with an edge longer than two cell
+// widths are dropped rather than stretched across the gap (SurfaceOrnamentStats counts them).
+//
+// Each cell's ornament ends exactly on its cell's border where its locus does (ornament.h),
+// and points on a border shared by two face-lets map to the same surface point, so
+// neighbouring ornaments meet; a p4 pattern (§6.1) meets itself across face-lets however
+// they are turned. Triangles face outward (the face-let's u x v is its outward normal).
+#pragma once
+
+#include "runtime/evolve/lsystem2d.h"
+#include "runtime/evolve/ornament.h"
+#include "runtime/evolve/polycube_map.h"
+#include "runtime/evolve/tiles.h"
+#include "runtime/mesh.h"
+
+#include <functional>
+
+namespace fgsg::rt::evolve {
+
+struct SurfaceOrnamentStats {
+  size_t facelets = 0;
+  size_t cells = 0;       // facelets x pattern cells
+  size_t triangles = 0;
+  double lowestScale = 1;  // the smallest s(P) the height limit applied
+  size_t droppedTriangles = 0;  // spanning a jump of the map (an edge over 2 cell widths)
+};
+
+// The most triangles one surface ornament may have (about 1 GB of mesh).
+constexpr size_t kMaxSurfaceOrnamentTriangles = size_t(1) << 25;
+
+// `maxHeight(point)`: the room above a surface point (world units), or empty for none.
+// Throws std::invalid_argument for an empty pattern, symbols the tile set lacks, bad
+// ornament options, or more than kMaxSurfaceOrnamentTriangles triangles.
+rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const PolycubeMap& map,
+                         const std::function<double(const MappedPoint&)>& maxHeight,
+                         const OrnamentOptions& options = {}, SurfaceOrnamentStats* stats = nullptr);
+
+}  // namespace fgsg::rt::evolve
