@@ -8,10 +8,17 @@
 //   {"bench":"evolve","case":"p4",...}  time until the GA finds a pattern with the p4
 //       signature and fitness >= the default threshold (same sizes), over `seeds` seeds:
 //       converged count, median and slowest seconds.
-// The p4 case uses every core TBB sees (the machine may be shared: compare ratios within
-// one run).
+//   {"bench":"evolve","case":"ornament",...}  ornament triangles per second: a p4 pattern
+//       (generation 1, 3x3 cells a face-let) laid on a torus (R 2, r 0.8) through a
+//       resolution-8 polycube, with the offset surface's height limit (§5-6.3): the times
+//       of the polycube, the offset surface and the ornament itself (best of `reps`).
+// The p4 and ornament cases use every core TBB sees (the machine may be shared: compare
+// ratios within one run).
 // Usage: bench_evolve [--quick] [--seeds N]
 #include "runtime/evolve/genetic.h"
+#include "runtime/evolve/offset_surface.h"
+#include "runtime/evolve/surface_ornament.h"
+#include "runtime/surface/procedural.h"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -98,6 +105,36 @@ int main(int argc, char** argv) {
         "\"seeds\":%d,\"converged\":%d,\"mean_ga_generations\":%.1f,\"median_s\":%.4f,\"max_s\":%.4f}\n",
         o.population, o.ruleSide, o.generation, o.threshold, seeds, converged, double(generations) / seeds,
         times[times.size() / 2], times.back());
+  }
+
+  {  // Ornament triangles per second on a torus.
+    const auto torus = fgsg::rt::surface::torus(2, 0.8);
+    EvolveOptions o;
+    o.generation = 1;
+    o.p4 = true;
+    const AlleleGrid pattern = expand(evolve(tiles, o).best, o.generation);
+    double t0 = now();
+    const PolycubeMap map(torus, PolycubeOptions{0, 8});
+    const double polycubeS = now() - t0;
+    t0 = now();
+    const OffsetSurface room = offsetSurface(torus);
+    const double offsetS = now() - t0;
+    const auto height = [&](const MappedPoint& p) {
+      return heightAt(room, torus, fgsg::rt::surface::SurfacePoint{p.face, p.bary});
+    };
+    double best = 1e9;
+    SurfaceOrnamentStats stats;
+    for (int i = 0; i < (quick ? 1 : 3); ++i) {
+      t0 = now();
+      surfaceOrnament(tiles, pattern, map, height, {}, &stats);
+      best = std::min(best, now() - t0);
+    }
+    std::printf(
+        "{\"bench\":\"evolve\",\"case\":\"ornament\",\"surface\":\"torus(2, 0.8)\",\"faces\":%zu,\"facelets\":%zu,"
+        "\"cells\":%zu,\"triangles\":%zu,\"polycube_s\":%.3f,\"offset_s\":%.3f,\"ornament_s\":%.3f,"
+        "\"triangles_per_s\":%.0f}\n",
+        torus.faceCount(), stats.facelets, stats.cells, stats.triangles, polycubeS, offsetS, best,
+        double(stats.triangles) / best);
   }
   return 0;
 }
