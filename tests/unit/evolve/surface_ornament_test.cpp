@@ -4,13 +4,19 @@
 // leaves less room, facing outward.
 #include "runtime/evolve/surface_ornament.h"
 
+#include "runtime/evolve/genetic.h"
 #include "runtime/surface/procedural.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <stdexcept>
+#include <unordered_map>
 
 using namespace fgsg::rt::evolve;
 using fgsg::rt::Vec3;
@@ -105,6 +111,75 @@ TEST_CASE("triangles spanning a jump of the map are dropped, not stretched", "[s
     for (int e = 0; e < 3; ++e)
       worst = std::max(worst, (vertex(m, m.indices[3 * t + e]) - vertex(m, m.indices[3 * t + (e + 1) % 3])).norm());
   CHECK(worst <= longest * (1 + 1e-6));
+}
+
+// Independent of the ornament code: CGAL's exact predicates on every pair of triangles
+// near each other (a uniform grid of `cell`-sized buckets), skipping pairs that share a
+// corner position (neighbours in the mesh, or cells meeting on a border) and degenerate
+// ones. Returns how many pairs intersect.
+size_t intersectingPairs(const fgsg::rt::Mesh& m, double cell) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::map<std::array<float, 3>, uint32_t> weld;
+  std::vector<std::array<uint32_t, 3>> tris;
+  std::vector<K::Triangle_3> geometry;
+  for (size_t t = 0; t < m.triangleCount(); ++t) {
+    std::array<uint32_t, 3> ids;
+    std::array<K::Point_3, 3> p;
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t v = m.indices[3 * t + c];
+      const std::array<float, 3> key{m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
+      ids[c] = weld.emplace(key, uint32_t(weld.size())).first->second;
+      p[c] = K::Point_3(key[0], key[1], key[2]);
+    }
+    const K::Triangle_3 tri(p[0], p[1], p[2]);
+    if (tri.is_degenerate()) continue;
+    tris.push_back(ids);
+    geometry.push_back(tri);
+  }
+  std::unordered_map<uint64_t, std::vector<uint32_t>> buckets;
+  auto key = [](int64_t x, int64_t y, int64_t z) { return uint64_t((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)); };
+  for (size_t t = 0; t < geometry.size(); ++t) {
+    const auto box = geometry[t].bbox();
+    for (int64_t x = int64_t(std::floor(box.xmin() / cell)); x <= int64_t(std::floor(box.xmax() / cell)); ++x)
+      for (int64_t y = int64_t(std::floor(box.ymin() / cell)); y <= int64_t(std::floor(box.ymax() / cell)); ++y)
+        for (int64_t z = int64_t(std::floor(box.zmin() / cell)); z <= int64_t(std::floor(box.zmax() / cell)); ++z)
+          buckets[key(x, y, z)].push_back(uint32_t(t));
+  }
+  std::set<std::pair<uint32_t, uint32_t>> hits;
+  for (const auto& [k, list] : buckets)
+    for (size_t i = 0; i < list.size(); ++i)
+      for (size_t j = i + 1; j < list.size(); ++j) {
+        const uint32_t a = std::min(list[i], list[j]), b = std::max(list[i], list[j]);
+        bool shared = false;
+        for (uint32_t u : tris[a])
+          for (uint32_t w : tris[b]) shared |= u == w;
+        if (shared || hits.count({a, b}) || !CGAL::do_intersect(geometry[a], geometry[b])) continue;
+        hits.insert({a, b});
+      }
+  return hits.size();
+}
+
+TEST_CASE("an evolved p4 ornament on a surface does not intersect itself", "[surface-ornament]") {
+  Sphere s;
+  const PolycubeMap map(s.mesh, PolycubeOptions{0, 2});
+  EvolveOptions o;
+  o.generation = 1;
+  o.p4 = true;
+  o.seed = 3;
+  const AlleleGrid pattern = expand(evolve(s.tiles, o).best, o.generation);
+  SurfaceOrnamentStats stats;
+  const fgsg::rt::Mesh m = surfaceOrnament(s.tiles, pattern, map, {}, {}, &stats);
+  REQUIRE(stats.droppedTriangles == 0);
+  REQUIRE(m.triangleCount() > 50000);
+  CHECK(intersectingPairs(m, map.cellSize() / pattern.side / 4) == 0);
+  // The check finds intersections where there are some: the first cell's ornament again,
+  // shifted a little along x, crosses the original.
+  fgsg::rt::Mesh twice = m;
+  const size_t cellTriangles = m.triangleCount() / stats.cells, vertices = m.vertexCount();
+  for (size_t i = 0; i < 3 * cellTriangles; ++i) twice.indices.push_back(m.indices[i] + uint32_t(vertices));
+  for (size_t v = 0; v < vertices; ++v)
+    for (int k = 0; k < 3; ++k) twice.positions.push_back(m.positions[3 * v + k] + (k == 0 ? 0.003f : 0.0f));
+  CHECK(intersectingPairs(twice, map.cellSize() / pattern.side / 4) > 0);
 }
 
 TEST_CASE("a surface ornament refuses patterns it cannot draw", "[surface-ornament]") {
