@@ -76,7 +76,7 @@
 // triangle when the float hit was across an edge. Fallback: when the line meets nothing
 // (it can pass beside a part thinner than a cell or a strongly curved one near a polycube
 // corner, and always does beyond the border of an open surface), the surface point nearest
-// the face-let point is taken instead (brute force over the faces) and `hit` is false;
+// the face-let point is taken instead (through Embree's point query) and `hit` is false;
 // fallbackCount() counts these. Both are functions of the face-let point alone, so the
 // fallback keeps the map seamless.
 //
