@@ -36,6 +36,28 @@ ir::Loc blamed(const ir::TileSetSpec& spec, const std::string& message, size_t f
 
 }  // namespace
 
+void applyTileSetSettings(const ir::TileSetSpec& spec, ev::EvolveOptions& o) {
+  bool parentsGiven = false, eliteGiven = false;
+  for (const auto& [name, v] : spec.settings) {
+    parentsGiven |= name == "parents";
+    eliteGiven |= name == "elite";
+    if (name == "population") o.population = int(v[0]);
+    else if (name == "max_generations") o.maxGenerations = int(v[0]);
+    else if (name == "threshold") o.threshold = v[0];
+    else if (name == "crossover") o.crossoverRate = v[0];
+    else if (name == "mutation") o.mutationRate = v[0];
+    else if (name == "parents") o.parents = int(v[0]);
+    else if (name == "elite") o.elite = int(v[0]);
+    else if (name == "weights") {
+      o.weights.symmetry = v[0], o.weights.connectivity = v[1], o.weights.complexity = v[2];
+      if (v.size() > 3) o.weights.p4 = v[3];
+    }
+  }
+  // A small population keeps defaults that would not fit it within it.
+  if (!parentsGiven) o.parents = std::min(o.parents, o.population);
+  if (!eliteGiven) o.elite = std::min(o.elite, o.population - 1);
+}
+
 bool declaredTileSet(const ir::TileSetSpec& spec, ev::TileSet& out, std::string& message, ir::Loc& at) {
   const std::string source = "tileset '" + spec.name + "'";
   std::optional<std::vector<int>> turns;

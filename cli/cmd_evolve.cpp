@@ -77,6 +77,7 @@ ev::FitnessWeights weights(const std::string& v) {
 
 EvolveCommandOptions parseOptions(const Args& args) {
   EvolveCommandOptions o;
+  bool parentsGiven = false, eliteGiven = false;
   OptionReader r(args);
   while (!r.done()) {
     if (!r.peek().empty() && r.peek()[0] != '-') {
@@ -93,8 +94,8 @@ EvolveCommandOptions parseOptions(const Args& args) {
     else if (f == "--population") o.ga.population = int(r.unsignedValue(f, 2, 100000));
     else if (f == "--max-generations") o.ga.maxGenerations = int(r.unsignedValue(f, 0, 1000000));
     else if (f == "--threshold") o.ga.threshold = probability(r, f);
-    else if (f == "--parents") o.ga.parents = int(r.unsignedValue(f, 1, 100000));
-    else if (f == "--elite") o.ga.elite = int(r.unsignedValue(f, 0, 100000));
+    else if (f == "--parents") o.ga.parents = int(r.unsignedValue(f, 1, 100000)), parentsGiven = true;
+    else if (f == "--elite") o.ga.elite = int(r.unsignedValue(f, 0, 100000)), eliteGiven = true;
     else if (f == "--crossover") o.ga.crossoverRate = probability(r, f);
     else if (f == "--mutation") o.ga.mutationRate = probability(r, f);
     else if (f == "--weights") o.ga.weights = weights(r.value(f));
@@ -113,8 +114,15 @@ EvolveCommandOptions parseOptions(const Args& args) {
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   if (!o.json.empty() && !hasExtension(o.json, ".json"))
     throw UsageError{"--json " + o.json + ": name the file .json"};
-  if (o.ga.parents > o.ga.population) throw UsageError{"--parents cannot exceed --population"};
-  if (o.ga.elite > o.ga.population) throw UsageError{"--elite cannot exceed --population"};
+  // Defaults that would not fit a small population are capped at it; given ones are not.
+  if (o.ga.parents > o.ga.population) {
+    if (parentsGiven) throw UsageError{"--parents cannot exceed --population"};
+    o.ga.parents = o.ga.population;
+  }
+  if (o.ga.elite >= o.ga.population) {
+    if (eliteGiven) throw UsageError{"--elite must be smaller than --population"};
+    o.ga.elite = o.ga.population - 1;
+  }
   return o;
 }
 

@@ -55,6 +55,8 @@ struct TilesetInfo {
   std::vector<TileCurveInfo> loci, sections;
   std::vector<int> orientations;  // degrees as written; empty: all four
   std::string symbols;            // empty: A, B, C, ...
+  // The GA's settings it gives (`population 100;` -> {"population", {100}}), in order.
+  std::vector<std::pair<std::string, std::vector<double>>> settings;
   SourceRange range;
 };
 

@@ -25,6 +25,8 @@ struct Where {
   bool sizeArg = false;
 };
 
+struct GaSetting;  // a genetic-algorithm setting a tileset may give (sema_tilesets.cpp)
+
 class Analyzer {
  public:
   Analyzer(const Program& p, SemaResult& r, Diagnostics& d) : prog_(p), res_(r), diags_(d) {}
@@ -40,6 +42,8 @@ class Analyzer {
   // Tilesets (sema_tilesets.cpp): `tileset NAME { locus ...; section ...; ... }`.
   void collectTilesets();
   bool tileCurve(const TilesetItem& item, TileCurveInfo& out);
+  bool gaSettingItem(const TilesetItem& item, const GaSetting& setting, const std::string& tileset,
+                     TilesetInfo& out);
   bool tilesetDeclared(const std::string& name) const;
 
   // Collision (sema_collision.cpp): `collision [all] [mesh | centre R | geodesic R];`.

@@ -11,9 +11,40 @@
 
 namespace fgsg::frontend::sema_detail {
 
+// The genetic algorithm's settings (rt::evolve::EvolveOptions) a tileset may give: how many
+// numbers each takes and their range. Whether parents and elite fit the population is the
+// GA's own check (R025 at Evolve).
+struct GaSetting {
+  const char* name;
+  size_t minValues, maxValues;
+  double lo, hi;
+  bool whole;
+  const char* example;
+};
+
 namespace {
 
-constexpr const char* kItemKinds = "locus, section, orientations or symbols";
+constexpr const char* kItemKinds =
+    "locus, section, orientations, symbols, or a GA setting: population, max_generations, threshold, weights, "
+    "crossover, mutation, parents, elite";
+
+constexpr GaSetting kGaSettings[] = {
+    {"population", 1, 1, 2, 100000, true, "population 100;"},
+    {"max_generations", 1, 1, 0, 1000000, true, "max_generations 200;"},
+    {"threshold", 1, 1, 0, 1, false, "threshold 0.7;"},
+    {"weights", 3, 4, 0, 1e9, false, "weights 1, 1, 1, 3;"},
+    {"crossover", 1, 1, 0, 1, false, "crossover 0.9;"},
+    {"mutation", 1, 1, 0, 1, false, "mutation 0.1;"},
+    {"parents", 1, 1, 1, 100000, true, "parents 20;"},
+    {"elite", 1, 1, 0, 100000, true, "elite 2;"},
+};
+
+const GaSetting* gaSetting(const std::string& name) {
+  for (const GaSetting& s : kGaSettings)
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
 constexpr const char* kCurveForms = "polyline((x, y), (x, y), ...) or cubic(p0, p1, p2, p3)";
 
 }  // namespace
@@ -65,6 +96,50 @@ bool Analyzer::tileCurve(const TilesetItem& item, TileCurveInfo& out) {
   return ok;
 }
 
+// `population 100;`, `weights 1, 1, 1, 3;`: constant numbers in the setting's range.
+bool Analyzer::gaSettingItem(const TilesetItem& item, const GaSetting& setting, const std::string& tileset,
+                             TilesetInfo& out) {
+  const std::string form = std::string("`") + setting.example + "`";
+  if (!item.name.empty()) {
+    diags_.error("E041", item.nameRange, "'" + item.kind + "' takes no name: " + form);
+    return false;
+  }
+  for (const auto& [name, values] : out.settings)
+    if (name == item.kind) {
+      diags_.error("E041", item.kindRange, "'" + item.kind + "' is given twice in tileset '" + tileset + "'");
+      return false;
+    }
+  if (item.values.size() < setting.minValues || item.values.size() > setting.maxValues) {
+    diags_.error("E041", item.range,
+                 "'" + item.kind + "' takes " +
+                     (setting.minValues == setting.maxValues ? "one number"
+                                                             : std::to_string(setting.minValues) + " or " +
+                                                                   std::to_string(setting.maxValues) + " numbers") +
+                     ": " + form);
+    return false;
+  }
+  std::vector<double> numbers;
+  for (const ExprPtr& e : item.values) {
+    ConstValue v;
+    if (!e) return false;
+    const bool number = evalConst(*e, v) && v.type == ValueType::Num && std::isfinite(v.num);
+    if (!number || v.num < setting.lo || v.num > setting.hi || (setting.whole && v.num != std::floor(v.num))) {
+      diags_.error("E041", e->range,
+                   "'" + item.kind + "' takes " + (setting.whole ? "whole numbers" : "numbers") + " from " +
+                       formatNumber(setting.lo) + " to " + formatNumber(setting.hi) +
+                       (number ? ", got " + formatNumber(v.num) : std::string(", a constant")) + ": " + form);
+      return false;
+    }
+    numbers.push_back(v.num);
+  }
+  if (item.kind == "weights" && numbers[0] + numbers[1] + numbers[2] <= 0) {
+    diags_.error("E041", item.range, "the weights of symmetry, connectivity and complexity cannot all be 0");
+    return false;
+  }
+  out.settings.emplace_back(item.kind, std::move(numbers));
+  return true;
+}
+
 void Analyzer::collectTilesets() {
   std::set<std::string> taken(res_.fields.begin(), res_.fields.end());
   taken.insert(res_.textures.begin(), res_.textures.end());
@@ -93,6 +168,10 @@ void Analyzer::collectTilesets() {
           continue;
         }
         (item.kind == "locus" ? info.loci : info.sections).push_back(std::move(curve));
+        continue;
+      }
+      if (const GaSetting* setting = gaSetting(item.kind)) {
+        if (!gaSettingItem(item, *setting, d.name, info)) ok = false;
         continue;
       }
       if (item.kind != "orientations" && item.kind != "symbols") {

@@ -259,6 +259,9 @@ struct TileSetSpec {
   std::vector<TileCurveSpec> loci, sections;
   std::vector<int> orientations;  // degrees; empty: all four
   std::string symbols;            // empty: A, B, C, ...
+  // GA settings for Evolve with these tiles (population, max_generations, threshold,
+  // weights, crossover, mutation, parents, elite), as constants; the rest keep defaults.
+  std::vector<std::pair<std::string, std::vector<double>>> settings;
   Loc loc;
 };
 

@@ -184,7 +184,8 @@ class Lowerer {
       return out;
     };
     for (const TilesetInfo& t : sema_.tilesets)
-      m_.tileSets.push_back({t.name, curves(t.loci), curves(t.sections), t.orientations, t.symbols, toLoc(t.range)});
+      m_.tileSets.push_back(
+          {t.name, curves(t.loci), curves(t.sections), t.orientations, t.symbols, t.settings, toLoc(t.range)});
   }
 
   // 1 + the tileset's index when `e` names a declared tileset, else 0.

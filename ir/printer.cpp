@@ -139,6 +139,11 @@ class Printer {
       line(1, s);
     }
     if (!t.symbols.empty()) line(1, "symbols " + quoted(t.symbols));
+    for (const auto& [name, values] : t.settings) {
+      std::string s = name;
+      for (double v : values) s += " " + printNumber(v);
+      line(1, s);
+    }
   }
 
   // `surface torus(2, 0.6)`, `surface "bunny.off"`

@@ -157,6 +157,15 @@ class Verifier {
         }
       for (int o : t.orientations)
         if (o != 0 && o != 90 && o != 180 && o != 270) problem("orientation " + std::to_string(o));
+      static const char* kSettings[] = {"population", "max_generations", "threshold", "weights",
+                                        "crossover",  "mutation",        "parents",   "elite"};
+      for (const auto& [name, values] : t.settings) {
+        if (std::find_if(std::begin(kSettings), std::end(kSettings), [&](const char* k) { return name == k; }) ==
+            std::end(kSettings))
+          problem("unknown GA setting '" + name + "'");
+        if (values.empty() || values.size() > 4) problem("setting '" + name + "' with " + std::to_string(values.size()) + " values");
+        finite(values, "setting value");
+      }
     }
   }
 

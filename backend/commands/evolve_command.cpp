@@ -59,6 +59,7 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
   o.p4 = n > 2 && a[2] != 0.0;
   o.seed = rt::childKey(ex.key, 0x4000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
   o.deadline = &d_.deadline();
+  if (op.index) applyTileSetSettings(m.tileSets[op.index - 1], o);
   const double side = std::pow(double(o.ruleSide), o.generation) * o.axiomSide;
   if (side > kMaxSide)
     throw DeriveError{op.loc, "R025", "Evolve: a pattern of k^generation = " + std::to_string(int64_t(side)) +

@@ -192,3 +192,28 @@ TEST_CASE("On a surface Evolve ornaments the whole surface through the polycube"
   failsWith("surface torus(2, 0.8);\n" + kDeclared + "axiom: Evolve(ornament, 1, 3, true, 2.5)",
             "the polycube resolution must be a whole number");
 }
+
+TEST_CASE("A tileset's GA settings reach the genetic algorithm", "[evolve][tileset]") {
+  // No GA generation after the first population, and a population of 2: a different (and
+  // worse) pattern than the defaults find, the same on every run.
+  const std::string quick = kDeclared.substr(0, kDeclared.rfind('}')) + "  population 2; max_generations 0;\n}\n";
+  const rt::DeriveResult a = deriveText(quick + grammar("Evolve(ornament, 2, 3)"));
+  const rt::DeriveResult b = deriveText(quick + grammar("Evolve(ornament, 2, 3)"));
+  const rt::DeriveResult full = deriveText(kDeclared + grammar("Evolve(ornament, 2, 3)"));
+  REQUIRE(a.ok);
+  REQUIRE(full.ok);
+  REQUIRE(a.instances.instances.size() == 81);
+  auto layout = [](const rt::DeriveResult& r) {
+    std::vector<std::string> cells;
+    for (const auto& inst : r.instances.instances) cells.push_back(r.instances.assets[inst.asset]);
+    return cells;
+  };
+  CHECK(layout(a) == layout(b));
+  CHECK(layout(a) != layout(full));
+  // Settings the GA refuses together are R025 at Evolve.
+  const std::string bad = kDeclared.substr(0, kDeclared.rfind('}')) + "  population 10; parents 20;\n}\n";
+  const rt::DeriveResult r = deriveText(bad + grammar("Evolve(ornament, 2, 3)"));
+  REQUIRE_FALSE(r.ok);
+  CHECK(r.messages[0].code == "R025");
+  CHECK_THAT(r.messages[0].message, Catch::Contains("parents"));
+}

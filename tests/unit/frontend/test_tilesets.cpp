@@ -60,7 +60,7 @@ TEST_CASE("a tileset needs neither names nor orientations nor letters", "[sema][
 
 TEST_CASE("tileset items that are not tiles (E041)", "[sema][tileset]") {
   onlyError(tileset(kCurves + " colour 3;"), "E041", 2, kItems + int(kCurves.size()) + 1,
-            "unknown tileset item 'colour' (expected locus, section, orientations or symbols)");
+            "unknown tileset item 'colour' (expected locus, section, orientations, symbols, or a GA setting: ");
   onlyError(tileset("locus a = line((0, 0), (1, 1)); section r = polyline((-1, 0), (1, 0));"), "E041", 2,
             kItems + 10, "a locus is one curve: polyline((x, y), (x, y), ...) or cubic(p0, p1, p2, p3)");
   onlyError(tileset("locus a = cubic((0, 0), (1, 1)); section r = polyline((-1, 0), (1, 0));"), "E041", 2,
@@ -98,4 +98,24 @@ TEST_CASE("tileset names: unique among declarations, and what Evolve may name (E
   const Analysed file = analyse("const tiles = \"t.json\";\naxiom: Evolve(tiles, 2)");
   INFO(file.printed);
   CHECK(file.ok);
+}
+
+TEST_CASE("a tileset may give the genetic algorithm's settings", "[sema][tileset]") {
+  const Analysed a = tileset(kCurves +
+                             " population 40; max_generations 7; threshold 0.5; weights 1, 2, 3; crossover 0.8;"
+                             " mutation 0.05; parents 10; elite 1;");
+  INFO(a.printed);
+  REQUIRE(a.ok);
+  using Settings = std::vector<std::pair<std::string, std::vector<double>>>;
+  CHECK(a.sema.tilesets[0].settings == Settings{{"population", {40}}, {"max_generations", {7}}, {"threshold", {0.5}},
+                                                {"weights", {1, 2, 3}}, {"crossover", {0.8}}, {"mutation", {0.05}},
+                                                {"parents", {10}}, {"elite", {1}}});
+  const int at = kItems + int(kCurves.size()) + 1;
+  onlyError(tileset(kCurves + " population 1;"), "E041", 2, at + 11,
+            "'population' takes whole numbers from 2 to 100000, got 1: `population 100;`");
+  onlyError(tileset(kCurves + " threshold 1.5;"), "E041", 2, at + 10, "'threshold' takes numbers from 0 to 1, got 1.5");
+  onlyError(tileset(kCurves + " elite 2.5;"), "E041", 2, at + 6, "'elite' takes whole numbers");
+  onlyError(tileset(kCurves + " weights 1, 2;"), "E041", 2, at, "'weights' takes 3 or 4 numbers: `weights 1, 1, 1, 3;`");
+  onlyError(tileset(kCurves + " weights 0, 0, 0, 1;"), "E041", 2, at, "cannot all be 0");
+  onlyError(tileset(kCurves + " mutation 0.1; mutation 0.2;"), "E041", 2, at + 14, "'mutation' is given twice");
 }
