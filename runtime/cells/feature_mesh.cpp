@@ -53,6 +53,29 @@ int opposite(const std::array<int, 3>& t, int a, int b) {
   return t[0];
 }
 
+// The connected components of the chains `ids`, joined at their end vertices.
+int countLoops(const std::vector<FeatureEdge>& edges, const std::vector<int>& ids) {
+  std::vector<int> ends, parent;
+  auto node = [&](int v) {
+    const auto it = std::find(ends.begin(), ends.end(), v);
+    if (it != ends.end()) return int(it - ends.begin());
+    ends.push_back(v);
+    parent.push_back(int(parent.size()));
+    return int(ends.size()) - 1;
+  };
+  auto root = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  int loops = 0;
+  for (int e : ids) {
+    const int a = root(node(edges[e].vertices.front())), b = root(node(edges[e].vertices.back()));
+    parent[a] = b;
+  }
+  for (int i = 0; i < int(parent.size()); ++i) loops += root(i) == i;
+  return loops;
+}
+
 }  // namespace
 
 FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions& options) {
@@ -202,6 +225,7 @@ FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions
   for (auto& face : fm.faces) {
     std::sort(face.edges.begin(), face.edges.end());
     face.edges.erase(std::unique(face.edges.begin(), face.edges.end()), face.edges.end());
+    face.loops = countLoops(fm.edges, face.edges);
     fitFace(face, m, o);
   }
   for (auto& c : fm.corners) {

@@ -73,6 +73,10 @@ enum class FaceKind { Planar, Cylindrical, Freeform };
 struct FeatureFace {
   std::vector<int> triangles;  // increasing
   std::vector<int> edges;      // the feature edges bounding it, increasing
+  // Its boundary loops (chains of edges joined at corners): 1 for a disk, one more per
+  // hole (a wall with a window has 2), 0 for a closed surface. Loops that touch at a
+  // corner count as one.
+  int loops = 0;
   Vec3 normal = Vec3::UnitZ(); // area-weighted mean, unit
   double area = 0;
   FaceKind kind = FaceKind::Freeform;

@@ -98,6 +98,7 @@ TEST_CASE("unit cube: 6 planar faces, 12 straight convex edges, 8 convex corners
     for (const auto& f : fm.faces) {
       CHECK(f.planar());
       CHECK(f.edges.size() == 4);
+      CHECK(f.loops == 1);
       CHECK(f.area == Approx(1));
       CHECK(int(f.triangles.size()) == 2 * n * n);
       // Every triangle of the face has the face's normal, an axis direction.
@@ -105,6 +106,10 @@ TEST_CASE("unit cube: 6 planar faces, 12 straight convex edges, 8 convex corners
       normals.insert({int(std::lround(f.normal.x())), int(std::lround(f.normal.y())), int(std::lround(f.normal.z()))});
     }
     CHECK(normals.size() == 6);
+    // Deterministic order: faces by smallest triangle, corners by vertex.
+    for (size_t i = 1; i < fm.faces.size(); ++i) CHECK(fm.faces[i - 1].triangles[0] < fm.faces[i].triangles[0]);
+    for (size_t i = 1; i < fm.corners.size(); ++i) CHECK(fm.corners[i - 1].vertex < fm.corners[i].vertex);
+    for (size_t i = 0; i < fm.corners.size(); ++i) CHECK(fm.cornerOfVertex[fm.corners[i].vertex] == int(i));
     for (size_t t = 0; t < m.faceCount(); ++t) CHECK(fm.faces[fm.faceOfTriangle[t]].normal.dot(m.faceNormals[t]) > 0.999);
   }
 }
@@ -180,6 +185,7 @@ TEST_CASE("open cylinder: one cylindrical face, two boundary circles", "[cells]"
   CHECK(f.outward);
   CHECK((f.axis - Vec3::UnitZ()).norm() < 1e-9);
   CHECK(f.centre.z() == Approx(-h / 2));
+  CHECK(f.loops == 2);
   REQUIRE(fm.edges.size() == 2);
   for (const auto& e : fm.edges) {
     CHECK(e.closed);
@@ -215,6 +221,101 @@ TEST_CASE("open cylinder: one cylindrical face, two boundary circles", "[cells]"
   CHECK(projectOnFace(f, turned).x() == Approx(0.4 + r * kPi / 2));
 }
 
+TEST_CASE("a wall with a window: faces with holes, concave reveals", "[cells]") {
+  // A 3 x 1 x 3 slab of cubes without the middle one: a square hole through it. Faces:
+  // front and back (each with 2 loops), 4 outer sides, 4 reveals of the hole. Edges: 12
+  // of the outer box, 4 round the hole on each side, 4 along the hole (concave).
+  std::set<std::array<int, 3>> cells;
+  for (int x = 0; x < 3; ++x)
+    for (int z = 0; z < 3; ++z)
+      if (x != 1 || z != 1) cells.insert({x, 0, z});
+  const SurfaceMesh m = polycube(cells, 2);
+  const FeatureMesh fm = buildFeatureMesh(m);
+  REQUIRE(fm.faces.size() == 10);
+  REQUIRE(fm.edges.size() == 24);
+  REQUIRE(fm.corners.size() == 16);
+  int holed = 0;
+  for (const auto& f : fm.faces) {
+    CHECK(f.planar());
+    if (f.loops == 2) {
+      ++holed;
+      CHECK(std::abs(f.normal.y()) == Approx(1));
+      CHECK(f.area == Approx(8));
+      CHECK(f.edges.size() == 8);
+    } else {
+      CHECK(f.loops == 1);
+    }
+  }
+  CHECK(holed == 2);
+  int concave = 0, mixed = 0;
+  for (const auto& e : fm.edges)
+    if (e.fold == EdgeFold::Concave) {
+      ++concave;
+      CHECK(e.direction == EdgeDirection::Horizontal);  // along Y, through the wall
+    }
+  for (const auto& c : fm.corners) mixed += c.kind == CornerKind::Mixed;
+  CHECK(concave == 4);
+  CHECK(mixed == 8);
+}
+
+TEST_CASE("capped cylinder: convex circular rims between a cylinder and two discs", "[cells]") {
+  const int segments = 32;
+  SurfaceMesh m = surface::cylinder(1, 2, segments);
+  const int rows = int(m.vertexCount()) / segments - 1;
+  const int bottom = int(m.vertexCount()), top = bottom + 1;
+  m.vertices.emplace_back(0, 0, -1);
+  m.vertices.emplace_back(0, 0, 1);
+  for (int i = 0; i < segments; ++i) {
+    const int j = (i + 1) % segments;
+    m.faces.push_back({bottom, j, i});  // seen from below: counter-clockwise
+    m.faces.push_back({top, rows * segments + i, rows * segments + j});
+  }
+  m.buildTopology();
+  const FeatureMesh fm = buildFeatureMesh(m);
+  REQUIRE(fm.faces.size() == 3);
+  REQUIRE(fm.edges.size() == 2);
+  CHECK(fm.corners.empty());
+  int caps = 0;
+  for (const auto& f : fm.faces) {
+    CHECK(f.loops == 1 + (f.kind == FaceKind::Cylindrical));
+    if (f.planar()) {
+      ++caps;
+      CHECK(std::abs(f.normal.z()) == Approx(1));
+      CHECK(f.area == Approx(segments * std::sin(2 * kPi / segments) / 2));
+    } else {
+      CHECK(f.kind == FaceKind::Cylindrical);
+    }
+  }
+  CHECK(caps == 2);
+  for (const auto& e : fm.edges) {
+    CHECK(e.fold == EdgeFold::Convex);
+    CHECK(e.shape == EdgeShape::Arc);
+    CHECK(e.radius == Approx(1).epsilon(1e-9));
+    CHECK(e.dihedralDegrees == Approx(90));
+    CHECK(e.rightFace >= 0);
+    // The outward normal at the rim bisects the cap and the side.
+    const EdgeFrame fr = edgeAt(e, 1.0);
+    const Vec3 radial = Vec3(fr.point.x(), fr.point.y(), 0).normalized();
+    const Vec3 expect = (radial + Vec3(0, 0, fr.point.z() > 0 ? 1 : -1)).normalized();
+    CHECK((fr.normal - expect).norm() < 0.1);  // the side's facets are 1/32 turn wide
+  }
+}
+
+TEST_CASE("the inside of a cylinder is a cylindrical face facing its axis", "[cells]") {
+  SurfaceMesh m = surface::cylinder(2, 1, 40);
+  for (auto& t : m.faces) std::swap(t[1], t[2]);
+  m.buildTopology();
+  const FeatureMesh fm = buildFeatureMesh(m);
+  REQUIRE(fm.faces.size() == 1);
+  const FeatureFace& f = fm.faces[0];
+  REQUIRE(f.kind == FaceKind::Cylindrical);
+  CHECK_FALSE(f.outward);
+  CHECK(f.radius == Approx(2).epsilon(1e-9));
+  const FaceFrame fr = faceAt(f, Vec2(1, 0.5));
+  CHECK(fr.normal.dot(Vec3(fr.point.x(), fr.point.y(), 0)) == Approx(-2));
+  CHECK((projectOnFace(f, fr.point) - Vec2(1, 0.5)).norm() < 1e-12);
+}
+
 TEST_CASE("sphere: one freeform face, no edges, no corners", "[cells]") {
   const SurfaceMesh m = surface::sphere(1, 3);
   const FeatureMesh fm = buildFeatureMesh(m);
@@ -222,6 +323,7 @@ TEST_CASE("sphere: one freeform face, no edges, no corners", "[cells]") {
   CHECK(fm.edges.empty());
   CHECK(fm.corners.empty());
   CHECK(fm.faces[0].kind == FaceKind::Freeform);
+  CHECK(fm.faces[0].loops == 0);
   CHECK(fm.faces[0].triangles.size() == m.faceCount());
   CHECK_THROWS_AS(faceAt(fm.faces[0], Vec2(0, 0)), std::invalid_argument);
   CHECK_THROWS_AS(projectOnFace(fm.faces[0], Vec3(1, 0, 0)), std::invalid_argument);
