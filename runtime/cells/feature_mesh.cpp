@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -55,13 +56,12 @@ int opposite(const std::array<int, 3>& t, int a, int b) {
 
 // The connected components of the chains `ids`, joined at their end vertices.
 int countLoops(const std::vector<FeatureEdge>& edges, const std::vector<int>& ids) {
-  std::vector<int> ends, parent;
-  auto node = [&](int v) {
-    const auto it = std::find(ends.begin(), ends.end(), v);
-    if (it != ends.end()) return int(it - ends.begin());
-    ends.push_back(v);
-    parent.push_back(int(parent.size()));
-    return int(ends.size()) - 1;
+  std::map<int, int> node;  // end vertex -> union-find node
+  std::vector<int> parent;
+  auto nodeOf = [&](int v) {
+    const auto [it, fresh] = node.emplace(v, int(parent.size()));
+    if (fresh) parent.push_back(it->second);
+    return it->second;
   };
   auto root = [&](int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
@@ -69,7 +69,7 @@ int countLoops(const std::vector<FeatureEdge>& edges, const std::vector<int>& id
   };
   int loops = 0;
   for (int e : ids) {
-    const int a = root(node(edges[e].vertices.front())), b = root(node(edges[e].vertices.back()));
+    const int a = root(nodeOf(edges[e].vertices.front())), b = root(nodeOf(edges[e].vertices.back()));
     parent[a] = b;
   }
   for (int i = 0; i < int(parent.size()); ++i) loops += root(i) == i;

@@ -81,9 +81,11 @@ struct FeatureFace {
   double area = 0;
   FaceKind kind = FaceKind::Freeform;
   bool planar() const { return kind == FaceKind::Planar; }
-  // Planar: param (u, v) -> origin + u * uAxis + v * vAxis; vAxis is `up` projected into
-  // the plane (uAxis world-horizontal) when the face is not horizontal, and the whole
-  // face has u, v >= 0 with its minimum at 0.
+  // Planar: param (u, v) -> origin + u * uAxis + v * vAxis, (uAxis, vAxis, normal)
+  // right-handed. A face more than directionDegrees from horizontal (a wall, a roof) has
+  // vAxis = `up` projected into its plane, so uAxis is world-horizontal; a floor or
+  // ceiling has uAxis = world X projected (Y when X is too steep). The whole face has
+  // u, v >= 0 with its minimum at 0.
   Vec3 origin = Vec3::Zero(), uAxis = Vec3::UnitX(), vAxis = Vec3::UnitY();
   // Cylindrical: param (radius * angle, height) -> centre + height * axis +
   // radius * (cos(angle) * ref + sin(angle) * axis x ref); angle in [-pi, pi), measured
