@@ -166,7 +166,7 @@ int evolveCommand(const Args& args) {
   EvolveCommandOptions opt;
   try {
     opt = parseOptions(args);
-    ev::checkOptions(opt.ga);
+    if (opt.lsystem.empty()) ev::checkOptions(opt.ga);  // --lsystem runs no GA
   } catch (const UsageError& e) {
     std::cerr << "fgsg evolve: " << e.message << "\n" << kUsage;
     return 2;
@@ -278,7 +278,13 @@ int evolveCommand(const Args& args) {
     if (!writeFile(opt.json, j.dump(1) + "\n")) return 1;
   }
   if (!opt.preview.empty()) {
-    const ev::PatternPicture pic = ev::drawPattern(tiles, pattern, opt.cellPixels);
+    ev::PatternPicture pic;
+    try {
+      pic = ev::drawPattern(tiles, pattern, opt.cellPixels);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "fgsg evolve: --preview: " << e.what() << "\n";
+      return 1;
+    }
     std::string png;
     if (!rt::io::encodePng(pic.width, pic.height, 3, pic.rgb.data(), png)) {
       std::cerr << "fgsg evolve: cannot encode the preview picture\n";

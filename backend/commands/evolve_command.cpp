@@ -1,5 +1,6 @@
 #include "backend/commands/evolve_command.h"
 
+#include "backend/commands/surface_world.h"
 #include "backend/declared_tiles.h"
 #include "backend/engine/derivation.h"
 #include "runtime/evolve/genetic.h"
@@ -8,9 +9,8 @@
 #include "runtime/evolve/ornament.h"
 #include "runtime/evolve/polycube_map.h"
 #include "runtime/evolve/surface_ornament.h"
-#include "runtime/surface/surface_mesh.h"
-#include "backend/commands/surface_world.h"
 #include "runtime/io/find_file.h"
+#include "runtime/surface/surface_mesh.h"
 
 #include <cmath>
 #include <stdexcept>

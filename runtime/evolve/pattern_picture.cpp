@@ -39,6 +39,9 @@ PatternPicture drawPattern(const TileSet& tiles, const AlleleGrid& pattern, int 
     if (a.symbol >= tiles.symbolCount() || a.turns > 3)
       throw std::invalid_argument("drawPattern: the pattern has symbol " + std::to_string(a.symbol) +
                                   ", the tile set " + std::to_string(tiles.symbolCount()));
+  if (pattern.side * 4 > kMaxPatternPicturePixels)
+    throw std::invalid_argument("a pattern of " + std::to_string(pattern.side) + " cells a side is too large to draw (at most " +
+                                std::to_string(kMaxPatternPicturePixels / 4) + ", 4 pixels a cell)");
   const int cell = std::max(4, std::min(cellPixels, kMaxPatternPicturePixels / pattern.side));
   PatternPicture pic;
   pic.width = pic.height = cell * pattern.side;

@@ -21,8 +21,8 @@ constexpr int kMaxPatternPicturePixels = 4096;
 
 // `cellPixels` a side per cell (at least 4), reduced so that the picture stays within
 // kMaxPatternPicturePixels; the stroke is `strokeWidth` of a cell wide (anti-aliased).
-// Throws std::invalid_argument for an empty pattern or one whose symbols the tile set
-// lacks.
+// Throws std::invalid_argument for an empty pattern, one whose symbols the tile set lacks,
+// or one of more than kMaxPatternPicturePixels / 4 cells a side.
 PatternPicture drawPattern(const TileSet& tiles, const AlleleGrid& pattern, int cellPixels = 32,
                            double strokeWidth = 0.12);
 

@@ -60,6 +60,9 @@ expect 1 "no such file" "$tmp/none.json"
 echo '{"loci": 3}' >"$tmp/bad.json"
 expect 1 "bad.json: " "$tmp/bad.json"
 expect 1 "ran out before the first population" "$tiles" --population 100000 --max-seconds 0.001
+expect 1 "a pattern of 2048 cells a side is too large to draw" "$tiles" --lsystem '{ABAA.ABBA.A}' --generation 11 \
+  --preview "$tmp/big.png"
+[ -e "$tmp/big.png" ] && fail "a refused preview was written"
 expect 1 "cannot write '$tmp/missing/x.json'" "$tiles" --max-generations 1 --json "$tmp/missing/x.json"
 
 # A grammar's declared tileset is checked as a tile file is: by `fgsg check` before any run,

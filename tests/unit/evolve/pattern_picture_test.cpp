@@ -49,6 +49,8 @@ TEST_CASE("a pattern picture stays within its size limit and refuses bad pattern
   CHECK(big.width == 300 * (kMaxPatternPicturePixels / 300));
   CHECK(big.width <= kMaxPatternPicturePixels);
   CHECK_THROWS_AS(drawPattern(tiles, AlleleGrid(), 32), std::invalid_argument);
+  CHECK_THROWS_WITH(drawPattern(tiles, AlleleGrid(1025), 32),
+                    "a pattern of 1025 cells a side is too large to draw (at most 1024, 4 pixels a cell)");
   AlleleGrid unknown(1);
   unknown.at(0, 0) = {7, 0};
   CHECK_THROWS_WITH(drawPattern(tiles, unknown, 32), "drawPattern: the pattern has symbol 7, the tile set 2");
