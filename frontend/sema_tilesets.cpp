@@ -62,7 +62,7 @@ bool Analyzer::tileCurve(const TilesetItem& item, TileCurveInfo& out) {
   out.range = item.range;
   const Expr* call = item.values.size() == 1 ? item.values[0].get() : nullptr;
   if (!call || call->kind != ExprKind::Call || (call->text != "polyline" && call->text != "cubic")) {
-    diags_.error("E041", item.values.empty() ? item.range : item.values[0]->range,
+    diags_.error("E041", item.values.size() == 1 && item.values[0] ? item.values[0]->range : item.range,
                  "a " + item.kind + " is one curve: " + kCurveForms);
     return false;
   }
