@@ -1,0 +1,190 @@
+// The state of one cellular texture: occupancy maps and placed cells
+// (cellular_texture.h).
+#include "runtime/cells/cellular_texture.h"
+
+#include "runtime/cells/feature_param.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fgsg::rt::cells {
+
+namespace {
+
+Vec3 faceNormalAt(const FeatureFace& f, const Vec3& p) {
+  if (f.kind == FaceKind::Cylindrical) return faceAt(f, projectOnFace(f, p)).normal;
+  return f.normal;
+}
+
+// Signed distance of p above the face (along its outward normal).
+double heightAbove(const FeatureFace& f, const Vec3& p) {
+  if (f.kind == FaceKind::Cylindrical) {
+    const Vec3 d = p - f.centre;
+    const double r = (d - d.dot(f.axis) * f.axis).norm();
+    return f.outward ? r - f.radius : f.radius - r;
+  }
+  return (p - f.origin).dot(f.normal);
+}
+
+uint64_t cellKey(int64_t x, int64_t y, int64_t z) {
+  return (uint64_t(x) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(y) * 0xC2B2AE3D27D4EB4Full) ^
+         (uint64_t(z) * 0x165667B19E3779F9ull);
+}
+
+}  // namespace
+
+bool cellsOverlap(const Cell& a, const Cell& b, double slack) {
+  // Separating axes of two boxes: their 3 + 3 face normals and the 9 edge cross products.
+  const Vec3 ca = a.centre(), cb = b.centre();
+  const Vec3 ha = 0.5 * a.size, hb = 0.5 * b.size;
+  auto separated = [&](const Vec3& axis) {
+    const double n = axis.norm();
+    if (n < 1e-12) return false;
+    const Vec3 u = axis / n;
+    double ra = 0, rb = 0;
+    for (int k = 0; k < 3; ++k) ra += ha[k] * std::abs(a.axes.col(k).dot(u)), rb += hb[k] * std::abs(b.axes.col(k).dot(u));
+    return std::abs((cb - ca).dot(u)) >= ra + rb - slack;
+  };
+  for (int k = 0; k < 3; ++k)
+    if (separated(a.axes.col(k)) || separated(b.axes.col(k))) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (separated(a.axes.col(i).cross(b.axes.col(j)))) return false;
+  return true;
+}
+
+CellularTexture::CellularTexture(const surface::SurfaceMesh& mesh, FeatureMesh features, const Vec3& up)
+    : mesh_(mesh), fm_(std::move(features)), up_(up.normalized()) {
+  courseBase_ = INFINITY;
+  for (const Vec3& v : mesh.vertices) courseBase_ = std::min(courseBase_, v.dot(up_));
+  tolerance_ = 1e-9 * std::max((mesh.boundsMax - mesh.boundsMin).norm(), 1e-12);
+  edgeMaps_.resize(fm_.edges.size());
+  faceMaps_.reserve(fm_.faces.size());
+  for (const FeatureFace& f : fm_.faces) faceMaps_.emplace_back(f, mesh);
+}
+
+std::vector<FeatureRef> CellularTexture::order() const {
+  std::vector<FeatureRef> out;
+  for (int i = 0; i < int(fm_.corners.size()); ++i) out.push_back({FeatureKind::Corner, i});
+  for (int i = 0; i < int(fm_.edges.size()); ++i) out.push_back({FeatureKind::Edge, i});
+  for (int i = 0; i < int(fm_.faces.size()); ++i) out.push_back({FeatureKind::Face, i});
+  return out;
+}
+
+EdgeSides CellularTexture::sidesAt(int edge, double s) const {
+  const FeatureEdge& e = fm_.edges[edge];
+  const EdgeFrame fr = edgeAt(e, s);
+  EdgeSides sd;
+  sd.point = fr.point;
+  sd.tangent = fr.tangent;
+  sd.twoSided = e.rightFace >= 0;
+  sd.normal[0] = faceNormalAt(fm_.faces[e.leftFace], fr.point);
+  sd.normal[1] = sd.twoSided ? faceNormalAt(fm_.faces[e.rightFace], fr.point) : sd.normal[0];
+  if (sd.tangent.dot(up_) < -1e-9) {  // walk it upwards: left and right trade places
+    sd.tangent = -sd.tangent;
+    if (sd.twoSided) std::swap(sd.normal[0], sd.normal[1]), sd.swapped = true;
+  }
+  for (Vec3& n : sd.normal) n = (n - n.dot(sd.tangent) * sd.tangent).normalized();
+  sd.away[0] = sd.normal[0].cross(sd.tangent).normalized();
+  sd.away[1] = sd.tangent.cross(sd.normal[1]).normalized();
+  return sd;
+}
+
+double CellularTexture::edgeParameter(int edge, const Vec3& p) const {
+  const FeatureEdge& e = fm_.edges[edge];
+  if (e.shape == EdgeShape::Line) return (p - e.points.front()).dot((e.points.back() - e.points.front()).normalized());
+  if (e.shape == EdgeShape::Arc) {
+    const Vec3 q = p - e.centre;
+    double a = std::atan2(q.dot(e.axis.cross(e.ref)), q.dot(e.ref));
+    if (a < 0) a += 2 * std::numbers::pi;
+    const double sweep = e.length / e.radius;
+    if (!e.closed && a > sweep && a - sweep > 2 * std::numbers::pi - a) a -= 2 * std::numbers::pi;
+    return e.radius * a;
+  }
+  return projectOnEdge(e, p);
+}
+
+void CellularTexture::project(const Cell& c, FeatureRef onto) {
+  const auto corners = c.corners();
+  if (onto.kind == FeatureKind::Edge) {
+    const FeatureEdge& e = fm_.edges[onto.index];
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Vec3& p : corners) {
+      const double s = edgeParameter(onto.index, p);
+      lo = std::min(lo, s), hi = std::max(hi, s);
+    }
+    edgeMaps_[onto.index].add(std::max(lo, 0.0), std::min(hi, e.length));
+  } else if (onto.kind == FeatureKind::Face) {
+    const FeatureFace& f = fm_.faces[onto.index];
+    if (f.kind == FaceKind::Freeform) return;
+    double top = -INFINITY;
+    for (const Vec3& p : corners) top = std::max(top, heightAbove(f, p));
+    if (top <= tolerance_) return;  // behind the face: not in its layer of cells
+    std::vector<Vec2> uv;
+    for (const Vec3& p : corners) uv.push_back(projectOnFace(f, p));
+    faceMaps_[onto.index].claim(uv);
+  }
+}
+
+bool CellularTexture::overlapsPlaced(const Cell& c) const {
+  if (grid_.empty()) return false;
+  Vec3 lo = c.corner(0), hi = lo;
+  for (const Vec3& p : c.corners()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double slack = 1e3 * tolerance_;
+  std::vector<int> seen;
+  for (int64_t x = int64_t(std::floor(lo.x() / gridSize_)); x <= int64_t(std::floor(hi.x() / gridSize_)); ++x)
+    for (int64_t y = int64_t(std::floor(lo.y() / gridSize_)); y <= int64_t(std::floor(hi.y() / gridSize_)); ++y)
+      for (int64_t z = int64_t(std::floor(lo.z() / gridSize_)); z <= int64_t(std::floor(hi.z() / gridSize_)); ++z) {
+        auto it = grid_.find(cellKey(x, y, z));
+        if (it == grid_.end()) continue;
+        for (int other : it->second) {
+          if (std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
+          seen.push_back(other);
+          if (cellsOverlap(c, cells_[other], slack)) return true;
+        }
+      }
+  return false;
+}
+
+void CellularTexture::index(int id) {
+  const Cell& c = cells_[id];
+  if (grid_.empty()) gridSize_ = std::max(2 * c.size.maxCoeff(), 1e3 * tolerance_);
+  Vec3 lo = c.corner(0), hi = lo;
+  for (const Vec3& p : c.corners()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (int64_t x = int64_t(std::floor(lo.x() / gridSize_)); x <= int64_t(std::floor(hi.x() / gridSize_)); ++x)
+    for (int64_t y = int64_t(std::floor(lo.y() / gridSize_)); y <= int64_t(std::floor(hi.y() / gridSize_)); ++y)
+      for (int64_t z = int64_t(std::floor(lo.z() / gridSize_)); z <= int64_t(std::floor(hi.z() / gridSize_)); ++z)
+        grid_[cellKey(x, y, z)].push_back(id);
+}
+
+bool CellularTexture::add(Cell cell, FeatureRef on, double keep) {
+  if (!(cell.size.minCoeff() > 1e3 * tolerance_) || !cell.origin.allFinite() || !cell.size.allFinite()) return false;
+  if (overlapsPlaced(cell)) {
+    Cell trial = cell;
+    trial.size.x() = keep * cell.size.x();
+    if (!(keep > 0) || overlapsPlaced(trial)) return false;
+    double good = trial.size.x(), bad = cell.size.x();
+    for (int k = 0; k < 24; ++k) {
+      trial.size.x() = 0.5 * (good + bad);
+      (overlapsPlaced(trial) ? bad : good) = trial.size.x();
+    }
+    cell.size.x() = good;
+  }
+  cell.feature = on;
+  cells_.push_back(cell);
+  index(int(cells_.size()) - 1);
+  project(cell, on);
+  if (on.kind == FeatureKind::Corner) {
+    const FeatureCorner& c = fm_.corners[on.index];
+    for (int e : c.edges) project(cell, {FeatureKind::Edge, e});
+    for (int f : c.faces) project(cell, {FeatureKind::Face, f});
+  } else if (on.kind == FeatureKind::Edge) {
+    const FeatureEdge& e = fm_.edges[on.index];
+    for (int f : {e.leftFace, e.rightFace})
+      if (f >= 0) project(cell, {FeatureKind::Face, f});
+  }
+  return true;
+}
+
+}  // namespace fgsg::rt::cells

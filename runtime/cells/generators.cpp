@@ -1,0 +1,482 @@
+// The pattern generators of generators.h.
+#include "runtime/cells/generators.h"
+
+#include "runtime/cells/feature_param.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace fgsg::rt::cells {
+
+namespace {
+
+// An edge within 10° of `up` is vertical (FeatureOptions::directionDegrees' default).
+const double kVerticalCos = std::cos(10 * 3.14159265358979323846 / 180);
+// Two faces at an edge closer than this to coplanar share no corner region.
+constexpr double kCoplanarSine = 0.05;
+
+Cell makeCell(const Vec3& origin, const Vec3& x, const Vec3& y, const Vec3& z, const Vec3& size) {
+  Cell c;
+  c.origin = origin;
+  c.axes.col(0) = x, c.axes.col(1) = y, c.axes.col(2) = z;
+  c.size = size;
+  return c;
+}
+
+// The extent, along side i's `away`, of the region both faces' cell layers (depth d)
+// share at an edge: {p : 0 <= n_A.p <= d, 0 <= n_B.p <= d} in the plane across the edge.
+struct Region {
+  double lo = 0, hi = 0;
+  bool ok = false;
+};
+Region regionAlong(const EdgeSides& sd, int i, double d) {
+  if (!sd.twoSided) return {};
+  const int o = 1 - i;
+  const double na = sd.normal[o].dot(sd.away[i]), nn = sd.normal[o].dot(sd.normal[i]);
+  if (std::abs(na) < kCoplanarSine) return {};
+  Region r{INFINITY, -INFINITY, true};
+  for (double alpha : {0.0, d})
+    for (double beta : {0.0, d}) {
+      const double x = (beta - alpha * nn) / na;
+      r.lo = std::min(r.lo, x), r.hi = std::max(r.hi, x);
+    }
+  return r;
+}
+
+// The face on side i of sides `sd` of edge e.
+int sideFace(const FeatureEdge& e, const EdgeSides& sd, int i) {
+  const bool left = (i == 0) != sd.swapped;
+  return left ? e.leftFace : e.rightFace;
+}
+
+// How far a cell may reach into planar face `f` from p along `away` (in its plane, along
+// its u axis) within the strip of v between the projections of p0 and p1: to the end of
+// the free run that starts at p. Infinite where the face is not planar or `away` is not
+// along u; 0 where the face is claimed right at p.
+double reachInto(const CellularTexture& tex, int f, const Vec3& p0, const Vec3& p1, const Vec3& away) {
+  const FeatureFace& face = tex.features().faces[f];
+  if (face.kind != FaceKind::Planar) return INFINITY;
+  const double along = away.dot(face.uAxis);
+  if (std::abs(along) < 0.99) return INFINITY;
+  const Vec2 a = projectOnFace(face, p0), b = projectOnFace(face, p1);
+  const FaceOccupancy& map = tex.faceMap(f);
+  const double tol = 1e3 * map.tolerance();
+  for (const Interval& run : map.freeRuns(std::min(a.y(), b.y()), std::max(a.y(), b.y())))
+    if (along > 0 ? std::abs(run.lo - a.x()) < tol : std::abs(run.hi - a.x()) < tol)
+      return along > 0 ? run.hi - a.x() : a.x() - run.lo;
+  return 0;
+}
+
+bool isVertical(const CellularTexture& tex, const FeatureEdge& e) {
+  return e.shape == EdgeShape::Line &&
+         std::abs((e.points.back() - e.points.front()).normalized().dot(tex.up())) > kVerticalCos;
+}
+
+// A whole number of courses of height `course` (at least one) closest to `extent`.
+double inCourses(double extent, double course) { return course * std::max(1.0, std::round(extent / course)); }
+
+// A corner where exactly three planar faces meet square: a cube of side d in the region
+// all three cell layers share. Where walls rise from the corner (the foot of a column on
+// its plinth), its height is whole courses instead, so the walls' courses start level.
+// Anywhere else corners get no cell (their edges' cells meet there).
+int cornerBlock(CellularTexture& tex, int c, double d, double course) {
+  const FeatureMesh& fm = tex.features();
+  const FeatureCorner& corner = fm.corners[c];
+  if (corner.faces.size() != 3) return 0;
+  Vec3 n[3];
+  for (int k = 0; k < 3; ++k) {
+    const FeatureFace& f = fm.faces[corner.faces[k]];
+    if (f.kind != FaceKind::Planar) return 0;
+    n[k] = f.normal;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (std::abs(n[i].dot(n[j])) > 0.1) return 0;
+  int upright = 0;  // the normal nearest `up` becomes the cell's height axis
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k].dot(tex.up())) > std::abs(n[upright].dot(tex.up()))) upright = k;
+  const int a = (upright + 1) % 3, b = (upright + 2) % 3;
+  const Vec3 p = tex.mesh().vertices[corner.vertex];
+  double height = d;
+  if (n[upright].dot(tex.up()) > 0.9)
+    for (int e : corner.edges) {
+      const FeatureEdge& edge = fm.edges[e];
+      const Vec3 far = edge.points.front() == p ? edge.points.back() : edge.points.front();
+      if (isVertical(tex, edge) && (far - p).dot(tex.up()) > 0) height = inCourses(d, course);
+    }
+  return tex.add(makeCell(p, n[a], n[upright], n[b], Vec3(d, height, d)), {FeatureKind::Corner, c}) ? 1 : 0;
+}
+
+// The point of straight edge e at height z (along up).
+Vec3 atHeight(const CellularTexture& tex, const FeatureEdge& e, double z) {
+  const Vec3 a = e.points.front(), b = e.points.back();
+  const double za = a.dot(tex.up()), zb = b.dot(tex.up());
+  return a + (b - a) * ((z - za) / (zb - za));
+}
+
+// Cells up a vertical edge, in layers [z, z + height(k)) from course base upwards, each
+// along the left or right face in turn: length(k) long from where the two faces' layers
+// meet, depth d, cut at the end of the face's free run.
+int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std::function<double(int)>& height,
+                    const std::function<double(int)>& length, double firstLine) {
+  const FeatureEdge& edge = tex.features().edges[e];
+  const EdgeSides sd = tex.sidesAt(e, 0.5 * edge.length);
+  const double za = edge.points.front().dot(tex.up()), zb = edge.points.back().dot(tex.up());
+  const double zlo = std::min(za, zb), zhi = std::max(za, zb);
+  auto sAt = [&](double z) { return (z - za) / (zb - za) * edge.length; };
+  const double tol = 1e3 * tex.tolerance();
+  int placed = 0;
+  double z = firstLine;
+  for (int k = 0; z < zhi - tol; ++k) {
+    const double h = height(k), z1 = z + h;
+    if (z1 > zlo + tol) {
+      double s0 = sAt(std::max(z, zlo)), s1 = sAt(std::min(z1, zhi));
+      if (s0 > s1) std::swap(s0, s1);
+      for (const Interval& gap : tex.edgeMap(e).gaps(s0, s1, tol)) {
+        // Back to heights: the gap's bottom and top.
+        double g0 = za + (zb - za) * gap.lo / edge.length, g1 = za + (zb - za) * gap.hi / edge.length;
+        if (g0 > g1) std::swap(g0, g1);
+        const int i = (k + (flip ? 1 : 0)) & 1;
+        const Region r = regionAlong(sd, i, d);
+        if (!r.ok) continue;
+        const Vec3 base = atHeight(tex, edge, g0), top = atHeight(tex, edge, g1);
+        const double reach = reachInto(tex, sideFace(edge, sd, i), base, top, sd.away[i]);
+        const double far = std::min(r.lo + length(k), std::max(r.hi, reach));
+        placed += tex.add(makeCell(base + sd.away[i] * r.lo, sd.away[i], sd.tangent, sd.normal[i],
+                                   Vec3(far - r.lo, g1 - g0, d)),
+                          {FeatureKind::Edge, e});
+      }
+    }
+    z = z1;
+  }
+  return placed;
+}
+
+// Cells along a non-vertical edge filling the region both layers share, piece lengths
+// from `next(remaining)` (the last piece takes what is left). The cells' height axis is
+// across the edge on the more upright face; where the region reaches into that face (a
+// concave edge at a wall's foot) it is whole courses high, so the wall's courses above
+// start level.
+int alongEdge(CellularTexture& tex, int e, double d, double course, const std::function<double(double)>& next) {
+  const FeatureEdge& edge = tex.features().edges[e];
+  const double tol = 1e3 * tex.tolerance();
+  int placed = 0;
+  for (const Interval& gap : tex.edgeMap(e).gaps(0, edge.length, tol)) {
+    for (double s = gap.lo; s < gap.hi - tol;) {
+      const double piece = std::min(next(gap.hi - s), gap.hi - s);
+      const Vec3 pa = edgeAt(edge, s).point, pb = edgeAt(edge, s + piece).point;
+      const EdgeSides sd = tex.sidesAt(e, s + 0.5 * piece);
+      const int i = std::abs(sd.away[0].dot(tex.up())) >= std::abs(sd.away[1].dot(tex.up())) ? 0 : 1;
+      Region r = regionAlong(sd, i, d);
+      if (r.ok && r.hi > tol && std::abs(sd.away[i].dot(tex.up())) > 0.9) r.hi = r.lo + inCourses(r.hi - r.lo, course);
+      if (r.ok && (pb - pa).norm() > tol) {
+        const Vec3 x = (pb - pa).normalized();
+        const Vec3 y = (sd.away[i] - sd.away[i].dot(x) * x).normalized();
+        const Vec3 z = x.cross(y).dot(sd.normal[i]) >= 0 ? x.cross(y) : Vec3(-x.cross(y));
+        placed += tex.add(makeCell(pa + y * r.lo, x, y, z, Vec3((pb - pa).norm(), r.hi - r.lo, d)),
+                          {FeatureKind::Edge, e});
+      }
+      s += piece;
+    }
+  }
+  return placed;
+}
+
+// Equal pieces close to `length`.
+std::function<double(double)> evenPieces(double length) {
+  return [length](double remaining) {
+    const double n = std::max(1.0, std::round(remaining / length));
+    return remaining / n;
+  };
+}
+
+// The strips of face f a generator fills, bottom to top, with their course numbers:
+// on a face that rises (a wall, a roof, a tower) the courses of height h counted from
+// the texture's course base, so that they continue around every corner; on a level face
+// strips of h from its lowest v.
+struct Strip {
+  double v0, v1;
+  int course;
+};
+std::vector<Strip> strips(const CellularTexture& tex, int f, double h) {
+  const FeatureFace& face = tex.features().faces[f];
+  const FaceOccupancy& map = tex.faceMap(f);
+  std::vector<Strip> out;
+  if (map.empty()) return out;
+  double rise = 0, v0OfBase = 0;  // v = (height - course base) / rise + v0OfBase
+  if (face.kind == FaceKind::Planar) {
+    rise = face.vAxis.dot(tex.up());
+    v0OfBase = (tex.courseBase() - face.origin.dot(tex.up())) / (rise != 0 ? rise : 1);
+  } else if (face.kind == FaceKind::Cylindrical) {
+    rise = face.axis.dot(tex.up());
+    v0OfBase = (tex.courseBase() - face.centre.dot(tex.up())) / (rise != 0 ? rise : 1);
+  }
+  const double lo = map.lo().y(), hi = map.hi().y();
+  if (rise > 0.5) {
+    const double step = h / rise;
+    const int k0 = int(std::floor((lo - v0OfBase) / step + 1e-9));
+    for (int k = k0; v0OfBase + k * step < hi - map.tolerance(); ++k) {
+      const double a = std::max(lo, v0OfBase + k * step), b = std::min(hi, v0OfBase + (k + 1) * step);
+      if (b > a + map.tolerance()) out.push_back({a, b, k});
+    }
+  } else {
+    for (int k = 0; lo + k * h < hi - map.tolerance(); ++k) out.push_back({lo + k * h, std::min(hi, lo + (k + 1) * h), k});
+  }
+  return out;
+}
+
+// A cell on face f over the parameter rectangle [u, u + len] x [v0, v1], depth d.
+Cell faceCell(const FeatureFace& face, double u, double len, double v0, double v1, double d) {
+  if (face.kind == FaceKind::Planar)
+    return makeCell(faceAt(face, {u, v0}).point, face.uAxis, face.vAxis, face.normal, Vec3(len, v1 - v0, d));
+  // Cylindrical: the chord box of the piece.
+  const FaceFrame a = faceAt(face, {u, v0}), b = faceAt(face, {u + len, v0}), m = faceAt(face, {u + 0.5 * len, v0});
+  const Vec3 x = (b.point - a.point).normalized(), y = a.v;
+  Vec3 z = m.normal - m.normal.dot(x) * x - m.normal.dot(y) * y;
+  z.normalize();
+  return makeCell(a.point, x, y, z, Vec3((b.point - a.point).norm(), v1 - v0, d));
+}
+
+// Lays one free run [run.lo, run.hi] of a strip with bricks: full bricks, the last two
+// shared evenly rather than leaving a sliver, a half brick first when asked.
+int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, bool half, const BrickSize& b) {
+  const FeatureFace& face = tex.features().faces[f];
+  const double tol = 1e3 * tex.faceMap(f).tolerance();
+  int placed = 0;
+  for (double u = run.lo; run.hi - u > tol;) {
+    const double rest = run.hi - u;
+    const double len = half ? std::min(0.5 * b.length, rest)
+                       : rest <= b.length      ? rest
+                       : rest <= 1.5 * b.length ? 0.5 * rest
+                                                : b.length;
+    half = false;
+    placed += tex.add(faceCell(face, u, len, v0, v1, b.depth), {FeatureKind::Face, f});
+    u += len;
+  }
+  return placed;
+}
+
+int runningBond(CellularTexture& tex, int f, const BrickSize& b) {
+  const FaceOccupancy& map = tex.faceMap(f);
+  const double tol = 1e3 * map.tolerance();
+  int placed = 0;
+  for (const Strip& st : strips(tex, f, b.height)) {
+    const std::vector<Interval> inside = map.insideRuns(st.v0, st.v1);
+    auto atBoundary = [&](double u) {
+      for (const Interval& i : inside)
+        if (std::abs(i.lo - u) < tol || std::abs(i.hi - u) < tol) return true;
+      return false;
+    };
+    const std::vector<Interval> full = map.freeRuns(st.v0, st.v1, tol);
+    // A free end on the face's own outline: odd courses start with a half brick, so
+    // the bond shifts by half a brick from course to course.
+    const bool odd = (st.course + (b.flip ? 1 : 0)) & 1;
+    for (const Interval& run : full) placed += layRun(tex, f, run, st.v0, st.v1, odd && atBoundary(run.lo), b);
+    // Where a claim or the outline cuts into the course (a sill off the course lines, an
+    // edge's cells a little higher than a course), bricks are clipped to what is free:
+    // lower cells in the slices between the heights where that changes.
+    const std::vector<double> cuts = map.breaks(st.v0, st.v1);
+    for (size_t k = 0; k < cuts.size() + 1 && !cuts.empty(); ++k) {
+      const double a = k ? cuts[k - 1] : st.v0, c = k < cuts.size() ? cuts[k] : st.v1;
+      for (const Interval& run : subtract(map.freeRuns(a, c, tol), full)) placed += layRun(tex, f, run, a, c, false, b);
+    }
+  }
+  return placed;
+}
+
+bool planarOrCylindrical(const FeatureFace& f) { return f.kind != FaceKind::Freeform; }
+
+}  // namespace
+
+void checkSize(const BrickSize& s) {
+  auto positive = [](double v, const char* what) {
+    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string("the ") + what + " must be a positive number");
+  };
+  positive(s.length, "brick length");
+  positive(s.height, "course height");
+  positive(s.depth, "brick depth");
+}
+
+void checkSize(const StoneSize& s) {
+  auto positive = [](double v, const char* what) {
+    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string("the ") + what + " must be a positive number");
+  };
+  positive(s.grid, "stone grid");
+  positive(s.maxWidth, "largest stone width");
+  positive(s.maxHeight, "largest stone height");
+  positive(s.depth, "stone depth");
+  if (s.maxWidth < s.grid || s.maxHeight < s.grid)
+    throw std::invalid_argument("the largest stone must be at least one grid square");
+}
+
+int layBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
+  checkSize(b);
+  const FeatureMesh& fm = tex.features();
+  switch (on.kind) {
+    case FeatureKind::Corner: return cornerBlock(tex, on.index, b.depth, b.height);
+    case FeatureKind::Edge: {
+      const FeatureEdge& e = fm.edges[on.index];
+      if (e.rightFace < 0 || e.length <= 0) return 0;  // the faces' bricks run to a free end
+      if (isVertical(tex, e)) {
+        const double base = tex.courseBase();
+        const double zmin = std::min(e.points.front().dot(tex.up()), e.points.back().dot(tex.up()));
+        const double first = base + b.height * std::floor((zmin - base) / b.height + 1e-9);
+        const int k0 = int(std::llround((first - base) / b.height));
+        return verticalCourses(
+            tex, on.index, b.depth, ((k0 & 1) != 0) != b.flip, [&](int) { return b.height; },
+            [&](int) { return b.length; }, first);
+      }
+      return alongEdge(tex, on.index, b.depth, b.height, evenPieces(b.length));
+    }
+    case FeatureKind::Face:
+      if (!planarOrCylindrical(fm.faces[on.index])) return 0;
+      return runningBond(tex, on.index, b);
+  }
+  return 0;
+}
+
+int layHeaders(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
+  checkSize(b);
+  if (on.kind != FeatureKind::Edge) return 0;
+  const FeatureEdge& e = tex.features().edges[on.index];
+  if (e.rightFace < 0) return 0;
+  const double tol = 1e3 * tex.tolerance();
+  int placed = 0;
+  for (const Interval& gap : tex.edgeMap(on.index).gaps(0, e.length, tol)) {
+    const auto piece = evenPieces(b.length);
+    for (double s = gap.lo; s < gap.hi - tol;) {
+      const double len = std::min(piece(gap.hi - s), gap.hi - s);
+      const EdgeSides sd = tex.sidesAt(on.index, s + 0.5 * len);
+      // On the more upright face: the wall under a sill, beside a jamb.
+      const int i = std::abs(sd.normal[0].dot(tex.up())) <= std::abs(sd.normal[1].dot(tex.up())) ? 0 : 1;
+      const Region r = regionAlong(sd, i, b.depth);
+      const Vec3 pa = edgeAt(e, s).point, pb = edgeAt(e, s + len).point;
+      if (r.ok && (pb - pa).norm() > tol) {
+        const Vec3 x = (pb - pa).normalized();
+        const Vec3 z = sd.normal[i];
+        const Vec3 y = sd.away[i];
+        placed += tex.add(makeCell(pa + y * r.lo, x, y, z, Vec3((pb - pa).norm(), b.height, b.depth)),
+                          {FeatureKind::Edge, on.index});
+      }
+      s += len;
+    }
+  }
+  return placed;
+}
+
+int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
+  checkSize(b);
+  if (on.kind != FeatureKind::Edge) return layBricks(tex, on, b);
+  const FeatureEdge& e = tex.features().edges[on.index];
+  if (e.shape != EdgeShape::Arc || e.rightFace < 0) return layBricks(tex, on, b);
+  // The wall is the face the arc lies in (its normal along the arc's axis); the other is
+  // the intrados. Voussoirs run radially from where the two layers meet into the wall.
+  const FeatureMesh& fm = tex.features();
+  const EdgeSides sd = tex.sidesAt(on.index, 0.5 * e.length);
+  const int wall = std::abs(sd.normal[0].dot(e.axis)) >= std::abs(sd.normal[1].dot(e.axis)) ? 0 : 1;
+  const Vec3 n = sd.normal[wall];
+  const Vec3 mid = edgeAt(e, 0.5 * e.length).point;
+  // Inward: the intrados faces the centre, so the shared region lies inside the radius.
+  const bool inside = sd.normal[1 - wall].dot(e.centre - mid) > 0;
+  const double r0 = inside ? e.radius - b.depth : e.radius;
+  (void)fm;
+  const double tol = 1e3 * tex.tolerance();
+  int placed = 0;
+  for (const Interval& gap : tex.edgeMap(on.index).gaps(0, e.length, tol)) {
+    const int count = std::max(1, int(std::lround(gap.length() / b.height)));
+    const double step = gap.length() / count;
+    for (int k = 0; k < count; ++k) {
+      const double a = (gap.lo + (k + 0.5) * step) / e.radius, half = 0.5 * step / e.radius;
+      const Vec3 radial = std::cos(a) * e.ref + std::sin(a) * e.axis.cross(e.ref);
+      const Vec3 tangent = e.axis.cross(radial);
+      const double w = r0 * std::tan(half);
+      const Vec3 origin = e.centre + r0 * radial - w * tangent;
+      placed += tex.add(makeCell(origin, radial, tangent, n, Vec3(b.length, 2 * w, b.depth)),
+                        {FeatureKind::Edge, on.index});
+    }
+  }
+  return placed;
+}
+
+int layStones(CellularTexture& tex, FeatureRef on, const StoneSize& st, RandomStream& rng) {
+  checkSize(st);
+  const FeatureMesh& fm = tex.features();
+  const double g = st.grid;
+  const int maxRows = std::max(1, int(std::floor(st.maxHeight / g + 1e-9)));
+  const int maxCols = std::max(1, int(std::floor(st.maxWidth / g + 1e-9)));
+  auto randomLength = [&](double) { return g * (1 + std::floor(rng.next() * maxCols)); };
+  switch (on.kind) {
+    case FeatureKind::Corner: return cornerBlock(tex, on.index, st.depth, g);
+    case FeatureKind::Edge: {
+      const FeatureEdge& e = fm.edges[on.index];
+      if (e.rightFace < 0 || e.length <= 0) return 0;
+      if (!isVertical(tex, e)) return alongEdge(tex, on.index, st.depth, g, randomLength);
+      const double base = tex.courseBase();
+      const double zmin = std::min(e.points.front().dot(tex.up()), e.points.back().dot(tex.up()));
+      const double first = base + g * std::floor((zmin - base) / g + 1e-9);
+      std::vector<double> heights, lengths;  // drawn once per layer, in order
+      auto draw = [&](std::vector<double>& v, int k, int most) {
+        while (int(v.size()) <= k) v.push_back(g * (1 + std::floor(rng.next() * most)));
+        return v[k];
+      };
+      return verticalCourses(
+          tex, on.index, st.depth, false, [&](int k) { return draw(heights, k, maxRows); },
+          [&](int k) { return std::max(st.maxWidth * 0.5, draw(lengths, k, maxCols)); }, first);
+    }
+    case FeatureKind::Face: {
+      const FeatureFace& face = fm.faces[on.index];
+      if (!planarOrCylindrical(face)) return 0;
+      const FaceOccupancy& map = tex.faceMap(on.index);
+      const std::vector<Strip> rows = strips(tex, on.index, g);
+      if (rows.empty()) return 0;
+      const double u0 = map.lo().x();
+      const int cols = std::max(1, int(std::ceil((map.hi().x() - u0) / g - 1e-9)));
+      // free[r][c]: grid square (c, r) lies wholly in a free run of its row.
+      std::vector<std::vector<uint8_t>> free(rows.size(), std::vector<uint8_t>(size_t(cols), 0));
+      std::vector<std::pair<int, int>> squares;
+      const double tol = 1e3 * map.tolerance();
+      for (size_t r = 0; r < rows.size(); ++r)
+        for (const Interval& run : map.freeRuns(rows[r].v0, rows[r].v1, tol))
+          for (int c = std::max(0, int(std::floor((run.lo - u0) / g + 1e-9))); c < cols; ++c) {
+            const double a = u0 + c * g, b = std::min(u0 + (c + 1) * g, map.hi().x());
+            if (a < run.lo - tol) continue;
+            if (b > run.hi + tol) break;
+            free[r][c] = 1;
+            squares.push_back({int(r), c});
+          }
+      for (size_t k = squares.size(); k > 1; --k)  // a seeded Fisher–Yates shuffle
+        std::swap(squares[k - 1], squares[size_t(rng.next() * double(k))]);
+      int placed = 0;
+      for (const auto& [r0, c0] : squares) {
+        if (!free[r0][c0]) continue;
+        int rows1 = r0 + 1, cols1 = c0 + 1;  // exclusive ends
+        for (;;) {
+          const bool right = cols1 - c0 < maxCols && cols1 < cols && [&] {
+            for (int r = r0; r < rows1; ++r)
+              if (!free[r][cols1]) return false;
+            return true;
+          }();
+          const bool up = rows1 - r0 < maxRows && rows1 < int(rows.size()) && [&] {
+            for (int c = c0; c < cols1; ++c)
+              if (!free[rows1][c]) return false;
+            return true;
+          }();
+          if (!right && !up) break;
+          if (right && (!up || rng.next() < 0.5)) ++cols1;
+          else ++rows1;
+        }
+        for (int r = r0; r < rows1; ++r)
+          for (int c = c0; c < cols1; ++c) free[r][c] = 0;
+        const double a = u0 + c0 * g, b = std::min(u0 + cols1 * g, map.hi().x());
+        placed += tex.add(faceCell(face, a, b - a, rows[r0].v0, rows[rows1 - 1].v1, st.depth), on, 1.0);
+      }
+      return placed;
+    }
+  }
+  return 0;
+}
+
+}  // namespace fgsg::rt::cells

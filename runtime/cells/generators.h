@@ -1,0 +1,45 @@
+// Pattern generators (Legakis et al. 2001, §4–5): each places cells on one feature of
+// the base mesh, reading and filling the occupancy maps (cellular_texture.h). A pattern
+// tree (in a grammar: rules over features, docs/cells.md) picks which generator each
+// feature gets. All of them return the number of cells they placed.
+//
+//   bricks       corners: a block where three faces meet square; vertical edges: one
+//                brick per course, running along the left and the right face in turn
+//                (the corner bond; `flip` starts with the right one); other edges: a
+//                row of stretchers along the edge; faces: running bond, half bricks at
+//                free ends on odd courses, courses shared by every wall.
+//   headers      edges: a row of blocks along the edge on its more vertical face (a
+//                header row under a window); corners and faces: nothing.
+//   archBricks   arc edges: voussoirs radial to the arc, as wide as a course at the
+//                intrados; other features: as bricks.
+//   stones       corners: a block; vertical edges: stones of random height and length
+//                along the left and right face in turn; other edges: random lengths;
+//                faces: grid squares merged at random into rectangles no larger than the
+//                maximum size (§5 "Random").
+#pragma once
+
+#include "runtime/cells/cellular_texture.h"
+#include "runtime/random.h"
+
+namespace fgsg::rt::cells {
+
+struct BrickSize {
+  double length = 0.215, height = 0.075, depth = 0.1025;
+  bool flip = false;  // the paper's stored bit: which face a corner's first course runs along
+};
+
+struct StoneSize {
+  double grid = 0.1, maxWidth = 0.4, maxHeight = 0.3, depth = 0.12;
+};
+
+int layBricks(CellularTexture& tex, FeatureRef on, const BrickSize& size);
+int layHeaders(CellularTexture& tex, FeatureRef on, const BrickSize& size);
+int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& size);
+int layStones(CellularTexture& tex, FeatureRef on, const StoneSize& size, RandomStream& rng);
+
+// Throws std::invalid_argument naming the first size that is not a positive finite
+// number (or a stone maximum below the grid).
+void checkSize(const BrickSize& size);
+void checkSize(const StoneSize& size);
+
+}  // namespace fgsg::rt::cells

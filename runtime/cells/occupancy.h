@@ -1,0 +1,87 @@
+// Occupancy maps (Legakis et al. 2001, §3 "Occupancy maps"): what cells of neighbouring
+// features already claimed, so that a pattern generator fills only the rest.
+//  - An edge's map is one-dimensional: claimed intervals of arc length (the paper: an
+//    array of booleans; intervals are exact and need no resolution).
+//  - A face's map is two-dimensional, in the face's parameter space: initially the face
+//    itself is free (its triangles; everything else, a window's hole included, is not),
+//    and each claim is a convex polygon, the projection of a cell. The paper rasterises
+//    both into a quadtree; generators here ask for whole courses ("which u are free for
+//    every v in [v0, v1]?"), which the triangles and polygons answer exactly, with no
+//    resolution to choose.
+#pragma once
+
+#include "runtime/cells/feature_mesh.h"
+
+#include <vector>
+
+namespace fgsg::rt::cells {
+
+struct Interval {
+  double lo = 0, hi = 0;
+  double length() const { return hi - lo; }
+};
+
+// Disjoint intervals, sorted.
+class IntervalSet {
+ public:
+  void add(double lo, double hi);
+  // The parts of [lo, hi] no interval covers, in order (pieces shorter than `minimum`
+  // dropped).
+  std::vector<Interval> gaps(double lo, double hi, double minimum = 0) const;
+  // Whether any interval overlaps (lo, hi) by more than `slack`.
+  bool overlaps(double lo, double hi, double slack = 0) const;
+  const std::vector<Interval>& intervals() const { return items_; }
+
+ private:
+  std::vector<Interval> items_;
+};
+
+// Within a list of sorted disjoint intervals, those of `a` that `b` also covers.
+std::vector<Interval> intersect(const std::vector<Interval>& a, const std::vector<Interval>& b);
+// The parts of the intervals of `a` that `b` does not cover.
+std::vector<Interval> subtract(const std::vector<Interval>& a, const std::vector<Interval>& b);
+
+class FaceOccupancy {
+ public:
+  // The face's triangles in its parameter space (faceAt / projectOnFace). A freeform
+  // face has no parameterisation: its map is empty (nothing is free).
+  FaceOccupancy(const FeatureFace& face, const surface::SurfaceMesh& mesh);
+
+  // The u intervals where every point of the strip v0 <= v <= v1 lies on the face and
+  // no claim reaches into the strip (a claim touching it only along v0 or v1 leaves it
+  // free), pieces shorter than `minimum` dropped.
+  std::vector<Interval> freeRuns(double v0, double v1, double minimum = 0) const;
+  // The u intervals where the strip lies on the face, claims ignored.
+  std::vector<Interval> insideRuns(double v0, double v1) const;
+  // The heights strictly between v0 and v1 where a claim or the face's outline starts
+  // or ends, sorted: the strip's free runs can only change there.
+  std::vector<double> breaks(double v0, double v1) const;
+  // Marks a convex polygon (its corners in any order: their convex hull is taken) as
+  // claimed.
+  void claim(const std::vector<Vec2>& points);
+
+  bool empty() const { return triangles_.empty(); }
+  Vec2 lo() const { return lo_; }
+  Vec2 hi() const { return hi_; }
+  // A length below which differences are rounding: 1e-9 of the face's size.
+  double tolerance() const { return tolerance_; }
+
+ private:
+  // The u intervals of the face along the line at v.
+  std::vector<Interval> insideAt(double v) const;
+  int bucketOf(double v) const;
+
+  std::vector<std::array<Vec2, 3>> triangles_;
+  std::vector<double> vertexHeights_;      // the triangles' corners' v, sorted, distinct
+  std::vector<std::vector<Vec2>> claims_;  // convex, counter-clockwise
+  std::vector<Vec2> claimLo_, claimHi_;    // their boxes
+  // Claims by v: bucket b holds those whose v-range meets it.
+  std::vector<std::vector<int>> buckets_;
+  Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
+  double tolerance_ = 1e-12;
+};
+
+// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
+std::vector<Vec2> convexHull(std::vector<Vec2> points);
+
+}  // namespace fgsg::rt::cells

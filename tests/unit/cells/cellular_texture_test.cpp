@@ -1,0 +1,230 @@
+// Cellular texturing (Legakis et al. 2001, §3–5): occupancy maps, the corners → edges →
+// faces order and the brick and stone generators, on the stepped square column. The
+// checks are the paper's promises: cells never overlap (FCL, independent of the
+// texture's own test), faces are covered, corner bricks alternate, courses line up
+// around every corner, occupancy is respected.
+#include "runtime/cells/cellular_texture.h"
+#include "runtime/cells/generators.h"
+#include "runtime/cells/mortar.h"
+#include "tests/unit/cells/rectilinear_mesh.h"
+
+#include <catch2/catch.hpp>
+#include <fcl/narrowphase/collision.h>
+
+#include <cmath>
+
+using namespace fgsg::rt;
+using namespace fgsg::rt::cells;
+
+namespace {
+
+const BrickSize kBrick{0.215, 0.075, 0.1025};
+constexpr double kJoint = 0.01;
+
+CellularTexture bricked(const surface::SurfaceMesh& m, const BrickSize& b = kBrick) {
+  CellularTexture tex(m, buildFeatureMesh(m));
+  for (FeatureRef f : tex.order()) layBricks(tex, f, b);
+  return tex;
+}
+
+// Pairs of output cells (shrunk by the joint) that FCL finds in contact.
+int fclContacts(const std::vector<Cell>& cells) {
+  std::vector<Cell> out;
+  for (const Cell& c : cells) out.push_back(shrunk(c, kJoint));
+  auto box = [](const Cell& c, Vec3& lo, Vec3& hi) {
+    lo = hi = c.corner(0);
+    for (const Vec3& p : c.corners()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  };
+  int contacts = 0;
+  for (size_t i = 0; i < out.size(); ++i)
+    for (size_t j = i + 1; j < out.size(); ++j) {
+      Vec3 lo1, hi1, lo2, hi2;
+      box(out[i], lo1, hi1), box(out[j], lo2, hi2);
+      if ((lo1.array() > hi2.array()).any() || (lo2.array() > hi1.array()).any()) continue;
+      auto object = [](const Cell& c) {
+        fcl::Transform3d t = fcl::Transform3d::Identity();
+        Eigen::Matrix3d r = c.axes;
+        if (r.determinant() < 0) r.col(0) = -r.col(0);  // a box is symmetric: any handedness
+        t.linear() = r;
+        t.translation() = c.centre();
+        return fcl::CollisionObjectd(std::make_shared<fcl::Boxd>(c.size.x(), c.size.y(), c.size.z()), t);
+      };
+      const fcl::CollisionObjectd a = object(out[i]), b = object(out[j]);
+      fcl::CollisionRequestd request;
+      fcl::CollisionResultd result;
+      fcl::collide(&a, &b, request, result);
+      contacts += result.isCollision();
+    }
+  return contacts;
+}
+
+bool insideBox(const Cell& c, const Vec3& p) {
+  const Vec3 q = c.axes.transpose() * (p - c.origin);
+  return (q.array() >= -1e-9).all() && (q.array() <= c.size.array() + 1e-9).all();
+}
+
+}  // namespace
+
+TEST_CASE("intervals and face maps: free runs leave out the hole and every claim", "[cells]") {
+  IntervalSet s;
+  s.add(1, 2), s.add(3, 4), s.add(1.5, 3.2);
+  REQUIRE(s.intervals().size() == 1);
+  CHECK(s.intervals()[0].lo == 1);
+  CHECK(s.intervals()[0].hi == 4);
+  const auto g = s.gaps(0, 5);
+  REQUIRE(g.size() == 2);
+  CHECK(g[1].lo == 4);
+
+  // A 3 x 3 wall (the face of one side of a box) with a claimed square in its middle.
+  const auto m = fgsg::test::rectilinearMesh({{{0, 1, 2, 3}, {0, 1}, {0, 1, 2, 3}}},
+                                             {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}, {1, 0, 1}, {2, 0, 1},
+                                              {0, 0, 2}, {1, 0, 2}, {2, 0, 2}},
+                                             true);
+  const FeatureMesh fm = buildFeatureMesh(m);
+  int front = -1;
+  for (int f = 0; f < int(fm.faces.size()); ++f)
+    if (fm.faces[f].normal.y() < -0.99) front = f;
+  REQUIRE(front >= 0);
+  FaceOccupancy map(fm.faces[front], m);
+  CHECK(map.freeRuns(0.5, 1.5).size() == 1);
+  map.claim({{1, 1}, {2, 1}, {2, 2}, {1, 2}});
+  const auto runs = map.freeRuns(1.2, 1.8);
+  REQUIRE(runs.size() == 2);
+  CHECK(runs[0].hi == Approx(1).margin(1e-12));
+  CHECK(runs[1].lo == Approx(2).margin(1e-12));
+  CHECK(map.freeRuns(0, 1).size() == 1);  // touching the claim's bottom only: free
+  CHECK(map.freeRuns(2, 3.5).empty());    // past the face's top: not on the face
+}
+
+TEST_CASE("bricks on the stepped column: no overlaps, covered faces, alternating corners, level courses", "[cells]") {
+  const auto m = fgsg::test::steppedColumn();
+  const CellularTexture tex = bricked(m);
+  const FeatureMesh& fm = tex.features();
+  const auto& cells = tex.cells();
+  REQUIRE(cells.size() > 300);
+
+  SECTION("cells never overlap (FCL on the output boxes)") { CHECK(fclContacts(cells) == 0); }
+
+  SECTION("cells sit on the surface: nothing below the base mesh") {
+    // Every cell corner lies outside the column's solid (the union of the two boxes),
+    // up to rounding.
+    auto insideSolid = [](const Vec3& p) {
+      auto in = [&](double lo, double hi, double v) { return v > lo + 1e-9 && v < hi - 1e-9; };
+      return (in(0, 1.5, p.x()) && in(0, 1.5, p.y()) && in(0, 0.45, p.z())) ||
+             (in(0.3, 1.2, p.x()) && in(0.3, 1.2, p.y()) && in(0.45, 3.0, p.z()));
+    };
+    for (const Cell& c : cells)
+      for (const Vec3& p : c.corners()) CHECK_FALSE(insideSolid(p));
+  }
+
+  SECTION("every face is covered: at least 99 % of sample points lie under a cell") {
+    for (int f = 0; f < int(fm.faces.size()); ++f) {
+      const FeatureFace& face = fm.faces[f];
+      int covered = 0, samples = 0;
+      for (int t : face.triangles) {
+        const auto& tri = m.faces[t];
+        for (int i = 1; i < 20; ++i)
+          for (int j = 1; i + j < 20; ++j) {
+            const Vec3 p = (i * m.vertices[tri[0]] + j * m.vertices[tri[1]] + (20 - i - j) * m.vertices[tri[2]]) / 20.0 +
+                           1e-4 * face.normal;
+            ++samples;
+            for (const Cell& c : cells)
+              if (insideBox(c, p)) {
+                ++covered;
+                break;
+              }
+          }
+      }
+      INFO("face " << f << " normal " << face.normal.transpose());
+      CHECK(double(covered) / samples >= 0.99);
+    }
+  }
+
+  SECTION("at every vertical convex edge the bricks of consecutive courses run along the other face") {
+    int edges = 0;
+    for (int e = 0; e < int(fm.edges.size()); ++e) {
+      const FeatureEdge& edge = fm.edges[e];
+      if (edge.fold != EdgeFold::Convex || edge.direction != EdgeDirection::Vertical) continue;
+      ++edges;
+      std::vector<const Cell*> course;
+      for (const Cell& c : cells)
+        if (c.feature.kind == FeatureKind::Edge && c.feature.index == e) course.push_back(&c);
+      std::sort(course.begin(), course.end(), [](const Cell* a, const Cell* b) { return a->origin.z() < b->origin.z(); });
+      REQUIRE(course.size() >= 4);
+      for (size_t k = 1; k < course.size(); ++k) {
+        CHECK(std::abs(course[k]->axes.col(0).dot(course[k - 1]->axes.col(0))) < 1e-9);  // turned 90°
+        CHECK(course[k]->origin.z() == Approx(course[k - 1]->origin.z() + 0.075).margin(1e-9));
+      }
+    }
+    CHECK(edges == 8);  // the column's four and the plinth's four
+  }
+
+  SECTION("courses are level around the column: every wall brick starts on a course line") {
+    for (const Cell& c : cells) {
+      if (c.feature.kind != FeatureKind::Face || std::abs(c.axes.col(2).z()) > 0.5) continue;
+      const double k = c.origin.z() / 0.075;
+      CHECK(std::abs(k - std::round(k)) < 1e-6);
+    }
+  }
+
+  SECTION("the order is corners, edges, faces") {
+    int last = 0;
+    for (const Cell& c : cells) {
+      CHECK(int(c.feature.kind) >= last);
+      last = int(c.feature.kind);
+    }
+  }
+}
+
+TEST_CASE("the occupancy maps are respected: a face generator fills only what edges left", "[cells]") {
+  const auto m = fgsg::test::steppedColumn();
+  CellularTexture tex(m, buildFeatureMesh(m));
+  // Edges first with long bricks, then faces: no face cell may overlap an edge cell.
+  for (FeatureRef f : tex.order())
+    if (f.kind != FeatureKind::Face) layBricks(tex, f, {0.4, 0.075, 0.1});
+  const size_t edgeCells = tex.cells().size();
+  for (FeatureRef f : tex.order())
+    if (f.kind == FeatureKind::Face) layBricks(tex, f, {0.215, 0.075, 0.1});
+  const auto& cells = tex.cells();
+  for (size_t i = edgeCells; i < cells.size(); ++i)
+    for (size_t j = 0; j < edgeCells; ++j) REQUIRE_FALSE(cellsOverlap(cells[i], cells[j], 1e-9));
+}
+
+TEST_CASE("random stones: reproducible, within the maximum size, no overlaps", "[cells]") {
+  const auto m = fgsg::test::steppedColumn();
+  const StoneSize st{0.075, 0.3, 0.225, 0.12};
+  auto lay = [&](uint64_t seed) {
+    CellularTexture tex(m, buildFeatureMesh(m));
+    RandomStream rng{seed, 0};
+    for (FeatureRef f : tex.order()) layStones(tex, f, st, rng);
+    return tex.cells();
+  };
+  const auto a = lay(7), b = lay(7), c = lay(8);
+  REQUIRE(a.size() == b.size());
+  for (size_t k = 0; k < a.size(); ++k) CHECK(a[k].origin == b[k].origin);
+  bool differ = a.size() != c.size();
+  for (size_t k = 0; !differ && k < a.size(); ++k) differ = a[k].origin != c[k].origin;
+  CHECK(differ);
+  for (const Cell& s : a)
+    if (s.feature.kind == FeatureKind::Face) {
+      CHECK(s.size.x() <= 0.3 + 1e-9);
+      CHECK(s.size.y() <= 0.225 + 1e-9);
+    }
+  CHECK(fclContacts(a) == 0);
+}
+
+TEST_CASE("mortar: the base mesh grown by the offset, corners kept square", "[cells]") {
+  const auto m = fgsg::test::steppedColumn();
+  const Mesh mortar = mortarMesh(m, 0.09);
+  REQUIRE(mortar.triangleCount() == m.faceCount());
+  const auto lo = mortar.boundsMin(), hi = mortar.boundsMax();
+  CHECK(lo[0] == Approx(-0.09));
+  CHECK(hi[1] == Approx(1.59));
+  CHECK(hi[2] == Approx(3.09));
+  CHECK(lo[2] == Approx(0).margin(1e-6));  // the open bottom's rim stays on the ground
+}
+
+TEST_CASE("sizes are checked", "[cells]") {
+  CHECK_THROWS_WITH(checkSize(BrickSize{0, 1, 1}), Catch::Contains("brick length"));
+  CHECK_THROWS_WITH(checkSize(StoneSize{0.1, 0.05, 0.3, 0.1}), Catch::Contains("at least one grid square"));
+}
