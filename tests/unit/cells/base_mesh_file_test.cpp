@@ -18,6 +18,8 @@ namespace {
 
 using Labels = std::vector<std::string>;
 
+const double kPiOver12 = std::acos(-1.0) / 12;
+
 // The unit cube, faces ccw from outside, written with every corner form OBJ allows; the
 // top face (relative indices) is group "roof", the rest "wall".
 const char* const kCube = R"(# two-group cube
@@ -192,4 +194,144 @@ TEST_CASE("applyGroupLabels and buildFeatureMesh check the group list", "[cells]
   FeatureMesh fm = buildFeatureMesh(lm.mesh, {}, &lm.triangleGroup);
   CHECK_THROWS_AS(applyGroupLabels(fm, lm.groups, shortList), std::invalid_argument);
   CHECK_THROWS_AS(applyGroupLabels(fm, {"only one"}, lm.triangleGroup), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------
+// The example base meshes of scripts/make-cells-meshes.py (its header describes them).
+// Counts are by hand from the geometry.
+
+namespace {
+
+LabelledMesh readAsset(const char* name) {
+  return readBaseMeshObj(std::string(FGSG_SOURCE_DIR "/examples/assets/") + name);
+}
+
+bool has(const Labels& labels, const std::string& l) {
+  return std::find(labels.begin(), labels.end(), l) != labels.end();
+}
+
+template <class T>
+int countLabelled(const std::vector<T>& items, const std::string& l) {
+  return int(std::count_if(items.begin(), items.end(), [&](const T& x) { return has(x.labels, l); }));
+}
+
+int count(const FeatureMesh& fm, EdgeDirection d) {
+  return int(std::count_if(fm.edges.begin(), fm.edges.end(), [&](const FeatureEdge& e) { return e.direction == d; }));
+}
+
+int countFold(const FeatureMesh& fm, EdgeFold f) {
+  return int(std::count_if(fm.edges.begin(), fm.edges.end(), [&](const FeatureEdge& e) { return e.fold == f; }));
+}
+
+}  // namespace
+
+TEST_CASE("example base mesh: brick_building.obj", "[cells][obj][assets]") {
+  const LabelledMesh lm = readAsset("brick_building.obj");
+  CHECK(lm.groups == Labels{"wall", "window", "door", "arch", "roof"});
+  const FeatureMesh fm = buildLabelledFeatureMesh(lm);
+  // Faces: 4 walls + roof; per window (3) 4 reveals + glass; the door's 2 jambs, its
+  // back face (rectangle and half disk, one plane) and the intrados under the arch.
+  CHECK(fm.faces.size() == 5 + 3 * 5 + 4);
+  // Edges: 8 on the open boundary (the ground on either side of the door, the jambs' and
+  // the door's lower edges, the two sides, the back), 4 vertical corners, 4 round the
+  // roof; per window 4 at the wall, 4 at the glass and 4 between reveals; at the door 3
+  // at the wall (jamb, arch, jamb), 3 at its back face and 2 where jambs meet the arch.
+  CHECK(fm.edges.size() == 8 + 4 + 4 + 3 * 12 + 8);
+  CHECK(countFold(fm, EdgeFold::Boundary) == 8);
+  // Corners: 8 of the block, 4 where the door meets the ground, 4 at its springing line,
+  // 8 per window.
+  CHECK(fm.corners.size() == 8 + 4 + 4 + 3 * 8);
+
+  CHECK(countLabelled(fm.faces, "wall") == 4);
+  CHECK(countLabelled(fm.faces, "roof") == 1);
+  CHECK(countLabelled(fm.faces, "window") == 15);
+  CHECK(countLabelled(fm.faces, "door") == 3);
+  CHECK(countLabelled(fm.faces, "arch") == 1);
+  for (const auto& f : fm.faces) {
+    REQUIRE(f.labels.size() == 1);
+    if (f.labels[0] != "arch") CHECK(f.planar());
+    if (f.labels[0] == "wall") {
+      CHECK(std::abs(f.normal.z()) < 1e-12);
+      CHECK(f.vAxis.z() == Approx(1));  // courses run horizontally
+    }
+    if (f.labels[0] == "window") CHECK(f.loops == 1);
+    if (f.labels[0] == "wall" && f.normal.y() < -0.999) {
+      // The front wall: the outer loop, which runs round the door because the door reaches
+      // the ground, and one loop per window.
+      CHECK(f.loops == 3);
+      CHECK(f.area == Approx(6 * 4.5 - 2 * 1.0 * 1.35 - 1.2 * 2.025 - 12 * 0.36 * std::sin(kPiOver12) / 2));
+    } else if (f.labels[0] == "wall" && f.normal.y() > 0.999) {
+      CHECK(f.loops == 2);  // the back wall and its window
+    } else if (f.labels[0] == "arch") {
+      CHECK(f.kind == FaceKind::Cylindrical);
+      CHECK_FALSE(f.outward);  // a vault, seen from below
+      CHECK(f.radius == Approx(0.6).epsilon(1e-4));
+      CHECK(std::abs(f.axis.y()) == Approx(1));
+      CHECK(f.loops == 1);
+    }
+  }
+  // The arch: its rims at the wall and at the door's back are circular arcs of radius
+  // 0.6 over half a turn, labelled with both sides' groups.
+  std::vector<Labels> arcs;
+  for (const auto& e : fm.edges)
+    if (e.shape == EdgeShape::Arc) {
+      arcs.push_back(e.labels);
+      CHECK(e.radius == Approx(0.6).margin(1e-6));
+      CHECK(e.length == Approx(0.6 * 3.14159265358979).epsilon(1e-6));
+      CHECK(e.direction == EdgeDirection::Curved);
+      CHECK(e.vertices.size() == 13);
+    }
+  std::sort(arcs.begin(), arcs.end());
+  CHECK(arcs == std::vector<Labels>{{"arch", "door"}, {"arch", "wall"}});
+  CHECK(countLabelled(fm.edges, "arch") == 2 + 2);  // and the joints with the jambs
+}
+
+TEST_CASE("example base mesh: stepped_column.obj", "[cells][obj][assets]") {
+  const LabelledMesh lm = readAsset("stepped_column.obj");
+  CHECK(lm.groups == Labels{"column", "cap"});
+  const FeatureMesh fm = buildLabelledFeatureMesh(lm);
+  // Faces: the plinth's 4 sides, its top ring, the column's 4 sides, the cap.
+  REQUIRE(fm.faces.size() == 10);
+  // Edges: 4 vertical on the plinth and 4 on the column; 4 horizontal at each of the
+  // ground (boundary), the plinth's top (convex), the column's foot (concave), the cap.
+  CHECK(fm.edges.size() == 24);
+  CHECK(count(fm, EdgeDirection::Vertical) == 8);
+  CHECK(count(fm, EdgeDirection::Horizontal) == 16);
+  CHECK(countFold(fm, EdgeFold::Boundary) == 4);
+  CHECK(countFold(fm, EdgeFold::Concave) == 4);
+  CHECK(fm.corners.size() == 16);
+  CHECK(countLabelled(fm.faces, "cap") == 1);
+  CHECK(countLabelled(fm.edges, "cap") == 4);
+  CHECK(countLabelled(fm.corners, "cap") == 4);
+  int rings = 0;
+  for (const auto& f : fm.faces) {
+    CHECK(f.planar());
+    rings += f.loops == 2;  // the plinth's top, round the column
+  }
+  CHECK(rings == 1);
+}
+
+TEST_CASE("example base mesh: stone_wall.obj", "[cells][obj][assets]") {
+  const LabelledMesh lm = readAsset("stone_wall.obj");
+  CHECK(lm.groups == Labels{"wall", "window"});
+  const FeatureMesh fm = buildLabelledFeatureMesh(lm);
+  // Faces: front, back, 2 ends, top and the window's 4 reveals through the wall.
+  REQUIRE(fm.faces.size() == 9);
+  // Edges: 4 on the ground, 4 vertical at the ends, 4 round the top; the window's rims
+  // on both sides (4 + 4, convex) and 4 concave between its reveals.
+  CHECK(fm.edges.size() == 24);
+  CHECK(countFold(fm, EdgeFold::Concave) == 4);
+  CHECK(fm.corners.size() == 16);
+  CHECK(countLabelled(fm.faces, "window") == 4);
+  CHECK(countLabelled(fm.edges, "window") == 12);
+  CHECK(countLabelled(fm.corners, "window") == 8);
+  int pierced = 0;
+  for (const auto& f : fm.faces) {
+    CHECK(f.planar());
+    if (has(f.labels, "window")) CHECK(f.area == Approx(0.9 * 0.6));
+    pierced += f.loops == 2;  // front and back
+  }
+  CHECK(pierced == 2);
+  // Genus 1 with one boundary loop: V - E + F - (extra loops) = 2 - 2g - 1 = -1.
+  CHECK(int(fm.corners.size()) - int(fm.edges.size()) + int(fm.faces.size()) - 2 == -1);
 }
