@@ -155,6 +155,14 @@ TEST_CASE("base mesh OBJ: faces before any group, o and usemtl", "[cells][obj]")
   CHECK(fm.faces[2].labels == Labels{"red brick"});
 }
 
+TEST_CASE("base mesh OBJ: CRLF line ends, tabs, trailing comments, a leading '+'", "[cells][obj]") {
+  const LabelledMesh lm =
+      parseBaseMeshObj("v 0 0 0\r\nv +1 0 0\r\nv\t0 1 0\r\ng  two words \t\r\nf 1 2 3 # a comment\r\n", "t.obj");
+  CHECK(lm.groups == Labels{"two words"});
+  CHECK(lm.mesh.vertices[1].x() == 1);
+  CHECK(lm.mesh.faces.size() == 1);
+}
+
 TEST_CASE("base mesh OBJ: errors name the file and line", "[cells][obj]") {
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   CHECK(errorOf(tri + "f 1 2 4\n") == "in.obj:4: vertex index 4 is out of range (3 vertices so far)");
