@@ -78,8 +78,12 @@ int countLoops(const std::vector<FeatureEdge>& edges, const std::vector<int>& id
 
 }  // namespace
 
-FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions& options) {
+FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions& options,
+                             const std::vector<int>* triangleGroup) {
   validate(m, options);
+  if (triangleGroup && triangleGroup->size() != m.faces.size())
+    throw std::invalid_argument("buildFeatureMesh: " + std::to_string(triangleGroup->size()) +
+                                " triangle groups for " + std::to_string(m.faces.size()) + " triangles");
   FeatureOptions o = options;
   o.up.normalize();
   const int nf = int(m.faces.size()), nv = int(m.vertices.size());
@@ -100,10 +104,14 @@ FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions
         continue;
       }
       const double c = m.faceNormals[f].dot(m.faceNormals[g]);
-      if (c >= crease) continue;
-      // Convex when the neighbour's far vertex lies below f's plane.
+      const bool grouped = triangleGroup && (*triangleGroup)[f] != (*triangleGroup)[g];
+      if (c >= crease && !grouped) continue;
+      // Convex when the neighbour's far vertex lies below f's plane (on it: a flat edge
+      // between groups, where rounding must not pick the fold).
       const Vec3 far = m.vertices[opposite(m.faces[g], a, b)] - m.vertices[a];
-      const EdgeFold fold = far.dot(m.faceNormals[f]) < 0 ? EdgeFold::Convex : EdgeFold::Concave;
+      const double below = far.dot(m.faceNormals[f]);
+      const bool flat = grouped && std::abs(below) <= 1e-9 * far.norm();
+      const EdgeFold fold = below < 0 || flat ? EdgeFold::Convex : EdgeFold::Concave;
       medges.push_back({a, b, f, g, fold, std::acos(std::clamp(c, -1.0, 1.0))});
       isFeature[f][k] = 1;
       for (int j = 0; j < 3; ++j)
@@ -245,6 +253,39 @@ FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& m, const FeatureOptions
                             : CornerKind::Mixed;
   }
   return fm;
+}
+
+void applyGroupLabels(FeatureMesh& fm, const std::vector<std::string>& groups,
+                      const std::vector<int>& triangleGroup) {
+  if (triangleGroup.size() != fm.faceOfTriangle.size())
+    throw std::invalid_argument("applyGroupLabels: " + std::to_string(triangleGroup.size()) +
+                                " triangle groups for " + std::to_string(fm.faceOfTriangle.size()) + " triangles");
+  auto tidy = [](std::vector<std::string>& l) {
+    std::sort(l.begin(), l.end());
+    l.erase(std::unique(l.begin(), l.end()), l.end());
+  };
+  auto add = [&](std::vector<std::string>& to, const std::vector<std::string>& from) {
+    to.insert(to.end(), from.begin(), from.end());
+    tidy(to);
+  };
+  for (size_t t = 0; t < triangleGroup.size(); ++t)
+    if (triangleGroup[t] < 0 || size_t(triangleGroup[t]) >= groups.size())
+      throw std::invalid_argument("applyGroupLabels: triangle " + std::to_string(t) + " has group " +
+                                  std::to_string(triangleGroup[t]) + " of " + std::to_string(groups.size()));
+  for (auto& face : fm.faces) {
+    std::vector<int> ids;  // its triangles' groups: one, unless built without them
+    for (int t : face.triangles) ids.push_back(triangleGroup[t]);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for (int g : ids)
+      if (!groups[g].empty()) face.labels.push_back(groups[g]);
+    tidy(face.labels);
+  }
+  for (auto& edge : fm.edges)
+    for (int f : {edge.leftFace, edge.rightFace})
+      if (f >= 0) add(edge.labels, fm.faces[f].labels);
+  for (auto& corner : fm.corners)
+    for (int e : corner.edges) add(corner.labels, fm.edges[e].labels);
 }
 
 const char* toString(EdgeFold f) {

@@ -40,7 +40,7 @@
 //    corners by the folds of their edges (all convex, all concave, mixed, or on the
 //    boundary) and valence (the number of edge ends at the corner).
 //  - Labels are the designer's annotations (the paper: "window", "arch", ...): strings,
-//    left empty here for the caller to fill.
+//    left empty by buildFeatureMesh, filled from mesh groups by applyGroupLabels.
 // Output order is deterministic: faces by their smallest triangle, corners by vertex,
 // edges in the order they are walked from corners (increasing vertex, then increasing
 // neighbour vertex), then closed loops by their smallest vertex.
@@ -135,7 +135,19 @@ struct FeatureMesh {
 
 // Builds the parent mesh over `mesh` (its topology built). Throws std::invalid_argument
 // for an empty mesh, a mesh without topology, or options out of range.
-FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& mesh, const FeatureOptions& options = {});
+// `triangleGroup` (one entry per triangle, e.g. the OBJ groups of base_mesh_file.h): a
+// mesh edge between triangles of different groups is always a feature edge, even where
+// they are coplanar (the designer's annotation separates faces the geometry does not);
+// its fold is found as for any edge, a flat one counting as convex.
+FeatureMesh buildFeatureMesh(const surface::SurfaceMesh& mesh, const FeatureOptions& options = {},
+                             const std::vector<int>* triangleGroup = nullptr);
+
+// Labels from groups: each face gets groups[g] for the groups g of its triangles (empty
+// names skipped), each edge the union of its two faces' labels, each corner the union of
+// its edges' labels; all sorted, without repeats, merged with labels already there.
+// Throws std::invalid_argument when triangleGroup does not match the mesh or groups.
+void applyGroupLabels(FeatureMesh& fm, const std::vector<std::string>& groups,
+                      const std::vector<int>& triangleGroup);
 
 const char* toString(EdgeFold);
 const char* toString(EdgeShape);
