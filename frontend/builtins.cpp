@@ -5,8 +5,6 @@
 namespace fgsg::frontend {
 namespace {
 
-constexpr const char* kSolvers = "solver commands in grammars";
-
 const CommandInfo kCommands[] = {
     {CommandId::Translate, "T", 3, 3, BodyRule::None, "T(tx, ty, tz)", nullptr},
     {CommandId::Rotate, "R", 3, 3, BodyRule::None, "R(ax, ay, az)", nullptr},
@@ -42,7 +40,15 @@ const CommandInfo kCommands[] = {
     {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,
      "Synthesize(\"example.txt\", nx, ny, nz)", nullptr},
     {CommandId::Evolve, "Evolve", 2, 5, BodyRule::None, "Evolve(tileset or \"tiles.json\", generation, k, p4, resolution)", nullptr},
-    {CommandId::Cells, "Cells", 0, -1, BodyRule::Optional, "Cells(...)", kSolvers},
+    {CommandId::Cells, "Cells", 1, 3, BodyRule::One, "Cells(\"base.obj\", joint, mortar){ Feature }", nullptr},
+    {CommandId::BrickBond, "BrickBond", 3, 4, BodyRule::Optional, "BrickBond(length, height, depth, flip){ Brick }",
+     nullptr},
+    {CommandId::HeaderRow, "HeaderRow", 3, 3, BodyRule::Optional, "HeaderRow(width, height, depth){ Header }",
+     nullptr},
+    {CommandId::ArchBricks, "ArchBricks", 3, 3, BodyRule::Optional, "ArchBricks(length, height, depth){ Voussoir }",
+     nullptr},
+    {CommandId::RandomStones, "RandomStones", 4, 4, BodyRule::Optional,
+     "RandomStones(grid, maxWidth, maxHeight, depth){ Stone }", nullptr},
 };
 
 const FunctionInfo kFunctions[] = {
@@ -65,6 +71,19 @@ const FunctionInfo* findFunction(const std::string& name) {
   for (const auto& f : kFunctions)
     if (name == f.name) return &f;
   return nullptr;
+}
+
+bool isFeatureMember(const std::string& m, bool& isNumber, bool& takesString) {
+  static const char* kTruths[] = {"corner", "edge",    "face",   "horizontal", "vertical", "curved", "arc",
+                                  "convex", "concave", "boundary", "bottom",   "top",      "side"};
+  static const char* kNumbers[] = {"index", "valence", "length", "area"};
+  isNumber = takesString = false;
+  if (m == "label") return takesString = true, true;
+  for (const char* t : kTruths)
+    if (m == t) return true;
+  for (const char* n : kNumbers)
+    if (m == n) return isNumber = true, true;
+  return false;
 }
 
 bool isFieldMember(const std::string& m, bool& isVector) {

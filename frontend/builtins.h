@@ -13,6 +13,7 @@ enum class CommandId {
   Subdiv, Repeat, Comp, Extrude, Roof, Lock, Center,
   Forward, Move,  // turtle F and f written as identifiers
   Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
+  BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators
 };
 
 enum class BodyRule {
@@ -20,7 +21,7 @@ enum class BodyRule {
   PerSize,     // one body part per size argument (Subdiv)
   One,         // exactly one part (Repeat, Comp, Roof)
   AtLeastOne,  // Lock, Branch, Marching
-  Optional,    // solver hand-offs (Evolve, Cells) may take one
+  Optional,    // at most one part (the cell generators' cell symbol)
 };
 
 struct CommandInfo {
@@ -45,6 +46,11 @@ struct FunctionInfo {
 // Math functions and Rand; nullptr when unknown. Names are matched exactly, with
 // `Rand` and `rand` both accepted.
 const FunctionInfo* findFunction(const std::string& name);
+
+// The members Feature answers inside Cells (Feature.edge, Feature.label("window") ...),
+// with whether the value is a number (else a truth value) and whether it takes the one
+// string argument.
+bool isFeatureMember(const std::string& member, bool& isNumber, bool& takesString);
 
 // The members a field answers (F1.vector1 ...), with whether the value is a vector.
 bool isFieldMember(const std::string& member, bool& isVector);

@@ -144,8 +144,23 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (n > 3) expect(*item.args[3], w, ValueType::Bool, "the p4 flag of 'Evolve'");
       if (n > 4) expect(*item.args[4], w, ValueType::Num, "the polycube resolution of 'Evolve'");
       break;
-    case CommandId::Cells:
-      for (const auto& a : item.args) typeOf(*a, w, true);
+    case CommandId::Cells: {
+      // An optional base-mesh file first, then the joint and the mortar offset.
+      ConstValue v;
+      const size_t first = evalConst(*item.args[0], v) && v.type == ValueType::Str ? 1 : 0;
+      if (first) stringArg(0, "base mesh file");
+      if (n - int(first) < 1)
+        diags_.error("E016", item.range, std::string("'Cells' needs the mortar joint after the base mesh file: ") + cmd.signature);
+      numArgs(first, false);
+      break;
+    }
+    case CommandId::BrickBond:
+    case CommandId::HeaderRow:
+    case CommandId::ArchBricks:
+    case CommandId::RandomStones:
+      for (size_t k = 0; k < item.args.size(); ++k)
+        expect(*item.args[k], w, k == 3 && cmd.id == CommandId::BrickBond ? ValueType::Bool : ValueType::Num,
+               "this argument");
       break;
     default: numArgs(0, false); break;
   }
@@ -183,7 +198,11 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
                          " body parts; it takes the Top part and optionally the Extruded part: " +
                          cmd.signature);
       break;
-    case BodyRule::Optional: break;
+    case BodyRule::Optional:
+      if (parts > 1)
+        diags_.error("E018", item.range,
+                     "'" + item.name + "' takes at most one { } body part, the symbol of its cells: " + cmd.signature);
+      break;
   }
 }
 

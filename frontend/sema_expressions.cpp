@@ -217,6 +217,21 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
     return fail("unknown shape query 'Shape." + e.text +
                 "' (Shape.depth, Shape.index, Shape.visible(\"street\"))");
   }
+  if (e.object == "Feature") {
+    bool number = false, takesString = false;
+    if (!isFeatureMember(e.text, number, takesString) || e.hasCall != takesString ||
+        (takesString && e.args.size() != 1))
+      return fail("unknown feature query 'Feature." + e.text +
+                  "' (Feature.corner edge face horizontal vertical curved arc convex concave boundary "
+                  "bottom top side, Feature.label(\"window\"), Feature.index valence length area)");
+    if (takesString) {
+      ConstValue v;
+      if (!evalConst(*e.args[0], v) || v.type != ValueType::Str)
+        return fail("Feature.label takes a constant string: Feature.label(\"window\")");
+      res_.exprTypes[e.args[0].get()] = ValueType::Str;
+    }
+    return record(e, number ? ValueType::Num : ValueType::Bool, report);
+  }
   if (textureLookup) {
     if (e.args.size() > 1 || (e.args.size() == 1 && (e.args[0]->kind != ExprKind::Ident ||
                                                       e.args[0]->text != "texCoord")))
@@ -236,7 +251,7 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
                     "mincurv maxcurv meancurv gausscurv ...)");
       return record(e, vec ? ValueType::Vec3 : ValueType::Num, report);
     }
-  return fail("'" + e.object + "' is not a field, a texture context, Scope or Shape");
+  return fail("'" + e.object + "' is not a field, a texture context, Scope, Shape or Feature");
 }
 
 }  // namespace fgsg::frontend::sema_detail

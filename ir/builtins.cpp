@@ -40,8 +40,9 @@ constexpr QuerySignature kQueries[] = {
     {"Scope", "occ", 1, Type::Str, Type::Str, true},
     {"", "", 0, N, N, false},   // Field: F1.vector1 is Vec3, F1.value1 Num ...
     {"", "", -1, N, N, false},  // Texture: context.mask(uv)
+    {"", "", -1, N, N, false},  // Feature: Feature.edge is Bool, Feature.index Num, Feature.label("x") Bool
 };
-static_assert(std::size(kQueries) == static_cast<size_t>(Query::Texture) + 1,
+static_assert(std::size(kQueries) == static_cast<size_t>(Query::Feature) + 1,
               "one signature per Query");
 
 double deg(double radians) { return radians / kRadiansPerDegree; }

@@ -56,6 +56,7 @@ enum class Query : uint8_t {
   ScopeOcc,            // Scope.occ("noparent"): Str "none" | "part" | "full"
   Field,               // F1.member: env = the field, extra = string id of the member
   Texture,             // context.mask(uv): env = the texture; args as written
+  Feature,             // Feature.edge, Feature.label("window") inside Cells: extra = string id of the member; args as written
 };
 
 struct Expr {
@@ -106,8 +107,13 @@ enum class OpKind : uint8_t {
   MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
   Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
   Evolve,        // index 0: str = tile file; index i > 0: Module::tileSets[i - 1] (str its name); args generation, then optional k (rule size) and p4 (Bool): Chan & Hui's GA pattern fills the scope
+  Cells,         // index 1: str = base mesh file, else the scope's own geometry; args joint, optional mortar; bodies[0]: each feature's shape (Legakis et al.)
+  CellPattern,   // index = CellGenerator; args its sizes; bodies: none, or [0] each cell's shape
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
+
+// Cells' pattern generators (runtime/cells/generators.h).
+enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomStones };
 
 enum class InstanceMode : uint8_t { Plain, Collide, Merge };
 

@@ -329,6 +329,24 @@ class Lowerer {
         op.str = m_.internString(op.index ? item.args[0]->text : constString(*item.args[0]));
         allArgs(1);
         break;
+      case CommandId::Cells: {
+        op.kind = OpKind::Cells;
+        const bool file = typeOf(*item.args[0]) == Type::Str;
+        if (file) op.index = 1, op.str = m_.internString(constString(*item.args[0]));
+        allArgs(file ? 1 : 0);
+        break;
+      }
+      case CommandId::BrickBond:
+      case CommandId::HeaderRow:
+      case CommandId::ArchBricks:
+      case CommandId::RandomStones:
+        op.kind = OpKind::CellPattern;
+        op.index = static_cast<uint32_t>(cmd.id == CommandId::BrickBond    ? CellGenerator::BrickBond
+                                         : cmd.id == CommandId::HeaderRow  ? CellGenerator::HeaderRow
+                                         : cmd.id == CommandId::ArchBricks ? CellGenerator::ArchBricks
+                                                                           : CellGenerator::RandomStones);
+        allArgs(0);
+        break;
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));
@@ -489,6 +507,9 @@ class Lowerer {
       out.index = static_cast<uint32_t>(e.text == "depth"   ? Query::ShapeDepth
                                         : e.text == "index" ? Query::ShapeIndex
                                                             : Query::ShapeVisible);
+    } else if (e.object == "Feature") {
+      out.index = static_cast<uint32_t>(Query::Feature);
+      out.extra = m_.internString(e.text);
     } else if (e.object == "context") {
       out.index = static_cast<uint32_t>(Query::Texture);
       out.env = environmentIndex("texture", e.text);

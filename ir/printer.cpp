@@ -348,6 +348,12 @@ class Printer {
       case OpKind::Marching: text = withArgs("marching"); break;
       case OpKind::MarchCondition: text = withArgs("march-condition"); break;
       case OpKind::Branch: text = withArgs("branch"); break;
+      case OpKind::Cells: text = withArgs(op.index ? "cells " + stringLit(op.str) : std::string("cells")); break;
+      case OpKind::CellPattern: {
+        static const char* kNames[] = {"brick-bond", "header-row", "arch-bricks", "random-stones"};
+        text = withArgs(op.index < 4 ? kNames[op.index] : "cell-pattern?");
+        break;
+      }
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
     }
     line(depth, text);
@@ -448,7 +454,7 @@ class Printer {
   }
 
   void writeQuery(const Rule* rule, const Expr& e, std::string& s) {
-    if (e.index > static_cast<uint32_t>(Query::Texture)) {
+    if (e.index > static_cast<uint32_t>(Query::Feature)) {
       s += "query#" + std::to_string(e.index);
       writeArgs(rule, e.args, s);
       return;
@@ -458,6 +464,10 @@ class Printer {
       case Query::Field:
         s += envName(e.env, "field") + "." +
              (e.extra < m_.strings.size() ? m_.strings[e.extra] : "str#" + std::to_string(e.extra));
+        if (!e.args.empty()) writeArgs(rule, e.args, s);
+        return;
+      case Query::Feature:
+        s += "Feature." + (e.extra < m_.strings.size() ? m_.strings[e.extra] : "str#" + std::to_string(e.extra));
         if (!e.args.empty()) writeArgs(rule, e.args, s);
         return;
       case Query::Texture:

@@ -37,6 +37,8 @@ const char* opName(OpKind k) {
     case OpKind::Marching: return "marching";
     case OpKind::MarchCondition: return "march-condition";
     case OpKind::Branch: return "branch";
+    case OpKind::Cells: return "cells";
+    case OpKind::CellPattern: return "cell-pattern";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -481,6 +483,19 @@ class Verifier {
           problem(std::to_string(op.args.size()) + " arguments, expected 0 or 1 (length)");
         numArgs(op, r, op.args.size());
         break;
+      case OpKind::Cells:
+        if (op.index) stringId(op.str);
+        expectBodies(op, 1);
+        if (op.args.empty() || op.args.size() > 2)
+          problem(std::to_string(op.args.size()) + " arguments, expected 1 or 2 (joint, mortar)");
+        numArgs(op, r, op.args.size());
+        break;
+      case OpKind::CellPattern:
+        if (op.index > static_cast<uint32_t>(CellGenerator::RandomStones))
+          problem("cell generator " + std::to_string(op.index) + " out of range");
+        if (op.bodies.size() > 1) problem(std::to_string(op.bodies.size()) + " bodies, expected 0 or 1");
+        if (op.args.size() < 3 || op.args.size() > 4) problem(std::to_string(op.args.size()) + " arguments, expected 3 or 4");
+        break;
       case OpKind::Synthesize:
         stringId(op.str);
         expectBodies(op, 0);
@@ -652,7 +667,7 @@ class Verifier {
   }
 
   void query(const Expr& e) {
-    if (e.index > static_cast<uint32_t>(Query::Texture)) {
+    if (e.index > static_cast<uint32_t>(Query::Feature)) {
       problem("query " + std::to_string(e.index) + " out of range");
       return;
     }
@@ -668,7 +683,7 @@ class Verifier {
       if (e.env >= m_.environment.size() || m_.environment[e.env].kind != kind)
         problem("environment entry " + std::to_string(e.env) + " is not a " + kind);
     }
-    if (q == Query::Field) stringId(e.extra);
+    if (q == Query::Field || q == Query::Feature) stringId(e.extra);
   }
 
   const Module& m_;

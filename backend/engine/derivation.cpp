@@ -20,7 +20,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
                        std::vector<double> attrs, const FgsgProgram* program, bool direct)
     : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
-      scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this) {
+      scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;
   if (m_.mode != ir::DeriveMode::Parallel && m_.depthBound >= 0 &&
@@ -28,7 +28,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
     maxDepth_ = static_cast<uint32_t>(m_.depthBound);
     depthBoundIsGrammars_ = true;
   }
-  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_, &marching_, &evolve_};
+  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_, &marching_, &evolve_, &cells_};
   for (CommandFamily* family : families) registerFamily(*family);
   // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {

@@ -21,6 +21,7 @@
 //   parallel_rewriter.cpp  the L-system string rewriter and its turtle interpretation
 #pragma once
 
+#include "backend/commands/cells_command.h"
 #include "backend/commands/cga_commands.h"
 #include "backend/commands/evolve_command.h"
 #include "backend/commands/collision_commands.h"
@@ -105,6 +106,9 @@ class Derivation final : public QueryHost {
   double fieldNumber(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
   rt::Vec3 fieldVector(const rt::Scope& scope, uint32_t env, const std::string& member, ir::Loc at) override;
   double texture(const rt::Scope& scope, uint32_t env, ir::Loc at) override;
+  double feature(const std::string& member, const std::string& arg, ir::Loc at) override {
+    return cells_.feature(member, arg, at);
+  }
 
   // ------------------------------------------------ the runtime entry points of compiled
   // code (runtime/abi.def, native_bridge.cpp), for a sequential derivation (call.st set)
@@ -293,6 +297,7 @@ class Derivation final : public QueryHost {
   SynthesisCommand synthesis_;
   MarchingCommands marching_;
   EvolveCommand evolve_;
+  CellsCommand cells_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
 

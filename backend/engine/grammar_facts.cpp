@@ -87,7 +87,8 @@ void Derivation::findEagerSymbols() {
 bool Derivation::canOrderDirectInstances() const {
   if (!program_->directPlaces || collide_.active() || usesOcclusion_ || collide_.testsEveryInstance()) return false;
   // Synthesize and Evolve create shapes of the symbols their files name, not written as Emit.
-  if (moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Synthesize || op.kind == ir::OpKind::Evolve; }))
+  if (moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Synthesize || op.kind == ir::OpKind::Evolve ||
+                               op.kind == ir::OpKind::Cells; }))
     return false;
   std::vector<uint8_t> seen(m_.symbols.size(), 0);
   std::vector<uint32_t> todo;
@@ -120,14 +121,14 @@ bool Derivation::canOrderDirectInstances() const {
 // Whether the plants of several seeds can be derived apart: when no shape can see what
 // another placed — no collision tests (IC, Lock, `collision all`, --collide-all), no
 // merges (IM), no lines (they join and stop at each other), no occlusion or visibility
-// queries, no synthesis or Evolve (they place shapes and register assets of their own) —
+// queries, no synthesis, Evolve or Cells (they place shapes and register assets of their own) —
 // a plant grows alike alone.
 bool Derivation::seedsGrowApart() const {
   if (m_.collision.all || opt_.collideAll) return false;
   if (moduleUses([](const ir::Op& op) {
         using K = ir::OpKind;
         return op.kind == K::Lock || op.kind == K::Line || op.kind == K::LineSeg || op.kind == K::Synthesize ||
-               op.kind == K::Evolve || (op.kind == K::Instance && op.mode != ir::InstanceMode::Plain);
+               op.kind == K::Evolve || op.kind == K::Cells || (op.kind == K::Instance && op.mode != ir::InstanceMode::Plain);
       }))
     return false;
   return !moduleUsesQuery(ir::Query::ScopeOcc) && !moduleUsesQuery(ir::Query::ShapeVisible);

@@ -154,7 +154,7 @@ void Evaluator::requireScope(const ir::Expr& e, const Frame& f) {
 double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   using ir::Query;
   const auto q = static_cast<Query>(e.index);
-  if (q != Query::ShapeDepth && q != Query::ShapeIndex) requireScope(e, f);
+  if (q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Feature) requireScope(e, f);
   switch (q) {
     case Query::ScopeSx: return f.scope->S.x();
     case Query::ScopeSy: return f.scope->S.y();
@@ -169,6 +169,8 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
     case Query::Field:
       return f.host->fieldNumber(*f.scope, e.env, m_.strings[e.extra], e.loc);
     case Query::Texture: return f.host->texture(*f.scope, e.env, e.loc);
+    case Query::Feature:
+      return f.host->feature(m_.strings[e.extra], e.args.empty() ? std::string() : string(num(e.args[0], f)), e.loc);
   }
   throw DeriveError{e.loc, "R900", "internal: unknown query"};
 }

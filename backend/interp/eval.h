@@ -34,6 +34,9 @@ struct QueryHost {
   // context.NAME(texCoord): the texture at environment entry `env`, sampled at the
   // scope's surface point.
   virtual double texture(const rt::Scope& scope, uint32_t env, ir::Loc at) = 0;
+  // Feature.member inside Cells (`arg`: Feature.label's string, else empty): a number, or
+  // 1 / 0 for a truth value.
+  virtual double feature(const std::string& member, const std::string& arg, ir::Loc at) = 0;
 };
 
 struct Frame {

@@ -9,7 +9,7 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   const Frame& f = self.frame_;
   const auto q = static_cast<ir::Query>(kind);
   const ir::Loc at{line, col};
-  const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex;
+  const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex && q != ir::Query::Feature;
   if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
   try {
     switch (q) {
@@ -33,6 +33,10 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
                           : f.host->fieldNumber(*f.scope, env, self.m_.strings.at(extra), at);
         return FGSG_OK;
       case ir::Query::Texture: *out = f.host->texture(*f.scope, env, at); return FGSG_OK;
+      case ir::Query::Feature:
+        *out = f.host->feature(self.m_.strings.at(extra),
+                               nargs ? self.m_.strings.at(static_cast<size_t>(args[0])) : std::string(), at);
+        return FGSG_OK;
     }
     return FGSG_E_INTERNAL;
   } catch (const DeriveError& e) {

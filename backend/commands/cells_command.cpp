@@ -1,0 +1,268 @@
+#include "backend/commands/cells_command.h"
+
+#include "backend/engine/derivation.h"
+#include "runtime/cells/feature_param.h"
+#include "runtime/cells/generators.h"
+#include "runtime/cells/mortar.h"
+#include "runtime/io/find_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace fgsg::backend {
+namespace {
+
+using rt::cells::FeatureKind;
+using rt::cells::FeatureRef;
+
+[[noreturn]] void fail(ir::Loc at, const std::string& message) { throw DeriveError{at, "R026", message}; }
+
+double nonNegative(double v, const char* what, ir::Loc at) {
+  if (!(std::isfinite(v) && v >= 0)) fail(at, std::string("Cells: the ") + what + " must be a number >= 0");
+  return v;
+}
+
+// The box of a scope as OBJ text (no bottom: a building stands on the ground), in world
+// coordinates: the same reader, welding and checks as a base-mesh file.
+std::string boxObj(const rt::Scope& s) {
+  std::ostringstream o;
+  o.precision(17);
+  for (int k = 0; k < 8; ++k) {
+    const rt::Vec3 p = s.P + s.axes.col(0) * ((k & 1) ? s.S.x() : 0.0) + s.axes.col(1) * ((k & 2) ? s.S.y() : 0.0) +
+                       s.axes.col(2) * ((k & 4) ? s.S.z() : 0.0);
+    o << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  // Y is up (CGA's convention): faces counter-clockwise from outside, no y = 0 face.
+  o << "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 5 6 8 7\nf 3 4 2 1\n";
+  return o.str();
+}
+
+bool has(const std::vector<std::string>& labels, const std::string& l) {
+  return std::find(labels.begin(), labels.end(), l) != labels.end();
+}
+
+}  // namespace
+
+void CellsCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+  if (op.kind == ir::OpKind::Cells) texture(op, a, n, st, ex, f);
+  else pattern(op, a, n, st, ex, f);
+}
+
+rt::cells::LabelledMesh CellsCommand::baseMesh(const ir::Op& op, const State& st) {
+  if (!op.index) {
+    if (st.geom.kind != rt::GeomKind::Box || !(st.scope.S.minCoeff() > 0))
+      fail(op.loc, "Cells: the shape's own geometry must be a box with a size in every axis (or give a base mesh "
+                   "file: Cells(\"base.obj\", joint){ ... })");
+    try {
+      rt::cells::LabelledMesh m = rt::cells::parseBaseMeshObj(boxObj(st.scope), "the shape's box");
+      return m;
+    } catch (const std::exception& e) {
+      fail(op.loc, std::string("Cells: ") + e.what());
+    }
+  }
+  const std::string& name = d_.module().strings[op.str];
+  auto it = files_.find(name);
+  if (it == files_.end()) {
+    try {
+      auto m = std::make_shared<const rt::cells::LabelledMesh>(
+          rt::cells::readBaseMeshObj(rt::io::findFile(name, d_.options().assetDirs)));
+      it = files_.emplace(name, std::move(m)).first;
+    } catch (const std::exception& e) {
+      fail(op.loc, std::string("Cells: ") + e.what());
+    }
+  }
+  // The file is Z-up (as modelling tools write architecture); fgsg's world is Y-up like
+  // its CGA buildings: (x, y, z) -> (x, z, -y), a rotation, then moved to the shape.
+  rt::cells::LabelledMesh m = *it->second;
+  for (rt::Vec3& v : m.mesh.vertices) v = rt::Vec3(v.x(), v.z(), -v.y()) + st.scope.P;
+  m.mesh.buildTopology();
+  return m;
+}
+
+rt::Scope CellsCommand::featureScope(const rt::cells::CellularTexture& tex, FeatureRef ref) const {
+  const rt::cells::FeatureMesh& fm = tex.features();
+  rt::Scope s;
+  s.S = rt::Vec3::Zero();
+  if (ref.kind == FeatureKind::Corner) {
+    s.P = tex.mesh().vertices[fm.corners[ref.index].vertex];
+  } else if (ref.kind == FeatureKind::Edge) {
+    const auto& e = fm.edges[ref.index];
+    const rt::cells::EdgeFrame fr = rt::cells::edgeAt(e, 0);
+    s.P = fr.point;
+    s.axes.col(0) = fr.tangent;
+    s.axes.col(2) = fr.normal;
+    s.axes.col(1) = fr.normal.cross(fr.tangent).normalized();
+    s.S.x() = e.length;
+  } else {
+    const auto& face = fm.faces[ref.index];
+    const auto& map = tex.faceMap(ref.index);
+    if (face.kind == rt::cells::FaceKind::Planar) {
+      s.P = face.origin + face.uAxis * map.lo().x() + face.vAxis * map.lo().y();
+      s.axes.col(0) = face.uAxis, s.axes.col(1) = face.vAxis, s.axes.col(2) = face.normal;
+      s.S = rt::Vec3(map.hi().x() - map.lo().x(), map.hi().y() - map.lo().y(), 0);
+    } else {
+      s.P = tex.mesh().vertices[tex.mesh().faces[face.triangles[0]][0]];
+    }
+  }
+  return s;
+}
+
+void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+  const double joint = nonNegative(a[0], "mortar joint", op.loc);
+  const double mortar = n > 1 ? nonNegative(a[1], "mortar offset", op.loc) : 0.0;
+  const rt::cells::LabelledMesh base = baseMesh(op, st);
+  const rt::Vec3 up = op.index ? rt::Vec3::UnitY() : rt::Vec3(st.scope.axes.col(1));
+  rt::cells::FeatureOptions options;
+  options.up = up;
+  rt::cells::FeatureMesh fm = rt::cells::buildLabelledFeatureMesh(base, options);
+  if (std::none_of(fm.faces.begin(), fm.faces.end(),
+                   [](const rt::cells::FeatureFace& face) { return face.kind != rt::cells::FaceKind::Freeform; }))
+    fail(op.loc, "Cells: the base mesh has no usable features: no face is planar or cylindrical (faces are split "
+                 "where the surface folds by more than 30 degrees)");
+  rt::cells::CellularTexture tex(base.mesh, std::move(fm), up);
+  rt::RandomStream rng{rt::childKey(ex.key, 0x5000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col), 0};
+  d_.enterLock();
+  struct Leave {
+    Derivation& d;
+    std::vector<Active>& active;
+    ~Leave() {
+      d.leaveLock();
+      active.pop_back();
+    }
+  } leave{d_, active_};
+  active_.push_back({&tex, {}, joint, &rng});
+  for (FeatureRef ref : tex.order()) {
+    if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
+    active_.back().feature = ref;
+    d_.runBody(op, 0, featureScope(tex, ref), rt::GeomRef{}, st, ex, f);
+  }
+  if (mortar > 0) {
+    const rt::Mesh mesh = rt::cells::mortarMesh(base.mesh, mortar);
+    const std::string name = "<mortar " + std::to_string(++mortars_) + ">";
+    std::array<double, 16> placed{};
+    d_.assets().addGenerated(name, mesh, placed);
+    rt::InstanceList& out = d_.output();
+    const auto asset = static_cast<uint32_t>(out.assets.size());
+    out.assets.push_back(name);
+    rt::Scope box;
+    for (int k = 0; k < 3; ++k) box.P[k] = placed[12 + k], box.S[k] = placed[5 * k];
+    d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+  }
+}
+
+uint32_t CellsCommand::cellAsset() {
+  if (cellAsset_ != UINT32_MAX) return cellAsset_;
+  rt::Mesh cube;  // the unit box, flat-shaded
+  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+  const float normals[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+  cube.positions.resize(72), cube.normals.resize(72), cube.indices.resize(36);
+  for (int q = 0; q < 6; ++q) {
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 3; ++c) {
+        cube.positions[12 * q + 3 * k + c] = float((faces[q][k] >> c) & 1);
+        cube.normals[12 * q + 3 * k + c] = normals[q][c];
+      }
+    const uint32_t b = uint32_t(4 * q);
+    const uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
+    for (int k = 0; k < 6; ++k) cube.indices[6 * q + k] = tri[k];
+  }
+  std::array<double, 16> placed{};
+  d_.assets().addGenerated("<cell>", cube, placed);
+  rt::InstanceList& out = d_.output();
+  cellAsset_ = static_cast<uint32_t>(out.assets.size());
+  out.assets.push_back("<cell>");
+  return cellAsset_;
+}
+
+void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+  if (active_.empty())
+    fail(op.loc, "'" + op.name + "' places cells on a feature: it can only run inside Cells(...){ ... }");
+  Active& at = active_.back();
+  rt::cells::CellularTexture& tex = *at.texture;
+  const size_t first = tex.cells().size();
+  try {
+    switch (static_cast<ir::CellGenerator>(op.index)) {
+      case ir::CellGenerator::BrickBond:
+        rt::cells::layBricks(tex, at.feature, {a[0], a[1], a[2], n > 3 && a[3] != 0.0});
+        break;
+      case ir::CellGenerator::HeaderRow: rt::cells::layHeaders(tex, at.feature, {a[0], a[1], a[2]}); break;
+      case ir::CellGenerator::ArchBricks: rt::cells::layArchBricks(tex, at.feature, {a[0], a[1], a[2]}); break;
+      case ir::CellGenerator::RandomStones:
+        rt::cells::layStones(tex, at.feature, {a[0], a[1], a[2], a[3]}, *at.rng);
+        break;
+    }
+  } catch (const std::invalid_argument& e) {
+    fail(op.loc, "'" + op.name + "': " + e.what());
+  }
+  for (size_t k = first; k < tex.cells().size(); ++k) {
+    const rt::cells::Cell c = rt::cells::shrunk(tex.cells()[k], at.joint);
+    rt::Scope s = st.scope;
+    s.P = c.origin, s.axes = c.axes, s.S = c.size;
+    if (s.axes.determinant() < 0) s.P += s.axes.col(0) * s.S.x(), s.axes.col(0) = -s.axes.col(0);
+    if (op.bodies.empty()) d_.placeInstance(cellAsset(), s, d_.placingSymbol(ex), nullptr, 0, op.loc);
+    else d_.runBody(op, 0, s, rt::GeomRef{}, st, ex, f);
+  }
+}
+
+double CellsCommand::feature(const std::string& m, const std::string& arg, ir::Loc at) const {
+  if (active_.empty()) fail(at, "Feature." + m + " asks about the feature being textured: only inside Cells(...){ ... }");
+  const Active& a = active_.back();
+  const rt::cells::FeatureMesh& fm = a.texture->features();
+  const rt::Vec3 up = a.texture->up();
+  const FeatureRef r = a.feature;
+  const rt::cells::FeatureCorner* corner = r.kind == FeatureKind::Corner ? &fm.corners[r.index] : nullptr;
+  const rt::cells::FeatureEdge* edge = r.kind == FeatureKind::Edge ? &fm.edges[r.index] : nullptr;
+  const rt::cells::FeatureFace* face = r.kind == FeatureKind::Face ? &fm.faces[r.index] : nullptr;
+  // Which way the faces at the feature look: up (a sill, a roof), down (a lintel's
+  // underside), or neither.
+  auto faces = [&] {
+    std::vector<int> fs;
+    if (face) fs.push_back(r.index);
+    if (edge) fs = {edge->leftFace, edge->rightFace};
+    if (corner) fs = corner->faces;
+    return fs;
+  };
+  auto looks = [&](double sign) {
+    for (int fi : faces())
+      if (fi >= 0 && sign * fm.faces[fi].normal.dot(up) > 0.7) return true;
+    return false;
+  };
+  const std::vector<std::string>& labels = corner ? corner->labels : edge ? edge->labels : face->labels;
+  using rt::cells::EdgeDirection;
+  if (m == "corner") return corner != nullptr;
+  if (m == "edge") return edge != nullptr;
+  if (m == "face") return face != nullptr;
+  if (m == "label") return has(labels, arg);
+  if (m == "horizontal" || m == "vertical") {
+    // The paper's orientation test: an edge by its direction, a face by whether its
+    // normal's largest component is up; corners are neither.
+    bool horizontal = false, vertical = false;
+    if (edge) horizontal = edge->direction == EdgeDirection::Horizontal, vertical = edge->direction == EdgeDirection::Vertical;
+    if (face) {
+      const double u = std::abs(face->normal.dot(up));
+      horizontal = u * u >= 0.5 * (1 - u * u) * 2 - 1e-12 && u >= std::sqrt(0.5) - 1e-12;
+      vertical = !horizontal;
+    }
+    return m == "horizontal" ? horizontal : vertical;
+  }
+  if (m == "curved") return edge ? edge->direction == EdgeDirection::Curved : face && face->kind == rt::cells::FaceKind::Cylindrical;
+  if (m == "arc") return edge && edge->shape == rt::cells::EdgeShape::Arc;
+  if (m == "convex")
+    return edge ? edge->fold == rt::cells::EdgeFold::Convex : corner && corner->kind == rt::cells::CornerKind::Convex;
+  if (m == "concave")
+    return edge ? edge->fold == rt::cells::EdgeFold::Concave : corner && corner->kind == rt::cells::CornerKind::Concave;
+  if (m == "boundary")
+    return edge ? edge->fold == rt::cells::EdgeFold::Boundary : corner && corner->kind == rt::cells::CornerKind::Boundary;
+  if (m == "bottom") return looks(1);
+  if (m == "top") return looks(-1);
+  if (m == "side") return !looks(1) && !looks(-1);
+  if (m == "index") return r.index;
+  if (m == "valence") return corner ? corner->valence : edge ? (edge->rightFace >= 0 ? 2 : 1) : double(face->edges.size());
+  if (m == "length") return edge ? edge->length : 0.0;
+  if (m == "area") return face ? face->area : 0.0;
+  fail(at, "internal: unknown feature query Feature." + m);
+}
+
+}  // namespace fgsg::backend
