@@ -308,14 +308,16 @@ TEST_CASE("A grammar's own depth bound ends it quietly, a smaller --max-depth st
   CHECK(both.instances.instances.size() == 3);
 }
 
-TEST_CASE("Constructs whose runtime comes later fail clearly when run", "[errors]") {
-  auto r = deriveText("Axiom ~> Cells(10){ Top };\nTop ~> I(\"cube\");");
-  CHECK_FALSE(r.ok);
-  REQUIRE(r.messages.size() == 1);
-  CHECK(r.messages[0].code == "R001");
-  CHECK(r.messages[0].line == 1);
-  CHECK(r.messages[0].col == 10);
-  CHECK(r.messages[0].message.find("not yet supported") != std::string::npos);
+TEST_CASE("Cells runs: the shape's own box in bricks, and Feature outside Cells is a located error", "[errors][cells]") {
+  auto r = deriveText("Axiom ~> S(2, 1, 1) Cells(0.01){ F };\nF ~> BrickBond(0.2, 0.1, 0.1){ B };\nB ~> I(\"cube\");");
+  CHECK(r.ok);
+  CHECK(r.instances.instances.size() > 100);
+  auto outside = deriveText("Axiom ~> Top;\nTop : Feature.edge ~> I(\"cube\");\nTop ~> I(\"cube\");");
+  CHECK_FALSE(outside.ok);
+  REQUIRE(outside.messages.size() == 1);
+  CHECK(outside.messages[0].code == "R026");
+  CHECK(outside.messages[0].line == 2);  // deriveText has no comment line
+  CHECK(outside.messages[0].col == 7);
 }
 
 TEST_CASE("Marching on the plane is a located error asking for a surface", "[errors][marching]") {

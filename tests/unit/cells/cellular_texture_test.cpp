@@ -3,6 +3,7 @@
 // checks are the paper's promises: cells never overlap (FCL, independent of the
 // texture's own test), faces are covered, corner bricks alternate, courses line up
 // around every corner, occupancy is respected.
+#include "runtime/cells/base_mesh_file.h"
 #include "runtime/cells/cellular_texture.h"
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
@@ -227,4 +228,34 @@ TEST_CASE("mortar: the base mesh grown by the offset, corners kept square", "[ce
 TEST_CASE("sizes are checked", "[cells]") {
   CHECK_THROWS_WITH(checkSize(BrickSize{0, 1, 1}), Catch::Contains("brick length"));
   CHECK_THROWS_WITH(checkSize(StoneSize{0.1, 0.05, 0.3, 0.1}), Catch::Contains("at least one grid square"));
+}
+
+TEST_CASE("the brick building: voussoirs radial to the arch within 1°, header rows, no overlaps", "[cells]") {
+  const LabelledMesh lm = readBaseMeshObj(FGSG_SOURCE_DIR "/examples/assets/brick_building.obj");
+  CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm));
+  const FeatureMesh& fm = tex.features();
+  auto has = [](const std::vector<std::string>& l, const char* s) { return std::find(l.begin(), l.end(), s) != l.end(); };
+  // examples/brick_building.fgsg's tree, in C++.
+  for (FeatureRef f : tex.order()) {
+    if (f.kind == FeatureKind::Face) {
+      if (has(fm.faces[f.index].labels, "wall")) layBricks(tex, f, kBrick);
+      continue;
+    }
+    const auto& labels = f.kind == FeatureKind::Edge ? fm.edges[f.index].labels : fm.corners[f.index].labels;
+    if (!has(labels, "wall")) continue;
+    if (f.kind == FeatureKind::Edge && fm.edges[f.index].shape == EdgeShape::Arc) layArchBricks(tex, f, kBrick);
+    else layBricks(tex, f, kBrick);
+  }
+  int voussoirs = 0;
+  for (const Cell& c : tex.cells()) {
+    if (c.feature.kind != FeatureKind::Edge || fm.edges[c.feature.index].shape != EdgeShape::Arc) continue;
+    const FeatureEdge& arc = fm.edges[c.feature.index];
+    Vec3 radial = c.centre() - arc.centre;
+    radial -= radial.dot(arc.axis) * arc.axis;
+    const double degrees = std::acos(std::min(1.0, std::abs(radial.normalized().dot(c.axes.col(0))))) * 180 / 3.14159265358979;
+    CHECK(degrees < 1);
+    ++voussoirs;
+  }
+  CHECK(voussoirs >= 20);  // the wall's side of the door's arch: π 0.6 / 0.075 ≈ 25
+  CHECK(fclContacts(tex.cells()) == 0);
 }
