@@ -289,21 +289,19 @@ int runningBond(CellularTexture& tex, int f, const BrickSize& b) {
 
 bool planarOrCylindrical(const FeatureFace& f) { return f.kind != FaceKind::Freeform; }
 
+void positive(double v, const char* what) {
+  if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string("the ") + what + " must be a positive number");
+}
+
 }  // namespace
 
 void checkSize(const BrickSize& s) {
-  auto positive = [](double v, const char* what) {
-    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string("the ") + what + " must be a positive number");
-  };
   positive(s.length, "brick length");
   positive(s.height, "course height");
   positive(s.depth, "brick depth");
 }
 
 void checkSize(const StoneSize& s) {
-  auto positive = [](double v, const char* what) {
-    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string("the ") + what + " must be a positive number");
-  };
   positive(s.grid, "stone grid");
   positive(s.maxWidth, "largest stone width");
   positive(s.maxHeight, "largest stone height");
