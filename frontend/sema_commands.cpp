@@ -149,8 +149,10 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       ConstValue v;
       const size_t first = evalConst(*item.args[0], v) && v.type == ValueType::Str ? 1 : 0;
       if (first) stringArg(0, "base mesh file");
-      if (n - int(first) < 1)
-        diags_.error("E016", item.range, std::string("'Cells' needs the mortar joint after the base mesh file: ") + cmd.signature);
+      if (n - int(first) < 1 || n - int(first) > 2)
+        diags_.error("E016", item.range,
+                     std::string("'Cells' takes an optional base mesh file, the mortar joint and an optional mortar "
+                                 "offset: ") + cmd.signature);
       numArgs(first, false);
       break;
     }

@@ -48,6 +48,7 @@ expect 1 'bad.fgsg:2:.*R026.*only inside Cells' $'axiom: A\nA : Feature.edge -> 
 expect 1 'bad.fgsg:2:.*R026.*BrickBond.*only run inside Cells' $'axiom: A\nA -> BrickBond(0.2, 0.1, 0.1)'
 expect 1 'R026.*nowhere.obj' $'axiom: A\nA -> Cells("nowhere.obj", 0.01){ F }\nF -> ε'
 expect 1 'E025.*Feature.colour' $'axiom: A\nA -> Cells(0.01){ F }\nF : Feature.colour -> ε\nF -> ε'
+expect 1 'E016.*optional base mesh file' $'axiom: A\nA -> Cells(1, 2, 3){ F }\nF -> ε'
 expect 1 'R026.*joint' $'axiom: A\nA -> S(1,1,1) Cells(-1){ F }\nF -> ε'
 expect 1 'R026.*brick length' $'axiom: A\nA -> S(1,1,1) Cells(0.01){ F }\nF -> BrickBond(0, 0.1, 0.1)'
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nwobble\n' >"$tmp/broken.obj"
