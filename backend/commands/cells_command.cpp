@@ -242,7 +242,7 @@ double CellsCommand::feature(const std::string& m, const std::string& arg, ir::L
     if (edge) horizontal = edge->direction == EdgeDirection::Horizontal, vertical = edge->direction == EdgeDirection::Vertical;
     if (face) {
       const double u = std::abs(face->normal.dot(up));
-      horizontal = u * u >= 0.5 * (1 - u * u) * 2 - 1e-12 && u >= std::sqrt(0.5) - 1e-12;
+      horizontal = u >= std::sqrt(0.5) - 1e-12;  // up is at least as large as the rest together
       vertical = !horizontal;
     }
     return m == "horizontal" ? horizontal : vertical;
