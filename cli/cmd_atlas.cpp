@@ -13,7 +13,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 
 namespace fgsg::cli {
@@ -29,12 +28,6 @@ struct AtlasOptions {
   double surfaceSize = 0;
   std::vector<rt::texture::Brush> brushes;
 };
-
-bool pngName(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".png";
-}
 
 AtlasOptions parseAtlasOptions(const Args& args) {
   AtlasOptions o;
@@ -82,9 +75,9 @@ AtlasOptions parseAtlasOptions(const Args& args) {
     else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
   }
   if (o.mesh.empty()) throw UsageError{"no mesh given: fgsg atlas MESH [--preview atlas.png]"};
-  if (!o.preview.empty() && !pngName(o.preview))
+  if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
-  if (!o.mask.empty() && !pngName(o.mask)) throw UsageError{"--mask " + o.mask + ": masks are PNG files (name it .png)"};
+  if (!o.mask.empty() && lowerExtension(o.mask) != ".png") throw UsageError{"--mask " + o.mask + ": masks are PNG files (name it .png)"};
   if (!o.brushes.empty() && o.mask.empty())
     throw UsageError{"--paint and --paint-slab need --mask FILE.png to write the mask to"};
   return o;

@@ -18,7 +18,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -42,12 +41,6 @@ struct EvolveCommandOptions {
   int cellPixels = 32;
   bool quiet = false;
 };
-
-bool hasExtension(const std::string& path, const char* ext) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e == ext;
-}
 
 double probability(OptionReader& r, const std::string& flag) {
   const double p = r.numberValue(flag);
@@ -110,9 +103,9 @@ EvolveCommandOptions parseOptions(const Args& args) {
     else throw UsageError{"unknown option '" + f + "'"};
   }
   if (o.tiles.empty()) throw UsageError{"no tile file given (docs/evolve.md describes the format)"};
-  if (!o.preview.empty() && !hasExtension(o.preview, ".png"))
+  if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
-  if (!o.json.empty() && !hasExtension(o.json, ".json"))
+  if (!o.json.empty() && lowerExtension(o.json) != ".json")
     throw UsageError{"--json " + o.json + ": name the file .json"};
   // Defaults that would not fit a small population are capped at it; given ones are not.
   if (o.ga.parents > o.ga.population) {

@@ -4,6 +4,7 @@
 // diagnostics, exiting 1 when any input failed.
 #include "cli/commands.h"
 #include "cli/derive_stats.h"
+#include "cli/options.h"
 #include "cli/repl_session.h"
 #include "ir/pipeline.h"
 #include "ir/printer.h"
@@ -18,7 +19,6 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <new>
 #include <sstream>
@@ -213,8 +213,7 @@ class Repl {
     }
     if (name == ":export") {
       if (arg.empty()) return fail(":export needs a file name (.glb, .obj or .ply)");
-      std::string ext = std::filesystem::path(arg).extension().string();
-      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      const std::string ext = lowerExtension(arg);
       const auto& known = rt::io::supportedMeshExtensions();
       if (std::find(known.begin(), known.end(), ext) == known.end())
         return fail(":export " + arg + ": unknown output format (use .glb, .obj or .ply)");

@@ -118,17 +118,14 @@ RunOptions parseRunOptions(const Args& args) {
     throw UsageError{"--seed-density NAME and --seed-count N go together: N seeds drawn where texture NAME is bright"};
   if (o.output.empty()) o.output = std::filesystem::path(o.file).stem().string() + ".glb";
   // Bad output names are usage errors, found before any work is done.
-  std::string ext = std::filesystem::path(o.output).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(o.output);
   const auto& known = rt::io::supportedMeshExtensions();
   if (std::find(known.begin(), known.end(), ext) == known.end()) {
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
     throw UsageError{"-o " + o.output + ": unknown output format (use " + list + ")"};
   }
-  std::string previewExt = std::filesystem::path(o.preview).extension().string();
-  for (char& c : previewExt) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (!o.preview.empty() && previewExt != ".png")
+  if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   return o;
 }

@@ -12,6 +12,10 @@ struct UsageError {
   std::string message;
 };
 
+// The extension of a file name, lower case, with its dot (".png"; "" when none): how
+// every command tells the format the user asked for.
+std::string lowerExtension(const std::string& path);
+
 // Walks the arguments after a subcommand name.
 class OptionReader {
  public:
