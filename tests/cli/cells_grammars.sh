@@ -4,12 +4,7 @@
 # every mistake is a located error with exit 1 — a Feature query or a generator outside
 # Cells, a missing or broken base-mesh file, a mesh with no usable features, an unknown
 # Feature member.
-set -uo pipefail
-fgsg=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL [cells grammars]: $*" >&2; exit 1; }
+. "$(dirname "$0")/../reliability/lib.sh"
 cd "$root" || fail "no $root"
 
 for e in brick_building stepped_column; do
@@ -33,26 +28,23 @@ G
 instances=$(awk '$1 == "instances" {print $2}' "$tmp/box.out")
 [ "${instances:-0}" -gt 1000 ] || fail "box: only ${instances:-no} cells"
 
-# expect EXIT PATTERN GRAMMAR-TEXT: the run fails with EXIT and prints PATTERN.
-expect() {
-  local code=$1 pattern=$2
+# grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints
+# PATTERN (lib.sh's expect) and writes no output.
+grammar_fails() {
   printf '%s\n' "$3" >"$tmp/bad.fgsg"
-  "$fgsg" run "$tmp/bad.fgsg" -o "$tmp/bad.obj" >"$tmp/err" 2>&1
-  local got=$?
-  [ "$got" = "$code" ] || fail "expected exit $code, got $got: $(cat "$tmp/err")"
-  grep -q -- "$pattern" "$tmp/err" || fail "expected '$pattern' in: $(cat "$tmp/err")"
+  expect "$1" "$2" -- "$fgsg" run "$tmp/bad.fgsg" -o "$tmp/bad.obj"
   [ -e "$tmp/bad.obj" ] && fail "a failed run wrote its output"
   return 0
 }
-expect 1 'bad.fgsg:2:.*R026.*only inside Cells' $'axiom: A\nA : Feature.edge -> I("cube")'
-expect 1 'bad.fgsg:2:.*R026.*BrickBond.*only run inside Cells' $'axiom: A\nA -> BrickBond(0.2, 0.1, 0.1)'
-expect 1 'R026.*nowhere.obj' $'axiom: A\nA -> Cells("nowhere.obj", 0.01){ F }\nF -> ε'
-expect 1 'E025.*Feature.colour' $'axiom: A\nA -> Cells(0.01){ F }\nF : Feature.colour -> ε\nF -> ε'
-expect 1 'E016.*optional base mesh file' $'axiom: A\nA -> Cells(1, 2, 3){ F }\nF -> ε'
-expect 1 'R026.*joint' $'axiom: A\nA -> S(1,1,1) Cells(-1){ F }\nF -> ε'
-expect 1 'R026.*brick length' $'axiom: A\nA -> S(1,1,1) Cells(0.01){ F }\nF -> BrickBond(0, 0.1, 0.1)'
+grammar_fails 1 'bad.fgsg:2:.*R026.*only inside Cells' $'axiom: A\nA : Feature.edge -> I("cube")'
+grammar_fails 1 'bad.fgsg:2:.*R026.*BrickBond.*only run inside Cells' $'axiom: A\nA -> BrickBond(0.2, 0.1, 0.1)'
+grammar_fails 1 'R026.*nowhere.obj' $'axiom: A\nA -> Cells("nowhere.obj", 0.01){ F }\nF -> ε'
+grammar_fails 1 'E025.*Feature.colour' $'axiom: A\nA -> Cells(0.01){ F }\nF : Feature.colour -> ε\nF -> ε'
+grammar_fails 1 'E016.*optional base mesh file' $'axiom: A\nA -> Cells(1, 2, 3){ F }\nF -> ε'
+grammar_fails 1 'R026.*joint' $'axiom: A\nA -> S(1,1,1) Cells(-1){ F }\nF -> ε'
+grammar_fails 1 'R026.*brick length' $'axiom: A\nA -> S(1,1,1) Cells(0.01){ F }\nF -> BrickBond(0, 0.1, 0.1)'
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nwobble\n' >"$tmp/broken.obj"
-expect 1 'broken.obj:5:' "$(printf 'axiom: A\nA -> Cells("%s", 0.01){ F }\nF -> ε' "$tmp/broken.obj")"
+grammar_fails 1 'broken.obj:5:' "$(printf 'axiom: A\nA -> Cells("%s", 0.01){ F }\nF -> ε' "$tmp/broken.obj")"
 # A smooth sphere: one freeform face, nothing to lay cells on.
 python3 - "$tmp/sphere.obj" <<'P'
 import math, sys
@@ -73,5 +65,5 @@ with open(sys.argv[1], "w") as f:
     last = 2 + (m - 1) * n
     for j in range(n): f.write(f"f {ring(m - 1, j + 1)} {ring(m - 1, j)} {last}\n")
 P
-expect 1 'R026.*no usable features' "$(printf 'axiom: A\nA -> Cells("%s", 0.01){ F }\nF -> ε' "$tmp/sphere.obj")"
+grammar_fails 1 'R026.*no usable features' "$(printf 'axiom: A\nA -> Cells("%s", 0.01){ F }\nF -> ε' "$tmp/sphere.obj")"
 echo "cells grammars: ok"

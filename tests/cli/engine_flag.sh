@@ -2,12 +2,7 @@
 # fgsg run --engine, the JIT's object cache and fgsg ir --llvm as a user meets them: a bad engine name is
 # a usage error (exit 2); a second run of a grammar takes its code from the cache; a
 # cache that is off or cannot be written changes nothing in the output.
-set -uo pipefail
-fgsg=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL [engine flag]: $*" >&2; exit 1; }
+. "$(dirname "$0")/../reliability/lib.sh"
 grammar="$root/examples/koch.fgsg"
 
 "$fgsg" run "$grammar" --engine=fast -o "$tmp/x.glb" 2>"$tmp/err"

@@ -3,12 +3,7 @@
 # reproducible by seed; a p4 search that ends with a p4 pattern; --lsystem expands the
 # paper's own string to the exact pattern; --json and --preview written whole; bad flags
 # are usage errors (2), bad files and strings errors (1) naming the problem.
-set -uo pipefail
-fgsg=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL [evolve command]: $*" >&2; exit 1; }
+. "$(dirname "$0")/../reliability/lib.sh"
 tiles="$root/examples/assets/ornament_tiles.json"
 json_value() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
 
@@ -40,30 +35,27 @@ diff <(grep -v ' s: ' "$tmp/run1" | grep -v '^wrote') <(grep -v ' s: ' "$tmp/run
 "$fgsg" evolve "$tiles" --seed 4 -q >"$tmp/seed4"
 cmp -s "$tmp/seed4" <("$fgsg" evolve "$tiles" --seed 5 -q) && fail "seeds 4 and 5 gave the same L-system"
 
-# Errors.
-expect() {
+# Errors: evolve_fails CODE PATTERN ARGS... (lib.sh's expect on `fgsg evolve ARGS`).
+evolve_fails() {
   local code=$1 pattern=$2
   shift 2
-  "$fgsg" evolve "$@" >/dev/null 2>"$tmp/err"
-  local got=$?
-  [ "$got" -eq "$code" ] || { cat "$tmp/err" >&2; fail "'$*': exit $got, expected $code"; }
-  grep -qE -- "$pattern" "$tmp/err" || { cat "$tmp/err" >&2; fail "'$*': no message matching '$pattern'"; }
+  expect "$code" "$pattern" -- "$fgsg" evolve "$@"
 }
-expect 2 "no tile file given"
-expect 2 "--k expects a whole number from 1 to 16, got '0'" "$tiles" --k 0
-expect 2 "unknown option '--bogus'" "$tiles" --bogus
-expect 2 "--mutation expects a probability from 0 to 1" "$tiles" --mutation 2
-expect 2 "--weights expects a,b,c or a,b,c,d" "$tiles" --weights 1,2
-expect 2 "previews are PNG files" "$tiles" --preview x.jpg
-expect 1 "column 4: unknown symbol 'C'" "$tiles" --lsystem '{ABCA.ABBA.A}'
-expect 1 "no such file" "$tmp/none.json"
+evolve_fails 2 "no tile file given"
+evolve_fails 2 "--k expects a whole number from 1 to 16, got '0'" "$tiles" --k 0
+evolve_fails 2 "unknown option '--bogus'" "$tiles" --bogus
+evolve_fails 2 "--mutation expects a probability from 0 to 1" "$tiles" --mutation 2
+evolve_fails 2 "--weights expects a,b,c or a,b,c,d" "$tiles" --weights 1,2
+evolve_fails 2 "previews are PNG files" "$tiles" --preview x.jpg
+evolve_fails 1 "column 4: unknown symbol 'C'" "$tiles" --lsystem '{ABCA.ABBA.A}'
+evolve_fails 1 "no such file" "$tmp/none.json"
 echo '{"loci": 3}' >"$tmp/bad.json"
-expect 1 "bad.json: " "$tmp/bad.json"
-expect 1 "ran out before the first population" "$tiles" --population 100000 --max-seconds 0.001
-expect 1 "a pattern of 2048 cells a side is too large to draw" "$tiles" --lsystem '{ABAA.ABBA.A}' --generation 11 \
+evolve_fails 1 "bad.json: " "$tmp/bad.json"
+evolve_fails 1 "ran out before the first population" "$tiles" --population 100000 --max-seconds 0.001
+evolve_fails 1 "a pattern of 2048 cells a side is too large to draw" "$tiles" --lsystem '{ABAA.ABBA.A}' --generation 11 \
   --preview "$tmp/big.png"
 [ -e "$tmp/big.png" ] && fail "a refused preview was written"
-expect 1 "cannot write '$tmp/missing/x.json'" "$tiles" --max-generations 1 --json "$tmp/missing/x.json"
+evolve_fails 1 "cannot write '$tmp/missing/x.json'" "$tiles" --max-generations 1 --json "$tmp/missing/x.json"
 
 # A grammar's declared tileset is checked as a tile file is: by `fgsg check` before any run,
 # at its item, and `fgsg run` says the same.

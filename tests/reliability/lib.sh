@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Shared by the reliability scripts: run a command under a time limit and check how it
-# ended. Sourced as `. "$(dirname "$0")/lib.sh"` after `fgsg=$1 root=$2`.
+# Shared by the reliability and CLI scripts: run a command under a time limit and check
+# how it ended. Sourced as `. "$(dirname "$0")/lib.sh"` (tests/cli:
+# `. "$(dirname "$0")/../reliability/lib.sh"`); the script's arguments are FGSG SOURCE_DIR.
 set -uo pipefail
 fgsg=${1:?fgsg binary}
 root=${2:?source dir}
