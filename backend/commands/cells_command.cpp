@@ -141,13 +141,8 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
   if (mortar > 0) {
     const rt::Mesh mesh = rt::cells::mortarMesh(base.mesh, mortar);
     const std::string name = "<mortar " + std::to_string(++mortars_) + ">";
-    std::array<double, 16> placed{};
-    d_.assets().addGenerated(name, mesh, placed);
-    rt::InstanceList& out = d_.output();
-    const auto asset = static_cast<uint32_t>(out.assets.size());
-    out.assets.push_back(name);
     rt::Scope box;
-    for (int k = 0; k < 3; ++k) box.P[k] = placed[12 + k], box.S[k] = placed[5 * k];
+    const uint32_t asset = d_.addGeneratedAsset(name, mesh, &box);
     d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
   }
 }
@@ -168,12 +163,7 @@ uint32_t CellsCommand::cellAsset() {
     const uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
     for (int k = 0; k < 6; ++k) cube.indices[6 * q + k] = tri[k];
   }
-  std::array<double, 16> placed{};
-  d_.assets().addGenerated("<cell>", cube, placed);
-  rt::InstanceList& out = d_.output();
-  cellAsset_ = static_cast<uint32_t>(out.assets.size());
-  out.assets.push_back("<cell>");
-  return cellAsset_;
+  return cellAsset_ = d_.addGeneratedAsset("<cell>", cube);
 }
 
 void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {

@@ -126,13 +126,8 @@ void EvolveCommand::ornamentSurface(const ir::Op& op, const std::string& file, c
           return rt::evolve::heightAt(room, mesh, rt::surface::SurfacePoint{p.face, p.bary});
         });
     const std::string name = "<surface ornament " + file + " " + std::to_string(++surfaceOrnaments_) + ">";
-    std::array<double, 16> placed{};
-    d_.assets().addGenerated(name, ornament, placed);
-    rt::InstanceList& out = d_.output();
-    const auto asset = static_cast<uint32_t>(out.assets.size());
-    out.assets.push_back(name);
     rt::Scope box;  // the world box the ornament was built in
-    for (int k = 0; k < 3; ++k) box.P[k] = placed[12 + k], box.S[k] = placed[5 * k];
+    const uint32_t asset = d_.addGeneratedAsset(name, ornament, &box);
     d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
   } catch (const std::invalid_argument& e) {
     throw DeriveError{op.loc, "R025", std::string("Evolve on the surface: ") + e.what()};
@@ -169,13 +164,10 @@ const EvolveCommand::Ornament& EvolveCommand::ornament(const std::string& file, 
   const rt::Mesh mesh = rt::evolve::tileOrnament(tiles, allele);
   const std::string name = "<ornament " + file + " " + tiles.tiles[allele.symbol].letter +
                            std::to_string(90 * allele.turns) + ">";
-  std::array<double, 16> placed{};
-  d_.assets().addGenerated(name, mesh, placed);
+  rt::Scope box;
   Ornament o;
-  for (int k = 0; k < 3; ++k) o.extent[k] = placed[5 * k], o.lo[k] = placed[12 + k];
-  rt::InstanceList& out = d_.output();
-  o.asset = static_cast<uint32_t>(out.assets.size());
-  out.assets.push_back(name);
+  o.asset = d_.addGeneratedAsset(name, mesh, &box);
+  o.lo = box.P, o.extent = box.S;
   return ornaments_.emplace(key, o).first->second;
 }
 

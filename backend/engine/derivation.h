@@ -88,6 +88,11 @@ class Derivation final : public QueryHost {
   // or reaches past float range).
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
                      uint32_t paramCount, ir::Loc loc);
+  // Registers a mesh the derivation built itself (an ornament, the mortar, a cell's box)
+  // as an output asset named `name`: its index in the output's asset table. `builtIn`,
+  // when given, receives the world box it was built in (placing the asset there puts it
+  // back where it was built).
+  uint32_t addGeneratedAsset(const std::string& name, const rt::Mesh& world, rt::Scope* builtIn = nullptr);
   // Writes a shape of op's symbol with its parameter slots evaluated.
   void emit(const ir::Op& op, const double* slots, State& st, Exec& ex);
   // Writes a shape of `symbol` (parameterless) on `scope` as an Emit at `at` would: how

@@ -13,6 +13,16 @@
 
 namespace fgsg::backend {
 
+uint32_t Derivation::addGeneratedAsset(const std::string& name, const rt::Mesh& world, rt::Scope* builtIn) {
+  std::array<double, 16> placed{};
+  assets_.addGenerated(name, world, placed);
+  if (builtIn)
+    for (int k = 0; k < 3; ++k) builtIn->P[k] = placed[12 + k], builtIn->S[k] = placed[5 * k];
+  const auto asset = static_cast<uint32_t>(out_.assets.size());
+  out_.assets.push_back(name);
+  return asset;
+}
+
 void Derivation::initOutput() {
   out_.assets = m_.assets;
   out_.strings = m_.strings;
