@@ -1,7 +1,6 @@
 #include "backend/declared_tiles.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <optional>
 
 namespace fgsg::backend {
@@ -22,15 +21,10 @@ std::vector<Part> curves(const std::vector<ir::TileCurveSpec>& specs) {
   return out;
 }
 
-// The item a validation message names by its place in the tile file's terms
-// ("loci[1]...", "sections[0]..." right after the source), else the declaration.
-ir::Loc blamed(const ir::TileSetSpec& spec, const std::string& message, size_t from) {
-  for (const auto& [key, list] : {std::pair{"loci[", &spec.loci}, std::pair{"sections[", &spec.sections}}) {
-    const std::string k = key;
-    if (message.compare(from, k.size(), k) != 0) continue;
-    const size_t i = std::strtoul(message.c_str() + from + k.size(), nullptr, 10);
-    if (i < list->size()) return (*list)[i].loc;
-  }
+// The item a validation error names (a locus or a cross-section), else the declaration.
+ir::Loc blamed(const ir::TileSetSpec& spec, const rt::evolve::TileFileError& e) {
+  const std::vector<ir::TileCurveSpec>* list = e.part == "loci" ? &spec.loci : e.part == "sections" ? &spec.sections : nullptr;
+  if (list && e.index >= 0 && size_t(e.index) < list->size()) return (*list)[size_t(e.index)].loc;
   return spec.loc;
 }
 
@@ -72,7 +66,7 @@ bool declaredTileSet(const ir::TileSetSpec& spec, ev::TileSet& out, std::string&
     return true;
   } catch (const ev::TileFileError& e) {
     message = e.what();
-    at = blamed(spec, message, source.size() + 2);  // after "tileset 'x': "
+    at = blamed(spec, e);
     return false;
   }
 }

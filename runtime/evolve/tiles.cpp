@@ -154,27 +154,42 @@ std::vector<Point2> TileSet::locusPoints(Allele a, int count) const {
   return pts;
 }
 
+// Runs `check` on part[index] of a tile set; its TileFileError comes out naming them.
+template <class Check>
+void checkPart(const char* part, size_t index, Check&& check) {
+  try {
+    check();
+  } catch (const TileFileError& e) {
+    throw TileFileError(e.what(), part, int(index));
+  }
+}
+
 void validateTileSet(const TileSet& ts, std::string_view source) {
   if (ts.loci.empty()) fail(source, "loci", "at least one locus is needed");
   if (ts.sections.empty()) fail(source, "sections", "at least one cross-section is needed");
   for (size_t i = 0; i < ts.loci.size(); ++i) {
     const Curve& c = ts.loci[i].curve;
     const std::string where = "loci[" + std::to_string(i) + "]." + curveKey(c);
-    checkCurve(c, source, where);
-    for (size_t k = 0; k < c.points.size(); ++k) {
-      const Point2 p = c.points[k];
-      if (p.x < -kTolerance || p.x > 1 + kTolerance || p.y < -kTolerance || p.y > 1 + kTolerance)
-        fail(source, where + "[" + std::to_string(k) + "]",
-             "point " + fmt(p) + " is outside the tile's unit square [0,1] x [0,1]");
-    }
+    checkPart("loci", i, [&] {
+      checkCurve(c, source, where);
+      for (size_t k = 0; k < c.points.size(); ++k) {
+        const Point2 p = c.points[k];
+        if (p.x < -kTolerance || p.x > 1 + kTolerance || p.y < -kTolerance || p.y > 1 + kTolerance)
+          fail(source, where + "[" + std::to_string(k) + "]",
+               "point " + fmt(p) + " is outside the tile's unit square [0,1] x [0,1]");
+      }
+    });
   }
   for (size_t i = 0; i < ts.sections.size(); ++i) {
     const Curve& c = ts.sections[i].curve;
     const std::string where = "sections[" + std::to_string(i) + "]." + curveKey(c);
-    checkCurve(c, source, where);
-    if (!near(c.start(), {-1, 0}) || !near(c.end(), {1, 0}))
-      fail(source, where, "a cross-section runs from (-1, 0) to (1, 0) (Elber's blending, paper §2.4); this one runs from " +
-                              fmt(c.start()) + " to " + fmt(c.end()));
+    checkPart("sections", i, [&] {
+      checkCurve(c, source, where);
+      if (!near(c.start(), {-1, 0}) || !near(c.end(), {1, 0}))
+        fail(source, where,
+             "a cross-section runs from (-1, 0) to (1, 0) (Elber's blending, paper §2.4); this one runs from " +
+                 fmt(c.start()) + " to " + fmt(c.end()));
+    });
   }
   if (ts.tiles.empty()) fail(source, "symbols", "no symbols");
   if (int(ts.tiles.size()) > kMaxSymbols)

@@ -110,9 +110,14 @@ struct TileSet {
 };
 
 // A tile file that cannot be read or is not a valid tile set. what() is the whole
-// message, starting with the file name (and line:column for JSON syntax errors).
+// message, starting with the file name (and line:column for JSON syntax errors). A
+// problem of one locus or cross-section also names it: `part` "loci" or "sections" and
+// its `index` (a grammar's tileset blames that item); otherwise part is empty.
 struct TileFileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit TileFileError(const std::string& message, std::string part = {}, int index = -1)
+      : std::runtime_error(message), part(std::move(part)), index(index) {}
+  std::string part;
+  int index = -1;
 };
 
 // Checks a tile set built in code (loci inside the unit square, cross-sections from

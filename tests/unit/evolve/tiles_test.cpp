@@ -90,12 +90,14 @@ TEST_CASE("bad tile files give located, clear errors", "[evolve][tiles]") {
     const std::string m = e.what();
     CHECK(m.find("bad_syntax.json:5:") != std::string::npos);
     CHECK(m.find("not valid JSON") != std::string::npos);
+    CHECK(e.part.empty());
   }
   try {
     readTileFile(kData + "bad_cubic.json");
     FAIL("bad_cubic.json was accepted");
   } catch (const TileFileError& e) {
-    CHECK(std::string(e.what()).find("bad_cubic.json: loci[0].cubic: a cubic needs 4 points, got 3") != std::string::npos);
+    CHECK(std::string(e.what()).find("bad_cubic.json: loci[0].cubic: a cubic needs 4 points, got 3") != std::string::npos);    CHECK(e.part == "loci");  // the part, for a grammar's tileset to blame its item
+    CHECK(e.index == 0);
   }
   try {
     readTileFile(kData);  // a directory
