@@ -4,12 +4,13 @@
 #include "runtime/cells/feature_mesh.h"
 #include "runtime/cells/feature_param.h"
 #include "runtime/surface/procedural.h"
+#include "tests/unit/cells/rectilinear_mesh.h"
 
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
-#include <map>
+#include <algorithm>
 #include <numbers>
 #include <set>
 
@@ -22,41 +23,19 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // The boundary of a union of unit cubes (cell (x, y, z) spans [x, x+1] x ...), each unit
-// square split into n x n squares of two triangles, counter-clockwise from outside (as
-// scripts/make-polycube-off.py).
+// square split into n x n squares of two triangles, counter-clockwise from outside:
+// rectilinearMesh over the grid of 1/n steps, every cube made of its n^3 small ones.
 SurfaceMesh polycube(const std::set<std::array<int, 3>>& cells, int n) {
-  SurfaceMesh m;
-  std::map<std::array<int, 3>, int> index;
-  auto vid = [&](const std::array<int, 3>& key) {
-    auto [it, fresh] = index.emplace(key, int(m.vertices.size()));
-    if (fresh) m.vertices.emplace_back(double(key[0]) / n, double(key[1]) / n, double(key[2]) / n);
-    return it->second;
-  };
+  int hi = 0;
+  for (const auto& c : cells) hi = std::max({hi, c[0], c[1], c[2]});
+  std::vector<double> steps;
+  for (int i = 0; i <= (hi + 1) * n; ++i) steps.push_back(double(i) / n);
+  std::set<std::array<int, 3>> small;
   for (const auto& c : cells)
-    for (int axis = 0; axis < 3; ++axis)
-      for (int sign : {-1, 1}) {
-        auto nb = c;
-        nb[axis] += sign;
-        if (cells.count(nb)) continue;
-        int ua = (axis + 1) % 3, va = (axis + 2) % 3;
-        if (sign < 0) std::swap(ua, va);
-        std::array<int, 3> base{c[0] * n, c[1] * n, c[2] * n};
-        if (sign > 0) base[axis] += n;
-        for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j) {
-            auto corner = [&](int a, int b) {
-              auto k = base;
-              k[ua] += i + a;
-              k[va] += j + b;
-              return vid(k);
-            };
-            const int c00 = corner(0, 0), c10 = corner(1, 0), c01 = corner(0, 1), c11 = corner(1, 1);
-            m.faces.push_back({c00, c10, c11});
-            m.faces.push_back({c00, c11, c01});
-          }
-      }
-  m.buildTopology();
-  return m;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k) small.insert({c[0] * n + i, c[1] * n + j, c[2] * n + k});
+  return fgsg::test::rectilinearMesh({steps, steps, steps}, small, false);
 }
 
 int count(const FeatureMesh& fm, EdgeDirection d) {
