@@ -127,35 +127,52 @@ void CellularTexture::project(const Cell& c, FeatureRef onto) {
   }
 }
 
+CellularTexture::Bounds CellularTexture::boundsOf(const Cell& c) {
+  Bounds b{c.corner(0), c.corner(0)};
+  for (const Vec3& p : c.corners()) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  return b;
+}
+
+template <class Visit>
+void CellularTexture::forBuckets(const Bounds& b, Visit&& visit) const {
+  for (int64_t x = int64_t(std::floor(b.lo.x() / gridSize_)); x <= int64_t(std::floor(b.hi.x() / gridSize_)); ++x)
+    for (int64_t y = int64_t(std::floor(b.lo.y() / gridSize_)); y <= int64_t(std::floor(b.hi.y() / gridSize_)); ++y)
+      for (int64_t z = int64_t(std::floor(b.lo.z() / gridSize_)); z <= int64_t(std::floor(b.hi.z() / gridSize_)); ++z)
+        visit(cellKey(x, y, z));
+}
+
 bool CellularTexture::overlapsPlaced(const Cell& c) const {
   if (grid_.empty()) return false;
-  Vec3 lo = c.corner(0), hi = lo;
-  for (const Vec3& p : c.corners()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Bounds b = boundsOf(c);
   const double slack = 1e3 * tolerance_;
-  std::vector<int> seen;
-  for (int64_t x = int64_t(std::floor(lo.x() / gridSize_)); x <= int64_t(std::floor(hi.x() / gridSize_)); ++x)
-    for (int64_t y = int64_t(std::floor(lo.y() / gridSize_)); y <= int64_t(std::floor(hi.y() / gridSize_)); ++y)
-      for (int64_t z = int64_t(std::floor(lo.z() / gridSize_)); z <= int64_t(std::floor(hi.z() / gridSize_)); ++z) {
-        auto it = grid_.find(cellKey(x, y, z));
-        if (it == grid_.end()) continue;
-        for (int other : it->second) {
-          if (std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
-          seen.push_back(other);
-          if (cellsOverlap(c, cells_[other], slack)) return true;
-        }
+  if (++visit_ == 0) std::fill(visited_.begin(), visited_.end(), 0), visit_ = 1;
+  bool hit = false;
+  forBuckets(b, [&](uint64_t key) {
+    if (hit) return;
+    auto it = grid_.find(key);
+    if (it == grid_.end()) return;
+    for (int other : it->second) {
+      if (visited_[other] == visit_) continue;
+      visited_[other] = visit_;
+      // Boxes whose bounds overlap by no more than the slack on some world axis overlap by
+      // no more than it anywhere: the separating-axis test would say so too.
+      const Bounds& o = bounds_[other];
+      if (((b.hi - o.lo).array() <= slack).any() || ((o.hi - b.lo).array() <= slack).any()) continue;
+      if (cellsOverlap(c, cells_[other], slack)) {
+        hit = true;
+        return;
       }
-  return false;
+    }
+  });
+  return hit;
 }
 
 void CellularTexture::index(int id) {
   const Cell& c = cells_[id];
   if (grid_.empty()) gridSize_ = std::max(2 * c.size.maxCoeff(), 1e3 * tolerance_);
-  Vec3 lo = c.corner(0), hi = lo;
-  for (const Vec3& p : c.corners()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  for (int64_t x = int64_t(std::floor(lo.x() / gridSize_)); x <= int64_t(std::floor(hi.x() / gridSize_)); ++x)
-    for (int64_t y = int64_t(std::floor(lo.y() / gridSize_)); y <= int64_t(std::floor(hi.y() / gridSize_)); ++y)
-      for (int64_t z = int64_t(std::floor(lo.z() / gridSize_)); z <= int64_t(std::floor(hi.z() / gridSize_)); ++z)
-        grid_[cellKey(x, y, z)].push_back(id);
+  bounds_.push_back(boundsOf(c));
+  visited_.push_back(0);
+  forBuckets(bounds_.back(), [&](uint64_t key) { grid_[key].push_back(id); });
 }
 
 bool CellularTexture::add(Cell cell, FeatureRef on, double keep) {

@@ -66,6 +66,14 @@ class CellularTexture {
 
  private:
   void project(const Cell& c, FeatureRef onto);
+  // A cell's axis-aligned bounding box.
+  struct Bounds {
+    Vec3 lo, hi;
+  };
+  static Bounds boundsOf(const Cell& c);
+  // Calls visit(key) for the key of every grid bucket the box meets.
+  template <class Visit>
+  void forBuckets(const Bounds& b, Visit&& visit) const;
   bool overlapsPlaced(const Cell& c) const;
   void index(int cell);
 
@@ -76,9 +84,14 @@ class CellularTexture {
   std::vector<IntervalSet> edgeMaps_;
   std::vector<FaceOccupancy> faceMaps_;
   std::vector<Cell> cells_;
+  std::vector<Bounds> bounds_;  // per cell
   // A uniform hash grid of the cells' boxes, for the overlap check.
   double gridSize_ = 1;
   std::unordered_map<uint64_t, std::vector<int>> grid_;
+  // The overlap check meets a cell once per bucket it shares: visited_[cell] == visit_
+  // marks it seen in the current check.
+  mutable std::vector<uint32_t> visited_;
+  mutable uint32_t visit_ = 0;
 };
 
 // Whether two cells' boxes overlap by more than `slack` (separating axes).
