@@ -33,6 +33,21 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
   return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
 }
 
+// The parts of [lo, hi] that the sorted disjoint `items` leave uncovered, pieces no
+// longer than `minimum` dropped.
+std::vector<Interval> gapsIn(const std::vector<Interval>& items, double lo, double hi, double minimum) {
+  std::vector<Interval> out;
+  double at = lo;
+  for (const Interval& i : items) {
+    if (i.hi <= at) continue;
+    if (i.lo >= hi) break;
+    if (i.lo - at > minimum && i.lo > at) out.push_back({at, i.lo});
+    at = std::max(at, i.hi);
+  }
+  if (hi - at > minimum && hi > at) out.push_back({at, hi});
+  return out;
+}
+
 }  // namespace
 
 void IntervalSet::add(double lo, double hi) {
@@ -42,16 +57,7 @@ void IntervalSet::add(double lo, double hi) {
 }
 
 std::vector<Interval> IntervalSet::gaps(double lo, double hi, double minimum) const {
-  std::vector<Interval> out;
-  double at = lo;
-  for (const Interval& i : items_) {
-    if (i.hi <= at) continue;
-    if (i.lo >= hi) break;
-    if (i.lo - at > minimum && i.lo > at) out.push_back({at, i.lo});
-    at = std::max(at, i.hi);
-  }
-  if (hi - at > minimum && hi > at) out.push_back({at, hi});
-  return out;
+  return gapsIn(items_, lo, hi, minimum);
 }
 
 bool IntervalSet::overlaps(double lo, double hi, double slack) const {
@@ -72,11 +78,10 @@ std::vector<Interval> intersect(const std::vector<Interval>& a, const std::vecto
 }
 
 std::vector<Interval> subtract(const std::vector<Interval>& a, const std::vector<Interval>& b) {
-  IntervalSet cut;
-  for (const Interval& i : b) cut.add(i.lo, i.hi);
+  const std::vector<Interval> cut = unite(b, 0);
   std::vector<Interval> out;
   for (const Interval& i : a)
-    for (const Interval& g : cut.gaps(i.lo, i.hi)) out.push_back(g);
+    for (const Interval& g : gapsIn(cut, i.lo, i.hi, 0)) out.push_back(g);
   return out;
 }
 
@@ -184,11 +189,10 @@ std::vector<Interval> FaceOccupancy::freeRuns(double v0, double v1, double minim
       }
       if (hi > lo) taken.push_back({lo, hi});
     }
-  IntervalSet claimed;
-  for (const Interval& t : unite(std::move(taken), 0)) claimed.add(t.lo, t.hi);
+  const std::vector<Interval> claimed = unite(std::move(taken), 0);
   std::vector<Interval> out;
   for (const Interval& run : inside)
-    for (const Interval& g : claimed.gaps(run.lo, run.hi, std::max(minimum, tol))) out.push_back(g);
+    for (const Interval& g : gapsIn(claimed, run.lo, run.hi, std::max(minimum, tol))) out.push_back(g);
   return out;
 }
 
