@@ -372,7 +372,6 @@ int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
   if (e.shape != EdgeShape::Arc || e.rightFace < 0) return layBricks(tex, on, b);
   // The wall is the face the arc lies in (its normal along the arc's axis); the other is
   // the intrados. Voussoirs run radially from where the two layers meet into the wall.
-  const FeatureMesh& fm = tex.features();
   const EdgeSides sd = tex.sidesAt(on.index, 0.5 * e.length);
   const int wall = std::abs(sd.normal[0].dot(e.axis)) >= std::abs(sd.normal[1].dot(e.axis)) ? 0 : 1;
   const Vec3 n = sd.normal[wall];
@@ -380,7 +379,6 @@ int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
   // Inward: the intrados faces the centre, so the shared region lies inside the radius.
   const bool inside = sd.normal[1 - wall].dot(e.centre - mid) > 0;
   const double r0 = inside ? e.radius - b.depth : e.radius;
-  (void)fm;
   const double tol = 1e3 * tex.tolerance();
   int placed = 0;
   for (const Interval& gap : tex.edgeMap(on.index).gaps(0, e.length, tol)) {
