@@ -154,6 +154,10 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                      std::string("'Cells' takes an optional base mesh file, the mortar joint and an optional mortar "
                                  "offset: ") + cmd.signature);
       numArgs(first, false);
+      if (first && item.body.size() == 2)
+        diags_.error("E018", item.range,
+                     "'Cells' takes its base mesh from a file or from a base part { Base | Feature }, not both: " +
+                         std::string(cmd.signature));
       break;
     }
     case CommandId::BrickBond:
@@ -199,6 +203,10 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
                      "'Marching' has " + std::to_string(parts) +
                          " body parts; it takes the Top part and optionally the Extruded part: " +
                          cmd.signature);
+      else if (cmd.id == CommandId::Cells && parts > 2)
+        diags_.error("E018", item.range,
+                     "'Cells' has " + std::to_string(parts) +
+                         " body parts; it takes the feature tree, after an optional base part: " + cmd.signature);
       break;
     case BodyRule::Optional:
       if (parts > 1)

@@ -52,12 +52,15 @@ void Analyzer::checkReachability() {
     }
   };
   bool synthesizes = false;  // pieces of a synthesized model (or Evolve's cells) may be any symbol
+  std::vector<const Item*> baseParts;  // Cells{ Base | Feature }: what Base creates
   std::function<void(const Item&)> visit = [&](const Item& item) {
     if (item.kind == ItemKind::Bracket)
       for (const auto& c : item.children) visit(c);
     if (item.kind == ItemKind::Call && (item.name == "Synthesize" || item.name == "Evolve") &&
         !isShapeItem(item, res_))
       synthesizes = true;
+    if (item.kind == ItemKind::Call && item.name == "Cells" && item.body.size() == 2 && !isShapeItem(item, res_))
+      for (const auto& c : item.body[0].items) baseParts.push_back(&c);
     if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(item.name);
     for (const auto& b : item.body)
       for (const auto& c : b.items) visit(c);
@@ -72,12 +75,32 @@ void Analyzer::checkReachability() {
       for (const auto& b : prog_.rules[ri].branches)
         for (const auto& item : b.successor.items) visit(item);
   }
-  for (const auto& s : res_.symbols) {
+  // A terminal shape a Cells base part creates is a piece of its base mesh, not a
+  // forgotten rule: the symbols reachable from the base parts get no W001.
+  std::vector<bool> basePiece(res_.symbols.size(), false);
+  std::function<void(const Item&)> visitBase = [&](const Item& item) {
+    if (item.kind == ItemKind::Bracket)
+      for (const auto& c : item.children) visitBase(c);
+    if (item.kind == ItemKind::Call && isShapeItem(item, res_)) {
+      const int s = res_.findSymbol(item.name);
+      if (s >= 0 && !basePiece[s]) {
+        basePiece[s] = true;
+        for (size_t ri : res_.symbols[s].rules)
+          for (const auto& b : prog_.rules[ri].branches)
+            for (const auto& c : b.successor.items) visitBase(c);
+      }
+    }
+    for (const auto& b : item.body)
+      for (const auto& c : b.items) visitBase(c);
+  };
+  for (const Item* item : baseParts) visitBase(*item);
+  for (size_t si = 0; si < res_.symbols.size(); ++si) {
+    const auto& s = res_.symbols[si];
     if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()))
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");
-    else if (s.reachable && s.rules.empty() && !findCommand(s.name))
+    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si])
       diags_.warning("W001", s.firstUse,
                      "'" + s.name + "' has no rule: it stays a terminal shape and places no "
                      "geometry");

@@ -485,7 +485,7 @@ class Verifier {
         break;
       case OpKind::Cells:
         if (op.index) stringId(op.str);
-        expectBodies(op, 1);
+        expectBodies(op, op.bodies.size() == 2 && !op.index ? 2 : 1);  // { Base | Feature } without a file
         if (op.args.empty() || op.args.size() > 2)
           problem(std::to_string(op.args.size()) + " arguments, expected 1 or 2 (joint, mortar)");
         numArgs(op, r, op.args.size());

@@ -50,7 +50,8 @@ void CellsCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& s
   else pattern(op, a, n, st, ex, f);
 }
 
-rt::cells::LabelledMesh CellsCommand::baseMesh(const ir::Op& op, const State& st) {
+rt::cells::LabelledMesh CellsCommand::baseMesh(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  if (op.bodies.size() == 2) return basePart(op, st, ex, f);
   if (!op.index) {
     if (st.geom.kind != rt::GeomKind::Box || !(st.scope.S.minCoeff() > 0))
       fail(op.loc, "Cells: the shape's own geometry must be a box with a size in every axis (or give a base mesh "
@@ -79,6 +80,30 @@ rt::cells::LabelledMesh CellsCommand::baseMesh(const ir::Op& op, const State& st
   for (rt::Vec3& v : m.mesh.vertices) v = rt::Vec3(v.x(), v.z(), -v.y()) + st.scope.P;
   m.mesh.buildTopology();
   return m;
+}
+
+// { Base | Feature }: the base part is derived on the spot and its terminal shapes, the
+// pieces its splits left, are recorded instead of dropped; they make the base mesh, each
+// labelled with its symbol (a facade's `window` pieces are `window` features).
+rt::cells::LabelledMesh CellsCommand::basePart(const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  std::vector<rt::cells::LabelledPolygon> pieces;
+  {
+    d_.enterLock();
+    struct Restore {
+      Derivation& d;
+      std::vector<rt::cells::LabelledPolygon>* outer;
+      ~Restore() {
+        d.recordTerminals(outer);
+        d.leaveLock();
+      }
+    } restore{d_, d_.recordTerminals(&pieces)};
+    d_.runBody(op, 0, st.scope, st.geom, st, ex, f);
+  }
+  try {
+    return rt::cells::labelledMeshFromPolygons(pieces);
+  } catch (const std::exception& e) {
+    fail(op.loc, std::string("Cells: ") + e.what());
+  }
 }
 
 rt::Scope CellsCommand::featureScope(const rt::cells::CellularTexture& tex, FeatureRef ref) const {
@@ -112,8 +137,9 @@ rt::Scope CellsCommand::featureScope(const rt::cells::CellularTexture& tex, Feat
 void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   const double joint = nonNegative(a[0], "mortar joint", op.loc);
   const double mortar = n > 1 ? nonNegative(a[1], "mortar offset", op.loc) : 0.0;
-  const rt::cells::LabelledMesh base = baseMesh(op, st);
+  const rt::cells::LabelledMesh base = baseMesh(op, st, ex, f);
   const rt::Vec3 up = op.index ? rt::Vec3::UnitY() : rt::Vec3(st.scope.axes.col(1));
+  const size_t tree = op.bodies.size() - 1;  // the feature tree is the last body part
   rt::cells::FeatureOptions options;
   options.up = up;
   rt::cells::FeatureMesh fm = rt::cells::buildLabelledFeatureMesh(base, options);
@@ -124,19 +150,22 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
   rt::cells::CellularTexture tex(base.mesh, std::move(fm), up);
   rt::RandomStream rng{rt::childKey(ex.key, 0x5000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col), 0};
   d_.enterLock();
+  // The feature tree's own terminal shapes are no base pieces of an outer Cells.
   struct Leave {
     Derivation& d;
     std::vector<Active>& active;
+    std::vector<rt::cells::LabelledPolygon>* recording;
     ~Leave() {
+      d.recordTerminals(recording);
       d.leaveLock();
       active.pop_back();
     }
-  } leave{d_, active_};
+  } leave{d_, active_, d_.recordTerminals(nullptr)};
   active_.push_back({&tex, {}, joint, &rng});
   for (FeatureRef ref : tex.order()) {
     if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
     active_.back().feature = ref;
-    d_.runBody(op, 0, featureScope(tex, ref), rt::GeomRef{}, st, ex, f);
+    d_.runBody(op, tree, featureScope(tex, ref), rt::GeomRef{}, st, ex, f);
   }
   if (mortar > 0) {
     const rt::Mesh mesh = rt::cells::mortarMesh(base.mesh, mortar);

@@ -1,9 +1,11 @@
 // Cells(...){ Feature } and its pattern generators: feature-based cellular texturing
 // (Legakis et al. 2001, runtime/cells/). Cells builds the base mesh — an annotated OBJ
 // file (its groups label the features; Z up, turned to fgsg's Y up) placed at the
-// shape's position, or the shape's own box (open at the bottom) — and derives its body once per feature, corners first, then edges, then
-// faces (§4), each on the spot, so that a feature's cells are placed before the next
-// feature reads the occupancy maps. Inside, `Feature.edge`, `Feature.label("window")` ...
+// shape's position, the pieces a base part { Base | Feature } splits the shape into
+// (labelled by their symbols), or the shape's own box (open at the bottom) — and derives
+// its feature tree once per feature, corners first, then edges, then faces (§4), each
+// on the spot, so that a feature's cells are placed before the next feature reads the
+// occupancy maps. Inside, `Feature.edge`, `Feature.label("window")` ...
 // (feature()) let rules pick a pattern per feature, the way the paper's pattern trees do,
 // and BrickBond / HeaderRow / ArchBricks / RandomStones place cells on the current
 // feature: each cell a shape of the generator's body symbol (its scope the cell, shrunk
@@ -13,6 +15,7 @@
 
 #include "backend/commands/command_family.h"
 #include "runtime/cells/base_mesh_file.h"
+#include "runtime/cells/base_mesh_pieces.h"
 #include "runtime/cells/cellular_texture.h"
 #include "runtime/random.h"
 
@@ -43,7 +46,8 @@ class CellsCommand final : public CommandFamily {
   };
   void texture(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f);
   void pattern(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f);
-  rt::cells::LabelledMesh baseMesh(const ir::Op& op, const State& st);
+  rt::cells::LabelledMesh baseMesh(const ir::Op& op, State& st, Exec& ex, Frame& f);
+  rt::cells::LabelledMesh basePart(const ir::Op& op, State& st, Exec& ex, Frame& f);
   rt::Scope featureScope(const rt::cells::CellularTexture& tex, rt::cells::FeatureRef ref) const;
   uint32_t cellAsset();
 

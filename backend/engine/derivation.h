@@ -104,6 +104,13 @@ class Derivation final : public QueryHost {
   // Inside a Lock every shape is derived where it is written.
   void enterLock() { ++lockDepth_; }
   void leaveLock() { --lockDepth_; }
+  // While set, every terminal shape (a symbol without rules) also leaves its surface
+  // (rt::cga::surfacePolygons), labelled with its symbol's name, in `into`: how a Cells
+  // base part's pieces become a base mesh. Returns the recorder it replaces.
+  std::vector<rt::cells::LabelledPolygon>* recordTerminals(std::vector<rt::cells::LabelledPolygon>* into) {
+    std::swap(into, terminalPieces_);
+    return into;
+  }
 
   // ------------------------------------------------ queries (QueryHost)
   double visible(const rt::Scope& scope, const std::string& target, ir::Loc at) override;
@@ -281,6 +288,7 @@ class Derivation final : public QueryHost {
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
+  std::vector<rt::cells::LabelledPolygon>* terminalPieces_ = nullptr;  // recordTerminals
   uint32_t onTheSpot_ = 0;      // shapes being derived where they are written, nested
   double noneId_ = -1, partId_ = -1, fullId_ = -1;
   rt::Vec3 streetDirection_ = rt::Vec3::UnitZ();

@@ -4,6 +4,7 @@
 // goes to its command family. Lock sets and eager symbols are derived on the spot.
 #include "backend/engine/derivation.h"
 
+#include "runtime/cga/cga.h"
 #include "runtime/fresh_stack.h"
 #include "runtime/stack_budget.h"
 
@@ -258,9 +259,13 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   ++stats_.shapesCreated;
   if (target.rules.empty()) {  // a terminal: nothing will ever read it again
     ++stats_.terminals;
+    if (terminalPieces_)
+      for (auto& polygon : rt::cga::surfacePolygons(st.scope, st.geom, arena_))
+        terminalPieces_->push_back({target.name, std::move(polygon)});
     return;
   }
-  if (direct_ && program_->direct[op.index] && (orderedDirect_ || !program_->directPlaces[op.index])) {
+  // Compiled direct code drops terminal shapes, so a base part being recorded is walked.
+  if (direct_ && !terminalPieces_ && program_->direct[op.index] && (orderedDirect_ || !program_->directPlaces[op.index])) {
     deriveDirect(op.index, slots, st.scope, rt::childKey(ex.key, index), ex.depth);
     return;
   }

@@ -71,6 +71,13 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, double angleDeg,
           GeometryArena& arena, Part& out, std::string& error);
 
+// A shape's own surface as world polygons, each counter-clockwise seen from outside: a
+// flat shape (a Polygon, or a Box with no depth) is its one face, looking along the scope
+// axis it has no size in (a facade piece along Z, a footprint up Y); a solid (a Box or a
+// Polyhedron) is every face but its bottom ones, since it stands on something. Edges
+// have no surface. How a Cells base part's pieces become a base mesh.
+std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
+
 // Triangulates a shape's own geometry (box, polygon or polyhedron) into world-space
 // triangles, appended as x y z floats: used when a grammar instances a shape's geometry.
 void triangulate(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,

@@ -206,6 +206,28 @@ Part edgePart(const WorldEdge& e, const Scope& solid, double tol) {
 // `out` is replaced by the selected components, in the order of the solid's faces (a box:
 // front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
 // is a solid with one face: its own; its edges are its boundary.
+std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
+  std::vector<std::vector<Vec3>> out;
+  if (geom.kind == GeomKind::Edge) return out;
+  const double tol = kMergeTol * (1.0 + scope.S.norm());
+  int flatAxis = -1, flats = 0;
+  if (geom.kind == GeomKind::Box)
+    for (int a = 0; a < 3; ++a)
+      if (!(scope.S[a] > tol)) flatAxis = a, ++flats;
+  if (flats > 1) return out;  // a line or a point
+  for (WorldFace& f : worldFaces(scope, geom, arena)) {
+    if (flatAxis >= 0) {
+      // A flat box: only its face looking along the positive axis it has no size in.
+      if (!(f.normal.dot(scope.axes.col(flatAxis)) > 0.5)) continue;
+    } else if (geom.kind != GeomKind::Polygon && classifyFace(f.normal, scope) == kBottom) {
+      continue;
+    }
+    if (newellNormal(f.pts).dot(f.normal) < 0) std::reverse(f.pts.begin(), f.pts.end());
+    out.push_back(std::move(f.pts));
+  }
+  return out;
+}
+
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error) {
   out.clear();

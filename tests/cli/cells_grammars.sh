@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Cells (Legakis et al. 2001) as a user meets it: the example buildings give the same
-# bytes in both engines and for the same seed; the shape's own box is a base mesh too;
+# bytes in both engines and for the same seed; the shape's own box and the pieces of a
+# base part (Müller's facade split) are base meshes too;
 # every mistake is a located error with exit 1 — a Feature query or a generator outside
 # Cells, a missing or broken base-mesh file, a mesh with no usable features, an unknown
 # Feature member.
 . "$(dirname "$0")/../reliability/lib.sh"
 cd "$root" || fail "no $root"
 
-for e in brick_building stepped_column; do
+for e in brick_building stepped_column mueller_brick_building; do
   "$fgsg" run "examples/$e.fgsg" --engine interp -q -o "$tmp/$e.i.obj" || fail "$e (interpreter): exit $?"
   "$fgsg" run "examples/$e.fgsg" --engine jit -q -o "$tmp/$e.j.obj" || fail "$e (JIT): exit $?"
   cmp -s "$tmp/$e.i.obj" "$tmp/$e.j.obj" || fail "$e: the engines wrote different bytes"
@@ -28,6 +29,27 @@ G
 instances=$(awk '$1 == "instances" {print $2}' "$tmp/box.out")
 [ "${instances:-0}" -gt 1000 ] || fail "box: only ${instances:-no} cells"
 
+# Müller's facade split as the base part: its window pieces are window features, so
+# every window gets a header row under its sill, and the split's terminal shapes are
+# no W001 "places no geometry" warnings.
+"$fgsg" check examples/mueller_brick_building.fgsg >"$tmp/check.out" 2>&1 || fail "mueller_brick_building: check failed"
+grep -q W001 "$tmp/check.out" && fail "mueller_brick_building: base pieces were warned about: $(cat "$tmp/check.out")"
+"$fgsg" run examples/mueller_brick_building.fgsg --set lot_width=9 --set lot_depth=6 --set floors=1 -q \
+  -o "$tmp/mb.obj" --instances "$tmp/mb.json" || fail "mueller_brick_building: exit $?"
+python3 - "$tmp/mb.json" <<'P' || fail "mueller_brick_building: wrong cells"
+import json, sys
+doc = json.load(open(sys.argv[1]))
+count = {}
+for inst in doc["instances"]:
+    count[inst["symbol"]] = count.get(inst["symbol"], 0) + 1
+# 9 x 6 at one floor: 2 + 3 + 2 + 2 bays (the door takes the third on the street side).
+# Each of the 9 window sills gets a header row: 14 headers (0.1025 m wide along 1.4 m),
+# the last cut short. Without the labels there would be none.
+headers, bricks = count.get("Header", 0), count.get("Brick", 0)
+assert headers == 9 * 14, count
+assert bricks > 3000, count
+P
+
 # grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints
 # PATTERN (lib.sh's expect) and writes no output.
 grammar_fails() {
@@ -43,6 +65,9 @@ grammar_fails 1 'E025.*Feature.colour' $'axiom: A\nA -> Cells(0.01){ F }\nF : Fe
 grammar_fails 1 'E016.*optional base mesh file' $'axiom: A\nA -> Cells(1, 2, 3){ F }\nF -> ε'
 grammar_fails 1 'R026.*joint' $'axiom: A\nA -> S(1,1,1) Cells(-1){ F }\nF -> ε'
 grammar_fails 1 'R026.*brick length' $'axiom: A\nA -> S(1,1,1) Cells(0.01){ F }\nF -> BrickBond(0, 0.1, 0.1)'
+grammar_fails 1 'E018.*from a file or from a base part' $'axiom: A\nA -> Cells("b.obj", 0.01){ P | F }\nF -> ε'
+grammar_fails 1 'E018.*3 body parts' $'axiom: A\nA -> Cells(0.01){ P | F | F }\nF -> ε'
+grammar_fails 1 'bad.fgsg:2:6: .*R026.*three or more base pieces meet' $'axiom: A\nA -> Cells(0.01){ [ S(1, 1, 0) P ] [ S(1, 1, 0) P ] [ Rx(90) S(1, 1, 0) P ] | F }\nF -> ε'
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nwobble\n' >"$tmp/broken.obj"
 grammar_fails 1 'broken.obj:5:' "$(printf 'axiom: A\nA -> Cells("%s", 0.01){ F }\nF -> ε' "$tmp/broken.obj")"
 # A smooth sphere: one freeform face, nothing to lay cells on.

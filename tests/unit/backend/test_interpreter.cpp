@@ -320,6 +320,34 @@ TEST_CASE("Cells runs: the shape's own box in bricks, and Feature outside Cells 
   CHECK(outside.messages[0].col == 7);
 }
 
+TEST_CASE("Cells' base part: a split's pieces are the base mesh and their symbols its labels", "[cells]") {
+  // A 3 x 3 facade with a window in the middle; the window piece is a label, not a box.
+  const std::string grammar =
+      "Axiom ~> S(3, 3, 0) Cells(0.01){ Facade | Feature };\n"
+      "Facade ~> Subdiv(\"X\", 1, 1, 1){ wall | Subdiv(\"Y\", 1, 1, 1){ wall | window | wall } | wall };\n"
+      "Feature : Feature.face && Feature.label(\"window\") ~> I(\"sphere\");\n"
+      "Feature : Feature.face && Feature.label(\"wall\") ~> I(\"disc\");\n"
+      "Feature : Feature.edge && Feature.label(\"window\") && Feature.label(\"wall\") ~> I(\"ico\");\n"
+      "Feature : Feature.edge && Feature.boundary ~> I(\"cube\");\n"
+      "Feature ~> ε;";
+  auto r = deriveText(grammar);
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "sphere") == 1);  // the window, one face
+  CHECK(test::countAsset(r, "disc") == 1);    // the wall around it, one face with a hole
+  CHECK(test::countAsset(r, "ico") == 4);    // its four sides, each between window and wall
+  CHECK(test::countAsset(r, "cube") == 4);   // the facade's outline
+  CHECK(r.stats.terminals == 5);
+  // Pieces that cannot make a surface: a located R026 naming the edge.
+  auto bad = deriveText("Axiom ~> S(1, 1, 0) Cells(0.01){ [ A ] [ A ] [ Rx(90) A ] | Feature };\nFeature ~> ε;");
+  REQUIRE_FALSE(bad.ok);
+  REQUIRE(bad.messages.size() == 1);
+  CHECK(bad.messages[0].code == "R026");
+  CHECK(bad.messages[0].line == 1);
+  CHECK(bad.messages[0].col == 21);
+  CHECK(bad.messages[0].message.find("three or more base pieces meet at the edge from (0, 0, 0) to (1, 0, 0)") !=
+        std::string::npos);
+}
+
 TEST_CASE("Marching on the plane is a located error asking for a surface", "[errors][marching]") {
   auto r = deriveText("Axiom ~> Marching(0.1, 30, true){ Top, Ext };\nTop ~> I(\"cube\");\nExt ~> I(\"cube\");");
   CHECK_FALSE(r.ok);
