@@ -50,6 +50,12 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::RandomStones, "RandomStones", 4, 4, BodyRule::Optional,
      "RandomStones(grid, maxWidth, maxHeight, depth){ Stone }", nullptr},
+    {CommandId::EnglishBond, "EnglishBond", 3, 4, BodyRule::Optional, "EnglishBond(length, height, depth, flip){ Brick }",
+     nullptr},
+    {CommandId::FlemishBond, "FlemishBond", 3, 4, BodyRule::Optional, "FlemishBond(length, height, depth, flip){ Brick }",
+     nullptr},
+    {CommandId::HeaderBond, "HeaderBond", 3, 4, BodyRule::Optional, "HeaderBond(length, height, depth, flip){ Brick }",
+     nullptr},
 };
 
 const FunctionInfo kFunctions[] = {

@@ -164,8 +164,11 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::HeaderRow:
     case CommandId::ArchBricks:
     case CommandId::RandomStones:
+    case CommandId::EnglishBond:
+    case CommandId::FlemishBond:
+    case CommandId::HeaderBond:
       for (size_t k = 0; k < item.args.size(); ++k)
-        expect(*item.args[k], w, k == 3 && cmd.id == CommandId::BrickBond ? ValueType::Bool : ValueType::Num,
+        expect(*item.args[k], w, k == 3 && cmd.id != CommandId::RandomStones ? ValueType::Bool : ValueType::Num,
                "this argument");
       break;
     default: numArgs(0, false); break;

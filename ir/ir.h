@@ -113,7 +113,7 @@ enum class OpKind : uint8_t {
 };
 
 // Cells' pattern generators (runtime/cells/generators.h).
-enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomStones };
+enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomStones, EnglishBond, FlemishBond, HeaderBond };
 
 enum class InstanceMode : uint8_t { Plain, Collide, Merge };
 

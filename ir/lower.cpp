@@ -340,13 +340,20 @@ class Lowerer {
       case CommandId::HeaderRow:
       case CommandId::ArchBricks:
       case CommandId::RandomStones:
+      case CommandId::EnglishBond:
+      case CommandId::FlemishBond:
+      case CommandId::HeaderBond: {
+        static const std::pair<CommandId, CellGenerator> kGenerators[] = {
+            {CommandId::BrickBond, CellGenerator::BrickBond},     {CommandId::HeaderRow, CellGenerator::HeaderRow},
+            {CommandId::ArchBricks, CellGenerator::ArchBricks},   {CommandId::RandomStones, CellGenerator::RandomStones},
+            {CommandId::EnglishBond, CellGenerator::EnglishBond}, {CommandId::FlemishBond, CellGenerator::FlemishBond},
+            {CommandId::HeaderBond, CellGenerator::HeaderBond}};
         op.kind = OpKind::CellPattern;
-        op.index = static_cast<uint32_t>(cmd.id == CommandId::BrickBond    ? CellGenerator::BrickBond
-                                         : cmd.id == CommandId::HeaderRow  ? CellGenerator::HeaderRow
-                                         : cmd.id == CommandId::ArchBricks ? CellGenerator::ArchBricks
-                                                                           : CellGenerator::RandomStones);
+        for (const auto& [id, generator] : kGenerators)
+          if (id == cmd.id) op.index = static_cast<uint32_t>(generator);
         allArgs(0);
         break;
+      }
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));

@@ -350,8 +350,9 @@ class Printer {
       case OpKind::Branch: text = withArgs("branch"); break;
       case OpKind::Cells: text = withArgs(op.index ? "cells " + stringLit(op.str) : std::string("cells")); break;
       case OpKind::CellPattern: {
-        static const char* kNames[] = {"brick-bond", "header-row", "arch-bricks", "random-stones"};
-        text = withArgs(op.index < 4 ? kNames[op.index] : "cell-pattern?");
+        static const char* kNames[] = {"brick-bond",   "header-row",   "arch-bricks", "random-stones",
+                                       "english-bond", "flemish-bond", "header-bond"};
+        text = withArgs(op.index < 7 ? kNames[op.index] : "cell-pattern?");
         break;
       }
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;

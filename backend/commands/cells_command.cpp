@@ -204,8 +204,18 @@ void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State&
   try {
     switch (static_cast<ir::CellGenerator>(op.index)) {
       case ir::CellGenerator::BrickBond:
-        rt::cells::layBricks(tex, at.feature, {a[0], a[1], a[2], n > 3 && a[3] != 0.0});
+      case ir::CellGenerator::EnglishBond:
+      case ir::CellGenerator::FlemishBond:
+      case ir::CellGenerator::HeaderBond: {
+        using G = ir::CellGenerator;
+        const auto g = static_cast<G>(op.index);
+        const rt::cells::Bond bond = g == G::EnglishBond   ? rt::cells::Bond::English
+                                     : g == G::FlemishBond ? rt::cells::Bond::Flemish
+                                     : g == G::HeaderBond  ? rt::cells::Bond::Header
+                                                           : rt::cells::Bond::Running;
+        rt::cells::layBricks(tex, at.feature, {a[0], a[1], a[2], n > 3 && a[3] != 0.0, bond});
         break;
+      }
       case ir::CellGenerator::HeaderRow: rt::cells::layHeaders(tex, at.feature, {a[0], a[1], a[2]}); break;
       case ir::CellGenerator::ArchBricks: rt::cells::layArchBricks(tex, at.feature, {a[0], a[1], a[2]}); break;
       case ir::CellGenerator::RandomStones:

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fgsg::rt::cells {
 
@@ -240,26 +241,59 @@ Cell faceCell(const FeatureFace& face, double u, double len, double v0, double v
   return makeCell(a.point, x, y, z, Vec3((b.point - a.point).norm(), v1 - v0, d));
 }
 
-// Lays one free run [run.lo, run.hi] of a strip with bricks: full bricks, the last two
-// shared evenly rather than leaving a sliver, a half brick first when asked.
-int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, bool half, const BrickSize& b) {
+// The bricks of one course in a bond (generators.h Bond): the closer it starts with at
+// a free end (0: none) and the lengths that repeat after it.
+struct CoursePattern {
+  double closer = 0;
+  std::vector<double> cycle;
+};
+CoursePattern coursePattern(const BrickSize& b, bool odd) {
+  const double l = b.length, w = b.depth;  // a stretcher, a header
+  switch (b.bond) {
+    case Bond::Running: return {odd ? 0.5 * l : 0, {l}};
+    case Bond::English: return odd ? CoursePattern{0.5 * w, {w}} : CoursePattern{0, {l}};
+    case Bond::Flemish:
+      return odd ? CoursePattern{std::max(0.0, 0.5 * (l - w)), {w, l}} : CoursePattern{0, {l, w}};
+    case Bond::Header: return {odd ? 0.5 * w : 0, {w}};
+  }
+  return {0, {l}};
+}
+
+// Lays one free run [run.lo, run.hi] of a strip in the course's pattern: the closer
+// first when asked, then the cycle, the last two bricks shared evenly rather than
+// leaving a sliver.
+int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, bool closer,
+           const CoursePattern& course, double depth) {
   const FeatureFace& face = tex.features().faces[f];
   const double tol = 1e3 * tex.faceMap(f).tolerance();
   int placed = 0;
+  size_t next = 0;
+  bool last = false;  // the two bricks that share the end are being laid
+  closer = closer && course.closer > 0;
   for (double u = run.lo; run.hi - u > tol;) {
     const double rest = run.hi - u;
-    const double len = half ? std::min(0.5 * b.length, rest)
-                       : rest <= b.length      ? rest
-                       : rest <= 1.5 * b.length ? 0.5 * rest
-                                                : b.length;
-    half = false;
-    placed += tex.add(faceCell(face, u, len, v0, v1, b.depth), {FeatureKind::Face, f});
+    double len;
+    if (closer) {
+      len = std::min(course.closer, rest);
+    } else if (last) {
+      len = rest;
+    } else {
+      const double want = course.cycle[next % course.cycle.size()];
+      const double after = course.cycle[++next % course.cycle.size()];
+      // Less than half the following brick would be left after this one: share.
+      const double share = after == want ? 1.5 * want : want + 0.5 * after;
+      if (rest <= want) len = rest;
+      else if (rest <= share) len = 0.5 * rest, last = true;
+      else len = want;
+    }
+    closer = false;
+    placed += tex.add(faceCell(face, u, len, v0, v1, depth), {FeatureKind::Face, f});
     u += len;
   }
   return placed;
 }
 
-int runningBond(CellularTexture& tex, int f, const BrickSize& b) {
+int bondedFace(CellularTexture& tex, int f, const BrickSize& b) {
   const FaceOccupancy& map = tex.faceMap(f);
   const double tol = 1e3 * map.tolerance();
   int placed = 0;
@@ -271,17 +305,20 @@ int runningBond(CellularTexture& tex, int f, const BrickSize& b) {
       return false;
     };
     const std::vector<Interval> full = map.freeRuns(st.v0, st.v1, tol);
-    // A free end on the face's own outline: odd courses start with a half brick, so
-    // the bond shifts by half a brick from course to course.
+    // A free end on the face's own outline: odd courses start with a closer, so the
+    // bond shifts from course to course.
     const bool odd = (st.course + (b.flip ? 1 : 0)) & 1;
-    for (const Interval& run : full) placed += layRun(tex, f, run, st.v0, st.v1, odd && atBoundary(run.lo), b);
+    const CoursePattern course = coursePattern(b, odd);
+    for (const Interval& run : full)
+      placed += layRun(tex, f, run, st.v0, st.v1, atBoundary(run.lo), course, b.depth);
     // Where a claim or the outline cuts into the course (a sill off the course lines, an
     // edge's cells a little higher than a course), bricks are clipped to what is free:
     // lower cells in the slices between the heights where that changes.
     const std::vector<double> cuts = map.breaks(st.v0, st.v1);
     for (size_t k = 0; k < cuts.size() + 1 && !cuts.empty(); ++k) {
       const double a = k ? cuts[k - 1] : st.v0, c = k < cuts.size() ? cuts[k] : st.v1;
-      for (const Interval& run : subtract(map.freeRuns(a, c, tol), full)) placed += layRun(tex, f, run, a, c, false, b);
+      for (const Interval& run : subtract(map.freeRuns(a, c, tol), full))
+        placed += layRun(tex, f, run, a, c, false, course, b.depth);
     }
   }
   return placed;
@@ -331,7 +368,7 @@ int layBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
     }
     case FeatureKind::Face:
       if (!planarOrCylindrical(fm.faces[on.index])) return 0;
-      return runningBond(tex, on.index, b);
+      return bondedFace(tex, on.index, b);
   }
   return 0;
 }

@@ -6,8 +6,8 @@
 //   bricks       corners: a block where three faces meet square; vertical edges: one
 //                brick per course, running along the left and the right face in turn
 //                (the corner bond; `flip` starts with the right one); other edges: a
-//                row of stretchers along the edge; faces: running bond, half bricks at
-//                free ends on odd courses, courses shared by every wall.
+//                row of stretchers along the edge; faces: courses shared by every wall,
+//                in the size's bond (below).
 //   headers      edges: a row of blocks along the edge on its more vertical face (a
 //                header row under a window); corners and faces: nothing.
 //   archBricks   arc edges: voussoirs radial to the arc, as wide as a course at the
@@ -23,9 +23,22 @@
 
 namespace fgsg::rt::cells {
 
+// How a face's courses are laid (§4's bonds). A stretcher shows the brick's side
+// (`length`), a header its end (as wide as the brick's `depth`); a closer is the cut
+// brick that starts an odd course at a free end so that the joints do not line up.
+//   Running   stretchers; odd courses start with a half brick.
+//   English   stretcher and header courses in turn; header courses start with a quarter
+//             brick (half a header), so headers sit over stretchers' middles and joints.
+//   Flemish   stretcher, header, stretcher ... in every course; odd courses start with a
+//             closer of (length - depth) / 2 and a header, so each header sits on the
+//             middle of a stretcher.
+//   Header    headers; odd courses start with half a header.
+enum class Bond { Running, English, Flemish, Header };
+
 struct BrickSize {
   double length = 0.215, height = 0.075, depth = 0.1025;
   bool flip = false;  // the paper's stored bit: which face a corner's first course runs along
+  Bond bond = Bond::Running;
 };
 
 struct StoneSize {

@@ -259,3 +259,87 @@ TEST_CASE("the brick building: voussoirs radial to the arch within 1°, header r
   CHECK(voussoirs >= 20);  // the wall's side of the door's arch: π 0.6 / 0.075 ≈ 25
   CHECK(fclContacts(tex.cells()) == 0);
 }
+
+TEST_CASE("bonds: English, Flemish and header courses, closers at the free ends", "[cells][bonds]") {
+  // The front of a 3 m wall 1.5 m high (20 courses), laid alone: its courses as the
+  // bond lays them, each from its free end at x = 0... along the face's u axis.
+  const auto m = fgsg::test::rectilinearMesh({{{0, 3}, {0, 0.5}, {0, 1.5}}}, {{0, 0, 0}}, true);
+  const double l = kBrick.length, w = kBrick.depth, h = kBrick.height;
+  auto courses = [&](Bond bond) {
+    BrickSize b = kBrick;
+    b.bond = bond;
+    CellularTexture tex(m, buildFeatureMesh(m));
+    const FeatureMesh& fm = tex.features();
+    int front = -1;
+    for (size_t f = 0; f < fm.faces.size(); ++f)
+      if (fm.faces[f].normal.y() < -0.99) front = int(f);
+    REQUIRE(front >= 0);
+    layBricks(tex, {FeatureKind::Face, front}, b);
+    // Per course, the cells' (start, length) along u, in order.
+    std::vector<std::vector<std::pair<double, double>>> rows(20);
+    const Vec3 u = fm.faces[front].uAxis;
+    for (const Cell& c : tex.cells()) {
+      REQUIRE(c.size.y() == Approx(h));
+      const int k = int(std::lround(c.origin.z() / h));
+      REQUIRE((k >= 0 && k < 20));
+      const double u0 = c.origin.dot(u) - fm.faces[front].origin.dot(u);
+      rows[k].emplace_back(u0, c.size.x());
+    }
+    for (auto& row : rows) std::sort(row.begin(), row.end());
+    return rows;
+  };
+  // The bricks of a row but its last two (which share what is left evenly).
+  auto inner = [](const std::vector<std::pair<double, double>>& row) {
+    return std::vector<std::pair<double, double>>(row.begin(), row.end() - 2);
+  };
+  SECTION("English: stretcher and header courses, header courses after a quarter brick") {
+    const auto rows = courses(Bond::English);
+    for (int k = 0; k < 20; ++k) {
+      const auto cells = inner(rows[k]);
+      for (size_t i = 0; i < cells.size(); ++i)
+        CHECK(cells[i].second == Approx(k % 2 == 0 ? l : i == 0 ? 0.5 * w : w));
+    }
+  }
+  SECTION("Flemish: stretcher, header in every course; each header on a stretcher's middle") {
+    const auto rows = courses(Bond::Flemish);
+    for (int k = 0; k < 20; ++k) {
+      const auto cells = inner(rows[k]);
+      for (size_t i = 0; i < cells.size(); ++i) {
+        const double expected = k % 2 == 0 ? (i % 2 == 0 ? l : w) : i == 0 ? 0.5 * (l - w) : (i % 2 == 1 ? w : l);
+        CHECK(cells[i].second == Approx(expected));
+        const bool header = std::abs(cells[i].second - w) < 1e-9;
+        if (!header || k == 0) continue;
+        // The course below has a stretcher centred under this header.
+        const double middle = cells[i].first + 0.5 * w;
+        bool centred = false;
+        for (const auto& [start, len] : rows[k - 1])
+          centred |= std::abs(len - l) < 1e-9 && std::abs(start + 0.5 * l - middle) < 1e-9;
+        CHECK(centred);
+      }
+    }
+  }
+  SECTION("header bond: headers, odd courses after half a header") {
+    const auto rows = courses(Bond::Header);
+    for (int k = 0; k < 20; ++k) {
+      const auto cells = inner(rows[k]);
+      REQUIRE(cells.size() > 20);
+      for (size_t i = 0; i < cells.size(); ++i) CHECK(cells[i].second == Approx(k % 2 == 1 && i == 0 ? 0.5 * w : w));
+    }
+  }
+  SECTION("every bond covers the wall without overlaps") {
+    for (Bond bond : {Bond::Running, Bond::English, Bond::Flemish, Bond::Header}) {
+      double area = 0;
+      const auto rows = courses(bond);
+      for (const auto& row : rows) {
+        double u = 0;
+        for (const auto& [start, len] : row) {
+          CHECK(start == Approx(u).margin(1e-9));  // no gap, no overlap
+          u = start + len;
+          area += len * h;
+        }
+        CHECK(u == Approx(3.0));
+      }
+      CHECK(area == Approx(4.5));
+    }
+  }
+}
