@@ -56,6 +56,8 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::HeaderBond, "HeaderBond", 3, 4, BodyRule::Optional, "HeaderBond(length, height, depth, flip){ Brick }",
      nullptr},
+    {CommandId::Shingles, "Shingles", 3, 3, BodyRule::Optional, "Shingles(width, exposure, thickness){ Tile }",
+     nullptr},
 };
 
 const FunctionInfo kFunctions[] = {

@@ -14,7 +14,7 @@ enum class CommandId {
   Forward, Move,  // turtle F and f written as identifiers
   Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
   BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators
-  EnglishBond, FlemishBond, HeaderBond,
+  EnglishBond, FlemishBond, HeaderBond, Shingles,
 };
 
 enum class BodyRule {

@@ -167,6 +167,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::EnglishBond:
     case CommandId::FlemishBond:
     case CommandId::HeaderBond:
+    case CommandId::Shingles:
       for (size_t k = 0; k < item.args.size(); ++k)
         expect(*item.args[k], w, k == 3 && cmd.id != CommandId::RandomStones ? ValueType::Bool : ValueType::Num,
                "this argument");

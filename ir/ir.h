@@ -113,7 +113,8 @@ enum class OpKind : uint8_t {
 };
 
 // Cells' pattern generators (runtime/cells/generators.h).
-enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomStones, EnglishBond, FlemishBond, HeaderBond };
+enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomStones, EnglishBond, FlemishBond, HeaderBond,
+                                      Shingles };
 
 enum class InstanceMode : uint8_t { Plain, Collide, Merge };
 

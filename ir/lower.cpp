@@ -342,12 +342,13 @@ class Lowerer {
       case CommandId::RandomStones:
       case CommandId::EnglishBond:
       case CommandId::FlemishBond:
-      case CommandId::HeaderBond: {
+      case CommandId::HeaderBond:
+      case CommandId::Shingles: {
         static const std::pair<CommandId, CellGenerator> kGenerators[] = {
             {CommandId::BrickBond, CellGenerator::BrickBond},     {CommandId::HeaderRow, CellGenerator::HeaderRow},
             {CommandId::ArchBricks, CellGenerator::ArchBricks},   {CommandId::RandomStones, CellGenerator::RandomStones},
             {CommandId::EnglishBond, CellGenerator::EnglishBond}, {CommandId::FlemishBond, CellGenerator::FlemishBond},
-            {CommandId::HeaderBond, CellGenerator::HeaderBond}};
+            {CommandId::HeaderBond, CellGenerator::HeaderBond},   {CommandId::Shingles, CellGenerator::Shingles}};
         op.kind = OpKind::CellPattern;
         for (const auto& [id, generator] : kGenerators)
           if (id == cmd.id) op.index = static_cast<uint32_t>(generator);

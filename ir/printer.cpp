@@ -351,8 +351,8 @@ class Printer {
       case OpKind::Cells: text = withArgs(op.index ? "cells " + stringLit(op.str) : std::string("cells")); break;
       case OpKind::CellPattern: {
         static const char* kNames[] = {"brick-bond",   "header-row",   "arch-bricks", "random-stones",
-                                       "english-bond", "flemish-bond", "header-bond"};
-        text = withArgs(op.index < 7 ? kNames[op.index] : "cell-pattern?");
+                                       "english-bond", "flemish-bond", "header-bond",   "shingles"};
+        text = withArgs(op.index < 8 ? kNames[op.index] : "cell-pattern?");
         break;
       }
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;

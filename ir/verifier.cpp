@@ -491,7 +491,7 @@ class Verifier {
         numArgs(op, r, op.args.size());
         break;
       case OpKind::CellPattern:
-        if (op.index > static_cast<uint32_t>(CellGenerator::HeaderBond))
+        if (op.index > static_cast<uint32_t>(CellGenerator::Shingles))
           problem("cell generator " + std::to_string(op.index) + " out of range");
         if (op.bodies.size() > 1) problem(std::to_string(op.bodies.size()) + " bodies, expected 0 or 1");
         if (op.args.size() < 3 || op.args.size() > 4) problem(std::to_string(op.args.size()) + " arguments, expected 3 or 4");

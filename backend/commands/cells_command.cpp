@@ -218,6 +218,7 @@ void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State&
       }
       case ir::CellGenerator::HeaderRow: rt::cells::layHeaders(tex, at.feature, {a[0], a[1], a[2]}); break;
       case ir::CellGenerator::ArchBricks: rt::cells::layArchBricks(tex, at.feature, {a[0], a[1], a[2]}); break;
+      case ir::CellGenerator::Shingles: rt::cells::layShingles(tex, at.feature, {a[0], a[1], a[2]}); break;
       case ir::CellGenerator::RandomStones:
         rt::cells::layStones(tex, at.feature, {a[0], a[1], a[2], a[3]}, *at.rng);
         break;

@@ -196,13 +196,13 @@ std::function<double(double)> evenPieces(double length) {
 
 // The strips of face f a generator fills, bottom to top, with their course numbers:
 // on a face that rises (a wall, a roof, a tower) the courses of height h counted from
-// the texture's course base, so that they continue around every corner; on a level face
-// strips of h from its lowest v.
+// the texture's course base, so that they continue around every corner; on a level face,
+// or `fromLowest` (a roof's rows start at its eaves), strips of h from its lowest v.
 struct Strip {
   double v0, v1;
   int course;
 };
-std::vector<Strip> strips(const CellularTexture& tex, int f, double h) {
+std::vector<Strip> strips(const CellularTexture& tex, int f, double h, bool fromLowest = false) {
   const FeatureFace& face = tex.features().faces[f];
   const FaceOccupancy& map = tex.faceMap(f);
   std::vector<Strip> out;
@@ -216,7 +216,7 @@ std::vector<Strip> strips(const CellularTexture& tex, int f, double h) {
     v0OfBase = (tex.courseBase() - face.centre.dot(tex.up())) / (rise != 0 ? rise : 1);
   }
   const double lo = map.lo().y(), hi = map.hi().y();
-  if (rise > 0.5) {
+  if (rise > 0.5 && !fromLowest) {
     const double step = h / rise;
     const int k0 = int(std::floor((lo - v0OfBase) / step + 1e-9));
     for (int k = k0; v0OfBase + k * step < hi - map.tolerance(); ++k) {
@@ -241,12 +241,13 @@ Cell faceCell(const FeatureFace& face, double u, double len, double v0, double v
   return makeCell(a.point, x, y, z, Vec3((b.point - a.point).norm(), v1 - v0, d));
 }
 
-// The bricks of one course in a bond (generators.h Bond): the closer it starts with at
-// a free end (0: none) and the lengths that repeat after it.
+// The cells of one run of a course: the closer it starts with (0: none) and the lengths
+// that repeat after it.
 struct CoursePattern {
   double closer = 0;
   std::vector<double> cycle;
 };
+// In a bond (generators.h Bond); the closer is for a run that starts at a free end.
 CoursePattern coursePattern(const BrickSize& b, bool odd) {
   const double l = b.length, w = b.depth;  // a stretcher, a header
   switch (b.bond) {
@@ -259,17 +260,16 @@ CoursePattern coursePattern(const BrickSize& b, bool odd) {
   return {0, {l}};
 }
 
-// Lays one free run [run.lo, run.hi] of a strip in the course's pattern: the closer
-// first when asked, then the cycle, the last two bricks shared evenly rather than
-// leaving a sliver.
-int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, bool closer,
-           const CoursePattern& course, double depth) {
+// Lays one free run [run.lo, run.hi] of a strip in the pattern: the closer first, then
+// the cycle, the last two cells shared evenly rather than leaving a sliver.
+int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, const CoursePattern& course,
+           double depth) {
   const FeatureFace& face = tex.features().faces[f];
   const double tol = 1e3 * tex.faceMap(f).tolerance();
   int placed = 0;
   size_t next = 0;
   bool last = false;  // the two bricks that share the end are being laid
-  closer = closer && course.closer > 0;
+  bool closer = course.closer > 0;
   for (double u = run.lo; run.hi - u > tol;) {
     const double rest = run.hi - u;
     double len;
@@ -293,11 +293,15 @@ int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v
   return placed;
 }
 
-int bondedFace(CellularTexture& tex, int f, const BrickSize& b) {
+// Lays face f in courses of height h, cells `depth` deep, each free run of a course in
+// the pattern pattern(course number, where the run starts, whether that is on the face's
+// own outline) gives.
+int coursedFace(CellularTexture& tex, int f, double h, double depth, bool fromLowest,
+                const std::function<CoursePattern(int, double, bool)>& pattern) {
   const FaceOccupancy& map = tex.faceMap(f);
   const double tol = 1e3 * map.tolerance();
   int placed = 0;
-  for (const Strip& st : strips(tex, f, b.height)) {
+  for (const Strip& st : strips(tex, f, h, fromLowest)) {
     const std::vector<Interval> inside = map.insideRuns(st.v0, st.v1);
     auto atBoundary = [&](double u) {
       for (const Interval& i : inside)
@@ -305,23 +309,29 @@ int bondedFace(CellularTexture& tex, int f, const BrickSize& b) {
       return false;
     };
     const std::vector<Interval> full = map.freeRuns(st.v0, st.v1, tol);
-    // A free end on the face's own outline: odd courses start with a closer, so the
-    // bond shifts from course to course.
-    const bool odd = (st.course + (b.flip ? 1 : 0)) & 1;
-    const CoursePattern course = coursePattern(b, odd);
     for (const Interval& run : full)
-      placed += layRun(tex, f, run, st.v0, st.v1, atBoundary(run.lo), course, b.depth);
+      placed += layRun(tex, f, run, st.v0, st.v1, pattern(st.course, run.lo, atBoundary(run.lo)), depth);
     // Where a claim or the outline cuts into the course (a sill off the course lines, an
-    // edge's cells a little higher than a course), bricks are clipped to what is free:
-    // lower cells in the slices between the heights where that changes.
+    // edge's cells a little higher than a course, a roof's hip), cells are clipped to
+    // what is free: lower cells in the slices between the heights where that changes.
     const std::vector<double> cuts = map.breaks(st.v0, st.v1);
     for (size_t k = 0; k < cuts.size() + 1 && !cuts.empty(); ++k) {
       const double a = k ? cuts[k - 1] : st.v0, c = k < cuts.size() ? cuts[k] : st.v1;
       for (const Interval& run : subtract(map.freeRuns(a, c, tol), full))
-        placed += layRun(tex, f, run, a, c, false, course, b.depth);
+        placed += layRun(tex, f, run, a, c, pattern(st.course, run.lo, false), depth);
     }
   }
   return placed;
+}
+
+int bondedFace(CellularTexture& tex, int f, const BrickSize& b) {
+  // A free end on the face's own outline starts with the course's closer, so the bond
+  // shifts from course to course.
+  return coursedFace(tex, f, b.height, b.depth, false, [&](int course, double, bool atOutline) {
+    CoursePattern p = coursePattern(b, ((course + (b.flip ? 1 : 0)) & 1) != 0);
+    if (!atOutline) p.closer = 0;
+    return p;
+  });
 }
 
 bool planarOrCylindrical(const FeatureFace& f) { return f.kind != FaceKind::Freeform; }
@@ -336,6 +346,12 @@ void checkSize(const BrickSize& s) {
   positive(s.length, "brick length");
   positive(s.height, "course height");
   positive(s.depth, "brick depth");
+}
+
+void checkSize(const TileSize& s) {
+  positive(s.width, "tile width");
+  positive(s.exposure, "tile exposure");
+  positive(s.thickness, "tile thickness");
 }
 
 void checkSize(const StoneSize& s) {
@@ -510,6 +526,27 @@ int layStones(CellularTexture& tex, FeatureRef on, const StoneSize& st, RandomSt
     }
   }
   return 0;
+}
+
+int layShingles(CellularTexture& tex, FeatureRef on, const TileSize& t) {
+  checkSize(t);
+  if (on.kind == FeatureKind::Corner) return 0;
+  if (on.kind == FeatureKind::Edge) {
+    const FeatureEdge& e = tex.features().edges[on.index];
+    if (e.rightFace < 0 || e.length <= 0 || isVertical(tex, e)) return 0;  // the rows run to it
+    return alongEdge(tex, on.index, t.thickness, t.exposure, evenPieces(t.width));
+  }
+  if (!planarOrCylindrical(tex.features().faces[on.index])) return 0;
+  // The joints of a row lie on a grid of the tile width across the whole face, odd rows
+  // shifted by half a tile, wherever a run starts (at the eaves' end or at a hip's
+  // tiles): a run starts with the tile cut to the next joint.
+  const double u0 = tex.faceMap(on.index).lo().x(), tol = 1e3 * tex.faceMap(on.index).tolerance();
+  return coursedFace(tex, on.index, t.exposure, t.thickness, true, [&](int row, double start, bool) {
+    const double offset = (row & 1) ? 0.5 * t.width : 0;
+    const double into = std::fmod(start - u0 - offset + 2 * t.width, t.width);  // past the last joint
+    const double cut = t.width - into;
+    return CoursePattern{cut > tol && cut < t.width - tol ? cut : 0, {t.width}};
+  });
 }
 
 }  // namespace fgsg::rt::cells

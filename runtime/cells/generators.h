@@ -12,6 +12,10 @@
 //                header row under a window); corners and faces: nothing.
 //   archBricks   arc edges: voussoirs radial to the arc, as wide as a course at the
 //                intrados; other features: as bricks.
+//   shingles     faces: rows of tiles from the face's lowest edge (the eaves) up, joints
+//                on a grid of the tile width across the face, odd rows shifted by half a
+//                tile (runs start with a cut tile); non-vertical edges (ridges, hips): a
+//                row of ridge tiles along the edge; corners and vertical edges: nothing.
 //   stones       corners: a block; vertical edges: stones of random height and length
 //                along the left and right face in turn; other edges: random lengths;
 //                faces: grid squares merged at random into rectangles no larger than the
@@ -41,6 +45,10 @@ struct BrickSize {
   Bond bond = Bond::Running;
 };
 
+struct TileSize {
+  double width = 0.3, exposure = 0.2, thickness = 0.03;  // a row shows `exposure` of each tile
+};
+
 struct StoneSize {
   double grid = 0.1, maxWidth = 0.4, maxHeight = 0.3, depth = 0.12;
 };
@@ -49,10 +57,12 @@ int layBricks(CellularTexture& tex, FeatureRef on, const BrickSize& size);
 int layHeaders(CellularTexture& tex, FeatureRef on, const BrickSize& size);
 int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& size);
 int layStones(CellularTexture& tex, FeatureRef on, const StoneSize& size, RandomStream& rng);
+int layShingles(CellularTexture& tex, FeatureRef on, const TileSize& size);
 
 // Throws std::invalid_argument naming the first size that is not a positive finite
 // number (or a stone maximum below the grid).
 void checkSize(const BrickSize& size);
 void checkSize(const StoneSize& size);
+void checkSize(const TileSize& size);
 
 }  // namespace fgsg::rt::cells

@@ -43,11 +43,13 @@ count = {}
 for inst in doc["instances"]:
     count[inst["symbol"]] = count.get(inst["symbol"], 0) + 1
 # 9 x 6 at one floor: 2 + 3 + 2 + 2 bays (the door takes the third on the street side).
-# Each of the 9 window sills gets a header row: 14 headers (0.1025 m wide along 1.4 m),
-# the last cut short. Without the labels there would be none.
-headers, bricks = count.get("Header", 0), count.get("Brick", 0)
-assert headers == 9 * 14, count
+# Each of the 9 window sills gets a header row: 12 headers in the 1.195 m the blocks at
+# the opening's corners (0.1025 m each) leave of 1.4 m. Without the labels there would be
+# none. The roof (its pieces labelled roof) is in shingles.
+headers, bricks, tiles = count.get("Header", 0), count.get("Brick", 0), count.get("Tile", 0)
+assert headers == 9 * 12, count
 assert bricks > 3000, count
+assert tiles > 1000, count
 P
 
 # grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints

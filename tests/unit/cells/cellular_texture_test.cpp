@@ -4,6 +4,7 @@
 // texture's own test), faces are covered, corner bricks alternate, courses line up
 // around every corner, occupancy is respected.
 #include "runtime/cells/base_mesh_file.h"
+#include "runtime/cells/base_mesh_pieces.h"
 #include "runtime/cells/cellular_texture.h"
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
@@ -12,7 +13,9 @@
 #include <catch2/catch.hpp>
 #include <fcl/narrowphase/collision.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 using namespace fgsg::rt;
 using namespace fgsg::rt::cells;
@@ -342,4 +345,70 @@ TEST_CASE("bonds: English, Flemish and header courses, closers at the free ends"
       CHECK(area == Approx(4.5));
     }
   }
+}
+
+TEST_CASE("shingles: rows from the eaves, staggered, ridge tiles on the hips, no overlaps", "[cells][shingles]") {
+  // A 7 x 4 house, 3 high, under a hipped roof (apex 1.25 above the eaves), as a grammar's
+  // Comp pieces would give it; only the roof is tiled.
+  const double top = 4.25;
+  const std::vector<LabelledPolygon> pieces{
+      {"wall", {Vec3(0, 0, 4), Vec3(7, 0, 4), Vec3(7, 3, 4), Vec3(0, 3, 4)}},
+      {"wall", {Vec3(7, 0, 4), Vec3(7, 0, 0), Vec3(7, 3, 0), Vec3(7, 3, 4)}},
+      {"wall", {Vec3(7, 0, 0), Vec3(0, 0, 0), Vec3(0, 3, 0), Vec3(7, 3, 0)}},
+      {"wall", {Vec3(0, 0, 0), Vec3(0, 0, 4), Vec3(0, 3, 4), Vec3(0, 3, 0)}},
+      {"roof", {Vec3(0, 3, 4), Vec3(7, 3, 4), Vec3(5, top, 2), Vec3(2, top, 2)}},
+      {"roof", {Vec3(7, 3, 4), Vec3(7, 3, 0), Vec3(5, top, 2)}},
+      {"roof", {Vec3(7, 3, 0), Vec3(0, 3, 0), Vec3(2, top, 2), Vec3(5, top, 2)}},
+      {"roof", {Vec3(0, 3, 0), Vec3(0, 3, 4), Vec3(2, top, 2)}}};
+  const LabelledMesh lm = labelledMeshFromPolygons(pieces);
+  FeatureOptions options;
+  options.up = Vec3::UnitY();
+  CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm, options), Vec3::UnitY());
+  const FeatureMesh& fm = tex.features();
+  auto roof = [&](const std::vector<std::string>& labels) {
+    return std::find(labels.begin(), labels.end(), "roof") != labels.end();
+  };
+  const TileSize t{0.3, 0.2, 0.03};
+  int ridgeTiles = 0;
+  for (FeatureRef f : tex.order()) {
+    if (f.kind == FeatureKind::Edge && roof(fm.edges[f.index].labels) && fm.edges[f.index].labels.size() == 1)
+      ridgeTiles += layShingles(tex, f, t);  // the hips and the ridge
+    if (f.kind == FeatureKind::Face && roof(fm.faces[f.index].labels)) {
+      const size_t first = tex.cells().size();
+      layShingles(tex, f, t);
+      // Whole-row tiles stand on row lines 0.2 apart up the slope from the eaves (the
+      // face's lowest v, 0) and meet end to end. Where a hip cuts a row diagonally, lower
+      // tiles fill the slices the cut leaves, short of the wedges a box cannot fill.
+      const FeatureFace& face = fm.faces[f.index];
+      double area = 0;
+      std::map<long, std::vector<std::pair<double, double>>> rows;
+      for (size_t k = first; k < tex.cells().size(); ++k) {
+        const Cell& c = tex.cells()[k];
+        area += c.size.x() * c.size.y();
+        CHECK(c.size.x() <= t.width + 1e-9);
+        CHECK(c.size.z() == Approx(t.thickness));
+        if (std::abs(c.size.y() - t.exposure) > 1e-9) continue;  // a slice by a hip
+        const double row = (c.origin - face.origin).dot(face.vAxis) / t.exposure;
+        CHECK(std::abs(row - std::round(row)) < 1e-9);
+        rows[std::lround(row)].emplace_back((c.origin - face.origin).dot(face.uAxis), c.size.x());
+      }
+      CHECK(area >= 0.9 * face.area);
+      CHECK(area <= face.area + 1e-9);
+      REQUIRE(rows.size() >= 5);
+      for (auto& [row, tiles] : rows) {
+        std::sort(tiles.begin(), tiles.end());
+        for (size_t i = 1; i < tiles.size(); ++i) CHECK(tiles[i].first == Approx(tiles[i - 1].first + tiles[i - 1].second));
+        // Inner tiles (after the first, cut to a joint, and before the last two, which
+        // share what is left) are whole and start on the row's joint grid: the face's
+        // lowest u (0) plus whole tiles, plus half a tile on odd rows.
+        for (size_t i = 1; i + 2 < tiles.size(); ++i) {
+          CHECK(tiles[i].second == Approx(t.width));
+          const double joints = (tiles[i].first - (row & 1 ? 0.5 * t.width : 0)) / t.width;
+          CHECK(std::abs(joints - std::round(joints)) < 1e-6);
+        }
+      }
+    }
+  }
+  CHECK(ridgeTiles >= 4 * 5);  // four hips of 2.6 m and the 3 m ridge
+  CHECK(fclContacts(tex.cells()) == 0);
 }
