@@ -52,6 +52,34 @@ assert bricks > 3000, count
 assert tiles > 1000, count
 P
 
+# Cells are shapes rules refine: brick_building's bricks come in three shades drawn at
+# random (0.5 / 0.3 / 0.2) and stand out by up to `roughness` (0.1) of their depth more.
+for r in 0.1 0; do
+  "$fgsg" run examples/brick_building.fgsg --set roughness=$r -q -o "$tmp/bb.obj" --instances "$tmp/bb$r.json" ||
+    fail "brick_building roughness=$r: exit $?"
+done
+python3 - "$tmp/bb0.1.json" "$tmp/bb0.json" <<'P' || fail "brick_building: bricks not refined as the rules say"
+import json, math, sys
+def bricks(path):
+    out = {}
+    for inst in json.load(open(path))["instances"]:
+        if inst["symbol"] in ("Crimson", "Ember", "Handmade"):
+            t = inst["transform"]
+            out.setdefault(inst["symbol"], []).append(math.sqrt(sum(v * v for v in t[8:11])))  # depth: Z's length
+    return out
+rough, smooth = bricks(sys.argv[1]), bricks(sys.argv[2])
+n = sum(len(v) for v in rough.values())
+assert n > 4000, n
+for name, share in (("Crimson", 0.5), ("Ember", 0.3), ("Handmade", 0.2)):
+    assert abs(len(rough[name]) / n - share) < 0.03, (name, len(rough[name]), n)
+flat = [d for v in smooth.values() for d in v]
+base = max(flat)
+assert min(flat) > base - 1e-6, (min(flat), base)  # without roughness every brick is as deep
+depths = [d for v in rough.values() for d in v]
+assert all(d <= 1.1 * base + 1e-9 for d in depths), max(depths) / base
+assert max(depths) > 1.09 * base and sum(d > 1.05 * base for d in depths) > 0.4 * n, "no roughness"
+P
+
 # grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints
 # PATTERN (lib.sh's expect) and writes no output.
 grammar_fails() {
