@@ -40,9 +40,10 @@
 #   ("cap"). Features: 10 faces, 24 edges (8 vertical), 16 corners.
 #
 # stone_wall.obj  A free-standing wall on [0,5] x [0,0.6] x [0,2.4] (5.0 long, 0.6 thick,
-#   2.4 high) with a window 0.9 x 0.9 through it, x in [2.05, 2.95], z in [0.9, 1.8]:
-#   the four reveals run through the whole thickness ("window"), the rest is "wall".
-#   The surface has genus 1. Features: 9 faces, 24 edges, 16 corners.
+#   2.4 high) with a window 0.9 x 0.9 through it, x in [2.05, 2.95], z in [0.9, 1.8],
+#   and an arched doorway, x in [3.5, 4.4], springing at z = 1.2: the four reveals of
+#   the window ("window"), the door's jambs ("door") and intrados ("arch") run through the
+#   whole thickness, the rest is "wall".
 import math
 import os
 import sys
@@ -321,14 +322,16 @@ def stepped_column():
 
 
 def stone_wall():
-    m = Mesh(header_for('stone_wall', 'a free-standing wall with a window through it'))
+    m = Mesh(header_for('stone_wall', 'a free-standing wall with a window and an arched doorway through it'))
     L, T, H = 5.0, 0.6, 32 * COURSE        # 2.4 high
     win = dict(u0=2.05, u1=2.95, z0=12 * COURSE, z1=24 * COURSE, group='window')
-    U = [0.0, win['u0'], win['u1'], L]
-    Z = [0.0, win['z0'], win['z1'], H]
+    door = dict(u0=3.5, u1=4.4, z0=0.0, z1=16 * COURSE, group='door', arch=True)
+    spring = door['z1']
+    U = [0.0, win['u0'], win['u1'], door['u0'], door['u1'], L]
+    Z = [0.0, win['z0'], spring, win['z1'], H]
     # The front wall's reveals run through to the back wall's hole.
-    wall(m, Frame((0, 0, 0), (1, 0, 0), (0, 0, 1), (0, -1, 0)), U, Z, [win], T, back=False)
-    wall(m, Frame((0, T, 0), (1, 0, 0), (0, 0, 1), (0, 1, 0)), U, Z, [win], T, reveals=False)
+    wall(m, Frame((0, 0, 0), (1, 0, 0), (0, 0, 1), (0, -1, 0)), U, Z, [win, door], T, back=False)
+    wall(m, Frame((0, T, 0), (1, 0, 0), (0, 0, 1), (0, 1, 0)), U, Z, [win, door], T, reveals=False)
     for x, n in ((0.0, (-1, 0, 0)), (L, (1, 0, 0))):
         m.zipper('wall', [(x, 0, r6(z)) for z in Z], [(x, T, r6(z)) for z in Z], n)
     m.zipper('wall', [(u, 0, H) for u in U], [(u, T, H) for u in U], (0, 0, 1))

@@ -321,25 +321,38 @@ TEST_CASE("example base mesh: stepped_column.obj", "[cells][obj][assets]") {
 
 TEST_CASE("example base mesh: stone_wall.obj", "[cells][obj][assets]") {
   const LabelledMesh lm = readAsset("stone_wall.obj");
-  CHECK(lm.groups == Labels{"wall", "window"});
+  CHECK(lm.groups == Labels{"wall", "window", "door", "arch"});
   const FeatureMesh fm = buildLabelledFeatureMesh(lm);
-  // Faces: front, back, 2 ends, top and the window's 4 reveals through the wall.
-  REQUIRE(fm.faces.size() == 9);
-  // Edges: 4 on the ground, 4 vertical at the ends, 4 round the top; the window's rims
-  // on both sides (4 + 4, convex) and 4 concave between its reveals.
-  CHECK(fm.edges.size() == 24);
-  CHECK(countFold(fm, EdgeFold::Concave) == 4);
-  CHECK(fm.corners.size() == 16);
+  // Faces: front, back, 2 ends, top, the window's 4 reveals and the doorway's 2 jambs
+  // through the wall, and its arch's intrados (cylindrical).
+  REQUIRE(fm.faces.size() == 12);
+  // Edges: 8 on the ground (the doorway cuts front and back, and its jambs stand on
+  // it), 4 vertical at the ends, 4 round the top; the window's rims on both sides (4 + 4,
+  // convex) and 4 concave between its reveals; the doorway's jambs (2 + 2) and arch (an
+  // arc each side), and 2 concave where the jambs meet the intrados.
+  CHECK(fm.edges.size() == 36);
+  CHECK(countFold(fm, EdgeFold::Concave) == 6);
+  CHECK(fm.corners.size() == 24);
   CHECK(countLabelled(fm.faces, "window") == 4);
   CHECK(countLabelled(fm.edges, "window") == 12);
   CHECK(countLabelled(fm.corners, "window") == 8);
-  int pierced = 0;
+  CHECK(countLabelled(fm.faces, "door") == 2);
+  CHECK(countLabelled(fm.faces, "arch") == 1);
+  int pierced = 0, arcs = 0;
   for (const auto& f : fm.faces) {
-    CHECK(f.planar());
     if (has(f.labels, "window")) CHECK(f.area == Approx(0.9 * 0.6));
-    pierced += f.loops == 2;  // front and back
+    if (has(f.labels, "door")) CHECK(f.area == Approx(1.2 * 0.6));
+    CHECK(f.kind == (has(f.labels, "arch") ? FaceKind::Cylindrical : FaceKind::Planar));
+    pierced += f.loops == 2;  // front and back, round the window
   }
+  for (const auto& e : fm.edges)
+    if (e.shape == EdgeShape::Arc) {
+      ++arcs;
+      CHECK(e.radius == Approx(0.45).epsilon(1e-3));
+    }
   CHECK(pierced == 2);
-  // Genus 1 with one boundary loop: V - E + F - (extra loops) = 2 - 2g - 1 = -1.
-  CHECK(int(fm.corners.size()) - int(fm.edges.size()) + int(fm.faces.size()) - 2 == -1);
+  CHECK(arcs == 2);
+  // Genus 1 (the window) with two boundary loops (the footprint either side of the
+  // doorway): V - E + F - (extra loops) = 2 - 2g - 2 = -2.
+  CHECK(int(fm.corners.size()) - int(fm.edges.size()) + int(fm.faces.size()) - 2 == -2);
 }
