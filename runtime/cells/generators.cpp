@@ -4,6 +4,7 @@
 #include "runtime/cells/feature_param.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -245,7 +246,8 @@ Cell faceCell(const FeatureFace& face, double u, double len, double v0, double v
 // that repeat after it.
 struct CoursePattern {
   double closer = 0;
-  std::vector<double> cycle;
+  std::array<double, 2> cycle{};  // one or two lengths (a Flemish course: stretcher, header)
+  size_t cycleLength = 1;
 };
 // In a bond (generators.h Bond); the closer is for a run that starts at a free end.
 CoursePattern coursePattern(const BrickSize& b, bool odd) {
@@ -254,7 +256,7 @@ CoursePattern coursePattern(const BrickSize& b, bool odd) {
     case Bond::Running: return {odd ? 0.5 * l : 0, {l}};
     case Bond::English: return odd ? CoursePattern{0.5 * w, {w}} : CoursePattern{0, {l}};
     case Bond::Flemish:
-      return odd ? CoursePattern{std::max(0.0, 0.5 * (l - w)), {w, l}} : CoursePattern{0, {l, w}};
+      return odd ? CoursePattern{std::max(0.0, 0.5 * (l - w)), {w, l}, 2} : CoursePattern{0, {l, w}, 2};
     case Bond::Header: return {odd ? 0.5 * w : 0, {w}};
   }
   return {0, {l}};
@@ -278,8 +280,8 @@ int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v
     } else if (last) {
       len = rest;
     } else {
-      const double want = course.cycle[next % course.cycle.size()];
-      const double after = course.cycle[++next % course.cycle.size()];
+      const double want = course.cycle[next % course.cycleLength];
+      const double after = course.cycle[++next % course.cycleLength];
       // Less than half the following brick would be left after this one: share.
       const double share = after == want ? 1.5 * want : want + 0.5 * after;
       if (rest <= want) len = rest;
