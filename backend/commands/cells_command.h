@@ -8,9 +8,9 @@
 // occupancy maps. Inside, `Feature.edge`, `Feature.label("window")` ...
 // (feature()) let rules pick a pattern per feature, the way the paper's pattern trees do,
 // and BrickBond (English-, Flemish-, HeaderBond) / HeaderRow / ArchBricks / RandomStones
-// / Shingles place cells on the current feature: each cell a shape of the generator's body symbol
-// (its scope the cell, shrunk by the mortar joint), or a box when there is no body. A mortar surface (the base mesh
-// grown by `mortar`) fills the joints.
+// / Shingles place cells on the current feature: each cell a shape of the generator's
+// body symbol (its scope the cell, shrunk by the mortar joint), or a box when there is
+// no body. A mortar surface (the base mesh grown by `mortar`) fills the joints.
 #pragma once
 
 #include "backend/commands/command_family.h"

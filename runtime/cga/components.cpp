@@ -203,9 +203,6 @@ Part edgePart(const WorldEdge& e, const Scope& solid, double tol) {
 
 }  // namespace
 
-// `out` is replaced by the selected components, in the order of the solid's faces (a box:
-// front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
-// is a solid with one face: its own; its edges are its boundary.
 std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
   std::vector<std::vector<Vec3>> out;
   if (geom.kind == GeomKind::Edge) return out;
@@ -228,6 +225,9 @@ std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef
   return out;
 }
 
+// `out` is replaced by the selected components, in the order of the solid's faces (a box:
+// front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
+// is a solid with one face: its own; its edges are its boundary.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error) {
   out.clear();

@@ -287,6 +287,55 @@ TEST_CASE("cga: Comp of a polygon: itself and its boundary", "[cga]") {
   CHECK_FALSE(components(s, GeomRef{GeomKind::Edge, 0, 0}, "edges", arena, parts, err));
 }
 
+TEST_CASE("cga: a shape's own surface: flat shapes one face, solids without their bottom", "[cga]") {
+  GeometryArena arena;
+  // Newell's normal of each polygon: its area and outward direction.
+  auto normals = [](const std::vector<std::vector<Vec3>>& polys) {
+    std::vector<Vec3> out;
+    for (const auto& p : polys) out.push_back(0.5 * newellNormal(p));
+    return out;
+  };
+  SECTION("a solid box: five faces, outward, no bottom") {
+    Scope s = box(2, 3, 4);
+    s.P = Vec3(1, 1, 1);
+    const auto n = normals(surfacePolygons(s, GeomRef{}, arena));
+    REQUIRE(n.size() == 5);
+    Vec3 sum = Vec3::Zero();
+    double area = 0;
+    for (const Vec3& v : n) {
+      CHECK(v.y() > -kTol);  // nothing looks down
+      sum += v, area += v.norm();
+    }
+    CHECK(area == Approx(2 * (2 * 3 + 3 * 4) + 2 * 4));
+    CHECK(near(sum, Vec3(0, 2 * 4, 0)));  // the top's area: the open bottom's, upward
+  }
+  SECTION("a flat box looks along the axis it has no size in") {
+    const auto facade = normals(surfacePolygons(box(2, 3, 0), GeomRef{}, arena));
+    REQUIRE(facade.size() == 1);
+    CHECK(near(facade[0], Vec3(0, 0, 6)));
+    const auto footprint = normals(surfacePolygons(box(2, 0, 3), GeomRef{}, arena));
+    REQUIRE(footprint.size() == 1);
+    CHECK(near(footprint[0], Vec3(0, 6, 0)));
+    CHECK(surfacePolygons(box(2, 0, 0), GeomRef{}, arena).empty());
+  }
+  SECTION("a polygon is its face along the scope's Z, whichever way it was written") {
+    const GeomRef cw = arena.addPolygon({{0, 0, 0}, {0.5, 1, 0}, {1, 0, 0}});
+    const auto n = normals(surfacePolygons(box(6, 4, 0), cw, arena));
+    REQUIRE(n.size() == 1);
+    CHECK(near(n[0], Vec3(0, 0, 12)));
+    CHECK(surfacePolygons(box(1, 1, 0), GeomRef{GeomKind::Edge, 0, 0}, arena).empty());
+  }
+  SECTION("a hipped roof: its four slopes") {
+    Scope s = box(20, 10, 12);
+    Part r;
+    std::string err;
+    REQUIRE(roof(s, GeomRef{}, "hipped", 30, arena, r, err));
+    const auto n = normals(surfacePolygons(r.scope, r.geom, arena));
+    REQUIRE(n.size() == 4);
+    for (const Vec3& v : n) CHECK(v.y() > 0);
+  }
+}
+
 TEST_CASE("cga: hipped roof on 20 x 12 at 30 degrees", "[cga]") {
   GeometryArena arena;
   std::vector<Part> parts;
