@@ -5,12 +5,14 @@
 // 109-label boxes and the bundled examples, peak memory (VmHWM, process-wide so it only
 // grows) and the solver's own bytes (catalog_bytes: catalog + base domains + site graph +
 // transition rows). Times are the best of `reps` runs (the machine may be shared).
-// Usage: bench_synthesis [--quick | --small]
+// Usage: bench_synthesis [--quick | --small | --orientations [SEEDS]]
 #include "runtime/synthesis/checker.h"
 #include "runtime/synthesis/synthesis.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -114,9 +116,82 @@ void successRate(const char* file, const Example& ex, GridSize size, int seeds, 
   std::fflush(stdout);
 }
 
+// The example with its axes permuted: new axis i is old axis perm[i] (grid, adjacency
+// rules, borders). Symmetry maps are dropped (no case here uses them).
+Example permuted(const Example& ex, std::array<int, 3> perm) {
+  Example out = ex;
+  std::array<int, 3> inv{};
+  for (int i = 0; i < 3; ++i) inv[size_t(perm[size_t(i)])] = i;
+  for (int i = 0; i < 3; ++i) out.allowed[size_t(i)] = ex.allowed[size_t(perm[size_t(i)])];
+  for (int f = 0; f < 6; ++f) {
+    const int to = 2 * inv[size_t(f / 2)] + f % 2;
+    out.border.outside[size_t(to)] = ex.border.outside[size_t(f)];
+    out.border.fixed[size_t(to)] = ex.border.fixed[size_t(f)];
+    out.border.only[size_t(to)] = ex.border.only[size_t(f)];
+  }
+  out.mirrorX.clear(), out.mirrorY.clear(), out.rot90.clear();
+  if (ex.grid) {
+    const GridSize n = ex.grid->size();
+    const int ext[3] = {n.nx, n.ny, n.nz};
+    LabelGrid g(GridSize{ext[perm[0]], ext[perm[1]], ext[perm[2]]}, 0);
+    for (int z = 0; z < n.nz; ++z)
+      for (int y = 0; y < n.ny; ++y)
+        for (int x = 0; x < n.nx; ++x) {
+          const int c[3] = {x, y, z};
+          g.at(c[perm[0]], c[perm[1]], c[perm[2]]) = ex.grid->at(x, y, z);
+        }
+    out.grid = g;
+  }
+  return out;
+}
+
+// First-attempt success over seeds in each of the six axis orders: the default order
+// must not depend on which axis is up (#18).
+void orientations(const char* file, const Example& ex, GridSize size, int seeds, CellOrder order) {
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  const int ext[3] = {size.nx, size.ny, size.nz};
+  for (const auto& p : perms) {
+    const Example e = permuted(ex, {p[0], p[1], p[2]});
+    int ok = 0;
+    double secs = 0;
+    for (int s = 1; s <= seeds; ++s) {
+      SynthesisOptions o;
+      o.size = {ext[p[0]], ext[p[1]], ext[p[2]]};
+      o.seed = uint64_t(s);
+      o.order = order;
+      const SynthesisResult r = synthesize(e, o);
+      ok += r.ok && r.consistent;
+      secs += r.stats.seconds;
+    }
+    std::printf(
+        "{\"bench\":\"synthesis\",\"case\":\"orientation\",\"example\":\"%s\",\"axes\":\"%c%c%c\","
+        "\"size\":[%d,%d,%d],\"order\":\"%s\",\"seeds\":%d,\"first_attempt\":%.2f,\"mean_ms\":%.3f}\n",
+        file, "xyz"[p[0]], "xyz"[p[1]], "xyz"[p[2]], ext[p[0]], ext[p[1]], ext[p[2]],
+        order == CellOrder::kScanline ? "scanline" : "entropy", seeds, double(ok) / seeds, secs / seeds * 1e3);
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "--orientations") == 0) {
+    const int seeds = argc > 2 ? std::atoi(argv[2]) : 100;
+    orientations("boxes", boxesExample(), {40, 40, 10}, seeds, CellOrder::kScanline);
+    struct { const char* file; GridSize size; } cases[] = {
+        {"castle.txt", {40, 40, 6}}, {"city.txt", {40, 40, 5}}, {"landscape.txt", {40, 40, 6}}};
+    for (const auto& c : cases) {
+      Example ex;
+      Diagnostics d;
+      if (!loadExample(std::string(FGSG_SOURCE_DIR) + "/examples/synthesis/" + c.file, ex, d)) {
+        std::fprintf(stderr, "%s", formatDiagnostics(d).c_str());
+        return 1;
+      }
+      orientations(c.file, ex, c.size, seeds, CellOrder::kScanline);
+      orientations(c.file, ex, c.size, seeds, CellOrder::kMinEntropy);
+    }
+    return 0;
+  }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const bool only40 = argc > 1 && std::strcmp(argv[1], "--small") == 0;
   const Example boxes = boxesExample();
