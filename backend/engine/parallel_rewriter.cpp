@@ -72,6 +72,7 @@ void Derivation::copyModule(const StringModule& mod, const std::vector<double>& 
 void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key,
                                std::vector<StringModule>& out, std::vector<double>& outArgs, uint32_t owner) {
   StringTarget target{&out, &outArgs, key, owner};
+  if (owner != UINT32_MAX) target.ownerParams = f.params, target.ownerParamCount = m_.symbols[owner].slotCount;
   if (program_) {
     NativeCall call;
     call.engine = this;
@@ -133,9 +134,10 @@ void Derivation::appendModule(const ir::Op& op, const double* args, uint32_t n, 
   StringModule mod;
   mod.op = &op;
   mod.owner = t.owner;
+  if (op.kind == ir::OpKind::Instance) args = t.ownerParams, n = t.ownerParamCount;  // I() has no arguments of its own
   mod.firstArg = static_cast<uint32_t>(t.args->size());
   mod.argCount = n;
-  t.args->insert(t.args->end(), args, args + n);
+  if (n) t.args->insert(t.args->end(), args, args + n);
   if (op.kind == ir::OpKind::Emit) {
     mod.index = t.child;
     mod.key = rt::childKey(t.key, t.child++);
@@ -291,8 +293,8 @@ void Derivation::interpretString(const std::vector<StringModule>& str, const std
         turtle_.command(st, static_cast<ir::TurtleOp>(op.index), a, mod.argCount, op.loc);
         break;
       case ir::OpKind::Instance:
-        placeInstance(op.index, st.scope, mod.owner == UINT32_MAX ? axiomSymbol_ : mod.owner,
-                      nullptr, 0, op.loc);
+        placeInstance(op.index, st.scope, mod.owner == UINT32_MAX ? axiomSymbol_ : mod.owner, a, mod.argCount,
+                      op.loc);
         break;
       default: scope_.command(st, op, a); break;
     }

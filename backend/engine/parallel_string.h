@@ -26,6 +26,10 @@ struct StringTarget {
   uint64_t key;     // the rewritten module's key (its children's keys derive from it)
   uint32_t owner;   // the symbol rewritten (UINT32_MAX: the axiom)
   uint32_t child = 0;
+  // The rewritten module's parameter slots: an instance its successor places records
+  // them (Shape.params in --instances), as a sequential derivation's do.
+  const double* ownerParams = nullptr;
+  uint32_t ownerParamCount = 0;
 };
 
 }  // namespace fgsg::backend

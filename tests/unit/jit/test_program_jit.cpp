@@ -151,6 +151,25 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
       A -> A [ +(20) F(1) ];
     )");
   }
+  SECTION("an L-system's instances record the parameters of the module that placed them") {
+    const auto r = bothEngines(R"(
+      derive parallel 3;
+      axiom: A(1, 10) I("cube");
+      A(x, y) -> I("cube") T(1, 0, 0) A(x + 1, y * 2);
+    )");
+    REQUIRE(r.instances.instances.size() == 4);
+    // In the final string's order: A(1, 10)'s cube, A(2, 20)'s, A(3, 40)'s, the axiom's.
+    const std::vector<double> expected{1, 10, 2, 20, 3, 40};
+    std::vector<double> got;
+    uint32_t axiomParams = 99;
+    for (const auto& inst : r.instances.instances) {
+      if (r.instances.symbols[inst.symbol] == "axiom") axiomParams = inst.paramCount;
+      else got.insert(got.end(), r.instances.params.begin() + inst.firstParam,
+                      r.instances.params.begin() + inst.firstParam + inst.paramCount);
+    }
+    CHECK(got == expected);
+    CHECK(axiomParams == 0);
+  }
   SECTION("the shape limit: direct derivation gives way to the engine's order") {
     rt::DeriveOptions o;
     o.maxShapes = 500;
