@@ -114,6 +114,9 @@ struct SemaResult {
   std::string mode = "breadthfirst";
   int steps = 0;
   int depthBound = -1;  // `derive breadthfirst N;`: shapes at depth >= N stay terminal; -1: none
+  // `derive parallel n;` with an attr n: the attr that gives N when the grammar runs
+  // (--set n=9); steps / depthBound hold its default. Empty: N is a constant.
+  std::string countAttr;
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
   // `collision ...;` (the first declaration): every I() tested (all), and the metric
   // "mesh", "centre" or "geodesic" with its radius (0 for mesh).

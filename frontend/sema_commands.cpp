@@ -2,6 +2,7 @@
 // type of each argument, the constant strings some take (axes, selectors, roof kinds,
 // assets), and its { } body against the command's BodyRule (frontend/builtins.h).
 
+#include "frontend/color_literal.h"
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
@@ -91,6 +92,23 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (stringOk && axisMask(axes) <= 0)
         diags_.error("E028", item.args[0]->range,
                      "Center axes must be letters X, Y, Z each at most once, as in \"xz\", not \"" + axes + "\"");
+      break;
+    }
+    case CommandId::Color: {
+      if (n == 3) {
+        numArgs(0, false);
+        break;
+      }
+      if (n != 1) {
+        diags_.error("E016", item.range, "'Color' takes three numbers r, g, b from 0 to 1, or one \"#rrggbb\": " +
+                                             std::string(cmd.signature));
+        break;
+      }
+      const std::string text = stringArg(0, "colour");
+      std::array<double, 3> rgb;
+      if (stringOk && !parseHexColor(text, rgb))
+        diags_.error("E042", item.args[0]->range,
+                     "a colour is written \"#rrggbb\" (six hex digits, as \"#8c3b2e\"), not \"" + text + "\"");
       break;
     }
     case CommandId::Comp: {

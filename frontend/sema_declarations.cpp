@@ -73,7 +73,13 @@ void Analyzer::collectEnvironment() {
       continue;
     }
     ConstValue count;
-    if (d.steps && !evalConst(*d.steps, count)) {
+    // An attr as N: its default now, a --set value when the grammar runs.
+    const AttrInfo* attr = nullptr;
+    if (d.steps && d.steps->kind == ExprKind::Ident && !d.steps->hasCall)
+      for (const auto& a : res_.attrs)
+        if (a.name == d.steps->text) attr = &a;
+    if (attr) count = attr->value;
+    else if (d.steps && !evalConst(*d.steps, count)) {
       if (const Expr* zero = zeroDivisor(*d.steps)) {
         diags_.error("E027", zero->range, "division by zero");
         continue;
@@ -81,19 +87,20 @@ void Analyzer::collectEnvironment() {
     }
     // The count is an int in the IR: larger values are refused, not wrapped.
     if ((parallel || d.steps) &&
-        (!d.steps || !evalConst(*d.steps, count) || count.type != ValueType::Num || !(count.num >= 0) ||
+        (!d.steps || (!attr && !evalConst(*d.steps, count)) || count.type != ValueType::Num || !(count.num >= 0) ||
          count.num > kMaxDeriveCount || count.num != std::floor(count.num))) {
       diags_.error("E029", d.steps ? d.steps->range : d.range,
-                   (parallel ? "`derive parallel N;` needs a constant whole number of steps N from 0 to "
-                             : "`derive " + d.mode + " N;` bounds the depth: N must be a constant whole number from 0 to ") +
-                       std::to_string(kMaxDeriveCount) +
-                       (d.steps && evalConst(*d.steps, count) && count.type == ValueType::Num
-                            ? ", got " + wholeNumberText(count.num)
+                   (parallel ? "`derive parallel N;` needs a whole number of steps N from 0 to "
+                             : "`derive " + d.mode + " N;` bounds the depth: N must be a whole number from 0 to ") +
+                       std::to_string(kMaxDeriveCount) + " (a constant or an attr)" +
+                       (d.steps && (attr || evalConst(*d.steps, count)) && count.type == ValueType::Num
+                            ? ", got " + wholeNumberText(count.num) + (attr ? " (the default of attr '" + attr->name + "')" : "")
                             : std::string()));
       continue;
     }
     if (parallel) res_.steps = static_cast<int>(count.num);
     res_.depthBound = !parallel && d.steps ? static_cast<int>(count.num) : -1;
+    res_.countAttr = attr ? attr->name : std::string();
     res_.mode = d.mode;
   }
   for (const auto& t : prog_.turtles) {

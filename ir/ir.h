@@ -103,6 +103,7 @@ enum class OpKind : uint8_t {
   LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
   Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
   Center,        // index = axes mask (1 X, 2 Y, 4 Z): centre the scope in the successor's first scope
+  Color,         // args r, g, b: the colour of the instances placed from this scope on (clamped to 0..1)
   Marching,      // args length, angle; bodies: Top, Extruded, then the condition block (Buron et al. §5)
   MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
   Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
@@ -285,6 +286,10 @@ struct Module {
   // `derive breadthfirst N;` / `derive depthfirst N;`: the grammar's own depth bound,
   // shapes at depth >= N stay terminal (as --max-depth N, without its warning); -1: none.
   int depthBound = -1;
+  // `derive parallel n;` (or a depth bound) given by an attr: its index; the count is
+  // that attr's value when the grammar runs (--set n=9), steps / depthBound its default.
+  // -1: the count is a constant.
+  int countAttr = -1;
   TurtleSettings turtle;
   CollisionSettings collision;
   SurfaceSpec surface;

@@ -1,3 +1,4 @@
+#include "frontend/color_literal.h"
 #include "ir/lower.h"
 
 #include "frontend/builtins.h"
@@ -51,6 +52,7 @@ class Lowerer {
                                            : DeriveMode::BreadthFirst;
     m_.steps = sema_.steps;
     m_.depthBound = sema_.depthBound;
+    m_.countAttr = sema_.countAttr.empty() ? -1 : m_.findAttr(sema_.countAttr);
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth};
     lowerCollision();
     return std::move(m_);
@@ -293,6 +295,20 @@ class Lowerer {
         allArgs(1);
         break;
       case CommandId::Lock: op.kind = OpKind::Lock; break;
+      case CommandId::Color:
+        op.kind = OpKind::Color;
+        if (item.args.size() == 1) {  // "#rrggbb": three constant numbers
+          std::array<double, 3> rgb{};
+          frontend::parseHexColor(constString(*item.args[0]), rgb);
+          for (double c : rgb) {
+            Expr e = Expr::number(c);
+            e.loc = op.loc;
+            op.args.push_back(std::move(e));
+          }
+        } else {
+          allArgs(0);
+        }
+        break;
       case CommandId::Center:
         op.kind = OpKind::Center;
         for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));

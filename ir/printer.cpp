@@ -78,6 +78,7 @@ class Printer {
     }
     if (m_.mode == DeriveMode::Parallel || m_.steps != 0) derive += " " + std::to_string(m_.steps);
     if (m_.mode != DeriveMode::Parallel && m_.depthBound >= 0) derive += " " + std::to_string(m_.depthBound);
+    if (m_.countAttr >= 0 && size_t(m_.countAttr) < m_.attrs.size()) derive += " (attr " + m_.attrs[size_t(m_.countAttr)].name + ")";
     line(0, derive);
     const TurtleSettings defaults;
     if (m_.turtle.angle != defaults.angle || m_.turtle.step != defaults.step ||
@@ -335,6 +336,7 @@ class Printer {
       case OpKind::Subdiv: text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;
+      case OpKind::Color: text = withArgs("color"); break;
       case OpKind::Comp: text = "comp " + stringLit(op.str); break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;

@@ -34,6 +34,7 @@ const char* opName(OpKind k) {
     case OpKind::Synthesize: return "synthesize";
     case OpKind::Evolve: return "evolve";
     case OpKind::Center: return "center";
+    case OpKind::Color: return "color";
     case OpKind::Marching: return "marching";
     case OpKind::MarchCondition: return "march-condition";
     case OpKind::Branch: return "branch";
@@ -53,6 +54,8 @@ class Verifier {
   bool run() {
     const size_t before = problems_.size();
     if (m_.steps < 0) problem("negative derivation steps " + std::to_string(m_.steps));
+    if (m_.countAttr >= 0 && (size_t(m_.countAttr) >= m_.attrs.size() || m_.attrs[size_t(m_.countAttr)].type != Type::Num))
+      problem("derivation count attr " + std::to_string(m_.countAttr) + " is not a number attr");
     collision();
     surface();
     fields();
@@ -454,6 +457,10 @@ class Verifier {
         numArgs(op, r, 0);
         break;
       case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Color:
+        expectBodies(op, 0);
+        numArgs(op, r, 3);
+        break;
       case OpKind::Center:
         if (op.index == 0 || op.index > 7) problem("axes mask " + std::to_string(op.index));
         numArgs(op, r, 0);

@@ -3,6 +3,8 @@
 // lies at P + axes * (S .* (u, v, w)) in world space.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -30,6 +32,10 @@ struct Scope {
   Vec3 bary = Vec3::Zero();
   double lift = 0.0;
   int32_t marchSegment = -1;
+  // Color(r, g, b): the colour of the instances placed from this scope on, inherited by
+  // the shapes it creates; `colored` false: each instance takes its symbol's colour.
+  bool colored = false;
+  std::array<float, 3> color{0.8f, 0.8f, 0.8f};
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

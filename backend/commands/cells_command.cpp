@@ -172,6 +172,7 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
     const std::string name = "<mortar " + std::to_string(++mortars_) + ">";
     rt::Scope box;
     const uint32_t asset = d_.addGeneratedAsset(name, mesh, &box);
+    box.colored = st.scope.colored, box.color = st.scope.color;  // Color(...) before Cells tints the mortar
     d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
   }
 }

@@ -1,10 +1,14 @@
 #include "backend/commands/scope_commands.h"
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 namespace fgsg::backend {
 
 std::vector<ir::OpKind> ScopeCommands::kinds() const {
   using K = ir::OpKind;
-  return {K::Translate, K::Rotate, K::RotateNormal, K::Scale, K::Push, K::Pop, K::Center};
+  return {K::Translate, K::Rotate, K::RotateNormal, K::Scale, K::Push, K::Pop, K::Center, K::Color};
 }
 
 void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
@@ -40,6 +44,15 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
       stack_.pop_back();
       break;
     case ir::OpKind::Center: center(st, op); break;
+    case ir::OpKind::Color:
+      for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(a[k]))
+          throw DeriveError{op.loc, "R027", "Color: the colour's " + std::string(1, "rgb"[k]) +
+                                                " is not a number (a parameter became NaN or infinite)"};
+        st.scope.color[size_t(k)] = float(std::clamp(a[k], 0.0, 1.0));  // CGA clamps too
+      }
+      st.scope.colored = true;
+      break;
     default: break;
   }
 }

@@ -23,9 +23,16 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
       scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;
-  if (m_.mode != ir::DeriveMode::Parallel && m_.depthBound >= 0 &&
-      static_cast<uint32_t>(m_.depthBound) <= maxDepth_) {
-    maxDepth_ = static_cast<uint32_t>(m_.depthBound);
+  // `derive parallel n;` with an attr n: the count is its value in this run (--set
+  // checked it: attributeOverrideProblem).
+  int depthBound = m_.depthBound;
+  steps_ = m_.steps;
+  if (m_.countAttr >= 0) {
+    const double count = eval_.attrData()[3 * size_t(m_.countAttr)];
+    if (count >= 0 && count <= 2147483647.0) (m_.mode == ir::DeriveMode::Parallel ? steps_ : depthBound) = int(count);
+  }
+  if (m_.mode != ir::DeriveMode::Parallel && depthBound >= 0 && static_cast<uint32_t>(depthBound) <= maxDepth_) {
+    maxDepth_ = static_cast<uint32_t>(depthBound);
     depthBoundIsGrammars_ = true;
   }
   CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_, &marching_, &evolve_, &cells_};

@@ -280,6 +280,7 @@ class Derivation final : public QueryHost {
   // (`derive breadthfirst N;`), the smaller; the grammar's is reached without a warning.
   uint32_t maxDepth_ = 0;
   bool depthBoundIsGrammars_ = false;
+  int steps_ = 0;  // parallel steps: the grammar's N, or its attr's value (ir::Module::countAttr)
   bool depthLimitHit_ = false;
   rt::DeriveMessage depthWarning_;
   std::vector<std::array<float, 3>> symbolColor_;

@@ -246,6 +246,8 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
                          const State& outer, Exec& ex, Frame& f) {
   State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope};
+  // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour.
+  inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);
   stack_.resize(inner.stackBase);
   f.scope = &outer.scope;

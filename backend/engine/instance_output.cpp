@@ -93,7 +93,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                           ", beyond what mesh files store (32-bit floats, up to 3.4e+38): a scale, "
                           "extrusion or translation grew too large"};
   }
-  inst.color = symbolColor_[symbol];
+  inst.color = scope.colored ? scope.color : symbolColor_[symbol];
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;

@@ -25,7 +25,7 @@ void Derivation::runParallel() {
   appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str, args);
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
-  for (int step = 0; step < m_.steps && !limitHit; ++step) {
+  for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
     nextArgs.clear();
     for (size_t i = 0; i < str.size(); ++i) {
@@ -108,7 +108,8 @@ void Derivation::checkParallelOp(const ir::Op& op) {
     case ir::OpKind::Scale:
     case ir::OpKind::Push:
     case ir::OpKind::Pop:
-    case ir::OpKind::Turtle: return;
+    case ir::OpKind::Turtle:
+    case ir::OpKind::Color: return;
     case ir::OpKind::Instance:
       if (op.mode != ir::InstanceMode::Plain) sequentialOnly(op);
       return;

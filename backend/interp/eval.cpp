@@ -221,6 +221,10 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
   double value[3];
   std::string expected;
   if (!readAttributeValue(m, a, text, value, expected)) return name + "=" + text + ": expected " + expected;
+  if (a == m.countAttr && !(value[0] >= 0 && value[0] <= 2147483647.0 && value[0] == std::floor(value[0])))
+    return name + "=" + text + ": `derive " +
+           (m.mode == ir::DeriveMode::Parallel ? "parallel" : m.mode == ir::DeriveMode::DepthFirst ? "depthfirst" : "breadthfirst") +
+           " " + name + "` needs a whole number from 0 to 2147483647";
   return "";
 }
 

@@ -53,17 +53,21 @@ assert tiles > 1000, count
 P
 
 # Cells are shapes rules refine: brick_building's bricks come in three shades drawn at
-# random (0.5 / 0.3 / 0.2) and stand out by up to `roughness` (0.1) of their depth more.
+# random (0.5 / 0.3 / 0.2, each its Color) and stand out by up to `roughness` (0.1) of
+# their depth more.
 for r in 0.1 0; do
   "$fgsg" run examples/brick_building.fgsg --set roughness=$r -q -o "$tmp/bb.obj" --instances "$tmp/bb$r.json" ||
     fail "brick_building roughness=$r: exit $?"
 done
 python3 - "$tmp/bb0.1.json" "$tmp/bb0.json" <<'P' || fail "brick_building: bricks not refined as the rules say"
 import json, math, sys
+shade = {"Crimson": "8c3b2e", "Ember": "6b2a20", "Handmade": "a8573a"}  # their Color("#...")
 def bricks(path):
     out = {}
     for inst in json.load(open(path))["instances"]:
-        if inst["symbol"] in ("Crimson", "Ember", "Handmade"):
+        if inst["symbol"] in shade:
+            rgb = [int(shade[inst["symbol"]][k:k + 2], 16) / 255 for k in (0, 2, 4)]
+            assert all(abs(a - b) < 1e-6 for a, b in zip(inst["color"], rgb)), (inst["symbol"], inst["color"])
             t = inst["transform"]
             out.setdefault(inst["symbol"], []).append(math.sqrt(sum(v * v for v in t[8:11])))  # depth: Z's length
     return out

@@ -3,7 +3,7 @@
 # E error with the allowed range; a command-line integer out of range is a usage error
 # (exit 2) naming the flag and the range, never wrapped (--max-depth 4294967297 was 1).
 . "$(dirname "$0")/lib.sh"
-expect 1 'inputs_parallel_int_overflow.fgsg:1:17: error\[E029\]: `derive parallel N;` needs a constant whole number of steps N from 0 to 2147483647, got 4294967297' \
+expect 1 'inputs_parallel_int_overflow.fgsg:1:17: error\[E029\]: `derive parallel N;` needs a whole number of steps N from 0 to 2147483647 \(a constant or an attr\), got 4294967297' \
   -- "$fgsg" check "$inputs/inputs_parallel_int_overflow.fgsg"
 grep -q 'E999' "$tmp/err" && fail "derive parallel 4294967297 is an internal error"
 printf 'derive parallel 2147483647;\naxiom: F(1);\nF(l) -> F(l);\n' > "$tmp/max.fgsg"

@@ -4,8 +4,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <cmath>
 #include <set>
 
@@ -346,6 +348,42 @@ TEST_CASE("Cells' base part: a split's pieces are the base mesh and their symbol
   CHECK(bad.messages[0].col == 21);
   CHECK(bad.messages[0].message.find("three or more base pieces meet at the edge from (0, 0, 0) to (1, 0, 0)") !=
         std::string::npos);
+}
+
+TEST_CASE("Color: instances take the scope's colour, inherited by parts, restored at a bracket's end", "[color]") {
+  auto r = deriveText(
+      "Axiom ~> S(2, 2, 2) Color(0.5, 0.25, 1) [ Color(\"#ff8000\") I(\"cube\") ] I(\"sphere\") Top Loud;\n"
+      "Top ~> Comp(\"top\"){ Face };\n"
+      "Face ~> I(\"disc\");\n"
+      "Loud ~> Color(2, -1, 0.5) I(\"ico\");");
+  REQUIRE(r.ok);
+  std::map<std::string, std::array<float, 3>> colour;
+  for (const auto& inst : r.instances.instances) colour[r.instances.assets[inst.asset]] = inst.color;
+  const std::array<float, 3> set{0.5f, 0.25f, 1.0f};
+  CHECK(colour["cube"] == std::array<float, 3>{1.0f, float(128 / 255.0), 0.0f});
+  CHECK(colour["sphere"] == set);  // the bracket's colour ended with it
+  CHECK(colour["disc"] == set);    // through the shape Top and its Comp face
+  CHECK(colour["ico"] == std::array<float, 3>{1.0f, 0.0f, 0.5f});  // clamped to 0..1
+  // Without Color an instance keeps its symbol's colour.
+  auto plain = deriveText("Axiom ~> A;\nA ~> I(\"cube\");");
+  REQUIRE(plain.ok);
+  CHECK(plain.instances.instances[0].color != set);
+  auto nan = deriveText("Axiom ~> A(-1);\nA(x) ~> Color(0, sqrt(x), 0) I(\"cube\");");
+  REQUIRE_FALSE(nan.ok);
+  REQUIRE(nan.messages.size() == 1);
+  CHECK(nan.messages[0].code == "R027");
+  CHECK(nan.messages[0].line == 2);
+  CHECK(nan.messages[0].col == 9);
+  CHECK(nan.messages[0].message.find("colour's g is not a number") != std::string::npos);
+}
+
+TEST_CASE("Color in an L-system colours the turtle's segments, a bracket's end restores it", "[color]") {
+  auto r = deriveText("derive parallel 1;\naxiom: A;\nA -> Color(1, 0, 0) F(1) [ Color(0, 0, 1) F(1) ] F(1);");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 3);
+  CHECK(r.instances.instances[0].color == std::array<float, 3>{1, 0, 0});
+  CHECK(r.instances.instances[1].color == std::array<float, 3>{0, 0, 1});
+  CHECK(r.instances.instances[2].color == std::array<float, 3>{1, 0, 0});
 }
 
 TEST_CASE("Marching on the plane is a located error asking for a surface", "[errors][marching]") {

@@ -328,6 +328,18 @@ TEST_CASE("a constant divided by zero is E027 at the divisor, alone", "[sema][co
   CHECK(has(b, "E023", 1, 11));
 }
 
+TEST_CASE("Color takes three numbers or a hex string", "[sema]") {
+  CHECK(analyse("Axiom ~> Color(1, 0.5, 0) Color(\"#8C3b2e\") I(\"cube\");\n").ok);
+  auto word = analyse("Axiom ~> Color(\"red\") I(\"cube\");\n");
+  REQUIRE(word.diags.size() == 1);
+  CHECK(has(word, "E042", 1, 16));
+  auto two = analyse("Axiom ~> Color(1, 0) I(\"cube\");\n");
+  REQUIRE(two.diags.size() == 1);
+  CHECK(has(two, "E016", 1, 10));
+  auto text = analyse("Axiom ~> Color(1, \"x\", 0) I(\"cube\");\n");
+  CHECK_FALSE(text.ok);
+}
+
 TEST_CASE("derive parallel takes 0 to 2147483647 steps, larger is E029 with the range", "[sema]") {
   CHECK(analyse("derive parallel 2147483647;\naxiom: F(1);\nF(l) -> F(l);\n").sema.steps == 2147483647);
   for (const char* steps : {"2147483648", "4294967297", "1e300", "-1", "2.5"}) {
@@ -343,6 +355,15 @@ TEST_CASE("derive parallel takes 0 to 2147483647 steps, larger is E029 with the 
   auto z = analyse("derive parallel 4 / 0;\naxiom: F(1);\nF(l) -> F(l);\n");
   REQUIRE(z.diags.size() == 1);
   CHECK(has(z, "E027", 1, 21));
+  // An attr as N: its default checked here, its value when the grammar runs.
+  auto attr = analyse("attr n = 7;\nderive parallel n;\naxiom: F(1);\nF(l) -> F(l);\n");
+  CHECK(attr.ok);
+  CHECK(attr.sema.steps == 7);
+  CHECK(attr.sema.countAttr == "n");
+  auto half = analyse("attr n = 2.5;\nderive parallel n;\naxiom: F(1);\nF(l) -> F(l);\n");
+  REQUIRE(half.diags.size() == 1);
+  CHECK(has(half, "E029", 2, 17));
+  CHECK_THAT(half.diags[0].message, Catch::EndsWith(", got 2.5 (the default of attr 'n')"));
   auto t = analyse("turtle angle 90 % (1 - 1);\naxiom: F(1);\nF(l) -> F(l);\n");
   REQUIRE(t.diags.size() == 1);
   CHECK(has(t, "E027", 1, 19));

@@ -50,6 +50,7 @@ void requireSame(const rt::DeriveResult& a, const rt::DeriveResult& b) {
   for (size_t i = 0; i < a.instances.instances.size(); ++i) {
     CHECK(a.instances.instances[i].transform == b.instances.instances[i].transform);
     CHECK(a.instances.instances[i].asset == b.instances.instances[i].asset);
+    CHECK(a.instances.instances[i].color == b.instances.instances[i].color);
   }
   CHECK(a.instances.params == b.instances.params);
 }
@@ -169,6 +170,32 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
     }
     CHECK(got == expected);
     CHECK(axiomParams == 0);
+  }
+  SECTION("colours, random ones too, through splits and brackets") {
+    bothEngines(R"(
+      Axiom ~> S(4, 1, 1) Color(Rand(0, 1), 0.5, 0) Repeat("X", 1){ Tile };
+      Tile ~> [ Color(1, Rand(0, 1), 0) I("cube") ] I("sphere");
+    )");
+  }
+  SECTION("an attr gives the number of parallel steps, --set changes it") {
+    const char* grammar = R"(
+      attr n = 3;
+      derive parallel n;
+      axiom: F(1);
+      F(x) -> F(x) F(x);
+    )";
+    CHECK(bothEngines(grammar).stats.terminals == 8);
+    rt::DeriveOptions o;
+    o.attrOverrides = {{"n", "5"}};
+    CHECK(bothEngines(grammar, o).stats.terminals == 32);
+    o.attrOverrides = {{"n", "0"}};
+    CHECK(bothEngines(grammar, o).stats.terminals == 1);
+    o.attrOverrides = {{"n", "2.5"}};
+    const auto bad = bothEngines(grammar, o);
+    REQUIRE_FALSE(bad.ok);
+    REQUIRE(bad.messages.size() == 1);
+    CHECK(bad.messages[0].code == "R010");
+    CHECK(bad.messages[0].message == "--set n=2.5: `derive parallel n` needs a whole number from 0 to 2147483647");
   }
   SECTION("the shape limit: direct derivation gives way to the engine's order") {
     rt::DeriveOptions o;
