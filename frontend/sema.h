@@ -122,6 +122,7 @@ struct SemaResult {
   // "mesh", "centre" or "geodesic" with its radius (0 for mesh).
   bool collisionDeclared = false;
   bool collisionAll = false;
+  bool collisionOmit = false;  // `collision omit;`: a collision drops the instance only
   std::string collisionMetric = "mesh";
   double collisionRadius = 0.0;
   SourceRange collisionRange;

@@ -1,4 +1,4 @@
-// Semantic analysis of `collision [all] [mesh | centre R | center R | geodesic R];`
+// Semantic analysis of `collision [all] [omit | cull] [mesh | centre R | center R | geodesic R];`
 // (E030..E032): the first declaration sets SemaResult::collision*, later ones are errors.
 
 #include "frontend/sema_analyzer.h"
@@ -40,7 +40,7 @@ void Analyzer::collectCollision() {
 // A radius written after `centre` / `geodesic`: a number or a number const.
 bool Analyzer::collisionRadius(const CollisionWord& w, double& radius) const {
   if (w.isNumber()) return radius = w.number, true;
-  if (w.word == "all" || collisionMetricOf(w.word)) return false;
+  if (w.word == "all" || w.word == "omit" || w.word == "cull" || collisionMetricOf(w.word)) return false;
   auto c = res_.constants.find(w.word);
   if (c == res_.constants.end() || c->second.type != ValueType::Num) return false;
   radius = c->second.num;
@@ -52,11 +52,12 @@ void Analyzer::checkCollisionDecl(const CollisionDecl& d) {
   res_.collisionRange = d.range;
   if (d.words.empty()) {
     diags_.error("E030", d.range,
-                 "`collision` needs a setting: all, mesh, centre R or geodesic R (R a positive "
-                 "radius), e.g. `collision all centre 0.3;`");
+                 "`collision` needs a setting: all, omit, cull, mesh, centre R or geodesic R (R a "
+                 "positive radius), e.g. `collision all centre 0.3;`");
     return;
   }
-  const CollisionWord* metric = nullptr;  // the first metric written
+  const CollisionWord* metric = nullptr;    // the first metric written
+  const CollisionWord* strategy = nullptr;  // omit or cull, the first written
   bool all = false;
   for (size_t k = 0; k < d.words.size(); ++k) {
     const CollisionWord& w = d.words[k];
@@ -76,11 +77,20 @@ void Analyzer::checkCollisionDecl(const CollisionDecl& d) {
       all = true;
       continue;
     }
+    if (w.word == "omit" || w.word == "cull") {
+      if (strategy)
+        diags_.error("E032", w.range,
+                     "two collision strategies, '" + strategy->word + "' and '" + w.word +
+                         "': choose one (cull, the default, or omit)");
+      else
+        strategy = &w, res_.collisionOmit = w.word == "omit";
+      continue;
+    }
     const char* kind = collisionMetricOf(w.word);
     if (!kind) {
       diags_.error("E030", w.range,
                    "unknown collision setting '" + w.word +
-                       "' (expected all, mesh, centre R, center R or geodesic R)");
+                       "' (expected all, omit, cull, mesh, centre R, center R or geodesic R)");
       continue;
     }
     if (metric)

@@ -219,6 +219,9 @@ enum class CollisionMetric : uint8_t { Mesh, Centre, Geodesic };
 
 struct CollisionSettings {
   bool all = false;  // `collision all;`: every I() is tested as IC (FGSG's global flag)
+  // `collision omit;`: a collision drops only the colliding instance (a Lock: its set) and
+  // the production goes on; false (`cull`, the default): the rest of the production goes.
+  bool omit = false;
   CollisionMetric metric = CollisionMetric::Mesh;
   double radius = 0.0;  // Centre / Geodesic: the distance below which two collide
   Loc loc;              // the declaration (line 0: none)

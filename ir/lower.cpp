@@ -138,6 +138,7 @@ class Lowerer {
   void lowerCollision() {
     CollisionSettings& c = m_.collision;
     c.all = sema_.collisionAll;
+    c.omit = sema_.collisionOmit;
     c.metric = sema_.collisionMetric == "centre"     ? CollisionMetric::Centre
                : sema_.collisionMetric == "geodesic" ? CollisionMetric::Geodesic
                                                      : CollisionMetric::Mesh;

@@ -85,9 +85,10 @@ class Printer {
         m_.turtle.width != defaults.width)
       line(0, "turtle angle " + printNumber(m_.turtle.angle) + " step " +
                   printNumber(m_.turtle.step) + " width " + printNumber(m_.turtle.width));
-    if (m_.collision.all || m_.collision.metric != CollisionMetric::Mesh) {
+    if (m_.collision.all || m_.collision.omit || m_.collision.metric != CollisionMetric::Mesh) {
       std::string c = "collision";
       if (m_.collision.all) c += " all";
+      if (m_.collision.omit) c += " omit";
       switch (m_.collision.metric) {
         case CollisionMetric::Mesh: break;
         case CollisionMetric::Centre: c += " centre " + printNumber(m_.collision.radius); break;

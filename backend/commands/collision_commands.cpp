@@ -28,7 +28,10 @@ void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, Sta
     case ir::OpKind::Instance: {
       const uint32_t sym = d_.placingSymbol(ex);
       const uint32_t count = ex.symbol == UINT32_MAX ? 0 : d_.module().symbols[sym].slotCount;
-      if (!placeChecked(op, st.scope, sym, ex.params, count, a)) ex.culled = ex.collided = true;
+      // Rejected: the rest of the production goes (cull), or only this instance (omit),
+      // except inside a Lock set, which a collision anywhere removes whole.
+      if (!placeChecked(op, st.scope, sym, ex.params, count, a) && (!d_.module().collision.omit || d_.inLock()))
+        ex.culled = ex.collided = true;
       break;
     }
     case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
@@ -91,6 +94,8 @@ void CollisionCommands::lockedSet(const ir::Op& op, State& st, Exec& ex, Frame& 
     placement_->rollback(undo, lines_);
     d_.occluders().truncate(occluders);
     ++d_.stats().locksRemoved;
+    // collision omit: the set is gone and the production goes on.
+    if (d_.module().collision.omit) ex.culled = ex.collided = false;
   }
 }
 

@@ -104,6 +104,7 @@ class Derivation final : public QueryHost {
   // Inside a Lock every shape is derived where it is written.
   void enterLock() { ++lockDepth_; }
   void leaveLock() { --lockDepth_; }
+  bool inLock() const { return lockDepth_ > 0; }
   // While set, every terminal shape (a symbol without rules) also leaves its surface
   // (rt::cga::surfacePolygons), labelled with its symbol's name, in `into`: how a Cells
   // base part's pieces become a base mesh. Returns the recorder it replaces.

@@ -1,6 +1,6 @@
 // Collision-tested instancing (FGSG §4.4) in the interpreter: IC culls the rest of its
-// production; a collision deeper in a simple placing rule still culls its writer's
-// rest; Lock is all or nothing; IM merges within its thresholds; lines join where they
+// production (or, under `collision omit`, drops only itself); a collision deeper in a
+// simple placing rule still culls its writer's rest; Lock is all or nothing; IM merges within its thresholds; lines join where they
 // meet; and an independent brute-force check finds no two tested instances intersecting.
 #include "brute_force_intersection.h"
 #include "derive_helpers.h"
@@ -91,6 +91,32 @@ X ~> T(40, 0, 0) I("disc")
   REQUIRE(free.ok);
   CHECK(placedBy(free) == "Obstacle P Q X ");
   CHECK(free.stats.locksRemoved == 0);
+}
+
+TEST_CASE("collision omit drops only what collides and lets the production go on", "[collision][omit]") {
+  // FGSG §4.4's other strategy: "A ~> B IC(x) D E": x collides, B, D and E are derived.
+  auto hit = deriveText("collision omit;\nAxiom ~> Obstacle A\nA ~> B IC(\"cube\") D E\n" + kPieces);
+  REQUIRE(hit.ok);
+  CHECK(placedBy(hit) == "Obstacle B D E ");
+  CHECK(hit.stats.collisions == 1);
+  // Deeper in a simple placing rule: F's cube is dropped, C's writer goes on.
+  auto deep = deriveText("collision omit;\nAxiom ~> Obstacle A\nA ~> B C D E\nC ~> F\nF ~> IC(\"cube\")\n" + kPieces);
+  REQUIRE(deep.ok);
+  CHECK(placedBy(deep) == "Obstacle B D E ");
+  // A Lock set still goes whole (P's sphere with Q's cube), and X after it stays.
+  const std::string lock = R"(
+L ~> Lock{ P | Q } X
+P ~> T(5, 0, 0) IC("sphere")
+Q ~> IC("cube")
+X ~> T(40, 0, 0) I("disc")
+)";
+  auto set = deriveText("collision omit;\nAxiom ~> Obstacle L\n" + lock + kPieces);
+  REQUIRE(set.ok);
+  CHECK(placedBy(set) == "Obstacle X ");
+  CHECK(set.stats.locksRemoved == 1);
+  // The declaration's words: one strategy.
+  CHECK_THROWS_WITH(deriveText("collision omit cull;\nAxiom ~> I(\"cube\")\n"),
+                    Catch::Contains("E032") && Catch::Contains("two collision strategies, 'omit' and 'cull'"));
 }
 
 TEST_CASE("IM merges an instance into its twin within the thresholds only", "[collision][merge]") {

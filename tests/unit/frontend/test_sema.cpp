@@ -227,7 +227,7 @@ TEST_CASE("collision declarations: each mistake with its code and column", "[sem
   CHECK_FALSE(unknown.ok);
   CHECK(where(unknown, "E030") == std::vector<std::string>{"1:15"});
   CHECK(messageOf(unknown, "E030") ==
-        "unknown collision setting 'centr' (expected all, mesh, centre R, center R or geodesic R)");
+        "unknown collision setting 'centr' (expected all, omit, cull, mesh, centre R, center R or geodesic R)");
   CHECK(where(unknown, "E031") == std::vector<std::string>{"1:21"});  // its number, left over
   auto empty = analyse(std::string("collision;") + kRules);
   CHECK(where(empty, "E030") == std::vector<std::string>{"1:1"});

@@ -171,6 +171,13 @@ TEST_CASE("compiled grammars derive exactly what the interpreter derives") {
     CHECK(got == expected);
     CHECK(axiomParams == 0);
   }
+  SECTION("collision omit: a rejected instance is dropped and the production goes on") {
+    bothEngines(R"(
+      collision omit centre 0.5;
+      Axiom ~> Row(0);
+      Row(i) : i < 30 ~> IC("cube") T(Rand(0, 0.6), 0, 0) IC("sphere") Row(i + 1);
+    )");
+  }
   SECTION("colours, random ones too, through splits and brackets") {
     bothEngines(R"(
       Axiom ~> S(4, 1, 1) Color(Rand(0, 1), 0.5, 0) Repeat("X", 1){ Tile };
