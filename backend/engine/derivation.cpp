@@ -29,7 +29,10 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
   steps_ = m_.steps;
   if (m_.countAttr >= 0) {
     const double count = eval_.attrData()[3 * size_t(m_.countAttr)];
-    if (count >= 0 && count <= 2147483647.0) (m_.mode == ir::DeriveMode::Parallel ? steps_ : depthBound) = int(count);
+    if (count >= 0 && count <= 2147483647.0) {
+      if (m_.mode == ir::DeriveMode::Parallel) steps_ = int(count);
+      else depthBound = int(count);
+    }
   }
   if (m_.mode != ir::DeriveMode::Parallel && depthBound >= 0 && static_cast<uint32_t>(depthBound) <= maxDepth_) {
     maxDepth_ = static_cast<uint32_t>(depthBound);
