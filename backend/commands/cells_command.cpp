@@ -43,6 +43,26 @@ bool has(const std::vector<std::string>& labels, const std::string& l) {
   return std::find(labels.begin(), labels.end(), l) != labels.end();
 }
 
+// Derives the bodies run while it lives on the spot (as a Lock does), with `recording`
+// receiving the terminal shapes' pieces (null: none); both are undone when it ends.
+class OnTheSpot {
+ public:
+  OnTheSpot(Derivation& d, std::vector<rt::cells::LabelledPolygon>* recording)
+      : d_(d), outer_(d.recordTerminals(recording)) {
+    d_.enterLock();
+  }
+  ~OnTheSpot() {
+    d_.recordTerminals(outer_);
+    d_.leaveLock();
+  }
+  OnTheSpot(const OnTheSpot&) = delete;
+  OnTheSpot& operator=(const OnTheSpot&) = delete;
+
+ private:
+  Derivation& d_;
+  std::vector<rt::cells::LabelledPolygon>* outer_;
+};
+
 }  // namespace
 
 void CellsCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
@@ -88,15 +108,7 @@ rt::cells::LabelledMesh CellsCommand::baseMesh(const ir::Op& op, State& st, Exec
 rt::cells::LabelledMesh CellsCommand::basePart(const ir::Op& op, State& st, Exec& ex, Frame& f) {
   std::vector<rt::cells::LabelledPolygon> pieces;
   {
-    d_.enterLock();
-    struct Restore {
-      Derivation& d;
-      std::vector<rt::cells::LabelledPolygon>* outer;
-      ~Restore() {
-        d.recordTerminals(outer);
-        d.leaveLock();
-      }
-    } restore{d_, d_.recordTerminals(&pieces)};
+    const OnTheSpot spot(d_, &pieces);
     d_.runBody(op, 0, st.scope, st.geom, st, ex, f);
   }
   try {
@@ -149,19 +161,13 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
                  "where the surface folds by more than 30 degrees)");
   rt::cells::CellularTexture tex(base.mesh, std::move(fm), up);
   rt::RandomStream rng{rt::childKey(ex.key, 0x5000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col), 0};
-  d_.enterLock();
   // The feature tree's own terminal shapes are no base pieces of an outer Cells.
-  struct Leave {
-    Derivation& d;
-    std::vector<Active>& active;
-    std::vector<rt::cells::LabelledPolygon>* recording;
-    ~Leave() {
-      d.recordTerminals(recording);
-      d.leaveLock();
-      active.pop_back();
-    }
-  } leave{d_, active_, d_.recordTerminals(nullptr)};
+  const OnTheSpot spot(d_, nullptr);
   active_.push_back({&tex, {}, joint, &rng});
+  struct Pop {  // after the push: a push that throws leaves nothing to pop
+    std::vector<Active>& active;
+    ~Pop() { active.pop_back(); }
+  } pop{active_};
   for (FeatureRef ref : tex.order()) {
     if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
     active_.back().feature = ref;
