@@ -43,57 +43,51 @@ void Analyzer::checkStart() {
 }
 
 void Analyzer::checkReachability() {
-  std::vector<size_t> work;
-  auto mark = [&](const std::string& name) {
-    int s = res_.findSymbol(name);
-    if (s >= 0 && !res_.symbols[s].reachable) {
-      res_.symbols[s].reachable = true;
-      work.push_back(static_cast<size_t>(s));
+  // Flood fill over successors: from `items` and the symbol `start` (-1: none), brackets
+  // and bodies opened, each shape symbol met expanded into its rules' successors once;
+  // `seen` marks the symbols reached, `onItem` sees every item on the way.
+  auto reach = [&](const std::vector<const Item*>& items, int start, std::vector<bool>& seen,
+                   const std::function<void(const Item&)>& onItem) {
+    std::vector<size_t> work;
+    auto mark = [&](int s) {
+      if (s >= 0 && !seen[size_t(s)]) seen[size_t(s)] = true, work.push_back(size_t(s));
+    };
+    std::function<void(const Item&)> visit = [&](const Item& item) {
+      onItem(item);
+      if (item.kind == ItemKind::Bracket)
+        for (const auto& c : item.children) visit(c);
+      if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(res_.findSymbol(item.name));
+      for (const auto& b : item.body)
+        for (const auto& c : b.items) visit(c);
+    };
+    mark(start);
+    for (const Item* item : items) visit(*item);
+    while (!work.empty()) {
+      const size_t s = work.back();
+      work.pop_back();
+      for (size_t ri : res_.symbols[s].rules)
+        for (const auto& b : prog_.rules[ri].branches)
+          for (const auto& item : b.successor.items) visit(item);
     }
   };
   bool synthesizes = false;  // pieces of a synthesized model (or Evolve's cells) may be any symbol
   std::vector<const Item*> baseParts;  // Cells{ Base | Feature }: what Base creates
-  std::function<void(const Item&)> visit = [&](const Item& item) {
-    if (item.kind == ItemKind::Bracket)
-      for (const auto& c : item.children) visit(c);
-    if (item.kind == ItemKind::Call && (item.name == "Synthesize" || item.name == "Evolve") &&
-        !isShapeItem(item, res_))
-      synthesizes = true;
-    if (item.kind == ItemKind::Call && item.name == "Cells" && item.body.size() == 2 && !isShapeItem(item, res_))
-      for (const auto& c : item.body[0].items) baseParts.push_back(&c);
-    if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(item.name);
-    for (const auto& b : item.body)
-      for (const auto& c : b.items) visit(c);
-  };
-  if (!res_.startSymbol.empty()) mark(res_.startSymbol);
+  std::vector<const Item*> axiomItems;
   for (const auto& a : prog_.axioms)
-    for (const auto& item : a.successor.items) visit(item);
-  while (!work.empty()) {
-    size_t s = work.back();
-    work.pop_back();
-    for (size_t ri : res_.symbols[s].rules)
-      for (const auto& b : prog_.rules[ri].branches)
-        for (const auto& item : b.successor.items) visit(item);
-  }
+    for (const auto& item : a.successor.items) axiomItems.push_back(&item);
+  std::vector<bool> reachable(res_.symbols.size(), false);
+  reach(axiomItems, res_.startSymbol.empty() ? -1 : res_.findSymbol(res_.startSymbol), reachable,
+        [&](const Item& item) {
+          if (item.kind != ItemKind::Call || isShapeItem(item, res_)) return;
+          if (item.name == "Synthesize" || item.name == "Evolve") synthesizes = true;
+          if (item.name == "Cells" && item.body.size() == 2)
+            for (const auto& c : item.body[0].items) baseParts.push_back(&c);
+        });
+  for (size_t si = 0; si < res_.symbols.size(); ++si) res_.symbols[si].reachable = reachable[si];
   // A terminal shape a Cells base part creates is a piece of its base mesh, not a
   // forgotten rule: the symbols reachable from the base parts get no W001.
   std::vector<bool> basePiece(res_.symbols.size(), false);
-  std::function<void(const Item&)> visitBase = [&](const Item& item) {
-    if (item.kind == ItemKind::Bracket)
-      for (const auto& c : item.children) visitBase(c);
-    if (item.kind == ItemKind::Call && isShapeItem(item, res_)) {
-      const int s = res_.findSymbol(item.name);
-      if (s >= 0 && !basePiece[s]) {
-        basePiece[s] = true;
-        for (size_t ri : res_.symbols[s].rules)
-          for (const auto& b : prog_.rules[ri].branches)
-            for (const auto& c : b.successor.items) visitBase(c);
-      }
-    }
-    for (const auto& b : item.body)
-      for (const auto& c : b.items) visitBase(c);
-  };
-  for (const Item* item : baseParts) visitBase(*item);
+  reach(baseParts, -1, basePiece, [](const Item&) {});
   for (size_t si = 0; si < res_.symbols.size(); ++si) {
     const auto& s = res_.symbols[si];
     if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()))
