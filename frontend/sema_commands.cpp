@@ -123,6 +123,13 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                          "sideedges, topedges, bottomedges)");
       break;
     }
+    case CommandId::Footprint:
+      if (n % 2 != 0)
+        diags_.error("E016", item.range,
+                     "'Footprint' takes pairs of coordinates x, z (one per corner, three corners at least), got " +
+                         std::to_string(n) + " numbers: " + cmd.signature);
+      numArgs(0, false);
+      break;
     case CommandId::Roof: {
       std::string kind = stringArg(0, "roof kind");
       if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid")

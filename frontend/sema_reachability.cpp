@@ -1,6 +1,6 @@
 // Where the derivation starts and what it can reach: the axiom or the start symbol
 // (E024), then the warnings about rules that can never apply (W002) and shapes that have
-// no rule (W001).
+// no rule (W001; not in a CGA grammar, where such a leaf outputs its own geometry).
 
 #include "frontend/sema_analyzer.h"
 
@@ -71,6 +71,7 @@ void Analyzer::checkReachability() {
     }
   };
   bool synthesizes = false;  // pieces of a synthesized model (or Evolve's cells) may be any symbol
+  bool cga = false;          // a CGA grammar: its leaves output their own geometry (no W001)
   std::vector<const Item*> baseParts;  // Cells{ Base | Feature }: what Base creates
   std::vector<const Item*> axiomItems;
   for (const auto& a : prog_.axioms)
@@ -80,6 +81,8 @@ void Analyzer::checkReachability() {
         [&](const Item& item) {
           if (item.kind != ItemKind::Call || isShapeItem(item, res_)) return;
           if (item.name == "Synthesize" || item.name == "Evolve") synthesizes = true;
+          for (const char* name : {"Subdiv", "Repeat", "Comp", "Extrude", "Roof", "Footprint"})
+            if (item.name == name) cga = true;
           if (item.name == "Cells" && item.body.size() == 2)
             for (const auto& c : item.body[0].items) baseParts.push_back(&c);
         });
@@ -94,7 +97,7 @@ void Analyzer::checkReachability() {
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");
-    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si])
+    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si] && !(cga && res_.mode != "parallel"))
       diags_.warning("W001", s.firstUse,
                      "'" + s.name + "' has no rule: it stays a terminal shape and places no "
                      "geometry");

@@ -1,5 +1,7 @@
 #include "ir/ir.h"
 
+#include <functional>
+
 namespace fgsg::ir {
 
 const char* typeName(Type t) {
@@ -59,6 +61,34 @@ int Module::findAttr(const std::string& name) const {
   for (size_t i = 0; i < attrs.size(); ++i)
     if (attrs[i].name == name) return static_cast<int>(i);
   return -1;
+}
+
+bool isCgaGeometryOp(OpKind kind) {
+  switch (kind) {
+    case OpKind::Subdiv:
+    case OpKind::Repeat:
+    case OpKind::Comp:
+    case OpKind::Extrude:
+    case OpKind::Roof:
+    case OpKind::Footprint: return true;
+    default: return false;
+  }
+}
+
+bool leavesOutputGeometry(const Module& m) {
+  if (m.mode == DeriveMode::Parallel) return false;
+  const std::function<bool(const Block&)> uses = [&](const Block& b) {
+    for (const Op& op : b) {
+      if (isCgaGeometryOp(op.kind)) return true;
+      for (const Block& body : op.bodies)
+        if (uses(body)) return true;
+    }
+    return false;
+  };
+  for (const Rule& r : m.rules)
+    for (const Alternative& alt : r.alternatives)
+      if (uses(alt.ops)) return true;
+  return uses(m.axiom);
 }
 
 }  // namespace fgsg::ir

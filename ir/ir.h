@@ -97,6 +97,7 @@ enum class OpKind : uint8_t {
   Repeat,        // axes mask (1 X, 2 Y, 4 Z); sizes one per axis; bodies[0]
   Comp,          // str = selector id; bodies: one, applied to every component
   Extrude,       // args[0] height
+  Footprint,     // args x1 z1 x2 z2 ...: the shape becomes this polygon in its scope's XZ plane
   Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
   Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
   Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
@@ -305,5 +306,12 @@ struct Module {
   int findSymbol(const std::string& name) const;
   int findAttr(const std::string& name) const;
 };
+
+// CGA's geometry commands: they give shapes geometry of their own (a split piece, a face,
+// a solid, a footprint polygon).
+bool isCgaGeometryOp(OpKind kind);
+// A sequential grammar that uses them is a CGA grammar: each shape of a symbol without
+// rules (a leaf) outputs its own geometry, as CGA does. Elsewhere leaves place nothing.
+bool leavesOutputGeometry(const Module& m);
 
 }  // namespace fgsg::ir

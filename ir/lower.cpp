@@ -290,6 +290,7 @@ class Lowerer {
         op.str = m_.internString(constString(*item.args[0]));
         break;
       case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
+      case CommandId::Footprint: op.kind = OpKind::Footprint; allArgs(0); break;
       case CommandId::Roof:
         op.kind = OpKind::Roof;
         op.str = m_.internString(constString(*item.args[0]));

@@ -340,6 +340,7 @@ class Printer {
       case OpKind::Color: text = withArgs("color"); break;
       case OpKind::Comp: text = "comp " + stringLit(op.str); break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
+      case OpKind::Footprint: text = withArgs("footprint"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
       case OpKind::Lock: text = "lock"; break;
       case OpKind::Line: text = withArgs("line"); break;

@@ -27,6 +27,7 @@ const char* opName(OpKind k) {
     case OpKind::Repeat: return "repeat";
     case OpKind::Comp: return "comp";
     case OpKind::Extrude: return "extrude";
+    case OpKind::Footprint: return "footprint";
     case OpKind::Roof: return "roof";
     case OpKind::Lock: return "lock";
     case OpKind::Line: return "line";
@@ -457,6 +458,11 @@ class Verifier {
         numArgs(op, r, 0);
         break;
       case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Footprint:
+        expectBodies(op, 0);
+        if (op.args.size() < 6 || op.args.size() % 2 != 0)
+          problem(std::to_string(op.args.size()) + " footprint coordinates (pairs x, z, three at least)");
+        break;
       case OpKind::Color:
         expectBodies(op, 0);
         numArgs(op, r, 3);

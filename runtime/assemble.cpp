@@ -132,8 +132,11 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNorm
   return c;
 }
 
-// Asset mesh of an instance, or nullptr when the binding is missing.
-const Mesh* assetOf(const Instance& inst, const AssetLibrary& library, const std::vector<int>& meshOf) {
+// The mesh an instance draws (its own geometry, or its asset), or nullptr when the
+// binding is missing.
+const Mesh* assetOf(const Instance& inst, const InstanceList& list, const AssetLibrary& library,
+                    const std::vector<int>& meshOf) {
+  if (inst.geometry != UINT32_MAX) return &list.geometries.at(inst.geometry);
   if (inst.asset >= meshOf.size() || meshOf[inst.asset] < 0) return nullptr;
   return &library.mesh(meshOf[inst.asset]);
 }
@@ -146,7 +149,7 @@ std::vector<Counts> countAll(const InstanceList& list, const AssetLibrary& libra
                       Scratch s;
                       for (size_t i = r.begin(); i != r.end(); ++i) {
                         const Instance& inst = list.instances[i];
-                        if (const Mesh* m = assetOf(inst, library, meshOf))
+                        if (const Mesh* m = assetOf(inst, list, library, meshOf))
                           counts[i] = classify(*m, placementOf(inst, list), s, false);
                       }
                     });
@@ -222,6 +225,7 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
                    std::string& error) {
   meshOf.assign(list.assets.size(), -1);
   for (size_t i = 0; i < list.assets.size(); ++i) {
+    if (list.assets[i] == kOwnGeometryAsset) continue;  // Instance::geometry draws these
     meshOf[i] = library.resolve(list.assets[i], error);
     if (meshOf[i] < 0) return false;
   }
@@ -257,14 +261,14 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   // arrays never move while they grow block by block.
   size_t maxVertices = 0, maxTriangles = 0;
   for (const Instance& inst : list.instances)
-    if (const Mesh* m = assetOf(inst, library, meshOf)) maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
+    if (const Mesh* m = assetOf(inst, list, library, meshOf)) maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
   out.positions.reserve(3 * maxVertices);
   out.normals.reserve(3 * maxVertices);
   out.colors.reserve(3 * maxVertices);
   out.indices.reserve(3 * maxTriangles);
   const bool withTexcoords =
       std::any_of(list.instances.begin(), list.instances.end(), [&](const Instance& inst) {
-        const Mesh* m = assetOf(inst, library, meshOf);
+        const Mesh* m = assetOf(inst, list, library, meshOf);
         return m && m->hasTexcoords();
       });
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
@@ -276,7 +280,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     st.slotVertex.assign(1, 0);
     st.slotTriangle.assign(1, 0);
     while (end < n && (end == begin || work < kBlockTriangles)) {
-      const Mesh* m = assetOf(list.instances[end++], library, meshOf);
+      const Mesh* m = assetOf(list.instances[end++], list, library, meshOf);
       work += 1 + (m ? m->triangleCount() : 0);
       st.slotVertex.push_back(st.slotVertex.back() + (m ? m->vertexCount() : 0));
       st.slotTriangle.push_back(st.slotTriangle.back() + (m ? m->triangleCount() : 0));
@@ -292,7 +296,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
       Scratch s;
       for (size_t i = r.begin(); i != r.end(); ++i) {
         const Instance& inst = list.instances[begin + i];
-        const Mesh* m = assetOf(inst, library, meshOf);
+        const Mesh* m = assetOf(inst, list, library, meshOf);
         if (!m) continue;
         const Placement p = placementOf(inst, list);
         counts[i] = classify(*m, p, s, true);

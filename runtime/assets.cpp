@@ -403,7 +403,7 @@ std::string joinNames(const std::vector<std::string>& names) {
 
 const std::vector<std::string>& builtinPrimitiveNames() {
   static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus", "ico",
-                                                 "quad", "disc",     "bark",   "leaf"};
+                                                 "quad", "disc",     "bark",   "leaf",  "none"};
   return names;
 }
 
@@ -419,6 +419,10 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
       {"bark", [](Builder& b) { buildBark(b, 24, 9); }},  // 216 quads, as the paper's
       {"leaf", buildLeaf},
   };
+  if (name == "none") {  // I("none"): CGA's way to place nothing
+    out = Mesh{};
+    return true;
+  }
   auto it = builders.find(name);
   if (it == builders.end()) return false;
   Builder b;

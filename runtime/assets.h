@@ -1,5 +1,5 @@
 // Assets that I() places: built-in primitives (cube cylinder sphere torus ico quad disc,
-// and the marching terminals bark leaf) and mesh files (OBJ, PLY, OFF, STL via OpenMesh).
+// the marching terminals bark leaf, and none) and mesh files (OBJ, PLY, OFF, STL via OpenMesh).
 // Every asset is normalised into the unit cube [0,1]^3 (its bounding box stretched to fit;
 // flat axes stay flat) so an instance fills its scope box. Texture coordinates are kept
 // as they are: bark and leaf have them, and files that give them (OBJ vt, PLY u v).
@@ -18,7 +18,7 @@ namespace fgsg::rt {
 // The names of the built-in primitives, in a stable order.
 const std::vector<std::string>& builtinPrimitiveNames();
 
-// Builds a built-in primitive in the unit cube. Cylinder: axis along Y. Torus, disc
+// Builds a built-in primitive in the unit cube ("none": an empty mesh). Cylinder: axis along Y. Torus, disc
 // and quad: lying in the XY plane (normal +Z). Bark: an open tube along X (24 sides x 9
 // rings, u around, v along X). Leaf: the XY unit square facing +Z (u = x, v = y). Only
 // bark and leaf have texture coordinates. Returns false for an unknown name.

@@ -1,7 +1,9 @@
 // The result of a derivation: every terminal instance placed by I / IC / IM (or drawn
-// by a turtle F), with the asset, the 4x4 transform that maps the asset's unit box
+// by a turtle F, or a CGA leaf shape's own geometry), with the asset, the 4x4 transform that maps the asset's unit box
 // into world space, the symbol of the shape that placed it, and its parameters.
 #pragma once
+
+#include "runtime/mesh.h"
 
 #include <array>
 #include <cstdint>
@@ -20,7 +22,13 @@ struct Instance {
   // A smooth terminal (Buron et al. §6): index into InstanceList::curves of the marching
   // segment its unit box is bent along; UINT32_MAX: placed rigidly by `transform`.
   uint32_t curve = UINT32_MAX;
+  // A leaf shape's own geometry (CGA): index into InstanceList::geometries, drawn instead
+  // of the asset (then kOwnGeometryAsset) and mapped by `transform` like one.
+  uint32_t geometry = UINT32_MAX;
 };
+
+// The asset name of instances that draw a shape's own geometry (Instance::geometry).
+inline constexpr const char* kOwnGeometryAsset = "(own geometry)";
 
 // The path of one marching segment as a smooth terminal follows it: the cubic Bezier
 // from the segment's start to its end (control points in world space) and the surface
@@ -46,6 +54,8 @@ struct InstanceList {
   std::vector<std::vector<ParamKind>> paramKinds;
   std::vector<std::string> strings;  // the texts string parameters refer to
   std::vector<CurveSegment> curves;  // smooth terminals' paths (Instance::curve)
+  // Leaf shapes' own geometry (Instance::geometry), each in its shape's unit box.
+  std::vector<Mesh> geometries;
 };
 
 }  // namespace fgsg::rt

@@ -18,13 +18,16 @@ bool hasQuery(const ir::Expr& e) {
 }  // namespace
 
 // The direct symbols (runtime/abi.h, FgsgDirectFn): the largest set whose successors
-// only use scope commands, place plain instances and create shapes of ruleless or
-// direct symbols, with brackets that balance, and no query anywhere. Sequential
+// only use scope commands, place plain instances and create shapes of ruleless (not in
+// a CGA grammar) or direct symbols, with brackets that balance, and no query anywhere. Sequential
 // derivations only. `places`: the symbol's shapes may place instances.
 std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& places) {
   std::vector<bool> direct(m.symbols.size(), false);
   places.assign(m.symbols.size(), false);
   if (m.mode == ir::DeriveMode::Parallel) return direct;
+  // In a CGA grammar a ruleless shape outputs its own geometry, which direct code, given
+  // only a scope, cannot build: its creators are left to the engine.
+  const bool leavesOutput = ir::leavesOutputGeometry(m);
   for (size_t s = 0; s < m.symbols.size(); ++s) {
     const ir::Symbol& sym = m.symbols[s];
     bool ok = !sym.rules.empty() && sym.name != "F";  // F draws when no rule applies
@@ -40,8 +43,8 @@ std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& plac
             case OpKind::Translate:
             case OpKind::Rotate:
             case OpKind::RotateNormal:
-            case OpKind::Scale:
-            case OpKind::Emit: break;
+            case OpKind::Scale: break;
+            case OpKind::Emit: ok &= !(leavesOutput && m.symbols[op.index].rules.empty()); break;
             case OpKind::Instance:
               ok &= op.mode == ir::InstanceMode::Plain;
               places[s] = true;

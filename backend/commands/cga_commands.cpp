@@ -7,16 +7,24 @@ namespace fgsg::backend {
 
 std::vector<ir::OpKind> CgaCommands::kinds() const {
   using K = ir::OpKind;
-  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Roof};
+  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Roof};
 }
 
-void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec& ex, Frame& f) {
+void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   switch (op.kind) {
     case ir::OpKind::Extrude: {
       rt::cga::Part part;
       std::string error;
       if (!rt::cga::extrude(st.scope, st.geom, a[0], d_.arena(), part, error))
         throw DeriveError{op.loc, "R002", error};
+      st.scope = part.scope;
+      st.geom = part.geom;
+      break;
+    }
+    case ir::OpKind::Footprint: {
+      rt::cga::Part part;
+      std::string error;
+      if (!rt::cga::footprint(st.scope, a, n, d_.arena(), part, error)) throw DeriveError{op.loc, "R002", error};
       st.scope = part.scope;
       st.geom = part.geom;
       break;

@@ -85,7 +85,7 @@ class Derivation final : public QueryHost {
   uint32_t segmentSymbol() const { return segmentSymbol_; }
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
-  // or reaches past float range).
+  // or reaches past float range); I("none") adds nothing.
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
                      uint32_t paramCount, ir::Loc loc);
   // Registers a mesh the derivation built itself (an ornament, the mortar, a cell's box)
@@ -209,6 +209,7 @@ class Derivation final : public QueryHost {
 
   // instance_output.cpp
   void initOutput();
+  void outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
   void appendCurves();
@@ -286,6 +287,11 @@ class Derivation final : public QueryHost {
   rt::DeriveMessage depthWarning_;
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
+  uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
+  // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
+  // instances of this asset.
+  bool leavesOutput_ = false;
+  uint32_t ownGeometryAsset_ = UINT32_MAX;
   bool usesOcclusion_ = false;
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)

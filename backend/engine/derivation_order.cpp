@@ -264,6 +264,8 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
     if (terminalPieces_)
       for (auto& polygon : rt::cga::surfacePolygons(st.scope, st.geom, arena_))
         terminalPieces_->push_back({target.name, std::move(polygon)});
+    else if (leavesOutput_)
+      outputLeaf(op.index, st, slots, op.loc);
     return;
   }
   // Compiled direct code drops terminal shapes, so a base part being recorded is walked.

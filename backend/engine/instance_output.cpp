@@ -3,6 +3,7 @@
 // instances that direct code placed restored to the engine's own.
 #include "backend/engine/derivation.h"
 
+#include "runtime/cga/cga.h"
 #include "runtime/float_range.h"
 
 #include <algorithm>
@@ -38,6 +39,13 @@ void Derivation::initOutput() {
   }
   segmentAsset_ = static_cast<uint32_t>(out_.assets.size());
   out_.assets.push_back("cylinder");
+  for (size_t i = 0; i < m_.assets.size(); ++i)
+    if (m_.assets[i] == "none") noneAsset_ = static_cast<uint32_t>(i);
+  leavesOutput_ = ir::leavesOutputGeometry(m_);
+  if (leavesOutput_) {
+    ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back(rt::kOwnGeometryAsset);
+  }
   segmentSymbol_ = static_cast<uint32_t>(out_.symbols.size());
   out_.symbols.push_back("F");
   for (const auto& s : m_.symbols) symbolColor_.push_back(colorFor(s.name));
@@ -74,6 +82,7 @@ std::array<float, 3> Derivation::colorFor(const std::string& name) {
 
 void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
                                const double* params, uint32_t paramCount, ir::Loc loc) {
+  if (asset == noneAsset_) return;
   rt::Instance inst;
   inst.asset = asset;
   inst.symbol = symbol;
@@ -103,6 +112,18 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   if (orderedDirect_) placedBy_.push_back(placingShape_);
   if (usesOcclusion_) occluders_.add(scope);
   collide_.placed(scope);
+}
+
+// A CGA leaf: the shape's own geometry (a split piece, a face, a solid) as an instance
+// over its scope, so it is coloured, checked and counted like any other.
+void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
+  rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
+  if (mesh.indices.empty()) return;  // an edge, a point
+  const size_t before = out_.instances.size();
+  placeInstance(ownGeometryAsset_, st.scope, symbol, params, m_.symbols[symbol].slotCount, loc);
+  if (out_.instances.size() == before) return;
+  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
+  out_.geometries.push_back(std::move(mesh));
 }
 
 // Smooth terminals are bent along their march segment's curve (Buron et al. §6), known

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <optional>
@@ -115,15 +116,18 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
       limit = shapeLimitReached(ir::Loc{});
     }
 
-    const size_t paramBase = out_.params.size(), curveBase = out_.curves.size();
+    const size_t paramBase = out_.params.size(), curveBase = out_.curves.size(),
+                 geometryBase = out_.geometries.size();
     const size_t params = keep == 0 ? 0
                                     : size_t(p.out.instances[keep - 1].firstParam) + p.out.instances[keep - 1].paramCount;
     out_.params.insert(out_.params.end(), p.out.params.begin(), p.out.params.begin() + params);
     out_.curves.insert(out_.curves.end(), p.out.curves.begin(), p.out.curves.end());
+    std::move(p.out.geometries.begin(), p.out.geometries.end(), std::back_inserter(out_.geometries));
     for (size_t i = 0; i < keep; ++i) {
       rt::Instance inst = p.out.instances[i];
       inst.firstParam = static_cast<uint32_t>(inst.firstParam + paramBase);
       if (inst.curve != UINT32_MAX) inst.curve = static_cast<uint32_t>(inst.curve + curveBase);
+      if (inst.geometry != UINT32_MAX) inst.geometry = static_cast<uint32_t>(inst.geometry + geometryBase);
       out_.instances.push_back(inst);
     }
     p.out = rt::InstanceList{};  // freed as soon as it is copied

@@ -5,8 +5,10 @@
 #pragma once
 
 #include "runtime/geometry.h"
+#include "runtime/mesh.h"
 #include "runtime/scope.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,14 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
 bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena,
              Part& out, std::string& error);
 
+// Footprint(x1, z1, x2, z2, ...): the shape becomes the polygon with these corners in its
+// scope's XZ plane (scope units from its origin; either orientation; a closing corner that
+// repeats the first is dropped), a Polygon facing up along the scope's Y: its scope has X
+// kept, Z = the old Y and Y = Z x X, spanning the polygon's bounding box, so Extrude and
+// Roof stand on it. Fails for fewer than three corners, no area or a self-crossing edge.
+bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena& arena, Part& out,
+               std::string& error);
+
 // Roof("hipped" | "gable" | "pyramid", angle): a roof solid on the scope's XZ rectangle
 // (the scope is the footprint or the top of a mass model), with slopes at `angle`
 // degrees; the ridge runs along the longer side. The result's scope spans the roof
@@ -77,6 +87,12 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, doub
 // Polyhedron) is every face but its bottom ones, since it stands on something. Edges
 // have no surface. How a Cells base part's pieces become a base mesh.
 std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
+
+// The mesh a leaf shape outputs as its own geometry (CGA), in its scope's unit box (placed
+// by the scope's unitBoxToWorld): every face of a box or polyhedron, a polygon's one face,
+// the one face of a flat box (a footprint, a facade piece) looking along the axis it has
+// no size in; flat shaded, with normals. Empty for an edge or a box with two zero sizes.
+Mesh ownGeometryMesh(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
 
 // Triangulates a shape's own geometry (box, polygon or polyhedron) into world-space
 // triangles, appended as x y z floats: used when a grammar instances a shape's geometry.

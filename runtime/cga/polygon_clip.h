@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "runtime/geometry.h"
@@ -52,6 +53,11 @@ void renormalise(LocalGeometry& g, int axis, double lo, double hi);
 // Newell's normal of a planar polygon: its length is twice the polygon's area.
 Vec3 newellNormal(const Vec3* pts, std::size_t count);
 inline Vec3 newellNormal(const Polygon3& p) { return newellNormal(p.data(), p.size()); }
+
+// Ear clipping of a planar polygon, counter-clockwise about its Newell normal; concave
+// polygons (L-shaped footprints) and the zero-width bridges of clipped concave polygons
+// are accepted. Appends index triples into `pts`, each counter-clockwise like the polygon.
+void earClip(const Polygon3& pts, std::vector<uint32_t>& tris);
 
 // The scope box as a solid: faces front (+Z), right (+X), back (-Z), left (-X), top (+Y),
 // bottom (-Y), each counter-clockwise seen from outside starting at its lower-left corner,

@@ -18,9 +18,8 @@ double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-// Ear clipping of a planar polygon, counter-clockwise about its Newell normal; concave
-// polygons (L-shaped footprints) and the zero-width bridges of clipped concave polygons
-// are accepted. Appends index triples into `pts`, each counter-clockwise like the polygon.
+}  // namespace
+
 void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) {
   const Vec3 n = newellNormal(pts);
   if (pts.size() < 3 || n.norm() == 0.0) return;
@@ -72,6 +71,8 @@ void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) {
   if (cross(q[idx[0]], q[idx[1]], q[idx[2]]) > eps)
     tris.insert(tris.end(), {idx[0], idx[1], idx[2]});
 }
+
+namespace {
 
 void appendFace(const Polygon3& world, std::vector<float>& positions,
                 std::vector<unsigned>& indices) {

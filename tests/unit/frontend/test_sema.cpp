@@ -108,6 +108,23 @@ TEST_CASE("Symbols without rules and rules that never apply are warned about", "
   CHECK(has(a, "W002", 3, 1));
 }
 
+TEST_CASE("In a CGA grammar a leaf outputs its own geometry, so it gets no W001", "[sema]") {
+  auto cga = analyse("Lot ~> S(10, 0, 6) Extrude(3) Comp(\"sidefaces\"){ Wall };");
+  CHECK(cga.ok);
+  CHECK_FALSE(has(cga, "W001"));
+  auto lsystem = analyse("derive parallel 2;\nLot ~> S(10, 0, 6) Leaf;");
+  CHECK(has(lsystem, "W001"));
+}
+
+TEST_CASE("Footprint takes pairs of coordinates", "[sema]") {
+  CHECK(analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3) Mass;").ok);
+  auto odd = analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3, 1) Mass;");
+  CHECK_FALSE(odd.ok);
+  CHECK(has(odd, "E016"));
+  auto few = analyse("Lot ~> Footprint(0, 0, 4, 0) Mass;");
+  CHECK(has(few, "E016"));
+}
+
 TEST_CASE("The start symbol is Axiom, start, or the first rule's predecessor", "[sema]") {
   CHECK(analyse("X ~> Y;\nstart ~> X;\nY ~> I(\"cube\");").sema.startSymbol == "start");
   CHECK(analyse("Lot ~> I(\"cube\");").sema.startSymbol == "Lot");

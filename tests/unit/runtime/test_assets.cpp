@@ -91,8 +91,10 @@ void checkNormals(const Mesh& m) {
 TEST_CASE("built-in primitives are listed in a stable order", "[assets]") {
   CHECK(builtinPrimitiveNames() ==
         std::vector<std::string>{"cube", "cylinder", "sphere", "torus", "ico", "quad", "disc", "bark",
-                                 "leaf"});
+                                 "leaf", "none"});
   Mesh m;
+  CHECK(makeBuiltinPrimitive("none", m));  // I("none") places nothing
+  CHECK(m.triangleCount() == 0);
   CHECK_FALSE(makeBuiltinPrimitive("Torus", m));  // names are exact
   CHECK_FALSE(makeBuiltinPrimitive("box", m));
 }

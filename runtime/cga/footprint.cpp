@@ -1,0 +1,90 @@
+// Footprint: a shape becomes a polygon lot on the ground.
+#include "runtime/cga/cga.h"
+#include "runtime/cga/polygon_clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace fgsg::rt::cga {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Whether segments ab and cd share a point (touching counts).
+bool segmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  auto onSegment = [](const Vec2& p, const Vec2& q, const Vec2& r, double side) {
+    return side == 0 && std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) &&
+           std::min(p.y(), q.y()) <= r.y() && r.y() <= std::max(p.y(), q.y());
+  };
+  return onSegment(a, b, c, d1) || onSegment(a, b, d, d2) || onSegment(c, d, a, d3) || onSegment(c, d, b, d4);
+}
+
+std::string pointText(const Vec2& p) {
+  std::ostringstream m;
+  m << "(" << p.x() << ", " << p.y() << ")";
+  return m.str();
+}
+
+}  // namespace
+
+// The polygon scope stands on the ground: X kept, Z up (the old Y: the polygon's
+// normal), Y = Z x X, which runs against the old Z; its origin is the corner of the
+// bounding box at (xmin, zmax), so a corner (x, z) lies at normalised
+// ((x - xmin) / w, (zmax - z) / d). Extrude and Roof then stand solids on it Y-up.
+bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena& arena, Part& out,
+               std::string& error) {
+  std::vector<Vec2> corners;
+  for (size_t i = 0; i + 1 < count; i += 2) {
+    const Vec2 p(xz[i], xz[i + 1]);
+    if (!p.allFinite()) {
+      error = "Footprint: corner " + std::to_string(i / 2 + 1) + " is not a finite point";
+      return false;
+    }
+    if (corners.empty() || p != corners.back()) corners.push_back(p);
+  }
+  if (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();  // a closed ring
+  if (corners.size() < 3) {
+    error = "Footprint: a polygon needs three different corners, got " + std::to_string(corners.size());
+    return false;
+  }
+  const size_t n = corners.size();
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // neighbours share a corner
+      if (segmentsMeet(corners[i], corners[(i + 1) % n], corners[j], corners[(j + 1) % n])) {
+        error = "Footprint: the polygon crosses itself: the edge from corner " + std::to_string(i + 1) + " " +
+                pointText(corners[i]) + " meets the edge from corner " + std::to_string(j + 1) + " " +
+                pointText(corners[j]);
+        return false;
+      }
+    }
+  Vec2 lo = corners[0], hi = corners[0];
+  for (const Vec2& p : corners) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double w = hi.x() - lo.x(), d = hi.y() - lo.y();
+  Polygon3 polygon;
+  for (const Vec2& p : corners) polygon.emplace_back((p.x() - lo.x()) / w, (hi.y() - p.y()) / d, 0.0);
+  const double normal = newellNormal(polygon).z();
+  if (!(w > 0 && d > 0) || !(std::abs(normal) > 1e-12)) {
+    error = "Footprint: the polygon has no area";
+    return false;
+  }
+  if (normal < 0) std::reverse(polygon.begin(), polygon.end());  // counter-clockwise seen from above
+
+  out = Part{};
+  out.scope = scope;
+  out.scope.axes.col(0) = scope.X();
+  out.scope.axes.col(1) = -scope.Z();
+  out.scope.axes.col(2) = scope.Y();
+  out.scope.P = scope.toWorld(Vec3(lo.x(), 0.0, hi.y()));
+  out.scope.S = Vec3(w, d, 0.0);
+  out.geom = arena.addPolygon(polygon);
+  return true;
+}
+
+}  // namespace fgsg::rt::cga

@@ -1,0 +1,133 @@
+// CGA leaves output their own geometry: masses, faces, split pieces and footprint
+// polygons come out as exact areas and closed solids of exact volume.
+#include "derive_helpers.h"
+
+#include "runtime/assemble.h"
+
+#include <Eigen/Geometry>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+using namespace fgsg;
+using Catch::Matchers::Contains;
+
+namespace {
+
+rt::Mesh assembled(const rt::DeriveResult& r) {
+  REQUIRE(r.ok);
+  rt::AssetLibrary library;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
+  return rt::assembleInstances(r.instances, library, meshOf);
+}
+
+Eigen::Vector3d vertex(const rt::Mesh& m, uint32_t i) {
+  return {m.positions[3 * i], m.positions[3 * i + 1], m.positions[3 * i + 2]};
+}
+
+// Signed volume by the divergence theorem: positive for a closed, outward-facing mesh.
+double volume(const rt::Mesh& m) {
+  double v = 0;
+  for (size_t t = 0; t < m.indices.size(); t += 3)
+    v += vertex(m, m.indices[t]).dot(vertex(m, m.indices[t + 1]).cross(vertex(m, m.indices[t + 2]))) / 6;
+  return v;
+}
+
+double area(const rt::Mesh& m) {
+  double a = 0;
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const auto p = vertex(m, m.indices[t]);
+    a += 0.5 * (vertex(m, m.indices[t + 1]) - p).cross(vertex(m, m.indices[t + 2]) - p).norm();
+  }
+  return a;
+}
+
+// Closed and consistently oriented: after welding equal positions, every directed edge
+// has exactly one partner running the other way.
+bool watertight(const rt::Mesh& m) {
+  using Key = std::tuple<long, long, long>;
+  std::map<Key, uint32_t> weld;
+  auto id = [&](uint32_t i) {
+    const Eigen::Vector3d p = vertex(m, i) * 1e5;
+    return weld.emplace(Key{std::lround(p.x()), std::lround(p.y()), std::lround(p.z())}, uint32_t(weld.size()))
+        .first->second;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, int> edges;
+  for (size_t t = 0; t < m.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) ++edges[{id(m.indices[t + k]), id(m.indices[t + (k + 1) % 3])}];
+  for (const auto& [e, n] : edges) {
+    auto back = edges.find({e.second, e.first});
+    if (n != 1 || back == edges.end() || back->second != 1) return false;
+  }
+  return !edges.empty();
+}
+
+}  // namespace
+
+TEST_CASE("A 10 by 6 footprint extruded 3 outputs a closed box of volume 180", "[cga][output]") {
+  const rt::Mesh m = assembled(test::deriveText("Lot ~> S(10, 0, 6) Extrude(3) Mass;"));
+  CHECK(m.triangleCount() == 12);
+  CHECK(volume(m) == Approx(180).epsilon(1e-6));
+  CHECK(watertight(m));
+}
+
+TEST_CASE("An L-shaped Footprint extruded is a closed prism of its area times the height", "[cga][output]") {
+  // Area 10 x 4 + 4 x 6 = 64, given clockwise: the orientation is repaired.
+  const rt::Mesh m =
+      assembled(test::deriveText("Lot ~> Footprint(0, 0, 0, 10, 4, 10, 4, 4, 10, 4, 10, 0) Extrude(3) Mass;"));
+  CHECK(volume(m) == Approx(192).epsilon(1e-6));
+  CHECK(watertight(m));
+  CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
+  CHECK(m.boundsMax() == std::array<float, 3>{10, 3, 10});
+}
+
+TEST_CASE("The split pieces of a polygon footprint cover it exactly and face up", "[cga][output]") {
+  const rt::DeriveResult r = test::deriveText(
+      "Lot ~> Footprint(0, 0, 10, 0, 10, 4, 4, 4, 4, 10, 0, 10) Subdiv(\"X\", 3, 1r){ West | East };");
+  REQUIRE(r.instances.instances.size() == 2);
+  const rt::Mesh m = assembled(r);
+  CHECK(area(m) == Approx(64).epsilon(1e-6));
+  for (size_t v = 0; v < m.vertexCount(); ++v) CHECK(m.normals[3 * v + 1] == Approx(1));
+  for (size_t v = 0; v < m.vertexCount(); ++v) CHECK(m.positions[3 * v + 1] == 0);
+}
+
+TEST_CASE("Comp faces of a mass are leaves with the mass's face areas", "[cga][output]") {
+  const rt::DeriveResult r = test::deriveText(
+      "Lot ~> S(10, 0, 6) Extrude(3) Comp(\"sidefaces\"){ Wall } Comp(\"top\"){ Top };");
+  REQUIRE(r.instances.instances.size() == 5);
+  CHECK(area(assembled(r)) == Approx(2 * (10 + 6) * 3 + 60).epsilon(1e-6));
+  CHECK(r.instances.symbols[r.instances.instances[0].symbol] == "Wall");
+  CHECK(r.instances.symbols[r.instances.instances[4].symbol] == "Top");
+}
+
+TEST_CASE("A leaf takes its Color and a flat box leaf is its one upward face", "[cga][output]") {
+  const rt::DeriveResult r = test::deriveText("Lot ~> S(4, 0, 5) Color(\"#ff0000\") Plot; Unused ~> Extrude(1) A;");
+  const rt::Mesh m = assembled(r);
+  CHECK(m.triangleCount() == 2);
+  CHECK(area(m) == Approx(20));
+  CHECK(m.normals[1] == Approx(1));
+  CHECK(m.colors[0] == 1.0f);
+  CHECK(m.colors[1] == 0.0f);
+}
+
+TEST_CASE("I none places nothing, and outside CGA grammars leaves place nothing", "[cga][output]") {
+  CHECK(test::deriveText("Lot ~> S(4, 0, 5) Extrude(2) Mass; Mass ~> I(\"none\");").instances.instances.empty());
+  CHECK(test::deriveText("Axiom ~> S(1, 1, 1) Leaf T(2, 0, 0) I(\"cube\");").instances.instances.size() == 1);
+}
+
+TEST_CASE("A Footprint that crosses itself or has no area is a located error", "[cga][output]") {
+  const rt::DeriveResult bowtie = test::deriveText("Lot ~> Footprint(0, 0, 4, 4, 4, 0, 0, 4) Mass;");
+  CHECK_FALSE(bowtie.ok);
+  REQUIRE(!bowtie.messages.empty());
+  CHECK(bowtie.messages[0].code == "R002");
+  CHECK(bowtie.messages[0].line == 1);
+  CHECK_THAT(bowtie.messages[0].message, Contains("crosses itself"));
+  const rt::DeriveResult flat = test::deriveText("Lot ~> Footprint(0, 0, 4, 0, 8, 0) Mass;");
+  CHECK_FALSE(flat.ok);
+  CHECK_THAT(flat.messages[0].message, Contains("no area"));
+}
