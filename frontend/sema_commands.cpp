@@ -132,9 +132,9 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       break;
     case CommandId::Roof: {
       std::string kind = stringArg(0, "roof kind");
-      if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid")
+      if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid" && kind != "shed")
         diags_.error("E028", item.args[0]->range,
-                     "unknown roof kind \"" + kind + "\" (hipped, gable or pyramid)");
+                     "unknown roof kind \"" + kind + "\" (hipped, gable, pyramid or shed)");
       numArgs(1, false);
       break;
     }

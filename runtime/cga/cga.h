@@ -73,11 +73,13 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
 bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena& arena, Part& out,
                std::string& error);
 
-// Roof("hipped" | "gable" | "pyramid", angle): a roof solid on the scope's XZ rectangle
-// (the scope is the footprint or the top of a mass model), with slopes at `angle`
-// degrees; the ridge runs along the longer side. The result's scope spans the roof
-// (sy = its height) and its geometry is a Polyhedron whose sloped faces are side faces
-// for Comp, whose ridge is a top edge and whose hips are side edges.
+// Roof("hipped" | "gable" | "pyramid" | "shed", angle): a roof solid on the footprint the
+// scope stands on: a box's XZ rectangle at its base (the ridge along the longer side, the
+// slopes over the longer sides at `angle` degrees), a polygon (rising along its normal)
+// or a solid's flat bottom face, roofed by the straight skeleton so every sloped face of
+// a hipped roof tilts by `angle` (runtime/cga/skeleton_roof.h). The result's scope spans
+// the roof (sy = its height) and its geometry is a Polyhedron whose sloped faces are side
+// faces for Comp, whose ridge is a top edge and whose hips are side edges.
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, double angleDeg,
           GeometryArena& arena, Part& out, std::string& error);
 

@@ -1,6 +1,7 @@
-// Roof: a hipped, gable or pyramid roof solid on a rectangle.
+// Roof: a hipped, gable, pyramid or shed roof solid on a rectangle or on any footprint.
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/skeleton_roof.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-enum class RoofKind { Hipped, Gable, Pyramid };
+enum class RoofKind { Hipped, Gable, Pyramid, Shed };
 
 bool parseKind(const std::string& s, RoofKind& kind) {
   if (s == "hipped")
@@ -20,9 +21,46 @@ bool parseKind(const std::string& s, RoofKind& kind) {
     kind = RoofKind::Gable;
   else if (s == "pyramid")
     kind = RoofKind::Pyramid;
+  else if (s == "shed")
+    kind = RoofKind::Shed;
   else
     return false;
   return true;
+}
+
+SkeletonRoofKind skeletonKind(RoofKind kind) {
+  switch (kind) {
+    case RoofKind::Hipped: return SkeletonRoofKind::Hipped;
+    case RoofKind::Gable: return SkeletonRoofKind::Gable;
+    case RoofKind::Pyramid: return SkeletonRoofKind::Pyramid;
+    case RoofKind::Shed: break;
+  }
+  return SkeletonRoofKind::Shed;
+}
+
+// The footprint a roof stands on, as (x, z) corners in the roof scope's units, when it is
+// not the scope's whole rectangle: a polygon's own corners (at normalised (x, 0, 1 - y) of
+// the solid frame), or a solid's bottom face. Empty: the rectangle.
+std::vector<Vec2> footprintCorners(const Scope& roofScope, const GeomRef& geom, const GeometryArena& arena) {
+  std::vector<Vec2> corners;
+  const double w = roofScope.S.x(), d = roofScope.S.z();
+  if (geom.kind == GeomKind::Polygon) {
+    if (isUnitSquare(arena.polygon(geom), geom.count)) return corners;
+    for (uint32_t i = 0; i < geom.count; ++i) {
+      const Vec3& p = arena.polygon(geom)[i];
+      corners.emplace_back(p.x() * w, (1.0 - p.y()) * d);
+    }
+  } else if (geom.kind == GeomKind::Polyhedron) {
+    // An extruded prism's bottom: the one face lying flat at y = 0, looking down.
+    for (const Polygon3& f : loadGeometry(arena, geom).faces) {
+      bool flat = true;
+      for (const Vec3& p : f) flat &= std::abs(p.y()) <= kPlaneTol;
+      if (!flat || !(newellNormal(f).y() < 0)) continue;
+      if (!corners.empty()) return {};  // several bottoms: stand on the rectangle
+      for (const Vec3& p : f) corners.emplace_back(p.x() * w, p.z() * d);
+    }
+  }
+  return corners;
 }
 
 // The roof in scope units on the w x d rectangle (x along X, z along Z), height h. Every
@@ -59,17 +97,19 @@ std::vector<Polygon3> roofFaces(RoofKind kind, double w, double d, double h) {
 
 }  // namespace
 
-// The rectangle is the scope's XZ rectangle for a box or a polyhedron (the scope's Y size
-// is ignored: the roof stands on the scope's base) and, for a polygon, the polygon
-// scope's XY rectangle with the roof rising along its normal (solidFrameOnPolygon). The
-// slopes over the longer sides are at `angleDeg`, so h = (shorter side / 2) * tan(angle)
-// for every kind; the hips of a hipped roof and the faces of a pyramid on a non-square
-// rectangle follow from that height.
+// A box (or a solid with no single flat bottom) gives the scope's XZ rectangle, the
+// scope's Y size ignored: the roof stands on the scope's base. A polygon gives its own
+// corners, with the roof rising along its normal (solidFrameOnPolygon), and a solid its
+// bottom face: those are roofed by the straight skeleton (skeleton_roof.h), so every
+// sloped face of a hipped roof tilts by `angleDeg`. On the rectangle the slopes over the
+// longer sides are at `angleDeg`, so h = (shorter side / 2) * tan(angle) for every kind;
+// the hips of a hipped roof and the faces of a pyramid on a non-square rectangle follow
+// from that height. A shed rises from the first edge (the rectangle's back, -Z, edge).
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
           GeometryArena& arena, Part& out, std::string& error) {
   RoofKind kind;
   if (!parseKind(kindName, kind)) {
-    error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable or pyramid)";
+    error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid or shed)";
     return false;
   }
   if (!(angleDeg > 0.0 && angleDeg < 90.0)) {
@@ -91,10 +131,21 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     error = m.str();
     return false;
   }
-  const double h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
+  std::vector<Vec2> corners = footprintCorners(out.scope, geom, arena);
+  if (corners.empty() && kind == RoofKind::Shed) corners = {{0, 0}, {w, 0}, {w, d}, {0, d}};
+  std::vector<Polygon3> faces;
+  double h = 0.0;
+  if (corners.empty()) {
+    h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
+    faces = roofFaces(kind, w, d, h);
+  } else if (!skeletonRoof(corners, {}, skeletonKind(kind), angleDeg, faces, h, error)) {
+    return false;
+  }
+  if (!(h > 0.0)) {
+    error = "Roof: the roof has no height";
+    return false;
+  }
   out.scope.S.y() = h;
-
-  std::vector<Polygon3> faces = roofFaces(kind, w, d, h);
   const Vec3 inv(1.0 / w, 1.0 / h, 1.0 / d);
   for (Polygon3& f : faces)
     for (Vec3& p : f) p = p.cwiseProduct(inv);

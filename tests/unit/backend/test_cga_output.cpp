@@ -131,3 +131,37 @@ TEST_CASE("A Footprint that crosses itself or has no area is a located error", "
   CHECK_FALSE(flat.ok);
   CHECK_THAT(flat.messages[0].message, Contains("no area"));
 }
+
+TEST_CASE("A hipped roof on an L-shaped Footprint is closed and every slope tilts by the angle", "[cga][output]") {
+  // The L's legs are 4 wide: the ridge is 2 tan(30) high; the volume is 176/3 tan(30)
+  // (face by face: tests/unit/runtime/test_skeleton_roof.cpp).
+  const rt::Mesh m = assembled(test::deriveText(
+      "Lot ~> Footprint(0, 0, 10, 0, 10, 4, 4, 4, 4, 10, 0, 10) Roof(\"hipped\", 30){ RoofSolid };"));
+  const double t = std::tan(30 * M_PI / 180);
+  CHECK(volume(m) == Approx(176.0 / 3 * t).epsilon(1e-6));
+  CHECK(watertight(m));
+  CHECK(m.boundsMax()[1] == Approx(2 * t).epsilon(1e-6));
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    const double ny = m.normals[3 * v + 1];
+    if (ny > -0.5) CHECK(std::acos(std::min(1.0, ny)) * 180 / M_PI == Approx(30).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("A gable roof's ends are triangles: its faces as leaves cover slopes and gables exactly", "[cga][output]") {
+  // 10 x 6 at 30 degrees: h = 3 tan(30); slopes 2 x 10 x 3 / cos(30), gables 2 x 6 h / 2.
+  const rt::DeriveResult r = test::deriveText(
+      "Lot ~> S(10, 0, 6) Roof(\"gable\", 30){ Comp(\"sidefaces\"){ Face } };");
+  REQUIRE(r.instances.instances.size() == 4);
+  const double h = 3 * std::tan(30 * M_PI / 180);
+  CHECK(area(assembled(r)) == Approx(2 * 10 * 3 / std::cos(30 * M_PI / 180) + 6 * h).epsilon(1e-6));
+  const rt::Mesh solid = assembled(test::deriveText("Lot ~> S(10, 0, 6) Roof(\"gable\", 30){ Solid };"));
+  CHECK(volume(solid) == Approx(10 * 6 * h / 2).epsilon(1e-6));
+  CHECK(watertight(solid));
+}
+
+TEST_CASE("A roof on an extruded polygon stands on the prism's bottom face", "[cga][output]") {
+  const rt::Mesh m = assembled(test::deriveText(
+      "Lot ~> Footprint(0, 0, 10, 0, 10, 4, 4, 4, 4, 10, 0, 10) Extrude(5) T(0, 5, 0) Roof(\"shed\", 45){ Shed };"));
+  CHECK(watertight(m));
+  CHECK(m.boundsMin()[1] == Approx(5));
+}

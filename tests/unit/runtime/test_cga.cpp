@@ -423,7 +423,7 @@ TEST_CASE("cga: gable, pyramid and deep roofs", "[cga]") {
     CHECK(err == "Roof: the angle 90 must lie strictly between 0 and 90 degrees");
     CHECK_FALSE(roof(box(10, 0, 10), GeomRef{}, "hipped", 0, arena, r, err));
     CHECK_FALSE(roof(box(10, 0, 10), GeomRef{}, "mansard", 30, arena, r, err));
-    CHECK(err == "Roof: unknown kind \"mansard\" (expected hipped, gable or pyramid)");
+    CHECK(err == "Roof: unknown kind \"mansard\" (expected hipped, gable, pyramid or shed)");
   }
 }
 

@@ -1,0 +1,68 @@
+// Roofs on any simple footprint polygon, holes allowed: hipped and gable roofs from the
+// straight skeleton (CGAL's Straight_skeleton_2), pyramid and shed roofs from the
+// footprint's edges. The result is a closed solid, its faces as plain 3D polygons.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "runtime/cga/polygon_clip.h"
+
+namespace fgsg::rt::cga {
+
+using Vec2 = Eigen::Vector2d;
+
+// Hipped: every footprint edge gets a face sloping up at the angle (the straight skeleton
+// lifted by offset time * tan(angle)). Gable: hipped, with the ends of wings made vertical.
+// Pyramid: one triangle per edge up to a single apex. Shed: one plane rising from edge 0.
+enum class SkeletonRoofKind { Hipped, Gable, Pyramid, Shed };
+
+// The footprint lies in the (x, z) plane, points given as (x, z); y is up. The outer ring
+// should run counter-clockwise seen from above (+Y) and holes clockwise; a ring given the
+// other way round is reversed, so either orientation is accepted. Consecutive points
+// closer than 1e-9 times the footprint's extent are merged; "edge i" below counts the
+// edges of the merged rings: the outer ring's edges (point i to point i + 1, in the order
+// given, whichever the orientation) are 0 .. n-1, then each hole's edges follow.
+//
+// Output: the roof solid's faces in (x, y, z), y = 0 on the footprint, each face
+// counter-clockwise seen from outside, together a closed 2-manifold: first the faces
+// standing on the footprint edges in edge order, then the bottom face. Hipped, Gable and
+// Pyramid give exactly one face per edge (sloped, or vertical for a gable end). Shed gives
+// the sloped top for edge 0 and one vertical side face for each other edge, leaving out
+// the sides of edges with no height (those lying on edge 0's line). With holes, the bottom
+// (and a shed's top) is one polygon whose holes are joined to the outer ring by zero-width
+// bridges: each bridge is an edge that the polygon runs along once in each direction.
+// `faceEdges`, when given, receives the footprint edge of each face (-1 for the bottom).
+// `height` receives the roof's greatest height.
+//
+// Kinds on general footprints:
+// * Hipped: every sloped face tilts by exactly `angleDeg`; concave corners give valleys,
+//   holes give courtyards.
+// * Gable: a skeleton face that is a triangle whose apex joins only it and its two
+//   neighbouring faces (the end of a rectangle or of an L or T wing) becomes a vertical
+//   gable: the apex moves along the ridge, where the neighbours' roof planes meet, onto
+//   the vertical plane of the triangle's edge, so every face stays planar. Where the
+//   neighbouring edges are parallel the ridge is level and the apex keeps its height;
+//   where they converge or diverge the gable top is lower or higher. A quadrilateral whose
+//   four triangles meet at one point (a square, a rhombus) is gabled on the opposite pair
+//   giving the longer ridge; on a tie (a square) the ridge runs along x. Triangles sharing
+//   their apex with other faces (a triangular or regular-polygon footprint, a wing end
+//   that a concave corner's valley reaches exactly) stay hipped.
+// * Pyramid: the apex stands over the area centroid at height d * tan(angle), d the
+//   centroid's least distance to an edge line: the faces nearest the centroid tilt by the
+//   angle, the others less. Fails with holes or when the centroid is not strictly inside
+//   every edge's half-plane (the footprint is not star-shaped around it).
+// * Shed: height = distance from edge 0's line * tan(angle). Holes are supported. Fails
+//   when part of the footprint lies on the outer side of edge 0's line.
+//
+// Errors (false, `error` starting with "Roof: "): the angle not strictly between 0 and 90
+// degrees, non-finite coordinates, a ring with fewer than 3 distinct points or no area, a
+// ring that intersects itself, a hole outside the outer ring or touching another ring,
+// the kind's conditions above, CGAL failing to build the straight skeleton.
+bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+                  SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
+                  double& height, std::string& error, std::vector<int>* faceEdges = nullptr);
+
+}  // namespace fgsg::rt::cga
