@@ -6,6 +6,7 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
+#include "runtime/io/geojson_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/assemble.h"
 #include "runtime/io/cache_folder.h"
@@ -83,6 +84,14 @@ RunOptions parseRunOptions(const Args& args) {
       std::vector<rt::DeriveOptions::Seed> more;
       if (!rt::io::readSeedPoints(r.value(f), more, error)) throw UsageError{error};
       o.derive.seeds.insert(o.derive.seeds.end(), more.begin(), more.end());
+    } else if (f == "--lots") {
+      o.derive.lotsName = r.value(f);
+      std::string error;
+      size_t skipped = 0;
+      if (!rt::readGeoJsonLots(o.derive.lotsName, o.derive.lots, skipped, error)) throw UsageError{error};
+      if (skipped > 0)
+        std::cerr << "fgsg: " << o.derive.lotsName << ": " << skipped
+                  << " geometries that are not polygons were passed over\n";
     } else if (f == "--seed-density") {
       o.derive.seedDensity = r.value(f);
       if (o.derive.seedDensity.empty()) throw UsageError{"--seed-density needs a texture name"};

@@ -17,6 +17,7 @@ usage:
                 [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
+                [--lots lots.geojson]
                 [--atlas-resolution N] [--march-units surface|texels]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
@@ -45,6 +46,9 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
                      "x,y,z;x,y,z"; repeatable
   --seed-density T --seed-count N  N more seeds drawn where the grammar's texture T is
                      bright (density proportional to its value and the area)
+  --lots FILE        derive the axiom once per lot of a GeoJSON file (Polygon and
+                     MultiPolygon features), its shape the lot's footprint; attrs named
+                     like a lot's properties take their values (docs/cga.md)
   --march-candidates N  directions tried around a failed Marching condition (default 8)
   --atlas-resolution N  side of the marching geometry image in texels (default 1024)
   --march-units U    Marching's length: surface (3D distance, default) or texels

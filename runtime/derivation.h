@@ -3,6 +3,7 @@
 #pragma once
 
 #include "runtime/instances.h"
+#include "runtime/lot.h"
 
 #include <chrono>
 #include <cstdint>
@@ -58,6 +59,12 @@ struct DeriveOptions {
   int atlasResolution = 1024;   // --atlas-resolution: the geometry image's side in texels
   bool marchInTexels = false;   // --march-units texels: Marching's length in texels (the paper's)
   std::string atlasCacheDir;    // prepared surfaces are kept here ("": not kept)
+  // --lots FILE: the axiom derives once per lot, its shape the lot's footprint polygon on
+  // the XZ plane (north is -Z), with a random stream of its own and the attrs named like
+  // the lot's properties set to their values (over --set). `lotsName` names the file in
+  // messages.
+  std::vector<Lot> lots;
+  std::string lotsName;
 };
 
 struct DeriveStats {

@@ -11,6 +11,7 @@
 #include "ir/pipeline.h"
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
+#include "runtime/io/geojson_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
@@ -402,6 +403,13 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       std::string why;
       if (!rt::io::readSeedPoints(v, more, why)) return bad("seeds x,y,z[:dx,dy,dz] (" + why + ")");
       o.seeds.insert(o.seeds.end(), more.begin(), more.end());
+    } else if (n == "lots") {
+      std::vector<rt::Lot> lots;
+      size_t skipped = 0;
+      std::string why;
+      if (!rt::readGeoJsonLots(v, lots, skipped, why)) return bad("a GeoJSON file of lots (" + why + ")");
+      o.lots = std::move(lots);
+      o.lotsName = v;
     } else if (n == "seed-density") {
       if (v.empty()) return bad("a texture name");
       o.seedDensity = v;
@@ -424,7 +432,7 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       error = "fgsg_set_option: unknown option " + (name ? "'" + n + "'" : std::string("NULL")) +
               " (collide-all, repair-surface, surface-size, start, max-shapes, max-depth, "
               "max-seconds, max-memory, asset-dir, seed-points, seed-density, seed-count, "
-              "march-candidates, atlas-resolution, march-units)";
+              "march-candidates, atlas-resolution, march-units, lots)";
       return false;
     }
     return true;

@@ -79,6 +79,8 @@ FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path);
  *   "seed-density", "seed-count"      a texture name; 1 to 1000000 seeds drawn by it
  *   "march-candidates"                0 to 64;  "atlas-resolution": 16 to 8192
  *   "march-units"                     "surface" or "texels"
+ *   "lots"                            a GeoJSON file of lots: the axiom derives once per
+ *                                     lot, on its footprint (as fgsg run --lots)
  * An unknown name or a bad value fails and changes nothing. */
 FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* value);
 

@@ -10,6 +10,7 @@
 //   derivation.cpp         run(), set-up, how a derivation ends
 //   derivation_order.cpp   the sequential order: queues, successors, Emit, Lock-style
 //                          on-the-spot derivation, op dispatch
+//   lots.cpp               --lots: the axiom on every lot's footprint, one after another
 //   seed_plants.cpp        independent seeds' plants, each derived on its own
 //                          (concurrently) and output in seed order
 //   rule_choice.cpp        guards, specific before general rules, weighted choice
@@ -63,6 +64,8 @@ class Derivation final : public QueryHost {
              const FgsgProgram* program = nullptr, bool direct = false);
 
   rt::DeriveResult run();
+  // --lots: each lot's attribute values (lotAttributeSlots), one per DeriveOptions::lots.
+  void setLotAttributes(std::vector<std::vector<double>> slots) { lotAttrs_ = std::move(slots); }
   // Whether the last run() stopped because direct derivation could not be exact.
   bool needsExactRun() const { return inexactDirect_; }
 
@@ -182,6 +185,9 @@ class Derivation final : public QueryHost {
   const double* evalOpArgs(const ir::Op& op, const Frame& f, ArgBuffer& buf, uint32_t& n);
   [[noreturn]] void unsupported(const ir::Op& op);
 
+  // lots.cpp
+  void deriveLots(uint64_t root);
+
   // seed_plants.cpp
   struct Plant;
   void deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t root);
@@ -294,6 +300,8 @@ class Derivation final : public QueryHost {
   uint32_t ownGeometryAsset_ = UINT32_MAX;
   bool usesOcclusion_ = false;
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
+  std::vector<std::vector<double>> lotAttrs_;  // --lots: each lot's attribute slots
+  size_t lotsWithHoles_ = 0;                   // ... built on their outer ring (R028)
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
   std::vector<rt::cells::LabelledPolygon>* terminalPieces_ = nullptr;  // recordTerminals

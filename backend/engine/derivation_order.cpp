@@ -34,6 +34,12 @@ void Derivation::runSequential() {
   if (opt_.seedCount > 0)
     for (const rt::Vec3& p : marching_.densitySeeds(opt_.seedDensity, opt_.seedCount, rt::childKey(root, ~0ull)))
       starts.push_back(surface_->startScopeAt(p, nullptr));
+  if (!opt_.lots.empty()) {
+    if (!starts.empty() || surface_)
+      throw DeriveError{{}, "R022", "lots (--lots) stand on the plane: they cannot go with a surface or seeds"};
+    deriveLots(root);
+    return;
+  }
   if (starts.empty()) {
     execRoot(0, m_.axiom, surface_ ? surface_->startScope() : rt::Scope{}, rt::GeomRef{}, root, 0, 0, none.data(),
              UINT32_MAX);

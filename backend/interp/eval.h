@@ -5,9 +5,11 @@
 #pragma once
 
 #include "ir/ir.h"
+#include "runtime/derivation.h"
 #include "runtime/random.h"
 #include "runtime/scope.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,9 @@ class Evaluator {
   const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
   // The attribute slots as compiled code reads them (three per attribute).
   const double* attrData() const { return attrs_.data(); }
+  // Another set of values (a lot's, --lots) in the same slots: compiled code keeps reading
+  // them where it did.
+  void setAttrSlots(const std::vector<double>& slots) { std::copy(slots.begin(), slots.end(), attrs_.begin()); }
   const std::vector<double>& attrSlots() const { return attrs_; }
 
  private:
@@ -96,5 +101,11 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
 // parsed by the attribute's type. Throws DeriveError for an unknown name or a bad value.
 std::vector<double> attributeSlots(
     ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides);
+
+// The attribute values for each lot of `options.lots`: attributeSlots with, after --set,
+// every attr named like one of the lot's properties set to its value, and an attr
+// `lot_area` set to the lot's area. Throws DeriveError (R010) naming the lot for a value
+// that does not fit its attr.
+std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::DeriveOptions& options);
 
 }  // namespace fgsg::backend

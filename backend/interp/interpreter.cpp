@@ -12,13 +12,15 @@
 namespace fgsg::backend {
 namespace {
 
-// The module as one derivation reads it (--set may add strings to its table) and the
-// attribute slots; false with the error in `failed`.
+// The module as one derivation reads it (--set and lots may add strings to its table) and
+// the attribute slots, the whole derivation's and each lot's; false with the error in
+// `failed`.
 bool prepare(const ir::Module& module, const rt::DeriveOptions& options, ir::Module& local,
-             std::vector<double>& attrs, rt::DeriveResult& failed) {
+             std::vector<double>& attrs, std::vector<std::vector<double>>& lotAttrs, rt::DeriveResult& failed) {
   local = module;
   try {
     attrs = attributeSlots(local, options.attrOverrides);
+    lotAttrs = lotAttributeSlots(local, options);
     return true;
   } catch (const DeriveError& e) {
     failed.messages.push_back({true, e.code, e.loc.line, e.loc.col, e.message});
@@ -57,9 +59,12 @@ rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& op
   try {
     ir::Module local;
     std::vector<double> attrs;
+    std::vector<std::vector<double>> lotAttrs;
     rt::DeriveResult failed;
-    if (!prepare(module, options, local, attrs, failed)) return failed;
-    return Derivation(local, options, assets, std::move(attrs)).run();
+    if (!prepare(module, options, local, attrs, lotAttrs, failed)) return failed;
+    Derivation d(local, options, assets, std::move(attrs));
+    d.setLotAttributes(std::move(lotAttrs));
+    return d.run();
   } catch (...) {
     return escapedFailure(std::current_exception());
   }
@@ -70,18 +75,22 @@ rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& pro
   try {
     ir::Module local;
     std::vector<double> attrs;
+    std::vector<std::vector<double>> lotAttrs;
     rt::DeriveResult failed;
-    if (!prepare(module, options, local, attrs, failed)) return failed;
+    if (!prepare(module, options, local, attrs, lotAttrs, failed)) return failed;
     // Direct derivation first; where it could not be exact, the engine's own order, within
     // the same --max-seconds.
     rt::DeriveOptions timed = options;
     if (timed.startedAt == std::chrono::steady_clock::time_point{}) timed.startedAt = std::chrono::steady_clock::now();
     {
       Derivation fast(local, timed, assets, attrs, &program, true);
+      fast.setLotAttributes(lotAttrs);
       rt::DeriveResult result = fast.run();
       if (!fast.needsExactRun()) return result;
     }
-    return Derivation(local, timed, assets, std::move(attrs), &program, false).run();
+    Derivation exact(local, timed, assets, std::move(attrs), &program, false);
+    exact.setLotAttributes(std::move(lotAttrs));
+    return exact.run();
   } catch (...) {
     return escapedFailure(std::current_exception());
   }

@@ -214,7 +214,7 @@ const std::vector<Polygon3>& unitBoxFaces() {
 }
 
 Scope solidFrameOnPolygon(const Scope& polygonScope) {
-  Scope s;
+  Scope s = polygonScope;  // keeps what is not geometry: the colour
   s.axes.col(0) = polygonScope.X();
   s.axes.col(1) = polygonScope.Z();
   s.axes.col(2) = -polygonScope.Y();

@@ -6,7 +6,7 @@
  *   usage: run_library LIBRARY [--name NAME] -o OUT [--seed N] [--set name=value]...
  *            [--surface FILE] [--surface-size S] [--start x,y,z] [--repair-surface]
  *            [--collide-all] [--max-shapes N] [--max-depth N] [--max-seconds S]
- *            [--asset-dir DIR] [--quiet]
+ *            [--asset-dir DIR] [--lots FILE] [--quiet]
  *
  * Exit codes: 0 success, 1 failure (the message on stderr), 2 bad usage or a value
  * fgsg_set_option refuses. */
@@ -150,7 +150,8 @@ int main(int argc, char** argv) {
                strcmp(flag, "--max-seconds") == 0 || strcmp(flag, "--asset-dir") == 0 ||
                strcmp(flag, "--seed-points") == 0 || strcmp(flag, "--seed-density") == 0 ||
                strcmp(flag, "--seed-count") == 0 || strcmp(flag, "--march-candidates") == 0 ||
-               strcmp(flag, "--atlas-resolution") == 0 || strcmp(flag, "--march-units") == 0) {
+               strcmp(flag, "--atlas-resolution") == 0 || strcmp(flag, "--march-units") == 0 ||
+               strcmp(flag, "--lots") == 0) {
       FAIL_WITH(2, fgsg_set_option(g, flag + 2, value));
     } else {
       rc = usage("unknown option", flag);

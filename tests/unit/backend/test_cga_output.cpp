@@ -165,3 +165,60 @@ TEST_CASE("A roof on an extruded polygon stands on the prism's bottom face", "[c
   CHECK(watertight(m));
   CHECK(m.boundsMin()[1] == Approx(5));
 }
+
+namespace {
+
+rt::Lot lot(std::vector<Eigen::Vector2d> outer, std::vector<std::pair<std::string, double>> numbers,
+            std::vector<std::pair<std::string, std::string>> strings = {}) {
+  rt::Lot l;
+  l.outer = std::move(outer);
+  l.numbers = std::move(numbers);
+  l.strings = std::move(strings);
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("Lots derive the axiom on each footprint with the attrs their properties name", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  opt.lotsName = "lots.geojson";
+  // A 10 x 6 rectangle 5 high and an L (area 64, north up) 2 high; "usage" picks a colour.
+  opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {{"height", 5}, {"unused", 1}}, {{"usage", "shop"}}));
+  opt.lots.push_back(lot({{20, 0}, {30, 0}, {30, 4}, {24, 4}, {24, 10}, {20, 10}}, {{"height", 2}}));
+  const rt::DeriveResult r = test::deriveText(
+      "attr height = 1; attr usage = \"home\"; attr lot_area = 0;\n"
+      "Lot : usage == \"shop\" ~> Color(1, 0, 0) Extrude(height) Mass;\n"
+      "Lot ~> Color(0, 0, lot_area / 100) Extrude(height) Mass;",
+      opt);
+  REQUIRE(r.instances.instances.size() == 2);
+  const rt::Mesh m = assembled(r);
+  CHECK(volume(m) == Approx(60 * 5 + 64 * 2).epsilon(1e-6));
+  CHECK(watertight(m));
+  CHECK(r.instances.instances[0].color == std::array<float, 3>{1, 0, 0});
+  CHECK(r.instances.instances[1].color[2] == Approx(0.64f));
+  // North (+y) is -Z: the L's second lot lies at z from -10 to 0.
+  CHECK(m.boundsMin()[2] == Approx(-10));
+  CHECK(m.boundsMax()[2] == Approx(0));
+}
+
+TEST_CASE("A lot property that does not fit its attr is an error naming the lot", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  opt.lotsName = "lots.geojson";
+  opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}, {{"height", "tall"}}));
+  opt.lots.back().id = "A-7";
+  const rt::DeriveResult r = test::deriveText("attr height = 1; Lot ~> Extrude(height) Mass;", opt);
+  CHECK_FALSE(r.ok);
+  REQUIRE(!r.messages.empty());
+  CHECK(r.messages[0].code == "R010");
+  CHECK(r.messages[0].message == "lots.geojson: lot 1 (id \"A-7\"): property height=tall: expected a number");
+}
+
+TEST_CASE("Each lot has a random stream of its own", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  for (int k = 0; k < 2; ++k) opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {}));
+  const char* grammar = "Lot ~> Extrude(Rand(1, 100)) Mass;";
+  const rt::DeriveResult a = test::deriveText(grammar, opt), b = test::deriveText(grammar, opt);
+  REQUIRE(a.instances.instances.size() == 2);
+  CHECK(a.instances.instances[0].transform[5] != a.instances.instances[1].transform[5]);
+  CHECK(a.instances.instances[1].transform == b.instances.instances[1].transform);
+}

@@ -1,0 +1,58 @@
+// Each lot's attribute values (--lots): its properties set the attrs named like them, so a
+// grammar reads a lot's height or usage as it reads any attr.
+#include "backend/interp/eval.h"
+
+
+#include <cmath>
+#include <cstdio>
+
+namespace fgsg::backend {
+namespace {
+
+// Shoelace area of a ring (positive counter-clockwise).
+double signedArea(const std::vector<Eigen::Vector2d>& ring) {
+  double a = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const Eigen::Vector2d& p = ring[i];
+    const Eigen::Vector2d& q = ring[(i + 1) % ring.size()];
+    a += p.x() * q.y() - q.x() * p.y();
+  }
+  return a / 2;
+}
+
+std::string numberText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::DeriveOptions& options) {
+  std::vector<std::vector<double>> slots;
+  slots.reserve(options.lots.size());
+  for (const rt::Lot& lot : options.lots) {
+    std::vector<std::pair<std::string, std::string>> overrides = options.attrOverrides;
+    for (const auto& [name, value] : lot.numbers)
+      if (m.findAttr(name) >= 0) overrides.push_back({name, numberText(value)});
+    for (const auto& [name, value] : lot.strings)
+      if (m.findAttr(name) >= 0) overrides.push_back({name, value});
+    if (m.findAttr("lot_area") >= 0) {
+      double area = std::abs(signedArea(lot.outer));
+      for (const auto& hole : lot.holes) area -= std::abs(signedArea(hole));
+      overrides.push_back({"lot_area", numberText(area)});
+    }
+    try {
+      slots.push_back(attributeSlots(m, overrides));
+    } catch (const DeriveError& e) {
+      const std::string who = options.lotsName + ": lot " + std::to_string(&lot - options.lots.data() + 1) +
+                              (lot.id.empty() ? "" : " (id \"" + lot.id + "\")");
+      // "--set height=tall: expected a number" reads, for a property, "height=tall: ...".
+      const std::string what = e.message.rfind("--set ", 0) == 0 ? e.message.substr(6) : e.message;
+      throw DeriveError{e.loc, e.code, who + ": property " + what};
+    }
+  }
+  return slots;
+}
+
+}  // namespace fgsg::backend

@@ -1,0 +1,28 @@
+// A building lot: a footprint polygon on the ground with its own properties, as a GIS
+// file gives it (runtime/io/geojson_lots.h). `fgsg run --lots` derives the axiom once on
+// each (DeriveOptions::lots).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgsg::rt {
+
+// Corners in metres, x east and y north.
+struct Lot {
+  std::vector<Eigen::Vector2d> outer;               // counter-clockwise, not closed (no repeated first point)
+  std::vector<std::vector<Eigen::Vector2d>> holes;  // clockwise, not closed
+  std::string id;                                   // the feature's "id" (a number as its JSON text), else ""
+  size_t feature = 0;                               // index of the feature in the collection (0-based)
+  size_t part = 0;                                  // index of the polygon within a MultiPolygon (0 for a Polygon)
+  // The feature's properties in file order: numbers, and booleans as 0/1, in `numbers`;
+  // strings in `strings`; null, arrays and objects are left out.
+  std::vector<std::pair<std::string, double>> numbers;
+  std::vector<std::pair<std::string, std::string>> strings;
+};
+
+}  // namespace fgsg::rt
