@@ -24,7 +24,9 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
     case ir::OpKind::Footprint: {
       rt::cga::Part part;
       std::string error;
-      if (!rt::cga::footprint(st.scope, a, n, d_.arena(), part, error)) throw DeriveError{op.loc, "R002", error};
+      std::vector<Eigen::Vector2d> corners;
+      for (uint32_t k = 0; k + 1 < n; k += 2) corners.emplace_back(a[k], a[k + 1]);
+      if (!rt::cga::footprint(st.scope, corners, {}, d_.arena(), part, error)) throw DeriveError{op.loc, "R002", error};
       st.scope = part.scope;
       st.geom = part.geom;
       break;

@@ -89,11 +89,6 @@ rt::DeriveResult Derivation::run() {
       runSequential();
     result.ok = true;
     if (depthLimitHit_) result.messages.push_back(depthWarning_);
-    if (lotsWithHoles_ > 0)
-      result.messages.push_back({false, "R028", 0, 0,
-                                 opt_.lotsName + ": " + std::to_string(lotsWithHoles_) +
-                                     " lots have courtyards (holes), which are not built yet: each stands on "
-                                     "its outer ring"});
     orderDirectInstances();
     appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
     appendCurves();

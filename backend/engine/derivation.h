@@ -301,7 +301,6 @@ class Derivation final : public QueryHost {
   bool usesOcclusion_ = false;
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
   std::vector<std::vector<double>> lotAttrs_;  // --lots: each lot's attribute slots
-  size_t lotsWithHoles_ = 0;                   // ... built on their outer ring (R028)
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written
   std::vector<rt::cells::LabelledPolygon>* terminalPieces_ = nullptr;  // recordTerminals

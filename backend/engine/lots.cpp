@@ -1,8 +1,8 @@
 // --lots: a city block grown lot by lot. Each lot's footprint polygon is the axiom's
 // shape (as Footprint makes it), with the lot's attribute values and a random stream of
 // its own; a lot is derived to the end before the next starts, since its attrs hold
-// only while its shapes are derived. Polygons carry no holes yet: a lot with a courtyard
-// is built on its outer ring, and the run says so (R028).
+// only while its shapes are derived. A courtyard's hole is joined to the outline by a
+// zero-width bridge (rt::cga::footprint).
 #include "backend/engine/derivation.h"
 
 #include "runtime/cga/cga.h"
@@ -13,15 +13,19 @@ void Derivation::deriveLots(uint64_t root) {
   const double noParams = 0;
   for (size_t k = 0; k < opt_.lots.size(); ++k) {
     const rt::Lot& lot = opt_.lots[k];
-    if (!lot.holes.empty()) ++lotsWithHoles_;
     if (k < lotAttrs_.size()) eval_.setAttrSlots(lotAttrs_[k]);
     // x east, y north on the XZ plane with Y up: north is -Z, so a counter-clockwise
     // ring stays counter-clockwise seen from above.
-    std::vector<double> xz;
-    for (const Eigen::Vector2d& p : lot.outer) xz.push_back(p.x()), xz.push_back(-p.y());
+    auto onGround = [](const std::vector<Eigen::Vector2d>& ring) {
+      std::vector<Eigen::Vector2d> xz;
+      for (const Eigen::Vector2d& p : ring) xz.emplace_back(p.x(), -p.y());
+      return xz;
+    };
+    std::vector<std::vector<Eigen::Vector2d>> holes;
+    for (const auto& hole : lot.holes) holes.push_back(onGround(hole));
     rt::cga::Part part;
     std::string error;
-    if (!rt::cga::footprint(rt::Scope{}, xz.data(), xz.size(), arena_, part, error))
+    if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena_, part, error))
       throw DeriveError{{}, "R028", opt_.lotsName + ": lot " + std::to_string(k + 1) +
                                         (lot.id.empty() ? "" : " (id \"" + lot.id + "\")") + ": " + error};
     const auto index = static_cast<uint32_t>(k);

@@ -69,8 +69,11 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
 // scope's XZ plane (scope units from its origin; either orientation; a closing corner that
 // repeats the first is dropped), a Polygon facing up along the scope's Y: its scope has X
 // kept, Z = the old Y and Y = Z x X, spanning the polygon's bounding box, so Extrude and
-// Roof stand on it. Fails for fewer than three corners, no area or a self-crossing edge.
-bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena& arena, Part& out,
+// Roof stand on it. `holes` (courtyards; a GeoJSON lot's) are joined to the outline by
+// zero-width bridges. Fails for fewer than three corners, no area, a self-crossing edge,
+// a hole not strictly inside the outline or overlapping another.
+bool footprint(const Scope& scope, const std::vector<Eigen::Vector2d>& outer,
+               const std::vector<std::vector<Eigen::Vector2d>>& holes, GeometryArena& arena, Part& out,
                std::string& error);
 
 // Roof("hipped" | "gable" | "pyramid" | "shed", angle): a roof solid on the footprint the

@@ -11,7 +11,8 @@ namespace fgsg::rt::cga {
 // A box keeps its scope and gets sy = height (any box: it is re-extruded from its base).
 // A polygon becomes a prism whose scope stands on the polygon (solidFrameOnPolygon: Y is
 // the polygon's normal, so buildings on polygon footprints are Y-up like box buildings);
-// its faces are the sides in the polygon's edge order, then the top, then the bottom. A
+// its faces are the sides in the polygon's edge order (none along a courtyard's bridge),
+// then the top, then the bottom. A
 // unit-square polygon gives a Box, which is the same solid, with no arena use.
 bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena,
              Part& out, std::string& error) {
@@ -52,9 +53,12 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
   faces.reserve(n + 2);
   Polygon3 top = base;
   for (Vec3& p : top) p.y() = 1.0;
+  // A courtyard's bridge (an edge run both ways) is no wall: its two faces would be one
+  // wall seen from both sides, inside the solid.
+  const std::vector<bool> bridge = bridgeEdges(base);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
-    faces.push_back({base[i], base[j], top[j], top[i]});
+    if (!bridge[i]) faces.push_back({base[i], base[j], top[j], top[i]});
   }
   Polygon3 bottom(base.rbegin(), base.rend());
   faces.push_back(std::move(top));

@@ -1,6 +1,7 @@
 // Footprint: a shape becomes a polygon lot on the ground.
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/skeleton_roof.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,6 @@
 
 namespace fgsg::rt::cga {
 namespace {
-
-using Vec2 = Eigen::Vector2d;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -37,13 +36,13 @@ std::string pointText(const Vec2& p) {
 // normal), Y = Z x X, which runs against the old Z; its origin is the corner of the
 // bounding box at (xmin, zmax), so a corner (x, z) lies at normalised
 // ((x - xmin) / w, (zmax - z) / d). Extrude and Roof then stand solids on it Y-up.
-bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena& arena, Part& out,
-               std::string& error) {
+bool footprint(const Scope& scope, const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+               GeometryArena& arena, Part& out, std::string& error) {
   std::vector<Vec2> corners;
-  for (size_t i = 0; i + 1 < count; i += 2) {
-    const Vec2 p(xz[i], xz[i + 1]);
+  for (size_t i = 0; i < outer.size(); ++i) {
+    const Vec2& p = outer[i];
     if (!p.allFinite()) {
-      error = "Footprint: corner " + std::to_string(i / 2 + 1) + " is not a finite point";
+      error = "Footprint: corner " + std::to_string(i + 1) + " is not a finite point";
       return false;
     }
     if (corners.empty() || p != corners.back()) corners.push_back(p);
@@ -64,6 +63,9 @@ bool footprint(const Scope& scope, const double* xz, size_t count, GeometryArena
         return false;
       }
     }
+  // A courtyard: the holes joined to the outline by zero-width bridges, which Extrude,
+  // Roof and the splits understand (bridgeEdges, ringsOf).
+  if (!holes.empty() && !joinHoles(corners, holes, "Footprint: ", corners, error)) return false;
   Vec2 lo = corners[0], hi = corners[0];
   for (const Vec2& p : corners) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double w = hi.x() - lo.x(), d = hi.y() - lo.y();

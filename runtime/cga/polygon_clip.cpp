@@ -223,4 +223,63 @@ Scope solidFrameOnPolygon(const Scope& polygonScope) {
   return s;
 }
 
+namespace {
+
+bool lexLess(const Vec3& a, const Vec3& b) {
+  return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+}
+
+}  // namespace
+
+std::vector<bool> bridgeEdges(const Polygon3& pts) {
+  const std::size_t n = pts.size();
+  std::vector<std::pair<Vec3, Vec3>> edges;  // (from, to), sorted to find reverses
+  for (std::size_t i = 0; i < n; ++i) edges.emplace_back(pts[i], pts[(i + 1) % n]);
+  auto less = [](const std::pair<Vec3, Vec3>& a, const std::pair<Vec3, Vec3>& b) {
+    return lexLess(a.first, b.first) || (a.first == b.first && lexLess(a.second, b.second));
+  };
+  std::vector<std::pair<Vec3, Vec3>> sorted = edges;
+  std::sort(sorted.begin(), sorted.end(), less);
+  std::vector<bool> bridge(n, false);
+  for (std::size_t i = 0; i < n; ++i)
+    bridge[i] = std::binary_search(sorted.begin(), sorted.end(), std::make_pair(edges[i].second, edges[i].first), less);
+  return bridge;
+}
+
+std::vector<Polygon3> ringsOf(const Polygon3& pts) {
+  const std::vector<bool> bridge = bridgeEdges(pts);
+  if (std::find(bridge.begin(), bridge.end(), true) == bridge.end()) return {pts};
+  // Each ring edge left, by its start point; a ring is traced from any unused edge by
+  // following the edge that starts where the last one ends.
+  const std::size_t n = pts.size();
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!bridge[i]) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lexLess(pts[a], pts[b]); });
+  std::vector<bool> used(n, false);
+  std::vector<Polygon3> rings;
+  for (std::size_t start : order) {
+    if (used[start]) continue;
+    Polygon3 ring;
+    for (std::size_t e = start; e < n && !used[e];) {
+      used[e] = true;
+      ring.push_back(pts[e]);
+      const Vec3& end = pts[(e + 1) % n];
+      auto it = std::lower_bound(order.begin(), order.end(), end,
+                                 [&](std::size_t a, const Vec3& p) { return lexLess(pts[a], p); });
+      e = n;
+      for (; it != order.end() && pts[*it] == end; ++it)
+        if (!used[*it]) {
+          e = *it;
+          break;
+        }
+    }
+    if (ring.size() >= 3) rings.push_back(std::move(ring));
+  }
+  std::sort(rings.begin(), rings.end(), [](const Polygon3& a, const Polygon3& b) {
+    return newellNormal(a).norm() > newellNormal(b).norm();
+  });
+  return rings;
+}
+
 }  // namespace fgsg::rt::cga

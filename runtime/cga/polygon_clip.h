@@ -54,6 +54,16 @@ void renormalise(LocalGeometry& g, int axis, double lo, double hi);
 Vec3 newellNormal(const Vec3* pts, std::size_t count);
 inline Vec3 newellNormal(const Polygon3& p) { return newellNormal(p.data(), p.size()); }
 
+// Whether each edge (pts[i] to pts[i + 1]) is a zero-width bridge joining a hole to its
+// outline: an edge the polygon also runs along the other way. Points are compared
+// exactly: a bridge's ends are the same points both ways.
+std::vector<bool> bridgeEdges(const Polygon3& pts);
+
+// A polygon's rings with its bridges taken out, each in the polygon's direction: the
+// ring of the largest area first (the outline), then the holes. A polygon without
+// bridges is its one ring.
+std::vector<Polygon3> ringsOf(const Polygon3& pts);
+
 // Ear clipping of a planar polygon, counter-clockwise about its Newell normal; concave
 // polygons (L-shaped footprints) and the zero-width bridges of clipped concave polygons
 // are accepted. Appends index triples into `pts`, each counter-clockwise like the polygon.

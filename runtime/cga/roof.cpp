@@ -38,17 +38,19 @@ SkeletonRoofKind skeletonKind(RoofKind kind) {
   return SkeletonRoofKind::Shed;
 }
 
-// The footprint a roof stands on, as (x, z) corners in the roof scope's units, when it is
-// not the scope's whole rectangle: a polygon's own corners (at normalised (x, 0, 1 - y) of
-// the solid frame), or a solid's bottom face. Empty: the rectangle.
-std::vector<Vec2> footprintCorners(const Scope& roofScope, const GeomRef& geom, const GeometryArena& arena) {
-  std::vector<Vec2> corners;
+// The footprint a roof stands on, as (x, z) rings in the roof scope's units, when it is
+// not the scope's whole rectangle: a polygon's own corners (at normalised (x, 0, 1 - y)
+// of the solid frame), or a solid's bottom face; a courtyard's bridges split them into
+// the outline and its holes. False: the rectangle.
+bool footprintRings(const Scope& roofScope, const GeomRef& geom, const GeometryArena& arena,
+                    std::vector<Vec2>& outer, std::vector<std::vector<Vec2>>& holes) {
   const double w = roofScope.S.x(), d = roofScope.S.z();
+  Polygon3 ground;
   if (geom.kind == GeomKind::Polygon) {
-    if (isUnitSquare(arena.polygon(geom), geom.count)) return corners;
+    if (isUnitSquare(arena.polygon(geom), geom.count)) return false;
     for (uint32_t i = 0; i < geom.count; ++i) {
       const Vec3& p = arena.polygon(geom)[i];
-      corners.emplace_back(p.x() * w, (1.0 - p.y()) * d);
+      ground.emplace_back(p.x() * w, 0.0, (1.0 - p.y()) * d);
     }
   } else if (geom.kind == GeomKind::Polyhedron) {
     // An extruded prism's bottom: the one face lying flat at y = 0, looking down.
@@ -56,11 +58,21 @@ std::vector<Vec2> footprintCorners(const Scope& roofScope, const GeomRef& geom, 
       bool flat = true;
       for (const Vec3& p : f) flat &= std::abs(p.y()) <= kPlaneTol;
       if (!flat || !(newellNormal(f).y() < 0)) continue;
-      if (!corners.empty()) return {};  // several bottoms: stand on the rectangle
-      for (const Vec3& p : f) corners.emplace_back(p.x() * w, p.z() * d);
+      if (!ground.empty()) return false;  // several bottoms: stand on the rectangle
+      for (const Vec3& p : f) ground.emplace_back(p.x() * w, 0.0, p.z() * d);
     }
   }
-  return corners;
+  if (ground.empty()) return false;
+  const std::vector<Polygon3> rings = ringsOf(ground);
+  auto plan = [](const Polygon3& ring) {
+    std::vector<Vec2> xz;
+    for (const Vec3& p : ring) xz.emplace_back(p.x(), p.z());
+    return xz;
+  };
+  outer = plan(rings[0]);
+  holes.clear();
+  for (size_t r = 1; r < rings.size(); ++r) holes.push_back(plan(rings[r]));
+  return true;
 }
 
 // The roof in scope units on the w x d rectangle (x along X, z along Z), height h. Every
@@ -131,14 +143,16 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     error = m.str();
     return false;
   }
-  std::vector<Vec2> corners = footprintCorners(out.scope, geom, arena);
-  if (corners.empty() && kind == RoofKind::Shed) corners = {{0, 0}, {w, 0}, {w, d}, {0, d}};
+  std::vector<Vec2> outer;
+  std::vector<std::vector<Vec2>> holes;
+  bool onPolygon = footprintRings(out.scope, geom, arena, outer, holes);
+  if (!onPolygon && kind == RoofKind::Shed) outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
   std::vector<Polygon3> faces;
   double h = 0.0;
-  if (corners.empty()) {
+  if (!onPolygon) {
     h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
     faces = roofFaces(kind, w, d, h);
-  } else if (!skeletonRoof(corners, {}, skeletonKind(kind), angleDeg, faces, h, error)) {
+  } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error)) {
     return false;
   }
   if (!(h > 0.0)) {

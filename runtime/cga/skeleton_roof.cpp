@@ -584,4 +584,18 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
   return true;
 }
 
+bool joinHoles(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+               const std::string& what, std::vector<Vec2>& joined, std::string& error) {
+  Footprint fp;
+  std::vector<int> merged;
+  if (!loadFootprint(outer, holes, fp, error) || !bridgeHoles(fp, merged)) {
+    if (error.empty()) error = "Roof: the holes could not be joined to the outline";
+    error = what + error.substr(std::string("Roof: ").size());
+    return false;
+  }
+  joined.clear();
+  for (int v : merged) joined.emplace_back(fp.point(v).x(), -fp.point(v).y());  // plan (x, -z) back to (x, z)
+  return true;
+}
+
 }  // namespace fgsg::rt::cga

@@ -65,4 +65,12 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
                   SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
                   double& height, std::string& error, std::vector<int>* faceEdges = nullptr);
 
+// A footprint with holes (a courtyard) as one polygon, (x, z) points counter-clockwise
+// seen from above: each hole joined to the outline by a zero-width bridge that the
+// polygon runs along once each way, as the roof's bottom face is built. The rings are
+// checked as skeletonRoof checks them; false with `error` (its "Roof: " replaced by
+// `what`) when one is not sound.
+bool joinHoles(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+               const std::string& what, std::vector<Vec2>& joined, std::string& error);
+
 }  // namespace fgsg::rt::cga

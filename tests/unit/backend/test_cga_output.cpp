@@ -222,3 +222,35 @@ TEST_CASE("Each lot has a random stream of its own", "[cga][lots]") {
   CHECK(a.instances.instances[0].transform[5] != a.instances.instances[1].transform[5]);
   CHECK(a.instances.instances[1].transform == b.instances.instances[1].transform);
 }
+
+TEST_CASE("A courtyard lot is built with its hole: walls inside and out, a roof around it", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}));
+  opt.lots.back().holes.push_back({{3, 3}, {3, 7}, {7, 7}, {7, 3}});
+  const rt::Mesh mass = assembled(test::deriveText("Lot ~> Extrude(3) Mass;", opt));
+  CHECK(volume(mass) == Approx((100 - 16) * 3).epsilon(1e-6));
+  CHECK(watertight(mass));
+  const rt::DeriveResult walls = test::deriveText("Lot ~> Extrude(3) Comp(\"sidefaces\"){ Wall };", opt);
+  CHECK(walls.instances.instances.size() == 8);
+  CHECK(area(assembled(walls)) == Approx((40 + 16) * 3).epsilon(1e-6));
+  // Hipped around the courtyard: the ring is 3 wide, so the ridge is 1.5 tan(30) high
+  // and the volume 63 tan(30) (tests/unit/runtime/test_skeleton_roof.cpp).
+  const double t = std::tan(30 * M_PI / 180);
+  const rt::Mesh roof =
+      assembled(test::deriveText("Lot ~> Extrude(3) Comp(\"top\"){ Roof(\"hipped\", 30){ RoofSolid } };", opt));
+  CHECK(volume(roof) == Approx(63 * t).epsilon(1e-6));
+  CHECK(watertight(roof));
+  CHECK(roof.boundsMax()[1] == Approx(3 + 1.5 * t).epsilon(1e-6));
+}
+
+TEST_CASE("A lot whose hole crosses its outline is an error naming the lot", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  opt.lotsName = "lots.geojson";
+  opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}));
+  opt.lots.back().holes.push_back({{8, 3}, {8, 7}, {12, 7}, {12, 3}});
+  const rt::DeriveResult r = test::deriveText("Lot ~> Extrude(3) Mass;", opt);
+  CHECK_FALSE(r.ok);
+  REQUIRE(!r.messages.empty());
+  CHECK(r.messages[0].code == "R028");
+  CHECK_THAT(r.messages[0].message, Contains("lots.geojson: lot 1: Footprint: hole 0 is not strictly inside"));
+}
