@@ -77,6 +77,9 @@ struct Successor {
   SourceRange range;
   bool epsilon = false;  // written as ε / epsilon / NIL: explicitly empty
   std::vector<Item> items;
+  // A body part's `front:` (Comp's labelled parts); empty when it has none.
+  std::string selector;
+  SourceRange selectorRange;
 };
 
 // ---------------------------------------------------------------- rules

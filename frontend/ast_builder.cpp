@@ -338,6 +338,10 @@ Successor AstBuilder::buildBodyPart(P::BodyPartContext* ctx) {
   Successor s;
   s.range = rangeOf(ctx);
   s.epsilon = ctx->EPSILON() != nullptr;
+  if (ctx->selector) {
+    s.selector = text(ctx->selector);
+    s.selectorRange = rangeOf(ctx->selector);
+  }
   for (auto* item : ctx->item()) appendItem(item, s.items);
   return s;
 }

@@ -113,14 +113,18 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
-          "faces", "sidefaces", "top", "bottom", "front", "back", "left", "right",
-          "edges", "sideedges", "topedges", "bottomedges"};
+          "faces", "f", "sidefaces", "top", "bottom", "front", "back", "left", "right",
+          "edges", "e", "sideedges", "topedges", "bottomedges"};
       std::string sel = stringArg(0, "selector");
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
-                         "\" (faces, sidefaces, top, bottom, front, back, left, right, edges, "
+                         "\" (faces or f, sidefaces, top, bottom, front, back, left, right, edges or e, "
                          "sideedges, topedges, bottomedges)");
+      else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
+               (sel == "e" || sel.find("edges") != std::string::npos))
+        diags_.error("E028", item.args[0]->range,
+                     "labelled parts take faces: write `Comp(\"f\"){ front: A | side: B }`, not \"" + sel + "\"");
       break;
     }
     case CommandId::Footprint:
@@ -203,7 +207,26 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
 }
 
 void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
+  // The faces a labelled part of Comp may name (rt::cga::faceSelectorMask).
+  static const std::set<std::string> kPartFaces = {"front", "back", "left", "right", "top", "bottom", "side", "all"};
   const size_t parts = item.body.size();
+  size_t labelled = 0;
+  for (const auto& part : item.body) {
+    if (part.selector.empty()) continue;
+    ++labelled;
+    if (cmd.id != CommandId::Comp)
+      diags_.error("E018", part.selectorRange,
+                   "a labelled part '" + part.selector + ":' belongs to Comp (`Comp(\"f\"){ front: A | side: B }`), "
+                   "not to '" + item.name + "'");
+    else if (!kPartFaces.count(part.selector))
+      diags_.error("E028", part.selectorRange,
+                   "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, side, all)");
+  }
+  if (cmd.id == CommandId::Comp && labelled > 0) {
+    if (labelled != parts)
+      diags_.error("E018", item.range, "label every part of 'Comp' or none: `Comp(\"f\"){ front: A | side: B }`");
+    return;
+  }
   switch (cmd.body) {
     case BodyRule::None:
       if (item.hasBody)

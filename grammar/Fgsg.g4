@@ -133,7 +133,8 @@ callArgs : '(' ( expr ( ',' expr )* )? ')' ;
 
 body : '{' bodyPart ( ( '|' | ',' ) bodyPart )* '}' ;
 
-bodyPart : EPSILON | item+ ;
+// A part may name the components it takes: `Comp("f"){ front: A | side: B }`.
+bodyPart : ( selector=ID ':' )? ( EPSILON | item+ ) ;
 
 // ------------------------------------------------------------- expressions
 

@@ -145,6 +145,9 @@ struct Op {
   std::vector<Expr> args;
   std::vector<Size> sizes;
   std::vector<Block> bodies;
+  // Comp with labelled parts (`Comp("f"){ front: A | side: B }`): each body's label, a
+  // string id; empty when the parts are not labelled.
+  std::vector<uint32_t> partLabels;
   std::string name;  // Unsupported: the construct; also the source spelling of commands
   std::string why;   // Unsupported: what it waits for
 };

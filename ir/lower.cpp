@@ -288,6 +288,8 @@ class Lowerer {
       case CommandId::Comp:
         op.kind = OpKind::Comp;
         op.str = m_.internString(constString(*item.args[0]));
+        for (const auto& part : item.body)
+          if (!part.selector.empty()) op.partLabels.push_back(m_.internString(part.selector));
         break;
       case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
       case CommandId::Footprint: op.kind = OpKind::Footprint; allArgs(0); break;

@@ -338,7 +338,10 @@ class Printer {
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;
       case OpKind::Color: text = withArgs("color"); break;
-      case OpKind::Comp: text = "comp " + stringLit(op.str); break;
+      case OpKind::Comp:
+        text = "comp " + stringLit(op.str);
+        for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
+        break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Footprint: text = withArgs("footprint"); break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;

@@ -454,7 +454,11 @@ class Verifier {
         break;
       case OpKind::Comp:
         stringId(op.str);
-        expectBodies(op, 1);
+        if (op.partLabels.empty()) expectBodies(op, 1);
+        else if (op.partLabels.size() != op.bodies.size())
+          problem(std::to_string(op.partLabels.size()) + " part labels for " + std::to_string(op.bodies.size()) +
+                  " bodies");
+        for (uint32_t label : op.partLabels) stringId(label);
         numArgs(op, r, 0);
         break;
       case OpKind::Extrude: numArgs(op, r, 1); break;

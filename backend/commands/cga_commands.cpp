@@ -59,9 +59,18 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error);
   }
   if (!ok) throw DeriveError{op.loc, "R002", error};
+  // Labelled parts of Comp: each face goes to the first part whose label names it.
+  std::vector<unsigned> labelMasks;
+  for (uint32_t label : op.partLabels) labelMasks.push_back(rt::cga::faceSelectorMask(d_.module().strings[label]));
   for (size_t i = 0; i < parts.size(); ++i) {
     if (parts[i].empty) continue;
-    d_.runBody(op, op.kind == ir::OpKind::Subdiv ? i : 0, parts[i].scope, parts[i].geom, st, ex, f);
+    size_t body = op.kind == ir::OpKind::Subdiv ? i : 0;
+    if (!labelMasks.empty()) {
+      body = 0;
+      while (body < labelMasks.size() && !(labelMasks[body] & parts[i].faceClass)) ++body;
+      if (body == labelMasks.size()) continue;  // no part takes this face
+    }
+    d_.runBody(op, body, parts[i].scope, parts[i].geom, st, ex, f);
     if (ex.culled) return;
   }
 }

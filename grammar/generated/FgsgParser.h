@@ -714,9 +714,12 @@ public:
 
   class  BodyPartContext : public antlr4::ParserRuleContext {
   public:
+    antlr4::Token *selector = nullptr;;
     BodyPartContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *EPSILON();
+    antlr4::tree::TerminalNode *COLON();
+    antlr4::tree::TerminalNode *ID();
     std::vector<ItemContext *> item();
     ItemContext* item(size_t i);
 

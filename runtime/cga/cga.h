@@ -26,7 +26,13 @@ struct Part {
   Scope scope;
   GeomRef geom;
   bool empty = false;  // a part whose geometry clipped away entirely (it is skipped)
+  unsigned faceClass = 0;  // a Comp face: which face it is (faceSelectorMask's bits)
 };
+
+// The faces a Comp face selector ("front", "sidefaces", "faces" ...) or the name of a
+// labelled part (`Comp("f"){ front: A | side: B | all: C }`: also "side" and "all")
+// takes, as a mask to test against Part::faceClass; 0 for any other name.
+unsigned faceSelectorMask(const std::string& name);
 
 // Subdiv("X", s1, s2, ...): cuts the scope along `axis` (0 X, 1 Y, 2 Z) into one part
 // per size, in order. Relative sizes share the length left by the others in proportion
@@ -46,7 +52,7 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
             const std::vector<double>& sizes, GeometryArena& arena, std::vector<Part>& out,
             std::string& error);
 
-// Comp("selector"): the components of a box or polyhedron. Face selectors: "faces",
+// Comp("selector"): the components of a box or polyhedron. Face selectors: "faces" ("f"),
 // "sidefaces", "top", "bottom", "front" (+Z), "back" (-Z), "left" (-X), "right" (+X)
 // (top is +Y: buildings stand on the XZ plane, CGA's convention). Each face becomes a
 // Polygon part whose scope has X along the face's lowest horizontal edge (or its first

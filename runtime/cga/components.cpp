@@ -40,7 +40,8 @@ bool parseSelector(const std::string& s, Selector& sel) {
     bool edges;
     unsigned mask;
   } kSelectors[] = {
-      {"faces", false, kAllFaces},  {"sidefaces", false, kSide},
+      {"faces", false, kAllFaces},  {"f", false, kAllFaces},     {"sidefaces", false, kSide},
+      {"e", true, kAllEdges},
       {"top", false, kTop},         {"bottom", false, kBottom},
       {"front", false, kFront},     {"back", false, kBack},
       {"left", false, kLeft},       {"right", false, kRight},
@@ -225,6 +226,13 @@ std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef
   return out;
 }
 
+unsigned faceSelectorMask(const std::string& name) {
+  if (name == "side") return kSide;
+  if (name == "all") return kAllFaces;
+  Selector sel;
+  return parseSelector(name, sel) && !sel.edges ? sel.mask : 0;
+}
+
 // `out` is replaced by the selected components, in the order of the solid's faces (a box:
 // front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
 // is a solid with one face: its own; its edges are its boundary.
@@ -247,8 +255,10 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   if (!sel.edges) {
     GeomRef unitSquare{GeomKind::Polygon, 0, 0};
     for (const WorldFace& f : faces)
-      if (classifyFace(f.normal, scope) & sel.mask)
+      if (const unsigned cls = classifyFace(f.normal, scope); cls & sel.mask) {
         out.push_back(facePart(f, scope, arena, unitSquare));
+        out.back().faceClass = cls;
+      }
     return true;
   }
 

@@ -254,3 +254,17 @@ TEST_CASE("A lot whose hole crosses its outline is an error naming the lot", "[c
   CHECK(r.messages[0].code == "R028");
   CHECK_THAT(r.messages[0].message, Contains("lots.geojson: lot 1: Footprint: hole 0 is not strictly inside"));
 }
+
+TEST_CASE("Comp with labelled parts sends each face to the first part that names it", "[cga][output]") {
+  // 10 x 3 x 6: front 30, back 30, left and right 18 each, top 60 (bottom: no part).
+  const rt::DeriveResult r = test::deriveText(
+      "Lot ~> S(10, 3, 6) Comp(\"f\"){ front: Front | top: Top | side: Side | all: Rest };");
+  std::map<std::string, double> areaOf;
+  std::map<std::string, int> countOf;
+  for (const auto& inst : r.instances.instances) ++countOf[r.instances.symbols[inst.symbol]];
+  CHECK(countOf["Front"] == 1);
+  CHECK(countOf["Top"] == 1);
+  CHECK(countOf["Side"] == 3);  // back, left, right: front went to the first part
+  CHECK(countOf["Rest"] == 1);  // the bottom
+  CHECK(area(assembled(r)) == Approx(2 * (30 + 18 + 60)).epsilon(1e-6));
+}

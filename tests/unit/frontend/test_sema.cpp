@@ -116,6 +116,18 @@ TEST_CASE("In a CGA grammar a leaf outputs its own geometry, so it gets no W001"
   CHECK(has(lsystem, "W001"));
 }
 
+TEST_CASE("Labelled parts belong to Comp, name faces, and label every part", "[sema]") {
+  CHECK(analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ front: A | side: B | top: C | all: D };").ok);
+  auto wrongCommand = analyse("Lot ~> Subdiv(\"X\", 1r, 1r){ left: A | right: B };");
+  CHECK(has(wrongCommand, "E018", 1, 29));
+  auto unknown = analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ street: A };");
+  CHECK(has(unknown, "E028", 1, 30));
+  auto some = analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ front: A | B };");
+  CHECK(has(some, "E018"));
+  auto edges = analyse("Lot ~> S(4, 3, 2) Comp(\"edges\"){ top: A };");
+  CHECK(has(edges, "E028"));
+}
+
 TEST_CASE("Footprint takes pairs of coordinates", "[sema]") {
   CHECK(analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3) Mass;").ok);
   auto odd = analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3, 1) Mass;");
