@@ -295,9 +295,9 @@ class Derivation final : public QueryHost {
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
-  // instances of this asset.
+  // instances of these assets (outputLeaf).
   bool leavesOutput_ = false;
-  uint32_t ownGeometryAsset_ = UINT32_MAX;
+  uint32_t ownGeometryAsset_ = UINT32_MAX, leafCubeAsset_ = UINT32_MAX, leafQuadAsset_ = UINT32_MAX;
   bool usesOcclusion_ = false;
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
   std::vector<std::vector<double>> lotAttrs_;  // --lots: each lot's attribute slots

@@ -4,6 +4,7 @@
 #include "backend/engine/derivation.h"
 
 #include "runtime/cga/cga.h"
+#include "runtime/cga/polygon_clip.h"
 #include "runtime/float_range.h"
 
 #include <algorithm>
@@ -45,6 +46,10 @@ void Derivation::initOutput() {
   if (leavesOutput_) {
     ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back(rt::kOwnGeometryAsset);
+    leafCubeAsset_ = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back("cube");
+    leafQuadAsset_ = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back("quad");
   }
   segmentSymbol_ = static_cast<uint32_t>(out_.symbols.size());
   out_.symbols.push_back("F");
@@ -117,10 +122,17 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
 // A CGA leaf: the shape's own geometry (a split piece, a face, a solid) as an instance
 // over its scope, so it is coloured, checked and counted like any other.
 void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
+  // The commonest leaves share a built-in mesh over their scope: a whole box is the cube,
+  // a rectangle (a facade's split piece) the quad. Only other shapes build their own.
+  const uint32_t slots = m_.symbols[symbol].slotCount;
+  if (st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
+    return placeInstance(leafCubeAsset_, st.scope, symbol, params, slots, loc);
+  if (st.geom.kind == rt::GeomKind::Polygon && rt::cga::isUnitSquare(arena_.polygon(st.geom), st.geom.count))
+    return placeInstance(leafQuadAsset_, st.scope, symbol, params, slots, loc);
   rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
   if (mesh.indices.empty()) return;  // an edge, a point
   const size_t before = out_.instances.size();
-  placeInstance(ownGeometryAsset_, st.scope, symbol, params, m_.symbols[symbol].slotCount, loc);
+  placeInstance(ownGeometryAsset_, st.scope, symbol, params, slots, loc);
   if (out_.instances.size() == before) return;
   out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
   out_.geometries.push_back(std::move(mesh));
