@@ -127,6 +127,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                      "labelled parts take faces: write `Comp(\"f\"){ front: A | side: B }`, not \"" + sel + "\"");
       break;
     }
+    case CommandId::Offset: numArgs(0, false); break;
     case CommandId::Footprint:
       if (n % 2 != 0)
         diags_.error("E016", item.range,
@@ -214,14 +215,20 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   for (const auto& part : item.body) {
     if (part.selector.empty()) continue;
     ++labelled;
-    if (cmd.id != CommandId::Comp)
+    if (cmd.id == CommandId::Offset) {
+      if (part.selector != "inside" && part.selector != "border")
+        diags_.error("E028", part.selectorRange, "unknown part '" + part.selector + ":' of Offset (inside, border)");
+    } else if (cmd.id != CommandId::Comp) {
       diags_.error("E018", part.selectorRange,
-                   "a labelled part '" + part.selector + ":' belongs to Comp (`Comp(\"f\"){ front: A | side: B }`), "
-                   "not to '" + item.name + "'");
-    else if (!kPartFaces.count(part.selector))
+                   "a labelled part '" + part.selector + ":' belongs to Comp (`Comp(\"f\"){ front: A | side: B }`) "
+                   "or Offset, not to '" + item.name + "'");
+    } else if (!kPartFaces.count(part.selector)) {
       diags_.error("E028", part.selectorRange,
                    "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, side, all)");
+    }
   }
+  if (cmd.id == CommandId::Offset && labelled != parts)
+    diags_.error("E018", item.range, "label every part of 'Offset': " + std::string(cmd.signature));
   if (cmd.id == CommandId::Comp && labelled > 0) {
     if (labelled != parts)
       diags_.error("E018", item.range, "label every part of 'Comp' or none: `Comp(\"f\"){ front: A | side: B }`");

@@ -81,7 +81,7 @@ void Analyzer::checkReachability() {
         [&](const Item& item) {
           if (item.kind != ItemKind::Call || isShapeItem(item, res_)) return;
           if (item.name == "Synthesize" || item.name == "Evolve") synthesizes = true;
-          for (const char* name : {"Subdiv", "Repeat", "Comp", "Extrude", "Roof", "Footprint"})
+          for (const char* name : {"Subdiv", "Repeat", "Comp", "Extrude", "Roof", "Footprint", "Offset"})
             if (item.name == name) cga = true;
           if (item.name == "Cells" && item.body.size() == 2)
             for (const auto& c : item.body[0].items) baseParts.push_back(&c);

@@ -70,7 +70,8 @@ bool isCgaGeometryOp(OpKind kind) {
     case OpKind::Comp:
     case OpKind::Extrude:
     case OpKind::Roof:
-    case OpKind::Footprint: return true;
+    case OpKind::Footprint:
+    case OpKind::Offset: return true;
     default: return false;
   }
 }

@@ -98,6 +98,7 @@ enum class OpKind : uint8_t {
   Comp,          // str = selector id; bodies: one, applied to every component
   Extrude,       // args[0] height
   Footprint,     // args x1 z1 x2 z2 ...: the shape becomes this polygon in its scope's XZ plane
+  Offset,        // args[0] distance; bodies labelled `inside` / `border` (partLabels)
   Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
   Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
   Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
@@ -145,8 +146,9 @@ struct Op {
   std::vector<Expr> args;
   std::vector<Size> sizes;
   std::vector<Block> bodies;
-  // Comp with labelled parts (`Comp("f"){ front: A | side: B }`): each body's label, a
-  // string id; empty when the parts are not labelled.
+  // Comp and Offset with labelled parts (`Comp("f"){ front: A | side: B }`,
+  // `Offset(2){ inside: A | border: B }`): each body's label, a string id; empty when the
+  // parts are not labelled.
   std::vector<uint32_t> partLabels;
   std::string name;  // Unsupported: the construct; also the source spelling of commands
   std::string why;   // Unsupported: what it waits for

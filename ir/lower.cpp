@@ -293,6 +293,11 @@ class Lowerer {
         break;
       case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
       case CommandId::Footprint: op.kind = OpKind::Footprint; allArgs(0); break;
+      case CommandId::Offset:
+        op.kind = OpKind::Offset;
+        allArgs(0);
+        for (const auto& part : item.body) op.partLabels.push_back(m_.internString(part.selector));
+        break;
       case CommandId::Roof:
         op.kind = OpKind::Roof;
         op.str = m_.internString(constString(*item.args[0]));

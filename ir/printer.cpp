@@ -344,6 +344,10 @@ class Printer {
         break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
       case OpKind::Footprint: text = withArgs("footprint"); break;
+      case OpKind::Offset:
+        text = withArgs("offset");
+        for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
+        break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
       case OpKind::Lock: text = "lock"; break;
       case OpKind::Line: text = withArgs("line"); break;

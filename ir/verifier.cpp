@@ -28,6 +28,7 @@ const char* opName(OpKind k) {
     case OpKind::Comp: return "comp";
     case OpKind::Extrude: return "extrude";
     case OpKind::Footprint: return "footprint";
+    case OpKind::Offset: return "offset";
     case OpKind::Roof: return "roof";
     case OpKind::Lock: return "lock";
     case OpKind::Line: return "line";
@@ -462,6 +463,13 @@ class Verifier {
         numArgs(op, r, 0);
         break;
       case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Offset:
+        numArgs(op, r, 1);
+        if (op.partLabels.size() != op.bodies.size() || op.bodies.empty())
+          problem(std::to_string(op.partLabels.size()) + " part labels for " + std::to_string(op.bodies.size()) +
+                  " bodies");
+        for (uint32_t label : op.partLabels) stringId(label);
+        break;
       case OpKind::Footprint:
         expectBodies(op, 0);
         if (op.args.size() < 6 || op.args.size() % 2 != 0)

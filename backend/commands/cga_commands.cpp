@@ -7,7 +7,7 @@ namespace fgsg::backend {
 
 std::vector<ir::OpKind> CgaCommands::kinds() const {
   using K = ir::OpKind;
-  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Roof};
+  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Offset, K::Roof};
 }
 
 void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
@@ -29,6 +29,22 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       if (!rt::cga::footprint(st.scope, corners, {}, d_.arena(), part, error)) throw DeriveError{op.loc, "R002", error};
       st.scope = part.scope;
       st.geom = part.geom;
+      break;
+    }
+    case ir::OpKind::Offset: {
+      std::vector<uint32_t> insideBodies, borderBodies;
+      for (uint32_t k = 0; k < op.partLabels.size(); ++k)
+        (d_.module().strings[op.partLabels[k]] == "inside" ? insideBodies : borderBodies).push_back(k);
+      std::vector<rt::cga::Part> inside, border;
+      std::string error;
+      if (!rt::cga::offset(st.scope, st.geom, a[0], !borderBodies.empty(), d_.arena(), inside, border, error))
+        throw DeriveError{op.loc, "R002", error};
+      for (const auto& [pieces, bodies] : {std::pair{&inside, &insideBodies}, std::pair{&border, &borderBodies}})
+        for (const rt::cga::Part& piece : *pieces)
+          for (uint32_t k : *bodies) {
+            d_.runBody(op, k, piece.scope, piece.geom, st, ex, f);
+            if (ex.culled) return;
+          }
       break;
     }
     case ir::OpKind::Roof: {

@@ -82,6 +82,15 @@ bool footprint(const Scope& scope, const std::vector<Eigen::Vector2d>& outer,
                const std::vector<std::vector<Eigen::Vector2d>>& holes, GeometryArena& arena, Part& out,
                std::string& error);
 
+// Offset(d){ inside: A | border: B } (CGA's setback): the polygon (a Footprint, a lot,
+// a Comp face; a flat footprint box as its rectangle) shrunk by `distance` from every edge
+// by its straight skeleton — one inside piece per part it falls into, none when it
+// vanishes — and, `wantBorder`, the band between: the polygon with the inside pieces as
+// holes (joined by bridges) and, around a courtyard, the band between each inside
+// piece's hole and the polygon's holes within it. Every part keeps the polygon's scope.
+bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantBorder, GeometryArena& arena,
+            std::vector<Part>& inside, std::vector<Part>& border, std::string& error);
+
 // Roof("hipped" | "gable" | "pyramid" | "shed", angle): a roof solid on the footprint the
 // scope stands on: a box's XZ rectangle at its base (the ridge along the longer side, the
 // slopes over the longer sides at `angle` degrees), a polygon (rising along its normal)

@@ -268,3 +268,48 @@ TEST_CASE("Comp with labelled parts sends each face to the first part that names
   CHECK(countOf["Rest"] == 1);  // the bottom
   CHECK(area(assembled(r)) == Approx(2 * (30 + 18 + 60)).epsilon(1e-6));
 }
+
+TEST_CASE("Offset sets a lot's inside back from every edge and leaves the border band", "[cga][output]") {
+  // 10 x 6 set back by 1: inside 8 x 4, border 60 - 32.
+  const rt::DeriveResult r =
+      test::deriveText("Lot ~> S(10, 0, 6) Offset(1){ inside: Inside | border: Border };");
+  std::map<std::string, double> areaOf;
+  for (size_t i = 0; i < r.instances.instances.size(); ++i) {
+    rt::DeriveResult one = r;
+    one.instances.instances = {r.instances.instances[i]};
+    areaOf[r.instances.symbols[r.instances.instances[i].symbol]] += area(assembled(one));
+  }
+  CHECK(areaOf["Inside"] == Approx(32).epsilon(1e-6));
+  CHECK(areaOf["Border"] == Approx(28).epsilon(1e-6));
+  // An L with legs 4 wide set back by 1.5 keeps a 1-wide L: (10 - 3) x 1 + (10 - 4) x 1... by area.
+  const rt::Mesh l = assembled(test::deriveText(
+      "Lot ~> Footprint(0, 0, 10, 0, 10, 4, 4, 4, 4, 10, 0, 10) Offset(1.5){ inside: Building };"));
+  CHECK(area(l) == Approx(7 * 1 + 6 * 1).epsilon(1e-6));
+  // Set back further than the lot is deep: no inside at all.
+  CHECK(test::deriveText("Lot ~> S(10, 0, 6) Offset(4){ inside: A };").instances.instances.empty());
+}
+
+TEST_CASE("The inside of an Offset is a footprint: it extrudes to a closed building", "[cga][output]") {
+  const rt::Mesh m = assembled(test::deriveText("Lot ~> S(10, 0, 6) Offset(1){ inside: Extrude(5) Mass };"));
+  CHECK(volume(m) == Approx(8 * 4 * 5).epsilon(1e-6));
+  CHECK(watertight(m));
+  CHECK(m.boundsMin()[0] == Approx(1));
+  CHECK(m.boundsMin()[2] == Approx(1));
+}
+
+TEST_CASE("Offset on a courtyard lot: inside and border bands add up to the lot", "[cga][lots]") {
+  rt::DeriveOptions opt;
+  opt.lots.push_back(lot({{0, 0}, {20, 0}, {20, 20}, {0, 20}}, {}));
+  opt.lots.back().holes.push_back({{8, 8}, {8, 12}, {12, 12}, {12, 8}});
+  // Set back by 2: the inside is 16 x 16 minus the 8 x 8 grown court, 192; the border
+  // is the outer band 400 - 256 and the court's band 64 - 16.
+  const rt::DeriveResult r = test::deriveText("Lot ~> Offset(2){ inside: Inside | border: Border };", opt);
+  double inside = 0, border = 0;
+  for (size_t i = 0; i < r.instances.instances.size(); ++i) {
+    rt::DeriveResult one = r;
+    one.instances.instances = {r.instances.instances[i]};
+    (r.instances.symbols[r.instances.instances[i].symbol] == "Inside" ? inside : border) += area(assembled(one));
+  }
+  CHECK(inside == Approx(256 - 64).epsilon(1e-6));
+  CHECK(border == Approx(144 + 48).epsilon(1e-6));
+}

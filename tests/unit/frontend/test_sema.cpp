@@ -128,6 +128,12 @@ TEST_CASE("Labelled parts belong to Comp, name faces, and label every part", "[s
   CHECK(has(edges, "E028"));
 }
 
+TEST_CASE("Offset takes labelled inside and border parts", "[sema]") {
+  CHECK(analyse("Lot ~> S(10, 0, 6) Offset(1){ inside: A | border: B };").ok);
+  CHECK(has(analyse("Lot ~> S(10, 0, 6) Offset(1){ A };"), "E018"));
+  CHECK(has(analyse("Lot ~> S(10, 0, 6) Offset(1){ middle: A };"), "E028"));
+}
+
 TEST_CASE("Footprint takes pairs of coordinates", "[sema]") {
   CHECK(analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3) Mass;").ok);
   auto odd = analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3, 1) Mass;");
