@@ -1,7 +1,5 @@
 #include "ir/ir.h"
 
-#include <functional>
-
 namespace fgsg::ir {
 
 const char* typeName(Type t) {
@@ -76,20 +74,23 @@ bool isCgaGeometryOp(OpKind kind) {
   }
 }
 
-bool leavesOutputGeometry(const Module& m) {
-  if (m.mode == DeriveMode::Parallel) return false;
-  const std::function<bool(const Block&)> uses = [&](const Block& b) {
+bool anyOp(const Module& m, const std::function<bool(const Op&)>& pred) {
+  const std::function<bool(const Block&)> inBlock = [&](const Block& b) {
     for (const Op& op : b) {
-      if (isCgaGeometryOp(op.kind)) return true;
+      if (pred(op)) return true;
       for (const Block& body : op.bodies)
-        if (uses(body)) return true;
+        if (inBlock(body)) return true;
     }
     return false;
   };
   for (const Rule& r : m.rules)
     for (const Alternative& alt : r.alternatives)
-      if (uses(alt.ops)) return true;
-  return uses(m.axiom);
+      if (inBlock(alt.ops)) return true;
+  return inBlock(m.axiom);
+}
+
+bool leavesOutputGeometry(const Module& m) {
+  return m.mode != DeriveMode::Parallel && anyOp(m, [](const Op& op) { return isCgaGeometryOp(op.kind); });
 }
 
 }  // namespace fgsg::ir

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -311,6 +312,9 @@ struct Module {
   int findSymbol(const std::string& name) const;
   int findAttr(const std::string& name) const;
 };
+
+// Whether any op of the grammar (its rules, its axiom, their bodies) satisfies `pred`.
+bool anyOp(const Module& m, const std::function<bool(const Op&)>& pred);
 
 // CGA's geometry commands: they give shapes geometry of their own (a split piece, a face,
 // a solid, a footprint polygon).

@@ -222,8 +222,7 @@ class Derivation final : public QueryHost {
   void orderDirectInstances();
 
   // grammar_facts.cpp
-  template <class Pred>
-  bool moduleUses(Pred pred) const;
+  bool moduleUses(const std::function<bool(const ir::Op&)>& pred) const { return ir::anyOp(m_, pred); }
   bool moduleUsesQuery(ir::Query q) const;
   void findEagerSymbols();
   bool canOrderDirectInstances() const;
@@ -328,22 +327,5 @@ class Derivation final : public QueryHost {
   CellsCommand cells_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
-
-// Whether any op of the grammar satisfies `pred`.
-template <class Pred>
-bool Derivation::moduleUses(Pred pred) const {
-  std::function<bool(const ir::Block&)> inBlock = [&](const ir::Block& b) {
-    for (const auto& op : b) {
-      if (pred(op)) return true;
-      for (const auto& body : op.bodies)
-        if (inBlock(body)) return true;
-    }
-    return false;
-  };
-  for (const auto& r : m_.rules)
-    for (const auto& alt : r.alternatives)
-      if (inBlock(alt.ops)) return true;
-  return inBlock(m_.axiom);
-}
 
 }  // namespace fgsg::backend
