@@ -27,7 +27,7 @@ namespace fgsg::cli {
 namespace {
 
 const char* kCommandList =
-    ":derive [N]  :seed N  :set name=value  :load FILE  :save FILE  :export FILE  "
+    ":derive [N]  :seed N  :set name=value  :lots [FILE]  :load FILE  :save FILE  :export FILE  "
     ":stats  :ir RULE  :rules  :reset  :help  :quit";
 
 const char* kReplHelp = R"(Type declarations and rules to add them to the session grammar: a rule for a
@@ -38,6 +38,8 @@ next line (an empty line ends it).
   :derive [N]       derive from the axiom (N: --max-depth) and print the statistics
   :seed N           the random seed of later derivations (default 1)
   :set name=value   override an attribute, like fgsg run --set
+  :lots [FILE]      derive once per lot of a GeoJSON file, like fgsg run --lots
+                    (no FILE: back to one derivation)
   :load FILE        add the statements of a .fgsg file
   :save FILE        write the session grammar as a .fgsg file
   :export FILE      derive and write the mesh (.glb, .obj or .ply by extension)
@@ -193,6 +195,14 @@ class Repl {
       std::string error;
       if (!session_.setAttribute(trim(arg.substr(0, eq)), trim(arg.substr(eq + 1)), error))
         return fail(error);
+      return true;
+    }
+    if (name == ":lots") {
+      std::string error;
+      if (!session_.setLots(arg, error)) return fail(error);
+      std::cout << (arg.empty() ? std::string("no lots: one derivation")
+                                : std::to_string(session_.lotCount()) + " lots from " + arg)
+                << "\n";
       return true;
     }
     if (name == ":load") {

@@ -11,6 +11,7 @@
 #include "frontend/parse.h"
 #include "ir/printer.h"
 #include "runtime/assemble.h"
+#include "runtime/io/geojson_lots.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/random.h"
 
@@ -142,6 +143,8 @@ bool Session::derive(uint32_t maxDepth, rt::DeriveResult& result, size_t& triang
   rt::DeriveOptions opt;
   opt.seed = seed_;
   opt.attrOverrides = overrides_;
+  opt.lots = lots_;
+  opt.lotsName = lotsName_;
   if (maxDepth > 0) opt.maxDepth = maxDepth;
   rt::AssetLibrary assets;
   for (const char* dir : {".", "assets"}) {
@@ -207,6 +210,15 @@ bool Session::setAttribute(const std::string& name, const std::string& value, st
   return true;
 }
 
+bool Session::setLots(const std::string& path, std::string& error) {
+  std::vector<rt::Lot> lots;
+  size_t skipped = 0;
+  if (!path.empty() && !rt::readGeoJsonLots(path, lots, skipped, error)) return false;
+  lots_ = std::move(lots);
+  lotsName_ = path;
+  return true;
+}
+
 void Session::reset() {
   statements_.clear();
   module_.reset();
@@ -214,6 +226,8 @@ void Session::reset() {
   priority_ = 0;
   seed_ = 1;
   overrides_.clear();
+  lots_.clear();
+  lotsName_.clear();
 }
 
 }  // namespace fgsg::cli::repl

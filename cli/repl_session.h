@@ -60,6 +60,10 @@ class Session {
 
   bool setAttribute(const std::string& name, const std::string& value, std::string& error);
   void setSeed(uint64_t seed) { seed_ = seed; }
+  // :lots FILE: the axiom derives once per lot of a GeoJSON file (as fgsg run --lots);
+  // an empty path goes back to one derivation. False with the file's problem in `error`.
+  bool setLots(const std::string& path, std::string& error);
+  size_t lotCount() const { return lots_.size(); }
   // The JIT (default) compiles the session's current text for every :derive (from the
   // object cache when it is unchanged), so a redefined rule never runs stale code.
   void setEngine(backend::Engine engine) { engine_ = engine; }
@@ -91,6 +95,8 @@ class Session {
   // cache run while the user types.
   std::shared_ptr<backend::jit::Jit> jit_;
   std::vector<std::pair<std::string, std::string>> overrides_;
+  std::vector<rt::Lot> lots_;
+  std::string lotsName_;
 };
 
 }  // namespace fgsg::cli::repl
