@@ -25,4 +25,13 @@ struct Lot {
   std::vector<std::pair<std::string, std::string>> strings;
 };
 
+// How messages name a lot: as the GeoJSON reader names features, "lots.geojson:
+// feature 6 (id "L0007")", with the polygon of a MultiPolygon when it is not the first.
+inline std::string lotName(const std::string& file, const Lot& lot) {
+  std::string name = file + ": feature " + std::to_string(lot.feature);
+  if (!lot.id.empty()) name += " (id \"" + lot.id + "\")";
+  if (lot.part > 0) name += ", polygon " + std::to_string(lot.part);
+  return name;
+}
+
 }  // namespace fgsg::rt

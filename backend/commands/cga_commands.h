@@ -1,6 +1,7 @@
 // CGA's shape operations (Müller et al. 2006): Subdiv, Repeat and Comp split the scope
 // (or its geometry) into parts, each running a body; Footprint makes the shape a polygon
-// lot; Offset sets its inside back from its edges; Extrude gives a footprint height; Roof builds a roof over it and runs its body on the roof. The geometry lives in the
+// lot; Offset sets its inside back from its edges; Extrude gives a footprint height; Roof
+// builds a roof over it and runs its body on the roof. The geometry lives in the
 // derivation's arena (runtime/cga/).
 #pragma once
 

@@ -26,8 +26,7 @@ void Derivation::deriveLots(uint64_t root) {
     rt::cga::Part part;
     std::string error;
     if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena_, part, error))
-      throw DeriveError{{}, "R028", opt_.lotsName + ": lot " + std::to_string(k + 1) +
-                                        (lot.id.empty() ? "" : " (id \"" + lot.id + "\")") + ": " + error};
+      throw DeriveError{{}, "R028", rt::lotName(opt_.lotsName, lot) + ": " + error};
     const auto index = static_cast<uint32_t>(k);
     execRoot(0, m_.axiom, part.scope, part.geom, rt::childKey(root, index), 0, index, &noParams, UINT32_MAX);
     deriveWaitingShapes();

@@ -2,7 +2,6 @@
 // grammar reads a lot's height or usage as it reads any attr.
 #include "backend/interp/eval.h"
 
-
 #include <cmath>
 #include <cstdio>
 
@@ -45,11 +44,9 @@ std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::Deri
     try {
       slots.push_back(attributeSlots(m, overrides));
     } catch (const DeriveError& e) {
-      const std::string who = options.lotsName + ": lot " + std::to_string(&lot - options.lots.data() + 1) +
-                              (lot.id.empty() ? "" : " (id \"" + lot.id + "\")");
       // "--set height=tall: expected a number" reads, for a property, "height=tall: ...".
       const std::string what = e.message.rfind("--set ", 0) == 0 ? e.message.substr(6) : e.message;
-      throw DeriveError{e.loc, e.code, who + ": property " + what};
+      throw DeriveError{e.loc, e.code, rt::lotName(options.lotsName, lot) + ": property " + what};
     }
   }
   return slots;

@@ -31,6 +31,6 @@ expect 2 'no-such.geojson' -- "$fgsg" run examples/city.fgsg --lots "$tmp/no-suc
 # A lot property of the wrong type for its attr: the lot is named, exit 1.
 printf '{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": "urn:fgsg:local-metres"}}, "features": [{"type": "Feature", "id": "L9", "properties": {"height": "tall"},
   "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]]}}]}' >"$tmp/tall.geojson"
-expect 1 'lot 1 \(id "L9"\): property height=tall: expected a number' -- \
+expect 1 'feature 0 \(id "L9"\): property height=tall: expected a number' -- \
   "$fgsg" run examples/city.fgsg --lots "$tmp/tall.geojson" -o "$tmp/x.glb"
 echo "ok: city lots"

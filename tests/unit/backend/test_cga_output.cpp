@@ -210,7 +210,7 @@ TEST_CASE("A lot property that does not fit its attr is an error naming the lot"
   CHECK_FALSE(r.ok);
   REQUIRE(!r.messages.empty());
   CHECK(r.messages[0].code == "R010");
-  CHECK(r.messages[0].message == "lots.geojson: lot 1 (id \"A-7\"): property height=tall: expected a number");
+  CHECK(r.messages[0].message == "lots.geojson: feature 0 (id \"A-7\"): property height=tall: expected a number");
 }
 
 TEST_CASE("Each lot has a random stream of its own", "[cga][lots]") {
@@ -252,7 +252,7 @@ TEST_CASE("A lot whose hole crosses its outline is an error naming the lot", "[c
   CHECK_FALSE(r.ok);
   REQUIRE(!r.messages.empty());
   CHECK(r.messages[0].code == "R028");
-  CHECK_THAT(r.messages[0].message, Contains("lots.geojson: lot 1: Footprint: hole 0 is not strictly inside"));
+  CHECK_THAT(r.messages[0].message, Contains("lots.geojson: feature 0: Footprint: hole 0 is not strictly inside"));
 }
 
 TEST_CASE("Comp with labelled parts sends each face to the first part that names it", "[cga][output]") {
