@@ -34,17 +34,17 @@ within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_parallel.fgsg" --engine int
   --max-shapes 1000000000 -o "$tmp/parallel.glb"
 grep -qE 'wrote .*\(([1-9][0-9]*) instances' "$tmp/err" || fail "the parallel result kept no instances"
 
-# Assembly: 16 383 spheres (15.7 M triangles, about a second to assemble) derive in a
-# tenth of a second; --max-seconds 0.3 stops the assembly at 1.1 x 0.3 s and writes the
-# first instances, the --instances file listing the same ones. (The parallel case above:
+# Assembly: 16 383 tori (25 M triangles, half a second or more to assemble) derive in a
+# few hundredths of a second; --max-seconds 0.2 stops the assembly at 1.1 x 0.2 s and
+# writes the first instances, the --instances file listing the same ones. (The parallel case above:
 # a derivation stopped at its limit still has 0.1 x S to assemble what it kept.) Writing
 # is not bounded, but the few million triangles kept take well under a second.
-within 5 0 'warning\[R004\]: assembly stopped after 0\.30+ s \(--max-seconds\): the first [0-9]+ of 16383 instances are written' -- \
-  "$fgsg" run "$inputs/limits_assembly_spheres.fgsg" --max-seconds 0.3 -o "$tmp/spheres.glb" --instances "$tmp/spheres.json"
+within 5 0 'warning\[R004\]: assembly stopped after 0\.20+ s \(--max-seconds\): the first [0-9]+ of 16383 instances are written' -- \
+  "$fgsg" run "$inputs/limits_assembly_tori.fgsg" --max-seconds 0.2 -o "$tmp/tori.glb" --instances "$tmp/tori.json"
 kept=$(grep -oE 'the first [0-9]+ of' "$tmp/err" | grep -oE '[0-9]+')
 [ "$kept" -gt 0 ] && [ "$kept" -lt 16383 ] || fail "assembly kept $kept of 16383 instances"
 grep -qE "wrote .*\($kept instances" "$tmp/err" || fail "the mesh does not hold the $kept instances kept"
-[ "$(grep -o '"asset"' "$tmp/spheres.json" | wc -l)" -eq "$kept" ] || fail "--instances does not list the $kept instances kept"
+[ "$(grep -o '"asset"' "$tmp/tori.json" | wc -l)" -eq "$kept" ] || fail "--instances does not list the $kept instances kept"
 
 # Field design: nothing can be derived without the field, so an error at its declaration.
 within 4 1 'limits_smooth_forever\.fgsg:3:1: error\[R021\]: field F1: designing it did not end within --max-seconds 1' -- \
