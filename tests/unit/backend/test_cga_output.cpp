@@ -67,6 +67,17 @@ bool watertight(const rt::Mesh& m) {
   return !edges.empty();
 }
 
+// The output's area per symbol: each instance assembled on its own.
+std::map<std::string, double> areaBySymbol(const rt::DeriveResult& r) {
+  std::map<std::string, double> areas;
+  for (const rt::Instance& inst : r.instances.instances) {
+    rt::DeriveResult one = r;
+    one.instances.instances = {inst};
+    areas[r.instances.symbols[inst.symbol]] += area(assembled(one));
+  }
+  return areas;
+}
+
 }  // namespace
 
 TEST_CASE("A 10 by 6 footprint extruded 3 outputs a closed box of volume 180", "[cga][output]") {
@@ -259,7 +270,6 @@ TEST_CASE("Comp with labelled parts sends each face to the first part that names
   // 10 x 3 x 6: front 30, back 30, left and right 18 each, top 60 (bottom: no part).
   const rt::DeriveResult r = test::deriveText(
       "Lot ~> S(10, 3, 6) Comp(\"f\"){ front: Front | top: Top | side: Side | all: Rest };");
-  std::map<std::string, double> areaOf;
   std::map<std::string, int> countOf;
   for (const auto& inst : r.instances.instances) ++countOf[r.instances.symbols[inst.symbol]];
   CHECK(countOf["Front"] == 1);
@@ -273,14 +283,9 @@ TEST_CASE("Offset sets a lot's inside back from every edge and leaves the border
   // 10 x 6 set back by 1: inside 8 x 4, border 60 - 32.
   const rt::DeriveResult r =
       test::deriveText("Lot ~> S(10, 0, 6) Offset(1){ inside: Inside | border: Border };");
-  std::map<std::string, double> areaOf;
-  for (size_t i = 0; i < r.instances.instances.size(); ++i) {
-    rt::DeriveResult one = r;
-    one.instances.instances = {r.instances.instances[i]};
-    areaOf[r.instances.symbols[r.instances.instances[i].symbol]] += area(assembled(one));
-  }
-  CHECK(areaOf["Inside"] == Approx(32).epsilon(1e-6));
-  CHECK(areaOf["Border"] == Approx(28).epsilon(1e-6));
+  const std::map<std::string, double> areaOf = areaBySymbol(r);
+  CHECK(areaOf.at("Inside") == Approx(32).epsilon(1e-6));
+  CHECK(areaOf.at("Border") == Approx(28).epsilon(1e-6));
   // An L with legs 4 wide set back by 1.5 keeps a 1-wide L: (10 - 3) x 1 + (10 - 4) x 1... by area.
   const rt::Mesh l = assembled(test::deriveText(
       "Lot ~> Footprint(0, 0, 10, 0, 10, 4, 4, 4, 4, 10, 0, 10) Offset(1.5){ inside: Building };"));
@@ -304,12 +309,7 @@ TEST_CASE("Offset on a courtyard lot: inside and border bands add up to the lot"
   // Set back by 2: the inside is 16 x 16 minus the 8 x 8 grown court, 192; the border
   // is the outer band 400 - 256 and the court's band 64 - 16.
   const rt::DeriveResult r = test::deriveText("Lot ~> Offset(2){ inside: Inside | border: Border };", opt);
-  double inside = 0, border = 0;
-  for (size_t i = 0; i < r.instances.instances.size(); ++i) {
-    rt::DeriveResult one = r;
-    one.instances.instances = {r.instances.instances[i]};
-    (r.instances.symbols[r.instances.instances[i].symbol] == "Inside" ? inside : border) += area(assembled(one));
-  }
-  CHECK(inside == Approx(256 - 64).epsilon(1e-6));
-  CHECK(border == Approx(144 + 48).epsilon(1e-6));
+  const std::map<std::string, double> areaOf = areaBySymbol(r);
+  CHECK(areaOf.at("Inside") == Approx(256 - 64).epsilon(1e-6));
+  CHECK(areaOf.at("Border") == Approx(144 + 48).epsilon(1e-6));
 }
