@@ -90,6 +90,7 @@ class Analyzer {
   // The start symbol and reachability (sema_reachability.cpp).
   void checkStart();
   void checkReachability();
+  std::string nearName(const std::string& name) const;
 
   const Program& prog_;
   SemaResult& res_;

@@ -6,6 +6,8 @@
 
 #include "frontend/builtins.h"
 
+#include <algorithm>
+#include <cctype>
 #include <functional>
 #include <vector>
 
@@ -40,6 +42,38 @@ void Analyzer::checkStart() {
     return;
   }
   res_.startSymbol = first.predecessor.name;
+}
+
+namespace {
+
+// Whether one edit (a letter changed, added or dropped, or two neighbours swapped) or a
+// change of case turns a into b.
+bool oneEditApart(const std::string& a, const std::string& b) {
+  if (a == b) return false;
+  if (a.size() == b.size()) {
+    size_t first = 0;
+    while (a[first] == b[first]) ++first;
+    size_t last = a.size() - 1;
+    while (a[last] == b[last]) --last;
+    if (first == last) return true;
+    if (last == first + 1 && a[first] == b[last] && a[last] == b[first]) return true;
+    return std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
+  }
+  const std::string& shorter = a.size() < b.size() ? a : b;
+  const std::string& longer = a.size() < b.size() ? b : a;
+  if (longer.size() != shorter.size() + 1) return false;
+  size_t i = 0;
+  while (i < shorter.size() && shorter[i] == longer[i]) ++i;
+  return std::equal(shorter.begin() + i, shorter.end(), longer.begin() + i + 1);
+}
+
+}  // namespace
+
+// The name of a symbol with rules one edit away from `name`, if any.
+std::string Analyzer::nearName(const std::string& name) const {
+  for (const auto& other : res_.symbols)
+    if (!other.rules.empty() && oneEditApart(name, other.name)) return other.name;
+  return "";
 }
 
 void Analyzer::checkReachability() {
@@ -97,10 +131,17 @@ void Analyzer::checkReachability() {
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");
-    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si] && !(cga && res_.mode != "parallel"))
-      diags_.warning("W001", s.firstUse,
-                     "'" + s.name + "' has no rule: it stays a terminal shape and places no "
-                     "geometry");
+    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si]) {
+      if (!(cga && res_.mode != "parallel"))
+        diags_.warning("W001", s.firstUse,
+                       "'" + s.name + "' has no rule: it stays a terminal shape and places no "
+                       "geometry");
+      else if (const std::string near = nearName(s.name); !near.empty())
+        // A CGA leaf is meant to have no rule, unless its name is a slip for one that has.
+        diags_.warning("W001", s.firstUse,
+                       "'" + s.name + "' has no rule: it is a leaf and outputs its own geometry; did you mean '" +
+                           near + "'?");
+    }
   }
 }
 

@@ -114,6 +114,13 @@ TEST_CASE("In a CGA grammar a leaf outputs its own geometry, so it gets no W001"
   CHECK_FALSE(has(cga, "W001"));
   auto lsystem = analyse("derive parallel 2;\nLot ~> S(10, 0, 6) Leaf;");
   CHECK(has(lsystem, "W001"));
+  // A leaf whose name is one slip from a symbol with rules is still pointed out.
+  auto slip = analyse("Lot ~> S(10, 0, 6) Extrude(3) Comp(\"sidefaces\"){ Facde };\nFacade ~> Wall;");
+  CHECK(has(slip, "W001", 1, 50));
+  auto swapped = analyse("Lot ~> S(10, 0, 6) Extrude(3) Comp(\"sidefaces\"){ Fcaade };\nFacade ~> Wall;");
+  CHECK(has(swapped, "W001"));
+  auto cased = analyse("Lot ~> S(10, 0, 6) Extrude(3) Comp(\"sidefaces\"){ facade };\nFacade ~> Wall;");
+  CHECK(has(cased, "W001"));
 }
 
 TEST_CASE("Labelled parts belong to Comp, name faces, and label every part", "[sema]") {
