@@ -5,13 +5,16 @@
 #pragma once
 
 #include "ir/ir.h"
-#include "runtime/derivation.h"
 #include "runtime/random.h"
 #include "runtime/scope.h"
 
 #include <algorithm>
 #include <string>
 #include <vector>
+
+namespace fgsg::rt {
+struct DeriveOptions;
+}
 
 namespace fgsg::backend {
 

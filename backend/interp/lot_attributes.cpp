@@ -2,6 +2,8 @@
 // grammar reads a lot's height or usage as it reads any attr.
 #include "backend/interp/eval.h"
 
+#include "runtime/derivation.h"
+
 #include <cmath>
 #include <cstdio>
 
