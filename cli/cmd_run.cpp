@@ -38,6 +38,7 @@ struct RunOptions {
   std::string instances;
   bool stats = false;
   bool quiet = false;
+  size_t lotsSkipped = 0;  // --lots: geometries other than polygons, passed over
   backend::Engine engine = backend::Engine::Jit;
   rt::DeriveOptions derive;
 };
@@ -87,11 +88,7 @@ RunOptions parseRunOptions(const Args& args) {
     } else if (f == "--lots") {
       o.derive.lotsName = r.value(f);
       std::string error;
-      size_t skipped = 0;
-      if (!rt::readGeoJsonLots(o.derive.lotsName, o.derive.lots, skipped, error)) throw UsageError{error};
-      if (skipped > 0)
-        std::cerr << "fgsg: " << o.derive.lotsName << ": " << skipped
-                  << " geometries that are not polygons were passed over\n";
+      if (!rt::readGeoJsonLots(o.derive.lotsName, o.derive.lots, o.lotsSkipped, error)) throw UsageError{error};
     } else if (f == "--seed-density") {
       o.derive.seedDensity = r.value(f);
       if (o.derive.seedDensity.empty()) throw UsageError{"--seed-density needs a texture name"};
@@ -172,6 +169,10 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
     }
     opt.derive.surfaceOverride = surface.lexically_normal().string();
   }
+  if (opt.lotsSkipped > 0 && !opt.quiet)
+    std::cerr << "fgsg run: " << opt.derive.lotsName << ": " << opt.lotsSkipped
+              << (opt.lotsSkipped == 1 ? " geometry that is not a polygon was" : " geometries that are not polygons were")
+              << " passed over\n";
   auto compiled = compileFile(opt.file, !opt.quiet);
   if (!compiled) return 1;
   if (!compiled->module.surface.present && opt.derive.surfaceOverride.empty() &&

@@ -18,6 +18,15 @@ instances=$(awk '$1 == "instances" {print $2}' "$tmp/stats")
 "$fgsg" run examples/city.fgsg --lots "$lots" --seed 3 -q -o "$tmp/s3.obj" || fail "seed 3: exit $?"
 cmp -s "$tmp/i.obj" "$tmp/s3.obj" && fail "another seed gave the same city"
 
+# Geometries other than polygons are passed over, and said so (not with --quiet).
+printf '{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": "urn:fgsg:local-metres"}}, "features": [
+  {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [1, 2]}},
+  {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]]}}]}' >"$tmp/point.geojson"
+expect 0 'point.geojson: 1 geometry that is not a polygon was passed over' -- \
+  "$fgsg" run examples/city.fgsg --lots "$tmp/point.geojson" -o "$tmp/p.glb"
+"$fgsg" run examples/city.fgsg --lots "$tmp/point.geojson" -q -o "$tmp/p.glb" 2>"$tmp/quiet" || fail "--quiet: exit $?"
+grep -q "passed over" "$tmp/quiet" && fail "--quiet still says the point was passed over"
+
 # Broken lots: located errors, exit 2, nothing written.
 printf '{"type": "FeatureCollection", "features": [{"type": "Feature", "id": "bad", "properties": {},
   "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 1], [1, 0], [0, 1], [0, 0]]]}}]}' >"$tmp/bowtie.geojson"
