@@ -3,23 +3,13 @@
 #include "backend/interp/eval.h"
 
 #include "runtime/derivation.h"
+#include "runtime/planar.h"
 
 #include <cmath>
 #include <cstdio>
 
 namespace fgsg::backend {
 namespace {
-
-// Shoelace area of a ring (positive counter-clockwise).
-double signedArea(const std::vector<Eigen::Vector2d>& ring) {
-  double a = 0;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Eigen::Vector2d& p = ring[i];
-    const Eigen::Vector2d& q = ring[(i + 1) % ring.size()];
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return a / 2;
-}
 
 std::string numberText(double v) {
   char text[32];
@@ -39,8 +29,8 @@ std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::Deri
     for (const auto& [name, value] : lot.strings)
       if (m.findAttr(name) >= 0) overrides.push_back({name, value});
     if (m.findAttr("lot_area") >= 0) {
-      double area = std::abs(signedArea(lot.outer));
-      for (const auto& hole : lot.holes) area -= std::abs(signedArea(hole));
+      double area = std::abs(rt::twiceRingArea(lot.outer)) / 2;
+      for (const auto& hole : lot.holes) area -= std::abs(rt::twiceRingArea(hole)) / 2;
       overrides.push_back({"lot_area", numberText(area)});
     }
     try {

@@ -25,21 +25,6 @@ bool fansTurnOnce(const ChartMesh& chart, const std::vector<Vec2>& uv) {
   return true;
 }
 
-// Whether closed segments pq and rs share a point.
-bool segmentsMeet(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
-  const double o1 = twiceSignedArea(p, q, r), o2 = twiceSignedArea(p, q, s);
-  const double o3 = twiceSignedArea(r, s, p), o4 = twiceSignedArea(r, s, q);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-    return true;
-  // Touching: an end on the other segment.
-  auto within = [](const Vec2& a, const Vec2& b, const Vec2& c) {  // c on line ab: between?
-    return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
-           std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
-  };
-  return (o1 == 0 && within(p, q, r)) || (o2 == 0 && within(p, q, s)) ||
-         (o3 == 0 && within(r, s, p)) || (o4 == 0 && within(r, s, q));
-}
-
 // The boundary: no two edges that are not neighbours along it meet. Edges are binned into
 // a grid of cells about an edge long.
 bool boundaryIsSimple(const ChartMesh& chart, const std::vector<Vec2>& uv) {

@@ -2,6 +2,7 @@
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/skeleton_roof.h"
+#include "runtime/planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,20 +10,6 @@
 
 namespace fgsg::rt::cga {
 namespace {
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// Whether segments ab and cd share a point (touching counts).
-bool segmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-  auto onSegment = [](const Vec2& p, const Vec2& q, const Vec2& r, double side) {
-    return side == 0 && std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) &&
-           std::min(p.y(), q.y()) <= r.y() && r.y() <= std::max(p.y(), q.y());
-  };
-  return onSegment(a, b, c, d1) || onSegment(a, b, d, d2) || onSegment(c, d, a, d3) || onSegment(c, d, b, d4);
-}
 
 std::string pointText(const Vec2& p) {
   std::ostringstream m;

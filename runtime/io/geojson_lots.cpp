@@ -2,6 +2,7 @@
 #include "runtime/io/geojson_lots.h"
 
 #include "runtime/io/read_input.h"
+#include "runtime/planar.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -40,7 +41,11 @@ std::string fmt(double v) {
   return s.str();
 }
 
-std::string fmt(const Eigen::Vector2d& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
+std::string fmt(const Eigen::Vector2d& p) {
+  std::ostringstream s;
+  s << std::setprecision(12) << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
 
 const char* typeName(const Json& j) {
   switch (j.type()) {
@@ -315,13 +320,6 @@ void project(std::vector<Pending>& pending, bool degrees) {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// Twice the signed area (positive counter-clockwise), about the first point for precision.
-double doubleArea(const std::vector<Eigen::Vector2d>& ring) {
-  double sum = 0;
-  for (size_t i = 1; i + 1 < ring.size(); ++i) sum += cross(ring[i] - ring[0], ring[i + 1] - ring[0]);
-  return sum;
-}
-
 double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
@@ -447,7 +445,7 @@ Lot finish(Pending& p) {
     const Ring& ring = p.rings[r];
     Eigen::AlignedBox2d box;
     for (const Eigen::Vector2d& q : ring.xy) box.extend(q);
-    if (std::abs(doubleArea(ring.xy)) <= 2 * tolerance * box.sizes().maxCoeff())
+    if (std::abs(twiceRingArea(ring.xy)) <= 2 * tolerance * box.sizes().maxCoeff())
       fail(p.place + ", " + ringName(r) + ": zero area (all its points on one line, from " + point(ring, 0) +
            ")");
   }
@@ -457,7 +455,7 @@ Lot finish(Pending& p) {
     std::vector<Eigen::Vector2d>& xy = p.rings[r].xy;
     // Outer rings counter-clockwise, holes clockwise, whatever the file had; the first
     // point stays first.
-    if ((doubleArea(xy) > 0) != (r == 0)) std::reverse(xy.begin() + 1, xy.end());
+    if ((twiceRingArea(xy) > 0) != (r == 0)) std::reverse(xy.begin() + 1, xy.end());
     if (r == 0) lot.outer = std::move(xy);
     else lot.holes.push_back(std::move(xy));
   }
