@@ -25,6 +25,9 @@ struct Instance {
   // A leaf shape's own geometry (CGA): index into InstanceList::geometries, drawn instead
   // of the asset (then kOwnGeometryAsset) and mapped by `transform` like one.
   uint32_t geometry = UINT32_MAX;
+  // Texture("img.png"): index into InstanceList::textures of the image drawn on it with the
+  // mesh's texture coordinates; UINT32_MAX: none.
+  uint32_t texture = UINT32_MAX;
 };
 
 // The asset name of instances that draw a shape's own geometry (Instance::geometry).
@@ -56,6 +59,8 @@ struct InstanceList {
   std::vector<CurveSegment> curves;  // smooth terminals' paths (Instance::curve)
   // Leaf shapes' own geometry (Instance::geometry), each in its shape's unit box.
   std::vector<Mesh> geometries;
+  // The images of Texture commands (Instance::texture), as paths the derivation found.
+  std::vector<std::string> textures;
 };
 
 }  // namespace fgsg::rt

@@ -8,9 +8,19 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace fgsg::rt {
+
+// Where a textured stretch of triangles starts (CGA's Texture): the triangles from
+// `firstTriangle` up to the next run's first use the image `texture` (an index into
+// Mesh::textures), or none when it is -1. A textured triangle's colour is the image at its
+// texture coordinates times its vertex colours, as glTF's baseColorTexture x COLOR_0.
+struct TextureRun {
+  uint32_t firstTriangle = 0;
+  int32_t texture = -1;
+};
 
 struct Mesh {
   // MeshArray (runtime/mesh_array.h): resize leaves new elements uninitialised.
@@ -19,11 +29,21 @@ struct Mesh {
   MeshArray<float> colors;       // r g b per vertex in [0,1]; empty when none
   MeshArray<float> texcoords;    // u v per vertex (v up); empty when none
   MeshArray<uint32_t> indices;   // three per triangle, counter-clockwise = front
+  // The image files textured triangles use (paths, PNG or JPEG) and the runs that say which
+  // triangles use which, in triangle order, the first starting at triangle 0. No runs: no
+  // triangle is textured (and no texture is listed).
+  std::vector<std::string> textures;
+  std::vector<TextureRun> textureRuns;
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return indices.size() / 3; }
   bool empty() const { return indices.empty(); }
   bool hasTexcoords() const { return !texcoords.empty() && texcoords.size() == 2 * vertexCount(); }
+  bool textured() const { return !textureRuns.empty(); }
+  // The triangles [first, end) of run `r`.
+  uint32_t runEnd(size_t r) const {
+    return r + 1 < textureRuns.size() ? textureRuns[r + 1].firstTriangle : uint32_t(triangleCount());
+  }
 
   std::array<float, 3> boundsMin() const;
   std::array<float, 3> boundsMax() const;
