@@ -32,6 +32,8 @@ const CommandInfo kCommands[] = {
     {CommandId::Roof, "Roof", 2, 2, BodyRule::One, "Roof(\"hipped\", angle){ roof }", nullptr},
     {CommandId::Center, "Center", 1, 1, BodyRule::None, "Center(\"xyz\")", nullptr},
     {CommandId::Color, "Color", 1, 3, BodyRule::None, "Color(r, g, b) or Color(\"#rrggbb\")", nullptr},
+    {CommandId::Texture, "Texture", 1, 3, BodyRule::None,
+     "Texture(\"image.png\") or Texture(\"image.png\", tileWidth, tileHeight)", nullptr},
     {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},

@@ -10,7 +10,7 @@ namespace fgsg::frontend {
 enum class CommandId {
   Translate, Rotate, RotateX, RotateY, RotateZ, RotateNormal, Scale,
   Instance, InstanceCollide, InstanceMerge,
-  Subdiv, Repeat, Comp, Extrude, Footprint, Offset, Roof, Lock, Center, Color,
+  Subdiv, Repeat, Comp, Extrude, Footprint, Offset, Roof, Lock, Center, Color, Texture,
   Forward, Move,  // turtle F and f written as identifiers
   Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
   BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators

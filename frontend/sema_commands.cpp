@@ -111,6 +111,16 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                      "a colour is written \"#rrggbb\" (six hex digits, as \"#8c3b2e\"), not \"" + text + "\"");
       break;
     }
+    case CommandId::Texture: {
+      const std::string file = stringArg(0, "image file");
+      if (stringOk && file.empty()) diags_.error("E017", item.args[0]->range, "'Texture' needs an image file name");
+      if (n == 2)
+        diags_.error("E016", item.range,
+                     "'Texture' takes the image alone (one image over the scope) or with both tile sizes: " +
+                         std::string(cmd.signature));
+      numArgs(1, false);
+      break;
+    }
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
           "faces", "f", "sidefaces", "top", "bottom", "front", "back", "left", "right",

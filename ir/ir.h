@@ -107,6 +107,8 @@ enum class OpKind : uint8_t {
   Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
   Center,        // index = axes mask (1 X, 2 Y, 4 Z): centre the scope in the successor's first scope
   Color,         // args r, g, b: the colour of the instances placed from this scope on (clamped to 0..1)
+  Texture,       // str = image file; args tile width, height (none: the scope's X and Y sizes): the image the
+                 // leaves output from this scope on are textured with, projected from this scope's frame
   Marching,      // args length, angle; bodies: Top, Extruded, then the condition block (Buron et al. §5)
   MarchCondition,  // args[0] the condition (Bool): the whole of a Marching condition block
   Branch,        // args[0] n: n branches from the scope; bodies: the first n-1 take body 0, the last the last body
@@ -317,7 +319,7 @@ struct Module {
 bool anyOp(const Module& m, const std::function<bool(const Op&)>& pred);
 
 // CGA's geometry commands: they give shapes geometry of their own (a split piece, a face,
-// a solid, a footprint polygon).
+// a solid, a footprint polygon) — and Texture, which only leaves' own geometry takes.
 bool isCgaGeometryOp(OpKind kind);
 // A sequential grammar that uses them is a CGA grammar: each shape of a symbol without
 // rules (a leaf) outputs its own geometry, as CGA does. Elsewhere leaves place nothing.

@@ -318,6 +318,11 @@ class Lowerer {
           allArgs(0);
         }
         break;
+      case CommandId::Texture:
+        op.kind = OpKind::Texture;
+        op.str = m_.internString(constString(*item.args[0]));
+        allArgs(1);
+        break;
       case CommandId::Center:
         op.kind = OpKind::Center;
         for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));

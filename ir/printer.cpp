@@ -1,5 +1,9 @@
 #include "ir/printer.h"
 
+// GCC 12 warns that `"literal" + std::string&&` may overlap itself (GCC bug 105329, a
+// false alarm of its inlined memcpy); which lines it flags changes with inlining.
+#pragma GCC diagnostic ignored "-Wrestrict"
+
 #include <charconv>
 #include <cmath>
 #include <iterator>
@@ -338,6 +342,7 @@ class Printer {
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;
       case OpKind::Color: text = withArgs("color"); break;
+      case OpKind::Texture: text = withArgs("texture " + stringLit(op.str)); break;
       case OpKind::Comp:
         text = "comp " + stringLit(op.str);
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";

@@ -37,6 +37,7 @@ const char* opName(OpKind k) {
     case OpKind::Evolve: return "evolve";
     case OpKind::Center: return "center";
     case OpKind::Color: return "color";
+    case OpKind::Texture: return "texture";
     case OpKind::Marching: return "marching";
     case OpKind::MarchCondition: return "march-condition";
     case OpKind::Branch: return "branch";
@@ -478,6 +479,11 @@ class Verifier {
       case OpKind::Color:
         expectBodies(op, 0);
         numArgs(op, r, 3);
+        break;
+      case OpKind::Texture:
+        expectBodies(op, 0);
+        stringId(op.str);
+        if (!op.args.empty()) numArgs(op, r, 2);
         break;
       case OpKind::Center:
         if (op.index == 0 || op.index > 7) problem("axes mask " + std::to_string(op.index));

@@ -209,6 +209,33 @@ void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t 
   for (size_t k = 0; k < 3 * size_t(c.triangles); ++k) out.indices[3 * firstTriangle + k] = base + st.indices[3 * t + k];
 }
 
+// Starts a texture run wherever an instance with triangles draws another image than the
+// one before it (the block's instances from `begin`, at firstTriangle).
+void addTextureRuns(const InstanceList& list, size_t begin, const std::vector<Counts>& counts,
+                    const std::vector<size_t>& firstTriangle, Mesh& out) {
+  for (size_t i = 0; i < counts.size(); ++i) {
+    if (counts[i].triangles == 0) continue;
+    const uint32_t texture = list.instances[begin + i].texture;
+    const int32_t image = texture == UINT32_MAX ? -1 : int32_t(texture);
+    if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
+      out.textureRuns.push_back({uint32_t(firstTriangle[i]), image});
+  }
+}
+
+// Lists only the images some run draws (their instances may all have been culled or
+// flattened away), renumbering the runs: every image a writer embeds is used.
+void keepUsedTextures(Mesh& out) {
+  std::vector<int32_t> renumbered(out.textures.size(), -1);
+  std::vector<std::string> used;
+  for (TextureRun& run : out.textureRuns) {
+    if (run.texture < 0) continue;
+    int32_t& to = renumbered[size_t(run.texture)];
+    if (to < 0) to = int32_t(used.size()), used.push_back(out.textures[size_t(run.texture)]);
+    run.texture = to;
+  }
+  out.textures = std::move(used);
+}
+
 // A curve index that names no curve is the engine's bug, said before any work starts.
 void checkCurves(const InstanceList& list) {
   for (size_t i = 0; i < list.instances.size(); ++i) {
@@ -255,6 +282,8 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   out.colors.clear();
   out.texcoords.clear();
   out.indices.clear();
+  out.textures.clear();
+  out.textureRuns.clear();
   std::vector<Counts> counts;
   std::vector<size_t> firstVertex, firstTriangle;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
@@ -272,6 +301,9 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
         return m && m->hasTexcoords();
       });
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
+  const bool withTextures = std::any_of(list.instances.begin(), list.instances.end(),
+                                        [](const Instance& inst) { return inst.texture != UINT32_MAX; });
+  if (withTextures) out.textures = list.textures;
   Staging st;
   size_t begin = 0;
   while (begin < n && !(deadline && deadline->passed())) {
@@ -317,8 +349,10 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) place(st, i, counts[i], firstVertex[i], firstTriangle[i], out);
     });
+    if (withTextures) addTextureRuns(list, begin, counts, firstTriangle, out);
     begin = end;
   }
+  keepUsedTextures(out);
   if (assembled) *assembled = begin;
 }
 

@@ -27,7 +27,9 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 // (correct even when one scale is zero), vertex colours from Instance::color, texture
 // coordinates as the asset has them, degenerate triangles and the vertices only they used
 // left out. Instances are emitted in list order. The mesh has texture coordinates when any
-// instance's asset has them; vertices of assets without them then get (0, 0).
+// instance's asset has them; vertices of assets without them then get (0, 0). When any
+// instance is textured (Instance::texture), the mesh lists list.textures and a texture
+// run wherever the image changes.
 // A smooth terminal (Instance::curve set) is then bent along list.curves[curve]
 // (runtime/marching/curve_bend.h); a curve index past list.curves throws
 // std::out_of_range, here and in countTriangles.

@@ -31,7 +31,7 @@ struct Mesh {
   MeshArray<uint32_t> indices;   // three per triangle, counter-clockwise = front
   // The image files textured triangles use (paths, PNG or JPEG) and the runs that say which
   // triangles use which, in triangle order, the first starting at triangle 0. No runs: no
-  // triangle is textured (and no texture is listed).
+  // triangle is textured. Assembled meshes list only images some run uses.
   std::vector<std::string> textures;
   std::vector<TextureRun> textureRuns;
 

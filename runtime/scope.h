@@ -36,6 +36,9 @@ struct Scope {
   // the shapes it creates; `colored` false: each instance takes its symbol's colour.
   bool colored = false;
   std::array<float, 3> color{0.8f, 0.8f, 0.8f};
+  // Texture(...): 1 + the index of the derivation's texture projection the leaves output
+  // from this scope on are textured by (backend/commands/texture_commands.h); 0: none.
+  uint32_t projection = 0;
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

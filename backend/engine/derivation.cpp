@@ -38,7 +38,8 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
     maxDepth_ = static_cast<uint32_t>(depthBound);
     depthBoundIsGrammars_ = true;
   }
-  CommandFamily* const families[] = {&scope_, &turtle_, &cga_, &collide_, &synthesis_, &marching_, &evolve_, &cells_};
+  CommandFamily* const families[] = {&scope_,    &turtle_, &cga_,   &collide_,  &synthesis_,
+                                     &marching_, &evolve_, &cells_, &textures_};
   for (CommandFamily* family : families) registerFamily(*family);
   // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {
@@ -81,6 +82,7 @@ rt::DeriveResult Derivation::run() {
     // Direct code applies scope commands on the plane (on a surface T traces).
     direct_ = direct_ && program_ && program_->direct && !surface_ && m_.mode != ir::DeriveMode::Parallel;
     resolveAssets();
+    textures_.prepare(m_, opt_.assetDirs);
     initOutput();
     orderedDirect_ = direct_ && canOrderDirectInstances();
     if (m_.mode == ir::DeriveMode::Parallel)

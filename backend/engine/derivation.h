@@ -30,6 +30,7 @@
 #include "backend/commands/scope_commands.h"
 #include "backend/commands/surface_world.h"
 #include "backend/commands/synthesis_command.h"
+#include "backend/commands/texture_commands.h"
 #include "backend/commands/turtle_commands.h"
 #include "backend/engine/limit_reached.h"
 #include "backend/engine/native_call.h"
@@ -216,6 +217,7 @@ class Derivation final : public QueryHost {
   // instance_output.cpp
   void initOutput();
   void outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
+  void outputTexturedLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
   void appendCurves();
@@ -325,6 +327,7 @@ class Derivation final : public QueryHost {
   MarchingCommands marching_;
   EvolveCommand evolve_;
   CellsCommand cells_;
+  TextureCommands textures_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
 

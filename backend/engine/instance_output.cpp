@@ -5,6 +5,7 @@
 
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/uv_projection.h"
 #include "runtime/float_range.h"
 
 #include <algorithm>
@@ -28,6 +29,7 @@ uint32_t Derivation::addGeneratedAsset(const std::string& name, const rt::Mesh& 
 void Derivation::initOutput() {
   out_.assets = m_.assets;
   out_.strings = m_.strings;
+  out_.textures = textures_.paths();
   for (const auto& s : m_.symbols) {
     out_.symbols.push_back(s.name);
     std::vector<rt::ParamKind> kinds;
@@ -125,6 +127,7 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
   // The commonest leaves share a built-in mesh over their scope: a whole box is the cube,
   // a rectangle (a facade's split piece) the quad. Only other shapes build their own.
   const uint32_t slots = m_.symbols[symbol].slotCount;
+  if (st.scope.projection) return outputTexturedLeaf(symbol, st, params, loc);
   if (st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
     return placeInstance(leafCubeAsset_, st.scope, symbol, params, slots, loc);
   if (st.geom.kind == rt::GeomKind::Polygon && rt::cga::isUnitSquare(arena_.polygon(st.geom), st.geom.count))
@@ -135,6 +138,23 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
   placeInstance(ownGeometryAsset_, st.scope, symbol, params, slots, loc);
   if (out_.instances.size() == before) return;
   out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
+  out_.geometries.push_back(std::move(mesh));
+}
+
+// A leaf below a Texture: its own mesh (a box's or a rectangle's too) with texture
+// coordinates from the projection, drawing the image in white unless Color tinted it.
+void Derivation::outputTexturedLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
+  rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
+  if (mesh.indices.empty()) return;
+  const rt::cga::UvProjection& projection = textures_.projection(st.scope.projection);
+  rt::cga::projectTexcoords(mesh, st.scope, projection);
+  const size_t before = out_.instances.size();
+  placeInstance(ownGeometryAsset_, st.scope, symbol, params, m_.symbols[symbol].slotCount, loc);
+  if (out_.instances.size() == before) return;
+  rt::Instance& inst = out_.instances.back();
+  inst.geometry = static_cast<uint32_t>(out_.geometries.size());
+  inst.texture = projection.texture;
+  if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   out_.geometries.push_back(std::move(mesh));
 }
 

@@ -115,6 +115,7 @@ void Derivation::checkParallelOp(const ir::Op& op) {
       return;
     case ir::OpKind::Unsupported: unsupported(op);
     case ir::OpKind::Lock:
+    case ir::OpKind::Texture:  // textures only leaves' own geometry, which sequential CGA outputs
     case ir::OpKind::Line:
     case ir::OpKind::LineSeg: sequentialOnly(op);
     case ir::OpKind::Center:

@@ -49,6 +49,7 @@ void Derivation::deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t
 void Derivation::adoptParent(const Derivation& parent) {
   surface_ = parent.surface_;
   marching_.shareFrom(parent.marching_);
+  textures_.shareFrom(parent.textures_);
   deadline_ = parent.deadline_;  // the same end, with a countdown of its own
   memoryBudget_ = parent.memoryBudget_;
   assetBytes_ = parent.assetBytes_;

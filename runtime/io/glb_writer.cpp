@@ -2,6 +2,9 @@
 
 #include "runtime/io/mesh_attributes.h"
 
+#include "runtime/io/read_input.h"
+#include "runtime/texture/color_texture.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -9,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <span>
 
@@ -76,9 +80,60 @@ void appendTransformed(ByteSink& out, std::span<const float> values, F f) {
 
 void appendU32(ByteSink& out, uint32_t v) { out.append(&v, sizeof v); }
 
+size_t padded4(size_t bytes) { return (bytes + 3) & ~size_t(3); }
+
+// A textured mesh's triangles by image: the untextured ones (-1) first, then each image
+// in Mesh::textures order; each group one primitive with one material.
+struct TriangleGroup {
+  int32_t texture;
+  size_t triangles = 0;
+};
+
+std::vector<TriangleGroup> triangleGroups(const Mesh& mesh) {
+  std::vector<TriangleGroup> groups;
+  for (int32_t t = -1; t < int32_t(mesh.textures.size()); ++t) {
+    size_t count = 0;
+    for (size_t r = 0; r < mesh.textureRuns.size(); ++r)
+      if (mesh.textureRuns[r].texture == t) count += mesh.runEnd(r) - mesh.textureRuns[r].firstTriangle;
+    if (count) groups.push_back({t, count});
+  }
+  return groups;
+}
+
+json plainMaterial() {
+  // glTF's default material is metal; fgsg's is a rough, white, two-sided dielectric.
+  return {{"doubleSided", true},
+          {"name", "default"},
+          {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}}};
+}
+
+// The material of image `texture`: its picture times the vertex colours.
+json texturedMaterial(const Mesh& mesh, int32_t texture) {
+  json m = plainMaterial();
+  m["name"] = std::filesystem::path(mesh.textures[size_t(texture)]).stem().string();
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", texture}};
+  return m;
+}
+
 }  // namespace
 
-std::string glbJson(const Mesh& mesh) {
+bool readImages(const Mesh& mesh, std::vector<EmbeddedImage>& images, std::string& error) {
+  images.clear();
+  if (!mesh.textured()) return true;
+  for (const std::string& path : mesh.textures) {
+    EmbeddedImage image;
+    if (!readInputFile(path, "a texture image", image.bytes, error)) return false;
+    image.mimeType = texture::ColorTexture::mimeType(image.bytes);
+    if (!image.mimeType) {
+      error = "the texture '" + path + "' is not a PNG or JPEG image (glTF embeds only those)";
+      return false;
+    }
+    images.push_back(std::move(image));
+  }
+  return true;
+}
+
+std::string glbJson(const Mesh& mesh, const std::vector<EmbeddedImage>& images) {
   json j;
   j["asset"] = {{"generator", "fgsg"}, {"version", "2.0"}};
   j["scene"] = 0;
@@ -100,7 +155,7 @@ std::string glbJson(const Mesh& mesh) {
         acc["count"] = mesh.indices.size();
         acc["type"] = "SCALAR";
         accessors.push_back(std::move(acc));
-        break;  // the indices are the last part
+        break;  // the indices are the last part of the vertex data
       }
       const bool uv = std::strcmp(part.attribute, "TEXCOORD_0") == 0;
       acc["componentType"] = kFloat;
@@ -110,18 +165,53 @@ std::string glbJson(const Mesh& mesh) {
       attributes[part.attribute] = int(accessors.size());
       accessors.push_back(std::move(acc));
     }
-    json primitive = {{"attributes", std::move(attributes)},
-                      {"indices", int(accessors.size() - 1)},
-                      {"material", 0},
-                      {"mode", kTriangles}};
+    json primitives = json::array(), materials = json::array();
+    if (!mesh.textured()) {
+      materials.push_back(plainMaterial());
+      primitives.push_back({{"attributes", std::move(attributes)},
+                            {"indices", int(accessors.size() - 1)},
+                            {"material", 0},
+                            {"mode", kTriangles}});
+    } else {
+      // One primitive per image over its stretch of the indices (written grouped), all
+      // sharing the vertex accessors; the images follow the indices in the BIN chunk.
+      const int indexView = int(views.size() - 1);
+      accessors.erase(accessors.size() - 1);
+      size_t firstIndex = 0;
+      const std::vector<TriangleGroup> groups = triangleGroups(mesh);
+      const int plain = groups.front().texture < 0 ? 1 : 0;  // the plain material, when used, is first
+      if (plain) materials.push_back(plainMaterial());
+      for (const TriangleGroup& g : groups) {
+        json acc = {{"bufferView", indexView}, {"componentType", kUnsignedInt}, {"count", 3 * g.triangles},
+                    {"type", "SCALAR"}};
+        if (firstIndex) acc["byteOffset"] = firstIndex * sizeof(uint32_t);
+        firstIndex += 3 * g.triangles;
+        primitives.push_back({{"attributes", attributes},
+                              {"indices", int(accessors.size())},
+                              {"material", plain + g.texture},
+                              {"mode", kTriangles}});
+        accessors.push_back(std::move(acc));
+      }
+      json jsonImages = json::array(), textures = json::array();
+      for (size_t t = 0; t < mesh.textures.size(); ++t) {
+        const size_t bytes = t < images.size() ? images[t].bytes.size() : 0;
+        views.push_back({{"buffer", 0}, {"byteLength", bytes}, {"byteOffset", offset}});
+        offset += padded4(bytes);
+        jsonImages.push_back({{"bufferView", int(views.size() - 1)},
+                              {"mimeType", t < images.size() ? images[t].mimeType : "image/png"}});
+        textures.push_back({{"sampler", 0}, {"source", int(t)}});
+        materials.push_back(texturedMaterial(mesh, int32_t(t)));
+      }
+      j["images"] = std::move(jsonImages);
+      j["textures"] = std::move(textures);
+      // Linear filtering with mipmaps; the images repeat (a facade tiles its bricks).
+      j["samplers"] = json::array({json{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}});
+    }
     j["accessors"] = std::move(accessors);
     j["bufferViews"] = std::move(views);
     j["buffers"] = json::array({json{{"byteLength", offset}}});
-    // glTF's default material is metal; fgsg's is a rough, white, two-sided dielectric.
-    j["materials"] = json::array({json{{"doubleSided", true},
-                                       {"name", "default"},
-                                       {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}}}});
-    j["meshes"] = json::array({json{{"name", "fgsg"}, {"primitives", json::array({std::move(primitive)})}}});
+    j["materials"] = std::move(materials);
+    j["meshes"] = json::array({json{{"name", "fgsg"}, {"primitives", std::move(primitives)}}});
     j["nodes"] = json::array({json{{"mesh", 0}}});
     scene["nodes"] = json::array({0});
   }
@@ -130,11 +220,14 @@ std::string glbJson(const Mesh& mesh) {
 }
 
 bool writeGlb(const Mesh& mesh, ByteSink& out, std::string& error) {
-  std::string text = glbJson(mesh);
-  text.resize((text.size() + 3) & ~size_t(3), ' ');  // chunks are 4-byte aligned
+  std::vector<EmbeddedImage> images;
+  if (!readImages(mesh, images, error)) return false;
+  std::string text = glbJson(mesh, images);
+  text.resize(padded4(text.size()), ' ');  // chunks are 4-byte aligned
   size_t bin = 0;
   if (!mesh.empty())
     for (const Part& part : binParts(mesh)) bin += part.bytes;
+  for (const EmbeddedImage& image : images) bin += padded4(image.bytes.size());
   const size_t total = 12 + 8 + text.size() + (bin ? 8 + bin : 0);
   if (total > std::numeric_limits<uint32_t>::max()) {
     error = "the GLB file would be " + std::to_string(total) + " bytes, past the format's 4 GiB limit";
@@ -155,7 +248,20 @@ bool writeGlb(const Mesh& mesh, ByteSink& out, std::string& error) {
   // glTF puts the texture's origin at the top left (v down); the mesh's v is up.
   if (mesh.hasTexcoords())
     appendTransformed(out, mesh.texcoords, [](size_t i, float t) { return i % 2 ? 1.0f - t : t; });
-  out.append(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+  if (!mesh.textured()) {
+    out.append(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+    return true;
+  }
+  for (const TriangleGroup& g : triangleGroups(mesh))
+    for (size_t r = 0; r < mesh.textureRuns.size(); ++r)
+      if (mesh.textureRuns[r].texture == g.texture) {
+        const size_t first = mesh.textureRuns[r].firstTriangle;
+        out.append(&mesh.indices[3 * first], 3 * (mesh.runEnd(r) - first) * sizeof(uint32_t));
+      }
+  for (const EmbeddedImage& image : images) {
+    out.append(image.bytes);
+    out.append("\0\0\0", padded4(image.bytes.size()) - image.bytes.size());
+  }
   return true;
 }
 

@@ -5,10 +5,13 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 #include <vector>
 
 namespace fgsg::rt::io {
@@ -87,13 +90,34 @@ void putLines(ByteSink& out, size_t count, Line line) {
                                          [&](Block* b) { out.append(b->text.get(), b->bytes); }));
 }
 
+// The material of texture index `texture`: one that names no texture is untextured (mtlText
+// defines no material for it).
+std::string materialName(const Mesh& mesh, int32_t texture) {
+  return texture >= 0 && size_t(texture) < mesh.textures.size() ? "fgsg_texture_" + std::to_string(texture)
+                                                                 : "fgsg_plain";
+}
+
+// `path` as seen from `folder`: relative, with symbolic links resolved so that it leads to
+// the same file, or absolute when there is no relative path.
+std::string pathFrom(const std::string& folder, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path relative = fs::relative(path, folder.empty() ? fs::path(".") : fs::path(folder), ec);
+  if (!ec && !relative.empty()) return relative.generic_string();
+  const fs::path absolute = fs::absolute(path, ec);
+  return ec || absolute.empty() ? path : absolute.lexically_normal().generic_string();
+}
+
 }  // namespace
 
-void writeObj(const Mesh& mesh, ByteSink& out) {
+void writeObj(const Mesh& mesh, ByteSink& out) { writeObj(mesh, out, std::string()); }
+
+void writeObj(const Mesh& mesh, ByteSink& out, const std::string& mtlFileName) {
   const bool colored = hasColors(mesh);
   const bool withNormals = hasNormals(mesh);
   const bool withTexcoords = mesh.hasTexcoords();
   out.append("# fgsg\n");
+  if (mesh.textured() && !mtlFileName.empty()) out.append("mtllib " + mtlFileName + "\n");
   putLines(out, mesh.vertexCount(), [&](char* p, size_t v) {
     *p++ = 'v';
     p = putFloats(p, &mesh.positions[3 * v], 3);
@@ -119,13 +143,47 @@ void writeObj(const Mesh& mesh, ByteSink& out) {
       *p++ = '\n';
       return p;
     });
-  putLines(out, mesh.triangleCount(), [&](char* p, size_t t) {
+  const auto face = [&](char* p, size_t t) {
     *p++ = 'f';
     for (int k = 0; k < 3; ++k)
       p = putCorner(p, uint64_t(mesh.indices[3 * t + k]) + 1, withTexcoords, withNormals);  // OBJ counts from 1
     *p++ = '\n';
     return p;
-  });
+  };
+  if (!mesh.textured()) {
+    putLines(out, mesh.triangleCount(), face);
+    return;
+  }
+  // Run by run, each after its material (a run going on with the previous one's material
+  // needs no usemtl). Every triangle goes out once and in order even if the runs break
+  // Mesh's rules: the first run starts at triangle 0, each next one where the previous
+  // one ended, and the last one ends at the last triangle.
+  const size_t triangles = mesh.triangleCount();
+  std::string current;
+  size_t begin = 0;
+  for (size_t r = 0; r < mesh.textureRuns.size(); ++r) {
+    const size_t end =
+        r + 1 == mesh.textureRuns.size() ? triangles : std::clamp<size_t>(mesh.runEnd(r), begin, triangles);
+    if (end == begin) continue;
+    const std::string material = materialName(mesh, mesh.textureRuns[r].texture);
+    if (material != current) out.append("usemtl " + material + "\n"), current = material;
+    putLines(out, end - begin, [&](char* p, size_t i) { return face(p, begin + i); });
+    begin = end;
+  }
+}
+
+std::string mtlText(const Mesh& mesh, const std::string& mtlFolder) {
+  std::string text = "# fgsg\n";
+  // White: a face's colour is its image's, times its vertex colours where a reader applies them.
+  const auto material = [&](const std::string& name) {
+    text += "\nnewmtl " + name + "\nKd 1 1 1\nKa 0 0 0\nKs 0 0 0\nd 1\nillum 1\n";
+  };
+  material("fgsg_plain");
+  for (size_t k = 0; k < mesh.textures.size(); ++k) {
+    material(materialName(mesh, int32_t(k)));
+    text += "map_Kd " + pathFrom(mtlFolder, mesh.textures[k]) + "\n";
+  }
+  return text;
 }
 
 }  // namespace fgsg::rt::io

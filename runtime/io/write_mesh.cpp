@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <new>
 #include <stdexcept>
+#include <system_error>
 
 namespace fgsg::rt::io {
 
@@ -57,12 +58,13 @@ bool checkEncodable(const Mesh& mesh, const std::string& extension, std::string&
   return !findNonFiniteVertex(mesh, error);
 }
 
-// Streams the mesh as `ext` (checked) into `out`; the caller checks out.ok() for the
-// writes themselves.
-bool encodeInto(const Mesh& mesh, const std::string& ext, ByteSink& out, std::string& error) {
+// Streams the mesh as `ext` (checked) into `out`, an OBJ naming `mtlFileName` as its
+// materials file (none when empty); the caller checks out.ok() for the writes themselves.
+bool encodeInto(const Mesh& mesh, const std::string& ext, ByteSink& out, std::string& error,
+                const std::string& mtlFileName = std::string()) {
   try {
     if (ext == ".glb") return writeGlb(mesh, out, error);
-    if (ext == ".obj") writeObj(mesh, out);
+    if (ext == ".obj") writeObj(mesh, out, mtlFileName);
     if (ext == ".ply") writePly(mesh, out);
     return true;
   } catch (const std::bad_alloc&) {
@@ -108,10 +110,21 @@ bool stageMesh(const Mesh& mesh, const std::string& path, OutputTransaction& out
     error = "cannot write '" + path + "': " + error;
     return false;
   }
+  // A textured OBJ's materials go beside it in their own file, staged first so that commit
+  // renames it first: a new OBJ never appears without the materials it names.
+  std::string mtlFileName;
+  if (ext == ".obj" && mesh.textured()) {
+    const std::filesystem::path mtlPath = std::filesystem::path(path).replace_extension(".mtl");
+    std::error_code ec;
+    const std::filesystem::path mtlFolder = std::filesystem::absolute(mtlPath, ec).parent_path();
+    mtlFileName = mtlPath.filename().string();
+    if (!outputs.stage(mtlPath.string(), mtlText(mesh, mtlFolder.string()), error)) return false;
+  }
   // Straight into the temporary file: no copy of the encoded mesh is held in memory.
-  return outputs.stage(
-      path, [&](ByteSink& out, std::string& encodeError) { return encodeInto(mesh, ext, out, encodeError); },
-      error);
+  const auto encode = [&](ByteSink& out, std::string& encodeError) {
+    return encodeInto(mesh, ext, out, encodeError, mtlFileName);
+  };
+  return outputs.stage(path, encode, error);
 }
 
 bool writeMesh(const Mesh& mesh, const std::string& path, std::string& error) {

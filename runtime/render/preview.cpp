@@ -1,6 +1,7 @@
 #include "runtime/render/preview.h"
 
 #include "runtime/io/png_encode.h"
+#include "runtime/texture/color_texture.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -9,10 +10,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <new>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <memory>
+#include <new>
 
 
 namespace fgsg::rt::render {
@@ -141,9 +143,39 @@ class RayScene {
   RTCScene scene_;
 };
 
+using texture::ColorTexture;
+
+// Mesh::textures loaded, one per entry; one that failed to load stays empty, and its
+// triangles show their vertex colours alone. Each failure's message is added to `warning`.
+std::vector<ColorTexture> loadTextures(const Mesh& mesh, std::string* warning) {
+  std::vector<ColorTexture> textures(mesh.empty() ? 0 : mesh.textures.size());
+  for (size_t t = 0; t < textures.size(); ++t) {
+    std::string error;
+    if (textures[t].load(mesh.textures[t], error) || !warning) continue;
+    if (!warning->empty()) *warning += "; ";
+    *warning += "a texture cannot be loaded, so the preview shows its triangles in their vertex colours: " +
+                error;
+  }
+  return textures;
+}
+
+// The loaded texture triangle `primID` is painted with, or nullptr when none (untextured,
+// no texture coordinates, or an image that failed to load).
+const ColorTexture* textureOf(const Mesh& mesh, const std::vector<ColorTexture>& textures, uint32_t primID) {
+  if (!mesh.textured() || !mesh.hasTexcoords()) return nullptr;
+  const auto& runs = mesh.textureRuns;
+  const auto startsAfter = [](uint32_t triangle, const TextureRun& r) { return triangle < r.firstTriangle; };
+  const auto run = std::upper_bound(runs.begin(), runs.end(), primID, startsAfter);
+  if (run == runs.begin()) return nullptr;  // before the first run: only a malformed mesh
+  const int32_t t = std::prev(run)->texture;
+  return t >= 0 && size_t(t) < textures.size() && !textures[t].empty() ? &textures[t] : nullptr;
+}
+
 // Lambert with ambient: a headlight so nothing the camera sees is black, and a key light
-// from the upper left so faces of different orientation read apart.
-Vector3f shade(const Mesh& mesh, const Camera& cam, const RTCHit& hit, const Vector3d& dir) {
+// from the upper left so faces of different orientation read apart. A textured triangle's
+// albedo is the image times the vertex colours, as glTF's baseColorTexture x COLOR_0.
+Vector3f shade(const Mesh& mesh, const std::vector<ColorTexture>& textures, const Camera& cam,
+               const RTCHit& hit, const Vector3d& dir) {
   const uint32_t* tri = &mesh.indices[3 * size_t(hit.primID)];
   const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
   Vector3d n = Vector3d::Zero();
@@ -156,6 +188,15 @@ Vector3f shade(const Mesh& mesh, const Camera& cam, const RTCHit& hit, const Vec
     albedo += float(w[k]) * (colored ? Vector3f(mesh.colors[v], mesh.colors[v + 1], mesh.colors[v + 2])
                                      : kDefaultColor);
   }
+  if (const ColorTexture* image = textureOf(mesh, textures, hit.primID)) {
+    double u = 0, v = 0;
+    for (int k = 0; k < 3; ++k) {
+      u += w[k] * mesh.texcoords[2 * size_t(tri[k])];
+      v += w[k] * mesh.texcoords[2 * size_t(tri[k]) + 1];
+    }
+    const auto texel = image->sample(u, v);
+    albedo = albedo.cwiseProduct(Vector3f(texel[0], texel[1], texel[2]));
+  }
   if (!(n.norm() > 1e-12)) n = Vector3d(hit.Ng_x, hit.Ng_y, hit.Ng_z);
   n.normalize();
   if (n.dot(dir) > 0) n = -n;  // two-sided: light the face the camera sees
@@ -166,9 +207,9 @@ Vector3f shade(const Mesh& mesh, const Camera& cam, const RTCHit& hit, const Vec
 
 uint8_t toByte(float c) { return uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 
-}  // namespace
-
-Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
+// renderImage with the mesh's textures loaded already, so stagePreview can report those
+// that fail.
+Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const PreviewOptions& options) {
   Image img;
   img.width = std::max(options.width, 1);
   img.height = std::max(options.height, 1);
@@ -189,7 +230,8 @@ Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
             Vector3d org, dir;
             cam.ray(x, y, org, dir);
             RTCHit hit;
-            sum += scene && scene->intersect(org, dir, hit) ? shade(mesh, cam, hit, dir) : background(y);
+            sum += scene && scene->intersect(org, dir, hit) ? shade(mesh, textures, cam, hit, dir)
+                                                            : background(y);
           }
         }
         sum /= float(spa * spa);
@@ -199,6 +241,12 @@ Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
     }
   });
   return img;
+}
+
+}  // namespace
+
+Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
+  return render(mesh, loadTextures(mesh, nullptr), options);
 }
 
 bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
@@ -217,7 +265,7 @@ bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::st
   if (mesh.empty() && warning) *warning = "the mesh is empty: the preview shows only the background";
   std::string png;
   try {
-    const Image img = renderImage(mesh, options);
+    const Image img = render(mesh, loadTextures(mesh, warning), options);
     if (!io::encodePng(img.width, img.height, 3, img.rgb.data(), png)) {
       error = "cannot write '" + pngPath + "': cannot encode the preview as PNG";
       return false;

@@ -2,8 +2,9 @@
 // bounding box. A pattern flat in Z (a planar design in the XY plane) is seen straight
 // from above with an orthographic camera; anything else in perspective from the
 // (+X, +Y, +Z) side with Y up, close enough that the bounding box just fits. Lambert
-// shading (headlight + key light + ambient) of the vertex colours over a soft gradient,
-// 2x2 supersampled. Deterministic bytes.
+// shading (headlight + key light + ambient) of the vertex colours, times the image on
+// textured triangles (Mesh::textureRuns), over a soft gradient, 2x2 supersampled.
+// Deterministic bytes.
 #pragma once
 
 #include "runtime/io/output_transaction.h"
@@ -30,12 +31,14 @@ struct Image {
   std::vector<uint8_t> rgb;  // row-major from the top row, 3 bytes per pixel
 };
 
-// Renders the mesh; an empty mesh gives the background alone.
+// Renders the mesh; an empty mesh gives the background alone. A texture that cannot be
+// loaded leaves its triangles in their vertex colours.
 Image renderImage(const Mesh& mesh, const PreviewOptions& options);
 
 // Renders and writes a PNG atomically. False and a message in `error` when the options
 // are invalid or the file cannot be written. An empty mesh is not an error: the picture
-// shows the background and `warning` (when given) says so.
+// shows the background and `warning` (when given) says so. Nor is a texture that cannot
+// be loaded: `warning` names it, and its triangles show their vertex colours.
 bool renderPreview(const Mesh& mesh, const PreviewOptions& options, const std::string& pngPath,
                    std::string& error, std::string* warning = nullptr);
 

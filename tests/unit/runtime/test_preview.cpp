@@ -1,6 +1,7 @@
 // The Embree preview: framing (3/4 perspective, top-down orthographic for flat
-// patterns), shading of vertex colours, determinism and the PNG file.
+// patterns), shading of vertex colours and textures, determinism and the PNG file.
 #include "runtime/assets.h"
+#include "runtime/io/png_encode.h"
 #include "runtime/render/preview.h"
 
 #include <catch2/catch.hpp>
@@ -41,6 +42,38 @@ int borderForeground(const Image& img, const Image& bg) {
   for (int y = 0; y < img.height; ++y)
     n += (pixel(img, 0, y) != pixel(bg, 0, y)) + (pixel(img, img.width - 1, y) != pixel(bg, img.width - 1, y));
   return n;
+}
+
+// A unit quad in the XY plane (seen from above), its texture coordinates 0..1 along X and
+// Y, textured all over with the image at `texturePath`.
+Mesh texturedQuad(const std::string& texturePath) {
+  Mesh m;
+  for (float y : {0.0f, 1.0f})
+    for (float x : {0.0f, 1.0f}) {
+      m.positions.insert(m.positions.end(), {x, y, 0.0f});
+      m.normals.insert(m.normals.end(), {0.0f, 0.0f, 1.0f});
+      m.texcoords.insert(m.texcoords.end(), {x, y});
+    }
+  m.indices.insert(m.indices.end(), {0, 1, 3, 0, 3, 2});
+  m.textures = {texturePath};
+  m.textureRuns = {TextureRun{0, 0}};
+  return m;
+}
+
+// A 4 x 2 image, its left half red and its right half blue: wide enough that the middle
+// of each half lies away from where repeat blends the two across the edges.
+std::string writeRedBluePng(const fs::path& path) {
+  const std::array<uint8_t, 3> red{255, 0, 0}, blue{0, 0, 255};
+  std::vector<uint8_t> rgb;
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 4; ++column) {
+      const auto& c = column < 2 ? red : blue;
+      rgb.insert(rgb.end(), c.begin(), c.end());
+    }
+  std::string png;
+  REQUIRE(io::encodePng(4, 2, 3, rgb.data(), png));
+  std::ofstream(path, std::ios::binary) << png;
+  return path.string();
 }
 
 }  // namespace
@@ -109,4 +142,37 @@ TEST_CASE("bad preview sizes and paths are errors", "[preview]") {
   CHECK_FALSE(render::renderPreview(cube, {16, 16, 1}, (dir / "missing" / "x.png").string(), error));
   CHECK_THAT(error, Catch::Contains("No such file or directory"));
   CHECK(fs::is_empty(dir));
+}
+
+TEST_CASE("textured triangles show their image times the vertex colours", "[preview]") {
+  const fs::path dir = scratchDir("textured");
+  const PreviewOptions opt{64, 48, 2};
+  const Mesh quad = texturedQuad(writeRedBluePng(dir / "red_blue.png"));
+  const Image img = render::renderImage(quad, opt);
+  // Seen from above, the quad's x = 0.25 and 0.75 fall on pixel columns 20 and 43.
+  const auto left = pixel(img, 20, 24), right = pixel(img, 43, 24);
+  CHECK(left[0] > 4 * left[2]);
+  CHECK(left[0] > 4 * left[1]);
+  CHECK(right[2] > 4 * right[0]);
+  CHECK(right[2] > 4 * right[1]);
+
+  // Vertex colours scale the image: green vertices leave nothing of the red or the blue.
+  Mesh green = quad;
+  for (size_t v = 0; v < green.vertexCount(); ++v)
+    green.colors.insert(green.colors.end(), {0.0f, 1.0f, 0.0f});
+  const Image dark = render::renderImage(green, opt);
+  CHECK(pixel(dark, 20, 24) == std::array<uint8_t, 3>{0, 0, 0});
+}
+
+TEST_CASE("a texture that cannot be loaded leaves vertex colours and a warning", "[preview]") {
+  const fs::path dir = scratchDir("missing_texture");
+  const PreviewOptions opt{64, 48, 2};
+  Mesh quad = texturedQuad((dir / "missing.png").string());
+  Mesh plain = quad;
+  plain.textures.clear();
+  plain.textureRuns.clear();
+  CHECK(render::renderImage(quad, opt).rgb == render::renderImage(plain, opt).rgb);
+  std::string error, warning;
+  REQUIRE(render::renderPreview(quad, opt, (dir / "a.png").string(), error, &warning));
+  CHECK_THAT(warning, Catch::Contains("missing.png"));
 }

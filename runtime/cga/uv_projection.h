@@ -1,0 +1,33 @@
+// CGA's texture projection (setupProjection + projectUV): `Texture("brick.png", 2, 1.5)`
+// fixes a frame — the scope it runs in — and every leaf derived from that scope gets
+// texture coordinates measured in that frame, so the bricks run on unbroken across the
+// split pieces of a facade. A face is projected onto the frame's plane it faces most
+// (XY, YZ or XZ): a facade onto XY as CGA does, the reveal of an inset window or the top
+// of a wall onto a plane it is not edge-on to, instead of a smear.
+#pragma once
+
+#include "runtime/mesh.h"
+#include "runtime/scope.h"
+
+#include <cstdint>
+
+namespace fgsg::rt::cga {
+
+struct UvProjection {
+  Vec3 origin = Vec3::Zero();    // u = v = 0 here
+  Mat3 axes = Mat3::Identity();  // the frame's X (u), Y (v) and Z, in world space
+  double tileWidth = 1, tileHeight = 1;  // metres per repeat of the image along X and Y
+  uint32_t texture = 0;          // InstanceList::textures index
+};
+
+// The projection `Texture` sets up in `scope`: its frame, and the tile sizes given (or,
+// when both are 0, the scope's X and Y sizes: one image over the scope; a size of 0 reads 1).
+UvProjection projectionAt(const Scope& scope, double tileWidth, double tileHeight, uint32_t texture);
+
+// Fills the texture coordinates of `mesh`, a leaf's geometry in `scope`'s unit box with
+// one normal per vertex (flat faces, own vertices: rt::cga::ownGeometryMesh): each vertex
+// is projected onto the frame plane its face looks along most, turned so the image reads
+// the right way round from the face's front.
+void projectTexcoords(Mesh& mesh, const Scope& scope, const UvProjection& projection);
+
+}  // namespace fgsg::rt::cga

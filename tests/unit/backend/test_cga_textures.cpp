@@ -1,0 +1,150 @@
+// CGA's Texture: leaves below it get texture coordinates projected from the scope it ran
+// in, so a facade's split pieces continue one brick pattern, and the assembled mesh says
+// which triangles draw which image.
+#include "derive_helpers.h"
+
+#include "runtime/assemble.h"
+#include "runtime/io/glb_writer.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using namespace fgsg;
+using Catch::Matchers::Contains;
+
+namespace {
+
+rt::DeriveOptions withExamples() {
+  rt::DeriveOptions o;
+  o.assetDirs = {std::string(FGSG_SOURCE_DIR) + "/examples"};
+  return o;
+}
+
+rt::Mesh assembled(const rt::DeriveResult& r) {
+  REQUIRE(r.ok);
+  rt::AssetLibrary library;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
+  return rt::assembleInstances(r.instances, library, meshOf);
+}
+
+struct Range {
+  double lo = 1e300, hi = -1e300;
+  void add(double x) { lo = std::min(lo, x), hi = std::max(hi, x); }
+};
+
+// The u and v ranges of the texture coordinates of the vertices of instance `which`'s own mesh.
+std::pair<Range, Range> uvRange(const rt::DeriveResult& r, size_t which) {
+  const rt::Mesh& m = r.instances.geometries.at(r.instances.instances.at(which).geometry);
+  REQUIRE(m.hasTexcoords());
+  Range u, v;
+  for (size_t i = 0; i < m.vertexCount(); ++i) u.add(m.texcoords[2 * i]), v.add(m.texcoords[2 * i + 1]);
+  return {u, v};
+}
+
+}  // namespace
+
+TEST_CASE("a textured facade is tiled in metres from the scope Texture ran in", "[cga][texture]") {
+  const auto r = test::deriveText("Lot ~> S(10, 6, 0) Texture(\"textures/brick.png\", 2, 3) Wall;", withExamples());
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 1);
+  REQUIRE(r.instances.textures.size() == 1);
+  CHECK_THAT(r.instances.textures[0], Contains("examples/textures/brick.png"));
+  CHECK(r.instances.instances[0].texture == 0);
+  const auto [u, v] = uvRange(r, 0);
+  CHECK(u.lo == Approx(0).margin(1e-6));
+  CHECK(u.hi == Approx(5));
+  CHECK(v.lo == Approx(0).margin(1e-6));
+  CHECK(v.hi == Approx(2));
+  const rt::Mesh m = assembled(r);
+  REQUIRE(m.textureRuns.size() == 1);
+  CHECK(m.textureRuns[0].firstTriangle == 0);
+  CHECK(m.textureRuns[0].texture == 0);
+  for (float c : m.colors) CHECK(c == 1.0f);  // the image untinted
+}
+
+TEST_CASE("split pieces continue the pattern of the scope that set the texture up", "[cga][texture]") {
+  const auto r = test::deriveText(
+      "Lot ~> S(10, 6, 0) Texture(\"textures/brick.png\", 2, 3) Subdiv(\"X\", 4, 6){ A | B };", withExamples());
+  REQUIRE(r.instances.instances.size() == 2);
+  const auto [ua, va] = uvRange(r, 0);
+  const auto [ub, vb] = uvRange(r, 1);
+  CHECK(ua.lo == Approx(0).margin(1e-6));
+  CHECK(ua.hi == Approx(2));
+  CHECK(ub.lo == Approx(2));
+  CHECK(ub.hi == Approx(5));
+  CHECK(vb.hi == Approx(2));
+}
+
+TEST_CASE("each face of a textured box is projected on the plane it faces most", "[cga][texture]") {
+  // One image over the scope (no tile sizes): 4 m across, 3 m up.
+  const auto r = test::deriveText("Lot ~> S(4, 3, 2) Texture(\"textures/brick.png\") Mass;", withExamples());
+  REQUIRE(r.instances.instances.size() == 1);
+  const rt::Mesh& m = r.instances.geometries.at(r.instances.instances[0].geometry);
+  int front = 0, top = 0, right = 0;
+  for (size_t i = 0; i < m.vertexCount(); ++i) {
+    const float* n = &m.normals[3 * i];
+    const float* p = &m.positions[3 * i];
+    const double u = m.texcoords[2 * i], v = m.texcoords[2 * i + 1];
+    if (n[2] > 0.5f) {  // the front (+Z): the scope's XY plane, as CGA projects
+      ++front;
+      CHECK(u == Approx(p[0]).margin(1e-6));
+      CHECK(v == Approx(p[1]).margin(1e-6));
+    } else if (n[1] > 0.5f) {  // the top, seen from above: v runs against Z
+      ++top;
+      CHECK(u == Approx(p[0]).margin(1e-6));
+      CHECK(v == Approx(-2.0 * p[2] / 3.0).margin(1e-6));
+    } else if (n[0] > 0.5f) {  // the right side (+X), seen from the right: u runs against Z
+      ++right;
+      CHECK(u == Approx(-2.0 * p[2] / 4.0).margin(1e-6));
+      CHECK(v == Approx(p[1]).margin(1e-6));
+    }
+  }
+  CHECK(front == 4);
+  CHECK(top == 4);
+  CHECK(right == 4);
+}
+
+TEST_CASE("textured and plain leaves make texture runs and a glb with one primitive per image", "[cga][texture]") {
+  const auto r = test::deriveText(
+      "Lot ~> S(10, 6, 0) Subdiv(\"X\", 3, 4, 3){ Plain | Texture(\"textures/brick.png\", 2, 3) Color(1, 0.5, 0.5) Brick "
+      "| Plain };",
+      withExamples());
+  const rt::Mesh m = assembled(r);
+  REQUIRE(m.textureRuns.size() == 3);
+  CHECK(m.textureRuns[0].texture == -1);
+  CHECK(m.textureRuns[1].texture == 0);
+  CHECK(m.textureRuns[1].firstTriangle == 2);
+  CHECK(m.textureRuns[2].texture == -1);
+  CHECK(m.textureRuns[2].firstTriangle == 4);
+  CHECK(m.colors[3 * 4 + 1] == 0.5f);  // Color tints the image: the brick's first vertex
+  std::vector<rt::io::EmbeddedImage> images;
+  std::string error;
+  REQUIRE(rt::io::readImages(m, images, error));
+  REQUIRE(images.size() == 1);
+  CHECK(std::string(images[0].mimeType) == "image/png");
+  const std::string json = rt::io::glbJson(m, images);
+  CHECK_THAT(json, Contains("\"baseColorTexture\":{\"index\":0}"));
+  CHECK_THAT(json, Contains("\"mimeType\":\"image/png\""));
+  CHECK_THAT(json, Contains("\"material\":1"));
+  // The plain triangles (4) first, then the brick's (2): index counts 12 and 6.
+  CHECK_THAT(json, Contains("\"count\":12"));
+  CHECK_THAT(json, Contains("\"byteOffset\":48,\"componentType\":5125,\"count\":6"));
+}
+
+TEST_CASE("a Texture whose image is missing or not a picture stops the derivation at it", "[cga][texture]") {
+  const auto missing = test::deriveText("Lot ~> S(1, 1, 0)\n  Texture(\"textures/nope.png\") A;", withExamples());
+  REQUIRE_FALSE(missing.ok);
+  REQUIRE(!missing.messages.empty());
+  CHECK(missing.messages[0].code == "R003");
+  CHECK(missing.messages[0].line == 2);
+  CHECK_THAT(missing.messages[0].message, Contains("nope.png"));
+  const auto notImage = test::deriveText("Lot ~> S(1, 1, 0) Texture(\"city/lots.geojson\") A;", withExamples());
+  REQUIRE_FALSE(notImage.ok);
+  CHECK_THAT(notImage.messages[0].message, Contains("PNG or JPEG"));
+  const auto badSize = test::deriveText("Lot ~> S(1, 1, 0) Texture(\"textures/brick.png\", 0, 1) A;", withExamples());
+  REQUIRE_FALSE(badSize.ok);
+  CHECK(badSize.messages[0].code == "R027");
+}
