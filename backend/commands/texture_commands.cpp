@@ -13,7 +13,8 @@ void TextureCommands::prepare(const ir::Module& m, const std::vector<std::string
   textureOf_.assign(m.strings.size(), std::numeric_limits<uint32_t>::max());
   std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
     for (const ir::Op& op : b) {
-      if (op.kind == ir::OpKind::Texture && textureOf_[op.str] == std::numeric_limits<uint32_t>::max()) {
+      if (op.kind == ir::OpKind::Texture && textureOf_[op.str] == std::numeric_limits<uint32_t>::max() &&
+          m.strings[op.str] != kNoTexture) {
         const std::string path = rt::io::findFile(m.strings[op.str], dirs);
         std::string error;
         if (!rt::texture::ColorTexture::probe(path, error)) throw DeriveError{op.loc, "R003", "Texture: " + error};
@@ -29,6 +30,10 @@ void TextureCommands::prepare(const ir::Module& m, const std::vector<std::string
 }
 
 void TextureCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec&, Frame&) {
+  if (textureOf_.at(op.str) == std::numeric_limits<uint32_t>::max()) {  // Texture("none")
+    st.scope.projection = 0;
+    return;
+  }
   const double width = n >= 2 ? a[0] : 0, height = n >= 2 ? a[1] : 0;
   for (double size : {width, height})
     if (!std::isfinite(size) || size < 0 || (n >= 2 && size == 0))

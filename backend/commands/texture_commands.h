@@ -2,7 +2,7 @@
 // scope it runs in (runtime/cga/uv_projection.h) that the shapes derived from it inherit;
 // each leaf output below it gets texture coordinates from that projection and draws the
 // image. The image files are found and checked before anything is derived, so a missing
-// or unreadable one is reported at its Texture().
+// or unreadable one is reported at its Texture(). Texture("none") takes the image away.
 #pragma once
 
 #include "backend/commands/command_family.h"
@@ -12,6 +12,9 @@
 #include <vector>
 
 namespace fgsg::backend {
+
+// Texture("none"): the leaves from here on are drawn untextured again (a door in a brick wall).
+inline constexpr const char* kNoTexture = "none";
 
 class TextureCommands final : public CommandFamily {
  public:

@@ -1,22 +1,35 @@
 #!/usr/bin/env bash
 # CGA on GeoJSON lots as a user meets it: the city block builds in both engines with the
 # same bytes, the same seed gives the same city and another seed another one, the lots
-# file is the one scripts/make_city_lots.py writes, and a broken lots file is a located
-# error with exit 2.
+# file is the one scripts/make_city_lots.py writes (the textures the ones
+# scripts/make_textures.py draws), a textured OBJ comes with its .mtl, and a broken lots
+# file is a located error with exit 2.
 . "$(dirname "$0")/../reliability/lib.sh"
 cd "$root" || fail "no $root"
 
 lots=examples/city/lots.geojson
 python3 scripts/make_city_lots.py -o "$tmp/lots.geojson" --check >/dev/null || fail "make_city_lots.py failed"
 cmp -s "$tmp/lots.geojson" "$lots" || fail "$lots is not what scripts/make_city_lots.py writes"
+python3 scripts/make_textures.py "$tmp/textures" || fail "make_textures.py failed"
+for image in "$tmp"/textures/*.png; do
+  cmp -s "$image" "examples/textures/$(basename "$image")" || fail "examples/textures/$(basename "$image") is not what scripts/make_textures.py draws"
+done
+[ "$(ls "$tmp/textures" | wc -l)" -eq "$(ls examples/textures | wc -l)" ] || fail "examples/textures holds images the script does not draw"
 
-"$fgsg" run examples/city.fgsg --lots "$lots" --engine interp -q -o "$tmp/i.obj" || fail "interpreter: exit $?"
-"$fgsg" run examples/city.fgsg --lots "$lots" --engine jit --stats -o "$tmp/j.obj" >"$tmp/stats" 2>&1 || fail "JIT: exit $?"
-cmp -s "$tmp/i.obj" "$tmp/j.obj" || fail "the engines wrote different bytes"
+# Same names in two folders: a textured OBJ names its .mtl, which names the images.
+mkdir -p "$tmp/i" "$tmp/j"
+"$fgsg" run examples/city.fgsg --lots "$lots" --engine interp -q -o "$tmp/i/city.obj" || fail "interpreter: exit $?"
+"$fgsg" run examples/city.fgsg --lots "$lots" --engine jit --stats -o "$tmp/j/city.obj" >"$tmp/stats" 2>&1 || fail "JIT: exit $?"
+cmp -s "$tmp/i/city.obj" "$tmp/j/city.obj" || fail "the engines wrote different bytes"
+cmp -s "$tmp/i/city.mtl" "$tmp/j/city.mtl" || fail "the engines wrote different materials"
+grep -q '^mtllib city.mtl$' "$tmp/i/city.obj" || fail "the OBJ does not name its materials file"
+grep -q '^map_Kd .*examples/textures/brick.png$' "$tmp/i/city.mtl" || fail "the materials do not point at the brick image"
+[ -f "$(dirname "$tmp/i/city.mtl")/$(awk '$1 == "map_Kd" {print $2; exit}' "$tmp/i/city.mtl")" ] ||
+  fail "the first map_Kd path does not reach its image from the .mtl's folder"
 instances=$(awk '$1 == "instances" {print $2}' "$tmp/stats")
 [ "${instances:-0}" -gt 20000 ] || fail "only ${instances:-no} instances for 200 lots"
 "$fgsg" run examples/city.fgsg --lots "$lots" --seed 3 -q -o "$tmp/s3.obj" || fail "seed 3: exit $?"
-cmp -s "$tmp/i.obj" "$tmp/s3.obj" && fail "another seed gave the same city"
+cmp -s "$tmp/i/city.obj" "$tmp/s3.obj" && fail "another seed gave the same city"
 
 # Geometries other than polygons are passed over, and said so (not with --quiet).
 printf '{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": "urn:fgsg:local-metres"}}, "features": [

@@ -134,6 +134,16 @@ TEST_CASE("textured and plain leaves make texture runs and a glb with one primit
   CHECK_THAT(json, Contains("\"byteOffset\":48,\"componentType\":5125,\"count\":6"));
 }
 
+TEST_CASE("Texture none takes the image away again", "[cga][texture]") {
+  const auto r = test::deriveText(
+      "Lot ~> S(10, 6, 0) Texture(\"textures/brick.png\", 2, 3) Subdiv(\"X\", 4, 6){ A | Texture(\"none\") B };",
+      withExamples());
+  REQUIRE(r.instances.instances.size() == 2);
+  CHECK(r.instances.instances[0].texture == 0);
+  CHECK(r.instances.instances[1].texture == UINT32_MAX);
+  CHECK(r.instances.textures.size() == 1);
+}
+
 TEST_CASE("a Texture whose image is missing or not a picture stops the derivation at it", "[cga][texture]") {
   const auto missing = test::deriveText("Lot ~> S(1, 1, 0)\n  Texture(\"textures/nope.png\") A;", withExamples());
   REQUIRE_FALSE(missing.ok);
