@@ -70,6 +70,7 @@ struct Item {
   std::vector<ExprPtr> args;
   bool hasBody = false;
   std::vector<Successor> body;  // parts between '|' or ',' inside { }
+  bool repeatPattern = false;   // `{ ... }*`: the parts repeat as a pattern (CGA's repeat split)
   std::vector<Item> children;   // Bracket contents
 };
 
@@ -80,6 +81,9 @@ struct Successor {
   // A body part's `front:` (Comp's labelled parts); empty when it has none.
   std::string selector;
   SourceRange selectorRange;
+  // A body part's size label `~3:` (CGA's split syntax); null when it has none. A Subdiv
+  // whose parts all carry sizes (or names: `floor_h: Floor`) gets them as its arguments.
+  ExprPtr size;
 };
 
 // ---------------------------------------------------------------- rules

@@ -342,8 +342,27 @@ Successor AstBuilder::buildBodyPart(P::BodyPartContext* ctx) {
     s.selector = text(ctx->selector);
     s.selectorRange = rangeOf(ctx->selector);
   }
+  if (ctx->size) s.size = buildExpr(ctx->size);
   for (auto* item : ctx->item()) appendItem(item, s.items);
   return s;
+}
+
+// CGA's split syntax, `Subdiv("Y"){ 4: Ground | ~3: Floor }`, is Subdiv("Y", 4, ~3){
+// Ground | Floor }: when every part is labelled and only the axis is given, the labels
+// become the sizes (a bare name, `floor_h: Floor`, is read as the value it names).
+// Anything else stays as written for the analyzer to judge.
+void AstBuilder::sizesFromParts(Item& item) {
+  if (item.name != "Subdiv" || item.args.size() != 1 || item.body.empty()) return;
+  for (const Successor& part : item.body)
+    if (!part.size && part.selector.empty()) return;
+  for (Successor& part : item.body) {
+    if (!part.size) {
+      part.size = makeExpr(ExprKind::Ident, part.selectorRange);
+      part.size->text = part.selector;
+      part.selector.clear();
+    }
+    item.args.push_back(std::move(part.size));
+  }
 }
 
 void AstBuilder::appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out) {
@@ -369,7 +388,9 @@ Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {
   item.args = buildCallArgs(ctx->callArgs());
   if (auto* body = ctx->body()) {
     item.hasBody = true;
+    item.repeatPattern = body->repeat != nullptr;
     for (auto* part : body->bodyPart()) item.body.push_back(buildBodyPart(part));
+    sizesFromParts(item);
   }
   return item;
 }

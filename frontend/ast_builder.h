@@ -41,6 +41,7 @@ class AstBuilder {
   // successors
   Successor buildSuccessor(P::SuccessorContext* ctx);
   Successor buildBodyPart(P::BodyPartContext* ctx);
+  void sizesFromParts(Item& item);
   void appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out);
   void appendItem(P::ItemContext* ctx, std::vector<Item>& out);
   Item buildCallItem(P::CallItemContext* ctx);

@@ -71,6 +71,7 @@ class Analyzer {
   // Commands: arity, argument types and constants, { } bodies (sema_commands.cpp).
   void checkCommand(const Item& item, const CommandInfo& cmd, const Where& w);
   void checkBody(const Item& item, const CommandInfo& cmd);
+  bool checkSplitSyntax(const Item& item, const CommandInfo& cmd);
 
   // Expressions and their types; names resolved (sema_expressions.cpp).
   void expect(const Expr& e, const Where& w, ValueType want, const std::string& what);

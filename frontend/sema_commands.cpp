@@ -27,6 +27,7 @@ int axisMask(const std::string& axes) {
 }  // namespace
 
 void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Where& w) {
+  if (!checkSplitSyntax(item, cmd)) return;
   const int n = static_cast<int>(item.args.size());
   if (n < cmd.minArgs || (cmd.maxArgs >= 0 && n > cmd.maxArgs)) {
     diags_.error("E016", item.range,
@@ -215,6 +216,39 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     default: numArgs(0, false); break;
   }
   for (const auto& b : item.body) checkSuccessor(b, w);
+}
+
+// CGA's split syntax: size labels `4:` on Subdiv's parts (the AST builder made them its
+// sizes when every part has one) and `{ ... }*` repeats. False when it reported an error.
+bool Analyzer::checkSplitSyntax(const Item& item, const CommandInfo& cmd) {
+  bool ok = true;
+  for (const auto& part : item.body) {
+    if (!part.size) continue;
+    ok = false;
+    if (cmd.id == CommandId::Subdiv)
+      diags_.error("E018", part.size->range,
+                   "give every part of the split a size, and Subdiv only its axis: "
+                   "`Subdiv(\"Y\"){ 4: Ground | ~3: Floor }` (or all sizes as arguments)");
+    else
+      diags_.error("E018", part.size->range,
+                   "a size label `4:` belongs to a part of Subdiv (CGA's split), not of '" + item.name + "'");
+    break;
+  }
+  if (!item.repeatPattern) return ok;
+  if (cmd.id != CommandId::Subdiv) {
+    diags_.error("E018", item.range,
+                 "`{ ... }*` repeats the parts of a Subdiv (`Subdiv(\"X\"){ ~1: Wall | 1.4: Window }*`), not of '" +
+                     item.name + "'");
+    return false;
+  }
+  for (size_t k = 1; k < item.args.size(); ++k)
+    if (item.args[k]->kind == ExprKind::RelSize) {
+      diags_.error("E018", item.args[k]->range,
+                   "a repeated pattern's parts need sizes in metres, absolute or floating (`~1`): a relative size "
+                   "has no length to repeat by");
+      ok = false;
+    }
+  return ok;
 }
 
 void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {

@@ -131,10 +131,12 @@ item
 
 callArgs : '(' ( expr ( ',' expr )* )? ')' ;
 
-body : '{' bodyPart ( ( '|' | ',' ) bodyPart )* '}' ;
+// CGA's repeat split: `Subdiv("X"){ ~1: Wall | 1.4: Window }*` repeats the parts.
+body : '{' bodyPart ( ( '|' | ',' ) bodyPart )* '}' repeat='*'? ;
 
-// A part may name the components it takes: `Comp("f"){ front: A | side: B }`.
-bodyPart : ( selector=ID ':' )? ( EPSILON | item+ ) ;
+// A part may name the components it takes, `Comp("f"){ front: A | side: B }`, or give
+// its size, CGA's split syntax `Subdiv("Y"){ 4: Ground | ~3: Floor }`.
+bodyPart : ( selector=ID ':' | size=expr ':' )? ( EPSILON | item+ ) ;
 
 // ------------------------------------------------------------- expressions
 

@@ -94,7 +94,7 @@ enum class OpKind : uint8_t {
   Instance,      // I / IC / IM: index = asset; mode; args (IM: maxDist, maxAngle)
   Emit,          // a shape: index = symbol, args = parameter values
   Turtle,        // index = TurtleOp, args optional
-  Subdiv,        // axis 0/1/2; sizes; one body per size
+  Subdiv,        // axis 0/1/2; sizes; one body per size; `repeat`: the parts repeat as a pattern
   Repeat,        // axes mask (1 X, 2 Y, 4 Z); sizes one per axis; bodies[0]
   Comp,          // str = selector id; bodies: one, applied to every component
   Extrude,       // args[0] height
@@ -146,6 +146,7 @@ struct Op {
   uint32_t index = 0;   // symbol / asset / axis / TurtleOp / axes mask
   uint32_t str = 0;     // string id (Comp selector, Roof kind)
   InstanceMode mode = InstanceMode::Plain;
+  bool repeat = false;  // Subdiv `{ ... }*`: its parts repeat as a pattern along the axis
   std::vector<Expr> args;
   std::vector<Size> sizes;
   std::vector<Block> bodies;

@@ -268,6 +268,7 @@ class Lowerer {
       case CommandId::Subdiv:
         op.kind = OpKind::Subdiv;
         op.index = axisIndex(constString(*item.args[0]));
+        op.repeat = item.repeatPattern;
         for (size_t k = 1; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
         break;
       case CommandId::Repeat: {

@@ -338,7 +338,9 @@ class Printer {
         if (!op.args.empty()) text += "(" + list(r, op.args) + ")";
         break;
       }
-      case OpKind::Subdiv: text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes); break;
+      case OpKind::Subdiv:
+        text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes) + (op.repeat ? " repeated" : "");
+        break;
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;
       case OpKind::Color: text = withArgs("color"); break;

@@ -3,6 +3,8 @@
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
 
+#include <cstdint>
+
 namespace fgsg::backend {
 
 std::vector<ir::OpKind> CgaCommands::kinds() const {
@@ -63,11 +65,20 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   std::vector<rt::cga::Part> parts;
   std::string error;
   bool ok = false;
+  size_t derivedParts = SIZE_MAX;  // a repeat split's leftover piece (past these) is not derived
   if (op.kind == ir::OpKind::Subdiv) {
     std::vector<rt::cga::SizeValue> sizes;
     for (size_t k = 0; k < op.sizes.size(); ++k)
       sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(op.sizes[k].kind), a[k]});
-    ok = rt::cga::subdivide(st.scope, st.geom, static_cast<int>(op.index), sizes, d_.arena(), parts, error);
+    const int axis = static_cast<int>(op.index);
+    ok = true;
+    if (op.repeat) {
+      std::vector<rt::cga::SizeValue> pattern = std::move(sizes);
+      size_t repeats = 0;
+      ok = rt::cga::repeatPattern(pattern, st.scope.S[axis], axis, sizes, repeats, error);
+      derivedParts = repeats * pattern.size();
+    }
+    ok = ok && rt::cga::subdivide(st.scope, st.geom, axis, sizes, d_.arena(), parts, error);
   } else if (op.kind == ir::OpKind::Repeat) {
     std::vector<double> sizes(a, a + op.sizes.size());
     ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, d_.arena(), parts, error);
@@ -80,7 +91,8 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   for (uint32_t label : op.partLabels) labelMasks.push_back(rt::cga::faceSelectorMask(d_.module().strings[label]));
   for (size_t i = 0; i < parts.size(); ++i) {
     if (parts[i].empty) continue;
-    size_t body = op.kind == ir::OpKind::Subdiv ? i : 0;
+    if (i >= derivedParts) break;
+    size_t body = op.kind == ir::OpKind::Subdiv ? i % op.bodies.size() : 0;
     if (!labelMasks.empty()) {
       body = 0;
       while (body < labelMasks.size() && !(labelMasks[body] & parts[i].faceClass)) ++body;

@@ -695,6 +695,7 @@ public:
 
   class  BodyContext : public antlr4::ParserRuleContext {
   public:
+    antlr4::Token *repeat = nullptr;;
     BodyContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *LBRACE();
@@ -705,6 +706,7 @@ public:
     antlr4::tree::TerminalNode* PIPE(size_t i);
     std::vector<antlr4::tree::TerminalNode *> COMMA();
     antlr4::tree::TerminalNode* COMMA(size_t i);
+    antlr4::tree::TerminalNode *STAR();
 
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
    
@@ -715,11 +717,13 @@ public:
   class  BodyPartContext : public antlr4::ParserRuleContext {
   public:
     antlr4::Token *selector = nullptr;;
+    FgsgParser::ExprContext *size = nullptr;;
     BodyPartContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *EPSILON();
     antlr4::tree::TerminalNode *COLON();
     antlr4::tree::TerminalNode *ID();
+    ExprContext *expr();
     std::vector<ItemContext *> item();
     ItemContext* item(size_t i);
 

@@ -44,6 +44,16 @@ bool subdivide(const Scope& scope, const GeomRef& geom, int axis,
                const std::vector<SizeValue>& sizes, GeometryArena& arena,
                std::vector<Part>& out, std::string& error);
 
+// CGA's repeat split `Subdiv("X"){ ~1: Wall | 1.4: Window }*` on a scope `length` long:
+// the sizes Subdiv cuts by, the pattern written out `*repeats` times. With a floating
+// size the pattern repeats round(length / its nominal length) times (at least once) and
+// the floating parts stretch or shrink to fill the scope; with absolute sizes alone it
+// repeats as often as it fits whole, and a last absolute size holds what is left (the
+// caller derives no part there). False and a message for a size that is not a finite
+// non-negative number, or a pattern of no length.
+bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axis, std::vector<SizeValue>& sizes,
+                   size_t& repeats, std::string& error);
+
 // Repeat("X", s) / Repeat("XY", sx, sy): tiles the scope with n = max(1, floor(L / s))
 // equal tiles per axis (each L / n long), axes given as a mask (1 X, 2 Y, 4 Z) with one
 // size per set bit, low bit first. Tiles are ordered X fastest, then Y, then Z. Tiles

@@ -128,4 +128,40 @@ bool subdivide(const Scope& scope, const GeomRef& geom, int axis,
   return true;
 }
 
+bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axis, std::vector<SizeValue>& sizes,
+                   size_t& repeats, std::string& error) {
+  double nominal = 0.0;
+  bool floating = false;
+  for (const SizeValue& s : pattern) {
+    if (!(s.value >= 0.0) || !std::isfinite(s.value)) {
+      std::ostringstream m;
+      m << "Subdiv along " << kAxisNames[axis] << ": size " << s.value << " must be a finite non-negative number";
+      error = m.str();
+      return false;
+    }
+    nominal += s.value;
+    floating |= s.kind == SizeValue::Floating;
+  }
+  if (!(nominal > 0.0)) {
+    error = std::string("Subdiv along ") + kAxisNames[axis] + ": the repeated parts have no length";
+    return false;
+  }
+  const double fits = length / nominal;
+  const double tol = kSumTol * std::max(1.0, fits);
+  const double count = floating ? std::max(1.0, std::round(fits)) : std::floor(fits + tol);
+  if (!(count * pattern.size() <= double(1u << 24))) {
+    std::ostringstream m;
+    m << "Subdiv along " << kAxisNames[axis] << ": a pattern of length " << nominal << " repeats more than "
+      << (1u << 24) << " parts on a length of " << length;
+    error = m.str();
+    return false;
+  }
+  repeats = static_cast<size_t>(count);
+  sizes.clear();
+  sizes.reserve(repeats * pattern.size() + 1);
+  for (size_t r = 0; r < repeats; ++r) sizes.insert(sizes.end(), pattern.begin(), pattern.end());
+  if (!floating) sizes.push_back({SizeValue::Absolute, std::max(0.0, length - count * nominal)});
+  return true;
+}
+
 }  // namespace fgsg::rt::cga

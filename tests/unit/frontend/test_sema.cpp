@@ -135,6 +135,21 @@ TEST_CASE("Labelled parts belong to Comp, name faces, and label every part", "[s
   CHECK(has(edges, "E028"));
 }
 
+TEST_CASE("CGA split syntax: sizes on the parts and repeated patterns", "[sema]") {
+  CHECK(analyse("Lot ~> S(10, 6, 0) Subdiv(\"Y\"){ 4: Ground | ~3: Floor };").ok);
+  CHECK(analyse("attr h = 3;\nLot ~> S(10, 6, 0) Subdiv(\"Y\"){ h: Ground | 1r: Upper };").ok);
+  CHECK(analyse("Lot ~> S(10, 6, 0) Subdiv(\"X\"){ ~1: Wall | 1.4: Window }*;").ok);
+  CHECK(analyse("Lot ~> S(10, 6, 0) Subdiv(\"X\", 1, 2){ A | B }*;").ok);
+  // Some parts sized, others not: located at the first size.
+  CHECK(has(analyse("Lot ~> S(10, 6, 0) Subdiv(\"Y\"){ 4: Ground | Floor };"), "E018", 1, 33));
+  // Sizes as arguments and on the parts.
+  CHECK(has(analyse("Lot ~> S(10, 6, 0) Subdiv(\"Y\", 4, 2){ 4: Ground | 2: Floor };"), "E018"));
+  CHECK(has(analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ 4: A };"), "E018"));
+  CHECK(has(analyse("Lot ~> S(10, 6, 0) Repeat(\"X\", 2){ A }*;"), "E018", 1, 20));
+  // A relative size has no length to repeat by.
+  CHECK(has(analyse("Lot ~> S(10, 6, 0) Subdiv(\"X\"){ 1r: A | 2: B }*;"), "E018", 1, 33));
+}
+
 TEST_CASE("Offset takes labelled inside and border parts", "[sema]") {
   CHECK(analyse("Lot ~> S(10, 0, 6) Offset(1){ inside: A | border: B };").ok);
   CHECK(has(analyse("Lot ~> S(10, 0, 6) Offset(1){ A };"), "E018"));
