@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   size_t skipped = 0;
   std::string error;
   options.lotsName = FGSG_SOURCE_DIR "/examples/city/lots.geojson";
+  options.assetDirs = {FGSG_SOURCE_DIR "/examples"};  // the city's textures
   if (!rt::readGeoJsonLots(options.lotsName, options.lots, skipped, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
