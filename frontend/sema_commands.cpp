@@ -125,15 +125,17 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
           "faces", "f", "sidefaces", "top", "bottom", "front", "back", "left", "right",
-          "edges", "e", "sideedges", "topedges", "bottomedges"};
+          "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips", "valleys"};
+      static const std::set<std::string> kEdgeSelectors = {"edges",  "e",     "sideedges", "topedges", "bottomedges",
+                                                           "eaves", "ridges", "rakes",     "hips",     "valleys"};
       std::string sel = stringArg(0, "selector");
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
                          "\" (faces or f, sidefaces, top, bottom, front, back, left, right, edges or e, "
-                         "sideedges, topedges, bottomedges)");
+                         "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys)");
       else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
-               (sel == "e" || sel.find("edges") != std::string::npos))
+               kEdgeSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "labelled parts take faces: write `Comp(\"f\"){ front: A | side: B }`, not \"" + sel + "\"");
       break;

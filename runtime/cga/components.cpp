@@ -4,6 +4,7 @@
 #include "runtime/cga/polygon_clip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -27,7 +28,13 @@ enum FaceClass : unsigned {
   kSide = kFront | kBack | kLeft | kRight,
   kAllFaces = 63,
 };
-enum EdgeClass : unsigned { kTopEdge = 1, kBottomEdge = 2, kSideEdge = 4, kAllEdges = 7 };
+// An edge is top, bottom or side by its height along the scope's Y; on a roof (or any
+// solid) it is also an eave (at the bottom), a ridge (level, above it), a rake (sloped,
+// along a vertical face: a gable's edge), a hip (sloped, convex) or a valley (concave).
+enum EdgeClass : unsigned {
+  kTopEdge = 1, kBottomEdge = 2, kSideEdge = 4, kAllEdges = 7,
+  kEave = 8, kRidge = 16, kRake = 32, kHip = 64, kValley = 128,
+};
 
 struct Selector {
   bool edges = false;
@@ -47,6 +54,8 @@ bool parseSelector(const std::string& s, Selector& sel) {
       {"left", false, kLeft},       {"right", false, kRight},
       {"edges", true, kAllEdges},   {"sideedges", true, kSideEdge},
       {"topedges", true, kTopEdge}, {"bottomedges", true, kBottomEdge},
+      {"eaves", true, kEave},       {"ridges", true, kRidge},        {"rakes", true, kRake},
+      {"hips", true, kHip},         {"valleys", true, kValley},
   };
   for (const auto& k : kSelectors)
     if (s == k.name) {
@@ -155,6 +164,7 @@ Part facePart(const WorldFace& f, const Scope& solid, GeometryArena& arena, Geom
 struct WorldEdge {
   Vec3 a, b;
   Vec3 normalSum = Vec3::Zero();
+  std::array<int, 2> faces{-1, -1};  // the first two faces that share it
 };
 
 // Each edge once, in the order the faces first reach it, with the normals of the faces
@@ -173,6 +183,9 @@ std::vector<WorldEdge> uniqueEdges(const std::vector<WorldFace>& faces, double t
       });
       if (it == edges.end()) it = edges.insert(edges.end(), WorldEdge{a, b});
       it->normalSum += f.normal;
+      const int face = int(&f - faces.data());
+      if (it->faces[0] < 0) it->faces[0] = face;
+      else if (it->faces[1] < 0) it->faces[1] = face;
     }
   }
   return edges;
@@ -200,6 +213,25 @@ Part edgePart(const WorldEdge& e, const Scope& solid, double tol) {
   part.scope.S = Vec3(0.0, len, 0.0);
   part.geom = GeomRef{GeomKind::Edge, 0, 0};
   return part;
+}
+
+// The edge's roof class (EdgeClass) with `up` the roof's up and ha, hb its ends' heights.
+unsigned roofEdgeClass(const WorldEdge& e, const std::vector<WorldFace>& faces, const Vec3& up, double ha, double hb,
+                       double hmin, double tol) {
+  if (std::abs(ha - hmin) <= tol && std::abs(hb - hmin) <= tol) return kEave;
+  if (std::abs(ha - hb) <= tol) return kRidge;
+  if (e.faces[1] < 0) return 0;  // an open solid's border
+  const WorldFace& f = faces[size_t(e.faces[0])];
+  const WorldFace& g = faces[size_t(e.faces[1])];
+  constexpr double kVertical = 1e-6;  // |n . up| of a vertical face (a gable end)
+  if (std::abs(f.normal.dot(up)) < kVertical || std::abs(g.normal.dot(up)) < kVertical) return kRake;
+  // Convex (a hip) when the other face bends away below the first face's plane.
+  double farthest = 0;
+  for (const Vec3& p : g.pts) {
+    const double d = (p - e.a).dot(f.normal);
+    if (std::abs(d) > std::abs(farthest)) farthest = d;
+  }
+  return farthest < 0 ? kHip : kValley;
 }
 
 }  // namespace
@@ -243,7 +275,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   if (!parseSelector(selector, sel)) {
     error = "Comp: unknown selector \"" + selector +
             "\" (expected faces, sidefaces, top, bottom, front, back, left, right, edges, "
-            "sideedges, topedges or bottomedges)";
+            "sideedges, topedges, bottomedges, eaves, ridges, rakes, hips or valleys)";
     return false;
   }
   if (geom.kind == GeomKind::Edge) {
@@ -276,6 +308,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
       cls = kTopEdge;
     else if (std::abs(ha - hmin) <= tol && std::abs(hb - hmin) <= tol)
       cls = kBottomEdge;
+    cls |= roofEdgeClass(e, faces, scope.Y(), ha, hb, hmin, tol);
     if (cls & sel.mask) out.push_back(edgePart(e, scope, tol));
   }
   return true;

@@ -313,3 +313,27 @@ TEST_CASE("Offset on a courtyard lot: inside and border bands add up to the lot"
   CHECK(areaOf.at("Inside") == Approx(256 - 64).epsilon(1e-6));
   CHECK(areaOf.at("Border") == Approx(144 + 48).epsilon(1e-6));
 }
+
+TEST_CASE("Comp takes a roof's eaves, ridges, rakes, hips and valleys", "[cga][output]") {
+  // Each selected edge places one cube (an edge outputs no geometry of its own).
+  auto count = [](const std::string& roof, const std::string& selector) {
+    const auto r = test::deriveText(roof + "{ Comp(\"" + selector + "\"){ E } };\nE ~> I(\"cube\");");
+    REQUIRE(r.ok);
+    return r.instances.instances.size();
+  };
+  const std::string hipped = "A ~> S(10, 3, 6) Roof(\"hipped\", 35)", gable = "A ~> S(10, 3, 6) Roof(\"gable\", 35)";
+  const std::string ell = "A ~> Footprint(0, 0, 20, 0, 20, 9, 9, 9, 9, 18, 0, 18) Roof(\"hipped\", 30)";
+  CHECK(count(hipped, "eaves") == 4);
+  CHECK(count(hipped, "ridges") == 1);
+  CHECK(count(hipped, "hips") == 4);
+  CHECK(count(hipped, "rakes") == 0);
+  CHECK(count(hipped, "valleys") == 0);
+  CHECK(count(gable, "rakes") == 4);  // the gable ends' sloped edges
+  CHECK(count(gable, "hips") == 0);
+  CHECK(count(gable, "ridges") == 1);
+  // An L: the concave corner's valley, five hips, two ridges, six eaves.
+  CHECK(count(ell, "valleys") == 1);
+  CHECK(count(ell, "hips") == 5);
+  CHECK(count(ell, "ridges") == 2);
+  CHECK(count(ell, "eaves") == 6);
+}
