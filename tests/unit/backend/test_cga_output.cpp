@@ -337,3 +337,12 @@ TEST_CASE("Comp takes a roof's eaves, ridges, rakes, hips and valleys", "[cga][o
   CHECK(count(ell, "ridges") == 2);
   CHECK(count(ell, "eaves") == 6);
 }
+
+TEST_CASE("A flat roof with a parapet is an Offset band extruded: a closed ring of the band's area", "[cga][output]") {
+  // L footprint: area 261, perimeter 76, five convex corners and one concave; the band
+  // 0.4 wide has area P d - (5 - 1) d^2 = 29.76, so the parapet 1.1 high holds 32.736.
+  const rt::Mesh parapet = assembled(test::deriveText(
+      "Lot ~> Footprint(0, 0, 20, 0, 20, 9, 9, 9, 9, 18, 0, 18) Offset(0.4){ inside: ε | border: Extrude(1.1) Parapet };"));
+  CHECK(volume(parapet) == Approx(32.736).epsilon(1e-5));  // float vertices
+  CHECK(watertight(parapet));
+}
