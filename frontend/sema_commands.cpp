@@ -141,13 +141,33 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       break;
     }
     case CommandId::Offset: numArgs(0, false); break;
-    case CommandId::Footprint:
-      if (n % 2 != 0)
-        diags_.error("E016", item.range,
-                     "'Footprint' takes pairs of coordinates x, z (one per corner, three corners at least), got " +
-                         std::to_string(n) + " numbers: " + cmd.signature);
-      numArgs(0, false);
+    case CommandId::Footprint: {
+      // Rings of corner pairs, each hole after the word "hole": Footprint(outline..., "hole", ...).
+      size_t ringStart = 0;
+      auto endRing = [&](size_t end, const SourceRange& at) {
+        const size_t count = end - ringStart;
+        if (count % 2 != 0 || count < 6)
+          diags_.error("E016", at,
+                       std::string(ringStart == 0 ? "the outline" : "a hole") +
+                           " of 'Footprint' takes pairs of coordinates x, z, three corners at least, got " +
+                           std::to_string(count) + " numbers: " + cmd.signature);
+      };
+      for (size_t k = 0; k < item.args.size(); ++k) {
+        ConstValue v;
+        if (!(evalConst(*item.args[k], v) && v.type == ValueType::Str)) {
+          expect(*item.args[k], w, ValueType::Num, "this argument");
+          continue;
+        }
+        res_.exprTypes[item.args[k].get()] = ValueType::Str;
+        if (v.str != "hole")
+          diags_.error("E028", item.args[k]->range,
+                       "between a Footprint's rings write \"hole\" (then the hole's corners), not \"" + v.str + "\"");
+        endRing(k, item.args[k]->range);
+        ringStart = k + 1;
+      }
+      endRing(item.args.size(), item.range);
       break;
+    }
     case CommandId::Roof: {
       std::string kind = stringArg(0, "roof kind");
       if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid" && kind != "shed")

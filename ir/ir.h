@@ -98,7 +98,7 @@ enum class OpKind : uint8_t {
   Repeat,        // axes mask (1 X, 2 Y, 4 Z); sizes one per axis; bodies[0]
   Comp,          // str = selector id; bodies: one, applied to every component
   Extrude,       // args[0] height
-  Footprint,     // args x1 z1 x2 z2 ...: the shape becomes this polygon in its scope's XZ plane
+  Footprint,     // args x1 z1 x2 z2 ...: the shape becomes this polygon in its scope's XZ plane; holes from ringStarts
   Offset,        // args[0] distance; bodies labelled `inside` / `border` (partLabels)
   Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
   Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
@@ -154,6 +154,8 @@ struct Op {
   // `Offset(2){ inside: A | border: B }`): each body's label, a string id; empty when the
   // parts are not labelled.
   std::vector<uint32_t> partLabels;
+  // Footprint with holes: the index in `args` where each hole's corners start (ascending).
+  std::vector<uint32_t> ringStarts;
   std::string name;  // Unsupported: the construct; also the source spelling of commands
   std::string why;   // Unsupported: what it waits for
 };

@@ -293,7 +293,13 @@ class Lowerer {
           if (!part.selector.empty()) op.partLabels.push_back(m_.internString(part.selector));
         break;
       case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
-      case CommandId::Footprint: op.kind = OpKind::Footprint; allArgs(0); break;
+      case CommandId::Footprint:
+        op.kind = OpKind::Footprint;
+        for (const auto& a : item.args) {
+          if (a->kind == frontend::ExprKind::String) op.ringStarts.push_back(static_cast<uint32_t>(op.args.size()));
+          else op.args.push_back(expr(*a));
+        }
+        break;
       case CommandId::Offset:
         op.kind = OpKind::Offset;
         allArgs(0);

@@ -350,7 +350,10 @@ class Printer {
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
         break;
       case OpKind::Extrude: text = withArgs("extrude"); break;
-      case OpKind::Footprint: text = withArgs("footprint"); break;
+      case OpKind::Footprint:
+        text = withArgs("footprint");
+        for (uint32_t start : op.ringStarts) text += " hole@" + std::to_string(start);
+        break;
       case OpKind::Offset:
         text = withArgs("offset");
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";

@@ -471,11 +471,18 @@ class Verifier {
                   " bodies");
         for (uint32_t label : op.partLabels) stringId(label);
         break;
-      case OpKind::Footprint:
+      case OpKind::Footprint: {
         expectBodies(op, 0);
-        if (op.args.size() < 6 || op.args.size() % 2 != 0)
-          problem(std::to_string(op.args.size()) + " footprint coordinates (pairs x, z, three at least)");
+        uint32_t start = 0;
+        for (size_t ring = 0; ring <= op.ringStarts.size(); ++ring) {
+          const uint32_t end = ring < op.ringStarts.size() ? op.ringStarts[ring] : uint32_t(op.args.size());
+          if (end < start || end - start < 6 || (end - start) % 2 != 0)
+            problem("footprint ring " + std::to_string(ring) + " of " + std::to_string(end - start) +
+                    " coordinates (pairs x, z, three at least)");
+          start = end;
+        }
         break;
+      }
       case OpKind::Color:
         expectBodies(op, 0);
         numArgs(op, r, 3);

@@ -3,6 +3,7 @@
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace fgsg::backend {
@@ -26,9 +27,15 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
     case ir::OpKind::Footprint: {
       rt::cga::Part part;
       std::string error;
-      std::vector<Eigen::Vector2d> corners;
-      for (uint32_t k = 0; k + 1 < n; k += 2) corners.emplace_back(a[k], a[k + 1]);
-      if (!rt::cga::footprint(st.scope, corners, {}, d_.arena(), part, error)) throw DeriveError{op.loc, "R002", error};
+      // The outline, then each hole from its ring start on.
+      std::vector<std::vector<Eigen::Vector2d>> rings(1);
+      for (uint32_t k = 0; k + 1 < n; k += 2) {
+        if (std::find(op.ringStarts.begin(), op.ringStarts.end(), k) != op.ringStarts.end()) rings.emplace_back();
+        rings.back().emplace_back(a[k], a[k + 1]);
+      }
+      const std::vector<std::vector<Eigen::Vector2d>> holes(rings.begin() + 1, rings.end());
+      if (!rt::cga::footprint(st.scope, rings[0], holes, d_.arena(), part, error))
+        throw DeriveError{op.loc, "R002", error};
       st.scope = part.scope;
       st.geom = part.geom;
       break;

@@ -346,3 +346,19 @@ TEST_CASE("A flat roof with a parapet is an Offset band extruded: a closed ring 
   CHECK(volume(parapet) == Approx(32.736).epsilon(1e-5));  // float vertices
   CHECK(watertight(parapet));
 }
+
+TEST_CASE("A Footprint with a hole is a courtyard: walls around both rings, a roof around the court", "[cga][output]") {
+  const std::string lot = "Lot ~> Footprint(0, 0, 30, 0, 30, 20, 0, 20, \"hole\", 10, 5, 20, 5, 20, 15, 10, 15)";
+  const rt::Mesh mass = assembled(test::deriveText(lot + " Extrude(3) Mass;"));
+  CHECK(volume(mass) == Approx((600.0 - 100.0) * 3).epsilon(1e-6));
+  CHECK(watertight(mass));
+  const rt::Mesh roof = assembled(test::deriveText(lot + " Roof(\"hipped\", 30){ RoofSolid };"));
+  CHECK(watertight(roof));
+  CHECK(volume(roof) > 0);
+  // A hole that leaves the outline is a located error naming it.
+  const auto outside = test::deriveText(
+      "Lot ~> Footprint(0, 0, 30, 0, 30, 20, 0, 20, \"hole\", 25, 5, 35, 5, 35, 15, 25, 15) Mass;");
+  REQUIRE_FALSE(outside.ok);
+  CHECK(outside.messages[0].code == "R002");
+  CHECK_THAT(outside.messages[0].message, Contains("hole 0"));
+}
