@@ -38,7 +38,7 @@ next line (an empty line ends it).
   :derive [N]       derive from the axiom (N: --max-depth) and print the statistics
   :seed N           the random seed of later derivations (default 1)
   :set name=value   override an attribute, like fgsg run --set
-  :lots [FILE]      derive once per lot of a GeoJSON file, like fgsg run --lots
+  :lots [FILE]      derive once per lot of a GeoJSON or mesh file, like fgsg run --lots
                     (no FILE: back to one derivation)
   :load FILE        add the statements of a .fgsg file
   :save FILE        write the session grammar as a .fgsg file

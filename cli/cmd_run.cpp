@@ -6,7 +6,7 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
-#include "runtime/io/geojson_lots.h"
+#include "runtime/io/read_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/assemble.h"
 #include "runtime/io/cache_folder.h"
@@ -88,7 +88,7 @@ RunOptions parseRunOptions(const Args& args) {
     } else if (f == "--lots") {
       o.derive.lotsName = r.value(f);
       std::string error;
-      if (!rt::readGeoJsonLots(o.derive.lotsName, o.derive.lots, o.lotsSkipped, error)) throw UsageError{error};
+      if (!rt::readLots(o.derive.lotsName, o.derive.lots, o.lotsSkipped, error)) throw UsageError{error};
     } else if (f == "--seed-density") {
       o.derive.seedDensity = r.value(f);
       if (o.derive.seedDensity.empty()) throw UsageError{"--seed-density needs a texture name"};

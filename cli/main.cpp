@@ -47,8 +47,9 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
   --seed-density T --seed-count N  N more seeds drawn where the grammar's texture T is
                      bright (density proportional to its value and the area)
   --lots FILE        derive the axiom once per lot of a GeoJSON file (Polygon and
-                     MultiPolygon features), its shape the lot's footprint; attrs named
-                     like a lot's properties take their values (docs/cga.md)
+                     MultiPolygon features) or per polygon face of an OBJ/PLY/OFF mesh
+                     (Y up), its shape the lot's footprint; attrs named like a lot's
+                     properties take their values (docs/cga.md)
   --march-candidates N  directions tried around a failed Marching condition (default 8)
   --atlas-resolution N  side of the marching geometry image in texels (default 1024)
   --march-units U    Marching's length: surface (3D distance, default) or texels

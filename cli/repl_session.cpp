@@ -11,7 +11,7 @@
 #include "frontend/parse.h"
 #include "ir/printer.h"
 #include "runtime/assemble.h"
-#include "runtime/io/geojson_lots.h"
+#include "runtime/io/read_lots.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/random.h"
 
@@ -213,7 +213,7 @@ bool Session::setAttribute(const std::string& name, const std::string& value, st
 bool Session::setLots(const std::string& path, std::string& error) {
   std::vector<rt::Lot> lots;
   size_t skipped = 0;
-  if (!path.empty() && !rt::readGeoJsonLots(path, lots, skipped, error)) return false;
+  if (!path.empty() && !rt::readLots(path, lots, skipped, error)) return false;
   lots_ = std::move(lots);
   lotsName_ = path;
   return true;

@@ -19,6 +19,7 @@ struct Lot {
   std::string id;                                   // the feature's "id" (a number as its JSON text), else ""
   size_t feature = 0;                               // index of the feature in the collection (0-based)
   size_t part = 0;                                  // index of the polygon within a MultiPolygon (0 for a Polygon)
+  bool isFace = false;                              // a mesh face (runtime/io/mesh_lots.h): `feature` is its index
   // The feature's properties in file order: numbers, and booleans as 0/1, in `numbers`;
   // strings in `strings`; null, arrays and objects are left out.
   std::vector<std::pair<std::string, double>> numbers;
@@ -26,9 +27,10 @@ struct Lot {
 };
 
 // How messages name a lot: as the GeoJSON reader names features, "lots.geojson:
-// feature 6 (id "L0007")", with the polygon of a MultiPolygon when it is not the first.
+// feature 6 (id "L0007")", with the polygon of a MultiPolygon when it is not the first;
+// a mesh's face as its reader does, "lots.obj: face 6".
 inline std::string lotName(const std::string& file, const Lot& lot) {
-  std::string name = file + ": feature " + std::to_string(lot.feature);
+  std::string name = file + (lot.isFace ? ": face " : ": feature ") + std::to_string(lot.feature);
   if (!lot.id.empty()) name += " (id \"" + lot.id + "\")";
   if (lot.part > 0) name += ", polygon " + std::to_string(lot.part);
   return name;

@@ -11,7 +11,7 @@
 #include "ir/pipeline.h"
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
-#include "runtime/io/geojson_lots.h"
+#include "runtime/io/read_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
@@ -407,7 +407,7 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       std::vector<rt::Lot> lots;
       size_t skipped = 0;
       std::string why;
-      if (!rt::readGeoJsonLots(v, lots, skipped, why)) return bad("a GeoJSON file of lots (" + why + ")");
+      if (!rt::readLots(v, lots, skipped, why)) return bad("a file of lots, GeoJSON or a mesh's faces (" + why + ")");
       o.lots = std::move(lots);
       o.lotsName = v;
     } else if (n == "seed-density") {

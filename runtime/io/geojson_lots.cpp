@@ -1,10 +1,9 @@
-// Building lots from GeoJSON: reading, unit handling, ring validation and orientation.
+// Building lots from GeoJSON: reading and unit handling (runtime/io/lot_rings.h checks and
+// orients the rings).
 #include "runtime/io/geojson_lots.h"
 
 #include "runtime/io/read_input.h"
-#include "runtime/planar.h"
 
-#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -12,7 +11,6 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <tuple>
 
 namespace fgsg::rt {
 
@@ -23,11 +21,6 @@ using Json = nlohmann::ordered_json;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEarthRadius = 6371008.8;  // mean radius of the WGS84 ellipsoid, metres
-// Coordinates in metres beyond this are no place on Earth, and would overflow the area sums.
-constexpr double kMaxMetres = 1e9;
-// Points closer than this (relative to the lot's coordinates) count as touching: 1 micron
-// on a kilometre, far above rounding and far below any real gap between two walls.
-constexpr double kRelativeTolerance = 1e-9;
 
 struct GeoJsonError {
   std::string message;
@@ -61,20 +54,13 @@ const char* typeName(const Json& j) {
   }
 }
 
-// One ring as read: the points kept, where they stood in the file's array, and the same
-// points in metres (equal to `file` when the file is in metres).
-struct Ring {
-  std::vector<Eigen::Vector2d> file;
-  std::vector<size_t> index;
-  std::vector<Eigen::Vector2d> xy;
-};
-
 // A polygon read but not yet checked: its lot (properties filled in) and the text that
-// places it in messages, "lots.geojson: feature 3 (id "L4"), polygon 1".
+// places it in messages, "lots.geojson: feature 3 (id "L4"), polygon 1". Its rings hold
+// the points kept as the file wrote them (longitude, latitude, 0), `xy` filled by project.
 struct Pending {
   Lot lot;
   std::string place;
-  std::vector<Ring> rings;
+  std::vector<LotRing> rings;
 };
 
 // 1-based line and column of byte `offset` of `text`.
@@ -118,10 +104,6 @@ bool namesEpsg4326(const std::string& name) {
     if (!digitBefore && !digitAfter) return true;
   }
   return false;
-}
-
-std::string ringName(size_t r) {
-  return "ring " + std::to_string(r) + (r == 0 ? " (outer)" : " (hole " + std::to_string(r) + ")");
 }
 
 class Reader {
@@ -241,12 +223,13 @@ class Reader {
     Pending p{std::move(lot), place, {}};
     size_t points = 0;
     for (size_t r = 0; r < polygon.size(); ++r) {
-      const std::string ringPlace = place + ", " + ringName(r);
+      const std::string ringPlace = place + ", " + lotRingName(r);
       const Json& ring = polygon[r];
       if (!ring.is_array()) fail(ringPlace + ": a ring is an array of positions, got " + typeName(ring));
-      Ring out;
+      LotRing out;
       for (size_t i = 0; i < ring.size(); ++i) {
-        const Eigen::Vector2d q = readPosition(ring[i], ringPlace + ", point " + std::to_string(i));
+        const Eigen::Vector2d position = readPosition(ring[i], ringPlace + ", point " + std::to_string(i));
+        const Eigen::Vector3d q(position.x(), position.y(), 0);
         if (!out.file.empty() && q == out.file.back()) continue;
         out.file.push_back(q);
         out.index.push_back(i);
@@ -276,13 +259,15 @@ class Reader {
       fail(where + ": " + fmt(q) +
            " is not longitude/latitude in degrees; a file in metres says so with a \"crs\" such as "
            "{\"type\": \"name\", \"properties\": {\"name\": \"urn:fgsg:local-metres\"}}");
-    if (!degrees_ && (std::abs(q.x()) > kMaxMetres || std::abs(q.y()) > kMaxMetres))
-      fail(where + ": " + fmt(q) + " is more than " + fmt(kMaxMetres) + " m from the origin");
+    if (!degrees_ && (std::abs(q.x()) > kMaxLotMetres || std::abs(q.y()) > kMaxLotMetres))
+      fail(where + ": " + fmt(q) + " is more than " + fmt(kMaxLotMetres) + " m from the origin");
     return q;
   }
 
-  static void checkDistinct(const Ring& ring, const std::string& where) {
-    std::vector<Eigen::Vector2d> distinct = ring.file;
+  // Here rather than in the ring checks, so that such a ring is refused in file order.
+  static void checkDistinct(const LotRing& ring, const std::string& where) {
+    std::vector<Eigen::Vector2d> distinct;
+    for (const Eigen::Vector3d& q : ring.file) distinct.push_back(q.head<2>());
     const auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
       return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
     };
@@ -305,160 +290,27 @@ class Reader {
 void project(std::vector<Pending>& pending, bool degrees) {
   Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   for (const Pending& p : pending)
-    for (const Ring& ring : p.rings)
-      for (const Eigen::Vector2d& q : ring.file) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    for (const LotRing& ring : p.rings)
+      for (const Eigen::Vector3d& q : ring.file) lo = lo.cwiseMin(q.head<2>()), hi = hi.cwiseMax(q.head<2>());
   const Eigen::Vector2d centre = 0.5 * (lo + hi);
   const double toMetres = kEarthRadius * kPi / 180;
   const Eigen::Vector2d scale(toMetres * std::cos(centre.y() * kPi / 180), toMetres);
   for (Pending& p : pending)
-    for (Ring& ring : p.rings) {
+    for (LotRing& ring : p.rings) {
       ring.xy.reserve(ring.file.size());
-      for (const Eigen::Vector2d& q : ring.file)
-        ring.xy.push_back(degrees ? Eigen::Vector2d((q - centre).cwiseProduct(scale)) : q);
+      for (const Eigen::Vector3d& q : ring.file) {
+        const Eigen::Vector2d file = q.head<2>();
+        ring.xy.push_back(degrees ? Eigen::Vector2d((file - centre).cwiseProduct(scale)) : file);
+      }
     }
-}
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-
-// Whether the open segments ab and cd cross at a single point inside both.
-bool crossProperly(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                   const Eigen::Vector2d& d) {
-  const double abc = cross(b - a, c - a), abd = cross(b - a, d - a);
-  const double cda = cross(d - c, a - c), cdb = cross(d - c, b - c);
-  return ((abc > 0 && abd < 0) || (abc < 0 && abd > 0)) && ((cda > 0 && cdb < 0) || (cda < 0 && cdb > 0));
-}
-
-double segmentDistance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                       const Eigen::Vector2d& d) {
-  if (crossProperly(a, b, c, d)) return 0;
-  return std::min({pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d), pointSegmentDistance(c, a, b),
-                   pointSegmentDistance(d, a, b)});
-}
-
-// Crossing-number test; `p` is known not to lie on the ring.
-bool inside(const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& ring) {
-  bool in = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Eigen::Vector2d& a = ring[i];
-    const Eigen::Vector2d& b = ring[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-      in = !in;
-  }
-  return in;
-}
-
-std::string point(const Ring& ring, size_t i) {
-  return "point " + std::to_string(ring.index[i]) + " " + fmt(ring.file[i]);
-}
-
-std::string edge(const Ring& ring, size_t i) {
-  return "the edge from " + point(ring, i) + " to " + point(ring, (i + 1) % ring.file.size());
-}
-
-struct Edge {
-  size_t ring, i;
-  double minX, maxX, minY, maxY;
-};
-
-// No two edges of the lot's rings touch or cross, except neighbours in a ring at their
-// shared point. Edges sorted by their left end are compared only with those whose x
-// ranges overlap theirs, which keeps ordinary lots near n log n.
-void checkEdges(const Pending& p, double tolerance) {
-  std::vector<Edge> edges;
-  for (size_t r = 0; r < p.rings.size(); ++r) {
-    const std::vector<Eigen::Vector2d>& xy = p.rings[r].xy;
-    for (size_t i = 0; i < xy.size(); ++i) {
-      const Eigen::Vector2d& a = xy[i];
-      const Eigen::Vector2d& b = xy[(i + 1) % xy.size()];
-      edges.push_back({r, i, std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
-                       std::max(a.y(), b.y())});
-    }
-  }
-  // Ties broken by ring and index, so that which of several faults is reported is fixed.
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-    return std::tie(a.minX, a.ring, a.i) < std::tie(b.minX, b.ring, b.i);
-  });
-  for (size_t u = 0; u < edges.size(); ++u)
-    for (size_t v = u + 1; v < edges.size() && edges[v].minX <= edges[u].maxX + tolerance; ++v) {
-      // The edge of the later ring (or the later edge of one ring) first in messages.
-      const bool swap = std::tie(edges[u].ring, edges[u].i) < std::tie(edges[v].ring, edges[v].i);
-      const Edge& e = swap ? edges[v] : edges[u];
-      const Edge& f = swap ? edges[u] : edges[v];
-      if (e.minY > f.maxY + tolerance || f.minY > e.maxY + tolerance) continue;
-      const Ring& re = p.rings[e.ring];
-      const Ring& rf = p.rings[f.ring];
-      const size_t n = re.xy.size();
-      const Eigen::Vector2d& a = re.xy[e.i];
-      const Eigen::Vector2d& b = re.xy[(e.i + 1) % n];
-      const Eigen::Vector2d& c = rf.xy[f.i];
-      const Eigen::Vector2d& d = rf.xy[(f.i + 1) % rf.xy.size()];
-      // Neighbours meet at their shared point. Two that fold back onto each other leave a
-      // point on an edge that is no neighbour (or, in a triangle, zero area), found there.
-      if (e.ring == f.ring && (e.i == (f.i + 1) % n || f.i == (e.i + 1) % n)) continue;
-      if (segmentDistance(a, b, c, d) > tolerance) continue;
-      const std::string where = p.place + ", " + ringName(e.ring) + ": ";
-      const std::string verb = crossProperly(a, b, c, d) ? " crosses " : " touches ";
-      if (e.ring == f.ring) fail(where + edge(re, e.i) + verb + edge(rf, f.i));
-      fail(where + edge(re, e.i) + verb + ringName(f.ring) + " at " + edge(rf, f.i));
-    }
-}
-
-// The rings are sound on their own and no two touch: each hole lies wholly inside the
-// outer ring or wholly outside, and likewise for two holes, as one point of it tells.
-void checkHoles(const Pending& p) {
-  const std::vector<Ring>& rings = p.rings;
-  std::vector<Eigen::AlignedBox2d> boxes;
-  for (const Ring& ring : rings) {
-    Eigen::AlignedBox2d box;
-    for (const Eigen::Vector2d& q : ring.xy) box.extend(q);
-    boxes.push_back(box);
-  }
-  for (size_t h = 1; h < rings.size(); ++h)
-    if (!inside(rings[h].xy[0], rings[0].xy))
-      fail(p.place + ", " + ringName(h) + ": lies outside the outer ring (its " + point(rings[h], 0) + ")");
-  for (size_t h = 1; h < rings.size(); ++h)
-    for (size_t k = 1; k < rings.size(); ++k)
-      if (h != k && boxes[k].contains(boxes[h]) && inside(rings[h].xy[0], rings[k].xy))
-        fail(p.place + ", " + ringName(h) + ": lies inside " + ringName(k) + " (its " +
-             point(rings[h], 0) + "); holes may not overlap");
 }
 
 Lot finish(Pending& p) {
-  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-  double largest = 0;
-  for (const Ring& ring : p.rings)
-    for (const Eigen::Vector2d& q : ring.xy) {
-      lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-      largest = std::max(largest, q.cwiseAbs().maxCoeff());
-    }
-  const double tolerance = kRelativeTolerance * std::max(largest, (hi - lo).maxCoeff());
-  checkEdges(p, tolerance);
-  // Left for a ring without touching edges to be degenerate: a triangle on one line (a
-  // figure eight has zero area too, but its edges cross, as found above).
-  for (size_t r = 0; r < p.rings.size(); ++r) {
-    const Ring& ring = p.rings[r];
-    Eigen::AlignedBox2d box;
-    for (const Eigen::Vector2d& q : ring.xy) box.extend(q);
-    if (std::abs(twiceRingArea(ring.xy)) <= 2 * tolerance * box.sizes().maxCoeff())
-      fail(p.place + ", " + ringName(r) + ": zero area (all its points on one line, from " + point(ring, 0) +
-           ")");
-  }
-  checkHoles(p);
+  LotMessages messages;  // the defaults are GeoJSON's words
+  messages.place = p.place;
   Lot lot = std::move(p.lot);
-  for (size_t r = 0; r < p.rings.size(); ++r) {
-    std::vector<Eigen::Vector2d>& xy = p.rings[r].xy;
-    // Outer rings counter-clockwise, holes clockwise, whatever the file had; the first
-    // point stays first.
-    if ((twiceRingArea(xy) > 0) != (r == 0)) std::reverse(xy.begin() + 1, xy.end());
-    if (r == 0) lot.outer = std::move(xy);
-    else lot.holes.push_back(std::move(xy));
-  }
+  std::string error;
+  if (!checkAndOrientRings(p.rings, messages, lot, error)) fail(error);
   return lot;
 }
 

@@ -22,6 +22,7 @@
 // ring, and strictly outside each other).
 #pragma once
 
+#include "runtime/io/lot_rings.h"  // kMaxLotPoints
 #include "runtime/lot.h"
 
 #include <cstddef>
@@ -30,10 +31,6 @@
 #include <vector>
 
 namespace fgsg::rt {
-
-// The most points one lot (outer ring and holes together) may have: far above any real
-// lot, and low enough that the edge checks, quadratic at worst, stay under a second.
-constexpr size_t kMaxLotPoints = 20'000;
 
 // Reads the lots of the GeoJSON file at `path` (see above). `skipped` counts the
 // geometries of other types (Point, LineString, GeometryCollection, null, ...) passed

@@ -55,4 +55,11 @@ printf '{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"na
   "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]]}}]}' >"$tmp/tall.geojson"
 expect 1 'feature 0 \(id "L9"\): property height=tall: expected a number' -- \
   "$fgsg" run examples/city.fgsg --lots "$tmp/tall.geojson" -o "$tmp/x.glb"
+# Lots from a mesh's polygon faces (Y up): an L-shaped face and a rectangle, two buildings.
+printf 'v 0 0 0\nv 20 0 0\nv 20 0 -9\nv 9 0 -9\nv 9 0 -18\nv 0 0 -18\nv 30 0 0\nv 45 0 0\nv 45 0 -12\nv 30 0 -12\nf 1 2 3 4 5 6\nf 7 8 9 10\n' >"$tmp/block.obj"
+"$fgsg" run examples/city.fgsg --lots "$tmp/block.obj" --stats -o "$tmp/block.glb" >"$tmp/block.stats" 2>&1 || fail "OBJ lots: exit $?"
+faceInstances=$(awk '$1 == "instances" {print $2}' "$tmp/block.stats")
+[ "${faceInstances:-0}" -gt 300 ] || fail "only ${faceInstances:-no} instances for two OBJ lots"
+printf 'v 0 0 0\nv 10 0 -10\nv 10 0 0\nv 0 0 -10\nf 1 2 3 4\n' >"$tmp/bow.obj"
+expect 2 'bow.obj: face 0: the edge from corner 2 .* crosses' -- "$fgsg" run examples/city.fgsg --lots "$tmp/bow.obj" -o "$tmp/x.glb"
 echo "ok: city lots"
