@@ -3,6 +3,8 @@
 // message that names the feature, the ring and the coordinates.
 #include "runtime/io/geojson_lots.h"
 
+#include "runtime/planar.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -15,15 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Positive counter-clockwise.
-double signedArea(const std::vector<Eigen::Vector2d>& ring) {
-  double sum = 0;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Eigen::Vector2d& a = ring[i];
-    const Eigen::Vector2d& b = ring[(i + 1) % ring.size()];
-    sum += a.x() * b.y() - a.y() * b.x();
-  }
-  return sum / 2;
-}
+double signedArea(const std::vector<Eigen::Vector2d>& ring) { return twiceRingArea(ring) / 2; }
 
 std::vector<Lot> lotsOf(const std::string& text, size_t& skipped) {
   std::vector<Lot> lots;

@@ -4,6 +4,8 @@
 #include "runtime/io/mesh_lots.h"
 #include "scratch_files.h"
 
+#include "runtime/planar.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -18,15 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Positive counter-clockwise.
-double signedArea(const std::vector<Eigen::Vector2d>& ring) {
-  double sum = 0;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Eigen::Vector2d& a = ring[i];
-    const Eigen::Vector2d& b = ring[(i + 1) % ring.size()];
-    sum += a.x() * b.y() - a.y() * b.x();
-  }
-  return sum / 2;
-}
+double signedArea(const std::vector<Eigen::Vector2d>& ring) { return twiceRingArea(ring) / 2; }
 
 std::string write(const std::string& name, const std::string& bytes) {
   static int n = 0;
