@@ -30,7 +30,18 @@ void Derivation::deriveLots(uint64_t root) {
     const auto index = static_cast<uint32_t>(k);
     execRoot(0, m_.axiom, part.scope, part.geom, rt::childKey(root, index), 0, index, &noParams, UINT32_MAX);
     deriveWaitingShapes();
+    if (k == 0) reserveForLots(opt_.lots.size());
   }
+}
+
+// After the first lot, room for as many again per lot (and a tenth more): the output
+// lists then grow without being copied over and over (their copies were a fifth of a
+// city block's time).
+void Derivation::reserveForLots(size_t lots) {
+  const auto room = [lots](size_t firstLot) { return firstLot + firstLot * (lots - 1) / 10 * 11; };
+  out_.instances.reserve(room(out_.instances.size()));
+  out_.params.reserve(room(out_.params.size()));
+  out_.geometries.reserve(room(out_.geometries.size()));
 }
 
 }  // namespace fgsg::backend
