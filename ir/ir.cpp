@@ -69,7 +69,6 @@ bool isCgaGeometryOp(OpKind kind) {
     case OpKind::Extrude:
     case OpKind::Roof:
     case OpKind::Footprint:
-    case OpKind::Texture:
     case OpKind::Offset: return true;
     default: return false;
   }

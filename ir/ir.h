@@ -322,7 +322,7 @@ struct Module {
 bool anyOp(const Module& m, const std::function<bool(const Op&)>& pred);
 
 // CGA's geometry commands: they give shapes geometry of their own (a split piece, a face,
-// a solid, a footprint polygon) — and Texture, which only leaves' own geometry takes.
+// a solid, a footprint polygon).
 bool isCgaGeometryOp(OpKind kind);
 // A sequential grammar that uses them is a CGA grammar: each shape of a symbol without
 // rules (a leaf) outputs its own geometry, as CGA does. Elsewhere leaves place nothing.

@@ -296,6 +296,8 @@ class Derivation final : public QueryHost {
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
   uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
+  // Per grammar asset: it has texture coordinates, so a Texture above its I() draws on it.
+  std::vector<uint8_t> assetHasTexcoords_;
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).
   bool leavesOutput_ = false;

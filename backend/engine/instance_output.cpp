@@ -110,6 +110,11 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                           "extrusion or translation grew too large"};
   }
   inst.color = scope.colored ? scope.color : symbolColor_[symbol];
+  // An asset with texture coordinates of its own draws the image of a Texture above it.
+  if (scope.projection && asset < assetHasTexcoords_.size() && assetHasTexcoords_[asset]) {
+    inst.texture = textures_.projection(scope.projection).texture;
+    if (!scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
+  }
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;

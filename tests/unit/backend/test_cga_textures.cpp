@@ -47,7 +47,9 @@ std::pair<Range, Range> uvRange(const rt::DeriveResult& r, size_t which) {
 }  // namespace
 
 TEST_CASE("a textured facade is tiled in metres from the scope Texture ran in", "[cga][texture]") {
-  const auto r = test::deriveText("Lot ~> S(10, 6, 0) Texture(\"textures/brick.png\", 2, 3) Wall;", withExamples());
+  // (The one-part Subdiv makes it a CGA grammar, whose leaves output their own geometry.)
+  const auto r = test::deriveText("Lot ~> S(10, 6, 0) Texture(\"textures/brick.png\", 2, 3) Subdiv(\"X\", 1r){ Wall };",
+                                  withExamples());
   REQUIRE(r.ok);
   REQUIRE(r.instances.instances.size() == 1);
   REQUIRE(r.instances.textures.size() == 1);
@@ -80,7 +82,8 @@ TEST_CASE("split pieces continue the pattern of the scope that set the texture u
 
 TEST_CASE("each face of a textured box is projected on the plane it faces most", "[cga][texture]") {
   // One image over the scope (no tile sizes): 4 m across, 3 m up.
-  const auto r = test::deriveText("Lot ~> S(4, 3, 2) Texture(\"textures/brick.png\") Mass;", withExamples());
+  const auto r =
+      test::deriveText("Lot ~> S(4, 3, 2) Texture(\"textures/brick.png\") Subdiv(\"X\", 1r){ Mass };", withExamples());
   REQUIRE(r.instances.instances.size() == 1);
   const rt::Mesh& m = r.instances.geometries.at(r.instances.instances[0].geometry);
   int front = 0, top = 0, right = 0;
@@ -157,4 +160,25 @@ TEST_CASE("a Texture whose image is missing or not a picture stops the derivatio
   const auto badSize = test::deriveText("Lot ~> S(1, 1, 0) Texture(\"textures/brick.png\", 0, 1) A;", withExamples());
   REQUIRE_FALSE(badSize.ok);
   CHECK(badSize.messages[0].code == "R027");
+}
+
+TEST_CASE("an asset with texture coordinates draws the image by its own, one without keeps its colours", "[texture]") {
+  // Not a CGA grammar (no split, no Extrude): only the assets are output.
+  const auto r = test::deriveText(
+      "Lot ~> S(2, 3, 1) Texture(\"textures/window.png\") [ I(\"leaf\") ] T(3, 0, 0) I(\"cube\");", withExamples());
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 2);
+  CHECK(r.instances.instances[0].texture == 0);
+  CHECK(r.instances.instances[0].color == std::array<float, 3>{1.0f, 1.0f, 1.0f});
+  CHECK(r.instances.instances[1].texture == UINT32_MAX);
+  const rt::Mesh m = assembled(r);
+  REQUIRE(m.textureRuns.size() == 2);
+  CHECK(m.textureRuns[0].texture == 0);
+  CHECK(m.textureRuns[1].texture == -1);
+  // The leaf's corners keep its [0,1]^2 coordinates.
+  Range u, v;
+  for (size_t i = 0; i < 4; ++i) u.add(m.texcoords[2 * i]), v.add(m.texcoords[2 * i + 1]);
+  CHECK(u.lo == 0);
+  CHECK(u.hi == 1);
+  CHECK(v.hi == 1);
 }
