@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace fgsg::rt {
 
@@ -209,16 +210,65 @@ void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t 
   for (size_t k = 0; k < 3 * size_t(c.triangles); ++k) out.indices[3 * firstTriangle + k] = base + st.indices[3 * t + k];
 }
 
-// Starts a texture run wherever an instance with triangles draws another image than the
-// one before it (the block's instances from `begin`, at firstTriangle).
-void addTextureRuns(const InstanceList& list, size_t begin, const std::vector<Counts>& counts,
+// The output's images: the instance list's (Texture), then those of drawn meshes with
+// images of their own (an OBJ asset's materials), each path once; per such mesh, its
+// images' numbers in the output.
+struct OutputImages {
+  std::vector<std::string> paths;
+  std::unordered_map<const Mesh*, std::vector<int32_t>> ofMesh;
+};
+
+OutputImages outputImages(const InstanceList& list, const AssetLibrary& library, const std::vector<int>& meshOf) {
+  OutputImages images;
+  images.paths = list.textures;
+  std::unordered_map<std::string, int32_t> number;
+  for (size_t t = 0; t < images.paths.size(); ++t) number.emplace(images.paths[t], int32_t(t));
+  for (const Instance& inst : list.instances) {
+    const Mesh* m = assetOf(inst, list, library, meshOf);
+    if (!m || !m->textured() || images.ofMesh.count(m)) continue;
+    std::vector<int32_t>& own = images.ofMesh[m];
+    for (const std::string& path : m->textures) {
+      const auto [it, added] = number.emplace(path, int32_t(images.paths.size()));
+      if (added) images.paths.push_back(path);
+      own.push_back(it->second);
+    }
+  }
+  return images;
+}
+
+void appendRun(Mesh& out, size_t firstTriangle, int32_t image) {
+  if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
+    out.textureRuns.push_back({uint32_t(firstTriangle), image});
+}
+
+// Starts a texture run wherever an instance's triangles draw another image than those
+// before them (the block's instances from `begin`, at firstTriangle). A mesh with images
+// of its own draws them on its textured triangles (counted again, as they survived) and
+// the instance's Texture on the rest.
+void addTextureRuns(const InstanceList& list, const AssetLibrary& library, const std::vector<int>& meshOf,
+                    const OutputImages& images, size_t begin, const std::vector<Counts>& counts,
                     const std::vector<size_t>& firstTriangle, Mesh& out) {
+  Scratch s;
   for (size_t i = 0; i < counts.size(); ++i) {
     if (counts[i].triangles == 0) continue;
-    const uint32_t texture = list.instances[begin + i].texture;
-    const int32_t image = texture == UINT32_MAX ? -1 : int32_t(texture);
-    if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
-      out.textureRuns.push_back({uint32_t(firstTriangle[i]), image});
+    const Instance& inst = list.instances[begin + i];
+    const int32_t image = inst.texture == UINT32_MAX ? -1 : int32_t(inst.texture);
+    const Mesh* m = assetOf(inst, list, library, meshOf);
+    if (!m->textured()) {
+      appendRun(out, firstTriangle[i], image);
+      continue;
+    }
+    classify(*m, placementOf(inst, list), s, false);
+    const std::vector<int32_t>& own = images.ofMesh.at(m);
+    size_t at = firstTriangle[i];
+    for (size_t r = 0; r < m->textureRuns.size(); ++r) {
+      size_t kept = 0;
+      for (size_t t = m->textureRuns[r].firstTriangle; t < m->runEnd(r); ++t) kept += s.keepTri[t];
+      if (kept == 0) continue;
+      const int32_t texture = m->textureRuns[r].texture;
+      appendRun(out, at, texture >= 0 ? own[size_t(texture)] : image);
+      at += kept;
+    }
   }
 }
 
@@ -301,9 +351,13 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
         return m && m->hasTexcoords();
       });
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
-  const bool withTextures = std::any_of(list.instances.begin(), list.instances.end(),
-                                        [](const Instance& inst) { return inst.texture != UINT32_MAX; });
-  if (withTextures) out.textures = list.textures;
+  const bool withTextures =
+      std::any_of(list.instances.begin(), list.instances.end(), [&](const Instance& inst) {
+        const Mesh* m = assetOf(inst, list, library, meshOf);
+        return inst.texture != UINT32_MAX || (m && m->textured());
+      });
+  OutputImages images;
+  if (withTextures) images = outputImages(list, library, meshOf), out.textures = images.paths;
   Staging st;
   size_t begin = 0;
   while (begin < n && !(deadline && deadline->passed())) {
@@ -349,7 +403,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) place(st, i, counts[i], firstVertex[i], firstTriangle[i], out);
     });
-    if (withTextures) addTextureRuns(list, begin, counts, firstTriangle, out);
+    if (withTextures) addTextureRuns(list, library, meshOf, images, begin, counts, firstTriangle, out);
     begin = end;
   }
   keepUsedTextures(out);

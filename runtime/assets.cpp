@@ -1,6 +1,7 @@
 #include "runtime/assets.h"
 
 #include "runtime/io/read_mesh_file.h"
+#include "runtime/texture/color_texture.h"
 
 // OpenMesh requires its IO header before the mesh kernel so the readers get registered.
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -322,6 +323,28 @@ V2 cornerUVOf(const io::MeshFileContent& file, const TriangleSource& src, int v)
   return {file.cornerUV[corner][0], file.cornerUV[corner][1]};
 }
 
+// An OBJ asset's own material images (its .mtl's map_Kd, found beside the OBJ): the
+// mesh's texture runs, triangle by triangle from the polygons they were cut from.
+bool attachMaterialImages(const std::string& path, const io::MeshFileContent& file,
+                          const std::vector<TriangleSource>& sourceOf, Mesh& out, std::string& error) {
+  const fs::path folder = fs::path(path).parent_path();
+  for (const std::string& name : file.textureFiles) {
+    const fs::path image = fs::path(name).is_absolute() ? fs::path(name) : folder / name;
+    std::string why;
+    if (!texture::ColorTexture::probe(image.string(), why)) {
+      error = "asset file '" + path + "': its material's image cannot be used: " + why;
+      return false;
+    }
+    out.textures.push_back(image.string());
+  }
+  for (size_t t = 0; t < sourceOf.size(); ++t) {
+    const int32_t image = file.polygonTexture[sourceOf[t].polygon];
+    if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
+      out.textureRuns.push_back({uint32_t(t), image});
+  }
+  return true;
+}
+
 bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   const std::string ext = lowerExtension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
@@ -390,7 +413,7 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   Builder b;
   creaseNormals(pos, tris, cornerUV, b);
   out = normaliseToUnitBox(b);
-  return true;
+  return cornerUV.empty() || file.polygonTexture.empty() || attachMaterialImages(path, file, sourceOf, out, error);
 }
 
 std::string joinNames(const std::vector<std::string>& names) {

@@ -191,11 +191,13 @@ void Derivation::resolveAssets() {
   for (const auto& r : m_.rules)
     for (const auto& a : r.alternatives) visit(a.ops);
   assetHasTexcoords_.assign(m_.assets.size(), 0);
+  assetHasImages_.assign(m_.assets.size(), 0);
   for (size_t i = 0; i < m_.assets.size(); ++i) {
     std::string error;
     const int mesh = assets_.resolve(m_.assets[i], error);
     if (mesh < 0) throw DeriveError{firstUse[i], "R003", error};
     assetHasTexcoords_[i] = assets_.mesh(mesh).hasTexcoords();
+    assetHasImages_[i] = assets_.mesh(mesh).textured();
   }
 }
 

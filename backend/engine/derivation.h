@@ -298,6 +298,7 @@ class Derivation final : public QueryHost {
   uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
   // Per grammar asset: it has texture coordinates, so a Texture above its I() draws on it.
   std::vector<uint8_t> assetHasTexcoords_;
+  std::vector<uint8_t> assetHasImages_;  // ... and images of its own (an OBJ's materials), drawn untinted
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).
   bool leavesOutput_ = false;

@@ -110,10 +110,12 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                           "extrusion or translation grew too large"};
   }
   inst.color = scope.colored ? scope.color : symbolColor_[symbol];
-  // An asset with texture coordinates of its own draws the image of a Texture above it.
-  if (scope.projection && asset < assetHasTexcoords_.size() && assetHasTexcoords_[asset]) {
-    inst.texture = textures_.projection(scope.projection).texture;
-    if (!scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
+  // An asset with texture coordinates of its own draws the image of a Texture above it,
+  // and one with images of its own keeps them; either untinted unless Color says.
+  if (asset < assetHasTexcoords_.size()) {
+    const bool textured = scope.projection && assetHasTexcoords_[asset];
+    if (textured) inst.texture = textures_.projection(scope.projection).texture;
+    if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   inst.firstParam = static_cast<uint32_t>(out_.params.size());

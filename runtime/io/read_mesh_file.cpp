@@ -52,7 +52,33 @@ class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
   void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
                           const std::vector<OpenMesh::Vec3f>&) override {}
   void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+  // The OBJ reader numbers the images of the `.mtl`'s map_Kd from 1 and gives each face
+  // the number of its `usemtl` material's image (0: none).
+  void set_face_texindex(OpenMesh::FaceHandle face, int id) override {
+    const size_t f = size_t(face.idx());
+    if (faceTexture_.size() <= f) faceTexture_.resize(f + 1, 0);
+    faceTexture_[f] = id;
+  }
+  void add_texture_information(int id, std::string name) override {
+    if (id <= 0 || id >= 1 << 16) return;
+    if (textureNames_.size() <= size_t(id)) textureNames_.resize(size_t(id) + 1);
+    textureNames_[size_t(id)] = std::move(name);
+  }
+
+  // Each polygon's image as an index into `files` (the images the faces use), -1 for none;
+  // empty when no face has an image.
+  std::vector<int> polygonTexture(std::vector<std::string>& files) const {
+    std::vector<int> out(out_.polygonCount(), -1), index(textureNames_.size(), -1);
+    bool any = false;
+    for (size_t f = 0; f < out.size() && f < faceTexture_.size(); ++f) {
+      const int id = faceTexture_[f];
+      if (id <= 0 || size_t(id) >= textureNames_.size() || textureNames_[size_t(id)].empty()) continue;
+      if (index[size_t(id)] < 0) index[size_t(id)] = int(files.size()), files.push_back(textureNames_[size_t(id)]);
+      out[f] = index[size_t(id)];
+      any = true;
+    }
+    return any ? out : std::vector<int>{};
+  }
 
   // The corners' coordinates when every face had them, in face order; else empty.
   std::vector<std::array<double, 2>> faceUV() const {
@@ -61,6 +87,8 @@ class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
 
  private:
   MeshFileContent& out_;
+  std::vector<int> faceTexture_;
+  std::vector<std::string> textureNames_;
   std::vector<std::array<double, 2>> faceUV_;
   size_t facesWithUV_ = 0;  // the leading faces, all with coordinates
 };
@@ -150,7 +178,10 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
         return false;
       }
   }
-  if (ext == ".obj") out.cornerUV = importer.faceUV();
+  if (ext == ".obj") {
+    out.cornerUV = importer.faceUV();
+    out.polygonTexture = importer.polygonTexture(out.textureFiles);
+  }
   if (ext == ".ply" && opt.vertex_has_texcoord()) {
     out.cornerUV.reserve(out.corners.size());
     for (int v : out.corners) {

@@ -25,6 +25,10 @@ struct MeshFileContent {
   // parallel to `corners`. Empty when the file has none, or has them for some faces only:
   // a partial set cannot texture the whole mesh consistently.
   std::vector<std::array<double, 2>> cornerUV;
+  // OBJ materials with an image (`usemtl` of a `.mtl` material with `map_Kd`): per polygon
+  // the index into `textureFiles` of its image, -1 for none; empty when no polygon has one.
+  std::vector<int> polygonTexture;
+  std::vector<std::string> textureFiles;  // as the .mtl names them
 
   size_t polygonCount() const { return polygonStart.size() - 1; }
   size_t cornerCount(size_t p) const { return polygonStart[p + 1] - polygonStart[p]; }

@@ -9,6 +9,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 using namespace fgsg;
 using Catch::Matchers::Contains;
@@ -181,4 +185,68 @@ TEST_CASE("an asset with texture coordinates draws the image by its own, one wit
   CHECK(u.lo == 0);
   CHECK(u.hi == 1);
   CHECK(v.hi == 1);
+}
+
+namespace {
+
+// An OBJ asset with two faces, the first in a material with an image (its .mtl's map_Kd),
+// written with the image into a fresh folder.
+std::filesystem::path writeWindowAsset(const std::string& image) {
+  const auto dir = std::filesystem::temp_directory_path() / ("fgsg_asset_materials_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(std::string(FGSG_SOURCE_DIR) + "/examples/textures/window.png", dir / "window.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "win.obj") << "mtllib win.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 -1\nv 1 0 -1\n"
+                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl glass\nf 1/1 2/2 3/3 4/4\n"
+                                    "usemtl plain\nf 1/1 5/2 6/3 2/4\n";
+  std::ofstream(dir / "win.mtl") << "newmtl glass\nKd 1 1 1\nmap_Kd " << image << "\nnewmtl plain\nKd 0.5 0.2 0.2\n";
+  return dir;
+}
+
+rt::DeriveResult deriveWithAssets(const std::string& text, const std::filesystem::path& dir) {
+  ir::Module m = test::compileText(text);
+  rt::AssetLibrary assets;
+  assets.addSearchDir(dir.string());
+  rt::DeriveOptions o = withExamples();
+  return backend::interpret(m, o, assets);
+}
+
+rt::Mesh assembledWith(const rt::DeriveResult& r, const std::filesystem::path& dir) {
+  REQUIRE(r.ok);
+  rt::AssetLibrary library;
+  library.addSearchDir(dir.string());
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
+  return rt::assembleInstances(r.instances, library, meshOf);
+}
+
+}  // namespace
+
+TEST_CASE("an OBJ asset keeps the images of its own materials", "[texture]") {
+  const auto dir = writeWindowAsset("window.png");
+  const auto own = deriveWithAssets("Lot ~> S(2, 2, 2) I(\"win.obj\");", dir);
+  REQUIRE(own.ok);
+  CHECK(own.instances.instances[0].color == std::array<float, 3>{1.0f, 1.0f, 1.0f});  // untinted
+  const rt::Mesh m = assembledWith(own, dir);
+  REQUIRE(m.textures.size() == 1);
+  CHECK(std::filesystem::path(m.textures[0]).filename() == "window.png");
+  REQUIRE(m.textureRuns.size() == 2);
+  CHECK(m.textureRuns[0].texture == 0);  // the glass quad: two triangles
+  CHECK(m.textureRuns[1].firstTriangle == 2);
+  CHECK(m.textureRuns[1].texture == -1);
+  // Under a Texture, the asset's own image stays on its glass and the Texture's goes on the rest.
+  const auto under = deriveWithAssets(
+      "Lot ~> S(2, 2, 2) Texture(\"textures/brick.png\") [ I(\"win.obj\") ] Subdiv(\"X\", 1r){ Wall };", dir);
+  const rt::Mesh both = assembledWith(under, dir);
+  REQUIRE(both.textures.size() == 2);
+  REQUIRE(both.textureRuns.size() >= 2);
+  CHECK(std::filesystem::path(both.textures[size_t(both.textureRuns[0].texture)]).filename() == "window.png");
+  CHECK(std::filesystem::path(both.textures[size_t(both.textureRuns[1].texture)]).filename() == "brick.png");
+  // A material image that is missing is a located error at the I().
+  const auto missing = deriveWithAssets("Lot ~> S(2, 2, 2) I(\"win.obj\");", writeWindowAsset("gone.png"));
+  REQUIRE_FALSE(missing.ok);
+  CHECK(missing.messages[0].code == "R003");
+  CHECK_THAT(missing.messages[0].message, Contains("gone.png"));
+  std::filesystem::remove_all(dir);
 }
