@@ -86,11 +86,8 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
       for (const auto& c : item.children) checkItem(c, w);
       return;
     case ItemKind::Turtle:
-      if (item.name == "$" || item.name == "%")
-        diags_.error("E016", item.range,
-                     "turtle symbol '" + item.name + "' (" +
-                         (item.name == "$" ? "roll to horizontal" : "cut branch") +
-                         ") is not supported yet; use + - & ^ \\ / | ! instead");
+      if ((item.name == "$" || item.name == "%") && !item.args.empty())
+        diags_.error("E016", item.range, "turtle symbol '" + item.name + "' takes no argument");
       if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");
       if (item.args.size() > 1)
         diags_.error("E016", item.range,

@@ -135,6 +135,8 @@ enum class TurtleOp : uint8_t {
   RollRight,   // /(a)
   TurnAround,  // |
   Width,       // !(w)
+  RollHorizontal,  // $: roll about the heading until the left vector (scope X) is level (ABOP Fig. 2.6)
+  Cut,             // %: a parallel derivation drops the rest of the branch after each step
 };
 
 struct Op;

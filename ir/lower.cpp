@@ -427,6 +427,8 @@ class Lowerer {
       case '\\': return TurtleOp::RollLeft;
       case '/': return TurtleOp::RollRight;
       case '|': return TurtleOp::TurnAround;
+      case '$': return TurtleOp::RollHorizontal;
+      case '%': return TurtleOp::Cut;
       default: return TurtleOp::Width;  // '!'
     }
   }

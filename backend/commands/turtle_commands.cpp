@@ -30,7 +30,28 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
     case TurtleOp::Width:
       if (n > 0) st.width = args[0];
       break;
+    case TurtleOp::RollHorizontal: rollHorizontal(st.scope); break;
+    case TurtleOp::Cut:
+      // A parallel derivation cuts its string after each step (cutBranches); a successor
+      // of a sequential one has no rest of a branch in a string to cut.
+      throw DeriveError{loc, "R009",
+                        "'%' cuts the rest of a branch from a parallel derivation's string "
+                        "(`derive parallel N;`); a sequential derivation has no such string"};
   }
+}
+
+// ABOP's $ (Fig. 2.6): roll about the heading (scope Y) until the left vector (scope X)
+// is level, L = V x H / |V x H| with V the world's up (+Y), taking of the two level
+// directions the one nearer the current X, so the turtle rolls the least. Heading
+// straight up or down, no direction is level: the turtle stays as it is.
+void TurtleCommands::rollHorizontal(rt::Scope& scope) {
+  const rt::Vec3 heading = scope.Y();
+  rt::Vec3 left = rt::Vec3::UnitY().cross(heading);
+  if (!(left.norm() > 1e-12)) return;
+  left.normalize();
+  if (left.dot(scope.X()) < 0) left = -left;
+  scope.axes.col(0) = left;
+  scope.axes.col(2) = left.cross(heading);
 }
 
 void TurtleCommands::drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {

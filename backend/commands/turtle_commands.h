@@ -27,6 +27,8 @@ class TurtleCommands final : public CommandFamily {
   void drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params);
 
  private:
+  static void rollHorizontal(rt::Scope& scope);
+
   Derivation& d_;
   ScopeCommands& scope_;
 };

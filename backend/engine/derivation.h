@@ -241,6 +241,7 @@ class Derivation final : public QueryHost {
 
   // parallel_rewriter.cpp
   void runParallel();
+  static void cutBranches(std::vector<StringModule>& str);
   static void copyModule(const StringModule& mod, const std::vector<double>& args, std::vector<StringModule>& out,
                          std::vector<double>& outArgs);
   void appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, std::vector<StringModule>& out,

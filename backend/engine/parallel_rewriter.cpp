@@ -23,6 +23,7 @@ void Derivation::runParallel() {
   rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
   f.rng = &rng;
   appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str, args);
+  cutBranches(str);
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
   for (int step = 0; step < steps_ && !limitHit; ++step) {
@@ -50,6 +51,7 @@ void Derivation::runParallel() {
       if (next.size() >= opt_.maxShapes) limitHit = true;
       if (!limitHit && (stopped = limitsReached())) limitHit = true;
     }
+    cutBranches(next);
     str.swap(next);
     args.swap(nextArgs);
     if (!limitHit && deadline_.expiredNow()) stopped = timeLimit(), limitHit = true;
@@ -57,6 +59,29 @@ void Derivation::runParallel() {
   interpretString(str, args);
   if (stopped) throw *stopped;
   if (limitHit) shapeLimit(ir::Op{});
+}
+
+// ABOP's %: each cut drops the rest of its branch — the modules after it up to the `]`
+// that closes the branch (kept), or to the end of the string — and itself.
+void Derivation::cutBranches(std::vector<StringModule>& str) {
+  const auto turtle = [](const StringModule& m, ir::TurtleOp t) {
+    return m.op->kind == ir::OpKind::Turtle && m.op->index == static_cast<uint32_t>(t);
+  };
+  if (std::none_of(str.begin(), str.end(), [&](const StringModule& m) { return turtle(m, ir::TurtleOp::Cut); }))
+    return;
+  size_t kept = 0;
+  for (size_t i = 0; i < str.size();) {
+    if (!turtle(str[i], ir::TurtleOp::Cut)) {
+      str[kept++] = str[i++];
+      continue;
+    }
+    int depth = 0;
+    for (++i; i < str.size(); ++i) {
+      if (str[i].op->kind == ir::OpKind::Push) ++depth;
+      if (str[i].op->kind == ir::OpKind::Pop && depth-- == 0) break;
+    }
+  }
+  str.resize(kept);
 }
 
 void Derivation::copyModule(const StringModule& mod, const std::vector<double>& args,
