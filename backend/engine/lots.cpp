@@ -35,10 +35,15 @@ void Derivation::deriveLots(uint64_t root) {
 }
 
 // After the first lot, room for as many again per lot (and a tenth more): the output
-// lists then grow without being copied over and over (their copies were a fifth of a
-// city block's time).
+// lists then grow without being copied over and over (the copies were 5 % of the city
+// block's time). Only what fits well within the memory budget is asked for; a larger
+// city grows as before.
 void Derivation::reserveForLots(size_t lots) {
   const auto room = [lots](size_t firstLot) { return firstLot + firstLot * (lots - 1) / 10 * 11; };
+  const double bytes = double(room(out_.instances.size())) * sizeof(rt::Instance) +
+                       double(room(out_.params.size())) * sizeof(double) +
+                       double(room(out_.geometries.size())) * sizeof(rt::Mesh);
+  if (!(bytes <= 0.25 * double(memoryBudget_))) return;
   out_.instances.reserve(room(out_.instances.size()));
   out_.params.reserve(room(out_.params.size()));
   out_.geometries.reserve(room(out_.geometries.size()));
