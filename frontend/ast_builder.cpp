@@ -347,6 +347,20 @@ Successor AstBuilder::buildBodyPart(P::BodyPartContext* ctx) {
   return s;
 }
 
+// Corners written as pairs, `Footprint((0, 0), (20, 0), (20, 9))`, are the coordinates
+// written flat, `Footprint(0, 0, 20, 0, 20, 9)`.
+void AstBuilder::cornersAsPairs(Item& item) {
+  std::vector<ExprPtr> flat;
+  for (ExprPtr& a : item.args) {
+    if (a && a->kind == ExprKind::Vector && a->args.size() == 2) {
+      for (ExprPtr& c : a->args) flat.push_back(std::move(c));
+    } else {
+      flat.push_back(std::move(a));
+    }
+  }
+  item.args = std::move(flat);
+}
+
 // CGA's split syntax, `Subdiv("Y"){ 4: Ground | ~3: Floor }`, is Subdiv("Y", 4, ~3){
 // Ground | Floor }: when every part is labelled and only the axis is given, the labels
 // become the sizes (a bare name, `floor_h: Floor`, is read as the value it names).
@@ -386,6 +400,7 @@ Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {
   item.range = rangeOf(ctx);
   item.name = text(ctx->name);
   item.args = buildCallArgs(ctx->callArgs());
+  if (item.name == "Footprint") cornersAsPairs(item);
   if (auto* body = ctx->body()) {
     item.hasBody = true;
     item.repeatPattern = body->repeat != nullptr;

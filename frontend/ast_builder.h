@@ -42,6 +42,7 @@ class AstBuilder {
   Successor buildSuccessor(P::SuccessorContext* ctx);
   Successor buildBodyPart(P::BodyPartContext* ctx);
   void sizesFromParts(Item& item);
+  void cornersAsPairs(Item& item);
   void appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out);
   void appendItem(P::ItemContext* ctx, std::vector<Item>& out);
   Item buildCallItem(P::CallItemContext* ctx);

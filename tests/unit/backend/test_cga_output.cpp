@@ -353,6 +353,11 @@ TEST_CASE("A Footprint with a hole is a courtyard: walls around both rings, a ro
   CHECK(volume(mass) == Approx((600.0 - 100.0) * 3).epsilon(1e-6));
   CHECK(watertight(mass));
   const rt::Mesh roof = assembled(test::deriveText(lot + " Roof(\"hipped\", 30){ RoofSolid };"));
+  // Corners as pairs are the same footprint.
+  const rt::Mesh paired = assembled(test::deriveText(
+      "Lot ~> Footprint((0, 0), (30, 0), (30, 20), (0, 20), \"hole\", (10, 5), (20, 5), (20, 15), (10, 15)) "
+      "Extrude(3) Mass;"));
+  CHECK(volume(paired) == Approx(volume(mass)));
   CHECK(watertight(roof));
   CHECK(volume(roof) > 0);
   // A hole that leaves the outline is a located error naming it.

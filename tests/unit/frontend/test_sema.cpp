@@ -159,6 +159,7 @@ TEST_CASE("Offset takes labelled inside and border parts", "[sema]") {
 TEST_CASE("Footprint takes pairs of coordinates", "[sema]") {
   CHECK(analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3) Mass;").ok);
   CHECK(analyse("Lot ~> Footprint(0, 0, 9, 0, 9, 9, 0, 9, \"hole\", 3, 3, 6, 3, 6, 6) Mass;").ok);
+  CHECK(analyse("Lot ~> Footprint((0, 0), (9, 0), (9, 9), (0, 9), \"hole\", (3, 3), (6, 3), (6, 6)) Mass;").ok);
   CHECK(has(analyse("Lot ~> Footprint(0, 0, 9, 0, 9, 9, 0, 9, \"court\", 3, 3, 6, 3, 6, 6) Mass;"), "E028", 1, 42));
   CHECK(has(analyse("Lot ~> Footprint(0, 0, 9, 0, 9, 9, 0, 9, \"hole\", 3, 3, 6, 3) Mass;"), "E016"));
   auto odd = analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3, 1) Mass;");
