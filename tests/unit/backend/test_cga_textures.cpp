@@ -25,9 +25,11 @@ rt::DeriveOptions withExamples() {
   return o;
 }
 
-rt::Mesh assembled(const rt::DeriveResult& r) {
+// The result assembled, its asset files looked up in `assetDir` (none: built-ins only).
+rt::Mesh assembled(const rt::DeriveResult& r, const std::filesystem::path& assetDir = {}) {
   REQUIRE(r.ok);
   rt::AssetLibrary library;
+  if (!assetDir.empty()) library.addSearchDir(assetDir.string());
   std::vector<int> meshOf;
   std::string error;
   REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
@@ -211,16 +213,6 @@ rt::DeriveResult deriveWithAssets(const std::string& text, const std::filesystem
   return backend::interpret(m, o, assets);
 }
 
-rt::Mesh assembledWith(const rt::DeriveResult& r, const std::filesystem::path& dir) {
-  REQUIRE(r.ok);
-  rt::AssetLibrary library;
-  library.addSearchDir(dir.string());
-  std::vector<int> meshOf;
-  std::string error;
-  REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
-  return rt::assembleInstances(r.instances, library, meshOf);
-}
-
 }  // namespace
 
 TEST_CASE("an OBJ asset keeps the images of its own materials", "[texture]") {
@@ -228,7 +220,7 @@ TEST_CASE("an OBJ asset keeps the images of its own materials", "[texture]") {
   const auto own = deriveWithAssets("Lot ~> S(2, 2, 2) I(\"win.obj\");", dir);
   REQUIRE(own.ok);
   CHECK(own.instances.instances[0].color == std::array<float, 3>{1.0f, 1.0f, 1.0f});  // untinted
-  const rt::Mesh m = assembledWith(own, dir);
+  const rt::Mesh m = assembled(own, dir);
   REQUIRE(m.textures.size() == 1);
   CHECK(std::filesystem::path(m.textures[0]).filename() == "window.png");
   REQUIRE(m.textureRuns.size() == 2);
@@ -238,7 +230,7 @@ TEST_CASE("an OBJ asset keeps the images of its own materials", "[texture]") {
   // Under a Texture, the asset's own image stays on its glass and the Texture's goes on the rest.
   const auto under = deriveWithAssets(
       "Lot ~> S(2, 2, 2) Texture(\"textures/brick.png\") [ I(\"win.obj\") ] Subdiv(\"X\", 1r){ Wall };", dir);
-  const rt::Mesh both = assembledWith(under, dir);
+  const rt::Mesh both = assembled(under, dir);
   REQUIRE(both.textures.size() == 2);
   REQUIRE(both.textureRuns.size() >= 2);
   CHECK(std::filesystem::path(both.textures[size_t(both.textureRuns[0].texture)]).filename() == "window.png");
