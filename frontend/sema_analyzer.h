@@ -76,6 +76,7 @@ class Analyzer {
   // Expressions and their types; names resolved (sema_expressions.cpp).
   void expect(const Expr& e, const Where& w, ValueType want, const std::string& what);
   ValueType record(const Expr& e, ValueType t, bool report);
+  ValueType typeOfLotQuery(const Expr& e, bool report);
   ValueType typeOf(const Expr& e, const Where& w, bool report);
   ValueType typeOfIdent(const Expr& e, const Where& w, bool report);
   ValueType typeOfBinary(const Expr& e, const Where& w, bool report);

@@ -191,8 +191,48 @@ ValueType Analyzer::typeOfCall(const Expr& e, const Where& w, bool report) {
   return record(e, name == "normalize" ? ValueType::Vec3 : ValueType::Num, report);
 }
 
+// Lot.area and Lot.prop("height", 14): a lot's area and properties (--lots) as attrs the
+// grammar does not declare, named "lot:area" and "lot:height", whose value without lots
+// (or without that property) is the default given — the type too. Each name has one
+// default wherever it is read.
+ValueType Analyzer::typeOfLotQuery(const Expr& e, bool report) {
+  auto fail = [&](const std::string& msg) {
+    if (report) diags_.error("E025", e.range, msg);
+    return ValueType::Unknown;
+  };
+  std::string name;
+  ConstValue value;
+  if (e.text == "area" && !e.hasCall) {
+    name = "lot:area";
+    value.type = ValueType::Num;
+  } else if (e.text == "prop" && e.hasCall && e.args.size() == 2) {
+    ConstValue key;
+    if (!evalConst(*e.args[0], key) || key.type != ValueType::Str || key.str.empty())
+      return fail("Lot.prop takes the property's name as a constant string: Lot.prop(\"height\", 14)");
+    if (!evalConst(*e.args[1], value) || value.type == ValueType::Unknown)
+      return fail("Lot.prop's default (its value without lots) must be a constant: Lot.prop(\"height\", 14)");
+    if (report) res_.exprTypes[e.args[0].get()] = ValueType::Str;
+    name = "lot:" + key.str;
+  } else {
+    return fail("unknown lot query 'Lot." + e.text + "' (Lot.area, Lot.prop(\"name\", default))");
+  }
+  size_t k = 0;
+  while (k < res_.attrs.size() && res_.attrs[k].name != name) ++k;
+  if (k == res_.attrs.size()) {
+    res_.attrs.push_back({name, value, e.range});
+  } else if (res_.attrs[k].value.type != value.type || (value.type != ValueType::Num && value.type != ValueType::Bool
+                                                         ? res_.attrs[k].value.str != value.str
+                                                         : res_.attrs[k].value.num != value.num)) {
+    return fail("'" + name.substr(4) + "' has another default at line " +
+                std::to_string(res_.attrs[k].range.begin.line) + ": give a lot property one default");
+  }
+  if (report) res_.names[&e] = NameRef{NameRef::Attr, k, {}};
+  return record(e, value.type, report);
+}
+
 ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
   Where inner{w.rule, false};
+  if (e.object == "Lot") return typeOfLotQuery(e, report);
   // context.mask(texCoord): the texture coordinate is the scope's own, named not computed.
   const bool textureLookup = e.object == "context";
   if (!textureLookup)

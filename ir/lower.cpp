@@ -542,6 +542,12 @@ class Lowerer {
   }
 
   Expr member(const frontend::Expr& e) {
+    if (e.object == "Lot") {  // Lot.area, Lot.prop(...): the attr the analyzer made for it
+      const NameRef& ref = sema_.names.at(&e);
+      Expr out = node(ExprOp::Attr, m_.attrs[ref.index].type, e);
+      out.index = static_cast<uint32_t>(ref.index);
+      return out;
+    }
     Expr out = node(ExprOp::Query, typeOf(e), e);
     static const std::map<std::string, Query> kScope = {
         {"sx", Query::ScopeSx}, {"sy", Query::ScopeSy}, {"sz", Query::ScopeSz},

@@ -1,5 +1,6 @@
 // Each lot's attribute values (--lots): its properties set the attrs named like them, so a
-// grammar reads a lot's height or usage as it reads any attr.
+// grammar reads a lot's height or usage as it reads any attr, and Lot.area / Lot.prop(...)
+// (the attrs "lot:area", "lot:NAME" the analyzer adds for them).
 #include "backend/interp/eval.h"
 
 #include "runtime/derivation.h"
@@ -24,14 +25,18 @@ std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::Deri
   slots.reserve(options.lots.size());
   for (const rt::Lot& lot : options.lots) {
     std::vector<std::pair<std::string, std::string>> overrides = options.attrOverrides;
-    for (const auto& [name, value] : lot.numbers)
-      if (m.findAttr(name) >= 0) overrides.push_back({name, numberText(value)});
-    for (const auto& [name, value] : lot.strings)
-      if (m.findAttr(name) >= 0) overrides.push_back({name, value});
-    if (m.findAttr("lot_area") >= 0) {
+    // A property sets the attr of its name and Lot.prop("name", ...)'s ("lot:name").
+    auto set = [&](const std::string& name, const std::string& text) {
+      if (m.findAttr(name) >= 0) overrides.push_back({name, text});
+      if (m.findAttr("lot:" + name) >= 0) overrides.push_back({"lot:" + name, text});
+    };
+    for (const auto& [name, value] : lot.numbers) set(name, numberText(value));
+    for (const auto& [name, value] : lot.strings) set(name, value);
+    if (m.findAttr("lot_area") >= 0 || m.findAttr("lot:area") >= 0) {
       double area = std::abs(rt::twiceRingArea(lot.outer)) / 2;
       for (const auto& hole : lot.holes) area -= std::abs(rt::twiceRingArea(hole)) / 2;
-      overrides.push_back({"lot_area", numberText(area)});
+      if (m.findAttr("lot_area") >= 0) overrides.push_back({"lot_area", numberText(area)});
+      if (m.findAttr("lot:area") >= 0) overrides.push_back({"lot:area", numberText(area)});
     }
     try {
       slots.push_back(attributeSlots(m, overrides));

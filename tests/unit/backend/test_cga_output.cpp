@@ -212,6 +212,27 @@ TEST_CASE("Lots derive the axiom on each footprint with the attrs their properti
   CHECK(m.boundsMax()[2] == Approx(0));
 }
 
+TEST_CASE("Lot.area and Lot.prop read a lot without declaring attrs, defaults without lots", "[cga][lots]") {
+  const std::string grammar =
+      "Lot : Lot.prop(\"usage\", \"home\") == \"shop\" ~> Color(1, 0, 0) Extrude(Lot.prop(\"height\", 1)) Mass;\n"
+      "Lot ~> Color(0, 0, Lot.area / 100) Extrude(Lot.prop(\"height\", 1)) Mass;";
+  rt::DeriveOptions opt;
+  opt.lotsName = "lots.geojson";
+  opt.lots.push_back(lot({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {{"height", 5}}, {{"usage", "shop"}}));
+  opt.lots.push_back(lot({{20, 0}, {30, 0}, {30, 4}, {24, 4}, {24, 10}, {20, 10}}, {{"height", 2}}));
+  const rt::DeriveResult r = test::deriveText(grammar, opt);
+  REQUIRE(r.instances.instances.size() == 2);
+  CHECK(volume(assembled(r)) == Approx(60 * 5 + 64 * 2).epsilon(1e-6));
+  CHECK(r.instances.instances[0].color == std::array<float, 3>{1, 0, 0});
+  CHECK(r.instances.instances[1].color[2] == Approx(0.64f));
+  // Without lots: the defaults (a 1 m high box on the axiom's flat scope, area 0).
+  const rt::DeriveResult plain = test::deriveText(
+      "Lot ~> Footprint(0, 0, 4, 0, 4, 3, 0, 3) Color(0, 1, Lot.area) Extrude(Lot.prop(\"height\", 1)) Mass;");
+  REQUIRE(plain.ok);
+  CHECK(volume(assembled(plain)) == Approx(12).epsilon(1e-6));
+  CHECK(plain.instances.instances[0].color[2] == 0.0f);
+}
+
 TEST_CASE("A lot property that does not fit its attr is an error naming the lot", "[cga][lots]") {
   rt::DeriveOptions opt;
   opt.lotsName = "lots.geojson";

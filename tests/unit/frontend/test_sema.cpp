@@ -150,6 +150,15 @@ TEST_CASE("CGA split syntax: sizes on the parts and repeated patterns", "[sema]"
   CHECK(has(analyse("Lot ~> S(10, 6, 0) Subdiv(\"X\"){ 1r: A | 2: B }*;"), "E018", 1, 33));
 }
 
+TEST_CASE("Lot queries: area and properties with one constant default each", "[sema]") {
+  CHECK(analyse("Lot ~> Footprint(0, 0, 4, 0, 4, 3) Extrude(Lot.prop(\"height\", 6) + Lot.area / 100) A;").ok);
+  CHECK(has(analyse("Lot ~> S(1, 1, 1) T(Lot.width, 0, 0) A;"), "E025"));
+  CHECK(has(analyse("attr h = 2;\nLot ~> S(1, 1, 1) T(Lot.prop(\"height\", h), 0, 0) A;"), "E025"));
+  CHECK(has(analyse("Lot ~> S(Lot.prop(\"h\", 1), 1, 1) T(Lot.prop(\"h\", 2), 0, 0) A;"), "E025"));
+  // The default's type is the property's: a string compared with a string.
+  CHECK(analyse("Lot : Lot.prop(\"usage\", \"home\") == \"shop\" ~> S(1, 1, 1) A;").ok);
+}
+
 TEST_CASE("Offset takes labelled inside and border parts", "[sema]") {
   CHECK(analyse("Lot ~> S(10, 0, 6) Offset(1){ inside: A | border: B };").ok);
   CHECK(has(analyse("Lot ~> S(10, 0, 6) Offset(1){ A };"), "E018"));
