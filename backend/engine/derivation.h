@@ -217,7 +217,6 @@ class Derivation final : public QueryHost {
   // instance_output.cpp
   void initOutput();
   void outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
-  void outputTexturedLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
   void reserveForLots(size_t lots);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();

@@ -129,39 +129,32 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
 }
 
 // A CGA leaf: the shape's own geometry (a split piece, a face, a solid) as an instance
-// over its scope, so it is coloured, checked and counted like any other.
+// over its scope, so it is coloured, checked and counted like any other. Below a Texture
+// it carries texture coordinates from the projection and draws the image, in white
+// unless Color tinted it.
 void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
-  // The commonest leaves share a built-in mesh over their scope: a whole box is the cube,
-  // a rectangle (a facade's split piece) the quad. Only other shapes build their own.
   const uint32_t slots = m_.symbols[symbol].slotCount;
-  if (st.scope.projection) return outputTexturedLeaf(symbol, st, params, loc);
-  if (st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
+  const rt::cga::UvProjection* projection =
+      st.scope.projection ? &textures_.projection(st.scope.projection) : nullptr;
+  // The commonest untextured leaves share a built-in mesh over their scope: a whole box is
+  // the cube, a rectangle (a facade's split piece) the quad. Other shapes build their own.
+  if (!projection && st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
     return placeInstance(leafCubeAsset_, st.scope, symbol, params, slots, loc);
-  if (st.geom.kind == rt::GeomKind::Polygon && rt::cga::isUnitSquare(arena_.polygon(st.geom), st.geom.count))
+  if (!projection && st.geom.kind == rt::GeomKind::Polygon &&
+      rt::cga::isUnitSquare(arena_.polygon(st.geom), st.geom.count))
     return placeInstance(leafQuadAsset_, st.scope, symbol, params, slots, loc);
   rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
   if (mesh.indices.empty()) return;  // an edge, a point
+  if (projection) rt::cga::projectTexcoords(mesh, st.scope, *projection);
   const size_t before = out_.instances.size();
   placeInstance(ownGeometryAsset_, st.scope, symbol, params, slots, loc);
   if (out_.instances.size() == before) return;
-  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
-  out_.geometries.push_back(std::move(mesh));
-}
-
-// A leaf below a Texture: its own mesh (a box's or a rectangle's too) with texture
-// coordinates from the projection, drawing the image in white unless Color tinted it.
-void Derivation::outputTexturedLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
-  rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
-  if (mesh.indices.empty()) return;
-  const rt::cga::UvProjection& projection = textures_.projection(st.scope.projection);
-  rt::cga::projectTexcoords(mesh, st.scope, projection);
-  const size_t before = out_.instances.size();
-  placeInstance(ownGeometryAsset_, st.scope, symbol, params, m_.symbols[symbol].slotCount, loc);
-  if (out_.instances.size() == before) return;
   rt::Instance& inst = out_.instances.back();
   inst.geometry = static_cast<uint32_t>(out_.geometries.size());
-  inst.texture = projection.texture;
-  if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
+  if (projection) {
+    inst.texture = projection->texture;
+    if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
+  }
   out_.geometries.push_back(std::move(mesh));
 }
 
