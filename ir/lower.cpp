@@ -484,10 +484,7 @@ class Lowerer {
             out = node(ExprOp::Param, (*params_)[ref.index].type, e);
             out.index = (*params_)[ref.index].slot;
             return out;
-          case NameRef::Attr:
-            out = node(ExprOp::Attr, m_.attrs[ref.index].type, e);
-            out.index = static_cast<uint32_t>(ref.index);
-            return out;
+          case NameRef::Attr: return attrRead(ref.index, e);
           default: out = constant(ref.value); break;
         }
         break;
@@ -541,13 +538,15 @@ class Lowerer {
     return out;
   }
 
+  Expr attrRead(size_t attr, const frontend::Expr& e) {
+    Expr out = node(ExprOp::Attr, m_.attrs[attr].type, e);
+    out.index = static_cast<uint32_t>(attr);
+    return out;
+  }
+
   Expr member(const frontend::Expr& e) {
-    if (e.object == "Lot") {  // Lot.area, Lot.prop(...): the attr the analyzer made for it
-      const NameRef& ref = sema_.names.at(&e);
-      Expr out = node(ExprOp::Attr, m_.attrs[ref.index].type, e);
-      out.index = static_cast<uint32_t>(ref.index);
-      return out;
-    }
+    // Lot.area, Lot.prop(...): the attr the analyzer made for it.
+    if (e.object == "Lot") return attrRead(sema_.names.at(&e).index, e);
     Expr out = node(ExprOp::Query, typeOf(e), e);
     static const std::map<std::string, Query> kScope = {
         {"sx", Query::ScopeSx}, {"sy", Query::ScopeSy}, {"sz", Query::ScopeSz},

@@ -236,11 +236,6 @@ OutputImages outputImages(const InstanceList& list, const AssetLibrary& library,
   return images;
 }
 
-void appendRun(Mesh& out, size_t firstTriangle, int32_t image) {
-  if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
-    out.textureRuns.push_back({uint32_t(firstTriangle), image});
-}
-
 // Starts a texture run wherever an instance's triangles draw another image than those
 // before them (the block's instances from `begin`, at firstTriangle). A mesh with images
 // of its own draws them on its textured triangles (counted again, as they survived) and
@@ -255,7 +250,7 @@ void addTextureRuns(const InstanceList& list, const AssetLibrary& library, const
     const int32_t image = inst.texture == UINT32_MAX ? -1 : int32_t(inst.texture);
     const Mesh* m = assetOf(inst, list, library, meshOf);
     if (!m->textured()) {
-      appendRun(out, firstTriangle[i], image);
+      out.addTextureRun(firstTriangle[i], image);
       continue;
     }
     classify(*m, placementOf(inst, list), s, false);
@@ -266,7 +261,7 @@ void addTextureRuns(const InstanceList& list, const AssetLibrary& library, const
       for (size_t t = m->textureRuns[r].firstTriangle; t < m->runEnd(r); ++t) kept += s.keepTri[t];
       if (kept == 0) continue;
       const int32_t texture = m->textureRuns[r].texture;
-      appendRun(out, at, texture >= 0 ? own[size_t(texture)] : image);
+      out.addTextureRun(at, texture >= 0 ? own[size_t(texture)] : image);
       at += kept;
     }
   }
@@ -338,24 +333,23 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   std::vector<size_t> firstVertex, firstTriangle;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
   // arrays never move while they grow block by block.
+  // In the same pass: whether any drawn mesh has texture coordinates, and whether any
+  // triangle draws an image (a Texture, or a mesh's own).
   size_t maxVertices = 0, maxTriangles = 0;
-  for (const Instance& inst : list.instances)
-    if (const Mesh* m = assetOf(inst, list, library, meshOf)) maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
+  bool withTexcoords = false, withTextures = false;
+  for (const Instance& inst : list.instances) {
+    withTextures |= inst.texture != UINT32_MAX;
+    const Mesh* m = assetOf(inst, list, library, meshOf);
+    if (!m) continue;
+    maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
+    withTexcoords |= m->hasTexcoords();
+    withTextures |= m->textured();
+  }
   out.positions.reserve(3 * maxVertices);
   out.normals.reserve(3 * maxVertices);
   out.colors.reserve(3 * maxVertices);
   out.indices.reserve(3 * maxTriangles);
-  const bool withTexcoords =
-      std::any_of(list.instances.begin(), list.instances.end(), [&](const Instance& inst) {
-        const Mesh* m = assetOf(inst, list, library, meshOf);
-        return m && m->hasTexcoords();
-      });
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
-  const bool withTextures =
-      std::any_of(list.instances.begin(), list.instances.end(), [&](const Instance& inst) {
-        const Mesh* m = assetOf(inst, list, library, meshOf);
-        return inst.texture != UINT32_MAX || (m && m->textured());
-      });
   OutputImages images;
   if (withTextures) images = outputImages(list, library, meshOf), out.textures = images.paths;
   Staging st;

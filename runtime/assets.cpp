@@ -339,8 +339,7 @@ bool attachMaterialImages(const std::string& path, const io::MeshFileContent& fi
   }
   for (size_t t = 0; t < sourceOf.size(); ++t) {
     const int32_t image = file.polygonTexture[sourceOf[t].polygon];
-    if (out.textureRuns.empty() || out.textureRuns.back().texture != image)
-      out.textureRuns.push_back({uint32_t(t), image});
+    out.addTextureRun(t, image);
   }
   return true;
 }

@@ -40,6 +40,11 @@ struct Mesh {
   bool empty() const { return indices.empty(); }
   bool hasTexcoords() const { return !texcoords.empty() && texcoords.size() == 2 * vertexCount(); }
   bool textured() const { return !textureRuns.empty(); }
+  // Triangles from `firstTriangle` on draw `texture`: a new run, unless the last one draws it.
+  void addTextureRun(size_t firstTriangle, int32_t texture) {
+    if (textureRuns.empty() || textureRuns.back().texture != texture)
+      textureRuns.push_back({uint32_t(firstTriangle), texture});
+  }
   // The triangles [first, end) of run `r`.
   uint32_t runEnd(size_t r) const {
     return r + 1 < textureRuns.size() ? textureRuns[r + 1].firstTriangle : uint32_t(triangleCount());
