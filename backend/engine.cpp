@@ -1,8 +1,7 @@
 #include "backend/engine.h"
 
 #include "backend/interp/interpreter.h"
-#include "backend/jit/jit.h"
-#include "backend/jit/object_cache.h"
+#include "backend/native/code_loader.h"
 
 #include <memory>
 #include <optional>
@@ -18,15 +17,15 @@ std::optional<Engine> parseEngine(const std::string& name) {
 
 rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::string& source,
                         const rt::DeriveOptions& options, rt::AssetLibrary& assets,
-                        EngineReport* report, jit::Jit* jit) {
+                        EngineReport* report, native::CodeLoader* loader) {
   if (engine == Engine::Interpreter) return interpret(module, options, assets);
   // Only a failure to compile is the JIT's: what deriving throws is reported by
   // deriveCompiled like the interpreter's.
-  std::unique_ptr<jit::Jit> own;
-  std::optional<jit::CompiledProgram> code;
+  std::unique_ptr<native::CodeLoader> own;
+  std::optional<native::CompiledProgram> code;
   try {
-    if (!jit) jit = (own = std::make_unique<jit::Jit>()).get();
-    code.emplace(jit->compileProgram(module, source, jit::ObjectCache()));
+    if (!loader) loader = (own = std::make_unique<native::CodeLoader>()).get();
+    code.emplace(loader->load(module, source));
   } catch (const std::exception& e) {
     rt::DeriveResult failed;
     failed.messages.push_back({true, "R900", 0, 0,

@@ -9,7 +9,7 @@
 // Usage: bench_cga [--quick]
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
-#include "backend/jit/object_cache.h"
+#include "backend/native/object_cache.h"
 #include "bench/bench_clock.h"
 #include "bench/bench_grammar.h"
 #include "runtime/assemble.h"
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
   const int reps = quick ? 1 : 5;
   run("interp", options.lots.size(), reps, [&] { return backend::interpret(m, options, assets); });
   backend::jit::Jit jit;
-  const auto code = jit.compileProgram(m, source, backend::jit::ObjectCache(std::string()),
-                                       backend::jit::Jit::Tiering::Optimized);
+  const auto code = jit.compileProgram(m, source, backend::native::ObjectCache(std::string()),
+                                       backend::native::Tiering::Optimized);
   run("jit", options.lots.size(), reps, [&] { return backend::deriveCompiled(m, code.program(), options, assets); });
 }

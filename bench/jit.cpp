@@ -5,7 +5,7 @@
 //   build/bin/bench_jit [--quick]
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
-#include "backend/jit/object_cache.h"
+#include "backend/native/object_cache.h"
 #include "bench/bench_grammar.h"
 #include "bench/bench_grammars.h"
 #include "frontend/diagnostics.h"
@@ -62,9 +62,9 @@ bool same(const rt::DeriveResult& a, const rt::DeriveResult& b) {
 void compare(const char* name, const char* text, int reps, backend::jit::Jit& jit) {
   const ir::Module m = compile(text);
   rt::AssetLibrary assets;
-  const auto code = jit.compileProgram(m, text, backend::jit::ObjectCache(std::string()));
-  const auto firstTier = jit.compileProgram(m, text, backend::jit::ObjectCache(std::string()),
-                                            backend::jit::Jit::Tiering::Baseline);
+  const auto code = jit.compileProgram(m, text, backend::native::ObjectCache(std::string()));
+  const auto firstTier = jit.compileProgram(m, text, backend::native::ObjectCache(std::string()),
+                                            backend::native::Tiering::Baseline);
   rt::DeriveResult ri, rj, rb;
   const double interp = best(reps, [&] { return backend::interpret(m, {}, assets); }, ri);
   const double jitted = best(reps, [&] { return backend::deriveCompiled(m, code.program(), {}, assets); }, rj);
@@ -104,7 +104,7 @@ void compileLatency(int reps) {
     // Cold: a new JIT and an empty cache, until the code can run (the first tier; the
     // optimised object is compiled meanwhile for the cache).
     std::filesystem::remove_all(folder);
-    const backend::jit::ObjectCache cache(folder.string());
+    const backend::native::ObjectCache cache(folder.string());
     auto t0 = Clock::now();
     {
       backend::jit::Jit jit;
@@ -128,7 +128,7 @@ void compileLatency(int reps) {
     t0 = Clock::now();
     {
       backend::jit::Jit jit;
-      jit.compileProgram(m, text, backend::jit::ObjectCache(std::string()));
+      jit.compileProgram(m, text, backend::native::ObjectCache(std::string()));
       optimized = std::min(optimized, since(t0));
     }
   }

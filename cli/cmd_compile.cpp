@@ -4,6 +4,7 @@
 #include "backend/aot/library_header.h"
 #include "backend/aot/link_library.h"
 #include "backend/codegen/program_codegen.h"
+#include "backend/native/llvm_plugin.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
@@ -76,8 +77,8 @@ int compileCommand(const Args& args) {
   codegen.sourceName = opt.file;  // as fgsg run names it: diagnostics, the asset folders
   std::string object;
   try {
-    object = backend::codegen::compileProgramObject(compiled->module, codegen,
-                                                    backend::codegen::CpuTarget::Generic);
+    object = backend::native::llvmPlugin().compileProgramObject(compiled->module, codegen,
+                                                                backend::codegen::CpuTarget::Generic);
   } catch (const std::exception& e) {
     std::cerr << "fgsg compile: " << opt.file << ": " << e.what() << "\n";
     return 1;

@@ -1,4 +1,4 @@
-#include "backend/codegen/program_codegen.h"
+#include "backend/native/llvm_plugin.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "ir/printer.h"
@@ -31,7 +31,7 @@ int irCommand(const Args& args) {
     return 0;
   }
   try {
-    std::cout << backend::codegen::programLLVMText(compiled->module);
+    std::cout << backend::native::llvmPlugin().programLLVMText(compiled->module);
   } catch (const std::exception& e) {
     std::cerr << "fgsg ir: " << e.what() << "\n";
     return 1;

@@ -1,7 +1,7 @@
 // fgsg run: compile a grammar, derive it, and write the mesh, preview and instances.
 #include "backend/derive_messages.h"
 #include "backend/engine.h"
-#include "backend/jit/jit.h"
+#include "backend/native/code_loader.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
@@ -148,9 +148,9 @@ bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& 
   return !diags.hasErrors();
 }
 
-// The whole command; `jit` is the caller's, so that it is destroyed (waiting for its
+// The whole command; `code` is the caller's, so that it is destroyed (waiting for its
 // background compile, within --max-seconds) before the process ends.
-int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
+int run(const Args& args, backend::native::CodeLoader& code) {
   RunOptions opt;
   try {
     opt = parseRunOptions(args);
@@ -195,24 +195,15 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
   }
   if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.derive.atlasCacheDir = cache + "/atlas";
 
-  // The JIT lives until the command ends: on a grammar's first run it compiles the
-  // optimised code for the cache while the output is written.
-  if (opt.engine == backend::Engine::Jit) {
-    try {
-      jit = std::make_unique<backend::jit::Jit>();
-    } catch (const std::exception& e) {
-      std::cerr << "fgsg run: the JIT cannot start: " << e.what() << " (--engine=interp runs without it)\n";
-      return 1;
-    }
-  }
+  // The JIT's code loader lives until the command ends: on a grammar's first run its
+  // compiler builds the optimised code for the cache while the output is written.
   auto t0 = std::chrono::steady_clock::now();
   // The cache's optimising compile is awaited only within --max-seconds of this start.
-  if (jit)
-    jit->stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
+  code.stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
   backend::EngineReport engineReport;
   rt::DeriveResult result = backend::derive(opt.engine, compiled->module, compiled->source.text,
-                                            opt.derive, assets, &engineReport, jit.get());
+                                            opt.derive, assets, &engineReport, &code);
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
   if (!reportMessages(result, compiled->source)) return 1;
   // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started
@@ -306,10 +297,10 @@ int run(const Args& args, std::unique_ptr<backend::jit::Jit>& jit) {
 }  // namespace
 
 int runCommand(const Args& args) {
-  std::unique_ptr<backend::jit::Jit> jit;
-  const int code = run(args, jit);
-  jit.reset();
-  if (backend::jit::abandonedCompiles() > 0) {
+  auto loader = std::make_unique<backend::native::CodeLoader>();
+  const int code = run(args, *loader);
+  loader.reset();
+  if (backend::native::abandonedCompiles() > 0) {
     // A background compile still runs LLVM: end without destroying its static objects.
     std::cout.flush();
     std::cerr.flush();

@@ -6,7 +6,7 @@
 
 #include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
-#include "backend/jit/jit.h"
+#include "backend/native/code_loader.h"
 #include "cli/repl_statements.h"
 #include "frontend/parse.h"
 #include "ir/printer.h"
@@ -151,15 +151,8 @@ bool Session::derive(uint32_t maxDepth, rt::DeriveResult& result, size_t& triang
     assets.addSearchDir(dir);
     opt.assetDirs.push_back(dir);
   }
-  if (engine_ == backend::Engine::Jit && !jit_) {
-    try {
-      jit_ = std::make_shared<backend::jit::Jit>();
-    } catch (const std::exception& e) {
-      err << "error: the JIT cannot start: " << e.what() << " (fgsg repl --engine=interp runs without it)\n";
-      return false;
-    }
-  }
-  result = backend::derive(engine_, *module_, assembled_.source.text, opt, assets, nullptr, jit_.get());
+  if (engine_ == backend::Engine::Jit && !code_) code_ = std::make_shared<backend::native::CodeLoader>();
+  result = backend::derive(engine_, *module_, assembled_.source.text, opt, assets, nullptr, code_.get());
   bool ok = true;
   for (const auto& m : result.messages) {
     frontend::Diagnostic d;

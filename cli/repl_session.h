@@ -11,6 +11,7 @@
 #pragma once
 
 #include "backend/engine.h"
+#include "backend/native/code_loader.h"
 #include "frontend/diagnostics.h"
 #include "ir/ir.h"
 #include "runtime/derivation.h"
@@ -91,9 +92,9 @@ class Session {
   int priority_ = 0;                    // the `priority N:` in force for the next rule
   uint64_t seed_ = 1;
   backend::Engine engine_ = backend::Engine::Jit;
-  // One JIT for the session, made at the first :derive: its optimising compiles for the
-  // cache run while the user types.
-  std::shared_ptr<backend::jit::Jit> jit_;
+  // One code loader (and JIT) for the session, made at the first :derive: its optimising
+  // compiles for the cache run while the user types.
+  std::shared_ptr<backend::native::CodeLoader> code_;
   std::vector<std::pair<std::string, std::string>> overrides_;
   std::vector<rt::Lot> lots_;
   std::string lotsName_;

@@ -8,7 +8,7 @@
 #include "backend/engine.h"
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
-#include "backend/jit/object_cache.h"
+#include "backend/native/object_cache.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
@@ -80,10 +80,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }();
   if (every == 0 || hashOf(data, size) % every != 0 || stoppedByClock(interp)) return 0;
   static backend::jit::Jit jit;
-  const backend::jit::ObjectCache noCache{std::string()};
+  const backend::native::ObjectCache noCache{std::string()};
   rt::DeriveResult jitted;
   try {
-    const auto code = jit.compileProgram(module, text, noCache, backend::jit::Jit::Tiering::Baseline);
+    const auto code = jit.compileProgram(module, text, noCache, backend::native::Tiering::Baseline);
     rt::AssetLibrary jitAssets;
     jitAssets.addSearchDir(FGSG_FUZZ_DATA_DIR);
     jitted = backend::deriveCompiled(module, code.program(), options, jitAssets);

@@ -14,4 +14,14 @@ rm -f grammar/generated/*.interp grammar/generated/*.tokens
 # Tool 4.7.2 writes u8"..." literals, which are char8_t in C++20 and no longer convert
 # to std::string; plain literals are UTF-8 with g++ and clang++ alike.
 sed -i 's/\bu8"/"/g' grammar/generated/*.cpp grammar/generated/*.h
+# The lexer's and parser's ATNs are deserialised on first use, not by a static
+# initialiser at program start: every fgsg command would pay for it, even --version
+# (a quarter of its start-up, issue #18). The first constructor runs the Initializer,
+# once and thread-safely (a function-local static).
+for f in Lexer Parser; do
+  sed -i -e "s|^Fgsg$f::Initializer Fgsg$f::_init;\$|// Fgsg$f::Initializer runs in the constructor, on first use (scripts/regen-grammar.sh).|" \
+         -e "/^Fgsg$f::Fgsg$f(.*) : .*(input) {\$/a\\  static Initializer once;" grammar/generated/Fgsg$f.cpp
+done
+python3 scripts/atn_descending_sets.py grammar/generated/FgsgLexer.cpp
+python3 scripts/atn_descending_sets.py grammar/generated/FgsgParser.cpp
 echo "regenerated grammar/generated/ from grammar/Fgsg.g4"

@@ -109,7 +109,7 @@ int runProgram(const std::vector<std::string>& args, std::string& output, std::s
 
 }  // namespace
 
-std::string findRuntimeLibraryDir(std::string& error) {
+std::string findLibraryDir(const std::string& fileName, std::string& error) {
   std::error_code ec;
   fs::path dir;
   const char* env = std::getenv("FGSG_LIBDIR");
@@ -120,16 +120,16 @@ std::string findRuntimeLibraryDir(std::string& error) {
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (ec) {
       error = "cannot find the running fgsg executable (/proc/self/exe: " + ec.message() +
-              "); set FGSG_LIBDIR to the folder that holds libfgsg.so";
+              "); set FGSG_LIBDIR to the folder that holds " + fileName;
       return "";
     }
     dir = exe.parent_path().parent_path() / "lib";
   }
-  const fs::path lib = dir / "libfgsg.so";
+  const fs::path lib = dir / fileName;
   if (!fs::is_regular_file(lib, ec)) {
-    error = "libfgsg.so is not in " + dir.lexically_normal().string() +
+    error = fileName + " is not in " + dir.lexically_normal().string() +
             (fromEnv ? " (FGSG_LIBDIR)" : " (the lib/ folder beside fgsg's bin/)") +
-            ": build it (the CMake target fgsg_shared) or set FGSG_LIBDIR to the folder that holds it";
+            ": build fgsg's libraries (cmake --build) or set FGSG_LIBDIR to the folder that holds it";
     return "";
   }
   const fs::path canonical = fs::canonical(dir, ec);
@@ -182,10 +182,13 @@ bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
 
   std::vector<std::string> args = compilerCommand();
   const std::string compiler = args[0];
-  for (const std::string& a : {std::string("-shared"), std::string("-o"), libFile.path, objFile.path,
-                               "-L" + libDir, std::string("-lfgsg"), std::string("-lm"),
-                               std::string("-Xlinker"), std::string("-rpath"), std::string("-Xlinker"), libDir})
+  for (const std::string& a : {std::string("-shared"), std::string("-o"), libFile.path, objFile.path})
     args.push_back(a);
+  if (!libDir.empty())
+    for (const std::string& a : {"-L" + libDir, std::string("-lfgsg"), std::string("-Xlinker"), std::string("-rpath"),
+                                 std::string("-Xlinker"), libDir})
+      args.push_back(a);
+  args.push_back("-lm");
   std::string output;
   const int status = runProgram(args, output, error);
   if (status < 0) return false;

@@ -1,20 +1,25 @@
 // Links a compiled grammar (a relocatable object, backend/codegen/program_codegen.h)
-// into a shared library against libfgsg.so, with the system's C compiler driver.
+// into a shared library with the system's C compiler driver: against libfgsg.so for
+// `fgsg compile`, or against nothing for the JIT's cache (native/object_cache.h: the
+// runtime's entry points then come from the fgsg process that loads it).
 #pragma once
 
 #include <string>
 
 namespace fgsg::backend::aot {
 
-// The folder that holds libfgsg.so: $FGSG_LIBDIR when set, else ../lib beside the
-// running executable (/proc/self/exe; the build tree's bin/ and lib/, or an install's).
-// Empty, with a message in `error`, when libfgsg.so is not there.
-std::string findRuntimeLibraryDir(std::string& error);
+// The folder that holds fgsg's library `fileName` (libfgsg.so, libfgsg_llvm.so):
+// $FGSG_LIBDIR when set, else ../lib beside the running executable (/proc/self/exe; the
+// build tree's bin/ and lib/, or an install's). Empty, with a message in `error`, when
+// the library is not there.
+std::string findLibraryDir(const std::string& fileName, std::string& error);
+inline std::string findRuntimeLibraryDir(std::string& error) { return findLibraryDir("libfgsg.so", error); }
 
 // Writes `object` to a temporary file and runs `cc -shared -o TMP OBJ -LLIBDIR -lfgsg
 // -lm -Xlinker -rpath -Xlinker LIBDIR` ($FGSG_CC instead of cc when set; split at
 // spaces), then renames TMP over `outputPath`, so the library appears whole or not at
-// all. False with a message holding the linker's output when linking fails.
+// all. An empty `libDir` links neither libfgsg nor an rpath. False with a message
+// holding the linker's output when linking fails.
 bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
                        const std::string& libDir, std::string& error);
 

@@ -5,7 +5,7 @@
 // whatever it throws in the call's context (native_call.h).
 #include "backend/engine/derivation.h"
 
-#include "backend/jit/query_bridge.h"
+#include "backend/native/query_bridge.h"
 
 #include <algorithm>
 #include <new>
@@ -23,7 +23,7 @@ uint32_t Derivation::blockOf(const ir::Alternative* alt) const {
 double Derivation::callValue(FgsgValueFn fn, const Frame& f) {
   NativeCall call;
   call.engine = this;
-  jit::QueryBridge bridge(m_, f);
+  native::QueryBridge bridge(m_, f);
   bridge.attach(call);
   const double v = fn(f.params, eval_.attrData(), &call);
   if (call.errorCode != FGSG_OK) throw bridge.error(call);
@@ -73,7 +73,7 @@ void Derivation::runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
   call.st = &st;
   call.ex = &ex;
   call.f = &f;
-  jit::QueryBridge bridge(m_, f);
+  native::QueryBridge bridge(m_, f);
   bridge.attach(call);
   program_->blocks[block](&call, f.params, eval_.attrData());
   f.scope = &st.scope;

@@ -4,7 +4,7 @@
 // entry points (native_bridge.cpp).
 #include "backend/engine/derivation.h"
 
-#include "backend/jit/query_bridge.h"
+#include "backend/native/query_bridge.h"
 
 #include <algorithm>
 
@@ -103,7 +103,7 @@ void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, u
     call.engine = this;
     call.f = &f;
     call.string = &target;
-    jit::QueryBridge bridge(m_, f);
+    native::QueryBridge bridge(m_, f);
     bridge.attach(call);
     program_->blocks[block](&call, f.params, eval_.attrData());
     if (call.thrown) std::rethrow_exception(call.thrown);

@@ -1,8 +1,7 @@
 #include "backend/jit/jit.h"
 
 #include "backend/codegen/program_codegen.h"
-#include "backend/jit/object_cache.h"
-#include "runtime/abi.h"
+#include "backend/native/object_cache.h"
 
 #include <llvm/ExecutionEngine/Orc/Core.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
@@ -23,6 +22,7 @@
 #include <condition_variable>
 #include <cstring>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -91,56 +91,40 @@ struct Jit::Impl {
     }
   }
 
-  void defineRuntimeSymbols() {
+  void defineRuntimeSymbols(const std::vector<native::RuntimeSymbol>& table) {
     llvm::orc::SymbolMap symbols;
-    auto add = [&](const char* name, auto* fn) {
-      symbols[lljit->mangleAndIntern(name)] = {llvm::orc::ExecutorAddr::fromPtr(fn),
-                                               llvm::JITSymbolFlags::Exported |
-                                                   llvm::JITSymbolFlags::Callable};
-    };
-#define FGSG_RT_FN(name, ret, ...) add(#name, &name);
-#include "runtime/abi.def"
-    // libm functions the code generator itself may call for intrinsics on CPUs
-    // without SSE4.1 (llvm.floor / llvm.ceil).
-    add("floor", static_cast<double (*)(double)>(&::floor));
-    add("ceil", static_cast<double (*)(double)>(&::ceil));
-    // ... and the C library's block moves, which it may call for large copies (a scope
-    // saved by '[' in direct derivation) instead of expanding them inline.
-    add("memcpy", &::memcpy);
-    add("memmove", &::memmove);
-    add("memset", &::memset);
+    for (const native::RuntimeSymbol& s : table)
+      symbols[lljit->mangleAndIntern(s.name)] = {llvm::orc::ExecutorAddr::fromPtr(s.address),
+                                                 llvm::JITSymbolFlags::Exported | llvm::JITSymbolFlags::Callable};
     orThrow(lljit->getMainJITDylib().define(llvm::orc::absoluteSymbols(std::move(symbols))),
             "JIT: runtime symbols");
   }
 
   // Links a grammar's object into a JITDylib of its own (so every unit can name its
-  // table `fgsg_program`; the runtime's symbols come from the main JITDylib). False when
-  // the object cannot be linked or lacks the table.
-  bool link(const std::string& object, CompiledProgram& out) {
+  // table `fgsg_program`; the runtime's symbols come from the main JITDylib). Nothing
+  // when the object cannot be linked or lacks the table.
+  std::optional<CompiledProgram> link(const std::string& object, bool fromCache, bool optimized) {
     auto& session = lljit->getExecutionSession();
     auto created = lljit->createJITDylib("fgsg_unit_" + std::to_string(units++));
     if (!created) throw std::runtime_error("JIT: unit: " + llvm::toString(created.takeError()));
     llvm::orc::JITDylib& unit = *created;
     unit.addToLinkOrder(lljit->getMainJITDylib());
     llvm::orc::ResourceTrackerSP tracker = unit.createResourceTracker();
-    out.unit_ = std::shared_ptr<void>(nullptr, [&session, &unit, tracker](void*) {
+    std::shared_ptr<void> release(nullptr, [&session, &unit, tracker](void*) {
       if (llvm::Error err = tracker->remove()) llvm::consumeError(std::move(err));
       if (llvm::Error err = session.removeJITDylib(unit)) llvm::consumeError(std::move(err));
     });
     llvm::Error added = lljit->addObjectFile(tracker, llvm::MemoryBuffer::getMemBufferCopy(object, "fgsg_program.o"));
     if (added) {
       llvm::consumeError(std::move(added));
-      out.unit_.reset();
-      return false;
+      return std::nullopt;
     }
     auto table = lljit->lookup(unit, "fgsg_program");
     if (!table) {
       llvm::consumeError(table.takeError());
-      out.unit_.reset();
-      return false;
+      return std::nullopt;
     }
-    out.program_ = table->toPtr<const FgsgProgram*>();
-    return true;
+    return CompiledProgram(table->toPtr<const FgsgProgram*>(), std::move(release), fromCache, optimized);
   }
 
   void optimize(llvm::Module& m) {
@@ -159,7 +143,7 @@ struct Jit::Impl {
   }
 };
 
-Jit::Jit() : impl_(std::make_unique<Impl>()) {
+Jit::Jit(const std::vector<native::RuntimeSymbol>& runtime) : impl_(std::make_unique<Impl>()) {
   initNativeTarget();
   auto jtmb = orThrow(llvm::orc::JITTargetMachineBuilder::detectHost(), "JIT: host target");
   jtmb.setCodeGenOptLevel(llvm::CodeGenOptLevel::Default);
@@ -170,7 +154,7 @@ Jit::Jit() : impl_(std::make_unique<Impl>()) {
                              .setPlatformSetUp(llvm::orc::setUpInactivePlatform)
                              .create(),
                          "JIT: LLJIT");
-  impl_->defineRuntimeSymbols();
+  impl_->defineRuntimeSymbols(runtime);
 }
 
 Jit::~Jit() = default;
@@ -226,28 +210,31 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
                                     Tiering tiering) {
   const auto start = std::chrono::steady_clock::now();
   const std::string key = ObjectCache::key(m, source);
-  CompiledProgram out;
+  std::optional<CompiledProgram> out;
   if (tiering != Tiering::Baseline) {
-    if (std::optional<std::string> cached = cache.load(key)) {
-      out.fromCache_ = true;
-      if (!impl_->link(*cached, out)) out.fromCache_ = false;  // unusable: compiled afresh below
-    }
+    // An unusable object is compiled afresh below (and replaced).
+    if (std::optional<std::string> cached = cache.load(key)) out = impl_->link(*cached, true, true);
   }
-  if (!out.fromCache_) {
+  if (!out) {
     const bool tiered = tiering == Tiering::Tiered && !cache.folder().empty();
     const bool firstTier = tiered || tiering == Tiering::Baseline;
     const std::string object = codegen::compileProgramObject(
         m, {}, codegen::CpuTarget::Host, firstTier ? codegen::CodeQuality::Baseline : codegen::CodeQuality::Optimized);
-    if (!impl_->link(object, out)) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
-    out.optimized_ = !firstTier;
+    out = impl_->link(object, false, !firstTier);
+    if (!out) throw std::logic_error("internal: the JIT cannot link a grammar it compiled");
     if (tiered) {
       auto state = std::make_shared<BackgroundState>();
       std::thread thread([m, cache, key, state] {
         try {
           const std::string object =
               codegen::compileProgramObject(m, {}, codegen::CpuTarget::Host, codegen::CodeQuality::Optimized);
-          std::lock_guard<std::mutex> lock(state->mutex);
-          if (!state->abandoned) cache.store(key, object);
+          bool stored = false;
+          {
+            std::lock_guard<std::mutex> lock(state->mutex);
+            if (!state->abandoned) stored = cache.store(key, object);
+          }
+          // Linked outside the lock: a waiter past its limit abandons the link, not itself.
+          if (stored) cache.storeLibrary(key, object);
         } catch (...) {
           // The next run compiles again; nothing is lost but time.
         }
@@ -257,11 +244,11 @@ CompiledProgram Jit::compileProgram(const ir::Module& m, const std::string& sour
       });
       impl_->background.push_back({std::move(thread), std::move(state)});
     } else if (!firstTier) {
-      cache.store(key, object);
+      if (cache.store(key, object)) cache.storeLibrary(key, object);
     }
   }
-  out.seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
+  out->setSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return std::move(*out);
 }
 
 }  // namespace fgsg::backend::jit

@@ -1,6 +1,7 @@
 #include "runtime/marching/image_cache.h"
 
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/content_hash.h"
 #include "runtime/io/read_input.h"
 #include "runtime/marching/geometry_image.h"
 #include "runtime/random.h"
@@ -21,42 +22,6 @@ constexpr size_t kHeaderBytes = sizeof kMagic + 4 + 4 + kKeyDigits + 8;
 constexpr size_t kChecksumBytes = 16;
 // The largest file read: an 8192^2 image at 6 bytes per texel and its atlas, with room.
 constexpr uint64_t kMaxCacheBytes = uint64_t(1) << 31;
-
-// 128 bits from two independent 64-bit chains over 8-byte words (splitmix64's finaliser
-// as the mixing step): a content key and a checksum, not a defence against forgery.
-class ContentHash {
- public:
-  void bytes(const void* data, size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    word(n);
-    for (; n >= 8; n -= 8, p += 8) {
-      uint64_t w;
-      std::memcpy(&w, p, 8);
-      word(w);
-    }
-    if (n > 0) {
-      uint64_t w = 0;
-      std::memcpy(&w, p, n);
-      word(w);
-    }
-  }
-  void word(uint64_t w) {
-    a_ = rt::mix64(a_ ^ w);
-    b_ = rt::mix64(b_ + w + 0x632be59bd9b4e019ull);
-  }
-  std::string hex() const {
-    static const char* digits = "0123456789abcdef";
-    std::string out;
-    for (uint64_t v : {a_, b_})
-      for (int shift = 60; shift >= 0; shift -= 4) out += digits[(v >> shift) & 15];
-    return out;
-  }
-  uint64_t first() const { return a_; }
-  uint64_t second() const { return b_; }
-
- private:
-  uint64_t a_ = 0x243f6a8885a308d3ull, b_ = 0x13198a2e03707344ull;
-};
 
 template <class T>
 void put(std::string& out, const T& value) {
@@ -98,7 +63,7 @@ class Cursor {
 }  // namespace
 
 std::string imageCacheKey(const surface::SurfaceMesh& mesh, const MarchingOptions& options) {
-  ContentHash h;
+  io::ContentHash h;
   h.word(kImageCacheVersion);
   // Eigen's fixed-size vectors are their coordinates, contiguous and unpadded.
   static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Vec2) == 2 * sizeof(double));
@@ -146,7 +111,7 @@ bool writeImageCache(const std::string& path, const std::string& key, const Marc
   file += key;
   put(file, uint64_t(payload.size()));
   file += payload;
-  ContentHash check;
+  io::ContentHash check;
   check.bytes(payload.data(), payload.size());
   put(file, check.first());
   put(file, check.second());
@@ -196,7 +161,7 @@ std::shared_ptr<const MarchingSurface> readImageCache(const std::string& path, c
     return nullptr;
   }
   const char* payload = file.data() + kHeaderBytes;
-  ContentHash check;
+  io::ContentHash check;
   check.bytes(payload, payloadBytes);
   uint64_t stored[2];
   std::memcpy(stored, payload + payloadBytes, sizeof stored);

@@ -2,7 +2,7 @@
 // NaN included) and the same random draws, over random expression trees and inputs.
 #include "backend/interp/eval.h"
 #include "backend/jit/jit.h"
-#include "backend/jit/query_bridge.h"
+#include "backend/native/query_bridge.h"
 #include "ir/printer.h"
 
 #include <catch2/catch.hpp>
@@ -360,7 +360,7 @@ TEST_CASE("jit: queries go through the host, a refused query is an error in the 
     }
     backend::Frame jitFrame = frame;
     jitFrame.rng = &jitRng;
-    backend::jit::QueryBridge bridge(m, jitFrame);
+    backend::native::QueryBridge bridge(m, jitFrame);
     FgsgContext ctx;
     bridge.attach(ctx);
     const double got = code.num(i)(params, nullptr, &ctx);
@@ -384,7 +384,7 @@ TEST_CASE("jit: queries go through the host, a refused query is an error in the 
   // Without a scope (a parallel rewriting step): R006, like the interpreter.
   frame.scope = nullptr;
   backend::Frame jitFrame = frame;
-  backend::jit::QueryBridge bridge(m, jitFrame);
+  backend::native::QueryBridge bridge(m, jitFrame);
   FgsgContext ctx;
   bridge.attach(ctx);
   code.num(0)(params, nullptr, &ctx);

@@ -4,7 +4,7 @@
 // cache; a program that does not belong to the grammar.
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
-#include "backend/jit/object_cache.h"
+#include "backend/native/object_cache.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
 #include "ir/program_layout.h"
@@ -33,7 +33,7 @@ ir::Module compile(const std::string& text) {
   return m;
 }
 
-const backend::jit::ObjectCache kNoCache{std::string()};
+const backend::native::ObjectCache kNoCache{std::string()};
 
 void requireSame(const rt::DeriveResult& a, const rt::DeriveResult& b) {
   REQUIRE(a.ok == b.ok);
@@ -300,7 +300,7 @@ TEST_CASE("the program layout numbers every block and op once") {
 TEST_CASE("the object cache answers the second compile with optimised code and survives a damaged file") {
   const auto folder = std::filesystem::temp_directory_path() / "fgsg-test-object-cache";
   std::filesystem::remove_all(folder);
-  const backend::jit::ObjectCache cache(folder.string());
+  const backend::native::ObjectCache cache(folder.string());
   const ir::Module m = compile(kMixed);
   backend::jit::Jit jit;
   rt::AssetLibrary assets;
@@ -319,9 +319,9 @@ TEST_CASE("the object cache answers the second compile with optimised code and s
   }
   // Another grammar text is another key.
   const std::string other = std::string(kMixed) + "\n// a comment\n";
-  CHECK(backend::jit::ObjectCache::key(m, other) != backend::jit::ObjectCache::key(m, kMixed));
+  CHECK(backend::native::ObjectCache::key(m, other) != backend::native::ObjectCache::key(m, kMixed));
   // A file cut short is a miss: the grammar is compiled again and the file replaced.
-  const auto file = folder / (backend::jit::ObjectCache::key(m, kMixed) + ".o");
+  const auto file = folder / (backend::native::ObjectCache::key(m, kMixed) + ".o");
   REQUIRE(std::filesystem::exists(file));
   std::filesystem::resize_file(file, 100);
   const auto again = jit.compileProgram(m, kMixed, cache);
@@ -329,6 +329,34 @@ TEST_CASE("the object cache answers the second compile with optimised code and s
   requireSame(reference, backend::deriveCompiled(m, again.program(), {}, assets));
   jit.waitForCache();
   CHECK(std::filesystem::file_size(file) > 100);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("the cache's shared library holds the optimised code and loads without the JIT") {
+  const auto folder = std::filesystem::temp_directory_path() / "fgsg-test-object-cache-library";
+  std::filesystem::remove_all(folder);
+  const backend::native::ObjectCache cache(folder.string());
+  const ir::Module m = compile(kMixed);
+  rt::AssetLibrary assets;
+  const rt::DeriveResult reference = backend::interpret(m, {}, assets);
+  const std::string key = backend::native::ObjectCache::key(m, kMixed);
+  CHECK_FALSE(cache.loadLibrary(key));  // a miss
+  {
+    backend::jit::Jit jit;
+    jit.compileProgram(m, kMixed, cache, backend::native::Tiering::Optimized);
+  }
+  REQUIRE(std::filesystem::exists(folder / (key + ".so")));
+  {
+    const auto code = cache.loadLibrary(key);  // the JIT is gone: dlopen alone
+    REQUIRE(code);
+    CHECK(code->fromCache());
+    CHECK(code->optimized());
+    requireSame(reference, backend::deriveCompiled(m, code->program(), {}, assets));
+  }
+  // A damaged file is a miss, not a crash (unloaded first: the cache replaces files
+  // by renaming, never in place under a process that has them loaded).
+  std::filesystem::resize_file(folder / (key + ".so"), 100);
+  CHECK_FALSE(cache.loadLibrary(key));
   std::filesystem::remove_all(folder);
 }
 

@@ -8,7 +8,7 @@
 
 #include <optional>
 
-namespace fgsg::backend::jit {
+namespace fgsg::backend::native {
 
 class QueryBridge {
  public:
@@ -35,4 +35,4 @@ class QueryBridge {
   std::optional<DeriveError> hostError_;  // what the host threw, for FGSG_E_HOST
 };
 
-}  // namespace fgsg::backend::jit
+}  // namespace fgsg::backend::native

@@ -1,6 +1,6 @@
-#include "backend/jit/query_bridge.h"
+#include "backend/native/query_bridge.h"
 
-namespace fgsg::backend::jit {
+namespace fgsg::backend::native {
 
 int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t extra,
                             const double* args, uint32_t nargs, int32_t line, int32_t col,
@@ -68,4 +68,4 @@ DeriveError QueryBridge::error(const FgsgContext& ctx) const {
   return {at, "R900", "internal: unknown JIT error " + std::to_string(ctx.errorCode)};
 }
 
-}  // namespace fgsg::backend::jit
+}  // namespace fgsg::backend::native
