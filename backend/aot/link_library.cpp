@@ -109,33 +109,6 @@ int runProgram(const std::vector<std::string>& args, std::string& output, std::s
 
 }  // namespace
 
-std::string findLibraryDir(const std::string& fileName, std::string& error) {
-  std::error_code ec;
-  fs::path dir;
-  const char* env = std::getenv("FGSG_LIBDIR");
-  const bool fromEnv = env && *env;
-  if (fromEnv) {
-    dir = fs::absolute(env, ec);
-  } else {
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) {
-      error = "cannot find the running fgsg executable (/proc/self/exe: " + ec.message() +
-              "); set FGSG_LIBDIR to the folder that holds " + fileName;
-      return "";
-    }
-    dir = exe.parent_path().parent_path() / "lib";
-  }
-  const fs::path lib = dir / fileName;
-  if (!fs::is_regular_file(lib, ec)) {
-    error = fileName + " is not in " + dir.lexically_normal().string() +
-            (fromEnv ? " (FGSG_LIBDIR)" : " (the lib/ folder beside fgsg's bin/)") +
-            ": build fgsg's libraries (cmake --build) or set FGSG_LIBDIR to the folder that holds it";
-    return "";
-  }
-  const fs::path canonical = fs::canonical(dir, ec);
-  return (ec ? dir.lexically_normal() : canonical).string();
-}
-
 bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
                        const std::string& libDir, std::string& error) {
   std::error_code ec;

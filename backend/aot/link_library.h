@@ -4,16 +4,15 @@
 // runtime's entry points then come from the fgsg process that loads it).
 #pragma once
 
+#include "runtime/plugins/plugin_library.h"
+
 #include <string>
 
 namespace fgsg::backend::aot {
 
-// The folder that holds fgsg's library `fileName` (libfgsg.so, libfgsg_llvm.so):
-// $FGSG_LIBDIR when set, else ../lib beside the running executable (/proc/self/exe; the
-// build tree's bin/ and lib/, or an install's). Empty, with a message in `error`, when
-// the library is not there.
-std::string findLibraryDir(const std::string& fileName, std::string& error);
-inline std::string findRuntimeLibraryDir(std::string& error) { return findLibraryDir("libfgsg.so", error); }
+// The folder that holds libfgsg.so (runtime/plugins/plugin_library.h); empty, with a
+// message in `error`, when it is not there.
+inline std::string findRuntimeLibraryDir(std::string& error) { return rt::findLibraryDir("libfgsg.so", error); }
 
 // Writes `object` to a temporary file and runs `cc -shared -o TMP OBJ -LLIBDIR -lfgsg
 // -lm -Xlinker -rpath -Xlinker LIBDIR` ($FGSG_CC instead of cc when set; split at

@@ -4,6 +4,7 @@
 
 #include "backend/engine/derivation.h"
 #include "runtime/out_of_resources.h"
+#include "runtime/plugins/plugin_library.h"
 
 #include <chrono>
 #include <exception>
@@ -39,6 +40,8 @@ rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
                                "out of memory while deriving: the grammar needs more memory than this "
                                "machine gives it (--max-memory stops a derivation earlier and keeps its "
                                "shapes); nothing is written"});
+  } catch (const rt::PluginError& e) {
+    failed.messages.push_back({true, "R900", 0, 0, std::string("this grammar needs a part of fgsg that cannot be loaded: ") + e.what()});
   } catch (const std::exception& e) {
     if (const std::string why = rt::outOfResources(e); !why.empty())
       failed.messages.push_back({true, "R020", 0, 0,

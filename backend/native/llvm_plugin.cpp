@@ -1,8 +1,6 @@
 #include "backend/native/llvm_plugin.h"
 
-#include "backend/aot/link_library.h"
-
-#include <dlfcn.h>
+#include "runtime/plugins/plugin_library.h"
 
 #include <atomic>
 #include <mutex>
@@ -14,19 +12,10 @@ namespace {
 std::atomic<const LlvmPlugin*> loaded{nullptr};
 
 const LlvmPlugin* load() {
-  std::string error;
-  const std::string dir = aot::findLibraryDir("libfgsg_llvm.so", error);
-  if (dir.empty()) throw std::runtime_error(error);
-  const std::string file = dir + "/libfgsg_llvm.so";
-  // Never closed: LLVM's static objects and a background compile's thread outlive any
-  // one use of it.
-  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw std::runtime_error(std::string("cannot load ") + file + ": " + dlerror());
   using Entry = const LlvmPlugin* (*)();
-  auto entry = reinterpret_cast<Entry>(dlsym(handle, kLlvmPluginEntry));
-  const LlvmPlugin* plugin = entry ? entry() : nullptr;
+  const LlvmPlugin* plugin = reinterpret_cast<Entry>(rt::openPlugin("libfgsg_llvm.so", kLlvmPluginEntry))();
   if (!plugin || plugin->version != kLlvmPluginVersion)
-    throw std::runtime_error(file + " is not the compiler of this fgsg (another build or version)");
+    throw rt::PluginError("libfgsg_llvm.so is not the compiler of this fgsg (another build or version)");
   return plugin;
 }
 

@@ -6,6 +6,7 @@
 #include "runtime/io/atomic_file.h"
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/content_hash.h"
+#include "runtime/plugins/plugin_library.h"
 
 // The version of the LLVM the plugin compiles with: a header, nothing is linked.
 #include <llvm/Config/llvm-config.h>
@@ -41,7 +42,7 @@ std::string buildIdentity() {
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&buildIdentity), &info) && info.dli_fname) id = fileIdentity(info.dli_fname);
   std::string error;
-  if (const std::string dir = aot::findLibraryDir("libfgsg_llvm.so", error); !dir.empty())
+  if (const std::string dir = rt::findLibraryDir("libfgsg_llvm.so", error); !dir.empty())
     id.append("|").append(fileIdentity(dir + "/libfgsg_llvm.so"));
   return id.empty() ? "unknown-build" : id;
 }

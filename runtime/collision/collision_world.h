@@ -2,7 +2,8 @@
 // and a new instance asks whether it would intersect any of them. Exact tests compare
 // the instances' triangle meshes (FCL: BVH against BVH under rigid transforms, a dynamic
 // AABB tree as broad phase) and then whole-volume containment, which triangle tests miss;
-// the cheap alternative compares instance centres against a radius.
+// the cheap alternative compares instance centres against a radius. The implementation
+// is loaded when the first obstacle is added (collision_backend.h).
 #pragma once
 
 #include "runtime/assets.h"
@@ -19,6 +20,8 @@ enum class CollisionTest : uint8_t {
   Mesh,    // the instances' meshes intersect, or one encloses the other
   Centre,  // the instances' centres (their unit boxes' centres) are closer than a radius
 };
+
+class CollisionBackend;
 
 class CollisionWorld {
  public:
@@ -49,8 +52,12 @@ class CollisionWorld {
   uint64_t narrowPhaseTests() const;  // pairs compared exactly (for benchmarks)
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  CollisionBackend& backend();
+
+  const AssetLibrary& assets_;
+  CollisionTest test_;
+  double radius_;
+  std::unique_ptr<CollisionBackend> impl_;  // null until the first obstacle
 };
 
 }  // namespace fgsg::rt

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Only commands that compile load LLVM (issue #18): the code generator and the JIT are a
-# plugin, lib/libfgsg_llvm.so, opened on first need, and a run whose code is cached loads
-# the cache's shared library with dlopen alone. Checked by the libraries each process
-# loads (LD_DEBUG=files); without the plugin or the C compiler fgsg says why and goes on
-# where it can.
+# Heavy libraries are loaded only by the commands that use them (issue #18): the code
+# generator and the JIT are a plugin, lib/libfgsg_llvm.so, opened on first need, and a
+# run whose code is cached loads the cache's shared library with dlopen alone; FCL's
+# collision tests are lib/libfgsg_fcl.so, opened when a grammar places its first
+# obstacle. Checked by the libraries each process loads (LD_DEBUG=files); without a
+# plugin or the C compiler fgsg says why and goes on where it can.
 . "$(dirname "$0")/../reliability/lib.sh"
 grammar="$root/examples/koch.fgsg"
 export FGSG_CACHE_DIR="$tmp/cache"
@@ -16,9 +17,11 @@ loads() {
   grep -o "file=[^ ]*" "$tmp/debug" | sort -u >"$tmp/libs"
 }
 no_llvm() { ! grep -qE "libLLVM|libfgsg_llvm" "$tmp/libs" || fail "$1 loaded LLVM: $(grep -E 'LLVM|llvm' "$tmp/libs" | tr '\n' ' ')"; }
+no_fcl() { ! grep -qE "libfcl|libfgsg_fcl" "$tmp/libs" || fail "$1 loaded FCL"; }
 
 loads "--version" "$fgsg" --version
 no_llvm "--version"
+no_fcl "--version"
 loads "check" "$fgsg" check "$grammar"
 no_llvm "check"
 loads "ir" "$fgsg" ir "$grammar"
@@ -27,6 +30,10 @@ loads "synth" "$fgsg" synth "$root/examples/synthesis/castle.txt" --size 10 10 1
 no_llvm "synth"
 loads "run --engine=interp" "$fgsg" run "$grammar" --engine=interp -q -o "$tmp/interp.glb"
 no_llvm "run --engine=interp"
+no_fcl "a grammar without collisions"
+flowers="$root/examples/lock_flowers.fgsg"
+loads "a grammar with IC" "$fgsg" run "$flowers" --engine=interp -q -o "$tmp/flowers.glb"
+grep -q "libfgsg_fcl.so" "$tmp/libs" || fail "a grammar with IC did not load the collision plugin"
 
 # The first run compiles through the plugin and leaves the object and its library.
 loads "the first run" "$fgsg" run "$grammar" -q --stats -o "$tmp/a.glb"
@@ -65,4 +72,7 @@ expect 1 "error\[R900\]: the JIT cannot compile this grammar: libfgsg_llvm.so is
 FGSG_LIBDIR="$tmp/nolib" "$fgsg" run "$grammar" --engine=interp -q -o "$tmp/g.glb" || fail "--engine=interp needs the plugin"
 cmp "$tmp/a.glb" "$tmp/g.glb" || fail "--engine=interp without the plugin: other bytes"
 expect 1 "fgsg ir: libfgsg_llvm.so is not in" -- env FGSG_LIBDIR="$tmp/nolib" "$fgsg" ir "$grammar" --llvm
-echo "ok: llvm plugin"
+expect 1 "error\[R900\]: this grammar needs a part of fgsg that cannot be loaded: libfgsg_fcl.so is not in" -- \
+  env FGSG_LIBDIR="$tmp/nolib" "$fgsg" run "$flowers" --engine=interp -o "$tmp/h.glb"
+[ ! -e "$tmp/h.glb" ] || fail "a run without the collision plugin wrote output"
+echo "ok: plugins"
