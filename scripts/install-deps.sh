@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libopenmesh-dev
   catch2
   libtbb-dev libfcl-dev libembree-dev
-  libtinygltf-dev libstb-dev libedit-dev
+  libtinygltf-dev libstb-dev libedit-dev libfmt-dev
   nlohmann-json3-dev
   libcgal-dev libgmp-dev libmpfr-dev libassimp-dev libnanoflann-dev
   zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev

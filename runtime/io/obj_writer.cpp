@@ -1,5 +1,6 @@
 #include "runtime/io/obj_writer.h"
 
+#include "runtime/io/float_text.h"
 #include "runtime/io/mesh_attributes.h"
 
 #include <tbb/parallel_pipeline.h>
@@ -25,7 +26,7 @@ constexpr size_t kMaxLine = 128;
 char* putFloats(char* p, const float* v, int n) {
   for (int d = 0; d < n; ++d) {
     *p++ = ' ';
-    p = std::to_chars(p, p + 16, v[d]).ptr;
+    p = putShortestFloat(p, v[d]);
   }
   return p;
 }
