@@ -128,6 +128,7 @@ class BitsetCatalog {
   }
   // Narrows the domain of an active site to `label` (statement 3.7) and queues it.
   void assign(int64_t site, int label) {
+    if (recording_) save(int32_t(site));
     Word* d = domain(site);
     for (int i = 0; i < NW; ++i) d[i] = 0;
     setBit(d, label);
@@ -146,6 +147,36 @@ class BitsetCatalog {
   void trackChanges(bool on) { track_ = on; }
   std::vector<int32_t>& changed() { return changed_; }
 
+  // Removes `label` from an active site's domain and queues it; false when none is left.
+  bool exclude(int64_t site, int label) {
+    Word keep[NW];
+    for (int i = 0; i < NW; ++i) keep[i] = ~Word(0);
+    keep[label / kWordBits] &= ~(Word(1) << (label % kWordBits));
+    return narrow(int32_t(site), keep);
+  }
+
+  // Backtracking (minimum-entropy order): while recording, each domain change keeps the
+  // domain it replaced, and undo(mark) restores every change since trailMark() returned
+  // `mark`, most recent first, calling restored(site) for each. Undo only with an empty
+  // queue (propagate() leaves it empty).
+  void recordTrail(bool on, size_t expected = 0) {
+    recording_ = on;
+    trail_.clear();
+    if (on) trail_.reserve(expected);
+  }
+  size_t trailMark() const { return trail_.size(); }
+  template <class Restored>
+  void undo(size_t mark, Restored restored) {
+    while (trail_.size() > mark) {
+      const TrailEntry& e = trail_.back();
+      for (int i = 0; i < NW; ++i) domain(e.site)[i] = e.domain[i];
+      uint8_t& f = flags_[size_t(e.site)];
+      f = uint8_t((f & ~kDecided) | (e.flags & kDecided));  // queued-ness stays (nothing is)
+      restored(e.site);
+      trail_.pop_back();
+    }
+  }
+
   uint64_t pops() const { return pops_; }
   uint64_t memoMisses() const { return memo_.misses(); }
   size_t bytes() const {
@@ -158,17 +189,30 @@ class BitsetCatalog {
   // and not queued = settled.
   enum : uint8_t { kActive = 1, kQueued = 2, kDecided = 4 };
 
+  struct TrailEntry {
+    int32_t site;
+    uint8_t flags;
+    Word domain[NW];
+  };
+  void save(int32_t site) {
+    TrailEntry e{site, flags_[size_t(site)], {}};
+    for (int i = 0; i < NW; ++i) e.domain[i] = domain(site)[i];
+    trail_.push_back(e);
+  }
+
   // dom(u) &= keep; false when it became empty.
   bool narrow(int32_t u, const Word* keep) {
     Word* du = domain(u);
+    Word nd[NW];
     Word changed = 0, any = 0;
     for (int i = 0; i < NW; ++i) {
-      const Word nd = du[i] & keep[i];
-      changed |= nd ^ du[i];
-      any |= nd;
-      du[i] = nd;
+      nd[i] = du[i] & keep[i];
+      changed |= nd[i] ^ du[i];
+      any |= nd[i];
     }
     if (!changed) return true;
+    if (recording_) save(u);
+    for (int i = 0; i < NW; ++i) du[i] = nd[i];
     if (track_) changed_.push_back(u);
     if (singleLabel<NW>(du) >= 0) flags_[size_t(u)] |= kDecided;
     push(u);
@@ -185,6 +229,8 @@ class BitsetCatalog {
   size_t queueMask_, head_ = 0, tail_ = 0;
   std::vector<int32_t> changed_;
   bool track_ = false;
+  std::vector<TrailEntry> trail_;
+  bool recording_ = false;
   uint64_t pops_ = 0;
 };
 

@@ -329,23 +329,73 @@ class Solver {
     return assignGrowing(sites, fail);
   }
 
-  // Minimum remaining labels first, random tie-break; stale heap entries are skipped.
+  // Minimum remaining labels first, ties to the lowest site (the scanline position):
+  // random ties scatter decisions over the grid, and fronts that meet from afar contradict
+  // each other (the bundled city: 70-90 % first-attempt success with random ties, 100 %
+  // with these). A contradiction undoes the last decision and forbids its label at its
+  // site; when that leaves the site nothing, the decision before it goes the same way
+  // (chronological backtracking, at most one backtrack per site of the block). Stale heap
+  // entries are skipped; every site an undo restores is pushed again.
   bool assignMinEntropy(const std::vector<int32_t>& sites, SynthesisFailure& fail) {
-    using Entry = std::tuple<int, uint32_t, int32_t>;
+    using Entry = std::pair<int, int32_t>;  // (labels left, site)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
     constexpr int W = NW;
-    for (int32_t s : sites) heap.push({popcount(cat_.domain(s), W), uint32_t(rng_.next()), s});
+    auto push = [&](int32_t c) {
+      if (cat_.active(c) && !assigned_[size_t(c)]) heap.push({popcount(cat_.domain(c), W), c});
+    };
+    for (int32_t s : sites) push(s);
+    struct Decision {
+      int32_t site;
+      int label;
+      size_t trail;     // the catalog's trail before it
+      size_t assigned;  // assignedOrder's size before it
+    };
+    std::vector<Decision> decisions;
+    std::vector<int32_t> assignedOrder;
+    uint64_t backtracks = 0;
     cat_.trackChanges(true);
+    cat_.recordTrail(true, 4 * sites.size());  // about the changes of one pass
     bool ok = true;
     while (ok && !heap.empty()) {
-      auto [n, tie, s] = heap.top();
+      const auto [n, s] = heap.top();
       heap.pop();
       if (assigned_[size_t(s)] || n != popcount(cat_.domain(s), W)) continue;
+      if (limitsHit(fail, s)) {
+        ok = false;
+        break;
+      }
+      const Decision d{s, -1, cat_.trailMark(), assignedOrder.size()};
+      assigned_[size_t(s)] = 1;
+      assignedOrder.push_back(s);
+      ++stats_.assignments;
+      if (singleLabel<NW>(cat_.domain(s)) >= 0) continue;  // decided by propagation
       cat_.changed().clear();
-      ok = assignOne(s, false, fail);
-      for (int32_t c : cat_.changed())
-        if (cat_.active(c) && !assigned_[size_t(c)]) heap.push({popcount(cat_.domain(c), W), uint32_t(rng_.next()), c});
+      const int b = choose(s, false);
+      cat_.assign(s, b);
+      int64_t bad = cat_.propagate();
+      decisions.push_back({d.site, b, d.trail, d.assigned});
+      while (bad >= 0) {
+        if (decisions.empty() || backtracks >= sites.size()) {
+          ok = failAt(bad, fail);
+          break;
+        }
+        const Decision last = decisions.back();
+        decisions.pop_back();
+        ++backtracks;
+        ++stats_.backtracks;
+        cat_.undo(last.trail, push);
+        while (assignedOrder.size() > last.assigned) {
+          assigned_[size_t(assignedOrder.back())] = 0;
+          assignedOrder.pop_back();
+        }
+        // Forbidden at the level before it: undone with that decision, if it comes to that.
+        bad = cat_.exclude(last.site, last.label) ? cat_.propagate() : last.site;
+        push(last.site);
+      }
+      for (int32_t c : cat_.changed()) push(c);
+      cat_.changed().clear();
     }
+    cat_.recordTrail(false);
     cat_.trackChanges(false);
     cat_.changed().clear();
     return ok;
