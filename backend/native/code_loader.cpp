@@ -11,10 +11,8 @@ CodeLoader::~CodeLoader() = default;
 
 CompiledProgram CodeLoader::load(const ir::Module& m, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
-  loadedLibrary_ = false;
   if (!cache_.folder().empty()) {
     if (std::optional<CompiledProgram> cached = cache_.loadLibrary(ObjectCache::key(m, source))) {
-      loadedLibrary_ = true;
       cached->setSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       return std::move(*cached);
     }

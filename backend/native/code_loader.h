@@ -20,20 +20,17 @@ class CodeLoader {
   CodeLoader(const CodeLoader&) = delete;
   CodeLoader& operator=(const CodeLoader&) = delete;
 
-  // Throws std::runtime_error when the plugin cannot be loaded or cannot compile.
+  // Throws std::runtime_error (rt::PluginError when the plugin cannot be loaded) when
+  // the code can be neither loaded nor compiled.
   CompiledProgram load(const ir::Module& m, const std::string& source);
 
   // See ProgramCompiler::stopWaitingAt.
   void stopWaitingAt(std::chrono::steady_clock::time_point limit);
 
-  // Whether the last load() came from the cache's library (no LLVM involved).
-  bool loadedLibrary() const { return loadedLibrary_; }
-
  private:
   ObjectCache cache_;
   std::unique_ptr<ProgramCompiler> compiler_;
   std::chrono::steady_clock::time_point waitLimit_ = std::chrono::steady_clock::time_point::max();
-  bool loadedLibrary_ = false;
 };
 
 // Background compiles still running LLVM (ProgramCompiler::stopWaitingAt): a process

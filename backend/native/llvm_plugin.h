@@ -33,8 +33,8 @@ struct LlvmPlugin {
   int (*abandonedCompiles)();
 };
 
-// The plugin's table, loading it on first use. Throws std::runtime_error naming the
-// library and why it cannot be used (missing, not loadable, another version).
+// The plugin's table, loading it on first use. Throws rt::PluginError naming the library
+// and why it cannot be used (missing, not loadable, another version).
 const LlvmPlugin& llvmPlugin();
 
 // Whether llvmPlugin() has loaded it (commands ask before touching abandoned compiles).
