@@ -40,7 +40,10 @@ void putDigits(char* p, uint32_t n, int count) {
 }  // namespace
 
 char* putShortestFloat(char* p, float v) {
-  if (std::signbit(v)) *p++ = '-', v = -v;
+  // The sign without a branch: coordinates' signs are as good as random.
+  *p = '-';
+  p += std::signbit(v);
+  v = std::fabs(v);
   if (v == 0.0f) {
     *p++ = '0';
     return p;
