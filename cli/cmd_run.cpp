@@ -148,9 +148,9 @@ bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& 
   return !diags.hasErrors();
 }
 
-// The whole command; `code` is the caller's, so that it is destroyed (waiting for its
+// The whole command; `loader` is the caller's, so that it is destroyed (waiting for its
 // background compile, within --max-seconds) before the process ends.
-int run(const Args& args, backend::native::CodeLoader& code) {
+int run(const Args& args, backend::native::CodeLoader& loader) {
   RunOptions opt;
   try {
     opt = parseRunOptions(args);
@@ -199,11 +199,11 @@ int run(const Args& args, backend::native::CodeLoader& code) {
   // compiler builds the optimised code for the cache while the output is written.
   auto t0 = std::chrono::steady_clock::now();
   // The cache's optimising compile is awaited only within --max-seconds of this start.
-  code.stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
+  loader.stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
   backend::EngineReport engineReport;
   rt::DeriveResult result = backend::derive(opt.engine, compiled->module, compiled->source.text,
-                                            opt.derive, assets, &engineReport, &code);
+                                            opt.derive, assets, &engineReport, &loader);
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
   if (!reportMessages(result, compiled->source)) return 1;
   // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started

@@ -12,7 +12,14 @@ CodeLoader::~CodeLoader() = default;
 CompiledProgram CodeLoader::load(const ir::Module& m, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
   if (!cache_.folder().empty()) {
-    if (std::optional<CompiledProgram> cached = cache_.loadLibrary(ObjectCache::key(m, source))) {
+    const std::string key = ObjectCache::key(m, source);
+    std::optional<CompiledProgram> cached = cache_.loadLibrary(key);
+    // A library missing or damaged beside a good object is linked again from it: one run
+    // of the C compiler, still no LLVM.
+    if (!cached)
+      if (std::optional<std::string> object = cache_.load(key); object && cache_.storeLibrary(key, *object))
+        cached = cache_.loadLibrary(key);
+    if (cached) {
       cached->setSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       return std::move(*cached);
     }

@@ -1,6 +1,6 @@
 // A grammar's native code for the commands (`fgsg run`, the REPL): the cache's shared
-// library when it holds one, loaded without LLVM; else compiled through the LLVM plugin
-// (llvm_plugin.h), loaded then. It owns that compiler, whose destructor waits for the
+// library when it holds one (or can link one from the cached object), loaded without
+// LLVM; else compiled through the LLVM plugin (llvm_plugin.h), loaded then. It owns that compiler, whose destructor waits for the
 // background compile that fills the cache: keep it until the command's output is written.
 #pragma once
 

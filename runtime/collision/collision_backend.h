@@ -36,7 +36,7 @@ struct CollisionPlugin {
 };
 
 // The implementation linked into this executable, else lib/libfgsg_fcl.so's, loaded on
-// the first call. Throws std::runtime_error when the plugin cannot be used.
+// the first call. Throws PluginError (plugins/plugin_library.h) when it cannot be used.
 const CollisionPlugin& collisionPlugin();
 
 }  // namespace fgsg::rt
