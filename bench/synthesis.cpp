@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
     for (CellOrder order : {CellOrder::kScanline, CellOrder::kMinEntropy}) {
       int ok = 0;
       double secs = 0;
-      uint64_t backtracks = 0;
+      uint64_t backtracks = 0, repairs = 0;
       for (int s = 1; s <= seeds; ++s) {
         SynthesisOptions o;
         o.size = {100, 100, 1};
@@ -212,12 +212,13 @@ int main(int argc, char** argv) {
         ok += r.ok && r.consistent;
         secs += r.stats.seconds;
         backtracks += r.stats.backtracks;
+        repairs += r.stats.repairs;
       }
       std::printf("{\"bench\":\"synthesis\",\"case\":\"tile_set\",\"example\":\"summer_like.json\","
                   "\"size\":[100,100,1],\"order\":\"%s\",\"seeds\":%d,\"first_attempt\":%.2f,"
-                  "\"mean_ms\":%.3f,\"mean_backtracks\":%.1f}\n",
+                  "\"mean_ms\":%.3f,\"mean_backtracks\":%.1f,\"mean_repairs\":%.1f}\n",
                   order == CellOrder::kScanline ? "scanline" : "entropy", seeds, double(ok) / seeds,
-                  secs / seeds * 1e3, double(backtracks) / seeds);
+                  secs / seeds * 1e3, double(backtracks) / seeds, double(repairs) / seeds);
     }
     return 0;
   }

@@ -195,12 +195,13 @@ int synthCommand(const Args& args) {
                  "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
                  "\"assignments\":%llu,\"propagation_steps\":%llu,\"support_misses\":%llu,"
                  "\"blocks\":%d,\"blocks_failed\":%d,"
-                 "\"block_retries\":%d,\"backtracks\":%llu,\"attempts\":%d,\"catalog_bytes\":%zu}\n",
+                 "\"block_retries\":%d,\"backtracks\":%llu,\"repairs\":%llu,\"attempts\":%d,\"catalog_bytes\":%zu}\n",
                  r.ok ? "true" : "false", r.consistent ? "true" : "false", o.size.nx, o.size.ny, o.size.nz,
                  ex.labelCount(), r.stats.seconds, (unsigned long long)r.stats.assignments,
                  (unsigned long long)r.stats.propagationSteps, (unsigned long long)r.stats.supportMisses,
                  r.stats.blocks, r.stats.blocksFailed,
-                 r.stats.blockRetries, (unsigned long long)r.stats.backtracks, r.stats.attempts, r.stats.catalogBytes);
+                 r.stats.blockRetries, (unsigned long long)r.stats.backtracks, (unsigned long long)r.stats.repairs,
+                 r.stats.attempts, r.stats.catalogBytes);
   }
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E740]: synthesis failed: %s\n", example.c_str(), r.failure.message.c_str());

@@ -69,6 +69,7 @@ struct SynthesisStats {
   uint64_t supportMisses = 0;      // pops whose support was not memoised (catalog.h)
   int blocks = 0, blocksFailed = 0, blockRetries = 0;
   uint64_t backtracks = 0;         // minimum-entropy order: decisions undone
+  uint64_t repairs = 0;            // minimum-entropy order: neighbourhoods reopened
   int attempts = 0;
   double seconds = 0;
   size_t catalogBytes = 0;         // catalog + site graph + transition rows
