@@ -333,8 +333,8 @@ class Solver {
   // grid steps of `bad` is reopened — its base domain narrowed by the sites around the
   // region — and propagation runs again from the region and its rim. Sites outside keep
   // what they have (narrowed by the old region at worst: fewer choices, never a wrong
-  // model). Returns the reopened sites, or nothing when the region cannot be made
-  // consistent.
+  // model). Lists the reopened sites in `reopened`; false when the region cannot be made
+  // consistent (propagation then stopped halfway: the caller takes it back).
   bool reopen(int64_t bad, int radius, std::vector<int32_t>& reopened) {
     constexpr int W = NW;
     const SiteGraph& g = P_.g;
@@ -431,7 +431,6 @@ class Solver {
           // The trail restarts: decisions before the repair are final.
           const size_t consistentTrail = decisions.empty() ? 0 : decisions.back().trail;
           const size_t consistentAssigned = decisions.empty() ? assignedAtRepair : decisions.back().assigned;
-          if (!decisions.empty()) push(decisions.back().site);
           cat_.undo(consistentTrail, push);
           unassignDownTo(consistentAssigned);
           bool repaired = false;
