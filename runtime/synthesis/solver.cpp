@@ -339,12 +339,11 @@ class Solver {
     constexpr int W = NW;
     const SiteGraph& g = P_.g;
     reopened.clear();
-    const int64_t nx = P_.size.nx, ny = P_.size.ny, nz = P_.size.nz;
-    const int64_t bx = bad % nx, by = (bad / nx) % ny, bz = bad / (nx * ny);
-    for (int64_t z = std::max<int64_t>(0, bz - radius); z <= std::min(nz - 1, bz + radius); ++z)
-      for (int64_t y = std::max<int64_t>(0, by - radius); y <= std::min(ny - 1, by + radius); ++y)
-        for (int64_t x = std::max<int64_t>(0, bx - radius); x <= std::min(nx - 1, bx + radius); ++x) {
-          const int32_t c = int32_t(x + nx * (y + ny * z));
+    const Cell b = M_.cell(bad);
+    for (int z = std::max(0, b.z - radius); z <= std::min(P_.size.nz - 1, b.z + radius); ++z)
+      for (int y = std::max(0, b.y - radius); y <= std::min(P_.size.ny - 1, b.y + radius); ++y)
+        for (int x = std::max(0, b.x - radius); x <= std::min(P_.size.nx - 1, b.x + radius); ++x) {
+          const int32_t c = int32_t(M_.index(x, y, z));
           if (!cat_.active(c)) continue;
           reopened.push_back(c);
           cat_.activate(c, P_.base(c));
