@@ -3,7 +3,6 @@
 #include "runtime/collision/collision_backend.h"
 #include "runtime/plugins/plugin_library.h"
 
-#include <atomic>
 #include <mutex>
 #include <stdexcept>
 
@@ -14,18 +13,18 @@ namespace fgsg::rt {
 
 const CollisionPlugin& collisionPlugin() {
   static std::mutex mutex;
-  static std::atomic<const CollisionPlugin*> loaded{nullptr};
+  static const CollisionPlugin* loaded = nullptr;  // a failure is thrown again on the next call
   std::lock_guard<std::mutex> lock(mutex);
-  if (!loaded.load()) {
+  if (!loaded) {
     using Entry = const CollisionPlugin* (*)();
     const Entry entry = fgsg_fcl_plugin ? &fgsg_fcl_plugin
                                         : reinterpret_cast<Entry>(openPlugin("libfgsg_fcl.so", "fgsg_fcl_plugin"));
     const CollisionPlugin* plugin = entry();
     if (!plugin || plugin->version != kCollisionPluginVersion)
       throw PluginError("libfgsg_fcl.so is not the collision plugin of this fgsg (another build or version)");
-    loaded.store(plugin);
+    loaded = plugin;
   }
-  return *loaded.load();
+  return *loaded;
 }
 
 CollisionWorld::CollisionWorld(const AssetLibrary& assets, CollisionTest test, double radius)
