@@ -282,9 +282,10 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     const auto& t = compiled->times;
     printDeriveStats(s, mesh.triangleCount());
     std::printf("time.parse %.6f\ntime.analyze %.6f\ntime.lower %.6f\ntime.compile %.6f\n"
-                "time.derive %.6f\ntime.surface %.6f\ntime.assemble %.6f\ntime.write %.6f\ntime.preview %.6f\n",
+                "time.derive %.6f\ntime.surface %.6f\ntime.rewrite %.6f\ntime.assemble %.6f\ntime.write %.6f\n"
+                "time.preview %.6f\n",
                 t.parseSeconds, t.analyzeSeconds, t.lowerSeconds, engineReport.compileSeconds,
-                deriveSeconds, s.surfaceSeconds, assembleSeconds, writeSeconds, previewSeconds);
+                deriveSeconds, s.surfaceSeconds, s.rewriteSeconds, assembleSeconds, writeSeconds, previewSeconds);
     // Which engine ran, among the time.* lines: like timings, it varies between runs
     // of one grammar while the figures above may not.
     std::printf("time.engine %s\n", opt.engine == backend::Engine::Interpreter ? "interp"

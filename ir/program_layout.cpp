@@ -13,6 +13,7 @@ ProgramLayout layoutProgram(const Module& m) {
   // Blocks are visited in id order; an op's bodies get the next free ids when the
   // block holding it is visited, so nested bodies come after their parents.
   for (size_t b = 0; b < layout.blocks.size(); ++b) {
+    layout.firstOp.push_back(static_cast<uint32_t>(layout.ops.size()));
     for (const Op& op : *layout.blocks[b]) {
       const uint32_t id = static_cast<uint32_t>(layout.ops.size());
       layout.ops.push_back(&op);

@@ -20,6 +20,7 @@ struct ProgramLayout {
   uint32_t alternativeCount = 0;
   std::vector<const Op*> ops;  // by op id: every op of every block, blocks in id order
   std::vector<uint32_t> firstBody;  // by op id: block id of bodies[0] (none: ~0u)
+  std::vector<uint32_t> firstOp;    // by block id: the id of its first op (a block's ops are consecutive)
 
   uint32_t alternativeBlock(uint32_t rule, uint32_t alternative) const {
     return 1 + firstAlternative[rule] + alternative;

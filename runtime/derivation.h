@@ -73,6 +73,7 @@ struct DeriveStats {
   uint64_t terminals = 0;      // shapes no rule replaced
   uint64_t instances = 0;      // instances placed
   uint64_t stringLength = 0;   // parallel derivations: modules in the final string
+  uint64_t stringBytes = 0;    // ... and the bytes it holds (16 per module, 8 per argument)
   uint64_t collisionTests = 0; // instances tested by IC (or under `collision all`)
   uint64_t collisions = 0;     // of those, rejected: the rest of their production culled
   uint64_t merges = 0;         // IM instances merged into an earlier one
@@ -83,6 +84,9 @@ struct DeriveStats {
   // Of deriveSeconds: making the surface ready — loading it, designing its fields,
   // laying it out for marching (Buron et al. Table 1's preprocessing).
   double surfaceSeconds = 0.0;
+  // Of deriveSeconds, a parallel derivation's rewriting steps (the rest is mostly the
+  // turtle reading the string).
+  double rewriteSeconds = 0.0;
 };
 
 // A problem found while deriving, located in the grammar source.

@@ -16,9 +16,11 @@ inline uint64_t mix64(uint64_t x) {
   return x ^ (x >> 31);
 }
 
-inline uint64_t childKey(uint64_t parent, uint64_t index) {
-  return mix64(parent ^ mix64(index + 0x632be59bd9b4e019ull));
-}
+// childKey(parent, index) is keyWithSalt(parent, childSalt(index)): a rewriter that
+// makes the same children again and again computes the salts once.
+inline uint64_t childSalt(uint64_t index) { return mix64(index + 0x632be59bd9b4e019ull); }
+inline uint64_t keyWithSalt(uint64_t parent, uint64_t salt) { return mix64(parent ^ salt); }
+inline uint64_t childKey(uint64_t parent, uint64_t index) { return keyWithSalt(parent, childSalt(index)); }
 
 inline uint64_t rootKey(uint64_t seed) { return mix64(seed ^ 0xd1b54a32d192ed03ull); }
 

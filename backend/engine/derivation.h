@@ -240,22 +240,20 @@ class Derivation final : public QueryHost {
 
   // parallel_rewriter.cpp
   void runParallel();
-  static void cutBranches(std::vector<StringModule>& str);
-  static void copyModule(const StringModule& mod, const std::vector<double>& args, std::vector<StringModule>& out,
-                         std::vector<double>& outArgs);
-  void appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, std::vector<StringModule>& out,
-                     std::vector<double>& outArgs, uint32_t owner = UINT32_MAX);
+  bool rewriteTemplatesConcurrently(const ModuleString& str, ModuleString& next);
+  void appendTemplate(const SuccessorTemplate& t, uint64_t key, ModuleString& out);
+  void cutBranches(ModuleString& str);
+  void copyModule(const ModuleString& str, size_t i, ModuleString& out);
+  void appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, ModuleString& out,
+                     uint32_t owner = UINT32_MAX);
   void checkParallelOp(const ir::Op& op);
-  void appendModule(const ir::Op& op, const double* args, uint32_t n, StringTarget& t);
-  const ir::Alternative* chooseInString(const ir::Symbol& sym, const std::vector<StringModule>& str,
-                                        const std::vector<double>& args, size_t at, rt::RandomStream& rng,
-                                        uint32_t step);
-  void bind(const ir::ContextModule& cm, const StringModule& mod, const std::vector<double>& args);
-  bool matchLeft(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-                 size_t at);
-  bool matchRight(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-                  size_t at);
-  void interpretString(const std::vector<StringModule>& str, const std::vector<double>& args);
+  void appendModule(uint32_t op, const double* args, uint32_t n, StringTarget& t);
+  const ir::Alternative* chooseInString(const ir::Symbol& sym, const ModuleString& str, size_t at,
+                                        rt::RandomStream& rng, uint32_t step);
+  void bind(const ir::ContextModule& cm, const ModuleString& str, size_t at);
+  bool matchLeft(const ir::Rule& r, const ModuleString& str, size_t at);
+  bool matchRight(const ir::Rule& r, const ModuleString& str, size_t at);
+  void interpretString(const ModuleString& str);
   [[noreturn]] void sequentialOnly(const ir::Op& op);
 
   const ir::Module& m_;
@@ -320,7 +318,8 @@ class Derivation final : public QueryHost {
   uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
   bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
   uintptr_t stackFloor_ = 0;     // recursion (direct code, Lock sets) stays above this frame address
-  ir::ProgramLayout layout_;     // how program_ numbers blocks and ops
+  ir::ProgramLayout layout_;     // how program_ numbers blocks and ops (and the string's ops)
+  StringOps plan_;               // a parallel derivation's per-op table
 
   // The command families, and which one applies each op kind.
   ScopeCommands scope_;

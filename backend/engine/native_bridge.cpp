@@ -12,9 +12,10 @@
 
 namespace fgsg::backend {
 
-// The block id of an alternative of the rule just chosen.
+// The block id of an alternative of the rule just chosen (0 where no layout was made:
+// the interpreter's sequential derivation needs none).
 uint32_t Derivation::blockOf(const ir::Alternative* alt) const {
-  if (!program_) return 0;
+  if (layout_.blocks.empty()) return 0;
   const ir::Rule& r = m_.rules[chosenRule_];
   return layout_.alternativeBlock(chosenRule_, static_cast<uint32_t>(alt - r.alternatives.data()));
 }
@@ -85,7 +86,7 @@ void Derivation::runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
 // derivation (call.st set) or a parallel rewriting step (call.string set).
 void Derivation::nativeEmit(NativeCall& call, uint32_t op, const double* slots) {
   if (call.string)
-    appendModule(*layout_.ops[op], slots, m_.symbols[layout_.ops[op]->index].slotCount, *call.string);
+    appendModule(op, slots, m_.symbols[layout_.ops[op]->index].slotCount, *call.string);
   else
     emit(*layout_.ops[op], slots, *call.st, *call.ex);
 }
@@ -94,7 +95,7 @@ void Derivation::nativeOp(NativeCall& call, uint32_t op, const double* args, uin
   if (op >= layout_.ops.size())
     throw DeriveError{{}, "R900", "internal: compiled code names op " + std::to_string(op)};
   if (call.string)
-    appendModule(*layout_.ops[op], args, n, *call.string);
+    appendModule(op, args, n, *call.string);
   else
     applyOp(*layout_.ops[op], args, n, *call.st, *call.ex, *call.f);
 }

@@ -6,97 +6,189 @@
 
 #include "backend/native/query_bridge.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <cstring>
 
 namespace fgsg::backend {
 namespace {
 
-bool isSymbol(const StringModule& m) { return m.op->kind == ir::OpKind::Emit; }
+// Strings shorter than this are rewritten on one thread; longer ones in chunks of this
+// size, concurrently.
+constexpr size_t kChunk = size_t(1) << 15;
 
 }  // namespace
 
 void Derivation::runParallel() {
-  std::vector<StringModule> str, next;
-  std::vector<double> args, nextArgs;
+  if (!program_) layout_ = ir::layoutProgram(m_);
+  plan_ = planString(m_, layout_, [&](const ir::Expr& e, double* out, bool asSlots) {
+    Frame none{nullptr, nullptr, nullptr, 0, 0, this};
+    if (asSlots)
+      eval_.store(e, none, out);
+    else
+      out[0] = eval_.num(e, none);
+  });
+  ModuleString str, next;
   std::vector<double> none;
   Frame f{none.data(), nullptr, nullptr, 0, 0, this};
   rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
   f.rng = &rng;
-  appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str, args);
+  appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str);
   cutBranches(str);
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
+  const auto rewriteStart = std::chrono::steady_clock::now();
   for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
-    nextArgs.clear();
-    for (size_t i = 0; i < str.size(); ++i) {
-      const StringModule& mod = str[i];
-      if (limitHit || mod.op->kind != ir::OpKind::Emit || m_.symbols[mod.op->index].rules.empty()) {
-        copyModule(mod, args, next, nextArgs);
-        continue;
+    if (!rewriteTemplatesConcurrently(str, next)) {
+      next.clear();
+      for (size_t i = 0; i < str.size(); ++i) {
+        const StringModule& mod = str.modules[i];
+        const StringOp& so = plan_[mod.op];
+        if (limitHit || so.rewrite == Rewrite::Keep) {
+          copyModule(str, i, next);
+          continue;
+        }
+        if (so.rewrite == Rewrite::Template) {
+          appendTemplate(plan_.templates[so.successor], mod.key, next);
+        } else {
+          const ir::Symbol& sym = m_.symbols[so.op->index];
+          rt::RandomStream modRng{mod.key, 0};
+          const ir::Alternative* alt = chooseInString(sym, str, i, modRng, static_cast<uint32_t>(step));
+          if (!alt) {
+            copyModule(str, i, next);
+            continue;
+          }
+          ++stats_.rewrites;
+          ++ruleUses_[chosenRule_];
+          Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), so.childIndex, this};
+          appendModules(blockOf(alt), alt->ops, rf, mod.key, next, so.op->index);
+        }
+        // At the limit the rest of this step's string is kept unrewritten, so the
+        // turtle still draws the whole (partly older) plant.
+        if (next.size() >= opt_.maxShapes) limitHit = true;
+        if (!limitHit && (stopped = limitsReached())) limitHit = true;
       }
-      const ir::Symbol& sym = m_.symbols[mod.op->index];
-      rt::RandomStream modRng{mod.key, 0};
-      const ir::Alternative* alt = chooseInString(sym, str, args, i, modRng, static_cast<uint32_t>(step));
-      if (!alt) {
-        copyModule(mod, args, next, nextArgs);
-        continue;
-      }
-      ++stats_.rewrites;
-      ++ruleUses_[chosenRule_];
-      Frame rf{params_.data(), &modRng, nullptr, static_cast<uint32_t>(step), mod.index, this};
-      appendModules(blockOf(alt), alt->ops, rf, mod.key, next, nextArgs, mod.op->index);
-      // At the limit the rest of this step's string is kept unrewritten, so the
-      // turtle still draws the whole (partly older) plant.
-      if (next.size() >= opt_.maxShapes) limitHit = true;
-      if (!limitHit && (stopped = limitsReached())) limitHit = true;
     }
     cutBranches(next);
     str.swap(next);
-    args.swap(nextArgs);
     if (!limitHit && deadline_.expiredNow()) stopped = timeLimit(), limitHit = true;
   }
-  interpretString(str, args);
+  stats_.rewriteSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rewriteStart).count();
+  interpretString(str);
   if (stopped) throw *stopped;
   if (limitHit) shapeLimit(ir::Op{});
 }
 
+// A symbol's fixed successor, appended: its modules with keys made from `key`, and its
+// arguments.
+void Derivation::appendTemplate(const SuccessorTemplate& t, uint64_t key, ModuleString& out) {
+  ++stats_.rewrites;
+  ++ruleUses_[t.rule];
+  const uint32_t base = static_cast<uint32_t>(out.args.size());
+  StringModule* w = out.modules.extend(t.ops.size());
+  for (size_t k = 0; k < t.ops.size(); ++k)
+    w[k] = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(key, t.keySalt[k]) & t.keyMask[k]};
+  out.args.append(t.args.data(), t.args.size());
+}
+
+// A step of a grammar whose every rewriting symbol has a template, over chunks of the
+// string on all cores: the sizes each chunk writes are counted first, so every chunk
+// writes its part of `next` in place, and the result is the one-thread result. Returns
+// false (nothing written) where the one-thread loop must do the step: a short string,
+// or a limit reached during it.
+bool Derivation::rewriteTemplatesConcurrently(const ModuleString& str, ModuleString& next) {
+  if (!plan_.allTemplates || str.size() < 2 * kChunk) return false;
+  const size_t chunks = (str.size() + kChunk - 1) / kChunk;
+  const size_t templates = plan_.templates.size();
+  // Per chunk: modules and arguments written, then per template its uses.
+  std::vector<uint64_t> counts(chunks * (2 + templates), 0);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    uint64_t* n = &counts[c * (2 + templates)];
+    const size_t end = std::min(str.size(), (c + 1) * kChunk);
+    for (size_t i = c * kChunk; i < end; ++i) {
+      const StringOp& so = plan_[str.modules[i].op];
+      if (so.rewrite == Rewrite::Template) {
+        const SuccessorTemplate& t = plan_.templates[so.successor];
+        n[0] += t.ops.size(), n[1] += t.args.size(), ++n[2 + so.successor];
+      } else {
+        n[0] += 1, n[1] += so.argCount;
+      }
+    }
+  });
+  std::vector<uint64_t> moduleAt(chunks + 1, 0), argAt(chunks + 1, 0);
+  for (size_t c = 0; c < chunks; ++c) {
+    moduleAt[c + 1] = moduleAt[c] + counts[c * (2 + templates)];
+    argAt[c + 1] = argAt[c] + counts[c * (2 + templates) + 1];
+  }
+  // The one-thread loop stops at these limits mid-step, and knows how.
+  if (moduleAt[chunks] >= opt_.maxShapes || argAt[chunks] >= UINT32_MAX || limitsReached()) return false;
+  next.modules.resizeForOverwrite(moduleAt[chunks]);
+  next.args.resizeForOverwrite(argAt[chunks]);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    StringModule* w = next.modules.data() + moduleAt[c];
+    double* a = next.args.data() + argAt[c];
+    const size_t end = std::min(str.size(), (c + 1) * kChunk);
+    for (size_t i = c * kChunk; i < end; ++i) {
+      const StringModule& mod = str.modules[i];
+      const StringOp& so = plan_[mod.op];
+      const uint32_t base = static_cast<uint32_t>(a - next.args.data());
+      if (so.rewrite == Rewrite::Template) {
+        const SuccessorTemplate& t = plan_.templates[so.successor];
+        for (size_t k = 0; k < t.ops.size(); ++k)
+          *w++ = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(mod.key, t.keySalt[k]) & t.keyMask[k]};
+        if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
+        a += t.args.size();
+      } else {
+        *w++ = {mod.op, base, mod.key};
+        if (so.argCount) std::memcpy(a, str.args.data() + mod.firstArg, so.argCount * sizeof(double));
+        a += so.argCount;
+      }
+    }
+  });
+  for (size_t c = 0; c < chunks; ++c)
+    for (size_t t = 0; t < templates; ++t) {
+      const uint64_t uses = counts[c * (2 + templates) + 2 + t];
+      stats_.rewrites += uses;
+      ruleUses_[plan_.templates[t].rule] += uses;
+    }
+  return true;
+}
+
 // ABOP's %: each cut drops the rest of its branch — the modules after it up to the `]`
 // that closes the branch (kept), or to the end of the string — and itself.
-void Derivation::cutBranches(std::vector<StringModule>& str) {
-  const auto turtle = [](const StringModule& m, ir::TurtleOp t) {
-    return m.op->kind == ir::OpKind::Turtle && m.op->index == static_cast<uint32_t>(t);
+void Derivation::cutBranches(ModuleString& str) {
+  if (!plan_.hasCut) return;
+  const auto kind = [&](size_t i) { return plan_[str.modules[i].op].kind; };
+  const auto isCut = [&](size_t i) {
+    const StringOp& so = plan_[str.modules[i].op];
+    return so.kind == ir::OpKind::Turtle && so.op->index == static_cast<uint32_t>(ir::TurtleOp::Cut);
   };
-  if (std::none_of(str.begin(), str.end(), [&](const StringModule& m) { return turtle(m, ir::TurtleOp::Cut); }))
-    return;
   size_t kept = 0;
   for (size_t i = 0; i < str.size();) {
-    if (!turtle(str[i], ir::TurtleOp::Cut)) {
-      str[kept++] = str[i++];
+    if (!isCut(i)) {
+      str.modules[kept++] = str.modules[i++];
       continue;
     }
     int depth = 0;
     for (++i; i < str.size(); ++i) {
-      if (str[i].op->kind == ir::OpKind::Push) ++depth;
-      if (str[i].op->kind == ir::OpKind::Pop && depth-- == 0) break;
+      if (kind(i) == ir::OpKind::Push) ++depth;
+      if (kind(i) == ir::OpKind::Pop && depth-- == 0) break;
     }
   }
-  str.resize(kept);
+  str.modules.truncate(kept);
 }
 
-void Derivation::copyModule(const StringModule& mod, const std::vector<double>& args,
-                            std::vector<StringModule>& out, std::vector<double>& outArgs) {
-  StringModule copy = mod;
-  copy.firstArg = static_cast<uint32_t>(outArgs.size());
-  outArgs.insert(outArgs.end(), args.begin() + mod.firstArg,
-                 args.begin() + mod.firstArg + mod.argCount);
-  out.push_back(copy);
+void Derivation::copyModule(const ModuleString& str, size_t i, ModuleString& out) {
+  const StringModule& mod = str.modules[i];
+  out.append(mod.op, mod.key, str.args.data() + mod.firstArg, plan_[mod.op].argCount);
 }
 
 // Flattens a successor into string modules, evaluating every argument now.
-void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key,
-                               std::vector<StringModule>& out, std::vector<double>& outArgs, uint32_t owner) {
-  StringTarget target{&out, &outArgs, key, owner};
+void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, uint64_t key, ModuleString& out,
+                               uint32_t owner) {
+  StringTarget target{&out, key, owner};
   if (owner != UINT32_MAX) target.ownerParams = f.params, target.ownerParamCount = m_.symbols[owner].slotCount;
   if (program_) {
     NativeCall call;
@@ -111,15 +203,18 @@ void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, u
     return;
   }
   ArgBuffer buf;
-  for (const ir::Op& op : ops) {
+  const uint32_t first = layout_.firstOp[block];
+  for (size_t k = 0; k < ops.size(); ++k) {
+    const ir::Op& op = ops[k];
+    const uint32_t id = first + static_cast<uint32_t>(k);
     if (op.kind == ir::OpKind::Emit) {
-      appendModule(op, evalSlots(op, f, buf), m_.symbols[op.index].slotCount, target);
+      appendModule(id, evalSlots(op, f, buf), m_.symbols[op.index].slotCount, target);
       continue;
     }
     checkParallelOp(op);
     uint32_t n = 0;
     const double* a = evalOpArgs(op, f, buf, n);
-    appendModule(op, a, n, target);
+    appendModule(id, a, n, target);
   }
 }
 
@@ -155,38 +250,34 @@ void Derivation::checkParallelOp(const ir::Op& op) {
   }
 }
 
-// Appends one module with its evaluated arguments (a symbol's: its parameter slots).
-void Derivation::appendModule(const ir::Op& op, const double* args, uint32_t n, StringTarget& t) {
-  checkParallelOp(op);
-  StringModule mod;
-  mod.op = &op;
-  mod.owner = t.owner;
-  if (op.kind == ir::OpKind::Instance) args = t.ownerParams, n = t.ownerParamCount;  // I() has no arguments of its own
-  mod.firstArg = static_cast<uint32_t>(t.args->size());
-  mod.argCount = n;
-  if (n) t.args->insert(t.args->end(), args, args + n);
-  if (op.kind == ir::OpKind::Emit) {
-    mod.index = t.child;
-    mod.key = rt::childKey(t.key, t.child++);
-  }
-  t.out->push_back(mod);
+// Appends one module (op id `op`) with its evaluated arguments (a symbol's: its
+// parameter slots).
+void Derivation::appendModule(uint32_t op, const double* args, uint32_t n, StringTarget& t) {
+  const StringOp& so = plan_[op];
+  checkParallelOp(*so.op);
+  if (so.kind == ir::OpKind::Instance) args = t.ownerParams, n = t.ownerParamCount;  // I() has no arguments of its own
+  if (n != so.argCount)
+    throw DeriveError{so.op->loc, "R900",
+                      "internal: '" + so.op->name + "' appended with " + std::to_string(n) + " arguments, not " +
+                          std::to_string(so.argCount)};
+  t.out->append(op, so.kind == ir::OpKind::Emit ? rt::childKey(t.key, so.childIndex) : 0, args, n);
 }
 
 // Rule choice for one module of the string: context must match, then the guard.
-const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const std::vector<StringModule>& str,
-                                                  const std::vector<double>& args, size_t at,
+const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const ModuleString& str, size_t at,
                                                   rt::RandomStream& rng, uint32_t step) {
   candidates_.clear();
   double total = 0;
+  const double* own = str.args.data() + str.modules[at].firstArg;
+  const uint32_t index = plan_[str.modules[at].op].childIndex;
   for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
   for (uint32_t ri : sym.rules) {
     const ir::Rule& r = m_.rules[ri];
     if (isSpecific(r) != (pass == 0)) continue;
     params_.assign(r.slotCount, 0.0);
-    std::copy(args.begin() + str[at].firstArg, args.begin() + str[at].firstArg + sym.slotCount,
-              params_.begin());
-    if (!matchLeft(r, str, args, at) || !matchRight(r, str, args, at)) continue;
-    Frame f{params_.data(), &rng, nullptr, step, str[at].index, this};
+    std::copy(own, own + sym.slotCount, params_.begin());
+    if (!matchLeft(r, str, at) || !matchRight(r, str, at)) continue;
+    Frame f{params_.data(), &rng, nullptr, step, index, this};
     if (r.hasGuard && !guardHolds(ri, f)) continue;
     addCandidates(r, ri, f, total);
   }
@@ -196,38 +287,37 @@ const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const s
   // Rebuild the chosen rule's parameter block (another rule may have overwritten it).
   const ir::Rule& r = m_.rules[pick->rule];
   params_.assign(r.slotCount, 0.0);
-  std::copy(args.begin() + str[at].firstArg, args.begin() + str[at].firstArg + sym.slotCount,
-            params_.begin());
-  matchLeft(r, str, args, at);
-  matchRight(r, str, args, at);
+  std::copy(own, own + sym.slotCount, params_.begin());
+  matchLeft(r, str, at);
+  matchRight(r, str, at);
   return pick->alt;
 }
 
-void Derivation::bind(const ir::ContextModule& cm, const StringModule& mod, const std::vector<double>& args) {
+void Derivation::bind(const ir::ContextModule& cm, const ModuleString& str, size_t at) {
   const ir::Symbol& s = m_.symbols[cm.symbol];
-  uint32_t src = mod.firstArg;
+  const double* src = str.args.data() + str.modules[at].firstArg;
   for (size_t k = 0; k < cm.paramSlots.size() && k < s.paramTypes.size(); ++k) {
     const int w = ir::slotWidth(s.paramTypes[k]);
-    for (int c = 0; c < w; ++c) params_[cm.paramSlots[k] + c] = args[src + c];
+    for (int c = 0; c < w; ++c) params_[cm.paramSlots[k] + c] = src[c];
     src += w;
   }
 }
 
 // ABOP left context: walk left over symbols, skipping commands and whole branches,
 // and stepping out of the current branch into its parent.
-bool Derivation::matchLeft(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-                           size_t at) {
+bool Derivation::matchLeft(const ir::Rule& r, const ModuleString& str, size_t at) {
+  const auto kind = [&](long j) { return plan_[str.modules[j].op].kind; };
   long j = static_cast<long>(at) - 1;
   for (long p = static_cast<long>(r.left.size()) - 1; p >= 0; --p) {
     const ir::ContextModule& cm = r.left[p];
     if (cm.bracket != 0) return false;
     while (j >= 0) {
-      const ir::OpKind k = str[j].op->kind;
+      const ir::OpKind k = kind(j);
       if (k == ir::OpKind::Pop) {
         int depth = 0;
         for (; j >= 0; --j) {
-          if (str[j].op->kind == ir::OpKind::Pop) ++depth;
-          if (str[j].op->kind == ir::OpKind::Push && --depth == 0) break;
+          if (kind(j) == ir::OpKind::Pop) ++depth;
+          if (kind(j) == ir::OpKind::Push && --depth == 0) break;
         }
         --j;
       } else if (k == ir::OpKind::Emit) {
@@ -236,8 +326,8 @@ bool Derivation::matchLeft(const ir::Rule& r, const std::vector<StringModule>& s
         --j;
       }
     }
-    if (j < 0 || str[j].op->index != cm.symbol) return false;
-    bind(cm, str[j], args);
+    if (j < 0 || plan_[str.modules[j].op].op->index != cm.symbol) return false;
+    bind(cm, str, j);
     --j;
   }
   return true;
@@ -245,30 +335,28 @@ bool Derivation::matchLeft(const ir::Rule& r, const std::vector<StringModule>& s
 
 // ABOP right context: a pattern symbol may descend into branches of the string that
 // the pattern skips; a pattern ']' skips to the end of the current branch.
-bool Derivation::matchRight(const ir::Rule& r, const std::vector<StringModule>& str, const std::vector<double>& args,
-                            size_t at) {
+bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t at) {
+  const auto kind = [&](size_t j) { return plan_[str.modules[j].op].kind; };
   size_t j = at + 1;
   const size_t n = str.size();
   auto skipBranch = [&](size_t from) {  // from is a '['; returns the index after its ']'
     int depth = 0;
     for (size_t x = from; x < n; ++x) {
-      if (str[x].op->kind == ir::OpKind::Push) ++depth;
-      if (str[x].op->kind == ir::OpKind::Pop && --depth == 0) return x + 1;
+      if (kind(x) == ir::OpKind::Push) ++depth;
+      if (kind(x) == ir::OpKind::Pop && --depth == 0) return x + 1;
     }
     return n;
   };
   for (const auto& cm : r.right) {
     if (cm.bracket == 1) {
-      while (j < n && !isSymbol(str[j]) && str[j].op->kind != ir::OpKind::Push &&
-             str[j].op->kind != ir::OpKind::Pop)
-        ++j;
-      if (j >= n || str[j].op->kind != ir::OpKind::Push) return false;
+      while (j < n && kind(j) != ir::OpKind::Emit && kind(j) != ir::OpKind::Push && kind(j) != ir::OpKind::Pop) ++j;
+      if (j >= n || kind(j) != ir::OpKind::Push) return false;
       ++j;
     } else if (cm.bracket == -1) {
       int depth = 0;
       while (j < n) {
-        if (str[j].op->kind == ir::OpKind::Push) ++depth;
-        if (str[j].op->kind == ir::OpKind::Pop) {
+        if (kind(j) == ir::OpKind::Push) ++depth;
+        if (kind(j) == ir::OpKind::Pop) {
           if (depth == 0) break;
           --depth;
         }
@@ -277,16 +365,16 @@ bool Derivation::matchRight(const ir::Rule& r, const std::vector<StringModule>& 
       if (j >= n) return false;
       ++j;
     } else {
-      while (j < n && !isSymbol(str[j])) {
-        if (str[j].op->kind == ir::OpKind::Push)
+      while (j < n && kind(j) != ir::OpKind::Emit) {
+        if (kind(j) == ir::OpKind::Push)
           j = skipBranch(j);
-        else if (str[j].op->kind == ir::OpKind::Pop)
+        else if (kind(j) == ir::OpKind::Pop)
           return false;
         else
           ++j;
       }
-      if (j >= n || str[j].op->index != cm.symbol) return false;
-      bind(cm, str[j], args);
+      if (j >= n || plan_[str.modules[j].op].op->index != cm.symbol) return false;
+      bind(cm, str, j);
       ++j;
     }
   }
@@ -294,34 +382,31 @@ bool Derivation::matchRight(const ir::Rule& r, const std::vector<StringModule>& 
 }
 
 // The turtle interpretation of the final string: commands act on one scope.
-void Derivation::interpretString(const std::vector<StringModule>& str, const std::vector<double>& args) {
+void Derivation::interpretString(const ModuleString& str) {
   streetDirection_ = rt::Vec3::UnitZ();
   State st;
   st.width = m_.turtle.width;
   st.stackBase = stack_.size();
   stats_.stringLength = str.size();
-  for (const StringModule& mod : str) {
-    const ir::Op& op = *mod.op;
-    const double* a = args.data() + mod.firstArg;
-    switch (op.kind) {
-      case ir::OpKind::Emit: {
+  stats_.stringBytes = str.size() * sizeof(StringModule) + str.args.size() * sizeof(double);
+  for (const StringModule& mod : str.modules) {
+    const StringOp& so = plan_[mod.op];
+    const ir::Op& op = *so.op;
+    const double* a = str.args.data() + mod.firstArg;
+    switch (so.kind) {
+      case ir::OpKind::Emit:
         ++stats_.terminals;
         ++stats_.shapesCreated;
         // ABOP: F and f are rewritten by rules and still draw and move when the turtle
         // reads the final string; their first parameter is the length.
-        const std::string& name = m_.symbols[op.index].name;
-        if (name == "F" || name == "f") {
-          const ir::TurtleOp t = name == "F" ? ir::TurtleOp::Forward : ir::TurtleOp::Move;
-          turtle_.command(st, t, a, std::min<uint32_t>(mod.argCount, 1), op.loc);
-        }
+        if (so.draws >= 0)
+          turtle_.command(st, static_cast<ir::TurtleOp>(so.draws), a, std::min<uint32_t>(so.argCount, 1), op.loc);
         break;
-      }
       case ir::OpKind::Turtle:
-        turtle_.command(st, static_cast<ir::TurtleOp>(op.index), a, mod.argCount, op.loc);
+        turtle_.command(st, static_cast<ir::TurtleOp>(op.index), a, so.argCount, op.loc);
         break;
       case ir::OpKind::Instance:
-        placeInstance(op.index, st.scope, mod.owner == UINT32_MAX ? axiomSymbol_ : mod.owner, a, mod.argCount,
-                      op.loc);
+        placeInstance(op.index, st.scope, so.owner == UINT32_MAX ? axiomSymbol_ : so.owner, a, so.argCount, op.loc);
         break;
       default: scope_.command(st, op, a); break;
     }

@@ -1,28 +1,147 @@
-// The string of a parallel (L-system) derivation: modules with their evaluated
-// arguments in one pool, and the next string a successor appends to.
+// The string of a parallel (L-system) derivation: 16 bytes per module (the op that made
+// it, where its arguments start in one pool, its random key), with everything that is
+// the same for every module an op makes — its kind, symbol, argument count, position
+// among its successor's symbols, the symbol whose rule holds it, how it is rewritten —
+// in a table by op id (StringOps), looked up instead of stored.
 #pragma once
 
 #include "ir/ir.h"
+#include "ir/program_layout.h"
 
 #include <cstdint>
+#include <cstring>
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace fgsg::backend {
 
-// One module: a shape symbol or a command, with its arguments in the string's pool.
+// One module: a shape symbol or a command.
 struct StringModule {
-  const ir::Op* op = nullptr;  // the op that produced it (Emit for a symbol)
-  uint32_t firstArg = 0;
-  uint32_t argCount = 0;
-  uint64_t key = 0;
-  uint32_t index = 0;           // position among the symbols of its successor (Shape.index)
-  uint32_t owner = UINT32_MAX;  // symbol whose rule produced it; UINT32_MAX: the axiom
+  uint32_t op = 0;        // op id (ir::ProgramLayout): StringOps says what it is
+  uint32_t firstArg = 0;  // its arguments in the string's pool
+  uint64_t key = 0;       // a symbol's random key (0 for commands)
 };
+static_assert(sizeof(StringModule) == 16);
+
+// A growing array that is not cleared or value-initialised: a step's string is written
+// over the buffer of the string two steps before (double buffering), and the parallel
+// writer fills a resized array in place.
+template <typename T>
+class StringBuffer {
+ public:
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T* data() { return data_.get(); }
+  const T* data() const { return data_.get(); }
+  T& operator[](size_t i) { return data_[i]; }
+  const T& operator[](size_t i) const { return data_[i]; }
+  const T* begin() const { return data_.get(); }
+  const T* end() const { return data_.get() + size_; }
+  void clear() { size_ = 0; }
+  void push_back(const T& v) {
+    if (size_ == capacity_) grow(size_ + 1);
+    data_[size_++] = v;
+  }
+  // Appends n values; returns where they go.
+  T* extend(size_t n) {
+    if (size_ + n > capacity_) grow(size_ + n);
+    T* at = data_.get() + size_;
+    size_ += n;
+    return at;
+  }
+  void append(const T* v, size_t n) {
+    if (n) std::memcpy(extend(n), v, n * sizeof(T));
+  }
+  // Sizes the array to n; new elements are left unset, for the caller to write.
+  void resizeForOverwrite(size_t n) {
+    if (n > capacity_) grow(n);
+    size_ = n;
+  }
+  void truncate(size_t n) { size_ = n < size_ ? n : size_; }
+  size_t bytes() const { return capacity_ * sizeof(T); }
+
+ private:
+  void grow(size_t need) {
+    size_t cap = capacity_ ? capacity_ : 64;
+    while (cap < need) cap += cap / 2 + 64;
+    auto bigger = std::make_unique_for_overwrite<T[]>(cap);
+    if (size_) std::memcpy(bigger.get(), data_.get(), size_ * sizeof(T));
+    data_ = std::move(bigger);
+    capacity_ = cap;
+  }
+
+  std::unique_ptr<T[]> data_;
+  size_t size_ = 0, capacity_ = 0;
+};
+
+// A string: its modules and their arguments.
+struct ModuleString {
+  StringBuffer<StringModule> modules;
+  StringBuffer<double> args;
+  size_t size() const { return modules.size(); }
+  void clear() { modules.clear(), args.clear(); }
+  void swap(ModuleString& other) noexcept { std::swap(modules, other.modules), std::swap(args, other.args); }
+  void append(uint32_t op, uint64_t key, const double* a, uint32_t n) {
+    modules.push_back({op, static_cast<uint32_t>(args.size()), key});
+    args.append(a, n);
+  }
+};
+
+// How a module is rewritten in a step.
+enum class Rewrite : uint8_t {
+  Keep,      // a command, or a symbol without rules: copied
+  Template,  // one successor, always the same modules with the same arguments
+  General,   // rule choice, guards, context, arguments computed per module
+};
+
+// What every module made by one op shares.
+struct StringOp {
+  const ir::Op* op = nullptr;
+  ir::OpKind kind = ir::OpKind::Push;
+  uint32_t argCount = 0;    // arguments it holds
+  uint32_t childIndex = 0;  // a symbol: its position among its successor's symbols (Shape.index)
+  uint32_t owner = UINT32_MAX;  // the symbol whose rule holds it (UINT32_MAX: the axiom)
+  Rewrite rewrite = Rewrite::Keep;
+  int8_t draws = -1;        // a symbol F or f: the turtle command it is read as (ir::TurtleOp)
+  uint32_t successor = 0;   // Template: its index in StringOps::templates
+};
+
+// A successor that is the same for every module it rewrites: a rule of its own (no
+// other rule, guard or context), one branch, and arguments fixed for the derivation.
+// Rewriting is then copying its modules and arguments; a symbol's key is derived from
+// the rewritten module's with its own salt (rt::childKey).
+struct SuccessorTemplate {
+  uint32_t rule = 0;
+  std::vector<uint32_t> ops;          // op ids, in order
+  std::vector<uint32_t> firstArg;     // per module: its first argument in args
+  std::vector<double> args;
+  std::vector<uint64_t> keySalt;      // per module: rt::childSalt of its position
+  std::vector<uint64_t> keyMask;      // per module: ~0 for a symbol, 0 for a command (no key)
+};
+
+// The per-op table of a grammar's parallel derivation.
+struct StringOps {
+  std::vector<StringOp> ops;  // by op id
+  std::vector<SuccessorTemplate> templates;
+  bool allTemplates = false;  // no symbol needs General: a step can be split over threads
+  bool hasCut = false;        // the grammar writes % somewhere
+
+  const StringOp& operator[](uint32_t op) const { return ops[op]; }
+};
+
+// Fills the table for `m` numbered by `layout`; `store(e, out, asSlots)` writes the value
+// of a fixed expression: its parameter slots (a symbol's argument) or one number.
+StringOps planString(const ir::Module& m, const ir::ProgramLayout& layout,
+                     const std::function<void(const ir::Expr&, double*, bool)>& store);
+
+// Whether `e` has one value for the whole derivation: constants and attributes, and
+// what is computed from them alone.
+bool isFixed(const ir::Expr& e);
 
 // A parallel derivation's next string, which a successor's modules are appended to.
 struct StringTarget {
-  std::vector<StringModule>* out;
-  std::vector<double>* args;
+  ModuleString* out;
   uint64_t key;     // the rewritten module's key (its children's keys derive from it)
   uint32_t owner;   // the symbol rewritten (UINT32_MAX: the axiom)
   uint32_t child = 0;

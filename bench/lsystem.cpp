@@ -1,0 +1,110 @@
+// L-systems in process, the workloads the npm `lindenmayer` package was measured on (issue
+// #17: F -> FFF for 10 and 13 steps, ABOP Fig. 1.24d for 7 and 9), and a parametric one
+// (the Koch curve with lengths, Fig. 1.6's rule) that the JIT compiles: per workload the
+// rewriting (modules of the final string per second of the rewriting steps), the turtle
+// (segments per second of the rest of the derivation) and the string's bytes per module
+// (16 per module plus 8 per argument). The interpreter and the JIT must agree exactly.
+// The best of several runs each. Targets on this machine: >= 50 M modules/s, >= 20 M
+// segments/s, <= 16 bytes per module.
+//   build/bin/bench_lsystem [--quick]
+#include "backend/interp/interpreter.h"
+#include "backend/jit/jit.h"
+#include "backend/native/object_cache.h"
+#include "bench/bench_grammar.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace fgsg;
+
+struct Workload {
+  const char* name;
+  std::string text;
+};
+
+std::string fff(int n) { return "derive parallel " + std::to_string(n) + ";\naxiom: F;\nF -> F F F;\n"; }
+
+std::string fig124d(int n) {
+  return "derive parallel " + std::to_string(n) +
+         ";\nturtle angle 20;\naxiom: X;\nX -> F [ + X ] F [ - X ] + X;\nF -> F F;\n";
+}
+
+std::string koch(int n) {
+  return "derive parallel " + std::to_string(n) +
+         ";\nturtle angle 60;\naxiom: F(1);\nF(l) -> F(l / 3) + F(l / 3) - - F(l / 3) + F(l / 3);\n";
+}
+
+struct Run {
+  rt::DeriveResult result;
+  double rewrite = 1e30, turtle = 1e30;
+};
+
+template <class Derive>
+Run best(int reps, Derive derive) {
+  Run b;
+  for (int i = 0; i < reps; ++i) {
+    rt::DeriveResult r = derive();
+    if (!r.ok) {
+      std::fprintf(stderr, "derivation failed: %s\n", r.messages.empty() ? "?" : r.messages[0].message.c_str());
+      std::exit(1);
+    }
+    b.rewrite = std::min(b.rewrite, r.stats.rewriteSeconds);
+    b.turtle = std::min(b.turtle, r.stats.deriveSeconds - r.stats.rewriteSeconds);
+    b.result = std::move(r);
+  }
+  return b;
+}
+
+bool same(const rt::DeriveResult& a, const rt::DeriveResult& b) {
+  const auto& x = a.instances.instances;
+  const auto& y = b.instances.instances;
+  if (x.size() != y.size() || a.stats.stringLength != b.stats.stringLength || a.stats.rewrites != b.stats.rewrites)
+    return false;
+  for (size_t i = 0; i < x.size(); ++i)
+    if (x[i].transform != y[i].transform || x[i].asset != y[i].asset) return false;
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int reps = quick ? 2 : 5;
+  std::vector<Workload> workloads = {{"F->FFF n=10", fff(10)},
+                                     {"F->FFF n=13", fff(13)},
+                                     {"ABOP 1.24d n=7", fig124d(7)},
+                                     {"ABOP 1.24d n=9", fig124d(9)},
+                                     {"Koch F(l) n=8", koch(8)}};
+  if (quick) workloads.erase(workloads.begin() + 1), workloads.erase(workloads.begin() + 2);
+  backend::jit::Jit jit;
+  rt::AssetLibrary assets;
+  for (const Workload& w : workloads) {
+    const ir::Module m = bench::compileGrammarText(w.text);
+    const auto code = jit.compileProgram(m, w.text, backend::native::ObjectCache(std::string()));
+    const Run interp = best(reps, [&] { return backend::interpret(m, {}, assets); });
+    const Run jitted = best(reps, [&] { return backend::deriveCompiled(m, code.program(), {}, assets); });
+    if (!same(interp.result, jitted.result)) {
+      std::fprintf(stderr, "%s: the JIT's result differs from the interpreter's\n", w.name);
+      return 1;
+    }
+    const auto& s = interp.result.stats;
+    const double modules = double(s.stringLength);
+    const double segments = double(interp.result.instances.instances.size());
+    const double rewrite = std::min(interp.rewrite, jitted.rewrite);
+    const double turtle = std::min(interp.turtle, jitted.turtle);
+    std::printf("{\"bench\":\"lsystem\",\"workload\":\"%s\",\"modules\":%.0f,\"segments\":%.0f,"
+                "\"interp_rewrite_s\":%.6f,\"jit_rewrite_s\":%.6f,\"modules_per_s\":%.0f,\"turtle_s\":%.6f,"
+                "\"segments_per_s\":%.0f,\"bytes_per_module\":%.1f}\n",
+                w.name, modules, segments, interp.rewrite, jitted.rewrite, modules / rewrite, turtle,
+                segments / turtle, double(s.stringBytes) / modules);
+    std::fflush(stdout);
+  }
+  return 0;
+}
