@@ -118,6 +118,8 @@ struct SemaResult {
   // (--set n=9); steps / depthBound hold its default. Empty: N is a constant.
   std::string countAttr;
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
+  std::string turtleSegments = "cylinders";  // `turtle segments "tubes";`
+  int turtleSides = 8;
   // `collision ...;` (the first declaration): every I() tested (all), and the metric
   // "mesh", "centre" or "geodesic" with its radius (0 for mesh).
   bool collisionDeclared = false;

@@ -111,11 +111,27 @@ void Analyzer::collectEnvironment() {
           diags_.error("E027", zero->range, "division by zero");
           continue;
         }
+      if (key == "segments") {
+        if (!expr || !evalConst(*expr, v) || v.type != ValueType::Str ||
+            (v.str != "cylinders" && v.str != "tubes" && v.str != "ribbons")) {
+          diags_.error("E029", t.range,
+                       "turtle setting 'segments' needs \"cylinders\", \"tubes\" or \"ribbons\"");
+          continue;
+        }
+        res_.turtleSegments = v.str;
+        continue;
+      }
       if (!expr || !evalConst(*expr, v) || v.type != ValueType::Num) {
         diags_.error("E029", t.range, "turtle setting '" + key + "' needs a constant number");
         continue;
       }
-      if (key == "angle")
+      if (key == "sides") {
+        if (!(v.num >= 3 && v.num <= 64 && v.num == std::floor(v.num))) {
+          diags_.error("E029", t.range, "turtle setting 'sides' needs a whole number from 3 to 64");
+          continue;
+        }
+        res_.turtleSides = static_cast<int>(v.num);
+      } else if (key == "angle")
         res_.turtleAngle = v.num;
       else if (key == "step")
         res_.turtleStep = v.num;
@@ -123,7 +139,7 @@ void Analyzer::collectEnvironment() {
         res_.turtleWidth = v.num;
       else
         diags_.error("E029", t.range,
-                     "unknown turtle setting '" + key + "' (expected angle, step or width)");
+                     "unknown turtle setting '" + key + "' (expected angle, step, width, segments or sides)");
     }
   }
 }

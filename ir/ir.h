@@ -212,10 +212,19 @@ struct Attr {
 
 enum class DeriveMode : uint8_t { BreadthFirst, DepthFirst, Parallel };
 
+// What a turtle segment (F) is drawn as: `turtle segments "tubes";`.
+enum class TurtleSegments : uint8_t {
+  Cylinders,  // the built-in capped cylinder (32 sides, 128 triangles)
+  Tubes,      // an open tube of `sides` sides (2 x sides triangles)
+  Ribbons,    // a flat strip in the turtle's X-Y plane (2 triangles)
+};
+
 struct TurtleSettings {
   double angle = 90.0;  // default turn for + - & ^ \ / without argument (degrees)
   double step = 1.0;    // default length for F and f without argument
   double width = 0.1;   // initial segment width
+  TurtleSegments segments = TurtleSegments::Cylinders;
+  int sides = 8;        // Tubes: sides around
 };
 
 // An environment declaration the runtime must honour or refuse (surface, field, texture).

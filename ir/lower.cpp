@@ -53,7 +53,11 @@ class Lowerer {
     m_.steps = sema_.steps;
     m_.depthBound = sema_.depthBound;
     m_.countAttr = sema_.countAttr.empty() ? -1 : m_.findAttr(sema_.countAttr);
-    m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth};
+    m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth,
+                 sema_.turtleSegments == "tubes"     ? TurtleSegments::Tubes
+                 : sema_.turtleSegments == "ribbons" ? TurtleSegments::Ribbons
+                                                     : TurtleSegments::Cylinders,
+                 sema_.turtleSides};
     lowerCollision();
     return std::move(m_);
   }

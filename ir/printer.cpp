@@ -89,6 +89,9 @@ class Printer {
         m_.turtle.width != defaults.width)
       line(0, "turtle angle " + printNumber(m_.turtle.angle) + " step " +
                   printNumber(m_.turtle.step) + " width " + printNumber(m_.turtle.width));
+    if (m_.turtle.segments == TurtleSegments::Tubes)
+      line(0, "turtle segments tubes sides " + std::to_string(m_.turtle.sides));
+    if (m_.turtle.segments == TurtleSegments::Ribbons) line(0, "turtle segments ribbons");
     if (m_.collision.all || m_.collision.omit || m_.collision.metric != CollisionMetric::Mesh) {
       std::string c = "collision";
       if (m_.collision.all) c += " all";

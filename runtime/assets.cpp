@@ -105,6 +105,31 @@ void buildCylinder(Builder& b, int segments) {
   }
 }
 
+// An open tube along Y (no caps), `sides` around, smooth: a turtle's segment drawn
+// cheaply (`turtle segments "tubes";`).
+void buildTube(Builder& b, int sides) {
+  const auto cs = circle(sides);
+  for (double y : {-1.0, 1.0})
+    for (auto [c, s] : cs) b.vertex({c, y, s}, {c, 0, s});
+  const uint32_t n = uint32_t(sides);
+  for (uint32_t j = 0; j < n; ++j) {
+    const uint32_t k = (j + 1) % n;
+    b.tri(j, n + j, k);
+    b.tri(k, n + j, n + k);
+  }
+}
+
+// "tube3" ... "tube64": the number of sides of a tube, or 0 for another name.
+int tubeSides(const std::string& name) {
+  if (name.size() < 5 || name.size() > 6 || name.compare(0, 4, "tube") != 0) return 0;
+  int sides = 0;
+  for (size_t i = 4; i < name.size(); ++i) {
+    if (name[i] < '0' || name[i] > '9' || (i == 4 && name[i] == '0')) return 0;
+    sides = 10 * sides + (name[i] - '0');
+  }
+  return sides >= 3 && sides <= 64 ? sides : 0;
+}
+
 void buildSphere(Builder& b, int segments, int rings) {
   const auto cs = circle(segments);
   const uint32_t north = b.vertex({0, 1, 0}, {0, 1, 0});
@@ -445,9 +470,14 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
     out = Mesh{};
     return true;
   }
+  Builder b;
+  if (const int sides = tubeSides(name)) {
+    buildTube(b, sides);
+    out = normaliseToUnitBox(b);
+    return true;
+  }
   auto it = builders.find(name);
   if (it == builders.end()) return false;
-  Builder b;
   it->second(b);
   out = normaliseToUnitBox(b);
   return true;
@@ -477,7 +507,7 @@ int AssetLibrary::resolve(const std::string& name, std::string& error) {
     }
     if (found.empty()) {
       error = "asset '" + name + "' not found: not a built-in primitive (" +
-              joinNames(builtinPrimitiveNames()) + ") and no such file in " + joinNames(searched);
+              joinNames(builtinPrimitiveNames()) + ", tube3 ... tube64) and no such file in " + joinNames(searched);
       return -1;
     }
     if (!loadMeshFile(found, mesh, error)) return -1;

@@ -11,9 +11,11 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
   const double step = n > 0 ? args[0] : m.turtle.step;
   switch (op) {
     case TurtleOp::Forward: {
-      // A segment is a cylinder of the turtle's width along the heading (scope Y).
+      // A segment is a cylinder (or tube) of the turtle's width along the heading (scope
+      // Y), centred on the path; a ribbon is the flat quad in the turtle's X-Y plane.
       rt::Scope seg = st.scope;
-      seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z());
+      const bool flat = m.turtle.segments == ir::TurtleSegments::Ribbons;
+      seg.P -= 0.5 * st.width * (flat ? st.scope.X() : rt::Vec3(st.scope.X() + st.scope.Z()));
       seg.S = rt::Vec3(st.width, step, st.width);
       d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       st.scope.P += step * st.scope.Y();

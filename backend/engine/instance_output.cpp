@@ -41,7 +41,12 @@ void Derivation::initOutput() {
     out_.paramKinds.push_back(std::move(kinds));
   }
   segmentAsset_ = static_cast<uint32_t>(out_.assets.size());
-  out_.assets.push_back("cylinder");
+  // What `turtle segments` asks for: built-in assets that fill the segment's box.
+  switch (m_.turtle.segments) {
+    case ir::TurtleSegments::Cylinders: out_.assets.push_back("cylinder"); break;
+    case ir::TurtleSegments::Tubes: out_.assets.push_back("tube" + std::to_string(m_.turtle.sides)); break;
+    case ir::TurtleSegments::Ribbons: out_.assets.push_back("quad"); break;
+  }
   for (size_t i = 0; i < m_.assets.size(); ++i)
     if (m_.assets[i] == "none") noneAsset_ = static_cast<uint32_t>(i);
   leavesOutput_ = ir::leavesOutputGeometry(m_);

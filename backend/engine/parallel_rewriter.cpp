@@ -389,6 +389,16 @@ void Derivation::interpretString(const ModuleString& str) {
   st.stackBase = stack_.size();
   stats_.stringLength = str.size();
   stats_.stringBytes = str.size() * sizeof(StringModule) + str.args.size() * sizeof(double);
+  // Room for every segment at once: a million instances grown by doubling copy each one
+  // about twice more.
+  size_t segments = 0;
+  for (const StringModule& mod : str.modules) {
+    const StringOp& so = plan_[mod.op];
+    segments += so.draws == static_cast<int8_t>(ir::TurtleOp::Forward) ||
+                (so.kind == ir::OpKind::Turtle && so.op->index == static_cast<uint32_t>(ir::TurtleOp::Forward)) ||
+                so.kind == ir::OpKind::Instance;
+  }
+  out_.instances.reserve(out_.instances.size() + segments);
   for (const StringModule& mod : str.modules) {
     const StringOp& so = plan_[mod.op];
     const ir::Op& op = *so.op;

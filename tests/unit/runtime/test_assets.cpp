@@ -209,6 +209,34 @@ TEST_CASE("bark is a 24 x 9 tube along X of radius 0.5 with smooth normals and U
   }
 }
 
+TEST_CASE("tubeN is an open tube along Y with N sides filling the unit box, normals pointing out", "[assets]") {
+  Mesh m;
+  REQUIRE(makeBuiltinPrimitive("tube8", m));
+  CHECK(m.vertexCount() == 16);
+  CHECK(m.triangleCount() == 16);
+  CHECK(m.boundsMin() == std::array<float, 3>{0, 0, 0});
+  CHECK(m.boundsMax() == std::array<float, 3>{1, 1, 1});
+  for (size_t v = 0; v < m.vertexCount(); ++v) {
+    // Radial (an octagon's box is square, so the stretch is uniform): no Y part, along
+    // the vertex's direction from the axis (x = z = 0.5), outwards.
+    const double dx = m.positions[3 * v] - 0.5, dz = m.positions[3 * v + 2] - 0.5;
+    CHECK(m.normals[3 * v + 1] == Approx(0).margin(1e-6));
+    CHECK(m.normals[3 * v] * dz - m.normals[3 * v + 2] * dx == Approx(0).margin(1e-6));
+    CHECK(m.normals[3 * v] * dx + m.normals[3 * v + 2] * dz > 0);
+  }
+  REQUIRE(makeBuiltinPrimitive("tube6", m));
+  CHECK(m.triangleCount() == 12);
+  CHECK(m.boundsMax() == std::array<float, 3>{1, 1, 1});
+  REQUIRE(makeBuiltinPrimitive("tube64", m));
+  CHECK(m.triangleCount() == 128);
+  REQUIRE(makeBuiltinPrimitive("tube3", m));
+  CHECK(m.triangleCount() == 6);
+  for (const char* name : {"tube", "tube2", "tube65", "tube06", "tube6x", "tube100"}) {
+    INFO(name);
+    CHECK_FALSE(makeBuiltinPrimitive(name, m));
+  }
+}
+
 TEST_CASE("leaf is the XY unit square facing +Z with UVs covering it", "[assets]") {
   Mesh m;
   REQUIRE(makeBuiltinPrimitive("leaf", m));
