@@ -275,12 +275,13 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
 
   if (!opt.quiet)
     std::cerr << "wrote " << opt.output << " (" << result.instances.instances.size()
-              << " instances, " << mesh.triangleCount() << " triangles)"
+              << " instances, " << mesh.triangleCount() << " triangles"
+              << (mesh.lineCount() ? ", " + std::to_string(mesh.lineCount()) + " line segments" : std::string()) << ")"
               << (opt.preview.empty() ? "" : ", preview " + opt.preview) << "\n";
   if (opt.stats) {
     const auto& s = result.stats;
     const auto& t = compiled->times;
-    printDeriveStats(s, mesh.triangleCount());
+    printDeriveStats(s, mesh.triangleCount(), mesh.lineCount());
     std::printf("time.parse %.6f\ntime.analyze %.6f\ntime.lower %.6f\ntime.compile %.6f\n"
                 "time.derive %.6f\ntime.surface %.6f\ntime.rewrite %.6f\ntime.assemble %.6f\ntime.write %.6f\n"
                 "time.preview %.6f\n",

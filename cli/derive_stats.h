@@ -8,6 +8,6 @@
 
 namespace fgsg::cli {
 
-void printDeriveStats(const rt::DeriveStats& s, size_t triangles);
+void printDeriveStats(const rt::DeriveStats& s, size_t triangles, size_t lines = 0);
 
 }  // namespace fgsg::cli

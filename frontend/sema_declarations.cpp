@@ -113,9 +113,9 @@ void Analyzer::collectEnvironment() {
         }
       if (key == "segments") {
         if (!expr || !evalConst(*expr, v) || v.type != ValueType::Str ||
-            (v.str != "cylinders" && v.str != "tubes" && v.str != "ribbons")) {
+            (v.str != "cylinders" && v.str != "tubes" && v.str != "ribbons" && v.str != "lines")) {
           diags_.error("E029", t.range,
-                       "turtle setting 'segments' needs \"cylinders\", \"tubes\" or \"ribbons\"");
+                       "turtle setting 'segments' needs \"cylinders\", \"tubes\", \"ribbons\" or \"lines\"");
           continue;
         }
         res_.turtleSegments = v.str;

@@ -217,6 +217,7 @@ enum class TurtleSegments : uint8_t {
   Cylinders,  // the built-in capped cylinder (32 sides, 128 triangles)
   Tubes,      // an open tube of `sides` sides (2 x sides triangles)
   Ribbons,    // a flat strip in the turtle's X-Y plane (2 triangles)
+  Lines,      // a line segment (no triangles; glTF LINES, OBJ l, PLY edge)
 };
 
 struct TurtleSettings {

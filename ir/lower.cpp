@@ -56,6 +56,7 @@ class Lowerer {
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth,
                  sema_.turtleSegments == "tubes"     ? TurtleSegments::Tubes
                  : sema_.turtleSegments == "ribbons" ? TurtleSegments::Ribbons
+                 : sema_.turtleSegments == "lines"   ? TurtleSegments::Lines
                                                      : TurtleSegments::Cylinders,
                  sema_.turtleSides};
     lowerCollision();

@@ -63,10 +63,11 @@ struct Scratch {
   std::vector<Eigen::Vector3f> normal;  // their output normals
   std::vector<uint32_t> remap;         // asset vertex -> output vertex within the instance
   std::vector<uint8_t> keepTri;        // triangle survives the area test
+  std::vector<uint8_t> keepLine;       // line segment has a length
 };
 
 struct Counts {
-  uint32_t vertices = 0, triangles = 0;
+  uint32_t vertices = 0, triangles = 0, lines = 0;
 };
 
 // The output normal: through the cofactor matrix, turned with the bend, unit length.
@@ -127,6 +128,16 @@ Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNorm
     ++c.triangles;
     for (int k = 0; k < 3; ++k) s.remap[tri[k]] = 0;
   }
+  // Line segments survive with a length (a NaN one: no).
+  const size_t nl = asset.lineCount();
+  s.keepLine.assign(nl, 0);
+  for (size_t l = 0; l < nl; ++l) {
+    const uint32_t* ends = &asset.lines[2 * l];
+    if (!((s.world[ends[1]] - s.world[ends[0]]).squaredNorm() > 0)) continue;
+    s.keepLine[l] = 1;
+    ++c.lines;
+    s.remap[ends[0]] = s.remap[ends[1]] = 0;
+  }
   // Number the surviving vertices in asset order, so the output keeps the asset's layout.
   for (uint32_t& r : s.remap)
     if (r != kUnused) r = c.vertices++;
@@ -163,8 +174,8 @@ std::vector<Counts> countAll(const InstanceList& list, const AssetLibrary& libra
 // Bending a vertex costs far more than copying it: this way each is bent once.
 struct Staging {
   std::vector<float> positions, normals, colors, texcoords;
-  std::vector<uint32_t> indices;
-  std::vector<size_t> slotVertex, slotTriangle;  // per instance of the block, and the end
+  std::vector<uint32_t> indices, lines;
+  std::vector<size_t> slotVertex, slotTriangle, slotLine;  // per instance of the block, and the end
 };
 
 // Writes an instance's surviving vertices and triangles into its staging slot.
@@ -196,18 +207,26 @@ void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scr
     *index++ = s.remap[tri[p.flip ? 2 : 1]];
     *index++ = s.remap[tri[p.flip ? 1 : 2]];
   }
+  uint32_t* line = st.lines.data() + 2 * st.slotLine[slot];
+  for (size_t l = 0; l < s.keepLine.size(); ++l) {
+    if (!s.keepLine[l]) continue;
+    *line++ = s.remap[asset.lines[2 * l]];
+    *line++ = s.remap[asset.lines[2 * l + 1]];
+  }
 }
 
 // Copies an instance's staged output to its place in the mesh.
-void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t firstTriangle, Mesh& out) {
-  if (c.triangles == 0) return;  // nothing survived (and the slot may be past the end)
-  const size_t v = st.slotVertex[slot], t = st.slotTriangle[slot];
+void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t firstTriangle, size_t firstLine,
+           Mesh& out) {
+  if (c.vertices == 0) return;  // nothing survived (and the slot may be past the end)
+  const size_t v = st.slotVertex[slot], t = st.slotTriangle[slot], l = st.slotLine[slot];
   std::copy_n(&st.positions[3 * v], 3 * c.vertices, &out.positions[3 * firstVertex]);
   std::copy_n(&st.normals[3 * v], 3 * c.vertices, &out.normals[3 * firstVertex]);
   std::copy_n(&st.colors[3 * v], 3 * c.vertices, &out.colors[3 * firstVertex]);
   if (!out.texcoords.empty()) std::copy_n(&st.texcoords[2 * v], 2 * c.vertices, &out.texcoords[2 * firstVertex]);
   const uint32_t base = uint32_t(firstVertex);
   for (size_t k = 0; k < 3 * size_t(c.triangles); ++k) out.indices[3 * firstTriangle + k] = base + st.indices[3 * t + k];
+  for (size_t k = 0; k < 2 * size_t(c.lines); ++k) out.lines[2 * firstLine + k] = base + st.lines[2 * l + k];
 }
 
 // The output's images: the instance list's (Texture), then those of drawn meshes with
@@ -327,21 +346,22 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   out.colors.clear();
   out.texcoords.clear();
   out.indices.clear();
+  out.lines.clear();
   out.textures.clear();
   out.textureRuns.clear();
   std::vector<Counts> counts;
-  std::vector<size_t> firstVertex, firstTriangle;
+  std::vector<size_t> firstVertex, firstTriangle, firstLine;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
   // arrays never move while they grow block by block.
   // In the same pass: whether any drawn mesh has texture coordinates, and whether any
   // triangle draws an image (a Texture, or a mesh's own).
-  size_t maxVertices = 0, maxTriangles = 0;
+  size_t maxVertices = 0, maxTriangles = 0, maxLines = 0;
   bool withTexcoords = false, withTextures = false;
   for (const Instance& inst : list.instances) {
     withTextures |= inst.texture != UINT32_MAX;
     const Mesh* m = assetOf(inst, list, library, meshOf);
     if (!m) continue;
-    maxVertices += m->vertexCount(), maxTriangles += m->triangleCount();
+    maxVertices += m->vertexCount(), maxTriangles += m->triangleCount(), maxLines += m->lineCount();
     withTexcoords |= m->hasTexcoords();
     withTextures |= m->textured();
   }
@@ -349,6 +369,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   out.normals.reserve(3 * maxVertices);
   out.colors.reserve(3 * maxVertices);
   out.indices.reserve(3 * maxTriangles);
+  out.lines.reserve(2 * maxLines);
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
   OutputImages images;
   if (withTextures) images = outputImages(list, library, meshOf), out.textures = images.paths;
@@ -359,11 +380,13 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     size_t end = begin, work = 0;
     st.slotVertex.assign(1, 0);
     st.slotTriangle.assign(1, 0);
+    st.slotLine.assign(1, 0);
     while (end < n && (end == begin || work < kBlockTriangles)) {
       const Mesh* m = assetOf(list.instances[end++], list, library, meshOf);
-      work += 1 + (m ? m->triangleCount() : 0);
+      work += 1 + (m ? m->triangleCount() + m->lineCount() : 0);
       st.slotVertex.push_back(st.slotVertex.back() + (m ? m->vertexCount() : 0));
       st.slotTriangle.push_back(st.slotTriangle.back() + (m ? m->triangleCount() : 0));
+      st.slotLine.push_back(st.slotLine.back() + (m ? m->lineCount() : 0));
     }
     const size_t k = end - begin;
     st.positions.resize(3 * st.slotVertex[k]);
@@ -371,6 +394,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     st.colors.resize(3 * st.slotVertex[k]);
     if (withTexcoords) st.texcoords.resize(2 * st.slotVertex[k]);
     st.indices.resize(3 * st.slotTriangle[k]);
+    st.lines.resize(2 * st.slotLine[k]);
     counts.assign(k, Counts{});
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       Scratch s;
@@ -385,17 +409,21 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     });
     firstVertex.assign(k + 1, out.positions.size() / 3);
     firstTriangle.assign(k + 1, out.indices.size() / 3);
+    firstLine.assign(k + 1, out.lines.size() / 2);
     for (size_t i = 0; i < k; ++i) {
       firstVertex[i + 1] = firstVertex[i] + counts[i].vertices;
       firstTriangle[i + 1] = firstTriangle[i] + counts[i].triangles;
+      firstLine[i + 1] = firstLine[i] + counts[i].lines;
     }
     out.positions.resize(3 * firstVertex[k]);
     out.normals.resize(3 * firstVertex[k]);
     out.colors.resize(3 * firstVertex[k]);
     out.indices.resize(3 * firstTriangle[k]);
+    out.lines.resize(2 * firstLine[k]);
     if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) place(st, i, counts[i], firstVertex[i], firstTriangle[i], out);
+      for (size_t i = r.begin(); i != r.end(); ++i)
+        place(st, i, counts[i], firstVertex[i], firstTriangle[i], firstLine[i], out);
     });
     if (withTextures) addTextureRuns(list, library, meshOf, images, begin, counts, firstTriangle, out);
     begin = end;

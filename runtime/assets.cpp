@@ -449,8 +449,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<std::string>& builtinPrimitiveNames() {
-  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus", "ico",
-                                                 "quad", "disc",     "bark",   "leaf",  "none"};
+  static const std::vector<std::string> names = {"cube", "cylinder", "sphere", "torus", "ico", "quad",
+                                                 "disc", "bark",     "leaf",   "line",  "none"};
   return names;
 }
 
@@ -468,6 +468,15 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
   };
   if (name == "none") {  // I("none"): CGA's way to place nothing
     out = Mesh{};
+    return true;
+  }
+  if (name == "line") {  // one line segment on the box's Y edge (turtle segments "lines")
+    out = Mesh{};
+    const float positions[] = {0, 0, 0, 0, 1, 0}, normals[] = {0, 0, 1, 0, 0, 1};
+    out.positions.assign(positions, positions + 6);
+    out.normals.assign(normals, normals + 6);
+    out.lines.resize(2);
+    out.lines[0] = 0, out.lines[1] = 1;
     return true;
   }
   Builder b;

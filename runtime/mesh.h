@@ -1,6 +1,6 @@
-// An indexed triangle mesh with per-vertex normals, colours and texture coordinates: the
-// form assets are loaded into and the form output geometry is assembled into before it
-// is written.
+// An indexed triangle mesh with per-vertex normals, colours and texture coordinates, and
+// line segments between its vertices (turtle segments "lines"): the form assets are
+// loaded into and the form output geometry is assembled into before it is written.
 #pragma once
 
 #include "runtime/mesh_array.h"
@@ -29,6 +29,7 @@ struct Mesh {
   MeshArray<float> colors;       // r g b per vertex in [0,1]; empty when none
   MeshArray<float> texcoords;    // u v per vertex (v up); empty when none
   MeshArray<uint32_t> indices;   // three per triangle, counter-clockwise = front
+  MeshArray<uint32_t> lines;     // two per line segment; untextured
   // The image files textured triangles use (paths, PNG or JPEG) and the runs that say which
   // triangles use which, in triangle order, the first starting at triangle 0. No runs: no
   // triangle is textured. Assembled meshes list only images some run uses.
@@ -37,7 +38,8 @@ struct Mesh {
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return indices.size() / 3; }
-  bool empty() const { return indices.empty(); }
+  size_t lineCount() const { return lines.size() / 2; }
+  bool empty() const { return indices.empty() && lines.empty(); }
   bool hasTexcoords() const { return !texcoords.empty() && texcoords.size() == 2 * vertexCount(); }
   bool textured() const { return !textureRuns.empty(); }
   // Triangles from `firstTriangle` on draw `texture`: a new run, unless the last one draws it.

@@ -467,6 +467,12 @@ FGSG_API const uint32_t* fgsg_indices(const fgsg_generator* g) {
   return g ? dataOrNull(g->mesh.indices) : nullptr;
 }
 
+FGSG_API size_t fgsg_line_index_count(const fgsg_generator* g) { return g ? g->mesh.lines.size() : 0; }
+
+FGSG_API const uint32_t* fgsg_line_indices(const fgsg_generator* g) {
+  return g ? dataOrNull(g->mesh.lines) : nullptr;
+}
+
 FGSG_API size_t fgsg_instance_count(const fgsg_generator* g) {
   return g ? g->instanceAssets.size() : 0;
 }

@@ -96,6 +96,10 @@ FGSG_API const float* fgsg_normals(const fgsg_generator* g);   /* x y z per vert
 FGSG_API const float* fgsg_colors(const fgsg_generator* g);    /* r g b per vertex; may be NULL */
 FGSG_API size_t fgsg_index_count(const fgsg_generator* g);     /* 3 per triangle */
 FGSG_API const uint32_t* fgsg_indices(const fgsg_generator* g);
+/* Line segments between the vertices (turtle segments "lines"): 2 indices per segment;
+ * 0 / NULL when there are none. */
+FGSG_API size_t fgsg_line_index_count(const fgsg_generator* g);
+FGSG_API const uint32_t* fgsg_line_indices(const fgsg_generator* g);
 
 /* The instances the derivation placed: per instance 16 doubles (a column-major 4x4
  * matrix mapping the asset's unit box [0,1]^3 into world space) and an asset index. */

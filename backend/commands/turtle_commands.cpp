@@ -12,10 +12,14 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
   switch (op) {
     case TurtleOp::Forward: {
       // A segment is a cylinder (or tube) of the turtle's width along the heading (scope
-      // Y), centred on the path; a ribbon is the flat quad in the turtle's X-Y plane.
+      // Y), centred on the path; a ribbon is the flat quad in the turtle's X-Y plane; a
+      // line lies on the box's Y edge, the path itself.
       rt::Scope seg = st.scope;
-      const bool flat = m.turtle.segments == ir::TurtleSegments::Ribbons;
-      seg.P -= 0.5 * st.width * (flat ? st.scope.X() : rt::Vec3(st.scope.X() + st.scope.Z()));
+      switch (m.turtle.segments) {
+        case ir::TurtleSegments::Ribbons: seg.P -= 0.5 * st.width * st.scope.X(); break;
+        case ir::TurtleSegments::Lines: break;
+        default: seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z()); break;
+      }
       seg.S = rt::Vec3(st.width, step, st.width);
       d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       st.scope.P += step * st.scope.Y();

@@ -46,6 +46,7 @@ void Derivation::initOutput() {
     case ir::TurtleSegments::Cylinders: out_.assets.push_back("cylinder"); break;
     case ir::TurtleSegments::Tubes: out_.assets.push_back("tube" + std::to_string(m_.turtle.sides)); break;
     case ir::TurtleSegments::Ribbons: out_.assets.push_back("quad"); break;
+    case ir::TurtleSegments::Lines: out_.assets.push_back("line"); break;
   }
   for (size_t i = 0; i < m_.assets.size(); ++i)
     if (m_.assets[i] == "none") noneAsset_ = static_cast<uint32_t>(i);

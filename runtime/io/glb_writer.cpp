@@ -27,13 +27,16 @@ using nlohmann::json;
 // glTF's numeric codes.
 constexpr int kFloat = 5126, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
-constexpr int kTriangles = 4;
+constexpr int kLines = 1, kTriangles = 4;
 
 // The BIN chunk's parts in file order; each is a whole number of 4-byte values, so no
 // part needs padding.
+// The vertex attributes, then the triangles' indices and the line segments' (each only
+// when there are some: glTF allows no empty buffer view).
 struct Part {
-  const char* attribute;  // nullptr: the indices
+  const char* attribute;  // nullptr: indices
   size_t bytes;
+  bool lines = false;     // indices: of the line segments
 };
 
 std::vector<Part> binParts(const Mesh& mesh) {
@@ -42,7 +45,8 @@ std::vector<Part> binParts(const Mesh& mesh) {
   if (hasNormals(mesh)) parts.push_back({"NORMAL", floatsPerVec3});
   if (hasColors(mesh)) parts.push_back({"COLOR_0", floatsPerVec3});
   if (mesh.hasTexcoords()) parts.push_back({"TEXCOORD_0", mesh.texcoords.size() * sizeof(float)});
-  parts.push_back({nullptr, mesh.indices.size() * sizeof(uint32_t)});
+  if (!mesh.indices.empty()) parts.push_back({nullptr, mesh.indices.size() * sizeof(uint32_t)});
+  if (!mesh.lines.empty()) parts.push_back({nullptr, mesh.lines.size() * sizeof(uint32_t), true});
   return parts;
 }
 
@@ -143,6 +147,7 @@ std::string glbJson(const Mesh& mesh, const std::vector<EmbeddedImage>& images) 
   if (!mesh.empty()) {
     json accessors = json::array(), views = json::array(), attributes = json::object();
     size_t offset = 0;
+    int triangleView = -1, lineView = -1;
     for (const Part& part : binParts(mesh)) {
       json view = {{"buffer", 0}, {"byteLength", part.bytes}};
       if (offset > 0) view["byteOffset"] = offset;  // tinygltf leaves out the default 0
@@ -150,12 +155,9 @@ std::string glbJson(const Mesh& mesh, const std::vector<EmbeddedImage>& images) 
       offset += part.bytes;
       json acc = {{"bufferView", int(views.size())}};
       views.push_back(std::move(view));
-      if (!part.attribute) {
-        acc["componentType"] = kUnsignedInt;
-        acc["count"] = mesh.indices.size();
-        acc["type"] = "SCALAR";
-        accessors.push_back(std::move(acc));
-        break;  // the indices are the last part of the vertex data
+      if (!part.attribute) {  // the primitives below make the indices' accessors
+        (part.lines ? lineView : triangleView) = int(views.size() - 1);
+        continue;
       }
       const bool uv = std::strcmp(part.attribute, "TEXCOORD_0") == 0;
       acc["componentType"] = kFloat;
@@ -166,31 +168,35 @@ std::string glbJson(const Mesh& mesh, const std::vector<EmbeddedImage>& images) 
       accessors.push_back(std::move(acc));
     }
     json primitives = json::array(), materials = json::array();
+    const auto indexAccessor = [&](int view, size_t count, size_t first) {
+      json acc = {{"bufferView", view}, {"componentType", kUnsignedInt}, {"count", count}, {"type", "SCALAR"}};
+      if (first) acc["byteOffset"] = first * sizeof(uint32_t);
+      accessors.push_back(std::move(acc));
+      return int(accessors.size() - 1);
+    };
+    int plainIndex = -1;  // the plain material's index, once there is one
     if (!mesh.textured()) {
       materials.push_back(plainMaterial());
-      primitives.push_back({{"attributes", std::move(attributes)},
-                            {"indices", int(accessors.size() - 1)},
-                            {"material", 0},
-                            {"mode", kTriangles}});
+      plainIndex = 0;
+      if (triangleView >= 0)
+        primitives.push_back({{"attributes", attributes},
+                              {"indices", indexAccessor(triangleView, mesh.indices.size(), 0)},
+                              {"material", 0},
+                              {"mode", kTriangles}});
     } else {
       // One primitive per image over its stretch of the indices (written grouped), all
       // sharing the vertex accessors; the images follow the indices in the BIN chunk.
-      const int indexView = int(views.size() - 1);
-      accessors.erase(accessors.size() - 1);
+      const int indexView = triangleView;
       size_t firstIndex = 0;
       const std::vector<TriangleGroup> groups = triangleGroups(mesh);
       const int plain = groups.front().texture < 0 ? 1 : 0;  // the plain material, when used, is first
-      if (plain) materials.push_back(plainMaterial());
+      if (plain) materials.push_back(plainMaterial()), plainIndex = 0;
       for (const TriangleGroup& g : groups) {
-        json acc = {{"bufferView", indexView}, {"componentType", kUnsignedInt}, {"count", 3 * g.triangles},
-                    {"type", "SCALAR"}};
-        if (firstIndex) acc["byteOffset"] = firstIndex * sizeof(uint32_t);
-        firstIndex += 3 * g.triangles;
         primitives.push_back({{"attributes", attributes},
-                              {"indices", int(accessors.size())},
+                              {"indices", indexAccessor(indexView, 3 * g.triangles, firstIndex)},
                               {"material", plain + g.texture},
                               {"mode", kTriangles}});
-        accessors.push_back(std::move(acc));
+        firstIndex += 3 * g.triangles;
       }
       json jsonImages = json::array(), textures = json::array();
       for (size_t t = 0; t < mesh.textures.size(); ++t) {
@@ -206,6 +212,14 @@ std::string glbJson(const Mesh& mesh, const std::vector<EmbeddedImage>& images) 
       j["textures"] = std::move(textures);
       // Linear filtering with mipmaps; the images repeat (a facade tiles its bricks).
       j["samplers"] = json::array({json{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}});
+    }
+    // The line segments: one more primitive over the same vertices, plain.
+    if (lineView >= 0) {
+      if (plainIndex < 0) materials.push_back(plainMaterial()), plainIndex = int(materials.size() - 1);
+      primitives.push_back({{"attributes", attributes},
+                            {"indices", indexAccessor(lineView, mesh.lines.size(), 0)},
+                            {"material", plainIndex},
+                            {"mode", kLines}});
     }
     j["accessors"] = std::move(accessors);
     j["bufferViews"] = std::move(views);
@@ -248,16 +262,16 @@ bool writeGlb(const Mesh& mesh, ByteSink& out, std::string& error) {
   // glTF puts the texture's origin at the top left (v down); the mesh's v is up.
   if (mesh.hasTexcoords())
     appendTransformed(out, mesh.texcoords, [](size_t i, float t) { return i % 2 ? 1.0f - t : t; });
-  if (!mesh.textured()) {
+  if (!mesh.textured())
     out.append(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
-    return true;
-  }
-  for (const TriangleGroup& g : triangleGroups(mesh))
-    for (size_t r = 0; r < mesh.textureRuns.size(); ++r)
-      if (mesh.textureRuns[r].texture == g.texture) {
-        const size_t first = mesh.textureRuns[r].firstTriangle;
-        out.append(&mesh.indices[3 * first], 3 * (mesh.runEnd(r) - first) * sizeof(uint32_t));
-      }
+  else
+    for (const TriangleGroup& g : triangleGroups(mesh))
+      for (size_t r = 0; r < mesh.textureRuns.size(); ++r)
+        if (mesh.textureRuns[r].texture == g.texture) {
+          const size_t first = mesh.textureRuns[r].firstTriangle;
+          out.append(&mesh.indices[3 * first], 3 * (mesh.runEnd(r) - first) * sizeof(uint32_t));
+        }
+  out.append(mesh.lines.data(), mesh.lines.size() * sizeof(uint32_t));
   for (const EmbeddedImage& image : images) {
     out.append(image.bytes);
     out.append("\0\0\0", padded4(image.bytes.size()) - image.bytes.size());

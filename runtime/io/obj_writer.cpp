@@ -151,8 +151,21 @@ void writeObj(const Mesh& mesh, ByteSink& out, const std::string& mtlFileName) {
     *p++ = '\n';
     return p;
   };
+  // Line segments ("l a b") after the faces.
+  const auto segments = [&] {
+    putLines(out, mesh.lineCount(), [&](char* p, size_t l) {
+      *p++ = 'l';
+      for (int k = 0; k < 2; ++k) {
+        *p++ = ' ';
+        p = std::to_chars(p, p + 24, uint64_t(mesh.lines[2 * l + k]) + 1).ptr;
+      }
+      *p++ = '\n';
+      return p;
+    });
+  };
   if (!mesh.textured()) {
     putLines(out, mesh.triangleCount(), face);
+    segments();
     return;
   }
   // Run by run, each after its material (a run going on with the previous one's material
@@ -171,6 +184,8 @@ void writeObj(const Mesh& mesh, ByteSink& out, const std::string& mtlFileName) {
     putLines(out, end - begin, [&](char* p, size_t i) { return face(p, begin + i); });
     begin = end;
   }
+  if (mesh.lineCount() && !current.empty() && current != "fgsg_plain") out.append("usemtl fgsg_plain\n");
+  segments();
 }
 
 std::string mtlText(const Mesh& mesh, const std::string& mtlFolder) {

@@ -24,7 +24,11 @@ void writePly(const Mesh& mesh, ByteSink& out) {
   if (withTexcoords) header += "property float u\nproperty float v\n";  // v up
   if (colored) header += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   header += "element face " + std::to_string(mesh.triangleCount()) + "\n";
-  header += "property list uchar uint vertex_indices\nend_header\n";
+  header += "property list uchar uint vertex_indices\n";
+  // Line segments as PLY's edge element (Blender's importer reads them as loose edges).
+  if (mesh.lineCount())
+    header += "element edge " + std::to_string(mesh.lineCount()) + "\nproperty uint vertex1\nproperty uint vertex2\n";
+  header += "end_header\n";
   out.append(header);
 
   const size_t vertexBytes = 12 + (withNormals ? 12 : 0) + (withTexcoords ? 8 : 0) + (colored ? 3 : 0);
@@ -52,6 +56,7 @@ void writePly(const Mesh& mesh, ByteSink& out) {
     }
     out.advance(p);
   }
+  out.append(mesh.lines.data(), mesh.lines.size() * sizeof(uint32_t));
 }
 
 }  // namespace fgsg::rt::io

@@ -209,6 +209,42 @@ uint8_t toByte(float c) { return uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) *
 
 // renderImage with the mesh's textures loaded already, so stagePreview can report those
 // that fail.
+// Where the camera sees world point p, in pixels (x right, y down); false behind it.
+bool project(const Camera& cam, const Vector3d& p, const Image& img, double& x, double& y) {
+  const Vector3d d = p - cam.eye;
+  const double depth = cam.orthographic ? 1.0 : d.dot(cam.forward);
+  if (!(depth > 1e-9)) return false;
+  const double sx = d.dot(cam.right) / (depth * cam.halfWidth), sy = d.dot(cam.up) / (depth * cam.halfHeight);
+  x = 0.5 * (sx + 1) * img.width;
+  y = 0.5 * (1 - sy) * img.height;
+  return std::isfinite(x) && std::isfinite(y);
+}
+
+// The mesh's line segments, one pixel wide in their first vertex's colour, over the
+// rendered triangles (rays cannot hit a line).
+void drawLines(const Mesh& mesh, const Camera& cam, Image& img) {
+  const auto vertex = [&](uint32_t v) {
+    return Vector3d(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]);
+  };
+  for (size_t l = 0; l < mesh.lineCount(); ++l) {
+    const uint32_t a = mesh.lines[2 * l], b = mesh.lines[2 * l + 1];
+    double x0, y0, x1, y1;
+    if (!project(cam, vertex(a), img, x0, y0) || !project(cam, vertex(b), img, x1, y1)) continue;
+    uint8_t rgb[3] = {60, 60, 60};
+    if (mesh.colors.size() == mesh.positions.size())
+      for (int c = 0; c < 3; ++c) rgb[c] = toByte(mesh.colors[3 * a + c]);
+    // Steps of at most a pixel, clipped to the image (a few thousand pixels at most).
+    const double span = std::min(std::max(std::abs(x1 - x0), std::abs(y1 - y0)), 4.0 * (img.width + img.height));
+    const int steps = std::max(1, int(std::ceil(span)));
+    for (int k = 0; k <= steps; ++k) {
+      const double t = double(k) / steps;
+      const int px = int(std::floor(x0 + t * (x1 - x0))), py = int(std::floor(y0 + t * (y1 - y0)));
+      if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
+      std::copy(rgb, rgb + 3, &img.rgb[3 * (size_t(py) * img.width + px)]);
+    }
+  }
+}
+
 Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const PreviewOptions& options) {
   Image img;
   img.width = std::max(options.width, 1);
@@ -217,7 +253,7 @@ Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const 
   const int spa = std::max(options.samplesPerAxis, 1);
   const Camera cam = fitCamera(mesh, double(img.width) / img.height);
   std::unique_ptr<RayScene> scene;
-  if (!mesh.empty()) scene = std::make_unique<RayScene>(mesh);
+  if (mesh.triangleCount() > 0) scene = std::make_unique<RayScene>(mesh);
   // Every pixel depends only on its own rays, so rows can be rendered in any order.
   tbb::parallel_for(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& rows) {
     for (int py = rows.begin(); py != rows.end(); ++py) {
@@ -240,6 +276,7 @@ Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const 
       }
     }
   });
+  drawLines(mesh, cam, img);
   return img;
 }
 

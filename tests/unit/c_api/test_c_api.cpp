@@ -433,3 +433,20 @@ TEST_CASE("a refused attribute leaves later generations as they were", "[c_api][
   CHECK(generateBytes(g, 3, "attr-after.ply") == before);
   CHECK(g.error().empty());
 }
+
+TEST_CASE("line segments read through fgsg_line_indices", "[c_api][compiled]") {
+  // ABOP Fig. 1.24d, three steps, turtle segments "lines": 38 segments, no triangles.
+  Generator g(compileAndLoad(FGSG_SOURCE_DIR "/tests/cases/turtle_lines/input.fgsg"));
+  REQUIRE(fgsg_generate(g) == 0);
+  CHECK(fgsg_index_count(g) == 0);
+  REQUIRE(fgsg_line_index_count(g) == 2 * 38);
+  const uint32_t* lines = fgsg_line_indices(g);
+  REQUIRE(lines != nullptr);
+  CHECK(*std::max_element(lines, lines + fgsg_line_index_count(g)) < fgsg_vertex_count(g));
+  // The first segment is the trunk's first F: from the origin one step up Y.
+  const float* p = fgsg_positions(g);
+  CHECK(p[3 * lines[0] + 1] == Approx(0.0f));
+  CHECK(p[3 * lines[1] + 1] == Approx(1.0f));
+  CHECK(fgsg_line_index_count(nullptr) == 0);
+  CHECK(fgsg_line_indices(nullptr) == nullptr);
+}

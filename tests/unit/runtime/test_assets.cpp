@@ -91,7 +91,7 @@ void checkNormals(const Mesh& m) {
 TEST_CASE("built-in primitives are listed in a stable order", "[assets]") {
   CHECK(builtinPrimitiveNames() ==
         std::vector<std::string>{"cube", "cylinder", "sphere", "torus", "ico", "quad", "disc", "bark",
-                                 "leaf", "none"});
+                                 "leaf", "line", "none"});
   Mesh m;
   CHECK(makeBuiltinPrimitive("none", m));  // I("none") places nothing
   CHECK(m.triangleCount() == 0);

@@ -572,3 +572,97 @@ TEST_CASE("meshes without texture coordinates write none", "[writers][texcoords]
     CHECK_THAT(error, Catch::Contains("texture coordinate of vertex 3 is not finite"));
   }
 }
+
+namespace {
+
+// Two cubes and three lines (asset "line", turtle segments "lines"): one from (5, 0, 0) 2
+// long along Y, one turned to run along X from (0, 4, 0), and one scaled to no length
+// (dropped by the assembler).
+Mesh meshWithLines() {
+  InstanceList list;
+  list.assets = {"cube", "line"};
+  const auto place = [&](uint32_t asset, std::array<double, 16> t) {
+    Instance inst;
+    inst.asset = asset;
+    inst.transform = t;
+    inst.color = {0.2f, 0.4f, 0.6f};
+    list.instances.push_back(inst);
+  };
+  place(0, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+  place(1, {1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1});
+  place(1, {0, -1, 0, 0, 3, 0, 0, 0, 0, 0, 1, 0, 0, 4, 0, 1});  // Y turned onto X
+  place(1, {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 9, 9, 9, 1});   // no length
+  place(0, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1});
+  AssetLibrary lib;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(resolveAssets(list, lib, meshOf, error));
+  return assembleInstances(list, lib, meshOf);
+}
+
+std::array<float, 3> vertexAt(const Mesh& m, uint32_t v) {
+  return {m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
+}
+
+}  // namespace
+
+TEST_CASE("line segments are assembled in instance order and zero-length ones dropped", "[writers][lines]") {
+  const Mesh m = meshWithLines();
+  REQUIRE(m.lineCount() == 2);
+  CHECK(m.triangleCount() == 24);
+  CHECK(m.vertexCount() == 24 + 24 + 4);
+  CHECK(vertexAt(m, m.lines[0]) == std::array<float, 3>{5, 0, 0});
+  CHECK(vertexAt(m, m.lines[1]) == std::array<float, 3>{5, 2, 0});
+  CHECK(vertexAt(m, m.lines[2]) == std::array<float, 3>{0, 4, 0});
+  CHECK(vertexAt(m, m.lines[3]) == std::array<float, 3>{3, 4, 0});
+  // The second cube's vertices come after the lines' (list order).
+  CHECK(*std::max_element(m.indices.begin(), m.indices.end()) == m.vertexCount() - 1);
+  CHECK(m.lines[0] == 24);
+}
+
+TEST_CASE("GLB writes line segments as a LINES primitive and validates", "[writers][lines][gltf]") {
+  const fs::path dir = scratchDir("glb_lines");
+  const Mesh m = meshWithLines();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "lines.glb").string(), error));
+  const Glb g = parseGlb(readFile(dir / "lines.glb"));
+  const auto& prims = g.json["meshes"][0]["primitives"];
+  REQUIRE(prims.size() == 2);
+  CHECK(prims[0]["mode"] == 4);
+  CHECK(prims[1]["mode"] == 1);
+  CHECK(prims[1]["attributes"] == prims[0]["attributes"]);
+  const auto& acc = g.json["accessors"][prims[1]["indices"].get<int>()];
+  CHECK(acc["count"] == 4);
+  // The line indices are the last bytes of the BIN chunk.
+  REQUIRE(g.bin.size() >= 16);
+  CHECK(std::memcmp(g.bin.data() + g.bin.size() - 16, m.lines.data(), 16) == 0);
+  requireValidGltf(dir / "lines.glb");
+
+  Mesh linesOnly;
+  linesOnly.positions = m.positions;
+  linesOnly.normals = m.normals;
+  linesOnly.colors = m.colors;
+  linesOnly.lines = m.lines;
+  REQUIRE(io::writeMesh(linesOnly, (dir / "only.glb").string(), error));
+  const Glb only = parseGlb(readFile(dir / "only.glb"));
+  REQUIRE(only.json["meshes"][0]["primitives"].size() == 1);
+  CHECK(only.json["meshes"][0]["primitives"][0]["mode"] == 1);
+  requireValidGltf(dir / "only.glb");
+}
+
+TEST_CASE("OBJ writes l lines and PLY an edge element", "[writers][lines]") {
+  const fs::path dir = scratchDir("obj_ply_lines");
+  const Mesh m = meshWithLines();
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "lines.obj").string(), error));
+  REQUIRE(io::writeMesh(m, (dir / "lines.ply").string(), error));
+  const std::string obj = readFile(dir / "lines.obj");
+  CHECK_THAT(obj, Catch::EndsWith("\nl 25 26\nl 27 28\n"));  // after the faces, counted from 1
+  const std::string ply = readFile(dir / "lines.ply");
+  CHECK_THAT(ply, Catch::Contains("property list uchar uint vertex_indices\nelement edge 2\n"
+                                  "property uint vertex1\nproperty uint vertex2\nend_header\n"));
+  const size_t header = ply.find("end_header\n") + 11;
+  REQUIRE(ply.size() == header + m.vertexCount() * 27 + m.triangleCount() * 13 + 2 * 8);
+  CHECK(std::memcmp(ply.data() + ply.size() - 16, m.lines.data(), 16) == 0);
+  checkReadBack(m, dir / "lines.ply", true);  // OpenMesh still reads the triangles
+}
