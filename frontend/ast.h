@@ -201,6 +201,11 @@ struct TurtleDecl {  // turtle angle 60 step 1 width 0.05;
   std::vector<std::pair<std::string, ExprPtr>> settings;
 };
 
+struct IgnoreDecl {  // #ignore: + - F;
+  SourceRange range;
+  std::vector<std::pair<std::string, SourceRange>> symbols;
+};
+
 // One word of a `collision` declaration: a name (`all`, `centre` ...) or a number (a
 // radius; negative when written with '-').
 struct CollisionWord {
@@ -230,6 +235,7 @@ struct Program {
   std::vector<TilesetDecl> tilesets;
   std::vector<DeriveDecl> derives;
   std::vector<TurtleDecl> turtles;
+  std::vector<IgnoreDecl> ignores;
   std::vector<CollisionDecl> collisions;
   std::vector<AxiomDecl> axioms;
 };

@@ -69,6 +69,7 @@ void AstBuilder::addStatement(P::StatementContext* ctx) {
   else if (auto* c = ctx->tilesetDecl()) program_.tilesets.push_back(buildTilesetDecl(c));
   else if (auto* c = ctx->deriveDecl()) program_.derives.push_back(buildDeriveDecl(c));
   else if (auto* c = ctx->turtleDecl()) program_.turtles.push_back(buildTurtleDecl(c));
+  else if (auto* c = ctx->ignoreDecl()) program_.ignores.push_back(buildIgnoreDecl(c));
   else if (auto* c = ctx->collisionDecl()) program_.collisions.push_back(buildCollisionDecl(c));
   else if (auto* c = ctx->axiomDecl()) program_.axioms.push_back(buildAxiomDecl(c));
   else if (auto* c = ctx->priorityDecl()) applyPriorityDecl(c);
@@ -216,6 +217,13 @@ DeriveDecl AstBuilder::buildDeriveDecl(P::DeriveDeclContext* ctx) {
   return d;
 }
 
+IgnoreDecl AstBuilder::buildIgnoreDecl(P::IgnoreDeclContext* ctx) {
+  IgnoreDecl d;
+  d.range = rangeOf(ctx);
+  for (auto* s : ctx->ignoredSymbol()) d.symbols.emplace_back(s->getText(), rangeOf(s));
+  return d;
+}
+
 TurtleDecl AstBuilder::buildTurtleDecl(P::TurtleDeclContext* ctx) {
   TurtleDecl d;
   d.range = rangeOf(ctx);
@@ -300,7 +308,7 @@ ModulePattern AstBuilder::buildModulePattern(P::ModulePatternContext* ctx) {
   ModulePattern m;
   if (!ctx) return m;
   m.range = rangeOf(ctx);
-  m.name = text(ctx->name);
+  m.name = ctx->turtle ? ctx->turtle->getText() : text(ctx->name);
   for (auto* param : ctx->paramDecl()) {
     m.params.push_back({param->getText(), rangeOf(param)});
   }

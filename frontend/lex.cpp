@@ -85,7 +85,7 @@ bool isStatementKeyword(size_t type) {
   switch (type) {
     case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
     case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE:
-    case FgsgLexer::TURTLE: case FgsgLexer::COLLISION: case FgsgLexer::AXIOM:
+    case FgsgLexer::TURTLE: case FgsgLexer::IGNORE: case FgsgLexer::COLLISION: case FgsgLexer::AXIOM:
     case FgsgLexer::PRIORITY:
       return true;
     default:
@@ -152,12 +152,24 @@ class ImplicitSemicolons {
 
   bool firstOnLine(size_t i) const { return i == 0 || t_[i]->getLine() > t_[i - 1]->getLine(); }
 
+  // A module of a rule head: a name, or a turtle symbol that has rules (`+ -> -`).
+  bool isModule(size_t ty) const {
+    switch (ty) {
+      case FgsgLexer::ID: case FgsgLexer::PLUS: case FgsgLexer::MINUS: case FgsgLexer::AMP:
+      case FgsgLexer::CARET: case FgsgLexer::BACKSLASH: case FgsgLexer::SLASH: case FgsgLexer::PIPE:
+      case FgsgLexer::BANG:
+        return true;
+      default:
+        return false;
+    }
+  }
+
   // `label :`, `Pred(params) ~>`, `Pred >`, `Left Ctx <`, `Pred : guard ~>`.
   bool startsRuleHead(size_t i) const {
     if (type(i) == FgsgLexer::INT && type(i + 1) == FgsgLexer::COLON) return true;
     size_t j = i;
     int modules = 0;
-    while (type(j) == FgsgLexer::ID) {
+    while (isModule(type(j))) {
       ++j;
       ++modules;
       if (type(j) == FgsgLexer::LPAREN && !skipParens(j)) return false;

@@ -20,6 +20,10 @@ const char* valueTypeName(ValueType t) {
 }
 
 bool isShapeItem(const Item& item, const SemaResult& sema) {
+  if (item.kind == ItemKind::Turtle) {  // a turtle symbol with rules (`+ -> -`)
+    const int s = sema.findSymbol(item.name);
+    return s >= 0 && !sema.symbols[s].rules.empty();
+  }
   if (item.kind != ItemKind::Call) return false;
   if (!findCommand(item.name)) return true;
   int s = sema.findSymbol(item.name);
@@ -37,6 +41,7 @@ bool Analyzer::run() {
   collectTilesets();         // sema_tilesets.cpp
   collectCollision();        // sema_collision.cpp
   collectSymbols();          // sema_symbols.cpp
+  collectIgnored();          // sema_symbols.cpp
   inferParameterTypes();     // sema_symbols.cpp
   checkRules();              // sema_rules.cpp, sema_commands.cpp, sema_expressions.cpp
   checkStart();              // sema_reachability.cpp

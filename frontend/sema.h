@@ -117,6 +117,8 @@ struct SemaResult {
   // `derive parallel n;` with an attr n: the attr that gives N when the grammar runs
   // (--set n=9); steps / depthBound hold its default. Empty: N is a constant.
   std::string countAttr;
+  // `#ignore: + - F;`: the symbols of the grammar context matching steps over.
+  std::vector<std::string> contextIgnored;
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
   std::string turtleSegments = "cylinders";  // `turtle segments "tubes";`
   int turtleSides = 8;

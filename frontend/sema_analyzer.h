@@ -55,6 +55,7 @@ class Analyzer {
   SymbolInfo& symbol(const std::string& name, const SourceRange& at);
   void useArity(const std::string& name, size_t arity, const SourceRange& at, bool isRuleHead);
   void collectSymbols();
+  void collectIgnored();
   void collectSuccessorSymbols(const Successor& s);
   void collectItemSymbols(const Item& item);
   std::vector<std::pair<std::string, ValueType>> ruleParamList(const Rule& r) const;

@@ -90,7 +90,7 @@ void Analyzer::checkReachability() {
       onItem(item);
       if (item.kind == ItemKind::Bracket)
         for (const auto& c : item.children) visit(c);
-      if (item.kind == ItemKind::Call && isShapeItem(item, res_)) mark(res_.findSymbol(item.name));
+      if (isShapeItem(item, res_)) mark(res_.findSymbol(item.name));
       for (const auto& b : item.body)
         for (const auto& c : b.items) visit(c);
     };

@@ -86,6 +86,10 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
       for (const auto& c : item.children) checkItem(c, w);
       return;
     case ItemKind::Turtle:
+      if (isShapeItem(item, res_)) {  // rewritten by its rules, drawn after the last step
+        checkShapeItem(item, w);
+        return;
+      }
       if ((item.name == "$" || item.name == "%") && !item.args.empty())
         diags_.error("E016", item.range, "turtle symbol '" + item.name + "' takes no argument");
       if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");

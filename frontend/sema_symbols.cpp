@@ -57,6 +57,22 @@ void Analyzer::collectSymbols() {
   for (const auto& a : prog_.axioms) collectSuccessorSymbols(a.successor);
 }
 
+// ABOP's #ignore: a name must be a symbol of the grammar, or F, f or a turtle symbol
+// (commands, which context matching always steps over); anything else is likely a typo.
+void Analyzer::collectIgnored() {
+  for (const auto& d : prog_.ignores)
+    for (const auto& [name, range] : d.symbols) {
+      if (res_.findSymbol(name) >= 0) {
+        res_.contextIgnored.push_back(name);
+        continue;
+      }
+      const bool command = name == "F" || name == "f" || (name.size() == 1 && std::string("+-&^\\/|!$%").find(name[0]) != std::string::npos);
+      if (command) continue;
+      diags_.warning("W006", range,
+                     "'#ignore' names '" + name + "', which is no symbol of this grammar: nothing is ignored for it");
+    }
+}
+
 void Analyzer::collectSuccessorSymbols(const Successor& s) {
   for (const auto& item : s.items) collectItemSymbols(item);
 }

@@ -24,6 +24,7 @@ statement
   | tilesetDecl
   | deriveDecl
   | turtleDecl
+  | ignoreDecl
   | collisionDecl
   | axiomDecl
   | priorityDecl
@@ -71,6 +72,10 @@ deriveDecl  : DERIVE order=ID steps=expr? ';' ;
 turtleDecl  : TURTLE turtleSetting* ';' ;
 turtleSetting : name=ID value=expr ;
 
+// ABOP's `#ignore: + - F;`: symbols that context matching steps over.
+ignoreDecl  : IGNORE ':'? ignoredSymbol+ ';' ;
+ignoredSymbol : ID | turtleSymbol ;
+
 // `collision all centre 0.25;`: words and radii in any order; the front end checks them
 // (a radius follows `centre` / `geodesic`; a '-' is accepted so that a negative radius
 // gets a clear message instead of a syntax error).
@@ -98,7 +103,9 @@ leftContext  : modulePattern+ ;
 rightContext : contextModule+ ;
 contextModule : modulePattern | open='[' | close=']' ;
 
-modulePattern : name=ID ( '(' ( paramDecl ( ',' paramDecl )* )? ')' )? ;
+// A turtle symbol may be rewritten too (ABOP's `+ -> -`, rules for `!(w)`).
+modulePattern : ( name=ID | turtle=turtleSymbol ) ( '(' ( paramDecl ( ',' paramDecl )* )? ')' )? ;
+turtleSymbol : '+' | '-' | '&' | '^' | '\\' | '/' | '|' | '!' ;
 paramDecl : ID ;
 
 // Müller's guarded form `pred ~> guard ~> succ : p ~> succ : p`: the part after the
@@ -180,6 +187,7 @@ TEXTURE  : 'texture' ;
 TILESET  : 'tileset' ;
 DERIVE   : 'derive' ;
 TURTLE   : 'turtle' ;
+IGNORE   : '#ignore' ;
 COLLISION: 'collision' ;
 AXIOM    : 'axiom' ;
 PRIORITY : 'priority' | 'PRIORITY' ;

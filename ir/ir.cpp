@@ -12,6 +12,25 @@ const char* typeName(Type t) {
   return "?";
 }
 
+int turtleOpNamed(const std::string& name) {
+  if (name == "F") return int(TurtleOp::Forward);
+  if (name == "f") return int(TurtleOp::Move);
+  if (name.size() != 1) return -1;
+  switch (name[0]) {
+    case '+': return int(TurtleOp::Left);
+    case '-': return int(TurtleOp::Right);
+    case '&': return int(TurtleOp::PitchDown);
+    case '^': return int(TurtleOp::PitchUp);
+    case '\\': return int(TurtleOp::RollLeft);
+    case '/': return int(TurtleOp::RollRight);
+    case '|': return int(TurtleOp::TurnAround);
+    case '!': return int(TurtleOp::Width);
+    case '$': return int(TurtleOp::RollHorizontal);
+    case '%': return int(TurtleOp::Cut);
+    default: return -1;
+  }
+}
+
 Expr Expr::number(double v) {
   Expr e;
   e.type = Type::Num;

@@ -139,6 +139,10 @@ enum class TurtleOp : uint8_t {
   Cut,             // %: a parallel derivation drops the rest of the branch after each step
 };
 
+// The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the
+// turtle reads a rewritten turtle symbol in a parallel derivation's final string.
+int turtleOpNamed(const std::string& name);
+
 struct Op;
 using Block = std::vector<Op>;
 
@@ -318,6 +322,8 @@ struct Module {
   // -1: the count is a constant.
   int countAttr = -1;
   TurtleSettings turtle;
+  // `#ignore: + - F;`: symbols context matching steps over (commands are always skipped).
+  std::vector<uint32_t> contextIgnored;
   CollisionSettings collision;
   SurfaceSpec surface;
   std::vector<FieldSpec> fields;

@@ -59,6 +59,7 @@ class Lowerer {
                  : sema_.turtleSegments == "lines"   ? TurtleSegments::Lines
                                                      : TurtleSegments::Cylinders,
                  sema_.turtleSides};
+    for (const std::string& name : sema_.contextIgnored) m_.contextIgnored.push_back(symbolIndex(name));
     lowerCollision();
     return std::move(m_);
   }
@@ -230,6 +231,7 @@ class Lowerer {
         return;
       }
       case ItemKind::Turtle:
+        if (isShapeItem(item, sema_)) break;  // a turtle symbol with rules: a shape (below)
         op.kind = OpKind::Turtle;
         op.index = static_cast<uint32_t>(turtleOp(item.name));
         for (const auto& a : item.args) op.args.push_back(expr(*a));

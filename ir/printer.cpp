@@ -93,6 +93,11 @@ class Printer {
       line(0, "turtle segments tubes sides " + std::to_string(m_.turtle.sides));
     if (m_.turtle.segments == TurtleSegments::Ribbons) line(0, "turtle segments ribbons");
     if (m_.turtle.segments == TurtleSegments::Lines) line(0, "turtle segments lines");
+    if (!m_.contextIgnored.empty()) {
+      std::string ignore = "#ignore:";
+      for (uint32_t s : m_.contextIgnored) ignore += " " + m_.symbols[s].name;
+      line(0, ignore);
+    }
     if (m_.collision.all || m_.collision.omit || m_.collision.metric != CollisionMetric::Mesh) {
       std::string c = "collision";
       if (m_.collision.all) c += " all";

@@ -303,10 +303,11 @@ void Derivation::bind(const ir::ContextModule& cm, const ModuleString& str, size
   }
 }
 
-// ABOP left context: walk left over symbols, skipping commands and whole branches,
-// and stepping out of the current branch into its parent.
+// ABOP left context: walk left over symbols, skipping commands, #ignore'd symbols and
+// whole branches, and stepping out of the current branch into its parent.
 bool Derivation::matchLeft(const ir::Rule& r, const ModuleString& str, size_t at) {
   const auto kind = [&](long j) { return plan_[str.modules[j].op].kind; };
+  const auto sees = [&](long j) { return plan_[str.modules[j].op].contextSymbol; };
   long j = static_cast<long>(at) - 1;
   for (long p = static_cast<long>(r.left.size()) - 1; p >= 0; --p) {
     const ir::ContextModule& cm = r.left[p];
@@ -320,7 +321,7 @@ bool Derivation::matchLeft(const ir::Rule& r, const ModuleString& str, size_t at
           if (kind(j) == ir::OpKind::Push && --depth == 0) break;
         }
         --j;
-      } else if (k == ir::OpKind::Emit) {
+      } else if (k == ir::OpKind::Emit && sees(j)) {
         break;
       } else {
         --j;
@@ -334,9 +335,11 @@ bool Derivation::matchLeft(const ir::Rule& r, const ModuleString& str, size_t at
 }
 
 // ABOP right context: a pattern symbol may descend into branches of the string that
-// the pattern skips; a pattern ']' skips to the end of the current branch.
+// the pattern skips; a pattern ']' skips to the end of the current branch. Commands and
+// #ignore'd symbols are stepped over.
 bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t at) {
   const auto kind = [&](size_t j) { return plan_[str.modules[j].op].kind; };
+  const auto sees = [&](size_t j) { return kind(j) == ir::OpKind::Emit && plan_[str.modules[j].op].contextSymbol; };
   size_t j = at + 1;
   const size_t n = str.size();
   auto skipBranch = [&](size_t from) {  // from is a '['; returns the index after its ']'
@@ -349,7 +352,7 @@ bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t a
   };
   for (const auto& cm : r.right) {
     if (cm.bracket == 1) {
-      while (j < n && kind(j) != ir::OpKind::Emit && kind(j) != ir::OpKind::Push && kind(j) != ir::OpKind::Pop) ++j;
+      while (j < n && !sees(j) && kind(j) != ir::OpKind::Push && kind(j) != ir::OpKind::Pop) ++j;
       if (j >= n || kind(j) != ir::OpKind::Push) return false;
       ++j;
     } else if (cm.bracket == -1) {
@@ -365,7 +368,7 @@ bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t a
       if (j >= n) return false;
       ++j;
     } else {
-      while (j < n && kind(j) != ir::OpKind::Emit) {
+      while (j < n && !sees(j)) {
         if (kind(j) == ir::OpKind::Push)
           j = skipBranch(j);
         else if (kind(j) == ir::OpKind::Pop)

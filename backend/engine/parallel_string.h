@@ -103,7 +103,8 @@ struct StringOp {
   uint32_t childIndex = 0;  // a symbol: its position among its successor's symbols (Shape.index)
   uint32_t owner = UINT32_MAX;  // the symbol whose rule holds it (UINT32_MAX: the axiom)
   Rewrite rewrite = Rewrite::Keep;
-  int8_t draws = -1;        // a symbol F or f: the turtle command it is read as (ir::TurtleOp)
+  int8_t draws = -1;        // a symbol F, f, + ...: the turtle command it is read as (ir::TurtleOp)
+  bool contextSymbol = false;  // a symbol that context matching sees (not in #ignore)
   uint32_t successor = 0;   // Template: its index in StringOps::templates
 };
 

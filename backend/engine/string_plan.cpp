@@ -96,9 +96,9 @@ StringOps planString(const ir::Module& m, const ir::ProgramLayout& layout,
       if (op.kind == ir::OpKind::Emit) {
         so.childIndex = children++;
         so.argCount = m.symbols[op.index].slotCount;
-        const std::string& name = m.symbols[op.index].name;
-        if (name == "F") so.draws = static_cast<int8_t>(ir::TurtleOp::Forward);
-        if (name == "f") so.draws = static_cast<int8_t>(ir::TurtleOp::Move);
+        so.draws = static_cast<int8_t>(ir::turtleOpNamed(m.symbols[op.index].name));
+        so.contextSymbol = std::find(m.contextIgnored.begin(), m.contextIgnored.end(), op.index) ==
+                           m.contextIgnored.end();
       } else if (op.kind == ir::OpKind::Instance) {
         so.argCount = so.owner == UINT32_MAX ? 0 : m.symbols[so.owner].slotCount;
       } else if (op.kind != ir::OpKind::Unsupported) {

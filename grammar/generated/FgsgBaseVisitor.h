@@ -77,6 +77,14 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitIgnoreDecl(FgsgParser::IgnoreDeclContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
+  virtual antlrcpp::Any visitIgnoredSymbol(FgsgParser::IgnoredSymbolContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitCollisionDecl(FgsgParser::CollisionDeclContext *ctx) override {
     return visitChildren(ctx);
   }
@@ -118,6 +126,10 @@ public:
   }
 
   virtual antlrcpp::Any visitModulePattern(FgsgParser::ModulePatternContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
+  virtual antlrcpp::Any visitTurtleSymbol(FgsgParser::TurtleSymbolContext *ctx) override {
     return visitChildren(ctx);
   }
 

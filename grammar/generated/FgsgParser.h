@@ -14,28 +14,29 @@ class  FgsgParser : public antlr4::Parser {
 public:
   enum {
     CONST = 1, ATTR = 2, SURFACE = 3, FIELD = 4, TEXTURE = 5, TILESET = 6, 
-    DERIVE = 7, TURTLE = 8, COLLISION = 9, AXIOM = 10, PRIORITY = 11, TRUE = 12, 
-    FALSE = 13, EPSILON = 14, ARROW = 15, ASSIGN = 16, EQ = 17, NEQ = 18, 
-    LE = 19, GE = 20, LT = 21, GT = 22, AND = 23, OR = 24, PLUS = 25, MINUS = 26, 
-    STAR = 27, SLASH = 28, PERCENT = 29, CARET = 30, BANG = 31, AMP = 32, 
-    PIPE = 33, BACKSLASH = 34, DOLLAR = 35, TILDE = 36, QUESTION = 37, COLON = 38, 
-    SEMI = 39, COMMA = 40, DOT = 41, LPAREN = 42, RPAREN = 43, LBRACK = 44, 
-    RBRACK = 45, LBRACE = 46, RBRACE = 47, RELSIZE = 48, FLOAT = 49, INT = 50, 
-    ID = 51, STRING = 52, UNTERMINATED_STRING = 53, LINE_COMMENT = 54, BLOCK_COMMENT = 55, 
-    UNTERMINATED_COMMENT = 56, WS = 57, UNKNOWN_CHAR = 58
+    DERIVE = 7, TURTLE = 8, IGNORE = 9, COLLISION = 10, AXIOM = 11, PRIORITY = 12, 
+    TRUE = 13, FALSE = 14, EPSILON = 15, ARROW = 16, ASSIGN = 17, EQ = 18, 
+    NEQ = 19, LE = 20, GE = 21, LT = 22, GT = 23, AND = 24, OR = 25, PLUS = 26, 
+    MINUS = 27, STAR = 28, SLASH = 29, PERCENT = 30, CARET = 31, BANG = 32, 
+    AMP = 33, PIPE = 34, BACKSLASH = 35, DOLLAR = 36, TILDE = 37, QUESTION = 38, 
+    COLON = 39, SEMI = 40, COMMA = 41, DOT = 42, LPAREN = 43, RPAREN = 44, 
+    LBRACK = 45, RBRACK = 46, LBRACE = 47, RBRACE = 48, RELSIZE = 49, FLOAT = 50, 
+    INT = 51, ID = 52, STRING = 53, UNTERMINATED_STRING = 54, LINE_COMMENT = 55, 
+    BLOCK_COMMENT = 56, UNTERMINATED_COMMENT = 57, WS = 58, UNKNOWN_CHAR = 59
   };
 
   enum {
     RuleProgram = 0, RuleStatement = 1, RuleValueDecl = 2, RuleSurfaceDecl = 3, 
     RuleFieldDecl = 4, RuleFieldSource = 5, RuleFieldDesignItem = 6, RuleFieldDesignWord = 7, 
     RuleDesignValue = 8, RuleTextureDecl = 9, RuleTilesetDecl = 10, RuleTilesetItem = 11, 
-    RuleDeriveDecl = 12, RuleTurtleDecl = 13, RuleTurtleSetting = 14, RuleCollisionDecl = 15, 
-    RuleCollisionWord = 16, RuleAxiomDecl = 17, RulePriorityDecl = 18, RuleGrammarRule = 19, 
-    RuleRuleLabel = 20, RuleRuleHead = 21, RuleLeftContext = 22, RuleRightContext = 23, 
-    RuleContextModule = 24, RuleModulePattern = 25, RuleParamDecl = 26, 
-    RuleRuleBody = 27, RuleBranch = 28, RuleArrow = 29, RuleSuccessor = 30, 
-    RuleSequenceItem = 31, RuleItem = 32, RuleCallArgs = 33, RuleBody = 34, 
-    RuleBodyPart = 35, RuleExpr = 36, RulePrimary = 37, RuleNumber = 38
+    RuleDeriveDecl = 12, RuleTurtleDecl = 13, RuleTurtleSetting = 14, RuleIgnoreDecl = 15, 
+    RuleIgnoredSymbol = 16, RuleCollisionDecl = 17, RuleCollisionWord = 18, 
+    RuleAxiomDecl = 19, RulePriorityDecl = 20, RuleGrammarRule = 21, RuleRuleLabel = 22, 
+    RuleRuleHead = 23, RuleLeftContext = 24, RuleRightContext = 25, RuleContextModule = 26, 
+    RuleModulePattern = 27, RuleTurtleSymbol = 28, RuleParamDecl = 29, RuleRuleBody = 30, 
+    RuleBranch = 31, RuleArrow = 32, RuleSuccessor = 33, RuleSequenceItem = 34, 
+    RuleItem = 35, RuleCallArgs = 36, RuleBody = 37, RuleBodyPart = 38, 
+    RuleExpr = 39, RulePrimary = 40, RuleNumber = 41
   };
 
   FgsgParser(antlr4::TokenStream *input);
@@ -63,6 +64,8 @@ public:
   class DeriveDeclContext;
   class TurtleDeclContext;
   class TurtleSettingContext;
+  class IgnoreDeclContext;
+  class IgnoredSymbolContext;
   class CollisionDeclContext;
   class CollisionWordContext;
   class AxiomDeclContext;
@@ -74,6 +77,7 @@ public:
   class RightContextContext;
   class ContextModuleContext;
   class ModulePatternContext;
+  class TurtleSymbolContext;
   class ParamDeclContext;
   class RuleBodyContext;
   class BranchContext;
@@ -113,6 +117,7 @@ public:
     TilesetDeclContext *tilesetDecl();
     DeriveDeclContext *deriveDecl();
     TurtleDeclContext *turtleDecl();
+    IgnoreDeclContext *ignoreDecl();
     CollisionDeclContext *collisionDecl();
     AxiomDeclContext *axiomDecl();
     PriorityDeclContext *priorityDecl();
@@ -358,6 +363,35 @@ public:
 
   TurtleSettingContext* turtleSetting();
 
+  class  IgnoreDeclContext : public antlr4::ParserRuleContext {
+  public:
+    IgnoreDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *IGNORE();
+    antlr4::tree::TerminalNode *SEMI();
+    antlr4::tree::TerminalNode *COLON();
+    std::vector<IgnoredSymbolContext *> ignoredSymbol();
+    IgnoredSymbolContext* ignoredSymbol(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  IgnoreDeclContext* ignoreDecl();
+
+  class  IgnoredSymbolContext : public antlr4::ParserRuleContext {
+  public:
+    IgnoredSymbolContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *ID();
+    TurtleSymbolContext *turtleSymbol();
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  IgnoredSymbolContext* ignoredSymbol();
+
   class  CollisionDeclContext : public antlr4::ParserRuleContext {
   public:
     CollisionDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
@@ -517,9 +551,11 @@ public:
   class  ModulePatternContext : public antlr4::ParserRuleContext {
   public:
     antlr4::Token *name = nullptr;;
+    FgsgParser::TurtleSymbolContext *turtle = nullptr;;
     ModulePatternContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *ID();
+    TurtleSymbolContext *turtleSymbol();
     antlr4::tree::TerminalNode *LPAREN();
     antlr4::tree::TerminalNode *RPAREN();
     std::vector<ParamDeclContext *> paramDecl();
@@ -532,6 +568,25 @@ public:
   };
 
   ModulePatternContext* modulePattern();
+
+  class  TurtleSymbolContext : public antlr4::ParserRuleContext {
+  public:
+    TurtleSymbolContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *PLUS();
+    antlr4::tree::TerminalNode *MINUS();
+    antlr4::tree::TerminalNode *AMP();
+    antlr4::tree::TerminalNode *CARET();
+    antlr4::tree::TerminalNode *BACKSLASH();
+    antlr4::tree::TerminalNode *SLASH();
+    antlr4::tree::TerminalNode *PIPE();
+    antlr4::tree::TerminalNode *BANG();
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  TurtleSymbolContext* turtleSymbol();
 
   class  ParamDeclContext : public antlr4::ParserRuleContext {
   public:

@@ -50,6 +50,10 @@ public:
 
     virtual antlrcpp::Any visitTurtleSetting(FgsgParser::TurtleSettingContext *context) = 0;
 
+    virtual antlrcpp::Any visitIgnoreDecl(FgsgParser::IgnoreDeclContext *context) = 0;
+
+    virtual antlrcpp::Any visitIgnoredSymbol(FgsgParser::IgnoredSymbolContext *context) = 0;
+
     virtual antlrcpp::Any visitCollisionDecl(FgsgParser::CollisionDeclContext *context) = 0;
 
     virtual antlrcpp::Any visitCollisionWord(FgsgParser::CollisionWordContext *context) = 0;
@@ -71,6 +75,8 @@ public:
     virtual antlrcpp::Any visitContextModule(FgsgParser::ContextModuleContext *context) = 0;
 
     virtual antlrcpp::Any visitModulePattern(FgsgParser::ModulePatternContext *context) = 0;
+
+    virtual antlrcpp::Any visitTurtleSymbol(FgsgParser::TurtleSymbolContext *context) = 0;
 
     virtual antlrcpp::Any visitParamDecl(FgsgParser::ParamDeclContext *context) = 0;
 

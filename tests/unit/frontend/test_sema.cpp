@@ -438,3 +438,39 @@ TEST_CASE("derive parallel takes 0 to 2147483647 steps, larger is E029 with the 
   REQUIRE(t.diags.size() == 1);
   CHECK(has(t, "E027", 1, 19));
 }
+
+// ------------------------------------------------------------ ABOP turtle symbols
+
+TEST_CASE("rules for turtle symbols make them shape symbols, and #ignore names symbols", "[sema][abop]") {
+  auto a = analyse(R"(
+    derive parallel 3;
+    #ignore: + - F b Q;
+    axiom: F b + a;
+    a < b > a -> b;
+    + -> -;
+    !(w) -> !(w * 0.5);
+    b -> !(1) b;
+  )");
+  REQUIRE(a.ok);
+  const int plus = a.sema.findSymbol("+");
+  REQUIRE(plus >= 0);
+  CHECK(a.sema.symbols[plus].rules.size() == 1);
+  const int bang = a.sema.findSymbol("!");
+  REQUIRE(bang >= 0);
+  CHECK(a.sema.symbols[bang].params.size() == 1);
+  CHECK(a.sema.findSymbol("-") < 0);  // used, but no rule: still the turtle command
+  // + (which has a rule) and b are symbols; F and - are commands (always stepped
+  // over); Q is neither.
+  CHECK(a.sema.contextIgnored == std::vector<std::string>{"+", "b"});
+  CHECK(where(a, "W006") == std::vector<std::string>{"3:22"});
+  CHECK_THAT(messageOf(a, "W006"), Catch::Contains("'Q'"));
+
+  // A turtle symbol with rules keeps one arity, as every shape symbol does.
+  auto arity = analyse(R"(
+    derive parallel 1;
+    axiom: + +(30);
+    + -> -;
+  )");
+  CHECK_FALSE(arity.ok);
+  CHECK(has(arity, "E019"));
+}
