@@ -1,0 +1,41 @@
+#!/usr/bin/env python3
+"""ABOP Fig. 1.24a-f, the six bracketed OL-system plants, derived by an independent
+rewriter and compared segment by segment with what fgsg draws for
+examples/abop/fig1_24*.fgsg, at the book's n and one step less. The grammars are
+written here again from the book, not read from the examples.
+    plants.py FGSG REPO_ROOT
+"""
+import os
+import sys
+import tempfile
+
+from lsystem_reference import check
+
+# Fig. 1.24: n, delta, axiom, productions (ABOP p. 25).
+PLANTS = {
+    "a": (5, 25.7, "F", {"F": "F[+F]F[-F]F"}),
+    "b": (5, 20.0, "F", {"F": "F[+F]F[-F][F]"}),
+    "c": (4, 22.5, "F", {"F": "FF-[-F+F+F]+[+F-F-F]"}),
+    "d": (7, 20.0, "X", {"X": "F[+X]F[-X]+X", "F": "FF"}),
+    "e": (7, 25.7, "X", {"X": "F[+X][-X]FX", "F": "FF"}),
+    "f": (5, 22.5, "X", {"X": "F-[[X]+X]+F[+FX]-X", "F": "FF"}),
+}
+
+
+def derive(axiom, rules, n):
+    s = axiom
+    for _ in range(n):
+        s = "".join(rules.get(c, c) for c in s)
+    return s
+
+
+def main():
+    fgsg, root = sys.argv[1], sys.argv[2]
+    with tempfile.TemporaryDirectory() as folder:
+        for name, (n, angle, axiom, rules) in PLANTS.items():
+            grammar = os.path.join(root, "examples/abop/fig1_24%s.fgsg" % name)
+            for steps in (n - 1, n):
+                check(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder)
+
+
+main()
