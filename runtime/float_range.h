@@ -5,6 +5,7 @@
 
 #include "runtime/scope.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -28,5 +29,24 @@ inline double unitBoxReach(const Mat4& t) {
 
 // True when every vertex of an instance placed by `t` fits a 32-bit float.
 inline bool unitBoxFitsFloat(const Mat4& t) { return unitBoxReach(t) <= double(FLT_MAX); }
+
+// The quick test engines run first (a turtle places millions of segments): a coordinate
+// of the image ranges from its translation plus the negative entries of its row to the
+// translation plus the positive ones, so 12 additions bound it. True when that bound is
+// well inside float range (or NaN: false); unitBoxReach decides the rest exactly.
+inline bool unitBoxClearlyFitsFloat(const Mat4& t) {
+  double reach = 0.0;
+  bool finite = true;
+  for (int d = 0; d < 3; ++d) {
+    double hi = t(d, 3), lo = t(d, 3);
+    for (int k = 0; k < 3; ++k) {
+      hi += std::max(t(d, k), 0.0);  // NaN stays NaN (std::max returns its first)
+      lo += std::min(t(d, k), 0.0);
+    }
+    finite = finite && std::isfinite(hi) && std::isfinite(lo);  // a NaN entry makes both NaN
+    reach = std::max(reach, std::max(std::fabs(hi), std::fabs(lo)));
+  }
+  return finite && reach < 0.5 * double(FLT_MAX);
+}
 
 }  // namespace fgsg::rt

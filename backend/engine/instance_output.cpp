@@ -107,7 +107,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                         "this instance's scope is not finite (a parameter became NaN or "
                         "infinite, e.g. sqrt of a negative number or a division by zero)"};
   }
-  if (const double reach = rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
+  if (const double reach = rt::unitBoxClearlyFitsFloat(t) ? 0.0 : rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", reach);
     throw DeriveError{loc, "R005",
@@ -198,7 +198,7 @@ void Derivation::orderDirectInstances() {
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
-  std::vector<rt::Instance> instances;
+  rt::MeshArray<rt::Instance> instances;
   std::vector<double> params;
   instances.reserve(order.size());
   params.reserve(out_.params.size());

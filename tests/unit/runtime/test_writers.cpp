@@ -439,6 +439,37 @@ TEST_CASE("an instance whose vertices would overflow a float is detected", "[wri
   CHECK(unitBoxReach(t) == Approx(4e38));
   t(0, 3) = NAN;
   CHECK_FALSE(unitBoxFitsFloat(t));
+  CHECK_FALSE(unitBoxClearlyFitsFloat(t));
+  t(0, 3) = 0;
+  t(1, 2) = NAN;  // in the linear part
+  CHECK_FALSE(unitBoxFitsFloat(t));
+  CHECK_FALSE(unitBoxClearlyFitsFloat(t));
+}
+
+TEST_CASE("the quick float-range bound agrees with the corners", "[writers][outputs]") {
+  // Random affine maps over many scales: whenever the quick test passes, the exact reach
+  // (over the eight corners) is within float range, and the bound is the reach itself.
+  uint64_t state = 12345;
+  const auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1.0p-53;
+  };
+  int clear = 0, unclear = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Mat4 t = Mat4::Identity();
+    const double scale = std::pow(10.0, 10 * next() + 29);  // 1e29 .. 1e39, around the limit
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t(r, c) = (2 * next() - 1) * scale;
+    if (unitBoxClearlyFitsFloat(t)) {
+      ++clear;
+      REQUIRE(unitBoxReach(t) < 0.5000001 * double(FLT_MAX));
+    } else {
+      ++unclear;
+      CHECK(unitBoxReach(t) >= 0.4999999 * double(FLT_MAX));
+    }
+  }
+  CHECK(clear > 1000);
+  CHECK(unclear > 1000);
 }
 
 // ---- texture coordinates -----------------------------------------------------------------
