@@ -1,5 +1,6 @@
 #include "frontend/ast_builder.h"
 
+#include "frontend/builtins.h"
 #include "frontend/lex.h"
 
 #include <charconv>
@@ -388,18 +389,84 @@ void AstBuilder::sizesFromParts(Item& item) {
 }
 
 void AstBuilder::appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out) {
-  if (auto* item = ctx->item()) appendItem(item, out);
-  else appendTurtleSymbols(ctx, ctx->symbol, ctx->callArgs(), out);
+  if (auto* item = ctx->item()) {
+    appendItem(item, out);
+  } else if (ctx->polygon) {
+    Item brace;
+    brace.kind = ItemKind::Turtle;  // { }: turtle symbols of ABOP's polygons
+    brace.name = text(ctx->polygon);
+    brace.range = rangeOf(ctx);
+    out.push_back(std::move(brace));
+  } else {
+    appendTurtleSymbols(ctx, ctx->symbol, ctx->callArgs(), out);
+  }
 }
 
 void AstBuilder::appendItem(P::ItemContext* ctx, std::vector<Item>& out) {
   if (auto* call = dynamic_cast<P::CallItemContext*>(ctx)) {
+    if (appendNameThenPolygon(call, out)) return;
     out.push_back(buildCallItem(call));
+  } else if (auto* polygon = dynamic_cast<P::PolygonItemContext*>(ctx)) {
+    Item item;
+    item.kind = ItemKind::Turtle;  // `.`: a vertex of ABOP's polygons
+    item.name = text(polygon->polygon);
+    item.range = rangeOf(ctx);
+    out.push_back(std::move(item));
   } else if (auto* turtle = dynamic_cast<P::TurtleItemContext*>(ctx)) {
     appendTurtleSymbols(turtle, turtle->symbol, turtle->callArgs(), out);
   } else if (auto* bracket = dynamic_cast<P::BracketItemContext*>(ctx)) {
     out.push_back(buildBracketItem(bracket));
   }
+}
+
+namespace {
+
+// Whether the tree holds a polygon vertex `.`.
+bool hasVertex(antlr4::tree::ParseTree* t) {
+  if (auto* p = dynamic_cast<fgsg_grammar::FgsgParser::PolygonItemContext*>(t)) return p->getText() == ".";
+  for (auto* child : t->children)
+    if (hasVertex(child)) return true;
+  return false;
+}
+
+}  // namespace
+
+// `A{.-f.+f.}`: a name that takes no body (a shape symbol, F, f ...) followed by a
+// polygon parses as a body; it is the name, then `{`, the parts' items with the `|`
+// between them (turtle symbols inside a polygon), then `}`. Only a body with a vertex
+// `.` is read so, and nothing a polygon cannot be (labelled or sized parts, `,`, `}*`):
+// anything else stays a body, for the usual messages (E018 on a shape symbol's body).
+bool AstBuilder::appendNameThenPolygon(P::CallItemContext* ctx, std::vector<Item>& out) {
+  auto* body = ctx->body();
+  if (!body || body->repeat || !hasVertex(body)) return false;
+  const CommandInfo* command = findCommand(text(ctx->name));
+  if (command && command->body != BodyRule::None) return false;
+  for (auto* part : body->bodyPart())
+    if (part->selector || part->size || part->EPSILON()) return false;
+  for (auto* child : body->children)
+    if (child->getText() == ",") return false;
+  Item name;
+  name.kind = ItemKind::Call;
+  name.range = rangeOf(ctx->name);
+  name.name = text(ctx->name);
+  name.args = buildCallArgs(ctx->callArgs());
+  if (auto* args = ctx->callArgs()) name.range.end = rangeOf(args).end;
+  out.push_back(std::move(name));
+  const auto symbol = [&](const std::string& s, antlr4::tree::TerminalNode* at) {
+    Item item;
+    item.kind = ItemKind::Turtle;
+    item.name = s;
+    item.range = rangeOf(at->getSymbol());
+    out.push_back(std::move(item));
+  };
+  for (auto* child : body->children) {
+    if (auto* part = dynamic_cast<P::BodyPartContext*>(child)) {
+      for (auto* item : part->item()) appendItem(item, out);
+    } else if (auto* token = dynamic_cast<antlr4::tree::TerminalNode*>(child)) {
+      symbol(token->getText(), token);  // {, | and }
+    }
+  }
+  return true;
 }
 
 Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {

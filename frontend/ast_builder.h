@@ -28,6 +28,7 @@ class AstBuilder {
   TilesetDecl buildTilesetDecl(P::TilesetDeclContext* ctx);
   DeriveDecl buildDeriveDecl(P::DeriveDeclContext* ctx);
   TurtleDecl buildTurtleDecl(P::TurtleDeclContext* ctx);
+  bool appendNameThenPolygon(P::CallItemContext* ctx, std::vector<Item>& out);
   IgnoreDecl buildIgnoreDecl(P::IgnoreDeclContext* ctx);
   CollisionDecl buildCollisionDecl(P::CollisionDeclContext* ctx);
   AxiomDecl buildAxiomDecl(P::AxiomDeclContext* ctx);

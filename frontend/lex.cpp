@@ -1,5 +1,7 @@
 #include "frontend/lex.h"
 
+#include "FgsgParser.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -100,7 +102,7 @@ bool expectsContinuation(size_t type) {
   switch (type) {
     case FgsgLexer::SEMI: case FgsgLexer::COLON: case FgsgLexer::ARROW: case FgsgLexer::ASSIGN:
     case FgsgLexer::LPAREN: case FgsgLexer::LBRACK: case FgsgLexer::LBRACE:
-    case FgsgLexer::COMMA: case FgsgLexer::DOT: case FgsgLexer::QUESTION:
+    case FgsgLexer::COMMA: case FgsgLexer::QUESTION:  // not DOT: a polygon vertex `.` may end a line
     case FgsgLexer::LT: case FgsgLexer::GT: case FgsgLexer::LE: case FgsgLexer::GE:
     case FgsgLexer::EQ: case FgsgLexer::NEQ: case FgsgLexer::AND: case FgsgLexer::OR:
     case FgsgLexer::STAR: case FgsgLexer::TILDE:
@@ -296,6 +298,20 @@ std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_p
   return out;
 }
 
+// A '.' is a member access only between two names, written together (`Scope.sx`,
+// `F1.value1`); any other is an ABOP polygon vertex (`{ . f . }`, `[ + A { . ] . C . }`).
+void markPolygonVertices(std::vector<std::unique_ptr<Token>>& tokens) {
+  const auto adjacent = [](const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); };
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    Token* dot = tokens[i].get();
+    if (dot->getType() != FgsgLexer::DOT) continue;
+    const bool member = i > 0 && i + 1 < tokens.size() && tokens[i - 1]->getType() == FgsgLexer::ID &&
+                        tokens[i + 1]->getType() == FgsgLexer::ID && adjacent(tokens[i - 1].get(), dot) &&
+                        adjacent(dot, tokens[i + 1].get());
+    if (!member) static_cast<antlr4::CommonToken*>(dot)->setType(fgsg_grammar::FgsgParser::VERTEX);
+  }
+}
+
 }  // namespace
 
 bool isImplicitSemicolon(const Token* token) {
@@ -331,6 +347,7 @@ LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
 
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
+  markPolygonVertices(tokens);
 
   const std::vector<size_t> semicolons = ImplicitSemicolons(tokens).positions();
   lexed.tokens.reserve(tokens.size() + semicolons.size());

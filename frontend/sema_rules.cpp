@@ -90,7 +90,8 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
         checkShapeItem(item, w);
         return;
       }
-      if ((item.name == "$" || item.name == "%") && !item.args.empty())
+      if ((item.name == "$" || item.name == "%" || item.name == "{" || item.name == "." || item.name == "}") &&
+          !item.args.empty())
         diags_.error("E016", item.range, "turtle symbol '" + item.name + "' takes no argument");
       if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");
       if (item.args.size() > 1)

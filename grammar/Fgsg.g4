@@ -12,6 +12,10 @@
 //    syntax error skips to the end of its statement and parsing resumes with the next.
 grammar Fgsg;
 
+// A '.' that is no member access (`Scope.sx`: a name, '.', a name, written together) is
+// an ABOP polygon vertex; the lexing step retypes it (frontend/lex.cpp).
+tokens { VERTEX }
+
 // ================================================================== parser
 
 program : statement* EOF ;
@@ -125,15 +129,23 @@ arrow : ARROW | '=' ;
 successor : EPSILON | sequenceItem+ ;
 
 // At sequence level '|' is a turtle symbol; inside `{ }` it separates body parts.
+// ABOP's polygons: `{` starts one, `.` (an item) records the turtle's position as a
+// vertex, `}` fills it. They need not nest with brackets (the cordate leaf
+// `[+A{.].C.}`), so `{` and `}` are items of their own, at sequence level only: inside a
+// body they would be read as the body's braces. A name directly followed by `{ ... }`
+// parses as a body; the front end reads it as a polygon when the name takes none and it
+// has a `.` (frontend/ast_builder.cpp).
 sequenceItem
   : item
   | symbol=( '|' | '||' ) callArgs?
+  | polygon=( '{' | '}' )
   ;
 
 item
   : name=ID callArgs? body?                                                   # callItem
   | symbol=( '+' | '-' | '&' | '&&' | '^' | '\\' | '/' | '!' | '$' | '%' ) callArgs? # turtleItem
   | '[' sequenceItem* ']'                                                     # bracketItem
+  | polygon=VERTEX                                                            # polygonItem
   ;
 
 callArgs : '(' ( expr ( ',' expr )* )? ')' ;

@@ -27,6 +27,9 @@ int turtleOpNamed(const std::string& name) {
     case '!': return int(TurtleOp::Width);
     case '$': return int(TurtleOp::RollHorizontal);
     case '%': return int(TurtleOp::Cut);
+    case '{': return int(TurtleOp::PolygonBegin);
+    case '.': return int(TurtleOp::PolygonVertex);
+    case '}': return int(TurtleOp::PolygonEnd);
     default: return -1;
   }
 }

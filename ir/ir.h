@@ -137,6 +137,9 @@ enum class TurtleOp : uint8_t {
   Width,       // !(w)
   RollHorizontal,  // $: roll about the heading until the left vector (scope X) is level (ABOP Fig. 2.6)
   Cut,             // %: a parallel derivation drops the rest of the branch after each step
+  PolygonBegin,    // {: ABOP's polygons (ch. 5): start collecting vertices
+  PolygonVertex,   // .: the turtle's position is the polygon's next vertex
+  PolygonEnd,      // }: fill the polygon
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the

@@ -233,7 +233,7 @@ class Lowerer {
       case ItemKind::Turtle:
         if (isShapeItem(item, sema_)) break;  // a turtle symbol with rules: a shape (below)
         op.kind = OpKind::Turtle;
-        op.index = static_cast<uint32_t>(turtleOp(item.name));
+        op.index = static_cast<uint32_t>(ir::turtleOpNamed(item.name));
         for (const auto& a : item.args) op.args.push_back(expr(*a));
         out.push_back(std::move(op));
         return;
@@ -423,21 +423,6 @@ class Lowerer {
   static uint32_t axisIndex(const std::string& s) {
     char c = s.empty() ? 'X' : s[0];
     return (c == 'Y' || c == 'y') ? 1 : (c == 'Z' || c == 'z') ? 2 : 0;
-  }
-
-  static TurtleOp turtleOp(const std::string& name) {
-    switch (name.empty() ? '+' : name[0]) {
-      case '+': return TurtleOp::Left;
-      case '-': return TurtleOp::Right;
-      case '&': return TurtleOp::PitchDown;
-      case '^': return TurtleOp::PitchUp;
-      case '\\': return TurtleOp::RollLeft;
-      case '/': return TurtleOp::RollRight;
-      case '|': return TurtleOp::TurnAround;
-      case '$': return TurtleOp::RollHorizontal;
-      case '%': return TurtleOp::Cut;
-      default: return TurtleOp::Width;  // '!'
-    }
   }
 
   std::string constString(const frontend::Expr& e) const {

@@ -37,6 +37,15 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       if (n > 0) st.width = args[0];
       break;
     case TurtleOp::RollHorizontal: rollHorizontal(st.scope); break;
+    case TurtleOp::PolygonBegin: polygons_.emplace_back(); break;
+    case TurtleOp::PolygonVertex:
+      if (!polygons_.empty()) polygons_.back().push_back(st.scope.P);  // outside a polygon: nothing
+      break;
+    case TurtleOp::PolygonEnd:
+      if (polygons_.empty()) break;  // a `}` with no `{`: nothing to fill
+      d_.placePolygon(polygons_.back(), st.scope, loc);
+      polygons_.pop_back();
+      break;
     case TurtleOp::Cut:
       // A parallel derivation cuts its string after each step (cutBranches); a successor
       // of a sequential one has no rest of a branch in a string to cut.

@@ -1,9 +1,14 @@
 // The turtle (ABOP): F and f draw and move along the heading (scope Y), + - & ^ \ / |
-// turn, ! sets the width. A segment is a cylinder instance of the turtle's width.
+// turn, ! sets the width. A segment is a cylinder instance of the turtle's width (or what
+// `turtle segments` says). { . } are ABOP's polygons (ch. 5): `{` starts collecting
+// vertices, `.` adds the turtle's position, `}` fills them; polygons nest, and are
+// independent of [ ] (the cordate leaf `[+A{.].C.}` collects across branches).
 #pragma once
 
 #include "backend/commands/command_family.h"
 #include "backend/commands/scope_commands.h"
+
+#include <vector>
 
 namespace fgsg::backend {
 
@@ -31,6 +36,7 @@ class TurtleCommands final : public CommandFamily {
 
   Derivation& d_;
   ScopeCommands& scope_;
+  std::vector<std::vector<rt::Vec3>> polygons_;  // open polygons, innermost last
 };
 
 }  // namespace fgsg::backend

@@ -92,6 +92,10 @@ class Derivation final : public QueryHost {
   // or reaches past float range); I("none") adds nothing.
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
                      uint32_t paramCount, ir::Loc loc);
+  // An ABOP polygon (`{ . }`): its world-space vertices fanned into triangles from the
+  // first, output as geometry of its own in the turtle's colour (a leaf green unless
+  // Color says), under the symbol "polygon".
+  void placePolygon(const std::vector<rt::Vec3>& vertices, const rt::Scope& turtle, ir::Loc loc);
   // Registers a mesh the derivation built itself (an ornament, the mortar, a cell's box)
   // as an output asset named `name`: its index in the output's asset table. `builtIn`,
   // when given, receives the world box it was built in (placing the asset there puts it
@@ -293,6 +297,7 @@ class Derivation final : public QueryHost {
   rt::DeriveMessage depthWarning_;
   std::vector<std::array<float, 3>> symbolColor_;
   uint32_t segmentAsset_ = 0, segmentSymbol_ = 0, axiomSymbol_ = 0;
+  uint32_t polygonSymbol_ = UINT32_MAX;  // "polygon", when the grammar writes { }
   uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
   // Per grammar asset: it has texture coordinates, so a Texture above its I() draws on it.
   std::vector<uint8_t> assetHasTexcoords_;

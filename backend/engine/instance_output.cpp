@@ -51,9 +51,14 @@ void Derivation::initOutput() {
   for (size_t i = 0; i < m_.assets.size(); ++i)
     if (m_.assets[i] == "none") noneAsset_ = static_cast<uint32_t>(i);
   leavesOutput_ = ir::leavesOutputGeometry(m_);
-  if (leavesOutput_) {
+  const bool polygons = moduleUses([](const ir::Op& op) {
+    return op.kind == ir::OpKind::Turtle && op.index == static_cast<uint32_t>(ir::TurtleOp::PolygonEnd);
+  });
+  if (leavesOutput_ || polygons) {
     ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back(rt::kOwnGeometryAsset);
+  }
+  if (leavesOutput_) {
     leafCubeAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back("cube");
     leafQuadAsset_ = static_cast<uint32_t>(out_.assets.size());
@@ -66,6 +71,11 @@ void Derivation::initOutput() {
   axiomSymbol_ = static_cast<uint32_t>(out_.symbols.size());
   out_.symbols.push_back("axiom");
   symbolColor_.push_back(colorFor("axiom"));
+  if (polygons) {
+    polygonSymbol_ = static_cast<uint32_t>(out_.symbols.size());
+    out_.symbols.push_back("polygon");
+    symbolColor_.push_back({0.3f, 0.6f, 0.2f});  // ABOP's polygons are mostly leaves
+  }
   usesOcclusion_ = moduleUsesQuery(ir::Query::ScopeOcc);
   collide_.prepare(moduleUses([](const ir::Op& op) {
     return op.kind == ir::OpKind::Lock || (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain);
@@ -161,6 +171,27 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
     inst.texture = projection->texture;
     if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
+  out_.geometries.push_back(std::move(mesh));
+}
+
+void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::Scope& turtle, ir::Loc loc) {
+  if (vertices.size() < 3) return;  // nothing to fill
+  rt::Mesh mesh;
+  mesh.positions.resize(3 * vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v)
+    for (int d = 0; d < 3; ++d) mesh.positions[3 * v + d] = float(vertices[v][d]);
+  mesh.indices.resize(3 * (vertices.size() - 2));
+  for (uint32_t t = 0; t + 2 < vertices.size(); ++t)
+    mesh.indices[3 * t] = 0, mesh.indices[3 * t + 1] = t + 1, mesh.indices[3 * t + 2] = t + 2;
+  mesh.computeNormals();
+  // World coordinates: the instance's box is the unit box itself.
+  rt::Scope box;
+  box.colored = turtle.colored;
+  box.color = turtle.color;
+  const size_t before = out_.instances.size();
+  placeInstance(ownGeometryAsset_, box, polygonSymbol_, nullptr, 0, loc);
+  if (out_.instances.size() == before) return;
+  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
   out_.geometries.push_back(std::move(mesh));
 }
 

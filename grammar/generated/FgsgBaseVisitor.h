@@ -169,6 +169,10 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitPolygonItem(FgsgParser::PolygonItemContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitCallArgs(FgsgParser::CallArgsContext *ctx) override {
     return visitChildren(ctx);
   }

@@ -22,7 +22,8 @@ public:
     COLON = 39, SEMI = 40, COMMA = 41, DOT = 42, LPAREN = 43, RPAREN = 44, 
     LBRACK = 45, RBRACK = 46, LBRACE = 47, RBRACE = 48, RELSIZE = 49, FLOAT = 50, 
     INT = 51, ID = 52, STRING = 53, UNTERMINATED_STRING = 54, LINE_COMMENT = 55, 
-    BLOCK_COMMENT = 56, UNTERMINATED_COMMENT = 57, WS = 58, UNKNOWN_CHAR = 59
+    BLOCK_COMMENT = 56, UNTERMINATED_COMMENT = 57, WS = 58, UNKNOWN_CHAR = 59, 
+    VERTEX = 60
   };
 
   enum {
@@ -662,12 +663,15 @@ public:
   class  SequenceItemContext : public antlr4::ParserRuleContext {
   public:
     antlr4::Token *symbol = nullptr;;
+    antlr4::Token *polygon = nullptr;;
     SequenceItemContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     ItemContext *item();
     antlr4::tree::TerminalNode *PIPE();
     antlr4::tree::TerminalNode *OR();
     CallArgsContext *callArgs();
+    antlr4::tree::TerminalNode *LBRACE();
+    antlr4::tree::TerminalNode *RBRACE();
 
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
    
@@ -726,6 +730,15 @@ public:
     antlr4::tree::TerminalNode *DOLLAR();
     antlr4::tree::TerminalNode *PERCENT();
     CallArgsContext *callArgs();
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+  };
+
+  class  PolygonItemContext : public ItemContext {
+  public:
+    PolygonItemContext(ItemContext *ctx);
+
+    antlr4::Token *polygon = nullptr;
+    antlr4::tree::TerminalNode *VERTEX();
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
   };
 

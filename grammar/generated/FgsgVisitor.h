@@ -96,6 +96,8 @@ public:
 
     virtual antlrcpp::Any visitBracketItem(FgsgParser::BracketItemContext *context) = 0;
 
+    virtual antlrcpp::Any visitPolygonItem(FgsgParser::PolygonItemContext *context) = 0;
+
     virtual antlrcpp::Any visitCallArgs(FgsgParser::CallArgsContext *context) = 0;
 
     virtual antlrcpp::Any visitBody(FgsgParser::BodyContext *context) = 0;

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """ABOP Fig. 1.24a-f, the six bracketed OL-system plants, derived by an independent
 rewriter and compared segment by segment with what fgsg draws for
-examples/abop/fig1_24*.fgsg, at the book's n and one step less. The grammars are
+examples/abop/fig1_24*.fgsg, at the book's n and one step less; and Fig. 5.5a, the
+cordate leaf, polygon by polygon (examples/abop/fig5_5a.fgsg). The grammars are
 written here again from the book, not read from the examples.
     plants.py FGSG REPO_ROOT
 """
@@ -9,7 +10,7 @@ import os
 import sys
 import tempfile
 
-from lsystem_reference import check
+from lsystem_reference import check, check_polygons
 
 # Fig. 1.24: n, delta, axiom, productions (ABOP p. 25).
 PLANTS = {
@@ -20,6 +21,10 @@ PLANTS = {
     "e": (7, 25.7, "X", {"X": "F[+X][-X]FX", "F": "FF"}),
     "f": (5, 22.5, "X", {"X": "F-[[X]+X]+F[+FX]-X", "F": "FF"}),
 }
+
+
+# Fig. 5.5a, the cordate leaf: n, delta, axiom, productions (G written f).
+LEAF = (20, 10.0, "[A][B]", {"A": "[+A{.].C.}", "B": "[-B{.].C.}", "C": "fC"})
 
 
 def derive(axiom, rules, n):
@@ -36,6 +41,10 @@ def main():
             grammar = os.path.join(root, "examples/abop/fig1_24%s.fgsg" % name)
             for steps in (n - 1, n):
                 check(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder)
+        n, angle, axiom, rules = LEAF
+        grammar = os.path.join(root, "examples/abop/fig5_5a.fgsg")
+        for steps in (3, n):
+            check_polygons(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder)
 
 
 main()

@@ -471,6 +471,27 @@ TEST_CASE("successor items: calls, bodies, brackets, turtle symbols", "[parse][s
   CHECK_FALSE(f.hasBody);
 }
 
+TEST_CASE("ABOP polygons: { . } items, and a name followed by a polygon", "[parse][successor]") {
+  CHECK(onlyRule("A ~> [ + A { . ] . C . };") == "A ~> [ + A { . ] . C . }");
+  // `B{.-f.}`: B (which takes no body), then the polygon; `|` inside it is a turtle symbol.
+  CHECK(onlyRule("A ~> B{.-f.|-f.};") == "A ~> B { . - f . | - f . }");
+  CHECK(onlyRule("A ~> F(2){.f.};") == "A ~> F(2) { . f . }");
+  Parsed p = parseOk("A ~> L{.f.};");
+  const auto& items = p.program.rules[0].branches[0].successor.items;
+  REQUIRE(items.size() == 6);
+  CHECK(items[0].kind == ItemKind::Call);
+  CHECK_FALSE(items[0].hasBody);
+  CHECK(items[1].kind == ItemKind::Turtle);
+  CHECK(items[1].name == "{");
+  CHECK(items[2].name == ".");
+  CHECK(items[5].name == "}");
+  // A '.' between two names written together is a member access; any other a vertex.
+  CHECK(onlyRule("A : Scope.sx > 1 ~> B . C;") == "A : (> (. Scope sx) 1) ~> B . C");
+  // Without a vertex, or for a command that takes bodies, it stays a body.
+  CHECK(onlyRule("A ~> X{ B | C };") == "A ~> X{ B | C }");
+  CHECK(onlyRule("A ~> Lock{ B | C };") == "A ~> Lock{ B | C }");
+}
+
 TEST_CASE("the empty successor", "[parse][successor]") {
   for (const char* spelling : {"\u03B5", "epsilon", "NIL"}) {
     Parsed p = parseOk(std::string("A ~> ") + spelling + ";");
@@ -635,7 +656,7 @@ TEST_CASE("syntax error messages name what was expected in words", "[parse][erro
   CHECK(message("A ~> B : ;") == "expected an expression after 'A ~> B :', found ';'");
   CHECK(message("const x = a.b.c;").find("found '.'") != std::string::npos);
   // Never ANTLR's raw token sets.
-  for (const char* bad : {"A ~> B )", "@", "const = ;", "A : ~> B;", "field F = ;", "X ~> { }"}) {
+  for (const char* bad : {"A ~> B )", "@", "const = ;", "A : ~> B;", "field F = ;", "X ~> ( )"}) {
     Parsed p = parse(bad);
     CHECK_FALSE(p.ok);
     CHECK(p.printed.find("mismatched input") == std::string::npos);
