@@ -218,21 +218,11 @@ void Derivation::appendModules(uint32_t block, const ir::Block& ops, Frame& f, u
   }
 }
 
-// Ops a string can hold: symbols, scope and turtle commands, plain instances.
+// Ops a string can hold (stringHolds); the others are refused, saying why.
 void Derivation::checkParallelOp(const ir::Op& op) {
+  if (stringHolds(op)) return;
   switch (op.kind) {
-    case ir::OpKind::Emit:
-    case ir::OpKind::Translate:
-    case ir::OpKind::Rotate:
-    case ir::OpKind::RotateNormal:
-    case ir::OpKind::Scale:
-    case ir::OpKind::Push:
-    case ir::OpKind::Pop:
-    case ir::OpKind::Turtle:
-    case ir::OpKind::Color: return;
-    case ir::OpKind::Instance:
-      if (op.mode != ir::InstanceMode::Plain) sequentialOnly(op);
-      return;
+    case ir::OpKind::Instance: sequentialOnly(op);  // IC, IM
     case ir::OpKind::Unsupported: unsupported(op);
     case ir::OpKind::Lock:
     case ir::OpKind::Texture:  // textures only leaves' own geometry, which sequential CGA outputs

@@ -136,6 +136,10 @@ struct StringOps {
 StringOps planString(const ir::Module& m, const ir::ProgramLayout& layout,
                      const std::function<void(const ir::Expr&, double*, bool)>& store);
 
+// Whether a string can hold the modules `op` makes: symbols, scope and turtle commands,
+// plain instances (Derivation::checkParallelOp says why the others cannot).
+bool stringHolds(const ir::Op& op);
+
 // Whether `e` has one value for the whole derivation: constants and attributes, and
 // what is computed from them alone.
 bool isFixed(const ir::Expr& e);

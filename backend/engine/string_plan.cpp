@@ -13,22 +13,11 @@ bool allFixed(const std::vector<ir::Expr>& es) { return std::all_of(es.begin(), 
 
 // Ops a template may hold: what a string holds, with no argument taken from the module.
 bool templateOp(const ir::Op& op, const ir::Module& m, uint32_t owner) {
-  switch (op.kind) {
-    case ir::OpKind::Emit:
-    case ir::OpKind::Translate:
-    case ir::OpKind::Rotate:
-    case ir::OpKind::RotateNormal:
-    case ir::OpKind::Scale:
-    case ir::OpKind::Push:
-    case ir::OpKind::Pop:
-    case ir::OpKind::Turtle:
-    case ir::OpKind::Color:
-      return allFixed(op.args) &&
-             std::all_of(op.sizes.begin(), op.sizes.end(), [](const ir::Size& s) { return isFixed(s.value); });
-    case ir::OpKind::Instance:  // holds the owner's parameters, which vary unless there are none
-      return op.mode == ir::InstanceMode::Plain && m.symbols[owner].slotCount == 0;
-    default: return false;
-  }
+  if (!stringHolds(op)) return false;
+  if (op.kind == ir::OpKind::Instance)  // holds the owner's parameters, which vary unless there are none
+    return m.symbols[owner].slotCount == 0;
+  return allFixed(op.args) &&
+         std::all_of(op.sizes.begin(), op.sizes.end(), [](const ir::Size& s) { return isFixed(s.value); });
 }
 
 // The symbol's successor as a template, when it has one (see SuccessorTemplate).
@@ -65,6 +54,22 @@ bool makeTemplate(const ir::Module& m, const ir::ProgramLayout& layout, uint32_t
 }
 
 }  // namespace
+
+bool stringHolds(const ir::Op& op) {
+  switch (op.kind) {
+    case ir::OpKind::Emit:
+    case ir::OpKind::Translate:
+    case ir::OpKind::Rotate:
+    case ir::OpKind::RotateNormal:
+    case ir::OpKind::Scale:
+    case ir::OpKind::Push:
+    case ir::OpKind::Pop:
+    case ir::OpKind::Turtle:
+    case ir::OpKind::Color: return true;
+    case ir::OpKind::Instance: return op.mode == ir::InstanceMode::Plain;
+    default: return false;
+  }
+}
 
 bool isFixed(const ir::Expr& e) {
   switch (e.op) {

@@ -1,19 +1,25 @@
 """An independent reference for fgsg's L-systems: ABOP's 2D turtle, and the
-comparison of its segments with those fgsg writes (`turtle segments "lines"`, OBJ `l`
-lines). Shared by the ABOP checks in this folder."""
+comparison of its segments and polygons with those fgsg writes (`turtle segments
+"lines"`: OBJ `l` lines; polygons: `f` triangles). Shared by the ABOP checks in this
+folder."""
 import math
 import os
 import subprocess
 
 
-def polygons(s, angle):
-    """ABOP's { . }: per filled polygon its vertices (x, y), in the order '.' recorded them;
-    polygons nest and are independent of [ ]."""
+def turtle(s, angle):
+    """ABOP's 2D turtle, heading +Y, '+' turning left (Y towards -X) about +Z: F draws a
+    unit segment (x0, y0, x1, y1) and moves, f moves; { . } collect polygons, which nest
+    and are independent of [ ]: per filled polygon its vertices (x, y) in the order '.'
+    recorded them. Returns (segments, polygons)."""
     x, y, h = 0.0, 0.0, 90.0
-    stack, open_, done = [], [], []
+    stack, open_, segs, done = [], [], [], []
     for c in s:
         if c in "Ff":
-            x, y = x + math.cos(math.radians(h)), y + math.sin(math.radians(h))
+            nx, ny = x + math.cos(math.radians(h)), y + math.sin(math.radians(h))
+            if c == "F":
+                segs.append((x, y, nx, ny))
+            x, y = nx, ny
         elif c == "+":
             h += angle
         elif c == "-":
@@ -28,7 +34,7 @@ def polygons(s, angle):
             open_[-1].append((x, y))
         elif c == "}" and open_:
             done.append(open_.pop())
-    return done
+    return segs, done
 
 
 def fan_triangles(polygon_list, min_area=1e-12):
@@ -44,40 +50,21 @@ def fan_triangles(polygon_list, min_area=1e-12):
     return out
 
 
-def fgsg_triangles(fgsg, grammar, n, folder):
-    """The triangles of `fgsg run GRAMMAR --set n=N` as (x0, y0, x1, y1, x2, y2), from its OBJ."""
-    out = os.path.join(folder, "tri%d.obj" % n)
+def fgsg_obj(fgsg, grammar, n, folder):
+    """`fgsg run GRAMMAR --set n=N` written as OBJ: its vertices (x, y) and, per element
+    keyword ('f', 'l'), each element as its corners' coordinates joined in one tuple."""
+    out = os.path.join(folder, "out%d.obj" % n)
     subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
-    vertices, tris = [], []
+    vertices, elements = [], {"f": [], "l": []}
     with open(out) as f:
         for line in f:
             part = line.split()
             if part and part[0] == "v":
                 vertices.append((float(part[1]), float(part[2])))
-            elif part and part[0] == "f":
-                corners = [vertices[int(c.split("/")[0]) - 1] for c in part[1:4]]
-                tris.append(corners[0] + corners[1] + corners[2])
-    return tris
-
-
-def segments(s, angle):
-    """F as unit segments; heading +Y; '+' turns left (Y towards -X) about +Z."""
-    x, y, h = 0.0, 0.0, 90.0
-    stack, segs = [], []
-    for c in s:
-        if c == "F":
-            nx, ny = x + math.cos(math.radians(h)), y + math.sin(math.radians(h))
-            segs.append((x, y, nx, ny))
-            x, y = nx, ny
-        elif c == "+":
-            h += angle
-        elif c == "-":
-            h -= angle
-        elif c == "[":
-            stack.append((x, y, h))
-        elif c == "]":
-            x, y, h = stack.pop()
-    return segs
+            elif part and part[0] in elements:
+                corners = [vertices[int(c.split("/")[0]) - 1] for c in part[1:]]
+                elements[part[0]].append(sum(corners, ()))
+    return elements
 
 
 def unmatched(want, got, tolerance=1e-3):
@@ -108,39 +95,15 @@ def unmatched(want, got, tolerance=1e-3):
     return missing
 
 
-def fgsg_segments(fgsg, grammar, n, folder):
-    """The segments of `fgsg run GRAMMAR --set n=N` as (x0, y0, x1, y1), from its OBJ."""
-    out = os.path.join(folder, "plant%d.obj" % n)
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
-    vertices, segs = [], []
-    with open(out) as f:
-        for line in f:
-            part = line.split()
-            if part and part[0] == "v":
-                vertices.append((float(part[1]), float(part[2])))
-            elif part and part[0] == "l":
-                a, b = vertices[int(part[1]) - 1], vertices[int(part[2]) - 1]
-                segs.append((a[0], a[1], b[0], b[1]))
-    return segs
-
-
-def check(fgsg, grammar, n, string, angle, folder):
-    """Exits with a message unless fgsg draws exactly the segments of `string`."""
-    want = segments(string, angle)
-    got = fgsg_segments(fgsg, grammar, n, folder)
+def check(fgsg, grammar, n, string, angle, folder, polygons=False):
+    """Exits with a message unless fgsg draws exactly the segments of `string` (with
+    `polygons`: fills exactly its polygons)."""
+    segs, filled = turtle(string, angle)
+    want = fan_triangles(filled) if polygons else segs
+    got = fgsg_obj(fgsg, grammar, n, folder)["f" if polygons else "l"]
+    what = "triangles" if polygons else "segments"
     missing = unmatched(want, got)
     if len(want) != len(got) or missing:
-        raise SystemExit("FAIL: %s n=%d: fgsg drew %d segments, the reference %d (%d of the reference's missing)"
-                         % (os.path.basename(grammar), n, len(got), len(want), missing))
-    print("ok: %s n=%d, %d segments" % (os.path.basename(grammar), n, len(want)))
-
-
-def check_polygons(fgsg, grammar, n, string, angle, folder):
-    """Exits with a message unless fgsg fills exactly the polygons of `string`."""
-    want = fan_triangles(polygons(string, angle))
-    got = fgsg_triangles(fgsg, grammar, n, folder)
-    missing = unmatched(want, got)
-    if len(want) != len(got) or missing:
-        raise SystemExit("FAIL: %s n=%d: fgsg filled %d triangles, the reference %d (%d of the reference's missing)"
-                         % (os.path.basename(grammar), n, len(got), len(want), missing))
-    print("ok: %s n=%d, %d triangles" % (os.path.basename(grammar), n, len(want)))
+        raise SystemExit("FAIL: %s n=%d: fgsg has %d %s, the reference %d (%d of the reference's missing)"
+                         % (os.path.basename(grammar), n, len(got), what, len(want), missing))
+    print("ok: %s n=%d, %d %s" % (os.path.basename(grammar), n, len(want), what))

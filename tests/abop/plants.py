@@ -10,7 +10,7 @@ import os
 import sys
 import tempfile
 
-from lsystem_reference import check, check_polygons
+from lsystem_reference import check
 
 # Fig. 1.24: n, delta, axiom, productions (ABOP p. 25).
 PLANTS = {
@@ -44,7 +44,7 @@ def main():
         n, angle, axiom, rules = LEAF
         grammar = os.path.join(root, "examples/abop/fig5_5a.fgsg")
         for steps in (3, n):
-            check_polygons(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder)
+            check(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder, polygons=True)
 
 
 main()
