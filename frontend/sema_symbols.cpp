@@ -66,8 +66,8 @@ void Analyzer::collectIgnored() {
         res_.contextIgnored.push_back(name);
         continue;
       }
-      const bool command = name == "F" || name == "f" || (name.size() == 1 && std::string("+-&^\\/|!$%").find(name[0]) != std::string::npos);
-      if (command) continue;
+      const bool turtleSymbol = name.size() == 1 && std::string("+-&^\\/|!$%").find(name[0]) != std::string::npos;
+      if (name == "F" || name == "f" || turtleSymbol) continue;
       diags_.warning("W006", range,
                      "'#ignore' names '" + name + "', which is no symbol of this grammar: nothing is ignored for it");
     }

@@ -400,8 +400,8 @@ void Derivation::interpretString(const ModuleString& str) {
       case ir::OpKind::Emit:
         ++stats_.terminals;
         ++stats_.shapesCreated;
-        // ABOP: F and f are rewritten by rules and still draw and move when the turtle
-        // reads the final string; their first parameter is the length.
+        // ABOP: F, f and turtle symbols with rules (`+ -> -`) are rewritten and still act
+        // when the turtle reads the final string, with their first parameter.
         if (so.draws >= 0)
           turtle_.command(st, static_cast<ir::TurtleOp>(so.draws), a, std::min<uint32_t>(so.argCount, 1), op.loc);
         break;

@@ -59,7 +59,6 @@ class StringBuffer {
     size_ = n;
   }
   void truncate(size_t n) { size_ = n < size_ ? n : size_; }
-  size_t bytes() const { return capacity_ * sizeof(T); }
 
  private:
   void grow(size_t need) {
@@ -149,7 +148,6 @@ struct StringTarget {
   ModuleString* out;
   uint64_t key;     // the rewritten module's key (its children's keys derive from it)
   uint32_t owner;   // the symbol rewritten (UINT32_MAX: the axiom)
-  uint32_t child = 0;
   // The rewritten module's parameter slots: an instance its successor places records
   // them (Shape.params in --instances), as a sequential derivation's do.
   const double* ownerParams = nullptr;
