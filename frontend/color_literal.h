@@ -2,8 +2,10 @@
 // checker (E042 for anything else) and the lowering (three numbers 0..1).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
+#include <vector>
 
 namespace fgsg::frontend {
 
@@ -19,6 +21,21 @@ inline bool parseHexColor(const std::string& text, std::array<double, 3>& rgb) {
     rgb[size_t(k)] = (16 * hi + lo) / 255.0;
   }
   return true;
+}
+
+// "#rrggbb #rrggbb ..." (separated by spaces) -> the colours; false when it holds none or
+// anything else.
+inline bool parseHexColors(const std::string& text, std::vector<std::array<float, 3>>& out) {
+  out.clear();
+  size_t at = 0;
+  while ((at = text.find_first_not_of(' ', at)) != std::string::npos) {
+    const size_t end = std::min(text.find(' ', at), text.size());
+    std::array<double, 3> rgb;
+    if (!parseHexColor(text.substr(at, end - at), rgb)) return false;
+    out.push_back({float(rgb[0]), float(rgb[1]), float(rgb[2])});
+    at = end;
+  }
+  return !out.empty();
 }
 
 }  // namespace fgsg::frontend

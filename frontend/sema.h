@@ -122,6 +122,7 @@ struct SemaResult {
   double turtleAngle = 90.0, turtleStep = 1.0, turtleWidth = 0.1;
   std::string turtleSegments = "cylinders";  // `turtle segments "tubes";`
   int turtleSides = 8;
+  std::vector<std::array<float, 3>> turtleColors;  // `turtle colors "..."`; empty: the default palette
   // `collision ...;` (the first declaration): every I() tested (all), and the metric
   // "mesh", "centre" or "geodesic" with its radius (0 for mesh).
   bool collisionDeclared = false;

@@ -3,6 +3,7 @@
 // `field` and `texture` declarations (for queries), the surface count, `derive` and
 // `turtle`. The surface and field bodies themselves are sema_environment.cpp's.
 
+#include "frontend/color_literal.h"
 #include "frontend/sema_analyzer.h"
 #include "frontend/sema_environment.h"
 
@@ -111,6 +112,16 @@ void Analyzer::collectEnvironment() {
           diags_.error("E027", zero->range, "division by zero");
           continue;
         }
+      if (key == "colors") {  // `turtle colors "#5b3a1e #2f6b2f";`: the palette of '
+        std::vector<std::array<float, 3>> colors;
+        if (!expr || !evalConst(*expr, v) || v.type != ValueType::Str || !parseHexColors(v.str, colors)) {
+          diags_.error("E029", t.range,
+                       "turtle setting 'colors' needs a string of colours \"#rrggbb #rrggbb ...\" (at least one)");
+          continue;
+        }
+        res_.turtleColors = std::move(colors);
+        continue;
+      }
       if (key == "segments") {
         if (!expr || !evalConst(*expr, v) || v.type != ValueType::Str ||
             (v.str != "cylinders" && v.str != "tubes" && v.str != "ribbons" && v.str != "lines")) {
@@ -139,7 +150,7 @@ void Analyzer::collectEnvironment() {
         res_.turtleWidth = v.num;
       else
         diags_.error("E029", t.range,
-                     "unknown turtle setting '" + key + "' (expected angle, step, width, segments or sides)");
+                     "unknown turtle setting '" + key + "' (expected angle, step, width, segments, sides or colors)");
     }
   }
 }

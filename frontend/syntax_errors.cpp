@@ -120,7 +120,7 @@ std::string describeExpected(IntervalSet set, const antlr4::dfa::Vocabulary& voc
         "a rule or a declaration");
   // Where a successor may start, so may a Müller guard: "a successor" says enough.
   group({P::ID, P::LBRACK, P::PLUS}, {P::ID, P::LBRACK, P::PLUS, P::MINUS, P::AMP, P::AND, P::CARET,
-        P::BACKSLASH, P::SLASH, P::BANG, P::DOLLAR, P::PERCENT, P::PIPE, P::OR, P::EPSILON,
+        P::BACKSLASH, P::SLASH, P::BANG, P::DOLLAR, P::PERCENT, P::QUOTE, P::PIPE, P::OR, P::EPSILON,
         P::LPAREN, P::LBRACE, P::RBRACE, P::VERTEX, P::INT, P::FLOAT, P::RELSIZE, P::STRING, P::TRUE,
         P::FALSE, P::TILDE},
         "a successor");

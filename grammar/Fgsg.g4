@@ -143,7 +143,7 @@ sequenceItem
 
 item
   : name=ID callArgs? body?                                                   # callItem
-  | symbol=( '+' | '-' | '&' | '&&' | '^' | '\\' | '/' | '!' | '$' | '%' ) callArgs? # turtleItem
+  | symbol=( '+' | '-' | '&' | '&&' | '^' | '\\' | '/' | '!' | '$' | '%' | '\'' ) callArgs? # turtleItem
   | '[' sequenceItem* ']'                                                     # bracketItem
   | polygon=VERTEX                                                            # polygonItem
   ;
@@ -229,6 +229,7 @@ AMP      : '&' ;
 PIPE     : '|' ;
 BACKSLASH: '\\' ;
 DOLLAR   : '$' ;
+QUOTE    : '\'' ;
 TILDE    : '~' ;
 QUESTION : '?' ;
 COLON    : ':' ;

@@ -12,6 +12,11 @@ const char* typeName(Type t) {
   return "?";
 }
 
+std::vector<std::array<float, 3>> defaultTurtleColors() {
+  return {{0.36f, 0.25f, 0.13f}, {0.55f, 0.4f, 0.22f}, {0.16f, 0.36f, 0.12f}, {0.3f, 0.6f, 0.2f},
+          {0.56f, 0.8f, 0.35f},  {0.95f, 0.8f, 0.2f},  {0.8f, 0.15f, 0.15f},  {0.95f, 0.95f, 0.9f}};
+}
+
 int turtleOpNamed(const std::string& name) {
   if (name == "F") return int(TurtleOp::Forward);
   if (name == "f") return int(TurtleOp::Move);
@@ -30,6 +35,7 @@ int turtleOpNamed(const std::string& name) {
     case '{': return int(TurtleOp::PolygonBegin);
     case '.': return int(TurtleOp::PolygonVertex);
     case '}': return int(TurtleOp::PolygonEnd);
+    case '\'': return int(TurtleOp::ColorIndex);
     default: return -1;
   }
 }

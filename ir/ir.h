@@ -140,6 +140,7 @@ enum class TurtleOp : uint8_t {
   PolygonBegin,    // {: ABOP's polygons (ch. 5): start collecting vertices
   PolygonVertex,   // .: the turtle's position is the polygon's next vertex
   PolygonEnd,      // }: fill the polygon
+  ColorIndex,      // ': the next colour of `turtle colors` ('(n): colour n; 0: the default colours)
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the
@@ -219,6 +220,10 @@ struct Attr {
 
 enum class DeriveMode : uint8_t { BreadthFirst, DepthFirst, Parallel };
 
+// The colours `'` steps through unless `turtle colors "..."` says: browns, greens, a
+// yellow, a red, a white (a plant's bark, leaves, flowers).
+std::vector<std::array<float, 3>> defaultTurtleColors();
+
 // What a turtle segment (F) is drawn as: `turtle segments "tubes";`.
 enum class TurtleSegments : uint8_t {
   Cylinders,  // the built-in capped cylinder (32 sides, 128 triangles)
@@ -233,6 +238,8 @@ struct TurtleSettings {
   double width = 0.1;   // initial segment width
   TurtleSegments segments = TurtleSegments::Cylinders;
   int sides = 8;        // Tubes: sides around
+  // ABOP's colour index (`'`): colour i >= 1 is colors[(i - 1) % size], in [0,1].
+  std::vector<std::array<float, 3>> colors = defaultTurtleColors();
 };
 
 // An environment declaration the runtime must honour or refuse (surface, field, texture).

@@ -58,7 +58,8 @@ class Lowerer {
                  : sema_.turtleSegments == "ribbons" ? TurtleSegments::Ribbons
                  : sema_.turtleSegments == "lines"   ? TurtleSegments::Lines
                                                      : TurtleSegments::Cylinders,
-                 sema_.turtleSides};
+                 sema_.turtleSides,
+                 sema_.turtleColors.empty() ? defaultTurtleColors() : sema_.turtleColors};
     for (const std::string& name : sema_.contextIgnored) m_.contextIgnored.push_back(symbolIndex(name));
     lowerCollision();
     return std::move(m_);

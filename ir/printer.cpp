@@ -93,6 +93,11 @@ class Printer {
       line(0, "turtle segments tubes sides " + std::to_string(m_.turtle.sides));
     if (m_.turtle.segments == TurtleSegments::Ribbons) line(0, "turtle segments ribbons");
     if (m_.turtle.segments == TurtleSegments::Lines) line(0, "turtle segments lines");
+    if (m_.turtle.colors != defaultTurtleColors()) {
+      std::string colors = "turtle colors";
+      for (const auto& c : m_.turtle.colors) colors += " (" + printNumber(c[0]) + ", " + printNumber(c[1]) + ", " + printNumber(c[2]) + ")";
+      line(0, colors);
+    }
     if (!m_.contextIgnored.empty()) {
       std::string ignore = "#ignore:";
       for (uint32_t s : m_.contextIgnored) ignore += " " + m_.symbols[s].name;
@@ -340,7 +345,7 @@ class Printer {
       }
       case OpKind::Emit: text = "emit " + symbolName(op.index) + "(" + list(r, op.args) + ")"; break;
       case OpKind::Turtle: {
-        static const char* const kTurtle[] = {"F", "f", "+", "-", "&", "^", "\\", "/", "|", "!", "$", "%", "{", ".", "}"};
+        static const char* const kTurtle[] = {"F", "f", "+", "-", "&", "^", "\\", "/", "|", "!", "$", "%", "{", ".", "}", "'"};
         text = std::string("turtle ") +
                (op.index < std::size(kTurtle) ? kTurtle[op.index]
                                               : "turtle#" + std::to_string(op.index));

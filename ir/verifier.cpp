@@ -437,7 +437,7 @@ class Verifier {
         break;
       case OpKind::Emit: emit(op, r); break;
       case OpKind::Turtle:
-        if (op.index > static_cast<uint32_t>(TurtleOp::PolygonEnd))
+        if (op.index > static_cast<uint32_t>(TurtleOp::ColorIndex))
           problem("turtle op " + std::to_string(op.index) + " out of range");
         numArgs(op, r, std::min<size_t>(op.args.size(), 1));  // argument optional
         break;

@@ -36,6 +36,7 @@ struct Scope {
   // the shapes it creates; `colored` false: each instance takes its symbol's colour.
   bool colored = false;
   std::array<float, 3> color{0.8f, 0.8f, 0.8f};
+  int32_t colorIndex = 0;  // ABOP's `'`: the turtle's colour index (0: Color or the symbols' colours)
   // Texture(...): 1 + the index of the derivation's texture projection the leaves output
   // from this scope on are textured by (backend/commands/texture_commands.h); 0: none.
   uint32_t projection = 0;

@@ -46,6 +46,20 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       d_.placePolygon(polygons_.back(), st.scope, loc);
       polygons_.pop_back();
       break;
+    case TurtleOp::ColorIndex: {
+      // ABOP's ': the next colour of the palette, or '(i) colour i; 0 gives back the
+      // default colours. Saved and restored by [ ] with the scope.
+      const double i = n > 0 ? args[0] : double(st.scope.colorIndex) + 1;
+      if (!(i >= 0 && i < 1e9 && i == std::floor(i)))
+        throw DeriveError{loc, "R027", "a colour index must be a whole number from 0, not " + std::to_string(i)};
+      st.scope.colorIndex = int32_t(i);
+      st.scope.colored = st.scope.colorIndex > 0;
+      if (st.scope.colored) {
+        const auto& colors = m.turtle.colors;
+        st.scope.color = colors[size_t(st.scope.colorIndex - 1) % colors.size()];
+      }
+      break;
+    }
     case TurtleOp::Cut:
       // A parallel derivation cuts its string after each step (cutBranches); a successor
       // of a sequential one has no rest of a branch in a string to cut.

@@ -18,12 +18,12 @@ public:
     TRUE = 13, FALSE = 14, EPSILON = 15, ARROW = 16, ASSIGN = 17, EQ = 18, 
     NEQ = 19, LE = 20, GE = 21, LT = 22, GT = 23, AND = 24, OR = 25, PLUS = 26, 
     MINUS = 27, STAR = 28, SLASH = 29, PERCENT = 30, CARET = 31, BANG = 32, 
-    AMP = 33, PIPE = 34, BACKSLASH = 35, DOLLAR = 36, TILDE = 37, QUESTION = 38, 
-    COLON = 39, SEMI = 40, COMMA = 41, DOT = 42, LPAREN = 43, RPAREN = 44, 
-    LBRACK = 45, RBRACK = 46, LBRACE = 47, RBRACE = 48, RELSIZE = 49, FLOAT = 50, 
-    INT = 51, ID = 52, STRING = 53, UNTERMINATED_STRING = 54, LINE_COMMENT = 55, 
-    BLOCK_COMMENT = 56, UNTERMINATED_COMMENT = 57, WS = 58, UNKNOWN_CHAR = 59, 
-    VERTEX = 60
+    AMP = 33, PIPE = 34, BACKSLASH = 35, DOLLAR = 36, QUOTE = 37, TILDE = 38, 
+    QUESTION = 39, COLON = 40, SEMI = 41, COMMA = 42, DOT = 43, LPAREN = 44, 
+    RPAREN = 45, LBRACK = 46, RBRACK = 47, LBRACE = 48, RBRACE = 49, RELSIZE = 50, 
+    FLOAT = 51, INT = 52, ID = 53, STRING = 54, UNTERMINATED_STRING = 55, 
+    LINE_COMMENT = 56, BLOCK_COMMENT = 57, UNTERMINATED_COMMENT = 58, WS = 59, 
+    UNKNOWN_CHAR = 60, VERTEX = 61
   };
 
   enum {
@@ -729,6 +729,7 @@ public:
     antlr4::tree::TerminalNode *BANG();
     antlr4::tree::TerminalNode *DOLLAR();
     antlr4::tree::TerminalNode *PERCENT();
+    antlr4::tree::TerminalNode *QUOTE();
     CallArgsContext *callArgs();
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
   };

@@ -474,3 +474,16 @@ TEST_CASE("rules for turtle symbols make them shape symbols, and #ignore names s
   CHECK_FALSE(arity.ok);
   CHECK(has(arity, "E019"));
 }
+
+TEST_CASE("turtle colors: a string of #rrggbb colours", "[sema][abop]") {
+  auto good = analyse("turtle colors \"#ff0000  #00FF80\";\naxiom: F ' F;");
+  REQUIRE(good.ok);
+  REQUIRE(good.sema.turtleColors.size() == 2);
+  CHECK(good.sema.turtleColors[1][1] == 1.0f);
+  CHECK(good.sema.turtleColors[1][2] == Approx(128.0 / 255));
+  for (const char* bad : {"\"\"", "\"#ff00\"", "\"red\"", "3"}) {
+    INFO(bad);
+    auto a = analyse(std::string("turtle colors ") + bad + ";\naxiom: F;");
+    CHECK(has(a, "E029", 1));
+  }
+}
