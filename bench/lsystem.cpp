@@ -1,6 +1,7 @@
 // L-systems in process, the workloads the npm `lindenmayer` package was measured on (issue
 // #17: F -> FFF for 10 and 13 steps, ABOP Fig. 1.24d for 7 and 9), and a parametric one
-// (the Koch curve with lengths, Fig. 1.6's rule) that the JIT compiles: per workload the
+// (the Koch curve with lengths, Fig. 1.6's rule) that the JIT compiles and a context-sensitive
+// one (ABOP Fig. 1.31a, grown to 50 steps): per workload the
 // rewriting (modules of the final string per second of the rewriting steps), the turtle
 // (segments per second of the rest of the derivation) and the string's bytes per module
 // (16 per module plus 8 per argument). The interpreter and the JIT must agree exactly.
@@ -34,6 +35,15 @@ std::string fff(int n) { return "derive parallel " + std::to_string(n) + ";\naxi
 std::string fig124d(int n) {
   return "derive parallel " + std::to_string(n) +
          ";\nturtle angle 20;\naxiom: X;\nX -> F [ + X ] F [ - X ] + X;\nF -> F F;\n";
+}
+
+// ABOP Fig. 1.31a (examples/abop/fig1_31a.fgsg): context-sensitive, with #ignore and
+// rules for + and -; every module is matched against its neighbours.
+std::string fig131a(int n) {
+  return "derive parallel " + std::to_string(n) +
+         ";\nturtle angle 22.5;\n#ignore: + - F;\naxiom: F b F b F b;\n"
+         "a < a > a -> a;\na < a > b -> b [ + F b F b ];\na < b > a -> b;\na < b > b -> b;\n"
+         "b < a > a -> a;\nb < a > b -> b F b;\nb < b > a -> b;\nb < b > b -> a;\n+ -> -;\n- -> +;\n";
 }
 
 std::string koch(int n) {
@@ -81,7 +91,8 @@ int main(int argc, char** argv) {
                                      {"F->FFF n=13", fff(13)},
                                      {"ABOP 1.24d n=7", fig124d(7)},
                                      {"ABOP 1.24d n=9", fig124d(9)},
-                                     {"Koch F(l) n=8", koch(8)}};
+                                     {"Koch F(l) n=8", koch(8)},
+                                     {"ABOP 1.31a n=50 (context)", fig131a(50)}};
   if (quick) workloads.erase(workloads.begin() + 1), workloads.erase(workloads.begin() + 2);
   backend::jit::Jit jit;
   rt::AssetLibrary assets;

@@ -258,6 +258,7 @@ class Derivation final : public QueryHost {
   bool matchLeft(const ir::Rule& r, const ModuleString& str, size_t at);
   bool matchRight(const ir::Rule& r, const ModuleString& str, size_t at);
   void interpretString(const ModuleString& str);
+  void linkBrackets(const ModuleString& str);
   [[noreturn]] void sequentialOnly(const ir::Op& op);
 
   const ir::Module& m_;
@@ -325,6 +326,10 @@ class Derivation final : public QueryHost {
   uintptr_t stackFloor_ = 0;     // recursion (direct code, Lock sets) stays above this frame address
   ir::ProgramLayout layout_;     // how program_ numbers blocks and ops (and the string's ops)
   StringOps plan_;               // a parallel derivation's per-op table
+  // Per module of the string being rewritten, when rules have contexts: a '[' the index
+  // of its ']', a ']' the index of its '[' (UINT32_MAX: none), so that context matching
+  // steps over a branch at once instead of walking through it.
+  std::vector<uint32_t> bracketPartner_;
 
   // The command families, and which one applies each op kind.
   ScopeCommands scope_;

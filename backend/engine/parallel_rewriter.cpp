@@ -43,6 +43,7 @@ void Derivation::runParallel() {
     next.clear();
     if (!rewriteTemplatesConcurrently(str, next)) {
       next.clear();
+      if (plan_.hasContext) linkBrackets(str);
       for (size_t i = 0; i < str.size(); ++i) {
         const StringModule& mod = str.modules[i];
         const StringOp& so = plan_[mod.op];
@@ -154,6 +155,20 @@ bool Derivation::rewriteTemplatesConcurrently(const ModuleString& str, ModuleStr
       ruleUses_[plan_.templates[t].rule] += uses;
     }
   return true;
+}
+
+void Derivation::linkBrackets(const ModuleString& str) {
+  bracketPartner_.assign(str.size(), UINT32_MAX);
+  std::vector<uint32_t> open;
+  for (uint32_t i = 0; i < str.size(); ++i) {
+    const ir::OpKind k = plan_[str.modules[i].op].kind;
+    if (k == ir::OpKind::Push) open.push_back(i);
+    if (k == ir::OpKind::Pop && !open.empty()) {
+      bracketPartner_[i] = open.back();
+      bracketPartner_[open.back()] = i;
+      open.pop_back();
+    }
+  }
 }
 
 // ABOP's %: each cut drops the rest of its branch — the modules after it up to the `]`
@@ -304,13 +319,9 @@ bool Derivation::matchLeft(const ir::Rule& r, const ModuleString& str, size_t at
     if (cm.bracket != 0) return false;
     while (j >= 0) {
       const ir::OpKind k = kind(j);
-      if (k == ir::OpKind::Pop) {
-        int depth = 0;
-        for (; j >= 0; --j) {
-          if (kind(j) == ir::OpKind::Pop) ++depth;
-          if (kind(j) == ir::OpKind::Push && --depth == 0) break;
-        }
-        --j;
+      if (k == ir::OpKind::Pop) {  // step over the whole branch, to before its '['
+        const uint32_t open = bracketPartner_[size_t(j)];
+        j = open == UINT32_MAX ? -1 : long(open) - 1;
       } else if (k == ir::OpKind::Emit && sees(j)) {
         break;
       } else {
@@ -333,12 +344,8 @@ bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t a
   size_t j = at + 1;
   const size_t n = str.size();
   auto skipBranch = [&](size_t from) {  // from is a '['; returns the index after its ']'
-    int depth = 0;
-    for (size_t x = from; x < n; ++x) {
-      if (kind(x) == ir::OpKind::Push) ++depth;
-      if (kind(x) == ir::OpKind::Pop && --depth == 0) return x + 1;
-    }
-    return n;
+    const uint32_t close = bracketPartner_[from];
+    return close == UINT32_MAX ? n : size_t(close) + 1;
   };
   for (const auto& cm : r.right) {
     if (cm.bracket == 1) {

@@ -126,6 +126,7 @@ struct StringOps {
   std::vector<SuccessorTemplate> templates;
   bool allTemplates = false;  // no symbol needs General: a step can be split over threads
   bool hasCut = false;        // the grammar writes % somewhere
+  bool hasContext = false;    // some rule has a left or right context
 
   const StringOp& operator[](uint32_t op) const { return ops[op]; }
 };

@@ -116,6 +116,8 @@ StringOps planString(const ir::Module& m, const ir::ProgramLayout& layout,
   std::vector<Rewrite> bySymbol(m.symbols.size(), Rewrite::Keep);
   std::vector<uint32_t> templateOf(m.symbols.size(), 0);
   plan.allTemplates = true;
+  plan.hasContext = std::any_of(m.rules.begin(), m.rules.end(),
+                                [](const ir::Rule& r) { return !r.left.empty() || !r.right.empty(); });
   for (uint32_t s = 0; s < m.symbols.size(); ++s) {
     if (m.symbols[s].rules.empty()) continue;
     SuccessorTemplate t;
