@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""ABOP Fig. 1.24a-f, the six bracketed OL-system plants, derived by an independent
-rewriter and compared segment by segment with what fgsg draws for
-examples/abop/fig1_24*.fgsg, at the book's n and one step less; and Fig. 5.5a, the
-cordate leaf, polygon by polygon (examples/abop/fig5_5a.fgsg). The grammars are
+"""ABOP Fig. 1.24a-f, the six bracketed OL-system plants, and Fig. 1.9a-f, the Koch
+curves, derived by an independent rewriter and compared segment by segment with what
+fgsg draws for examples/abop/fig1_24*.fgsg and fig1_9*.fgsg, at the book's n and one
+step less; and Fig. 5.5a, the cordate leaf, polygon by polygon
+(examples/abop/fig5_5a.fgsg). The grammars are
 written here again from the book, not read from the examples.
     plants.py FGSG REPO_ROOT
 """
@@ -23,6 +24,16 @@ PLANTS = {
 }
 
 
+# Fig. 1.9a-f, Koch curves: n and the production for F (ABOP p. 9); delta 90, axiom F-F-F-F.
+KOCH = {
+    "a": (4, "FF-F-F-F-F-F+F"),
+    "b": (4, "FF-F-F-F-FF"),
+    "c": (3, "FF-F+F-F-FF"),
+    "d": (4, "FF-F--F-F"),
+    "e": (5, "F-FF--F-F"),
+    "f": (4, "F-F+F-F-F"),
+}
+
 # Fig. 5.5a, the cordate leaf: n, delta, axiom, productions (G written f).
 LEAF = (20, 10.0, "[A][B]", {"A": "[+A{.].C.}", "B": "[-B{.].C.}", "C": "fC"})
 
@@ -41,6 +52,10 @@ def main():
             grammar = os.path.join(root, "examples/abop/fig1_24%s.fgsg" % name)
             for steps in (n - 1, n):
                 check(fgsg, grammar, steps, derive(axiom, rules, steps), angle, folder)
+        for name, (n, production) in KOCH.items():
+            grammar = os.path.join(root, "examples/abop/fig1_9%s.fgsg" % name)
+            for steps in (n - 1, n):
+                check(fgsg, grammar, steps, derive("F-F-F-F", {"F": production}, steps), 90.0, folder)
         n, angle, axiom, rules = LEAF
         grammar = os.path.join(root, "examples/abop/fig5_5a.fgsg")
         for steps in (3, n):
