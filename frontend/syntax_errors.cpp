@@ -317,6 +317,9 @@ void SyntaxErrorStrategy::reportExpected(Parser* parser, Token* at, const Interv
       default: break;
     }
   }
+  // `I('cube')`: ' is ABOP's colour index; strings take double quotes.
+  if (at && at->getType() == FgsgParser::QUOTE && expected.contains(static_cast<size_t>(FgsgParser::STRING)))
+    hint = " (strings are written in double quotes: \"cube\")";
   report(parser, at, "expected " + what + after(parser, at) + ", found " + describeToken(at) + hint);
 }
 
