@@ -28,6 +28,15 @@ SynthesisResult runChecked(const Example& ex, const SynthesisOptions& o) {
   return r;
 }
 
+// Whole-grid minimum-entropy order, one attempt: what the order tests below vary by seed.
+SynthesisOptions minEntropy(GridSize size, uint64_t seed) {
+  SynthesisOptions o;
+  o.size = size;
+  o.order = CellOrder::kMinEntropy;
+  o.seed = seed;
+  return o;
+}
+
 int nonEmpty(const LabelGrid& g, const Example& ex) {
   int n = 0;
   for (int32_t l : g.data()) n += l != ex.emptyLabel;
@@ -73,10 +82,7 @@ TEST_CASE("minimum-entropy order backtracks: undone decisions leave checker-clea
   Example ex = load("summer_like.json");
   int succeededAfterBacktracking = 0, succeeded = 0;
   for (uint64_t seed = 1; seed <= 12; ++seed) {
-    SynthesisOptions o;
-    o.size = {40, 40, 1};
-    o.order = CellOrder::kMinEntropy;
-    o.seed = seed;
+    const SynthesisOptions o = minEntropy({40, 40, 1}, seed);
     const SynthesisResult r = runChecked(ex, o);
     CHECK(r.stats.attempts == 1);
     succeeded += r.ok;
@@ -96,12 +102,8 @@ TEST_CASE("minimum-entropy order repairs what backtracking cannot: the Summer-li
   Example ex = load("summer_like.json");
   uint64_t repairs = 0;
   for (uint64_t seed = 1; seed <= 8; ++seed) {
-    SynthesisOptions o;
-    o.size = {100, 100, 1};
-    o.order = CellOrder::kMinEntropy;
-    o.seed = seed;
     INFO("seed " << seed);
-    const SynthesisResult r = runChecked(ex, o);
+    const SynthesisResult r = runChecked(ex, minEntropy({100, 100, 1}, seed));
     CHECK(r.ok);
     CHECK(r.stats.attempts == 1);
     repairs += r.stats.repairs;
@@ -114,12 +116,8 @@ TEST_CASE("minimum-entropy order breaks ties by position: the city succeeds on t
   // --orientations: every axis order, now 100 %).
   Example ex = load("city.txt");
   for (uint64_t seed = 1; seed <= 20; ++seed) {
-    SynthesisOptions o;
-    o.size = {40, 40, 5};
-    o.order = CellOrder::kMinEntropy;
-    o.seed = seed;
     INFO("seed " << seed);
-    CHECK(runChecked(ex, o).ok);
+    CHECK(runChecked(ex, minEntropy({40, 40, 5}, seed)).ok);
   }
 }
 
