@@ -18,6 +18,14 @@ namespace {
 // size, concurrently.
 constexpr size_t kChunk = size_t(1) << 15;
 
+// Writes template t's modules at w (keys made from the rewritten module's `key`) and its
+// arguments at a, which is argument number `base` of the string.
+void writeTemplate(const SuccessorTemplate& t, uint64_t key, StringModule* w, double* a, uint32_t base) {
+  for (size_t k = 0; k < t.ops.size(); ++k)
+    w[k] = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(key, t.keySalt[k]) & t.keyMask[k]};
+  if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
+}
+
 }  // namespace
 
 void Derivation::runParallel() {
@@ -88,10 +96,7 @@ void Derivation::appendTemplate(const SuccessorTemplate& t, uint64_t key, Module
   ++stats_.rewrites;
   ++ruleUses_[t.rule];
   const uint32_t base = static_cast<uint32_t>(out.args.size());
-  StringModule* w = out.modules.extend(t.ops.size());
-  for (size_t k = 0; k < t.ops.size(); ++k)
-    w[k] = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(key, t.keySalt[k]) & t.keyMask[k]};
-  out.args.append(t.args.data(), t.args.size());
+  writeTemplate(t, key, out.modules.extend(t.ops.size()), out.args.extend(t.args.size()), base);
 }
 
 // A step of a grammar whose every rewriting symbol has a template, over chunks of the
@@ -137,9 +142,8 @@ bool Derivation::rewriteTemplatesConcurrently(const ModuleString& str, ModuleStr
       const uint32_t base = static_cast<uint32_t>(a - next.args.data());
       if (so.rewrite == Rewrite::Template) {
         const SuccessorTemplate& t = plan_.templates[so.successor];
-        for (size_t k = 0; k < t.ops.size(); ++k)
-          *w++ = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(mod.key, t.keySalt[k]) & t.keyMask[k]};
-        if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
+        writeTemplate(t, mod.key, w, a, base);
+        w += t.ops.size();
         a += t.args.size();
       } else {
         *w++ = {mod.op, base, mod.key};

@@ -31,7 +31,6 @@ template <typename T>
 class StringBuffer {
  public:
   size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
   T* data() { return data_.get(); }
   const T* data() const { return data_.get(); }
   T& operator[](size_t i) { return data_[i]; }
