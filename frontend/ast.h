@@ -72,6 +72,7 @@ struct Item {
   std::vector<Successor> body;  // parts between '|' or ',' inside { }
   bool repeatPattern = false;   // `{ ... }*`: the parts repeat as a pattern (CGA's repeat split)
   std::vector<Item> children;   // Bracket contents
+  std::string surface;          // the turtle symbol `~`: the asset of the predefined surface
 };
 
 struct Successor {

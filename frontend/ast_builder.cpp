@@ -416,7 +416,34 @@ void AstBuilder::appendItem(P::ItemContext* ctx, std::vector<Item>& out) {
     appendTurtleSymbols(turtle, turtle->symbol, turtle->callArgs(), out);
   } else if (auto* bracket = dynamic_cast<P::BracketItemContext*>(ctx)) {
     out.push_back(buildBracketItem(bracket));
+  } else if (auto* surface = dynamic_cast<P::SurfaceItemContext*>(ctx)) {
+    out.push_back(buildSurfaceItem(surface));
   }
+}
+
+// ABOP's predefined surface `~leaf(s)` is `[ ~(s) I("leaf") ]`: the turtle symbol `~`
+// makes the scope the surface's box at the turtle (sizes evaluated once), I() places the
+// asset there like any instance, and the brackets give the turtle back.
+Item AstBuilder::buildSurfaceItem(P::SurfaceItemContext* ctx) {
+  Item frame;
+  frame.kind = ItemKind::Turtle;
+  frame.name = "~";
+  frame.range = rangeOf(ctx);
+  frame.args = buildCallArgs(ctx->callArgs());
+  frame.surface = ctx->surface ? text(ctx->surface) : unquote(text(ctx->surfaceFile));
+  Item place;
+  place.kind = ItemKind::Call;
+  place.name = "I";
+  place.range = ctx->surface ? rangeOf(ctx->surface) : rangeOf(ctx->surfaceFile);
+  auto asset = makeExpr(ExprKind::String, place.range);
+  asset->text = frame.surface;
+  place.args.push_back(std::move(asset));
+  Item item;
+  item.kind = ItemKind::Bracket;
+  item.range = frame.range;
+  item.children.push_back(std::move(frame));
+  item.children.push_back(std::move(place));
+  return item;
 }
 
 namespace {

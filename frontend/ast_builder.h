@@ -51,6 +51,7 @@ class AstBuilder {
   void appendTurtleSymbols(antlr4::ParserRuleContext* ctx, antlr4::Token* symbol,
                            P::CallArgsContext* args, std::vector<Item>& out);
   Item buildBracketItem(P::BracketItemContext* ctx);
+  Item buildSurfaceItem(P::SurfaceItemContext* ctx);
   std::vector<ExprPtr> buildCallArgs(P::CallArgsContext* ctx);
 
   // expressions

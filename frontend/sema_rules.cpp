@@ -94,7 +94,10 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
           !item.args.empty())
         diags_.error("E016", item.range, "turtle symbol '" + item.name + "' takes no argument");
       if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");
-      if (item.args.size() > 1)
+      if (item.name == "~" && (item.args.size() == 2 || item.args.size() > 3))
+        diags_.error("E016", item.range,
+                     "a predefined surface '~' takes one size, three sizes (x, y, z) or none (1)");
+      else if (item.name != "~" && item.args.size() > 1)
         diags_.error("E016", item.range,
                      "turtle symbol '" + item.name + "' takes at most one argument");
       for (const auto& a : item.args) expect(*a, w, ValueType::Num, "a turtle argument");

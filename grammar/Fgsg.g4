@@ -134,7 +134,7 @@ successor : EPSILON | sequenceItem+ ;
 // `[+A{.].C.}`), so `{` and `}` are items of their own, at sequence level only: inside a
 // body they would be read as the body's braces. A name directly followed by `{ ... }`
 // parses as a body; the front end reads it as a polygon when the name takes none and it
-// has a `.` (frontend/ast_builder.cpp).
+// has a `.` (frontend/ast_builder.cpp). ABOP's `~leaf(s)` places a predefined surface.
 sequenceItem
   : item
   | symbol=( '|' | '||' ) callArgs?
@@ -146,6 +146,7 @@ item
   | symbol=( '+' | '-' | '&' | '&&' | '^' | '\\' | '/' | '!' | '$' | '%' | '\'' ) callArgs? # turtleItem
   | '[' sequenceItem* ']'                                                     # bracketItem
   | polygon=VERTEX                                                            # polygonItem
+  | '~' ( surface=ID | surfaceFile=STRING ) callArgs?                          # surfaceItem
   ;
 
 callArgs : '(' ( expr ( ',' expr )* )? ')' ;

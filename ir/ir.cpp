@@ -36,6 +36,7 @@ int turtleOpNamed(const std::string& name) {
     case '.': return int(TurtleOp::PolygonVertex);
     case '}': return int(TurtleOp::PolygonEnd);
     case '\'': return int(TurtleOp::ColorIndex);
+    case '~': return int(TurtleOp::SurfaceBox);
     default: return -1;
   }
 }

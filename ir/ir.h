@@ -141,6 +141,8 @@ enum class TurtleOp : uint8_t {
   PolygonVertex,   // .: the turtle's position is the polygon's next vertex
   PolygonEnd,      // }: fill the polygon
   ColorIndex,      // ': the next colour of `turtle colors` ('(n): colour n; 0: the default colours)
+  SurfaceBox,      // ~(s) / ~(sx, sy, sz): the scope becomes the box of a predefined surface at the turtle
+                   // (`~leaf(s)` is `[ ~(s) I("leaf") ]`, ABOP's ~)
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the
@@ -155,6 +157,7 @@ struct Op {
   Loc loc;
   uint32_t index = 0;   // symbol / asset / axis / TurtleOp / axes mask
   uint32_t str = 0;     // string id (Comp selector, Roof kind)
+  uint32_t asset = 0;   // Turtle SurfaceBox: the asset the box is for (the I() after it)
   InstanceMode mode = InstanceMode::Plain;
   bool repeat = false;  // Subdiv `{ ... }*`: its parts repeat as a pattern along the axis
   std::vector<Expr> args;

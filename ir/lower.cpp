@@ -235,6 +235,7 @@ class Lowerer {
         if (isShapeItem(item, sema_)) break;  // a turtle symbol with rules: a shape (below)
         op.kind = OpKind::Turtle;
         op.index = static_cast<uint32_t>(ir::turtleOpNamed(item.name));
+        if (!item.surface.empty()) op.asset = m_.internAsset(item.surface);  // `~leaf`
         for (const auto& a : item.args) op.args.push_back(expr(*a));
         out.push_back(std::move(op));
         return;

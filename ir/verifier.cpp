@@ -437,9 +437,12 @@ class Verifier {
         break;
       case OpKind::Emit: emit(op, r); break;
       case OpKind::Turtle:
-        if (op.index > static_cast<uint32_t>(TurtleOp::ColorIndex))
+        if (op.index > static_cast<uint32_t>(TurtleOp::SurfaceBox))
           problem("turtle op " + std::to_string(op.index) + " out of range");
-        numArgs(op, r, std::min<size_t>(op.args.size(), 1));  // argument optional
+        if (op.index == static_cast<uint32_t>(TurtleOp::SurfaceBox))
+          numArgs(op, r, op.args.size() == 3 ? 3 : std::min<size_t>(op.args.size(), 1));  // ~, ~(s), ~(x, y, z)
+        else
+          numArgs(op, r, std::min<size_t>(op.args.size(), 1));  // argument optional
         break;
       case OpKind::Subdiv:
         if (op.index > 2) problem("axis " + std::to_string(op.index) + " out of range");

@@ -60,6 +60,7 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       }
       break;
     }
+    case TurtleOp::SurfaceBox: surfaceBox(st, 0, args, n); break;  // only reached through the Op
     case TurtleOp::Cut:
       // A parallel derivation cuts its string after each step (cutBranches); a successor
       // of a sequential one has no rest of a branch in a string to cut.
@@ -67,6 +68,19 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
                         "'%' cuts the rest of a branch from a parallel derivation's string "
                         "(`derive parallel N;`); a sequential derivation has no such string"};
   }
+}
+
+// ABOP's predefined surface `~leaf(s)`: the scope becomes the box the I() after it fills,
+// standing on the turtle along the heading (Y from the turtle's position), `s` (default
+// 1) along each axis or (sx, sy, sz), centred on the heading in X and Z. An asset flat
+// along X or Z (`leaf`, `quad`, `disc` lie at z = 0 of their box) is not moved along
+// that axis, so its plane passes through the turtle.
+void TurtleCommands::surfaceBox(State& st, uint32_t asset, const double* args, uint32_t n) {
+  const rt::Vec3 size = n == 3 ? rt::Vec3(args[0], args[1], args[2]) : rt::Vec3::Constant(n > 0 ? args[0] : 1.0);
+  const uint8_t flat = d_.assetFlatAxes(asset);
+  if (!(flat & 1)) st.scope.P -= 0.5 * size.x() * st.scope.X();
+  if (!(flat & 4)) st.scope.P -= 0.5 * size.z() * st.scope.Z();
+  st.scope.S = size;
 }
 
 // ABOP's $ (Fig. 2.6): roll about the heading (scope Y) until the left vector (scope X)

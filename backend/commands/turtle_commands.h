@@ -20,7 +20,13 @@ class TurtleCommands final : public CommandFamily {
 
   std::vector<ir::OpKind> kinds() const override { return {ir::OpKind::Turtle}; }
   void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec&, Frame&) override {
-    command(st, static_cast<ir::TurtleOp>(op.index), a, n, op.loc);
+    command(st, op, a, n);
+  }
+
+  // The turtle op `op` (a Turtle op) with its evaluated arguments.
+  void command(State& st, const ir::Op& op, const double* args, uint32_t n) {
+    if (op.index == static_cast<uint32_t>(ir::TurtleOp::SurfaceBox)) return surfaceBox(st, op.asset, args, n);
+    command(st, static_cast<ir::TurtleOp>(op.index), args, n, op.loc);
   }
 
   // One turtle command; without an argument the grammar's default angle or step.
@@ -33,6 +39,7 @@ class TurtleCommands final : public CommandFamily {
 
  private:
   static void rollHorizontal(rt::Scope& scope);
+  void surfaceBox(State& st, uint32_t asset, const double* args, uint32_t n);
 
   Derivation& d_;
   ScopeCommands& scope_;

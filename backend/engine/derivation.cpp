@@ -13,6 +13,22 @@
 #include <string>
 
 namespace fgsg::backend {
+namespace {
+
+// The axes (1 X, 2 Y, 4 Z) along which a mesh has no extent; normalised into the unit
+// box, an asset lies at 0 along them (a `leaf` or `quad` at z = 0).
+uint8_t flatAxes(const rt::Mesh& mesh) {
+  uint8_t flat = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    bool same = true;
+    for (size_t v = 1; same && v < mesh.vertexCount(); ++v)
+      same = mesh.positions[3 * v + axis] == mesh.positions[axis];
+    if (same) flat |= uint8_t(1u << axis);
+  }
+  return flat;
+}
+
+}  // namespace
 
 using Clock = std::chrono::steady_clock;
 
@@ -192,12 +208,14 @@ void Derivation::resolveAssets() {
     for (const auto& a : r.alternatives) visit(a.ops);
   assetHasTexcoords_.assign(m_.assets.size(), 0);
   assetHasImages_.assign(m_.assets.size(), 0);
+  assetFlatAxes_.assign(m_.assets.size(), 0);
   for (size_t i = 0; i < m_.assets.size(); ++i) {
     std::string error;
     const int mesh = assets_.resolve(m_.assets[i], error);
     if (mesh < 0) throw DeriveError{firstUse[i], "R003", error};
     assetHasTexcoords_[i] = assets_.mesh(mesh).hasTexcoords();
     assetHasImages_[i] = assets_.mesh(mesh).textured();
+    assetFlatAxes_[i] = flatAxes(assets_.mesh(mesh));
   }
 }
 

@@ -87,6 +87,7 @@ class Derivation final : public QueryHost {
   // Turtle segments: a cylinder asset under a symbol "F" of their own.
   uint32_t segmentAsset() const { return segmentAsset_; }
   uint32_t segmentSymbol() const { return segmentSymbol_; }
+  uint8_t assetFlatAxes(uint32_t asset) const { return asset < assetFlatAxes_.size() ? assetFlatAxes_[asset] : 0; }
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
   // or reaches past float range); I("none") adds nothing.
@@ -302,6 +303,7 @@ class Derivation final : public QueryHost {
   uint32_t noneAsset_ = UINT32_MAX;      // I("none"), when the grammar writes it
   // Per grammar asset: it has texture coordinates, so a Texture above its I() draws on it.
   std::vector<uint8_t> assetHasTexcoords_;
+  std::vector<uint8_t> assetFlatAxes_;  // per asset: 1 X, 2 Y, 4 Z for an axis it has no extent along
   std::vector<uint8_t> assetHasImages_;  // ... and images of its own (an OBJ's materials), drawn untinted
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).

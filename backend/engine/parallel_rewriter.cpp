@@ -417,7 +417,7 @@ void Derivation::interpretString(const ModuleString& str) {
           turtle_.command(st, static_cast<ir::TurtleOp>(so.draws), a, std::min<uint32_t>(so.argCount, 1), op.loc);
         break;
       case ir::OpKind::Turtle:
-        turtle_.command(st, static_cast<ir::TurtleOp>(op.index), a, so.argCount, op.loc);
+        turtle_.command(st, op, a, so.argCount);
         break;
       case ir::OpKind::Instance:
         placeInstance(op.index, st.scope, so.owner == UINT32_MAX ? axiomSymbol_ : so.owner, a, so.argCount, op.loc);

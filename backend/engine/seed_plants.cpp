@@ -51,6 +51,7 @@ void Derivation::adoptParent(const Derivation& parent) {
   marching_.shareFrom(parent.marching_);
   textures_.shareFrom(parent.textures_);
   assetHasTexcoords_ = parent.assetHasTexcoords_;
+  assetFlatAxes_ = parent.assetFlatAxes_;
   assetHasImages_ = parent.assetHasImages_;
   deadline_ = parent.deadline_;  // the same end, with a countdown of its own
   memoryBudget_ = parent.memoryBudget_;

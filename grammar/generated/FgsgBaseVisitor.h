@@ -173,6 +173,10 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitSurfaceItem(FgsgParser::SurfaceItemContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitCallArgs(FgsgParser::CallArgsContext *ctx) override {
     return visitChildren(ctx);
   }

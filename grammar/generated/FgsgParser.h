@@ -734,6 +734,19 @@ public:
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
   };
 
+  class  SurfaceItemContext : public ItemContext {
+  public:
+    SurfaceItemContext(ItemContext *ctx);
+
+    antlr4::Token *surface = nullptr;
+    antlr4::Token *surfaceFile = nullptr;
+    antlr4::tree::TerminalNode *TILDE();
+    antlr4::tree::TerminalNode *ID();
+    antlr4::tree::TerminalNode *STRING();
+    CallArgsContext *callArgs();
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+  };
+
   class  PolygonItemContext : public ItemContext {
   public:
     PolygonItemContext(ItemContext *ctx);

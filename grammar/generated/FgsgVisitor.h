@@ -98,6 +98,8 @@ public:
 
     virtual antlrcpp::Any visitPolygonItem(FgsgParser::PolygonItemContext *context) = 0;
 
+    virtual antlrcpp::Any visitSurfaceItem(FgsgParser::SurfaceItemContext *context) = 0;
+
     virtual antlrcpp::Any visitCallArgs(FgsgParser::CallArgsContext *context) = 0;
 
     virtual antlrcpp::Any visitBody(FgsgParser::BodyContext *context) = 0;
