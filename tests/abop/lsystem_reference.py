@@ -67,6 +67,22 @@ def fgsg_obj(fgsg, grammar, n, folder):
     return elements
 
 
+def fgsg_obj_3d(fgsg, grammar, n, folder):
+    """As fgsg_obj, with the vertices' three coordinates (x, y, z)."""
+    out = os.path.join(folder, "out%d.obj" % n)
+    subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
+    vertices, elements = [], {"f": [], "l": []}
+    with open(out) as f:
+        for line in f:
+            part = line.split()
+            if part and part[0] == "v":
+                vertices.append(tuple(float(c) for c in part[1:4]))
+            elif part and part[0] in elements:
+                corners = [vertices[int(c.split("/")[0]) - 1] for c in part[1:]]
+                elements[part[0]].append(sum(corners, ()))
+    return elements
+
+
 def unmatched(want, got, tolerance=1e-3):
     """The segments (or triangles) of `want` with no one of `got` within `tolerance` (each used once);
     fgsg writes 32-bit floats, so coordinates agree to about 1e-6 of the plant's size."""

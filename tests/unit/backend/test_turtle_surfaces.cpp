@@ -56,7 +56,7 @@ TEST_CASE("predefined surfaces grow in parallel and sequential derivations, from
   CHECK(near(unitPoint(disc, 0.5, 0.5, 0), {0, 2, 0}));
 }
 
-TEST_CASE("a predefined surface with two sizes is E016; an unknown one is R003", "[lsystem][turtle]") {
+TEST_CASE("a predefined surface with two sizes is E016, an unknown one R003", "[lsystem][turtle]") {
   CHECK_THROWS_WITH(test::compileText("axiom: ~leaf(1, 2);"), Catch::Contains("E016"));
   const auto r = test::deriveText("derive parallel 0;\naxiom: ~nowhere;");
   REQUIRE_FALSE(r.ok);
