@@ -103,21 +103,15 @@ std::array<float, 3> Derivation::colorFor(const std::string& name) {
   return {pastel(r), pastel(g), pastel(b)};
 }
 
-void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
-                               const double* params, uint32_t paramCount, ir::Loc loc) {
-  if (asset == noneAsset_) return;
-  rt::Instance inst;
-  inst.asset = asset;
-  inst.symbol = symbol;
-  const rt::Mat4 t = scope.unitBoxToWorld();
-  for (int k = 0; k < 16; ++k) {
-    inst.transform[k] = t.data()[k];
-    if (!std::isfinite(inst.transform[k]))
+// R005 for an instance whose scope is not finite or reaches past a 32-bit float; the
+// quick bound (unitBoxClearlyFitsFloat) said it might.
+void Derivation::refuseInstanceReach(const rt::Mat4& t, uint32_t symbol, ir::Loc loc) const {
+  for (int k = 0; k < 16; ++k)
+    if (!std::isfinite(t.data()[k]))
       throw DeriveError{loc, "R005",
                         "this instance's scope is not finite (a parameter became NaN or "
                         "infinite, e.g. sqrt of a negative number or a division by zero)"};
-  }
-  if (const double reach = rt::unitBoxClearlyFitsFloat(t) ? 0.0 : rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
+  if (const double reach = rt::unitBoxReach(t); !(reach <= double(FLT_MAX))) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", reach);
     throw DeriveError{loc, "R005",
@@ -125,6 +119,18 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                           ", beyond what mesh files store (32-bit floats, up to 3.4e+38): a scale, "
                           "extrusion or translation grew too large"};
   }
+}
+
+void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
+                               const double* params, uint32_t paramCount, ir::Loc loc) {
+  if (asset == noneAsset_) return;
+  const rt::Mat4 t = scope.unitBoxToWorld();
+  if (!rt::unitBoxClearlyFitsFloat(t)) refuseInstanceReach(t, symbol, loc);
+  // Written in place: a million-segment L-system places an instance per segment.
+  rt::Instance& inst = out_.instances.emplace_back();
+  inst.asset = asset;
+  inst.symbol = symbol;
+  std::copy(t.data(), t.data() + 16, inst.transform.begin());
   inst.color = scope.colored ? scope.color : symbolColor_[symbol];
   // An asset with texture coordinates of its own draws the image of a Texture above it,
   // and one with images of its own keeps them; either untinted unless Color says.
@@ -137,7 +143,6 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;
   out_.params.insert(out_.params.end(), params, params + paramCount);
-  out_.instances.push_back(inst);
   if (recordShapesAtInstances_) shapesAtInstance_.push_back(stats_.shapesCreated);
   if (orderedDirect_) placedBy_.push_back(placingShape_);
   if (usesOcclusion_) occluders_.add(scope);

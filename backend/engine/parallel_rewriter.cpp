@@ -3,6 +3,7 @@
 // is read by the turtle. Compiled successors append to the string through the same
 // entry points (native_bridge.cpp).
 #include "backend/engine/derivation.h"
+#include "runtime/page_prefault.h"
 
 #include "backend/native/query_bridge.h"
 
@@ -403,6 +404,9 @@ void Derivation::interpretString(const ModuleString& str) {
                 so.kind == ir::OpKind::Instance;
   }
   out_.instances.reserve(out_.instances.size() + segments);
+  // The kernel zeroes the new pages on a second thread while this one fills them.
+  const rt::PrefaultAhead prefault(out_.instances.data() + out_.instances.size(),
+                                   (out_.instances.capacity() - out_.instances.size()) * sizeof(rt::Instance));
   for (const StringModule& mod : str.modules) {
     const StringOp& so = plan_[mod.op];
     const ir::Op& op = *so.op;
