@@ -21,12 +21,6 @@ void Analyzer::checkRules() {
       if (!names.insert(name).second)
         diags_.error("E021", r.range, "parameter '" + name + "' is declared twice in this rule");
     if (r.guard) expect(*r.guard, w, ValueType::Bool, "a guard");
-    if (!r.leftContext.empty() || !r.rightContext.empty()) {
-      if (res_.mode != "parallel")
-        diags_.warning("W005", r.predecessor.range,
-                       "context < > only matters in a parallel derivation (`derive parallel "
-                       "N;`); in a sequential derivation this rule never applies");
-    }
     for (const auto& b : r.branches) {
       if (b.probability) {
         expect(*b.probability, w, ValueType::Num, "a probability");

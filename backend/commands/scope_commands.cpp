@@ -37,6 +37,7 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
     case ir::OpKind::Pop:
       if (stack_.size() <= st.stackBase)
         throw DeriveError{op.loc, "R007", "']' without a matching '[' in this string"};
+      if (string_) string_->addClose(stack_.back().bracket);
       st.scope = stack_.back().scope;
       st.geom = stack_.back().geom;
       st.width = stack_.back().width;

@@ -7,6 +7,7 @@
 
 #include "backend/commands/command_family.h"
 #include "backend/commands/surface_world.h"
+#include "backend/engine/sequential_string.h"
 
 #include <memory>
 #include <vector>
@@ -48,7 +49,12 @@ class ScopeCommands final : public CommandFamily {
   // Direct derivation turns as turn() does, with the cosine and sine of this memo.
   void cosSin(double degrees, double* out) { trig_.cosSin(degrees, out[0], out[1]); }
 
-  void push(const State& st) { stack_.push_back({st.scope, st.geom, st.width, st.line}); }
+  void push(const State& st) {
+    stack_.push_back({st.scope, st.geom, st.width, st.line, string_ ? string_->addOpen() : UINT32_MAX});
+  }
+
+  // A sequential derivation with contexts keeps its brackets in its string.
+  void writeBracketsTo(SequentialString* string) { string_ = string; }
 
  private:
   void center(State& st, const ir::Op& op);
@@ -57,6 +63,7 @@ class ScopeCommands final : public CommandFamily {
   std::vector<Saved>& stack_;
   rt::Deadline& deadline_;
   rt::TrigMemo trig_;
+  SequentialString* string_ = nullptr;
 };
 
 }  // namespace fgsg::backend

@@ -17,6 +17,12 @@ namespace {
 
 // The axes (1 X, 2 Y, 4 Z) along which a mesh has no extent; normalised into the unit
 // box, an asset lies at 0 along them (a `leaf` or `quad` at z = 0).
+bool hasContextRules(const ir::Module& m) {
+  for (const ir::Rule& r : m.rules)
+    if (!r.left.empty() || !r.right.empty()) return true;
+  return false;
+}
+
 uint8_t flatAxes(const rt::Mesh& mesh) {
   uint8_t flat = 0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -74,6 +80,14 @@ void Derivation::registerFamily(CommandFamily& family) {
   }
 }
 
+// A sequential grammar with contexts keeps the string they are matched in; direct code,
+// which writes no string, is not used.
+void Derivation::startSequentialString() {
+  sequentialString_ = std::make_unique<SequentialString>(m_);
+  scope_.writeBracketsTo(sequentialString_.get());
+  direct_ = false;
+}
+
 uint32_t Derivation::maxSlotCount(const ir::Module& m) {
   uint32_t n = 0;
   for (const auto& s : m.symbols) n = std::max(n, s.slotCount);
@@ -97,6 +111,7 @@ rt::DeriveResult Derivation::run() {
     checkEnvironment();
     // Direct code applies scope commands on the plane (on a surface T traces).
     direct_ = direct_ && program_ && program_->direct && !surface_ && m_.mode != ir::DeriveMode::Parallel;
+    if (m_.mode != ir::DeriveMode::Parallel && hasContextRules(m_)) startSequentialString();
     resolveAssets();
     textures_.prepare(m_, opt_.assetDirs);
     initOutput();

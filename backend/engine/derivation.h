@@ -35,6 +35,7 @@
 #include "backend/engine/limit_reached.h"
 #include "backend/engine/native_call.h"
 #include "backend/engine/parallel_string.h"
+#include "backend/engine/sequential_string.h"
 #include "backend/engine/shape_store.h"
 #include "backend/engine/successor.h"
 #include "backend/interp/eval.h"
@@ -176,9 +177,12 @@ class Derivation final : public QueryHost {
   void runSequential();
   void deriveWaitingShapes();
   void deriveShape(const WaitingShape& shape);
-  bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent, uint32_t index);
+  // node: the shape's place in the sequential string (UINT32_MAX without one).
+  bool deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent, uint32_t index,
+                 uint32_t node);
   bool deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
-                             uint32_t index);
+                             uint32_t index, uint32_t node);
+  void startSequentialString();
   void execRoot(uint32_t block, const ir::Block& ops, const rt::Scope& scope, const rt::GeomRef& geom, uint64_t key,
                 uint32_t depth, uint32_t index, const double* params, uint32_t symbol,
                 rt::RandomStream* rng = nullptr, rt::LineCursor line = {});
@@ -203,7 +207,10 @@ class Derivation final : public QueryHost {
 
   // rule_choice.cpp
   static bool isSpecific(const ir::Rule& r);
-  const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f);
+  // `node`: the shape's place in the sequential string (contexts), or UINT32_MAX; a
+  // context's parameters are written into `params` (f's block, with room for them).
+  const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f, uint32_t node, double* params);
+  bool contextHolds(const ir::Rule& r, uint32_t node, double* params) const;
   bool guardHolds(uint32_t rule, const Frame& f);
   void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total);
   const Candidate& pickCandidate(rt::RandomStream& rng, double total) const;
@@ -335,6 +342,8 @@ class Derivation final : public QueryHost {
   std::vector<uint32_t> bracketPartner_;
 
   // The command families, and which one applies each op kind.
+  // A sequential grammar with contexts: the string they are matched in (else null).
+  std::unique_ptr<SequentialString> sequentialString_;
   ScopeCommands scope_;
   TurtleCommands turtle_;
   CgaCommands cga_;

@@ -80,7 +80,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
     depthLimit(sym, shape.creator);
     return;
   }
-  const ir::Alternative* alt = choose(sym, f);
+  const ir::Alternative* alt = choose(sym, f, shape.node, params_.data());
   if (!alt) {
     ++stats_.terminals;
     turtle_.drawSymbol(sym, scope, params_.data());
@@ -90,8 +90,10 @@ void Derivation::deriveShape(const WaitingShape& shape) {
   ++ruleUses_[chosenRule_];
   pollLimits();
   creatorRule_ = chosenRule_;
+  const auto writing = sequentialString_ ? sequentialString_->beginRewrite(shape.node) : SequentialString::Writing{};
   execRoot(blockOf(alt), alt->ops, scope, shape.geom, shape.key, depth + 1, shape.index, params_.data(),
            shape.symbol, &rng, shape.line);
+  if (sequentialString_) sequentialString_->endRewrite(writing);
   creatorRule_ = UINT32_MAX;
 }
 
@@ -99,7 +101,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
 // symbol, or any shape inside a Lock). True when a collision happened anywhere in
 // its derivation: the shape counts as in collision.
 bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
-                           uint32_t index) {
+                           uint32_t index, uint32_t node) {
   const ir::Symbol& sym = m_.symbols[symbol];
   // Simple symbols cannot recurse, but a Lock set can: each level is a native call.
   if (onTheSpot_ >= kMaxOnTheSpotDepth)
@@ -107,7 +109,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
                       "a Lock set grew " + std::to_string(kMaxOnTheSpotDepth) +
                           " shapes deep: a set is derived as one unit, so it must end; '" +
                           sym.name + "' keeps creating itself"};
-  if (rt::belowStackFloor(stackFloor_)) return deriveNowOnFreshStack(symbol, slots, at, parent, index);
+  if (rt::belowStackFloor(stackFloor_)) return deriveNowOnFreshStack(symbol, slots, at, parent, index, node);
   struct Nesting {
     uint32_t& n;
     explicit Nesting(uint32_t& c) : n(++c) {}
@@ -123,7 +125,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
     depthLimit(sym, creatorRule_);
     return false;
   }
-  const ir::Alternative* alt = choose(sym, f);
+  const ir::Alternative* alt = choose(sym, f, node, params.data());
   if (!alt) {
     ++stats_.terminals;
     turtle_.drawSymbol(sym, at.scope, params.data());
@@ -137,8 +139,10 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line, &at.scope};
   Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
   f.scope = &st.scope;
+  const auto writing = sequentialString_ ? sequentialString_->beginRewrite(node) : SequentialString::Writing{};
   runBlock(blockOf(alt), alt->ops, st, ex, f);
   stack_.resize(st.stackBase);
+  if (sequentialString_) sequentialString_->endRewrite(writing);
   creatorRule_ = outerCreator;
   return ex.collided;
 }
@@ -146,7 +150,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
 // deriveNow, continued on a stack of its own: Lock sets nest as deep as the grammar
 // makes them (up to kMaxOnTheSpotDepth) whatever the caller's stack.
 bool Derivation::deriveNowOnFreshStack(uint32_t symbol, const double* slots, const State& at, const Exec& parent,
-                                       uint32_t index) {
+                                       uint32_t index, uint32_t node) {
   struct RestoreFloor {
     uintptr_t& floor;
     uintptr_t saved;
@@ -155,7 +159,7 @@ bool Derivation::deriveNowOnFreshStack(uint32_t symbol, const double* slots, con
   bool collided = false;
   rt::runOnFreshStack([&] {
     stackFloor_ = rt::stackFloor();
-    collided = deriveNow(symbol, slots, at, parent, index);
+    collided = deriveNow(symbol, slots, at, parent, index, node);
   });
   return collided;
 }
@@ -265,7 +269,8 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   if (stats_.shapesCreated >= opt_.maxShapes) shapeLimit(op);
   const uint32_t index = ex.childCount++;
   ++stats_.shapesCreated;
-  if (target.rules.empty()) {  // a terminal: nothing will ever read it again
+  const uint32_t node = sequentialString_ ? sequentialString_->addShape(op.index, slots, target.slotCount) : SequentialString::kNone;
+  if (target.rules.empty()) {  // a terminal: nothing will ever read it again (but a context)
     ++stats_.terminals;
     if (terminalPieces_)
       for (auto& polygon : rt::cga::surfacePolygons(st.scope, st.geom, arena_))
@@ -280,7 +285,7 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
     return;
   }
   if (eager_[op.index] || lockDepth_ > 0) {
-    if (deriveNow(op.index, slots, st, ex, index)) ex.culled = ex.collided = true;
+    if (deriveNow(op.index, slots, st, ex, index, node)) ex.culled = ex.collided = true;
     return;
   }
   WaitingShape& shape = bucketFor(target.priority).push(slots, target.slotCount);
@@ -289,6 +294,7 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   shape.depth = ex.depth;
   shape.index = index;
   shape.creator = creatorRule_;
+  shape.node = node;
   shape.line = st.line;
   shape.geom = st.geom;
   shape.scope = st.scope;

@@ -1,6 +1,7 @@
 // Rule choice: which rules of a symbol apply (guards; context in a parallel string,
-// parallel_rewriter.cpp), specific rules before general ones, and one alternative drawn
-// by weight from the shape's own random stream.
+// parallel_rewriter.cpp, or in a sequential one, sequential_string.h), specific rules
+// before general ones, and one alternative drawn by weight from the shape's own random
+// stream.
 #include "backend/engine/derivation.h"
 
 #include <cmath>
@@ -16,7 +17,7 @@ bool Derivation::isSpecific(const ir::Rule& r) {
 }
 
 // Picks one alternative among the rules whose guard holds, weights normalised.
-const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f) {
+const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f, uint32_t node, double* params) {
   // The common case: one unguarded rule with one branch of constant positive weight.
   if (sym.rules.size() == 1) {
     const ir::Rule& only = m_.rules[sym.rules[0]];
@@ -32,15 +33,23 @@ const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f)
   for (uint32_t ri : sym.rules) {
     const ir::Rule& r = m_.rules[ri];
     if (isSpecific(r) != (pass == 0)) continue;
-    // Context needs a string of neighbours: only a parallel derivation has one.
-    if (!r.left.empty() || !r.right.empty()) continue;
+    if (!contextHolds(r, node, params)) continue;
     if (r.hasGuard && !guardHolds(ri, f)) continue;
     addCandidates(r, ri, f, total);
   }
   if (candidates_.empty()) return nullptr;
   const Candidate& pick = pickCandidate(*f.rng, total);
   chosenRule_ = pick.rule;
+  contextHolds(m_.rules[pick.rule], node, params);  // its context's parameters again: another rule's may be there
   return pick.alt;
+}
+
+// A rule's context around the shape at `node` of the sequential string (always true for a
+// rule without one). Contexts are matched in the string a grammar with them keeps.
+bool Derivation::contextHolds(const ir::Rule& r, uint32_t node, double* params) const {
+  if (r.left.empty() && r.right.empty()) return true;
+  if (!sequentialString_ || node == SequentialString::kNone) return false;
+  return sequentialString_->matchLeft(r, node, params) && sequentialString_->matchRight(r, node, params);
 }
 
 bool Derivation::guardHolds(uint32_t rule, const Frame& f) {

@@ -56,6 +56,7 @@ void Derivation::adoptParent(const Derivation& parent) {
   deadline_ = parent.deadline_;  // the same end, with a countdown of its own
   memoryBudget_ = parent.memoryBudget_;
   assetBytes_ = parent.assetBytes_;
+  if (parent.sequentialString_) startSequentialString();  // each plant's string is its own
 }
 
 // The seed's axiom (seed `index`, random stream `key`: as in one queue) and everything

@@ -27,6 +27,7 @@ struct WaitingShape {
   uint64_t key = 0;
   uint32_t symbol = 0, depth = 0, index = 0;
   uint32_t creator = UINT32_MAX;  // the rule that created it (UINT32_MAX: the axiom)
+  uint32_t node = UINT32_MAX;     // its place in the sequential string (grammars with contexts)
   rt::LineCursor line;            // the line its LineSeg commands extend, if any
   rt::GeomRef geom;
   rt::Scope scope;

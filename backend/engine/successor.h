@@ -21,6 +21,7 @@ struct Saved {
   rt::GeomRef geom;
   double width;
   rt::LineCursor line;
+  uint32_t bracket = UINT32_MAX;  // its '[' in the sequential string (grammars with contexts)
 };
 struct State {
   rt::Scope scope;
