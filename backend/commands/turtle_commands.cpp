@@ -83,16 +83,14 @@ void TurtleCommands::surfaceBox(State& st, uint32_t asset, const double* args, u
   st.scope.S = size;
 }
 
-// ABOP's $ (Fig. 2.6): roll about the heading (scope Y) until the left vector (scope X)
-// is level, L = V x H / |V x H| with V the world's up (+Y), taking of the two level
-// directions the one nearer the current X, so the turtle rolls the least. Heading
-// straight up or down, no direction is level: the turtle stays as it is.
+// ABOP's $ (§2.2, Fig. 2.6): roll about the heading (scope Y) until the left vector
+// (scope X) is level, by the book's formula L = V x H / |V x H| with V the world's up
+// (+Y). Heading straight up or down, no direction is level: the turtle stays as it is.
 void TurtleCommands::rollHorizontal(rt::Scope& scope) {
   const rt::Vec3 heading = scope.Y();
   rt::Vec3 left = rt::Vec3::UnitY().cross(heading);
   if (!(left.norm() > 1e-12)) return;
   left.normalize();
-  if (left.dot(scope.X()) < 0) left = -left;
   scope.axes.col(0) = left;
   scope.axes.col(2) = left.cross(heading);
 }

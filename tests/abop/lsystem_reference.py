@@ -37,6 +37,13 @@ def turtle(s, angle):
     return segs, done
 
 
+def rotate(a, b, degrees):
+    """Turns the pair of frame vectors (a, b) by `degrees`: a towards b (the 3D turtle's
+    turns, tests/abop/plants3d.py and honda_tree.py)."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return ([c * x + s * y for x, y in zip(a, b)], [c * y - s * x for x, y in zip(a, b)])
+
+
 def fan_triangles(polygon_list, min_area=1e-12):
     """The triangles fgsg fills a polygon with (a fan from its first vertex), without those
     whose area is below the assembler's threshold, as (x0, y0, x1, y1, x2, y2)."""

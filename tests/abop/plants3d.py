@@ -12,7 +12,7 @@ import struct
 import sys
 import tempfile
 
-from lsystem_reference import fgsg_obj_3d, unmatched
+from lsystem_reference import fgsg_obj_3d, rotate, unmatched
 
 # Fig. 1.25 (ABOP p. 26), as fgsg spells it: symbols one character each, `.` after each
 # f of the leaf (the book's f records a polygon vertex), S written Seg (here: S).
@@ -41,12 +41,6 @@ def derive(axiom, rules, n):
     for _ in range(n):
         s = "".join(rules.get(c, c) for c in s)
     return s
-
-
-def rotate(a, b, degrees):
-    """Turns the pair of frame vectors (a, b) by `degrees`: a towards b."""
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    return ([c * x + s * y for x, y in zip(a, b)], [c * y - s * x for x, y in zip(a, b)])
 
 
 def turtle3d(s, angle):

@@ -1,6 +1,7 @@
 // ABOP's % (cut the rest of a branch, §1.10) and $ (roll the left vector level, Fig. 2.6).
 #include "derive_helpers.h"
 
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
 using namespace fgsg;
@@ -40,6 +41,12 @@ TEST_CASE("$ rolls about the heading until the left vector is level", "[lsystem]
   const Eigen::Matrix4d t = test::transformOf(r.instances.instances[0]);
   const Eigen::Vector3d left = t.block<3, 1>(0, 0).normalized(), heading = t.block<3, 1>(0, 1).normalized();
   CHECK(left.y() == Approx(0).margin(1e-12));                 // level
+  // ABOP's L = V x H / |V x H|, whichever way the turtle was rolled before.
+  CHECK((left - Eigen::Vector3d::UnitY().cross(heading).normalized()).norm() < 1e-12);
+  const auto over = test::deriveText("derive parallel 0;\naxiom: /(200) &(25) $ F;");
+  const Eigen::Matrix4d o = test::transformOf(over.instances.instances[0]);
+  const Eigen::Vector3d overHeading = o.block<3, 1>(0, 1).normalized();
+  CHECK((o.block<3, 1>(0, 0).normalized() - Eigen::Vector3d::UnitY().cross(overHeading).normalized()).norm() < 1e-9);
   CHECK(left.dot(heading) == Approx(0).margin(1e-12));        // still square to the heading
   // The heading itself is unchanged by the roll: &(25) tilted it 25 degrees from +Y.
   CHECK(heading.y() == Approx(std::cos(25 * 3.14159265358979323846 / 180)).epsilon(1e-12));
