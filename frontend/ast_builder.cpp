@@ -517,6 +517,7 @@ Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {
 void AstBuilder::appendTurtleSymbols(antlr4::ParserRuleContext* ctx, Token* symbol,
                                      P::CallArgsContext* args, std::vector<Item>& out) {
   std::string name = text(symbol);
+  if (name == ";") name = "'";  // lpfg's colour step is ABOP's '
   if (name == "&&" || name == "||") {
     Item first;
     first.kind = ItemKind::Turtle;

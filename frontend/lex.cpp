@@ -149,8 +149,35 @@ class ImplicitSemicolons {
     return out;
   }
 
+  // lpfg's `;`, the colour index's next colour (ABOP's '): a ';' in a rule's or the
+  // axiom's successor with more of it after it on the same line, `A -> F ; F`. A ';'
+  // that ends its line, or before a declaration or a rule head (`A -> B; B -> C;`), ends
+  // the statement as always. Returns the indices of the ';'s that are colour steps.
+  std::vector<size_t> colourSteps() const {
+    std::vector<size_t> out;
+    bool rule = startsRule(0);
+    for (size_t i = 1; i < t_.size(); ++i) {
+      const size_t ty = type(i);
+      if (ty == FgsgLexer::SEMI) {
+        const bool continues = type(i + 1) != Token::EOF && !firstOnLine(i + 1) && !isStatementKeyword(type(i + 1)) &&
+                               !startsRuleHead(i + 1);
+        if (rule && continues) {
+          out.push_back(i);
+          continue;
+        }
+        rule = startsRule(i + 1);
+      } else if (firstOnLine(i) && !expectsContinuation(type(i - 1)) &&
+                 (isStatementKeyword(ty) || startsRuleHead(i))) {
+        rule = startsRule(i);  // a statement after an implicit ';'
+      }
+    }
+    return out;
+  }
+
  private:
   size_t type(size_t i) const { return i < t_.size() ? t_[i]->getType() : Token::EOF; }
+
+  bool startsRule(size_t i) const { return type(i) == FgsgLexer::AXIOM || startsRuleHead(i); }
 
   bool firstOnLine(size_t i) const { return i == 0 || t_[i]->getLine() > t_[i - 1]->getLine(); }
 
@@ -348,6 +375,8 @@ LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
   markPolygonVertices(tokens);
+  for (size_t i : ImplicitSemicolons(tokens).colourSteps())
+    static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);
 
   const std::vector<size_t> semicolons = ImplicitSemicolons(tokens).positions();
   lexed.tokens.reserve(tokens.size() + semicolons.size());

@@ -121,7 +121,7 @@ std::string describeExpected(IntervalSet set, const antlr4::dfa::Vocabulary& voc
   // Where a successor may start, so may a Müller guard: "a successor" says enough.
   group({P::ID, P::LBRACK, P::PLUS}, {P::ID, P::LBRACK, P::PLUS, P::MINUS, P::AMP, P::AND, P::CARET,
         P::BACKSLASH, P::SLASH, P::BANG, P::DOLLAR, P::PERCENT, P::QUOTE, P::PIPE, P::OR, P::EPSILON,
-        P::LPAREN, P::LBRACE, P::RBRACE, P::VERTEX, P::INT, P::FLOAT, P::RELSIZE, P::STRING, P::TRUE,
+        P::LPAREN, P::LBRACE, P::RBRACE, P::VERTEX, P::COLORSTEP, P::INT, P::FLOAT, P::RELSIZE, P::STRING, P::TRUE,
         P::FALSE, P::TILDE},
         "a successor");
   group({P::INT, P::STRING, P::ID, P::LPAREN}, {P::INT, P::FLOAT, P::RELSIZE, P::STRING, P::TRUE,

@@ -13,8 +13,9 @@
 grammar Fgsg;
 
 // A '.' that is no member access (`Scope.sx`: a name, '.', a name, written together) is
-// an ABOP polygon vertex; the lexing step retypes it (frontend/lex.cpp).
-tokens { VERTEX }
+// an ABOP polygon vertex, and a ';' with more of a rule's successor after it on its line
+// is lpfg's colour step (ABOP's '); the lexing step retypes them (frontend/lex.cpp).
+tokens { VERTEX, COLORSTEP }
 
 // ================================================================== parser
 
@@ -129,6 +130,7 @@ arrow : ARROW | '=' ;
 successor : EPSILON | sequenceItem+ ;
 
 // At sequence level '|' is a turtle symbol; inside `{ }` it separates body parts.
+// COLORSTEP is lpfg's `;` inside a successor (ABOP's ').
 // ABOP's polygons: `{` starts one, `.` (an item) records the turtle's position as a
 // vertex, `}` fills it. They need not nest with brackets (the cordate leaf
 // `[+A{.].C.}`), so `{` and `}` are items of their own, at sequence level only: inside a
@@ -137,7 +139,7 @@ successor : EPSILON | sequenceItem+ ;
 // has a `.` (frontend/ast_builder.cpp). ABOP's `~leaf(s)` places a predefined surface.
 sequenceItem
   : item
-  | symbol=( '|' | '||' ) callArgs?
+  | symbol=( '|' | '||' | COLORSTEP ) callArgs?
   | polygon=( '{' | '}' )
   ;
 

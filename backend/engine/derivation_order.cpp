@@ -269,7 +269,8 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   if (stats_.shapesCreated >= opt_.maxShapes) shapeLimit(op);
   const uint32_t index = ex.childCount++;
   ++stats_.shapesCreated;
-  const uint32_t node = sequentialString_ ? sequentialString_->addShape(op.index, slots, target.slotCount) : SequentialString::kNone;
+  const uint32_t node =
+      sequentialString_ ? sequentialString_->addShape(op.index, slots, target.slotCount) : SequentialString::kNone;
   if (target.rules.empty()) {  // a terminal: nothing will ever read it again (but a context)
     ++stats_.terminals;
     if (terminalPieces_)

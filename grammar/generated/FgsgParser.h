@@ -23,7 +23,7 @@ public:
     RPAREN = 45, LBRACK = 46, RBRACK = 47, LBRACE = 48, RBRACE = 49, RELSIZE = 50, 
     FLOAT = 51, INT = 52, ID = 53, STRING = 54, UNTERMINATED_STRING = 55, 
     LINE_COMMENT = 56, BLOCK_COMMENT = 57, UNTERMINATED_COMMENT = 58, WS = 59, 
-    UNKNOWN_CHAR = 60, VERTEX = 61
+    UNKNOWN_CHAR = 60, VERTEX = 61, COLORSTEP = 62
   };
 
   enum {
@@ -669,6 +669,7 @@ public:
     ItemContext *item();
     antlr4::tree::TerminalNode *PIPE();
     antlr4::tree::TerminalNode *OR();
+    antlr4::tree::TerminalNode *COLORSTEP();
     CallArgsContext *callArgs();
     antlr4::tree::TerminalNode *LBRACE();
     antlr4::tree::TerminalNode *RBRACE();

@@ -492,6 +492,25 @@ TEST_CASE("ABOP polygons: { . } items, and a name followed by a polygon", "[pars
   CHECK(onlyRule("A ~> Lock{ B | C };") == "A ~> Lock{ B | C }");
 }
 
+TEST_CASE("the lpfg colour step is a semicolon with more of the successor after it on its line", "[parse][successor]") {
+  CHECK(onlyRule("A ~> F ; F;") == "A ~> F ' F");
+  CHECK(onlyRule("A ~> F;(2) [ ; F ];") == "A ~> F '(2) [ ' F ]");
+  // A ';' before a rule head or a declaration, or at the end of its line, ends the rule.
+  Parsed two = parseOk("A ~> B; B ~> C;\nC ~> D ;\nD ~> E; derive parallel 2;");
+  REQUIRE(two.program.rules.size() == 4);
+  CHECK(dump(two.program.rules[0].branches[0].successor) == "B");
+  CHECK(dump(two.program.rules[2].branches[0].successor) == "D");
+  CHECK(dump(two.program.rules[3].branches[0].successor) == "E");
+  Parsed axiom = parseOk("axiom: F ; F;\n1: F ~> F F;");
+  REQUIRE(axiom.program.axioms.size() == 1);
+  CHECK(dump(axiom.program.axioms[0].successor) == "F ' F");
+  CHECK(axiom.program.rules.size() == 1);
+}
+
+TEST_CASE("an ABOP predefined surface ~name is the box at the turtle and the asset in brackets", "[parse][successor]") {
+  CHECK(onlyRule("A ~> F ~leaf(2) ~\"petal.obj\";") == "A ~> F [ ~(2) I(\"leaf\") ] [ ~ I(\"petal.obj\") ]");
+}
+
 TEST_CASE("the empty successor", "[parse][successor]") {
   for (const char* spelling : {"\u03B5", "epsilon", "NIL"}) {
     Parsed p = parseOk(std::string("A ~> ") + spelling + ";");
