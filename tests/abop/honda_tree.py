@@ -13,7 +13,7 @@ import subprocess
 import sys
 import tempfile
 
-from lsystem_reference import rotate, unmatched
+from lsystem_reference import TURNS, turn, unmatched
 
 R1, R2, A0, A2, D, WR = 0.9, 0.6, 45.0, 45.0, 137.5, 0.707
 
@@ -42,8 +42,8 @@ def derive(n):
 
 
 def turtle(modules):
-    """The turtle as docs/language.md describes it (heading Y; + turns Y towards -X, &
-    pitches Y towards +Z, / rolls Z towards -X; $ makes X = up x Y, normalised). Returns
+    """The turtle as docs/language.md describes it (lsystem_reference.turn; $ makes
+    X = up x Y, normalised). Returns
     the segments F(l) draws as (start, end, width) flattened to 7 numbers."""
     p, X, Y, Z, width = [0.0] * 3, [1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0], 0.1
     stack, segs = [], []
@@ -54,16 +54,8 @@ def turtle(modules):
             p = q
         elif symbol == "!":
             width = args[0]
-        elif symbol == "+":
-            Y, X = rotate(Y, [-v for v in X], args[0])
-            X = [-v for v in X]
-        elif symbol == "-":
-            Y, X = rotate(Y, X, args[0])
-        elif symbol == "&":
-            Y, Z = rotate(Y, Z, args[0])
-        elif symbol == "/":
-            Z, X = rotate(Z, [-v for v in X], args[0])
-            X = [-v for v in X]
+        elif symbol in TURNS:
+            X, Y, Z = turn(symbol, args[0], X, Y, Z)
         elif symbol == "$":
             x = [Y[2], 0.0, -Y[0]]  # (0, 1, 0) x Y
             norm = math.sqrt(sum(v * v for v in x))

@@ -44,6 +44,36 @@ def rotate(a, b, degrees):
     return ([c * x + s * y for x, y in zip(a, b)], [c * y - s * x for x, y in zip(a, b)])
 
 
+TURNS = "+-&^\\/|"
+
+
+def turn(symbol, angle, X, Y, Z):
+    """The 3D turtle's turn `symbol` (one of TURNS) by `angle` degrees, as
+    docs/language.md describes it: heading Y; + turns Y towards -X, - towards +X; & pitches
+    Y towards +Z, ^ towards -Z; \\ rolls Z towards +X, / towards -X; | turns 180 degrees.
+    Returns the new frame (X, Y, Z)."""
+    neg = lambda v: [-c for c in v]
+    if symbol == "+":
+        Y, X = rotate(Y, neg(X), angle)
+        return neg(X), Y, Z
+    if symbol == "-":
+        Y, X = rotate(Y, X, angle)
+        return X, Y, Z
+    if symbol == "&":
+        Y, Z = rotate(Y, Z, angle)
+        return X, Y, Z
+    if symbol == "^":
+        Y, Z = rotate(Y, neg(Z), angle)
+        return X, Y, neg(Z)
+    if symbol == "\\":
+        Z, X = rotate(Z, X, angle)
+        return X, Y, Z
+    if symbol == "/":
+        Z, X = rotate(Z, neg(X), angle)
+        return neg(X), Y, Z
+    return neg(X), neg(Y), Z  # |
+
+
 def fan_triangles(polygon_list, min_area=1e-12):
     """The triangles fgsg fills a polygon with (a fan from its first vertex), without those
     whose area is below the assembler's threshold, as (x0, y0, x1, y1, x2, y2)."""
@@ -57,9 +87,10 @@ def fan_triangles(polygon_list, min_area=1e-12):
     return out
 
 
-def fgsg_obj(fgsg, grammar, n, folder):
-    """`fgsg run GRAMMAR --set n=N` written as OBJ: its vertices (x, y) and, per element
-    keyword ('f', 'l'), each element as its corners' coordinates joined in one tuple."""
+def fgsg_obj(fgsg, grammar, n, folder, dims=2):
+    """`fgsg run GRAMMAR --set n=N` written as OBJ: its vertices (their first `dims`
+    coordinates) and, per element keyword ('f', 'l'), each element as its corners'
+    coordinates joined in one tuple."""
     out = os.path.join(folder, "out%d.obj" % n)
     subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
     vertices, elements = [], {"f": [], "l": []}
@@ -67,23 +98,7 @@ def fgsg_obj(fgsg, grammar, n, folder):
         for line in f:
             part = line.split()
             if part and part[0] == "v":
-                vertices.append((float(part[1]), float(part[2])))
-            elif part and part[0] in elements:
-                corners = [vertices[int(c.split("/")[0]) - 1] for c in part[1:]]
-                elements[part[0]].append(sum(corners, ()))
-    return elements
-
-
-def fgsg_obj_3d(fgsg, grammar, n, folder):
-    """As fgsg_obj, with the vertices' three coordinates (x, y, z)."""
-    out = os.path.join(folder, "out%d.obj" % n)
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
-    vertices, elements = [], {"f": [], "l": []}
-    with open(out) as f:
-        for line in f:
-            part = line.split()
-            if part and part[0] == "v":
-                vertices.append(tuple(float(c) for c in part[1:4]))
+                vertices.append(tuple(float(c) for c in part[1:1 + dims]))
             elif part and part[0] in elements:
                 corners = [vertices[int(c.split("/")[0]) - 1] for c in part[1:]]
                 elements[part[0]].append(sum(corners, ()))

@@ -12,7 +12,7 @@ import struct
 import sys
 import tempfile
 
-from lsystem_reference import fgsg_obj_3d, rotate, unmatched
+from lsystem_reference import TURNS, fgsg_obj, turn, unmatched
 
 # Fig. 1.25 (ABOP p. 26), as fgsg spells it: symbols one character each, `.` after each
 # f of the leaf (the book's f records a polygon vertex), S written Seg (here: S).
@@ -44,8 +44,7 @@ def derive(axiom, rules, n):
 
 
 def turtle3d(s, angle):
-    """The turtle as docs/language.md describes it: heading Y, `+` turns Y towards -X about
-    Z, `&` pitches Y towards +Z, `\\` rolls Z towards +X, `|` turns 180 degrees; F draws a
+    """The turtle as docs/language.md describes it (lsystem_reference.turn): F draws a
     unit segment, f moves; `.` inside `{ }` records a vertex. Returns (segments as
     (x0, y0, z0, x1, y1, z1), polygons as lists of (x, y, z))."""
     p, X, Y, Z = [0.0] * 3, [1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]
@@ -56,23 +55,8 @@ def turtle3d(s, angle):
             if c == "F":
                 segs.append(tuple(p + q))
             p = q
-        elif c == "+":
-            Y, X = rotate(Y, [-v for v in X], angle)
-            X = [-v for v in X]
-        elif c == "-":
-            Y, X = rotate(Y, X, angle)
-        elif c == "|":
-            X, Y = [-v for v in X], [-v for v in Y]
-        elif c == "&":
-            Y, Z = rotate(Y, Z, angle)
-        elif c == "^":
-            Y, Z = rotate(Y, [-v for v in Z], angle)
-            Z = [-v for v in Z]
-        elif c == "\\":
-            Z, X = rotate(Z, X, angle)
-        elif c == "/":
-            Z, X = rotate(Z, [-v for v in X], angle)
-            X = [-v for v in X]
+        elif c in TURNS:
+            X, Y, Z = turn(c, angle, X, Y, Z)
         elif c == "[":
             stack.append((p, X, Y, Z))
         elif c == "]":
@@ -109,7 +93,7 @@ def fan_triangles(polygons, min_area=1e-12):
 
 def check(fgsg, grammar, n, string, angle, folder):
     segs, polygons = turtle3d(string, angle)
-    got = fgsg_obj_3d(fgsg, grammar, n, folder)
+    got = fgsg_obj(fgsg, grammar, n, folder, dims=3)
     for what, want, have in (("segments", segs, got["l"]), ("triangles", fan_triangles(polygons), got["f"])):
         missing = unmatched(want, have)
         if len(want) != len(have) or missing:
