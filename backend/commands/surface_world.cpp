@@ -289,6 +289,17 @@ void SurfaceWorld::rotateAboutNormal(rt::Scope& s, double degrees) const {
 
 namespace {
 
+// The signed curvature of the field's streamline (a tensor's hyperstreamline) through p:
+// with u the unit direction and J the Jacobian of the field |value| u, the curve bends
+// by (n x u) . (J u) / |value| (counter-clockwise about the normal positive, relative to u,
+// whose sign a tensor field leaves arbitrary). Where the field vanishes: 0.
+double streamlineCurvature(const rt::field::TangentField& f, const SurfacePoint& p,
+                           const rt::Vec3& u, double value, rt::field::Eigenvector which) {
+  if (!(std::abs(value) > 0)) return 0.0;
+  const rt::Vec3 n = p.normal(f.mesh());
+  return n.cross(u).dot(f.jacobianWorld(p, which) * u) / std::abs(value);
+}
+
 [[noreturn]] void notAnswered(ir::Loc at, const std::string& field, const std::string& member,
                               const std::string& why) {
   throw DeriveError{at, "R016", field + "." + member + ": " + why};
@@ -316,7 +327,21 @@ double SurfaceWorld::fieldNumber(const rt::Scope& s, uint32_t env, const std::st
   if (member == "Xangle" || member == "Xangle1") return f.angle(p, s.axes.col(0));
   if (member == "Xangle2") return f.angle(p, s.axes.col(0), field::Eigenvector::Minor);
   if (member == "Yangle1") return f.angle(p, s.axes.col(1));
-  if (member == "div") return f.divergence(p);
+  if (member == "div" || member == "div1") return f.divergence(p);
+  if (member == "div2") return f.divergence(p, field::Eigenvector::Minor);
+  if (member == "streamcurv1" || member == "streamcurv2") {
+    const bool minor = member == "streamcurv2";
+    return streamlineCurvature(f, p, minor ? e.vector2 : e.vector1, minor ? e.value2 : e.value1,
+                               minor ? field::Eigenvector::Minor : field::Eigenvector::Major);
+  }
+  if (member == "tensorXX" || member == "tensorXY" || member == "tensorYY") {
+    // The tensor's components along the scope's X and Y axes, laid into the tangent plane.
+    const Vec3 n = p.normal(impl_->mesh);
+    const auto inPlane = [&](const Vec3& a) { return Vec3((a - a.dot(n) * n).normalized()); };
+    const Vec3 x = inPlane(s.axes.col(0)), y = inPlane(s.axes.col(1));
+    const rt::Mat3 t = f.tensorWorld(p);
+    return member == "tensorXX" ? x.dot(t * x) : member == "tensorXY" ? x.dot(t * y) : y.dot(t * y);
+  }
   if (member == "intensity") {
     if (!named.picture)
       notAnswered(at, named.name, member, "only a field made from a picture (`image(\"...\")`) has an "
@@ -343,12 +368,20 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
   if (member == "vector") return f.isTensor() ? Vec3(e.value1 * e.vector1) : f.vector(p);
   if (member == "vector1") return e.value1 * e.vector1;
   if (member == "vector2") return e.value2 * e.vector2;
-  if (member == "curl") return f.curl(p) * n;
+  if (member == "curl" || member == "curl1") return f.curl(p) * n;
+  if (member == "curl2") return f.curl(p, field::Eigenvector::Minor) * n;
   if (member == "gradient") {
     // Of the major eigenvalue (a vector field: its length), as a world tangent vector:
     // J^T v for the unit direction v, with J the eigenvector field's Jacobian.
     return f.jacobianWorld(p).transpose() * e.vector1;
   }
+  if (member == "gradient2") return f.jacobianWorld(p, field::Eigenvector::Minor).transpose() * e.vector2;
+  // The Jacobian applied to the scope's X or Y axis: how the (eigenvector) field changes
+  // per unit of length along it.
+  if (member == "jacobianX" || member == "jacobianY")
+    return f.jacobianWorld(p) * s.axes.col(member == "jacobianX" ? 0 : 1).normalized();
+  if (member == "jacobianX2" || member == "jacobianY2")
+    return f.jacobianWorld(p, field::Eigenvector::Minor) * s.axes.col(member == "jacobianX2" ? 0 : 1).normalized();
   notAnswered(at, impl_->fields[impl_->fieldOfEnv[env]].name, member, "not a vector-valued field member");
 }
 

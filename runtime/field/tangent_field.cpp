@@ -203,6 +203,13 @@ Mat3 TangentField::jacobianWorld(const SurfacePoint& p, Eigenvector which) const
   return E * jacobian(p, which) * E.transpose();
 }
 
+Mat3 TangentField::tensorWorld(const SurfacePoint& p) const {
+  const Frame& f = frames_->faceFrame(p.face);
+  Eigen::Matrix<double, 3, 2> E;
+  E << f.e1, f.e2;
+  return E * tensor(p) * E.transpose();
+}
+
 TensorGradient TangentField::tensorGradient(const SurfacePoint& p) const {
   const auto c = cornerTensors(p.face);
   const Mat2& inv = frames_->faceInverseEdges(p.face);

@@ -97,6 +97,9 @@ class TangentField : public DirectionField {
   Mat2 jacobian(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
   // The same as a world 3x3 map of the tangent plane, E J E^T (face frame axes E).
   Mat3 jacobianWorld(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
+  // The interpolated tensor as a world 3x3 tensor of the face plane, E T E^T (a vector
+  // field's: v v^T / |v|).
+  Mat3 tensorWorld(const SurfacePoint& p) const;
   TensorGradient tensorGradient(const SurfacePoint& p) const;
   // trace(J), and J(1,0) - J(0,1) (counter-clockwise about the face normal positive).
   double divergence(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;

@@ -1,0 +1,123 @@
+// FGSG §4.3's field queries on analytic fields: a linear vector field and a linear
+// diagonal tensor field on a flat grid are interpolated exactly, so their Jacobians,
+// divergences, curls, eigenvalue gradients, tensor components and streamline curvatures
+// are known in closed form.
+#include "derive_helpers.h"
+
+#include <Eigen/Geometry>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+using namespace fgsg;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 5 x 5 grid of vertices on [0, 4]^2 at z = 0, faces counter-clockwise seen from +Z,
+// and a world field file with one value per vertex from `value(x, y)`.
+std::string writeGridAndField(const std::string& name, const char* kind,
+                              const std::function<std::string(double, double)>& value) {
+  const fs::path dir = fs::temp_directory_path() / ("fgsg_field_members_" + name);
+  fs::create_directories(dir);
+  std::ofstream off(dir / "grid.off");
+  off << "OFF\n25 32 0\n";
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) off << i << " " << j << " 0\n";
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const int v = 5 * j + i;
+      off << "3 " << v << " " << v + 1 << " " << v + 6 << "\n3 " << v << " " << v + 6 << " " << v + 5 << "\n";
+    }
+  std::ofstream field(dir / "field.txt");
+  field << "fgsg-field 1 " << kind << " 25 world\n";
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) field << value(i, j) << "\n";
+  return dir.string();
+}
+
+struct Queried {
+  Eigen::Vector3d x, y;  // the scope's unit X and Y axes
+  std::vector<double> values;
+};
+
+// The axiom turns 30 degrees from the field's direction and passes the queries (a
+// comma-separated list) to A, whose instance records them as its parameters.
+Queried derive(const std::string& dir, const char* kind, const std::string& queries) {
+  std::string params = "q0";
+  for (size_t k = 0, count = 1; k < queries.size(); ++k)
+    if (queries[k] == ',') params += ", q" + std::to_string(count++);
+  const auto r = test::deriveText("surface \"" + dir + "/grid.off\";\nfield V = " + kind + "(\"" + dir +
+                                  "/field.txt\");\nAxiom ~> RS(30) A(" + queries + ");\nA(" + params +
+                                  ") ~> I(\"cube\");\n");
+  REQUIRE(r.ok);
+  const rt::Instance& inst = r.instances.instances.at(0);
+  const Eigen::Matrix4d t = test::transformOf(inst);
+  Queried q{t.block<3, 1>(0, 0).normalized(), t.block<3, 1>(0, 1).normalized(), {}};
+  q.values.assign(r.instances.params.begin() + inst.firstParam,
+                  r.instances.params.begin() + inst.firstParam + inst.paramCount);
+  return q;
+}
+
+Eigen::Vector3d vec(const std::vector<double>& v, size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
+
+}  // namespace
+
+TEST_CASE("field queries of a linear vector field are exact", "[surface][field]") {
+  // v(x, y) = (a x + b y + c, d x + e y + f): J = [[a, b], [d, e]] everywhere.
+  const double a = 0.3, b = -0.2, c = 1, d = 0.4, e = 0.1, f = 0.5;
+  const std::string dir = writeGridAndField("vector", "vector", [&](double x, double y) {
+    return std::to_string(a * x + b * y + c) + " " + std::to_string(d * x + e * y + f) + " 0";
+  });
+  const Queried q = derive(dir, "vector",
+                           "V.div, V.div1, V.curl, V.curl1, V.jacobianX, V.jacobianY, V.streamcurv1, V.tensorXX, "
+                           "V.tensorXY, V.tensorYY");
+  REQUIRE(q.values.size() == 18);
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  J << a, b, 0, d, e, 0, 0, 0, 0;
+  const Eigen::Vector3d v(a * 2 + b * 2 + c, d * 2 + e * 2 + f, 0);  // the axiom stands at (2, 2, 0)
+  const Eigen::Vector3d u = v.normalized(), n = Eigen::Vector3d::UnitZ();
+  CHECK(q.values[0] == Approx(a + e).margin(1e-12));
+  CHECK(q.values[1] == Approx(a + e).margin(1e-12));
+  CHECK((vec(q.values, 2) - (d - b) * n).norm() < 1e-12);
+  CHECK((vec(q.values, 5) - (d - b) * n).norm() < 1e-12);
+  CHECK((vec(q.values, 8) - J * q.x).norm() < 1e-12);
+  CHECK((vec(q.values, 11) - J * q.y).norm() < 1e-12);
+  CHECK(q.values[14] == Approx(n.cross(u).dot(J * u) / v.norm()).margin(1e-12));
+  // A vector field's tensor is v v^T / |v|.
+  const Eigen::Matrix3d T = v * v.transpose() / v.norm();
+  CHECK(q.values[15] == Approx(q.x.dot(T * q.x)).margin(1e-12));
+  CHECK(q.values[16] == Approx(q.x.dot(T * q.y)).margin(1e-12));
+  CHECK(q.values[17] == Approx(q.y.dot(T * q.y)).margin(1e-12));
+}
+
+TEST_CASE("field queries of a linear tensor field answer both eigenvector fields", "[surface][field]") {
+  // T(x, y) = diag(3 + x, 1 + y / 2): at (2, 2) value1 = 5 along X, value2 = 2 along Y.
+  const std::string dir = writeGridAndField("tensor", "tensor", [](double x, double y) {
+    return std::to_string(3 + x) + " 0 0 " + std::to_string(1 + y / 2) + " 0 0";
+  });
+  const Queried q = derive(dir, "tensor",
+                           "V.gradient, V.gradient2, V.div1, V.div2, V.curl2, V.jacobianX2, V.streamcurv1, "
+                           "V.streamcurv2, V.tensorXX, V.tensorXY, V.tensorYY");
+  REQUIRE(q.values.size() == 19);
+  CHECK((vec(q.values, 0) - Eigen::Vector3d(1, 0, 0)).norm() < 1e-12);    // of value1 = 3 + x
+  CHECK((vec(q.values, 3) - Eigen::Vector3d(0, 0.5, 0)).norm() < 1e-12);  // of value2 = 1 + y / 2
+  // The eigenvector fields |value| v: (3 + x) X and (1 + y / 2) Y, signs arbitrary.
+  CHECK(std::abs(q.values[6]) == Approx(1).margin(1e-12));
+  CHECK(std::abs(q.values[7]) == Approx(0.5).margin(1e-12));
+  CHECK(vec(q.values, 8).norm() < 1e-12);
+  // J2 = +-[[0, 0], [0, 1/2]]: along X the minor field does not change.
+  const Eigen::Vector3d j2 = vec(q.values, 11);
+  CHECK((j2.cwiseAbs() - Eigen::Vector3d(0, 0.5 * std::abs(q.x.y()), 0)).norm() < 1e-12);
+  CHECK(q.values[14] == Approx(0).margin(1e-12));  // straight lines
+  CHECK(q.values[15] == Approx(0).margin(1e-12));
+  const Eigen::Matrix3d T = Eigen::Vector3d(5, 2, 0).asDiagonal();
+  CHECK(q.values[16] == Approx(q.x.dot(T * q.x)).margin(1e-12));
+  CHECK(q.values[17] == Approx(q.x.dot(T * q.y)).margin(1e-12));
+  CHECK(q.values[18] == Approx(q.y.dot(T * q.y)).margin(1e-12));
+}
