@@ -103,7 +103,7 @@ bool isFeatureMember(const std::string& m, bool& isNumber, bool& takesString) {
 bool isFieldMember(const std::string& m, bool& isVector) {
   static const char* kVectors[] = {"vector",    "vector1",   "vector2",    "gradient",  "gradient2",
                                    "curl",      "curl1",     "curl2",      "jacobianX", "jacobianY",
-                                   "jacobianX2", "jacobianY2"};
+                                   "jacobianX2", "jacobianY2", "rgb"};
   static const char* kScalars[] = {"value",       "value1",      "value2",   "length",   "length1",  "length2",
                                    "Xangle",      "Xangle1",     "Xangle2",  "Yangle1",  "div",      "div1",
                                    "div2",        "streamcurv1", "streamcurv2", "tensorXX", "tensorXY", "tensorYY",

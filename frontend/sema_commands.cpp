@@ -24,6 +24,13 @@ int axisMask(const std::string& axes) {
   return mask;
 }
 
+bool drawsRandom(const Expr& e) {
+  if (e.kind == ExprKind::Call && (e.text == "Rand" || e.text == "rand")) return true;
+  for (const auto& a : e.args)
+    if (a && drawsRandom(*a)) return true;
+  return false;
+}
+
 }  // namespace
 
 void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Where& w) {
@@ -103,6 +110,16 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (n != 1) {
         diags_.error("E016", item.range, "'Color' takes three numbers r, g, b from 0 to 1, or one \"#rrggbb\": " +
                                              std::string(cmd.signature));
+        break;
+      }
+      // A vector (r, g, b), as a picture's colour `P.rgb`: read three times, so it may not
+      // draw random numbers unless written out as (r, g, b).
+      if (typeOf(*item.args[0], w, false) == ValueType::Vec3) {
+        expect(*item.args[0], Where{w.rule, false}, ValueType::Vec3, "the colour");
+        if (item.args[0]->kind != ExprKind::Vector && drawsRandom(*item.args[0]))
+          diags_.error("E016", item.args[0]->range,
+                       "a colour vector that draws random numbers must be written (r, g, b): each "
+                       "component is read from it");
         break;
       }
       const std::string text = stringArg(0, "colour");

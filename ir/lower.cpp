@@ -322,7 +322,24 @@ class Lowerer {
       case CommandId::Lock: op.kind = OpKind::Lock; break;
       case CommandId::Color:
         op.kind = OpKind::Color;
-        if (item.args.size() == 1) {  // "#rrggbb": three constant numbers
+        if (item.args.size() == 1 && sema_.exprTypes.count(item.args[0].get()) &&
+            sema_.exprTypes.at(item.args[0].get()) == frontend::ValueType::Vec3) {
+          // A vector (r, g, b): its components (written out, each once; else read from it).
+          Expr v = expr(*item.args[0]);
+          if (v.op == ExprOp::MakeVec) {
+            op.args = std::move(v.args);
+          } else {
+            for (uint32_t k = 0; k < 3; ++k) {
+              Expr c;
+              c.op = ExprOp::VecElem;
+              c.type = Type::Num;
+              c.index = k;
+              c.loc = v.loc;
+              c.args.push_back(v);
+              op.args.push_back(std::move(c));
+            }
+          }
+        } else if (item.args.size() == 1) {  // "#rrggbb": three constant numbers
           std::array<double, 3> rgb{};
           frontend::parseHexColor(constString(*item.args[0]), rgb);
           for (double c : rgb) {

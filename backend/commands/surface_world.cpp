@@ -375,6 +375,12 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
     // J^T v for the unit direction v, with J the eigenvector field's Jacobian.
     return f.jacobianWorld(p).transpose() * e.vector1;
   }
+  if (member == "rgb") {
+    const Impl::Field& named = impl_->fields[impl_->fieldOfEnv[env]];
+    if (!named.picture)
+      notAnswered(at, named.name, member, "only a field made from a picture (`image(\"...\")`) has colours");
+    return named.picture->colourUnder(impl_->mesh, p.position(impl_->mesh));
+  }
   if (member == "gradient2") return f.jacobianWorld(p, field::Eigenvector::Minor).transpose() * e.vector2;
   // The Jacobian applied to the scope's X or Y axis: how the (eigenvector) field changes
   // per unit of length along it.

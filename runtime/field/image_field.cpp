@@ -64,9 +64,12 @@ bool Picture::load(const std::string& path, std::string& error) {
   width_ = rgb.width;
   height_ = rgb.height;
   grey_.resize(size_t(width_) * height_);
-  for (size_t i = 0; i < grey_.size(); ++i)  // Rec. 709 luma
-    grey_[i] = static_cast<float>(
+  for (auto& channel : channels_) channel.resize(grey_.size());
+  for (size_t i = 0; i < grey_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) channels_[c][i] = static_cast<float>(rgb.rgb[3 * i + c] / 255.0);
+    grey_[i] = static_cast<float>(  // Rec. 709 luma
         (0.2126 * rgb.rgb[3 * i] + 0.7152 * rgb.rgb[3 * i + 1] + 0.0722 * rgb.rgb[3 * i + 2]) / 255.0);
+  }
   return true;
 }
 
@@ -76,6 +79,13 @@ double Picture::under(const SurfaceMesh& mesh, const Vec3& p) const {
   double x, y;
   pixelOf(mesh, p, width_, height_, x, y);
   return at(x, y);
+}
+
+Vec3 Picture::colourUnder(const SurfaceMesh& mesh, const Vec3& p) const {
+  double x, y;
+  pixelOf(mesh, p, width_, height_, x, y);
+  return {bilinear(channels_[0], width_, height_, x, y), bilinear(channels_[1], width_, height_, x, y),
+          bilinear(channels_[2], width_, height_, x, y)};
 }
 
 TangentField imageField(std::shared_ptr<const TangentFrames> frames, const Picture& picture) {

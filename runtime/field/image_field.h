@@ -8,13 +8,15 @@
 
 #include "runtime/field/tangent_field.h"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace fgsg::rt::field {
 
-// The picture's brightness, for the `intensity` query and for building the field.
+// The picture's brightness, for the `intensity` query and for building the field, and
+// its colours, for the `rgb` query.
 class Picture {
  public:
   // Any format stb_image reads (PNG, JPEG, PGM ...); false with a message otherwise.
@@ -26,6 +28,8 @@ class Picture {
   double at(double x, double y) const;
   // The brightness under the surface point p, by the surface's XY bounding box.
   double under(const SurfaceMesh& mesh, const Vec3& p) const;
+  // The colour (r, g, b in [0, 1], bilinear) under p, likewise.
+  Vec3 colourUnder(const SurfaceMesh& mesh, const Vec3& p) const;
 
   std::vector<float>& values() { return grey_; }
   const std::vector<float>& values() const { return grey_; }
@@ -33,6 +37,7 @@ class Picture {
  private:
   int width_ = 0, height_ = 0;
   std::vector<float> grey_;  // row-major, row 0 at the top
+  std::array<std::vector<float>, 3> channels_;  // red, green, blue, likewise
 };
 
 // Gaussian scales (in pixels) of the structure tensor: the gradient's pre-smoothing, and

@@ -1,11 +1,12 @@
 // FGSG §4.3's field queries on analytic fields: a linear vector field and a linear
 // diagonal tensor field on a flat grid are interpolated exactly, so their Jacobians,
 // divergences, curls, eigenvalue gradients, tensor components and streamline curvatures
-// are known in closed form.
+// are known in closed form; a picture's colours under a scope, and Color taking them.
 #include "derive_helpers.h"
 
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
+#include <stb/stb_image_write.h>
 
 #include <cmath>
 #include <filesystem>
@@ -120,4 +121,30 @@ TEST_CASE("field queries of a linear tensor field answer both eigenvector fields
   CHECK(q.values[16] == Approx(q.x.dot(T * q.x)).margin(1e-12));
   CHECK(q.values[17] == Approx(q.x.dot(T * q.y)).margin(1e-12));
   CHECK(q.values[18] == Approx(q.y.dot(T * q.y)).margin(1e-12));
+}
+
+TEST_CASE("an image field answers the colour under the scope, and Color takes it as a vector", "[surface][field]") {
+  // 4 x 4 pixels, red 60 x, green 30 y, blue 200: the surface's centre is pixel (1.5, 1.5).
+  const fs::path dir = fs::temp_directory_path() / "fgsg_field_members_rgb";
+  fs::create_directories(dir);
+  std::vector<unsigned char> rgb;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) rgb.insert(rgb.end(), {(unsigned char)(60 * x), (unsigned char)(30 * y), 200});
+  const std::string png = (dir / "ramp.png").string();
+  REQUIRE(stbi_write_png(png.c_str(), 4, 4, 3, rgb.data(), 4 * 3) != 0);
+  const auto r = test::deriveText("surface plane(4, 4);\nfield P = image(\"" + png +
+                                  "\");\nAxiom ~> A(P.rgb);\nA(c) ~> Color(c) I(\"cube\") Color((dot(c, (1, 0, 0)), 0, 0)) I(\"cube\");\n");
+  REQUIRE(r.ok);
+  const rt::Instance& inst = r.instances.instances.at(0);
+  const Eigen::Vector3d want(90 / 255.0, 45 / 255.0, 200 / 255.0);
+  const double* c = r.instances.params.data() + inst.firstParam;
+  CHECK((Eigen::Vector3d(c[0], c[1], c[2]) - want).norm() < 1e-6);
+  CHECK((Eigen::Vector3f(inst.color[0], inst.color[1], inst.color[2]).cast<double>() - want).norm() < 1e-6);
+  const rt::Instance& red = r.instances.instances.at(1);
+  CHECK(red.color[0] == Approx(want.x()).margin(1e-6));
+  CHECK(red.color[1] == 0);
+  // A colour vector that draws random numbers must be written out.
+  CHECK_THROWS_WITH(test::compileText("A ~> Color(normalize((Rand(0, 1), 1, 1))) I(\"cube\");"),
+                    Catch::Contains("E016"));
+  CHECK_NOTHROW(test::compileText("A ~> Color((Rand(0, 1), 1, 1)) I(\"cube\");"));
 }
