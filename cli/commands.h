@@ -17,5 +17,6 @@ int replCommand(const Args& args);   // fgsg repl (interactive, or a script on s
 int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
 int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)
 int evolveCommand(const Args& args);   // fgsg evolve TILES.json (L-system tile patterns)
+int fieldCommand(const Args& args);    // fgsg field FILE (a grammar's field: streamlines, singularities)
 
 }  // namespace fgsg::cli

@@ -32,6 +32,9 @@ usage:
   fgsg evolve TILES.json [--k K] [--generation G] [--p4] [--seed N] [--json out.json]
                  [--preview out.png] [--lsystem '{...}'] [...]
                            evolve a 2D L-system tile pattern (Chan & Hui; docs/evolve.md)
+  fgsg field FILE [-o field.glb|.obj|.ply] [--preview field.png] [--field NAME]
+                 [--seeds N] [--length L] [--step S] [--minor] [--surface mesh.off]
+                           show FILE's field: streamlines and singularities (listed)
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -91,6 +94,7 @@ int main(int argc, char** argv) {
     if (cmd == "compile") return fgsg::cli::compileCommand(args);
     if (cmd == "atlas") return fgsg::cli::atlasCommand(args);
     if (cmd == "evolve") return fgsg::cli::evolveCommand(args);
+    if (cmd == "field") return fgsg::cli::fieldCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -102,6 +106,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field; see fgsg --help)\n";
   return 2;
 }

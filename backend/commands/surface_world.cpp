@@ -487,4 +487,10 @@ rt::Mesh SurfaceWorld::surfaceMesh() const {
 
 size_t SurfaceWorld::faceCount() const { return impl_->mesh.faceCount(); }
 
+std::vector<std::pair<std::string, const rt::field::TangentField*>> SurfaceWorld::fields() const {
+  std::vector<std::pair<std::string, const rt::field::TangentField*>> out;
+  for (const auto& f : impl_->fields) out.emplace_back(f.name, f.values.get());
+  return out;
+}
+
 }  // namespace fgsg::backend

@@ -20,6 +20,7 @@ namespace fgsg::rt::surface {
 struct SurfaceMesh;
 }
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fgsg::backend {
@@ -67,6 +68,8 @@ class SurfaceWorld {
 
   // The surface as output geometry (world space, smooth normals).
   rt::Mesh surfaceMesh() const;
+  // The declared fields in declaration order, by name (`fgsg field` draws them).
+  std::vector<std::pair<std::string, const rt::field::TangentField*>> fields() const;
   size_t faceCount() const;
 
  private:

@@ -268,7 +268,7 @@ class Derivation final : public QueryHost {
   void interpretString(const ModuleString& str);
   void linkBrackets(const ModuleString& str);
   [[noreturn]] void sequentialOnly(const ir::Op& op);
-  [[noreturn]] void refuseInstanceReach(const rt::Mat4& unitBoxToWorld, uint32_t symbol, ir::Loc loc) const;
+  void checkInstanceReach(const rt::Mat4& unitBoxToWorld, uint32_t symbol, ir::Loc loc) const;
 
   const ir::Module& m_;
   const rt::DeriveOptions& opt_;

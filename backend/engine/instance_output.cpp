@@ -103,9 +103,9 @@ std::array<float, 3> Derivation::colorFor(const std::string& name) {
   return {pastel(r), pastel(g), pastel(b)};
 }
 
-// R005 for an instance whose scope is not finite or reaches past a 32-bit float; the
-// quick bound (unitBoxClearlyFitsFloat) said it might.
-void Derivation::refuseInstanceReach(const rt::Mat4& t, uint32_t symbol, ir::Loc loc) const {
+// R005 when an instance's scope is not finite or reaches past a 32-bit float; called where
+// the quick bound (unitBoxClearlyFitsFloat) cannot tell that it fits.
+void Derivation::checkInstanceReach(const rt::Mat4& t, uint32_t symbol, ir::Loc loc) const {
   for (int k = 0; k < 16; ++k)
     if (!std::isfinite(t.data()[k]))
       throw DeriveError{loc, "R005",
@@ -125,7 +125,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
                                const double* params, uint32_t paramCount, ir::Loc loc) {
   if (asset == noneAsset_) return;
   const rt::Mat4 t = scope.unitBoxToWorld();
-  if (!rt::unitBoxClearlyFitsFloat(t)) refuseInstanceReach(t, symbol, loc);
+  if (!rt::unitBoxClearlyFitsFloat(t)) checkInstanceReach(t, symbol, loc);
   // Written in place: a million-segment L-system places an instance per segment.
   rt::Instance& inst = out_.instances.emplace_back();
   inst.asset = asset;

@@ -1,0 +1,161 @@
+// fgsg field: show a grammar's field before anything grows on it (FGSG Fig. 7): its
+// streamlines traced from seeds over the surface and its singularities with their
+// indices, written as a mesh (the surface, the streamlines as lines, the singularities as
+// coloured markers) and drawn with --preview; the singularities are listed.
+#include "backend/commands/surface_world.h"
+#include "cli/commands.h"
+#include "cli/compile_file.h"
+#include "cli/options.h"
+#include "runtime/field/field_sketch.h"
+#include "runtime/io/read_input.h"
+#include "runtime/io/write_mesh.h"
+#include "runtime/render/preview.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+namespace fgsg::cli {
+namespace {
+
+struct FieldOptions {
+  std::string file, output, preview, field;
+  rt::field::FieldSketchOptions sketch;
+  rt::DeriveOptions derive;
+};
+
+FieldOptions parseFieldOptions(const Args& args) {
+  FieldOptions o;
+  OptionReader r(args);
+  while (!r.done()) {
+    if (r.grammarFile(o.file)) continue;
+    const std::string f = r.flag();
+    if (f == "-o" || f == "--output") o.output = r.value(f);
+    else if (f == "--preview") o.preview = r.value(f);
+    else if (f == "--field") o.field = r.value(f);
+    else if (f == "--seeds") o.sketch.seeds = static_cast<int>(r.unsignedValue(f, 1, 100000));
+    else if (f == "--length" || f == "--step") {
+      const double v = r.numberValue(f);
+      if (!(v > 0) || !std::isfinite(v)) throw UsageError{f + " must be a positive number"};
+      (f == "--length" ? o.sketch.length : o.sketch.step) = v;
+    } else if (f == "--minor") o.sketch.minor = true;
+    else if (f == "--surface") o.derive.surfaceOverride = r.value(f);
+    else if (f == "--surface-size") {
+      o.derive.surfaceSize = r.numberValue(f);
+      if (!(o.derive.surfaceSize > 0) || !std::isfinite(o.derive.surfaceSize))
+        throw UsageError{"--surface-size must be a positive number"};
+    } else if (f == "--repair-surface") o.derive.repairSurface = true;
+    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
+  }
+  if (o.file.empty()) throw UsageError{"no grammar given: fgsg field FILE.fgsg [-o field.glb] [--preview field.png]"};
+  if (o.output.empty() && o.preview.empty()) throw UsageError{"nothing to write: give -o FILE (.glb .obj .ply) or --preview FILE.png"};
+  if (!o.output.empty()) {
+    const auto& known = rt::io::supportedMeshExtensions();
+    if (std::find(known.begin(), known.end(), lowerExtension(o.output)) == known.end())
+      throw UsageError{"-o " + o.output + ": the sketch is written as .glb, .obj or .ply"};
+  }
+  if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
+    throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
+  return o;
+}
+
+}  // namespace
+
+int fieldCommand(const Args& args) {
+  FieldOptions opt;
+  try {
+    opt = parseFieldOptions(args);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg field: " << e.message << "\n";
+    return 2;
+  }
+  if (!opt.derive.surfaceOverride.empty()) {
+    std::string error;
+    if (!rt::io::checkInputFile(opt.derive.surfaceOverride, "a mesh file", error)) {
+      std::cerr << "fgsg field: --surface " << error << "\n";
+      return 1;
+    }
+    opt.derive.surfaceOverride = std::filesystem::absolute(opt.derive.surfaceOverride).lexically_normal().string();
+  }
+  auto compiled = compileFile(opt.file, false);
+  if (!compiled) return 1;
+  const ir::Module& m = compiled->module;
+  if (!m.surface.present && opt.derive.surfaceOverride.empty()) {
+    std::cerr << "fgsg field: " << opt.file << " declares no surface (fields live on one): add `surface ...;` or "
+              << "pass --surface MESH\n";
+    return 1;
+  }
+  const auto grammarDir = std::filesystem::path(opt.file).parent_path();
+  std::vector<std::string> dirs;
+  for (const auto& dir : {grammarDir.empty() ? std::filesystem::path(".") : grammarDir, grammarDir / "assets"})
+    dirs.push_back(dir.string());
+  std::unique_ptr<backend::SurfaceWorld> world;
+  try {
+    world = std::make_unique<backend::SurfaceWorld>(m, opt.derive, dirs);
+  } catch (const backend::DeriveError& e) {
+    frontend::Diagnostics diags(&compiled->source);
+    diags.error(e.code, {{e.loc.line, e.loc.col}, {e.loc.line, e.loc.col}}, e.message);
+    diags.print(std::cerr);
+    return 1;
+  }
+  const auto fields = world->fields();
+  if (fields.empty()) {
+    std::cerr << "fgsg field: " << opt.file << " declares no field (`field F = design tensor { ... };` ...)\n";
+    return 1;
+  }
+  const rt::field::TangentField* field = fields.front().second;
+  std::string name = fields.front().first;
+  if (!opt.field.empty()) {
+    field = nullptr;
+    std::string names;
+    for (const auto& [n, f] : fields) {
+      if (n == opt.field) field = f;
+      names += (names.empty() ? "" : ", ") + n;
+    }
+    if (!field) {
+      std::cerr << "fgsg field: --field " << opt.field << ": " << opt.file << " declares no such field (" << names
+                << ")\n";
+      return 2;
+    }
+    name = opt.field;
+  }
+
+  const rt::surface::SurfaceMesh& mesh = world->mesh();
+  const rt::field::FieldSketch sketch = rt::field::sketchField(mesh, *field, opt.sketch);
+  std::map<std::string, int> kinds;
+  for (const auto& s : sketch.singularities) ++kinds[rt::field::singularityName(s.kind)];
+  std::printf("%s: field %s (%s) on %zu faces: %zu streamlines", opt.file.c_str(), name.c_str(),
+              field->isTensor() ? "tensor" : "vector", mesh.faceCount(),
+              sketch.majorLines.size() + sketch.minorLines.size());
+  std::printf(", %zu singularities", sketch.singularities.size());
+  for (const auto& [kind, count] : kinds) std::printf(" (%d %s)", count, kind.c_str());
+  std::printf("\n");
+  for (const auto& s : sketch.singularities)
+    std::printf("  %s, index %s at (%g, %g, %g)\n", rt::field::singularityName(s.kind),
+                s.indexTimesTwo % 2 ? (s.indexTimesTwo > 0 ? "+1/2" : "-1/2") : (s.indexTimesTwo > 0 ? "+1" : "-1"),
+                s.position.x(), s.position.y(), s.position.z());
+
+  const rt::Mesh out = rt::field::sketchMesh(world->surfaceMesh(), sketch, 3 * mesh.meanEdgeLength);
+  std::string error;
+  if (!opt.output.empty()) {
+    if (!rt::io::writeMesh(out, opt.output, error)) {
+      std::cerr << "fgsg field: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s (%zu triangles, %zu line segments)\n", opt.output.c_str(), out.triangleCount(),
+                out.lineCount());
+  }
+  if (!opt.preview.empty()) {
+    if (!rt::render::renderPreview(out, rt::render::PreviewOptions{}, opt.preview, error)) {
+      std::cerr << "fgsg field: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s\n", opt.preview.c_str());
+  }
+  return 0;
+}
+
+}  // namespace fgsg::cli
