@@ -7,12 +7,14 @@
 #include "cli/compile_file.h"
 #include "cli/options.h"
 #include "runtime/field/field_sketch.h"
+#include "runtime/io/atomic_file.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -22,7 +24,7 @@ namespace fgsg::cli {
 namespace {
 
 struct FieldOptions {
-  std::string file, output, preview, field;
+  std::string file, output, preview, field, singularities;
   rt::field::FieldSketchOptions sketch;
   rt::DeriveOptions derive;
 };
@@ -35,6 +37,7 @@ FieldOptions parseFieldOptions(const Args& args) {
     const std::string f = r.flag();
     if (f == "-o" || f == "--output") o.output = r.value(f);
     else if (f == "--preview") o.preview = r.value(f);
+    else if (f == "--singularities") o.singularities = r.value(f);
     else if (f == "--field") o.field = r.value(f);
     else if (f == "--seeds") o.sketch.seeds = static_cast<int>(r.unsignedValue(f, 1, 100000));
     else if (f == "--length" || f == "--step") {
@@ -51,7 +54,10 @@ FieldOptions parseFieldOptions(const Args& args) {
     else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
   }
   if (o.file.empty()) throw UsageError{"no grammar given: fgsg field FILE.fgsg [-o field.glb] [--preview field.png]"};
-  if (o.output.empty() && o.preview.empty()) throw UsageError{"nothing to write: give -o FILE (.glb .obj .ply) or --preview FILE.png"};
+  if (o.output.empty() && o.preview.empty() && o.singularities.empty())
+    throw UsageError{"nothing to write: give -o FILE (.glb .obj .ply), --preview FILE.png or --singularities FILE.json"};
+  if (!o.singularities.empty() && lowerExtension(o.singularities) != ".json")
+    throw UsageError{"--singularities " + o.singularities + ": the list is written as JSON (name it .json)"};
   if (!o.output.empty()) {
     const auto& known = rt::io::supportedMeshExtensions();
     if (std::find(known.begin(), known.end(), lowerExtension(o.output)) == known.end())
@@ -60,6 +66,27 @@ FieldOptions parseFieldOptions(const Args& args) {
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   return o;
+}
+
+// The singularities as JSON: per singularity its kind, index (as "+1/2" and as a number)
+// and position.
+std::string singularitiesJson(const std::string& field, const rt::field::FieldSketch& sketch) {
+  std::string s = "{\"field\":\"" + field + "\",\"singularities\":[";
+  char buf[256];
+  for (size_t i = 0; i < sketch.singularities.size(); ++i) {
+    const auto& g = sketch.singularities[i];
+    std::snprintf(buf, sizeof buf, "%s\n{\"kind\":\"%s\",\"index\":%g,\"position\":[%.9g,%.9g,%.9g]}", i ? "," : "",
+                  rt::field::singularityName(g.kind), g.indexTimesTwo / 2.0, g.position.x(), g.position.y(),
+                  g.position.z());
+    s += buf;
+  }
+  return s + "\n]}\n";
+}
+
+// How a singularity's index is written: +1/2, -1/2, +1, -1.
+std::string indexText(int indexTimesTwo) {
+  const std::string sign = indexTimesTwo > 0 ? "+" : "-";
+  return indexTimesTwo % 2 ? sign + std::to_string(std::abs(indexTimesTwo)) + "/2" : sign + std::to_string(std::abs(indexTimesTwo) / 2);
 }
 
 }  // namespace
@@ -135,11 +162,17 @@ int fieldCommand(const Args& args) {
   std::printf("\n");
   for (const auto& s : sketch.singularities)
     std::printf("  %s, index %s at (%g, %g, %g)\n", rt::field::singularityName(s.kind),
-                s.indexTimesTwo % 2 ? (s.indexTimesTwo > 0 ? "+1/2" : "-1/2") : (s.indexTimesTwo > 0 ? "+1" : "-1"),
-                s.position.x(), s.position.y(), s.position.z());
+                indexText(s.indexTimesTwo).c_str(), s.position.x(), s.position.y(), s.position.z());
 
   const rt::Mesh out = rt::field::sketchMesh(world->surfaceMesh(), sketch, 3 * mesh.meanEdgeLength);
   std::string error;
+  if (!opt.singularities.empty()) {
+    if (!rt::io::writeFileAtomically(opt.singularities, singularitiesJson(name, sketch), error)) {
+      std::cerr << "fgsg field: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s (%zu singularities)\n", opt.singularities.c_str(), sketch.singularities.size());
+  }
   if (!opt.output.empty()) {
     if (!rt::io::writeMesh(out, opt.output, error)) {
       std::cerr << "fgsg field: " << error << "\n";

@@ -33,7 +33,8 @@ usage:
                  [--preview out.png] [--lsystem '{...}'] [...]
                            evolve a 2D L-system tile pattern (Chan & Hui; docs/evolve.md)
   fgsg field FILE [-o field.glb|.obj|.ply] [--preview field.png] [--field NAME]
-                 [--seeds N] [--length L] [--step S] [--minor] [--surface mesh.off]
+                 [--singularities s.json] [--seeds N] [--length L] [--step S] [--minor]
+                 [--surface mesh.off]
                            show FILE's field: streamlines and singularities (listed)
   fgsg --help | --version
 

@@ -27,6 +27,18 @@ node "$root/scripts/validate-gltf.js" "$tmp/field.glb" >"$tmp/validator" 2>&1 ||
   { cat "$tmp/validator" >&2; fail "gltf-validator rejected the sketch"; }
 "$fgsg" field "$tmp/design.fgsg" -o "$tmp/field.obj" >/dev/null 2>&1 || fail "OBJ output failed"
 grep -q "^l " "$tmp/field.obj" || fail "the OBJ sketch has no streamline segments"
+# The singularities as JSON: the listed ones, with kind, index and position.
+"$fgsg" field "$tmp/design.fgsg" --singularities "$tmp/s.json" >/dev/null 2>&1 || fail "--singularities failed"
+python3 - "$tmp/s.json" <<'PY' || fail "the singularities JSON is not what was listed"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["field"] == "F"
+kinds = sorted((g["kind"], g["index"]) for g in s["singularities"])
+assert ("wedge", 0.5) in kinds and ("trisector", -0.5) in kinds, kinds
+w = [g for g in s["singularities"] if g["kind"] == "wedge" and abs(g["position"][0] + 2) < 0.1]
+assert len(w) == 1 and abs(w[0]["position"][1]) < 0.1, w
+PY
+expect 2 "written as JSON" -- "$fgsg" field "$tmp/design.fgsg" --singularities "$tmp/s.txt"
 
 # Mistakes: located or named, non-zero.
 cp "$root/examples/koch.fgsg" "$tmp/koch.fgsg"
