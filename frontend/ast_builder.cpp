@@ -679,6 +679,20 @@ ExprPtr AstBuilder::buildMember(P::MemberPrimaryContext* ctx) {
   e->text = text(ctx->member);
   e->hasCall = ctx->callArgs() != nullptr;
   e->args = buildCallArgs(ctx->callArgs());
+  if (!ctx->sub) return e;
+  // CGA's `Lot.props.height` is Lot.prop("height", 0): a number property, 0 without lots.
+  if (e->object == "Lot" && e->text == "props" && !e->hasCall) {
+    e->text = "prop";
+    e->hasCall = true;
+    auto key = makeExpr(ExprKind::String, rangeOf(ctx->sub));
+    key->text = text(ctx->sub);
+    e->args.push_back(std::move(key));
+    auto none = makeExpr(ExprKind::Number, rangeOf(ctx->sub));
+    none->number = 0;
+    e->args.push_back(std::move(none));
+    return e;
+  }
+  e->text += "." + text(ctx->sub);  // no other query has a third part: sema names it unknown
   return e;
 }
 

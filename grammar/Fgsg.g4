@@ -182,7 +182,7 @@ primary
   | RELSIZE                                         # relSizePrimary
   | STRING                                          # stringPrimary
   | value=( TRUE | FALSE )                          # boolPrimary
-  | object=ID '.' member=ID callArgs?               # memberPrimary
+  | object=ID '.' member=ID ( '.' sub=ID )? callArgs?  # memberPrimary
   | name=ID callArgs                                # callPrimary
   | name=ID                                         # identPrimary
   | '(' expr ')'                                    # parenPrimary

@@ -905,7 +905,9 @@ public:
 
     antlr4::Token *object = nullptr;
     antlr4::Token *member = nullptr;
-    antlr4::tree::TerminalNode *DOT();
+    antlr4::Token *sub = nullptr;
+    std::vector<antlr4::tree::TerminalNode *> DOT();
+    antlr4::tree::TerminalNode* DOT(size_t i);
     std::vector<antlr4::tree::TerminalNode *> ID();
     antlr4::tree::TerminalNode* ID(size_t i);
     CallArgsContext *callArgs();

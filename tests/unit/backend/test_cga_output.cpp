@@ -225,6 +225,9 @@ TEST_CASE("Lot.area and Lot.prop read a lot without declaring attrs, defaults wi
   CHECK(volume(assembled(r)) == Approx(60 * 5 + 64 * 2).epsilon(1e-6));
   CHECK(r.instances.instances[0].color == std::array<float, 3>{1, 0, 0});
   CHECK(r.instances.instances[1].color[2] == Approx(0.64f));
+  // CGA's Lot.props.height reads the same property (0 without it).
+  const rt::DeriveResult props = test::deriveText("Lot ~> Extrude(Lot.props.height) Mass;", opt);
+  CHECK(volume(assembled(props)) == Approx(60 * 5 + 64 * 2).epsilon(1e-6));
   // Without lots: the defaults (a 1 m high box on the axiom's flat scope, area 0).
   const rt::DeriveResult plain = test::deriveText(
       "Lot ~> Footprint(0, 0, 4, 0, 4, 3, 0, 3) Color(0, 1, Lot.area) Extrude(Lot.prop(\"height\", 1)) Mass;");

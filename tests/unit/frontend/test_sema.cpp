@@ -157,6 +157,10 @@ TEST_CASE("Lot queries: area and properties with one constant default each", "[s
   CHECK(has(analyse("Lot ~> S(Lot.prop(\"h\", 1), 1, 1) T(Lot.prop(\"h\", 2), 0, 0) A;"), "E025"));
   // The default's type is the property's: a string compared with a string.
   CHECK(analyse("Lot : Lot.prop(\"usage\", \"home\") == \"shop\" ~> S(1, 1, 1) A;").ok);
+  // CGA's spelling Lot.props.height is Lot.prop("height", 0); no other query has three parts.
+  CHECK(analyse("Lot ~> S(1, 1, 1) Extrude(Lot.props.height + Lot.prop(\"floors\", 0)) A;").ok);
+  CHECK(has(analyse("Lot ~> S(1, 1, 1) Extrude(Lot.props.height + Lot.prop(\"height\", 14)) A;"), "E025"));
+  CHECK(has(analyse("Lot ~> S(Scope.sx.y, 1, 1) A;"), "E025"));
 }
 
 TEST_CASE("Offset takes labelled inside and border parts", "[sema]") {
