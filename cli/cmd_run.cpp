@@ -36,6 +36,7 @@ struct RunOptions {
   std::string output;
   std::string preview;
   std::string instances;
+  std::string lines;  // --lines: the line graph as JSON
   bool stats = false;
   bool quiet = false;
   size_t lotsSkipped = 0;  // --lots: geometries other than polygons, passed over
@@ -59,6 +60,7 @@ RunOptions parseRunOptions(const Args& args) {
     }
     else if (f == "--preview") o.preview = r.value(f);
     else if (f == "--instances") o.instances = r.value(f);
+    else if (f == "--lines") o.lines = r.value(f);
     else if (f == "--max-shapes") o.derive.maxShapes = r.unsignedValue(f);
     else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f, 0, UINT32_MAX));
     else if (f == "--max-seconds") {
@@ -133,6 +135,8 @@ RunOptions parseRunOptions(const Args& args) {
   }
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
+  if (!o.lines.empty() && lowerExtension(o.lines) != ".json")
+    throw UsageError{"--lines " + o.lines + ": the line graph is written as JSON (name it .json)"};
   return o;
 }
 
@@ -249,7 +253,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
   if (!rt::io::stageMesh(mesh, opt.output, outputs, error) ||
-      (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error))) {
+      (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
+      (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error))) {
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }

@@ -44,6 +44,16 @@ struct CurveSegment {
   std::array<double, 3> normal0{}, normal1{};
 };
 
+// A line of FGSG §4.4 (`Line`, `LineSeg`) as it ended, merges applied: its centreline,
+// width, whether it merges, and the symbol whose successor started it. The line graph
+// that `fgsg run --lines` exports; the output draws each as a swept tube.
+struct LinePath {
+  std::vector<std::array<double, 3>> points;
+  double width = 0;
+  bool merge = true;
+  uint32_t symbol = 0;  // index into InstanceList::symbols
+};
+
 // How a parameter's slots read: a number, a boolean (0/1), a string (an index into
 // InstanceList::strings) or a vector (three slots).
 enum class ParamKind : uint8_t { Number, Boolean, String, Vector };
@@ -63,6 +73,7 @@ struct InstanceList {
   std::vector<Mesh> geometries;
   // The images of Texture commands (Instance::texture), as paths the derivation found.
   std::vector<std::string> textures;
+  std::vector<LinePath> lines;  // the grammar's lines (Line/LineSeg), in the order they started
 };
 
 }  // namespace fgsg::rt

@@ -86,6 +86,11 @@ void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
                      rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor) {
   for (uint32_t c = 0; c < lines.chainCount(); ++c) {
     if (lines.points(c).size() < 2) continue;
+    rt::LinePath& path = out.lines.emplace_back();
+    for (const rt::Vec3& p : lines.points(c)) path.points.push_back({p.x(), p.y(), p.z()});
+    path.width = lines.style(c).width;
+    path.merge = lines.style(c).merge;
+    path.symbol = lines.owner(c);
     const rt::Mesh tube = lines.sweep(c);
     if (tube.empty()) continue;
     rt::placeGenerated(assets, out, "<line " + std::to_string(c) + ">", tube, lines.owner(c),

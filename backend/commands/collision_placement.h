@@ -66,7 +66,8 @@ class CollisionPlacement {
 };
 
 // Appends every line of `lines` (two points or more) to the output as one smooth swept
-// tube, registered in `assets` as generated geometry named "<line N>".
+// tube, registered in `assets` as generated geometry named "<line N>", and to the
+// output's line graph (InstanceList::lines).
 void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
                      rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor);
 

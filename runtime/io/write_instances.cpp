@@ -152,6 +152,34 @@ bool stageInstancesJson(const InstanceList& list, const std::string& path, Outpu
   return outputs.stage(path, bytes, error);
 }
 
+std::string encodeLinesJson(const InstanceList& list) {
+  std::string out = "{\"format\":\"fgsg-lines\",\"version\":1,\n\"lines\":[";
+  for (size_t i = 0; i < list.lines.size(); ++i) {
+    const LinePath& line = list.lines[i];
+    out += i ? ",\n{\"symbol\":" : "\n{\"symbol\":";
+    appendName(out, list.symbols, line.symbol);
+    out += ",\"width\":";
+    appendNumber(out, line.width);
+    out += line.merge ? ",\"merge\":true,\"points\":" : ",\"merge\":false,\"points\":";
+    appendArray(out, line.points, [](std::string& o, const std::array<double, 3>& p) {
+      appendArray(o, p, [](std::string& oo, double v) { appendNumber(oo, v); });
+    });
+    out += '}';
+  }
+  return out + "\n]}\n";
+}
+
+bool stageLinesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs, std::string& error) {
+  std::string bytes;
+  try {
+    bytes = encodeLinesJson(list);
+  } catch (const std::bad_alloc&) {
+    error = "cannot write '" + path + "': out of memory while encoding " + std::to_string(list.lines.size()) + " lines";
+    return false;
+  }
+  return outputs.stage(path, bytes, error);
+}
+
 bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error) {
   OutputTransaction one;
   return stageInstancesJson(list, path, one, error) && one.commit(error);

@@ -24,4 +24,12 @@ bool stageInstancesJson(const InstanceList& list, const std::string& path, Outpu
 // Stages and commits alone: replaces `path` atomically; false and a message on failure.
 bool writeInstancesJson(const InstanceList& list, const std::string& path, std::string& error);
 
+// The line graph (InstanceList::lines) as JSON, `fgsg run --lines`:
+//   {"format":"fgsg-lines","version":1,"lines":[{"symbol":"A","width":0.05,"merge":true,
+//    "points":[[x,y,z],...]}, ...]}
+// one line per entry, in the order the lines started; a merged line's last point lies on
+// the centreline of the line it joined.
+std::string encodeLinesJson(const InstanceList& list);
+bool stageLinesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs, std::string& error);
+
 }  // namespace fgsg::rt::io
