@@ -59,12 +59,12 @@ bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& scope, u
                         "IM(\"" + d_.module().assets[op.index] + "\", maxDist, maxAngle): the thresholds must be "
                         "finite and not negative, got " + std::to_string(maxDist) + " and " +
                         std::to_string(maxAngle)};
-    if (placement_->mergeInto(op.index, t, maxDist, maxAngle)) {
+    if (placement_->mergeInto(op.index, t, maxDist, maxAngle, scope)) {
       ++stats.merges;
       return true;
     }
     d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
-    placement_->placedMergeable(op.index, t);
+    placement_->placedMergeable(op.index, t, scope);
     return true;
   }
   if (op.mode == ir::InstanceMode::Collide || testAll_) {

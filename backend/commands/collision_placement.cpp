@@ -1,5 +1,6 @@
 #include "backend/commands/collision_placement.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace fgsg::backend {
@@ -51,17 +52,24 @@ void CollisionPlacement::placed(const rt::Scope& scope) {
 }
 
 bool CollisionPlacement::mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist,
-                                   double maxAngle) {
+                                   double maxAngle, const rt::Scope& scope) {
   rt::MergeIndex::Merge merge;
-  if (!merges_.find(asset, transform, maxDist, maxAngle, merge)) return false;
+  rt::MergeIndex::Distance alongSurface;
+  if (alongSurface_)
+    alongSurface = [&](uint32_t slot, double) {
+      // Asked to stop just past maxDist: a value at the limit means farther than maxDist.
+      return alongSurface_(scope, mergeableFrom_[slot], std::nextafter(maxDist, HUGE_VAL));
+    };
+  if (!merges_.find(asset, transform, maxDist, maxAngle, merge, alongSurface)) return false;
   merges_.apply(merge);
   setTransform(out_.instances[merge.target], merge.transform);
   world_.move(merge.target, merge.transform);
   return true;
 }
 
-void CollisionPlacement::placedMergeable(uint32_t asset, const rt::Mat4& transform) {
+void CollisionPlacement::placedMergeable(uint32_t asset, const rt::Mat4& transform, const rt::Scope& scope) {
   merges_.add(asset, out_.instances.size() - 1, transform);
+  if (alongSurface_) mergeableFrom_.push_back(scope);
 }
 
 CollisionPlacement::Transaction CollisionPlacement::begin(const rt::LineNetwork& lines) const {
@@ -76,7 +84,7 @@ void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) 
     world_.move(target, before);
   }
   world_.rollback(t.obstacles);
-  if (alongSurface_) placedFrom_.resize(t.obstacles);
+  if (alongSurface_) placedFrom_.resize(t.obstacles), mergeableFrom_.resize(merges_.size());
   out_.instances.resize(t.instances);
   out_.params.resize(t.params);
   lines.rollback(t.lines);

@@ -38,9 +38,10 @@ class CollisionPlacement {
 
   // IM: merges into an earlier instance of the same asset within the thresholds (moving
   // it, in the output too) and returns true; false when the instance must be placed, after
-  // which placedMergeable() records it.
-  bool mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist, double maxAngle);
-  void placedMergeable(uint32_t asset, const rt::Mat4& transform);
+  // which placedMergeable() records it. Along the surface (`collision geodesic`) maxDist
+  // is measured from `scope` to the scope the earlier instance was first placed from.
+  bool mergeInto(uint32_t asset, const rt::Mat4& transform, double maxDist, double maxAngle, const rt::Scope& scope);
+  void placedMergeable(uint32_t asset, const rt::Mat4& transform, const rt::Scope& scope);
 
   // Lock: everything placed, merged or drawn as a line after begin() can be undone.
   struct Transaction {
@@ -62,6 +63,7 @@ class CollisionPlacement {
   SurfaceDistance alongSurface_;    // set: centre distances are measured along the surface
   std::vector<rt::Scope> placedFrom_;  // geodesic only: per obstacle, the scope it was placed from
   rt::MergeIndex merges_;
+  std::vector<rt::Scope> mergeableFrom_;  // geodesic only: per IM instance, the scope it was placed from
   std::vector<int> meshOf_;  // output asset -> library mesh (-1: not yet resolved)
 };
 

@@ -55,7 +55,7 @@ double angleDegrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
 }  // namespace
 
 bool MergeIndex::find(uint32_t asset, const Mat4& transform, double maxDist,
-                      double maxAngleDegrees, Merge& out) {
+                      double maxAngleDegrees, Merge& out, const Distance& distance) {
   if (entries_.empty() || !(maxDist >= 0)) return false;
   const Pose query = poseOf(transform);
   centres_.reserveRadius(std::max(maxDist, kSmallestReach));
@@ -66,8 +66,9 @@ bool MergeIndex::find(uint32_t asset, const Mat4& transform, double maxDist,
     const Entry& e = entries_[slot];
     if (e.asset != asset) continue;
     const Pose other = poseOf(e.transform);
-    const double d = (other.centre - query.centre).norm();
+    double d = (other.centre - query.centre).norm();
     if (d > maxDist || angleDegrees(other.rotation, query.rotation) > maxAngleDegrees) continue;
+    if (distance && (d = distance(slot, d)) > maxDist) continue;
     if (d < best) best = d, bestSlot = slot;
   }
   if (!std::isfinite(best)) return false;

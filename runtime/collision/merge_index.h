@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace fgsg::rt {
@@ -21,11 +22,16 @@ class MergeIndex {
     uint32_t slot = 0; // where the index keeps it
   };
 
+  // How far a candidate (by its slot, the order of add()) is, given its straight centre
+  // distance; for distances along a surface, which are never shorter.
+  using Distance = std::function<double(uint32_t slot, double straight)>;
+
   // The earlier instance of `asset` nearest to `transform` (centre distance at most
-  // maxDist, rotation angle at most maxAngleDegrees); false when there is none. Ties go
-  // to the earlier instance.
+  // maxDist — measured by `distance` when given —, rotation angle at most
+  // maxAngleDegrees); false when there is none. Ties go to the earlier instance.
   bool find(uint32_t asset, const Mat4& transform, double maxDist, double maxAngleDegrees,
-            Merge& out);
+            Merge& out, const Distance& distance = nullptr);
+  size_t size() const { return entries_.size(); }  // instances added (rollback removes some)
   // Records a placed instance (id: its index in the output).
   void add(uint32_t asset, size_t id, const Mat4& transform);
   // Applies a merge found by find(): the target now stands for one more instance.

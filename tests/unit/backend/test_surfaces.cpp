@@ -139,3 +139,23 @@ Axiom ~> Size(0.01, 0.01, 0.01) I("cube") T(2.2, 0, 0) I("cube")
                          "Axiom ~> Size(0.01, 0.01, 0.01) I(\"cube\") T(1.7, 0, 0) I(\"cube\")");
   CHECK(near.stats.collisions == 1);
 }
+
+TEST_CASE("IM merges by distance along the surface under collision geodesic", "[surface][collision]") {
+  // Two small cubes 2.2 apart along a great circle of the unit sphere, 1.78 apart in
+  // space: IM with maxDist 1.9 merges them straight, not along the surface.
+  const std::string rules = R"(
+Axiom ~> Size(0.01, 0.01, 0.01) IM("cube", 1.9, 180) T(2.2, 0, 0) IM("cube", 1.9, 180)
+)";
+  auto straight = deriveText("surface sphere(1);\ncollision centre 0.001;\n" + rules);
+  auto along = deriveText("surface sphere(1);\ncollision geodesic 0.001;\n" + rules);
+  REQUIRE(straight.ok);
+  REQUIRE(along.ok);
+  CHECK(straight.stats.merges == 1);
+  CHECK(straight.instances.instances.size() == 2);  // the merged cube and the sphere
+  CHECK(along.stats.merges == 0);
+  CHECK(along.instances.instances.size() == 3);
+  // 1.7 along the surface is within 1.9 either way.
+  auto near = deriveText("surface sphere(1);\ncollision geodesic 0.001;\n"
+                         "Axiom ~> Size(0.01, 0.01, 0.01) IM(\"cube\", 1.9, 180) T(1.7, 0, 0) IM(\"cube\", 1.9, 180)");
+  CHECK(near.stats.merges == 1);
+}
