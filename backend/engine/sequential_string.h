@@ -66,7 +66,7 @@ class SequentialString {
 
   const ir::Module& m_;
   std::vector<uint8_t> ignored_;  // per symbol: #ignore'd
-  std::vector<Node> nodes_;       // a node that left the string stays here, unlinked
+  std::vector<Node> nodes_;       // every node written, by id (the order written)
   std::vector<double> params_;
   uint32_t head_ = kNone, tail_ = kNone;
   uint32_t cursor_ = kNone;  // new nodes go before it; kNone: at the end
