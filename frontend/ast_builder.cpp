@@ -125,7 +125,7 @@ FieldDecl AstBuilder::buildFieldDecl(P::FieldDeclContext* ctx) {
     return d;
   }
   d.args = buildCallArgs(src->callArgs());
-  const bool fileFunction = d.function == "tensor" || d.function == "vector";
+  const bool fileFunction = d.function == "tensor" || d.function == "vector" || d.function == "scalar";
   if (fileFunction && d.args.size() == 1 && d.args[0] && d.args[0]->kind == ExprKind::String) {
     d.source = "file";
     d.path = d.args[0]->text;

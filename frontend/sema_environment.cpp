@@ -180,8 +180,8 @@ class EnvironmentChecker {
     if (f.source == "file") {
       path = f.path;
       isFile = true;
-    } else if ((f.function == "tensor" || f.function == "vector" || f.function == "image") &&
-               f.args.size() == 1) {
+    } else if ((f.function == "tensor" || f.function == "vector" || f.function == "image" ||
+                f.function == "scalar") && f.args.size() == 1) {
       ConstValue v;  // tensor(pathConst), image(pathConst)
       if (eval_(*f.args[0], v) && v.type == ValueType::Str) {
         path = v.str;
@@ -192,10 +192,12 @@ class EnvironmentChecker {
       if (path.empty()) {
         diags_.error("E035", f.sourceRange,
                      "the field's file name is empty: `" + f.function + "(\"foot." +
-                         (f.function == "tensor" ? "tfield" : "vfield") + "\")`");
+                         (f.function == "tensor" ? "tfield" : f.function == "scalar" ? "sfield" : "vfield") + "\")`");
         return false;
       }
       // image("cat.pgm"): the structure tensor of the image's gradients (FGSG Fig. 12).
+      // scalar("heights.sfield") or scalar("map.png"): a number per vertex, or a picture's
+      // brightness under each vertex.
       out.source = f.function == "image" ? "image" : "file";
       out.kind = f.function == "image" ? "tensor" : f.function;
       out.path = path;
@@ -210,6 +212,10 @@ class EnvironmentChecker {
       diags_.error("E035", f.args.size() == 1 ? f.args[0]->range : f.sourceRange,
                    "'image' reads a picture (PNG, JPEG, PGM ...) and takes its path as a constant "
                    "string: `image(\"cat.png\")`");
+    } else if (f.function == "scalar") {
+      diags_.error("E035", f.args.size() == 1 ? f.args[0]->range : f.sourceRange,
+                   "'scalar' reads a number per vertex from a field file, or a picture's brightness, and "
+                   "takes its path as a constant string: `scalar(\"heights.sfield\")`, `scalar(\"map.png\")`");
     } else if (f.function == "curvature") {
       diags_.error("E035", f.sourceRange,
                    "'curvature' takes no arguments: `field " + f.name + " = curvature;` is the "
@@ -221,7 +227,7 @@ class EnvironmentChecker {
     } else {
       diags_.error("E035", f.functionRange.begin.line ? f.functionRange : f.sourceRange,
                    "unknown field source '" + f.function +
-                       "' (expected tensor(\"file\"), vector(\"file\"), design tensor { ... }, "
+                       "' (expected tensor(\"file\"), vector(\"file\"), scalar(\"file\"), design tensor { ... }, "
                        "design vector { ... }, curvature or image(\"file\"))");
     }
     return false;

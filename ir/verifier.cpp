@@ -186,12 +186,14 @@ class Verifier {
       if (f.name.empty()) problem("has no name");
       if (std::find(names.begin(), names.end(), f.name) != names.end()) problem("name is not unique");
       names.push_back(f.name);
-      if (f.kind != "tensor" && f.kind != "vector") problem("bad kind '" + f.kind + "'");
+      if (f.kind != "tensor" && f.kind != "vector" && f.kind != "scalar") problem("bad kind '" + f.kind + "'");
       if (f.source == "file" || f.source == "image") {
         if (f.path.empty()) problem(f.source + " source without a path");
         if (f.source == "image" && f.kind != "tensor") problem("an image field is a tensor field");
       } else if (f.source == "curvature") {
         if (f.kind != "tensor") problem("a curvature field is a tensor field");
+      } else if (f.source == "design" && f.kind == "scalar") {
+        problem("a design makes a tensor or a vector field");
       } else if (f.source != "design") {
         problem("bad source '" + f.source + "'");
       }

@@ -4,6 +4,7 @@
 #include "runtime/field/design.h"
 #include "runtime/field/field_file.h"
 #include "runtime/field/image_field.h"
+#include "runtime/field/scalar_field.h"
 #include "runtime/field/smooth.h"
 #include "runtime/field/tangent_field.h"
 #include "runtime/field/tangent_frames.h"
@@ -14,7 +15,9 @@
 #include "runtime/surface/procedural.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <mutex>
 #include <queue>
@@ -51,6 +54,7 @@ struct SurfaceWorld::Impl {
     std::unique_ptr<rt::field::TangentField> values;
     bool curvature = false;  // `curvature`: answers mincurv ... gausscurv
     std::unique_ptr<rt::field::Picture> picture;  // `image(...)`: answers intensity
+    std::unique_ptr<rt::field::ScalarField> scalar;  // `scalar(...)`: values is its gradient field
   };
 
   SurfaceMesh mesh;
@@ -117,6 +121,14 @@ const std::vector<double>* word(const ir::FieldDesignSpec& item, const std::stri
   return nullptr;
 }
 
+// Whether a scalar field's file is a picture (its brightness) rather than a field file.
+bool isPicturePath(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".pgm" || ext == ".ppm" || ext == ".bmp" ||
+         ext == ".tga";
+}
+
 }  // namespace
 
 void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::string>& searchDirs) {
@@ -130,7 +142,19 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
     Impl::Field f;
     f.name = spec.name;
     std::string error;
-    if (spec.source == "file") {
+    if (spec.kind == "scalar") {
+      // A number per vertex from a field file, or a picture's brightness under each vertex.
+      f.scalar = std::make_unique<field::ScalarField>();
+      const std::string path = rt::io::findFile(spec.path, searchDirs);
+      if (isPicturePath(spec.path)) {
+        field::Picture picture;
+        if (!picture.load(path, error)) throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
+        *f.scalar = field::scalarFromPicture(w.mesh, picture);
+      } else if (!field::loadScalarField(path, w.mesh.vertexCount(), *f.scalar, error)) {
+        throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
+      }
+      f.values = std::make_unique<field::TangentField>(f.scalar->gradientField(w.frames));
+    } else if (spec.source == "file") {
       std::optional<field::TangentField> loaded;
       if (!field::loadField(rt::io::findFile(spec.path, searchDirs), w.frames, loaded, error))
         throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
@@ -319,6 +343,13 @@ double SurfaceWorld::fieldNumber(const rt::Scope& s, uint32_t env, const std::st
   const field::TangentField& f = fieldAt(env, at);
   const Impl::Field& named = impl_->fields[impl_->fieldOfEnv[env]];
   const SurfacePoint p = impl_->pointOf(s);
+  if (named.scalar) {
+    // A scalar field answers its value and its gradient's length; the direction queries
+    // read its gradient field.
+    if (member == "value" || member == "value1") return named.scalar->at(impl_->mesh, p);
+    if (member == "length" || member == "length1") return named.scalar->gradient(impl_->mesh, p.face).norm();
+    if (member == "value2" || member == "length2") return 0.0;
+  }
   const field::Eigen2 e = f.eigen(p);
   if (member == "value" || member == "value1") return e.value1;
   if (member == "value2") return e.value2;
@@ -363,6 +394,9 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
   namespace field = rt::field;
   const field::TangentField& f = fieldAt(env, at);
   const SurfacePoint p = impl_->pointOf(s);
+  const Impl::Field& named = impl_->fields[impl_->fieldOfEnv[env]];
+  if (named.scalar && (member == "gradient" || member == "vector" || member == "vector1"))
+    return named.scalar->gradient(impl_->mesh, p.face);
   const field::Eigen2 e = f.eigen(p);
   const Vec3 n = p.normal(impl_->mesh);
   if (member == "vector") return f.isTensor() ? Vec3(e.value1 * e.vector1) : f.vector(p);
@@ -376,7 +410,6 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
     return f.jacobianWorld(p).transpose() * e.vector1;
   }
   if (member == "rgb") {
-    const Impl::Field& named = impl_->fields[impl_->fieldOfEnv[env]];
     if (!named.picture)
       notAnswered(at, named.name, member, "only a field made from a picture (`image(\"...\")`) has colours");
     return named.picture->colourUnder(impl_->mesh, p.position(impl_->mesh));

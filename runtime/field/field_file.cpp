@@ -18,6 +18,7 @@ namespace {
 constexpr const char* kMagic = "fgsg-field";
 constexpr int kVersion = 1;
 constexpr const char* kHeaderForm = "fgsg-field 1 vector|tensor <vertexCount> [world|frame]";
+constexpr const char* kScalarHeaderForm = "fgsg-field 1 scalar <vertexCount>";
 
 // The whitespace-separated words of a line, comments removed.
 std::vector<std::string_view> words(std::string_view line) {
@@ -184,6 +185,69 @@ bool loadField(const std::string& path, std::shared_ptr<const TangentFrames> fra
   std::string text;
   if (!io::readInputFile(path, "a field file", text, error)) return false;
   return parseField(text, path, std::move(frames), out, error);
+}
+
+bool parseScalarField(std::string_view text, const std::string& name, size_t vertexCount, ScalarField& out,
+                      std::string& error) {
+  bool haveHeader = false;
+  int lineNumber = 0;
+  out.values.clear();
+  for (size_t pos = 0; pos <= text.size();) {
+    size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    const auto w = words(text.substr(pos, eol - pos));
+    pos = eol + 1;
+    ++lineNumber;
+    if (w.empty()) continue;
+    if (!haveHeader) {
+      double count = 0;
+      if (w.size() != 4 || w[0] != "fgsg-field" || w[1] != "1" || w[2] != "scalar" || !parseNumber(w[3], count) ||
+          count < 0 || count != std::floor(count)) {
+        error = at(name, lineNumber) + "expected the header '" + kScalarHeaderForm + "'";
+        return false;
+      }
+      if (size_t(count) != vertexCount) {
+        error = at(name, lineNumber) + "the field has " + std::string(w[3]) + " vertices, the surface " +
+                std::to_string(vertexCount);
+        return false;
+      }
+      haveHeader = true;
+      out.values.reserve(vertexCount);
+      continue;
+    }
+    double v = 0;
+    if (w.size() != 1 || !parseNumber(w[0], v)) {
+      error = at(name, lineNumber) + "expected one number, got '" + std::string(w[0]) + "'" +
+              (w.size() > 1 ? " and " + std::to_string(w.size() - 1) + " more" : "");
+      return false;
+    }
+    if (!std::isfinite(v)) {
+      error = at(name, lineNumber) + "the value is not finite (" + std::string(w[0]) + ")";
+      return false;
+    }
+    if (out.values.size() == vertexCount) {
+      error = at(name, lineNumber) + "more vertex lines than the " + std::to_string(vertexCount) +
+              " the header announces";
+      return false;
+    }
+    out.values.push_back(v);
+  }
+  if (!haveHeader) {
+    error = name + ": empty field file (expected the header '" + kHeaderForm + "')";
+    return false;
+  }
+  if (out.values.size() != vertexCount) {
+    error = name + ": expected " + std::to_string(vertexCount) + " vertex lines, got " +
+            std::to_string(out.values.size());
+    return false;
+  }
+  return true;
+}
+
+bool loadScalarField(const std::string& path, size_t vertexCount, ScalarField& out, std::string& error) {
+  std::string text;
+  if (!io::readInputFile(path, "a field file", text, error)) return false;
+  return parseScalarField(text, path, vertexCount, out, error);
 }
 
 std::string formatField(const TangentField& field, FieldCoordinates coordinates) {

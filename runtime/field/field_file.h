@@ -25,6 +25,7 @@
 //   field.txt:1: the field has 100 vertices, the surface 98
 #pragma once
 
+#include "runtime/field/scalar_field.h"
 #include "runtime/field/tangent_field.h"
 
 #include <memory>
@@ -42,6 +43,12 @@ bool parseField(std::string_view text, const std::string& name,
                 std::string& error);
 bool loadField(const std::string& path, std::shared_ptr<const TangentFrames> frames,
                std::optional<TangentField>& out, std::string& error);
+
+// A scalar field's file, `fgsg-field 1 scalar <vertexCount>` then one number per vertex
+// line (runtime/field/scalar_field.h): parsed into `out`, errors named likewise.
+bool parseScalarField(std::string_view text, const std::string& name, size_t vertexCount, ScalarField& out,
+                      std::string& error);
+bool loadScalarField(const std::string& path, size_t vertexCount, ScalarField& out, std::string& error);
 
 // Writes every value with 17 significant digits: loading gives the same field back.
 std::string formatField(const TangentField& field,

@@ -36,7 +36,7 @@ std::string writeGridAndField(const std::string& name, const char* kind,
       off << "3 " << v << " " << v + 1 << " " << v + 6 << "\n3 " << v << " " << v + 6 << " " << v + 5 << "\n";
     }
   std::ofstream field(dir / "field.txt");
-  field << "fgsg-field 1 " << kind << " 25 world\n";
+  field << "fgsg-field 1 " << kind << " 25" << (std::string(kind) == "scalar" ? "" : " world") << "\n";
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 5; ++i) field << value(i, j) << "\n";
   return dir.string();
@@ -147,4 +147,45 @@ TEST_CASE("an image field answers the colour under the scope, and Color takes it
   CHECK_THROWS_WITH(test::compileText("A ~> Color(normalize((Rand(0, 1), 1, 1))) I(\"cube\");"),
                     Catch::Contains("E016"));
   CHECK_NOTHROW(test::compileText("A ~> Color((Rand(0, 1), 1, 1)) I(\"cube\");"));
+}
+
+TEST_CASE("a scalar field answers its value and gradient exactly, and T follows the gradient", "[surface][field]") {
+  // f(x, y) = 0.3 x - 0.2 y + 1, linear: value and gradient exact in every triangle.
+  const std::string dir = writeGridAndField("scalar", "scalar", [](double x, double y) {
+    return std::to_string(0.3 * x - 0.2 * y + 1);
+  });
+  const auto r = test::deriveText("surface \"" + dir + "/grid.off\";\nfield S = scalar(\"" + dir +
+                                  "/field.txt\");\nAxiom ~> A(S.value, S.gradient, S.length) T(1, 0, 0) B(S.value);\n"
+                                  "A(v, g, l) ~> I(\"cube\");\nB(v) ~> I(\"cube\");\n");
+  REQUIRE(r.ok);
+  const rt::Instance& a = r.instances.instances.at(0);
+  const double* p = r.instances.params.data() + a.firstParam;
+  CHECK(p[0] == Approx(0.3 * 2 - 0.2 * 2 + 1).margin(1e-12));
+  CHECK((Eigen::Vector3d(p[1], p[2], p[3]) - Eigen::Vector3d(0.3, -0.2, 0)).norm() < 1e-12);
+  CHECK(p[4] == Approx(std::hypot(0.3, -0.2)).margin(1e-12));
+  // The axiom's X runs along the gradient, and T(1, 0, 0) climbs |gradient| in value.
+  CHECK((test::transformOf(a).block<3, 1>(0, 0).normalized() - Eigen::Vector3d(0.3, -0.2, 0).normalized()).norm() <
+        1e-9);
+  const rt::Instance& b = r.instances.instances.at(1);
+  CHECK(r.instances.params[b.firstParam] == Approx(1.2 + std::hypot(0.3, -0.2)).margin(1e-9));
+}
+
+TEST_CASE("a scalar field from a picture is its brightness, and bad scalar files are located errors",
+          "[surface][field]") {
+  const fs::path dir = fs::temp_directory_path() / "fgsg_field_members_scalar_png";
+  fs::create_directories(dir);
+  const unsigned char grey[4] = {0, 102, 204, 255};  // 2 x 2
+  const std::string png = (dir / "grey.png").string();
+  REQUIRE(stbi_write_png(png.c_str(), 2, 2, 1, grey, 2) != 0);
+  const auto r = test::deriveText("surface plane(4, 4);\nfield S = scalar(\"" + png +
+                                  "\");\nAxiom ~> A(S.value);\nA(v) ~> I(\"cube\");\n");
+  REQUIRE(r.ok);
+  // The plane's centre is the picture's centre: the mean of the four pixels.
+  CHECK(r.instances.params[r.instances.instances[0].firstParam] == Approx((0 + 102 + 204 + 255) / 4.0 / 255).margin(1e-6));
+  std::ofstream(dir / "short.sfield") << "fgsg-field 1 scalar 3\n1\n2\n3\n";
+  const auto bad = test::deriveText("surface plane(4, 4);\nfield S = scalar(\"" + (dir / "short.sfield").string() +
+                                    "\");\nAxiom ~> A(S.value);\nA(v) ~> I(\"cube\");\n");
+  REQUIRE_FALSE(bad.ok);
+  CHECK(bad.messages[0].code == "R015");
+  CHECK_THAT(bad.messages[0].message, Catch::Contains("short.sfield:1: the field has 3 vertices"));
 }

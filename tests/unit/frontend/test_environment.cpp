@@ -201,9 +201,12 @@ TEST_CASE("field names: unique, not Scope, Shape or context (E022, E036)", "[sem
 TEST_CASE("field sources (E035)", "[sema][environment]") {
   const std::string s = "surface sphere(1);\n";
   onlyError(declarations(s + "field F = blend(A, B);"), "E035", 2, 11,
-            "unknown field source 'blend' (expected tensor(\"file\"), vector(\"file\"), design "
-            "tensor { ... }, design vector { ... }, curvature or image(\"file\"))");
+            "unknown field source 'blend' (expected tensor(\"file\"), vector(\"file\"), scalar(\"file\"), "
+            "design tensor { ... }, design vector { ... }, curvature or image(\"file\"))");
   onlyError(declarations(s + "field F = image(3);"), "E035", 2, 17, "'image' reads a picture");
+  onlyError(declarations(s + "field F = scalar(3);"), "E035", 2, 18, "'scalar' reads a number per vertex");
+  onlyError(declarations(s + "field F = design scalar { wedge at vertex 0; };"), "E035", 2, 18,
+            "a design makes a tensor or a vector field");
   onlyError(declarations(s + "field F = tensor(1);"), "E035", 2, 18,
             "'tensor' loads a field from a file and takes its path as a constant string");
   onlyError(declarations(s + "field F = vector;"), "E035", 2, 11, "'vector' loads a field from a file");
