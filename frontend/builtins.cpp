@@ -40,7 +40,7 @@ const CommandInfo kCommands[] = {
     {CommandId::Marching, "Marching", 3, 3, BodyRule::AtLeastOne,
      "Marching(length, angle, cond){ Top, Extruded }", nullptr},
     {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", nullptr},
-    {CommandId::Line, "Line", 0, 2, BodyRule::None, "Line(width, merge)", nullptr},
+    {CommandId::Line, "Line", 0, 3, BodyRule::None, "Line(width, merge, \"asset\")", nullptr},
     {CommandId::LineSeg, "LineSeg", 0, 1, BodyRule::None, "LineSeg(length)", nullptr},
     {CommandId::Synthesize, "Synthesize", 4, 4, BodyRule::None,
      "Synthesize(\"example.txt\", nx, ny, nz)", nullptr},

@@ -205,6 +205,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::Line:
       if (n > 0) expect(*item.args[0], w, ValueType::Num, "the width of 'Line'");
       if (n > 1) expect(*item.args[1], w, ValueType::Bool, "the merge flag of 'Line'");
+      if (n > 2) stringArg(2, "asset drawn along the line");
       break;
     case CommandId::LineSeg:
       if (n > 0) expect(*item.args[0], w, ValueType::Num, "the length of 'LineSeg'");

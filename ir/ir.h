@@ -157,7 +157,9 @@ struct Op {
   Loc loc;
   uint32_t index = 0;   // symbol / asset / axis / TurtleOp / axes mask
   uint32_t str = 0;     // string id (Comp selector, Roof kind)
-  uint32_t asset = 0;   // Turtle SurfaceBox: the asset the box is for (the I() after it)
+  // Turtle SurfaceBox: the asset the box is for (the I() after it); Line: the asset drawn
+  // along the line (UINT32_MAX: a tube).
+  uint32_t asset = 0;
   InstanceMode mode = InstanceMode::Plain;
   bool repeat = false;  // Subdiv `{ ... }*`: its parts repeat as a pattern along the axis
   std::vector<Expr> args;

@@ -361,9 +361,11 @@ class Lowerer {
         for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));
         break;
       case CommandId::Line: {
-        // Always two arguments: the defaults are filled in here, not by the runtime.
+        // Always two arguments: the defaults are filled in here, not by the runtime. A
+        // third, the asset drawn along the line, is the op's asset.
         op.kind = OpKind::Line;
-        allArgs(0);
+        for (size_t k = 0; k < std::min<size_t>(item.args.size(), 2); ++k) op.args.push_back(expr(*item.args[k]));
+        op.asset = item.args.size() > 2 ? m_.internAsset(constString(*item.args[2])) : UINT32_MAX;
         Expr width = Expr::number(kDefaultLineWidth), merge = Expr::boolean(kDefaultLineMerge);
         width.loc = merge.loc = op.loc;
         if (op.args.size() < 1) op.args.push_back(std::move(width));

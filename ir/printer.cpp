@@ -374,7 +374,10 @@ class Printer {
         break;
       case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
       case OpKind::Lock: text = "lock"; break;
-      case OpKind::Line: text = withArgs("line"); break;
+      case OpKind::Line:
+        text = withArgs("line");
+        if (op.asset < m_.assets.size()) text += " along " + quoted(m_.assets[op.asset]);
+        break;
       case OpKind::LineSeg: text = withArgs("lineseg"); break;
       case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
       case OpKind::Evolve:

@@ -518,6 +518,7 @@ class Verifier {
           expectType(op.args[0], Type::Num, "width");
           expectType(op.args[1], Type::Bool, "merge");
         }
+        if (op.asset != UINT32_MAX && op.asset >= m_.assets.size()) problem("asset " + std::to_string(op.asset) + " out of range");
         for (const Expr& a : op.args) expr(a, r);
         break;
       case OpKind::LineSeg:

@@ -107,7 +107,7 @@ void CollisionCommands::startLine(const ir::Op& op, const double* a, State& st, 
     throw DeriveError{op.loc, "R014",
                       "Line(width, merge): the width must be a positive number, got " + std::to_string(width)};
   if (!st.scope.P.allFinite()) throw DeriveError{op.loc, "R005", "this line's start point is not finite"};
-  st.line = lines_.start(st.scope.P, {width, merge}, d_.placingSymbol(ex));
+  st.line = lines_.start(st.scope.P, {width, merge, op.asset}, d_.placingSymbol(ex));
 }
 
 // LineSeg(length?): moves `length` along the scope's X first, then extends the line to

@@ -1,5 +1,8 @@
 #include "backend/commands/collision_placement.h"
 
+#include "runtime/marching/smooth_curves.h"
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -90,8 +93,53 @@ void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) 
   lines.rollback(t.lines);
 }
 
-void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
-                     rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor) {
+namespace {
+
+// A line drawn with an asset: one instance per segment, its unit box's X along the
+// segment's chord, Y and Z across it `width` wide (Z along the normal), bent along the
+// segment's smooth curve (Instance::curve).
+void placeAlongLine(const std::vector<rt::Vec3>& points, const rt::LineStyle& style, uint32_t symbol,
+                    const std::array<float, 3>& colour, rt::InstanceList& out,
+                    const std::function<rt::Vec3(const rt::Vec3&)>& normalAt) {
+  std::vector<rt::marching::MarchNode> nodes;
+  std::vector<rt::marching::MarchSegment> segments;
+  for (uint32_t k = 0; k < points.size(); ++k) {
+    nodes.push_back({points[k], normalAt(points[k])});
+    if (k > 0) segments.push_back({k - 1, k});
+  }
+  const uint32_t first = static_cast<uint32_t>(out.curves.size());
+  const std::vector<rt::CurveSegment> curves = rt::marching::smoothSegments(nodes, segments);
+  out.curves.insert(out.curves.end(), curves.begin(), curves.end());
+  const double w = style.width;
+  for (uint32_t k = 0; k < segments.size(); ++k) {
+    const rt::Vec3 chord = points[k + 1] - points[k];
+    const double length = chord.norm();
+    if (!(length > 0)) continue;
+    const rt::Vec3 x = chord / length;
+    rt::Vec3 z = nodes[k].normal - nodes[k].normal.dot(x) * x;
+    if (!(z.norm() > 1e-9)) z = x.unitOrthogonal();
+    z.normalize();
+    const rt::Vec3 y = z.cross(x);
+    rt::Mat4 m = rt::Mat4::Identity();
+    m.block<3, 1>(0, 0) = length * x;
+    m.block<3, 1>(0, 1) = w * y;
+    m.block<3, 1>(0, 2) = w * z;
+    m.block<3, 1>(0, 3) = points[k] - 0.5 * w * (y + z);
+    rt::Instance& inst = out.instances.emplace_back();
+    inst.asset = style.asset;
+    inst.symbol = symbol;
+    std::copy(m.data(), m.data() + 16, inst.transform.begin());
+    inst.color = colour;
+    inst.firstParam = static_cast<uint32_t>(out.params.size());
+    inst.curve = first + k;
+  }
+}
+
+}  // namespace
+
+void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets, rt::InstanceList& out,
+                     const std::vector<std::array<float, 3>>& symbolColor,
+                     const std::function<rt::Vec3(const rt::Vec3&)>& normalAt) {
   for (uint32_t c = 0; c < lines.chainCount(); ++c) {
     if (lines.points(c).size() < 2) continue;
     rt::LinePath& path = out.lines.emplace_back();
@@ -99,6 +147,10 @@ void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
     path.width = lines.style(c).width;
     path.merge = lines.style(c).merge;
     path.symbol = lines.owner(c);
+    if (lines.style(c).asset != UINT32_MAX) {
+      placeAlongLine(lines.points(c), lines.style(c), lines.owner(c), symbolColor[lines.owner(c)], out, normalAt);
+      continue;
+    }
     const rt::Mesh tube = lines.sweep(c);
     if (tube.empty()) continue;
     rt::placeGenerated(assets, out, "<line " + std::to_string(c) + ">", tube, lines.owner(c),

@@ -67,10 +67,13 @@ class CollisionPlacement {
   std::vector<int> meshOf_;  // output asset -> library mesh (-1: not yet resolved)
 };
 
-// Appends every line of `lines` (two points or more) to the output as one smooth swept
-// tube, registered in `assets` as generated geometry named "<line N>", and to the
+// Appends every line of `lines` (two points or more) to the output — as one smooth swept
+// tube, registered in `assets` as generated geometry named "<line N>", or, for a line
+// with an asset, one instance of it per segment bent along the line smoothed as
+// marching's terminals are (its X along the line, its Z along `normalAt`) — and to the
 // output's line graph (InstanceList::lines).
-void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets,
-                     rt::InstanceList& out, const std::vector<std::array<float, 3>>& symbolColor);
+void appendLineTubes(const rt::LineNetwork& lines, rt::AssetLibrary& assets, rt::InstanceList& out,
+                     const std::vector<std::array<float, 3>>& symbolColor,
+                     const std::function<rt::Vec3(const rt::Vec3&)>& normalAt);
 
 }  // namespace fgsg::backend

@@ -123,8 +123,8 @@ rt::DeriveResult Derivation::run() {
     result.ok = true;
     if (depthLimitHit_) result.messages.push_back(depthWarning_);
     orderDirectInstances();
-    appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
-    appendCurves();
+    appendCurves();  // marching's curves first: their instances index them from 0
+    appendLines();
     appendSurface();
   } catch (const LimitReached& limit) {
     keepAfter(limit, result);
@@ -144,6 +144,15 @@ rt::DeriveResult Derivation::run() {
   return result;
 }
 
+// The grammar's lines (Line/LineSeg) as swept tubes or bent assets, and as the line
+// graph. Normals for the bent assets: the surface's at the closest point, else +Z.
+void Derivation::appendLines() {
+  const auto normalAt = [this](const rt::Vec3& p) -> rt::Vec3 {
+    return surface_ ? rt::Vec3(surface_->startScopeAt(p, nullptr).Z()) : rt::Vec3::UnitZ();
+  };
+  appendLineTubes(collide_.lines(), assets_, out_, symbolColor_, normalAt);
+}
+
 // A limit ends the derivation: what was derived is kept, with the R004 warning.
 void Derivation::keepAfter(const LimitReached& limit, rt::DeriveResult& result) {
   if (depthLimitHit_) result.messages.push_back(depthWarning_);
@@ -151,8 +160,8 @@ void Derivation::keepAfter(const LimitReached& limit, rt::DeriveResult& result) 
   result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
   try {
     orderDirectInstances();
-    appendLineTubes(collide_.lines(), assets_, out_, symbolColor_);
-    appendCurves();
+    appendCurves();  // marching's curves first: their instances index them from 0
+    appendLines();
     appendSurface();
   } catch (const std::bad_alloc&) {
     result.messages.clear();
@@ -215,6 +224,8 @@ void Derivation::resolveAssets() {
   std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
     for (const auto& op : b) {
       if (op.kind == ir::OpKind::Instance && firstUse[op.index].line == 0) firstUse[op.index] = op.loc;
+      if (op.kind == ir::OpKind::Line && op.asset < firstUse.size() && firstUse[op.asset].line == 0)
+        firstUse[op.asset] = op.loc;
       for (const auto& body : op.bodies) visit(body);
     }
   };

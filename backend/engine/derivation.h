@@ -233,6 +233,7 @@ class Derivation final : public QueryHost {
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
   void appendCurves();
+  void appendLines();
   void orderDirectInstances();
 
   // grammar_facts.cpp

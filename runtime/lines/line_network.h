@@ -19,6 +19,9 @@ namespace fgsg::rt {
 struct LineStyle {
   double width = 0.05;  // diameter of the tube; negative or not finite counts as 0
   bool merge = true;    // join a line it runs into (else stop before it)
+  // An asset drawn along the line instead of the tube, one instance per segment bent
+  // along the smoothed line (an index into the output's assets; UINT32_MAX: the tube).
+  uint32_t asset = UINT32_MAX;
 };
 
 // Where a shape stands on a line: the chain it extends and the index of its last point.

@@ -4,9 +4,11 @@
 // meet; and an independent brute-force check finds no two tested instances intersecting.
 #include "brute_force_intersection.h"
 #include "derive_helpers.h"
+#include "runtime/assemble.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -239,4 +241,45 @@ TEST_CASE("A Lock set that never ends is refused, not a crash", "[collision][loc
   REQUIRE(r.messages.size() == 1);
   CHECK(r.messages[0].code == "R017");
   CHECK(r.messages[0].line == 2);
+}
+
+TEST_CASE("a line drawn with an asset bends one instance per segment along the smoothed line", "[lines]") {
+  // Three straight steps along X, then three turned 30 degrees: six bark instances, each
+  // bent along its segment's curve, every vertex within the bark's radius of the line.
+  const auto r = test::deriveText(
+      "Axiom ~> Line(0.2, true, \"bark\") A(0);\n"
+      "A(n) : n < 3 ~> T(1, 0, 0) LineSeg() A(n + 1);\n"
+      "A(n) : n < 6 ~> RZ(10) T(1, 0, 0) LineSeg() A(n + 1);\n");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.lines.size() == 1);
+  const auto& points = r.instances.lines[0].points;
+  REQUIRE(points.size() == 7);
+  size_t bark = 0;
+  for (const auto& inst : r.instances.instances) {
+    if (r.instances.assets[inst.asset] != "bark") continue;
+    REQUIRE(inst.curve < r.instances.curves.size());
+    CHECK(r.instances.curves[inst.curve].control[0] == points[bark]);
+    ++bark;
+  }
+  CHECK(bark == 6);
+  rt::AssetLibrary library;
+  std::vector<int> meshOf;
+  std::string error;
+  REQUIRE(rt::resolveAssets(r.instances, library, meshOf, error));
+  const rt::Mesh mesh = rt::assembleInstances(r.instances, library, meshOf);
+  REQUIRE(mesh.vertexCount() > 0);
+  double farthest = 0;
+  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+    const Eigen::Vector3d p(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]);
+    double nearest = 1e300;
+    for (size_t k = 0; k + 1 < points.size(); ++k) {
+      const Eigen::Vector3d a(points[k][0], points[k][1], points[k][2]), b(points[k + 1][0], points[k + 1][1], points[k + 1][2]);
+      const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (p - (a + t * (b - a))).norm());
+    }
+    farthest = std::max(farthest, nearest);
+  }
+  // The radius (0.1), and the smooth curve's small departure from the polyline at the turns.
+  CHECK(farthest < 0.13);
+  CHECK(farthest > 0.09);
 }
