@@ -366,9 +366,12 @@ TEST_CASE("Line and LineSeg: optional arguments, checked types, no body", "[sema
   CHECK(where(types, "E014") == std::vector<std::string>{"1:23"});
   CHECK(messageOf(types, "E014") == "the merge flag of 'Line' must be a boolean, but this is a number");
 
-  auto arity = analyse("Axiom ~> Line(1, true, 2) LineSeg(1, 2);");
-  CHECK(where(arity, "E016") == std::vector<std::string>{"1:10", "1:27"});
-  CHECK(messageOf(arity, "E016") == "'Line' takes 0 to 2 arguments, got 3: Line(width, merge)");
+  auto arity = analyse("Axiom ~> Line(1, true, \"bark\", 2) LineSeg(1, 2);");
+  CHECK(where(arity, "E016") == std::vector<std::string>{"1:10", "1:35"});
+  CHECK(messageOf(arity, "E016") == "'Line' takes 0 to 3 arguments, got 4: Line(width, merge, \"asset\")");
+  // The third argument, the asset drawn along the line, is a constant string.
+  CHECK(analyse("Axiom ~> Line(1, true, \"bark\") LineSeg(1);").ok);
+  CHECK(where(analyse("Axiom ~> Line(1, true, 2) LineSeg(1);"), "E017") == std::vector<std::string>{"1:24"});
 
   auto body = analyse("Axiom ~> Line(1){ A } LineSeg{ A };\nA ~> I(\"cube\");");
   CHECK(where(body, "E018") == std::vector<std::string>{"1:10", "1:23"});
