@@ -233,7 +233,7 @@ bool parseScalarField(std::string_view text, const std::string& name, size_t ver
     out.values.push_back(v);
   }
   if (!haveHeader) {
-    error = name + ": empty field file (expected the header '" + kHeaderForm + "')";
+    error = name + ": empty field file (expected the header '" + kScalarHeaderForm + "')";
     return false;
   }
   if (out.values.size() != vertexCount) {

@@ -135,3 +135,26 @@ TEST_CASE("malformed field files are reported with file and line", "[field]") {
         "f.txt: empty field file (expected the header 'fgsg-field 1 vector|tensor "
         "<vertexCount> [world|frame]')");
 }
+
+TEST_CASE("scalar field files: one number per vertex, malformed ones reported with file and line", "[field]") {
+  const auto parse = [](const std::string& text, std::string& error) {
+    ScalarField f;
+    return parseScalarField(text, "s.txt", 4, f, error) ? f.values : std::vector<double>{};
+  };
+  std::string error;
+  CHECK(parse("# heights\nfgsg-field 1 scalar 4\n1\n-2.5 # a comment\n3e-1\n0\n", error) ==
+        std::vector<double>{1, -2.5, 0.3, 0});
+  const auto fails = [&](const std::string& text) {
+    std::string e;
+    CHECK(parse(text, e).empty());
+    return e;
+  };
+  CHECK(fails("fgsg-field 1 vector 4\n") == "s.txt:1: expected the header 'fgsg-field 1 scalar <vertexCount>'");
+  CHECK(fails("fgsg-field 1 scalar 5\n") == "s.txt:1: the field has 5 vertices, the surface 4");
+  CHECK(fails("fgsg-field 1 scalar 4\n1 2\n") == "s.txt:2: expected one number, got '1' and 1 more");
+  CHECK(fails("fgsg-field 1 scalar 4\nx\n") == "s.txt:2: expected one number, got 'x'");
+  CHECK(fails("fgsg-field 1 scalar 4\ninf\n") == "s.txt:2: the value is not finite (inf)");
+  CHECK(fails("fgsg-field 1 scalar 4\n1\n") == "s.txt: expected 4 vertex lines, got 1");
+  CHECK(fails("fgsg-field 1 scalar 4\n1\n1\n1\n1\n1\n") == "s.txt:6: more vertex lines than the 4 the header announces");
+  CHECK(fails("") == "s.txt: empty field file (expected the header 'fgsg-field 1 scalar <vertexCount>')");
+}
