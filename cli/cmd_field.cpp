@@ -115,13 +115,9 @@ int fieldCommand(const Args& args) {
               << "pass --surface MESH\n";
     return 1;
   }
-  const auto grammarDir = std::filesystem::path(opt.file).parent_path();
-  std::vector<std::string> dirs;
-  for (const auto& dir : {grammarDir.empty() ? std::filesystem::path(".") : grammarDir, grammarDir / "assets"})
-    dirs.push_back(dir.string());
   std::unique_ptr<backend::SurfaceWorld> world;
   try {
-    world = std::make_unique<backend::SurfaceWorld>(m, opt.derive, dirs);
+    world = std::make_unique<backend::SurfaceWorld>(m, opt.derive, grammarDataDirs(opt.file));
   } catch (const backend::DeriveError& e) {
     frontend::Diagnostics diags(&compiled->source);
     diags.error(e.code, {{e.loc.line, e.loc.col}, {e.loc.line, e.loc.col}}, e.message);

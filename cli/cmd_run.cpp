@@ -191,11 +191,10 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     return 2;
   }
 
-  const auto grammarDir = std::filesystem::path(opt.file).parent_path();
   rt::AssetLibrary assets;
-  for (const auto& dir : {grammarDir.empty() ? std::filesystem::path(".") : grammarDir, grammarDir / "assets"}) {
-    assets.addSearchDir(dir.string());
-    opt.derive.assetDirs.push_back(dir.string());  // data files such as synthesis examples
+  for (const std::string& dir : grammarDataDirs(opt.file)) {
+    assets.addSearchDir(dir);
+    opt.derive.assetDirs.push_back(dir);  // data files such as synthesis examples
   }
   if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.derive.atlasCacheDir = cache + "/atlas";
 

@@ -16,6 +16,9 @@ struct UsageError {
 // every command tells the format the user asked for.
 std::string lowerExtension(const std::string& path);
 
+// Where a grammar's assets and data files are looked up: its folder, then its assets/.
+std::vector<std::string> grammarDataDirs(const std::string& grammarFile);
+
 // Walks the arguments after a subcommand name.
 class OptionReader {
  public:

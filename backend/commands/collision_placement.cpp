@@ -120,11 +120,11 @@ void placeAlongLine(const std::vector<rt::Vec3>& points, const rt::LineStyle& st
     if (!(z.norm() > 1e-9)) z = x.unitOrthogonal();
     z.normalize();
     const rt::Vec3 y = z.cross(x);
-    rt::Mat4 m = rt::Mat4::Identity();
-    m.block<3, 1>(0, 0) = length * x;
-    m.block<3, 1>(0, 1) = w * y;
-    m.block<3, 1>(0, 2) = w * z;
-    m.block<3, 1>(0, 3) = points[k] - 0.5 * w * (y + z);
+    rt::Scope scope;
+    scope.axes << x, y, z;
+    scope.S = rt::Vec3(length, w, w);
+    scope.P = points[k] - 0.5 * w * (y + z);
+    const rt::Mat4 m = scope.unitBoxToWorld();
     rt::Instance& inst = out.instances.emplace_back();
     inst.asset = style.asset;
     inst.symbol = symbol;

@@ -24,13 +24,10 @@ bool hasContextRules(const ir::Module& m) {
 }
 
 uint8_t flatAxes(const rt::Mesh& mesh) {
+  const auto lo = mesh.boundsMin(), hi = mesh.boundsMax();
   uint8_t flat = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    bool same = true;
-    for (size_t v = 1; same && v < mesh.vertexCount(); ++v)
-      same = mesh.positions[3 * v + axis] == mesh.positions[axis];
-    if (same) flat |= uint8_t(1u << axis);
-  }
+  for (int axis = 0; axis < 3; ++axis)
+    if (lo[axis] == hi[axis]) flat |= uint8_t(1u << axis);
   return flat;
 }
 
