@@ -13,6 +13,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxSegments = 4096;
+// The union of three tori is computed exactly and remeshed: keep it to seconds.
+constexpr int kMaxTori3Segments = 256;
 constexpr int kMaxSphereSubdivisions = 8;
 constexpr int kMaxGenus2Levels = 6;
 
@@ -277,6 +279,16 @@ const std::map<std::string, Spec>& specs() {
           return faces > kMaxProceduralFaces ? "cylinder: " + tooMany(faces) : "";
         },
         [](const std::vector<double>& a) { return cylinder(a[0], a[1], int(a[2])); }}},
+      {"tori3",
+       {{{"R", 1.0, false}, {"r", 0.3, false}, {"segments", kDefaultTorusSegments, true}},
+        [](const std::vector<double>& a) -> std::string {
+          if (!(a[0] > 2 * a[1] && a[1] > 0)) return "tori3(R, r) needs R > 2r > 0 (the tubes' junctions apart)";
+          if (a[2] < 8 || a[2] > kMaxTori3Segments)
+            return "tori3 segments must be between 8 and " + std::to_string(kMaxTori3Segments);
+          const double faces = 3 * 2.0 * a[2] * torusRings(a[0], a[1], int(a[2]));
+          return faces > kMaxProceduralFaces ? "tori3: " + tooMany(faces) : "";
+        },
+        [](const std::vector<double>& a) { return threeTori(a[0], a[1], int(a[2])); }}},
   };
   return table;
 }
@@ -427,7 +439,7 @@ bool makeProceduralSurface(const std::string& name, const std::vector<double>& a
 }
 
 const std::vector<std::string>& proceduralSurfaceNames() {
-  static const std::vector<std::string> names = {"torus", "sphere", "plane", "genus2", "cylinder"};
+  static const std::vector<std::string> names = {"torus", "sphere", "plane", "genus2", "cylinder", "tori3"};
   return names;
 }
 

@@ -39,6 +39,10 @@ SurfaceMesh cylinder(double r = 1.0, double h = 2.0, int segments = kDefaultCyli
 // Catmull-Clark limit of a polycube cage with bars 2r wide, so the tube is a little
 // thinner than r). Euler characteristic -2.
 SurfaceMesh genus2(double R = 1.0, double r = 0.4, int levels = kDefaultGenus2Levels);
+// FGSG Fig. 17's genus-7 surface: the union of three tori (major radius R, tube radius r,
+// R > 2r so the six junctions stay apart) about the Z, X and Y axes, remeshed to about
+// the torus's edge length (three_tori.cpp). Euler characteristic -12.
+SurfaceMesh threeTori(double R = 1.0, double r = 0.3, int segments = kDefaultTorusSegments);
 
 // Builds the surface named `name` from `args` (missing trailing ones take the defaults
 // above). False with a message for an unknown name, too many arguments or a bad value
@@ -47,7 +51,7 @@ bool makeProceduralSurface(const std::string& name, const std::vector<double>& a
                            SurfaceMesh& out, std::string& error);
 
 // The names makeProceduralSurface() knows, in a stable order: torus sphere plane genus2
-// cylinder.
+// cylinder tori3.
 const std::vector<std::string>& proceduralSurfaceNames();
 // The signature of a procedural surface for messages, e.g.
 // "torus(R = 1, r = 0.4, segments = 32)"; "" for an unknown name.

@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <thread>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -209,6 +210,35 @@ TEST_CASE("procedural surfaces are sound, with the right topology", "[surface]")
     checkSound(m, true, -2);
     CHECK(signedVolume(m) > 0);
   }
+  SECTION("three tori: closed, genus 7, on the tori and outside every tube") {
+    const double R = 1.0, r = 0.3;
+    const SurfaceMesh m = threeTori(R, r, 24);
+    checkSound(m, true, -12);
+    CHECK(signedVolume(m) > 0);
+    // Distance from p to the tube of the torus about `axis` (negative: inside the tube).
+    auto tube = [&](const Vec3& p, int axis) {
+      const double along = p[axis];
+      const double across = std::sqrt(std::max(0.0, p.squaredNorm() - along * along));
+      return std::hypot(across - R, along) - r;
+    };
+    double worstOn = 0, deepestInside = 0;
+    for (const Vec3& p : m.vertices) {
+      const double d[3] = {tube(p, 2), tube(p, 0), tube(p, 1)};
+      worstOn = std::max(worstOn, std::abs(std::min({d[0], d[1], d[2]})));
+      deepestInside = std::min({deepestInside, d[0], d[1], d[2]});
+    }
+    // Remeshing moves vertices back onto the union of the polygonal tori, whose faces
+    // sag from the smooth tubes by r (1 - cos(pi / 24)) across the tube and as much again
+    // along it.
+    CHECK(worstOn < 0.02 * r);
+    CHECK(deepestInside > -0.02 * r);
+    CHECK(minAngleDegrees(m) > 5);
+    // Built again (elsewhere in memory, on another thread): the same mesh.
+    SurfaceMesh again;
+    std::thread([&] { again = threeTori(R, r, 24); }).join();
+    CHECK(again.vertices == m.vertices);
+    CHECK(again.faces == m.faces);
+  }
   SECTION("plane: flat, centred, facing +Z") {
     const SurfaceMesh m = plane(3.0, 2.0);
     checkSound(m, false, 1);
@@ -261,7 +291,7 @@ TEST_CASE("makeProceduralSurface: names, defaults and errors", "[surface]") {
   SurfaceMesh m;
   std::string error;
   CHECK(proceduralSurfaceNames() ==
-        std::vector<std::string>{"torus", "sphere", "plane", "genus2", "cylinder"});
+        std::vector<std::string>{"torus", "sphere", "plane", "genus2", "cylinder", "tori3"});
   for (const auto& name : proceduralSurfaceNames()) {
     INFO(name);
     REQUIRE(makeProceduralSurface(name, {}, m, error));
@@ -286,6 +316,8 @@ TEST_CASE("makeProceduralSurface: names, defaults and errors", "[surface]") {
   CHECK_THAT(fails("torus", {0.3, 0.5}), Catch::Contains("torus(R, r) needs R > r > 0"));
   CHECK_THAT(fails("torus", {1.0, -0.1}), Catch::Contains("needs R > r > 0"));
   CHECK_THAT(fails("genus2", {0.4, 0.4}), Catch::Contains("genus2(R, r) needs R > r > 0"));
+  CHECK_THAT(fails("tori3", {1.0, 0.5}), Catch::Contains("tori3(R, r) needs R > 2r > 0"));
+  CHECK_THAT(fails("tori3", {1.0, 0.3, 4}), Catch::Contains("between 8 and 256"));
   CHECK_THAT(fails("sphere", {0.0}), Catch::Contains("sphere(r) needs r > 0"));
   CHECK_THAT(fails("plane", {1.0, -2.0}), Catch::Contains("needs w > 0 and h > 0"));
   CHECK_THAT(fails("cylinder", {1.0, 0.0}), Catch::Contains("needs r > 0 and h > 0"));
