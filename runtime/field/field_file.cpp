@@ -17,7 +17,7 @@ namespace {
 
 constexpr const char* kMagic = "fgsg-field";
 constexpr int kVersion = 1;
-constexpr const char* kHeaderForm = "fgsg-field 1 vector|tensor <vertexCount> [world|frame]";
+constexpr const char* kHeaderForm = "fgsg-field 1 vector|tensor|asymmetric <vertexCount> [world|frame]";
 constexpr const char* kScalarHeaderForm = "fgsg-field 1 scalar <vertexCount>";
 
 // The whitespace-separated words of a line, comments removed.
@@ -47,10 +47,17 @@ std::string at(const std::string& name, int line) {
   return name + ":" + std::to_string(line) + ": ";
 }
 
-// Values per line for each type and coordinate system.
-int valuesPerLine(bool tensor, FieldCoordinates c) {
-  if (c == FieldCoordinates::World) return tensor ? 6 : 3;
-  return tensor ? 3 : 2;
+enum class FileKind { Vector, Tensor, Asymmetric };
+
+// Values per line for each kind and coordinate system.
+int valuesPerLine(FileKind kind, FieldCoordinates c) {
+  const bool world = c == FieldCoordinates::World;
+  switch (kind) {
+    case FileKind::Vector: return world ? 3 : 2;
+    case FileKind::Tensor: return world ? 6 : 3;
+    case FileKind::Asymmetric: return world ? 9 : 4;
+  }
+  return 0;
 }
 
 std::string number(double v) {
@@ -66,11 +73,13 @@ bool parseField(std::string_view text, const std::string& name,
                 std::string& error) {
   const size_t nv = frames->vertexCount();
   bool haveHeader = false, tensor = false;
+  FileKind kind = FileKind::Vector;
   FieldCoordinates coordinates = FieldCoordinates::World;
   int perLine = 0, lineNumber = 0;
   size_t vertex = 0;
   std::vector<Vec2> vectors;
   std::vector<Mat2> tensors;
+  std::vector<double> rotations;  // asymmetric tensors' rotational parts
   size_t pos = 0;
   while (pos <= text.size()) {
     size_t eol = text.find('\n', pos);
@@ -92,12 +101,13 @@ bool parseField(std::string_view text, const std::string& name,
                 "' (this reader knows " + std::to_string(kVersion) + ")";
         return false;
       }
-      if (w[2] != "vector" && w[2] != "tensor") {
-        error = at(name, lineNumber) + "expected 'vector' or 'tensor', got '" +
-                std::string(w[2]) + "'";
+      if (w[2] != "vector" && w[2] != "tensor" && w[2] != "asymmetric") {
+        error = at(name, lineNumber) + "expected 'vector', 'tensor' or 'asymmetric', got '" +
+                std::string(w[2]) + "'" + (w[2] == "scalar" ? " (a scalar field is read by `scalar(\"...\")`)" : "");
         return false;
       }
-      tensor = w[2] == "tensor";
+      kind = w[2] == "vector" ? FileKind::Vector : w[2] == "tensor" ? FileKind::Tensor : FileKind::Asymmetric;
+      tensor = kind != FileKind::Vector;
       if (!parseNumber(w[3], count) || count < 0 || count != std::floor(count)) {
         error = at(name, lineNumber) + "expected a vertex count, got '" + std::string(w[3]) + "'";
         return false;
@@ -115,7 +125,7 @@ bool parseField(std::string_view text, const std::string& name,
         }
         coordinates = w[4] == "world" ? FieldCoordinates::World : FieldCoordinates::Frame;
       }
-      perLine = valuesPerLine(tensor, coordinates);
+      perLine = valuesPerLine(kind, coordinates);
       haveHeader = true;
       if (tensor)
         tensors.reserve(nv);
@@ -133,7 +143,7 @@ bool parseField(std::string_view text, const std::string& name,
               std::to_string(w.size());
       return false;
     }
-    double x[6];
+    double x[9];
     for (int i = 0; i < perLine; ++i) {
       if (!parseNumber(w[i], x[i])) {
         error = at(name, lineNumber) + "'" + std::string(w[i]) + "' is not a number";
@@ -146,7 +156,22 @@ bool parseField(std::string_view text, const std::string& name,
       }
     }
     const Frame& frame = frames->vertexFrame(int(vertex));
-    if (tensor) {
+    if (kind == FileKind::Asymmetric) {
+      // The whole 3x3 (or 2x2) tensor, restricted to the tangent plane: its symmetric
+      // and rotational parts.
+      Mat2 t;
+      if (coordinates == FieldCoordinates::World) {
+        Mat3 T;
+        T << x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8];
+        Eigen::Matrix<double, 3, 2> E;
+        E << frame.e1, frame.e2;
+        t = E.transpose() * T * E;
+      } else {
+        t << x[0], x[1], x[2], x[3];
+      }
+      tensors.push_back(0.5 * (t + t.transpose()));
+      rotations.push_back(0.5 * (t(1, 0) - t(0, 1)));
+    } else if (tensor) {
       Mat2 t;
       if (coordinates == FieldCoordinates::World) {
         Mat3 T;
@@ -177,6 +202,7 @@ bool parseField(std::string_view text, const std::string& name,
     out->setVertexTensors(std::move(tensors));
   else
     out->setVertexVectors(std::move(vectors));
+  if (kind == FileKind::Asymmetric) out->setVertexRotations(std::move(rotations));
   return true;
 }
 
@@ -252,18 +278,26 @@ bool loadScalarField(const std::string& path, size_t vertexCount, ScalarField& o
 
 std::string formatField(const TangentField& field, FieldCoordinates coordinates) {
   const bool world = coordinates == FieldCoordinates::World;
+  const char* kind = field.isAsymmetric() ? "asymmetric" : field.isTensor() ? "tensor" : "vector";
+  const char* layout = field.isAsymmetric() ? (world ? "world xx xy xz yx yy yz zx zy zz" : "frame t11 t12 t21 t22")
+                       : field.isTensor()   ? (world ? "world xx xy xz yy yz zz" : "frame t11 t12 t22")
+                                            : (world ? "world x y z" : "frame u v");
   std::string s;
-  s += std::string("# ") + (field.isTensor() ? "tensor" : "vector") +
-       " field, one line per vertex (" +
-       (world ? (field.isTensor() ? "world xx xy xz yy yz zz" : "world x y z")
-              : (field.isTensor() ? "frame t11 t12 t22" : "frame u v")) +
-       ")\n";
-  s += std::string(kMagic) + " " + std::to_string(kVersion) + " " +
-       (field.isTensor() ? "tensor" : "vector") + " " + std::to_string(field.vertexCount()) +
-       (world ? " world" : " frame") + "\n";
+  s += std::string("# ") + kind + " field, one line per vertex (" + layout + ")\n";
+  s += std::string(kMagic) + " " + std::to_string(kVersion) + " " + kind + " " +
+       std::to_string(field.vertexCount()) + (world ? " world" : " frame") + "\n";
   for (size_t v = 0; v < field.vertexCount(); ++v) {
     std::vector<double> x;
-    if (field.isTensor()) {
+    if (field.isAsymmetric()) {
+      if (world) {
+        const Mat3 T = field.vertexAsymmetricWorld(int(v));
+        x = {T(0, 0), T(0, 1), T(0, 2), T(1, 0), T(1, 1), T(1, 2), T(2, 0), T(2, 1), T(2, 2)};
+      } else {
+        const Mat2& t = field.vertexTensor(int(v));
+        const double r = field.vertexRotation(int(v));
+        x = {t(0, 0), t(0, 1) - r, t(1, 0) + r, t(1, 1)};
+      }
+    } else if (field.isTensor()) {
       if (world) {
         const Mat3 T = field.vertexTensorWorld(int(v));
         x = {T(0, 0), T(0, 1), T(0, 2), T(1, 1), T(1, 2), T(2, 2)};

@@ -2,7 +2,7 @@
 // field from a file"). The format, plain text (also in docs/fields.md):
 //
 //   # anything after '#' on a line is a comment; blank lines are ignored
-//   fgsg-field 1 <vector|tensor> <vertexCount> [world|frame]
+//   fgsg-field 1 <vector|tensor|asymmetric> <vertexCount> [world|frame]
 //   <one line per vertex of the surface, in the surface's vertex order>
 //
 // The header names the format version (1), the field type, the number of vertices (must
@@ -15,6 +15,11 @@
 //                                      E = [e1 e2] (so normal components are dropped)
 //   vector frame   u v                 u e1 + v e2 in the vertex's tangent frame
 //   tensor frame   t11 t12 t22         [[t11, t12], [t12, t22]] in the vertex's frame
+//   asymmetric world  xx xy xz yx yy yz zx zy zz
+//                                      a whole 3x3 world tensor, row by row, restricted to
+//                                      the tangent plane (E^T T E): its symmetric part and
+//                                      its rotational part w (tangent_field.h)
+//   asymmetric frame  t11 t12 t21 t22  [[t11, t12], [t21, t22]] in the vertex's frame
 //
 // The vertex frame (TangentFrames) is n = the angle-weighted vertex normal, e1 = the edge
 // to the next vertex of the vertex's first face (SurfaceMesh::vertexFace) projected onto

@@ -1,4 +1,4 @@
-// A vector or symmetric tensor field on a surface mesh (FGSG §4.2, §4.3): values stored
+// A vector or tensor field on a surface mesh (FGSG §4.2, §4.3): values stored
 // at vertices in their tangent frames, interpolated continuously inside triangles by the
 // piecewise scheme of Zhang et al. 2007: the three corner values are transported into
 // the face plane (minimal rotation of the vertex normal onto the face normal) and blended
@@ -10,6 +10,12 @@
 // point's face (TangentFrames::faceFrame). World vectors (vector(), eigen()) lie in the
 // tangent plane of the point's smooth normal, p.normal(mesh): the face-plane result is
 // carried there by the minimal rotation of the face normal onto it.
+//
+// A tensor field is symmetric unless it is given a rotational part (setVertexRotations):
+// then T = S + w J, S the symmetric tensor, J the quarter turn [[0, -1], [1, 0]] — an
+// asymmetric tensor field, whose eigenvectors meet at any angle (FGSG §4.2, after Zhang
+// et al. 2009, "Asymmetric tensor analysis for flow visualization"). w is the same in
+// every right-handed frame, so it is interpolated as a number.
 //
 // Editing (set*) is not thread-safe; once edits are done any number of threads may query
 // at the same time (the degeneracy cache is built once, under a lock).
@@ -32,7 +38,8 @@ enum class FieldType { Vector, Tensor };
 enum class Eigenvector { Major, Minor };
 
 // Eigen decomposition at a point: value1 >= value2; vector1, vector2 unit, world, with
-// vector2 = n x vector1. A vector field answers value1 = its length, value2 = 0, vector1 =
+// vector2 = n x vector1 (an asymmetric tensor's: on vector1's counter-clockwise side, at
+// the angle between its eigenvectors; PlaneEigen). A vector field answers value1 = its length, value2 = 0, vector1 =
 // its direction. Where the direction is undefined (a zero vector, an isotropic tensor)
 // the vectors are the frame's axes: ask direction() whether they mean anything.
 struct Eigen2 {
@@ -69,6 +76,16 @@ class TangentField : public DirectionField {
   void setVertexTensor(int v, const Mat2& value);  // symmetrised
   void setVertexVectors(std::vector<Vec2> values);
   void setVertexTensors(std::vector<Mat2> values);
+  // An asymmetric tensor field's rotational parts w, one per vertex (tensor fields only;
+  // an empty list makes the field symmetric again).
+  void setVertexRotations(std::vector<double> values);
+  bool isAsymmetric() const { return !rotations_.empty(); }
+  double vertexRotation(int v) const { return rotations_.empty() ? 0.0 : rotations_[v]; }
+  // A 3x3 world tensor restricted to the tangent plane, E^T T E, kept whole: its
+  // symmetric part and its rotational part (makes the field asymmetric).
+  void setVertexAsymmetricWorld(int v, const Mat3& value);
+  // E (S + w J) E^T.
+  Mat3 vertexAsymmetricWorld(int v) const;
   // World forms: a vector is projected onto the tangent plane, a 3x3 tensor restricted to
   // it (E^T T E with E = [e1 e2]); reading back gives E v and E T E^T.
   void setVertexVectorWorld(int v, const Vec3& value);
@@ -84,7 +101,8 @@ class TangentField : public DirectionField {
   // ---- evaluation at a surface point ----
   // The interpolated value in the face frame.
   Vec2 localVector(const SurfacePoint& p) const;  // a tensor field: value1 * vector1
-  Mat2 tensor(const SurfacePoint& p) const;
+  Mat2 tensor(const SurfacePoint& p) const;  // the symmetric part S
+  double rotation(const SurfacePoint& p) const;  // the rotational part w (0: symmetric)
   // The world tangent vector: the vector, or a tensor's major eigenvector scaled by its
   // eigenvalue (its sign is arbitrary).
   Vec3 vector(const SurfacePoint& p) const;
@@ -98,7 +116,7 @@ class TangentField : public DirectionField {
   // The same as a world 3x3 map of the tangent plane, E J E^T (face frame axes E).
   Mat3 jacobianWorld(const SurfacePoint& p, Eigenvector which = Eigenvector::Major) const;
   // The interpolated tensor as a world 3x3 tensor of the face plane, E T E^T (a vector
-  // field's: v v^T / |v|).
+  // field's: v v^T / |v|; an asymmetric one's whole, S + w J).
   Mat3 tensorWorld(const SurfacePoint& p) const;
   TensorGradient tensorGradient(const SurfacePoint& p) const;
   // trace(J), and J(1,0) - J(0,1) (counter-clockwise about the face normal positive).
@@ -122,12 +140,14 @@ class TangentField : public DirectionField {
   void buildCache() const;
   // The eigenvector field's corner values, signs aligned with the direction at p.
   std::array<Vec2, 3> eigenvectorCorners(const SurfacePoint& p, Eigenvector which) const;
+  std::array<double, 3> cornerRotations(int f) const;
   Mat2 jacobianOf(int face, const std::array<Vec2, 3>& corners) const;
 
   std::shared_ptr<const TangentFrames> frames_;
   FieldType type_;
   std::vector<Vec2> vectors_;
   std::vector<Mat2> tensors_;
+  std::vector<double> rotations_;  // empty: symmetric
 
   mutable std::mutex cacheMutex_;
   mutable std::atomic<bool> cacheReady_{false};
@@ -141,5 +161,18 @@ struct LocalEigen {
   double value1 = 0, value2 = 0, angle = 0;
 };
 LocalEigen eigenOf(const Mat2& t);
+
+// Eigen analysis of the asymmetric tensor S + w J in the plane (S symmetric, with mean m
+// and deviator r). Real domain, |w| <= r: the eigenvalues m +- sqrt(r^2 - w^2) and their
+// unit eigenvectors, which turn from S's towards each other as |w| grows and meet at
+// |w| = r. Complex domain, |w| > r: no real eigenvector; the eigenvalues' real part m
+// twice and S's eigenvectors, the dual-eigenvectors of Zhang et al. 2009. vector2 is on
+// vector1's counter-clockwise side; for w = 0 it is vector1 turned a quarter.
+struct PlaneEigen {
+  double value1 = 0, value2 = 0;
+  Vec2 vector1 = Vec2::UnitX(), vector2 = Vec2::UnitY();
+  bool real = true;
+};
+PlaneEigen eigenOf(const Mat2& symmetric, double rotation);
 
 }  // namespace fgsg::rt::field

@@ -126,13 +126,13 @@ TEST_CASE("malformed field files are reported with file and line", "[field]") {
   CHECK(parseError("fgsg-field 2 vector 4\n", frames) ==
         "f.txt:1: unsupported version '2' (this reader knows 1)");
   CHECK(parseError("fgsg-field 1 matrix 4\n", frames) ==
-        "f.txt:1: expected 'vector' or 'tensor', got 'matrix'");
+        "f.txt:1: expected 'vector', 'tensor' or 'asymmetric', got 'matrix'");
   CHECK(parseError("fgsg-field 1 vector 4 local\n", frames) ==
         "f.txt:1: expected 'world' or 'frame', got 'local'");
   CHECK(parseError("1 0 0\n", frames) ==
-        "f.txt:1: expected the header 'fgsg-field 1 vector|tensor <vertexCount> [world|frame]'");
+        "f.txt:1: expected the header 'fgsg-field 1 vector|tensor|asymmetric <vertexCount> [world|frame]'");
   CHECK(parseError("# nothing\n", frames) ==
-        "f.txt: empty field file (expected the header 'fgsg-field 1 vector|tensor "
+        "f.txt: empty field file (expected the header 'fgsg-field 1 vector|tensor|asymmetric "
         "<vertexCount> [world|frame]')");
 }
 
