@@ -2,7 +2,10 @@
 // and a new instance asks whether it would intersect any of them. Exact tests compare
 // the instances' triangle meshes (FCL: BVH against BVH under rigid transforms, a dynamic
 // AABB tree as broad phase) and then whole-volume containment, which triangle tests miss;
-// the cheap alternative compares instance centres against a radius. The implementation
+// the cheap alternative compares instance centres against a radius; the clearance test
+// asks whether the meshes come closer than a distance (FGSG §4.4's "minimal distance
+// between two shapes using a distance field": each mesh's distance field, evaluated
+// exactly on the other's surface by FCL's BVH distance query). The implementation
 // is loaded when the first obstacle is added (collision_backend.h).
 #pragma once
 
@@ -18,7 +21,8 @@ namespace fgsg::rt {
 
 enum class CollisionTest : uint8_t {
   Mesh,    // the instances' meshes intersect, or one encloses the other
-  Centre,  // the instances' centres (their unit boxes' centres) are closer than a radius
+  Centre,    // the instances' centres (their unit boxes' centres) are closer than a radius
+  Distance,  // the meshes are closer than a radius (a clearance), or one encloses the other
 };
 
 class CollisionBackend;
@@ -26,7 +30,7 @@ class CollisionBackend;
 class CollisionWorld {
  public:
   // `assets` supplies the meshes (in the unit box) that instances refer to by index; it
-  // must outlive the world. `radius` is used by CollisionTest::Centre only.
+  // must outlive the world. `radius` is used by CollisionTest::Centre and ::Distance.
   CollisionWorld(const AssetLibrary& assets, CollisionTest test, double radius);
   ~CollisionWorld();
   CollisionWorld(const CollisionWorld&) = delete;

@@ -1,6 +1,6 @@
 // The collision world's implementation (collision_backend.h): FCL's BVH-against-BVH
 // tests under rigid transforms with a dynamic AABB tree as broad phase, whole-volume
-// containment, and the centre test. Built into lib/libfgsg_fcl.so (and linked into
+// containment, the clearance test (FCL's BVH distance), and the centre test. Built into lib/libfgsg_fcl.so (and linked into
 // executables that do not open plugins).
 #include "runtime/collision/collision_backend.h"
 
@@ -10,6 +10,7 @@
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
 #include <array>
@@ -169,7 +170,7 @@ bool inside(const ScaledShape& s, const Vec3& p) {
 struct Obstacle {
   int mesh = 0;
   std::shared_ptr<ScaledShape> shape;
-  std::unique_ptr<fcl::CollisionObjectd> object;  // Mesh test only
+  std::unique_ptr<fcl::CollisionObjectd> object;  // Mesh and Distance tests
   Vec3 centre;
 };
 
@@ -237,14 +238,8 @@ class FclCollisionWorld final : public CollisionBackend {
     return false;
   }
 
-  // Exact test of one candidate pair whose bounding boxes overlap.
-  bool meshesCollide(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b) {
-    ++narrowTests;
-    fcl::CollisionRequestd request(1, false);
-    fcl::CollisionResultd result;
-    fcl::collide(a, b, request, result);
-    if (result.isCollision()) return true;
-    // No surfaces cross; one may still enclose the other entirely.
+  // Whether one of two instances whose surfaces do not cross encloses the other.
+  static bool enclosed(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b) {
     auto encloses = [](fcl::CollisionObjectd* outer, fcl::CollisionObjectd* inner) {
       const auto* o = static_cast<const ScaledShape*>(outer->getUserData());
       const auto* i = static_cast<const ScaledShape*>(inner->getUserData());
@@ -253,6 +248,26 @@ class FclCollisionWorld final : public CollisionBackend {
       return inside(*o, outer->getTransform().inverse() * world);
     };
     return encloses(a, b) || encloses(b, a);
+  }
+
+  // Exact test of one candidate pair whose bounding boxes overlap.
+  bool meshesCollide(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b) {
+    ++narrowTests;
+    fcl::CollisionRequestd request(1, false);
+    fcl::CollisionResultd result;
+    fcl::collide(a, b, request, result);
+    return result.isCollision() || enclosed(a, b);
+  }
+
+  // The clearance test of one candidate pair whose boxes are closer than `radius`: the
+  // least distance between the two triangle meshes (0, or below, where they cross).
+  bool meshesCloser(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b) {
+    ++narrowTests;
+    fcl::DistanceRequestd request;
+    request.enable_nearest_points = false;
+    fcl::DistanceResultd result;
+    fcl::distance(a, b, request, result);
+    return result.min_distance < radius || enclosed(a, b);
   }
 
   // The broad phase calls this for every obstacle whose box overlaps the query's.
@@ -265,13 +280,24 @@ class FclCollisionWorld final : public CollisionBackend {
     q->hit = q->world->meshesCollide(a, b);
     return q->hit;  // true stops the broad phase
   }
+  // The broad phase's distance walk visits obstacles whose boxes are closer to the
+  // query's than `dist`; holding it at the clearance visits exactly the candidates.
+  static bool onDistanceCandidate(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void* data, double& dist) {
+    auto* q = static_cast<Query*>(data);
+    q->hit = q->world->meshesCloser(a, b);
+    dist = q->world->radius;
+    return q->hit;
+  }
 
   bool collides(int mesh, const Mat4& unitBoxToWorld, const std::function<bool(size_t)>& confirm) override {
     if (obstacles.empty()) return false;
     Obstacle query = makeObstacle(mesh, unitBoxToWorld);
     if (test == CollisionTest::Centre) return centreCollides(query.centre, confirm);
     Query state{this};
-    broadPhase.collide(query.object.get(), &state, onCandidate);
+    if (test == CollisionTest::Distance)
+      broadPhase.distance(query.object.get(), &state, onDistanceCandidate);
+    else
+      broadPhase.collide(query.object.get(), &state, onCandidate);
     return state.hit;
   }
 

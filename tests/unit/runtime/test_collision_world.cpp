@@ -1,5 +1,6 @@
 // Collision-tested instancing's obstacle world: exact mesh tests under rotation and
-// scale, containment (which triangle tests alone miss), the centre-distance test,
+// scale, containment (which triangle tests alone miss), the centre-distance and
+// clearance tests,
 // moving obstacles and rolling back a transaction; and merge-instancing's thresholds.
 #include "runtime/collision/collision_world.h"
 #include "runtime/collision/merge_index.h"
@@ -83,9 +84,33 @@ TEST_CASE("centre distance collides below the radius only", "[collision]") {
   CHECK(world.collides(a.cube, box({-0.6, 0.6, 0.3}, {5, 5, 5})));  // sizes do not matter
 }
 
+TEST_CASE("the clearance test collides when the meshes come closer than the distance", "[collision]") {
+  Assets a;
+  CollisionWorld world(a.library, CollisionTest::Distance, 0.5);
+  world.add(a.cube, box({0, 0, 0}, {1, 1, 1}));  // faces at x = +-0.5
+  // Face to face: a gap of 0.45 is too close, 0.55 keeps the clearance.
+  CHECK(world.collides(a.cube, box({1.45, 0, 0}, {1, 1, 1})));
+  CHECK_FALSE(world.collides(a.cube, box({1.55, 0, 0}, {1, 1, 1})));
+  // Corner to corner along the diagonal of the XY plane: the gap is the distance between
+  // the corners (0.5, 0.5) and (c - 0.5, c - 0.5), sqrt(2) (c - 1).
+  const double inside = 1 + 0.49 / std::sqrt(2.0), outside = 1 + 0.51 / std::sqrt(2.0);
+  CHECK(world.collides(a.cube, box({inside, inside, 0}, {1, 1, 1})));
+  CHECK_FALSE(world.collides(a.cube, box({outside, outside, 0}, {1, 1, 1})));
+  // A sphere (a 32-segment polygon in section, so its surface reaches 0.5 only at its
+  // vertices) beside the cube, scaled and turned: the gap is measured on the meshes.
+  CHECK(world.collides(a.sphere, box({0, 1.4, 0}, {1, 1, 1}, 30)));
+  CHECK_FALSE(world.collides(a.sphere, box({0, 1.6, 0}, {1, 1, 1}, 30)));
+  CHECK(world.collides(a.sphere, box({0, 2.2, 0}, {2.5, 2.5, 2.5})));  // reaches 0.95
+  // Touching, crossing and enclosing are all closer than any clearance.
+  CHECK(world.collides(a.cube, box({1, 0, 0}, {1, 1, 1})));
+  CHECK(world.collides(a.cube, box({0.3, 0, 0}, {1, 1, 1})));
+  CHECK(world.collides(a.sphere, box({0, 0, 0}, {0.2, 0.2, 0.2})));
+  CHECK(world.narrowPhaseTests() > 0);
+}
+
 TEST_CASE("moved obstacles are tested where they are now", "[collision]") {
   Assets a;
-  for (CollisionTest test : {CollisionTest::Mesh, CollisionTest::Centre}) {
+  for (CollisionTest test : {CollisionTest::Mesh, CollisionTest::Centre, CollisionTest::Distance}) {
     CollisionWorld world(a.library, test, 0.5);
     const size_t id = world.add(a.cube, box({0, 0, 0}, {0.4, 0.4, 0.4}));
     world.move(id, box({10, 0, 0}, {0.4, 0.4, 0.4}));
@@ -96,7 +121,7 @@ TEST_CASE("moved obstacles are tested where they are now", "[collision]") {
 
 TEST_CASE("rollback removes the obstacles added after the mark", "[collision]") {
   Assets a;
-  for (CollisionTest test : {CollisionTest::Mesh, CollisionTest::Centre}) {
+  for (CollisionTest test : {CollisionTest::Mesh, CollisionTest::Centre, CollisionTest::Distance}) {
     CollisionWorld world(a.library, test, 0.5);
     world.add(a.cube, box({0, 0, 0}, {0.4, 0.4, 0.4}));
     const size_t mark = world.mark();
