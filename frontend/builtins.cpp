@@ -106,8 +106,9 @@ bool isFieldMember(const std::string& m, bool& isVector) {
                                    "jacobianX2", "jacobianY2", "rgb"};
   static const char* kScalars[] = {"value",       "value1",      "value2",   "length",   "length1",  "length2",
                                    "Xangle",      "Xangle1",     "Xangle2",  "Yangle1",  "div",      "div1",
-                                   "div2",        "streamcurv1", "streamcurv2", "tensorXX", "tensorXY", "tensorYY",
-                                   "mincurv",     "maxcurv",     "meancurv", "gausscurv", "intensity"};
+                                   "div2",        "streamcurv1", "streamcurv2", "tensorXX", "tensorXY", "tensorYX",
+                                   "tensorYY",    "rotation",    "eigenangle", "mincurv", "maxcurv",  "meancurv",
+                                   "gausscurv",   "intensity"};
   for (const char* v : kVectors)
     if (m == v) return isVector = true, true;
   for (const char* s : kScalars)

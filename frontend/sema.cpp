@@ -30,6 +30,12 @@ bool isShapeItem(const Item& item, const SemaResult& sema) {
   return s >= 0 && !sema.symbols[s].rules.empty();
 }
 
+const std::vector<std::pair<std::string, ValueType>>& surfacePointNames() {
+  static const std::vector<std::pair<std::string, ValueType>> kNames = {
+      {"x", ValueType::Num}, {"y", ValueType::Num}, {"z", ValueType::Num}};
+  return kNames;
+}
+
 namespace sema_detail {
 
 // Each pass reads what the earlier ones left in res_: constants before anything that

@@ -85,16 +85,22 @@ struct FieldDesignInfo {
   SourceRange range;
 };
 
-// `field NAME = ...;` evaluated: source "file" | "design" | "curvature", kind "tensor" |
-// "vector" (curvature: "tensor").
+// `field NAME = ...;` evaluated: source "file" | "design" | "curvature" | "image" |
+// "expression", kind "tensor" | "vector" | "scalar" (curvature, image: "tensor").
 struct FieldInfo {
   std::string name;
   std::string source;
   std::string kind;
   std::string path;
   std::vector<FieldDesignInfo> design;
+  // source "expression": `scalar(EXPR)`, a number computed at each vertex of the surface
+  // from its position x, y, z (surfacePointNames), consts and attrs. Points into the AST.
+  const Expr* expression = nullptr;
   SourceRange range;
 };
+
+// The names a scalar field's expression reads at each vertex: x, y, z (its position).
+const std::vector<std::pair<std::string, ValueType>>& surfacePointNames();
 
 struct SemaResult {
   std::vector<SymbolInfo> symbols;
@@ -124,7 +130,7 @@ struct SemaResult {
   int turtleSides = 8;
   std::vector<std::array<float, 3>> turtleColors;  // `turtle colors "..."`; empty: the default palette
   // `collision ...;` (the first declaration): every I() tested (all), and the metric
-  // "mesh", "centre" or "geodesic" with its radius (0 for mesh).
+  // "mesh", "centre", "geodesic" or "distance" with its radius (0 for mesh).
   bool collisionDeclared = false;
   bool collisionAll = false;
   bool collisionOmit = false;  // `collision omit;`: a collision drops the instance only

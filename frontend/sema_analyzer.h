@@ -19,10 +19,14 @@ namespace fgsg::frontend::sema_detail {
 constexpr double kPi = 3.14159265358979323846;
 
 // Where an expression is being checked: inside a rule (its parameters are visible),
-// and whether a relative/floating size is allowed at this position.
+// and whether a relative/floating size is allowed at this position; outside rules, the
+// names an expression may use besides consts and attrs (a scalar field's x, y, z).
 struct Where {
   int rule = -1;
   bool sizeArg = false;
+  const std::vector<std::pair<std::string, ValueType>>* bound = nullptr;
+  // The same place, for an operand: no sizes.
+  Where operand(bool sizes = false) const { return {rule, sizes, bound}; }
 };
 
 struct GaSetting;  // a genetic-algorithm setting a tileset may give (sema_tilesets.cpp)
@@ -39,6 +43,7 @@ class Analyzer {
   // the surface count, the derivation mode and the turtle settings.
   void collectValues();
   void collectEnvironment();
+  bool checkSurfaceExpression(const Expr& e);
   // Tilesets (sema_tilesets.cpp): `tileset NAME { locus ...; section ...; ... }`.
   void collectTilesets();
   bool tileCurve(const TilesetItem& item, TileCurveInfo& out);

@@ -1,4 +1,5 @@
-// Semantic analysis of `collision [all] [omit | cull] [mesh | centre R | center R | geodesic R];`
+// Semantic analysis of `collision [all] [omit | cull] [mesh | centre R | center R | geodesic R |
+// distance D];`
 // (E030..E032): the first declaration sets SemaResult::collision*, later ones are errors.
 
 #include "frontend/sema_analyzer.h"
@@ -14,13 +15,14 @@ const char* collisionMetricOf(const std::string& word) {
   if (word == "mesh") return "mesh";
   if (word == "centre" || word == "center") return "centre";
   if (word == "geodesic") return "geodesic";
+  if (word == "distance") return "distance";
   return nullptr;
 }
 
 }  // namespace
 
-// `collision [all] [mesh | centre R | center R | geodesic R];`, words in any order.
-// The radius R is a number or the name of a number const.
+// `collision [all] [omit | cull] [mesh | centre R | center R | geodesic R | distance D];`,
+// words in any order. The radius R (clearance D) is a number or the name of a number const.
 void Analyzer::collectCollision() {
   for (size_t i = 0; i < prog_.collisions.size(); ++i) {
     const CollisionDecl& d = prog_.collisions[i];
@@ -37,7 +39,7 @@ void Analyzer::collectCollision() {
   }
 }
 
-// A radius written after `centre` / `geodesic`: a number or a number const.
+// A radius written after `centre` / `geodesic` / `distance`: a number or a number const.
 bool Analyzer::collisionRadius(const CollisionWord& w, double& radius) const {
   if (w.isNumber()) return radius = w.number, true;
   if (w.word == "all" || w.word == "omit" || w.word == "cull" || collisionMetricOf(w.word)) return false;
@@ -52,8 +54,9 @@ void Analyzer::checkCollisionDecl(const CollisionDecl& d) {
   res_.collisionRange = d.range;
   if (d.words.empty()) {
     diags_.error("E030", d.range,
-                 "`collision` needs a setting: all, omit, cull, mesh, centre R or geodesic R (R a "
-                 "positive radius), e.g. `collision all centre 0.3;`");
+                 "`collision` needs a setting: all, omit, cull, mesh, centre R, geodesic R or "
+                 "distance D (R a positive radius, D a positive clearance), e.g. `collision all "
+                 "centre 0.3;`");
     return;
   }
   const CollisionWord* metric = nullptr;    // the first metric written
@@ -64,8 +67,8 @@ void Analyzer::checkCollisionDecl(const CollisionDecl& d) {
     if (w.isNumber()) {
       const CollisionWord* before = k > 0 ? &d.words[k - 1] : nullptr;
       diags_.error("E031", w.range,
-                   std::string("a number in `collision` is the radius after 'centre' or "
-                               "'geodesic'") +
+                   std::string("a number in `collision` is the radius after 'centre', "
+                               "'geodesic' or 'distance'") +
                        (before && (before->word == "all" || before->word == "mesh")
                             ? ", and '" + before->word + "' takes none"
                             : std::string()) +
@@ -90,24 +93,26 @@ void Analyzer::checkCollisionDecl(const CollisionDecl& d) {
     if (!kind) {
       diags_.error("E030", w.range,
                    "unknown collision setting '" + w.word +
-                       "' (expected all, omit, cull, mesh, centre R, center R or geodesic R)");
+                       "' (expected all, omit, cull, mesh, centre R, center R, geodesic R or "
+                       "distance D)");
       continue;
     }
     if (metric)
       diags_.error("E032", w.range,
                    "two collision metrics, '" + metric->word + "' and '" + w.word +
-                       "': choose one (mesh, centre R or geodesic R)");
+                       "': choose one (mesh, centre R, geodesic R or distance D)");
     double radius = 0.0;
     if (std::string(kind) != "mesh") {
+      const std::string noun = std::string(kind) == "distance" ? "clearance" : "radius";
       if (k + 1 >= d.words.size() || !collisionRadius(d.words[k + 1], radius)) {
         diags_.error("E031", w.range,
-                     "'" + w.word + "' needs a radius: `collision " + w.word + " 0.3;`");
+                     "'" + w.word + "' needs a " + noun + ": `collision " + w.word + " 0.3;`");
         continue;
       }
       const CollisionWord& r = d.words[++k];
       if (!(radius > 0) || !std::isfinite(radius)) {
         diags_.error("E031", r.range,
-                     "the radius of '" + w.word + "' must be a positive number, got " +
+                     "the " + noun + " of '" + w.word + "' must be a positive number, got " +
                          formatNumber(radius));
         continue;
       }

@@ -63,7 +63,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
   };
   auto numArgs = [&](size_t from, bool sizes) {
     for (size_t k = from; k < item.args.size(); ++k)
-      expect(*item.args[k], Where{w.rule, sizes}, ValueType::Num, "this argument");
+      expect(*item.args[k], w.operand(sizes), ValueType::Num, "this argument");
   };
   switch (cmd.id) {
     case CommandId::Scale: numArgs(0, true); break;
@@ -115,7 +115,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       // A vector (r, g, b), as a picture's colour `P.rgb`: read three times, so it may not
       // draw random numbers unless written out as (r, g, b).
       if (typeOf(*item.args[0], w, false) == ValueType::Vec3) {
-        expect(*item.args[0], Where{w.rule, false}, ValueType::Vec3, "the colour");
+        expect(*item.args[0], w.operand(), ValueType::Vec3, "the colour");
         if (item.args[0]->kind != ExprKind::Vector && drawsRandom(*item.args[0]))
           diags_.error("E016", item.args[0]->range,
                        "a colour vector that draws random numbers must be written (r, g, b): each "

@@ -8,6 +8,7 @@
 #include "frontend/sema_environment.h"
 
 #include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 
@@ -47,6 +48,28 @@ void Analyzer::collectValues() {
   }
 }
 
+// A scalar field's expression is computed once per vertex, before any shape exists: it
+// reads the vertex's position, consts, attrs and math, not the queries of a shape.
+bool Analyzer::checkSurfaceExpression(const Expr& e) {
+  bool ok = true;
+  std::function<void(const Expr&)> noQueries = [&](const Expr& x) {
+    if (x.kind == ExprKind::Member) {
+      diags_.error("E035", x.range,
+                   "a scalar field's expression is computed at each vertex of the surface before "
+                   "any shape exists: it may use x, y, z, numbers, consts, attrs and math "
+                   "functions, not the query '" + x.object + "." + x.text + "'");
+      ok = false;
+      return;
+    }
+    for (const auto& a : x.args) noQueries(*a);
+  };
+  noQueries(e);
+  if (!ok) return false;
+  const int errors = diags_.errorCount();
+  expect(e, Where{-1, false, &surfacePointNames()}, ValueType::Num, "a scalar field's expression");
+  return diags_.errorCount() == errors && res_.exprTypes[&e] == ValueType::Num;
+}
+
 void Analyzer::collectEnvironment() {
   std::set<std::string> names;
   for (const auto& f : prog_.fields) {
@@ -61,8 +84,9 @@ void Analyzer::collectEnvironment() {
   }
   if (prog_.surfaces.size() > 1)
     diags_.error("E029", prog_.surfaces[1].range, "only one surface may be declared");
-  checkSurfaceAndFields(prog_, res_, diags_,
-                        [this](const Expr& e, ConstValue& v) { return evalConst(e, v); });
+  checkSurfaceAndFields(
+      prog_, res_, diags_, [this](const Expr& e, ConstValue& v) { return evalConst(e, v); },
+      [this](const Expr& e) { return checkSurfaceExpression(e); });
   // The last `derive` wins. Its number is the step count of a parallel derivation and
   // the depth bound of a sequential one (both: how many levels are rewritten).
   for (const auto& d : prog_.derives) {

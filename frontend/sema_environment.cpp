@@ -13,15 +13,16 @@ constexpr double kPi = 3.14159265358979323846;
 
 const SurfaceGeneratorInfo kGenerators[] = {
     {"torus", 2, "torus(R, r)"},     {"sphere", 1, "sphere(r)"}, {"plane", 2, "plane(w, h)"},
-    {"genus2", 0, "genus2()"},       {"cylinder", 2, "cylinder(r, h)"},
+    {"genus2", 0, "genus2()"},       {"cylinder", 2, "cylinder(r, h)"}, {"tori3", 2, "tori3(R, r)"},
 };
 constexpr const char* kGeneratorList =
-    "torus(R, r), sphere(r), plane(w, h), genus2() or cylinder(r, h)";
+    "torus(R, r), sphere(r), plane(w, h), genus2(), cylinder(r, h) or tori3(R, r)";
 
 // The argument names of a generator, as in its signature.
 std::string argumentName(const std::string& generator, size_t k) {
   static const std::map<std::string, std::vector<const char*>> kNames = {
-      {"torus", {"R", "r"}}, {"sphere", {"r"}}, {"plane", {"w", "h"}}, {"cylinder", {"r", "h"}}};
+      {"torus", {"R", "r"}}, {"sphere", {"r"}}, {"plane", {"w", "h"}}, {"cylinder", {"r", "h"}},
+      {"tori3", {"R", "r"}}};
   auto it = kNames.find(generator);
   const SurfaceGeneratorInfo* g = findSurfaceGenerator(generator);
   if (g && k == static_cast<size_t>(g->args)) return "resolution";
@@ -63,8 +64,9 @@ struct WordValue {
 
 class EnvironmentChecker {
  public:
-  EnvironmentChecker(const Program& p, SemaResult& r, Diagnostics& d, const ConstEvaluator& e)
-      : prog_(p), res_(r), diags_(d), eval_(e) {}
+  EnvironmentChecker(const Program& p, SemaResult& r, Diagnostics& d, const ConstEvaluator& e,
+                     const SurfaceExpressionChecker& x)
+      : prog_(p), res_(r), diags_(d), eval_(e), checkExpression_(x) {}
 
   void run() {
     for (size_t i = 0; i < prog_.surfaces.size(); ++i) {
@@ -148,6 +150,13 @@ class EnvironmentChecker {
                        number(out.args[0]));
       ok = false;
     }
+    if (ok && d.generator == "tori3" && 2 * out.args[1] >= out.args[0]) {
+      diags_.error("E034", d.args[1]->range,
+                   "the tube radius r = " + number(out.args[1]) +
+                       " of tori3(R, r) must be less than half the radius R = " + number(out.args[0]) +
+                       " (the tubes' six junctions must stay apart)");
+      ok = false;
+    }
     if (!ok) return false;
     out.generator = d.generator;
     out.present = true;
@@ -186,6 +195,13 @@ class EnvironmentChecker {
       if (eval_(*f.args[0], v) && v.type == ValueType::Str) {
         path = v.str;
         isFile = true;
+      } else if (f.function == "scalar") {
+        // scalar(EXPR): a number at each vertex from its position.
+        if (!checkExpression_(*f.args[0])) return false;
+        out.source = "expression";
+        out.kind = "scalar";
+        out.expression = f.args[0].get();
+        return ok;
       }
     }
     if (isFile) {
@@ -213,9 +229,10 @@ class EnvironmentChecker {
                    "'image' reads a picture (PNG, JPEG, PGM ...) and takes its path as a constant "
                    "string: `image(\"cat.png\")`");
     } else if (f.function == "scalar") {
-      diags_.error("E035", f.args.size() == 1 ? f.args[0]->range : f.sourceRange,
-                   "'scalar' reads a number per vertex from a field file, or a picture's brightness, and "
-                   "takes its path as a constant string: `scalar(\"heights.sfield\")`, `scalar(\"map.png\")`");
+      diags_.error("E035", f.sourceRange,
+                   "'scalar' takes one argument: the path of a field file or a picture as a constant "
+                   "string (`scalar(\"heights.sfield\")`, `scalar(\"map.png\")`), or an expression "
+                   "over the surface's points x, y, z (`scalar(0.5 * y + sin(20 * x))`)");
     } else if (f.function == "curvature") {
       diags_.error("E035", f.sourceRange,
                    "'curvature' takes no arguments: `field " + f.name + " = curvature;` is the "
@@ -546,6 +563,7 @@ class EnvironmentChecker {
   SemaResult& res_;
   Diagnostics& diags_;
   const ConstEvaluator& eval_;
+  const SurfaceExpressionChecker& checkExpression_;
 };
 
 }  // namespace
@@ -557,8 +575,8 @@ const SurfaceGeneratorInfo* findSurfaceGenerator(const std::string& name) {
 }
 
 void checkSurfaceAndFields(const Program& program, SemaResult& res, Diagnostics& diags,
-                           const ConstEvaluator& evalConst) {
-  EnvironmentChecker(program, res, diags, evalConst).run();
+                           const ConstEvaluator& evalConst, const SurfaceExpressionChecker& checkExpression) {
+  EnvironmentChecker(program, res, diags, evalConst, checkExpression).run();
 }
 
 }  // namespace fgsg::frontend

@@ -13,9 +13,12 @@ namespace fgsg::frontend {
 // Evaluates a constant expression (numbers, earlier constants, math functions); false
 // when the expression is not constant.
 using ConstEvaluator = std::function<bool(const Expr&, ConstValue&)>;
+// Checks a scalar field's expression over the surface (surfacePointNames, consts, attrs,
+// math): true when it is a number, else false with the errors reported.
+using SurfaceExpressionChecker = std::function<bool(const Expr&)>;
 
 void checkSurfaceAndFields(const Program& program, SemaResult& res, Diagnostics& diags,
-                           const ConstEvaluator& evalConst);
+                           const ConstEvaluator& evalConst, const SurfaceExpressionChecker& checkExpression);
 
 // The procedural surfaces `surface NAME(args);` knows, with their signatures.
 struct SurfaceGeneratorInfo {

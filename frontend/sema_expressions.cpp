@@ -40,7 +40,7 @@ ValueType Analyzer::typeOf(const Expr& e, const Where& w, bool report) {
       return record(e, ValueType::Num, report);
     case ExprKind::Vector: {
       for (const auto& a : e.args) {
-        ValueType t = typeOf(*a, Where{w.rule, false}, report);
+        ValueType t = typeOf(*a, w.operand(), report);
         if (report && t != ValueType::Num && t != ValueType::Unknown)
           diags_.error("E013", a->range, "a vector's components must be numbers");
       }
@@ -50,7 +50,7 @@ ValueType Analyzer::typeOf(const Expr& e, const Where& w, bool report) {
     }
     case ExprKind::Ident: return typeOfIdent(e, w, report);
     case ExprKind::Unary: {
-      ValueType t = typeOf(*e.args[0], Where{w.rule, false}, report);
+      ValueType t = typeOf(*e.args[0], w.operand(), report);
       if (e.text == "!") {
         if (report && t != ValueType::Bool && t != ValueType::Unknown)
           diags_.error("E013", e.range, "'!' needs a boolean, got a " + std::string(valueTypeName(t)));
@@ -63,7 +63,7 @@ ValueType Analyzer::typeOf(const Expr& e, const Where& w, bool report) {
     }
     case ExprKind::Binary: return typeOfBinary(e, w, report);
     case ExprKind::Ternary: {
-      Where inner{w.rule, false};
+      const Where inner = w.operand();
       ValueType c = typeOf(*e.args[0], inner, report);
       if (report && c != ValueType::Bool && c != ValueType::Unknown)
         diags_.error("E014", e.args[0]->range, "the condition of '?:' must be a boolean");
@@ -84,12 +84,11 @@ ValueType Analyzer::typeOf(const Expr& e, const Where& w, bool report) {
 }
 
 ValueType Analyzer::typeOfIdent(const Expr& e, const Where& w, bool report) {
-  if (w.rule >= 0) {
-    const auto& params = res_.ruleParams[w.rule];
-    for (size_t k = 0; k < params.size(); ++k)
-      if (params[k].first == e.text) {
+  if (const auto* params = w.rule >= 0 ? &res_.ruleParams[w.rule] : w.bound) {
+    for (size_t k = 0; k < params->size(); ++k)
+      if ((*params)[k].first == e.text) {
         if (report) res_.names[&e] = NameRef{NameRef::Param, k, {}};
-        return record(e, params[k].second, report);
+        return record(e, (*params)[k].second, report);
       }
   }
   auto c = res_.constants.find(e.text);
@@ -113,12 +112,13 @@ ValueType Analyzer::typeOfIdent(const Expr& e, const Where& w, bool report) {
     diags_.error("E010", e.range,
                  "unknown name '" + e.text + "'" +
                      (w.rule >= 0 ? " (not a parameter of this rule, a const or an attr)"
+                      : w.bound   ? " (not x, y, z, a const or an attr)"
                                   : " (not a const or an attr)"));
   return ValueType::Unknown;
 }
 
 ValueType Analyzer::typeOfBinary(const Expr& e, const Where& w, bool report) {
-  Where inner{w.rule, false};
+  const Where inner = w.operand();
   ValueType a = typeOf(*e.args[0], inner, report), b = typeOf(*e.args[1], inner, report);
   const std::string& op = e.text;
   auto bad = [&](const std::string& need) {
@@ -159,7 +159,7 @@ ValueType Analyzer::typeOfBinary(const Expr& e, const Where& w, bool report) {
 
 ValueType Analyzer::typeOfCall(const Expr& e, const Where& w, bool report) {
   const FunctionInfo* f = findFunction(e.text);
-  Where inner{w.rule, false};
+  const Where inner = w.operand();
   std::vector<ValueType> args;
   for (const auto& a : e.args) args.push_back(typeOf(*a, inner, report));
   if (!f) {
@@ -231,7 +231,7 @@ ValueType Analyzer::typeOfLotQuery(const Expr& e, bool report) {
 }
 
 ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
-  Where inner{w.rule, false};
+  const Where inner = w.operand();
   if (e.object == "Lot") return typeOfLotQuery(e, report);
   // context.mask(texCoord): the texture coordinate is the scope's own, named not computed.
   const bool textureLookup = e.object == "context";

@@ -298,7 +298,7 @@ void SyntaxErrorStrategy::reportExpected(Parser* parser, Token* at, const Interv
   }
   // `collision centre(0.3);`: name the settings rather than "a name, '-', a number".
   if (dynamic_cast<FgsgParser::CollisionDeclContext*>(parser->getContext()))
-    what = "a collision setting (all, mesh, centre R, geodesic R) or ';'";
+    what = "a collision setting (all, mesh, centre R, geodesic R, distance D) or ';'";
   std::string hint;
   // `decay 2 * k;` in a field design: values are single words unless parenthesised.
   auto* ctx = parser->getContext();

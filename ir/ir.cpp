@@ -74,6 +74,11 @@ uint32_t intern(std::vector<std::string>& table, const std::string& s) {
 
 }  // namespace
 
+const std::vector<Param>& surfacePointParams() {
+  static const std::vector<Param> kParams = {{"x", Type::Num, 0}, {"y", Type::Num, 1}, {"z", Type::Num, 2}};
+  return kParams;
+}
+
 uint32_t Module::internString(const std::string& s) { return intern(strings, s); }
 
 uint32_t Module::internAsset(const std::string& s) { return intern(assets, s); }

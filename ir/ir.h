@@ -258,7 +258,8 @@ struct EnvDecl {
 // How collision-tested instancing decides that two instances collide (FGSG §4.4), set
 // by `collision ...;`: the exact meshes (default), or their centres closer than
 // `radius` (Euclidean; geodesic on a surface, which on the plane is the same).
-enum class CollisionMetric : uint8_t { Mesh, Centre, Geodesic };
+// Distance: the meshes come closer than `radius` (a clearance; FGSG §4.4's distance-field test).
+enum class CollisionMetric : uint8_t { Mesh, Centre, Geodesic, Distance };
 
 struct CollisionSettings {
   bool all = false;  // `collision all;`: every I() is tested as IC (FGSG's global flag)
@@ -266,7 +267,7 @@ struct CollisionSettings {
   // the production goes on; false (`cull`, the default): the rest of the production goes.
   bool omit = false;
   CollisionMetric metric = CollisionMetric::Mesh;
-  double radius = 0.0;  // Centre / Geodesic: the distance below which two collide
+  double radius = 0.0;  // Centre / Geodesic / Distance: the distance below which two collide
   Loc loc;              // the declaration (line 0: none)
 };
 
@@ -293,12 +294,18 @@ struct FieldDesignSpec {
 // through Module::environment (kind "field", same name).
 struct FieldSpec {
   std::string name;
-  std::string source;  // "file" | "design" | "curvature" | "image"
-  std::string kind;    // "tensor" | "vector" (curvature, image: "tensor")
+  std::string source;  // "file" | "design" | "curvature" | "image" | "expression"
+  std::string kind;    // "tensor" | "vector" | "scalar" (curvature, image: "tensor")
   std::string path;    // file and image sources
   std::vector<FieldDesignSpec> design;
+  // source "expression" (`scalar(EXPR)`): one number expression, computed at each vertex
+  // with its position in the parameters surfacePointParams() names.
+  std::vector<Expr> expression;
   Loc loc;
 };
+
+// The parameters a scalar field's expression reads at a vertex: x, y, z in slots 0..2.
+const std::vector<Param>& surfacePointParams();
 
 // `tileset NAME { locus ...; section ...; orientations ...; symbols "..."; }`: Chan & Hui's
 // tiles for Evolve, as constants. The runtime checks them as a tile set (validateTileSet).

@@ -148,6 +148,7 @@ class Lowerer {
     c.omit = sema_.collisionOmit;
     c.metric = sema_.collisionMetric == "centre"     ? CollisionMetric::Centre
                : sema_.collisionMetric == "geodesic" ? CollisionMetric::Geodesic
+               : sema_.collisionMetric == "distance" ? CollisionMetric::Distance
                                                      : CollisionMetric::Mesh;
     c.radius = c.metric == CollisionMetric::Mesh ? 0.0 : sema_.collisionRadius;
     if (sema_.collisionDeclared) c.loc = toLoc(sema_.collisionRange);
@@ -183,6 +184,11 @@ class Lowerer {
       out.path = f.path;
       out.loc = toLoc(f.range);
       for (const FieldDesignInfo& d : f.design) out.design.push_back({d.kind, d.words, toLoc(d.range)});
+      if (f.expression) {
+        params_ = &surfacePointParams();
+        out.expression.push_back(expr(*f.expression));
+        params_ = nullptr;
+      }
       m_.fields.push_back(std::move(out));
     }
   }

@@ -111,6 +111,7 @@ class Printer {
         case CollisionMetric::Mesh: break;
         case CollisionMetric::Centre: c += " centre " + printNumber(m_.collision.radius); break;
         case CollisionMetric::Geodesic: c += " geodesic " + printNumber(m_.collision.radius); break;
+        case CollisionMetric::Distance: c += " distance " + printNumber(m_.collision.radius); break;
         default: c += " metric#" + std::to_string(static_cast<int>(m_.collision.metric));
       }
       line(0, c);
@@ -185,9 +186,14 @@ class Printer {
 
   // `field F1 = tensor("foot.tfield")`, `field K = curvature`,
   // `field F2 = design tensor { wedge vertex 120 decay 2; smooth iterations 300 }`
-  static std::string fieldLine(const FieldSpec& f) {
+  std::string fieldLine(const FieldSpec& f) {
     std::string text = "field " + f.name + " = ";
     if (f.source == "curvature") return text + "curvature";
+    if (f.source == "expression" && f.expression.size() == 1) {
+      Rule vertex;  // names the expression's parameters x, y, z
+      vertex.params = surfacePointParams();
+      return text + "scalar(" + expr(&vertex, f.expression[0]) + ")";
+    }
     if (f.source == "file") return text + f.kind + "(" + quoted(f.path) + ")";
     if (f.source == "image") return text + "image(" + quoted(f.path) + ")";
     if (f.source != "design") return text + "source#" + quoted(f.source);

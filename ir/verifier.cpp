@@ -102,13 +102,16 @@ class Verifier {
   void collision() {
     const CollisionSettings& c = m_.collision;
     Scoped s(*this, "collision");
-    if (c.metric > CollisionMetric::Geodesic) {
+    if (c.metric > CollisionMetric::Distance) {
       problem("bad metric " + std::to_string(static_cast<int>(c.metric)));
       return;
     }
     if (c.metric != CollisionMetric::Mesh && !(c.radius > 0 && std::isfinite(c.radius)))
       problem("radius " + printNumber(c.radius) + " must be positive for the " +
-              (c.metric == CollisionMetric::Centre ? "centre" : "geodesic") + " metric");
+              (c.metric == CollisionMetric::Centre     ? "centre"
+               : c.metric == CollisionMetric::Geodesic ? "geodesic"
+                                                       : "distance") +
+              " metric");
   }
 
   // ------------------------------------------------------------ environment
@@ -135,7 +138,7 @@ class Verifier {
       return;
     }
     static const std::pair<const char*, size_t> kGenerators[] = {
-        {"torus", 2}, {"sphere", 1}, {"plane", 2}, {"genus2", 0}, {"cylinder", 2}};
+        {"torus", 2}, {"sphere", 1}, {"plane", 2}, {"genus2", 0}, {"cylinder", 2}, {"tori3", 2}};
     const auto* g = std::find_if(std::begin(kGenerators), std::end(kGenerators),
                                  [&](const auto& k) { return s.generator == k.first; });
     if (g == std::end(kGenerators)) {
@@ -194,10 +197,22 @@ class Verifier {
         if (f.kind != "tensor") problem("a curvature field is a tensor field");
       } else if (f.source == "design" && f.kind == "scalar") {
         problem("a design makes a tensor or a vector field");
+      } else if (f.source == "expression") {
+        if (f.kind != "scalar") problem("an expression field is a scalar field");
+        if (f.expression.size() != 1) {
+          problem("an expression field holds " + std::to_string(f.expression.size()) + " expressions");
+        } else {
+          Rule vertex;  // x, y, z
+          vertex.params = surfacePointParams();
+          vertex.slotCount = 3;
+          expr(f.expression[0], &vertex);
+          expectType(f.expression[0], Type::Num, "the expression");
+        }
       } else if (f.source != "design") {
         problem("bad source '" + f.source + "'");
       }
       if (f.source != "design" && !f.design.empty()) problem("design items on a " + f.source + " field");
+      if (f.source != "expression" && !f.expression.empty()) problem("an expression on a " + f.source + " field");
       if (f.source != "file" && f.source != "image" && !f.path.empty())
         problem("a path on a " + f.source + " field");
       for (const FieldDesignSpec& d : f.design) designItem(d);

@@ -110,11 +110,17 @@ void CollisionCommands::startLine(const ir::Op& op, const double* a, State& st, 
   st.line = lines_.start(st.scope.P, {width, merge, op.asset}, d_.placingSymbol(ex));
 }
 
-// LineSeg(length?): moves `length` along the scope's X first, then extends the line to
-// the scope's origin. Reaching another line ends this one there: the rest of the
-// production (which would continue it) is culled.
+// LineSeg(length?): moves `length` along the scope's X first (on a surface as T(length,
+// 0, 0) does, along the surface), then extends the line to the scope's origin. Reaching
+// another line ends this one there: the rest of the production (which would continue it)
+// is culled.
 void CollisionCommands::extendLine(const ir::Op& op, const double* length, State& st, Exec& ex) {
-  if (length) st.scope.P += *length * st.scope.X();
+  if (length) {
+    if (d_.surface())
+      d_.surface()->translate(st.scope, *length, 0, 0, &d_.deadline());
+    else
+      st.scope.P += *length * st.scope.X();
+  }
   if (!st.line.valid())
     throw DeriveError{op.loc, "R014",
                       "LineSeg outside a line: start one with Line(width) in this successor or in "

@@ -10,9 +10,15 @@ namespace fgsg::backend {
 namespace {
 
 rt::CollisionTest testFor(const ir::CollisionSettings& s) {
-  // On the plane geodesic and Euclidean centre distances are the same; on surfaces the
-  // geodesic one arrives with the surfaces work.
-  return s.metric == ir::CollisionMetric::Mesh ? rt::CollisionTest::Mesh : rt::CollisionTest::Centre;
+  switch (s.metric) {
+    case ir::CollisionMetric::Mesh: return rt::CollisionTest::Mesh;
+    case ir::CollisionMetric::Distance: return rt::CollisionTest::Distance;
+    // The geodesic test is the centre test with the geodesic distance having the last
+    // word (CollisionWorld::collides' `confirm`; on the plane the two are the same).
+    case ir::CollisionMetric::Centre:
+    case ir::CollisionMetric::Geodesic: break;
+  }
+  return rt::CollisionTest::Centre;
 }
 
 rt::Mat4 transformOf(const rt::Instance& inst) {

@@ -1,7 +1,10 @@
 #include "backend/commands/surface_world.h"
 
+#include "backend/interp/eval.h"
+
 #include "runtime/field/curvature.h"
 #include "runtime/field/design.h"
+#include "runtime/field/eigen_basis_direction.h"
 #include "runtime/field/field_file.h"
 #include "runtime/field/image_field.h"
 #include "runtime/field/scalar_field.h"
@@ -106,7 +109,7 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
   if (!ok) throw DeriveError{spec.loc, "R015", error};
   if (options.surfaceSize > 0) rt::surface::fitToSize(impl_->mesh, options.surfaceSize);
   impl_->locator = std::make_unique<rt::surface::SurfaceLocator>(impl_->mesh);
-  buildFields(m, searchDirs);
+  buildFields(m, options, searchDirs);
   impl_->start = options.hasStart ? Vec3(options.start[0], options.start[1], options.start[2])
                                   : Vec3(0.5 * (impl_->mesh.boundsMin + impl_->mesh.boundsMax));
 }
@@ -129,9 +132,37 @@ bool isPicturePath(const std::string& path) {
          ext == ".tga";
 }
 
+// `scalar(EXPR)`: the expression at each vertex, its position in x, y, z; attrs as --set
+// gives them, Rand drawn from the run's seed (vertex by vertex, in order).
+rt::field::ScalarField scalarFromExpression(const ir::Module& m, const ir::FieldSpec& spec,
+                                            const rt::DeriveOptions& options,
+                                            const rt::surface::SurfaceMesh& mesh) {
+  ir::Module local = m;  // attributeSlots interns the strings --set gives
+  const Evaluator eval(local, attributeSlots(local, options.attrOverrides));
+  rt::RandomStream rng{rt::keyWithSalt(rt::rootKey(options.seed), 0x5ca1a4f1e1dull), 0};
+  rt::field::ScalarField out;
+  out.values.reserve(mesh.vertices.size());
+  for (const rt::Vec3& v : mesh.vertices) {
+    const double params[3] = {v.x(), v.y(), v.z()};
+    Frame frame;
+    frame.params = params;
+    frame.rng = &rng;
+    const double value = eval.num(spec.expression.at(0), frame);
+    if (!std::isfinite(value))
+      throw DeriveError{spec.loc, "R015",
+                        "field " + spec.name + ": the expression is " + std::to_string(value) +
+                            " at vertex " + std::to_string(out.values.size()) + " (" +
+                            std::to_string(v.x()) + ", " + std::to_string(v.y()) + ", " +
+                            std::to_string(v.z()) + "); it must be a finite number everywhere"};
+    out.values.push_back(value);
+  }
+  return out;
+}
+
 }  // namespace
 
-void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::string>& searchDirs) {
+void SurfaceWorld::buildFields(const ir::Module& m, const rt::DeriveOptions& options,
+                               const std::vector<std::string>& searchDirs) {
   Impl& w = *impl_;
   namespace field = rt::field;
   w.frames = std::make_shared<const field::TangentFrames>(w.mesh);
@@ -143,10 +174,13 @@ void SurfaceWorld::buildFields(const ir::Module& m, const std::vector<std::strin
     f.name = spec.name;
     std::string error;
     if (spec.kind == "scalar") {
-      // A number per vertex from a field file, or a picture's brightness under each vertex.
+      // A number per vertex from a field file, a picture's brightness under each vertex,
+      // or an expression of the vertex's position.
       f.scalar = std::make_unique<field::ScalarField>();
-      const std::string path = rt::io::findFile(spec.path, searchDirs);
-      if (isPicturePath(spec.path)) {
+      const std::string path = spec.path.empty() ? "" : rt::io::findFile(spec.path, searchDirs);
+      if (spec.source == "expression") {
+        *f.scalar = scalarFromExpression(m, spec, options, w.mesh);
+      } else if (isPicturePath(spec.path)) {
         field::Picture picture;
         if (!picture.load(path, error)) throw DeriveError{spec.loc, "R015", "field " + spec.name + ": " + error};
         *f.scalar = field::scalarFromPicture(w.mesh, picture);
@@ -285,6 +319,20 @@ void SurfaceWorld::translate(rt::Scope& s, double tx, double ty, double tz, rt::
   const Vec3 d = tangent(along, n, s.axes.col(0));
   const Vec3 x = tangent(s.axes.col(0), n, s.axes.col(1));
   Vec3 u;
+  double a = 0, b = 0, ax = 0, bx = 0;
+  if (!w.fields.empty() && w.fields[0].values->isAsymmetric() &&
+      rt::field::EigenBasisDirection::coordinates(*w.fields[0].values, from, d, a, b) &&
+      rt::field::EigenBasisDirection::coordinates(*w.fields[0].values, from, x, ax, bx)) {
+    // An asymmetric tensor field: the curve and the scope's X keep their coordinates in
+    // the eigenvector basis (eigen_basis_direction.h).
+    const rt::field::EigenBasisDirection guide(*w.fields[0].values, a, b);
+    const rt::field::TraceResult r = rt::field::traceField(w.mesh, guide, from, d, 0.0, length, deadline);
+    const rt::field::Eigen2 e = w.fields[0].values->eigen(r.end);
+    const double sign = guide.combination(r.end).dot(r.direction) < 0 ? -1.0 : 1.0;
+    const Vec3 xEnd = sign * (ax * e.vector1 + bx * e.vector2);
+    w.place(s, r.end, xEnd.norm() > 0 ? xEnd : r.direction);
+    return;
+  }
   if (!w.fields.empty() && w.fields[0].values->direction(from, u)) {
     // Along the first field: the curve keeps the angle the move makes with the field,
     // and the scope keeps the angle its X axis makes with it (FGSG §4.3, Fig. 8).
@@ -365,13 +413,24 @@ double SurfaceWorld::fieldNumber(const rt::Scope& s, uint32_t env, const std::st
     return streamlineCurvature(f, p, minor ? e.vector2 : e.vector1, minor ? e.value2 : e.value1,
                                minor ? field::Eigenvector::Minor : field::Eigenvector::Major);
   }
-  if (member == "tensorXX" || member == "tensorXY" || member == "tensorYY") {
+  if (member == "tensorXX" || member == "tensorXY" || member == "tensorYX" || member == "tensorYY") {
     // The tensor's components along the scope's X and Y axes, laid into the tangent plane.
     const Vec3 n = p.normal(impl_->mesh);
     const auto inPlane = [&](const Vec3& a) { return Vec3((a - a.dot(n) * n).normalized()); };
     const Vec3 x = inPlane(s.axes.col(0)), y = inPlane(s.axes.col(1));
     const rt::Mat3 t = f.tensorWorld(p);
-    return member == "tensorXX" ? x.dot(t * x) : member == "tensorXY" ? x.dot(t * y) : y.dot(t * y);
+    return member == "tensorXX"   ? x.dot(t * x)
+           : member == "tensorXY" ? x.dot(t * y)
+           : member == "tensorYX" ? y.dot(t * x)
+                                  : y.dot(t * y);
+  }
+  // An asymmetric tensor's rotational part, and the angle between its eigenvectors
+  // (degrees: 90 for a symmetric tensor, a vector field or the complex domain's
+  // dual-eigenvectors; 0 where the eigenvectors meet).
+  if (member == "rotation") return f.rotation(p);
+  if (member == "eigenangle") {
+    const double c = std::clamp(std::abs(e.vector1.dot(e.vector2)), 0.0, 1.0);
+    return std::acos(c) * 180 / kPi;
   }
   if (member == "intensity") {
     if (!named.picture)

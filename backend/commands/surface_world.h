@@ -73,7 +73,8 @@ class SurfaceWorld {
   size_t faceCount() const;
 
  private:
-  void buildFields(const ir::Module& m, const std::vector<std::string>& searchDirs);
+  void buildFields(const ir::Module& m, const rt::DeriveOptions& options,
+                   const std::vector<std::string>& searchDirs);
   const rt::field::TangentField& fieldAt(uint32_t env, ir::Loc at) const;
 
   struct Impl;

@@ -121,6 +121,27 @@ X ~> T(40, 0, 0) I("disc")
                     Catch::Contains("E032") && Catch::Contains("two collision strategies, 'omit' and 'cull'"));
 }
 
+TEST_CASE("collision distance keeps a clearance between the meshes", "[collision][distance]") {
+  // Unit cubes stepped 1.3 apart along X leave gaps of 0.3: a clearance of 0.25 places
+  // every one, 0.35 every other (each placed cube is 0.3 from the next, 1.6 from the one
+  // after), and the mesh test, which only asks for no contact, places all.
+  const std::string row = "Axiom ~> Step(6)\nStep(n) : n > 0 ~> IC(\"cube\") T(1.3, 0, 0) Step(n - 1)\n";
+  auto loose = deriveText("collision omit distance 0.25;\n" + row);
+  REQUIRE(loose.ok);
+  CHECK(loose.instances.instances.size() == 6);
+  auto tight = deriveText("collision omit distance 0.35;\n" + row);
+  REQUIRE(tight.ok);
+  REQUIRE(tight.instances.instances.size() == 3);
+  for (size_t i = 0; i < 3; ++i)
+    CHECK(unitPoint(tight.instances.instances[i], 0, 0, 0).x() == Approx(2.6 * i).margin(1e-12));
+  CHECK(tight.stats.collisions == 3);
+  auto contact = deriveText("collision omit;\n" + row);
+  CHECK(contact.instances.instances.size() == 6);
+  // Culling (the default strategy) stops the row at the first cube too close.
+  auto cull = deriveText("collision distance 0.35;\n" + row);
+  CHECK(cull.instances.instances.size() == 1);
+}
+
 TEST_CASE("IM merges an instance into its twin within the thresholds only", "[collision][merge]") {
   auto near = deriveText("Axiom ~> IM(\"cube\", 0.5, 10) T(0.4, 0, 0) RS(8) IM(\"cube\", 0.5, 10)");
   REQUIRE(near.ok);
@@ -282,4 +303,30 @@ TEST_CASE("a line drawn with an asset bends one instance per segment along the s
   // The radius (0.1), and the smooth curve's small departure from the polyline at the turns.
   CHECK(farthest < 0.13);
   CHECK(farthest > 0.09);
+}
+
+TEST_CASE("LineSeg with a length moves along the surface, as T does", "[lines][surface]") {
+  // On a sphere of radius 2, five LineSeg(0.5) from the start: every point of the line
+  // lies on the sphere, consecutive points 0.5 apart along it (a chord of 2 sin(0.125) 2),
+  // and a cube placed after them stands where T(2.5, 0, 0) would have taken it.
+  const auto r = test::deriveText(
+      "surface sphere(2, 6);\nAxiom ~> [ Line(0.05) LineSeg(0.5) LineSeg(0.5) LineSeg(0.5) LineSeg(0.5) "
+      "LineSeg(0.5) I(\"cube\") ] T(2.5, 0, 0) I(\"cube\");\n");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.lines.size() == 1);
+  const auto& points = r.instances.lines[0].points;
+  REQUIRE(points.size() == 6);
+  for (size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d p(points[k][0], points[k][1], points[k][2]);
+    CHECK(p.norm() == Approx(2).epsilon(1e-3));  // the polyhedral sphere's faces sag a little
+    if (k > 0) {
+      const Eigen::Vector3d q(points[k - 1][0], points[k - 1][1], points[k - 1][2]);
+      CHECK((p - q).norm() == Approx(2 * 2 * std::sin(0.5 / 2 / 2)).epsilon(5e-3));
+    }
+  }
+  std::vector<Eigen::Vector3d> cubes;
+  for (const auto& inst : r.instances.instances)
+    if (r.instances.assets[inst.asset] == "cube") cubes.push_back(unitPoint(inst, 0.5, 0.5, 0.5));
+  REQUIRE(cubes.size() == 2);
+  CHECK((cubes[0] - cubes[1]).norm() < 1e-9);
 }

@@ -170,6 +170,72 @@ TEST_CASE("a scalar field answers its value and gradient exactly, and T follows 
   CHECK(r.instances.params[b.firstParam] == Approx(1.2 + std::hypot(0.3, -0.2)).margin(1e-9));
 }
 
+TEST_CASE("an asymmetric tensor field: its queries, and T along its eigenvector basis", "[surface][field]") {
+  // T = [[1, 0], [1, -1]] in the grid's plane: eigenvalues +-1, eigenvectors (2, 1)/sqrt 5
+  // and (0, 1), 63.43 degrees apart; rotational part 0.5.
+  const std::string dir = writeGridAndField("asymmetric", "asymmetric", [](double, double) {
+    return "1 0 0 1 -1 0 0 0 0";
+  });
+  const auto r = test::deriveText(
+      "surface \"" + dir + "/grid.off\";\nfield V = tensor(\"" + dir + "/field.txt\");\n"
+      "Axiom ~> A(V.value1, V.value2, V.rotation, V.eigenangle, V.tensorXY, V.tensorYX) [ T(1, 0, 0) B ] "
+      "[ T(0, 1, 0) B ];\nA(a, b, c, d, e, f) ~> I(\"cube\");\nB ~> I(\"cube\");\n");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 4);  // and the surface, last
+  CHECK(r.instances.assets[r.instances.instances[3].asset] != "cube");
+  const double* p = r.instances.params.data() + r.instances.instances[0].firstParam;
+  CHECK(p[0] == Approx(1).margin(1e-12));
+  CHECK(p[1] == Approx(-1).margin(1e-12));
+  CHECK(p[2] == Approx(0.5).margin(1e-12));
+  CHECK(p[3] == Approx(90 - std::atan(0.5) * 180 / M_PI).margin(1e-9));
+  // X along the major eigenvector and Y a quarter turn from it: X.T.Y = -1, Y.T.X = 0.
+  CHECK(p[4] == Approx(-1).margin(1e-12));
+  CHECK(p[5] == Approx(0).margin(1e-12));
+  // The axiom's X runs along the major eigenvector; T(1, 0, 0) moves along it, T(0, 1, 0)
+  // along the scope's Y, whose coordinates in the eigenvector basis it keeps (a constant
+  // field: a straight move), and each end keeps X on the major eigenvector.
+  const Eigen::Matrix4d a = test::transformOf(r.instances.instances[0]);
+  const Eigen::Vector3d x = a.block<3, 1>(0, 0).normalized(), y = a.block<3, 1>(0, 1).normalized();
+  CHECK(std::abs(x.dot(Eigen::Vector3d(2, 1, 0).normalized())) == Approx(1).margin(1e-9));
+  const Eigen::Vector3d origin = test::unitPoint(r.instances.instances[0], 0, 0, 0);
+  const Eigen::Vector3d along = test::unitPoint(r.instances.instances[1], 0, 0, 0) - origin;
+  const Eigen::Vector3d across = test::unitPoint(r.instances.instances[2], 0, 0, 0) - origin;
+  CHECK((along - x).norm() < 1e-9);
+  CHECK((across - y).norm() < 1e-9);
+  for (size_t k : {1, 2})
+    CHECK(std::abs(test::transformOf(r.instances.instances[k]).block<3, 1>(0, 0).normalized().dot(x)) ==
+          Approx(1).margin(1e-9));
+}
+
+TEST_CASE("a scalar field from an expression of x, y, z equals the same field from a file", "[surface][field]") {
+  // The grid of the test above, and f = k x - 0.2 y + 1 with the attr k = 0.3 (or --set).
+  const std::string dir = writeGridAndField("scalar_expression", "scalar", [](double, double) { return "0"; });
+  const std::string grammar = "surface \"" + dir +
+                              "/grid.off\";\nattr k = 0.1;\nfield S = scalar(k * x - 0.2 * y + 1 + 0 * z);\n"
+                              "Axiom ~> A(S.value, S.gradient) T(1, 0, 0) B(S.value);\n"
+                              "A(v, g) ~> I(\"cube\");\nB(v) ~> I(\"cube\");\n";
+  rt::DeriveOptions options;
+  options.attrOverrides = {{"k", "0.3"}};
+  const auto r = test::deriveText(grammar, options);
+  REQUIRE(r.ok);
+  const double* p = r.instances.params.data() + r.instances.instances.at(0).firstParam;
+  CHECK(p[0] == Approx(0.3 * 2 - 0.2 * 2 + 1).margin(1e-12));
+  CHECK((Eigen::Vector3d(p[1], p[2], p[3]) - Eigen::Vector3d(0.3, -0.2, 0)).norm() < 1e-12);
+  CHECK(r.instances.params[r.instances.instances.at(1).firstParam] ==
+        Approx(1.2 + std::hypot(0.3, -0.2)).margin(1e-9));
+  // The attr's default: k = 0.1.
+  const auto d = test::deriveText(grammar);
+  REQUIRE(d.ok);
+  CHECK(d.instances.params[d.instances.instances.at(0).firstParam] == Approx(0.1 * 2 - 0.2 * 2 + 1).margin(1e-12));
+  // A value that is not finite at some vertex is a located error.
+  const auto bad = test::deriveText("surface \"" + dir + "/grid.off\";\nfield S = scalar(1 / x);\n"
+                                    "Axiom ~> A(S.value);\nA(v) ~> I(\"cube\");\n");
+  REQUIRE_FALSE(bad.ok);
+  CHECK(bad.messages[0].code == "R015");
+  CHECK(bad.messages[0].line == 2);
+  CHECK_THAT(bad.messages[0].message, Catch::Contains("field S: the expression is inf at vertex 0 (0.000000, "));
+}
+
 TEST_CASE("a scalar field from a picture is its brightness, and bad scalar files are located errors",
           "[surface][field]") {
   const fs::path dir = fs::temp_directory_path() / "fgsg_field_members_scalar_png";

@@ -58,8 +58,10 @@ TEST_CASE("surface: a mesh file or a procedural surface with constant arguments"
 
 TEST_CASE("surface errors: generator, argument count, empty file name (E033)", "[sema][environment]") {
   onlyError(declarations("surface bunny;"), "E033", 1, 9,
-            "unknown surface 'bunny' (expected torus(R, r), sphere(r), plane(w, h), genus2() or "
-            "cylinder(r, h); a mesh file is written as a string: `surface \"bunny.off\";`)");
+            "unknown surface 'bunny' (expected torus(R, r), sphere(r), plane(w, h), genus2(), "
+            "cylinder(r, h) or tori3(R, r); a mesh file is written as a string: `surface \"bunny.off\";`)");
+  onlyError(declarations("surface tori3(2, 1);"), "E034", 1, 18,
+            "the tube radius r = 1 of tori3(R, r) must be less than half the radius R = 2");
   onlyError(declarations("surface torus(2);"), "E033", 1, 9,
             "'torus' takes 2 arguments and an optional resolution, got 1: torus(R, r)");
   onlyError(declarations("surface sphere;"), "E033", 1, 9,
@@ -198,13 +200,32 @@ TEST_CASE("field names: unique, not Scope, Shape or context (E022, E036)", "[sem
   onlyError(declarations("surface sphere(1);\nfield context = curvature;"), "E036", 2, 7);
 }
 
+TEST_CASE("a scalar field's expression over the surface: x, y, z, consts, attrs and math", "[sema][environment]") {
+  const std::string s = "surface sphere(1);\nconst a = 2;\nattr b = 0.5;\n";
+  auto ok = declarations(s + "field F = scalar(a * x + b * sin(30 * y) + z ^ 2);");
+  INFO(ok.printed);
+  REQUIRE(ok.ok);
+  REQUIRE(ok.sema.fieldSpecs.size() == 1);
+  CHECK(ok.sema.fieldSpecs[0].source == "expression");
+  CHECK(ok.sema.fieldSpecs[0].kind == "scalar");
+  CHECK(ok.sema.fieldSpecs[0].expression != nullptr);
+  CHECK(declarations(s + "field F = scalar(3);").ok);  // a constant field
+  onlyError(declarations(s + "field F = scalar(x + w);"), "E010", 4, 22,
+            "unknown name 'w' (not x, y, z, a const or an attr)");
+  onlyError(declarations(s + "field F = scalar(x > 1);"), "E013", 4, 18,
+            "a scalar field's expression must be a number, but this is a boolean");
+  onlyError(declarations(s + "field F = scalar(1 + Scope.sx);"), "E035", 4, 22,
+            "it may use x, y, z, numbers, consts, attrs and math functions, not the query 'Scope.sx'");
+}
+
 TEST_CASE("field sources (E035)", "[sema][environment]") {
   const std::string s = "surface sphere(1);\n";
   onlyError(declarations(s + "field F = blend(A, B);"), "E035", 2, 11,
             "unknown field source 'blend' (expected tensor(\"file\"), vector(\"file\"), scalar(\"file\"), "
             "design tensor { ... }, design vector { ... }, curvature or image(\"file\"))");
   onlyError(declarations(s + "field F = image(3);"), "E035", 2, 17, "'image' reads a picture");
-  onlyError(declarations(s + "field F = scalar(3);"), "E035", 2, 18, "'scalar' reads a number per vertex");
+  onlyError(declarations(s + "field F = scalar();"), "E035", 2, 11, "'scalar' takes one argument");
+  onlyError(declarations(s + "field F = scalar(1, 2);"), "E035", 2, 11, "'scalar' takes one argument");
   onlyError(declarations(s + "field F = design scalar { wedge at vertex 0; };"), "E035", 2, 18,
             "a design makes a tensor or a vector field");
   onlyError(declarations(s + "field F = tensor(1);"), "E035", 2, 18,

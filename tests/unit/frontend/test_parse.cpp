@@ -326,7 +326,7 @@ TEST_CASE("collision is a keyword: it starts a statement and is no name", "[pars
   CHECK(call.diagnostics[0].code == "E002");
   CHECK(call.diagnostics[0].range.begin.col == 17);
   CHECK(call.diagnostics[0].message ==
-        "expected a collision setting (all, mesh, centre R, geodesic R) or ';' after "
+        "expected a collision setting (all, mesh, centre R, geodesic R, distance D) or ';' after "
         "'collision centre', found '('");
 }
 

@@ -280,6 +280,12 @@ TEST_CASE("collision declarations: every form", "[sema][collision]") {
   CHECK(geo.sema.collisionMetric == "geodesic");
   CHECK(geo.sema.collisionRadius == 0.3);
 
+  auto clearance = analyse(std::string("collision distance 0.05 omit;") + kRules);
+  REQUIRE(clearance.ok);
+  CHECK(clearance.sema.collisionMetric == "distance");
+  CHECK(clearance.sema.collisionRadius == 0.05);
+  CHECK(clearance.sema.collisionOmit);
+
   for (const char* text : {"collision all centre 0.25;", "collision centre 0.25 all;"}) {
     auto both = analyse(std::string(text) + kRules);
     REQUIRE(both.ok);
@@ -301,7 +307,7 @@ TEST_CASE("collision declarations: each mistake with its code and column", "[sem
   CHECK_FALSE(unknown.ok);
   CHECK(where(unknown, "E030") == std::vector<std::string>{"1:15"});
   CHECK(messageOf(unknown, "E030") ==
-        "unknown collision setting 'centr' (expected all, omit, cull, mesh, centre R, center R or geodesic R)");
+        "unknown collision setting 'centr' (expected all, omit, cull, mesh, centre R, center R, geodesic R or distance D)");
   CHECK(where(unknown, "E031") == std::vector<std::string>{"1:21"});  // its number, left over
   auto empty = analyse(std::string("collision;") + kRules);
   CHECK(where(empty, "E030") == std::vector<std::string>{"1:1"});
@@ -319,13 +325,17 @@ TEST_CASE("collision declarations: each mistake with its code and column", "[sem
   auto zero = analyse(std::string("collision geodesic 0;") + kRules);
   CHECK(where(zero, "E031") == std::vector<std::string>{"1:20"});
   CHECK(messageOf(zero, "E031") == "the radius of 'geodesic' must be a positive number, got 0");
+  auto noClearance = analyse(std::string("collision distance;") + kRules);
+  CHECK(messageOf(noClearance, "E031") == "'distance' needs a clearance: `collision distance 0.3;`");
+  auto zeroClearance = analyse(std::string("collision distance 0;") + kRules);
+  CHECK(messageOf(zeroClearance, "E031") == "the clearance of 'distance' must be a positive number, got 0");
   auto negative = analyse(std::string("collision center -0.5;") + kRules);
   CHECK(where(negative, "E031") == std::vector<std::string>{"1:18"});
   CHECK(messageOf(negative, "E031") == "the radius of 'center' must be a positive number, got -0.5");
   auto stray = analyse(std::string("collision all 0.3;") + kRules);
   CHECK(where(stray, "E031") == std::vector<std::string>{"1:15"});
   CHECK(messageOf(stray, "E031") ==
-        "a number in `collision` is the radius after 'centre' or 'geodesic', and 'all' takes "
+        "a number in `collision` is the radius after 'centre', 'geodesic' or 'distance', and 'all' takes "
         "none: `collision centre 0.3;`");
   auto meshRadius = analyse(std::string("collision mesh 2;") + kRules);
   CHECK(where(meshRadius, "E031") == std::vector<std::string>{"1:16"});
@@ -337,7 +347,7 @@ TEST_CASE("collision declarations: each mistake with its code and column", "[sem
   CHECK_FALSE(twoMetrics.ok);
   CHECK(where(twoMetrics, "E032") == std::vector<std::string>{"1:16"});
   CHECK(messageOf(twoMetrics, "E032") ==
-        "two collision metrics, 'mesh' and 'geodesic': choose one (mesh, centre R or geodesic R)");
+        "two collision metrics, 'mesh' and 'geodesic': choose one (mesh, centre R, geodesic R or distance D)");
   CHECK(where(twoMetrics, "E031").empty());  // geodesic's radius is still read as its radius
   auto allTwice = analyse(std::string("collision all centre 1 all;") + kRules);
   CHECK(where(allTwice, "E032") == std::vector<std::string>{"1:24"});

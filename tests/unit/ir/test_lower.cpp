@@ -68,6 +68,11 @@ TEST_CASE("lower: collision settings", "[ir][lower][collision]") {
   CHECK(geodesic.collision.metric == CollisionMetric::Geodesic);
   CHECK(geodesic.collision.radius == 0.3);
 
+  Module distance = compile("collision omit distance 0.05;\nA ~> I(\"cube\");");
+  CHECK(distance.collision.metric == CollisionMetric::Distance);
+  CHECK(distance.collision.radius == 0.05);
+  CHECK(distance.collision.omit);
+
   Module mesh = compile("collision mesh;\nA ~> I(\"cube\");");
   CHECK_FALSE(mesh.collision.all);
   CHECK(mesh.collision.metric == CollisionMetric::Mesh);
@@ -189,6 +194,9 @@ TEST_CASE("verifier: collision radius and Line / LineSeg arguments", "[ir][verif
   geodesic.collision.metric = CollisionMetric::Geodesic;
   geodesic.collision.radius = -1;
   expectProblem(geodesic, "collision: radius -1 must be positive for the geodesic metric");
+  Module distance = base;
+  distance.collision.metric = CollisionMetric::Distance;
+  expectProblem(distance, "collision: radius 0 must be positive for the distance metric");
   Module badMetric = base;
   badMetric.collision.metric = static_cast<CollisionMetric>(7);
   expectProblem(badMetric, "collision: bad metric 7");
