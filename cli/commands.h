@@ -18,5 +18,6 @@ int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API
 int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)
 int evolveCommand(const Args& args);   // fgsg evolve TILES.json (L-system tile patterns)
 int fieldCommand(const Args& args);    // fgsg field FILE (a grammar's field: streamlines, singularities)
+int viewCommand(const Args& args);     // fgsg view FILE (a live viewer in the browser)
 
 }  // namespace fgsg::cli

@@ -6,6 +6,7 @@
 #include "ir/pipeline.h"
 
 #include <memory>
+#include <ostream>
 #include <string>
 
 namespace fgsg::cli {
@@ -19,5 +20,7 @@ struct CompiledFile {
 
 // Returns null after printing diagnostics (or the read error) to stderr.
 std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings = true);
+// The same, printing to `diagnostics` (fgsg view shows them in its page).
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream& diagnostics, bool printWarnings);
 
 }  // namespace fgsg::cli

@@ -36,6 +36,9 @@ usage:
                  [--singularities s.json] [--seeds N] [--length L] [--step S] [--minor]
                  [--surface mesh.off]
                            show FILE's field: streamlines and singularities (listed)
+  fgsg view FILE [--port N] [--host ADDRESS] [--seed N] [--set name=value]... [--surface mesh.off]
+                           a live viewer in the browser: re-derives when FILE is saved or
+                           an attribute is changed in the page (fgsg view --help)
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -96,6 +99,7 @@ int main(int argc, char** argv) {
     if (cmd == "atlas") return fgsg::cli::atlasCommand(args);
     if (cmd == "evolve") return fgsg::cli::evolveCommand(args);
     if (cmd == "field") return fgsg::cli::fieldCommand(args);
+    if (cmd == "view") return fgsg::cli::viewCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -107,6 +111,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field, view; see fgsg --help)\n";
   return 2;
 }

@@ -14,6 +14,8 @@ packages=(
   nlohmann-json3-dev
   libcgal-dev libgmp-dev libmpfr-dev libassimp-dev libnanoflann-dev
   zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev
+  libwebsocketpp-dev libboost-dev
+  chromium
 )
 
 missing=()
@@ -32,8 +34,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
 fi
 
-# The official glTF validator (npm) judges the .glb files the tests write.
-"$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/install-gltf-validator.sh"
+# npm packages: the official glTF validator judges the .glb files the tests write;
+# three.js draws fgsg view's page, playwright-core drives chromium in its tests.
+"$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/install-node-packages.sh"
 
 # Real-world test meshes from CGAL's data (tests/data/README.md); offline once fetched.
 "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/fetch-test-meshes.sh"

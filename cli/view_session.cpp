@@ -1,0 +1,219 @@
+#include "cli/view_session.h"
+
+#include "backend/derive_messages.h"
+#include "backend/interp/eval.h"
+#include "backend/native/code_loader.h"
+#include "cli/compile_file.h"
+#include "cli/derive_stats.h"
+#include "cli/options.h"
+#include "runtime/assemble.h"
+#include "runtime/io/write_mesh.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <sstream>
+
+namespace fgsg::cli {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+Json attrDefault(const ir::Module& m, const ir::Attr& a) {
+  switch (a.type) {
+    case ir::Type::Num: return a.value.num;
+    case ir::Type::Bool: return a.value.num != 0;
+    case ir::Type::Str: return m.strings.at(static_cast<size_t>(a.value.num));
+    case ir::Type::Vec3: break;
+  }
+  return nullptr;
+}
+
+const char* attrType(ir::Type t) {
+  switch (t) {
+    case ir::Type::Num: return "number";
+    case ir::Type::Bool: return "boolean";
+    case ir::Type::Str: return "string";
+    case ir::Type::Vec3: return "vector";
+  }
+  return "?";
+}
+
+std::string errorJson(const std::string& diagnostics) {
+  return Json{{"type", "error"}, {"diagnostics", diagnostics}}.dump();
+}
+
+}  // namespace
+
+ViewSession::ViewSession(ViewOptions options, ViewServer& server)
+    : options_(std::move(options)), server_(server) {
+  seed_ = options_.derive.seed;
+  for (const auto& [name, value] : options_.derive.attrOverrides) attrs_[name] = value;
+  options_.derive.attrOverrides.clear();
+  seen_ = watchedFiles();
+  worker_ = std::thread([this] { work(); });
+}
+
+ViewSession::~ViewSession() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  worker_.join();
+  loader_.reset();  // waits for its background compile
+}
+
+void ViewSession::pageOpened() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!lastInfo_.empty()) server_.sendTextToAll(lastInfo_);
+  if (!lastModel_.empty()) {
+    server_.sendTextToAll(lastModelJson_);
+    server_.sendBinaryToAll(lastModel_);
+  }
+  if (!lastError_.empty()) server_.sendTextToAll(lastError_);
+}
+
+void ViewSession::message(const std::string& text) {
+  const Json j = Json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("type", "") != "set") return;  // not ours
+  std::lock_guard<std::mutex> lock(mutex_);
+  // The page sends every value its user has set; the others take the grammar's defaults.
+  if (j.contains("attrs") && j["attrs"].is_object()) {
+    attrs_.clear();
+    for (const auto& [name, value] : j["attrs"].items())
+      attrs_[name] = value.is_string() ? value.get<std::string>() : value.dump();
+  }
+  if (j.contains("seed") && j["seed"].is_number_unsigned()) seed_ = j["seed"].get<uint64_t>();
+  pending_ = true;
+  wake_.notify_all();
+}
+
+std::map<std::string, fs::file_time_type> ViewSession::watchedFiles() const {
+  std::map<std::string, fs::file_time_type> out;
+  std::error_code ec;
+  const fs::path grammar = fs::absolute(options_.file, ec);
+  out[grammar.string()] = fs::last_write_time(grammar, ec);
+  for (const fs::path& dir : {grammar.parent_path(), grammar.parent_path() / "assets"}) {
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+      if (it->is_regular_file(ec)) out[it->path().string()] = fs::last_write_time(it->path(), ec);
+  }
+  return out;
+}
+
+void ViewSession::checkFiles() {
+  auto now = watchedFiles();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (now == seen_) return;
+  seen_ = std::move(now);
+  pending_ = recompile_ = true;
+  wake_.notify_all();
+}
+
+void ViewSession::work() {
+  for (;;) {
+    bool recompile = false;
+    std::map<std::string, std::string> attrs;
+    uint64_t seed = 1;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return pending_ || stopping_; });
+      if (stopping_) return;
+      recompile = recompile_;
+      attrs = attrs_;
+      seed = seed_;
+      pending_ = recompile_ = false;
+    }
+    server_.sendTextToAll(Json{{"type", "progress"}, {"state", "deriving"}}.dump());
+    try {
+      deriveOnce(recompile, attrs, seed);
+    } catch (const std::exception& e) {  // the JIT's plugin missing, out of memory ...
+      const std::string j = errorJson(options_.file + ": " + e.what());
+      std::lock_guard<std::mutex> lock(mutex_);
+      lastError_ = j;
+      server_.sendTextToAll(j);
+    }
+  }
+}
+
+std::string ViewSession::infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const {
+  Json list = Json::array();
+  for (const ir::Attr& a : compiled_->module.attrs) {
+    if (a.name.rfind("lot:", 0) == 0) continue;  // Lot.* queries, set by --lots only
+    Json entry{{"name", a.name}, {"type", attrType(a.type)}, {"default", attrDefault(compiled_->module, a)}};
+    auto it = attrs.find(a.name);
+    entry["value"] = it != attrs.end() ? Json(it->second) : entry["default"];
+    list.push_back(entry);
+  }
+  return Json{{"type", "info"}, {"file", options_.file}, {"attrs", list}, {"seed", seed}}.dump();
+}
+
+void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed) {
+  std::unique_ptr<backend::native::CodeLoader>& loader = loader_;
+  const auto start = std::chrono::steady_clock::now();
+  auto fail = [&](const std::string& diagnostics) {
+    const std::string j = errorJson(diagnostics);
+    std::lock_guard<std::mutex> lock(mutex_);
+    lastError_ = j;
+    server_.sendTextToAll(j);
+  };
+  if (recompile || !compiled_) {
+    std::ostringstream diagnostics;
+    auto fresh = compileFile(options_.file, diagnostics, false);
+    if (!fresh) return fail(diagnostics.str());
+    compiled_ = std::move(fresh);
+    loader.reset();  // a new grammar: its own code
+  }
+  // The page's values for attributes this grammar has; a value that does not fit its
+  // attribute is an error in the page, not a crash.
+  rt::DeriveOptions derive = options_.derive;
+  derive.seed = seed;
+  for (const auto& [name, value] : attrs) {
+    if (compiled_->module.findAttr(name) < 0) continue;
+    const std::string problem = backend::attributeOverrideProblem(compiled_->module, name, value);
+    if (!problem.empty()) return fail(options_.file + ": " + name + " = " + value + ": " + problem);
+    derive.attrOverrides.push_back({name, value});
+  }
+  const std::string info = infoJson(attrs, seed);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (info != lastInfo_) server_.sendTextToAll(lastInfo_ = info);
+  }
+
+  rt::AssetLibrary assets;
+  for (const std::string& dir : grammarDataDirs(options_.file)) {
+    assets.addSearchDir(dir);
+    derive.assetDirs.push_back(dir);
+  }
+  if (!loader) loader = std::make_unique<backend::native::CodeLoader>();
+  rt::DeriveResult result =
+      backend::derive(options_.engine, compiled_->module, compiled_->source.text, derive, assets, nullptr, loader.get());
+  frontend::Diagnostics diags(&compiled_->source);
+  backend::addDeriveMessages(result, diags);
+  if (diags.hasErrors()) {
+    std::ostringstream text;
+    diags.print(text);
+    return fail(text.str());
+  }
+  std::vector<int> meshOf;
+  std::string error, glb;
+  if (!rt::resolveAssets(result.instances, assets, meshOf, error)) return fail(options_.file + ": " + error);
+  const rt::Mesh mesh = rt::assembleInstances(result.instances, assets, meshOf);
+  if (!rt::io::encodeMesh(mesh, ".glb", glb, error)) return fail(options_.file + ": " + error);
+
+  Json figures = Json::object();
+  for (const auto& [name, value] : deriveStatFigures(result.stats, mesh.triangleCount(), mesh.lineCount()))
+    figures[name] = value;
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms}, {"seed", seed}}.dump();
+  std::lock_guard<std::mutex> lock(mutex_);
+  lastError_.clear();
+  lastModelJson_ = header;
+  lastModel_ = glb;
+  server_.sendTextToAll(header);
+  server_.sendBinaryToAll(std::move(glb));
+}
+
+}  // namespace fgsg::cli

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the npm packages fgsg uses into tools/node/, pinned: the Khronos glTF
+# validator (the tests check every .glb we write against it), three.js (the page of
+# `fgsg view`, served from the build folder) and playwright-core (drives Debian's
+# chromium in the viewer's browser tests). Idempotent: when the pinned versions are
+# already installed nothing touches the network, so a second run works offline.
+set -euo pipefail
+
+# Only 2.0.0-dev.* releases of the validator exist; a range like @2 would not match one.
+packages=("gltf-validator@2.0.0-dev.3.10" "three@0.187.0" "playwright-core@1.65.2")
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+prefix="$root/tools/node"
+
+if ! command -v npm >/dev/null 2>&1; then
+  echo "fgsg: npm not found; install nodejs and npm (apt-get install nodejs npm)" >&2
+  exit 1
+fi
+
+missing=()
+for spec in "${packages[@]}"; do
+  name="${spec%@*}" version="${spec##*@}"
+  pkg="$prefix/node_modules/$name/package.json"
+  [ -f "$pkg" ] && grep -q "\"version\": *\"$version\"" "$pkg" || missing+=("$spec")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "fgsg: npm packages already in $prefix (${packages[*]})"
+  exit 0
+fi
+
+mkdir -p "$prefix"
+echo "fgsg: installing ${missing[*]} into $prefix"
+if ! npm install --prefix "$prefix" --no-audit --no-fund --save-exact "${missing[@]}"; then
+  echo "fgsg: npm could not install ${missing[*]} (offline? see the npm error above)" >&2
+  exit 1
+fi
+node "$root/scripts/validate-gltf.js" --version

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# fgsg view's usage: --help, and every bad input a clear message with exit 1 or 2 before
+# any server starts (the page itself: tests/viewer/view_page.js).
+set -u
+fgsg="$1"
+source="$2"
+fail=0
+expect() {  # expect CODE TEXT -- ARGS...
+  local code="$1" text="$2"
+  shift 3
+  local out
+  out="$("$fgsg" view "$@" 2>&1 </dev/null)"
+  local got=$?
+  if [ "$got" -ne "$code" ] || ! grep -qF -- "$text" <<<"$out"; then
+    echo "FAIL: fgsg view $* -> exit $got (expected $code with '$text'):"
+    echo "$out"
+    fail=1
+  fi
+}
+expect 0 "usage: fgsg view FILE" -- --help
+expect 2 "no grammar file given" --
+expect 2 "unknown option '--bogus'" -- "$source/examples/koch.fgsg" --bogus
+expect 2 "--port" -- "$source/examples/koch.fgsg" --port 70000
+expect 2 "--set expects name=value" -- "$source/examples/koch.fgsg" --set x
+expect 1 "missing.fgsg" -- "$source/examples/missing.fgsg"
+expect 1 "--host 300.1.1.1: not an IP address" -- "$source/examples/koch.fgsg" --host 300.1.1.1 --port 0
+exit $fail

@@ -1,0 +1,131 @@
+// fgsg view in a real browser: Debian's chromium, headless, driven by playwright-core.
+// The page loads and draws a non-empty model; an attribute changed in the inspector and
+// an edit of the grammar file each bring a new model; an edit with an error shows its
+// diagnostic (file:line:col, the line, a caret) and keeps the last model.
+// usage: node view_page.js FGSG_BINARY SOURCE_DIR OUT_DIR
+'use strict';
+const { spawn } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+
+const [fgsg, source, out] = process.argv.slice(2);
+const { chromium } = require(path.join(source, 'tools/node/node_modules/playwright-core'));
+const chromiumPath = '/usr/bin/chromium';
+
+function fail(message) {
+  console.error('FAIL: ' + message);
+  process.exitCode = 1;
+  throw new Error(message);
+}
+
+async function main() {
+  if (!fs.existsSync(chromiumPath)) fail(`${chromiumPath} is missing: scripts/install-deps.sh installs Debian's chromium`);
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fgsg-view-'));
+  const grammar = path.join(dir, 'g.fgsg');
+  fs.copyFileSync(path.join(source, 'examples/mueller_building.fgsg'), grammar);
+  fs.symlinkSync(path.join(source, 'examples/assets'), path.join(dir, 'assets'));
+
+  const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+  let browser;
+  try {
+    const url = await new Promise((resolve, reject) => {
+      let text = '';
+      server.stdout.on('data', (d) => {
+        text += d;
+        const m = text.match(/http:\/\/[^ \n]+/);
+        if (m) resolve(m[0]);
+      });
+      server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${text}`)));
+      setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
+    });
+    // The server answers files of the page's folder only.
+    const status = await new Promise((resolve) => {
+      const u = new URL(url);
+      require('http').get({ host: u.hostname, port: u.port, path: '/../CMakeLists.txt' }, (r) => {
+        r.resume();
+        resolve(r.statusCode);
+      }).on('error', () => resolve(0));
+    });
+    if (status !== 404) fail(`a path out of the page's folder answered ${status}`);
+
+    browser = await chromium.launch({
+      executablePath: chromiumPath,
+      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+    });
+    const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+    page.on('pageerror', (e) => console.error('page error: ' + e.message));
+    await page.goto(url);
+    const models = (n, timeout = 60000) =>
+      page.waitForFunction((k) => window.fgsgViewer && window.fgsgViewer.models >= k, n, { timeout });
+
+    // 1. The model is drawn: a good share of the canvas is not the background.
+    await models(1);
+    await page.waitForTimeout(300);  // a frame or two
+    const drawn = await page.evaluate(() => {
+      const c = document.getElementById('canvas');
+      const copy = document.createElement('canvas');
+      copy.width = c.width; copy.height = c.height;
+      const g = copy.getContext('2d');
+      g.drawImage(c, 0, 0);
+      const px = g.getImageData(0, 0, copy.width, copy.height).data;
+      let other = 0;
+      for (let i = 0; i < px.length; i += 4)
+        if (Math.abs(px[i] - 0x20) + Math.abs(px[i + 1] - 0x24) + Math.abs(px[i + 2] - 0x2a) > 24) ++other;
+      return other / (px.length / 4);
+    });
+    console.log(`drawn: ${(100 * drawn).toFixed(1)}% of the canvas`);
+    if (!(drawn > 0.05)) fail(`the canvas is nearly empty (${(100 * drawn).toFixed(2)}% drawn)`);
+    fs.mkdirSync(out, { recursive: true });
+    await page.screenshot({ path: path.join(out, 'fgsg_view.png') });
+    const first = await page.evaluate(() => window.fgsgViewer.figures);
+
+    // 2. An attribute changed in the inspector: a wider lot, more windows.
+    const t0 = Date.now();
+    await page.fill('input[type=number][data-attr="lot_width"]', '28');
+    await page.dispatchEvent('input[type=number][data-attr="lot_width"]', 'change');
+    await models(2);
+    const wider = await page.evaluate(() => window.fgsgViewer.figures);
+    const wideHeight = await page.evaluate(() => window.fgsgViewer.size[1]);
+    const timing = await page.evaluate(() => window.fgsgViewer.timing);
+    const serverMs = await page.evaluate(() => window.fgsgViewer.serverMilliseconds);
+    console.log(`attribute change to new model: ${(timing.shown - timing.sent).toFixed(0)} ms in the page ` +
+                `(server ${serverMs.toFixed(0)} ms, bytes received at ${(timing.received - timing.sent).toFixed(0)} ms; ` +
+                `${Date.now() - t0} ms seen by the test), triangles ${first.triangles} -> ${wider.triangles}`);
+    if (!(wider.triangles > first.triangles)) fail('lot_width 28 did not give a larger building');
+
+    // 3. The file edited and saved: a taller building by default.
+    let text = fs.readFileSync(grammar, 'utf8');
+    if (!/attr building_height = 6;/.test(text)) fail('the example no longer declares building_height = 6');
+    fs.writeFileSync(grammar, text.replace('attr building_height = 6;', 'attr building_height = 12;'));
+    await models(3);
+    const info = await page.evaluate(() => window.fgsgViewer.info.attrs.find((a) => a.name === 'building_height'));
+    if (info.default !== 12) fail(`the page did not take the edited default (building_height ${info.default})`);
+    const taller = await page.evaluate(() => window.fgsgViewer.size[1]);
+    console.log(`model height ${wideHeight.toFixed(2)} -> ${taller.toFixed(2)}`);
+    if (!(Math.abs(taller - wideHeight - 6) < 0.01)) fail('building_height 12 did not raise the walls by 6');
+
+    // 4. An edit with an error: the diagnostic in the page, the last model kept.
+    await page.waitForTimeout(1000);  // an editor's save may come as two writes: let both land
+    const before = await page.evaluate(() => window.fgsgViewer.models);
+    text = fs.readFileSync(grammar, 'utf8');
+    fs.writeFileSync(grammar, text + '\nBroken ~> S(1, 1;\n');
+    await page.waitForFunction(() => window.fgsgViewer.errors >= 1, null, { timeout: 30000 });
+    const diagnostics = await page.textContent('#diagnostics');
+    console.log('diagnostic shown:\n' + diagnostics);
+    if (!/g\.fgsg:\d+:\d+: error\[E\d+\]/.test(diagnostics)) fail('no file:line:col error in the page');
+    if (!/\^/.test(diagnostics) || !/Broken/.test(diagnostics)) fail('the diagnostic lacks the line and its caret');
+    await page.waitForTimeout(1000);
+    if ((await page.evaluate(() => window.fgsgViewer.models)) !== before) fail('an erroneous edit replaced the model');
+    if (!(await page.textContent('#status')).includes('last good model')) fail('the status does not say the model is kept');
+    console.log('PASS');
+  } finally {
+    if (browser) await browser.close();
+    server.kill('SIGTERM');
+  }
+}
+
+main().catch((e) => {
+  if (!process.exitCode) console.error('FAIL: ' + (e && e.stack ? e.stack : e));
+  process.exitCode = 1;
+});

@@ -1,0 +1,199 @@
+// fgsg view's page: draws the models the server pushes (binary glTF) with three.js,
+// keeps the camera across models, and sends attribute and seed changes back. The
+// messages are described in cli/view_session.h. window.fgsgViewer is what the browser
+// tests read (tests/viewer/).
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+
+const $ = (id) => document.getElementById(id);
+// timing: when the last change was sent, its model announced, its bytes received and
+// shown (performance.now() milliseconds); serverMilliseconds: the server's part.
+const state = { models: 0, errors: 0, figures: null, info: null, seed: 1, size: null, timing: {}, serverMilliseconds: 0 };
+window.fgsgViewer = state;
+
+const canvas = $('canvas');
+const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0x20242a);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x404450, 1.6));
+const sun = new THREE.DirectionalLight(0xffffff, 1.8);
+sun.position.set(3, 5, 4);
+scene.add(sun);
+const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 1e6);
+camera.position.set(3, 2, 4);
+const controls = new OrbitControls(camera, canvas);
+let model = null;
+
+function resize() {
+  const w = canvas.clientWidth, h = canvas.clientHeight;
+  if (canvas.width !== Math.floor(w * devicePixelRatio) || canvas.height !== Math.floor(h * devicePixelRatio)) {
+    renderer.setSize(w, h, false);
+    camera.aspect = w / Math.max(h, 1);
+    camera.updateProjectionMatrix();
+  }
+}
+// Frames are drawn on demand (the camera moved, a model came, the window changed), so
+// an idle page costs nothing and a new model is never queued behind frames.
+let frameRequested = false;
+function requestRender() {
+  if (frameRequested) return;
+  frameRequested = true;
+  requestAnimationFrame(() => {
+    frameRequested = false;
+    resize();
+    renderer.render(scene, camera);
+  });
+}
+controls.addEventListener('change', requestRender);
+window.addEventListener('resize', requestRender);
+requestRender();
+
+// The first model decides the view; later ones keep the camera the user chose.
+function frame(object) {
+  const box = new THREE.Box3().setFromObject(object);
+  if (box.isEmpty()) return;
+  const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3()).length();
+  controls.target.copy(centre);
+  camera.position.copy(centre).add(new THREE.Vector3(0.7, 0.5, 0.9).multiplyScalar(size));
+  camera.near = size / 1000;
+  camera.far = size * 100;
+  camera.updateProjectionMatrix();
+}
+
+function setStatus(text, kind) {
+  $('status').textContent = text;
+  $('status').className = kind || '';
+}
+
+let header = null;  // the JSON that announced the next binary model
+const loader = new GLTFLoader();
+function showModel(buffer) {
+  const announced = header;
+  state.timing.received = performance.now();
+  loader.parse(buffer, '', (gltf) => {
+    if (model) {
+      scene.remove(model);
+      model.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+    }
+    model = gltf.scene;
+    scene.add(model);
+    if (state.models === 0) {
+      frame(model);
+      controls.update();
+    }
+    requestRender();
+    state.timing.shown = performance.now();
+    state.serverMilliseconds = announced ? announced.milliseconds : 0;
+    state.models += 1;
+    state.size = new THREE.Box3().setFromObject(model).getSize(new THREE.Vector3()).toArray();
+    state.figures = announced ? announced.figures : null;
+    const f = state.figures || {};
+    $('stats').textContent = Object.entries(f).map(([k, v]) => `${k} ${v}`).join('\n') +
+      (announced ? `\nmilliseconds ${announced.milliseconds.toFixed(1)}` : '');
+    $('diagnostics').textContent = '';
+    setStatus(`${f.triangles ?? 0} triangles`, '');
+  }, (err) => { setStatus('cannot read the model: ' + err, 'error'); });
+}
+
+// Sends the values the user has set (the others follow the grammar's defaults, also
+// when an edit of the file changes them) and the seed.
+function send(changed) {
+  if (changed) changed.dataset.touched = '1';
+  const attrs = {};
+  for (const input of document.querySelectorAll('[data-attr][data-touched]')) {
+    if (input.dataset.kind === 'range') continue;
+    attrs[input.dataset.attr] = input.type === 'checkbox' ? String(input.checked) : input.value;
+  }
+  state.timing = { sent: performance.now() };
+  ws.send(JSON.stringify({ type: 'set', attrs, seed: state.seed }));
+}
+
+// A number attribute gets a slider around its default and a field for exact values.
+function numberRange(d) {
+  if (d === 0) return [-1, 1];
+  return d > 0 ? [0, 3 * d] : [3 * d, 0];
+}
+
+function buildInspector(info) {
+  const box = $('attrs');
+  const shape = JSON.stringify(info.attrs.map((a) => [a.name, a.type, a.default]));
+  if (box.dataset.shape !== shape) {  // new attributes: rebuild; else only refresh values
+    box.dataset.shape = shape;
+    box.textContent = '';
+    for (const a of info.attrs) {
+      const row = document.createElement('div');
+      row.className = 'attr';
+      const label = document.createElement('label');
+      label.textContent = a.name;
+      row.append(label);
+      if (a.type === 'number') {
+        const field = document.createElement('input');
+        field.type = 'number';
+        field.step = 'any';
+        field.dataset.attr = a.name;
+        const slider = document.createElement('input');
+        slider.type = 'range';
+        const [lo, hi] = numberRange(Number(a.default));
+        slider.min = lo; slider.max = hi; slider.step = (hi - lo) / 300;
+        slider.dataset.attr = a.name;
+        slider.dataset.kind = 'range';
+        slider.addEventListener('input', () => { field.value = slider.value; send(field); });
+        field.addEventListener('change', () => { slider.value = field.value; send(field); });
+        label.append(field);
+        row.append(slider);
+      } else if (a.type === 'boolean') {
+        const box2 = document.createElement('input');
+        box2.type = 'checkbox';
+        box2.dataset.attr = a.name;
+        box2.addEventListener('change', () => send(box2));
+        label.append(box2);
+      } else {
+        const field = document.createElement('input');
+        field.type = 'text';
+        field.dataset.attr = a.name;
+        field.addEventListener('change', () => send(field));
+        label.append(field);
+      }
+      box.append(row);
+    }
+  }
+  for (const a of info.attrs)
+    for (const input of box.querySelectorAll(`[data-attr="${CSS.escape(a.name)}"]`)) {
+      if (input === document.activeElement) continue;
+      if (String(a.value) !== String(a.default)) input.dataset.touched = '1';  // --set, or set before
+      if (input.type === 'checkbox') input.checked = a.value === true || a.value === 'true';
+      else input.value = a.value;
+    }
+}
+
+$('seed').addEventListener('change', () => { state.seed = Math.max(0, Math.floor(Number($('seed').value))); send(); });
+$('prev').addEventListener('click', () => { state.seed = Math.max(0, state.seed - 1); $('seed').value = state.seed; send(); });
+$('next').addEventListener('click', () => { state.seed += 1; $('seed').value = state.seed; send(); });
+
+const ws = new WebSocket(`ws://${location.host}/`);
+ws.binaryType = 'arraybuffer';
+ws.onopen = () => setStatus('deriving', 'deriving');
+ws.onclose = () => setStatus('disconnected: fgsg view stopped', 'error');
+ws.onmessage = (event) => {
+  if (typeof event.data !== 'string') return showModel(event.data);
+  const m = JSON.parse(event.data);
+  if (m.type === 'info') {
+    state.info = m;
+    state.seed = m.seed;
+    $('seed').value = m.seed;
+    $('file').textContent = m.file;
+    document.title = `fgsg view - ${m.file}`;
+    buildInspector(m);
+  } else if (m.type === 'progress') {
+    setStatus('deriving', 'deriving');
+  } else if (m.type === 'model') {
+    header = m;
+    state.timing.announced = performance.now();
+  } else if (m.type === 'error') {
+    state.errors += 1;
+    $('diagnostics').textContent = m.diagnostics;
+    setStatus(model ? 'error: the last good model is shown' : 'error', 'error');
+  }
+};
