@@ -155,6 +155,8 @@ bool writeFile(const std::string& path, const std::string& bytes) {
 
 }  // namespace
 
+const char* evolveUsage() { return kUsage; }
+
 int evolveCommand(const Args& args) {
   EvolveCommandOptions opt;
   try {

@@ -20,7 +20,7 @@ namespace {
 
 using namespace fgsg::rt::synthesis;
 
-const char* kUsage =
+const char* const kUsage =
     "usage: fgsg synth EXAMPLE --size X Y Z [--block N] [--seed N] [--labels out.txt]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--periodic] [--mask image.png]\n"
     "                  [--order scanline|entropy] [--retries N] [--attempts N] [--closed]\n"
@@ -57,6 +57,8 @@ std::string dirOf(const std::string& path) {
 }
 
 }  // namespace
+
+const char* synthUsage() { return kUsage; }
 
 int synthCommand(const Args& args) {
   std::string example, labelsOut, meshOut, previewOut, maskPath;
@@ -190,8 +192,8 @@ int synthCommand(const Args& args) {
   }
 
   SynthesisResult r = synthesize(ex, o);
-  if (stats) {
-    std::fprintf(stderr,
+  if (stats) {  // on stdout, as fgsg run --stats; messages go to stderr
+    std::fprintf(stdout,
                  "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
                  "\"assignments\":%llu,\"propagation_steps\":%llu,\"support_misses\":%llu,"
                  "\"blocks\":%d,\"blocks_failed\":%d,"
@@ -265,6 +267,13 @@ int synthCommand(const Args& args) {
     std::fprintf(stderr, "fgsg synth: error[E742]: %s\n", err.c_str());
     return 1;
   }
+  // What was written, as fgsg run says it.
+  std::string wrote;
+  for (const std::string* f : {&meshOut, &labelsOut, &previewOut})
+    if (!f->empty()) wrote += (wrote.empty() ? "" : ", ") + *f;
+  if (!wrote.empty())
+    std::fprintf(stderr, "wrote %s (%d x %d x %d cells, %d labels)\n", wrote.c_str(), r.labels.size().nx,
+                 r.labels.size().ny, r.labels.size().nz, ex.labelCount());
   return r.ok ? 0 : 1;
 }
 

@@ -20,4 +20,8 @@ int evolveCommand(const Args& args);   // fgsg evolve TILES.json (L-system tile 
 int fieldCommand(const Args& args);    // fgsg field FILE (a grammar's field: streamlines, singularities)
 int viewCommand(const Args& args);     // fgsg view FILE (a live viewer in the browser)
 
+// The usage lines of the commands with their own (fgsg synth --help, fgsg evolve --help).
+const char* synthUsage();
+const char* evolveUsage();
+
 }  // namespace fgsg::cli

@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "runtime/out_of_resources.h"
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <new>
@@ -73,6 +74,31 @@ Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
 Documentation: docs/language.md, docs/cli.md.
 )";
 
+const char* const kCommands[] = {"run", "check", "ir", "synth", "repl", "compile", "atlas", "evolve", "field", "view"};
+
+// What `fgsg CMD --help` prints: the command's lines of the overall help (from "  fgsg
+// CMD" to the next command), the notes on its options that follow the list (run,
+// compile), and where to read more; synth and evolve print their own usage.
+std::string commandHelp(const std::string& cmd) {
+  if (cmd == "synth") return fgsg::cli::synthUsage();
+  if (cmd == "evolve") return fgsg::cli::evolveUsage();
+  const std::string help = kHelp;
+  std::string out = "usage:\n";
+  const size_t at = help.find("\n  fgsg " + cmd + " ");
+  if (at != std::string::npos) {
+    size_t end = help.find("\n  fgsg ", at + 1);
+    out += help.substr(at + 1, (end == std::string::npos ? help.size() : end) - at - 1) + "\n";
+  }
+  auto notes = [&](const std::string& from, const std::string& to) {
+    const size_t a = help.find(from), b = help.find(to, a);
+    if (a != std::string::npos && b != std::string::npos) out += "\n" + help.substr(a, b - a);
+  };
+  if (cmd == "run") notes("run writes FILE's stem", "compile writes lib");
+  if (cmd == "compile") notes("compile writes lib", "Exit codes:");
+  return out + "\nExit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.\n"
+               "Documentation: docs/cli.md (fgsg " + cmd + ").\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -87,6 +113,14 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = args[0];
   args.erase(args.begin());
+  // `fgsg CMD --help` (or -h) anywhere in the arguments: the command's usage, exit 0.
+  const bool known = std::find(std::begin(kCommands), std::end(kCommands), cmd) != std::end(kCommands);
+  if (known && cmd != "view" && std::find_if(args.begin(), args.end(), [](const std::string& a) {
+                                  return a == "--help" || a == "-h";
+                                }) != args.end()) {
+    std::cout << commandHelp(cmd);
+    return 0;
+  }
   // The one boundary every command's exceptions stop at: a message and exit 1, never an
   // abort. Commands report what they expect themselves; this is for what they did not.
   try {

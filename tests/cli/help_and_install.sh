@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The CLI's conventions: every subcommand's --help prints its usage and exits 0; the
+# install target lays out a prefix whose fgsg runs a grammar, compiles one to a library
+# and finds its viewer page (usage: help_and_install.sh FGSG SOURCE_DIR BINARY_DIR).
+set -u
+fgsg="$1" source="$2" build="$3"
+fail=0
+for cmd in run check ir synth repl compile atlas evolve field view; do
+  out="$("$fgsg" "$cmd" --help 2>&1 </dev/null)"
+  code=$?
+  if [ "$code" -ne 0 ] || ! grep -q "usage" <<<"$out" || ! grep -q "fgsg $cmd" <<<"$out"; then
+    echo "FAIL: fgsg $cmd --help exited $code:"; echo "$out"; fail=1
+  fi
+done
+"$fgsg" run -h </dev/null | grep -q -- "--max-seconds S" || { echo "FAIL: fgsg run -h lacks the option notes"; fail=1; }
+
+prefix="$(mktemp -d)"
+trap 'rm -rf "$prefix"' EXIT
+if ! cmake --install "$build" --prefix "$prefix" >/dev/null; then
+  echo "FAIL: cmake --install"; exit 1
+fi
+for f in bin/fgsg lib/libfgsg.so lib/libfgsg_llvm.so lib/libfgsg_fcl.so share/fgsg/viewer/index.html \
+         share/fgsg/viewer/three/build/three.module.js; do
+  [ -e "$prefix/$f" ] || { echo "FAIL: $f not installed"; fail=1; }
+done
+cd "$prefix"
+FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/fig4_local_pattern.fgsg" -o "$prefix/fig4.glb" --quiet \
+  || { echo "FAIL: the installed fgsg cannot run a grammar"; fail=1; }
+[ -s "$prefix/fig4.glb" ] || { echo "FAIL: no fig4.glb"; fail=1; }
+FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/lock_flowers.fgsg" -o "$prefix/flowers.glb" --quiet \
+  || { echo "FAIL: the installed fgsg cannot place collision-tested instances (FCL plugin)"; fail=1; }
+"$prefix/bin/fgsg" compile "$source/examples/koch.fgsg" -o "$prefix/libkoch.so" --quiet \
+  || { echo "FAIL: the installed fgsg cannot compile a grammar library"; fail=1; }
+exit $fail
