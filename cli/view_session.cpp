@@ -6,8 +6,11 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
+#include "cli/view_scene.h"
 #include "runtime/assemble.h"
-#include "runtime/io/write_mesh.h"
+#include "runtime/io/write_instances.h"
+
+#include <Eigen/Dense>
 
 #include <nlohmann/json.hpp>
 
@@ -69,15 +72,18 @@ ViewSession::~ViewSession() {
 void ViewSession::pageOpened() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!lastInfo_.empty()) server_.sendTextToAll(lastInfo_);
-  if (!lastModel_.empty()) {
+  if (!lastModelJson_.empty()) {
     server_.sendTextToAll(lastModelJson_);
-    server_.sendBinaryToAll(lastModel_);
+    for (const std::string& p : lastParts_) server_.sendBinaryToAll(p);
   }
   if (!lastError_.empty()) server_.sendTextToAll(lastError_);
 }
 
 void ViewSession::message(const std::string& text) {
   const Json j = Json::parse(text, nullptr, false);
+  if (!j.is_discarded() && j.is_object() && j.value("type", "") == "pick" && j.contains("instance") &&
+      j["instance"].is_number_unsigned())
+    return pick(j["instance"].get<uint32_t>());
   if (j.is_discarded() || !j.is_object() || j.value("type", "") != "set") return;  // not ours
   std::lock_guard<std::mutex> lock(mutex_);
   // The page sends every value its user has set; the others take the grammar's defaults.
@@ -198,22 +204,51 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
     return fail(text.str());
   }
   std::vector<int> meshOf;
-  std::string error, glb;
+  std::string error;
   if (!rt::resolveAssets(result.instances, assets, meshOf, error)) return fail(options_.file + ": " + error);
-  const rt::Mesh mesh = rt::assembleInstances(result.instances, assets, meshOf);
-  if (!rt::io::encodeMesh(mesh, ".glb", glb, error)) return fail(options_.file + ": " + error);
+  ViewScene scene;
+  if (!buildViewScene(result.instances, assets, meshOf, scene, error)) return fail(options_.file + ": " + error);
 
+  // The header lists the binary messages that follow: the assembled rest, then for each
+  // group of instances its asset's mesh, their matrices, colours and instance numbers.
   Json figures = Json::object();
-  for (const auto& [name, value] : deriveStatFigures(result.stats, mesh.triangleCount(), mesh.lineCount()))
-    figures[name] = value;
+  for (const auto& [name, value] : deriveStatFigures(result.stats, scene.triangles)) figures[name] = value;
+  Json groups = Json::array();
+  std::vector<std::string> parts = {std::move(scene.restGlb)};
+  for (InstanceGroup& g : scene.groups) {
+    groups.push_back({{"asset", g.asset}, {"count", g.ids.size()}});
+    parts.push_back(std::move(g.meshGlb));
+    parts.emplace_back(reinterpret_cast<const char*>(g.matrices.data()), g.matrices.size() * sizeof(float));
+    parts.emplace_back(reinterpret_cast<const char*>(g.colours.data()), g.colours.size() * sizeof(float));
+    parts.emplace_back(reinterpret_cast<const char*>(g.ids.data()), g.ids.size() * sizeof(uint32_t));
+  }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms}, {"seed", seed}}.dump();
+  const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms},
+                                  {"seed", seed}, {"groups", groups}}.dump();
   std::lock_guard<std::mutex> lock(mutex_);
   lastError_.clear();
   lastModelJson_ = header;
-  lastModel_ = glb;
+  lastParts_ = parts;
+  lastInstances_ = std::move(result.instances);
   server_.sendTextToAll(header);
-  server_.sendBinaryToAll(std::move(glb));
+  for (std::string& p : parts) server_.sendBinaryToAll(std::move(p));
+}
+
+void ViewSession::pick(uint32_t instance) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (instance >= lastInstances_.instances.size()) return;
+  const rt::Instance& inst = lastInstances_.instances[instance];
+  const Json params = Json::parse(rt::io::instanceParamsJson(lastInstances_, inst), nullptr, false);
+  const Eigen::Map<const Eigen::Matrix4d> t(inst.transform.data());
+  const Eigen::Vector4d centre = t * Eigen::Vector4d(0.5, 0.5, 0.5, 1);
+  server_.sendTextToAll(Json{{"type", "picked"},
+                             {"instance", instance},
+                             {"symbol", inst.symbol < lastInstances_.symbols.size() ? lastInstances_.symbols[inst.symbol] : ""},
+                             {"asset", inst.asset < lastInstances_.assets.size() ? lastInstances_.assets[inst.asset] : ""},
+                             {"params", params.is_discarded() ? Json::array() : params},
+                             {"colour", inst.color},
+                             {"centre", {centre.x(), centre.y(), centre.z()}}}
+                            .dump());
 }
 
 }  // namespace fgsg::cli

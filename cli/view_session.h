@@ -5,9 +5,14 @@
 // its diagnostics and the pages keep the last good model. Messages (docs/cli.md):
 //   to the page:   {"type":"info", "file", "attrs":[{name, type, default, value}], "seed"}
 //                  {"type":"progress", "state":"deriving"}
-//                  {"type":"model", "figures":{...}, "milliseconds"}, then the .glb bytes
+//                  {"type":"model", "figures":{...}, "milliseconds", "groups":[{asset, count}]},
+//                   then binary: the rest of the model as .glb, and per group its asset's
+//                   .glb, its matrices and colours (Float32) and its instances' numbers
+//                   (Uint32) in the derivation (view_scene.h)
+//                  {"type":"picked", "instance", "symbol", "asset", "params", "colour", "centre"}
 //                  {"type":"error", "diagnostics":"file:line:col: error[...] ...\n  line\n  ^"}
 //   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
+//                  {"type":"pick", "instance":N}
 #pragma once
 
 #include "backend/engine.h"
@@ -50,6 +55,7 @@ class ViewSession {
  private:
   void work();
   void deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
+  void pick(uint32_t instance);  // a page's {"type":"pick","instance":N}: who placed it
   std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const;
   std::map<std::string, std::filesystem::file_time_type> watchedFiles() const;
 
@@ -63,7 +69,9 @@ class ViewSession {
   bool pending_ = true, recompile_ = true, stopping_ = false;
   std::map<std::string, std::string> attrs_;  // the page's values, by attribute name
   uint64_t seed_ = 1;
-  std::string lastInfo_, lastModelJson_, lastModel_, lastError_;
+  std::string lastInfo_, lastModelJson_, lastError_;
+  std::vector<std::string> lastParts_;  // the last model's binary messages
+  rt::InstanceList lastInstances_;      // its instances, for picking
   std::map<std::string, std::filesystem::file_time_type> seen_;
 
   std::thread worker_;

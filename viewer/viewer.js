@@ -9,7 +9,8 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 const $ = (id) => document.getElementById(id);
 // timing: when the last change was sent, its model announced, its bytes received and
 // shown (performance.now() milliseconds); serverMilliseconds: the server's part.
-const state = { models: 0, errors: 0, figures: null, info: null, seed: 1, size: null, timing: {}, serverMilliseconds: 0 };
+const state = { models: 0, errors: 0, figures: null, info: null, seed: 1, size: null, timing: {}, serverMilliseconds: 0,
+                instanced: 0, picked: null };
 window.fgsgViewer = state;
 
 const canvas = $('canvas');
@@ -67,17 +68,60 @@ function setStatus(text, kind) {
   $('status').className = kind || '';
 }
 
-let header = null;  // the JSON that announced the next binary model
+let header = null;  // the JSON that announced the model whose parts are arriving
+let parts = [];
 const loader = new GLTFLoader();
+
+// The first mesh's geometry of a .glb (an asset's mesh, for its instances).
+async function geometryOf(buffer) {
+  const gltf = await loader.parseAsync(buffer, '');
+  let geometry = null;
+  gltf.scene.traverse((o) => { if (!geometry && o.isMesh) geometry = o.geometry; });
+  return geometry;
+}
+
+// The model from its parts (cli/view_session.h): the assembled rest, then per group of
+// instances the asset's mesh, their matrices, colours and instance numbers, drawn as one
+// InstancedMesh each.
+async function buildModel(announced, buffers) {
+  const group = new THREE.Group();
+  const rest = await loader.parseAsync(buffers[0], '');
+  group.add(rest.scene);
+  let instanced = 0;
+  for (let g = 0; g < announced.groups.length; ++g) {
+    const [mesh, matrices, colours, ids] = buffers.slice(1 + 4 * g, 5 + 4 * g);
+    const geometry = await geometryOf(mesh);
+    if (!geometry) continue;
+    geometry.deleteAttribute('color');  // the instances' colours instead
+    const count = announced.groups[g].count;
+    const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.8, side: THREE.DoubleSide });
+    const many = new THREE.InstancedMesh(geometry, material, count);
+    many.instanceMatrix.array.set(new Float32Array(matrices));
+    many.instanceColor = new THREE.InstancedBufferAttribute(new Float32Array(colours), 3);
+    many.userData.ids = new Uint32Array(ids);
+    many.userData.asset = announced.groups[g].asset;
+    many.computeBoundingBox();
+    many.computeBoundingSphere();
+    group.add(many);
+    instanced += count;
+  }
+  state.instanced = instanced;
+  return group;
+}
+
 function showModel(buffer) {
-  const announced = header;
+  parts.push(buffer);
+  if (!header || parts.length < 1 + 4 * header.groups.length) return;
+  const announced = header, buffers = parts;
+  header = null;
+  parts = [];
   state.timing.received = performance.now();
-  loader.parse(buffer, '', (gltf) => {
+  buildModel(announced, buffers).then((built) => {
     if (model) {
       scene.remove(model);
       model.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
     }
-    model = gltf.scene;
+    model = built;
     scene.add(model);
     if (state.models === 0) {
       frame(model);
@@ -94,7 +138,31 @@ function showModel(buffer) {
       (announced ? `\nmilliseconds ${announced.milliseconds.toFixed(1)}` : '');
     $('diagnostics').textContent = '';
     setStatus(`${f.triangles ?? 0} triangles`, '');
-  }, (err) => { setStatus('cannot read the model: ' + err, 'error'); });
+  }).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+}
+
+// Picking: a click (not a drag) on an instance asks the server who placed it.
+const raycaster = new THREE.Raycaster();
+let downAt = null;
+canvas.addEventListener('pointerdown', (e) => { downAt = [e.clientX, e.clientY]; });
+canvas.addEventListener('pointerup', (e) => {
+  if (!downAt || Math.hypot(e.clientX - downAt[0], e.clientY - downAt[1]) > 4 || !model) return;
+  const r = canvas.getBoundingClientRect();
+  const ndc = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  const hit = raycaster.intersectObject(model, true).find((h) => h.instanceId !== undefined);
+  if (!hit) {
+    $('picked').textContent = 'nothing instanced here';
+    return;
+  }
+  ws.send(JSON.stringify({ type: 'pick', instance: hit.object.userData.ids[hit.instanceId] }));
+});
+
+function showPicked(m) {
+  state.picked = m;
+  const fmt = (v) => (typeof v === 'number' ? +v.toFixed(4) : JSON.stringify(v));
+  $('picked').textContent = `instance ${m.instance}\nsymbol ${m.symbol}\nasset ${m.asset}\n` +
+    `params (${m.params.map(fmt).join(', ')})\ncentre (${m.centre.map(fmt).join(', ')})`;
 }
 
 // Sends the values the user has set (the others follow the grammar's defaults, also
@@ -188,8 +256,11 @@ ws.onmessage = (event) => {
     buildInspector(m);
   } else if (m.type === 'progress') {
     setStatus('deriving', 'deriving');
+  } else if (m.type === 'picked') {
+    showPicked(m);
   } else if (m.type === 'model') {
     header = m;
+    parts = [];
     state.timing.announced = performance.now();
   } else if (m.type === 'error') {
     state.errors += 1;

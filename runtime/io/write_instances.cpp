@@ -185,4 +185,10 @@ bool writeInstancesJson(const InstanceList& list, const std::string& path, std::
   return stageInstancesJson(list, path, one, error) && one.commit(error);
 }
 
+std::string instanceParamsJson(const InstanceList& list, const Instance& inst) {
+  std::string out = "[";
+  appendParams(out, list, inst);
+  return out + "]";
+}
+
 }  // namespace fgsg::rt::io

@@ -16,6 +16,9 @@ namespace fgsg::rt::io {
 
 std::string encodeInstancesJson(const InstanceList& list);
 
+// One instance's parameters as a JSON array, as the file writes them (fgsg view's picking).
+std::string instanceParamsJson(const InstanceList& list, const Instance& inst);
+
 // Checks that every transform and colour is finite (a file must not carry them as null),
 // encodes and stages the file in `outputs`; false and a message naming `path` otherwise.
 bool stageInstancesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs,

@@ -1,5 +1,6 @@
 // fgsg view in a real browser: Debian's chromium, headless, driven by playwright-core.
-// The page loads and draws a non-empty model; an attribute changed in the inspector and
+// The page loads and draws a non-empty model, its repeated assets instanced; a click on
+// it names the symbol that placed what is under it; an attribute changed in the inspector and
 // an edit of the grammar file each bring a new model; an edit with an error shows its
 // diagnostic (file:line:col, the line, a caret) and keeps the last model.
 // usage: node view_page.js FGSG_BINARY SOURCE_DIR OUT_DIR
@@ -79,6 +80,18 @@ async function main() {
     fs.mkdirSync(out, { recursive: true });
     await page.screenshot({ path: path.join(out, 'fgsg_view.png') });
     const first = await page.evaluate(() => window.fgsgViewer.figures);
+    const instanced = await page.evaluate(() => window.fgsgViewer.instanced);
+    console.log(`instanced: ${instanced} of ${first.instances} instances drawn as InstancedMesh`);
+    if (!(instanced > 0)) fail('no instances were drawn instanced');
+
+    // Picking: a click on the building says which symbol placed what is under it.
+    const box = await page.locator('#canvas').boundingBox();
+    await page.mouse.click(box.x + box.width * 0.45, box.y + box.height * 0.55);
+    await page.waitForFunction(() => window.fgsgViewer.picked, null, { timeout: 10000 });
+    const picked = await page.evaluate(() => window.fgsgViewer.picked);
+    console.log(`picked: instance ${picked.instance}, symbol ${picked.symbol}, asset ${picked.asset}`);
+    if (!picked.symbol || !picked.asset || !Array.isArray(picked.params)) fail('the picked instance lacks its symbol');
+    if (!(await page.textContent('#picked')).includes('symbol ' + picked.symbol)) fail('the panel does not show the pick');
 
     // 2. An attribute changed in the inspector: a wider lot, more windows.
     const t0 = Date.now();
