@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
+#include "cli/progress_line.h"
 #include "runtime/field/field_sketch.h"
 #include "runtime/io/atomic_file.h"
 #include "runtime/io/read_input.h"
@@ -116,14 +117,18 @@ int fieldCommand(const Args& args) {
     return 1;
   }
   std::unique_ptr<backend::SurfaceWorld> world;
+  ProgressLine progress("fgsg field", true);
+  progress.phase("building the surface and designing its fields");
   try {
     world = std::make_unique<backend::SurfaceWorld>(m, opt.derive, grammarDataDirs(opt.file));
   } catch (const backend::DeriveError& e) {
+    progress.done();
     frontend::Diagnostics diags(&compiled->source);
     diags.error(e.code, {{e.loc.line, e.loc.col}, {e.loc.line, e.loc.col}}, e.message);
     diags.print(std::cerr);
     return 1;
   }
+  progress.clear();
   const auto fields = world->fields();
   if (fields.empty()) {
     std::cerr << "fgsg field: " << opt.file << " declares no field (`field F = design tensor { ... };` ...)\n";
@@ -147,7 +152,9 @@ int fieldCommand(const Args& args) {
   }
 
   const rt::surface::SurfaceMesh& mesh = world->mesh();
+  progress.phase("tracing streamlines");
   const rt::field::FieldSketch sketch = rt::field::sketchField(mesh, *field, opt.sketch);
+  progress.done();
   std::map<std::string, int> kinds;
   for (const auto& s : sketch.singularities) ++kinds[rt::field::singularityName(s.kind)];
   std::printf("%s: field %s (%s) on %zu faces: %zu streamlines", opt.file.c_str(), name.c_str(),

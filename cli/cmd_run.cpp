@@ -6,6 +6,7 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
+#include "cli/progress_line.h"
 #include "runtime/io/read_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/assemble.h"
@@ -205,8 +206,11 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   loader.stopWaitingAt(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                 std::chrono::duration<double>(std::min(opt.derive.maxSeconds, 1e9))));
   backend::EngineReport engineReport;
+  ProgressLine progress("fgsg run", !opt.quiet);
+  progress.phase("deriving");  // and compiling, building the surface and its fields
   rt::DeriveResult result = backend::derive(opt.engine, compiled->module, compiled->source.text,
                                             opt.derive, assets, &engineReport, &loader);
+  progress.clear();
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
   if (!reportMessages(result, compiled->source)) return 1;
   // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started
@@ -219,10 +223,12 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   std::vector<int> meshOf;
   std::string error;
   if (!rt::resolveAssets(result.instances, assets, meshOf, error)) {
+    progress.clear();
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
   rt::Mesh mesh;
+  progress.phase("assembling");
   try {
     size_t assembled = 0;
     mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled);
@@ -233,6 +239,7 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
                                   " s (--max-seconds): the first " + std::to_string(assembled) + " of " +
                                   std::to_string(result.instances.instances.size()) +
                                   " instances are written"});
+      progress.clear();
       reportMessages(cut, compiled->source);
       result.instances.instances.resize(assembled);  // --instances lists what the mesh holds
     }
@@ -242,6 +249,7 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
                                "out of memory assembling " + std::to_string(result.instances.instances.size()) +
                                    " instances into one mesh; nothing was written (--max-memory stops the "
                                    "derivation earlier, keeping what fits)"});
+    progress.clear();
     reportMessages(failed, compiled->source);
     return 1;
   }
@@ -249,11 +257,13 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
 
   // One transaction: the mesh, the instances and the preview are all written to temps
   // first and replace their targets only when every one of them succeeded.
+  progress.phase("writing");
   rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
   if (!rt::io::stageMesh(mesh, opt.output, outputs, error) ||
       (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
       (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error))) {
+    progress.clear();
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
@@ -261,21 +271,29 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
 
   t0 = std::chrono::steady_clock::now();
   if (!opt.preview.empty()) {
+    progress.phase("drawing the preview");
     std::string warning;
     if (!rt::render::stagePreview(mesh, rt::render::PreviewOptions{}, opt.preview, outputs, error, &warning)) {
+      progress.clear();
       std::cerr << "fgsg run: " << error << "\n";
       return 1;
     }
-    if (!warning.empty() && !opt.quiet) std::cerr << "fgsg run: warning: " << warning << "\n";
+    if (!warning.empty() && !opt.quiet) {
+      progress.clear();
+      std::cerr << "fgsg run: warning: " << warning << "\n";
+    }
   }
   const double previewSeconds = since(t0);
 
+  progress.phase("writing");
   t0 = std::chrono::steady_clock::now();
   if (!outputs.commit(error)) {
+    progress.clear();
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
   writeSeconds += since(t0);
+  progress.done();
 
   if (!opt.quiet)
     std::cerr << "wrote " << opt.output << " (" << result.instances.instances.size()

@@ -3,6 +3,7 @@
 // Discrete model synthesis from an example grid (.txt), a WFC tile set (.json) or a
 // labelled image (.png). See docs/synthesis.md.
 #include "cli/commands.h"
+#include "cli/progress_line.h"
 #include "runtime/assemble.h"
 #include "runtime/assets.h"
 #include "runtime/io/write_mesh.h"
@@ -191,7 +192,10 @@ int synthCommand(const Args& args) {
     }
   }
 
+  ProgressLine progress("fgsg synth", true);
+  progress.phase("synthesizing");
   SynthesisResult r = synthesize(ex, o);
+  progress.done();
   if (stats) {  // on stdout, as fgsg run --stats; messages go to stderr
     std::fprintf(stdout,
                  "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
