@@ -41,6 +41,17 @@ CgalMesh toCgal(const SurfaceMesh& m, const Eigen::Matrix3d& rotation) {
   return out;
 }
 
+// Face f's three vertices, each renumbered by `number` (indexed by vertex index).
+std::array<int, 3> triangleOf(const CgalMesh& m, CgalMesh::Face_index f, const std::vector<int>& number) {
+  std::array<int, 3> t{};
+  int k = 0;
+  for (auto v : m.vertices_around_face(m.halfedge(f))) {
+    if (k == 3) throw std::logic_error("three tori: the union holds a face that is not a triangle");
+    t[k++] = number[v.idx()];
+  }
+  return t;
+}
+
 // The mesh with its vertices in lexicographic order of their positions and its faces in
 // order of their (rotated) vertex triples. CGAL's corefinement numbers the vertices it
 // creates in an order that depends on where its nodes lie in memory; this order does
@@ -66,12 +77,7 @@ CgalMesh canonical(const CgalMesh& m) {
   for (size_t k = 0; k < order.size(); ++k) rank[order[k].idx()] = static_cast<int>(k);
   std::vector<std::array<int, 3>> tris;
   for (auto f : m.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (auto v : m.vertices_around_face(m.halfedge(f))) {
-      if (k == 3) throw std::logic_error("three tori: the union holds a face that is not a triangle");
-      t[k++] = rank[v.idx()];
-    }
+    std::array<int, 3> t = triangleOf(m, f, rank);
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     tris.push_back(t);
   }
@@ -91,15 +97,7 @@ SurfaceMesh fromCgal(const CgalMesh& m) {
     index[v.idx()] = static_cast<int>(out.vertices.size());
     out.vertices.emplace_back(p.x(), p.y(), p.z());
   }
-  for (auto f : m.faces()) {
-    std::array<int, 3> tri{};
-    int k = 0;
-    for (auto v : m.vertices_around_face(m.halfedge(f))) {
-      if (k == 3) throw std::logic_error("three tori: the union holds a face that is not a triangle");
-      tri[k++] = index[v.idx()];
-    }
-    out.faces.push_back(tri);
-  }
+  for (auto f : m.faces()) out.faces.push_back(triangleOf(m, f, index));
   return out;
 }
 
