@@ -100,7 +100,8 @@ int view(const Args& args) {
   }
 
   std::unique_ptr<ViewSession> session;
-  ViewServer server(pageDir, {[&] { session->pageOpened(); }, [&](const std::string& m) { session->message(m); }});
+  ViewServer server(pageDir, {[&](uint64_t page) { session->pageOpened(page); },
+                             [&](uint64_t page, const std::string& m) { session->message(page, m); }});
   if (!server.listen(opt.host, opt.port, error)) {
     std::cerr << "fgsg view: " << error << "\n";
     return 1;

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <set>
+#include <map>
 #include <sstream>
 
 namespace fgsg::cli {
@@ -33,7 +33,8 @@ struct ViewServer::Impl {
   std::string staticDir;
   Handlers handlers;
   Server server;
-  std::set<Handle, std::owner_less<Handle>> pages;
+  std::map<Handle, uint64_t, std::owner_less<Handle>> pages;  // open pages and their ids
+  uint64_t nextPage = 0;
   struct Ticker {
     boost::asio::steady_timer timer;
     int milliseconds;
@@ -78,10 +79,18 @@ struct ViewServer::Impl {
   }
 
   void sendToAll(const std::string& payload, websocketpp::frame::opcode::value op) {
-    for (const Handle& h : pages) {
+    for (const auto& [h, id] : pages) {
       websocketpp::lib::error_code ec;
       server.send(h, payload, op, ec);  // a page that went away is dropped on close
     }
+  }
+
+  void sendTo(uint64_t page, const std::string& payload, websocketpp::frame::opcode::value op) {
+    for (const auto& [h, id] : pages)
+      if (id == page) {
+        websocketpp::lib::error_code ec;
+        server.send(h, payload, op, ec);
+      }
   }
 };
 
@@ -95,14 +104,16 @@ ViewServer::ViewServer(std::string staticDir, Handlers handlers) : impl_(std::ma
   s.server.set_reuse_addr(true);
   s.server.set_http_handler([this](Handle h) { impl_->serveFile(h); });
   s.server.set_open_handler([this](Handle h) {
-    impl_->pages.insert(h);
-    if (impl_->handlers.opened) impl_->handlers.opened();
+    const uint64_t id = impl_->nextPage++;
+    impl_->pages[h] = id;
+    if (impl_->handlers.opened) impl_->handlers.opened(id);
   });
   s.server.set_close_handler([this](Handle h) { impl_->pages.erase(h); });
   s.server.set_fail_handler([this](Handle h) { impl_->pages.erase(h); });
-  s.server.set_message_handler([this](Handle, Server::message_ptr m) {
-    if (m->get_opcode() == websocketpp::frame::opcode::text && impl_->handlers.message)
-      impl_->handlers.message(m->get_payload());
+  s.server.set_message_handler([this](Handle h, Server::message_ptr m) {
+    auto page = impl_->pages.find(h);
+    if (m->get_opcode() == websocketpp::frame::opcode::text && impl_->handlers.message && page != impl_->pages.end())
+      impl_->handlers.message(page->second, m->get_payload());
   });
 }
 
@@ -140,7 +151,7 @@ void ViewServer::stop() {
   post([this] {
     websocketpp::lib::error_code ec;
     impl_->server.stop_listening(ec);
-    for (const Handle& h : impl_->pages) impl_->server.close(h, websocketpp::close::status::going_away, "bye", ec);
+    for (const auto& [h, id] : impl_->pages) impl_->server.close(h, websocketpp::close::status::going_away, "bye", ec);
     for (auto& t : impl_->tickers) t->timer.cancel();
     impl_->server.stop();
   });
@@ -152,6 +163,14 @@ void ViewServer::sendTextToAll(std::string text) {
 
 void ViewServer::sendBinaryToAll(std::string bytes) {
   post([this, bytes = std::move(bytes)] { impl_->sendToAll(bytes, websocketpp::frame::opcode::binary); });
+}
+
+void ViewServer::sendText(uint64_t page, std::string text) {
+  post([this, page, text = std::move(text)] { impl_->sendTo(page, text, websocketpp::frame::opcode::text); });
+}
+
+void ViewServer::sendBinary(uint64_t page, std::string bytes) {
+  post([this, page, bytes = std::move(bytes)] { impl_->sendTo(page, bytes, websocketpp::frame::opcode::binary); });
 }
 
 void ViewServer::post(std::function<void()> task) { boost::asio::post(impl_->server.get_io_service(), std::move(task)); }

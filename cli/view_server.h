@@ -14,8 +14,8 @@ namespace fgsg::cli {
 class ViewServer {
  public:
   struct Handlers {
-    std::function<void()> opened;                         // a page connected
-    std::function<void(const std::string&)> message;      // a page sent a text message
+    std::function<void(uint64_t page)> opened;            // a page connected (ids count up)
+    std::function<void(uint64_t page, const std::string&)> message;  // a page sent a text message
   };
 
   // `staticDir` holds index.html, viewer.js and three/ (the build's share/fgsg/viewer).
@@ -33,6 +33,8 @@ class ViewServer {
 
   void sendTextToAll(std::string text);
   void sendBinaryToAll(std::string bytes);
+  void sendText(uint64_t page, std::string text);  // to one page (gone: dropped)
+  void sendBinary(uint64_t page, std::string bytes);
   void post(std::function<void()> task);  // runs `task` on the server's thread
   // Calls `tick` every `milliseconds` on the server's thread.
   void every(int milliseconds, std::function<void()> tick);

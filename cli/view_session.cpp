@@ -69,21 +69,21 @@ ViewSession::~ViewSession() {
   loader_.reset();  // waits for its background compile
 }
 
-void ViewSession::pageOpened() {
+void ViewSession::pageOpened(uint64_t page) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!lastInfo_.empty()) server_.sendTextToAll(lastInfo_);
+  if (!lastInfo_.empty()) server_.sendText(page, lastInfo_);
   if (!lastModelJson_.empty()) {
-    server_.sendTextToAll(lastModelJson_);
-    for (const std::string& p : lastParts_) server_.sendBinaryToAll(p);
+    server_.sendText(page, lastModelJson_);
+    for (const std::string& p : lastParts_) server_.sendBinary(page, p);
   }
-  if (!lastError_.empty()) server_.sendTextToAll(lastError_);
+  if (!lastError_.empty()) server_.sendText(page, lastError_);
 }
 
-void ViewSession::message(const std::string& text) {
+void ViewSession::message(uint64_t page, const std::string& text) {
   const Json j = Json::parse(text, nullptr, false);
   if (!j.is_discarded() && j.is_object() && j.value("type", "") == "pick" && j.contains("instance") &&
       j["instance"].is_number_unsigned())
-    return pick(j["instance"].get<uint32_t>());
+    return pick(page, j["instance"].get<uint32_t>());
   if (j.is_discarded() || !j.is_object() || j.value("type", "") != "set") return;  // not ours
   std::lock_guard<std::mutex> lock(mutex_);
   // The page sends every value its user has set; the others take the grammar's defaults.
@@ -234,14 +234,14 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
   for (std::string& p : parts) server_.sendBinaryToAll(std::move(p));
 }
 
-void ViewSession::pick(uint32_t instance) {
+void ViewSession::pick(uint64_t page, uint32_t instance) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (instance >= lastInstances_.instances.size()) return;
   const rt::Instance& inst = lastInstances_.instances[instance];
   const Json params = Json::parse(rt::io::instanceParamsJson(lastInstances_, inst), nullptr, false);
   const Eigen::Map<const Eigen::Matrix4d> t(inst.transform.data());
   const Eigen::Vector4d centre = t * Eigen::Vector4d(0.5, 0.5, 0.5, 1);
-  server_.sendTextToAll(Json{{"type", "picked"},
+  server_.sendText(page, Json{{"type", "picked"},
                              {"instance", instance},
                              {"symbol", inst.symbol < lastInstances_.symbols.size() ? lastInstances_.symbols[inst.symbol] : ""},
                              {"asset", inst.asset < lastInstances_.assets.size() ? lastInstances_.assets[inst.asset] : ""},

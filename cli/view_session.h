@@ -48,14 +48,14 @@ class ViewSession {
   ViewSession(const ViewSession&) = delete;
   ViewSession& operator=(const ViewSession&) = delete;
 
-  void pageOpened();                          // a new page gets the last info and model
-  void message(const std::string& json);      // a page's {"type":"set", ...}
+  void pageOpened(uint64_t page);             // a new page gets the last info and model
+  void message(uint64_t page, const std::string& json);  // a page's {"type":"set" / "pick", ...}
   void checkFiles();                          // the server's timer: re-derive on a change
 
  private:
   void work();
   void deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
-  void pick(uint32_t instance);  // a page's {"type":"pick","instance":N}: who placed it
+  void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const;
   std::map<std::string, std::filesystem::file_time_type> watchedFiles() const;
 
