@@ -16,6 +16,7 @@ packages=(
   zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev
   libwebsocketpp-dev libboost-dev
   chromium
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
 )
 
 missing=()

@@ -31,4 +31,10 @@ FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/lock_flo
   || { echo "FAIL: the installed fgsg cannot place collision-tested instances (FCL plugin)"; fail=1; }
 "$prefix/bin/fgsg" compile "$source/examples/koch.fgsg" -o "$prefix/libkoch.so" --quiet \
   || { echo "FAIL: the installed fgsg cannot compile a grammar library"; fail=1; }
+# The installed Python package finds its engine's plugins in PREFIX/lib.
+env -u FGSG_LIBDIR FGSG_CACHE_DIR="$prefix/cache" PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import fgsg
+r = fgsg.Grammar.from_file('$source/examples/koch.fgsg').generate(seed=2)
+assert len(r.indices) > 0
+" || { echo "FAIL: the installed Python package cannot derive a grammar"; fail=1; }
 exit $fail

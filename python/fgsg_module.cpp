@@ -1,0 +1,219 @@
+// fgsg's Python module, `fgsg._fgsg` (pybind11): compiles grammars and derives them in
+// process with the same engines as `fgsg run`, and hands the results to numpy without
+// copies. The Python face (GrammarError, Grammar.from_file ...) is python/fgsg/__init__.py.
+#include "backend/derive_messages.h"
+#include "backend/engine.h"
+#include "cli/derive_stats.h"
+#include "ir/pipeline.h"
+#include "runtime/assemble.h"
+#include "runtime/io/write_instances.h"
+#include "runtime/io/write_mesh.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace py = pybind11;
+using namespace fgsg;
+
+namespace {
+
+// A grammar's diagnostics, raised as fgsg._fgsg.CompileError(list of dicts); the package
+// turns it into fgsg.GrammarError.
+struct CompileError {
+  py::list diagnostics;
+};
+
+py::list diagnosticList(const frontend::Diagnostics& diags, const std::string& file) {
+  py::list out;
+  for (const auto& d : diags.all()) {
+    if (d.severity != frontend::Severity::Error) continue;
+    py::dict e;
+    e["file"] = file;
+    e["line"] = d.range.begin.line;
+    e["column"] = d.range.begin.col;
+    e["code"] = d.code;
+    e["message"] = d.message;
+    e["text"] = diags.format(d);
+    out.append(e);
+  }
+  return out;
+}
+
+// A derived model: the mesh fgsg run writes, the instances and the figures.
+struct Result {
+  rt::Mesh mesh;
+  rt::InstanceList instances;
+  rt::DeriveStats stats;
+};
+
+// A view of `size` elements of `data` as a numpy array of `shape`, kept alive by `owner`.
+template <typename T>
+py::array view(const T* data, std::vector<py::ssize_t> shape, py::object owner) {
+  return py::array_t<T>(shape, data, owner);
+}
+
+struct Grammar {
+  frontend::SourceFile source;
+  ir::Module module;
+  std::vector<std::string> dataDirs;  // the grammar's folder and its assets/ (as fgsg run)
+
+  static std::shared_ptr<Grammar> compile(const std::string& text, const std::string& name) {
+    auto g = std::make_shared<Grammar>();
+    g->source = frontend::SourceFile::make(name, text);
+    frontend::Diagnostics diags(&g->source);
+    if (!ir::compileSource(g->source, g->module, diags)) throw CompileError{diagnosticList(diags, name)};
+    const std::filesystem::path dir = std::filesystem::path(name).parent_path();
+    g->dataDirs = {(dir.empty() ? std::filesystem::path(".") : dir).string(), ((dir.empty() ? "." : dir) / "assets").string()};
+    return g;
+  }
+
+  static std::shared_ptr<Grammar> fromFile(const std::string& path) {
+    auto g = std::make_shared<Grammar>();
+    std::string error;
+    if (!ir::readSourceFile(path, g->source, error)) throw std::runtime_error(error);
+    return compile(g->source.text, path);
+  }
+
+  std::shared_ptr<Result> generate(uint64_t seed, const py::dict& attrs, const std::optional<std::string>& surface,
+                                   std::optional<uint64_t> maxShapes, const std::string& engineName) {
+    const auto engine = backend::parseEngine(engineName);
+    if (!engine) throw py::value_error("engine must be 'jit' or 'interp', got '" + engineName + "'");
+    rt::DeriveOptions options;
+    options.seed = seed;
+    if (maxShapes) options.maxShapes = *maxShapes;
+    if (surface) options.surfaceOverride = std::filesystem::absolute(*surface).string();
+    for (const auto& [key, value] : attrs) {
+      std::string text;
+      if (py::isinstance<py::bool_>(value)) text = value.cast<bool>() ? "true" : "false";
+      else if (py::isinstance<py::str>(value)) text = value.cast<std::string>();
+      else text = py::str(value).cast<std::string>();
+      options.attrOverrides.push_back({key.cast<std::string>(), text});
+    }
+    auto result = std::make_shared<Result>();
+    std::string error;
+    frontend::Diagnostics diags(&source);
+    {
+      py::gil_scoped_release release;  // other Python threads derive meanwhile
+      rt::AssetLibrary assets;
+      for (const std::string& d : dataDirs) {
+        assets.addSearchDir(d);
+        options.assetDirs.push_back(d);
+      }
+      rt::DeriveResult derived = backend::derive(*engine, module, source.text, options, assets);
+      backend::addDeriveMessages(derived, diags);
+      if (!diags.hasErrors()) {
+        std::vector<int> meshOf;
+        if (!rt::resolveAssets(derived.instances, assets, meshOf, error)) {
+          error = source.name + ": " + error;
+        } else {
+          result->mesh = rt::assembleInstances(derived.instances, assets, meshOf);
+          result->instances = std::move(derived.instances);
+          result->stats = derived.stats;
+        }
+      }
+    }
+    if (diags.hasErrors()) throw CompileError{diagnosticList(diags, source.name)};
+    if (!error.empty()) throw std::runtime_error(error);
+    return result;
+  }
+
+  py::list attrs() const {
+    py::list out;
+    for (const ir::Attr& a : module.attrs) out.append(a.name);
+    return out;
+  }
+};
+
+py::array instanceArray(const std::shared_ptr<Result>& r) {
+  // asset, symbol, transform (4x4, row-major as numpy reads it), color, params slice.
+  struct Row {
+    uint32_t asset, symbol;
+    double transform[4][4];
+    float color[3];
+    uint32_t paramOffset, paramCount;
+  };
+  py::dtype dt = py::dtype::from_args(py::list(py::make_tuple(
+      py::make_tuple("asset", "<u4"), py::make_tuple("symbol", "<u4"),
+      py::make_tuple("transform", "<f8", py::make_tuple(4, 4)), py::make_tuple("color", "<f4", py::make_tuple(3)),
+      py::make_tuple("param_offset", "<u4"), py::make_tuple("param_count", "<u4"))));
+  const auto& list = r->instances.instances;
+  py::array out(dt, std::vector<py::ssize_t>{static_cast<py::ssize_t>(list.size())});
+  auto* rows = static_cast<char*>(out.mutable_data());
+  const size_t stride = static_cast<size_t>(dt.itemsize());
+  for (size_t i = 0; i < list.size(); ++i) {
+    const rt::Instance& inst = list[i];
+    char* row = rows + i * stride;
+    std::memcpy(row + 0, &inst.asset, 4);
+    std::memcpy(row + 4, &inst.symbol, 4);
+    double m[16];
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) m[4 * a + b] = inst.transform[4 * b + a];  // column-major to rows
+    std::memcpy(row + 8, m, sizeof m);
+    std::memcpy(row + 8 + sizeof m, inst.color.data(), 12);
+    std::memcpy(row + 8 + sizeof m + 12, &inst.firstParam, 4);
+    std::memcpy(row + 8 + sizeof m + 16, &inst.paramCount, 4);
+  }
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_fgsg, m) {
+  m.doc() = "fgsg's engine: compile .fgsg grammars and derive them (see the fgsg package)";
+  static py::exception<CompileError> compileError(m, "CompileError");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const CompileError& e) {
+      PyErr_SetObject(compileError.ptr(), e.diagnostics.ptr());
+    }
+  });
+
+  py::class_<Result, std::shared_ptr<Result>>(m, "Result")
+      .def_property_readonly("positions", [](const std::shared_ptr<Result>& r) {
+        return view(r->mesh.positions.data(), {py::ssize_t(r->mesh.vertexCount()), 3}, py::cast(r));
+      })
+      .def_property_readonly("normals", [](const std::shared_ptr<Result>& r) {
+        return view(r->mesh.normals.data(), {py::ssize_t(r->mesh.vertexCount()), 3}, py::cast(r));
+      })
+      .def_property_readonly("colors", [](const std::shared_ptr<Result>& r) {
+        return view(r->mesh.colors.data(), {py::ssize_t(r->mesh.colors.size() / 3), 3}, py::cast(r));
+      })
+      .def_property_readonly("indices", [](const std::shared_ptr<Result>& r) {
+        return view(r->mesh.indices.data(), {py::ssize_t(r->mesh.triangleCount()), 3}, py::cast(r));
+      })
+      .def_property_readonly("instances", &instanceArray)
+      .def_property_readonly("params", [](const std::shared_ptr<Result>& r) {
+        return view(r->instances.params.data(), {py::ssize_t(r->instances.params.size())}, py::cast(r));
+      })
+      .def("instance_params_json", [](const Result& r, size_t i) {
+        if (i >= r.instances.instances.size()) throw py::index_error("no instance " + std::to_string(i));
+        return rt::io::instanceParamsJson(r.instances, r.instances.instances[i]);
+      })
+      .def_property_readonly("assets", [](const Result& r) { return r.instances.assets; })
+      .def_property_readonly("symbols", [](const Result& r) { return r.instances.symbols; })
+      .def_property_readonly("stats", [](const Result& r) {
+        py::dict d;
+        for (const auto& [name, value] : cli::deriveStatFigures(r.stats, r.mesh.triangleCount(), r.mesh.lineCount()))
+          d[py::str(name)] = value;
+        return d;
+      })
+      .def("write", [](const Result& r, const std::string& path) {
+        std::string error;
+        if (!rt::io::writeMesh(r.mesh, path, error)) throw std::runtime_error(error);
+      });
+
+  py::class_<Grammar, std::shared_ptr<Grammar>>(m, "Grammar")
+      .def_static("compile", &Grammar::compile, py::arg("text"), py::arg("name"))
+      .def_static("from_file", &Grammar::fromFile, py::arg("path"))
+      .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
+           py::arg("max_shapes"), py::arg("engine"))
+      .def_property_readonly("attrs", &Grammar::attrs)
+      .def_property_readonly("name", [](const Grammar& g) { return g.source.name; });
+}

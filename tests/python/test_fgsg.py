@@ -1,0 +1,110 @@
+"""The Python package `fgsg` (python/): results equal `fgsg run`'s bytes, errors carry
+their location, numpy arrays are views, and threads derive concurrently with the same
+results as one after another. Run by CTest with PYTHONPATH=build/python and FGSG_BINARY
+(the fgsg executable) and FGSG_SOURCE (the source tree) set."""
+import os
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import fgsg
+
+SOURCE = os.environ["FGSG_SOURCE"]
+FGSG = os.environ["FGSG_BINARY"]
+MUELLER = os.path.join(SOURCE, "examples", "mueller_building.fgsg")
+PLANT = os.path.join(SOURCE, "examples", "abop_plant.fgsg")
+
+
+def run_cli(grammar, out, *args):
+    subprocess.run([FGSG, "run", grammar, "-o", str(out), "--quiet", *args], check=True)
+    return out.read_bytes()
+
+
+@pytest.mark.parametrize("engine", ["jit", "interp"])
+def test_results_equal_fgsg_run_bytes(tmp_path, engine):
+    g = fgsg.Grammar.from_file(MUELLER)
+    r = g.generate(seed=7, attrs={"lot_width": 24, "roof_angle": 40.5}, engine=engine)
+    r.write(tmp_path / "py.glb")
+    cli = run_cli(MUELLER, tmp_path / "cli.glb", "--seed", "7", "--set", "lot_width=24", "--set", "roof_angle=40.5")
+    assert (tmp_path / "py.glb").read_bytes() == cli
+    assert r.stats["triangles"] == len(r.indices)
+
+
+def test_a_parametric_lsystem_equals_fgsg_run(tmp_path):
+    r = fgsg.Grammar.from_file(PLANT).generate(seed=3)
+    r.write(tmp_path / "plant.obj")
+    assert (tmp_path / "plant.obj").read_bytes() == run_cli(PLANT, tmp_path / "cli.obj", "--seed", "3")
+
+
+def test_arrays_are_views_of_the_result():
+    r = fgsg.Grammar.from_file(MUELLER).generate(seed=1)
+    for a, dtype, width in ((r.positions, np.float32, 3), (r.normals, np.float32, 3), (r.indices, np.uint32, 3)):
+        assert a.dtype == dtype and a.shape[1] == width
+        assert not a.flags.owndata  # the engine's memory, kept alive by the array
+    assert r.indices.max() < len(r.positions)
+    positions = r.positions
+    del r
+    assert np.isfinite(positions).all()  # still valid: the view holds the result
+
+
+def test_instances_are_a_structured_array():
+    r = fgsg.Grammar.from_file(MUELLER).generate(seed=1)
+    inst = r.instances
+    assert inst.dtype.names == ("asset", "symbol", "transform", "color", "param_offset", "param_count")
+    assert len(inst) == r.stats["instances"]
+    assert inst["transform"].shape == (len(inst), 4, 4)
+    np.testing.assert_array_equal(inst["transform"][:, 3, :], np.tile([0, 0, 0, 1], (len(inst), 1)))
+    assert {r.assets[a] for a in inst["asset"]} >= {"wall.obj", "win.obj"}
+    assert all(0 <= s < len(r.symbols) for s in inst["symbol"])
+
+
+def test_instance_parameters_keep_their_types():
+    g = fgsg.Grammar.from_text('A ~> B(2.5, true, "red", (1, 2, 3));\nB(x, b, s, v) ~> I("cube");\n', "params.fgsg")
+    r = g.generate()
+    assert r.instance_params(0) == [2.5, True, "red", [1, 2, 3]]
+    with pytest.raises(IndexError):
+        r.instance_params(5)
+
+
+def test_a_grammar_error_carries_its_location():
+    with pytest.raises(fgsg.GrammarError) as e:
+        fgsg.Grammar.from_text("A ~> B;\nB ~> S(1, 1;\n", "broken.fgsg")
+    assert (e.value.file, e.value.line, e.value.column, e.value.code) == ("broken.fgsg", 2, 12, "E002")
+    assert "expected ',' or ')'" in e.value.message
+    assert "broken.fgsg:2:12: error[E002]" in str(e.value)
+
+
+def test_a_derivation_error_carries_its_location():
+    g = fgsg.Grammar.from_text("attr w = 2;\nA ~> S(w, 1, 1) I(\"cube\");\n", "attrs.fgsg")
+    with pytest.raises(fgsg.GrammarError) as e:
+        g.generate(attrs={"w": "wide"})
+    assert e.value.code.startswith("R")
+    assert e.value.file == "attrs.fgsg"
+    assert "w" in e.value.message
+    with pytest.raises(ValueError):
+        g.generate(engine="gpu")
+
+
+def test_a_missing_file_is_an_error():
+    with pytest.raises(RuntimeError, match="nothing.fgsg"):
+        fgsg.Grammar.from_file(os.path.join(SOURCE, "examples", "nothing.fgsg"))
+
+
+def test_threads_derive_concurrently_with_the_sequential_results():
+    g = fgsg.Grammar.from_file(MUELLER)
+    seeds = list(range(1, 9))
+    sequential = [g.generate(seed=s, attrs={"lot_width": 14 + s}).positions.copy() for s in seeds]
+    results = [None] * len(seeds)
+
+    def work(i):
+        results[i] = g.generate(seed=seeds[i], attrs={"lot_width": 14 + seeds[i]}).positions.copy()
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(seeds))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for a, b in zip(sequential, results):
+        np.testing.assert_array_equal(a, b)
