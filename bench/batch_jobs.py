@@ -26,7 +26,7 @@ def main():
         assert all(batch.run_job(j)["ok"] for j in seq)
         sequential = time.monotonic() - t
         t = time.monotonic()
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0")
         client = Client(cluster)
         startup = time.monotonic() - t
         par = into("par")

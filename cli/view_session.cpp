@@ -29,7 +29,11 @@ Json attrDefault(const ir::Module& m, const ir::Attr& a) {
     case ir::Type::Num: return a.value.num;
     case ir::Type::Bool: return a.value.num != 0;
     case ir::Type::Str: return m.strings.at(static_cast<size_t>(a.value.num));
-    case ir::Type::Vec3: break;
+    case ir::Type::Vec3: {  // as --set writes it: x,y,z
+      std::ostringstream text;
+      text << a.value.vec[0] << "," << a.value.vec[1] << "," << a.value.vec[2];
+      return text.str();
+    }
   }
   return nullptr;
 }

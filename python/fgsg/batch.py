@@ -137,7 +137,7 @@ def main(argv=None):
         cluster = None
     else:
         cluster = LocalCluster(n_workers=max(1, args.workers), threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         client = Client(cluster)
     try:
         outcomes = run_batch(jobs, client, progress=progress)

@@ -50,6 +50,7 @@ bool facesStayUpright(const Mesh& m, Mesh::VertexHandle moved, const Vec3& to, M
 }
 
 void splitLongEdges(Mesh& m, double high, const SurfaceProjection& project) {
+  // Every split halves an edge longer than `high`: the passes end once all are shorter.
   for (bool again = true; again;) {
     again = false;
     const size_t edges = m.n_edges();
@@ -94,8 +95,10 @@ double angleAt(const Vec3& a, const Vec3& b, const Vec3& c) {
 // none is left: each planar region (an input face cut by seams, say) then holds its
 // constrained Delaunay triangulation, whatever triangulation it came in.
 void flipCoplanarToDelaunay(Mesh& m) {
-  for (bool again = true; again;) {
-    again = false;
+  // Each flip makes the region more Delaunay, so passes end; the bound only guards
+  // against rounding making two configurations flip back and forth.
+  for (int pass = 0, again = 1; again && pass < 100; ++pass) {
+    again = 0;
     for (size_t i = 0; i < m.n_edges(); ++i) {
       const Mesh::EdgeHandle e(static_cast<int>(i));
       if (!m.is_flip_ok(e)) continue;
@@ -109,7 +112,7 @@ void flipCoplanarToDelaunay(Mesh& m) {
       // The flipped pair must be a convex quad's diagonal (both new triangles upright).
       if (triangleNormal(a, d, c).dot(n1) <= 0 || triangleNormal(b, c, d).dot(n1) <= 0) continue;
       m.flip(e);
-      again = true;
+      again = 1;
     }
   }
 }
