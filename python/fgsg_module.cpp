@@ -3,6 +3,8 @@
 // copies. The Python face (GrammarError, Grammar.from_file ...) is python/fgsg/__init__.py.
 #include "backend/derive_messages.h"
 #include "backend/engine.h"
+#include "backend/interp/interpreter.h"
+#include "runtime/abi.h"
 #include "cli/derive_stats.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
@@ -12,6 +14,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <dlfcn.h>
 
 #include <filesystem>
 #include <memory>
@@ -62,6 +66,31 @@ struct Grammar {
   frontend::SourceFile source;
   ir::Module module;
   std::vector<std::string> dataDirs;  // the grammar's folder and its assets/ (as fgsg run)
+  // A library built by `fgsg compile`: its code runs instead of the JIT's (same results).
+  const FgsgProgram* program = nullptr;
+  std::shared_ptr<void> library;  // dlclose'd with the last Grammar using it
+
+  static std::shared_ptr<Grammar> fromLibrary(const std::string& path, std::string name) {
+    if (name.empty()) {  // libNAME.so
+      name = std::filesystem::path(path).stem().string();
+      if (name.rfind("lib", 0) == 0) name = name.substr(3);
+    }
+    void* handle = dlopen(std::filesystem::absolute(path).c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw std::runtime_error(path + ": cannot load the library: " + dlerror());
+    std::shared_ptr<void> library(handle, [](void* h) { dlclose(h); });
+    const std::string symbol = "fgsg_program_" + name;
+    const auto* program = static_cast<const FgsgProgram*>(dlsym(handle, symbol.c_str()));
+    if (!program)
+      throw std::runtime_error(path + ": no " + symbol + " in it (not built by fgsg compile, or another NAME: pass name=)");
+    if (program->abiVersion != FGSG_ABI_VERSION)
+      throw std::runtime_error(path + ": compiled for ABI version " + std::to_string(program->abiVersion) +
+                               ", this fgsg runs " + std::to_string(FGSG_ABI_VERSION) + ": compile it again");
+    if (!program->source) throw std::runtime_error(path + ": the program carries no grammar text");
+    auto g = compile(program->source, program->sourceName && *program->sourceName ? program->sourceName : path);
+    g->program = program;
+    g->library = std::move(library);
+    return g;
+  }
 
   static std::shared_ptr<Grammar> compile(const std::string& text, const std::string& name) {
     auto g = std::make_shared<Grammar>();
@@ -105,7 +134,8 @@ struct Grammar {
         assets.addSearchDir(d);
         options.assetDirs.push_back(d);
       }
-      rt::DeriveResult derived = backend::derive(*engine, module, source.text, options, assets);
+      rt::DeriveResult derived = program ? backend::deriveCompiled(module, *program, options, assets)
+                                         : backend::derive(*engine, module, source.text, options, assets);
       backend::addDeriveMessages(derived, diags);
       if (!diags.hasErrors()) {
         std::vector<int> meshOf;
@@ -212,6 +242,7 @@ PYBIND11_MODULE(_fgsg, m) {
   py::class_<Grammar, std::shared_ptr<Grammar>>(m, "Grammar")
       .def_static("compile", &Grammar::compile, py::arg("text"), py::arg("name"))
       .def_static("from_file", &Grammar::fromFile, py::arg("path"))
+      .def_static("from_library", &Grammar::fromLibrary, py::arg("path"), py::arg("name"))
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
            py::arg("max_shapes"), py::arg("engine"))
       .def_property_readonly("attrs", &Grammar::attrs)

@@ -95,6 +95,12 @@ class Grammar:
         return cls(_raising(_fgsg.Grammar.from_file, os.fspath(path)))
 
     @classmethod
+    def from_library(cls, path, name=""):
+        """Loads a grammar library built by `fgsg compile FILE -o libNAME.so`: its compiled
+        code runs (no JIT); `name` is NAME when the file is named otherwise."""
+        return cls(_raising(_fgsg.Grammar.from_library, os.fspath(path), name))
+
+    @classmethod
     def from_text(cls, text, name="<text>.fgsg"):
         """Compiles grammar `text`; `name` names it in errors (and its folder holds its assets)."""
         return cls(_raising(_fgsg.Grammar.compile, text, name))

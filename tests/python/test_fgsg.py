@@ -38,6 +38,16 @@ def test_a_parametric_lsystem_equals_fgsg_run(tmp_path):
     assert (tmp_path / "plant.obj").read_bytes() == run_cli(PLANT, tmp_path / "cli.obj", "--seed", "3")
 
 
+def test_a_compiled_library_runs_with_the_same_bytes(tmp_path):
+    library = tmp_path / "libplant.so"
+    subprocess.run([FGSG, "compile", PLANT, "-o", str(library), "--quiet"], check=True)
+    g = fgsg.Grammar.from_library(library)
+    g.generate(seed=5).write(tmp_path / "lib.glb")
+    assert (tmp_path / "lib.glb").read_bytes() == run_cli(PLANT, tmp_path / "cli.glb", "--seed", "5")
+    with pytest.raises(RuntimeError, match="no fgsg_program_other"):
+        fgsg.Grammar.from_library(library, name="other")
+
+
 def test_arrays_are_views_of_the_result():
     r = fgsg.Grammar.from_file(MUELLER).generate(seed=1)
     for a, dtype, width in ((r.positions, np.float32, 3), (r.normals, np.float32, 3), (r.indices, np.uint32, 3)):
