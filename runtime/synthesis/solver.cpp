@@ -336,7 +336,6 @@ class Solver {
   // model). Lists the reopened sites in `reopened`; false when the region cannot be made
   // consistent (propagation then stopped halfway: the caller takes it back).
   bool reopen(int64_t bad, int radius, std::vector<int32_t>& reopened) {
-    constexpr int W = NW;
     const SiteGraph& g = P_.g;
     reopened.clear();
     const Cell b = M_.cell(bad);
