@@ -7,7 +7,8 @@ fgsg="$1" source="$2"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 fail=0
-grammar="$source/examples/fig17_collision_only.fgsg"  # about 2 s: the genus-7 surface, then the pattern
+grammar="$source/examples/fig17_collision_only.fgsg"  # about 2 s here: the genus-7 surface, then the pattern
+export FGSG_PROGRESS_DELAY=0.3  # a faster machine still shows it
 script -q -e -c "'$fgsg' run '$grammar' -o '$out/a.glb'" /dev/null > "$out/tty.txt" 2>&1 </dev/null
 code=$?
 if [ $code -ne 0 ] || ! grep -q "fgsg run: deriving [0-9.]* s" "$out/tty.txt" || ! grep -q "wrote $out/a.glb" "$out/tty.txt"; then
