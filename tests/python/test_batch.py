@@ -92,3 +92,13 @@ def test_malformed_jobs_are_usage_errors(tmp_path, capsys):
     (tmp_path / "jobs.json").write_text(json.dumps([{"grammar": "a.fgsg"}]))
     assert batch.main([str(tmp_path / "jobs.json")]) == 2
     assert 'job 0 needs "output"' in capsys.readouterr().err
+
+
+def test_the_example_batches_load_and_their_jobs_run(tmp_path):
+    for name, count in (("city.json", 100), ("forest.json", 16)):
+        jobs = batch.load_jobs(os.path.join(SOURCE, "examples", "batch", name))
+        assert len(jobs) == count
+        for job in jobs[:2]:  # two neighbouring lots or tiles, written elsewhere
+            outcome = batch.run_job(dict(job, output=str(tmp_path / name / os.path.basename(job["output"]))))
+            assert outcome["ok"], outcome
+            assert outcome["triangles"] > 0
