@@ -1,4 +1,4 @@
-"""fgsg.batch throughput (#21): the 100 lots of examples/batch/city.json (Muller's building
+"""fgsg.batch throughput (#21): the 100 lots of examples/city_jobs.json (Muller's building
 with per-lot seeds and sizes), jobs per second run one after another in this process
 against a dask LocalCluster of W worker processes (start-up and shut-down of the cluster
 counted separately). Prints one JSON line.
@@ -17,7 +17,7 @@ from fgsg import batch
 def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     workers = int(sys.argv[1]) if len(sys.argv) > 1 else 2
-    jobs = batch.load_jobs(os.path.join(root, "examples", "batch", "city.json"))
+    jobs = batch.load_jobs(os.path.join(root, "examples", "city_jobs.json"))
     with tempfile.TemporaryDirectory() as tmp:
         def into(folder):
             return [dict(j, output=os.path.join(tmp, folder, os.path.basename(j["output"]))) for j in jobs]

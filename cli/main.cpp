@@ -40,6 +40,9 @@ usage:
   fgsg view FILE [--port N] [--host ADDRESS] [--seed N] [--set name=value]... [--surface mesh.off]
                            a live viewer in the browser: re-derives when FILE is saved or
                            an attribute is changed in the page (fgsg view --help)
+  fgsg batch JOBS.json [--scheduler tcp://host:port] [--workers N]
+                           run many jobs (grammar, seed, attrs, output) on Dask, resumable,
+                           with a manifest of every job's outcome (docs/scale.md)
   fgsg --help | --version
 
 run writes FILE's stem + .glb in the current directory when -o is not given.
@@ -74,7 +77,8 @@ Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
 Documentation: docs/language.md, docs/cli.md.
 )";
 
-const char* const kCommands[] = {"run", "check", "ir", "synth", "repl", "compile", "atlas", "evolve", "field", "view"};
+const char* const kCommands[] = {"run",     "check", "ir",    "synth", "repl", "compile",
+                                 "atlas",   "evolve", "field", "view",  "batch"};
 
 // What `fgsg CMD --help` prints: the command's lines of the overall help (from "  fgsg
 // CMD" to the next command), the notes on its options that follow the list (run,
@@ -115,7 +119,7 @@ int main(int argc, char** argv) {
   args.erase(args.begin());
   // `fgsg CMD --help` (or -h) anywhere in the arguments: the command's usage, exit 0.
   const bool known = std::find(std::begin(kCommands), std::end(kCommands), cmd) != std::end(kCommands);
-  if (known && cmd != "view" && std::find_if(args.begin(), args.end(), [](const std::string& a) {
+  if (known && cmd != "view" && cmd != "batch" && std::find_if(args.begin(), args.end(), [](const std::string& a) {
                                   return a == "--help" || a == "-h";
                                 }) != args.end()) {
     std::cout << commandHelp(cmd);
@@ -134,6 +138,7 @@ int main(int argc, char** argv) {
     if (cmd == "evolve") return fgsg::cli::evolveCommand(args);
     if (cmd == "field") return fgsg::cli::fieldCommand(args);
     if (cmd == "view") return fgsg::cli::viewCommand(args);
+    if (cmd == "batch") return fgsg::cli::batchCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -145,6 +150,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field, view; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field, view, batch; see fgsg --help)\n";
   return 2;
 }

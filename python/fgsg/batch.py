@@ -4,6 +4,8 @@
 JOBS.json is a list of jobs (or {"jobs": [...]}); each job is an object
     {"grammar": "city.fgsg", "output": "out/lot-17.glb",        # required
      "seed": 17, "attrs": {"lot_width": 24}, "surface": "tile.off", "id": "lot-17"}
+("library": "libcity.so" instead of "grammar": a grammar built by `fgsg compile`, whose
+compiled code runs; "name" if the file is not libNAME.so)
 with paths relative to the JOBS file's folder. The jobs are mapped over a dask.distributed
 cluster: an embedded LocalCluster (N worker processes, one thread each) unless
 --scheduler names a running scheduler. Each worker compiles a grammar once and keeps it.
@@ -35,14 +37,15 @@ def load_jobs(path):
     for i, job in enumerate(jobs):
         if not isinstance(job, dict):
             raise ValueError(f"{path}: job {i} is not an object")
-        for field in ("grammar", "output"):
-            if not isinstance(job.get(field), str) or not job[field]:
-                raise ValueError(f"{path}: job {i} needs \"{field}\" (a path)")
+        if not isinstance(job.get("grammar") or job.get("library"), str):
+            raise ValueError(f"{path}: job {i} needs \"grammar\" (or \"library\", a compiled grammar)")
+        if not isinstance(job.get("output"), str) or not job["output"]:
+            raise ValueError(f"{path}: job {i} needs \"output\" (a path)")
         j = dict(job)
         j.setdefault("id", str(i))
         j.setdefault("seed", 1)
         j.setdefault("attrs", {})
-        for field in ("grammar", "output", "surface"):
+        for field in ("grammar", "library", "output", "surface"):
             if j.get(field):
                 j[field] = os.path.normpath(os.path.join(base, j[field]))
         out.append(j)
@@ -50,9 +53,9 @@ def load_jobs(path):
 
 
 @functools.lru_cache(maxsize=16)
-def _grammar(path):
+def _grammar(path, library=False, name=""):
     import fgsg  # in the worker's process
-    return fgsg.Grammar.from_file(path)
+    return fgsg.Grammar.from_library(path, name) if library else fgsg.Grammar.from_file(path)
 
 
 def run_job(job):
@@ -62,7 +65,9 @@ def run_job(job):
     start = time.monotonic()
     outcome = {"id": job["id"], "output": job["output"]}
     try:
-        result = _grammar(job["grammar"]).generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"))
+        grammar = (_grammar(job["library"], True, job.get("name", "")) if job.get("library")
+                   else _grammar(job["grammar"]))
+        result = grammar.generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"))
         os.makedirs(os.path.dirname(job["output"]) or ".", exist_ok=True)
         result.write(job["output"])
         outcome.update(ok=True, triangles=result.stats["triangles"], instances=result.stats["instances"])
@@ -113,7 +118,8 @@ def write_manifest(path, outcomes):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python -m fgsg.batch", description="Runs fgsg jobs on Dask.")
+    parser = argparse.ArgumentParser(prog=os.environ.get("FGSG_BATCH_PROG", "python -m fgsg.batch"),
+                                     description="Runs fgsg jobs on Dask (docs/scale.md).")
     parser.add_argument("jobs", help="JOBS.json: a list of {grammar, output, seed, attrs, surface, id}")
     parser.add_argument("--scheduler", help="a running dask scheduler, tcp://host:port (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 2,

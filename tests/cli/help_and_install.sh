@@ -5,7 +5,7 @@
 set -u
 fgsg="$1" source="$2" build="$3"
 fail=0
-for cmd in run check ir synth repl compile atlas evolve field view; do
+for cmd in run check ir synth repl compile atlas evolve field view batch; do
   out="$("$fgsg" "$cmd" --help 2>&1 </dev/null)"
   code=$?
   if [ "$code" -ne 0 ] || ! grep -q "usage" <<<"$out" || ! grep -q "fgsg $cmd" <<<"$out"; then

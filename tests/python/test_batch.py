@@ -92,13 +92,27 @@ def test_malformed_jobs_are_usage_errors(tmp_path, capsys):
     (tmp_path / "jobs.json").write_text(json.dumps([{"grammar": "a.fgsg"}]))
     assert batch.main([str(tmp_path / "jobs.json")]) == 2
     assert 'job 0 needs "output"' in capsys.readouterr().err
+    (tmp_path / "jobs.json").write_text(json.dumps([{"output": "a.glb"}]))
+    assert batch.main([str(tmp_path / "jobs.json")]) == 2
+    assert 'job 0 needs "grammar"' in capsys.readouterr().err
 
 
 def test_the_example_batches_load_and_their_jobs_run(tmp_path):
-    for name, count in (("city.json", 100), ("forest.json", 16)):
-        jobs = batch.load_jobs(os.path.join(SOURCE, "examples", "batch", name))
+    for name, count in (("city_jobs.json", 100), ("forest_jobs.json", 16)):
+        jobs = batch.load_jobs(os.path.join(SOURCE, "examples", name))
         assert len(jobs) == count
         for job in jobs[:2]:  # two neighbouring lots or tiles, written elsewhere
             outcome = batch.run_job(dict(job, output=str(tmp_path / name / os.path.basename(job["output"]))))
             assert outcome["ok"], outcome
             assert outcome["triangles"] > 0
+
+
+def test_a_job_may_run_a_compiled_library(tmp_path):
+    import subprocess
+    library = tmp_path / "libplant.so"
+    subprocess.run([os.environ["FGSG_BINARY"], "compile", PLANT, "-o", str(library), "--quiet"], check=True)
+    from_source = batch.run_job({"id": "s", "grammar": PLANT, "seed": 4, "attrs": {}, "output": str(tmp_path / "s.glb")})
+    from_library = batch.run_job({"id": "l", "library": str(library), "seed": 4, "attrs": {},
+                                  "output": str(tmp_path / "l.glb")})
+    assert from_source["ok"] and from_library["ok"]
+    assert (tmp_path / "s.glb").read_bytes() == (tmp_path / "l.glb").read_bytes()
