@@ -8,6 +8,7 @@
 #include "cli/derive_stats.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
+#include "runtime/io/read_lots.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
 
@@ -110,13 +111,20 @@ struct Grammar {
   }
 
   std::shared_ptr<Result> generate(uint64_t seed, const py::dict& attrs, const std::optional<std::string>& surface,
-                                   std::optional<uint64_t> maxShapes, const std::string& engineName) {
+                                   std::optional<uint64_t> maxShapes, const std::string& engineName,
+                                   const std::optional<std::string>& lots) {
     const auto engine = backend::parseEngine(engineName);
     if (!engine) throw py::value_error("engine must be 'jit' or 'interp', got '" + engineName + "'");
     rt::DeriveOptions options;
     options.seed = seed;
     if (maxShapes) options.maxShapes = *maxShapes;
     if (surface) options.surfaceOverride = std::filesystem::absolute(*surface).string();
+    if (lots) {  // as fgsg run --lots: the axiom once per lot, its footprint and properties
+      size_t skipped = 0;
+      std::string error;
+      if (!rt::readLots(*lots, options.lots, skipped, error)) throw std::runtime_error(error);
+      options.lotsName = *lots;
+    }
     for (const auto& [key, value] : attrs) {
       std::string text;
       if (py::isinstance<py::bool_>(value)) text = value.cast<bool>() ? "true" : "false";
@@ -244,7 +252,7 @@ PYBIND11_MODULE(_fgsg, m) {
       .def_static("from_file", &Grammar::fromFile, py::arg("path"))
       .def_static("from_library", &Grammar::fromLibrary, py::arg("path"), py::arg("name"))
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
-           py::arg("max_shapes"), py::arg("engine"))
+           py::arg("max_shapes"), py::arg("engine"), py::arg("lots"))
       .def_property_readonly("attrs", &Grammar::attrs)
       .def_property_readonly("name", [](const Grammar& g) { return g.source.name; });
 }

@@ -110,9 +110,11 @@ class Grammar:
         """The names of the grammar's attributes (settable in generate)."""
         return list(self._native.attrs)
 
-    def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit"):
+    def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit", lots=None):
         """Derives the grammar: `seed`, attribute values by name (numbers, booleans,
-        strings), a surface mesh file replacing the grammar's, a shape limit, and the
-        engine ("jit", or "interp": the reference interpreter; the results are equal)."""
+        strings), a surface mesh file replacing the grammar's, a shape limit, the engine
+        ("jit", or "interp": the reference interpreter; the results are equal), and lots:
+        a GeoJSON or OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots)."""
         return Result(_raising(self._native.generate, int(seed), dict(attrs or {}),
-                               None if surface is None else os.fspath(surface), max_shapes, engine))
+                               None if surface is None else os.fspath(surface), max_shapes, engine,
+                               None if lots is None else os.fspath(lots)))

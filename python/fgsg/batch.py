@@ -3,7 +3,8 @@
 
 JOBS.json is a list of jobs (or {"jobs": [...]}); each job is an object
     {"grammar": "city.fgsg", "output": "out/lot-17.glb",        # required
-     "seed": 17, "attrs": {"lot_width": 24}, "surface": "tile.off", "id": "lot-17"}
+     "seed": 17, "attrs": {"lot_width": 24}, "surface": "tile.off", "id": "lot-17",
+     "lots": "block-3.geojson"}                                   # footprints: fgsg run --lots
 ("library": "libcity.so" instead of "grammar": a grammar built by `fgsg compile`, whose
 compiled code runs; "name" if the file is not libNAME.so)
 with paths relative to the JOBS file's folder. The jobs are mapped over a dask.distributed
@@ -45,7 +46,7 @@ def load_jobs(path):
         j.setdefault("id", str(i))
         j.setdefault("seed", 1)
         j.setdefault("attrs", {})
-        for field in ("grammar", "library", "output", "surface"):
+        for field in ("grammar", "library", "output", "surface", "lots"):
             if j.get(field):
                 j[field] = os.path.normpath(os.path.join(base, j[field]))
         out.append(j)
@@ -67,7 +68,8 @@ def run_job(job):
     try:
         grammar = (_grammar(job["library"], True, job.get("name", "")) if job.get("library")
                    else _grammar(job["grammar"]))
-        result = grammar.generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"))
+        result = grammar.generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"),
+                                  lots=job.get("lots"))
         os.makedirs(os.path.dirname(job["output"]) or ".", exist_ok=True)
         result.write(job["output"])
         outcome.update(ok=True, triangles=result.stats["triangles"], instances=result.stats["instances"])

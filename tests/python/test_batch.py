@@ -116,3 +116,15 @@ def test_a_job_may_run_a_compiled_library(tmp_path):
                                   "output": str(tmp_path / "l.glb")})
     assert from_source["ok"] and from_library["ok"]
     assert (tmp_path / "s.glb").read_bytes() == (tmp_path / "l.glb").read_bytes()
+
+
+def test_a_job_may_derive_lot_footprints(tmp_path):
+    import subprocess
+    city = os.path.join(SOURCE, "examples", "city.fgsg")
+    lots = os.path.join(SOURCE, "examples", "city", "lots.geojson")
+    outcome = batch.run_job({"id": "block", "grammar": city, "seed": 2, "attrs": {}, "lots": lots,
+                             "output": str(tmp_path / "block.glb")})
+    assert outcome["ok"], outcome
+    subprocess.run([os.environ["FGSG_BINARY"], "run", city, "--lots", lots, "--seed", "2", "-o",
+                    str(tmp_path / "cli.glb"), "--quiet"], check=True)
+    assert (tmp_path / "block.glb").read_bytes() == (tmp_path / "cli.glb").read_bytes()
