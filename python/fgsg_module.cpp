@@ -104,10 +104,10 @@ struct Grammar {
   }
 
   static std::shared_ptr<Grammar> fromFile(const std::string& path) {
-    auto g = std::make_shared<Grammar>();
+    frontend::SourceFile file;
     std::string error;
-    if (!ir::readSourceFile(path, g->source, error)) throw std::runtime_error(error);
-    return compile(g->source.text, path);
+    if (!ir::readSourceFile(path, file, error)) throw std::runtime_error(error);
+    return compile(file.text, path);
   }
 
   std::shared_ptr<Result> generate(uint64_t seed, const py::dict& attrs, const std::optional<std::string>& surface,
