@@ -1,5 +1,6 @@
 #include "runtime/assets.h"
 
+#include "runtime/io/openmesh_quiet.h"
 #include "runtime/io/read_mesh_file.h"
 #include "runtime/texture/color_texture.h"
 
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <utility>
 
 namespace fgsg::rt {
@@ -385,8 +387,7 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
   // faces with a repeated corner; the TriMesh fan-triangulates polygons.
   OMesh om;
   OpenMesh::IO::ImporterT<OMesh> importer(om);
-  const bool errWasOn = omerr().is_enabled();
-  omerr().disable();  // it reports each such face on its own error stream
+  std::optional<io::QuietOpenMesh> quiet(std::in_place);  // it reports each such face on omerr
   std::vector<OpenMesh::VertexHandle> handles;
   handles.reserve(file.vertices.size());
   for (const auto& p : file.vertices)
@@ -401,7 +402,7 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
     importer.add_face(corners);
     sourceOf.resize(om.n_faces(), TriangleSource{f, verticesBefore});
   }
-  if (errWasOn) omerr().enable();
+  quiet.reset();
   if (om.n_faces() == 0) {
     error = "asset file '" + path + "' contains no faces";
     return false;

@@ -1,6 +1,7 @@
 #include "runtime/io/read_mesh_file.h"
 
 #include "runtime/io/check_ply.h"
+#include "runtime/io/openmesh_quiet.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/read_off.h"
 
@@ -137,18 +138,15 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
     vertices.request_vertex_texcoords2D();
     opt += OpenMesh::IO::Options::VertexTexCoord;
   }
-  // OpenMesh reports problems on its own error stream; we report them ourselves.
-  const bool errWasOn = omerr().is_enabled(), logWasOn = omlog().is_enabled();
-  omerr().disable();
-  omlog().disable();
   bool ok = false;
-  try {
-    ok = OpenMesh::IO::IOManager().read(path, importer, opt);
-  } catch (const std::exception&) {
-    ok = false;  // a count the checks above did not foresee: still the file's fault
+  {
+    QuietOpenMesh quiet;
+    try {
+      ok = OpenMesh::IO::IOManager().read(path, importer, opt);
+    } catch (const std::exception&) {
+      ok = false;  // a count the checks above did not foresee: still the file's fault
+    }
   }
-  if (errWasOn) omerr().enable();
-  if (logWasOn) omlog().enable();
   if (!ok) {
     error = path + ": cannot read the file (not a valid " + ext.substr(1) + " file?)";
     return false;

@@ -5,8 +5,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <fstream>
+#include <sstream>
+#include <thread>
+#include <vector>
 
 using namespace fgsg::rt::io;
 namespace fs = std::filesystem;
@@ -149,4 +153,36 @@ TEST_CASE("OBJ: an index out of range is named as the file spells it", "[read_me
         ": face 0 refers to vertex 9, but there are only 3 vertices (counting from 1)");
   const auto m = read("ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n");
   CHECK(m.corners == std::vector<int>{0, 1, 2});
+}
+
+TEST_CASE("OBJ files read from many threads at once", "[read_mesh_file]") {
+  // OpenMesh's readers are shared singletons: reads on several threads (Python threads, batch
+  // jobs) must take turns, or its per-read state is torn and the heap corrupted.
+  std::vector<std::string> paths;
+  std::vector<size_t> vertexCounts;
+  for (int k = 0; k < 4; ++k) {
+    std::ostringstream obj;
+    const int n = 200 + 50 * k;
+    for (int i = 0; i < n; ++i) obj << "v " << i << " 0 " << k << "\nvt 0.5 0.5\n";
+    for (int i = 1; i + 2 <= n; ++i) obj << "f " << i << "/1 " << i + 1 << "/2 " << i + 2 << "/3\n";
+    std::ostringstream name;
+    name << "t" << k << ".obj";
+    paths.push_back(write(name.str(), obj.str()));
+    vertexCounts.push_back(size_t(n));
+  }
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 8; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 25; ++round) {
+        const size_t k = size_t(t + round) % paths.size();
+        MeshFileContent m;
+        std::string error;
+        if (!readMeshFile(paths[k], m, error) || m.vertices.size() != vertexCounts[k] ||
+            m.polygonCount() != vertexCounts[k] - 2 || m.vertices.back()[2] != double(k))
+          ++wrong;
+      }
+    });
+  for (auto& th : threads) th.join();
+  CHECK(wrong == 0);
 }
