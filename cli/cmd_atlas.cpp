@@ -1,6 +1,7 @@
 // fgsg atlas: lay a mesh out for on-mesh marching (its atlas and indirection geometry
 // image, cached like `fgsg run` caches them), say what was built, and optionally draw
 // it (--preview) or paint a mask for a texture context (--paint ... --mask).
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "runtime/io/cache_folder.h"
@@ -31,49 +32,45 @@ struct AtlasOptions {
 
 AtlasOptions parseAtlasOptions(const Args& args) {
   AtlasOptions o;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (r.grammarFile(o.mesh)) continue;
-    const std::string f = r.flag();
-    if (f == "--preview") o.preview = r.value(f);
-    else if (f == "--resolution") o.resolution = static_cast<int>(r.unsignedValue(f, 16, 8192));
-    else if (f == "--repair-surface") o.repair = true;
-    else if (f == "--surface-size") {
-      o.surfaceSize = r.numberValue(f);
-      if (!(o.surfaceSize > 0) || !std::isfinite(o.surfaceSize))
-        throw UsageError{"--surface-size must be a positive number"};
-    } else if (f == "--paint") {
-      // x,y,z,r: a sphere brush in the mesh's coordinates.
-      const std::string v = r.value(f);
-      double c[4];
-      if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3]) != 4 || !(c[3] > 0) ||
-          !std::isfinite(c[0] + c[1] + c[2] + c[3]))
-        throw UsageError{"--paint expects a sphere x,y,z,radius (a positive radius), got '" + v + "'"};
-      rt::texture::Brush sphere;
-      sphere.centre = rt::Vec3(c[0], c[1], c[2]);
-      sphere.radius = c[3];
-      o.brushes.push_back(sphere);
-    } else if (f == "--paint-slab") {
-      // x,y,z,nx,ny,nz,w: the band within w of the plane through (x,y,z) square to n.
-      const std::string v = r.value(f);
-      double c[7];
-      const bool read = std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3], &c[4],
-                                    &c[5], &c[6]) == 7;
-      const rt::Vec3 n(c[3], c[4], c[5]);
-      if (!read || !(c[6] > 0) || !std::isfinite(c[0] + c[1] + c[2] + c[6]) || !(n.norm() > 0) ||
-          !std::isfinite(n.norm()))
-        throw UsageError{"--paint-slab expects x,y,z,nx,ny,nz,halfwidth (a non-zero normal, a positive width), got '" +
-                         v + "'"};
-      rt::texture::Brush slab;
-      slab.centre = rt::Vec3(c[0], c[1], c[2]);
-      slab.radius = c[6];
-      slab.slab = true;
-      slab.normal = n.normalized();
-      o.brushes.push_back(slab);
-    } else if (f == "--mask") o.mask = r.value(f);
-    else if (f == "--mask-size") o.maskSize = static_cast<int>(r.unsignedValue(f, 8, 8192));
-    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
-  }
+  CommandLine cl("atlas");
+  cl.input(o.mesh, "mesh");
+  cl.text("--preview", o.preview);
+  cl.whole("--resolution", o.resolution, 16, 8192);
+  cl.flag("--repair-surface", o.repair);
+  cl.option("--surface-size", [&](const std::string& v) {
+    o.surfaceSize = CommandLine::parseNumber("--surface-size", v);
+    if (!(o.surfaceSize > 0)) throw UsageError{"--surface-size must be a positive number"};
+  });
+  cl.repeated("--paint", [&](const std::string& v) {
+    // x,y,z,r: a sphere brush in the mesh's coordinates.
+    double c[4];
+    if (std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3]) != 4 || !(c[3] > 0) ||
+        !std::isfinite(c[0] + c[1] + c[2] + c[3]))
+      throw UsageError{"--paint expects a sphere x,y,z,radius (a positive radius), got '" + v + "'"};
+    rt::texture::Brush sphere;
+    sphere.centre = rt::Vec3(c[0], c[1], c[2]);
+    sphere.radius = c[3];
+    o.brushes.push_back(sphere);
+  });
+  cl.repeated("--paint-slab", [&](const std::string& v) {
+    // x,y,z,nx,ny,nz,w: the band within w of the plane through (x,y,z) square to n.
+    double c[7];
+    const bool read = std::sscanf(v.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3], &c[4], &c[5],
+                                  &c[6]) == 7;
+    const rt::Vec3 n(c[3], c[4], c[5]);
+    if (!read || !(c[6] > 0) || !std::isfinite(c[0] + c[1] + c[2] + c[6]) || !(n.norm() > 0) || !std::isfinite(n.norm()))
+      throw UsageError{"--paint-slab expects x,y,z,nx,ny,nz,halfwidth (a non-zero normal, a positive width), got '" + v +
+                       "'"};
+    rt::texture::Brush slab;
+    slab.centre = rt::Vec3(c[0], c[1], c[2]);
+    slab.radius = c[6];
+    slab.slab = true;
+    slab.normal = n.normalized();
+    o.brushes.push_back(slab);
+  });
+  cl.text("--mask", o.mask);
+  cl.whole("--mask-size", o.maskSize, 8, 8192);
+  cl.parse(args);
   if (o.mesh.empty()) throw UsageError{"no mesh given: fgsg atlas MESH [--preview atlas.png]"};
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};

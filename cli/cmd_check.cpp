@@ -1,4 +1,5 @@
 #include "cli/check_data_files.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 
@@ -7,21 +8,27 @@
 namespace fgsg::cli {
 
 int checkCommand(const Args& args) {
-  if (args.size() != 1 || args[0].rfind("-", 0) == 0) {
-    std::cerr << "usage: fgsg check FILE\n";
+  std::string file;
+  try {
+    CommandLine cl("check");
+    cl.input(file, "grammar file");
+    cl.parse(args);
+    if (file.empty()) throw UsageError{"no grammar file given: fgsg check FILE"};
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg check: " << e.message << "\n";
     return 2;
   }
-  auto compiled = compileFile(args[0]);
+  auto compiled = compileFile(file);
   if (!compiled) return 1;
   frontend::Diagnostics dataDiags(&compiled->source);
-  checkDataFiles(compiled->module, args[0], dataDiags);
+  checkDataFiles(compiled->module, file, dataDiags);
   if (dataDiags.hasErrors()) {
     dataDiags.print(std::cerr);
     std::cerr << dataDiags.errorCount() << " error" << (dataDiags.errorCount() == 1 ? "" : "s") << " in "
-              << args[0] << "\n";
+              << file << "\n";
     return 1;
   }
-  std::cout << args[0] << ": ok, " << compiled->module.rules.size() << " rule"
+  std::cout << file << ": ok, " << compiled->module.rules.size() << " rule"
             << (compiled->module.rules.size() == 1 ? "" : "s") << ", " << compiled->warnings
             << " warning" << (compiled->warnings == 1 ? "" : "s") << "\n";
   return 0;

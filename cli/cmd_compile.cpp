@@ -5,6 +5,7 @@
 #include "backend/aot/link_library.h"
 #include "backend/codegen/program_codegen.h"
 #include "backend/native/llvm_plugin.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
@@ -28,17 +29,15 @@ struct CompileOptions {
 
 CompileOptions parseCompileOptions(const Args& args) {
   CompileOptions o;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (r.grammarFile(o.file)) continue;
-    const std::string f = r.flag();
-    if (f == "-o" || f == "--output") o.output = r.value(f);
-    else if (f == "--header") {
-      o.headerDir = r.value(f);
-      if (o.headerDir.empty()) throw UsageError{"--header needs a folder name"};
-    } else if (f == "--quiet" || f == "-q") o.quiet = true;
-    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
-  }
+  CommandLine cl("compile");
+  cl.input(o.file, "grammar file");
+  cl.text("-o,--output", o.output);
+  cl.option("--header", [&](const std::string& v) {
+    if (v.empty()) throw UsageError{"--header needs a folder name"};
+    o.headerDir = v;
+  });
+  cl.flag("-q,--quiet", o.quiet);
+  cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg compile FILE -o libNAME.so"};
   if (o.output.empty()) o.output = "lib" + std::filesystem::path(o.file).stem().string() + ".so";
   try {

@@ -4,6 +4,7 @@
 // it with its history as JSON (--json) and draw its pattern (--preview). With --lsystem
 // it skips the search and measures and draws the L-system given (the paper's Figs. 2-3).
 // See docs/evolve.md.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "runtime/evolve/genetic.h"
@@ -42,8 +43,8 @@ struct EvolveCommandOptions {
   bool quiet = false;
 };
 
-double probability(OptionReader& r, const std::string& flag) {
-  const double p = r.numberValue(flag);
+double probability(const std::string& flag, const std::string& v) {
+  const double p = CommandLine::parseNumber(flag, v);
   if (!(p >= 0 && p <= 1)) throw UsageError{flag + " expects a probability from 0 to 1, got " + std::to_string(p)};
   return p;
 }
@@ -71,37 +72,40 @@ ev::FitnessWeights weights(const std::string& v) {
 EvolveCommandOptions parseOptions(const Args& args) {
   EvolveCommandOptions o;
   bool parentsGiven = false, eliteGiven = false;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (!r.peek().empty() && r.peek()[0] != '-') {
-      if (!o.tiles.empty()) throw UsageError{"more than one tile file given ('" + o.tiles + "', '" + r.peek() + "')"};
-      o.tiles = r.next();
-      continue;
-    }
-    const std::string f = r.flag();
-    if (f == "--k") o.ga.ruleSide = int(r.unsignedValue(f, 1, 16));
-    else if (f == "--axiom-side") o.ga.axiomSide = int(r.unsignedValue(f, 1, 16));
-    else if (f == "--generation") o.ga.generation = int(r.unsignedValue(f, 0, 12));
-    else if (f == "--p4") o.ga.p4 = true;
-    else if (f == "--seed") o.ga.seed = r.unsignedValue(f);
-    else if (f == "--population") o.ga.population = int(r.unsignedValue(f, 2, 100000));
-    else if (f == "--max-generations") o.ga.maxGenerations = int(r.unsignedValue(f, 0, 1000000));
-    else if (f == "--threshold") o.ga.threshold = probability(r, f);
-    else if (f == "--parents") o.ga.parents = int(r.unsignedValue(f, 1, 100000)), parentsGiven = true;
-    else if (f == "--elite") o.ga.elite = int(r.unsignedValue(f, 0, 100000)), eliteGiven = true;
-    else if (f == "--crossover") o.ga.crossoverRate = probability(r, f);
-    else if (f == "--mutation") o.ga.mutationRate = probability(r, f);
-    else if (f == "--weights") o.ga.weights = weights(r.value(f));
-    else if (f == "--max-seconds") {
-      o.maxSeconds = r.numberValue(f);
-      if (!(o.maxSeconds > 0)) throw UsageError{"--max-seconds expects a positive number of seconds"};
-    } else if (f == "--lsystem") o.lsystem = r.value(f);
-    else if (f == "--json") o.json = r.value(f);
-    else if (f == "--preview") o.preview = r.value(f);
-    else if (f == "--cell-pixels") o.cellPixels = int(r.unsignedValue(f, 4, 1024));
-    else if (f == "-q" || f == "--quiet") o.quiet = true;
-    else throw UsageError{"unknown option '" + f + "'"};
-  }
+  CommandLine cl("evolve");
+  cl.input(o.tiles, "tile file");
+  cl.whole("--k", o.ga.ruleSide, 1, 16);
+  cl.whole("--axiom-side", o.ga.axiomSide, 1, 16);
+  cl.whole("--generation", o.ga.generation, 0, 12);
+  cl.flag("--p4", o.ga.p4);
+  cl.whole("--seed", o.ga.seed);
+  cl.whole("--population", o.ga.population, 2, 100000);
+  cl.whole("--max-generations", o.ga.maxGenerations, 0, 1000000);
+  auto rate = [&](const char* flag, double& target) {
+    cl.option(flag, [&target, flag](const std::string& v) { target = probability(flag, v); });
+  };
+  rate("--threshold", o.ga.threshold);
+  cl.option("--parents", [&](const std::string& v) {
+    o.ga.parents = int(CommandLine::parseWhole("--parents", v, 1, 100000));
+    parentsGiven = true;
+  });
+  cl.option("--elite", [&](const std::string& v) {
+    o.ga.elite = int(CommandLine::parseWhole("--elite", v, 0, 100000));
+    eliteGiven = true;
+  });
+  rate("--crossover", o.ga.crossoverRate);
+  rate("--mutation", o.ga.mutationRate);
+  cl.option("--weights", [&](const std::string& v) { o.ga.weights = weights(v); });
+  cl.option("--max-seconds", [&](const std::string& v) {
+    o.maxSeconds = CommandLine::parseNumber("--max-seconds", v);
+    if (!(o.maxSeconds > 0)) throw UsageError{"--max-seconds expects a positive number of seconds"};
+  });
+  cl.text("--lsystem", o.lsystem);
+  cl.text("--json", o.json);
+  cl.text("--preview", o.preview);
+  cl.whole("--cell-pixels", o.cellPixels, 4, 1024);
+  cl.flag("-q,--quiet", o.quiet);
+  cl.parse(args);
   if (o.tiles.empty()) throw UsageError{"no tile file given (docs/evolve.md describes the format)"};
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};

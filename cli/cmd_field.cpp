@@ -3,7 +3,9 @@
 // indices, written as a mesh (the surface, the streamlines as lines, the singularities as
 // coloured markers) and drawn with --preview; the singularities are listed.
 #include "backend/commands/surface_world.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/derive_flags.h"
 #include "cli/compile_file.h"
 #include "cli/options.h"
 #include "cli/progress_line.h"
@@ -32,28 +34,24 @@ struct FieldOptions {
 
 FieldOptions parseFieldOptions(const Args& args) {
   FieldOptions o;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (r.grammarFile(o.file)) continue;
-    const std::string f = r.flag();
-    if (f == "-o" || f == "--output") o.output = r.value(f);
-    else if (f == "--preview") o.preview = r.value(f);
-    else if (f == "--singularities") o.singularities = r.value(f);
-    else if (f == "--field") o.field = r.value(f);
-    else if (f == "--seeds") o.sketch.seeds = static_cast<int>(r.unsignedValue(f, 1, 100000));
-    else if (f == "--length" || f == "--step") {
-      const double v = r.numberValue(f);
-      if (!(v > 0) || !std::isfinite(v)) throw UsageError{f + " must be a positive number"};
-      (f == "--length" ? o.sketch.length : o.sketch.step) = v;
-    } else if (f == "--minor") o.sketch.minor = true;
-    else if (f == "--surface") o.derive.surfaceOverride = r.value(f);
-    else if (f == "--surface-size") {
-      o.derive.surfaceSize = r.numberValue(f);
-      if (!(o.derive.surfaceSize > 0) || !std::isfinite(o.derive.surfaceSize))
-        throw UsageError{"--surface-size must be a positive number"};
-    } else if (f == "--repair-surface") o.derive.repairSurface = true;
-    else throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
+  CommandLine cl("field");
+  cl.input(o.file, "grammar file");
+  cl.text("-o,--output", o.output);
+  cl.text("--preview", o.preview);
+  cl.text("--singularities", o.singularities);
+  cl.text("--field", o.field);
+  cl.whole("--seeds", o.sketch.seeds, 1, 100000);
+  for (const char* flag : {"--length", "--step"}) {
+    double& target = std::string(flag) == "--length" ? o.sketch.length : o.sketch.step;
+    cl.option(flag, [&target, flag](const std::string& text) {
+      const double v = CommandLine::parseNumber(flag, text);
+      if (!(v > 0)) throw UsageError{std::string(flag) + " must be a positive number"};
+      target = v;
+    });
   }
+  cl.flag("--minor", o.sketch.minor);
+  surfaceFlags(cl, o.derive);
+  cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar given: fgsg field FILE.fgsg [-o field.glb] [--preview field.png]"};
   if (o.output.empty() && o.preview.empty() && o.singularities.empty())
     throw UsageError{"nothing to write: give -o FILE (.glb .obj .ply), --preview FILE.png or --singularities FILE.json"};

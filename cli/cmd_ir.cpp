@@ -1,4 +1,5 @@
 #include "backend/native/llvm_plugin.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "ir/printer.h"
@@ -10,18 +11,14 @@ namespace fgsg::cli {
 int irCommand(const Args& args) {
   std::string file;
   bool llvmText = false;
-  for (const std::string& a : args) {
-    if (a == "--llvm") {
-      llvmText = true;
-    } else if (a.rfind("-", 0) == 0 || !file.empty()) {
-      std::cerr << "usage: fgsg ir FILE [--llvm]\n";
-      return 2;
-    } else {
-      file = a;
-    }
-  }
-  if (file.empty()) {
-    std::cerr << "usage: fgsg ir FILE [--llvm]\n";
+  try {
+    CommandLine cl("ir");
+    cl.input(file, "grammar file");
+    cl.flag("--llvm", llvmText);
+    cl.parse(args);
+    if (file.empty()) throw UsageError{"no grammar file given: fgsg ir FILE [--llvm]"};
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg ir: " << e.message << "\n";
     return 2;
   }
   auto compiled = compileFile(file, false);

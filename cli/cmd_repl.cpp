@@ -2,7 +2,9 @@
 // With a terminal on stdin it reads lines with libedit (history, `fgsg> ` and `...> `
 // prompts); otherwise it reads a script line by line and prints only results and
 // diagnostics, exiting 1 when any input failed.
+#include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/derive_flags.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
 #include "cli/repl_session.h"
@@ -274,15 +276,13 @@ class Repl {
 
 int replCommand(const Args& args) {
   backend::Engine engine = backend::Engine::Jit;
-  for (const std::string& a : args) {
-    const std::string prefix = "--engine=";
-    const auto parsed = a.rfind(prefix, 0) == 0 ? backend::parseEngine(a.substr(prefix.size())) : std::nullopt;
-    if (!parsed) {
-      std::cerr << "usage: fgsg repl [--engine=jit|interp]   (reads a script from stdin when it is "
-                   "not a terminal)\n";
-      return 2;
-    }
-    engine = *parsed;
+  try {
+    CommandLine cl("repl");
+    engineFlag(cl, engine);
+    cl.parse(args);
+  } catch (const UsageError& e) {
+    std::cerr << "fgsg repl: " << e.message << "\n";
+    return 2;
   }
   const bool interactive = isatty(STDIN_FILENO);
   Repl repl(interactive);

@@ -2,6 +2,8 @@
 #include "backend/derive_messages.h"
 #include "backend/engine.h"
 #include "backend/native/code_loader.h"
+#include "cli/command_line.h"
+#include "cli/derive_flags.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
@@ -47,81 +49,58 @@ struct RunOptions {
 
 RunOptions parseRunOptions(const Args& args) {
   RunOptions o;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (r.grammarFile(o.file)) continue;
-    const std::string f = r.flag();
-    if (f == "-o" || f == "--output") o.output = r.value(f);
-    else if (f == "--seed") o.derive.seed = r.unsignedValue(f);
-    else if (f == "--engine") {
-      const std::string name = r.value(f);
-      const auto engine = backend::parseEngine(name);
-      if (!engine) throw UsageError{"--engine " + name + ": unknown engine (use interp or jit)"};
-      o.engine = *engine;
-    }
-    else if (f == "--preview") o.preview = r.value(f);
-    else if (f == "--instances") o.instances = r.value(f);
-    else if (f == "--lines") o.lines = r.value(f);
-    else if (f == "--max-shapes") o.derive.maxShapes = r.unsignedValue(f);
-    else if (f == "--max-depth") o.derive.maxDepth = static_cast<uint32_t>(r.unsignedValue(f, 0, UINT32_MAX));
-    else if (f == "--max-seconds") {
-      o.derive.maxSeconds = r.numberValue(f);
-      if (!(o.derive.maxSeconds > 0)) throw UsageError{"--max-seconds must be positive"};
-    } else if (f == "--max-memory") {
-      const std::string size = r.value(f);
-      const std::optional<uint64_t> bytes = rt::parseMemorySize(size);
-      if (!bytes) throw UsageError{"--max-memory " + size + ": expected a size such as 512M or 2G"};
-      o.derive.maxMemoryBytes = *bytes;
-    } else if (f == "--collide-all") o.derive.collideAll = true;
-    else if (f == "--surface") {
-      o.derive.surfaceOverride = r.value(f);
-      if (o.derive.surfaceOverride.empty()) throw UsageError{"--surface needs a mesh file name"};
-    } else if (f == "--repair-surface") o.derive.repairSurface = true;
-    else if (f == "--surface-size") {
-      o.derive.surfaceSize = r.numberValue(f);
-      if (!(o.derive.surfaceSize > 0) || !std::isfinite(o.derive.surfaceSize))
-        throw UsageError{"--surface-size must be a positive number"};
-    }
-    else if (f == "--seed-points") {
-      // Repeatable: each flag adds its seeds.
-      std::string error;
-      std::vector<rt::DeriveOptions::Seed> more;
-      if (!rt::io::readSeedPoints(r.value(f), more, error)) throw UsageError{error};
-      o.derive.seeds.insert(o.derive.seeds.end(), more.begin(), more.end());
-    } else if (f == "--lots") {
-      o.derive.lotsName = r.value(f);
-      std::string error;
-      if (!rt::readLots(o.derive.lotsName, o.derive.lots, o.lotsSkipped, error)) throw UsageError{error};
-    } else if (f == "--seed-density") {
-      o.derive.seedDensity = r.value(f);
-      if (o.derive.seedDensity.empty()) throw UsageError{"--seed-density needs a texture name"};
-    } else if (f == "--seed-count")
-      o.derive.seedCount = static_cast<uint32_t>(r.unsignedValue(f, 1, 1'000'000));
-    else if (f == "--march-candidates")
-      o.derive.marchCandidates = static_cast<int>(r.unsignedValue(f, 0, 64));
-    else if (f == "--atlas-resolution")
-      o.derive.atlasResolution = static_cast<int>(r.unsignedValue(f, 16, 8192));
-    else if (f == "--march-units") {
-      const std::string unit = r.value(f);
-      if (unit != "surface" && unit != "texels")
-        throw UsageError{"--march-units " + unit + ": use surface (3D distance, the default) or texels"};
-      o.derive.marchInTexels = unit == "texels";
-    }
-    else if (f == "--start") {
-      r.pointValue(f, o.derive.start);
-      o.derive.hasStart = true;
-    } else if (f == "--stats") o.stats = true;
-    else if (f == "--quiet" || f == "-q") o.quiet = true;
-    else if (f == "--set") {
-      std::string kv = r.value(f);
-      auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw UsageError{"--set expects name=value, got '" + kv + "'"};
-      o.derive.attrOverrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
-    } else {
-      throw UsageError{"unknown option '" + f + "' (see fgsg --help)"};
-    }
-  }
+  CommandLine cl("run");
+  cl.input(o.file, "grammar file");
+  cl.text("-o,--output", o.output);
+  cl.whole("--seed", o.derive.seed);
+  engineFlag(cl, o.engine);
+  cl.text("--preview", o.preview);
+  cl.text("--instances", o.instances);
+  cl.text("--lines", o.lines);
+  cl.whole("--max-shapes", o.derive.maxShapes);
+  cl.whole("--max-depth", o.derive.maxDepth);
+  cl.option("--max-seconds", [&](const std::string& v) {
+    o.derive.maxSeconds = CommandLine::parseNumber("--max-seconds", v);
+    if (!(o.derive.maxSeconds > 0)) throw UsageError{"--max-seconds must be positive"};
+  });
+  cl.option("--max-memory", [&](const std::string& size) {
+    const std::optional<uint64_t> bytes = rt::parseMemorySize(size);
+    if (!bytes) throw UsageError{"--max-memory " + size + ": expected a size such as 512M or 2G"};
+    o.derive.maxMemoryBytes = *bytes;
+  });
+  cl.flag("--collide-all", o.derive.collideAll);
+  surfaceFlags(cl, o.derive);
+  cl.repeated("--seed-points", [&](const std::string& v) {  // each flag adds its seeds
+    std::string error;
+    std::vector<rt::DeriveOptions::Seed> more;
+    if (!rt::io::readSeedPoints(v, more, error)) throw UsageError{error};
+    o.derive.seeds.insert(o.derive.seeds.end(), more.begin(), more.end());
+  });
+  cl.option("--lots", [&](const std::string& v) {
+    o.derive.lotsName = v;
+    std::string error;
+    if (!rt::readLots(o.derive.lotsName, o.derive.lots, o.lotsSkipped, error)) throw UsageError{error};
+  });
+  cl.option("--seed-density", [&](const std::string& v) {
+    if (v.empty()) throw UsageError{"--seed-density needs a texture name"};
+    o.derive.seedDensity = v;
+  });
+  cl.whole("--seed-count", o.derive.seedCount, 1, 1'000'000);
+  cl.whole("--march-candidates", o.derive.marchCandidates, 0, 64);
+  cl.whole("--atlas-resolution", o.derive.atlasResolution, 16, 8192);
+  cl.option("--march-units", [&](const std::string& unit) {
+    if (unit != "surface" && unit != "texels")
+      throw UsageError{"--march-units " + unit + ": use surface (3D distance, the default) or texels"};
+    o.derive.marchInTexels = unit == "texels";
+  });
+  cl.option("--start", [&](const std::string& v) {
+    CommandLine::parsePoint("--start", v, o.derive.start);
+    o.derive.hasStart = true;
+  });
+  cl.flag("--stats", o.stats);
+  cl.flag("-q,--quiet", o.quiet);
+  setFlag(cl, o.derive);
+  cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
   if (o.derive.seedDensity.empty() != (o.derive.seedCount == 0))
     throw UsageError{"--seed-density NAME and --seed-count N go together: N seeds drawn where texture NAME is bright"};

@@ -2,6 +2,7 @@
 //            [--preview out.png] [--periodic] [--mask image.png] [--stats] ...
 // Discrete model synthesis from an example grid (.txt), a WFC tile set (.json) or a
 // labelled image (.png). See docs/synthesis.md.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "runtime/assemble.h"
@@ -13,6 +14,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace fgsg::cli {
@@ -64,105 +66,92 @@ const char* synthUsage() { return kUsage; }
 int synthCommand(const Args& args) {
   std::string example, labelsOut, meshOut, previewOut, maskPath;
   SynthesisOptions o;
-  bool haveSize = false, stats = false, closed = false;
+  bool haveSize = false, stats = false, closed = false, periodic = false;
   double cell = 1.0;
   std::vector<std::pair<int, std::string>> borders;
   int connectSeeds = 0;
   o.attempts = 10;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string a = args[i], inlineValue;
-    bool hasInline = false;
-    if (a.rfind("--", 0) == 0 && a.find('=') != std::string::npos && a.rfind("--border", 0) != 0) {
-      inlineValue = a.substr(a.find('=') + 1);
-      a = a.substr(0, a.find('='));
-      hasInline = true;
-    }
-    auto value = [&](std::string& out) {
-      if (hasInline) { out = inlineValue; return true; }
-      if (i + 1 >= args.size()) return false;
-      out = args[++i];
-      return true;
-    };
-    auto intValue = [&](long long lo, long long hi, long long& v) {
-      std::string s;
-      return value(s) && toInt(s, lo, hi, v);
-    };
-    long long v = 0;
-    std::string s;
-    if (a == "--size") {
-      long long n[3];
-      for (int k = 0; k < 3; ++k) {
-        // Z may be left out for a planar model: a next argument that is no integer at all
-        // is the example file; one out of range is still an error, not a file name.
-        const bool integer = i + 1 < args.size() && looksLikeInteger(args[i + 1]);
-        if (k == 2 && !integer) { n[2] = 1; break; }
-        if (!integer || !toInt(args[i + 1], 1, kMaxExtent, n[k]))
-          return usage("--size needs X Y [Z]: whole numbers from 1 to " + std::to_string(kMaxExtent));
-        ++i;
+  // Each option's own message (tests and scripts match them); usage() adds the usage lines.
+  auto need = [](bool ok, const std::string& message) {
+    if (!ok) throw UsageError{message};
+  };
+  auto wholeOption = [&](CommandLine& cl, const char* flag, long long lo, long long hi, const std::string& message,
+                         std::function<void(long long)> use) {
+    cl.option(flag, [=](const std::string& s) {
+      long long v = 0;
+      need(toInt(s, lo, hi, v), message);
+      use(v);
+    });
+  };
+  std::string trailing;  // `--size X Y FILE`: Z left out, the file after it
+  try {
+    CommandLine cl("synth");
+    cl.input(example, "example");
+    cl.values("--size", 2, 3, [&](const std::vector<std::string>& n) {
+      const std::string message = "--size needs X Y [Z]: whole numbers from 1 to " + std::to_string(kMaxExtent);
+      // Z may be left out for a planar model: a third value that is no integer at all is the
+      // example file; one out of range is still an error, not a file name.
+      long long v[3] = {0, 0, 1};
+      for (size_t k = 0; k < n.size(); ++k) {
+        if (k == 2 && !looksLikeInteger(n[k])) {
+          trailing = n[k];
+          break;
+        }
+        need(toInt(n[k], 1, kMaxExtent, v[k]), message);
       }
-      o.size = {int(n[0]), int(n[1]), int(n[2])};
+      o.size = {int(v[0]), int(v[1]), int(v[2])};
       haveSize = true;
-    } else if (a == "--block") {
-      if (!intValue(0, kMaxExtent, v))
-        return usage("--block needs a block size N from 0 to " + std::to_string(kMaxExtent) + " (0: whole grid)");
-      o.block = {int(v), int(v), int(v)};
-    } else if (a == "--seed") {
-      if (!value(s) || !toInt(s, 0, INT64_MAX, v)) return usage("--seed needs a whole number from 0 to " + std::to_string(INT64_MAX));
-      o.seed = uint64_t(v);
-    } else if (a == "--labels") {
-      if (!value(labelsOut)) return usage("--labels needs a file name");
-    } else if (a == "-o" || a == "--output") {
-      if (!value(meshOut)) return usage("-o needs a file name (.glb .obj .ply)");
-    } else if (a == "--preview") {
-      if (!value(previewOut)) return usage("--preview needs a .png file name");
-    } else if (a == "--mask") {
-      if (!value(maskPath)) return usage("--mask needs an image file");
-    } else if (a == "--periodic") {
-      o.periodic = {true, true, false};
-    } else if (a == "--closed") {
-      closed = true;
-    } else if (a == "--stats") {
-      stats = true;
-    } else if (a == "--order") {
-      if (!value(s) || (s != "scanline" && s != "entropy")) return usage("--order is scanline or entropy");
+    });
+    wholeOption(cl, "--block", 0, kMaxExtent,
+                "--block needs a block size N from 0 to " + std::to_string(kMaxExtent) + " (0: whole grid)",
+                [&](long long v) { o.block = {int(v), int(v), int(v)}; });
+    wholeOption(cl, "--seed", 0, INT64_MAX, "--seed needs a whole number from 0 to " + std::to_string(INT64_MAX),
+                [&](long long v) { o.seed = uint64_t(v); });
+    cl.text("--labels", labelsOut);
+    cl.text("-o,--output", meshOut);
+    cl.text("--preview", previewOut);
+    cl.text("--mask", maskPath);
+    cl.flag("--periodic", periodic);
+    cl.flag("--closed", closed);
+    cl.flag("--stats", stats);
+    cl.option("--order", [&](const std::string& s) {
+      need(s == "scanline" || s == "entropy", "--order is scanline or entropy");
       o.order = s == "entropy" ? CellOrder::kMinEntropy : CellOrder::kScanline;
-    } else if (a == "--retries") {
-      if (!intValue(0, 1000, v)) return usage("--retries needs an integer 0..1000");
-      o.blockRetries = int(v);
-    } else if (a == "--attempts") {
-      if (!intValue(1, 100000, v)) return usage("--attempts needs an integer 1..100000");
-      o.attempts = int(v);
-    } else if (a == "--connect") {
-      if (!intValue(1, 100000, v)) return usage("--connect needs a seed count from 1 to 100000");
-      connectSeeds = int(v);
-    } else if (a == "--max-steps") {
-      if (!intValue(1, INT64_MAX, v)) return usage("--max-steps needs a whole number from 1 to " + std::to_string(INT64_MAX));
-      o.maxAssignments = uint64_t(v);
-    } else if (a == "--time-limit") {
-      if (!value(s) || !toDouble(s, o.timeLimitSeconds)) return usage("--time-limit needs seconds from 0 to 1e9");
-    } else if (a == "--cell") {
-      if (!value(s) || !toDouble(s, cell) || cell <= 0) return usage("--cell needs a size greater than 0 and below 1e9");
-    } else if (a == "--symmetry") {
+    });
+    wholeOption(cl, "--retries", 0, 1000, "--retries needs an integer 0..1000", [&](long long v) { o.blockRetries = int(v); });
+    wholeOption(cl, "--attempts", 1, 100000, "--attempts needs an integer 1..100000",
+                [&](long long v) { o.attempts = int(v); });
+    wholeOption(cl, "--connect", 1, 100000, "--connect needs a seed count from 1 to 100000",
+                [&](long long v) { connectSeeds = int(v); });
+    wholeOption(cl, "--max-steps", 1, INT64_MAX, "--max-steps needs a whole number from 1 to " + std::to_string(INT64_MAX),
+                [&](long long v) { o.maxAssignments = uint64_t(v); });
+    cl.option("--time-limit", [&](const std::string& s) {
+      need(toDouble(s, o.timeLimitSeconds), "--time-limit needs seconds from 0 to 1e9");
+    });
+    cl.option("--cell", [&](const std::string& s) {
+      need(toDouble(s, cell) && cell > 0, "--cell needs a size greater than 0 and below 1e9");
+    });
+    cl.repeated("--symmetry", [&](const std::string& s) {
       SymmetrySpec sym;
-      if (!value(s) || !parseSymmetry(s, sym))
-        return usage("--symmetry is mirror-x, mirror-y, rotate-90, rotate-180, translate-x:N or translate-y:N "
-                     "(N from 1 to " + std::to_string(kMaxTranslation) + ")");
+      need(parseSymmetry(s, sym), "--symmetry is mirror-x, mirror-y, rotate-90, rotate-180, translate-x:N or "
+                                  "translate-y:N (N from 1 to " + std::to_string(kMaxTranslation) + ")");
       o.symmetry.push_back(sym);
-    } else if (a.rfind("--border", 0) == 0) {
-      std::string spec = a.size() > 8 && a[8] == '=' ? a.substr(9) : "";
-      if (spec.empty() && (i + 1 >= args.size() || (spec = args[++i]).empty())) return usage("--border needs FACE=LABEL");
-      auto eq = spec.find('=');
-      int face = eq == std::string::npos ? -1 : faceFromName(spec.substr(0, eq));
-      if (face < 0) return usage("--border needs FACE=LABEL with FACE one of xmin xmax ymin ymax zmin zmax");
+    });
+    cl.repeated("--border", [&](const std::string& spec) {
+      const auto eq = spec.find('=');
+      const int face = eq == std::string::npos ? -1 : faceFromName(spec.substr(0, eq));
+      need(face >= 0, "--border needs FACE=LABEL with FACE one of xmin xmax ymin ymax zmin zmax");
       borders.push_back({face, spec.substr(eq + 1)});
-    } else if (!a.empty() && a[0] == '-') {
-      return usage("unknown option `" + a + "`");
-    } else if (example.empty()) {
-      example = a;
-    } else {
-      return usage("more than one example given (`" + example + "` and `" + a + "`)");
+    });
+    cl.parse(args);
+    if (!trailing.empty()) {
+      need(example.empty(), "more than one example given (`" + example + "` and `" + trailing + "`)");
+      example = trailing;
     }
+  } catch (const UsageError& e) {
+    return usage(e.message);
   }
+  if (periodic) o.periodic = {true, true, false};
   if (example.empty()) return usage("no example file given");
   if (!haveSize) return usage("--size X Y Z is required");
 

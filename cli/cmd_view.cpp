@@ -3,7 +3,9 @@
 // re-derives and pushes the new model, the page's attribute fields and seed re-derive at
 // once, and errors show in the page with the last good model kept (view_session.h).
 #include "backend/native/code_loader.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/derive_flags.h"
 #include "cli/options.h"
 #include "cli/view_server.h"
 #include "cli/view_session.h"
@@ -40,30 +42,15 @@ struct ViewCommandOptions {
 
 ViewCommandOptions parseViewOptions(const Args& args) {
   ViewCommandOptions o;
-  OptionReader r(args);
-  while (!r.done()) {
-    if (r.grammarFile(o.view.file)) continue;
-    const std::string f = r.flag();
-    if (f == "--port") o.port = static_cast<uint16_t>(r.unsignedValue(f, 0, 65535));
-    else if (f == "--host") o.host = r.value(f);
-    else if (f == "--seed") o.view.derive.seed = r.unsignedValue(f);
-    else if (f == "--surface") {
-      o.view.derive.surfaceOverride = r.value(f);
-      if (o.view.derive.surfaceOverride.empty()) throw UsageError{"--surface needs a mesh file name"};
-    } else if (f == "--engine") {
-      const std::string name = r.value(f);
-      const auto engine = backend::parseEngine(name);
-      if (!engine) throw UsageError{"--engine " + name + ": unknown engine (use interp or jit)"};
-      o.view.engine = *engine;
-    } else if (f == "--set") {
-      const std::string kv = r.value(f);
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw UsageError{"--set expects name=value, got '" + kv + "'"};
-      o.view.derive.attrOverrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
-    } else {
-      throw UsageError{"unknown option '" + f + "' (see fgsg view --help)"};
-    }
-  }
+  CommandLine cl("view");
+  cl.input(o.view.file, "grammar file");
+  cl.whole("--port", o.port, 0, 65535);
+  cl.text("--host", o.host);
+  cl.whole("--seed", o.view.derive.seed);
+  surfaceFlags(cl, o.view.derive);
+  engineFlag(cl, o.view.engine);
+  setFlag(cl, o.view.derive);
+  cl.parse(args);
   if (o.view.file.empty()) throw UsageError{"no grammar file given: fgsg view FILE [options]"};
   return o;
 }

@@ -14,7 +14,7 @@ packages=(
   nlohmann-json3-dev
   libcgal-dev libgmp-dev libmpfr-dev libassimp-dev libnanoflann-dev
   zlib1g-dev libzstd-dev libxml2-dev libffi-dev libncurses-dev
-  libwebsocketpp-dev libboost-dev
+  libwebsocketpp-dev libboost-dev libcli11-dev
   chromium
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
 )
