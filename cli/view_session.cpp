@@ -180,6 +180,7 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
   // attribute is an error in the page, not a crash.
   rt::DeriveOptions derive = options_.derive;
   derive.seed = seed;
+  derive.recordOrigins = true;  // picking shows each instance's rule and depth
   for (const auto& [name, value] : attrs) {
     if (compiled_->module.findAttr(name) < 0) continue;
     const std::string problem = backend::attributeOverrideProblem(compiled_->module, name, value);
@@ -234,6 +235,12 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
   lastModelJson_ = header;
   lastParts_ = parts;
   lastInstances_ = std::move(result.instances);
+  lastRules_.clear();
+  for (const ir::Rule& r : compiled_->module.rules) {  // "Tree#2 (line 9)", "15: flatbrick (line 68)"
+    const std::string& symbol = compiled_->module.symbols[r.symbol].name;
+    const bool own = r.label.rfind(symbol + "#", 0) == 0;
+    lastRules_.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
+  }
   server_.sendTextToAll(header);
   for (std::string& p : parts) server_.sendBinaryToAll(std::move(p));
 }
@@ -245,8 +252,17 @@ void ViewSession::pick(uint64_t page, uint32_t instance) {
   const Json params = Json::parse(rt::io::instanceParamsJson(lastInstances_, inst), nullptr, false);
   const Eigen::Map<const Eigen::Matrix4d> t(inst.transform.data());
   const Eigen::Vector4d centre = t * Eigen::Vector4d(0.5, 0.5, 0.5, 1);
+  // Lines and the surface are placed by no rule; the axiom's own I() by the axiom.
+  const rt::InstanceOrigin origin =
+      instance < lastInstances_.origins.size() ? lastInstances_.origins[instance] : rt::InstanceOrigin{};
+  const Json rule = origin.rule < lastRules_.size() ? Json(lastRules_[origin.rule])
+                    : origin.depth != UINT32_MAX    ? Json("the axiom")
+                                                    : Json(nullptr);
+  const Json depth = origin.depth == UINT32_MAX ? Json(nullptr) : Json(origin.depth);
   server_.sendText(page, Json{{"type", "picked"},
                              {"instance", instance},
+                             {"rule", rule},
+                             {"depth", depth},
                              {"symbol", inst.symbol < lastInstances_.symbols.size() ? lastInstances_.symbols[inst.symbol] : ""},
                              {"asset", inst.asset < lastInstances_.assets.size() ? lastInstances_.assets[inst.asset] : ""},
                              {"params", params.is_discarded() ? Json::array() : params},

@@ -72,6 +72,7 @@ class ViewSession {
   std::string lastInfo_, lastModelJson_, lastError_;
   std::vector<std::string> lastParts_;  // the last model's binary messages
   rt::InstanceList lastInstances_;      // its instances, for picking
+  std::vector<std::string> lastRules_;  // its grammar's rules as picking names them
   std::map<std::string, std::filesystem::file_time_type> seen_;
 
   std::thread worker_;

@@ -26,6 +26,8 @@ struct DeriveOptions {
   std::vector<std::pair<std::string, std::string>> attrOverrides;  // --set name=value
   std::vector<std::string> assetDirs;  // where asset files are looked up
   bool collideAll = false;  // --collide-all: every I() is collision-tested, as IC
+  // Each instance's rule and depth (Instance::origin): fgsg view shows them on picking.
+  bool recordOrigins = false;
   // --surface FILE: a mesh file replacing the grammar's surface (empty: the grammar's);
   // the CLI makes the path absolute (it is relative to the working directory).
   std::string surfaceOverride;

@@ -29,6 +29,16 @@ struct Instance {
   // mesh's texture coordinates; UINT32_MAX: none.
   uint32_t texture = UINT32_MAX;
 };
+static_assert(sizeof(Instance) == 168, "Instance grew: a million-segment L-system holds a million of them");
+
+// Who placed an instance (InstanceList::origins): the rule whose successor placed it (an index into ir::Module::rules; UINT32_MAX:
+// the axiom) and the placing shape's derivation depth, as the grammar's `depth` reads it
+// there (UINT32_MAX: not known, as in an L-system's parallel rewriting).
+struct InstanceOrigin {
+  uint32_t rule = UINT32_MAX;
+  uint32_t depth = UINT32_MAX;
+  bool operator==(const InstanceOrigin&) const = default;
+};
 
 // The asset name of instances that draw a shape's own geometry (Instance::geometry).
 inline constexpr const char* kOwnGeometryAsset = "(own geometry)";
@@ -74,6 +84,9 @@ struct InstanceList {
   // The images of Texture commands (Instance::texture), as paths the derivation found.
   std::vector<std::string> textures;
   std::vector<LinePath> lines;  // the grammar's lines (Line/LineSeg), in the order they started
+  // Per instance when DeriveOptions::recordOrigins asked (fgsg view's picking), else empty;
+  // kept beside `instances` so that the million-instance runs do not carry it.
+  std::vector<InstanceOrigin> origins;
 };
 
 }  // namespace fgsg::rt

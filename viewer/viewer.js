@@ -161,7 +161,8 @@ canvas.addEventListener('pointerup', (e) => {
 function showPicked(m) {
   state.picked = m;
   const fmt = (v) => (typeof v === 'number' ? +v.toFixed(4) : JSON.stringify(v));
-  $('picked').textContent = `instance ${m.instance}\nsymbol ${m.symbol}\nasset ${m.asset}\n` +
+  $('picked').textContent = `instance ${m.instance}\nsymbol ${m.symbol}\nrule ${m.rule ?? '(none)'}\n` +
+    `depth ${m.depth ?? '(not known)'}\nasset ${m.asset}\n` +
     `params (${m.params.map(fmt).join(', ')})\ncentre (${m.centre.map(fmt).join(', ')})`;
 }
 

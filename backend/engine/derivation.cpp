@@ -136,6 +136,8 @@ rt::DeriveResult Derivation::run() {
   }
   stats_.deriveSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   stats_.instances = out_.instances.size();
+  // Lines and the surface are appended after the rules' instances: placed by no rule.
+  if (origins_.on()) out_.origins.resize(out_.instances.size());
   result.stats = stats_;
   result.instances = std::move(out_);
   return result;

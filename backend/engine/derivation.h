@@ -32,6 +32,7 @@
 #include "backend/commands/synthesis_command.h"
 #include "backend/commands/texture_commands.h"
 #include "backend/commands/turtle_commands.h"
+#include "backend/engine/instance_origins.h"
 #include "backend/engine/limit_reached.h"
 #include "backend/engine/native_call.h"
 #include "backend/engine/parallel_string.h"
@@ -331,6 +332,8 @@ class Derivation final : public QueryHost {
   bool direct_ = false;          // direct symbols are derived by their compiled code at once
   bool orderedDirect_ = false;   // ... including those placing instances (canOrderDirectInstances)
   PlacingShape placingShape_;            // the shape whose instance is being placed
+  InstanceOrigins origins_;              // DeriveOptions::recordOrigins
+  uint32_t placingDepth_ = UINT32_MAX;   // the depth of the shape whose successor runs (origins_)
   std::vector<PlacingShape> placedBy_;   // per instance, while orderedDirect_
   uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
   bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)

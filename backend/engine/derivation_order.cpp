@@ -134,8 +134,9 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   ++stats_.rewrites;
   ++ruleUses_[chosenRule_];
   pollLimits();
-  const uint32_t outerCreator = creatorRule_;
+  const uint32_t outerCreator = creatorRule_, outerDepth = placingDepth_;
   creatorRule_ = chosenRule_;
+  placingDepth_ = depth;
   State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line, &at.scope};
   Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
   f.scope = &st.scope;
@@ -144,6 +145,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   stack_.resize(st.stackBase);
   if (sequentialString_) sequentialString_->endRewrite(writing);
   creatorRule_ = outerCreator;
+  placingDepth_ = outerDepth;
   return ex.collided;
 }
 
@@ -177,7 +179,10 @@ void Derivation::execRoot(uint32_t block, const ir::Block& ops, const rt::Scope&
     for (const auto& [priority, queue] : buckets_) marks_.emplace_back(priority, queue.mark());
   }
   Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
+  const uint32_t outerDepth = placingDepth_;
+  placingDepth_ = f.depth;
   runBlock(block, ops, st, ex, f);
+  placingDepth_ = outerDepth;
   stack_.resize(st.stackBase);  // a successor may leave '[' open: close it
   if (depthFirst) {
     // A stack gives back the last shape first: reverse what this successor created so

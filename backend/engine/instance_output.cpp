@@ -28,6 +28,7 @@ uint32_t Derivation::addGeneratedAsset(const std::string& name, const rt::Mesh& 
 
 void Derivation::initOutput() {
   out_.assets = m_.assets;
+  origins_.setup(m_, opt_.recordOrigins);
   out_.strings = m_.strings;
   out_.textures = textures_.paths();
   for (const auto& s : m_.symbols) {
@@ -140,6 +141,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
     if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
+  if (origins_.on()) out_.origins.push_back(origins_.of(loc, placingDepth_));
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;
   out_.params.insert(out_.params.end(), params, params + paramCount);
@@ -236,6 +238,7 @@ void Derivation::orderDirectInstances() {
                    [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
   rt::MeshArray<rt::Instance> instances;
   std::vector<double> params;
+  std::vector<rt::InstanceOrigin> origins;
   instances.reserve(order.size());
   params.reserve(out_.params.size());
   for (uint32_t i : order) {
@@ -244,9 +247,11 @@ void Derivation::orderDirectInstances() {
     inst.firstParam = static_cast<uint32_t>(params.size());
     params.insert(params.end(), out_.params.begin() + first, out_.params.begin() + first + inst.paramCount);
     instances.push_back(inst);
+    if (i < out_.origins.size()) origins.push_back(out_.origins[i]);
   }
   out_.instances = std::move(instances);
   out_.params = std::move(params);
+  out_.origins = std::move(origins);
   placedBy_.clear();
 }
 

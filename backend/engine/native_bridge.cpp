@@ -103,7 +103,10 @@ void Derivation::nativeOp(NativeCall& call, uint32_t op, const double* args, uin
 void Derivation::directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
                                 uint64_t preorder) {
   placingShape_ = {depth, preorder};
+  const uint32_t outerDepth = placingDepth_;
+  placingDepth_ = depth;
   placeInstance(layout_.ops[op]->index, s, symbol, params, m_.symbols[symbol].slotCount, layout_.ops[op]->loc);
+  placingDepth_ = outerDepth;
 }
 
 }  // namespace fgsg::backend

@@ -388,6 +388,7 @@ bool Derivation::matchRight(const ir::Rule& r, const ModuleString& str, size_t a
 
 // The turtle interpretation of the final string: commands act on one scope.
 void Derivation::interpretString(const ModuleString& str) {
+  placingDepth_ = UINT32_MAX;  // modules do not carry the step that wrote them
   streetDirection_ = rt::Vec3::UnitZ();
   State st;
   st.width = m_.turtle.width;

@@ -133,6 +133,7 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
       inst.firstParam = static_cast<uint32_t>(inst.firstParam + paramBase);
       if (inst.curve != UINT32_MAX) inst.curve = static_cast<uint32_t>(inst.curve + curveBase);
       if (inst.geometry != UINT32_MAX) inst.geometry = static_cast<uint32_t>(inst.geometry + geometryBase);
+      if (i < p.out.origins.size()) out_.origins.push_back(p.out.origins[i]);
       out_.instances.push_back(inst);
     }
     p.out = rt::InstanceList{};  // freed as soon as it is copied

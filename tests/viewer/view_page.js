@@ -77,8 +77,6 @@ async function main() {
     });
     console.log(`drawn: ${(100 * drawn).toFixed(1)}% of the canvas`);
     if (!(drawn > 0.05)) fail(`the canvas is nearly empty (${(100 * drawn).toFixed(2)}% drawn)`);
-    fs.mkdirSync(out, { recursive: true });
-    await page.screenshot({ path: path.join(out, 'fgsg_view.png') });
     const first = await page.evaluate(() => window.fgsgViewer.figures);
     const instanced = await page.evaluate(() => window.fgsgViewer.instanced);
     console.log(`instanced: ${instanced} of ${first.instances} instances drawn as InstancedMesh`);
@@ -89,9 +87,22 @@ async function main() {
     await page.mouse.click(box.x + box.width * 0.45, box.y + box.height * 0.55);
     await page.waitForFunction(() => window.fgsgViewer.picked, null, { timeout: 10000 });
     const picked = await page.evaluate(() => window.fgsgViewer.picked);
-    console.log(`picked: instance ${picked.instance}, symbol ${picked.symbol}, asset ${picked.asset}`);
+    console.log(`picked: instance ${picked.instance}, symbol ${picked.symbol}, rule ${picked.rule}, ` +
+                `depth ${picked.depth}, asset ${picked.asset}`);
     if (!picked.symbol || !picked.asset || !Array.isArray(picked.params)) fail('the picked instance lacks its symbol');
-    if (!(await page.textContent('#picked')).includes('symbol ' + picked.symbol)) fail('the panel does not show the pick');
+    // The rule that placed it is one of the picked symbol's ("15: flatbrick (line 68)": the
+    // Mueller building numbers its rules as the paper does); the building is a few levels deep.
+    if (typeof picked.rule !== 'string' || !picked.rule.includes(': ' + picked.symbol + ' (line ') ||
+        !/\(line \d+\)$/.test(picked.rule))
+      fail(`the picked instance's rule is '${picked.rule}', not one of ${picked.symbol}'s`);
+    if (!Number.isInteger(picked.depth) || picked.depth < 1 || picked.depth > 20)
+      fail(`the picked instance's depth is ${picked.depth}`);
+    const panel = await page.textContent('#picked');
+    if (!panel.includes('symbol ' + picked.symbol) || !panel.includes('rule ' + picked.rule) ||
+        !panel.includes('depth ' + picked.depth))
+      fail('the panel does not show the pick');
+    fs.mkdirSync(out, { recursive: true });
+    await page.screenshot({ path: path.join(out, 'fgsg_view.png') });  // README's picture, the pick shown
 
     // 2. An attribute changed in the inspector: a wider lot, more windows.
     const t0 = Date.now();

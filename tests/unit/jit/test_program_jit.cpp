@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Core>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -371,4 +373,40 @@ TEST_CASE("a program compiled from another grammar is refused") {
   REQUIRE_FALSE(r.ok);
   CHECK(r.messages[0].code == "R900");
   CHECK_THAT(r.messages[0].message, Catch::Contains("does not match this grammar"));
+}
+
+TEST_CASE("each instance's origin: the rule that placed it and its shape's depth, alike in both engines") {
+  // fgsg view's picking (DeriveOptions::recordOrigins); Tree is derived by direct code in
+  // the JIT, and a Lock derives its set where it is written.
+  const std::string text = R"(
+    Axiom ~> I("sphere") Tree(0);
+    Tree(n) : n < 2 ~> [ T(0, 1, 0) Tree(n + 1) ] I("cube");
+    Tree(n) ~> S(0.3, 0.3, 0.3) Lock{ Leaf } ;
+    Leaf ~> S(Shape.depth + 1, 1, 1) I("ico");
+  )";
+  const ir::Module m = compile(text);
+  backend::jit::Jit jit;
+  const auto code = jit.compileProgram(m, text, kNoCache);
+  rt::AssetLibrary assets;
+  rt::DeriveOptions options;
+  options.recordOrigins = true;
+  const rt::DeriveResult interp = backend::interpret(m, options, assets);
+  const rt::DeriveResult jitted = backend::deriveCompiled(m, code.program(), options, assets);
+  requireSame(interp, jitted);
+  // Rules: 0 the axiom, 1 and 2 Tree's, 3 Leaf's; depths as the grammar's `depth` reads them.
+  const std::vector<rt::InstanceOrigin> expected = {{0, 0}, {1, 1}, {1, 2}, {3, 4}};
+  REQUIRE(interp.instances.instances.size() == expected.size());
+  auto text_of = [](const std::vector<rt::InstanceOrigin>& list) {
+    std::string out;
+    for (const auto& o : list)
+      out += "(" + (o.rule == UINT32_MAX ? std::string("axiom") : std::to_string(o.rule)) + "," +
+             (o.depth == UINT32_MAX ? std::string("?") : std::to_string(o.depth)) + ")";
+    return out;
+  };
+  CHECK(text_of(interp.instances.origins) == text_of(expected));
+  CHECK(text_of(jitted.instances.origins) == text_of(expected));
+  CHECK(Eigen::Map<const Eigen::Matrix4d>(interp.instances.instances[3].transform.data()).col(0).norm() ==
+        Approx(5.0));  // Leaf's S(depth + 1, ...): depth 4 there too
+  // Not asked: nothing recorded.
+  CHECK(backend::interpret(m, {}, assets).instances.origins.empty());
 }
