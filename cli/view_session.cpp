@@ -5,6 +5,7 @@
 #include "backend/native/code_loader.h"
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
+#include "cli/grammar_files.h"
 #include "cli/options.h"
 #include "cli/view_scene.h"
 #include "runtime/assemble.h"
@@ -59,7 +60,7 @@ ViewSession::ViewSession(ViewOptions options, ViewServer& server)
   seed_ = options_.derive.seed;
   for (const auto& [name, value] : options_.derive.attrOverrides) attrs_[name] = value;
   options_.derive.attrOverrides.clear();
-  seen_ = watchedFiles();
+  seen_ = watchedFiles({});
   worker_ = std::thread([this] { work(); });
 }
 
@@ -101,9 +102,10 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   wake_.notify_all();
 }
 
-std::map<std::string, fs::file_time_type> ViewSession::watchedFiles() const {
+std::map<std::string, fs::file_time_type> ViewSession::watchedFiles(const std::vector<std::string>& data) const {
   std::map<std::string, fs::file_time_type> out;
   std::error_code ec;
+  for (const std::string& f : data) out[f] = fs::last_write_time(f, ec);
   const fs::path grammar = fs::absolute(options_.file, ec);
   out[grammar.string()] = fs::last_write_time(grammar, ec);
   for (const fs::path& dir : {grammar.parent_path(), grammar.parent_path() / "assets"}) {
@@ -114,7 +116,12 @@ std::map<std::string, fs::file_time_type> ViewSession::watchedFiles() const {
 }
 
 void ViewSession::checkFiles() {
-  auto now = watchedFiles();
+  std::vector<std::string> data;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    data = dataFiles_;
+  }
+  auto now = watchedFiles(data);
   std::lock_guard<std::mutex> lock(mutex_);
   if (now == seen_) return;
   seen_ = std::move(now);
@@ -175,6 +182,16 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
     if (!fresh) return fail(diagnostics.str());
     compiled_ = std::move(fresh);
     loader.reset();  // a new grammar: its own code
+    // Watch what this version reads too (a mesh, a texture, a field file beyond the folder).
+    std::vector<std::string> extra;
+    if (!options_.derive.surfaceOverride.empty()) extra.push_back(options_.derive.surfaceOverride);
+    std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (data != dataFiles_) {
+      std::error_code ec;
+      for (const std::string& f : data) seen_.emplace(f, fs::last_write_time(f, ec));
+      dataFiles_ = std::move(data);
+    }
   }
   // The page's values for attributes this grammar has; a value that does not fit its
   // attribute is an error in the page, not a crash.

@@ -57,7 +57,8 @@ class ViewSession {
   void deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const;
-  std::map<std::string, std::filesystem::file_time_type> watchedFiles() const;
+  // The grammar, its folder and assets/, and the data files it names (grammarDataFiles).
+  std::map<std::string, std::filesystem::file_time_type> watchedFiles(const std::vector<std::string>& data) const;
 
   ViewOptions options_;
   ViewServer& server_;
@@ -74,6 +75,7 @@ class ViewSession {
   rt::InstanceList lastInstances_;      // its instances, for picking
   std::vector<std::string> lastRules_;  // its grammar's rules as picking names them
   std::map<std::string, std::filesystem::file_time_type> seen_;
+  std::vector<std::string> dataFiles_;  // the files the last compiled grammar names
 
   std::thread worker_;
 };

@@ -1,8 +1,9 @@
 // fgsg view in a real browser: Debian's chromium, headless, driven by playwright-core.
 // The page loads and draws a non-empty model, its repeated assets instanced; a click on
-// it names the symbol that placed what is under it; an attribute changed in the inspector and
-// an edit of the grammar file each bring a new model; an edit with an error shows its
-// diagnostic (file:line:col, the line, a caret) and keeps the last model.
+// it names the symbol, rule and depth that placed what is under it; an attribute changed in
+// the inspector, an edit of the grammar file and a save of a mesh it names from a folder of
+// its own each bring a new model; an edit with an error shows its diagnostic
+// (file:line:col, the line, a caret) and keeps the last model.
 // usage: node view_page.js FGSG_BINARY SOURCE_DIR OUT_DIR
 'use strict';
 const { spawn } = require('child_process');
@@ -128,6 +129,23 @@ async function main() {
     const taller = await page.evaluate(() => window.fgsgViewer.size[1]);
     console.log(`model height ${wideHeight.toFixed(2)} -> ${taller.toFixed(2)}`);
     if (!(Math.abs(taller - wideHeight - 6) < 0.01)) fail('building_height 12 did not raise the walls by 6');
+
+    // 3b. A mesh the grammar uses from a folder of its own: saving it derives again.
+    await page.waitForTimeout(1000);
+    fs.mkdirSync(path.join(dir, 'parts'));
+    fs.copyFileSync(path.join(source, 'examples/assets/flatbrick.obj'), path.join(dir, 'parts/brick.obj'));
+    text = fs.readFileSync(grammar, 'utf8');
+    if (!text.includes('I("flatbrick.obj")')) fail('the example no longer places flatbrick.obj');
+    fs.writeFileSync(grammar, text.replace('I("flatbrick.obj")', 'I("parts/brick.obj")'));
+    await models(4);
+    await page.waitForTimeout(1500);  // the page may ask once more for the new grammar's values
+    const bricks = await page.evaluate(() => window.fgsgViewer.figures.triangles);
+    fs.writeFileSync(path.join(dir, 'parts/brick.obj'), 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n');
+    await page.waitForFunction((n) => window.fgsgViewer.figures.triangles !== n, bricks, { timeout: 30000 })
+      .catch(() => {});
+    const tetrahedra = await page.evaluate(() => window.fgsgViewer.figures.triangles);
+    console.log(`parts/brick.obj saved as a tetrahedron: triangles ${bricks} -> ${tetrahedra}`);
+    if (!(tetrahedra < bricks)) fail('saving a mesh the grammar uses did not derive again');
 
     // 4. An edit with an error: the diagnostic in the page, the last model kept.
     await page.waitForTimeout(1000);  // an editor's save may come as two writes: let both land
