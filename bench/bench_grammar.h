@@ -12,7 +12,7 @@
 
 namespace fgsg::bench {
 
-inline ir::Module compileGrammar(const frontend::SourceFile& file) {
+inline ir::Module compileGrammar(frontend::SourceFile file) {
   frontend::Diagnostics diags(&file);
   ir::Module m;
   if (!ir::compileSource(file, m, diags)) {

@@ -83,8 +83,9 @@ void Session::printMapped(const Assembled& a, const frontend::Diagnostic& d,
 
 bool Session::compile(const Assembled& a, ir::Module& out, std::ostream& err,
                       const SourceFile* warningsFor) const {
-  frontend::Diagnostics diags(&a.source);
-  const bool ok = ir::compileSource(a.source, out, diags);
+  SourceFile source = a.source;  // gains the texts of the modules it imports
+  frontend::Diagnostics diags(&source);
+  const bool ok = ir::compileSource(source, out, diags);
   for (const auto& d : diags.all()) {
     if (d.severity != frontend::Severity::Error) {
       // Warnings of earlier inputs were shown when they were typed.

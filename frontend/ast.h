@@ -117,6 +117,7 @@ struct Rule {
   std::vector<ModulePattern> rightContext;  // pred > rc
   ExprPtr guard;                            // null: always true
   std::vector<Branch> branches;             // one or more `~> successor : prob`
+  bool imported = false;                    // from a module: the importer may not use it (no W002)
 };
 
 // ---------------------------------------------------------------- declarations
@@ -221,6 +222,16 @@ struct CollisionDecl {  // collision all;  collision centre 0.3;  collision all 
   std::vector<CollisionWord> words;
 };
 
+// import "std/cga/facade" as facade (floor_height = 3.5);  (frontend/imports.cpp)
+struct ImportDecl {
+  SourceRange range;
+  SourceRange pathRange;
+  std::string path;   // as written
+  std::string alias;  // empty: the module's names come unqualified
+  std::vector<std::pair<std::string, ExprPtr>> settings;  // the module's attrs, set here
+  std::vector<SourceRange> settingRanges;
+};
+
 struct AxiomDecl {  // axiom: S(20,0,12) footprint;
   SourceRange range;
   Successor successor;
@@ -228,6 +239,7 @@ struct AxiomDecl {  // axiom: S(20,0,12) footprint;
 
 struct Program {
   std::string fileName;
+  std::vector<ImportDecl> imports;
   std::vector<ValueDecl> values;
   std::vector<Rule> rules;
   std::vector<SurfaceDecl> surfaces;

@@ -63,7 +63,8 @@ ExprPtr makeExpr(ExprKind kind, const SourceRange& range) {
 void AstBuilder::addStatement(P::StatementContext* ctx) {
   if (!ctx) return;
   depthReported_ = false;
-  if (auto* c = ctx->valueDecl()) program_.values.push_back(buildValueDecl(c));
+  if (auto* c = ctx->importDecl()) program_.imports.push_back(buildImportDecl(c));
+  else if (auto* c = ctx->valueDecl()) program_.values.push_back(buildValueDecl(c));
   else if (auto* c = ctx->surfaceDecl()) program_.surfaces.push_back(buildSurfaceDecl(c));
   else if (auto* c = ctx->fieldDecl()) program_.fields.push_back(buildFieldDecl(c));
   else if (auto* c = ctx->textureDecl()) program_.textures.push_back(buildTextureDecl(c));
@@ -78,6 +79,21 @@ void AstBuilder::addStatement(P::StatementContext* ctx) {
 }
 
 // ============================================================== declarations
+
+ImportDecl AstBuilder::buildImportDecl(P::ImportDeclContext* ctx) {
+  ImportDecl d;
+  d.range = rangeOf(ctx);
+  d.path = unquote(text(ctx->path));
+  d.pathRange = rangeOf(ctx->path);
+  if (ctx->asWord && text(ctx->asWord) != "as")
+    diags_.error("E002", rangeOf(ctx->asWord), "expected `as` after the module's path, found '" + text(ctx->asWord) + "'");
+  if (ctx->alias) d.alias = text(ctx->alias);
+  for (auto* s : ctx->importSetting()) {
+    d.settings.emplace_back(text(s->name), buildExpr(s->expr()));
+    d.settingRanges.push_back(rangeOf(s));
+  }
+  return d;
+}
 
 ValueDecl AstBuilder::buildValueDecl(P::ValueDeclContext* ctx) {
   ValueDecl d;

@@ -19,6 +19,7 @@ class AstBuilder {
   using P = fgsg_grammar::FgsgParser;
 
   // declarations
+  ImportDecl buildImportDecl(P::ImportDeclContext* ctx);
   ValueDecl buildValueDecl(P::ValueDeclContext* ctx);
   SurfaceDecl buildSurfaceDecl(P::SurfaceDeclContext* ctx);
   FieldDecl buildFieldDecl(P::FieldDeclContext* ctx);

@@ -43,23 +43,68 @@ std::string caretLine(const std::string& sourceLine, const SourceRange& range) {
 
 }  // namespace
 
-SourceFile SourceFile::make(std::string name, std::string text) {
-  SourceFile file;
-  file.name = std::move(name);
-  file.text = std::move(text);
+namespace {
+
+// Marks a module's text in SourceFile::text: "\n" kModuleMark key US name US importer US
+// written "\n" text. Control characters no grammar contains (the lexer refuses them).
+const std::string kModuleMark = "\x1e" "fgsg-module\x1f";
+constexpr char kUnit = '\x1f';
+
+void splitLines(const std::string& text, std::vector<std::string>& lines) {
   std::string line;
-  for (char c : file.text) {
+  for (char c : text) {
     if (c == '\n') {
       if (!line.empty() && line.back() == '\r') line.pop_back();
-      file.lines.push_back(std::move(line));
+      lines.push_back(std::move(line));
       line.clear();
     } else {
       line += c;
     }
   }
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  file.lines.push_back(std::move(line));
+  lines.push_back(std::move(line));
+}
+
+}  // namespace
+
+SourceFile SourceFile::make(std::string name, std::string text) {
+  SourceFile file;
+  file.name = std::move(name);
+  const size_t first = text.find("\n" + kModuleMark);
+  file.text = text.substr(0, first);
+  splitLines(file.text, file.lines);
+  file.mainLength_ = file.text.size();
+  // A grammar with its modules (a compiled library's embedded text): the modules again.
+  for (size_t at = first; at != std::string::npos;) {
+    const size_t head = at + 1 + kModuleMark.size();
+    const size_t eol = text.find('\n', head);
+    const size_t next = eol == std::string::npos ? std::string::npos : text.find("\n" + kModuleMark, eol);
+    if (eol == std::string::npos) break;
+    std::vector<std::string> words;
+    size_t from = head;
+    for (size_t u; (u = text.find(kUnit, from)) != std::string::npos && u < eol; from = u + 1)
+      words.push_back(text.substr(from, u - from));
+    words.push_back(text.substr(from, eol - from));
+    if (words.size() != 4) break;
+    Module m{words[0], words[1], words[2], words[3],
+             text.substr(eol + 1, next == std::string::npos ? std::string::npos : next - eol - 1), 0};
+    file.addModule(std::move(m));
+    at = next;
+  }
   return file;
+}
+
+void SourceFile::addModule(Module m) {
+  m.firstLine = static_cast<int>(lines.size()) + 1;
+  splitLines(m.text, lines);
+  text += "\n" + kModuleMark + m.key + kUnit + m.name + kUnit + m.importer + kUnit + m.written + "\n" + m.text;
+  modules.push_back(std::move(m));
+}
+
+std::pair<std::string, int> SourceFile::locate(int line) const {
+  for (auto m = modules.rbegin(); m != modules.rend(); ++m)
+    if (line >= m->firstLine) return {m->name, line - m->firstLine + 1};
+  return {name, line};
 }
 
 void Diagnostics::error(const std::string& code, const SourceRange& at, std::string message) {
@@ -79,10 +124,11 @@ void Diagnostics::note(const SourceRange& at, std::string message) {
 // newline. A diagnostic without a location (line 0) is the first line only.
 std::string Diagnostics::format(const Diagnostic& d) const {
   std::ostringstream out;
-  const std::string fileName = file_ ? file_->name : std::string("<input>");
   const bool located = d.range.begin.line > 0;
+  const auto [fileName, line] = file_ && located ? file_->locate(d.range.begin.line)
+                                : std::pair<std::string, int>(file_ ? file_->name : "<input>", 0);
   out << fileName << ':';
-  if (located) out << d.range.begin.line << ':' << std::max(d.range.begin.col, 1) << ':';
+  if (located) out << line << ':' << std::max(d.range.begin.col, 1) << ':';
   out << ' ' << severityWord(d.severity);
   if (d.severity != Severity::Note && !d.code.empty()) out << '[' << d.code << ']';
   out << ": " << d.message;

@@ -11,12 +11,36 @@
 
 namespace fgsg::frontend {
 
+// A grammar's text and, once its imports are read (frontend/imports.cpp), the modules' texts
+// after it: one numbering of lines for the whole (each module's lines follow the ones
+// before), so locations stay (line, column) and a diagnostic names the file they are in.
 struct SourceFile {
   std::string name;  // as given by the user, printed in diagnostics
+  // The grammar's text, then each module's behind a marker line: what a JIT cache key
+  // hashes and a compiled library embeds, so the modules travel with the grammar.
   std::string text;
-  std::vector<std::string> lines;  // filled by SourceFile::make
+  std::vector<std::string> lines;  // the grammar's lines, then each module's
 
+  struct Module {
+    std::string key;       // where it was read (a path): one import of it is one module
+    std::string name;      // as diagnostics name it
+    std::string importer;  // the key of the file whose import read it ("": the grammar)
+    std::string written;   // that import's path, as written
+    std::string text;
+    int firstLine = 0;     // its line 1 is lines[firstLine - 1]
+  };
+  std::vector<Module> modules;
+
+  // `text` may be a grammar with its modules (as `text` above): they are split off again.
   static SourceFile make(std::string name, std::string text);
+  // The grammar's own text, without its modules.
+  std::string mainText() const { return text.substr(0, mainLength_); }
+  void addModule(Module m);
+  // The file a line of the whole is in, and the line there.
+  std::pair<std::string, int> locate(int line) const;
+
+ private:
+  size_t mainLength_ = std::string::npos;
 };
 
 enum class Severity { Error, Warning, Note };

@@ -85,7 +85,7 @@ class LexerErrorReporter : public antlr4::BaseErrorListener {
 
 bool isStatementKeyword(size_t type) {
   switch (type) {
-    case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
+    case FgsgLexer::IMPORT: case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
     case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE:
     case FgsgLexer::TURTLE: case FgsgLexer::IGNORE: case FgsgLexer::COLLISION: case FgsgLexer::AXIOM:
     case FgsgLexer::PRIORITY:
@@ -339,6 +339,38 @@ void markPolygonVertices(std::vector<std::unique_ptr<Token>>& tokens) {
   }
 }
 
+// `import "..." as facade;` makes `facade.Window` and `facade.floor_height` one name: the
+// alias, '.' and a name written together become a single ID token (frontend/imports.cpp
+// names the module's declarations so). Runs before the polygon '.'s are told apart.
+void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens) {
+  std::vector<std::string> aliases;
+  for (size_t i = 0; i + 3 < tokens.size(); ++i)
+    if (tokens[i]->getType() == FgsgLexer::IMPORT && tokens[i + 1]->getType() == FgsgLexer::STRING &&
+        tokens[i + 2]->getType() == FgsgLexer::ID && tokens[i + 2]->getText() == "as" &&
+        tokens[i + 3]->getType() == FgsgLexer::ID)
+      aliases.push_back(tokens[i + 3]->getText());
+  if (aliases.empty()) return;
+  const auto adjacent = [](const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); };
+  std::vector<std::unique_ptr<Token>> out;
+  out.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    Token* t = tokens[i].get();
+    if (t->getType() == FgsgLexer::ID && i + 2 < tokens.size() && tokens[i + 1]->getType() == FgsgLexer::DOT &&
+        tokens[i + 2]->getType() == FgsgLexer::ID && adjacent(t, tokens[i + 1].get()) &&
+        adjacent(tokens[i + 1].get(), tokens[i + 2].get()) &&
+        std::find(aliases.begin(), aliases.end(), t->getText()) != aliases.end()) {
+      auto* joined = static_cast<antlr4::CommonToken*>(t);
+      joined->setText(t->getText() + "." + tokens[i + 2]->getText());
+      joined->setStopIndex(tokens[i + 2]->getStopIndex());
+      out.push_back(std::move(tokens[i]));
+      i += 2;
+      continue;
+    }
+    out.push_back(std::move(tokens[i]));
+  }
+  tokens = std::move(out);
+}
+
 }  // namespace
 
 bool isImplicitSemicolon(const Token* token) {
@@ -357,9 +389,13 @@ SourceRange tokenRange(const Token* token) {
 }
 
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
+  return lexText(file.name, file.mainText(), diags);
+}
+
+LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags) {
   LexedSource lexed;
-  lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(file.text));
-  lexed.input->name = file.name;
+  lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(text));
+  lexed.input->name = name;
   lexed.lexer = std::make_unique<FgsgLexer>(lexed.input.get());
   lexed.lexer->removeErrorListeners();
   LexerErrorReporter reporter(diags);
@@ -374,6 +410,7 @@ LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
 
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
+  joinQualifiedNames(tokens);
   markPolygonVertices(tokens);
   for (size_t i : ImplicitSemicolons(tokens).colourSteps())
     static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);

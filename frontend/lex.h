@@ -25,7 +25,8 @@ struct LexedSource {
   std::vector<std::unique_ptr<antlr4::Token>> tokens;  // ends with EOF
 };
 
-LexedSource lexSource(const SourceFile& file, Diagnostics& diags);
+LexedSource lexSource(const SourceFile& file, Diagnostics& diags);  // the grammar's own text
+LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags);
 
 // An implicit ';' has no source text of its own; it sits on the last character of the
 // token before it.

@@ -97,10 +97,14 @@ class StatementScan {
 }  // namespace
 
 bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
-  out.fileName = file.name;
+  return parseText(file.name, file.mainText(), out, diags);
+}
+
+bool parseText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags) {
+  out.fileName = name;
   const int errorsBefore = diags.errorCount();
 
-  LexedSource lexed = lexSource(file, diags);
+  LexedSource lexed = lexText(name, text, diags);
   antlr4::ListTokenSource source(std::move(lexed.tokens));
   antlr4::CommonTokenStream tokens(&source);
   tokens.fill();

@@ -127,7 +127,8 @@ void Analyzer::checkReachability() {
   reach(baseParts, -1, basePiece, [](const Item&) {});
   for (size_t si = 0; si < res_.symbols.size(); ++si) {
     const auto& s = res_.symbols[si];
-    if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()))
+    if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()) &&
+        !prog_.rules[s.rules.front()].imported)  // a module's rules this grammar does not use
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");

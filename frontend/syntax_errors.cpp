@@ -116,7 +116,8 @@ std::string describeExpected(IntervalSet set, const antlr4::dfa::Vocabulary& voc
   if (set.size() > 1) set.remove(Token::EOF);
 
   group({P::CONST, P::PRIORITY, P::ID}, {P::CONST, P::ATTR, P::SURFACE, P::FIELD, P::TEXTURE,
-        P::TILESET, P::DERIVE, P::TURTLE, P::COLLISION, P::AXIOM, P::PRIORITY, P::ID, P::INT, P::SEMI},
+        P::TILESET, P::DERIVE, P::TURTLE, P::COLLISION, P::AXIOM, P::PRIORITY, P::ID, P::INT, P::SEMI,
+        P::IMPORT},
         "a rule or a declaration");
   // Where a successor may start, so may a Müller guard: "a successor" says enough.
   group({P::ID, P::LBRACK, P::PLUS}, {P::ID, P::LBRACK, P::PLUS, P::MINUS, P::AMP, P::AND, P::CARET,

@@ -22,7 +22,8 @@ tokens { VERTEX, COLORSTEP }
 program : statement* EOF ;
 
 statement
-  : valueDecl
+  : importDecl
+  | valueDecl
   | surfaceDecl
   | fieldDecl
   | textureDecl
@@ -40,6 +41,12 @@ statement
 // ------------------------------------------------------------ declarations
 
 valueDecl   : kind=(CONST | ATTR) name=ID '=' expr ';' ;
+
+// `import "std/cga/facade" as facade (floor_height = 3.5);`: a module's rules and
+// declarations (frontend/imports.cpp); `as` is a plain name here, so it stays usable.
+// `facade.Window` is one name: the lexing step joins an alias, '.' and a name.
+importDecl  : IMPORT path=STRING ( asWord=ID alias=ID )? ( '(' importSetting ( ',' importSetting )* ')' )? ';' ;
+importSetting : name=ID '=' expr ;
 
 surfaceDecl : SURFACE ( path=STRING | generator=ID callArgs? ) ';' ;
 
@@ -194,6 +201,7 @@ number : INT | FLOAT ;
 
 // =================================================================== lexer
 
+IMPORT   : 'import' ;
 CONST    : 'const' ;
 ATTR     : 'attr' ;
 SURFACE  : 'surface' ;

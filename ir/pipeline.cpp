@@ -1,5 +1,6 @@
 #include "ir/pipeline.h"
 
+#include "frontend/imports.h"
 #include "frontend/parse.h"
 #include "frontend/sema.h"
 #include "ir/fold.h"
@@ -19,12 +20,14 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
-bool compileSource(const frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+bool compileSource(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
                    CompileTimes* times) {
   auto t0 = std::chrono::steady_clock::now();
   frontend::Program program;
   program.fileName = file.name;
   bool parsed = frontend::parseProgram(file, program, diags);
+  // Its modules: their texts join `file`'s, which then keys the JIT's cache on them too.
+  parsed = frontend::resolveImports(file, program, diags) && parsed;
   if (times) times->parseSeconds = secondsSince(t0);
   if (!parsed) return false;
   t0 = std::chrono::steady_clock::now();

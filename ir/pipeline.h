@@ -14,8 +14,9 @@ struct CompileTimes {
 };
 
 // Returns false when the grammar has errors (they are in `diags`). A module that fails
-// verification is a compiler bug: reported as an internal error diagnostic.
-bool compileSource(const frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+// verification is a compiler bug: reported as an internal error diagnostic. The modules
+// the grammar imports are read (frontend/imports.h) and added to `file`.
+bool compileSource(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
                    CompileTimes* times = nullptr);
 
 // Reads a file into a SourceFile; false with a message when it cannot be read.

@@ -29,6 +29,14 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitImportDecl(FgsgParser::ImportDeclContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
+  virtual antlrcpp::Any visitImportSetting(FgsgParser::ImportSettingContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitSurfaceDecl(FgsgParser::SurfaceDeclContext *ctx) override {
     return visitChildren(ctx);
   }

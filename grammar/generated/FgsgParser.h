@@ -13,31 +13,32 @@ namespace fgsg_grammar {
 class  FgsgParser : public antlr4::Parser {
 public:
   enum {
-    CONST = 1, ATTR = 2, SURFACE = 3, FIELD = 4, TEXTURE = 5, TILESET = 6, 
-    DERIVE = 7, TURTLE = 8, IGNORE = 9, COLLISION = 10, AXIOM = 11, PRIORITY = 12, 
-    TRUE = 13, FALSE = 14, EPSILON = 15, ARROW = 16, ASSIGN = 17, EQ = 18, 
-    NEQ = 19, LE = 20, GE = 21, LT = 22, GT = 23, AND = 24, OR = 25, PLUS = 26, 
-    MINUS = 27, STAR = 28, SLASH = 29, PERCENT = 30, CARET = 31, BANG = 32, 
-    AMP = 33, PIPE = 34, BACKSLASH = 35, DOLLAR = 36, QUOTE = 37, TILDE = 38, 
-    QUESTION = 39, COLON = 40, SEMI = 41, COMMA = 42, DOT = 43, LPAREN = 44, 
-    RPAREN = 45, LBRACK = 46, RBRACK = 47, LBRACE = 48, RBRACE = 49, RELSIZE = 50, 
-    FLOAT = 51, INT = 52, ID = 53, STRING = 54, UNTERMINATED_STRING = 55, 
-    LINE_COMMENT = 56, BLOCK_COMMENT = 57, UNTERMINATED_COMMENT = 58, WS = 59, 
-    UNKNOWN_CHAR = 60, VERTEX = 61, COLORSTEP = 62
+    IMPORT = 1, CONST = 2, ATTR = 3, SURFACE = 4, FIELD = 5, TEXTURE = 6, 
+    TILESET = 7, DERIVE = 8, TURTLE = 9, IGNORE = 10, COLLISION = 11, AXIOM = 12, 
+    PRIORITY = 13, TRUE = 14, FALSE = 15, EPSILON = 16, ARROW = 17, ASSIGN = 18, 
+    EQ = 19, NEQ = 20, LE = 21, GE = 22, LT = 23, GT = 24, AND = 25, OR = 26, 
+    PLUS = 27, MINUS = 28, STAR = 29, SLASH = 30, PERCENT = 31, CARET = 32, 
+    BANG = 33, AMP = 34, PIPE = 35, BACKSLASH = 36, DOLLAR = 37, QUOTE = 38, 
+    TILDE = 39, QUESTION = 40, COLON = 41, SEMI = 42, COMMA = 43, DOT = 44, 
+    LPAREN = 45, RPAREN = 46, LBRACK = 47, RBRACK = 48, LBRACE = 49, RBRACE = 50, 
+    RELSIZE = 51, FLOAT = 52, INT = 53, ID = 54, STRING = 55, UNTERMINATED_STRING = 56, 
+    LINE_COMMENT = 57, BLOCK_COMMENT = 58, UNTERMINATED_COMMENT = 59, WS = 60, 
+    UNKNOWN_CHAR = 61, VERTEX = 62, COLORSTEP = 63
   };
 
   enum {
-    RuleProgram = 0, RuleStatement = 1, RuleValueDecl = 2, RuleSurfaceDecl = 3, 
-    RuleFieldDecl = 4, RuleFieldSource = 5, RuleFieldDesignItem = 6, RuleFieldDesignWord = 7, 
-    RuleDesignValue = 8, RuleTextureDecl = 9, RuleTilesetDecl = 10, RuleTilesetItem = 11, 
-    RuleDeriveDecl = 12, RuleTurtleDecl = 13, RuleTurtleSetting = 14, RuleIgnoreDecl = 15, 
-    RuleIgnoredSymbol = 16, RuleCollisionDecl = 17, RuleCollisionWord = 18, 
-    RuleAxiomDecl = 19, RulePriorityDecl = 20, RuleGrammarRule = 21, RuleRuleLabel = 22, 
-    RuleRuleHead = 23, RuleLeftContext = 24, RuleRightContext = 25, RuleContextModule = 26, 
-    RuleModulePattern = 27, RuleTurtleSymbol = 28, RuleParamDecl = 29, RuleRuleBody = 30, 
-    RuleBranch = 31, RuleArrow = 32, RuleSuccessor = 33, RuleSequenceItem = 34, 
-    RuleItem = 35, RuleCallArgs = 36, RuleBody = 37, RuleBodyPart = 38, 
-    RuleExpr = 39, RulePrimary = 40, RuleNumber = 41
+    RuleProgram = 0, RuleStatement = 1, RuleValueDecl = 2, RuleImportDecl = 3, 
+    RuleImportSetting = 4, RuleSurfaceDecl = 5, RuleFieldDecl = 6, RuleFieldSource = 7, 
+    RuleFieldDesignItem = 8, RuleFieldDesignWord = 9, RuleDesignValue = 10, 
+    RuleTextureDecl = 11, RuleTilesetDecl = 12, RuleTilesetItem = 13, RuleDeriveDecl = 14, 
+    RuleTurtleDecl = 15, RuleTurtleSetting = 16, RuleIgnoreDecl = 17, RuleIgnoredSymbol = 18, 
+    RuleCollisionDecl = 19, RuleCollisionWord = 20, RuleAxiomDecl = 21, 
+    RulePriorityDecl = 22, RuleGrammarRule = 23, RuleRuleLabel = 24, RuleRuleHead = 25, 
+    RuleLeftContext = 26, RuleRightContext = 27, RuleContextModule = 28, 
+    RuleModulePattern = 29, RuleTurtleSymbol = 30, RuleParamDecl = 31, RuleRuleBody = 32, 
+    RuleBranch = 33, RuleArrow = 34, RuleSuccessor = 35, RuleSequenceItem = 36, 
+    RuleItem = 37, RuleCallArgs = 38, RuleBody = 39, RuleBodyPart = 40, 
+    RuleExpr = 41, RulePrimary = 42, RuleNumber = 43
   };
 
   FgsgParser(antlr4::TokenStream *input);
@@ -53,6 +54,8 @@ public:
   class ProgramContext;
   class StatementContext;
   class ValueDeclContext;
+  class ImportDeclContext;
+  class ImportSettingContext;
   class SurfaceDeclContext;
   class FieldDeclContext;
   class FieldSourceContext;
@@ -111,6 +114,7 @@ public:
   public:
     StatementContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
+    ImportDeclContext *importDecl();
     ValueDeclContext *valueDecl();
     SurfaceDeclContext *surfaceDecl();
     FieldDeclContext *fieldDecl();
@@ -149,6 +153,46 @@ public:
   };
 
   ValueDeclContext* valueDecl();
+
+  class  ImportDeclContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *path = nullptr;;
+    antlr4::Token *asWord = nullptr;;
+    antlr4::Token *alias = nullptr;;
+    ImportDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *IMPORT();
+    antlr4::tree::TerminalNode *SEMI();
+    antlr4::tree::TerminalNode *STRING();
+    antlr4::tree::TerminalNode *LPAREN();
+    std::vector<ImportSettingContext *> importSetting();
+    ImportSettingContext* importSetting(size_t i);
+    antlr4::tree::TerminalNode *RPAREN();
+    std::vector<antlr4::tree::TerminalNode *> ID();
+    antlr4::tree::TerminalNode* ID(size_t i);
+    std::vector<antlr4::tree::TerminalNode *> COMMA();
+    antlr4::tree::TerminalNode* COMMA(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  ImportDeclContext* importDecl();
+
+  class  ImportSettingContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *name = nullptr;;
+    ImportSettingContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *ASSIGN();
+    ExprContext *expr();
+    antlr4::tree::TerminalNode *ID();
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  ImportSettingContext* importSetting();
 
   class  SurfaceDeclContext : public antlr4::ParserRuleContext {
   public:

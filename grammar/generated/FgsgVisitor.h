@@ -26,6 +26,10 @@ public:
 
     virtual antlrcpp::Any visitValueDecl(FgsgParser::ValueDeclContext *context) = 0;
 
+    virtual antlrcpp::Any visitImportDecl(FgsgParser::ImportDeclContext *context) = 0;
+
+    virtual antlrcpp::Any visitImportSetting(FgsgParser::ImportSettingContext *context) = 0;
+
     virtual antlrcpp::Any visitSurfaceDecl(FgsgParser::SurfaceDeclContext *context) = 0;
 
     virtual antlrcpp::Any visitFieldDecl(FgsgParser::FieldDeclContext *context) = 0;

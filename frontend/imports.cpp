@@ -1,0 +1,336 @@
+#include "frontend/imports.h"
+
+#include "frontend/builtins.h"
+#include "frontend/parse.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace fgsg::frontend {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr size_t kMaxModuleBytes = 16u << 20;  // a grammar module, not a data file
+constexpr int kMaxImportDepth = 64;
+
+std::string withExtension(const std::string& written) {
+  return fs::path(written).has_extension() ? written : written + ".fgsg";
+}
+
+// A module's names, renamed `alias.X` where it is imported `as alias`.
+class Qualifier {
+ public:
+  Qualifier(Program& m, const std::string& alias) : m_(m), prefix_(alias + ".") {
+    for (const auto& v : m.values) values_.insert(v.name);
+    for (const auto& f : m.fields) values_.insert(f.name);
+    for (const auto& t : m.textures) values_.insert(t.name), textures_.insert(t.name);
+    for (const auto& t : m.tilesets) values_.insert(t.name);
+  }
+
+  void run() {
+    for (auto& v : m_.values) {
+      expr(v.value, nullptr);
+      v.name = prefix_ + v.name;
+    }
+    for (auto& f : m_.fields) {
+      f.name = prefix_ + f.name;
+      for (auto& a : f.args) expr(a, nullptr);
+      for (auto& item : f.design)
+        for (auto& w : item.words) expr(w.value, nullptr);
+    }
+    for (auto& t : m_.textures) t.name = prefix_ + t.name;
+    for (auto& t : m_.tilesets) {
+      t.name = prefix_ + t.name;
+      for (auto& item : t.items)
+        for (auto& v : item.values) expr(v, nullptr);
+    }
+    for (auto& r : m_.rules) rule(r);
+  }
+
+ private:
+  void rule(Rule& r) {
+    std::set<std::string> params;
+    auto pattern = [&](ModulePattern& p) {
+      for (const auto& d : p.params) params.insert(d.name);
+      if (p.name != "[" && p.name != "]" && !findCommand(p.name)) p.name = prefix_ + p.name;
+    };
+    for (auto& p : r.leftContext) pattern(p);
+    pattern(r.predecessor);
+    for (auto& p : r.rightContext) pattern(p);
+    expr(r.guard, &params);
+    for (auto& b : r.branches) {
+      expr(b.probability, &params);
+      successor(b.successor, params);
+    }
+  }
+
+  void successor(Successor& s, const std::set<std::string>& params) {
+    expr(s.size, &params);
+    for (auto& item : s.items) this->item(item, params);
+  }
+
+  void item(Item& it, const std::set<std::string>& params) {
+    if (it.kind == ItemKind::Call && !findCommand(it.name)) it.name = prefix_ + it.name;
+    for (auto& a : it.args) expr(a, &params);
+    for (auto& b : it.body) successor(b, params);
+    for (auto& c : it.children) item(c, params);
+  }
+
+  void expr(ExprPtr& e, const std::set<std::string>* params) {
+    if (!e) return;
+    const bool shadowed = params && params->count(e->text);
+    if (e->kind == ExprKind::Ident && values_.count(e->text) && !shadowed) e->text = prefix_ + e->text;
+    if (e->kind == ExprKind::Member) {
+      if (values_.count(e->object) && !(params && params->count(e->object))) e->object = prefix_ + e->object;
+      if (e->object == "context" && textures_.count(e->text)) e->text = prefix_ + e->text;
+    }
+    for (auto& a : e->args) expr(a, params);
+  }
+
+  Program& m_;
+  std::string prefix_;
+  std::set<std::string> values_, textures_;
+};
+
+// What a program is assembled from, for clash messages: which import brought a name in.
+struct Origin {
+  std::string what;  // "std/cga/facade (imported at line 3)" or "this grammar"
+  SourceRange at;
+};
+
+class Importer {
+ public:
+  Importer(SourceFile& file, Diagnostics& diags, const ImportSearch& search)
+      : file_(file), diags_(diags), search_(search) {}
+
+  bool run(Program& program) {
+    const int before = diags_.errorCount();
+    std::error_code ec;
+    stack_.push_back(fs::weakly_canonical(file_.name, ec).string());  // the grammar itself
+    sites_.push_back({});
+    importAll(program, "", 0);
+    return diags_.errorCount() == before;
+  }
+
+ private:
+  // Where `written`, imported by the file `importer` ("" the grammar), is: its key.
+  std::string locate(const std::string& written, const std::string& importer, std::vector<std::string>& tried) const {
+    const std::string name = withExtension(written);
+    std::vector<fs::path> candidates;
+    if (name.rfind("std/", 0) == 0) {
+      if (!search_.stdlib.empty()) candidates.push_back(fs::path(search_.stdlib) / name.substr(4));
+    } else if (fs::path(name).is_absolute()) {
+      candidates.push_back(name);
+    } else {
+      const fs::path from = fs::path(importer.empty() ? file_.name : importer).parent_path();
+      candidates.push_back(from / name);
+      for (const std::string& dir : search_.path) candidates.push_back(fs::path(dir) / name);
+      if (!search_.stdlib.empty()) candidates.push_back(fs::path(search_.stdlib) / name);
+    }
+    std::error_code ec;
+    for (const fs::path& c : candidates) {
+      tried.push_back(c.string());
+      if (fs::is_regular_file(c, ec)) return fs::weakly_canonical(c, ec).string();
+    }
+    return "";
+  }
+
+  // The module an import names, from the grammar's text (a compiled library) or read now.
+  const SourceFile::Module* module(const ImportDecl& d, const std::string& importer) {
+    for (const auto& m : file_.modules)
+      if (m.importer == importer && m.written == d.path) return &m;
+    std::vector<std::string> tried;
+    const std::string key = locate(d.path, importer, tried);
+    if (key.empty()) {
+      std::string list;
+      for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t;
+      diags_.error("E060", d.pathRange, "cannot find the module '" + d.path + "' (looked for " + list +
+                                            "; FGSG_PATH adds folders, \"std/...\" names the standard library)");
+      return nullptr;
+    }
+    std::ifstream in(key, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in.good() && !in.eof()) {
+      diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "' (" + key + ")");
+      return nullptr;
+    }
+    if (text.str().size() > kMaxModuleBytes) {
+      diags_.error("E060", d.pathRange, "the module '" + d.path + "' (" + key + ") is larger than 16 MiB");
+      return nullptr;
+    }
+    std::string shown = d.path.rfind("std/", 0) == 0 ? withExtension(d.path) : key;
+    file_.addModule({key, shown, importer, d.path, text.str(), 0});
+    return &file_.modules.back();
+  }
+
+  // Merges every module `program` (the file `key`) imports into it.
+  void importAll(Program& program, const std::string& key, int depth) {
+    std::vector<ImportDecl> imports = std::move(program.imports);
+    program.imports.clear();
+    std::map<std::string, Origin> declared;  // name -> where it came from, for clashes
+    auto own = [&](const std::string& name, SourceRange at) { declared.emplace(name, Origin{"this file", at}); };
+    for (const auto& v : program.values) own(v.name, v.range);
+    for (const auto& f : program.fields) own(f.name, f.range);
+    for (const auto& t : program.textures) own(t.name, t.range);
+    for (const auto& t : program.tilesets) own(t.name, t.range);
+    std::map<std::string, Origin> ruled;  // symbol -> the file that gives it rules
+    for (const auto& r : program.rules) ruled.emplace(r.predecessor.name, Origin{"this file", r.range});
+
+    for (ImportDecl& d : imports) {
+      const SourceFile::Module* m = module(d, key);
+      if (!m) continue;
+      const std::string mKey = m->key;
+      if (const auto on = std::find(stack_.begin(), stack_.end(), mKey); on != stack_.end()) {
+        std::string chain;
+        for (auto k = on; k != stack_.end(); ++k) chain += fs::path(*k).filename().string() + " imports ";
+        diags_.error("E061", d.pathRange, "import cycle: " + chain + fs::path(mKey).filename().string() +
+                                              " again; a module cannot import itself, even through others");
+        const size_t next = size_t(on - stack_.begin()) + 1;  // the import the cycle went out by
+        if (next < sites_.size()) diags_.note(sites_[next], "the cycle leaves " + fs::path(mKey).filename().string() + " here");
+        continue;
+      }
+      if (depth >= kMaxImportDepth) {
+        diags_.error("E061", d.pathRange, "imports nest deeper than " + std::to_string(kMaxImportDepth));
+        continue;
+      }
+      Program mod;
+      // Blank lines before its text put its tokens on its own lines of the whole.
+      const std::string text = std::string(size_t(m->firstLine - 1), '\n') + m->text;
+      const std::string moduleName = m->name;
+      if (!parseText(moduleName, text, mod, diags_)) continue;
+      stack_.push_back(mKey);
+      sites_.push_back(d.pathRange);
+      importAll(mod, mKey, depth + 1);
+      stack_.pop_back();
+      sites_.pop_back();
+      dropProgramWide(mod);
+      if (!d.alias.empty()) Qualifier(mod, d.alias).run();
+      for (auto& r : mod.rules) r.imported = true;
+      applySettings(d, mod);
+      const Origin from{"'" + d.path + "' (imported at line " + std::to_string(file_.locate(d.range.begin.line).second) + ")",
+                        d.range};
+      merge(mod, program, declared, ruled, from);
+    }
+  }
+
+  // A module's start and what belongs to a whole program are the importer's.
+  static void dropProgramWide(Program& m) {
+    m.axioms.clear();
+    m.derives.clear();
+    m.surfaces.clear();
+    m.turtles.clear();
+    m.ignores.clear();
+    m.collisions.clear();
+    std::vector<Rule> kept;
+    for (auto& r : m.rules)
+      if (r.predecessor.name != "Axiom" && r.predecessor.name != "axiom" && r.predecessor.name != "start" &&
+          r.predecessor.name != "Start")
+        kept.push_back(std::move(r));
+    m.rules = std::move(kept);
+  }
+
+  // `import "m" as m (floor_height = 3.5)`: the module's attr takes the importer's value.
+  void applySettings(ImportDecl& d, Program& mod) {
+    for (size_t i = 0; i < d.settings.size(); ++i) {
+      const std::string name = (d.alias.empty() ? "" : d.alias + ".") + d.settings[i].first;
+      bool found = false;
+      for (auto& v : mod.values)
+        if (v.name == name && v.isAttr) {
+          v.value = std::move(d.settings[i].second);
+          found = true;
+        }
+      if (!found)
+        diags_.error("E062", d.settingRanges[i], "the module '" + d.path + "' has no attr '" + d.settings[i].first + "'");
+    }
+  }
+
+  void merge(Program& mod, Program& into, std::map<std::string, Origin>& declared, std::map<std::string, Origin>& ruled,
+             const Origin& from) {
+    auto claim = [&](const std::string& name, SourceRange) {
+      const auto [it, fresh] = declared.emplace(name, Origin{from.what, from.at});
+      if (fresh) return true;
+      clash(name, it->second, from);
+      return false;
+    };
+    for (auto& v : mod.values)
+      if (claim(v.name, v.range)) into.values.push_back(std::move(v));
+    for (auto& f : mod.fields)
+      if (claim(f.name, f.range)) into.fields.push_back(std::move(f));
+    for (auto& t : mod.textures)
+      if (claim(t.name, t.range)) into.textures.push_back(std::move(t));
+    for (auto& t : mod.tilesets)
+      if (claim(t.name, t.range)) into.tilesets.push_back(std::move(t));
+    std::set<std::string> mine;
+    for (auto& r : mod.rules) {
+      const std::string& name = r.predecessor.name;
+      if (!mine.count(name)) {
+        const auto [it, fresh] = ruled.emplace(name, from);
+        if (!fresh) {
+          clash(name, it->second, from);
+          continue;
+        }
+        mine.insert(name);
+      }
+      into.rules.push_back(std::move(r));
+    }
+  }
+
+  // Both sites: the later import (or declaration) as the error, the first as a note.
+  void clash(const std::string& name, const Origin& first, const Origin& second) {
+    diags_.error("E063", second.at,
+                 "'" + name + "' comes from both " + second.what + " and " + first.what +
+                     "; import one of them `as` a name (its names are then written name." + name + ")");
+    diags_.note(first.at, "'" + name + "' first comes from here");
+  }
+
+  SourceFile& file_;
+  Diagnostics& diags_;
+  const ImportSearch& search_;
+  std::vector<std::string> stack_;  // the modules being imported, outermost first
+  std::vector<SourceRange> sites_;  // the import that brought each in (the grammar: none)
+};
+
+}  // namespace
+
+ImportSearch defaultImportSearch() {
+  ImportSearch s;
+  if (const char* path = std::getenv("FGSG_PATH"); path && *path) {
+    std::string dir;
+    for (const char* c = path;; ++c) {
+      if (*c == ':' || *c == '\0') {
+        if (!dir.empty()) s.path.push_back(dir);
+        dir.clear();
+        if (*c == '\0') break;
+      } else {
+        dir += *c;
+      }
+    }
+  }
+  std::error_code ec;
+  // An installed fgsg finds it beside itself, wherever the prefix was moved to.
+  const fs::path besideExe = fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "share/fgsg/stdlib";
+  if (const char* lib = std::getenv("FGSG_STDLIB"); lib && *lib) s.stdlib = lib;
+  else if (!ec && fs::is_directory(besideExe, ec)) s.stdlib = besideExe.string();
+#ifdef FGSG_INSTALLED_STDLIB
+  else if (fs::is_directory(FGSG_INSTALLED_STDLIB, ec)) s.stdlib = FGSG_INSTALLED_STDLIB;
+#endif
+#ifdef FGSG_SOURCE_STDLIB
+  else if (fs::is_directory(FGSG_SOURCE_STDLIB, ec)) s.stdlib = FGSG_SOURCE_STDLIB;
+#endif
+  return s;
+}
+
+bool resolveImports(SourceFile& file, Program& program, Diagnostics& diags, const ImportSearch& search) {
+  if (program.imports.empty()) return true;
+  return Importer(file, diags, search).run(program);
+}
+
+}  // namespace fgsg::frontend
