@@ -48,6 +48,15 @@ def test_a_compiled_library_runs_with_the_same_bytes(tmp_path):
         fgsg.Grammar.from_library(library, name="other")
 
 
+def test_a_grammar_with_imports_takes_qualified_attrs(tmp_path):
+    house = os.path.join(SOURCE, "examples", "stdlib_house.fgsg")
+    r = fgsg.Grammar.from_file(house).generate(attrs={"facade.floors": 3, "roof.kind": "gable"})
+    r.write(tmp_path / "py.obj")
+    cli = run_cli(house, tmp_path / "cli.obj", "--set", "facade.floors=3", "--set", "roof.kind=gable")
+    assert (tmp_path / "py.obj").read_bytes() == cli
+    assert "facade.floors" in fgsg.Grammar.from_file(house).attrs
+
+
 def test_arrays_are_views_of_the_result():
     r = fgsg.Grammar.from_file(MUELLER).generate(seed=1)
     for a, dtype, width in ((r.positions, np.float32, 3), (r.normals, np.float32, 3), (r.indices, np.uint32, 3)):
