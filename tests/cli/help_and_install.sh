@@ -20,7 +20,7 @@ if ! cmake --install "$build" --prefix "$prefix" >/dev/null; then
   echo "FAIL: cmake --install"; exit 1
 fi
 for f in bin/fgsg lib/libfgsg.so lib/libfgsg_llvm.so lib/libfgsg_fcl.so share/fgsg/viewer/index.html \
-         share/fgsg/viewer/three/build/three.module.js; do
+         share/fgsg/viewer/three/build/three.module.js share/fgsg/stdlib/cga/facade.fgsg share/fgsg/stdlib/README.md; do
   [ -e "$prefix/$f" ] || { echo "FAIL: $f not installed"; fail=1; }
 done
 cd "$prefix"
@@ -29,6 +29,14 @@ FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/fig4_loc
 [ -s "$prefix/fig4.glb" ] || { echo "FAIL: no fig4.glb"; fail=1; }
 FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/lock_flowers.fgsg" -o "$prefix/flowers.glb" --quiet \
   || { echo "FAIL: the installed fgsg cannot place collision-tested instances (FCL plugin)"; fail=1; }
+# The installed standard library, found beside bin/ (a module only it has proves which one).
+mkdir -p "$prefix/share/fgsg/stdlib/only_installed"
+printf 'Mark ~> I("cube");\n' > "$prefix/share/fgsg/stdlib/only_installed/mark.fgsg"
+printf 'import "std/only_installed/mark" as m;\naxiom: m.Mark;\n' > "$prefix/uses_installed.fgsg"
+env -u FGSG_STDLIB FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$prefix/uses_installed.fgsg" -o "$prefix/m.glb" --quiet \
+  || { echo "FAIL: the installed fgsg does not find its standard library"; fail=1; }
+env -u FGSG_STDLIB FGSG_CACHE_DIR="$prefix/cache" "$prefix/bin/fgsg" run "$source/examples/stdlib_house.fgsg" -o "$prefix/house.glb" --quiet \
+  || { echo "FAIL: the installed fgsg cannot build the house from its standard library"; fail=1; }
 "$prefix/bin/fgsg" compile "$source/examples/koch.fgsg" -o "$prefix/libkoch.so" --quiet \
   || { echo "FAIL: the installed fgsg cannot compile a grammar library"; fail=1; }
 # The installed Python package finds its engine's plugins in PREFIX/lib.
