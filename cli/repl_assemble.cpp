@@ -21,7 +21,7 @@ Assembled Session::assemble(const std::vector<Statement>& list, bool valuesOnly)
   int priority = 0;
   for (const Statement& s : list) {
     const bool isRule = s.key.rfind("rule:", 0) == 0;
-    if (valuesOnly && s.key.rfind("value:", 0) != 0) continue;
+    if (valuesOnly && s.key.rfind("value:", 0) != 0 && s.key.rfind("import:", 0) != 0) continue;  // modules' values too
     if (isRule && s.priority != priority) {
       text += "priority " + std::to_string(s.priority) + ":\n";
       ++line;

@@ -37,11 +37,22 @@ bool hasQuery(const ir::Expr& e) {
 }  // namespace
 
 bool Session::addStatements(std::shared_ptr<const SourceFile> input, std::ostream& err) {
-  // Syntax first, against the input alone, so positions are the input's own.
+  // Syntax first, against the input alone, so positions are the input's own; `p.X` is one
+  // name where an earlier input imported `as p`.
   {
+    SourceFile alone = *input;
+    for (const Statement& s : statements_)
+      if (s.key.rfind("import:", 0) == 0) {
+        const frontend::SourceFile one = SourceFile::make(s.origin->name, s.text + ";");
+        frontend::Program p;
+        frontend::Diagnostics quiet(&one);
+        frontend::parseProgram(one, p, quiet);
+        for (const auto& d : p.imports)
+          if (!d.alias.empty()) alone.importAliases.push_back(d.alias);
+      }
     frontend::Program program;
-    frontend::Diagnostics diags(input.get());
-    if (!frontend::parseProgram(*input, program, diags)) {
+    frontend::Diagnostics diags(&alone);
+    if (!frontend::parseProgram(alone, program, diags)) {
       for (const auto& d : diags.all()) err << diags.format(d) << "\n";
       return false;
     }

@@ -61,8 +61,8 @@ Lexed lexQuietly(const SourceFile& f) {
 
 bool isDeclKeyword(size_t type) {
   switch (type) {
-    case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE: case FgsgLexer::FIELD:
-    case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE: case FgsgLexer::TURTLE:
+    case FgsgLexer::IMPORT: case FgsgLexer::CONST: case FgsgLexer::ATTR: case FgsgLexer::SURFACE:
+    case FgsgLexer::FIELD: case FgsgLexer::TEXTURE: case FgsgLexer::TILESET: case FgsgLexer::DERIVE: case FgsgLexer::TURTLE:
     case FgsgLexer::COLLISION: case FgsgLexer::AXIOM: case FgsgLexer::PRIORITY:
       return true;
     default:
@@ -135,6 +135,7 @@ std::vector<Statement> splitStatements(const std::shared_ptr<const SourceFile>& 
       return std::string(kind) + (start + 1 < end ? l.tokens[start + 1]->getText() : "");
     };
     switch (type) {
+      case FgsgLexer::IMPORT: s.key = "import:" + s.text; break;  // the same import again replaces nothing
       case FgsgLexer::CONST: case FgsgLexer::ATTR: s.key = nameAfter("value:"); break;
       case FgsgLexer::FIELD: s.key = nameAfter("field:"); break;
       case FgsgLexer::TEXTURE: s.key = nameAfter("texture:"); break;

@@ -30,6 +30,9 @@ struct SourceFile {
     int firstLine = 0;     // its line 1 is lines[firstLine - 1]
   };
   std::vector<Module> modules;
+  // Import aliases declared outside this text (the REPL's earlier inputs): `alias.X` is one
+  // name here too.
+  std::vector<std::string> importAliases;
 
   // `text` may be a grammar with its modules (as `text` above): they are split off again.
   static SourceFile make(std::string name, std::string text);

@@ -342,8 +342,7 @@ void markPolygonVertices(std::vector<std::unique_ptr<Token>>& tokens) {
 // `import "..." as facade;` makes `facade.Window` and `facade.floor_height` one name: the
 // alias, '.' and a name written together become a single ID token (frontend/imports.cpp
 // names the module's declarations so). Runs before the polygon '.'s are told apart.
-void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens) {
-  std::vector<std::string> aliases;
+void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens, std::vector<std::string> aliases) {
   for (size_t i = 0; i + 3 < tokens.size(); ++i)
     if (tokens[i]->getType() == FgsgLexer::IMPORT && tokens[i + 1]->getType() == FgsgLexer::STRING &&
         tokens[i + 2]->getType() == FgsgLexer::ID && tokens[i + 2]->getText() == "as" &&
@@ -389,10 +388,11 @@ SourceRange tokenRange(const Token* token) {
 }
 
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
-  return lexText(file.name, file.mainText(), diags);
+  return lexText(file.name, file.mainText(), diags, file.importAliases);
 }
 
-LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags) {
+LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags,
+                    const std::vector<std::string>& importAliases) {
   LexedSource lexed;
   lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(text));
   lexed.input->name = name;
@@ -410,7 +410,7 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
 
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
-  joinQualifiedNames(tokens);
+  joinQualifiedNames(tokens, importAliases);
   markPolygonVertices(tokens);
   for (size_t i : ImplicitSemicolons(tokens).colourSteps())
     static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);

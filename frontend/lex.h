@@ -26,7 +26,8 @@ struct LexedSource {
 };
 
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags);  // the grammar's own text
-LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags);
+LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags,
+                    const std::vector<std::string>& importAliases = {});
 
 // An implicit ';' has no source text of its own; it sits on the last character of the
 // token before it.

@@ -97,14 +97,15 @@ class StatementScan {
 }  // namespace
 
 bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
-  return parseText(file.name, file.mainText(), out, diags);
+  return parseText(file.name, file.mainText(), out, diags, file.importAliases);
 }
 
-bool parseText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags) {
+bool parseText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
+               const std::vector<std::string>& importAliases) {
   out.fileName = name;
   const int errorsBefore = diags.errorCount();
 
-  LexedSource lexed = lexText(name, text, diags);
+  LexedSource lexed = lexText(name, text, diags, importAliases);
   antlr4::ListTokenSource source(std::move(lexed.tokens));
   antlr4::CommonTokenStream tokens(&source);
   tokens.fill();
