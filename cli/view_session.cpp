@@ -182,9 +182,11 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
     if (!fresh) return fail(diagnostics.str());
     compiled_ = std::move(fresh);
     loader.reset();  // a new grammar: its own code
-    // Watch what this version reads too (a mesh, a texture, a field file beyond the folder).
+    // Watch what this version reads too (its modules, a mesh, a texture, a field file beyond
+    // the folder).
     std::vector<std::string> extra;
     if (!options_.derive.surfaceOverride.empty()) extra.push_back(options_.derive.surfaceOverride);
+    for (const auto& m : compiled_->source.modules) extra.push_back(m.key);  // its imported modules
     std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
     std::lock_guard<std::mutex> lock(mutex_);
     if (data != dataFiles_) {
