@@ -99,6 +99,41 @@ class Qualifier {
   std::set<std::string> values_, textures_;
 };
 
+// A module's asset, image and field files are its own: names found beside the module (or
+// in its assets/ folder) become absolute paths, so the importer's folder need not hold them.
+class FileAnchor {
+ public:
+  FileAnchor(const fs::path& moduleFile) : dirs_{moduleFile.parent_path(), moduleFile.parent_path() / "assets"} {}
+
+  void run(Program& m) {
+    for (auto& t : m.textures) anchor(t.path);
+    for (auto& f : m.fields) anchor(f.path);
+    for (auto& r : m.rules)
+      for (auto& b : r.branches) successor(b.successor);
+  }
+
+ private:
+  void successor(Successor& s) {
+    for (auto& it : s.items) item(it);
+  }
+  void item(Item& it) {
+    const bool namesFile = it.name == "I" || it.name == "IC" || it.name == "IM" || it.name == "Texture";
+    if (namesFile && !it.args.empty() && it.args[0] && it.args[0]->kind == ExprKind::String) anchor(it.args[0]->text);
+    for (auto& b : it.body) successor(b);
+    for (auto& c : it.children) item(c);
+  }
+  void anchor(std::string& name) {
+    if (name.empty() || !fs::path(name).has_extension() || fs::path(name).is_absolute()) return;
+    std::error_code ec;
+    for (const fs::path& dir : dirs_)
+      if (fs::is_regular_file(dir / name, ec)) {
+        name = fs::absolute(dir / name, ec).lexically_normal().string();
+        return;
+      }
+  }
+  std::vector<fs::path> dirs_;
+};
+
 // What a program is assembled from, for clash messages: which import brought a name in.
 struct Origin {
   std::string what;  // "std/cga/facade (imported at line 3)" or "this grammar"
@@ -212,6 +247,7 @@ class Importer {
       stack_.pop_back();
       sites_.pop_back();
       dropProgramWide(mod);
+      FileAnchor(mKey).run(mod);
       if (!d.alias.empty()) Qualifier(mod, d.alias).run();
       for (auto& r : mod.rules) r.imported = true;
       applySettings(d, mod);

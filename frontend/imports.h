@@ -5,6 +5,7 @@
 // `name.X`, and its rules and declarations join the importer's. What belongs to a whole
 // program stays the importer's: a module's axiom (and its Axiom/start rules), `derive`,
 // `surface`, `turtle`, `collision` and `#ignore` apply only when the module runs alone.
+// The files a module names (assets, images, fields) are looked for beside it first.
 //
 // Search order for a path (".fgsg" added when it has no extension): "std/..." names the
 // standard library; any other path is looked up beside the importing file, then in each

@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -188,4 +189,17 @@ TEST_CASE("std/ names the standard library, FGSG_PATH adds folders") {
   REQUIRE(program.rules.size() == 2);
   CHECK(program.rules[0].predecessor.name == "ring.Ring");
   CHECK(program.rules[1].predecessor.name == "dot.Dot");
+}
+
+TEST_CASE("a module's asset files are found beside the module") {
+  const fs::path dir = scratch("assets");
+  write(dir / "lib" / "assets" / "knob.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write(dir / "lib" / "knob.fgsg", "Knob ~> I(\"knob.obj\") T(2, 0, 0) I(\"cube\");\n");
+  write(dir / "app" / "g.fgsg", "import \"../lib/knob\" as k;\naxiom: k.Knob;\n");
+  const Compiled c = compile(dir / "app" / "g.fgsg");
+  INFO(c.diagnostics);
+  REQUIRE(c.ok);
+  const std::string knob = fs::absolute(dir / "lib" / "assets" / "knob.obj").lexically_normal().string();
+  CHECK(std::find(c.module.assets.begin(), c.module.assets.end(), knob) != c.module.assets.end());
+  CHECK(std::find(c.module.assets.begin(), c.module.assets.end(), "cube") != c.module.assets.end());
 }
