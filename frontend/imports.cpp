@@ -117,7 +117,8 @@ class FileAnchor {
     for (auto& it : s.items) item(it);
   }
   void item(Item& it) {
-    const bool namesFile = it.name == "I" || it.name == "IC" || it.name == "IM" || it.name == "Texture";
+    const bool namesFile =
+        it.name == "I" || it.name == "IC" || it.name == "IM" || it.name == "Texture" || it.name == "Synthesize";
     if (namesFile && !it.args.empty() && it.args[0] && it.args[0]->kind == ExprKind::String) anchor(it.args[0]->text);
     for (auto& b : it.body) successor(b);
     for (auto& c : it.children) item(c);
