@@ -32,6 +32,10 @@ class Qualifier {
     for (const auto& f : m.fields) values_.insert(f.name);
     for (const auto& t : m.textures) values_.insert(t.name), textures_.insert(t.name);
     for (const auto& t : m.tilesets) values_.insert(t.name);
+    for (const auto& r : m.rules) {
+      symbols_.insert(r.predecessor.name);
+      for (const auto& b : r.branches) collectSymbols(b.successor);
+    }
   }
 
   void run() {
@@ -76,6 +80,16 @@ class Qualifier {
     for (auto& item : s.items) this->item(item, params);
   }
 
+  // The shape symbols successors write (ones without rules too: pieces, hooks).
+  void collectSymbols(const Successor& s) {
+    for (const auto& it : s.items) collectSymbols(it);
+  }
+  void collectSymbols(const Item& it) {
+    if (it.kind == ItemKind::Call && !findCommand(it.name)) symbols_.insert(it.name);
+    for (const auto& b : it.body) collectSymbols(b);
+    for (const auto& c : it.children) collectSymbols(c);
+  }
+
   void item(Item& it, const std::set<std::string>& params) {
     if (it.kind == ItemKind::Call && !findCommand(it.name)) it.name = prefix_ + it.name;
     for (auto& a : it.args) expr(a, &params);
@@ -90,13 +104,17 @@ class Qualifier {
     if (e->kind == ExprKind::Member) {
       if (values_.count(e->object) && !(params && params->count(e->object))) e->object = prefix_ + e->object;
       if (e->object == "context" && textures_.count(e->text)) e->text = prefix_ + e->text;
+      // Feature.label("window"): the label is a piece's symbol, renamed with it.
+      if (e->object == "Feature" && e->text == "label" && e->args.size() == 1 && e->args[0] &&
+          e->args[0]->kind == ExprKind::String && symbols_.count(e->args[0]->text))
+        e->args[0]->text = prefix_ + e->args[0]->text;
     }
     for (auto& a : e->args) expr(a, params);
   }
 
   Program& m_;
   std::string prefix_;
-  std::set<std::string> values_, textures_;
+  std::set<std::string> values_, textures_, symbols_;
 };
 
 // A module's asset, image and field files are its own: names found beside the module (or

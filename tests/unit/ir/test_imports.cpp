@@ -203,3 +203,23 @@ TEST_CASE("a module's asset files are found beside the module") {
   CHECK(std::find(c.module.assets.begin(), c.module.assets.end(), knob) != c.module.assets.end());
   CHECK(std::find(c.module.assets.begin(), c.module.assets.end(), "cube") != c.module.assets.end());
 }
+
+TEST_CASE("Feature.label names a module's piece by its qualified name") {
+  const fs::path dir = scratch("labels");
+  const std::string cells = "W ~> S(2, 1.5, 0) Cells(0.01, 0.09){ P | G };\n"
+                            "P ~> Subdiv(\"X\", 1r, 0.6, 1r){ wall | Subdiv(\"Y\", 0.5, 0.6, 1r){ wall | Win | wall } | wall };\n"
+                            "Win ~> T(0, 0, -0.1) Extrude(0.1) Comp(\"sidefaces\"){ window } Comp(\"bottom\"){ window };\n"
+                            "G : Feature.face && Feature.label(\"window\") -> epsilon;\n"
+                            "G -> I(\"cube\");\n";
+  write(dir / "wall.fgsg", "axiom: W;\n" + cells);
+  write(dir / "g.fgsg", "import \"wall\" as m;\naxiom: m.W;\n");
+  const Compiled alone = compile(dir / "wall.fgsg");
+  const Compiled imported = compile(dir / "g.fgsg");
+  INFO(alone.diagnostics << imported.diagnostics);
+  REQUIRE(alone.ok);
+  REQUIRE(imported.ok);
+  rt::AssetLibrary assets;
+  const size_t n = backend::interpret(alone.module, {}, assets).instances.instances.size();
+  CHECK(n > 0);
+  CHECK(backend::interpret(imported.module, {}, assets).instances.instances.size() == n);
+}
