@@ -117,6 +117,13 @@ TEST_CASE("a grammar carries its modules: it compiles again without their files"
   REQUIRE(ir::compileSource(again, m, diags));
   CHECK(placed(m) == placed(first.module));
   CHECK(again.text == first.file.text);  // the same text: the same JIT cache key
+  // A module edited: the grammar's text (the JIT cache key's) changes with it.
+  write(dir / "lib" / "box.fgsg", std::string(kBox) + "// edited\n");
+  write(dir / "lib" / "row.fgsg", "import \"box\" as b;\nRow ~> b.Box(1) T(0, 2, 0) b.Box(1);\n");
+  const Compiled edited = compile(dir / "main.fgsg");
+  REQUIRE(edited.ok);
+  CHECK(edited.file.text != first.file.text);
+  CHECK(edited.file.mainText() == first.file.mainText());
 }
 
 TEST_CASE("import errors name the file and line they are in") {
