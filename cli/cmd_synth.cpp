@@ -92,6 +92,7 @@ int synthCommand(const Args& args) {
       // Z may be left out for a planar model: a third value that is no integer at all is the
       // example file; one out of range is still an error, not a file name.
       long long v[3] = {0, 0, 1};
+      need(n.size() >= 2 && looksLikeInteger(n[1]), message);
       for (size_t k = 0; k < n.size(); ++k) {
         if (k == 2 && !looksLikeInteger(n[k])) {
           trailing = n[k];

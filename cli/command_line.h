@@ -49,7 +49,8 @@ class CommandLine {
   void option(const std::string& names, std::function<void(const std::string&)> use);
   // Repeatable: `use` gets each occurrence's value in command-line order.
   void repeated(const std::string& names, std::function<void(const std::string&)> use);
-  // `count` values after the flag (`--size X Y Z`); `use` gets them all.
+  // minCount to maxCount values after the flag (`--size X Y Z`); `use` gets them all and
+  // checks how many (CLI11 takes fewer than minCount when the arguments end).
   void values(const std::string& names, int minCount, int maxCount,
               std::function<void(const std::vector<std::string>&)> use);
 

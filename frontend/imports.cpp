@@ -155,7 +155,7 @@ class FileAnchor {
 
 // What a program is assembled from, for clash messages: which import brought a name in.
 struct Origin {
-  std::string what;  // "std/cga/facade (imported at line 3)" or "this grammar"
+  std::string what;  // "'std/cga/facade' (imported at line 3)" or "this file"
   SourceRange at;
 };
 

@@ -26,6 +26,7 @@ expect 2 "unknown option '--bogus' \(see fgsg repl --help\)" repl --bogus
 expect 2 "unknown option '--bogus' \(see fgsg atlas --help\)" atlas "$source/tests/data/meshes/elephant.off" --bogus
 expect 2 "unknown option '--bogus' \(see fgsg evolve --help\)" evolve "$source/examples/assets/ornament_tiles.json" --bogus
 expect 2 "fgsg synth: error: unknown option '--bogus'" synth "$source/examples/synthesis/castle.txt" --size 4 4 1 --bogus
+expect 2 "fgsg synth: error: --size needs X Y \[Z\]" synth "$source/examples/synthesis/castle.txt" --size 4
 expect 2 "fgsg run: --seed needs a value" run "$koch" --seed
 expect 2 "fgsg field: --seeds needs a value" field "$koch" --seeds
 expect 2 "fgsg ir: no grammar file given" ir --llvm
