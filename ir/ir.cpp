@@ -89,6 +89,15 @@ int Module::findSymbol(const std::string& name) const {
   return -1;
 }
 
+int Module::findSymbolFrom(uint32_t from, const std::string& name) const {
+  std::string scope = from < symbols.size() ? symbols[from].name : std::string();
+  for (size_t dot = scope.rfind('.'); dot != std::string::npos; dot = scope.rfind('.')) {
+    scope.resize(dot);
+    if (const int s = findSymbol(scope + "." + name); s >= 0) return s;
+  }
+  return findSymbol(name);
+}
+
 int Module::findAttr(const std::string& name) const {
   for (size_t i = 0; i < attrs.size(); ++i)
     if (attrs[i].name == name) return static_cast<int>(i);

@@ -355,6 +355,10 @@ struct Module {
   uint32_t internString(const std::string& s);
   uint32_t internAsset(const std::string& s);
   int findSymbol(const std::string& name) const;
+  // A symbol named at run time (a Synthesize label, an Evolve locus) by a rule of symbol
+  // `from`: inside an imported module (`m.Land`) its own `m.name` first, then each enclosing
+  // module's, then `name` itself.
+  int findSymbolFrom(uint32_t from, const std::string& name) const;
   int findAttr(const std::string& name) const;
 };
 

@@ -91,7 +91,7 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
       cell.P = s.P + s.axes.col(0) * (c * w) + s.axes.col(1) * ((cells - 1 - r) * h);
       cell.S = rt::Vec3(w, h, w);  // tile units are the cell's width, up too
       const rt::evolve::Tile& tile = tiles.tiles[allele.symbol];
-      const int sym = m.findSymbol(tiles.loci[tile.locus].name);
+      const int sym = m.findSymbolFrom(d_.placingSymbol(ex), tiles.loci[tile.locus].name);
       if (sym >= 0 && !m.symbols[sym].rules.empty() && m.symbols[sym].slotCount == 0) {
         d_.emitShape(static_cast<uint32_t>(sym), turned(cell, allele.turns), ex, op.loc);
         continue;

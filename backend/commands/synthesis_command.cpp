@@ -38,7 +38,7 @@ void SynthesisCommand::apply(const ir::Op& op, const double* a, uint32_t, State&
   for (const auto& place : rt::synthesis::piecePlacements(result.labels, example, frame)) {
     const rt::Mat4 local = Eigen::Map<const rt::Mat4>(place.transform.data());
     const rt::Mat4 world = toScope * local;
-    const int sym = m.findSymbol(example.labels[place.label].name);
+    const int sym = m.findSymbolFrom(d_.placingSymbol(ex), example.labels[place.label].name);
     rt::Scope cell;
     cell.P = world.block<3, 1>(0, 3);
     for (int k = 0; k < 3; ++k) {

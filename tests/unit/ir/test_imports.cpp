@@ -230,3 +230,20 @@ TEST_CASE("Feature.label names a module's piece by its qualified name") {
   CHECK(n > 0);
   CHECK(backend::interpret(imported.module, {}, assets).instances.instances.size() == n);
 }
+
+TEST_CASE("a module's Synthesize labels and Evolve loci find the module's own rules first") {
+  const fs::path dir = scratch("labels_run_time");
+  write(dir / "lib" / "land.txt",
+        "label . none empty\nlabel G cube\nsize 3 3 1\nlayer 0\nG G G\nG G G\nG G G\n");
+  write(dir / "lib" / "syn.fgsg", "Land ~> Synthesize(\"land.txt\", 3, 3, 1);\nG ~> S(1r, 1r, 0.2) I(\"sphere\");\n");
+  write(dir / "g.fgsg", "import \"lib/syn\" as syn;\naxiom: S(3, 3, 1) syn.Land;\n");
+  const Compiled c = compile(dir / "g.fgsg");
+  INFO(c.diagnostics);
+  REQUIRE(c.ok);
+  // The label G is the module's syn.G (a sphere), not the example's own cube.
+  std::string nine;
+  for (int i = 0; i < 9; ++i) nine += "syn.G:1 ";
+  CHECK(placed(c.module) == nine);
+  CHECK(c.module.findSymbolFrom(uint32_t(c.module.findSymbol("syn.Land")), "G") == c.module.findSymbol("syn.G"));
+  CHECK(c.module.findSymbolFrom(uint32_t(c.module.findSymbol("syn.Land")), "Land") == c.module.findSymbol("syn.Land"));
+}
