@@ -209,15 +209,16 @@ class Importer {
                                             "; FGSG_PATH adds folders, \"std/...\" names the standard library)");
       return nullptr;
     }
+    std::error_code ec;
+    if (fs::file_size(key, ec) > kMaxModuleBytes && !ec) {  // before reading it: a grammar, not a data file
+      diags_.error("E060", d.pathRange, "the module '" + d.path + "' (" + key + ") is larger than 16 MiB");
+      return nullptr;
+    }
     std::ifstream in(key, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    if (!in.good() && !in.eof()) {
+    if (!in || text.str().size() > kMaxModuleBytes) {
       diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "' (" + key + ")");
-      return nullptr;
-    }
-    if (text.str().size() > kMaxModuleBytes) {
-      diags_.error("E060", d.pathRange, "the module '" + d.path + "' (" + key + ") is larger than 16 MiB");
       return nullptr;
     }
     std::string shown = d.path.rfind("std/", 0) == 0 ? withExtension(d.path) : key;
