@@ -73,6 +73,9 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
 compile writes lib + FILE's stem + .so when -o is not given, and NAME.h beside the
 library (or in --header DIR); the library runs through the C API of libfgsg.so with
 the same results as fgsg run (docs/cli.md).
+Grammars import modules (import "std/cga/facade" as facade;): beside the grammar, in the
+folders of FGSG_PATH (':'-separated), and "std/..." in the standard library (FGSG_STDLIB
+overrides where it is); --set facade.floor_height=3.5 sets a module's attr.
 Exit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.
 Documentation: docs/language.md, docs/cli.md.
 )";
