@@ -240,6 +240,14 @@ class Importer {
     for (const auto& r : program.rules) ruled.emplace(r.predecessor.name, Origin{"this file", r.range});
 
     for (ImportDecl& d : imports) {
+      // `Scope.sx` and the other queries must stay queries: `alias.X` would join them.
+      static const std::set<std::string> kQueryObjects = {"Scope", "Shape", "Feature", "Lot", "context"};
+      if (kQueryObjects.count(d.alias) || declared.count(d.alias)) {
+        diags_.error("E062", d.range, "'" + d.alias + "' cannot name a module here: it is " +
+                                          (kQueryObjects.count(d.alias) ? "a query (" + d.alias + ".X)" : "declared in this file") +
+                                          "; import it `as` another name");
+        continue;
+      }
       const SourceFile::Module* m = module(d, key);
       if (!m) continue;
       const std::string mKey = m->key;

@@ -166,6 +166,13 @@ TEST_CASE("import errors name the file and line they are in") {
     CHECK_THAT(c.diagnostics, Catch::Contains("m.fgsg:3:14: error[E002]"));
     CHECK_THAT(c.diagnostics, Catch::Contains("Bad ~> S(1, 2;"));
   }
+  SECTION("an alias that would swallow a query or a name of the grammar") {
+    write(dir / "lib.fgsg", kBox);
+    write(dir / "g.fgsg", "import \"lib\" as Scope;\naxiom: S(Scope.sx, 1, 1) I(\"cube\");\n");
+    const Compiled c = compile(dir / "g.fgsg");
+    CHECK_FALSE(c.ok);
+    CHECK_THAT(c.diagnostics, Catch::Contains("g.fgsg:1:1: error[E062]: 'Scope' cannot name a module here: it is a query"));
+  }
   SECTION("a setting for an attr the module does not have") {
     write(dir / "lib.fgsg", kBox);
     write(dir / "g.fgsg", "import \"lib\" as box (nosuch = 1);\naxiom: box.Box(1);\n");
