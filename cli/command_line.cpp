@@ -77,15 +77,14 @@ void CommandLine::parse(const Args& args) {
     if (!first.empty() && first[0] == '-') throw UsageError{"unknown option '" + first + "'" + seeHelp};
     throw UsageError{"unexpected argument '" + first + "'" + seeHelp};
   } catch (const CLI::ArgumentMismatch& e) {
-    // An option with too few values: it was the last argument, or values ran out.
+    // An option with too few values: it was the last argument, or values ran out. CLI11
+    // says "--output: 1 required TEXT missing" for a lone missing value.
+    const std::string what = e.what();
+    const bool oneMissing = what.find("required") != std::string::npos && what.find(" 1 ") != std::string::npos;
     for (auto a = args.rbegin(); a != args.rend(); ++a)
       if (!a->empty() && (*a)[0] == '-' && app_->get_option_no_throw(a->substr(0, a->find('='))) != nullptr)
-        throw UsageError{*a + " needs " + (std::string(e.what()).find("required") != std::string::npos &&
-                                                   std::string(e.what()).find(" 1 ") != std::string::npos
-                                               ? "a value"
-                                               : "more values") +
-                         seeHelp};
-    throw UsageError{std::string(e.what()) + seeHelp};
+        throw UsageError{*a + " needs " + (oneMissing ? "a value" : "more values") + seeHelp};
+    throw UsageError{what + seeHelp};
   } catch (const CLI::ParseError& e) {
     throw UsageError{std::string(e.what()) + seeHelp};
   }

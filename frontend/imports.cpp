@@ -2,14 +2,13 @@
 
 #include "frontend/builtins.h"
 #include "frontend/parse.h"
+#include "runtime/io/read_input.h"
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace fgsg::frontend {
 
@@ -24,6 +23,19 @@ std::string withExtension(const std::string& written) {
   return fs::path(written).has_extension() ? written : written + ".fgsg";
 }
 
+// Calls `visit` on every item of `s`, those in bodies and brackets too.
+template <class S, class F>
+void forEachItem(S& s, const F& visit) {
+  for (auto& it : s.items) {
+    auto walk = [&](auto& self, auto& item) -> void {
+      visit(item);
+      for (auto& b : item.body) forEachItem(b, visit);
+      for (auto& c : item.children) self(self, c);
+    };
+    walk(walk, it);
+  }
+}
+
 // A module's names, renamed `alias.X` where it is imported `as alias`.
 class Qualifier {
  public:
@@ -34,7 +46,11 @@ class Qualifier {
     for (const auto& t : m.tilesets) values_.insert(t.name);
     for (const auto& r : m.rules) {
       symbols_.insert(r.predecessor.name);
-      for (const auto& b : r.branches) collectSymbols(b.successor);
+      // The shape symbols successors write (ones without rules too: pieces, hooks).
+      for (const auto& b : r.branches)
+        forEachItem(b.successor, [&](const Item& it) {
+          if (it.kind == ItemKind::Call && !findCommand(it.name)) symbols_.insert(it.name);
+        });
     }
   }
 
@@ -80,16 +96,6 @@ class Qualifier {
     for (auto& item : s.items) this->item(item, params);
   }
 
-  // The shape symbols successors write (ones without rules too: pieces, hooks).
-  void collectSymbols(const Successor& s) {
-    for (const auto& it : s.items) collectSymbols(it);
-  }
-  void collectSymbols(const Item& it) {
-    if (it.kind == ItemKind::Call && !findCommand(it.name)) symbols_.insert(it.name);
-    for (const auto& b : it.body) collectSymbols(b);
-    for (const auto& c : it.children) collectSymbols(c);
-  }
-
   void item(Item& it, const std::set<std::string>& params) {
     if (it.kind == ItemKind::Call && !findCommand(it.name)) it.name = prefix_ + it.name;
     for (auto& a : it.args) expr(a, &params);
@@ -127,20 +133,16 @@ class FileAnchor {
     for (auto& t : m.textures) anchor(t.path);
     for (auto& f : m.fields) anchor(f.path);
     for (auto& r : m.rules)
-      for (auto& b : r.branches) successor(b.successor);
+      for (auto& b : r.branches)
+        forEachItem(b.successor, [&](Item& it) {
+          const bool namesFile = it.name == "I" || it.name == "IC" || it.name == "IM" || it.name == "Texture" ||
+                                 it.name == "Synthesize";
+          if (namesFile && !it.args.empty() && it.args[0] && it.args[0]->kind == ExprKind::String)
+            anchor(it.args[0]->text);
+        });
   }
 
  private:
-  void successor(Successor& s) {
-    for (auto& it : s.items) item(it);
-  }
-  void item(Item& it) {
-    const bool namesFile =
-        it.name == "I" || it.name == "IC" || it.name == "IM" || it.name == "Texture" || it.name == "Synthesize";
-    if (namesFile && !it.args.empty() && it.args[0] && it.args[0]->kind == ExprKind::String) anchor(it.args[0]->text);
-    for (auto& b : it.body) successor(b);
-    for (auto& c : it.children) item(c);
-  }
   void anchor(std::string& name) {
     if (name.empty() || !fs::path(name).has_extension() || fs::path(name).is_absolute()) return;
     std::error_code ec;
@@ -209,20 +211,13 @@ class Importer {
                                             "; FGSG_PATH adds folders, \"std/...\" names the standard library)");
       return nullptr;
     }
-    std::error_code ec;
-    if (fs::file_size(key, ec) > kMaxModuleBytes && !ec) {  // before reading it: a grammar, not a data file
-      diags_.error("E060", d.pathRange, "the module '" + d.path + "' (" + key + ") is larger than 16 MiB");
-      return nullptr;
-    }
-    std::ifstream in(key, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in || text.str().size() > kMaxModuleBytes) {
-      diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "' (" + key + ")");
+    std::string text, error;  // a grammar, not a data file: a cap of its own
+    if (!rt::io::readInputFile(key, "a grammar module", text, error, kMaxModuleBytes)) {
+      diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "': " + error);
       return nullptr;
     }
     std::string shown = d.path.rfind("std/", 0) == 0 ? withExtension(d.path) : key;
-    file_.addModule({key, shown, importer, d.path, text.str(), 0});
+    file_.addModule({key, shown, importer, d.path, std::move(text), 0});
     return &file_.modules.back();
   }
 

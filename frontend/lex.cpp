@@ -280,6 +280,9 @@ std::string unknownCharactersMessage(const std::string& text) {
   return message;
 }
 
+// Two tokens written together, with nothing between them.
+bool adjacent(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
+
 // Reports lexical error tokens and drops or repairs them.
 std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_ptr<Token>> raw,
                                                        LexicalErrors& errors) {
@@ -293,7 +296,7 @@ std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_p
         std::string text = token->getText();
         SourceRange range = tokenRange(token);
         while (i + 1 < raw.size() && raw[i + 1]->getType() == FgsgLexer::UNKNOWN_CHAR &&
-               raw[i + 1]->getStartIndex() == raw[i]->getStopIndex() + 1 &&
+               adjacent(raw[i].get(), raw[i + 1].get()) &&
                raw[i + 1]->getLine() == raw[i]->getLine()) {
           ++i;
           text += raw[i]->getText();
@@ -328,7 +331,6 @@ std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_p
 // A '.' is a member access only between two names, written together (`Scope.sx`,
 // `F1.value1`); any other is an ABOP polygon vertex (`{ . f . }`, `[ + A { . ] . C . }`).
 void markPolygonVertices(std::vector<std::unique_ptr<Token>>& tokens) {
-  const auto adjacent = [](const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); };
   for (size_t i = 0; i < tokens.size(); ++i) {
     Token* dot = tokens[i].get();
     if (dot->getType() != FgsgLexer::DOT) continue;
@@ -349,7 +351,6 @@ void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens, std::vector
         tokens[i + 3]->getType() == FgsgLexer::ID)
       aliases.push_back(tokens[i + 3]->getText());
   if (aliases.empty()) return;
-  const auto adjacent = [](const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); };
   std::vector<std::unique_ptr<Token>> out;
   out.reserve(tokens.size());
   for (size_t i = 0; i < tokens.size(); ++i) {

@@ -37,7 +37,6 @@ static_assert(sizeof(Instance) == 168, "Instance grew: a million-segment L-syste
 struct InstanceOrigin {
   uint32_t rule = UINT32_MAX;
   uint32_t depth = UINT32_MAX;
-  bool operator==(const InstanceOrigin&) const = default;
 };
 
 // The asset name of instances that draw a shape's own geometry (Instance::geometry).
