@@ -64,6 +64,12 @@ std::string dirOf(const std::string& path) {
 const char* synthUsage() { return kUsage; }
 
 int synthCommand(const Args& args) {
+  // A mesh example (not the value of an output option) means continuous synthesis.
+  for (size_t i = 0; i < args.size(); ++i) {
+    const bool value = i > 0 && (args[i - 1] == "-o" || args[i - 1] == "--output" || args[i - 1] == "--preview" ||
+                                 args[i - 1] == "--labels" || args[i - 1] == "--mask");
+    if (!value && args[i].rfind("-", 0) != 0 && isContinuousExample(args[i])) return continuousSynthCommand(args);
+  }
   std::string example, labelsOut, meshOut, previewOut, maskPath;
   SynthesisOptions o;
   bool haveSize = false, stats = false, closed = false, periodic = false;

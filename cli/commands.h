@@ -13,6 +13,9 @@ int runCommand(const Args& args);    // fgsg run FILE ...
 int checkCommand(const Args& args);  // fgsg check FILE
 int irCommand(const Args& args);     // fgsg ir FILE
 int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
+// fgsg synth EXAMPLE.obj ...: continuous synthesis, when the example is a mesh file.
+int continuousSynthCommand(const Args& args);
+bool isContinuousExample(const std::string& path);
 int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
 int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
 int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)

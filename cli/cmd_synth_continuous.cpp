@@ -1,0 +1,155 @@
+// fgsg synth EXAMPLE.obj --size X Y Z [--spacing S] [--seed N] [--block N] [--fill F]
+//            [--fixed-width A,B,C:N] [-o out.glb] [--preview out.png] [--stats]
+// Continuous model synthesis (Merrell ch. 4) from a closed polygonal example: the mode
+// `fgsg synth` takes when the example is a mesh file. See docs/synthesis.md.
+#include "cli/command_line.h"
+#include "cli/commands.h"
+#include "cli/progress_line.h"
+#include "runtime/io/output_transaction.h"
+#include "runtime/io/write_mesh.h"
+#include "runtime/render/preview.h"
+#include "runtime/synthesis/continuous/continuous.h"
+
+#include <cstdio>
+#include <string>
+
+namespace fgsg::cli {
+
+namespace {
+
+using namespace fgsg::rt::synthesis::continuous;
+
+const char* const kUsage =
+    "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
+    "                  [--fill F] [--fixed-width A,B,C:N] [--retries N] [--passes N] [--time-limit S]\n"
+    "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
+
+int usage(const std::string& msg) {
+  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kUsage);
+  return 2;
+}
+
+// "1,0,1:2": a face direction and a width in plane spacings.
+bool parseFixedWidth(const std::string& s, FixedWidth& f) {
+  long long a = 0, b = 0, c = 0;
+  int n = 0, used = 0;
+  if (std::sscanf(s.c_str(), "%lld,%lld,%lld:%d%n", &a, &b, &c, &n, &used) != 4 || size_t(used) != s.size()) return false;
+  if (std::llabs(a) > 1000 || std::llabs(b) > 1000 || std::llabs(c) > 1000 || (a == 0 && b == 0 && c == 0)) return false;
+  f.normal = {a, b, c};
+  f.planes = n;
+  return n >= 1 && n <= 1000;
+}
+
+}  // namespace
+
+bool isContinuousExample(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = path.substr(dot);
+  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
+}
+
+int continuousSynthCommand(const Args& args) {
+  std::string example, meshOut, previewOut;
+  ContinuousOptions o;
+  bool haveSize = false, stats = false;
+  auto need = [](bool ok, const std::string& message) {
+    if (!ok) throw UsageError{message};
+  };
+  try {
+    CommandLine cl("synth");
+    cl.input(example, "example");
+    cl.values("--size", 3, 3, [&](const std::vector<std::string>& v) {
+      need(v.size() == 3, "--size needs X Y Z: the output box in world units");
+      for (size_t k = 0; k < 3; ++k) {
+        o.size[k] = CommandLine::parseNumber("--size", v[k]);
+        need(o.size[k] > 0, "--size needs X Y Z: positive numbers");
+      }
+      haveSize = true;
+    });
+    cl.option("--spacing", [&](const std::string& s) {
+      o.spacing = CommandLine::parseNumber("--spacing", s);
+      need(o.spacing > 0, "--spacing needs a positive number (world units between planes)");
+    });
+    cl.whole("--seed", o.seed);
+    cl.whole("--block", o.block, 0, 4096);
+    cl.whole("--retries", o.blockRetries, 0, 1000);
+    cl.whole("--passes", o.passes, 1, 100);
+    cl.option("--fill", [&](const std::string& s) {
+      o.fill = CommandLine::parseNumber("--fill", s);
+      need(o.fill >= 0 && o.fill <= 1, "--fill needs a number from 0 to 1");
+    });
+    cl.option("--time-limit", [&](const std::string& s) {
+      o.timeLimitSeconds = CommandLine::parseNumber("--time-limit", s);
+      need(o.timeLimitSeconds > 0, "--time-limit needs seconds greater than 0");
+    });
+    cl.repeated("--fixed-width", [&](const std::string& s) {
+      FixedWidth f;
+      need(parseFixedWidth(s, f), "--fixed-width needs A,B,C:N: a face direction of the example (integers) and a width "
+                                  "of N plane spacings (1 to 1000)");
+      o.fixedWidth.push_back(f);
+    });
+    cl.text("-o,--output", meshOut);
+    cl.text("--preview", previewOut);
+    cl.flag("--stats", stats);
+    cl.parse(args);
+  } catch (const UsageError& e) {
+    return usage(e.message);
+  }
+  if (example.empty()) return usage("no example file given");
+  if (!haveSize) return usage("--size X Y Z is required");
+
+  ExampleSolid ex;
+  std::string err;
+  if (!loadExampleSolid(example, ex, err)) {
+    std::fprintf(stderr, "%s: error[E750]: %s\n", example.c_str(), err.c_str());
+    return 1;
+  }
+  ProgressLine progress("fgsg synth", true);
+  progress.phase("synthesizing");
+  ContinuousResult r = synthesizeContinuous(ex, o);
+  progress.done();
+  const auto& s = r.stats;
+  if (stats)
+    std::fprintf(stdout,
+                 "{\"ok\":%s,\"mode\":\"continuous\",\"example_polygons\":%d,\"directions\":%d,\"labels\":%d,"
+                 "\"relations\":%d,\"vertices\":%zu,\"edges\":%zu,\"output_polygons\":%zu,\"triangles\":%zu,"
+                 "\"blocks\":%d,\"blocks_failed\":%d,\"assignments\":%llu,\"seconds\":%.6f}\n",
+                 r.ok ? "true" : "false", s.exampleFaces, s.directions, s.labels, s.relations, s.vertices, s.edges,
+                 s.outputPolygons, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds);
+  if (!r.ok) {
+    std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: %s\n", example.c_str(), r.error.c_str());
+    return 1;
+  }
+  if (s.blocksFailed > 0)
+    std::fprintf(stderr, "%s: note: %d of %d blocks kept as they were (no consistent labels found in %d tries)\n",
+                 example.c_str(), s.blocksFailed, s.blocks, o.blockRetries + 1);
+  rt::io::OutputTransaction outputs;
+  if (!meshOut.empty() && !rt::io::stageMesh(r.mesh, meshOut, outputs, err)) {
+    std::fprintf(stderr, "%s: error[E744]: %s\n", meshOut.c_str(), err.c_str());
+    return 1;
+  }
+  if (!previewOut.empty()) {
+    rt::render::PreviewOptions po;
+    std::string warning;
+    if (!rt::render::stagePreview(r.mesh, po, previewOut, outputs, err, &warning)) {
+      std::fprintf(stderr, "%s: error[E745]: %s\n", previewOut.c_str(), err.c_str());
+      return 1;
+    }
+    if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", previewOut.c_str(), warning.c_str());
+  }
+  if (!outputs.commit(err)) {
+    std::fprintf(stderr, "fgsg synth: error[E742]: %s\n", err.c_str());
+    return 1;
+  }
+  std::string wrote;
+  for (const std::string* f : {&meshOut, &previewOut})
+    if (!f->empty()) wrote += (wrote.empty() ? "" : ", ") + *f;
+  if (!wrote.empty())
+    std::fprintf(stderr, "wrote %s (%zu polygons, %zu triangles; %zu plane vertices, %d labels)\n", wrote.c_str(),
+                 s.outputPolygons, s.triangles, s.vertices, s.labels);
+  return 0;
+}
+
+}  // namespace fgsg::cli

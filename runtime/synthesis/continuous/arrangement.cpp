@@ -1,0 +1,208 @@
+#include "runtime/synthesis/continuous/arrangement.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+namespace fgsg::rt::synthesis::continuous {
+
+namespace {
+
+int64_t floorDiv(int64_t a, int64_t b) {
+  int64_t q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+int64_t ceilDiv(int64_t a, int64_t b) { return -floorDiv(-a, b); }
+
+struct Key {
+  IVec3 n;
+  int64_t d;
+  bool operator==(const Key& o) const { return n == o.n && d == o.d; }
+};
+struct KeyHash {
+  size_t operator()(const Key& k) const {
+    uint64_t h = uint64_t(k.d) * 0x9e3779b97f4a7c15ULL;
+    for (int64_t c : k.n) h = (h ^ uint64_t(c)) * 0xbf58476d1ce4e5b9ULL + 0x94d049bb133111ebULL;
+    return size_t(h ^ (h >> 29));
+  }
+};
+
+// num/den in lowest terms, den > 0.
+Key reduced(IVec3 n, int64_t d) {
+  if (d < 0) {
+    d = -d;
+    for (auto& c : n) c = -c;
+  }
+  const int64_t g = std::gcd(std::gcd(std::gcd(std::abs(n[0]), std::abs(n[1])), std::abs(n[2])), d);
+  if (g > 1) {
+    for (auto& c : n) c /= g;
+    d /= g;
+  }
+  return {n, d};
+}
+
+}  // namespace
+
+bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>& step,
+                      std::array<int64_t, 3> box, size_t maxVertices, Arrangement& A, std::string& error) {
+  A = Arrangement{};
+  A.dirs = dirs;
+  A.step = step;
+  A.box = box;
+  const size_t m = dirs.size();
+  std::unordered_map<Key, int32_t, KeyHash> index;
+  auto inBox = [&](const IVec3& n, int64_t d) {
+    for (int c = 0; c < 3; ++c)
+      if (n[size_t(c)] < 0 || n[size_t(c)] > box[size_t(c)] * d) return false;
+    return true;
+  };
+  auto addVertex = [&](const Key& k) -> bool {
+    auto [it, added] = index.emplace(k, int32_t(A.den.size()));
+    if (!added) return true;
+    if (A.den.size() >= maxVertices) {
+      error = "the output would have more than " + std::to_string(maxVertices) +
+              " vertices where planes meet: use a larger spacing or a smaller size";
+      return false;
+    }
+    A.num.push_back(k.n);
+    A.den.push_back(k.d);
+    return true;
+  };
+  // The range of plane indices k of direction i that meet the box.
+  auto range = [&](size_t i, int64_t& lo, int64_t& hi) {
+    int64_t mn = 0, mx = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int64_t v = dirs[i][size_t(c)] * box[size_t(c)];
+      mn += std::min<int64_t>(0, v);
+      mx += std::max<int64_t>(0, v);
+    }
+    lo = ceilDiv(mn, step[i]);
+    hi = floorDiv(mx, step[i]);
+  };
+
+  // Vertices: every triple of independent directions meets in a lattice (eq. 4.24).
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j)
+      for (size_t l = j + 1; l < m; ++l) {
+        const IVec3 c1 = cross(dirs[j], dirs[l]), c2 = cross(dirs[l], dirs[i]), c3 = cross(dirs[i], dirs[j]);
+        const int64_t det = dot(dirs[i], c1);
+        if (det == 0) continue;
+        int64_t loI, hiI, loJ, hiJ, loL, hiL;
+        range(i, loI, hiI);
+        range(j, loJ, hiJ);
+        range(l, loL, hiL);
+        // x = (vi c1 + vj c2 + vl c3) / det with v = step k; det made positive.
+        const int64_t sgn = det > 0 ? 1 : -1;
+        const int64_t D = det * sgn;
+        for (int64_t ki = loI; ki <= hiI; ++ki)
+          for (int64_t kj = loJ; kj <= hiJ; ++kj) {
+            IVec3 base{}, dir{};
+            for (int c = 0; c < 3; ++c) {
+              base[size_t(c)] = sgn * (step[i] * ki * c1[size_t(c)] + step[j] * kj * c2[size_t(c)]);
+              dir[size_t(c)] = sgn * step[l] * c3[size_t(c)];
+            }
+            // kl such that 0 <= base + kl dir <= box D on every axis.
+            int64_t lo = loL, hi = hiL;
+            for (int c = 0; c < 3 && lo <= hi; ++c) {
+              const int64_t b = base[size_t(c)], d = dir[size_t(c)], top = box[size_t(c)] * D;
+              if (d == 0) {
+                if (b < 0 || b > top) hi = lo - 1;
+              } else if (d > 0) {
+                lo = std::max(lo, ceilDiv(-b, d));
+                hi = std::min(hi, floorDiv(top - b, d));
+              } else {
+                lo = std::max(lo, ceilDiv(top - b, d));
+                hi = std::min(hi, floorDiv(-b, d));
+              }
+            }
+            for (int64_t kl = lo; kl <= hi; ++kl) {
+              const IVec3 n{base[0] + kl * dir[0], base[1] + kl * dir[1], base[2] + kl * dir[2]};
+              if (!addVertex(reduced(n, D))) return false;
+            }
+          }
+      }
+  // Order vertices by position (z, y, x): the solver's scanline order, independent of
+  // the hash table.
+  std::vector<int32_t> order(A.den.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int32_t a, int32_t b) {
+    for (int c = 2; c >= 0; --c) {
+      const __int128 x = __int128(A.num[size_t(a)][size_t(c)]) * A.den[size_t(b)];
+      const __int128 y = __int128(A.num[size_t(b)][size_t(c)]) * A.den[size_t(a)];
+      if (x != y) return x < y;
+    }
+    return false;
+  };
+  std::sort(order.begin(), order.end(), less);
+  {
+    std::vector<IVec3> num(order.size());
+    std::vector<int64_t> den(order.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+      num[k] = A.num[size_t(order[k])];
+      den[k] = A.den[size_t(order[k])];
+      index[{num[k], den[k]}] = int32_t(k);
+    }
+    A.num.swap(num);
+    A.den.swap(den);
+  }
+  const size_t n = A.den.size();
+  A.planes.assign(n, 0);
+  A.boundary.assign(n, 0);
+  for (size_t v = 0; v < n; ++v) {
+    for (size_t e = 0; e < m; ++e)
+      if (dot(dirs[e], A.num[v]) % (A.den[v] * step[e]) == 0) A.planes[v] |= 1u << e;
+    for (int c = 0; c < 3; ++c)
+      if (A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == box[size_t(c)] * A.den[v]) A.boundary[v] = 1;
+  }
+
+  // Edges: from each vertex along every line through it, to the nearest vertex each way.
+  std::unordered_map<Key, int32_t, KeyHash> lineIndex;
+  auto lineOf = [&](const IVec3& d) {
+    auto [it, added] = lineIndex.emplace(Key{d, 0}, int32_t(A.lines.size()));
+    if (added) A.lines.push_back(d);
+    return it->second;
+  };
+  A.edgeStart.assign(n + 1, 0);
+  std::vector<IVec3> through;
+  for (size_t v = 0; v < n; ++v) {
+    through.clear();
+    const uint32_t P = A.planes[v];
+    for (uint32_t a = P; a; a &= a - 1)
+      for (uint32_t b = a & (a - 1); b; b &= b - 1) {
+        const IVec3 d = canonicalDirection(cross(dirs[size_t(__builtin_ctz(a))], dirs[size_t(__builtin_ctz(b))]));
+        if (std::find(through.begin(), through.end(), d) == through.end()) through.push_back(d);
+      }
+    for (const IVec3& d0 : through) {
+      const int32_t line = lineOf(d0);
+      for (int s = 1; s >= -1; s -= 2) {
+        const IVec3 d{s * d0[0], s * d0[1], s * d0[2]};
+        // The nearest plane crossing along d: t = p / q, q > 0.
+        int64_t bestP = -1, bestQ = 1;
+        for (size_t l = 0; l < m; ++l) {
+          const int64_t c = dot(dirs[l], d);
+          if (c == 0) continue;
+          const int64_t a = dot(dirs[l], A.num[v]);  // the value times den
+          const int64_t unit = A.den[v] * step[l];
+          const int64_t k = c > 0 ? floorDiv(a, unit) + 1 : ceilDiv(a, unit) - 1;
+          int64_t p = k * unit - a, q = A.den[v] * c;
+          if (q < 0) { p = -p; q = -q; }
+          if (bestP < 0 || __int128(p) * bestQ < __int128(bestP) * q) { bestP = p; bestQ = q; }
+        }
+        if (bestP < 0) continue;
+        IVec3 w{};
+        for (int c = 0; c < 3; ++c) w[size_t(c)] = A.num[v][size_t(c)] * bestQ + bestP * A.den[v] * d[size_t(c)];
+        const Key k = reduced(w, A.den[v] * bestQ);
+        if (!inBox(k.n, k.d)) continue;
+        auto it = index.find(k);
+        if (it == index.end()) continue;  // cannot happen: a crossing of two planes and a third
+        A.edgeTo.push_back(it->second);
+        A.edgeLine.push_back(s > 0 ? line + 1 : -(line + 1));
+      }
+    }
+    A.edgeStart[v + 1] = uint32_t(A.edgeTo.size());
+  }
+  return true;
+}
+
+}  // namespace fgsg::rt::synthesis::continuous

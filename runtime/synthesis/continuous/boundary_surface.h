@@ -1,0 +1,25 @@
+// The output solid's surface: the faces of the plane arrangement with inside on one side
+// and outside on the other, read from the labels of their vertices, as a closed triangle
+// mesh (shared vertices; a face with more than three corners is fanned around its centre
+// so that corners lying on a straight side keep the mesh watertight).
+#pragma once
+
+#include "runtime/mesh.h"
+#include "runtime/synthesis/continuous/arrangement.h"
+#include "runtime/synthesis/continuous/labels.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace fgsg::rt::synthesis::continuous {
+
+struct BoundarySurface {
+  Mesh mesh;
+  size_t polygons = 0;
+};
+
+// `labelOf[v]` indexes `labels`; positions are lattice units times `spacing`.
+BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& labels,
+                                const std::vector<int32_t>& labelOf, double spacing);
+
+}  // namespace fgsg::rt::synthesis::continuous

@@ -1,0 +1,73 @@
+// Continuous model synthesis (Merrell, "Model Synthesis", ch. 4, §4.5-4.6): from a closed
+// polygonal example, a new solid in a box whose every point has a neighbourhood that
+// occurs in the example (the continuous adjacency constraint, eq. 4.1), with every face
+// on a set of parallel planes per example normal.
+//
+//   ExampleSolid ex;  std::string err;
+//   if (!loadExampleSolid("house.obj", ex, err)) ...;
+//   ContinuousOptions o;  o.size = {40, 40, 12};  o.spacing = 1;  o.seed = 7;
+//   ContinuousResult r = synthesizeContinuous(ex, o);
+//   if (!r.ok) print(r.error);   else writeMesh(r.mesh, "village.glb", err);
+//
+// The labels are the example's vertex figures (labels.h), one per vertex of the plane
+// arrangement (arrangement.h); neighbouring vertices must agree along their edge. They
+// are assigned by the discrete solver's catalog (catalog.h: the same bitset domains,
+// AC-3 propagation and transition rows, the arrangement's edges as its links), in
+// overlapping blocks that start from the empty model (always consistent) and are
+// reverted when they fail (§4.5.6, Fig. 4.23). The output is the boundary between inside
+// and outside cells: a closed 2-manifold triangle mesh.
+#pragma once
+
+#include "runtime/deadline.h"
+#include "runtime/mesh.h"
+#include "runtime/synthesis/continuous/example_solid.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::synthesis::continuous {
+
+// A dimensional constraint (§4.6.1): objects are exactly `planes` plane spacings wide
+// along the direction `normal` (one of the example's face directions): its planes are
+// that far apart and no label may cross one.
+struct FixedWidth {
+  IVec3 normal{};
+  int planes = 1;
+};
+
+struct ContinuousOptions {
+  std::array<double, 3> size{20, 20, 10};  // the output box, world units, from the origin
+  double spacing = 1.0;                    // lattice unit: the planes' spacing along the axes
+  uint64_t seed = 1;
+  int block = 8;             // block edge in lattice units (Fig. 4.23); 0 = the whole box at once
+  int blockRetries = 6;      // tries of a block before it is left as it was
+  int passes = 2;            // sweeps over all blocks
+  std::vector<FixedWidth> fixedWidth;
+  double fill = 0.5;         // chance weight of labels with solid in them against empty space
+  size_t maxVertices = 8'000'000;
+  double timeLimitSeconds = 120;
+  Deadline* deadline = nullptr;
+};
+
+struct ContinuousStats {
+  int exampleFaces = 0, directions = 0, labels = 0, relations = 0;
+  size_t vertices = 0, edges = 0;
+  size_t outputPolygons = 0, triangles = 0;
+  int blocks = 0, blocksFailed = 0;
+  uint64_t assignments = 0;
+  double seconds = 0;
+};
+
+struct ContinuousResult {
+  bool ok = false;
+  std::string error;
+  Mesh mesh;                       // world units; no normals (faceted)
+  std::vector<int32_t> vertexLabel;  // per arrangement vertex (tests)
+  ContinuousStats stats;
+};
+
+ContinuousResult synthesizeContinuous(const ExampleSolid& example, const ContinuousOptions& options) noexcept;
+
+}  // namespace fgsg::rt::synthesis::continuous

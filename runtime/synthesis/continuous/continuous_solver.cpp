@@ -1,0 +1,332 @@
+// Algorithm 4.1 steps 2-10: labels, their places and neighbours, then assignment in
+// blocks with the discrete solver's catalog. See continuous.h.
+#include "runtime/synthesis/catalog.h"
+#include "runtime/synthesis/continuous/arrangement.h"
+#include "runtime/synthesis/continuous/boundary_surface.h"
+#include "runtime/synthesis/continuous/continuous.h"
+#include "runtime/synthesis/continuous/labels.h"
+#include "runtime/synthesis/random.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <new>
+
+namespace fgsg::rt::synthesis::continuous {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Everything the assignment needs, built once.
+struct Problem {
+  const ContinuousOptions& o;
+  Arrangement A;
+  std::vector<Label> labels;
+  int k = 0, W = 0;
+  TransitionTable t;
+  SiteGraph g;
+  std::vector<Word> baseTable;       // distinct allowed sets
+  std::vector<uint32_t> baseIndex;   // per vertex
+  std::vector<double> weight;        // per label
+  Deadline deadline;
+  explicit Problem(const ContinuousOptions& opt) : o(opt), deadline(Deadline::after(opt.timeLimitSeconds)) {}
+  const Word* base(int64_t v) const { return &baseTable[size_t(baseIndex[size_t(v)]) * size_t(W)]; }
+  bool timeUp() { return deadline.expired() || (o.deadline && o.deadline->expired()); }
+};
+
+// Does the label's solid reach both sides of a plane of direction `i` through its vertex?
+bool crosses(const std::vector<IVec3>& dirs, const Label& l, int i) {
+  bool pos = false, neg = false;
+  for (const Sector& s : sectorsOf(dirs, l.dirs | (1u << i)))
+    if (l.inside(s.signs)) ((s.signs >> i) & 1 ? pos : neg) = true;
+  return pos && neg;
+}
+
+bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::string& error) {
+  const ContinuousOptions& o = P.o;
+  if (!(o.spacing > 0) || !std::isfinite(o.spacing)) { error = "the spacing must be a positive number"; return false; }
+  for (double s : o.size)
+    if (!(s > 0) || !std::isfinite(s)) { error = "the size must be three positive numbers"; return false; }
+  if (o.block < 0) { error = "the block size must be 0 (the whole box) or more"; return false; }
+  if (!(o.fill >= 0 && o.fill <= 1)) { error = "fill must lie between 0 and 1"; return false; }
+  std::vector<int64_t> step(ex.dirs.size(), 1);
+  for (const FixedWidth& f : o.fixedWidth) {
+    const IVec3 a = canonicalDirection(f.normal);
+    auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);
+    if (isZero(a) || it == ex.dirs.begin() + ex.faceDirections) {
+      error = "a fixed width names the direction (" + std::to_string(f.normal[0]) + ", " + std::to_string(f.normal[1]) + ", " +
+              std::to_string(f.normal[2]) + "), which no face of the example has";
+      return false;
+    }
+    if (f.planes < 1 || f.planes > 1000) { error = "a fixed width is 1 to 1000 plane spacings"; return false; }
+    step[size_t(it - ex.dirs.begin())] = f.planes;
+  }
+  std::array<int64_t, 3> box{};
+  for (int c = 0; c < 3; ++c) {
+    const double cells = o.size[size_t(c)] / o.spacing;
+    if (cells > 4096) { error = "the size is more than 4096 spacings along an axis"; return false; }
+    box[size_t(c)] = std::max<int64_t>(2, int64_t(std::ceil(cells - 1e-9)));
+    // The box's sides must be planes: round up to the axis direction's step.
+    IVec3 axis{};
+    axis[size_t(c)] = 1;
+    const size_t ai = size_t(std::find(ex.dirs.begin(), ex.dirs.end(), axis) - ex.dirs.begin());
+    box[size_t(c)] = (box[size_t(c)] + step[ai] - 1) / step[ai] * step[ai];
+  }
+  if (!buildArrangement(ex.dirs, step, box, o.maxVertices, P.A, error)) return false;
+  const LabelCatalog cat = exampleLabels(ex);
+  P.labels = cat.labels;
+  P.k = int(P.labels.size());
+  if (P.k > 4096) { error = "the example has more than 4096 distinct vertex figures"; return false; }
+  P.W = paddedWordsFor(P.k);
+  const size_t W = size_t(P.W);
+  const Arrangement& A = P.A;
+
+  // Allowed labels per vertex (§4.5.4): those whose half-spaces all have a plane through
+  // it, less those crossing a fixed-width plane (§4.6.1); boundary vertices: empty space.
+  std::map<std::pair<uint32_t, uint8_t>, uint32_t> entry;
+  P.baseIndex.resize(A.vertexCount());
+  for (size_t v = 0; v < A.vertexCount(); ++v) {
+    const auto key = std::make_pair(A.planes[v], A.boundary[v]);
+    auto [it, added] = entry.emplace(key, uint32_t(P.baseTable.size() / W));
+    if (added) {
+      P.baseTable.resize(P.baseTable.size() + W, 0);
+      Word* d = &P.baseTable[size_t(it->second) * W];
+      for (int b = 0; b < P.k; ++b) {
+        const Label& l = P.labels[size_t(b)];
+        if (A.boundary[v] ? b != LabelCatalog::kEmpty : (l.dirs & ~A.planes[v]) != 0) continue;
+        bool ok = true;
+        for (size_t i = 0; i < step.size() && ok; ++i)
+          if (step[i] > 1 && ((A.planes[v] >> i) & 1) && crosses(A.dirs, l, int(i))) ok = false;
+        if (ok) setBit(d, b);
+      }
+    }
+    P.baseIndex[v] = it->second;
+  }
+
+  // Relations (§4.5.5): one per line direction and set of planes along the edge.
+  P.t = TransitionTable(P.k, P.W);
+  std::map<std::pair<int32_t, uint32_t>, int> relation;
+  std::vector<Link> links;
+  for (size_t v = 0; v < A.vertexCount(); ++v)
+    for (uint32_t e = A.edgeStart[v]; e < A.edgeStart[v + 1]; ++e) {
+      if (A.edgeLine[e] < 0) continue;  // each edge once, from its lower end along +line
+      const int32_t line = A.edgeLine[e] - 1;
+      const IVec3& d = A.lines[size_t(line)];
+      uint32_t planes = 0;
+      for (uint32_t m = A.planes[v]; m; m &= m - 1)
+        if (dot(A.dirs[size_t(__builtin_ctz(m))], d) == 0) planes |= m & (~m + 1);
+      auto [it, added] = relation.emplace(std::make_pair(line, planes), 0);
+      if (added) {
+        std::vector<IVec3> around;
+        for (uint32_t m = planes; m; m &= m - 1) around.push_back(A.dirs[size_t(__builtin_ctz(m))]);
+        const auto wedges = wedgesAround(d, around);
+        const IVec3 back{-d[0], -d[1], -d[2]};
+        std::vector<std::optional<uint64_t>> fwd(size_t(P.k)), bwd(size_t(P.k));
+        for (int b = 0; b < P.k; ++b) {
+          fwd[size_t(b)] = edgePattern(P.labels[size_t(b)], A.dirs, d, planes, wedges);
+          bwd[size_t(b)] = edgePattern(P.labels[size_t(b)], A.dirs, back, planes, wedges);
+        }
+        std::vector<std::pair<int32_t, int32_t>> pairs;
+        for (int b = 0; b < P.k; ++b)
+          for (int c = 0; c < P.k; ++c)
+            if (fwd[size_t(b)] && bwd[size_t(c)] && *fwd[size_t(b)] == *bwd[size_t(c)]) pairs.push_back({b, c});
+        it->second = P.t.addRelationPair(pairs);
+      }
+      links.push_back({int32_t(v), A.edgeTo[e], it->second});
+    }
+  if (P.t.relationCount() > 65535) { error = "too many kinds of edges"; return false; }
+  P.g.siteCount = int64_t(A.vertexCount());
+  P.g.slots = 0;
+  P.g.face.assign(A.vertexCount(), 0x3f);  // no grid neighbours: every slot "on the border"
+  std::vector<int> rev(size_t(P.t.relationCount()));
+  for (int r = 0; r < P.t.relationCount(); ++r) rev[size_t(r)] = P.t.reverse(r);
+  setLinks(P.g, links, rev);
+
+  // Chance weights: empty space 1 - fill, the solid labels share fill.
+  P.weight.assign(size_t(P.k), P.k > 1 ? o.fill / double(P.k - 1) : 0.0);
+  P.weight[LabelCatalog::kEmpty] = 1 - o.fill;
+
+  stats.exampleFaces = int(ex.polygons.size());
+  stats.directions = ex.faceDirections;
+  stats.labels = P.k;
+  stats.relations = P.t.relationCount();
+  stats.vertices = A.vertexCount();
+  stats.edges = A.edgeCount();
+  return true;
+}
+
+template <int NW>
+class Assigner {
+ public:
+  Assigner(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats)
+      : P_(P), M_(M), stats_(stats), cat_(P.t, P.g), rng_(P.o.seed) {}
+
+  // Re-synthesizes `sites` with every other vertex fixed; M changes only on success.
+  bool runBlock(const std::vector<int32_t>& sites, std::string& why) {
+    for (int32_t s : sites) cat_.activate(s, P_.base(s));
+    bool ok = init(sites) && assign(sites, why);
+    if (!ok && why.empty()) why = "no label fits";
+    if (ok)
+      for (int32_t s : sites) M_[size_t(s)] = firstBit(cat_.domain(s), NW);
+    cat_.clearQueue();
+    for (int32_t s : sites) cat_.deactivate(s);
+    return ok;
+  }
+
+ private:
+  bool init(const std::vector<int32_t>& sites) {
+    const SiteGraph& g = P_.g;
+    for (int32_t s : sites) {
+      Word* d = cat_.domain(s);
+      for (uint32_t e = g.linkStart[size_t(s)]; e < g.linkStart[size_t(s) + 1]; ++e) {
+        const int32_t u = g.linkSite[e];
+        if (cat_.active(u)) continue;
+        const Word* r = P_.t.row(P_.t.reverse(g.linkRelation[e]), M_[size_t(u)]);
+        for (int w = 0; w < NW; ++w) d[w] &= r[w];
+      }
+      if (firstBit(d, NW) < 0) return false;
+      cat_.push(s);
+    }
+    return cat_.propagate() < 0;
+  }
+
+  int choose(const Word* d) {
+    double sum = 0;
+    forEachBit(d, NW, [&](int b) { sum += P_.weight[size_t(b)]; });
+    int chosen = -1, last = -1;
+    if (sum <= 0) {
+      uint64_t pick = rng_.below(uint64_t(popcount(d, NW)));
+      forEachBit(d, NW, [&](int b) { if (pick-- == 0) chosen = b; });
+      return chosen;
+    }
+    double r = rng_.uniform() * sum;
+    forEachBit(d, NW, [&](int b) {
+      if (chosen >= 0) return;
+      const double w = P_.weight[size_t(b)];
+      if (w > 0) last = b;
+      r -= w;
+      if (r < 0 && w > 0) chosen = b;
+    });
+    return chosen >= 0 ? chosen : last;
+  }
+
+  bool assign(const std::vector<int32_t>& sites, std::string& why) {
+    for (int32_t s : sites) {
+      if (P_.timeUp()) { why = "the time limit"; return false; }
+      ++stats_.assignments;
+      if (singleLabel<NW>(cat_.domain(s)) >= 0) continue;
+      const int b = choose(cat_.domain(s));
+      if (b < 0) return false;
+      cat_.assign(s, b);
+      if (cat_.propagate() >= 0) return false;
+    }
+    return true;
+  }
+
+  Problem& P_;
+  std::vector<int32_t>& M_;
+  ContinuousStats& stats_;
+  BitsetCatalog<NW> cat_;
+  Rng rng_;
+};
+
+// Blocks of `b` lattice units overlapping by half, in scanline order (Fig. 4.23).
+std::vector<std::vector<int32_t>> blocksOf(const Problem& P) {
+  const Arrangement& A = P.A;
+  std::vector<std::vector<int32_t>> blocks;
+  std::vector<int32_t> interior;
+  for (size_t v = 0; v < A.vertexCount(); ++v)
+    if (!A.boundary[v]) interior.push_back(int32_t(v));
+  if (P.o.block == 0) {
+    blocks.push_back(std::move(interior));
+    return blocks;
+  }
+  const int64_t b = P.o.block, half = std::max<int64_t>(1, b / 2);
+  std::array<std::vector<int64_t>, 3> origins;
+  for (int c = 0; c < 3; ++c) {
+    for (int64_t o = 0;; o += half) {
+      origins[size_t(c)].push_back(o);
+      if (o + b >= A.box[size_t(c)]) break;
+    }
+  }
+  for (int64_t oz : origins[2])
+    for (int64_t oy : origins[1])
+      for (int64_t ox : origins[0]) {
+        const int64_t lo[3] = {ox, oy, oz};
+        std::vector<int32_t> sites;
+        for (int32_t v : interior) {
+          bool in = true;
+          for (int c = 0; c < 3 && in; ++c) {
+            const int64_t n = A.num[size_t(v)][size_t(c)], d = A.den[size_t(v)];
+            in = n >= lo[c] * d && n <= (lo[c] + b) * d;
+          }
+          if (in) sites.push_back(v);
+        }
+        if (!sites.empty()) blocks.push_back(std::move(sites));
+      }
+  return blocks;
+}
+
+template <int NW>
+bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std::string& error) {
+  Assigner<NW> a(P, M, stats);
+  const auto blocks = blocksOf(P);
+  const int passes = P.o.block == 0 ? 1 : std::max(1, P.o.passes);
+  std::string why;
+  for (int pass = 0; pass < passes; ++pass)
+    for (const auto& sites : blocks) {
+      ++stats.blocks;
+      bool ok = false;
+      for (int attempt = 0; attempt <= P.o.blockRetries && !ok; ++attempt) {
+        why.clear();
+        ok = a.runBlock(sites, why);
+        if (why == "the time limit") {
+          error = "stopped by the time limit (" + std::to_string(P.o.timeLimitSeconds) + " s)";
+          return false;
+        }
+      }
+      if (!ok) ++stats.blocksFailed;
+    }
+  if (P.o.block == 0 && stats.blocksFailed > 0) {
+    error = "the whole box could not be labelled consistently (" + why + "); try blocks (block > 0)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOptions& o) noexcept {
+  ContinuousResult R;
+  const auto start = Clock::now();
+  try {
+    Problem P(o);
+    if (!compile(P, ex, R.stats, R.error)) return R;
+    std::vector<int32_t> M(P.A.vertexCount(), LabelCatalog::kEmpty);
+    bool ok = false;
+    switch (P.W) {
+      case 1: ok = assignAll<1>(P, M, R.stats, R.error); break;
+      case 2: ok = assignAll<2>(P, M, R.stats, R.error); break;
+      case 4: ok = assignAll<4>(P, M, R.stats, R.error); break;
+      case 8: ok = assignAll<8>(P, M, R.stats, R.error); break;
+      case 16: ok = assignAll<16>(P, M, R.stats, R.error); break;
+      case 32: ok = assignAll<32>(P, M, R.stats, R.error); break;
+      default: ok = assignAll<64>(P, M, R.stats, R.error); break;
+    }
+    if (!ok) return R;
+    BoundarySurface surface = boundarySurface(P.A, P.labels, M, o.spacing);
+    R.mesh = std::move(surface.mesh);
+    R.stats.outputPolygons = surface.polygons;
+    R.stats.triangles = R.mesh.triangleCount();
+    R.vertexLabel = std::move(M);
+    R.ok = true;
+  } catch (const std::bad_alloc&) {
+    R.error = "out of memory (use a larger spacing or a smaller size)";
+  }
+  R.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return R;
+}
+
+}  // namespace fgsg::rt::synthesis::continuous

@@ -1,0 +1,125 @@
+#include "runtime/synthesis/continuous/labels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace fgsg::rt::synthesis::continuous {
+
+bool Label::inside(uint32_t signs) const { return std::binary_search(in.begin(), in.end(), signs & dirs); }
+
+Label canonicalLabel(const std::vector<IVec3>& dirs, uint32_t mask, std::vector<std::pair<uint32_t, bool>> sectors) {
+  (void)dirs;
+  // Drop a direction while the figure is the same on both sides of it in every sector
+  // pair that differs only there.
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    for (uint32_t m = mask; m; m &= m - 1) {
+      const uint32_t bit = m & (~m + 1);
+      std::map<uint32_t, bool> merged;
+      bool consistent = true;
+      for (const auto& [s, v] : sectors) {
+        auto [it, added] = merged.emplace(s & ~bit, v);
+        if (!added && it->second != v) { consistent = false; break; }
+      }
+      if (!consistent) continue;
+      mask &= ~bit;
+      sectors.assign(merged.begin(), merged.end());
+      dropped = true;
+      break;
+    }
+  }
+  Label l;
+  l.dirs = mask;
+  for (const auto& [s, v] : sectors)
+    if (v) l.in.push_back(s & mask);
+  std::sort(l.in.begin(), l.in.end());
+  l.in.erase(std::unique(l.in.begin(), l.in.end()), l.in.end());
+  return l;
+}
+
+namespace {
+
+std::string at(const DVec3& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p[0], p[1], p[2]);
+  return buf;
+}
+
+// The figure of the solid at p with the planes of `mask` through it: each sector tested
+// a small step away from p.
+Label figureAt(const ExampleSolid& s, const DVec3& p, uint32_t mask, double step) {
+  std::vector<std::pair<uint32_t, bool>> table;
+  for (const Sector& sec : sectorsOf(s.dirs, mask)) {
+    const DVec3 q{p[0] + step * sec.direction[0], p[1] + step * sec.direction[1], p[2] + step * sec.direction[2]};
+    table.push_back({sec.signs, windingNumber(s, q) > 0.5});
+  }
+  return canonicalLabel(s.dirs, mask, std::move(table));
+}
+
+}  // namespace
+
+LabelCatalog exampleLabels(const ExampleSolid& s) {
+  LabelCatalog c;
+  auto add = [&](const Label& l, const std::string& where) {
+    if (std::find(c.labels.begin(), c.labels.end(), l) != c.labels.end()) return;
+    c.labels.push_back(l);
+    c.foundAt.push_back(where);
+  };
+  add(Label{0, {}}, "outside");
+  add(Label{0, {0}}, "inside");
+  // Faces: the half-space behind the outward normal.
+  for (size_t f = 0; f < s.polygons.size(); ++f) {
+    const uint32_t bit = 1u << s.polygonDirection[f];
+    add(Label{bit, {s.polygonAlong[f] ? 0u : bit}}, "face " + std::to_string(f + 1));
+  }
+  // The step off a point: well inside its neighbourhood (a tenth of the distance to the
+  // nearest other vertex, at most 1e-3 of the example's size).
+  auto stepAt = [&](const DVec3& p, int skipA, int skipB) {
+    double nearest = s.diagonal;
+    for (size_t v = 0; v < s.vertices.size(); ++v) {
+      if (int(v) == skipA || int(v) == skipB) continue;
+      const DVec3& q = s.vertices[v];
+      nearest = std::min(nearest, std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2])));
+    }
+    return std::min(1e-3 * s.diagonal, 0.1 * nearest);
+  };
+  // Edges: the two faces' half-spaces at the edge's midpoint.
+  std::vector<uint32_t> vertexMask(s.vertices.size(), 0);
+  std::map<std::pair<int, int>, uint32_t> edgeMask;
+  for (size_t f = 0; f < s.polygons.size(); ++f) {
+    const auto& poly = s.polygons[f];
+    const uint32_t bit = 1u << s.polygonDirection[f];
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const int a = poly[i], b = poly[(i + 1) % poly.size()];
+      vertexMask[size_t(a)] |= bit;
+      edgeMask[{std::min(a, b), std::max(a, b)}] |= bit;
+    }
+  }
+  for (const auto& [e, mask] : edgeMask) {
+    const DVec3 &a = s.vertices[size_t(e.first)], &b = s.vertices[size_t(e.second)];
+    const DVec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
+    add(figureAt(s, mid, mask, stepAt(mid, -1, -1)), "edge " + at(a) + "-" + at(b));
+  }
+  for (size_t v = 0; v < s.vertices.size(); ++v)
+    if (vertexMask[v]) add(figureAt(s, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v), -1)), "vertex " + at(s.vertices[v]));
+  return c;
+}
+
+std::optional<uint64_t> edgePattern(const Label& label, const std::vector<IVec3>& dirs, const IVec3& axis,
+                                    uint32_t edgePlanes, const std::vector<DVec3>& wedges) {
+  for (uint32_t m = label.dirs; m; m &= m - 1) {
+    const int e = __builtin_ctz(m);
+    if (dot(dirs[size_t(e)], axis) == 0 && !((edgePlanes >> e) & 1)) return std::nullopt;
+  }
+  uint64_t bits = 0;
+  for (size_t w = 0; w < wedges.size(); ++w) {
+    const auto signs = signMaskNear(dirs, label.dirs, axis, wedges[w]);
+    if (!signs) return std::nullopt;
+    if (label.inside(*signs)) bits |= uint64_t(1) << w;
+  }
+  return bits;
+}
+
+}  // namespace fgsg::rt::synthesis::continuous
