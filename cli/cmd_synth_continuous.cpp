@@ -1,5 +1,5 @@
 // fgsg synth EXAMPLE.obj --size X Y Z [--spacing S] [--seed N] [--block N] [--fill F]
-//            [--fixed-width A,B,C:N] [-o out.glb] [--preview out.png] [--stats]
+//            [--fixed-width A,B,C:N] [--on-ground] [-o out.glb] [--preview out.png] [--stats]
 // Continuous model synthesis (Merrell ch. 4) from a closed polygonal example: the mode
 // `fgsg synth` takes when the example is a mesh file. See docs/synthesis.md.
 #include "cli/command_line.h"
@@ -21,7 +21,7 @@ using namespace fgsg::rt::synthesis::continuous;
 
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
-    "                  [--fill F] [--fixed-width A,B,C:N] [--retries N] [--passes N] [--time-limit S]\n"
+    "                  [--fill F] [--fixed-width A,B,C:N] [--on-ground] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
 int usage(const std::string& msg) {
@@ -73,7 +73,10 @@ int continuousSynthCommand(const Args& args) {
       need(o.spacing > 0, "--spacing needs a positive number (world units between planes)");
     });
     cl.whole("--seed", o.seed);
-    cl.whole("--block", o.block, 0, 4096);
+    cl.option("--block", [&](const std::string& s) {
+      o.block = int(CommandLine::parseWhole("--block", s, 0, 4096));
+    });
+    cl.flag("--on-ground", o.onGround);
     cl.whole("--retries", o.blockRetries, 0, 1000);
     cl.whole("--passes", o.passes, 1, 100);
     cl.option("--fill", [&](const std::string& s) {

@@ -41,10 +41,15 @@ struct ContinuousOptions {
   std::array<double, 3> size{20, 20, 10};  // the output box, world units, from the origin
   double spacing = 1.0;                    // lattice unit: the planes' spacing along the axes
   uint64_t seed = 1;
-  int block = 8;             // block edge in lattice units (Fig. 4.23); 0 = the whole box at once
+  // Block edge in lattice units (Fig. 4.23); 0 = the whole box at once; -1 = the whole
+  // box, and blocks of 8 if that meets a contradiction.
+  int block = -1;
   int blockRetries = 6;      // tries of a block before it is left as it was
   int passes = 2;            // sweeps over all blocks
   std::vector<FixedWidth> fixedWidth;
+  // Every solid stands on the box's floor (y = 0): floor vertices may carry solid above
+  // them, and no face looks down anywhere else (no overhangs, nothing floats).
+  bool onGround = false;
   double fill = 0.5;         // chance weight of labels with solid in them against empty space
   size_t maxVertices = 8'000'000;
   double timeLimitSeconds = 120;

@@ -18,6 +18,8 @@ namespace fgsg::rt::synthesis::continuous {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr int kAutoBlock = 8;  // lattice units; the thesis: 10 x 10 x 10 or smaller succeeds
+enum Place : uint8_t { kInside, kBoundary, kFloor };
 
 // Everything the assignment needs, built once.
 struct Problem {
@@ -29,6 +31,7 @@ struct Problem {
   SiteGraph g;
   std::vector<Word> baseTable;       // distinct allowed sets
   std::vector<uint32_t> baseIndex;   // per vertex
+  std::vector<uint8_t> place;        // per vertex: inside the box, on its sides, on the floor
   std::vector<double> weight;        // per label
   Deadline deadline;
   explicit Problem(const ContinuousOptions& opt) : o(opt), deadline(Deadline::after(opt.timeLimitSeconds)) {}
@@ -44,12 +47,38 @@ bool crosses(const std::vector<IVec3>& dirs, const Label& l, int i) {
   return pos && neg;
 }
 
+// Does the label have a face looking down (an outward normal with a negative y)?
+bool looksDown(const std::vector<IVec3>& dirs, const Label& l) {
+  const auto sectors = sectorsOf(dirs, l.dirs);
+  for (uint32_t m = l.dirs; m; m &= m - 1) {
+    const int e = __builtin_ctz(m);
+    const int64_t up = dirs[size_t(e)][1];
+    if (up == 0) continue;
+    for (const Sector& s : sectors) {
+      if (!((s.signs >> e) & 1)) continue;
+      const uint32_t other = s.signs & ~(1u << e);
+      if (std::none_of(sectors.begin(), sectors.end(), [&](const Sector& t) { return t.signs == other; })) continue;
+      const bool inAbove = l.inside(s.signs), inBelow = l.inside(other);
+      // Solid on the +a side: the face's outward normal is -a, and the other way round.
+      if (inAbove != inBelow && (inAbove ? -up : up) < 0) return true;
+    }
+  }
+  return false;
+}
+
+// Is the label empty everywhere below its vertex (y < 0)?
+bool emptyBelow(const std::vector<IVec3>& dirs, const Label& l, int yAxis) {
+  for (const Sector& s : sectorsOf(dirs, l.dirs | (1u << yAxis)))
+    if (!((s.signs >> yAxis) & 1) && l.inside(s.signs)) return false;
+  return true;
+}
+
 bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::string& error) {
   const ContinuousOptions& o = P.o;
   if (!(o.spacing > 0) || !std::isfinite(o.spacing)) { error = "the spacing must be a positive number"; return false; }
   for (double s : o.size)
     if (!(s > 0) || !std::isfinite(s)) { error = "the size must be three positive numbers"; return false; }
-  if (o.block < 0) { error = "the block size must be 0 (the whole box) or more"; return false; }
+  if (o.block < -1) { error = "the block size must be 0 (the whole box) or more"; return false; }
   if (!(o.fill >= 0 && o.fill <= 1)) { error = "fill must lie between 0 and 1"; return false; }
   std::vector<int64_t> step(ex.dirs.size(), 1);
   for (const FixedWidth& f : o.fixedWidth) {
@@ -84,21 +113,34 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   const Arrangement& A = P.A;
 
   // Allowed labels per vertex (§4.5.4): those whose half-spaces all have a plane through
-  // it, less those crossing a fixed-width plane (§4.6.1); boundary vertices: empty space.
+  // it, less those crossing a fixed-width plane (§4.6.1); boundary vertices: empty space
+  // (with onGround the floor holds solids: empty below, anything above).
+  const int yAxis = int(std::find(ex.dirs.begin(), ex.dirs.end(), IVec3{0, 1, 0}) - ex.dirs.begin());
+  P.place.resize(A.vertexCount());
+  for (size_t v = 0; v < A.vertexCount(); ++v) {
+    P.place[v] = A.boundary[v] ? kBoundary : kInside;
+    if (o.onGround && A.num[v][1] == 0) {
+      bool side = false;
+      for (int c : {0, 2}) side |= A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == A.box[size_t(c)] * A.den[v];
+      if (!side) P.place[v] = kFloor;
+    }
+  }
   std::map<std::pair<uint32_t, uint8_t>, uint32_t> entry;
   P.baseIndex.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
-    const auto key = std::make_pair(A.planes[v], A.boundary[v]);
+    const auto key = std::make_pair(A.planes[v], P.place[v]);
     auto [it, added] = entry.emplace(key, uint32_t(P.baseTable.size() / W));
     if (added) {
       P.baseTable.resize(P.baseTable.size() + W, 0);
       Word* d = &P.baseTable[size_t(it->second) * W];
       for (int b = 0; b < P.k; ++b) {
         const Label& l = P.labels[size_t(b)];
-        if (A.boundary[v] ? b != LabelCatalog::kEmpty : (l.dirs & ~A.planes[v]) != 0) continue;
+        if (P.place[v] == kBoundary ? b != LabelCatalog::kEmpty : (l.dirs & ~A.planes[v]) != 0) continue;
         bool ok = true;
         for (size_t i = 0; i < step.size() && ok; ++i)
           if (step[i] > 1 && ((A.planes[v] >> i) & 1) && crosses(A.dirs, l, int(i))) ok = false;
+        if (ok && P.place[v] == kFloor) ok = emptyBelow(A.dirs, l, yAxis);
+        if (ok && o.onGround && P.place[v] == kInside) ok = !looksDown(A.dirs, l);
         if (ok) setBit(d, b);
       }
     }
@@ -233,17 +275,17 @@ class Assigner {
 };
 
 // Blocks of `b` lattice units overlapping by half, in scanline order (Fig. 4.23).
-std::vector<std::vector<int32_t>> blocksOf(const Problem& P) {
+std::vector<std::vector<int32_t>> blocksOf(const Problem& P, int block) {
   const Arrangement& A = P.A;
   std::vector<std::vector<int32_t>> blocks;
   std::vector<int32_t> interior;
   for (size_t v = 0; v < A.vertexCount(); ++v)
-    if (!A.boundary[v]) interior.push_back(int32_t(v));
-  if (P.o.block == 0) {
+    if (P.place[v] != kBoundary) interior.push_back(int32_t(v));  // every vertex but the box's sides
+  if (block == 0) {
     blocks.push_back(std::move(interior));
     return blocks;
   }
-  const int64_t b = P.o.block, half = std::max<int64_t>(1, b / 2);
+  const int64_t b = block, half = std::max<int64_t>(1, b / 2);
   std::array<std::vector<int64_t>, 3> origins;
   for (int c = 0; c < 3; ++c) {
     for (int64_t o = 0;; o += half) {
@@ -272,24 +314,38 @@ std::vector<std::vector<int32_t>> blocksOf(const Problem& P) {
 template <int NW>
 bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std::string& error) {
   Assigner<NW> a(P, M, stats);
-  const auto blocks = blocksOf(P);
-  const int passes = P.o.block == 0 ? 1 : std::max(1, P.o.passes);
   std::string why;
-  for (int pass = 0; pass < passes; ++pass)
-    for (const auto& sites : blocks) {
-      ++stats.blocks;
-      bool ok = false;
-      for (int attempt = 0; attempt <= P.o.blockRetries && !ok; ++attempt) {
-        why.clear();
-        ok = a.runBlock(sites, why);
-        if (why == "the time limit") {
-          error = "stopped by the time limit (" + std::to_string(P.o.timeLimitSeconds) + " s)";
-          return false;
+  // Runs every block of `block`: false when one failed all its tries (or time ran out).
+  auto sweep = [&](int block, int passes, int retries) {
+    const auto blocks = blocksOf(P, block);
+    bool all = true;
+    for (int pass = 0; pass < passes; ++pass)
+      for (const auto& sites : blocks) {
+        ++stats.blocks;
+        bool ok = false;
+        for (int attempt = 0; attempt <= retries && !ok && why != "the time limit"; ++attempt) {
+          why.clear();
+          ok = a.runBlock(sites, why);
         }
+        if (why == "the time limit") return false;
+        if (!ok) ++stats.blocksFailed, all = false;
       }
-      if (!ok) ++stats.blocksFailed;
-    }
-  if (P.o.block == 0 && stats.blocksFailed > 0) {
+    return all;
+  };
+  const int block = P.o.block;
+  bool ok = block > 0 ? sweep(block, std::max(1, P.o.passes), P.o.blockRetries) : sweep(0, 1, block == 0 ? P.o.blockRetries : 1);
+  if (!ok && block < 0 && why != "the time limit") {
+    // The whole box met a contradiction: it stays empty (always consistent), and blocks
+    // grow the model instead (§4.5.6).
+    stats.blocksFailed = 0;
+    sweep(kAutoBlock, std::max(1, P.o.passes), P.o.blockRetries);
+    ok = true;  // a block that failed was left as it was: still consistent
+  }
+  if (why == "the time limit") {
+    error = "stopped by the time limit (" + std::to_string(P.o.timeLimitSeconds) + " s)";
+    return false;
+  }
+  if (block == 0 && !ok) {
     error = "the whole box could not be labelled consistently (" + why + "); try blocks (block > 0)";
     return false;
   }
