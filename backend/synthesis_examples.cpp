@@ -3,6 +3,7 @@
 #include "runtime/io/find_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 
 namespace fgsg::backend {
@@ -31,6 +32,22 @@ bool loadSynthesisExample(const std::string& name, const std::vector<std::string
   std::string details = rt::synthesis::formatDiagnostics(diags);
   while (!details.empty() && details.back() == '\n') details.pop_back();  // the caret follows
   message = "Synthesize: cannot use the example \"" + name + "\":\n" + details;
+  return false;
+}
+
+bool isContinuousExample(const std::string& name) {
+  const auto dot = name.find_last_of('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = name.substr(dot);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
+}
+
+bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
+                           rt::synthesis::continuous::ExampleSolid& out, std::string& message) {
+  std::string error;
+  if (rt::synthesis::continuous::loadExampleSolid(rt::io::findFile(name, dirs), out, error)) return true;
+  message = "Synthesize: cannot use the example \"" + name + "\": " + error;
   return false;
 }
 

@@ -15,10 +15,16 @@ void checkDataFiles(const ir::Module& module, const std::string& grammarPath, fr
   std::set<std::string> seen;  // each file once, at its first call (run stops there too)
   for (const auto& call : backend::synthesizeCalls(module)) {
     if (!seen.insert(call.example).second) continue;
-    rt::synthesis::Example example;
     std::string message;
-    if (!backend::loadSynthesisExample(call.example, dirs, example, message))
-      diags.error("R013", {{call.at.line, call.at.col}, {call.at.line, call.at.col}}, message);
+    bool ok;
+    if (backend::isContinuousExample(call.example)) {
+      rt::synthesis::continuous::ExampleSolid solid;
+      ok = backend::loadContinuousExample(call.example, dirs, solid, message);
+    } else {
+      rt::synthesis::Example example;
+      ok = backend::loadSynthesisExample(call.example, dirs, example, message);
+    }
+    if (!ok) diags.error("R013", {{call.at.line, call.at.col}, {call.at.line, call.at.col}}, message);
   }
   // Declared tilesets, checked as Evolve will check them.
   for (const ir::TileSetSpec& spec : module.tileSets) {

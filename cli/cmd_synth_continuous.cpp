@@ -117,10 +117,10 @@ int continuousSynthCommand(const Args& args) {
   if (stats)
     std::fprintf(stdout,
                  "{\"ok\":%s,\"mode\":\"continuous\",\"example_polygons\":%d,\"directions\":%d,\"labels\":%d,"
-                 "\"relations\":%d,\"vertices\":%zu,\"edges\":%zu,\"output_polygons\":%zu,\"triangles\":%zu,"
+                 "\"relations\":%d,\"vertices\":%zu,\"edges\":%zu,\"output_polygons\":%zu,\"arrangement_faces\":%zu,\"parts\":%zu,\"triangles\":%zu,"
                  "\"blocks\":%d,\"blocks_failed\":%d,\"assignments\":%llu,\"seconds\":%.6f}\n",
                  r.ok ? "true" : "false", s.exampleFaces, s.directions, s.labels, s.relations, s.vertices, s.edges,
-                 s.outputPolygons, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds);
+                 s.outputPolygons, s.arrangementFaces, s.parts, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds);
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: %s\n", example.c_str(), r.error.c_str());
     return 1;
@@ -150,8 +150,8 @@ int continuousSynthCommand(const Args& args) {
   for (const std::string* f : {&meshOut, &previewOut})
     if (!f->empty()) wrote += (wrote.empty() ? "" : ", ") + *f;
   if (!wrote.empty())
-    std::fprintf(stderr, "wrote %s (%zu polygons, %zu triangles; %zu plane vertices, %d labels)\n", wrote.c_str(),
-                 s.outputPolygons, s.triangles, s.vertices, s.labels);
+    std::fprintf(stderr, "wrote %s (%zu parts, %zu polygons, %zu triangles; %zu plane vertices, %d labels)\n",
+                 wrote.c_str(), s.parts, s.outputPolygons, s.triangles, s.vertices, s.labels);
   return 0;
 }
 

@@ -7,6 +7,7 @@
 
 #include "frontend/builtins.h"
 
+#include <cctype>
 #include <set>
 #include <string>
 
@@ -22,6 +23,15 @@ int axisMask(const std::string& axes) {
     mask |= bit;
   }
   return mask;
+}
+
+// The files continuous synthesis reads (runtime/synthesis/continuous/example_solid.h).
+bool isMeshFileName(const std::string& file) {
+  const auto dot = file.find_last_of('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = file.substr(dot);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
 }
 
 bool drawsRandom(const Expr& e) {
@@ -141,7 +151,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
-          "faces", "f", "sidefaces", "top", "bottom", "front", "back", "left", "right",
+          "faces", "f", "sidefaces", "vertical", "aslant", "top", "bottom", "front", "back", "left", "right",
           "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips", "valleys"};
       static const std::set<std::string> kEdgeSelectors = {"edges",  "e",     "sideedges", "topedges", "bottomedges",
                                                            "eaves", "ridges", "rakes",     "hips",     "valleys"};
@@ -149,7 +159,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
-                         "\" (faces or f, sidefaces, top, bottom, front, back, left, right, edges or e, "
+                         "\" (faces or f, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges or e, "
                          "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys)");
       else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
                kEdgeSelectors.count(sel))
@@ -198,10 +208,23 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       expect(*item.args[1], w, ValueType::Num, "the marching angle");
       expect(*item.args[2], w, ValueType::Bool, "the marching condition");
       break;
-    case CommandId::Synthesize:
-      stringArg(0, "example file");
-      numArgs(1, false);
+    case CommandId::Synthesize: {
+      // A mesh example is continuous synthesis; its fifth argument names the symbol of
+      // the solid's parts.
+      const std::string file = stringArg(0, "example file");
+      const bool fileOk = stringOk;
+      for (size_t k = 1; k < 4; ++k) expect(*item.args[k], w, ValueType::Num, "this argument");
+      if (n == 5) {
+        const std::string part = stringArg(4, "symbol of the synthesized parts");
+        if (fileOk && !isMeshFileName(file))
+          diags_.error("E064", item.args[4]->range,
+                       "a symbol for the synthesized parts needs a polygonal example (continuous synthesis: "
+                       ".obj, .ply, .off or .stl), not \"" + file + "\"");
+        else if (stringOk && res_.findSymbol(part) < 0)
+          diags_.error("E064", item.args[4]->range, "'" + part + "' is no symbol of this grammar: " + cmd.signature);
+      }
       break;
+    }
     case CommandId::Line:
       if (n > 0) expect(*item.args[0], w, ValueType::Num, "the width of 'Line'");
       if (n > 1) expect(*item.args[1], w, ValueType::Bool, "the merge flag of 'Line'");
@@ -293,7 +316,8 @@ bool Analyzer::checkSplitSyntax(const Item& item, const CommandInfo& cmd) {
 
 void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   // The faces a labelled part of Comp may name (rt::cga::faceSelectorMask).
-  static const std::set<std::string> kPartFaces = {"front", "back", "left", "right", "top", "bottom", "side", "all"};
+  static const std::set<std::string> kPartFaces = {"front", "back",     "left",   "right", "top",
+                                                   "bottom", "vertical", "aslant", "side",  "all"};
   const size_t parts = item.body.size();
   size_t labelled = 0;
   for (const auto& part : item.body) {
@@ -308,7 +332,7 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
                    "or Offset, not to '" + item.name + "'");
     } else if (!kPartFaces.count(part.selector)) {
       diags_.error("E028", part.selectorRange,
-                   "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, side, all)");
+                   "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, vertical, aslant, side, all)");
     }
   }
   if (cmd.id == CommandId::Offset && labelled != parts)

@@ -104,7 +104,7 @@ enum class OpKind : uint8_t {
   Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
   Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
   LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
-  Synthesize,    // str = example file; args nx ny nz: model synthesis fills the scope
+  Synthesize,    // str = example file; args nx ny nz; index = parts' symbol string + 1 (0: none): model synthesis fills the scope
   Center,        // index = axes mask (1 X, 2 Y, 4 Z): centre the scope in the successor's first scope
   Color,         // args r, g, b: the colour of the instances placed from this scope on (clamped to 0..1)
   Texture,       // str = image file; args tile width, height (none: the scope's X and Y sizes): the image the

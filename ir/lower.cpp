@@ -429,7 +429,9 @@ class Lowerer {
       case CommandId::Synthesize:
         op.kind = OpKind::Synthesize;
         op.str = m_.internString(constString(*item.args[0]));
-        allArgs(1);
+        for (size_t k = 1; k < 4; ++k) op.args.push_back(expr(*item.args[k]));
+        // The parts' symbol of continuous synthesis, as a string id + 1 (0: none).
+        op.index = item.args.size() > 4 ? m_.internString(constString(*item.args[4])) + 1 : 0;
         break;
       case CommandId::Forward:
       case CommandId::Move:

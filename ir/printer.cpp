@@ -385,7 +385,10 @@ class Printer {
         if (op.asset < m_.assets.size()) text += " along " + quoted(m_.assets[op.asset]);
         break;
       case OpKind::LineSeg: text = withArgs("lineseg"); break;
-      case OpKind::Synthesize: text = withArgs("synthesize " + stringLit(op.str)); break;
+      case OpKind::Synthesize:
+        text = withArgs("synthesize " + stringLit(op.str));
+        if (op.index > 0) text += " parts " + stringLit(op.index - 1);
+        break;
       case OpKind::Evolve:
         text = withArgs("evolve " + (op.index ? "tileset " + m_.strings[op.str] : stringLit(op.str)));
         break;

@@ -557,6 +557,7 @@ class Verifier {
         break;
       case OpKind::Synthesize:
         stringId(op.str);
+        if (op.index > 0) stringId(op.index - 1);
         expectBodies(op, 0);
         numArgs(op, r, 3);
         break;

@@ -12,8 +12,6 @@ namespace fgsg::backend {
 void SynthesisCommand::apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec& ex, Frame&) {
   const ir::Module& m = d_.module();
   const std::string& name = m.strings[op.str];
-  const rt::synthesis::Example& example = loadExample(name, op.loc);
-  rt::synthesis::SynthesisOptions so;
   int n[3];
   for (int k = 0; k < 3; ++k) {
     const double v = a[k];
@@ -21,6 +19,9 @@ void SynthesisCommand::apply(const ir::Op& op, const double* a, uint32_t, State&
       throw DeriveError{op.loc, "R012", "Synthesize: grid sizes must be whole numbers from 1 to 4096"};
     n[k] = static_cast<int>(v);
   }
+  if (isContinuousExample(name)) return applyContinuous(op, n, st, ex);
+  const rt::synthesis::Example& example = loadExample(name, op.loc);
+  rt::synthesis::SynthesisOptions so;
   so.size = {n[0], n[1], n[2]};
   so.seed = rt::childKey(ex.key, 0x8000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col);
   so.attempts = 10;  // whole-grid synthesis restarts after a contradiction

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "backend/commands/command_family.h"
+#include "runtime/synthesis/continuous/example_solid.h"
 #include "runtime/synthesis/synthesis.h"
 
 #include <map>
@@ -24,9 +25,16 @@ class SynthesisCommand final : public CommandFamily {
  private:
   const rt::synthesis::Example& loadExample(const std::string& name, ir::Loc at);
   uint32_t pieceAsset(const std::string& asset, ir::Loc at);
+  // A polygonal example (synthesis_command_continuous.cpp): a solid grown in the scope,
+  // its parts shapes of the op's symbol (their faces their geometry) or, with none, one
+  // generated asset.
+  void applyContinuous(const ir::Op& op, const int n[3], State& st, Exec& ex);
+  const rt::synthesis::continuous::ExampleSolid& loadSolid(const std::string& name, ir::Loc at);
 
   Derivation& d_;
   std::map<std::string, rt::synthesis::Example> examples_;
+  std::map<std::string, rt::synthesis::continuous::ExampleSolid> solids_;
+  int synthesized_ = 0;  // generated assets made so far
 };
 
 }  // namespace fgsg::backend

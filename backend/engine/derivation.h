@@ -108,7 +108,7 @@ class Derivation final : public QueryHost {
   void emit(const ir::Op& op, const double* slots, State& st, Exec& ex);
   // Writes a shape of `symbol` (parameterless) on `scope` as an Emit at `at` would: how
   // the solvers' pieces (Synthesize, Evolve) become shapes.
-  void emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at);
+  void emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at, const rt::GeomRef& geom = {});
   // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
   void runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom, const State& outer,
                Exec& ex, Frame& f);

@@ -306,9 +306,10 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   shape.scope = st.scope;
 }
 
-void Derivation::emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at) {
+void Derivation::emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at, const rt::GeomRef& geom) {
   State piece;
   piece.scope = scope;
+  piece.geom = geom;
   piece.stackBase = stack_.size();
   ir::Op op;
   op.kind = ir::OpKind::Emit;

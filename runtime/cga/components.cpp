@@ -27,6 +27,10 @@ enum FaceClass : unsigned {
   kRight = 32,
   kSide = kFront | kBack | kLeft | kRight,
   kAllFaces = 63,
+  // Besides its side (CityEngine's comp(f) selectors): a side face is vertical or aslant
+  // (a sloped roof face), so walls and roof slopes of one solid can go apart.
+  kVertical = 64,
+  kAslant = 128,
 };
 // An edge is top, bottom or side by its height along the scope's Y; on a roof (or any
 // solid) it is also an eave (at the bottom), a ridge (level, above it), a rake (sloped,
@@ -50,6 +54,7 @@ bool parseSelector(const std::string& s, Selector& sel) {
       {"faces", false, kAllFaces},  {"f", false, kAllFaces},     {"sidefaces", false, kSide},
       {"e", true, kAllEdges},
       {"top", false, kTop},         {"bottom", false, kBottom},
+      {"vertical", false, kVertical}, {"aslant", false, kAslant},
       {"front", false, kFront},     {"back", false, kBack},
       {"left", false, kLeft},       {"right", false, kRight},
       {"edges", true, kAllEdges},   {"sideedges", true, kSideEdge},
@@ -107,8 +112,9 @@ unsigned classifyFace(const Vec3& worldNormal, const Scope& scope) {
   const Vec3 n = scope.axes.transpose() * worldNormal;  // in the solid's frame
   if (n.y() >= 1.0 - kHorizontalTol) return kTop;
   if (n.y() <= -(1.0 - kHorizontalTol)) return kBottom;
-  if (std::abs(n.z()) >= std::abs(n.x())) return n.z() > 0 ? kFront : kBack;
-  return n.x() > 0 ? kRight : kLeft;
+  const unsigned slope = std::abs(n.y()) <= kHorizontalTol ? kVertical : kAslant;
+  if (std::abs(n.z()) >= std::abs(n.x())) return slope | (n.z() > 0 ? kFront : kBack);
+  return slope | (n.x() > 0 ? kRight : kLeft);
 }
 
 // The face's scope: Z its normal, X horizontal along the face (Y x Z of the solid, the
@@ -274,7 +280,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   Selector sel;
   if (!parseSelector(selector, sel)) {
     error = "Comp: unknown selector \"" + selector +
-            "\" (expected faces, sidefaces, top, bottom, front, back, left, right, edges, "
+            "\" (expected faces, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges, "
             "sideedges, topedges, bottomedges, eaves, ridges, rakes, hips or valleys)";
     return false;
   }

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <numeric>
+#include <tuple>
 
 namespace fgsg::rt::synthesis::continuous {
 
@@ -20,6 +24,111 @@ PlaneFrame frameOf(const IVec3& a) {
   for (auto& c : b1) c /= l;
   const DVec3 b2{w[1] * b1[2] - w[2] * b1[1], w[2] * b1[0] - w[0] * b1[2], w[0] * b1[1] - w[1] * b1[0]};
   return {b1, b2};
+}
+
+// An arrangement face on the surface: its corners (outward, counter-clockwise) and the
+// plane it lies on (direction, side, offset a·x as num / den).
+struct SurfaceFace {
+  std::vector<int32_t> corners;
+  int direction = 0;
+  bool outwardAlong = false;
+  int64_t offsetNum = 0, offsetDen = 1;
+};
+
+// Merges touching faces of one plane and side into whole faces (see the header).
+void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, double spacing, BoundarySurface& out) {
+  // Connected parts of the solid: faces sharing a corner.
+  std::vector<int32_t> up(A.vertexCount(), -1);
+  auto find = [&](int32_t a) {
+    while (up[size_t(a)] >= 0 && up[size_t(a)] != a) a = up[size_t(a)];
+    return a;
+  };
+  for (const auto& f : faces)
+    for (int32_t v : f.corners)
+      if (up[size_t(v)] < 0) up[size_t(v)] = v;
+  for (const auto& f : faces)
+    for (size_t k = 1; k < f.corners.size(); ++k) {
+      const int32_t a = find(f.corners[0]), b = find(f.corners[k]);
+      if (a != b) up[size_t(b)] = a;
+    }
+  std::map<int32_t, uint32_t> partOf;
+  for (const auto& f : faces) partOf.emplace(find(f.corners[0]), uint32_t(partOf.size()));
+  out.parts = uint32_t(partOf.size());
+
+  // Faces of one plane and side that share an edge form a region.
+  std::map<std::tuple<int, bool, int64_t, int64_t>, std::vector<size_t>> byPlane;
+  for (size_t i = 0; i < faces.size(); ++i)
+    byPlane[{faces[i].direction, faces[i].outwardAlong, faces[i].offsetNum, faces[i].offsetDen}].push_back(i);
+  auto point = [&](int32_t v) {
+    DVec3 p = A.position(size_t(v));
+    for (auto& c : p) c *= spacing;
+    return p;
+  };
+  auto emit = [&](const std::vector<int32_t>& loop, uint32_t part) {
+    std::vector<DVec3> pts;
+    for (int32_t v : loop) pts.push_back(point(v));
+    out.faces.push_back(std::move(pts));
+    out.facePart.push_back(part);
+  };
+  for (const auto& [plane, members] : byPlane) {
+    // Directed edges of the region's faces; an edge met both ways is inside the region.
+    std::map<std::pair<int32_t, int32_t>, size_t> edges;
+    for (size_t i : members) {
+      const auto& c = faces[i].corners;
+      for (size_t k = 0; k < c.size(); ++k) edges[{c[k], c[(k + 1) % c.size()]}] = i;
+    }
+    std::map<int32_t, std::vector<int32_t>> next;  // boundary edges by start
+    std::map<size_t, size_t> region;               // face -> region (union-find over faces)
+    std::vector<size_t> faceUp(faces.size());
+    for (size_t i : members) faceUp[i] = i;
+    auto findFace = [&](size_t a) {
+      while (faceUp[a] != a) a = faceUp[a] = faceUp[faceUp[a]];
+      return a;
+    };
+    for (const auto& [e, i] : edges) {
+      auto twin = edges.find({e.second, e.first});
+      if (twin == edges.end()) next[e.first].push_back(e.second);
+      else faceUp[findFace(i)] = findFace(twin->second);
+    }
+    // Trace each region's boundary; a region whose boundary is not one simple loop
+    // (a hole, corners touching) keeps its arrangement faces.
+    std::map<size_t, std::vector<std::pair<int32_t, int32_t>>> boundaryOf;
+    for (const auto& [from, tos] : next)
+      for (int32_t to : tos) boundaryOf[findFace(edges[{from, to}])].push_back({from, to});
+    std::set<size_t> whole;
+    for (const auto& [root, bedges] : boundaryOf) {
+      std::map<int32_t, int32_t> succ;
+      bool simple = true;
+      for (const auto& [a, b] : bedges) simple &= succ.emplace(a, b).second;
+      std::vector<int32_t> loop;
+      if (simple) {
+        int32_t at = bedges[0].first;
+        do {
+          loop.push_back(at);
+          auto it = succ.find(at);
+          if (it == succ.end()) { simple = false; break; }
+          at = it->second;
+        } while (at != bedges[0].first && loop.size() <= bedges.size());
+        simple &= loop.size() == bedges.size();
+      }
+      if (!simple) continue;
+      // Drop corners on straight sides (the exact direction test on lattice vectors).
+      std::vector<int32_t> corners;
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const int32_t a = loop[(k + loop.size() - 1) % loop.size()], b = loop[k], c = loop[(k + 1) % loop.size()];
+        IVec3 u{}, w{};
+        for (int i = 0; i < 3; ++i) {
+          u[size_t(i)] = A.num[size_t(b)][size_t(i)] * A.den[size_t(a)] - A.num[size_t(a)][size_t(i)] * A.den[size_t(b)];
+          w[size_t(i)] = A.num[size_t(c)][size_t(i)] * A.den[size_t(b)] - A.num[size_t(b)][size_t(i)] * A.den[size_t(c)];
+        }
+        if (!isZero(canonicalDirection(cross(canonicalDirection(u), canonicalDirection(w))))) corners.push_back(b);
+      }
+      emit(corners, partOf[find(loop[0])]);
+      whole.insert(root);
+    }
+    for (size_t i : members)
+      if (!whole.count(findFace(i))) emit(faces[i].corners, partOf[find(faces[i].corners[0])]);
+  }
 }
 
 }  // namespace
@@ -54,6 +163,7 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
     std::sort(ring.begin(), ring.end());
   };
   std::vector<int32_t> poly;
+  std::vector<SurfaceFace> faces;
   for (size_t v = 0; v < n; ++v) {
     const Label& lab = labels[size_t(labelOf[v])];
     if (lab.dirs == 0) continue;  // empty or full: no face at v
@@ -104,6 +214,18 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
         // Outward: from the inside across the plane.
         if (above) std::reverse(poly.begin(), poly.end());
         ++out.polygons;
+        {
+          SurfaceFace sf;
+          sf.corners = poly;
+          sf.direction = l;
+          sf.outwardAlong = !above;
+          // a·x is the same rational at every corner: num / den of the first.
+          const int64_t num = dot(A.dirs[size_t(l)], A.num[size_t(poly[0])]), den = A.den[size_t(poly[0])];
+          const int64_t g = std::gcd(std::abs(num), den);
+          sf.offsetNum = g ? num / g : 0;
+          sf.offsetDen = g ? den / g : 1;
+          faces.push_back(std::move(sf));
+        }
         if (poly.size() == 3) {
           for (int32_t p : poly) mesh.indices.push_back(vertexOut(p));
           continue;
@@ -123,6 +245,7 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
       }
     }
   }
+  mergeFaces(A, faces, spacing, out);
   return out;
 }
 

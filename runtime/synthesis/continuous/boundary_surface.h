@@ -15,7 +15,14 @@ namespace fgsg::rt::synthesis::continuous {
 
 struct BoundarySurface {
   Mesh mesh;
-  size_t polygons = 0;
+  size_t polygons = 0;  // arrangement faces
+  // The same surface as whole faces: the arrangement faces of one plane and side that
+  // touch, merged, points on straight sides dropped (counter-clockwise from outside,
+  // world units). A region with a hole stays in its arrangement faces. Per face, the
+  // connected part of the solid it bounds.
+  std::vector<std::vector<DVec3>> faces;
+  std::vector<uint32_t> facePart;
+  uint32_t parts = 0;
 };
 
 // `labelOf[v]` indexes `labels`; positions are lattice units times `spacing`.

@@ -59,7 +59,8 @@ struct ContinuousOptions {
 struct ContinuousStats {
   int exampleFaces = 0, directions = 0, labels = 0, relations = 0;
   size_t vertices = 0, edges = 0;
-  size_t outputPolygons = 0, triangles = 0;
+  size_t outputPolygons = 0;  // whole faces (touching arrangement faces of a plane merged)
+  size_t arrangementFaces = 0, triangles = 0, parts = 0;
   int blocks = 0, blocksFailed = 0;
   uint64_t assignments = 0;
   double seconds = 0;
@@ -69,6 +70,10 @@ struct ContinuousResult {
   bool ok = false;
   std::string error;
   Mesh mesh;                       // world units; no normals (faceted)
+  // The surface as whole faces (world units, counter-clockwise from outside) and, per
+  // face, which connected part of the solid it bounds (0 .. stats.parts - 1).
+  std::vector<std::vector<std::array<double, 3>>> faces;
+  std::vector<uint32_t> facePart;
   std::vector<int32_t> vertexLabel;  // per arrangement vertex (tests)
   ContinuousStats stats;
 };

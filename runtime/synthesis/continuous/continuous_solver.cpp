@@ -374,7 +374,11 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
     if (!ok) return R;
     BoundarySurface surface = boundarySurface(P.A, P.labels, M, o.spacing);
     R.mesh = std::move(surface.mesh);
-    R.stats.outputPolygons = surface.polygons;
+    R.faces = std::move(surface.faces);
+    R.facePart = std::move(surface.facePart);
+    R.stats.arrangementFaces = surface.polygons;
+    R.stats.outputPolygons = R.faces.size();
+    R.stats.parts = surface.parts;
     R.stats.triangles = R.mesh.triangleCount();
     R.vertexLabel = std::move(M);
     R.ok = true;
