@@ -8,6 +8,7 @@
 #include "runtime/io/output_transaction.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
+#include "runtime/synthesis/image_reader.h"
 #include "runtime/synthesis/continuous/continuous.h"
 
 #include <cstdio>
@@ -21,7 +22,8 @@ using namespace fgsg::rt::synthesis::continuous;
 
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
-    "                  [--fill F] [--fixed-width A,B,C:N] [--on-ground] [--retries N] [--passes N] [--time-limit S]\n"
+    "                  [--fill F] [--fixed-width A,B,C:N] [--on-ground] [--connect N]\n"
+    "                  [--mask image.png] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
 int usage(const std::string& msg) {
@@ -51,7 +53,7 @@ bool isContinuousExample(const std::string& path) {
 }
 
 int continuousSynthCommand(const Args& args) {
-  std::string example, meshOut, previewOut;
+  std::string example, meshOut, previewOut, maskPath;
   ContinuousOptions o;
   bool haveSize = false, stats = false;
   auto need = [](bool ok, const std::string& message) {
@@ -77,6 +79,12 @@ int continuousSynthCommand(const Args& args) {
       o.block = int(CommandLine::parseWhole("--block", s, 0, 4096));
     });
     cl.flag("--on-ground", o.onGround);
+    cl.whole("--connect", o.growSeeds, 1, 100000);
+    cl.text("--mask", maskPath);
+    cl.option("--perturb", [&](const std::string& s) {
+      o.perturb = CommandLine::parseNumber("--perturb", s);
+      need(o.perturb >= 0, "--perturb needs a distance of 0 or more (world units)");
+    });
     cl.whole("--retries", o.blockRetries, 0, 1000);
     cl.whole("--passes", o.passes, 1, 100);
     cl.option("--fill", [&](const std::string& s) {
@@ -105,6 +113,21 @@ int continuousSynthCommand(const Args& args) {
 
   ExampleSolid ex;
   std::string err;
+  if (!maskPath.empty()) {
+    // As the discrete --mask: dark pixels are where solids may stand (a letter drawn on white).
+    rt::synthesis::RgbImage img;
+    if (!rt::synthesis::readRgbImage(maskPath, img, err)) {
+      std::fprintf(stderr, "%s: error[E731]: %s\n", maskPath.c_str(), err.c_str());
+      return 1;
+    }
+    o.maskWidth = img.width;
+    o.maskHeight = img.height;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const uint32_t c = img.pixel(x, y);
+        o.mask.push_back(0.299 * ((c >> 16) & 255) + 0.587 * ((c >> 8) & 255) + 0.114 * (c & 255) < 128.0 ? 1.0f : 0.0f);
+      }
+  }
   if (!loadExampleSolid(example, ex, err)) {
     std::fprintf(stderr, "%s: error[E750]: %s\n", example.c_str(), err.c_str());
     return 1;

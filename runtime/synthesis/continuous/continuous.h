@@ -51,6 +51,17 @@ struct ContinuousOptions {
   // them, and no face looks down anywhere else (no overhangs, nothing floats).
   bool onGround = false;
   double fill = 0.5;         // chance weight of labels with solid in them against empty space
+  // Connectivity (§4.6.2): > 0 grows the solid from this many seeds, a vertex taking
+  // solid only where the solid already placed reaches it, so each seed is one connected
+  // part (the whole box at once; blocks are not used).
+  int growSeeds = 0;
+  // A large-scale constraint (§4.6.3): a map over the box's floor (x along the rows, z
+  // down them), 0..1; no solid touches a place where it is below one half. Empty: none.
+  int maskWidth = 0, maskHeight = 0;
+  std::vector<float> mask;   // row-major, 0..1
+  // §4.8's post-process: each part moved by up to this much (world units) along x and z,
+  // at random, never into another part's box; 0 = off.
+  double perturb = 0;
   size_t maxVertices = 8'000'000;
   double timeLimitSeconds = 120;
   Deadline* deadline = nullptr;

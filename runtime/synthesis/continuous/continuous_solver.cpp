@@ -5,6 +5,7 @@
 #include "runtime/synthesis/continuous/boundary_surface.h"
 #include "runtime/synthesis/continuous/continuous.h"
 #include "runtime/synthesis/continuous/labels.h"
+#include "runtime/synthesis/continuous/perturb.h"
 #include "runtime/synthesis/random.h"
 
 #include <algorithm>
@@ -33,6 +34,9 @@ struct Problem {
   std::vector<uint32_t> baseIndex;   // per vertex
   std::vector<uint8_t> place;        // per vertex: inside the box, on its sides, on the floor
   std::vector<double> weight;        // per label
+  // Per relation and label: the label's solid reaches along such an edge (its pattern
+  // there is not all outside): how growing (§4.6.2) spreads.
+  std::vector<std::vector<uint8_t>> solidAlong;
   Deadline deadline;
   explicit Problem(const ContinuousOptions& opt) : o(opt), deadline(Deadline::after(opt.timeLimitSeconds)) {}
   const Word* base(int64_t v) const { return &baseTable[size_t(baseIndex[size_t(v)]) * size_t(W)]; }
@@ -73,6 +77,16 @@ bool emptyBelow(const std::vector<IVec3>& dirs, const Label& l, int yAxis) {
   return true;
 }
 
+// Is the vertex under a dark pixel of the mask (§4.6.3)?
+bool masked(const Problem& P, size_t v) {
+  const ContinuousOptions& o = P.o;
+  if (o.mask.empty()) return false;
+  const DVec3 p = P.A.position(v);
+  const int i = std::clamp(int(p[0] / double(P.A.box[0]) * o.maskWidth), 0, o.maskWidth - 1);
+  const int j = std::clamp(int(p[2] / double(P.A.box[2]) * o.maskHeight), 0, o.maskHeight - 1);
+  return o.mask[size_t(j) * size_t(o.maskWidth) + size_t(i)] < 0.5f;
+}
+
 bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::string& error) {
   const ContinuousOptions& o = P.o;
   if (!(o.spacing > 0) || !std::isfinite(o.spacing)) { error = "the spacing must be a positive number"; return false; }
@@ -80,6 +94,12 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
     if (!(s > 0) || !std::isfinite(s)) { error = "the size must be three positive numbers"; return false; }
   if (o.block < -1) { error = "the block size must be 0 (the whole box) or more"; return false; }
   if (!(o.fill >= 0 && o.fill <= 1)) { error = "fill must lie between 0 and 1"; return false; }
+  if (o.growSeeds < 0) { error = "the seed count for growing must be 0 or more"; return false; }
+  if (!o.mask.empty() && (o.maskWidth < 1 || o.maskHeight < 1 || o.mask.size() != size_t(o.maskWidth) * size_t(o.maskHeight))) {
+    error = "the mask's size does not match its pixels";
+    return false;
+  }
+  if (!(o.perturb >= 0) || !std::isfinite(o.perturb)) { error = "the perturbation must be 0 or more"; return false; }
   std::vector<int64_t> step(ex.dirs.size(), 1);
   for (const FixedWidth& f : o.fixedWidth) {
     const IVec3 a = canonicalDirection(f.normal);
@@ -118,7 +138,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   const int yAxis = int(std::find(ex.dirs.begin(), ex.dirs.end(), IVec3{0, 1, 0}) - ex.dirs.begin());
   P.place.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
-    P.place[v] = A.boundary[v] ? kBoundary : kInside;
+    P.place[v] = A.boundary[v] || masked(P, v) ? kBoundary : kInside;
     if (o.onGround && A.num[v][1] == 0) {
       bool side = false;
       for (int c : {0, 2}) side |= A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == A.box[size_t(c)] * A.den[v];
@@ -175,6 +195,11 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
           for (int c = 0; c < P.k; ++c)
             if (fwd[size_t(b)] && bwd[size_t(c)] && *fwd[size_t(b)] == *bwd[size_t(c)]) pairs.push_back({b, c});
         it->second = P.t.addRelationPair(pairs);
+        P.solidAlong.resize(size_t(it->second) + 2);
+        for (int b = 0; b < P.k; ++b) {
+          P.solidAlong[size_t(it->second)].push_back(fwd[size_t(b)] && *fwd[size_t(b)] != 0);
+          P.solidAlong[size_t(it->second) + 1].push_back(bwd[size_t(b)] && *bwd[size_t(b)] != 0);
+        }
       }
       links.push_back({int32_t(v), A.edgeTo[e], it->second});
     }
@@ -208,7 +233,7 @@ class Assigner {
   // Re-synthesizes `sites` with every other vertex fixed; M changes only on success.
   bool runBlock(const std::vector<int32_t>& sites, std::string& why) {
     for (int32_t s : sites) cat_.activate(s, P_.base(s));
-    bool ok = init(sites) && assign(sites, why);
+    bool ok = init(sites) && (P_.o.growSeeds > 0 ? grow(sites, why) : assign(sites, why));
     if (!ok && why.empty()) why = "no label fits";
     if (ok)
       for (int32_t s : sites) M_[size_t(s)] = firstBit(cat_.domain(s), NW);
@@ -234,12 +259,19 @@ class Assigner {
     return cat_.propagate() < 0;
   }
 
-  int choose(const Word* d) {
+  // A label of the domain at random by weight; solidOnly: not empty space.
+  int choose(const Word* d, bool solidOnly = false) {
+    Word only[NW];
+    for (int w = 0; w < NW; ++w) only[w] = d[w];
+    if (solidOnly) only[0] &= ~Word(1);  // label 0 is empty space
+    d = only;
     double sum = 0;
     forEachBit(d, NW, [&](int b) { sum += P_.weight[size_t(b)]; });
     int chosen = -1, last = -1;
     if (sum <= 0) {
-      uint64_t pick = rng_.below(uint64_t(popcount(d, NW)));
+      const int count = popcount(d, NW);
+      if (count == 0) return -1;
+      uint64_t pick = rng_.below(uint64_t(count));
       forEachBit(d, NW, [&](int b) { if (pick-- == 0) chosen = b; });
       return chosen;
     }
@@ -267,11 +299,69 @@ class Assigner {
     return true;
   }
 
+  // Connectivity (§4.6.2): seeds take solid labels; then a vertex is labelled only when
+  // the solid of a labelled neighbour reaches it along their edge, at random among those
+  // waiting; when nothing is waiting the next seed starts. The rest is empty space.
+  bool grow(const std::vector<int32_t>& sites, std::string& why) {
+    const SiteGraph& g = P_.g;
+    if (assigned_.empty()) assigned_.assign(size_t(g.siteCount), 0);
+    for (int32_t s : sites) assigned_[size_t(s)] = 0;
+    std::vector<int32_t> waiting;
+    std::vector<uint8_t> queued(size_t(g.siteCount), 0);
+    auto label = [&](int32_t s, bool solidOnly) {
+      if (P_.timeUp()) { why = "the time limit"; return false; }
+      assigned_[size_t(s)] = 1;
+      ++stats_.assignments;
+      if (singleLabel<NW>(cat_.domain(s)) < 0) {
+        const int b = choose(cat_.domain(s), solidOnly);
+        if (b < 0) return false;
+        cat_.assign(s, b);
+        if (cat_.propagate() >= 0) return false;
+      }
+      const int b = singleLabel<NW>(cat_.domain(s));
+      for (uint32_t e = g.linkStart[size_t(s)]; e < g.linkStart[size_t(s) + 1]; ++e) {
+        const int32_t u = g.linkSite[e];
+        if (cat_.active(u) && !assigned_[size_t(u)] && !queued[size_t(u)] && P_.solidAlong[g.linkRelation[e]][size_t(b)]) {
+          queued[size_t(u)] = 1;
+          waiting.push_back(u);
+        }
+      }
+      return true;
+    };
+    for (int seed = 0; seed < P_.o.growSeeds; ++seed) {
+      int32_t pick = -1;
+      uint64_t seen = 0;
+      for (int32_t s : sites) {  // reservoir sampling over vertices that may be solid
+        if (assigned_[size_t(s)]) continue;
+        Word solid = 0;
+        const Word* d = cat_.domain(s);
+        for (int w = 0; w < NW; ++w) solid |= w == 0 ? d[0] & ~Word(1) : d[w];
+        if (solid && rng_.below(++seen) == 0) pick = s;
+      }
+      if (pick < 0) break;
+      if (!label(pick, true)) return false;
+      while (!waiting.empty()) {
+        const size_t i = size_t(rng_.below(waiting.size()));
+        const int32_t s = waiting[i];
+        waiting[i] = waiting.back();
+        waiting.pop_back();
+        if (!assigned_[size_t(s)] && !label(s, false)) return false;
+      }
+    }
+    for (int32_t s : sites) {
+      if (assigned_[size_t(s)] || singleLabel<NW>(cat_.domain(s)) >= 0) continue;
+      if (!testBit(cat_.domain(s), LabelCatalog::kEmpty)) return false;
+      cat_.assign(s, LabelCatalog::kEmpty);
+    }
+    return cat_.propagate() < 0;
+  }
+
   Problem& P_;
   std::vector<int32_t>& M_;
   ContinuousStats& stats_;
   BitsetCatalog<NW> cat_;
   Rng rng_;
+  std::vector<uint8_t> assigned_;  // growing: labelled by grow() (not just narrowed to one)
 };
 
 // Blocks of `b` lattice units overlapping by half, in scanline order (Fig. 4.23).
@@ -332,7 +422,7 @@ bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std:
       }
     return all;
   };
-  const int block = P.o.block;
+  const int block = P.o.growSeeds > 0 ? 0 : P.o.block;
   bool ok = block > 0 ? sweep(block, std::max(1, P.o.passes), P.o.blockRetries) : sweep(0, 1, block == 0 ? P.o.blockRetries : 1);
   if (!ok && block < 0 && why != "the time limit") {
     // The whole box met a contradiction: it stays empty (always consistent), and blocks
@@ -346,7 +436,8 @@ bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std:
     return false;
   }
   if (block == 0 && !ok) {
-    error = "the whole box could not be labelled consistently (" + why + "); try blocks (block > 0)";
+    error = P.o.growSeeds > 0 ? "growing from " + std::to_string(P.o.growSeeds) + " seed(s) met a contradiction in every try (" + why + "); try another seed"
+                              : "the whole box could not be labelled consistently (" + why + "); try blocks (block > 0)";
     return false;
   }
   return true;
@@ -376,6 +467,7 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
     R.mesh = std::move(surface.mesh);
     R.faces = std::move(surface.faces);
     R.facePart = std::move(surface.facePart);
+    if (o.perturb > 0) perturbParts(R.mesh, R.faces, o.perturb, o.seed);
     R.stats.arrangementFaces = surface.polygons;
     R.stats.outputPolygons = R.faces.size();
     R.stats.parts = surface.parts;

@@ -282,3 +282,84 @@ TEST_CASE("continuous: examples that cannot be used are refused with the place",
   o.spacing = 0;
   CHECK(synthesizeContinuous(solid(box(1, 1, 1)), o).error == "the spacing must be a positive number");
 }
+
+TEST_CASE("continuous: whole faces are the example's faces, part by part", "[continuous]") {
+  // Gable houses cannot touch (the example has no reflex edge): each part is one house
+  // with the example's seven whole faces, however long or tall.
+  ContinuousOptions o;
+  o.size = {24, 8, 24};
+  o.onGround = true;
+  o.seed = 2;
+  const ContinuousResult r = synthesizeContinuous(solid(house()), o);
+  REQUIRE(r.ok);
+  REQUIRE(r.stats.parts > 1);
+  CHECK(r.faces.size() == 7 * r.stats.parts);
+  std::vector<int> perPart(r.stats.parts, 0);
+  for (uint32_t p : r.facePart) ++perPart[p];
+  for (int n : perPart) CHECK(n == 7);
+  CHECK(r.stats.outputPolygons == r.faces.size());
+  CHECK(r.stats.arrangementFaces >= r.faces.size());
+}
+
+TEST_CASE("continuous: growing from seeds gives connected parts (4.6.2)", "[continuous]") {
+  // An L-shaped example may join boxes into one solid; one seed grows one part.
+  const auto L = polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
+                           {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}},
+                          {{0, 5, 4, 3, 2, 1}, {6, 7, 8, 9, 10, 11}, {0, 1, 7, 6}, {1, 2, 8, 7}, {2, 3, 9, 8},
+                           {3, 4, 10, 9}, {4, 5, 11, 10}, {5, 0, 6, 11}});
+  ContinuousOptions o;
+  o.size = {16, 16, 4};
+  o.fill = 0.8;
+  for (int seeds : {1, 3}) {
+    o.growSeeds = seeds;
+    const ContinuousResult r = synthesizeContinuous(solid(L), o);
+    REQUIRE(r.ok);
+    CHECK(r.stats.parts >= 1);
+    CHECK(r.stats.parts <= size_t(seeds));
+    CHECK(closedManifold(r.mesh));
+  }
+}
+
+TEST_CASE("continuous: no solid where the mask is light (4.6.3)", "[continuous]") {
+  ContinuousOptions o;
+  o.size = {20, 6, 20};
+  o.fill = 0.9;
+  // Solid allowed only in the left half of the floor (x < 10).
+  o.maskWidth = 2;
+  o.maskHeight = 1;
+  o.mask = {1.0f, 0.0f};
+  const ContinuousResult r = synthesizeContinuous(solid(box(2, 1, 1)), o);
+  REQUIRE(r.ok);
+  REQUIRE(r.mesh.vertexCount() > 0);
+  for (size_t v = 0; v < r.mesh.vertexCount(); ++v) CHECK(r.mesh.positions[3 * v] < 10.0f);
+  o.mask = {1.0f};  // the wrong size
+  CHECK(synthesizeContinuous(solid(box(2, 1, 1)), o).error == "the mask's size does not match its pixels");
+}
+
+TEST_CASE("continuous: perturbed parts move apart from the grid, not into each other (4.8)", "[continuous]") {
+  ContinuousOptions o;
+  o.size = {24, 8, 24};
+  o.onGround = true;
+  o.seed = 2;
+  const ContinuousResult still = synthesizeContinuous(solid(house()), o);
+  o.perturb = 0.4;
+  const ContinuousResult moved = synthesizeContinuous(solid(house()), o);
+  REQUIRE(moved.ok);
+  REQUIRE(moved.mesh.vertexCount() == still.mesh.vertexCount());
+  CHECK(closedManifold(moved.mesh));
+  int off = 0;
+  for (size_t i = 0; i < moved.mesh.positions.size(); ++i) {
+    const float d = std::abs(moved.mesh.positions[i] - still.mesh.positions[i]);
+    CHECK(d <= 0.4f + 1e-5f);
+    if (i % 3 == 1) CHECK(d == 0.0f);  // never up or down
+    off += d > 0;
+  }
+  CHECK(off > 0);
+  const auto ps = parts(moved.mesh);
+  for (size_t a = 0; a < ps.size(); ++a)
+    for (size_t b = a + 1; b < ps.size(); ++b) {
+      const bool apart = ps[a].second[0] <= ps[b].first[0] || ps[b].second[0] <= ps[a].first[0] ||
+                         ps[a].second[2] <= ps[b].first[2] || ps[b].second[2] <= ps[a].first[2];
+      CHECK(apart);
+    }
+}
