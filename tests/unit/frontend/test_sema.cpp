@@ -504,3 +504,16 @@ TEST_CASE("turtle colors: a string of #rrggbb colours", "[sema][abop]") {
     CHECK(has(a, "E029", 1));
   }
 }
+
+TEST_CASE("Synthesize names its parts' symbol only for a polygonal example", "[sema]") {
+  auto ok = analyse("axiom: S(9, 3, 9) A;\nA ~> Synthesize(\"house.obj\", 9, 3, 9, \"H\");\nH ~> Comp(\"f\"){ vertical: W | aslant: R };\nW ~> I(\"cube\");\nR ~> I(\"cube\");");
+  CHECK(ok.ok);
+  auto grid = analyse("axiom: S(9, 3, 9) A;\nA ~> Synthesize(\"castle.txt\", 9, 3, 9, \"H\");\nH ~> I(\"cube\");");
+  CHECK(has(grid, "E064", 2, 40));
+  auto unknown = analyse("axiom: S(9, 3, 9) A;\nA ~> Synthesize(\"house.obj\", 9, 3, 9, \"Hose\");\nH ~> I(\"cube\");");
+  CHECK(has(unknown, "E064", 2, 39));
+  auto number = analyse("axiom: S(9, 3, 9) A;\nA ~> Synthesize(\"house.obj\", 9, 3, 9, 4);");
+  CHECK(has(number, "E017", 2, 39));
+  auto part = analyse("A ~> Comp(\"f\"){ slanted: B };\nB ~> I(\"cube\");");
+  CHECK(has(part, "E028", 1, 17));
+}
