@@ -28,6 +28,35 @@ struct KeyHash {
   }
 };
 
+// Vertex positions to indices: open addressing over a power-of-two table (the standard
+// map's nodes cost more than the arrangement's arithmetic).
+class VertexIndex {
+ public:
+  void reserve(size_t n) {
+    size_t cap = 16;
+    while (cap < 2 * n) cap *= 2;
+    keys_.assign(cap, Key{{0, 0, 0}, 0});
+    values_.assign(cap, -1);
+    mask_ = cap - 1;
+  }
+  void put(const Key& k, int32_t v) {
+    size_t i = KeyHash{}(k) & mask_;
+    while (values_[i] >= 0 && !(keys_[i] == k)) i = (i + 1) & mask_;
+    keys_[i] = k;
+    values_[i] = v;
+  }
+  int32_t find(const Key& k) const {
+    for (size_t i = KeyHash{}(k) & mask_; values_[i] >= 0; i = (i + 1) & mask_)
+      if (keys_[i] == k) return values_[i];
+    return -1;
+  }
+
+ private:
+  std::vector<Key> keys_;
+  std::vector<int32_t> values_;
+  size_t mask_ = 0;
+};
+
 // num/den in lowest terms, den > 0.
 Key reduced(IVec3 n, int64_t d) {
   if (d < 0) {
@@ -51,15 +80,32 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   A.step = step;
   A.box = box;
   const size_t m = dirs.size();
-  std::unordered_map<Key, int32_t, KeyHash> index;
   auto inBox = [&](const IVec3& n, int64_t d) {
     for (int c = 0; c < 3; ++c)
       if (n[size_t(c)] < 0 || n[size_t(c)] > box[size_t(c)] * d) return false;
     return true;
   };
+  // The directions with a plane through num / den.
+  auto planesAt = [&](const IVec3& n, int64_t d) {
+    uint32_t P = 0;
+    for (size_t e = 0; e < m; ++e)
+      if (dot(dirs[e], n) % (d * step[e]) == 0) P |= 1u << e;
+    return P;
+  };
+  // Each vertex comes from one triple only: the first independent one among its planes
+  // (its two lowest directions and the next one outside their span), so none is found
+  // twice and no table is needed to merge them.
+  auto firstTriple = [&](uint32_t P, size_t& i, size_t& j, size_t& l) {
+    i = size_t(__builtin_ctz(P));
+    P &= P - 1;
+    j = size_t(__builtin_ctz(P));
+    for (P &= P - 1; P; P &= P - 1) {
+      l = size_t(__builtin_ctz(P));
+      if (dot(dirs[i], cross(dirs[j], dirs[l])) != 0) return;
+    }
+    l = m;
+  };
   auto addVertex = [&](const Key& k) -> bool {
-    auto [it, added] = index.emplace(k, int32_t(A.den.size()));
-    if (!added) return true;
     if (A.den.size() >= maxVertices) {
       error = "the output would have more than " + std::to_string(maxVertices) +
               " vertices where planes meet: use a larger spacing or a smaller size";
@@ -118,6 +164,9 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
             }
             for (int64_t kl = lo; kl <= hi; ++kl) {
               const IVec3 n{base[0] + kl * dir[0], base[1] + kl * dir[1], base[2] + kl * dir[2]};
+              size_t fi, fj, fl;
+              firstTriple(planesAt(n, D), fi, fj, fl);
+              if (fi != i || fj != j || fl != l) continue;
               if (!addVertex(reduced(n, D))) return false;
             }
           }
@@ -135,13 +184,15 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
     return false;
   };
   std::sort(order.begin(), order.end(), less);
+  VertexIndex index;
+  index.reserve(order.size());
   {
     std::vector<IVec3> num(order.size());
     std::vector<int64_t> den(order.size());
     for (size_t k = 0; k < order.size(); ++k) {
       num[k] = A.num[size_t(order[k])];
       den[k] = A.den[size_t(order[k])];
-      index[{num[k], den[k]}] = int32_t(k);
+      index.put({num[k], den[k]}, int32_t(k));
     }
     A.num.swap(num);
     A.den.swap(den);
@@ -150,31 +201,33 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   A.planes.assign(n, 0);
   A.boundary.assign(n, 0);
   for (size_t v = 0; v < n; ++v) {
-    for (size_t e = 0; e < m; ++e)
-      if (dot(dirs[e], A.num[v]) % (A.den[v] * step[e]) == 0) A.planes[v] |= 1u << e;
+    A.planes[v] = planesAt(A.num[v], A.den[v]);
     for (int c = 0; c < 3; ++c)
       if (A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == box[size_t(c)] * A.den[v]) A.boundary[v] = 1;
   }
 
   // Edges: from each vertex along every line through it, to the nearest vertex each way.
-  std::unordered_map<Key, int32_t, KeyHash> lineIndex;
-  auto lineOf = [&](const IVec3& d) {
-    auto [it, added] = lineIndex.emplace(Key{d, 0}, int32_t(A.lines.size()));
-    if (added) A.lines.push_back(d);
-    return it->second;
-  };
+  // The line of two directions, once per pair (an index into A.lines).
+  std::vector<int32_t> lineOfPair(m * m, -1);
+  for (size_t a = 0; a < m; ++a)
+    for (size_t b = a + 1; b < m; ++b) {
+      const IVec3 d = canonicalDirection(cross(dirs[a], dirs[b]));
+      auto it = std::find(A.lines.begin(), A.lines.end(), d);
+      if (it == A.lines.end()) it = A.lines.insert(A.lines.end(), d);
+      lineOfPair[a * m + b] = int32_t(it - A.lines.begin());
+    }
   A.edgeStart.assign(n + 1, 0);
-  std::vector<IVec3> through;
+  std::vector<int32_t> through;
   for (size_t v = 0; v < n; ++v) {
     through.clear();
     const uint32_t P = A.planes[v];
     for (uint32_t a = P; a; a &= a - 1)
       for (uint32_t b = a & (a - 1); b; b &= b - 1) {
-        const IVec3 d = canonicalDirection(cross(dirs[size_t(__builtin_ctz(a))], dirs[size_t(__builtin_ctz(b))]));
-        if (std::find(through.begin(), through.end(), d) == through.end()) through.push_back(d);
+        const int32_t line = lineOfPair[size_t(__builtin_ctz(a)) * m + size_t(__builtin_ctz(b))];
+        if (std::find(through.begin(), through.end(), line) == through.end()) through.push_back(line);
       }
-    for (const IVec3& d0 : through) {
-      const int32_t line = lineOf(d0);
+    for (const int32_t line : through) {
+      const IVec3& d0 = A.lines[size_t(line)];
       for (int s = 1; s >= -1; s -= 2) {
         const IVec3 d{s * d0[0], s * d0[1], s * d0[2]};
         // The nearest plane crossing along d: t = p / q, q > 0.
@@ -194,9 +247,9 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
         for (int c = 0; c < 3; ++c) w[size_t(c)] = A.num[v][size_t(c)] * bestQ + bestP * A.den[v] * d[size_t(c)];
         const Key k = reduced(w, A.den[v] * bestQ);
         if (!inBox(k.n, k.d)) continue;
-        auto it = index.find(k);
-        if (it == index.end()) continue;  // cannot happen: a crossing of two planes and a third
-        A.edgeTo.push_back(it->second);
+        const int32_t to = index.find(k);
+        if (to < 0) continue;  // cannot happen: a crossing of two planes and a third
+        A.edgeTo.push_back(to);
         A.edgeLine.push_back(s > 0 ? line + 1 : -(line + 1));
       }
     }
