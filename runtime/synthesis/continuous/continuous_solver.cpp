@@ -101,6 +101,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   }
   if (!(o.perturb >= 0) || !std::isfinite(o.perturb)) { error = "the perturbation must be 0 or more"; return false; }
   std::vector<int64_t> step(ex.dirs.size(), 1);
+  uint32_t fixedDirs = 0;  // directions no label may cross (a width of one spacing too)
   for (const FixedWidth& f : o.fixedWidth) {
     const IVec3 a = canonicalDirection(f.normal);
     auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);
@@ -111,6 +112,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
     }
     if (f.planes < 1 || f.planes > 1000) { error = "a fixed width is 1 to 1000 plane spacings"; return false; }
     step[size_t(it - ex.dirs.begin())] = f.planes;
+    fixedDirs |= 1u << (it - ex.dirs.begin());
   }
   std::array<int64_t, 3> box{};
   for (int c = 0; c < 3; ++c) {
@@ -158,7 +160,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
         if (P.place[v] == kBoundary ? b != LabelCatalog::kEmpty : (l.dirs & ~A.planes[v]) != 0) continue;
         bool ok = true;
         for (size_t i = 0; i < step.size() && ok; ++i)
-          if (step[i] > 1 && ((A.planes[v] >> i) & 1) && crosses(A.dirs, l, int(i))) ok = false;
+          if (((fixedDirs & A.planes[v]) >> i) & 1 && crosses(A.dirs, l, int(i))) ok = false;
         if (ok && P.place[v] == kFloor) ok = emptyBelow(A.dirs, l, yAxis);
         if (ok && o.onGround && P.place[v] == kInside) ok = !looksDown(A.dirs, l);
         if (ok) setBit(d, b);

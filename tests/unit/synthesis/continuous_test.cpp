@@ -230,6 +230,12 @@ TEST_CASE("continuous: a fixed width holds exactly (4.6.1)", "[continuous]") {
     REQUIRE(!ps.empty());
     for (const auto& [lo, hi] : ps) CHECK(hi[0] - lo[0] == 3.0f);
   }
+  // One spacing is the thesis's basic case (Fig. 4.25): every object exactly 1 high.
+  o.fixedWidth = {{{0, 1, 0}, 1}};
+  const ContinuousResult flat = synthesizeContinuous(s, o);
+  REQUIRE(flat.ok);
+  REQUIRE(!parts(flat.mesh).empty());
+  for (const auto& [lo, hi] : parts(flat.mesh)) CHECK(hi[1] - lo[1] == 1.0f);
   o.fixedWidth = {{{1, 1, 0}, 2}};
   const ContinuousResult bad = synthesizeContinuous(s, o);
   CHECK_FALSE(bad.ok);
