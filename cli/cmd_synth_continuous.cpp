@@ -129,7 +129,13 @@ int continuousSynthCommand(const Args& args) {
       }
   }
   if (!loadExampleSolid(example, ex, err)) {
-    std::fprintf(stderr, "%s: error[E750]: %s\n", example.c_str(), err.c_str());
+    // The message starts with where ("house.obj: face 7 ...", "house.obj:12: ..."): the
+    // code goes after that place, as in every fgsg diagnostic.
+    const size_t at = err.rfind(example, 0) == 0 ? err.find(": ", example.size()) : std::string::npos;
+    if (at == std::string::npos)
+      std::fprintf(stderr, "%s: error[E750]: %s\n", example.c_str(), err.c_str());
+    else
+      std::fprintf(stderr, "%s: error[E750]: %s\n", err.substr(0, at).c_str(), err.substr(at + 2).c_str());
     return 1;
   }
   ProgressLine progress("fgsg synth", true);

@@ -123,12 +123,15 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
       }
     }
   }
-  for (const auto& [k, p] : directed) {
-    const int a = int(k >> 32), b = int(k & 0xffffffffu);
-    if (!directed.count(key(b, a))) {
-      error = name + ": the solid is not closed: the edge from " + corner(a) + " to " + corner(b) + " of face " +
-              std::to_string(p + 1) + " has no face on its other side";
-      return false;
+  for (size_t p = 0; p < out.polygons.size(); ++p) {  // in file order: the first open edge
+    const auto& poly = out.polygons[p];
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const int a = poly[i], b = poly[(i + 1) % poly.size()];
+      if (!directed.count(key(b, a))) {
+        error = name + ": the solid is not closed: the edge from " + corner(a) + " to " + corner(b) + " of face " +
+                std::to_string(p + 1) + " has no face on its other side";
+        return false;
+      }
     }
   }
   // Manifold vertices: the faces around each vertex form one fan (one cycle of edges).

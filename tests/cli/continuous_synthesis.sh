@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Continuous model synthesis from the command line: every example under
+# examples/synthesis/continuous/ runs as its header says, and its output passes the
+# independent checker (tests/synthesis/check_continuous.py: a closed 2-manifold whose
+# every vertex, edge and face figure occurs in the example) and the glTF validator;
+# the checker itself rejects what it must; bad examples and options are refused.
+. "$(dirname "$0")/../reliability/lib.sh"
+cd "$root" || fail "no source folder"
+py=/usr/bin/python3  # numpy
+check="$root/tests/synthesis/check_continuous.py"
+fixtures="$root/tests/synthesis/fixtures"
+validator="$root/scripts/validate-gltf.js"
+
+# The checker can fail: a reflex edge a box lacks, two boxes sharing an edge.
+"$py" "$check" "$fixtures/box.obj" "$fixtures/box.obj" >"$tmp/c" || { cat "$tmp/c" >&2; fail "checker: a box fails against itself"; }
+"$py" "$check" "$fixtures/box.obj" "$fixtures/l_shape.obj" >/dev/null && fail "checker: an L-shape passes against a box"
+"$py" "$check" "$fixtures/box.obj" "$fixtures/two_boxes_touching.obj" >/dev/null && fail "checker: a non-manifold pair passes"
+
+runs=0
+for example in examples/synthesis/continuous/*.obj; do
+  name=$(basename "$example" .obj)
+  while IFS= read -r line; do
+    read -r -a args <<< "$line"
+    clean=()  # the header's own --preview / -o targets are dropped
+    skip=0
+    for a in "${args[@]}"; do
+      if [ $skip = 1 ]; then skip=0; continue; fi
+      case "$a" in --preview|-o) skip=1 ;; *) clean+=("$a") ;; esac
+    done
+    runs=$((runs + 1))
+    out="$tmp/$name-$runs"
+    "$fgsg" synth "$example" "${clean[@]}" -o "$out.obj" --stats >"$out.json" 2>"$tmp/err" ||
+      { cat "$tmp/err" >&2; fail "$name: fgsg synth ${clean[*]} failed"; }
+    grep -q '"ok":true' "$out.json" || fail "$name: no stats"
+    grep -q '"parts":0,' "$out.json" && fail "$name: ${clean[*]} made nothing"
+    "$py" "$check" "$example" "$out.obj" --max-points 2000 >"$tmp/c" 2>&1 ||
+      { cat "$tmp/c" >&2; fail "$name: ${clean[*]}: the output fails the checker"; }
+    # The same run again gives the same bytes; as glb it passes the validator.
+    "$fgsg" synth "$example" "${clean[@]}" -o "$out-again.obj" 2>/dev/null
+    cmp -s "$out.obj" "$out-again.obj" || fail "$name: the same seed gave other bytes"
+    if [ -d "$root/tools/node/node_modules/gltf-validator" ]; then
+      "$fgsg" synth "$example" "${clean[@]}" -o "$out.glb" 2>/dev/null || fail "$name: no glb"
+      node "$validator" "$out.glb" >"$tmp/v" 2>&1 || { cat "$tmp/v" >&2; fail "$name: gltf-validator reported errors"; }
+    fi
+  done < <(grep -E '^#[[:space:]]+fgsg synth examples/synthesis/continuous/' "$example" |
+           sed -E 's#^\#[[:space:]]+fgsg synth examples/synthesis/continuous/[^ ]+##')
+done
+[ $runs -ge 5 ] || fail "only $runs example runs (each example's header names its command)"
+
+# Unusable examples and options: located messages, exit 1 or 2.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\n' >"$tmp/open.obj"
+expect 1 "open.obj: error\[E750\]: the solid is not closed: the edge from \(0.000, 0.000, 0.000\) to \(0.000, 1.000, 0.000\) of face 1 has no face on its other side" -- "$fgsg" synth "$tmp/open.obj" --size 4 4 4
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$tmp/flat.obj"
+expect 1 "flat.obj: error\[E750\]: a continuous example is a closed solid; this file has 1 face" -- "$fgsg" synth "$tmp/flat.obj" --size 4 4 4
+printf 'v 0 0 0\nv 1 0 0\nv 0.309017 0.951057 0\nv 0 0 1\nv 1 0 1\nv 0.309017 0.951057 1\nf 1 3 2\nf 4 5 6\nf 1 2 5 4\nf 2 3 6 5\nf 3 1 4 6\n' >"$tmp/skew.obj"
+expect 1 "skew.obj: error\[E750\]: face 1's normal \(0.000, 0.000, -1.000\)|skew.obj: error\[E750\]: face [0-9]+'s normal .* is not within 0.1 degrees of an integer direction" -- "$fgsg" synth "$tmp/skew.obj" --size 4 4 4
+expect 1 "error" -- "$fgsg" synth "$tmp/missing.obj" --size 4 4 4
+expect 2 "--size X Y Z is required" -- "$fgsg" synth examples/synthesis/continuous/box.obj
+expect 2 "--fixed-width needs A,B,C:N" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fixed-width 1,0:2
+expect 2 "--fill needs a number from 0 to 1" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fill 2
+expect 1 "E751.*which no face of the example has" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fixed-width 1,1,0:2
+expect 1 "E751.*more than 8000000 vertices" -- "$fgsg" synth examples/synthesis/continuous/house.obj --size 4000 4000 4000
+echo "ok: continuous synthesis ($runs example runs)"
