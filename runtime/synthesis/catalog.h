@@ -98,11 +98,49 @@ class SupportMemo {
   uint64_t misses_ = 0;
 };
 
+// support(r, D) for links (symmetry, the edges of continuous synthesis's arrangement),
+// memoised by (relation, D) in a direct-mapped table: an arrangement vertex pops with a
+// dozen links, and unioning the rows of its labels for each was most of the time.
+template <int NW>
+class LinkSupportMemo {
+ public:
+  explicit LinkSupportMemo(const TransitionTable& t) : t_(t) {}
+
+  const Word* get(int relation, const Word* d) {
+    if (table_.empty()) {
+      table_.assign(size_t(1) << kBits, Entry{});
+    }
+    uint64_t h = uint64_t(relation + 1) * 0xff51afd7ed558ccdULL;
+    for (int i = 0; i < NW; ++i) h = (h ^ d[i]) * 0x9e3779b97f4a7c15ULL;
+    Entry& e = table_[size_t(h >> (64 - kBits))];
+    Word diff = Word(e.relation ^ uint32_t(relation + 1));
+    for (int i = 0; i < NW; ++i) diff |= e.key[i] ^ d[i];
+    if (diff == 0) return e.sup;
+    e.relation = uint32_t(relation + 1);
+    for (int i = 0; i < NW; ++i) e.key[i] = d[i], e.sup[i] = 0;
+    forEachBit(d, NW, [&](int b) {
+      const Word* r = t_.row(relation, b);
+      for (int i = 0; i < NW; ++i) e.sup[i] |= r[i];
+    });
+    return e.sup;
+  }
+
+ private:
+  static constexpr int kBits = 14;  // 16 K entries
+  struct Entry {
+    uint32_t relation = 0;  // + 1; 0 = unused
+    Word key[NW] = {};
+    Word sup[NW] = {};
+  };
+  const TransitionTable& t_;
+  std::vector<Entry> table_;  // allocated at the first link
+};
+
 template <int NW>
 class BitsetCatalog {
  public:
   BitsetCatalog(const TransitionTable& t, const SiteGraph& g)
-      : t_(t), g_(g), memo_(t), dom_(size_t(g.siteCount) * NW), flags_(size_t(g.siteCount)),
+      : t_(t), g_(g), memo_(t), linkMemo_(t), dom_(size_t(g.siteCount) * NW), flags_(size_t(g.siteCount)),
         queue_(std::bit_ceil(size_t(g.siteCount))), queueMask_(queue_.size() - 1) {
     flags_.fill(0);  // domains are written when a site is activated, before any read
   }
@@ -222,6 +260,7 @@ class BitsetCatalog {
   const TransitionTable& t_;
   const SiteGraph& g_;
   SupportMemo<NW> memo_;
+  LinkSupportMemo<NW> linkMemo_;
   SiteArray<Word> dom_;
   SiteArray<uint8_t> flags_;
   // Sites to pop, first in first out: a ring buffer over [head_, tail_).
@@ -264,14 +303,13 @@ int64_t BitsetCatalog<NW>::propagate() {
     }
 
     if (failed < 0 && g_.hasLinks()) {
+      const int only = singleLabel<NW>(dv);
       for (uint32_t e = g_.linkStart[size_t(v)]; e < g_.linkStart[size_t(v) + 1] && failed < 0; ++e) {
         const int32_t u = g_.linkSite[e];
-        if (!(flags_[size_t(u)] & kActive)) continue;
-        Word s[NW] = {};
-        forEachBit(dv, NW, [&](int b) {
-          const Word* r = t_.row(g_.linkRelation[e], b);
-          for (int i = 0; i < NW; ++i) s[i] |= r[i];
-        });
+        const uint8_t f = flags_[size_t(u)];
+        if (!(f & kActive) || (f & (kDecided | kQueued)) == kDecided) continue;  // settled: see the top
+        const int rel = g_.linkRelation[e];
+        const Word* s = only >= 0 ? t_.row(rel, only) : linkMemo_.get(rel, dv);
         if (!narrow(u, s)) failed = u;
       }
     }

@@ -385,21 +385,26 @@ std::vector<std::vector<int32_t>> blocksOf(const Problem& P, int block) {
       if (o + b >= A.box[size_t(c)]) break;
     }
   }
-  for (int64_t oz : origins[2])
-    for (int64_t oy : origins[1])
-      for (int64_t ox : origins[0]) {
-        const int64_t lo[3] = {ox, oy, oz};
-        std::vector<int32_t> sites;
-        for (int32_t v : interior) {
-          bool in = true;
-          for (int c = 0; c < 3 && in; ++c) {
-            const int64_t n = A.num[size_t(v)][size_t(c)], d = A.den[size_t(v)];
-            in = n >= lo[c] * d && n <= (lo[c] + b) * d;
-          }
-          if (in) sites.push_back(v);
-        }
-        if (!sites.empty()) blocks.push_back(std::move(sites));
-      }
+  // Each vertex joins every block whose closed extent [o, o + b] holds it (up to two per
+  // axis), in vertex order, so each block's sites come out sorted.
+  const size_t nx = origins[0].size(), ny = origins[1].size(), nz = origins[2].size();
+  std::vector<std::vector<int32_t>> byBlock(nx * ny * nz);
+  for (int32_t v : interior) {
+    size_t from[3], to[3];
+    for (int c = 0; c < 3; ++c) {
+      const int64_t n = A.num[size_t(v)][size_t(c)], d = A.den[size_t(v)];
+      // Origins o = k * half with o <= n / d <= o + b.
+      const int64_t kHi = n / (half * d);
+      const int64_t kLo = std::max<int64_t>(0, (n - b * d + half * d - 1) / (half * d));
+      from[c] = size_t(std::min<int64_t>(kLo, int64_t(origins[size_t(c)].size()) - 1));
+      to[c] = size_t(std::min<int64_t>(kHi, int64_t(origins[size_t(c)].size()) - 1));
+    }
+    for (size_t z = from[2]; z <= to[2]; ++z)
+      for (size_t y = from[1]; y <= to[1]; ++y)
+        for (size_t x = from[0]; x <= to[0]; ++x) byBlock[(z * ny + y) * nx + x].push_back(v);
+  }
+  for (auto& sites : byBlock)
+    if (!sites.empty()) blocks.push_back(std::move(sites));
   return blocks;
 }
 
