@@ -147,9 +147,11 @@ int continuousSynthCommand(const Args& args) {
     std::fprintf(stdout,
                  "{\"ok\":%s,\"mode\":\"continuous\",\"example_polygons\":%d,\"directions\":%d,\"labels\":%d,"
                  "\"relations\":%d,\"vertices\":%zu,\"edges\":%zu,\"output_polygons\":%zu,\"arrangement_faces\":%zu,\"parts\":%zu,\"triangles\":%zu,"
-                 "\"blocks\":%d,\"blocks_failed\":%d,\"assignments\":%llu,\"seconds\":%.6f}\n",
+                 "\"blocks\":%d,\"blocks_failed\":%d,\"assignments\":%llu,\"seconds\":%.6f,"
+                 "\"compile_seconds\":%.6f,\"assign_seconds\":%.6f,\"surface_seconds\":%.6f}\n",
                  r.ok ? "true" : "false", s.exampleFaces, s.directions, s.labels, s.relations, s.vertices, s.edges,
-                 s.outputPolygons, s.arrangementFaces, s.parts, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds);
+                 s.outputPolygons, s.arrangementFaces, s.parts, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds,
+                 s.compileSeconds, s.assignSeconds, s.surfaceSeconds);
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: %s\n", example.c_str(), r.error.c_str());
     return 1;

@@ -1,8 +1,10 @@
 #include "runtime/synthesis/continuous/arrangement.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <numeric>
-#include <unordered_map>
 
 namespace fgsg::rt::synthesis::continuous {
 
@@ -18,8 +20,22 @@ int64_t ceilDiv(int64_t a, int64_t b) { return -floorDiv(-a, b); }
 struct Key {
   IVec3 n;
   int64_t d;
-  bool operator==(const Key& o) const { return n == o.n && d == o.d; }
+  bool operator==(const Key& o) const { return n[0] == o.n[0] && n[1] == o.n[1] && n[2] == o.n[2] && d == o.d; }
 };
+
+// Binary gcd of non-negative numbers (std::gcd divides: the slower in this loop).
+int64_t gcd2(uint64_t a, uint64_t b) {
+  if (a == 0) return int64_t(b);
+  if (b == 0) return int64_t(a);
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return int64_t(a << shift);
+}
 struct KeyHash {
   size_t operator()(const Key& k) const {
     uint64_t h = uint64_t(k.d) * 0x9e3779b97f4a7c15ULL;
@@ -63,7 +79,10 @@ Key reduced(IVec3 n, int64_t d) {
     d = -d;
     for (auto& c : n) c = -c;
   }
-  const int64_t g = std::gcd(std::gcd(std::gcd(std::abs(n[0]), std::abs(n[1])), std::abs(n[2])), d);
+  if (d == 1) return {n, d};
+  // The gcd of the four, stopping as soon as it is 1 (most of the time, at once).
+  int64_t g = gcd2(uint64_t(d), uint64_t(std::abs(n[0])));
+  for (int c = 1; c < 3 && g > 1; ++c) g = gcd2(uint64_t(g), uint64_t(std::abs(n[size_t(c)])));
   if (g > 1) {
     for (auto& c : n) c /= g;
     d /= g;
@@ -216,45 +235,56 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
       if (it == A.lines.end()) it = A.lines.insert(A.lines.end(), d);
       lineOfPair[a * m + b] = int32_t(it - A.lines.begin());
     }
-  A.edgeStart.assign(n + 1, 0);
-  std::vector<int32_t> through;
-  for (size_t v = 0; v < n; ++v) {
-    through.clear();
-    const uint32_t P = A.planes[v];
-    for (uint32_t a = P; a; a &= a - 1)
-      for (uint32_t b = a & (a - 1); b; b &= b - 1) {
-        const int32_t line = lineOfPair[size_t(__builtin_ctz(a)) * m + size_t(__builtin_ctz(b))];
-        if (std::find(through.begin(), through.end(), line) == through.end()) through.push_back(line);
-      }
-    for (const int32_t line : through) {
-      const IVec3& d0 = A.lines[size_t(line)];
-      for (int s = 1; s >= -1; s -= 2) {
-        const IVec3 d{s * d0[0], s * d0[1], s * d0[2]};
-        // The nearest plane crossing along d: t = p / q, q > 0.
-        int64_t bestP = -1, bestQ = 1;
-        for (size_t l = 0; l < m; ++l) {
-          const int64_t c = dot(dirs[l], d);
-          if (c == 0) continue;
-          const int64_t a = dot(dirs[l], A.num[v]);  // the value times den
-          const int64_t unit = A.den[v] * step[l];
-          const int64_t k = c > 0 ? floorDiv(a, unit) + 1 : ceilDiv(a, unit) - 1;
-          int64_t p = k * unit - a, q = A.den[v] * c;
-          if (q < 0) { p = -p; q = -q; }
-          if (bestP < 0 || __int128(p) * bestQ < __int128(bestP) * q) { bestP = p; bestQ = q; }
+  // Each vertex's edges on their own (in parallel: the search is most of the build),
+  // then laid out in vertex order.
+  std::vector<std::vector<std::pair<int32_t, int32_t>>> edgesOf(n);  // (to, signed line)
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const tbb::blocked_range<size_t>& range) {
+    std::vector<int32_t> through;
+    for (size_t v = range.begin(); v != range.end(); ++v) {
+      through.clear();
+      const uint32_t P = A.planes[v];
+      for (uint32_t a = P; a; a &= a - 1)
+        for (uint32_t b = a & (a - 1); b; b &= b - 1) {
+          const int32_t line = lineOfPair[size_t(__builtin_ctz(a)) * m + size_t(__builtin_ctz(b))];
+          if (std::find(through.begin(), through.end(), line) == through.end()) through.push_back(line);
         }
-        if (bestP < 0) continue;
-        IVec3 w{};
-        for (int c = 0; c < 3; ++c) w[size_t(c)] = A.num[v][size_t(c)] * bestQ + bestP * A.den[v] * d[size_t(c)];
-        const Key k = reduced(w, A.den[v] * bestQ);
-        if (!inBox(k.n, k.d)) continue;
-        const int32_t to = index.find(k);
-        if (to < 0) continue;  // cannot happen: a crossing of two planes and a third
-        A.edgeTo.push_back(to);
-        A.edgeLine.push_back(s > 0 ? line + 1 : -(line + 1));
+      for (const int32_t line : through) {
+        const IVec3& d0 = A.lines[size_t(line)];
+        for (int s = 1; s >= -1; s -= 2) {
+          const IVec3 d{s * d0[0], s * d0[1], s * d0[2]};
+          // The nearest plane crossing along d: t = p / q, q > 0.
+          int64_t bestP = -1, bestQ = 1;
+          for (size_t l = 0; l < m; ++l) {
+            const int64_t c = dot(dirs[l], d);
+            if (c == 0) continue;
+            const int64_t a = dot(dirs[l], A.num[v]);  // the value times den
+            const int64_t unit = A.den[v] * step[l];
+            const int64_t k = c > 0 ? floorDiv(a, unit) + 1 : ceilDiv(a, unit) - 1;
+            int64_t p = k * unit - a, q = A.den[v] * c;
+            if (q < 0) { p = -p; q = -q; }
+            if (bestP < 0 || __int128(p) * bestQ < __int128(bestP) * q) { bestP = p; bestQ = q; }
+          }
+          if (bestP < 0) continue;
+          IVec3 w{};
+          for (int c = 0; c < 3; ++c) w[size_t(c)] = A.num[v][size_t(c)] * bestQ + bestP * A.den[v] * d[size_t(c)];
+          const Key k = reduced(w, A.den[v] * bestQ);
+          if (!inBox(k.n, k.d)) continue;
+          const int32_t to = index.find(k);
+          if (to < 0) continue;  // cannot happen: a crossing of two planes and a third
+          edgesOf[v].push_back({to, s > 0 ? line + 1 : -(line + 1)});
+        }
       }
     }
-    A.edgeStart[v + 1] = uint32_t(A.edgeTo.size());
-  }
+  });
+  A.edgeStart.assign(n + 1, 0);
+  for (size_t v = 0; v < n; ++v) A.edgeStart[v + 1] = A.edgeStart[v] + uint32_t(edgesOf[v].size());
+  A.edgeTo.resize(A.edgeStart[n]);
+  A.edgeLine.resize(A.edgeStart[n]);
+  for (size_t v = 0; v < n; ++v)
+    for (size_t i = 0; i < edgesOf[v].size(); ++i) {
+      A.edgeTo[A.edgeStart[v] + i] = edgesOf[v][i].first;
+      A.edgeLine[A.edgeStart[v] + i] = edgesOf[v][i].second;
+    }
   return true;
 }
 

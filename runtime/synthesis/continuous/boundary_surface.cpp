@@ -39,8 +39,8 @@ struct SurfaceFace {
 void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, double spacing, BoundarySurface& out) {
   // Connected parts of the solid: faces sharing a corner.
   std::vector<int32_t> up(A.vertexCount(), -1);
-  auto find = [&](int32_t a) {
-    while (up[size_t(a)] >= 0 && up[size_t(a)] != a) a = up[size_t(a)];
+  auto find = [&](int32_t a) {  // with path halving: one part can hold most faces
+    while (up[size_t(a)] >= 0 && up[size_t(a)] != a) a = up[size_t(a)] = up[size_t(up[size_t(a)])];
     return a;
   };
   for (const auto& f : faces)
@@ -70,6 +70,7 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
     out.faces.push_back(std::move(pts));
     out.facePart.push_back(part);
   };
+  std::vector<size_t> faceUp(faces.size());  // union-find over faces, per plane's members
   for (const auto& [plane, members] : byPlane) {
     // Directed edges of the region's faces; an edge met both ways is inside the region.
     std::map<std::pair<int32_t, int32_t>, size_t> edges;
@@ -78,8 +79,6 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
       for (size_t k = 0; k < c.size(); ++k) edges[{c[k], c[(k + 1) % c.size()]}] = i;
     }
     std::map<int32_t, std::vector<int32_t>> next;  // boundary edges by start
-    std::map<size_t, size_t> region;               // face -> region (union-find over faces)
-    std::vector<size_t> faceUp(faces.size());
     for (size_t i : members) faceUp[i] = i;
     auto findFace = [&](size_t a) {
       while (faceUp[a] != a) a = faceUp[a] = faceUp[faceUp[a]];

@@ -75,6 +75,8 @@ struct ContinuousStats {
   int blocks = 0, blocksFailed = 0;
   uint64_t assignments = 0;
   double seconds = 0;
+  // Where the time went: the arrangement and labels, the assignment, the surface.
+  double compileSeconds = 0, assignSeconds = 0, surfaceSeconds = 0;
 };
 
 struct ContinuousResult {

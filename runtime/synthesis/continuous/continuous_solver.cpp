@@ -458,6 +458,8 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
   try {
     Problem P(o);
     if (!compile(P, ex, R.stats, R.error)) return R;
+    const auto compiled = Clock::now();
+    R.stats.compileSeconds = std::chrono::duration<double>(compiled - start).count();
     std::vector<int32_t> M(P.A.vertexCount(), LabelCatalog::kEmpty);
     bool ok = false;
     switch (P.W) {
@@ -470,6 +472,8 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
       default: ok = assignAll<64>(P, M, R.stats, R.error); break;
     }
     if (!ok) return R;
+    const auto assigned = Clock::now();
+    R.stats.assignSeconds = std::chrono::duration<double>(assigned - compiled).count();
     BoundarySurface surface = boundarySurface(P.A, P.labels, M, o.spacing);
     R.mesh = std::move(surface.mesh);
     R.faces = std::move(surface.faces);
@@ -481,6 +485,7 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
     R.stats.triangles = R.mesh.triangleCount();
     R.vertexLabel = std::move(M);
     R.ok = true;
+    R.stats.surfaceSeconds = std::chrono::duration<double>(Clock::now() - assigned).count();
   } catch (const std::bad_alloc&) {
     R.error = "out of memory (use a larger spacing or a smaller size)";
   }
