@@ -114,15 +114,17 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   // Each vertex comes from one triple only: the first independent one among its planes
   // (its two lowest directions and the next one outside their span), so none is found
   // twice and no table is needed to merge them.
-  auto firstTriple = [&](uint32_t P, size_t& i, size_t& j, size_t& l) {
-    i = size_t(__builtin_ctz(P));
-    P &= P - 1;
-    j = size_t(__builtin_ctz(P));
-    for (P &= P - 1; P; P &= P - 1) {
-      l = size_t(__builtin_ctz(P));
-      if (dot(dirs[i], cross(dirs[j], dirs[l])) != 0) return;
-    }
-    l = m;
+  // Is (i, j, l) that triple for the point num / den (on planes of i, j and l)? No plane
+  // of a lower direction through it, none between i and j, none between j and l outside
+  // the span of i and j: tested in that order, most points made by a later triple are
+  // turned away by the first test.
+  auto through = [&](size_t e, const IVec3& n, int64_t d) { return dot(dirs[e], n) % (d * step[e]) == 0; };
+  auto isFirst = [&](const IVec3& n, int64_t d, size_t i, size_t j, size_t l) {
+    for (size_t e = 0; e < j; ++e)
+      if (e != i && through(e, n, d)) return false;
+    for (size_t e = j + 1; e < l; ++e)
+      if (through(e, n, d) && dot(dirs[i], cross(dirs[j], dirs[e])) != 0) return false;
+    return true;
   };
   auto addVertex = [&](const Key& k) -> bool {
     if (A.den.size() >= maxVertices) {
@@ -183,9 +185,7 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
             }
             for (int64_t kl = lo; kl <= hi; ++kl) {
               const IVec3 n{base[0] + kl * dir[0], base[1] + kl * dir[1], base[2] + kl * dir[2]};
-              size_t fi, fj, fl;
-              firstTriple(planesAt(n, D), fi, fj, fl);
-              if (fi != i || fj != j || fl != l) continue;
+              if (!isFirst(n, D, i, j, l)) continue;
               if (!addVertex(reduced(n, D))) return false;
             }
           }
