@@ -235,8 +235,8 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
       if (it == A.lines.end()) it = A.lines.insert(A.lines.end(), d);
       lineOfPair[a * m + b] = int32_t(it - A.lines.begin());
     }
-  // Each vertex's edges on their own (in parallel: the search is most of the build),
-  // then laid out in vertex order.
+  // Each vertex's edges along +line on their own (in parallel: the search is most of the
+  // build); each edge is then also its far end's edge along -line.
   std::vector<std::vector<std::pair<int32_t, int32_t>>> edgesOf(n);  // (to, signed line)
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const tbb::blocked_range<size_t>& range) {
     std::vector<int32_t> through;
@@ -250,8 +250,8 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
         }
       for (const int32_t line : through) {
         const IVec3& d0 = A.lines[size_t(line)];
-        for (int s = 1; s >= -1; s -= 2) {
-          const IVec3 d{s * d0[0], s * d0[1], s * d0[2]};
+        {
+          const IVec3& d = d0;
           // The nearest plane crossing along d: t = p / q, q > 0.
           int64_t bestP = -1, bestQ = 1;
           for (size_t l = 0; l < m; ++l) {
@@ -271,11 +271,18 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
           if (!inBox(k.n, k.d)) continue;
           const int32_t to = index.find(k);
           if (to < 0) continue;  // cannot happen: a crossing of two planes and a third
-          edgesOf[v].push_back({to, s > 0 ? line + 1 : -(line + 1)});
+          edgesOf[v].push_back({to, line + 1});
         }
       }
     }
   });
+  const std::vector<size_t> forward = [&] {
+    std::vector<size_t> f(n);
+    for (size_t v = 0; v < n; ++v) f[v] = edgesOf[v].size();
+    return f;
+  }();
+  for (size_t v = 0; v < n; ++v)
+    for (size_t i = 0; i < forward[v]; ++i) edgesOf[size_t(edgesOf[v][i].first)].push_back({int32_t(v), -edgesOf[v][i].second});
   A.edgeStart.assign(n + 1, 0);
   for (size_t v = 0; v < n; ++v) A.edgeStart[v + 1] = A.edgeStart[v] + uint32_t(edgesOf[v].size());
   A.edgeTo.resize(A.edgeStart[n]);
