@@ -23,7 +23,7 @@ using namespace fgsg::rt::synthesis::continuous;
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
     "                  [--fill F] [--fixed-width A,B,C:N] [--on-ground] [--connect N]\n"
-    "                  [--mask image.png] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
+    "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
 int usage(const std::string& msg) {
@@ -81,6 +81,10 @@ int continuousSynthCommand(const Args& args) {
     cl.flag("--on-ground", o.onGround);
     cl.whole("--connect", o.growSeeds, 1, 100000);
     cl.text("--mask", maskPath);
+    cl.repeated("--symmetry", [&](const std::string& s) {
+      need(s == "mirror-x" || s == "mirror-z", "--symmetry is mirror-x or mirror-z for a polygonal example");
+      o.mirrorAxes.push_back(s == "mirror-x" ? 0 : 2);
+    });
     cl.option("--perturb", [&](const std::string& s) {
       o.perturb = CommandLine::parseNumber("--perturb", s);
       need(o.perturb >= 0, "--perturb needs a distance of 0 or more (world units)");

@@ -59,6 +59,9 @@ struct ContinuousOptions {
   // down them), 0..1; no solid touches a place where it is below one half. Empty: none.
   int maskWidth = 0, maskHeight = 0;
   std::vector<float> mask;   // row-major, 0..1
+  // Symmetry: the output is its own mirror image across the middle of the box along each
+  // axis listed (0 x, 2 z). The whole box at once (no blocks).
+  std::vector<int> mirrorAxes;
   // §4.8's post-process: each part moved by up to this much (world units) along x and z,
   // at random, never into another part's box; 0 = off.
   double perturb = 0;

@@ -5,6 +5,7 @@
 #include "runtime/synthesis/continuous/boundary_surface.h"
 #include "runtime/synthesis/continuous/continuous.h"
 #include "runtime/synthesis/continuous/labels.h"
+#include "runtime/synthesis/continuous/mirror.h"
 #include "runtime/synthesis/continuous/perturb.h"
 #include "runtime/synthesis/random.h"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <map>
 #include <new>
+#include <tuple>
 
 namespace fgsg::rt::synthesis::continuous {
 
@@ -147,10 +149,22 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
       if (!side) P.place[v] = kFloor;
     }
   }
-  std::map<std::pair<uint32_t, uint8_t>, uint32_t> entry;
+  // Symmetry: the mirror image of each label and vertex; a vertex that is its own image
+  // may only hold labels that are their own images.
+  std::vector<std::vector<int32_t>> labelImage(o.mirrorAxes.size()), vertexImage(o.mirrorAxes.size());
+  std::vector<uint8_t> onMirror(A.vertexCount(), 0);
+  for (size_t s = 0; s < o.mirrorAxes.size(); ++s) {
+    const int axis = o.mirrorAxes[s];
+    if (axis != 0 && axis != 2) { error = "a mirror is across x (0) or z (2)"; return false; }
+    if (!mirrorLabels(A.dirs, P.labels, axis, labelImage[s], error) || !mirrorVertices(A, axis, vertexImage[s], error))
+      return false;
+    for (size_t v = 0; v < A.vertexCount(); ++v)
+      if (vertexImage[s][v] == int32_t(v)) onMirror[v] |= uint8_t(1u << s);
+  }
+  std::map<std::tuple<uint32_t, uint8_t, uint8_t>, uint32_t> entry;
   P.baseIndex.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
-    const auto key = std::make_pair(A.planes[v], P.place[v]);
+    const auto key = std::make_tuple(A.planes[v], P.place[v], onMirror[v]);
     auto [it, added] = entry.emplace(key, uint32_t(P.baseTable.size() / W));
     if (added) {
       P.baseTable.resize(P.baseTable.size() + W, 0);
@@ -163,6 +177,8 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
           if (((fixedDirs & A.planes[v]) >> i) & 1 && crosses(A.dirs, l, int(i))) ok = false;
         if (ok && P.place[v] == kFloor) ok = emptyBelow(A.dirs, l, yAxis);
         if (ok && o.onGround && P.place[v] == kInside) ok = !looksDown(A.dirs, l);
+        for (size_t s = 0; s < o.mirrorAxes.size() && ok; ++s)
+          if ((onMirror[v] >> s) & 1) ok = labelImage[s][size_t(b)] == b;
         if (ok) setBit(d, b);
       }
     }
@@ -205,6 +221,15 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
       }
       links.push_back({int32_t(v), A.edgeTo[e], it->second});
     }
+  for (size_t s = 0; s < o.mirrorAxes.size(); ++s) {
+    std::vector<std::pair<int32_t, int32_t>> pairs;
+    for (int b = 0; b < P.k; ++b)
+      if (labelImage[s][size_t(b)] >= 0) pairs.push_back({b, labelImage[s][size_t(b)]});
+    const int rel = P.t.addRelationPair(pairs);
+    for (size_t v = 0; v < A.vertexCount(); ++v)
+      if (int32_t(v) < vertexImage[s][v]) links.push_back({int32_t(v), vertexImage[s][v], rel});
+  }
+  P.solidAlong.resize(size_t(P.t.relationCount()), std::vector<uint8_t>(size_t(P.k), 0));  // mirrors do not grow
   if (P.t.relationCount() > 65535) { error = "too many kinds of edges"; return false; }
   P.g.siteCount = int64_t(A.vertexCount());
   P.g.slots = 0;
@@ -429,13 +454,15 @@ bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std:
       }
     return all;
   };
-  const int block = P.o.growSeeds > 0 ? 0 : P.o.block;
+  // Growing and mirrors reach across the box: the whole box at once.
+  const int block = P.o.growSeeds > 0 || !P.o.mirrorAxes.empty() ? 0 : P.o.block;
   bool ok = block > 0 ? sweep(block, std::max(1, P.o.passes), P.o.blockRetries) : sweep(0, 1, block == 0 ? P.o.blockRetries : 1);
   if (!ok && block < 0 && why != "the time limit") {
     // The whole box met a contradiction: it stays empty (always consistent), and blocks
-    // grow the model instead (§4.5.6).
+    // grow the model instead (§4.5.6), one sweep (from the empty model a second one only
+    // re-draws what the first made).
     stats.blocksFailed = 0;
-    sweep(kAutoBlock, std::max(1, P.o.passes), P.o.blockRetries);
+    sweep(kAutoBlock, 1, P.o.blockRetries);
     ok = true;  // a block that failed was left as it was: still consistent
   }
   if (why == "the time limit") {

@@ -369,3 +369,35 @@ TEST_CASE("continuous: perturbed parts move apart from the grid, not into each o
       CHECK(apart);
     }
 }
+
+TEST_CASE("continuous: a mirror makes the output its own mirror image", "[continuous]") {
+  for (int axis : {0, 2}) {
+    ContinuousOptions o;
+    o.size = {17, 8, 13};
+    o.onGround = true;
+    o.mirrorAxes = {axis};
+    o.seed = 5;
+    const ContinuousResult r = synthesizeContinuous(solid(house()), o);
+    REQUIRE(r.ok);
+    REQUIRE(r.mesh.triangleCount() > 0);
+    CHECK(closedManifold(r.mesh));
+    std::set<std::array<float, 3>> points;
+    for (size_t v = 0; v < r.mesh.vertexCount(); ++v)
+      points.insert({r.mesh.positions[3 * v], r.mesh.positions[3 * v + 1], r.mesh.positions[3 * v + 2]});
+    for (auto p : points) {
+      p[size_t(axis)] = float(o.size[size_t(axis)]) - p[size_t(axis)];
+      CHECK(points.count(p) == 1);
+    }
+  }
+  // A shed: one slope, whose mirror image the example lacks.
+  const auto shed = polygons({{0, 0, 0}, {1, 0, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 2, 1}, {0, 1, 1}},
+                             {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 7, 6, 2}, {1, 2, 6, 5}, {0, 4, 7, 3}});
+  ContinuousOptions o;
+  o.size = {8, 4, 8};
+  o.mirrorAxes = {0};
+  const ContinuousResult bad = synthesizeContinuous(solid(shed), o);
+  CHECK_FALSE(bad.ok);
+  CHECK(bad.error.find("has no mirror image among them") != std::string::npos);
+  o.mirrorAxes = {2};  // across z the shed is its own image
+  CHECK(synthesizeContinuous(solid(shed), o).ok);
+}
