@@ -401,3 +401,23 @@ TEST_CASE("continuous: a mirror makes the output its own mirror image", "[contin
   o.mirrorAxes = {2};  // across z the shed is its own image
   CHECK(synthesizeContinuous(solid(shed), o).ok);
 }
+
+TEST_CASE("continuous: a pyramid roof scales a tower's x and z together (4.6.4)", "[continuous]") {
+  ExampleSolid tower;
+  std::string err;
+  REQUIRE(loadExampleSolid(FGSG_SOURCE_DIR "/examples/synthesis/continuous/tower.obj", tower, err));
+  ContinuousOptions o;
+  o.size = {24, 10, 24};
+  o.onGround = true;
+  for (uint64_t seed : {1, 2, 3}) {
+    o.seed = seed;
+    const ContinuousResult r = synthesizeContinuous(tower, o);
+    REQUIRE(r.ok);
+    const auto ps = parts(r.mesh);
+    REQUIRE(!ps.empty());
+    for (const auto& [lo, hi] : ps) {
+      CHECK(hi[0] - lo[0] == hi[2] - lo[2]);  // a square footprint: a round tower fits
+      CHECK(lo[1] == 0.0f);
+    }
+  }
+}
