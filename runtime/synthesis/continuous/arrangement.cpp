@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace fgsg::rt::synthesis::continuous {
@@ -192,17 +193,14 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
       }
   // Order vertices by position (z, y, x): the solver's scanline order, independent of
   // the hash table.
+  // Doubles order them exactly: distinct coordinates num / den (den < 2^20, |num| < 2^40)
+  // differ by far more than a double's rounding.
+  std::vector<std::array<double, 3>> key(A.den.size());
+  for (size_t v = 0; v < A.den.size(); ++v)
+    for (int c = 0; c < 3; ++c) key[v][size_t(2 - c)] = double(A.num[v][size_t(c)]) / double(A.den[v]);
   std::vector<int32_t> order(A.den.size());
   std::iota(order.begin(), order.end(), 0);
-  auto less = [&](int32_t a, int32_t b) {
-    for (int c = 2; c >= 0; --c) {
-      const __int128 x = __int128(A.num[size_t(a)][size_t(c)]) * A.den[size_t(b)];
-      const __int128 y = __int128(A.num[size_t(b)][size_t(c)]) * A.den[size_t(a)];
-      if (x != y) return x < y;
-    }
-    return false;
-  };
-  std::sort(order.begin(), order.end(), less);
+  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key[size_t(a)] < key[size_t(b)]; });
   VertexIndex index;
   index.reserve(order.size());
   {
@@ -252,17 +250,22 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
         const IVec3& d0 = A.lines[size_t(line)];
         {
           const IVec3& d = d0;
-          // The nearest plane crossing along d: t = p / q, q > 0.
+          // The nearest plane crossing along d: t = p / q, q > 0. Compared as doubles:
+          // the quotients are exact enough to floor (a / unit is an integer or at least
+          // 1 / unit away from one) and distinct crossings differ by 1 / (q q') or more.
           int64_t bestP = -1, bestQ = 1;
+          double bestT = 0;
           for (size_t l = 0; l < m; ++l) {
             const int64_t c = dot(dirs[l], d);
             if (c == 0) continue;
             const int64_t a = dot(dirs[l], A.num[v]);  // the value times den
             const int64_t unit = A.den[v] * step[l];
-            const int64_t k = c > 0 ? floorDiv(a, unit) + 1 : ceilDiv(a, unit) - 1;
+            const double f = std::floor(double(a) / double(unit));
+            const int64_t below = int64_t(f), k = c > 0 ? below + 1 : (below * unit == a ? below - 1 : below);
             int64_t p = k * unit - a, q = A.den[v] * c;
             if (q < 0) { p = -p; q = -q; }
-            if (bestP < 0 || __int128(p) * bestQ < __int128(bestP) * q) { bestP = p; bestQ = q; }
+            const double t = double(p) / double(q);
+            if (bestP < 0 || t < bestT) { bestP = p; bestQ = q; bestT = t; }
           }
           if (bestP < 0) continue;
           IVec3 w{};
