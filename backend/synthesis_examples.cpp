@@ -1,9 +1,9 @@
 #include "backend/synthesis_examples.h"
 
 #include "runtime/io/find_file.h"
+#include "runtime/synthesis/continuous/example_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <functional>
 
 namespace fgsg::backend {
@@ -35,13 +35,7 @@ bool loadSynthesisExample(const std::string& name, const std::vector<std::string
   return false;
 }
 
-bool isContinuousExample(const std::string& name) {
-  const auto dot = name.find_last_of('.');
-  if (dot == std::string::npos) return false;
-  std::string ext = name.substr(dot);
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
-}
+bool isContinuousExample(const std::string& name) { return rt::synthesis::continuous::isPolygonalExampleFile(name); }
 
 bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
                            rt::synthesis::continuous::ExampleSolid& out, std::string& message) {

@@ -61,7 +61,11 @@ std::string dirOf(const std::string& path) {
 
 }  // namespace
 
-const char* synthUsage() { return kUsage; }
+// Both forms: a label grid / tile set / image, and a polygonal example.
+const char* synthUsage() {
+  static const std::string both = std::string(kUsage) + continuousSynthUsage();
+  return both.c_str();
+}
 
 int synthCommand(const Args& args) {
   // A mesh example (not the value of an output option) means continuous synthesis.

@@ -10,6 +10,7 @@
 #include "runtime/render/preview.h"
 #include "runtime/synthesis/image_reader.h"
 #include "runtime/synthesis/continuous/continuous.h"
+#include "runtime/synthesis/continuous/example_file.h"
 
 #include <cstdio>
 #include <string>
@@ -44,13 +45,9 @@ bool parseFixedWidth(const std::string& s, FixedWidth& f) {
 
 }  // namespace
 
-bool isContinuousExample(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos) return false;
-  std::string ext = path.substr(dot);
-  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
-}
+bool isContinuousExample(const std::string& path) { return isPolygonalExampleFile(path); }
+
+const char* continuousSynthUsage() { return kUsage; }
 
 int continuousSynthCommand(const Args& args) {
   std::string example, meshOut, previewOut, maskPath;

@@ -6,8 +6,8 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "runtime/synthesis/continuous/example_file.h"
 
-#include <cctype>
 #include <set>
 #include <string>
 
@@ -23,15 +23,6 @@ int axisMask(const std::string& axes) {
     mask |= bit;
   }
   return mask;
-}
-
-// The files continuous synthesis reads (runtime/synthesis/continuous/example_solid.h).
-bool isMeshFileName(const std::string& file) {
-  const auto dot = file.find_last_of('.');
-  if (dot == std::string::npos) return false;
-  std::string ext = file.substr(dot);
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
 }
 
 bool drawsRandom(const Expr& e) {
@@ -216,7 +207,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       for (size_t k = 1; k < 4; ++k) expect(*item.args[k], w, ValueType::Num, "this argument");
       if (n == 5) {
         const std::string part = stringArg(4, "symbol of the synthesized parts");
-        if (fileOk && !isMeshFileName(file))
+        if (fileOk && !rt::synthesis::continuous::isPolygonalExampleFile(file))
           diags_.error("E064", item.args[4]->range,
                        "a symbol for the synthesized parts needs a polygonal example (continuous synthesis: "
                        ".obj, .ply, .off or .stl), not \"" + file + "\"");
