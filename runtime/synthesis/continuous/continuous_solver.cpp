@@ -142,8 +142,9 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   const int yAxis = int(std::find(ex.dirs.begin(), ex.dirs.end(), IVec3{0, 1, 0}) - ex.dirs.begin());
   P.place.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
-    P.place[v] = A.boundary[v] || masked(P, v) ? kBoundary : kInside;
-    if (o.onGround && A.num[v][1] == 0) {
+    const bool hidden = masked(P, v);
+    P.place[v] = A.boundary[v] || hidden ? kBoundary : kInside;
+    if (o.onGround && A.num[v][1] == 0 && !hidden) {
       bool side = false;
       for (int c : {0, 2}) side |= A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == A.box[size_t(c)] * A.den[v];
       if (!side) P.place[v] = kFloor;
@@ -191,7 +192,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   std::vector<Link> links;
   for (size_t v = 0; v < A.vertexCount(); ++v)
     for (uint32_t e = A.edgeStart[v]; e < A.edgeStart[v + 1]; ++e) {
-      if (A.edgeLine[e] < 0) continue;  // each edge once, from its lower end along +line
+      if (A.edgeLine[e] < 0) continue;  // each edge once, from the end it leaves along +line
       const int32_t line = A.edgeLine[e] - 1;
       const IVec3& d = A.lines[size_t(line)];
       uint32_t planes = 0;
