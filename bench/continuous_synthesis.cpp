@@ -29,6 +29,7 @@ struct Case {
   bool onGround;
   double fill;
   std::vector<FixedWidth> fixed;
+  std::vector<FixedWidth> planeStep;  // every N-th plane of a steep slope (its header's second command)
   int connect;
   int tableInput, tableOutput;
   double tableMinutes;
@@ -41,13 +42,15 @@ int main(int argc, char** argv) {
   const int reps = quick ? 1 : 3;
   const std::vector<Case> cases = {
       // The examples' own settings (their headers); the box starts small and grows.
-      {"houses", "house.obj", {16, 10, 16}, {true, false, true}, true, 0.5, {}, 0, 39, 1908, 1.3},
-      {"terrain", "terrain.obj", {12, 6, 12}, {true, false, true}, true, 0.7, {}, 0, 22, 922, 0.5},
-      {"arches", "arches.obj", {30, 12, 24}, {true, false, true}, false, 0.9, {{{0, 1, 0}, 4}, {{0, 0, 1}, 2}}, 0, 20, 1002, 0.5},
-      {"pentagons", "pentagons.obj", {16, 14, 16}, {true, false, true}, true, 0.7, {}, 0, 33, 2004, 1.1},
-      {"roads", "roads.obj", {16, 2, 16}, {true, false, true}, true, 0.5, {}, 0, 126, 6888, 0.2},
+      {"houses", "house.obj", {16, 10, 16}, {true, false, true}, true, 0.5, {}, {}, 0, 39, 1908, 1.3},
+      {"terrain", "terrain.obj", {12, 6, 12}, {true, false, true}, true, 0.7, {},
+       {{{2, 1, 0}, 2}, {{-2, 1, 0}, 2}, {{0, 1, 2}, 2}, {{0, 1, -2}, 2}}, 0, 22, 922, 0.5},
+      {"arches", "arches.obj", {30, 12, 24}, {true, false, true}, false, 0.9, {{{0, 1, 0}, 4}, {{0, 0, 1}, 2}}, {}, 0, 20, 1002, 0.5},
+      {"pentagons", "pentagons.obj", {16, 14, 16}, {true, false, true}, true, 0.7, {}, {}, 0, 33, 2004, 1.1},
+      {"roads", "roads.obj", {16, 2, 16}, {true, false, true}, true, 0.5, {},
+       {{{1, 2, 0}, 2}, {{-1, 2, 0}, 2}, {{0, 2, 1}, 2}, {{0, 2, -1}, 2}}, 0, 126, 6888, 0.2},
       // Grown from one seed (its header) only up to about 30 x 30: larger boxes contradict.
-      {"plumbing", "pipes.obj", {16, 16, 2}, {true, true, false}, false, 0.5, {}, 0, 282, 7422, 0.8},
+      {"plumbing", "pipes.obj", {16, 16, 2}, {true, true, false}, false, 0.5, {}, {}, 0, 282, 7422, 0.8},
   };
   for (const Case& c : cases) {
     ExampleSolid ex;
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     o.onGround = c.onGround;
     o.fill = c.fill;
     o.fixedWidth = c.fixed;
+    o.planeStep = c.planeStep;
     o.growSeeds = c.connect;
     o.seed = 1;
     ContinuousResult r;

@@ -23,7 +23,7 @@ using namespace fgsg::rt::synthesis::continuous;
 
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
-    "                  [--fill F] [--fixed-width A,B,C:N] [--on-ground] [--connect N]\n"
+    "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--on-ground] [--connect N]\n"
     "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
@@ -101,6 +101,12 @@ int continuousSynthCommand(const Args& args) {
       need(parseFixedWidth(s, f), "--fixed-width needs A,B,C:N: a face direction of the example (integers) and a width "
                                   "of N plane spacings (1 to 1000)");
       o.fixedWidth.push_back(f);
+    });
+    cl.repeated("--plane-step", [&](const std::string& s) {
+      FixedWidth f;
+      need(parseFixedWidth(s, f), "--plane-step needs A,B,C:N: a face direction of the example (integers) and N: "
+                                  "every N-th plane only (1 to 1000)");
+      o.planeStep.push_back(f);
     });
     cl.text("-o,--output", meshOut);
     cl.text("--preview", previewOut);

@@ -47,6 +47,10 @@ struct ContinuousOptions {
   int blockRetries = 6;      // tries of a block before it is left as it was
   int passes = 2;            // sweeps over all blocks
   std::vector<FixedWidth> fixedWidth;
+  // Coarser planes (§4.5.8, spacing the planes): along `normal` only every `planes`-th
+  // plane, without fixing any width — fewer vertices where a steep slope's planes crowd
+  // (a 2:1 slope's planes lie 1/sqrt(5) apart), faces of that slope at fewer places.
+  std::vector<FixedWidth> planeStep;
   // Every solid stands on the box's floor (y = 0): floor vertices may carry solid above
   // them, and no face looks down anywhere else (no overhangs, nothing floats).
   bool onGround = false;

@@ -104,6 +104,17 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   if (!(o.perturb >= 0) || !std::isfinite(o.perturb)) { error = "the perturbation must be 0 or more"; return false; }
   std::vector<int64_t> step(ex.dirs.size(), 1);
   uint32_t fixedDirs = 0;  // directions no label may cross (a width of one spacing too)
+  for (const FixedWidth& f : o.planeStep) {
+    const IVec3 a = canonicalDirection(f.normal);
+    auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);
+    if (isZero(a) || it == ex.dirs.begin() + ex.faceDirections) {
+      error = "a plane step names the direction (" + std::to_string(f.normal[0]) + ", " + std::to_string(f.normal[1]) + ", " +
+              std::to_string(f.normal[2]) + "), which no face of the example has";
+      return false;
+    }
+    if (f.planes < 1 || f.planes > 1000) { error = "a plane step is 1 to 1000 plane spacings"; return false; }
+    step[size_t(it - ex.dirs.begin())] = f.planes;
+  }
   for (const FixedWidth& f : o.fixedWidth) {
     const IVec3 a = canonicalDirection(f.normal);
     auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);

@@ -421,3 +421,29 @@ TEST_CASE("continuous: a pyramid roof scales a tower's x and z together (4.6.4)"
     }
   }
 }
+
+TEST_CASE("continuous: a plane step keeps every N-th plane of a direction (4.5.8)", "[continuous]") {
+  ContinuousOptions o;
+  o.size = {16, 8, 16};
+  o.onGround = true;
+  const ContinuousResult all = synthesizeContinuous(solid(house()), o);
+  o.planeStep = {{{1, 1, 0}, 2}, {{-1, 1, 0}, 2}};
+  const ContinuousResult half = synthesizeContinuous(solid(house()), o);
+  REQUIRE(all.ok);
+  REQUIRE(half.ok);
+  CHECK(half.stats.vertices < all.stats.vertices);
+  CHECK(closedManifold(half.mesh));
+  // Roof slopes only on every other plane: on each sloped triangle, x + y (or y - x) is even.
+  for (size_t t = 0; t < half.mesh.triangleCount(); ++t) {
+    const float* p[3];
+    for (int k = 0; k < 3; ++k) p[k] = &half.mesh.positions[3 * half.mesh.indices[3 * t + k]];
+    const bool up = p[0][0] + p[0][1] == p[1][0] + p[1][1] && p[1][0] + p[1][1] == p[2][0] + p[2][1];
+    const bool down = p[0][1] - p[0][0] == p[1][1] - p[1][0] && p[1][1] - p[1][0] == p[2][1] - p[2][0];
+    if (up && !(p[0][0] == p[1][0] && p[1][0] == p[2][0])) CHECK(std::fmod(double(p[0][0] + p[0][1]), 2.0) == 0.0);
+    if (down && !(p[0][0] == p[1][0] && p[1][0] == p[2][0])) CHECK(std::fmod(double(p[0][1] - p[0][0]), 2.0) == 0.0);
+  }
+  o.planeStep = {{{1, 2, 0}, 2}};
+  const ContinuousResult bad = synthesizeContinuous(solid(house()), o);
+  CHECK_FALSE(bad.ok);
+  CHECK(bad.error.find("a plane step names the direction (1, 2, 0), which no face of the example has") == 0);
+}
