@@ -9,8 +9,7 @@ namespace fgsg::rt::synthesis::continuous {
 
 bool Label::inside(uint32_t signs) const { return std::binary_search(in.begin(), in.end(), signs & dirs); }
 
-Label canonicalLabel(const std::vector<IVec3>& dirs, uint32_t mask, std::vector<std::pair<uint32_t, bool>> sectors) {
-  (void)dirs;
+Label canonicalLabel(uint32_t mask, std::vector<std::pair<uint32_t, bool>> sectors) {
   // Drop a direction while the figure is the same on both sides of it in every sector
   // pair that differs only there.
   for (bool dropped = true; dropped;) {
@@ -55,7 +54,7 @@ Label figureAt(const ExampleSolid& s, const DVec3& p, uint32_t mask, double step
     const DVec3 q{p[0] + step * sec.direction[0], p[1] + step * sec.direction[1], p[2] + step * sec.direction[2]};
     table.push_back({sec.signs, windingNumber(s, q) > 0.5});
   }
-  return canonicalLabel(s.dirs, mask, std::move(table));
+  return canonicalLabel(mask, std::move(table));
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ LabelCatalog exampleLabels(const ExampleSolid& solid);
 std::optional<uint64_t> edgePattern(const Label& label, const std::vector<IVec3>& dirs, const IVec3& axis,
                                     uint32_t edgePlanes, const std::vector<DVec3>& wedges);
 
-// Canonical form of a figure given as inside/outside per sector of `mask`.
-Label canonicalLabel(const std::vector<IVec3>& dirs, uint32_t mask, std::vector<std::pair<uint32_t, bool>> sectors);
+// Canonical form of a figure given as inside/outside per sector of `mask` (every sector
+// of the central arrangement of those directions, once).
+Label canonicalLabel(uint32_t mask, std::vector<std::pair<uint32_t, bool>> sectors);
 
 }  // namespace fgsg::rt::synthesis::continuous
