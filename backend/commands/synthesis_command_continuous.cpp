@@ -19,6 +19,10 @@ namespace cs = rt::synthesis::continuous;
 void SynthesisCommand::applyContinuous(const ir::Op& op, const int n[3], State& st, Exec& ex) {
   const ir::Module& m = d_.module();
   const std::string& name = m.strings[op.str];
+  for (int k = 0; k < 3; ++k)
+    if (n[k] < 2)
+      throw DeriveError{op.loc, "R012", "Synthesize(\"" + name + "\"): continuous synthesis needs at least 2 plane "
+                                        "spacings along each axis (a solid lies between the box's sides)"};
   const cs::ExampleSolid& solid = loadSolid(name, op.loc);
   cs::ContinuousOptions o;
   o.size = {double(n[0]), double(n[1]), double(n[2])};

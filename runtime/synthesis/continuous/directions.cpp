@@ -33,7 +33,6 @@ IVec3 canonicalDirection(IVec3 a) {
 std::optional<IVec3> snapToIntegerDirection(const DVec3& n, int maxComponent, double toleranceRadians) {
   const DVec3 u = normalized(n);
   const double biggest = std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
-  std::optional<IVec3> best;
   for (int m = 1; m <= maxComponent; ++m) {
     // Scale so the largest component is m, round, and measure the angle.
     IVec3 a{};
@@ -43,7 +42,7 @@ std::optional<IVec3> snapToIntegerDirection(const DVec3& n, int maxComponent, do
     const double c = std::clamp(v[0] * u[0] + v[1] * u[1] + v[2] * u[2], -1.0, 1.0);
     if (std::acos(c) <= toleranceRadians) return canonicalDirection(a);
   }
-  return best;
+  return std::nullopt;
 }
 
 std::vector<DVec3> wedgesAround(const IVec3& axis, const std::vector<IVec3>& around) {
