@@ -3,6 +3,7 @@
 // examples/synthesis/continuous/ the box grows (x and z doubled from the case's start)
 // until the output has at least the table's output polygons (whole faces), then that
 // run is timed: best of `reps` wall times. One JSON object per line:
+// "size" is fgsg synth's --size: width, depth, height.
 //   {"bench":"continuous","case":"houses","example_polygons":7,"table_input":39,
 //    "output_polygons":1911,"table_output":1908,"seconds":0.21,"table_seconds":78,
 //    "speedup":371, ...}
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   const int reps = quick ? 1 : 3;
   const std::vector<Case> cases = {
       // The examples' own settings (their headers); the box starts small and grows.
-      {"houses", "house.obj", {16, 10, 16}, {true, false, true}, true, 0.5, {}, {}, 0, 39, 1908, 1.3},
+      {"houses", "houses.obj", {16, 10, 16}, {true, false, true}, true, 0.5, {}, {}, 0, 39, 1908, 1.3},
       {"terrain", "terrain.obj", {12, 6, 12}, {true, false, true}, true, 0.7, {},
        {{{2, 1, 0}, 2}, {{-2, 1, 0}, 2}, {{0, 1, 2}, 2}, {{0, 1, -2}, 2}}, 0, 22, 922, 0.5},
       {"arches", "arches.obj", {30, 12, 24}, {true, false, true}, false, 0.9, {{{0, 1, 0}, 4}, {{0, 0, 1}, 2}}, {}, 0, 20, 1002, 0.5},
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
                 "\"size\":[%g,%g,%g],\"vertices\":%zu,\"labels\":%d,\"output_polygons\":%zu,\"parts\":%zu,"
                 "\"table_output\":%d,\"seconds\":%.4f,\"table_seconds\":%.0f,\"speedup\":%.0f,"
                 "\"compile_seconds\":%.4f,\"assign_seconds\":%.4f,\"surface_seconds\":%.4f}\n",
-                c.name, r.stats.exampleFaces, c.tableInput, o.size[0], o.size[1], o.size[2], r.stats.vertices,
+                c.name, r.stats.exampleFaces, c.tableInput, o.size[0], o.size[2], o.size[1], r.stats.vertices,
                 r.stats.labels, r.stats.outputPolygons, r.stats.parts, c.tableOutput, best, table, table / best,
                 r.stats.compileSeconds, r.stats.assignSeconds, r.stats.surfaceSeconds);
     std::fflush(stdout);

@@ -1,7 +1,9 @@
 // fgsg synth EXAMPLE.obj --size X Y Z [--spacing S] [--seed N] [--block N] [--fill F]
-//            [--fixed-width A,B,C:N] [--on-ground] [-o out.glb] [--preview out.png] [--stats]
+//            [--fixed-width A,B,C:N] [--floating] [-o out.glb] [--preview out.png] [--stats]
 // Continuous model synthesis (Merrell ch. 4) from a closed polygonal example: the mode
-// `fgsg synth` takes when the example is a mesh file. See docs/synthesis.md.
+// `fgsg synth` takes when the example is a mesh file. The box is X wide, Y deep and Z
+// high, as label grids are; solids stand on its floor unless --floating. See
+// docs/synthesis.md.
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
@@ -23,7 +25,7 @@ using namespace fgsg::rt::synthesis::continuous;
 
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
-    "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--on-ground] [--connect N]\n"
+    "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--floating] [--connect N]\n"
     "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
@@ -52,19 +54,22 @@ const char* continuousSynthUsage() { return kUsage; }
 int continuousSynthCommand(const Args& args) {
   std::string example, meshOut, previewOut, maskPath;
   ContinuousOptions o;
-  bool haveSize = false, stats = false;
+  bool haveSize = false, stats = false, onGround = false, floating = false;
   auto need = [](bool ok, const std::string& message) {
     if (!ok) throw UsageError{message};
   };
   try {
     CommandLine cl("synth");
     cl.input(example, "example");
+    // As for label grids, Z is the height: X wide, Y deep, Z high (the example's y).
     cl.values("--size", 3, 3, [&](const std::vector<std::string>& v) {
-      need(v.size() == 3, "--size needs X Y Z: the output box in world units");
+      need(v.size() == 3, "--size needs X Y Z: the box's width, depth and height in world units");
+      double s[3];
       for (size_t k = 0; k < 3; ++k) {
-        o.size[k] = CommandLine::parseNumber("--size", v[k]);
-        need(o.size[k] > 0, "--size needs X Y Z: positive numbers");
+        s[k] = CommandLine::parseNumber("--size", v[k]);
+        need(s[k] > 0, "--size needs X Y Z: positive numbers");
       }
+      o.size = {s[0], s[2], s[1]};
       haveSize = true;
     });
     cl.option("--spacing", [&](const std::string& s) {
@@ -75,7 +80,9 @@ int continuousSynthCommand(const Args& args) {
     cl.option("--block", [&](const std::string& s) {
       o.block = int(CommandLine::parseWhole("--block", s, 0, 4096));
     });
-    cl.flag("--on-ground", o.onGround);
+    // Solids stand on the floor unless --floating (--on-ground says the default).
+    cl.flag("--on-ground", onGround);
+    cl.flag("--floating", floating);
     cl.whole("--connect", o.growSeeds, 1, 100000);
     cl.text("--mask", maskPath);
     cl.repeated("--symmetry", [&](const std::string& s) {
@@ -117,6 +124,8 @@ int continuousSynthCommand(const Args& args) {
   }
   if (example.empty()) return usage("no example file given");
   if (!haveSize) return usage("--size X Y Z is required");
+  if (onGround && floating) return usage("--on-ground and --floating exclude each other");
+  o.onGround = !floating;
 
   ExampleSolid ex;
   std::string err;

@@ -57,17 +57,18 @@ expect 1 "skew.obj: error\[E750\]: face 1's normal \(0.000, 0.000, -1.000\)|skew
 expect 1 "error" -- "$fgsg" synth "$tmp/missing.obj" --size 4 4 4
 expect 2 "--size X Y Z is required" -- "$fgsg" synth examples/synthesis/continuous/box.obj
 expect 2 "--fixed-width needs A,B,C:N" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fixed-width 1,0:2
+expect 2 "--on-ground and --floating exclude each other" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --on-ground --floating
 expect 2 "--fill needs a number from 0 to 1" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fill 2
 expect 1 "E751.*which no face of the example has" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fixed-width 1,1,0:2
-expect 1 "E751.*more than 8000000 vertices" -- "$fgsg" synth examples/synthesis/continuous/house.obj --size 4000 4000 4000
+expect 1 "E751.*more than 8000000 vertices" -- "$fgsg" synth examples/synthesis/continuous/houses.obj --size 4000 4000 4000
 # In a grammar: sizes and the parts' symbol checked.
 mkdir -p "$tmp/g"
-cp examples/synthesis/continuous/house.obj "$tmp/g/"
-printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("house.obj", 1, 4, 8, "H");\nH ~> Comp("f"){ vertical: W | aslant: R };\nW ~> I("cube");\nR ~> I("cube");\n' >"$tmp/g/one.fgsg"
+cp examples/synthesis/continuous/houses.obj "$tmp/g/"
+printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("houses.obj", 1, 4, 8, "H");\nH ~> Comp("f"){ vertical: W | aslant: R };\nW ~> I("cube");\nR ~> I("cube");\n' >"$tmp/g/one.fgsg"
 expect 1 "R012.*at least 2 plane spacings" -- "$fgsg" run "$tmp/g/one.fgsg" -o "$tmp/g/one.glb"
-printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("house.obj", 8, 4, 8, "Hose");\nH ~> I("cube");\n' >"$tmp/g/typo.fgsg"
+printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("houses.obj", 8, 4, 8, "Hose");\nH ~> I("cube");\n' >"$tmp/g/typo.fgsg"
 expect 1 "typo.fgsg:2:.*E064.*'Hose' is no symbol of this grammar" -- "$fgsg" check "$tmp/g/typo.fgsg"
-printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("house.obj", 8, 4, 8, "H");\nH ~> Comp("f"){ vertical: W | aslant: R };\nW ~> I("cube");\nR ~> I("cube");\n' >"$tmp/g/ok.fgsg"
+printf 'axiom: S(8, 4, 8) A;\nA ~> Synthesize("houses.obj", 8, 4, 8, "H");\nH ~> Comp("f"){ vertical: W | aslant: R };\nW ~> I("cube");\nR ~> I("cube");\n' >"$tmp/g/ok.fgsg"
 "$fgsg" run "$tmp/g/ok.fgsg" -o "$tmp/g/ok.glb" --stats >"$tmp/g/stats" 2>"$tmp/err" || { cat "$tmp/err" >&2; fail "a grammar synthesizing houses failed"; }
 grep -qE "^instances [1-9]" "$tmp/g/stats" || fail "a grammar synthesizing houses placed nothing"
 echo "ok: continuous synthesis ($runs example runs)"

@@ -4,7 +4,7 @@
 // on a set of parallel planes per example normal.
 //
 //   ExampleSolid ex;  std::string err;
-//   if (!loadExampleSolid("house.obj", ex, err)) ...;
+//   if (!loadExampleSolid("houses.obj", ex, err)) ...;
 //   ContinuousOptions o;  o.size = {40, 40, 12};  o.spacing = 1;  o.seed = 7;
 //   ContinuousResult r = synthesizeContinuous(ex, o);
 //   if (!r.ok) print(r.error);   else writeMesh(r.mesh, "village.glb", err);

@@ -34,7 +34,7 @@ io::MeshFileContent box(double a, double b, double c) {
                   {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}});
 }
 
-// The gable house of examples/synthesis/continuous/house.obj (y up, 45-degree roof).
+// The gable house of examples/synthesis/continuous/houses.obj (y up, 45-degree roof).
 io::MeshFileContent house() {
   return polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}, {2, 1, 2}, {1, 2, 2}, {0, 1, 2}},
                   {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}, {0, 1, 6, 5}, {1, 2, 7, 6}, {0, 5, 9, 4}, {2, 3, 8, 7}, {4, 9, 8, 3}});
