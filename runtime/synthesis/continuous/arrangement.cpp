@@ -1,6 +1,5 @@
 #include "runtime/synthesis/continuous/arrangement.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -235,10 +234,15 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
     }
   // Each vertex's edges along +line on their own (in parallel: the search is most of the
   // build); each edge is then also its far end's edge along -line.
-  std::vector<std::vector<std::pair<int32_t, int32_t>>> edgesOf(n);  // (to, signed line)
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const tbb::blocked_range<size_t>& range) {
+  struct Forward {
+    int32_t from, to, line;
+  };
+  constexpr size_t kChunk = 2048;  // vertices per chunk; chunks in order keep edges in vertex order
+  std::vector<std::vector<Forward>> chunks((n + kChunk - 1) / kChunk);
+  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t chunk) {
     std::vector<int32_t> through;
-    for (size_t v = range.begin(); v != range.end(); ++v) {
+    std::vector<Forward>& found = chunks[chunk];
+    for (size_t v = chunk * kChunk; v < std::min(n, (chunk + 1) * kChunk); ++v) {
       through.clear();
       const uint32_t P = A.planes[v];
       for (uint32_t a = P; a; a &= a - 1)
@@ -274,26 +278,32 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
           if (!inBox(k.n, k.d)) continue;
           const int32_t to = index.find(k);
           if (to < 0) continue;  // cannot happen: a crossing of two planes and a third
-          edgesOf[v].push_back({to, line + 1});
+          found.push_back({int32_t(v), to, line + 1});
         }
       }
     }
   });
-  const std::vector<size_t> forward = [&] {
-    std::vector<size_t> f(n);
-    for (size_t v = 0; v < n; ++v) f[v] = edgesOf[v].size();
-    return f;
-  }();
-  for (size_t v = 0; v < n; ++v)
-    for (size_t i = 0; i < forward[v]; ++i) edgesOf[size_t(edgesOf[v][i].first)].push_back({int32_t(v), -edgesOf[v][i].second});
+  // CSR: each vertex's edges along +line (in the order found), then those arriving along
+  // -line (by their start).
+  std::vector<uint32_t> count(n + 1, 0);
+  for (const auto& chunk : chunks)
+    for (const Forward& f : chunk) ++count[size_t(f.from)], ++count[size_t(f.to)];
   A.edgeStart.assign(n + 1, 0);
-  for (size_t v = 0; v < n; ++v) A.edgeStart[v + 1] = A.edgeStart[v] + uint32_t(edgesOf[v].size());
+  for (size_t v = 0; v < n; ++v) A.edgeStart[v + 1] = A.edgeStart[v] + count[v];
   A.edgeTo.resize(A.edgeStart[n]);
   A.edgeLine.resize(A.edgeStart[n]);
-  for (size_t v = 0; v < n; ++v)
-    for (size_t i = 0; i < edgesOf[v].size(); ++i) {
-      A.edgeTo[A.edgeStart[v] + i] = edgesOf[v][i].first;
-      A.edgeLine[A.edgeStart[v] + i] = edgesOf[v][i].second;
+  std::vector<uint32_t> fill(A.edgeStart.begin(), A.edgeStart.end() - 1);
+  for (const auto& chunk : chunks)
+    for (const Forward& f : chunk) {
+      const uint32_t k = fill[size_t(f.from)]++;
+      A.edgeTo[k] = f.to;
+      A.edgeLine[k] = f.line;
+    }
+  for (const auto& chunk : chunks)
+    for (const Forward& f : chunk) {
+      const uint32_t k = fill[size_t(f.to)]++;
+      A.edgeTo[k] = f.from;
+      A.edgeLine[k] = -f.line;
     }
   return true;
 }
