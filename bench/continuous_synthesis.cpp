@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
       {"arches", "arches.obj", {30, 12, 24}, {true, false, true}, false, 0.9, {{{0, 1, 0}, 4}, {{0, 0, 1}, 2}}, {}, 0, 20, 1002, 0.5},
       {"pentagons", "pentagons.obj", {16, 14, 16}, {true, false, true}, true, 0.7, {}, {}, 0, 33, 2004, 1.1},
       {"roads", "roads.obj", {16, 2, 16}, {true, false, true}, true, 0.5, {},
-       {{{1, 2, 0}, 2}, {{-1, 2, 0}, 2}, {{0, 2, 1}, 2}, {{0, 2, -1}, 2}}, 0, 126, 6888, 0.2},
+       {{{1, 2, 0}, 4}, {{-1, 2, 0}, 4}, {{0, 2, 1}, 4}, {{0, 2, -1}, 4}}, 0, 126, 6888, 0.2},
       // Grown from one seed (its header) only up to about 30 x 30: larger boxes contradict.
       {"plumbing", "pipes.obj", {16, 16, 2}, {true, true, false}, false, 0.5, {}, {}, 0, 282, 7422, 0.8},
   };

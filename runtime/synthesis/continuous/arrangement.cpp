@@ -1,6 +1,7 @@
 #include "runtime/synthesis/continuous/arrangement.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -194,12 +195,19 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   // the hash table.
   // Doubles order them exactly: distinct coordinates num / den (den < 2^20, |num| < 2^40)
   // differ by far more than a double's rounding.
-  std::vector<std::array<double, 3>> key(A.den.size());
-  for (size_t v = 0; v < A.den.size(); ++v)
-    for (int c = 0; c < 3; ++c) key[v][size_t(2 - c)] = double(A.num[v][size_t(c)]) / double(A.den[v]);
+  struct Keyed {
+    double z, y, x;
+    int32_t index;
+    bool operator<(const Keyed& o) const { return z != o.z ? z < o.z : y != o.y ? y < o.y : x < o.x; }
+  };
+  std::vector<Keyed> keyed(A.den.size());
+  for (size_t v = 0; v < A.den.size(); ++v) {
+    const double d = double(A.den[v]);
+    keyed[v] = {double(A.num[v][2]) / d, double(A.num[v][1]) / d, double(A.num[v][0]) / d, int32_t(v)};
+  }
+  tbb::parallel_sort(keyed.begin(), keyed.end());
   std::vector<int32_t> order(A.den.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key[size_t(a)] < key[size_t(b)]; });
+  for (size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].index;
   VertexIndex index;
   index.reserve(order.size());
   {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include <numeric>
 #include <tuple>
 
@@ -71,43 +70,55 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
     out.facePart.push_back(part);
   };
   std::vector<size_t> faceUp(faces.size());  // union-find over faces, per plane's members
+  struct Edge {
+    int32_t from, to;
+    size_t face;
+    bool operator<(const Edge& o) const { return from != o.from ? from < o.from : to < o.to; }
+  };
+  std::vector<Edge> edges, boundary;
+  std::vector<std::pair<size_t, size_t>> byRegion;  // (region root, index into boundary)
+  std::vector<uint8_t> whole(faces.size(), 0);      // per region root: merged into one face
   for (const auto& [plane, members] : byPlane) {
-    // Directed edges of the region's faces; an edge met both ways is inside the region.
-    std::map<std::pair<int32_t, int32_t>, size_t> edges;
+    // Directed edges of the region's faces, sorted; an edge met both ways is inside.
+    edges.clear();
     for (size_t i : members) {
       const auto& c = faces[i].corners;
-      for (size_t k = 0; k < c.size(); ++k) edges[{c[k], c[(k + 1) % c.size()]}] = i;
+      for (size_t k = 0; k < c.size(); ++k) edges.push_back({c[k], c[(k + 1) % c.size()], i});
     }
-    std::map<int32_t, std::vector<int32_t>> next;  // boundary edges by start
+    std::sort(edges.begin(), edges.end());
     for (size_t i : members) faceUp[i] = i;
     auto findFace = [&](size_t a) {
       while (faceUp[a] != a) a = faceUp[a] = faceUp[faceUp[a]];
       return a;
     };
-    for (const auto& [e, i] : edges) {
-      auto twin = edges.find({e.second, e.first});
-      if (twin == edges.end()) next[e.first].push_back(e.second);
-      else faceUp[findFace(i)] = findFace(twin->second);
+    boundary.clear();
+    for (const Edge& e : edges) {
+      const auto twin = std::lower_bound(edges.begin(), edges.end(), Edge{e.to, e.from, 0});
+      if (twin != edges.end() && twin->from == e.to && twin->to == e.from) faceUp[findFace(e.face)] = findFace(twin->face);
+      else boundary.push_back(e);
     }
     // Trace each region's boundary; a region whose boundary is not one simple loop
     // (a hole, corners touching) keeps its arrangement faces.
-    std::map<size_t, std::vector<std::pair<int32_t, int32_t>>> boundaryOf;
-    for (const auto& [from, tos] : next)
-      for (int32_t to : tos) boundaryOf[findFace(edges[{from, to}])].push_back({from, to});
-    std::set<size_t> whole;
-    for (const auto& [root, bedges] : boundaryOf) {
-      std::map<int32_t, int32_t> succ;
+    byRegion.clear();
+    for (size_t k = 0; k < boundary.size(); ++k) byRegion.push_back({findFace(boundary[k].face), k});
+    std::sort(byRegion.begin(), byRegion.end());
+    std::vector<Edge> bedges;
+    for (size_t r = 0; r < byRegion.size();) {
+      const size_t root = byRegion[r].first;
+      bedges.clear();
+      for (; r < byRegion.size() && byRegion[r].first == root; ++r) bedges.push_back(boundary[byRegion[r].second]);
+      std::sort(bedges.begin(), bedges.end());  // by start: one successor each when simple
       bool simple = true;
-      for (const auto& [a, b] : bedges) simple &= succ.emplace(a, b).second;
+      for (size_t k = 1; k < bedges.size(); ++k) simple &= bedges[k].from != bedges[k - 1].from;
       std::vector<int32_t> loop;
       if (simple) {
-        int32_t at = bedges[0].first;
+        int32_t at = bedges[0].from;
         do {
           loop.push_back(at);
-          auto it = succ.find(at);
-          if (it == succ.end()) { simple = false; break; }
-          at = it->second;
-        } while (at != bedges[0].first && loop.size() <= bedges.size());
+          const auto it = std::lower_bound(bedges.begin(), bedges.end(), Edge{at, INT32_MIN, 0});
+          if (it == bedges.end() || it->from != at) { simple = false; break; }
+          at = it->to;
+        } while (at != bedges[0].from && loop.size() <= bedges.size());
         simple &= loop.size() == bedges.size();
       }
       if (!simple) continue;
@@ -123,10 +134,10 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
         if (!isZero(canonicalDirection(cross(canonicalDirection(u), canonicalDirection(w))))) corners.push_back(b);
       }
       emit(corners, partOf[find(loop[0])]);
-      whole.insert(root);
+      whole[root] = 1;
     }
     for (size_t i : members)
-      if (!whole.count(findFace(i))) emit(faces[i].corners, partOf[find(faces[i].corners[0])]);
+      if (!whole[findFace(i)]) emit(faces[i].corners, partOf[find(faces[i].corners[0])]);
   }
 }
 
