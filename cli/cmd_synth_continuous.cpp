@@ -24,7 +24,7 @@ namespace {
 using namespace fgsg::rt::synthesis::continuous;
 
 const char* const kUsage =
-    "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl --size X Y Z [--spacing S] [--seed N] [--block N]\n"
+    "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl|.glb --size X Y Z [--spacing S] [--seed N] [--block N]\n"
     "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--floating] [--connect N]\n"
     "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";

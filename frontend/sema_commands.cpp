@@ -210,7 +210,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
         if (fileOk && !rt::synthesis::continuous::isPolygonalExampleFile(file))
           diags_.error("E064", item.args[4]->range,
                        "a symbol for the synthesized parts needs a polygonal example (continuous synthesis: "
-                       ".obj, .ply, .off or .stl), not \"" + file + "\"");
+                       ".obj, .ply, .off, .stl, .glb or .gltf), not \"" + file + "\"");
         else if (stringOk && res_.findSymbol(part) < 0)
           diags_.error("E064", item.args[4]->range, "'" + part + "' is no symbol of this grammar: " + cmd.signature);
       }

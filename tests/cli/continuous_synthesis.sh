@@ -47,6 +47,13 @@ for example in examples/synthesis/continuous/*.obj; do
 done
 [ $runs -ge 5 ] || fail "only $runs example runs (each example's header names its command)"
 
+# A glTF example (read through assimp; triangles) has the same figures as the OBJ.
+"$fgsg" synth examples/synthesis/continuous/houses.obj --size 8 8 4 --seed 1 -o "$tmp/one_house.glb" 2>/dev/null ||
+  fail "no glb house"
+"$fgsg" synth "$tmp/one_house.glb" --size 20 20 6 --stats -o "$tmp/from_glb.obj" >"$tmp/glb.json" 2>"$tmp/err" ||
+  { cat "$tmp/err" >&2; fail "a glb example failed"; }
+grep -q '"labels":34,' "$tmp/glb.json" || { cat "$tmp/glb.json" >&2; fail "the glb house does not have the 34 figures of houses.obj"; }
+
 # Unusable examples and options: located messages, exit 1 or 2.
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\n' >"$tmp/open.obj"
 expect 1 "open.obj: error\[E750\]: the solid is not closed: the edge from \(0.000, 0.000, 0.000\) to \(0.000, 1.000, 0.000\) of face 1 has no face on its other side" -- "$fgsg" synth "$tmp/open.obj" --size 4 4 4

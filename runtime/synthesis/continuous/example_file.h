@@ -1,4 +1,5 @@
-// Which example files continuous synthesis reads: meshes (.obj .ply .off .stl, any case).
+// Which example files continuous synthesis reads: meshes (.obj .ply .off .stl .glb
+// .gltf, any case).
 // Header-only: the checker (frontend), the loader (backend) and fgsg synth all ask.
 #pragma once
 
@@ -12,7 +13,7 @@ inline bool isPolygonalExampleFile(const std::string& path) {
   if (dot == std::string::npos) return false;
   std::string ext = path.substr(dot);
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
+  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl" || ext == ".glb" || ext == ".gltf";
 }
 
 }  // namespace fgsg::rt::synthesis::continuous

@@ -1,6 +1,10 @@
 #include "runtime/synthesis/continuous/example_solid.h"
 
+#include "runtime/io/read_input.h"
+#include "runtime/surface/read_textured_mesh.h"
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -171,7 +175,25 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
 
 bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& error) {
   io::MeshFileContent mesh;
-  if (!io::readMeshFile(path, mesh, error)) return false;
+  std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".glb" || ext == ".gltf") {
+    // glTF through assimp (as textured surfaces are read): triangles, corners welded by
+    // makeExampleSolid, so coplanar triangles act as one face.
+    std::string bytes;
+    surface::SurfaceMesh read;
+    bool polygonal = false;
+    if (!io::readInputFile(path, "a mesh file", bytes, error) ||
+        !surface::readTexturedMesh(path, bytes, read, polygonal, error))
+      return false;
+    for (const auto& v : read.vertices) mesh.vertices.push_back({v.x(), v.y(), v.z()});
+    for (const auto& f : read.faces) {
+      mesh.corners.insert(mesh.corners.end(), f.begin(), f.end());
+      mesh.polygonStart.push_back(mesh.corners.size());
+    }
+  } else if (!io::readMeshFile(path, mesh, error)) {
+    return false;
+  }
   return makeExampleSolid(mesh, path, out, error);
 }
 
