@@ -104,28 +104,29 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   if (!(o.perturb >= 0) || !std::isfinite(o.perturb)) { error = "the perturbation must be 0 or more"; return false; }
   std::vector<int64_t> step(ex.dirs.size(), 1);
   uint32_t fixedDirs = 0;  // directions no label may cross (a width of one spacing too)
-  for (const FixedWidth& f : o.planeStep) {
+  // A plane step or fixed width: its direction's index, its step set; -1 with `error`.
+  auto setStep = [&](const FixedWidth& f, const char* what) -> int {
     const IVec3 a = canonicalDirection(f.normal);
-    auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);
-    if (isZero(a) || it == ex.dirs.begin() + ex.faceDirections) {
-      error = "a plane step names the direction (" + std::to_string(f.normal[0]) + ", " + std::to_string(f.normal[1]) + ", " +
-              std::to_string(f.normal[2]) + "), which no face of the example has";
-      return false;
+    const auto faces = ex.dirs.begin() + ex.faceDirections;
+    const auto it = std::find(ex.dirs.begin(), faces, a);
+    if (isZero(a) || it == faces) {
+      error = std::string("a ") + what + " names the direction (" + std::to_string(f.normal[0]) + ", " +
+              std::to_string(f.normal[1]) + ", " + std::to_string(f.normal[2]) + "), which no face of the example has";
+      return -1;
     }
-    if (f.planes < 1 || f.planes > 1000) { error = "a plane step is 1 to 1000 plane spacings"; return false; }
+    if (f.planes < 1 || f.planes > 1000) {
+      error = std::string("a ") + what + " is 1 to 1000 plane spacings";
+      return -1;
+    }
     step[size_t(it - ex.dirs.begin())] = f.planes;
-  }
+    return int(it - ex.dirs.begin());
+  };
+  for (const FixedWidth& f : o.planeStep)
+    if (setStep(f, "plane step") < 0) return false;
   for (const FixedWidth& f : o.fixedWidth) {
-    const IVec3 a = canonicalDirection(f.normal);
-    auto it = std::find(ex.dirs.begin(), ex.dirs.begin() + ex.faceDirections, a);
-    if (isZero(a) || it == ex.dirs.begin() + ex.faceDirections) {
-      error = "a fixed width names the direction (" + std::to_string(f.normal[0]) + ", " + std::to_string(f.normal[1]) + ", " +
-              std::to_string(f.normal[2]) + "), which no face of the example has";
-      return false;
-    }
-    if (f.planes < 1 || f.planes > 1000) { error = "a fixed width is 1 to 1000 plane spacings"; return false; }
-    step[size_t(it - ex.dirs.begin())] = f.planes;
-    fixedDirs |= 1u << (it - ex.dirs.begin());
+    const int i = setStep(f, "fixed width");
+    if (i < 0) return false;
+    fixedDirs |= 1u << i;
   }
   std::array<int64_t, 3> box{};
   for (int c = 0; c < 3; ++c) {

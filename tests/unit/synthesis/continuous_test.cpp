@@ -34,6 +34,14 @@ io::MeshFileContent box(double a, double b, double c) {
                   {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}});
 }
 
+// An L-shaped prism (one reflex edge along z at x = y = 1).
+io::MeshFileContent lShape() {
+  return polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
+                   {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}},
+                  {{0, 5, 4, 3, 2, 1}, {6, 7, 8, 9, 10, 11}, {0, 1, 7, 6}, {1, 2, 8, 7}, {2, 3, 9, 8},
+                   {3, 4, 10, 9}, {4, 5, 11, 10}, {5, 0, 6, 11}});
+}
+
 // The gable house of examples/synthesis/continuous/houses.obj (y up, 45-degree roof).
 io::MeshFileContent house() {
   return polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}, {2, 1, 2}, {1, 2, 2}, {0, 1, 2}},
@@ -125,10 +133,7 @@ TEST_CASE("continuous: a tetrahedron has the 16 labels of the thesis (4.5.3)", "
 TEST_CASE("continuous: a box has 28 labels and a concave L-shape adds reflex ones", "[continuous]") {
   CHECK(exampleLabels(solid(box(2, 1, 1))).labels.size() == 28);
   // An L-shaped prism: one reflex edge (three octant quarters inside) and its two ends.
-  const auto L = polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
-                           {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}},
-                          {{0, 5, 4, 3, 2, 1}, {6, 7, 8, 9, 10, 11}, {0, 1, 7, 6}, {1, 2, 8, 7}, {2, 3, 9, 8},
-                           {3, 4, 10, 9}, {4, 5, 11, 10}, {5, 0, 6, 11}});
+  const auto L = lShape();
   const LabelCatalog c = exampleLabels(solid(L));
   int reflexEdges = 0;
   for (const Label& l : c.labels)
@@ -309,10 +314,7 @@ TEST_CASE("continuous: whole faces are the example's faces, part by part", "[con
 
 TEST_CASE("continuous: growing from seeds gives connected parts (4.6.2)", "[continuous]") {
   // An L-shaped example may join boxes into one solid; one seed grows one part.
-  const auto L = polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
-                           {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}},
-                          {{0, 5, 4, 3, 2, 1}, {6, 7, 8, 9, 10, 11}, {0, 1, 7, 6}, {1, 2, 8, 7}, {2, 3, 9, 8},
-                           {3, 4, 10, 9}, {4, 5, 11, 10}, {5, 0, 6, 11}});
+  const auto L = lShape();
   ContinuousOptions o;
   o.size = {16, 16, 4};
   o.fill = 0.8;
