@@ -2,6 +2,7 @@
 
 #include "backend/interp/interpreter.h"
 #include "backend/native/code_loader.h"
+#include "runtime/out_of_resources.h"
 
 #include <memory>
 #include <optional>
@@ -28,9 +29,14 @@ rt::DeriveResult derive(Engine engine, const ir::Module& module, const std::stri
     code.emplace(loader->load(module, source));
   } catch (const std::exception& e) {
     rt::DeriveResult failed;
-    failed.messages.push_back({true, "R900", 0, 0,
-                               std::string("the JIT cannot compile this grammar: ") + e.what() +
-                                   " (--engine=interp runs it without compiling)"});
+    if (const std::string why = rt::outOfResources(e); !why.empty())  // as deriving reports it
+      failed.messages.push_back({true, "R020", 0, 0,
+                                 "out of memory while compiling (" + why +
+                                     "): the machine gives this process too little memory; nothing is written"});
+    else
+      failed.messages.push_back({true, "R900", 0, 0,
+                                 std::string("the JIT cannot compile this grammar: ") + e.what() +
+                                     " (--engine=interp runs it without compiling)"});
     return failed;
   }
   if (report) {

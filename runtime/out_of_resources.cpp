@@ -1,5 +1,7 @@
 #include "runtime/out_of_resources.h"
 
+#include "runtime/plugins/plugin_library.h"
+
 #include <cerrno>
 #include <cstring>
 #include <new>
@@ -16,6 +18,8 @@ std::string outOfResources(const std::exception& e) {
       return std::string("cannot start a thread: ") + s->what();
     return "";
   }
+  if (const auto* p = dynamic_cast<const PluginError*>(&e); p && p->outOfMemory)
+    return std::string("cannot load a part of fgsg: ") + e.what();
   static constexpr const char kTbbThread[] = "pthread_create has failed";
   if (dynamic_cast<const std::runtime_error*>(&e) && std::strncmp(e.what(), kTbbThread, sizeof kTbbThread - 1) == 0)
     return std::string("cannot start a worker thread: ") + e.what();

@@ -11,7 +11,7 @@ namespace fgsg::rt {
 // The system's own words for what ran out, or "" when `e` is something else: std::bad_alloc;
 // a std::system_error for ENOMEM or EAGAIN (std::thread); TBB's std::runtime_error
 // "pthread_create has failed: ..." when it cannot start a worker (each thread reserves its
-// stack, so a tight `ulimit -v` fails here first).
+// stack, so a tight `ulimit -v` fails here first); a PluginError the loader could not map.
 std::string outOfResources(const std::exception& e);
 
 }  // namespace fgsg::rt

@@ -40,20 +40,13 @@ rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
                                "out of memory while deriving: the grammar needs more memory than this "
                                "machine gives it (--max-memory stops a derivation earlier and keeps its "
                                "shapes); nothing is written"});
-  } catch (const rt::PluginError& e) {
-    // The loader could not map the library: memory ran out, not a broken installation.
-    const std::string what = e.what();
-    if (what.find("failed to map segment") != std::string::npos || what.find("Cannot allocate memory") != std::string::npos)
-      failed.messages.push_back({true, "R020", 0, 0,
-                                 "out of memory while loading a part of fgsg (" + what +
-                                     "): the machine gives this process too little memory; nothing is written"});
-    else
-      failed.messages.push_back({true, "R900", 0, 0, "this grammar needs a part of fgsg that cannot be loaded: " + what});
   } catch (const std::exception& e) {
     if (const std::string why = rt::outOfResources(e); !why.empty())
       failed.messages.push_back({true, "R020", 0, 0,
                                  "out of memory while deriving (" + why +
                                      "): the machine gives this process too little memory; nothing is written"});
+    else if (dynamic_cast<const rt::PluginError*>(&e))
+      failed.messages.push_back({true, "R900", 0, 0, std::string("this grammar needs a part of fgsg that cannot be loaded: ") + e.what()});
     else
       failed.messages.push_back({true, "R900", 0, 0, std::string("internal error while deriving: ") + e.what()});
   } catch (...) {

@@ -44,7 +44,13 @@ void* openPlugin(const std::string& fileName, const char* entry) {
   const std::string file = dir + "/" + fileName;
   // Never closed: the plugin's static objects and threads may outlive any one use of it.
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw PluginError(std::string("cannot load ") + file + ": " + dlerror());
+  if (!handle) {
+    // dlopen says why only in words; mapping failures mean the address space ran out.
+    const std::string why = dlerror();
+    const bool noMemory = why.find("failed to map segment") != std::string::npos ||
+                          why.find("Cannot allocate memory") != std::string::npos;
+    throw PluginError("cannot load " + file + ": " + why, noMemory);
+  }
   void* fn = dlsym(handle, entry);
   if (!fn) throw PluginError(file + " is not a plugin of this fgsg (it lacks " + entry + ")");
   return fn;

@@ -17,9 +17,11 @@ namespace fgsg::rt {
 // install's). Empty, with a message in `error`, when the library is not there.
 std::string findLibraryDir(const std::string& fileName, std::string& error);
 
-// A plugin that cannot be used: fgsg is not installed whole (or FGSG_LIBDIR is wrong).
+// A plugin that cannot be used: fgsg is not installed whole (or FGSG_LIBDIR is wrong),
+// or — outOfMemory — the loader could not map it for lack of address space.
 struct PluginError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit PluginError(const std::string& what, bool noMemory = false) : std::runtime_error(what), outOfMemory(noMemory) {}
+  bool outOfMemory = false;
 };
 
 // Opens lib/`fileName` (never closed) and returns its extern "C" function `entry`, or
