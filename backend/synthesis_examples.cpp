@@ -1,7 +1,6 @@
 #include "backend/synthesis_examples.h"
 
 #include "runtime/io/find_file.h"
-#include "runtime/synthesis/continuous/example_file.h"
 
 #include <algorithm>
 #include <functional>
@@ -34,8 +33,6 @@ bool loadSynthesisExample(const std::string& name, const std::vector<std::string
   message = "Synthesize: cannot use the example \"" + name + "\":\n" + details;
   return false;
 }
-
-bool isContinuousExample(const std::string& name) { return rt::synthesis::continuous::isPolygonalExampleFile(name); }
 
 bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
                            rt::synthesis::continuous::ExampleSolid& out, std::string& message) {

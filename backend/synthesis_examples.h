@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ir/ir.h"
+#include "runtime/synthesis/continuous/example_file.h"
 #include "runtime/synthesis/continuous/example_solid.h"
 #include "runtime/synthesis/example.h"
 
@@ -25,9 +26,8 @@ std::vector<SynthesizeCall> synthesizeCalls(const ir::Module& m);
 bool loadSynthesisExample(const std::string& name, const std::vector<std::string>& dirs,
                           rt::synthesis::Example& out, std::string& message);
 
-// A polygonal example (.obj .ply .off .stl): continuous synthesis (Merrell ch. 4).
-bool isContinuousExample(const std::string& name);
-// Loads one as loadSynthesisExample does the others.
+// Loads a polygonal example (continuous synthesis, Merrell ch. 4; which files are:
+// rt::synthesis::continuous::isPolygonalExampleFile) as loadSynthesisExample does the others.
 bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
                            rt::synthesis::continuous::ExampleSolid& out, std::string& message);
 

@@ -17,7 +17,7 @@ void checkDataFiles(const ir::Module& module, const std::string& grammarPath, fr
     if (!seen.insert(call.example).second) continue;
     std::string message;
     bool ok;
-    if (backend::isContinuousExample(call.example)) {
+    if (rt::synthesis::continuous::isPolygonalExampleFile(call.example)) {
       rt::synthesis::continuous::ExampleSolid solid;
       ok = backend::loadContinuousExample(call.example, dirs, solid, message);
     } else {

@@ -10,6 +10,7 @@
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
 #include "runtime/synthesis/checker.h"
+#include "runtime/synthesis/continuous/example_file.h"
 #include "runtime/synthesis/synthesis.h"
 
 #include <charconv>
@@ -72,7 +73,7 @@ int synthCommand(const Args& args) {
   for (size_t i = 0; i < args.size(); ++i) {
     const bool value = i > 0 && (args[i - 1] == "-o" || args[i - 1] == "--output" || args[i - 1] == "--preview" ||
                                  args[i - 1] == "--labels" || args[i - 1] == "--mask");
-    if (!value && args[i].rfind("-", 0) != 0 && isContinuousExample(args[i])) return continuousSynthCommand(args);
+    if (!value && args[i].rfind("-", 0) != 0 && rt::synthesis::continuous::isPolygonalExampleFile(args[i])) return continuousSynthCommand(args);
   }
   std::string example, labelsOut, meshOut, previewOut, maskPath;
   SynthesisOptions o;

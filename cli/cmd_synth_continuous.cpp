@@ -12,7 +12,6 @@
 #include "runtime/render/preview.h"
 #include "runtime/synthesis/image_reader.h"
 #include "runtime/synthesis/continuous/continuous.h"
-#include "runtime/synthesis/continuous/example_file.h"
 
 #include <cstdio>
 #include <string>
@@ -46,8 +45,6 @@ bool parseFixedWidth(const std::string& s, FixedWidth& f) {
 }
 
 }  // namespace
-
-bool isContinuousExample(const std::string& path) { return isPolygonalExampleFile(path); }
 
 const char* continuousSynthUsage() { return kUsage; }
 

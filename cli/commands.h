@@ -16,7 +16,6 @@ int synthCommand(const Args& args);  // fgsg synth EXAMPLE --size X Y Z ...
 // fgsg synth EXAMPLE.obj ...: continuous synthesis, when the example is a mesh file.
 int continuousSynthCommand(const Args& args);
 const char* continuousSynthUsage();
-bool isContinuousExample(const std::string& path);
 int replCommand(const Args& args);   // fgsg repl (interactive, or a script on stdin)
 int compileCommand(const Args& args);  // fgsg compile FILE -o libNAME.so (C API library)
 int atlasCommand(const Args& args);    // fgsg atlas MESH (on-mesh marching's atlas)

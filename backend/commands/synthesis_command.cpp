@@ -19,7 +19,7 @@ void SynthesisCommand::apply(const ir::Op& op, const double* a, uint32_t, State&
       throw DeriveError{op.loc, "R012", "Synthesize: grid sizes must be whole numbers from 1 to 4096"};
     n[k] = static_cast<int>(v);
   }
-  if (isContinuousExample(name)) return applyContinuous(op, n, st, ex);
+  if (rt::synthesis::continuous::isPolygonalExampleFile(name)) return applyContinuous(op, n, st, ex);
   const rt::synthesis::Example& example = loadExample(name, op.loc);
   rt::synthesis::SynthesisOptions so;
   so.size = {n[0], n[1], n[2]};

@@ -34,12 +34,12 @@ struct SurfaceFace {
   int64_t offsetNum = 0, offsetDen = 1;
 };
 
-// Merges touching faces of one plane and side into whole faces (see the header).
-void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, double spacing, BoundarySurface& out) {
-  // Connected parts of the solid: faces sharing a corner.
+// Connected parts of the solid (faces sharing a corner), numbered in face order: per
+// arrangement vertex its part, -1 for a vertex on no face.
+std::vector<int32_t> partsOf(const Arrangement& A, const std::vector<SurfaceFace>& faces, uint32_t& count) {
   std::vector<int32_t> up(A.vertexCount(), -1);
   auto find = [&](int32_t a) {  // with path halving: one part can hold most faces
-    while (up[size_t(a)] >= 0 && up[size_t(a)] != a) a = up[size_t(a)] = up[size_t(up[size_t(a)])];
+    while (up[size_t(a)] != a) a = up[size_t(a)] = up[size_t(up[size_t(a)])];
     return a;
   };
   for (const auto& f : faces)
@@ -50,10 +50,20 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
       const int32_t a = find(f.corners[0]), b = find(f.corners[k]);
       if (a != b) up[size_t(b)] = a;
     }
-  std::map<int32_t, uint32_t> partOf;
-  for (const auto& f : faces) partOf.emplace(find(f.corners[0]), uint32_t(partOf.size()));
-  out.parts = uint32_t(partOf.size());
+  std::vector<int32_t> number(A.vertexCount(), -1), part(A.vertexCount(), -1);
+  count = 0;
+  for (const auto& f : faces) {
+    int32_t& n = number[size_t(find(f.corners[0]))];
+    if (n < 0) n = int32_t(count++);
+  }
+  for (size_t v = 0; v < A.vertexCount(); ++v)
+    if (up[v] >= 0) part[v] = number[size_t(find(int32_t(v)))];
+  return part;
+}
 
+// Merges touching faces of one plane and side into whole faces (see the header).
+void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, const std::vector<int32_t>& partOf,
+                double spacing, BoundarySurface& out) {
   // Faces of one plane and side that share an edge form a region.
   std::map<std::tuple<int, bool, int64_t, int64_t>, std::vector<size_t>> byPlane;
   for (size_t i = 0; i < faces.size(); ++i)
@@ -133,11 +143,11 @@ void mergeFaces(const Arrangement& A, const std::vector<SurfaceFace>& faces, dou
         }
         if (!isZero(canonicalDirection(cross(canonicalDirection(u), canonicalDirection(w))))) corners.push_back(b);
       }
-      emit(corners, partOf[find(loop[0])]);
+      emit(corners, uint32_t(partOf[size_t(loop[0])]));
       whole[root] = 1;
     }
     for (size_t i : members)
-      if (!whole[findFace(i)]) emit(faces[i].corners, partOf[find(faces[i].corners[0])]);
+      if (!whole[findFace(i)]) emit(faces[i].corners, uint32_t(partOf[size_t(faces[i].corners[0])]));
   }
 }
 
@@ -156,11 +166,13 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
     const IVec3 d = A.edgeDirection(e);
     return std::atan2(dotd(d, frames[size_t(l)].b2), dotd(d, frames[size_t(l)].b1));
   };
+  std::vector<int32_t> source;  // per mesh vertex: an arrangement vertex of its part
   auto vertexOut = [&](int32_t v) -> uint32_t {
     if (meshIndex[size_t(v)] < 0) {
       const DVec3 p = A.position(size_t(v));
       meshIndex[size_t(v)] = int32_t(mesh.vertexCount());
       for (double c : p) mesh.positions.push_back(float(c * spacing));
+      source.push_back(v);
     }
     return uint32_t(meshIndex[size_t(v)]);
   };
@@ -247,6 +259,7 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
         }
         const uint32_t ci = uint32_t(mesh.vertexCount());
         for (double c0 : centre) mesh.positions.push_back(float(c0 * spacing));
+        source.push_back(poly[0]);
         for (size_t k = 0; k < poly.size(); ++k) {
           mesh.indices.push_back(ci);
           mesh.indices.push_back(vertexOut(poly[k]));
@@ -255,7 +268,9 @@ BoundarySurface boundarySurface(const Arrangement& A, const std::vector<Label>& 
       }
     }
   }
-  mergeFaces(A, faces, spacing, out);
+  const std::vector<int32_t> partOf = partsOf(A, faces, out.parts);
+  for (int32_t v : source) out.vertexPart.push_back(uint32_t(partOf[size_t(v)]));
+  mergeFaces(A, faces, partOf, spacing, out);
   return out;
 }
 

@@ -22,6 +22,7 @@ struct BoundarySurface {
   // connected part of the solid it bounds.
   std::vector<std::vector<DVec3>> faces;
   std::vector<uint32_t> facePart;
+  std::vector<uint32_t> vertexPart;  // per vertex of `mesh`
   uint32_t parts = 0;
 };
 

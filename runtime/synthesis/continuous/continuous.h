@@ -94,7 +94,6 @@ struct ContinuousResult {
   // face, which connected part of the solid it bounds (0 .. stats.parts - 1).
   std::vector<std::vector<std::array<double, 3>>> faces;
   std::vector<uint32_t> facePart;
-  std::vector<int32_t> vertexLabel;  // per arrangement vertex (tests)
   ContinuousStats stats;
 };
 

@@ -518,12 +518,11 @@ ContinuousResult synthesizeContinuous(const ExampleSolid& ex, const ContinuousOp
     R.mesh = std::move(surface.mesh);
     R.faces = std::move(surface.faces);
     R.facePart = std::move(surface.facePart);
-    if (o.perturb > 0) perturbParts(R.mesh, R.faces, o.perturb, o.seed);
+    if (o.perturb > 0) perturbParts(R.mesh, surface.vertexPart, R.faces, R.facePart, surface.parts, o.perturb, o.seed);
     R.stats.arrangementFaces = surface.polygons;
     R.stats.outputPolygons = R.faces.size();
     R.stats.parts = surface.parts;
     R.stats.triangles = R.mesh.triangleCount();
-    R.vertexLabel = std::move(M);
     R.ok = true;
     R.stats.surfaceSeconds = std::chrono::duration<double>(Clock::now() - assigned).count();
   } catch (const std::bad_alloc&) {

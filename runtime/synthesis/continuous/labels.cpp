@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 
 namespace fgsg::rt::synthesis::continuous {
@@ -40,12 +39,6 @@ Label canonicalLabel(uint32_t mask, std::vector<std::pair<uint32_t, bool>> secto
 
 namespace {
 
-std::string at(const DVec3& p) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p[0], p[1], p[2]);
-  return buf;
-}
-
 // The figure of the solid at p with the planes of `mask` through it: each sector tested
 // a small step away from p.
 Label figureAt(const ExampleSolid& s, const DVec3& p, uint32_t mask, double step) {
@@ -61,24 +54,22 @@ Label figureAt(const ExampleSolid& s, const DVec3& p, uint32_t mask, double step
 
 LabelCatalog exampleLabels(const ExampleSolid& s) {
   LabelCatalog c;
-  auto add = [&](const Label& l, const std::string& where) {
-    if (std::find(c.labels.begin(), c.labels.end(), l) != c.labels.end()) return;
-    c.labels.push_back(l);
-    c.foundAt.push_back(where);
+  auto add = [&](const Label& l) {
+    if (std::find(c.labels.begin(), c.labels.end(), l) == c.labels.end()) c.labels.push_back(l);
   };
-  add(Label{0, {}}, "outside");
-  add(Label{0, {0}}, "inside");
+  add(Label{0, {}});   // outside
+  add(Label{0, {0}});  // inside
   // Faces: the half-space behind the outward normal.
   for (size_t f = 0; f < s.polygons.size(); ++f) {
     const uint32_t bit = 1u << s.polygonDirection[f];
-    add(Label{bit, {s.polygonAlong[f] ? 0u : bit}}, "face " + std::to_string(f + 1));
+    add(Label{bit, {s.polygonAlong[f] ? 0u : bit}});
   }
   // The step off a point: well inside its neighbourhood (a tenth of the distance to the
   // nearest other vertex, at most 1e-3 of the example's size).
-  auto stepAt = [&](const DVec3& p, int skipA, int skipB) {
+  auto stepAt = [&](const DVec3& p, int skip) {  // skip: p's own vertex, -1 for none
     double nearest = s.diagonal;
     for (size_t v = 0; v < s.vertices.size(); ++v) {
-      if (int(v) == skipA || int(v) == skipB) continue;
+      if (int(v) == skip) continue;
       const DVec3& q = s.vertices[v];
       nearest = std::min(nearest, std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2])));
     }
@@ -99,10 +90,10 @@ LabelCatalog exampleLabels(const ExampleSolid& s) {
   for (const auto& [e, mask] : edgeMask) {
     const DVec3 &a = s.vertices[size_t(e.first)], &b = s.vertices[size_t(e.second)];
     const DVec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
-    add(figureAt(s, mid, mask, stepAt(mid, -1, -1)), "edge " + at(a) + "-" + at(b));
+    add(figureAt(s, mid, mask, stepAt(mid, -1)));
   }
   for (size_t v = 0; v < s.vertices.size(); ++v)
-    if (vertexMask[v]) add(figureAt(s, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v), -1)), "vertex " + at(s.vertices[v]));
+    if (vertexMask[v]) add(figureAt(s, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v))));
   return c;
 }
 

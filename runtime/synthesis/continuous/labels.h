@@ -31,8 +31,7 @@ struct Label {
 };
 
 struct LabelCatalog {
-  std::vector<Label> labels;          // 0: empty space, 1: solid interior
-  std::vector<std::string> foundAt;   // where the example shows it first ("vertex (1, 0, 2)")
+  std::vector<Label> labels;  // 0: empty space, 1: solid interior
   static constexpr int kEmpty = 0, kFull = 1;
 };
 

@@ -3,29 +3,18 @@
 #include "runtime/synthesis/random.h"
 
 #include <algorithm>
-#include <map>
-#include <numeric>
 
 namespace fgsg::rt::synthesis::continuous {
 
-void perturbParts(Mesh& mesh, std::vector<std::vector<std::array<double, 3>>>& faces, double amount, uint64_t seed) {
+void perturbParts(Mesh& mesh, const std::vector<uint32_t>& vertexPart, std::vector<std::vector<std::array<double, 3>>>& faces,
+                  const std::vector<uint32_t>& facePart, uint32_t parts, double amount, uint64_t seed) {
   const size_t n = mesh.vertexCount();
-  std::vector<uint32_t> up(n);
-  std::iota(up.begin(), up.end(), 0);
-  auto find = [&](uint32_t a) {
-    while (up[a] != a) a = up[a] = up[up[a]];
-    return a;
-  };
-  for (size_t t = 0; t < mesh.triangleCount(); ++t)
-    for (int k = 1; k < 3; ++k) up[find(mesh.indices[3 * t + size_t(k)])] = find(mesh.indices[3 * t]);
-  std::map<uint32_t, size_t> partOf;
-  for (uint32_t v = 0; v < n; ++v) partOf.emplace(find(v), partOf.size());
   struct Box {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   };
-  std::vector<Box> box(partOf.size());
-  for (uint32_t v = 0; v < n; ++v) {
-    Box& b = box[partOf[find(v)]];
+  std::vector<Box> box(parts);
+  for (size_t v = 0; v < n; ++v) {
+    Box& b = box[vertexPart[v]];
     for (int c = 0; c < 2; ++c) {
       const double x = mesh.positions[3 * v + (c == 0 ? 0 : 2)];
       b.lo[c] = std::min(b.lo[c], x);
@@ -53,18 +42,12 @@ void perturbParts(Mesh& mesh, std::vector<std::vector<std::array<double, 3>>>& f
       break;
     }
   }
-  std::map<std::array<float, 3>, size_t> partAt;
-  for (uint32_t v = 0; v < n; ++v) {
-    const size_t p = partOf[find(v)];
-    partAt[{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]}] = p;
-    mesh.positions[3 * v] = float(mesh.positions[3 * v] + move[p][0]);
-    mesh.positions[3 * v + 2] = float(mesh.positions[3 * v + 2] + move[p][1]);
+  for (size_t v = 0; v < n; ++v) {
+    mesh.positions[3 * v] = float(mesh.positions[3 * v] + move[vertexPart[v]][0]);
+    mesh.positions[3 * v + 2] = float(mesh.positions[3 * v + 2] + move[vertexPart[v]][1]);
   }
-  for (auto& f : faces) {
-    auto it = partAt.find({float(f[0][0]), float(f[0][1]), float(f[0][2])});
-    if (it == partAt.end()) continue;
-    for (auto& q : f) q[0] += move[it->second][0], q[2] += move[it->second][1];
-  }
+  for (size_t f = 0; f < faces.size(); ++f)
+    for (auto& q : faces[f]) q[0] += move[facePart[f]][0], q[2] += move[facePart[f]][1];
 }
 
 }  // namespace fgsg::rt::synthesis::continuous

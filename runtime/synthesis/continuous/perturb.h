@@ -12,8 +12,9 @@
 
 namespace fgsg::rt::synthesis::continuous {
 
-// Moves the connected parts of `mesh`, and the whole faces `faces` of part `facePart[f]`
-// with them (the same parts: faces are found by their first corner).
-void perturbParts(Mesh& mesh, std::vector<std::vector<std::array<double, 3>>>& faces, double amount, uint64_t seed);
+// Moves the `parts` connected parts of `mesh` (vertex v in part vertexPart[v]) and the
+// whole faces with them (face f in part facePart[f]).
+void perturbParts(Mesh& mesh, const std::vector<uint32_t>& vertexPart, std::vector<std::vector<std::array<double, 3>>>& faces,
+                  const std::vector<uint32_t>& facePart, uint32_t parts, double amount, uint64_t seed);
 
 }  // namespace fgsg::rt::synthesis::continuous
