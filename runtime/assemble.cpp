@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -57,25 +58,97 @@ Placement placementOf(const Instance& inst, const InstanceList& list) {
   return p;
 }
 
+// What assembling needs to know of an asset beyond the mesh, found once per assembly
+// (an instance's own geometry, drawn once, goes without): the distinct normals of its
+// vertices — a bark tube's 250 vertices have 25, its rings repeat them — so each
+// instance normalises those only; and whether every vertex is drawn, so an instance
+// that drops nothing keeps the asset's numbering as it is.
+struct AssetTraits {
+  std::vector<uint32_t> normalOf;  // per vertex: index into normals
+  std::vector<Vector3d> normals;   // distinct, in order of first use
+  bool everyVertexUsed = false;    // by a triangle or a line segment
+};
+
+AssetTraits traitsOf(const Mesh& m) {
+  AssetTraits t;
+  const size_t nv = m.vertexCount();
+  const bool hasNormals = m.normals.size() == m.positions.size();
+  t.normalOf.resize(nv);
+  // Normals alike bit for bit are one (keyed by their bits: -0 and NaN need no care).
+  using Bits = std::array<uint32_t, 3>;
+  struct BitsHash {
+    size_t operator()(const Bits& b) const {
+      return size_t((uint64_t(b[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(b[1]) * 0xC2B2AE3D27D4EB4Full) ^ b[2]);
+    }
+  };
+  std::unordered_map<Bits, uint32_t, BitsHash> index;
+  const float zero[3] = {0, 0, 0};
+  for (size_t v = 0; v < nv; ++v) {
+    const float* n = hasNormals ? &m.normals[3 * v] : zero;
+    Bits bits;
+    std::memcpy(bits.data(), n, sizeof bits);
+    const auto [it, added] = index.emplace(bits, uint32_t(t.normals.size()));
+    if (added) t.normals.emplace_back(n[0], n[1], n[2]);
+    t.normalOf[v] = it->second;
+  }
+  std::vector<uint8_t> used(nv, 0);
+  for (uint32_t i : m.indices) used[i] = 1;
+  for (uint32_t i : m.lines) used[i] = 1;
+  t.everyVertexUsed = std::all_of(used.begin(), used.end(), [](uint8_t u) { return u != 0; });
+  return t;
+}
+
 // Per-instance working set, reused across the instances a task handles.
 struct Scratch {
   std::vector<Vector3d> world;         // asset vertices in world space
-  std::vector<Eigen::Vector3f> normal;  // their output normals
+  std::vector<Vector3d> unit;          // the distinct normals through the instance, unit length
   std::vector<uint32_t> remap;         // asset vertex -> output vertex within the instance
   std::vector<uint8_t> keepTri;        // triangle survives the area test
   std::vector<uint8_t> keepLine;       // line segment has a length
+  bool keepsNumbering = false;         // remap is the identity (and left unfilled)
 };
 
 struct Counts {
   uint32_t vertices = 0, triangles = 0, lines = 0;
 };
 
-// The output normal: through the cofactor matrix, turned with the bend, unit length.
-Eigen::Vector3f outputNormal(const Placement& p, const Vector3d& assetNormal, const Matrix3d* turn) {
-  Vector3d n = p.normalMatrix * assetNormal;
-  if (turn) n = *turn * n;
-  const double len = n.norm();
-  return (len > 0 ? Vector3d(n / len) : Vector3d(0, 0, 1)).cast<float>();
+// Where a run of asset vertices goes: position M q + o, and its normals turn by R.
+// Rigidly (A, t, no turn), or for one bend section (CurveBend::sectionMap), so each
+// vertex of a ring costs one matrix for its position and one for its normal.
+struct VertexMap {
+  Matrix3d M;
+  Vector3d o;
+  Matrix3d R;
+  bool turns = false;
+};
+
+VertexMap rigidMap(const Placement& p) { return {p.A, p.t, Matrix3d::Identity(), false}; }
+
+VertexMap sectionMap(const Placement& p, double s) {
+  const marching::CurveBend::SectionMap m = p.bend->sectionMap(s);
+  return {m.linear, m.offset, m.frame, true};
+}
+
+// The unit normal through the cofactor matrix of each normal in `normals` (zero where it
+// vanishes; its vertices get (0, 0, 1)), for the vertex maps to turn. A bend's turn
+// keeps lengths, so it is applied after: normalize(R N n) = R normalize(N n), and of
+// R = frame scopeFrame^T the scope frame's part is applied here, once per instance.
+// `normalAt(k)`: the k-th normal.
+template <class NormalAt>
+void unitNormals(const Placement& p, size_t count, NormalAt&& normalAt, std::vector<Vector3d>& unit) {
+  const bool bent = p.bend && p.bend->bends();
+  const Matrix3d N = bent ? Matrix3d(p.bend->scopeFrame().transpose() * p.normalMatrix) : p.normalMatrix;
+  unit.resize(count);
+  for (size_t k = 0; k < count; ++k) {
+    const Vector3d n = N * normalAt(k);
+    const double squared = n.squaredNorm();
+    unit[k] = squared > 0 ? Vector3d(n / std::sqrt(squared)) : Vector3d::Zero();
+  }
+}
+
+Eigen::Vector3f outputNormal(const VertexMap& map, const Vector3d& unit) {
+  if (unit.isZero()) return Eigen::Vector3f(0, 0, 1);
+  return (map.turns ? Vector3d(map.R * unit) : unit).cast<float>();
 }
 
 // Whether the triangle with this cross product has an area of kMinTriangleArea or more
@@ -89,59 +162,74 @@ bool largeEnough(const Vector3d& cross) {
   return 0.5 * std::sqrt(squared) >= kMinTriangleArea;
 }
 
-// Transforms the asset's positions (and, `withNormals`, its normals) and decides which
-// triangles and vertices survive.
-Counts classify(const Mesh& asset, const Placement& p, Scratch& s, bool withNormals) {
-  const size_t nv = asset.vertexCount(), nt = asset.triangleCount();
-  const bool hasNormals = asset.normals.size() == asset.positions.size();
+// Places each asset vertex in the world (s.world) and calls visit(v, map) with the map
+// that placed it. The bend's section is evaluated once per run of vertices with the
+// same s (a ring of the bark tube: runtime/marching/curve_bend.h).
+template <class Visit>
+void placeVertices(const Mesh& asset, const Placement& p, Scratch& s, Visit&& visit) {
+  const size_t nv = asset.vertexCount();
   s.world.resize(nv);
-  if (withNormals) s.normal.resize(nv);
   const float* position = asset.positions.data();
-  const float* normal = asset.normals.data();
-  // The bend's section is evaluated once per run of vertices with the same s (a ring of
-  // the bark tube: runtime/marching/curve_bend.h).
-  marching::BendSection section;
-  section.s = std::numeric_limits<double>::quiet_NaN();
+  const bool bent = p.bend && p.bend->bends();
+  VertexMap map = rigidMap(p);
+  double sectionAt = std::numeric_limits<double>::quiet_NaN();
   for (size_t v = 0; v < nv; ++v) {
     const Vector3d q(position[3 * v], position[3 * v + 1], position[3 * v + 2]);
-    s.world[v] = p.A * q + p.t;
-    const Matrix3d* turn = nullptr;
-    if (p.bend) {
+    if (bent) {
       const double along = p.bend->along(q);
-      if (!(along == section.s)) section = p.bend->section(along);
-      s.world[v] = p.bend->place(section, s.world[v]).position;
-      turn = &section.rotation;
+      if (!(along == sectionAt)) sectionAt = along, map = sectionMap(p, along);
     }
-    if (withNormals) {
-      const Vector3d n0 = hasNormals ? Vector3d(normal[3 * v], normal[3 * v + 1], normal[3 * v + 2]) : Vector3d::Zero();
-      s.normal[v] = outputNormal(p, n0, turn);
-    }
+    s.world[v] = map.M * q + map.o;
+    visit(v, map);
   }
-  s.remap.assign(nv, kUnused);
-  s.keepTri.assign(nt, 0);
+}
+
+// Decides from s.world which triangles and line segments survive, and numbers the
+// vertices they use (s.remap, unless s.keepsNumbering). `traits`: the asset's (null for
+// a shape's own geometry).
+Counts survivors(const Mesh& asset, const AssetTraits* traits, Scratch& s) {
+  const size_t nv = asset.vertexCount(), nt = asset.triangleCount(), nl = asset.lineCount();
+  // The area test first, on its own: a tight loop with no stores but the flags.
   Counts c;
+  s.keepTri.resize(nt);
+  const uint32_t* index = asset.indices.data();
+  const Vector3d* world = s.world.data();
   for (size_t t = 0; t < nt; ++t) {
-    const uint32_t* tri = &asset.indices[3 * t];
-    const Vector3d& a = s.world[tri[0]];
-    if (!largeEnough((s.world[tri[1]] - a).cross(s.world[tri[2]] - a))) continue;
-    s.keepTri[t] = 1;
-    ++c.triangles;
-    for (int k = 0; k < 3; ++k) s.remap[tri[k]] = 0;
+    const Vector3d& a = world[index[3 * t]];
+    const bool keep = largeEnough((world[index[3 * t + 1]] - a).cross(world[index[3 * t + 2]] - a));
+    s.keepTri[t] = keep;
+    c.triangles += keep;
   }
   // Line segments survive with a length (a NaN one: no).
-  const size_t nl = asset.lineCount();
-  s.keepLine.assign(nl, 0);
+  s.keepLine.resize(nl);
   for (size_t l = 0; l < nl; ++l) {
     const uint32_t* ends = &asset.lines[2 * l];
-    if (!((s.world[ends[1]] - s.world[ends[0]]).squaredNorm() > 0)) continue;
-    s.keepLine[l] = 1;
-    ++c.lines;
-    s.remap[ends[0]] = s.remap[ends[1]] = 0;
+    const bool keep = (world[ends[1]] - world[ends[0]]).squaredNorm() > 0;
+    s.keepLine[l] = keep;
+    c.lines += keep;
   }
+  // Nothing dropped from an asset that draws every vertex: its numbering stands.
+  s.keepsNumbering = traits && traits->everyVertexUsed && c.triangles == nt && c.lines == nl;
+  if (s.keepsNumbering) {
+    c.vertices = uint32_t(nv);
+    return c;
+  }
+  s.remap.assign(nv, kUnused);
+  for (size_t t = 0; t < nt; ++t)
+    if (s.keepTri[t])
+      for (int k = 0; k < 3; ++k) s.remap[index[3 * t + k]] = 0;
+  for (size_t l = 0; l < nl; ++l)
+    if (s.keepLine[l]) s.remap[asset.lines[2 * l]] = s.remap[asset.lines[2 * l + 1]] = 0;
   // Number the surviving vertices in asset order, so the output keeps the asset's layout.
   for (uint32_t& r : s.remap)
     if (r != kUnused) r = c.vertices++;
   return c;
+}
+
+// What of the asset survives the instance's placement, without writing anything.
+Counts classify(const Mesh& asset, const Placement& p, Scratch& s) {
+  placeVertices(asset, p, s, [](size_t, const VertexMap&) {});
+  return survivors(asset, nullptr, s);
 }
 
 // The mesh an instance draws (its own geometry, or its asset), or nullptr when the
@@ -162,71 +250,110 @@ std::vector<Counts> countAll(const InstanceList& list, const AssetLibrary& libra
                       for (size_t i = r.begin(); i != r.end(); ++i) {
                         const Instance& inst = list.instances[i];
                         if (const Mesh* m = assetOf(inst, list, library, meshOf))
-                          counts[i] = classify(*m, placementOf(inst, list), s, false);
+                          counts[i] = classify(*m, placementOf(inst, list), s);
                       }
                     });
   return counts;
 }
 
-// A block's output before its place in the mesh is known: each instance writes what
-// survives into a slot with room for all of its asset, at slotVertex / slotTriangle
-// (indices counted from the instance's first vertex), and is then copied into place.
-// Bending a vertex costs far more than copying it: this way each is bent once.
-struct Staging {
-  std::vector<float> positions, normals, colors, texcoords;
-  std::vector<uint32_t> indices, lines;
-  std::vector<size_t> slotVertex, slotTriangle, slotLine;  // per instance of the block, and the end
+// Where a block's instances write before it is known what of them survives: each at the
+// place it would have if nothing were dropped (room for all of its asset), from the
+// mesh's end when the block started. Nothing is dropped almost always; where something
+// is, closeUp moves the instances after it back, in order.
+struct Slots {
+  std::vector<size_t> vertex, triangle, line;  // per instance of the block, and the end
+  size_t vertex0 = 0, triangle0 = 0, line0 = 0;  // the mesh's counts before the block
+  size_t firstVertex(size_t i) const { return vertex0 + vertex[i]; }
+  size_t firstTriangle(size_t i) const { return triangle0 + triangle[i]; }
+  size_t firstLine(size_t i) const { return line0 + line[i]; }
 };
 
-// Writes an instance's surviving vertices and triangles into its staging slot.
-void emit(const Mesh& asset, const Instance& inst, const Placement& p, const Scratch& s, size_t slot,
-          Staging& st) {
-  const size_t vertex0 = st.slotVertex[slot];
-  float* position = st.positions.data() + 3 * vertex0;
-  float* normal = st.normals.data() + 3 * vertex0;
-  float* color = st.colors.data() + 3 * vertex0;
+// Writes an instance into its slot of the mesh: every vertex as it is placed, in the
+// asset's numbering (what almost always survives); then, when something was dropped,
+// the survivors moved together within the slot; then the triangles and line segments.
+Counts placeInstance(const Mesh& asset, const AssetTraits* traits, const Instance& inst, const Placement& p,
+                     Scratch& s, const Slots& slots, size_t slot, Mesh& out) {
+  const size_t nv = asset.vertexCount(), vertex0 = slots.firstVertex(slot);
+  if (traits) {
+    unitNormals(p, traits->normals.size(), [&](size_t k) { return traits->normals[k]; }, s.unit);
+  } else {
+    const float* n = asset.normals.size() == asset.positions.size() ? asset.normals.data() : nullptr;
+    unitNormals(p, nv, [&](size_t v) { return n ? Vector3d(n[3 * v], n[3 * v + 1], n[3 * v + 2]) : Vector3d::Zero(); },
+                s.unit);
+  }
+  float* position = out.positions.data() + 3 * vertex0;
+  float* normal = out.normals.data() + 3 * vertex0;
+  float* color = out.colors.data() + 3 * vertex0;
   // Texture coordinates pass through unchanged; (0, 0) for an asset without them.
-  float* texcoord = st.texcoords.empty() ? nullptr : st.texcoords.data() + 2 * vertex0;
-  const bool hasTexcoords = asset.hasTexcoords();
-  for (size_t v = 0; v < s.remap.size(); ++v) {
-    const uint32_t o = s.remap[v];
-    if (o == kUnused) continue;
+  float* texcoord = out.texcoords.empty() ? nullptr : out.texcoords.data() + 2 * vertex0;
+  const float* assetTexcoord = asset.hasTexcoords() ? asset.texcoords.data() : nullptr;
+  placeVertices(asset, p, s, [&](size_t v, const VertexMap& map) {
+    const Eigen::Vector3f n = outputNormal(map, s.unit[traits ? traits->normalOf[v] : v]);
     for (int d = 0; d < 3; ++d) {
-      position[3 * o + d] = float(s.world[v][d]);
-      normal[3 * o + d] = s.normal[v][d];
-      color[3 * o + d] = inst.color[d];
+      position[3 * v + d] = float(s.world[v][d]);
+      normal[3 * v + d] = n[d];
+      color[3 * v + d] = inst.color[d];
     }
     if (texcoord)
-      for (int d = 0; d < 2; ++d) texcoord[2 * o + d] = hasTexcoords ? asset.texcoords[2 * v + d] : 0.0f;
-  }
-  uint32_t* index = st.indices.data() + 3 * st.slotTriangle[slot];
+      for (int d = 0; d < 2; ++d) texcoord[2 * v + d] = assetTexcoord ? assetTexcoord[2 * v + d] : 0.0f;
+  });
+  const Counts c = survivors(asset, traits, s);
+  // An asset vertex's number in the instance's output (kUnused: dropped). Renumbering
+  // only ever moves a vertex back, so moving them in order overwrites none still to move.
+  const bool same = s.keepsNumbering;
+  const auto to = [&](uint32_t v) { return same ? v : s.remap[v]; };
+  if (!same)
+    for (uint32_t v = 0; v < uint32_t(nv); ++v) {
+      const uint32_t o = s.remap[v];
+      if (o == kUnused || o == v) continue;
+      std::copy_n(position + 3 * v, 3, position + 3 * o);
+      std::copy_n(normal + 3 * v, 3, normal + 3 * o);
+      std::copy_n(color + 3 * v, 3, color + 3 * o);
+      if (texcoord) std::copy_n(texcoord + 2 * v, 2, texcoord + 2 * o);
+    }
+  const uint32_t base = uint32_t(vertex0);
+  uint32_t* index = out.indices.data() + 3 * slots.firstTriangle(slot);
+  const int second = p.flip ? 2 : 1, third = p.flip ? 1 : 2;
   for (size_t a = 0; a < s.keepTri.size(); ++a) {
     if (!s.keepTri[a]) continue;
     const uint32_t* tri = &asset.indices[3 * a];
-    *index++ = s.remap[tri[0]];
-    *index++ = s.remap[tri[p.flip ? 2 : 1]];
-    *index++ = s.remap[tri[p.flip ? 1 : 2]];
+    *index++ = base + to(tri[0]);
+    *index++ = base + to(tri[second]);
+    *index++ = base + to(tri[third]);
   }
-  uint32_t* line = st.lines.data() + 2 * st.slotLine[slot];
+  uint32_t* line = out.lines.data() + 2 * slots.firstLine(slot);
   for (size_t l = 0; l < s.keepLine.size(); ++l) {
     if (!s.keepLine[l]) continue;
-    *line++ = s.remap[asset.lines[2 * l]];
-    *line++ = s.remap[asset.lines[2 * l + 1]];
+    *line++ = base + to(asset.lines[2 * l]);
+    *line++ = base + to(asset.lines[2 * l + 1]);
   }
+  return c;
 }
 
-// Copies an instance's staged output to its place in the mesh.
-void place(const Staging& st, size_t slot, Counts c, size_t firstVertex, size_t firstTriangle, size_t firstLine,
-           Mesh& out) {
-  if (c.vertices == 0) return;  // nothing survived (and the slot may be past the end)
-  const size_t v = st.slotVertex[slot], t = st.slotTriangle[slot], l = st.slotLine[slot];
-  std::copy_n(&st.positions[3 * v], 3 * c.vertices, &out.positions[3 * firstVertex]);
-  std::copy_n(&st.normals[3 * v], 3 * c.vertices, &out.normals[3 * firstVertex]);
-  std::copy_n(&st.colors[3 * v], 3 * c.vertices, &out.colors[3 * firstVertex]);
-  if (!out.texcoords.empty()) std::copy_n(&st.texcoords[2 * v], 2 * c.vertices, &out.texcoords[2 * firstVertex]);
-  const uint32_t base = uint32_t(firstVertex);
-  for (size_t k = 0; k < 3 * size_t(c.triangles); ++k) out.indices[3 * firstTriangle + k] = base + st.indices[3 * t + k];
-  for (size_t k = 0; k < 2 * size_t(c.lines); ++k) out.lines[2 * firstLine + k] = base + st.lines[2 * l + k];
+// Moves each instance of the block from its slot to its place after what survived of
+// the instances before it (`first*`, prefix sums of `counts`), renumbering its indices;
+// in order, so no instance is overwritten before it moved. Instances before the first
+// one that dropped something stay where they are.
+void closeUp(const Slots& slots, const std::vector<Counts>& counts, const std::vector<size_t>& firstVertex,
+             const std::vector<size_t>& firstTriangle, const std::vector<size_t>& firstLine, Mesh& out) {
+  for (size_t i = 0; i < counts.size(); ++i) {
+    const size_t fromVertex = slots.firstVertex(i), fromTriangle = slots.firstTriangle(i),
+                 fromLine = slots.firstLine(i);
+    if (fromVertex == firstVertex[i] && fromTriangle == firstTriangle[i] && fromLine == firstLine[i]) continue;
+    const Counts c = counts[i];
+    const auto move = [&](auto& array, int width) {
+      const auto* from = array.data() + width * fromVertex;  // after the destination: a forward copy
+      std::copy(from, from + width * size_t(c.vertices), array.data() + width * firstVertex[i]);
+    };
+    move(out.positions, 3);
+    move(out.normals, 3);
+    move(out.colors, 3);
+    if (!out.texcoords.empty()) move(out.texcoords, 2);
+    const uint32_t back = uint32_t(fromVertex - firstVertex[i]);
+    for (size_t k = 0; k < 3 * size_t(c.triangles); ++k)
+      out.indices[3 * firstTriangle[i] + k] = out.indices[3 * fromTriangle + k] - back;
+    for (size_t k = 0; k < 2 * size_t(c.lines); ++k) out.lines[2 * firstLine[i] + k] = out.lines[2 * fromLine + k] - back;
+  }
 }
 
 // The output's images: the instance list's (Texture), then those of drawn meshes with
@@ -272,7 +399,7 @@ void addTextureRuns(const InstanceList& list, const AssetLibrary& library, const
       out.addTextureRun(firstTriangle[i], image);
       continue;
     }
-    classify(*m, placementOf(inst, list), s, false);
+    classify(*m, placementOf(inst, list), s);
     const std::vector<int32_t>& own = images.ofMesh.at(m);
     size_t at = firstTriangle[i];
     for (size_t r = 0; r < m->textureRuns.size(); ++r) {
@@ -333,10 +460,10 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
 void assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
                        size_t* assembled) {
-  // Block by block, in list order: pass 1 builds each instance's output in a staging
-  // slot of its own; prefix sums over what survived give every instance its output range,
-  // so pass 2 copies in parallel yet the bytes depend neither on the scheduling nor on
-  // the blocks. A block is a millisecond or so of work, so a deadline is noticed in time.
+  // Block by block, in list order: each instance writes its output in parallel into a
+  // slot of its own (Slots), and closeUp moves them together where something was
+  // dropped, so the bytes depend neither on the scheduling nor on the blocks. A block is
+  // a millisecond or so of work, so a deadline is noticed in time.
   constexpr size_t kBlockTriangles = 32768;
   checkCurves(list);
   const size_t n = list.instances.size();
@@ -373,28 +500,33 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
   OutputImages images;
   if (withTextures) images = outputImages(list, library, meshOf), out.textures = images.paths;
-  Staging st;
+  std::vector<AssetTraits> traits(meshOf.size());
+  for (size_t a = 0; a < traits.size(); ++a)
+    if (meshOf[a] >= 0) traits[a] = traitsOf(library.mesh(meshOf[a]));
+  Slots slots;
   size_t begin = 0;
   while (begin < n && !(deadline && deadline->passed())) {
-    // The block, and each instance's staging slot: room for its whole asset.
+    // The block, and each instance's slot: room for its whole asset.
     size_t end = begin, work = 0;
-    st.slotVertex.assign(1, 0);
-    st.slotTriangle.assign(1, 0);
-    st.slotLine.assign(1, 0);
+    slots.vertex.assign(1, 0);
+    slots.triangle.assign(1, 0);
+    slots.line.assign(1, 0);
     while (end < n && (end == begin || work < kBlockTriangles)) {
       const Mesh* m = assetOf(list.instances[end++], list, library, meshOf);
       work += 1 + (m ? m->triangleCount() + m->lineCount() : 0);
-      st.slotVertex.push_back(st.slotVertex.back() + (m ? m->vertexCount() : 0));
-      st.slotTriangle.push_back(st.slotTriangle.back() + (m ? m->triangleCount() : 0));
-      st.slotLine.push_back(st.slotLine.back() + (m ? m->lineCount() : 0));
+      slots.vertex.push_back(slots.vertex.back() + (m ? m->vertexCount() : 0));
+      slots.triangle.push_back(slots.triangle.back() + (m ? m->triangleCount() : 0));
+      slots.line.push_back(slots.line.back() + (m ? m->lineCount() : 0));
     }
     const size_t k = end - begin;
-    st.positions.resize(3 * st.slotVertex[k]);
-    st.normals.resize(3 * st.slotVertex[k]);
-    st.colors.resize(3 * st.slotVertex[k]);
-    if (withTexcoords) st.texcoords.resize(2 * st.slotVertex[k]);
-    st.indices.resize(3 * st.slotTriangle[k]);
-    st.lines.resize(2 * st.slotLine[k]);
+    slots.vertex0 = out.vertexCount(), slots.triangle0 = out.triangleCount(), slots.line0 = out.lineCount();
+    // Within the reservation above: the arrays do not move.
+    out.positions.resize(3 * slots.firstVertex(k));
+    out.normals.resize(3 * slots.firstVertex(k));
+    out.colors.resize(3 * slots.firstVertex(k));
+    if (withTexcoords) out.texcoords.resize(2 * slots.firstVertex(k));
+    out.indices.resize(3 * slots.firstTriangle(k));
+    out.lines.resize(2 * slots.firstLine(k));
     counts.assign(k, Counts{});
     tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
       Scratch s;
@@ -403,28 +535,25 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
         const Mesh* m = assetOf(inst, list, library, meshOf);
         if (!m) continue;
         const Placement p = placementOf(inst, list);
-        counts[i] = classify(*m, p, s, true);
-        emit(*m, inst, p, s, i, st);
+        const AssetTraits* t = inst.geometry == UINT32_MAX ? &traits[inst.asset] : nullptr;
+        counts[i] = placeInstance(*m, t, inst, p, s, slots, i, out);
       }
     });
-    firstVertex.assign(k + 1, out.positions.size() / 3);
-    firstTriangle.assign(k + 1, out.indices.size() / 3);
-    firstLine.assign(k + 1, out.lines.size() / 2);
+    firstVertex.assign(k + 1, slots.vertex0);
+    firstTriangle.assign(k + 1, slots.triangle0);
+    firstLine.assign(k + 1, slots.line0);
     for (size_t i = 0; i < k; ++i) {
       firstVertex[i + 1] = firstVertex[i] + counts[i].vertices;
       firstTriangle[i + 1] = firstTriangle[i] + counts[i].triangles;
       firstLine[i + 1] = firstLine[i] + counts[i].lines;
     }
+    closeUp(slots, counts, firstVertex, firstTriangle, firstLine, out);
     out.positions.resize(3 * firstVertex[k]);
     out.normals.resize(3 * firstVertex[k]);
     out.colors.resize(3 * firstVertex[k]);
     out.indices.resize(3 * firstTriangle[k]);
     out.lines.resize(2 * firstLine[k]);
     if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i)
-        place(st, i, counts[i], firstVertex[i], firstTriangle[i], firstLine[i], out);
-    });
     if (withTextures) addTextureRuns(list, library, meshOf, images, begin, counts, firstTriangle, out);
     begin = end;
   }

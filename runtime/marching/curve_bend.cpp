@@ -50,6 +50,24 @@ CurveBend::CurveBend(const CurveSegment& curve, const std::array<double, 16>& un
     if (std::abs(dot) > 1e-12 * column.norm() * length) along_[k] = dot / (length * length);
   }
   alongAt0_ = (placement_.block<3, 1>(0, 3) - start_).dot(chord_) / (length * length);
+  scopeLinear_ = scopeFrame_.transpose() * placement_.block<3, 3>(0, 0);
+  scopeOffset_ = scopeFrame_.transpose() * (placement_.block<3, 1>(0, 3) - start_);
+  scopeChord_ = scopeFrame_.transpose() * chord_;
+}
+
+CurveBend::SectionMap CurveBend::sectionMap(double s) const {
+  if (length_ == 0) return {placement_.block<3, 3>(0, 0), placement_.block<3, 1>(0, 3), Mat3::Identity()};
+  const double x = std::clamp(s, 0.0, 1.0);
+  const CurveFrame f = curveFrame(curve_, x);
+  SectionMap out;
+  out.frame.col(0) = f.tangent;
+  out.frame.col(1) = f.side;
+  out.frame.col(2) = f.up;
+  // Beyond an end, straight on along the end tangent, as section() does.
+  const Vec3 onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
+  out.linear = out.frame * scopeLinear_;
+  out.offset = out.frame * (scopeOffset_ - s * scopeChord_) + onCurve;
+  return out;
 }
 
 BentPoint CurveBend::at(const Vec3& local) const {

@@ -73,6 +73,18 @@ class CurveBend {
   // False when the chord has no length and points stay rigid.
   bool bends() const { return length_ > 0; }
 
+  // For placing many points of one section at once (assembling a terminal): the asset
+  // points with along(local) == s go to linear * local + offset (place(section(s), M local)
+  // up to rounding), and a rigidly placed normal n turns to frame * (scopeFrame()^T n).
+  // R(s) = frame scopeFrame()^T, so the scope frame's part is applied once per instance.
+  struct SectionMap {
+    Mat3 linear;
+    Vec3 offset;
+    Mat3 frame;  // the curve's (tangent, side, up) at s
+  };
+  SectionMap sectionMap(double s) const;
+  const Mat3& scopeFrame() const { return scopeFrame_; }
+
  private:
   CurveSegment curve_;
   Mat4 placement_;
@@ -81,6 +93,10 @@ class CurveBend {
   Mat3 scopeFrame_;         // columns: chord direction, scope side, scope up
   Vec3 along_ = Vec3::Zero();  // s = along_ . local + alongAt0_
   double alongAt0_ = 0;
+  // In the scope frame (scopeFrame_^T times): M's linear part, M's translation - c0, the
+  // chord. R(s) (M local - chord(s)) = frame(s) (scopeLinear_ local + scopeOffset_ - s scopeChord_).
+  Mat3 scopeLinear_ = Mat3::Identity();
+  Vec3 scopeOffset_ = Vec3::Zero(), scopeChord_ = Vec3::Zero();
 };
 
 // One-off convenience: the bent world position of the unit-box point `local`.

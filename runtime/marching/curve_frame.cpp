@@ -39,14 +39,17 @@ CurveFrame curveFrame(const CurveSegment& curve, double x) {
   f.point = bezierPoint(curve, x);
   const Vec3 n0 = toVec3(curve.normal0), n1 = toVec3(curve.normal1);
   const Vec3 derivative = bezierDerivative(curve, x);
-  const Vec3 chord = controlPoint(curve, 3) - controlPoint(curve, 0);
-  const double dLen = derivative.norm(), cLen = chord.norm();
-  if (dLen > 0 && std::isfinite(dLen))
+  const double dLen = derivative.norm();
+  if (dLen > 0 && std::isfinite(dLen)) {
     f.tangent = derivative / dLen;
-  else if (cLen > 0 && std::isfinite(cLen))
-    f.tangent = chord / cLen;
-  else  // a curve that is a point: any direction across its normal
-    f.tangent = n0.squaredNorm() > 0 ? Vec3(n0.unitOrthogonal()) : Vec3(1, 0, 0);
+  } else {
+    const Vec3 chord = controlPoint(curve, 3) - controlPoint(curve, 0);
+    const double cLen = chord.norm();
+    if (cLen > 0 && std::isfinite(cLen))
+      f.tangent = chord / cLen;
+    else  // a curve that is a point: any direction across its normal
+      f.tangent = n0.squaredNorm() > 0 ? Vec3(n0.unitOrthogonal()) : Vec3(1, 0, 0);
+  }
   if (!acrossUnit((1 - x) * n0 + x * n1, f.tangent, f.up) && !acrossUnit(n0, f.tangent, f.up) &&
       !acrossUnit(n1, f.tangent, f.up))
     f.up = f.tangent.unitOrthogonal();

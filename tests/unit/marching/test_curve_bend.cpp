@@ -221,3 +221,34 @@ TEST_CASE("the points of a ring across the chord share one section", "[bend]") {
     CHECK((shearedBend.at(p).position - shearedBend.atRigid(rigid(sheared, p)).position).norm() < 1e-12);
   }
 }
+
+TEST_CASE("a section's affine map places a ring as place(section) does, and turns its normals alike", "[bend]") {
+  const Graph g = fgsg::test::sphereWalk(5, 6, 1.0);
+  const std::vector<CurveSegment> curves = smoothSegments(g.nodes, g.segments);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (size_t i = 0; i < curves.size(); ++i) {
+    INFO("curve " << i);
+    const CurveSegment& c = curves[i];
+    const std::array<double, 16> t = scopeOnChord(c, Vec3(unit(rng), unit(rng), unit(rng)), 0.03, 0.05);
+    const CurveBend bend(c, t);
+    const Eigen::Map<const Mat4> m(t.data());
+    for (double x : {-0.5, 0.0, 0.4, 1.0, 1.25}) {
+      const CurveBend::SectionMap map = bend.sectionMap(x);
+      const BendSection section = bend.section(x);
+      // The turn of normals: frame * scopeFrame^T is the section's rotation.
+      CHECK((map.frame * bend.scopeFrame().transpose() - section.rotation).norm() < 1e-14);
+      for (const Vec3& p : ring(x, 7)) {
+        const Vec3 expected = bend.place(section, m.block<3, 3>(0, 0) * p + m.block<3, 1>(0, 3)).position;
+        CHECK((map.linear * p + map.offset - expected).norm() < 1e-14);
+      }
+    }
+  }
+  // A chord of no length bends nothing: the map is the placement itself.
+  CurveSegment point;
+  const std::array<double, 16> t = scopeOnChord(curves[0], Vec3(0, 0, 1), 0.03, 0.05);
+  const CurveBend still(point, t);
+  const CurveBend::SectionMap map = still.sectionMap(0.5);
+  CHECK(map.linear == Eigen::Map<const Mat4>(t.data()).block<3, 3>(0, 0));
+  CHECK(map.frame == Mat3::Identity());
+}

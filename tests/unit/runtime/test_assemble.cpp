@@ -112,6 +112,31 @@ TEST_CASE("a flattened cube keeps only its top and bottom", "[assemble]") {
   checkFlatNormals(m);
 }
 
+TEST_CASE("instances after one that lost triangles close up behind it", "[assemble]") {
+  // Each instance is written where it would be if nothing were dropped, then moved back:
+  // the cube after the flattened one must land right after its 8 surviving vertices.
+  Scene s;
+  s.add("cube", scaleTranslate({1, 1, 1}, {0, 0, 0}), {1, 0, 0});
+  s.add("cube", scaleTranslate({2, 3, 0}, {1, 1, 5}), {0, 1, 0});
+  s.add("cube", scaleTranslate({1, 2, 3}, {4, 0, 0}), {0, 0, 1});
+  const Mesh m = s.assemble();
+  Scene alone;
+  alone.add("cube", scaleTranslate({1, 2, 3}, {4, 0, 0}), {0, 0, 1});
+  const Mesh last = alone.assemble();
+  REQUIRE(m.vertexCount() == 24 + 8 + 24);
+  REQUIRE(m.triangleCount() == 12 + 4 + 12);
+  for (size_t v = 0; v < 24; ++v) {
+    CHECK(vec(m.positions, 32 + v) == vec(last.positions, v));
+    CHECK(vec(m.normals, 32 + v) == vec(last.normals, v));
+    CHECK(vec(m.colors, 32 + v) == Eigen::Vector3d(0, 0, 1));
+  }
+  for (size_t k = 0; k < 3 * 12; ++k) CHECK(m.indices[3 * 16 + k] == last.indices[k] + 32);
+  for (size_t v = 24; v < 32; ++v) CHECK(vec(m.colors, v) == Eigen::Vector3d(0, 1, 0));
+  for (uint32_t i : m.indices) CHECK(i < m.vertexCount());
+  CHECK(signedVolume(m) == Approx(1 + 6));
+  checkFlatNormals(m);
+}
+
 TEST_CASE("a quad scaled flat in X vanishes entirely", "[assemble]") {
   Scene s;
   s.add("quad", scaleTranslate({0, 1, 1}, {0, 0, 0}));
