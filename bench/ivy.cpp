@@ -12,10 +12,15 @@
 //    33 M/s, on a GTX 480). Polygons are the bark's quads and the leaves' quads, as the
 //    paper counts them: triangles / 2.
 // Prints one JSON object per line; the best of several repetitions is reported.
-//   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--mesh tests/data/meshes/refined_elephant.off]
+// The grammar runs on the engine `fgsg run` uses by default, the JIT (its compile left
+// out), or with --engine interp on the interpreter.
+//   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--engine jit|interp] [--mesh tests/data/meshes/refined_elephant.off]
 // (--seeds N: that seed count only, without the atlas line.)
 #include "backend/interp/interpreter.h"
+#include "backend/jit/jit.h"
+#include "backend/native/object_cache.h"
 #include "bench/bench_grammar.h"
+#include "runtime/io/read_input.h"
 #include "runtime/assemble.h"
 #include "runtime/marching/marching_surface.h"
 #include "runtime/surface/load_surface.h"
@@ -24,6 +29,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -60,9 +66,40 @@ void atlas(const std::string& mesh, int reps) {
   std::fflush(stdout);
 }
 
-void ivy(const std::string& mesh, int seeds, int reps) {
+// The grammar, derived by the engine `fgsg run` uses by default (the JIT, its compile
+// left out of the times) or by the interpreter (--engine interp).
+struct IvyGrammar {
+  ir::Module module;
+  std::unique_ptr<backend::jit::Jit> jit;
+  std::unique_ptr<backend::jit::CompiledProgram> code;
+  rt::DeriveResult derive(const rt::DeriveOptions& options, rt::AssetLibrary& assets) const {
+    if (!code) return backend::interpret(module, options, assets);
+    return backend::deriveCompiled(module, code->program(), options, assets);
+  }
+};
+
+const IvyGrammar& grammar(bool interpreted) {
+  static const IvyGrammar g = [&] {
+    const std::string path = std::string(FGSG_SOURCE_DIR) + "/examples/ivy.fgsg";
+    IvyGrammar out;
+    out.module = bench::compileGrammarFile(path);
+    if (interpreted) return out;
+    std::string source, error;
+    if (!rt::io::readInputFile(path, "grammar", source, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      std::exit(1);
+    }
+    out.jit = std::make_unique<backend::jit::Jit>();
+    out.code = std::make_unique<backend::jit::CompiledProgram>(out.jit->compileProgram(
+        out.module, source, backend::native::ObjectCache(std::string()), backend::native::Tiering::Optimized));
+    return out;
+  }();
+  return g;
+}
+
+void ivy(const std::string& mesh, int seeds, int reps, bool interpreted) {
   const std::string dir = std::string(FGSG_SOURCE_DIR) + "/examples";
-  static const ir::Module m = bench::compileGrammarFile(dir + "/ivy.fgsg");
+  const IvyGrammar& g = grammar(interpreted);
   rt::DeriveOptions opt;
   opt.assetDirs = {dir, dir + "/assets"};
   opt.surfaceOverride = mesh;
@@ -80,7 +117,7 @@ void ivy(const std::string& mesh, int seeds, int reps) {
   for (int i = 0; i < reps; ++i) {
     rt::AssetLibrary assets;
     for (const auto& d : opt.assetDirs) assets.addSearchDir(d);
-    rt::DeriveResult r = backend::interpret(m, opt, assets);
+    rt::DeriveResult r = g.derive(opt, assets);
     if (!r.ok) {
       std::fprintf(stderr, "ivy: %s\n", r.messages.empty() ? "?" : r.messages[0].message.c_str());
       std::exit(1);
@@ -121,11 +158,11 @@ void ivy(const std::string& mesh, int seeds, int reps) {
   }
   const double polygons = triangles / 2.0, seconds = bestDerive + bestAssemble,
                warmSeconds = bestDerive + bestAssembleWarm;
-  std::printf("{\"bench\":\"ivy\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"surface_s\":%.4f,"
+  std::printf("{\"bench\":\"ivy\",\"engine\":\"%s\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"surface_s\":%.4f,"
               "\"derive_s\":%.4f,\"assemble_s\":%.4f,\"rigid_assemble_s\":%.4f,\"assemble_warm_s\":%.4f,"
               "\"rigid_assemble_warm_s\":%.4f,\"seconds\":%.4f,\"polygons_per_s\":%.0f,\"warm_seconds\":%.4f,"
               "\"warm_polygons_per_s\":%.0f}\n",
-              seeds, instances, triangles, bestSurface, bestDerive, bestAssemble, bestRigid, bestAssembleWarm,
+              interpreted ? "interp" : "jit", seeds, instances, triangles, bestSurface, bestDerive, bestAssemble, bestRigid, bestAssembleWarm,
               bestRigidWarm, seconds, polygons / seconds, warmSeconds, polygons / warmSeconds);
   std::fflush(stdout);
 }
@@ -133,7 +170,7 @@ void ivy(const std::string& mesh, int seeds, int reps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, interpreted = false;
   int maxSeeds = 64, onlySeeds = 0;
   std::string mesh = std::string(FGSG_SOURCE_DIR) + "/tests/data/meshes/refined_elephant.off";
   for (int i = 1; i < argc; ++i) {
@@ -141,16 +178,17 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc) mesh = argv[++i];
     else if (std::strcmp(argv[i], "--max-seeds") == 0 && i + 1 < argc) maxSeeds = std::atoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc) onlySeeds = std::atoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--engine") == 0 && i + 1 < argc) interpreted = std::strcmp(argv[++i], "interp") == 0;
   }
   const int reps = quick ? 1 : 3;
   if (onlySeeds > 0) {
-    ivy(mesh, onlySeeds, reps);
+    ivy(mesh, onlySeeds, reps, interpreted);
     return 0;
   }
   atlas(mesh, reps);
   for (int seeds : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
     if (seeds > maxSeeds || (quick && seeds > 8)) break;
-    ivy(mesh, seeds, reps);
+    ivy(mesh, seeds, reps, interpreted);
   }
   return 0;
 }
