@@ -14,7 +14,8 @@
 // Prints one JSON object per line; the best of several repetitions is reported.
 // The grammar runs on the engine `fgsg run` uses by default, the JIT (its compile left
 // out), or with --engine interp on the interpreter.
-//   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--engine jit|interp] [--mesh tests/data/meshes/refined_elephant.off]
+//   build/bin/bench_ivy [--quick] [--max-seeds N] [--seeds N] [--engine jit|interp]
+//                       [--mesh tests/data/meshes/refined_elephant.off]
 // (--seeds N: that seed count only, without the atlas line.)
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
@@ -158,12 +159,14 @@ void ivy(const std::string& mesh, int seeds, int reps, bool interpreted) {
   }
   const double polygons = triangles / 2.0, seconds = bestDerive + bestAssemble,
                warmSeconds = bestDerive + bestAssembleWarm;
-  std::printf("{\"bench\":\"ivy\",\"engine\":\"%s\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,\"surface_s\":%.4f,"
+  std::printf("{\"bench\":\"ivy\",\"engine\":\"%s\",\"seeds\":%d,\"instances\":%zu,\"triangles\":%zu,"
+              "\"surface_s\":%.4f,"
               "\"derive_s\":%.4f,\"assemble_s\":%.4f,\"rigid_assemble_s\":%.4f,\"assemble_warm_s\":%.4f,"
               "\"rigid_assemble_warm_s\":%.4f,\"seconds\":%.4f,\"polygons_per_s\":%.0f,\"warm_seconds\":%.4f,"
               "\"warm_polygons_per_s\":%.0f}\n",
-              interpreted ? "interp" : "jit", seeds, instances, triangles, bestSurface, bestDerive, bestAssemble, bestRigid, bestAssembleWarm,
-              bestRigidWarm, seconds, polygons / seconds, warmSeconds, polygons / warmSeconds);
+              interpreted ? "interp" : "jit", seeds, instances, triangles, bestSurface, bestDerive, bestAssemble,
+              bestRigid, bestAssembleWarm, bestRigidWarm, seconds, polygons / seconds, warmSeconds,
+              polygons / warmSeconds);
   std::fflush(stdout);
 }
 
@@ -178,7 +181,8 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc) mesh = argv[++i];
     else if (std::strcmp(argv[i], "--max-seeds") == 0 && i + 1 < argc) maxSeeds = std::atoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc) onlySeeds = std::atoi(argv[++i]);
-    else if (std::strcmp(argv[i], "--engine") == 0 && i + 1 < argc) interpreted = std::strcmp(argv[++i], "interp") == 0;
+    else if (std::strcmp(argv[i], "--engine") == 0 && i + 1 < argc)
+      interpreted = std::strcmp(argv[++i], "interp") == 0;
   }
   const int reps = quick ? 1 : 3;
   if (onlySeeds > 0) {

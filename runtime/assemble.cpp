@@ -64,9 +64,11 @@ Placement placementOf(const Instance& inst, const InstanceList& list) {
 // instance normalises those only; and whether every vertex is drawn, so an instance
 // that drops nothing keeps the asset's numbering as it is.
 struct AssetTraits {
-  std::vector<uint32_t> normalOf;  // per vertex: index into normals
-  std::vector<Vector3d> normals;   // distinct, in order of first use
-  bool everyVertexUsed = false;    // by a triangle or a line segment
+  // Per vertex: its index into normals; empty when most normals differ (a smooth mesh:
+  // then each vertex is normalised on its own, as without traits).
+  std::vector<uint32_t> normalOf;
+  std::vector<Vector3d> normals;  // distinct, in order of first use
+  bool everyVertexUsed = false;   // by a triangle or a line segment
 };
 
 AssetTraits traitsOf(const Mesh& m) {
@@ -90,6 +92,11 @@ AssetTraits traitsOf(const Mesh& m) {
     const auto [it, added] = index.emplace(bits, uint32_t(t.normals.size()));
     if (added) t.normals.emplace_back(n[0], n[1], n[2]);
     t.normalOf[v] = it->second;
+    if (v >= 256 && t.normals.size() > v / 2) {  // not worth it: stop hashing a large smooth mesh
+      t.normalOf.clear();
+      t.normals.clear();
+      break;
+    }
   }
   std::vector<uint8_t> used(nv, 0);
   for (uint32_t i : m.indices) used[i] = 1;
@@ -101,7 +108,7 @@ AssetTraits traitsOf(const Mesh& m) {
 // Per-instance working set, reused across the instances a task handles.
 struct Scratch {
   std::vector<Vector3d> world;         // asset vertices in world space
-  std::vector<Vector3d> unit;          // the distinct normals through the instance, unit length
+  std::vector<Vector3d> unit;          // the asset's normals placed, unit length (distinct or per vertex)
   std::vector<uint32_t> remap;         // asset vertex -> output vertex within the instance
   std::vector<uint8_t> keepTri;        // triangle survives the area test
   std::vector<uint8_t> keepLine;       // line segment has a length
@@ -147,7 +154,7 @@ void unitNormals(const Placement& p, size_t count, NormalAt&& normalAt, std::vec
 }
 
 Eigen::Vector3f outputNormal(const VertexMap& map, const Vector3d& unit) {
-  if (unit.isZero()) return Eigen::Vector3f(0, 0, 1);
+  if (unit == Vector3d::Zero()) return Eigen::Vector3f(0, 0, 1);
   return (map.turns ? Vector3d(map.R * unit) : unit).cast<float>();
 }
 
@@ -274,7 +281,9 @@ struct Slots {
 Counts placeInstance(const Mesh& asset, const AssetTraits* traits, const Instance& inst, const Placement& p,
                      Scratch& s, const Slots& slots, size_t slot, Mesh& out) {
   const size_t nv = asset.vertexCount(), vertex0 = slots.firstVertex(slot);
-  if (traits) {
+  // Each vertex's index into s.unit: its distinct normal's, or its own.
+  const uint32_t* normalOf = traits && !traits->normalOf.empty() ? traits->normalOf.data() : nullptr;
+  if (normalOf) {
     unitNormals(p, traits->normals.size(), [&](size_t k) { return traits->normals[k]; }, s.unit);
   } else {
     const float* n = asset.normals.size() == asset.positions.size() ? asset.normals.data() : nullptr;
@@ -288,7 +297,7 @@ Counts placeInstance(const Mesh& asset, const AssetTraits* traits, const Instanc
   float* texcoord = out.texcoords.empty() ? nullptr : out.texcoords.data() + 2 * vertex0;
   const float* assetTexcoord = asset.hasTexcoords() ? asset.texcoords.data() : nullptr;
   placeVertices(asset, p, s, [&](size_t v, const VertexMap& map) {
-    const Eigen::Vector3f n = outputNormal(map, s.unit[traits ? traits->normalOf[v] : v]);
+    const Eigen::Vector3f n = outputNormal(map, s.unit[normalOf ? normalOf[v] : v]);
     for (int d = 0; d < 3; ++d) {
       position[3 * v + d] = float(s.world[v][d]);
       normal[3 * v + d] = n[d];
@@ -352,7 +361,8 @@ void closeUp(const Slots& slots, const std::vector<Counts>& counts, const std::v
     const uint32_t back = uint32_t(fromVertex - firstVertex[i]);
     for (size_t k = 0; k < 3 * size_t(c.triangles); ++k)
       out.indices[3 * firstTriangle[i] + k] = out.indices[3 * fromTriangle + k] - back;
-    for (size_t k = 0; k < 2 * size_t(c.lines); ++k) out.lines[2 * firstLine[i] + k] = out.lines[2 * fromLine + k] - back;
+    for (size_t k = 0; k < 2 * size_t(c.lines); ++k)
+      out.lines[2 * firstLine[i] + k] = out.lines[2 * fromLine + k] - back;
   }
 }
 
