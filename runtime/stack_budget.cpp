@@ -26,8 +26,8 @@ StackExtent askStackExtent() {
 }  // namespace
 
 uintptr_t stackFloor(uintptr_t reserve) {
-  // Asked once per thread: on the main thread glibc answers by reading /proc/self/maps,
-  // which took a millisecond or more per call — per seed plant, when plants ran there.
+  // Asked once per thread: on the main thread glibc answers by opening and parsing
+  // /proc/self/maps, and it was asked once per seed plant derived there.
   thread_local const StackExtent extent = askStackExtent();
   if (extent.size == 0) return 0;
   const void* low = extent.low;
