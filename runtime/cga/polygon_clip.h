@@ -67,7 +67,8 @@ std::vector<Polygon3> ringsOf(const Polygon3& pts);
 // Ear clipping of a planar polygon, counter-clockwise about its Newell normal; concave
 // polygons (L-shaped footprints) and the zero-width bridges of clipped concave polygons
 // are accepted. Appends index triples into `pts`, each counter-clockwise like the polygon.
-void earClip(const Polygon3& pts, std::vector<uint32_t>& tris);
+void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris);
+inline void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) { earClip(pts.data(), pts.size(), tris); }
 
 // The scope box as a solid: faces front (+Z), right (+X), back (-Z), left (-X), top (+Y),
 // bottom (-Y), each counter-clockwise seen from outside starting at its lower-left corner,

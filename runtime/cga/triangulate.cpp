@@ -20,15 +20,18 @@ double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
 
 }  // namespace
 
-void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) {
-  const Vec3 n = newellNormal(pts);
-  if (pts.size() < 3 || n.norm() == 0.0) return;
+void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris) {
+  const Vec3 n = newellNormal(pts, count);
+  if (count < 3 || n.norm() == 0.0) return;
   const Vec3 w = n.normalized();
   const Vec3 u = w.unitOrthogonal();
   const Vec3 v = w.cross(u);  // u x v = w: counter-clockwise about w is counter-clockwise in 2D
-  std::vector<Vec2> q;
-  q.reserve(pts.size());
-  for (const Vec3& p : pts) q.emplace_back(p.dot(u), p.dot(v));
+  // The working lists, kept per thread: a city's every leaf face is clipped here, and
+  // allocating them anew each time was a tenth of deriving it.
+  thread_local std::vector<Vec2> q;
+  thread_local std::vector<uint32_t> idx;
+  q.clear();
+  for (std::size_t i = 0; i < count; ++i) q.emplace_back(pts[i].dot(u), pts[i].dot(v));
   Vec2 lo = q[0], hi = q[0];
   for (const Vec2& p : q) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double eps = kDegenerateTol * (hi - lo).squaredNorm();
@@ -44,7 +47,7 @@ void earClip(const Polygon3& pts, std::vector<uint32_t>& tris) {
     return true;
   };
 
-  std::vector<uint32_t> idx(pts.size());
+  idx.resize(count);
   std::iota(idx.begin(), idx.end(), 0u);
   while (idx.size() > 3) {
     const std::size_t m = idx.size();
