@@ -60,7 +60,7 @@ Mesh ownGeometryMesh(const Scope& scope, const GeomRef& geom, const GeometryAren
   out.positions.reserve(3 * vertices);
   out.normals.reserve(3 * vertices);
   out.indices.reserve(3 * triangles);
-  std::vector<uint32_t> tris;
+  thread_local std::vector<uint32_t> tris;  // a face's triangles, reused from leaf to leaf
   forEachFace(scope, geom, arena, [&](const Vec3* face, std::size_t count) { appendFace(face, count, out, tris); });
   return out;
 }
