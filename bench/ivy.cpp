@@ -79,28 +79,25 @@ struct IvyGrammar {
   }
 };
 
-const IvyGrammar& grammar(bool interpreted) {
-  static const IvyGrammar g = [&] {
-    const std::string path = std::string(FGSG_SOURCE_DIR) + "/examples/ivy.fgsg";
-    IvyGrammar out;
-    out.module = bench::compileGrammarFile(path);
-    if (interpreted) return out;
-    std::string source, error;
-    if (!rt::io::readInputFile(path, "grammar", source, error)) {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      std::exit(1);
-    }
-    out.jit = std::make_unique<backend::jit::Jit>();
-    out.code = std::make_unique<backend::jit::CompiledProgram>(out.jit->compileProgram(
-        out.module, source, backend::native::ObjectCache(std::string()), backend::native::Tiering::Optimized));
-    return out;
-  }();
-  return g;
+IvyGrammar loadGrammar(bool interpreted) {
+  const std::string path = std::string(FGSG_SOURCE_DIR) + "/examples/ivy.fgsg";
+  IvyGrammar out;
+  out.module = bench::compileGrammarFile(path);
+  if (interpreted) return out;
+  std::string source, error;
+  if (!rt::io::readInputFile(path, "grammar", source, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  }
+  out.jit = std::make_unique<backend::jit::Jit>();
+  out.code = std::make_unique<backend::jit::CompiledProgram>(out.jit->compileProgram(
+      out.module, source, backend::native::ObjectCache(std::string()), backend::native::Tiering::Optimized));
+  return out;
 }
 
-void ivy(const std::string& mesh, int seeds, int reps, bool interpreted) {
+void ivy(const IvyGrammar& g, const std::string& mesh, int seeds, int reps) {
   const std::string dir = std::string(FGSG_SOURCE_DIR) + "/examples";
-  const IvyGrammar& g = grammar(interpreted);
+  const bool interpreted = !g.code;
   rt::DeriveOptions opt;
   opt.assetDirs = {dir, dir + "/assets"};
   opt.surfaceOverride = mesh;
@@ -185,14 +182,15 @@ int main(int argc, char** argv) {
       interpreted = std::strcmp(argv[++i], "interp") == 0;
   }
   const int reps = quick ? 1 : 3;
+  const IvyGrammar grammar = loadGrammar(interpreted);
   if (onlySeeds > 0) {
-    ivy(mesh, onlySeeds, reps, interpreted);
+    ivy(grammar, mesh, onlySeeds, reps);
     return 0;
   }
   atlas(mesh, reps);
   for (int seeds : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
     if (seeds > maxSeeds || (quick && seeds > 8)) break;
-    ivy(mesh, seeds, reps, interpreted);
+    ivy(grammar, mesh, seeds, reps);
   }
   return 0;
 }

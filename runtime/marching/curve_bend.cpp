@@ -55,16 +55,21 @@ CurveBend::CurveBend(const CurveSegment& curve, const std::array<double, 16>& un
   scopeChord_ = scopeFrame_.transpose() * chord_;
 }
 
-CurveBend::SectionMap CurveBend::sectionMap(double s) const {
-  if (length_ == 0) return {placement_.block<3, 3>(0, 0), placement_.block<3, 1>(0, 3), Mat3::Identity()};
+void CurveBend::curveAt(double s, Mat3& frame, Vec3& onCurve) const {
   const double x = std::clamp(s, 0.0, 1.0);
   const CurveFrame f = curveFrame(curve_, x);
+  frame.col(0) = f.tangent;
+  frame.col(1) = f.side;
+  frame.col(2) = f.up;
+  // Beyond an end, straight on along the end tangent (B is only followed on [0, 1]).
+  onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
+}
+
+CurveBend::SectionMap CurveBend::sectionMap(double s) const {
+  if (length_ == 0) return {placement_.block<3, 3>(0, 0), placement_.block<3, 1>(0, 3), Mat3::Identity()};
   SectionMap out;
-  out.frame.col(0) = f.tangent;
-  out.frame.col(1) = f.side;
-  out.frame.col(2) = f.up;
-  // Beyond an end, straight on along the end tangent, as section() does.
-  const Vec3 onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
+  Vec3 onCurve;
+  curveAt(s, out.frame, onCurve);
   out.linear = out.frame * scopeLinear_;
   out.offset = out.frame * (scopeOffset_ - s * scopeChord_) + onCurve;
   return out;
@@ -83,15 +88,9 @@ BendSection CurveBend::section(double s) const {
   BendSection out;
   out.s = s;
   if (length_ == 0) return out;
-  const double x = std::clamp(s, 0.0, 1.0);
-  const CurveFrame f = curveFrame(curve_, x);
-  Mat3 curveFrame;
-  curveFrame.col(0) = f.tangent;
-  curveFrame.col(1) = f.side;
-  curveFrame.col(2) = f.up;
-  out.rotation = curveFrame * scopeFrame_.transpose();
-  // Beyond an end, straight on along the end tangent (B is only followed on [0, 1]).
-  out.onCurve = s == x ? f.point : Vec3(f.point + (s - x) * bezierDerivative(curve_, x));
+  Mat3 frame;
+  curveAt(s, frame, out.onCurve);
+  out.rotation = frame * scopeFrame_.transpose();
   out.chordPoint = start_ + s * chord_;
   return out;
 }

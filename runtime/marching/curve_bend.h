@@ -97,6 +97,9 @@ class CurveBend {
   // chord. R(s) (M local - chord(s)) = frame(s) (scopeLinear_ local + scopeOffset_ - s scopeChord_).
   Mat3 scopeLinear_ = Mat3::Identity();
   Vec3 scopeOffset_ = Vec3::Zero(), scopeChord_ = Vec3::Zero();
+
+  // The curve's frame (tangent, side, up) and point at s, for section() and sectionMap().
+  void curveAt(double s, Mat3& frame, Vec3& onCurve) const;
 };
 
 // One-off convenience: the bent world position of the unit-box point `local`.
