@@ -42,7 +42,11 @@ bool makeTemplate(const ir::Module& m, const ir::ProgramLayout& layout, uint32_t
     const bool isSymbol = op.kind == ir::OpKind::Emit;
     t.keySalt.push_back(isSymbol ? rt::childSalt(ops[id].childIndex) : 0);
     t.keyMask.push_back(isSymbol ? ~uint64_t(0) : 0);
-    double* a = &*t.args.insert(t.args.end(), ops[id].argCount, 0.0);
+    // By index, not by the iterator insert returns: an op without arguments inserts
+    // nothing and that iterator is end(), which may not be dereferenced.
+    const size_t at = t.args.size();
+    t.args.resize(at + ops[id].argCount, 0.0);
+    double* a = t.args.data() + at;
     if (op.kind == ir::OpKind::Instance) continue;  // the owner has no parameters
     for (const ir::Expr& e : op.args) {
       store(e, a, isSymbol);

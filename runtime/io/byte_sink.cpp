@@ -23,6 +23,9 @@ void ByteSink::flushBuffer() {
 }
 
 void ByteSink::append(const void* data, size_t n) {
+  // Callers append empty spans with a null pointer (an empty vector's data()); memcpy
+  // may not be given one, even for zero bytes.
+  if (n == 0) return;
   const char* p = static_cast<const char*>(data);
   if (n <= size_t(end_ - cur_)) {
     std::memcpy(cur_, p, n);
