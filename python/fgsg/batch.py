@@ -1,5 +1,5 @@
 """World-sized jobs on Dask: `python -m fgsg.batch JOBS.json [--scheduler ADDRESS]
-[--workers N]`.
+[--workers N] [--dashboard]`.
 
 JOBS.json is a list of jobs (or {"jobs": [...]}); each job is an object
     {"grammar": "city.fgsg", "output": "out/lot-17.glb",        # required
@@ -12,14 +12,23 @@ cluster: an embedded LocalCluster (N worker processes, one thread each) unless
 --scheduler names a running scheduler. Each worker compiles a grammar once and keeps it.
 A job writes its .glb (atomically) and reports its figures; a job that fails reports its
 error (with the grammar's file:line:col) and the others go on. A job whose output exists
-is skipped, so a batch that was stopped resumes where it was. Dask retries the jobs of a
-worker that dies. The manifest, JOBS.manifest.json beside JOBS.json, lists every job's
-outcome; progress goes to stderr; the exit code is 0 when every job succeeded, else 1.
+and is whole (verify_output) is skipped, so a batch that was stopped resumes where it was;
+a damaged one (empty, a .glb whose header length is not the file's) is written again.
+Two jobs may not name one output. Dask retries the jobs of a worker that dies. The
+manifest, JOBS.manifest.json beside JOBS.json, lists every job's outcome; progress goes to
+stderr; the exit code is 0 when every job succeeded, 1 when one failed, 2 when nothing ran
+(a malformed JOBS file, a manifest that cannot be written).
+
+Every server of the embedded LocalCluster (scheduler, nannies, workers, their HTTP
+servers) listens on 127.0.0.1 only; the scheduler's dashboard and information pages are
+off unless --dashboard asks for them (then on 127.0.0.1, the address printed).
 """
 import argparse
 import functools
 import json
+import logging
 import os
+import struct
 import sys
 import tempfile
 import time
@@ -50,7 +59,97 @@ def load_jobs(path):
             if j.get(field):
                 j[field] = os.path.normpath(os.path.join(base, j[field]))
         out.append(j)
+    # Two jobs writing one file: one result would silently replace the other, and a
+    # resumed batch would skip both.
+    seen = {}
+    for j in out:
+        key = os.path.realpath(j["output"])
+        if key in seen:
+            raise ValueError(f"{path}: jobs {seen[key]['id']!r} and {j['id']!r} both write {j['output']}: "
+                             "give each job its own output")
+        seen[key] = j
     return out
+
+
+_GLB_MAGIC, _GLB_JSON, _GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
+_PLY_SIZES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort": 2, "int16": 2, "uint16": 2,
+              "int": 4, "uint": 4, "int32": 4, "uint32": 4, "float": 4, "float32": 4, "double": 8, "float64": 8}
+
+
+def verify_output(path):
+    """None when the file at `path` is a whole output as `Result.write` makes it, else why
+    not (a resumed batch writes such a file again instead of skipping its job): it must be
+    a regular, non-empty file; a .glb's header must say glTF 2 and its length and chunk
+    lengths must add up to the file's size; a .ply's header must end and its binary
+    records (triangles, as fgsg writes them) fill the rest; an .obj must end its last line."""
+    try:
+        if not os.path.isfile(path):
+            return "not a regular file"
+        size = os.path.getsize(path)
+        if size == 0:
+            return "the file is empty (0 bytes)"
+        ext = os.path.splitext(path)[1].lower()
+        with open(path, "rb") as f:
+            if ext == ".glb":
+                return _verify_glb(f, size)
+            if ext == ".ply":
+                return _verify_ply(f, size)
+            if ext == ".obj":
+                f.seek(size - 1)
+                return None if f.read(1) == b"\n" else "the last line is cut short (no newline at the end)"
+    except OSError as e:
+        return f"cannot read it ({e.strerror or e})"
+    return None
+
+
+def _verify_glb(f, size):
+    header = f.read(12)
+    if len(header) < 12:
+        return f"{size} bytes: shorter than a glTF header"
+    magic, version, length = struct.unpack("<III", header)
+    if magic != _GLB_MAGIC or version != 2:
+        return "not a binary glTF 2 file (its header)"
+    if length != size:
+        return f"the glTF header says {length} bytes, the file has {size}"
+    at, first = 12, True
+    while at < size:
+        chunk = f.read(8)
+        if len(chunk) < 8:
+            return f"a glTF chunk header is cut short at byte {at}"
+        chunk_length, chunk_type = struct.unpack("<II", chunk)
+        if first and chunk_type != _GLB_JSON:
+            return "the first glTF chunk is not its JSON"
+        if at + 8 + chunk_length > size:
+            return f"a glTF chunk of {chunk_length} bytes at byte {at} runs past the end"
+        at += 8 + chunk_length
+        f.seek(at)
+        first = False
+    return "a glTF file without its JSON chunk" if first else None
+
+
+def _verify_ply(f, size):
+    head = f.read(min(size, 1 << 16))
+    end = head.find(b"end_header\n")
+    if not head.startswith(b"ply\n") or end < 0:
+        return "not a PLY file with a whole header"
+    expected = end + len(b"end_header\n")
+    binary = False
+    elements = []  # [count, bytes per record]
+    for line in head[:end].decode("ascii", "replace").splitlines():
+        words = line.split()
+        if words[:1] == ["format"]:
+            binary = len(words) > 1 and words[1] != "ascii"
+        elif words[:1] == ["element"] and len(words) == 3 and words[2].isdigit():
+            elements.append([int(words[2]), 0])
+        elif words[:1] == ["property"] and elements:
+            if len(words) == 5 and words[1] == "list":  # fgsg writes triangles: a count and 3 indices
+                elements[-1][1] += _PLY_SIZES.get(words[2], 0) + 3 * _PLY_SIZES.get(words[3], 0)
+            elif len(words) == 3:
+                elements[-1][1] += _PLY_SIZES.get(words[1], 0)
+    if not binary:
+        return None
+    expected += sum(count * record for count, record in elements)
+    return None if expected == size else f"its header describes {expected} bytes, the file has {size}"
 
 
 @functools.lru_cache(maxsize=16)
@@ -81,25 +180,37 @@ def run_job(job):
     return outcome
 
 
-def run_batch(jobs, client, progress=None, on_result=None):
-    """Maps the jobs whose output does not exist yet over `client`'s cluster; returns the
-    outcomes in job order (skipped ones say so). `progress(done, total, failed)` and
-    `on_result(outcome)` are called as results arrive."""
+def run_batch(jobs, client, progress=None, on_result=None, on_damaged=None):
+    """Maps the jobs whose output is not there yet, or damaged (verify_output), over
+    `client`'s cluster; returns the outcomes in job order (skipped ones say so; a job run
+    again over a damaged output says why in "replaced"). `progress(done, total, failed)`
+    and `on_result(outcome)` are called as results arrive, `on_damaged(job, why)` before."""
     from distributed import as_completed
 
+    outputs = [os.path.realpath(job["output"]) for job in jobs]
+    if len(set(outputs)) != len(outputs):
+        raise ValueError("two jobs name one output (load_jobs says which)")
     outcomes = [None] * len(jobs)
     futures = {}
+    damaged = {}
     for i, job in enumerate(jobs):
-        if os.path.exists(job["output"]):
-            outcomes[i] = {"id": job["id"], "output": job["output"], "ok": True, "skipped": True}
-        else:
-            futures[client.submit(run_job, job, key=f"fgsg-job-{i}-{job['id']}", pure=False)] = i
+        if os.path.lexists(job["output"]):
+            why = verify_output(job["output"])
+            if why is None:
+                outcomes[i] = {"id": job["id"], "output": job["output"], "ok": True, "skipped": True}
+                continue
+            damaged[i] = why
+            if on_damaged:
+                on_damaged(job, why)
+        futures[client.submit(run_job, job, key=f"fgsg-job-{i}-{job['id']}", pure=False)] = i
     done = len(jobs) - len(futures)
     failed = 0
     if progress:
         progress(done, len(jobs), failed)
     for future in as_completed(futures):
         outcome = future.result()
+        if futures[future] in damaged:
+            outcome["replaced"] = damaged[futures[future]]
         outcomes[futures[future]] = outcome
         done += 1
         failed += not outcome["ok"]
@@ -110,13 +221,72 @@ def run_batch(jobs, client, progress=None, on_result=None):
     return outcomes
 
 
+def manifest_problem(path):
+    """None when the manifest can be written at `path`, else why not; asked before any
+    job runs, so that a batch does not run for nothing."""
+    folder = os.path.dirname(os.path.abspath(path))
+    if os.path.isdir(path):
+        return f"the manifest {path} is a directory: move it away (the manifest is a file)"
+    if os.path.lexists(path) and not os.path.isfile(path):
+        return f"the manifest {path} is not a regular file"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"cannot write the manifest {path}: its folder is not writable"
+    return None
+
+
 def write_manifest(path, outcomes):
-    """The outcomes as JSON, replacing `path` atomically."""
+    """The outcomes as JSON, replacing `path` atomically; no temporary file is left when
+    that fails."""
     folder = os.path.dirname(os.path.abspath(path))
     with tempfile.NamedTemporaryFile("w", dir=folder, delete=False, suffix=".tmp", encoding="utf-8") as f:
-        json.dump({"format": "fgsg-batch-manifest", "version": 1, "jobs": outcomes}, f, indent=1)
-        f.write("\n")
-    os.replace(f.name, path)
+        try:
+            json.dump({"format": "fgsg-batch-manifest", "version": 1, "jobs": outcomes}, f, indent=1)
+            f.write("\n")
+        except BaseException:
+            f.close()
+            os.unlink(f.name)
+            raise
+    try:
+        os.replace(f.name, path)
+    except BaseException:
+        os.unlink(f.name)
+        raise
+
+
+# The scheduler's HTTP routes without --dashboard: its health only (no information pages,
+# no JSON or Prometheus views of the cluster).
+_QUIET_ROUTES = {"distributed.scheduler.http.routes": ["distributed.http.health"],
+                 "distributed.worker.http.routes": ["distributed.http.health"]}
+
+
+def local_cluster(workers, dashboard=False):
+    """An embedded LocalCluster of `workers` processes of one thread each, whose servers
+    (scheduler, nannies, workers and every HTTP server) listen on 127.0.0.1 only; the
+    scheduler's dashboard and information pages only when `dashboard` (on 127.0.0.1:8787,
+    or a free port when that one is taken). The caller closes it."""
+    import dask
+    from distributed import LocalCluster
+    from distributed.worker_memory import parse_memory_limit
+
+    workers = max(1, workers)
+    # Left to itself each HTTP server binds every interface (dashboard_address ":0", and
+    # a worker's server without one).
+    quiet = {} if dashboard else _QUIET_ROUTES
+    with dask.config.set(quiet):  # the scheduler, made here
+        cluster = LocalCluster(n_workers=0, threads_per_worker=1, processes=True, host="127.0.0.1",
+                               dashboard_address="127.0.0.1:8787" if dashboard else "127.0.0.1:0",
+                               scheduler_kwargs={"dashboard": dashboard},
+                               worker_dashboard_address="127.0.0.1:0",
+                               memory_limit=parse_memory_limit("auto", 1, workers, logger=logging.getLogger("distributed.nanny")))
+    # The workers, made by scale(): a worker's own dashboard (bokeh pages) follows
+    # `dashboard` too; its HTTP server, which health checks use, stays on 127.0.0.1; the
+    # routes reach the worker processes through their nannies' config.
+    options = cluster.new_spec["options"]
+    options["dashboard"] = dashboard
+    if quiet:
+        options["config"] = dict(quiet)
+    cluster.scale(workers)
+    return cluster
 
 
 def main(argv=None):
@@ -126,14 +296,24 @@ def main(argv=None):
     parser.add_argument("--scheduler", help="a running dask scheduler, tcp://host:port (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 2,
                         help="LocalCluster worker processes (default: the cores)")
+    parser.add_argument("--dashboard", action="store_true",
+                        help="serve the LocalCluster's Dask dashboard on 127.0.0.1 (default: off)")
     args = parser.parse_args(argv)
+    if os.path.isdir(args.jobs):
+        print(f"fgsg batch: {args.jobs} is a directory, not a JOBS file", file=sys.stderr)
+        return 2
     try:
         jobs = load_jobs(args.jobs)
     except (OSError, ValueError) as e:
         print(f"fgsg batch: {e}", file=sys.stderr)
         return 2
+    manifest = os.path.splitext(args.jobs)[0] + ".manifest.json"
+    problem = manifest_problem(manifest)
+    if problem:
+        print(f"fgsg batch: {problem}; no job was run", file=sys.stderr)
+        return 2
 
-    from distributed import Client, LocalCluster
+    from distributed import Client
 
     def progress(done, total, failed):
         end = "\n" if done == total or not sys.stderr.isatty() else ""
@@ -144,17 +324,25 @@ def main(argv=None):
         client = Client(args.scheduler)
         cluster = None
     else:
-        cluster = LocalCluster(n_workers=max(1, args.workers), threads_per_worker=1, processes=True,
-                               dashboard_address=":0")
+        cluster = local_cluster(args.workers, dashboard=args.dashboard)
         client = Client(cluster)
+        if args.dashboard:
+            print(f"fgsg batch: dashboard at {cluster.dashboard_link}", file=sys.stderr)
+
+    def damaged(job, why):
+        print(f"fgsg batch: job {job['id']}: {job['output']} is damaged ({why}); running it again", file=sys.stderr)
+
     try:
-        outcomes = run_batch(jobs, client, progress=progress)
+        outcomes = run_batch(jobs, client, progress=progress, on_damaged=damaged)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
-    manifest = os.path.splitext(args.jobs)[0] + ".manifest.json"
-    write_manifest(manifest, outcomes)
+    try:
+        write_manifest(manifest, outcomes)
+    except OSError as e:
+        print(f"fgsg batch: cannot write the manifest {manifest}: {e}", file=sys.stderr)
+        return 2
     failures = [o for o in outcomes if not o["ok"]]
     for o in failures:
         print(f"fgsg batch: job {o['id']} failed: {o['error']}", file=sys.stderr)

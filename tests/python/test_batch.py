@@ -1,13 +1,18 @@
 """fgsg.batch on Dask (python/fgsg/batch.py): 32 jobs on a LocalCluster of 2 workers give
 the same bytes as run one after another; a rerun skips what exists; a failing job is
 reported with its location and the others succeed; the jobs of a worker killed mid-batch
-are retried and their outputs are the same."""
+are retried and their outputs are the same. Two jobs naming one output and a manifest that
+cannot be written are refused before anything runs; a damaged output (empty, cut short) is
+written again, not skipped; every server the batch starts listens on 127.0.0.1 only."""
 import json
 import os
 import signal
+import urllib.error
+import urllib.request
 
 import pytest
-from distributed import Client, LocalCluster
+import psutil
+from distributed import Client
 
 from fgsg import batch
 
@@ -24,7 +29,7 @@ def jobs_in(folder, count=32):
 
 @pytest.fixture(scope="module")
 def client():
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
+    with batch.local_cluster(2) as cluster:
         with Client(cluster) as c:
             yield c
 
@@ -128,3 +133,110 @@ def test_a_job_may_derive_lot_footprints(tmp_path):
     subprocess.run([os.environ["FGSG_BINARY"], "run", city, "--lots", lots, "--seed", "2", "-o",
                     str(tmp_path / "cli.glb"), "--quiet"], check=True)
     assert (tmp_path / "block.glb").read_bytes() == (tmp_path / "cli.glb").read_bytes()
+
+
+def test_two_jobs_naming_one_output_are_refused_before_any_runs(tmp_path, capsys):
+    jobs = [{"id": "a", "grammar": PLANT, "seed": 1, "output": "out/same.glb"},
+            {"id": "b", "grammar": PLANT, "seed": 2, "output": "out/./same.glb"},
+            {"id": "c", "grammar": PLANT, "seed": 3, "output": "out/c.glb"}]
+    (tmp_path / "jobs.json").write_text(json.dumps({"jobs": jobs}))
+    with pytest.raises(ValueError, match="jobs 'a' and 'b' both write"):
+        batch.load_jobs(str(tmp_path / "jobs.json"))
+    assert batch.main([str(tmp_path / "jobs.json"), "--workers", "1"]) == 2
+    assert "jobs 'a' and 'b' both write" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists() and not (tmp_path / "jobs.manifest.json").exists()
+
+
+def test_verify_output_tells_a_whole_file_from_a_damaged_one(tmp_path):
+    job = {"id": "p", "grammar": PLANT, "seed": 4, "attrs": {}}
+    for ext in (".glb", ".ply", ".obj"):
+        whole = tmp_path / ("whole" + ext)
+        assert batch.run_job(dict(job, output=str(whole)))["ok"]
+        assert batch.verify_output(str(whole)) is None
+        data = whole.read_bytes()
+        (tmp_path / ("empty" + ext)).write_bytes(b"")
+        assert "empty" in batch.verify_output(str(tmp_path / ("empty" + ext)))
+        (tmp_path / ("cut" + ext)).write_bytes(data[:-5])
+        assert batch.verify_output(str(tmp_path / ("cut" + ext))) is not None, ext
+    glb = (tmp_path / "whole.glb").read_bytes()
+    (tmp_path / "longer.glb").write_bytes(glb + b"\0" * 4)  # the header's length no longer the file's
+    assert "header says" in batch.verify_output(str(tmp_path / "longer.glb"))
+    (tmp_path / "text.glb").write_bytes(b"not a glb at all, but long enough")
+    assert "not a binary glTF" in batch.verify_output(str(tmp_path / "text.glb"))
+    os.mkdir(tmp_path / "folder.glb")
+    assert batch.verify_output(str(tmp_path / "folder.glb")) == "not a regular file"
+
+
+def test_a_damaged_output_is_written_again_not_skipped(tmp_path, client):
+    jobs = jobs_in(tmp_path / "out", 4)
+    assert all(o["ok"] for o in batch.run_batch(jobs, client))
+    reference = [open(j["output"], "rb").read() for j in jobs]
+    open(jobs[1]["output"], "wb").close()                      # 0 bytes
+    with open(jobs[2]["output"], "r+b") as f:                   # cut short
+        f.truncate(len(reference[2]) // 2)
+    damaged = []
+    outcomes = batch.run_batch(jobs, client, on_damaged=lambda job, why: damaged.append(job["id"]))
+    assert damaged == [jobs[1]["id"], jobs[2]["id"]]
+    assert [bool(o.get("skipped")) for o in outcomes] == [True, False, False, True]
+    assert "empty" in outcomes[1]["replaced"] and "header says" in outcomes[2]["replaced"]
+    assert all(o["ok"] for o in outcomes)
+    assert [open(j["output"], "rb").read() for j in jobs] == reference
+
+
+def test_a_manifest_that_is_a_directory_is_refused_before_any_job_runs(tmp_path, capsys):
+    (tmp_path / "jobs.json").write_text(json.dumps([{"grammar": PLANT, "output": "out/a.glb"}]))
+    os.mkdir(tmp_path / "jobs.manifest.json")
+    assert batch.main([str(tmp_path / "jobs.json"), "--workers", "1"]) == 2
+    assert "is a directory" in capsys.readouterr().err
+    assert sorted(os.listdir(tmp_path)) == ["jobs.json", "jobs.manifest.json"]  # no output, no temp file
+    assert os.listdir(tmp_path / "jobs.manifest.json") == []
+    # The JOBS path itself a directory: a usage error, not a traceback.
+    assert batch.main([str(tmp_path / "jobs.manifest.json")]) == 2
+    assert "is a directory" in capsys.readouterr().err
+
+
+def listening(process):
+    """(pid, ip, port) of every listening TCP socket of `process` and its descendants."""
+    found = []
+    for p in [process] + process.children(recursive=True):
+        try:
+            found += [(p.pid, c.laddr.ip, c.laddr.port) for c in p.connections(kind="inet")
+                      if c.status == psutil.CONN_LISTEN]
+        except psutil.NoSuchProcess:
+            pass
+    return found
+
+
+def status_of(url):
+    try:
+        return urllib.request.urlopen(url, timeout=10).status
+    except urllib.error.HTTPError as e:
+        return e.code
+
+
+def test_every_server_of_a_batch_listens_on_127_0_0_1_and_the_dashboard_is_off(tmp_path, monkeypatch):
+    seen = []
+    run_batch = batch.run_batch
+
+    def run_and_look(jobs, client, **kw):  # while `fgsg batch` runs: its cluster is up
+        client.wait_for_workers(2)
+        seen.append(listening(psutil.Process()))
+        return run_batch(jobs, client, **kw)
+
+    monkeypatch.setattr(batch, "run_batch", run_and_look)
+    (tmp_path / "jobs.json").write_text(json.dumps([{"grammar": PLANT, "output": "a.glb"}]))
+    assert batch.main([str(tmp_path / "jobs.json"), "--workers", "2"]) == 0
+    sockets = seen[0]
+    # Scheduler (comm and HTTP), two nannies, two workers (comm and HTTP each).
+    assert len(sockets) >= 7, sockets
+    assert {ip for _, ip, _ in sockets} == {"127.0.0.1"}, sockets
+    # The information pages are off; the HTTP server only answers health checks.
+    with batch.local_cluster(1) as cluster:
+        port = cluster.scheduler.http_server.port
+        assert status_of(f"http://127.0.0.1:{port}/health") == 200
+        assert status_of(f"http://127.0.0.1:{port}/info/main/workers.html") == 404
+    with batch.local_cluster(1, dashboard=True) as cluster, Client(cluster) as c:
+        c.wait_for_workers(1)
+        assert {ip for _, ip, _ in listening(psutil.Process())} == {"127.0.0.1"}
+        port = cluster.scheduler.http_server.port
+        assert status_of(f"http://127.0.0.1:{port}/info/main/workers.html") == 200
