@@ -18,6 +18,18 @@ namespace {
 
 constexpr size_t kMaxModuleBytes = 16u << 20;  // a grammar module, not a data file
 constexpr int kMaxImportDepth = 64;
+// Rules and declarations all of a grammar's imports may bring in, copies included: about
+// a hundred times the whole standard library. Each alias path is a copy of its own (its
+// names and attrs are its own), so a module imported twice by each of 25 others in a
+// chain is 2^25 copies; past this the import is an error instead of hours of copying.
+constexpr uint64_t kMaxImportedItems = 1u << 16;
+
+uint64_t saturatingAdd(uint64_t a, uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
+
+// What a module brings into its importer itself: counted against kMaxImportedItems.
+uint64_t ownItems(const Program& m) {
+  return m.values.size() + m.fields.size() + m.textures.size() + m.tilesets.size() + m.rules.size();
+}
 
 std::string withExtension(const std::string& written) {
   return fs::path(written).has_extension() ? written : written + ".fgsg";
@@ -199,11 +211,14 @@ class Importer {
   }
 
   // The module an import names, from the grammar's text (a compiled library) or read now.
-  const SourceFile::Module* module(const ImportDecl& d, const std::string& importer) {
+  // Quietly (`report` false): nullptr for one that cannot be found or read, reported when
+  // it is imported.
+  const SourceFile::Module* module(const ImportDecl& d, const std::string& importer, bool report = true) {
     for (const auto& m : file_.modules)
       if (m.importer == importer && m.written == d.path) return &m;
     std::vector<std::string> tried;
     const std::string key = locate(d.path, importer, tried);
+    if (key.empty() && !report) return nullptr;
     if (key.empty()) {
       std::string list;
       for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t;
@@ -213,12 +228,64 @@ class Importer {
     }
     std::string text, error;  // a grammar, not a data file: a cap of its own
     if (!rt::io::readInputFile(key, "a grammar module", text, error, kMaxModuleBytes)) {
-      diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "': " + error);
+      if (report) diags_.error("E060", d.pathRange, "cannot read the module '" + d.path + "': " + error);
       return nullptr;
     }
     std::string shown = d.path.rfind("std/", 0) == 0 ? withExtension(d.path) : key;
     file_.addModule({key, shown, importer, d.path, std::move(text), 0});
     return &file_.modules.back();
+  }
+
+  // A module with everything it imports, as importing it once would copy it: its rules
+  // and declarations, and how many copies of each module that is (itself once).
+  struct Extent {
+    uint64_t items = 0;
+    std::map<std::string, uint64_t> copies;  // module key -> copies
+  };
+
+  // Found once per module, before any copy is made: each module is parsed once here, its
+  // imports' extents added up (a cycle or a missing module counts nothing: importing it
+  // reports it).
+  const Extent& extent(const SourceFile::Module& m) {
+    if (const auto known = extents_.find(m.key); known != extents_.end()) return known->second;
+    Extent e;
+    e.copies[m.key] = 1;
+    Program mod;
+    Diagnostics quiet(&file_);  // its errors are reported when it is imported
+    const std::string key = m.key;  // `m` may move as modules are added
+    if (parseText(m.name, m.text, mod, quiet)) {
+      e.items = ownItems(mod);
+      measuring_.insert(key);
+      for (const ImportDecl& d : mod.imports) {
+        const SourceFile::Module* child = module(d, key, false);
+        if (!child || measuring_.count(child->key)) continue;
+        const Extent& c = extent(*child);
+        e.items = saturatingAdd(e.items, c.items);
+        for (const auto& [k, n] : c.copies) e.copies[k] = saturatingAdd(e.copies[k], n);
+      }
+      measuring_.erase(key);
+    }
+    return extents_[key] = std::move(e);
+  }
+
+  // E065: importing `m` at `d` would copy more than kMaxImportedItems rules and
+  // declarations into the grammar; says which module is copied how often.
+  void tooLarge(const ImportDecl& d, const Extent& e) {
+    auto number = [](uint64_t n) { return n == UINT64_MAX ? std::string("more than 10^19") : std::to_string(n); };
+    std::string worst;
+    uint64_t most = 1;
+    for (const auto& [k, n] : e.copies)
+      if (n > most) most = n, worst = fs::path(k).filename().string();
+    std::string why = "'" + d.path + "' with all it imports is " + number(e.items) + " rules and declarations";
+    if (imported_ > 0) why += ", after " + std::to_string(imported_) + " imported before";
+    diags_.error("E065", d.pathRange,
+                 "importing " + why + ": more than the " + std::to_string(kMaxImportedItems) +
+                     " a grammar may import" +
+                     (most > 1 ? "; '" + worst + "' is copied " + number(most) +
+                                     " times, once for each chain of imports that reaches it (a module "
+                                     "imported under two names is two copies, with all it imports): "
+                                     "import it once, and pass what differs as parameters"
+                               : std::string()));
   }
 
   // Merges every module `program` (the file `key`) imports into it.
@@ -259,11 +326,17 @@ class Importer {
         diags_.error("E061", d.pathRange, "imports nest deeper than " + std::to_string(kMaxImportDepth));
         continue;
       }
+      if (const Extent& e = extent(*m); saturatingAdd(imported_, e.items) > kMaxImportedItems) {
+        tooLarge(d, e);
+        continue;
+      }
+      m = module(d, key);  // extent() may have added modules: `m` may have moved
       Program mod;
       // Blank lines before its text put its tokens on its own lines of the whole.
       const std::string text = std::string(size_t(m->firstLine - 1), '\n') + m->text;
       const std::string moduleName = m->name;
       if (!parseText(moduleName, text, mod, diags_)) continue;
+      imported_ += ownItems(mod);
       stack_.push_back(mKey);
       sites_.push_back(d.pathRange);
       importAll(mod, mKey, depth + 1);
@@ -355,6 +428,9 @@ class Importer {
   const ImportSearch& search_;
   std::vector<std::string> stack_;  // the modules being imported, outermost first
   std::vector<SourceRange> sites_;  // the import that brought each in (the grammar: none)
+  std::map<std::string, Extent> extents_;  // by module key
+  std::set<std::string> measuring_;        // modules whose extent is being found (cycles)
+  uint64_t imported_ = 0;                  // rules and declarations imported so far
 };
 
 }  // namespace
