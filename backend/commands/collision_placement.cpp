@@ -56,7 +56,25 @@ bool CollisionPlacement::fits(uint32_t asset, const rt::Mat4& transform, const r
 
 void CollisionPlacement::placed(const rt::Scope& scope) {
   const rt::Instance& inst = out_.instances.back();
-  world_.add(mesh(inst.asset), transformOf(inst));
+  if (out_.assets[inst.asset] == rt::kOwnGeometryAsset) {
+    // A shape's own geometry (a CGA leaf, a turtle polygon) is an obstacle like any
+    // asset: its mesh, out_.geometries.back() (Derivation::outputLeaf, placePolygon),
+    // is one of a kind, registered in world coordinates.
+    rt::Mesh world = out_.geometries.back();
+    const rt::Mat4 t = transformOf(inst);
+    for (size_t v = 0; v < world.vertexCount(); ++v) {
+      float* p = &world.positions[3 * v];
+      const rt::Vec3 q = (t * Eigen::Vector4d(p[0], p[1], p[2], 1.0)).head<3>();
+      for (int d = 0; d < 3; ++d) p[d] = float(q[d]);
+    }
+    if (world.normals.size() != world.positions.size()) world.computeNormals();
+    std::array<double, 16> unitBoxToWorld;
+    const int id = assets_.addGenerated(std::string(rt::kOwnGeometryAsset) + " " + std::to_string(out_.instances.size()),
+                                        world, unitBoxToWorld);
+    world_.add(id, Eigen::Map<const rt::Mat4>(unitBoxToWorld.data()));
+  } else {
+    world_.add(mesh(inst.asset), transformOf(inst));
+  }
   if (alongSurface_) placedFrom_.push_back(scope);  // only geodesic distances read it
 }
 

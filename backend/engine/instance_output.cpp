@@ -169,16 +169,17 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
   rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
   if (mesh.indices.empty()) return;  // an edge, a point
   if (projection) rt::cga::projectTexcoords(mesh, st.scope, *projection);
+  // The mesh goes first: a collision world reads it as it records the instance.
+  out_.geometries.push_back(std::move(mesh));
   const size_t before = out_.instances.size();
   placeInstance(ownGeometryAsset_, st.scope, symbol, params, slots, loc);
-  if (out_.instances.size() == before) return;
+  if (out_.instances.size() == before) return out_.geometries.pop_back();
   rt::Instance& inst = out_.instances.back();
-  inst.geometry = static_cast<uint32_t>(out_.geometries.size());
+  inst.geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
   if (projection) {
     inst.texture = projection->texture;
     if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
-  out_.geometries.push_back(std::move(mesh));
 }
 
 void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::Scope& turtle, ir::Loc loc) {
@@ -195,11 +196,11 @@ void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::S
   rt::Scope box;
   box.colored = turtle.colored;
   box.color = turtle.color;
+  out_.geometries.push_back(std::move(mesh));  // first, as in outputLeaf
   const size_t before = out_.instances.size();
   placeInstance(ownGeometryAsset_, box, polygonSymbol_, nullptr, 0, loc);
-  if (out_.instances.size() == before) return;
-  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size());
-  out_.geometries.push_back(std::move(mesh));
+  if (out_.instances.size() == before) return out_.geometries.pop_back();
+  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
 }
 
 // Smooth terminals are bent along their march segment's curve (Buron et al. §6), known
