@@ -1,5 +1,6 @@
 #include "runtime/io/output_transaction.h"
 
+#include "runtime/io/stale_temps.h"
 #include "runtime/io/temp_cleanup.h"
 
 #include <algorithm>
@@ -82,6 +83,8 @@ bool OutputTransaction::stageWith(const std::string& path,
     error = describe("replace", path, EISDIR);
     return false;
   }
+  // What killed runs left for this target goes first (a 1 GiB temporary each).
+  removeStaleTemps(path);
   // Beside the target: rename is atomic only within one file system.
   std::string temp;
   // Terminating signals wait until the new temporary is registered for removal.
@@ -89,8 +92,10 @@ bool OutputTransaction::stageWith(const std::string& path,
   sigemptyset(&terminating);
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&terminating, sig);
   ::pthread_sigmask(SIG_BLOCK, &terminating, &previous);
-  const int fd = createUniqueFile(path + ".tmp.", temp);
+  const int fd = createUniqueFile(path + kTempInfix, temp);
   const int createErrno = errno;
+  // In use while this process lives (a file system without locks: never taken for stale).
+  if (fd >= 0) lockTempInUse(fd);
   const int slot = fd >= 0 ? registerTempForCleanup(temp.c_str()) : -1;
   ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   if (fd < 0) {
@@ -128,8 +133,13 @@ bool OutputTransaction::stageWith(const std::string& path,
     ::close(fd);
     return fail("write", err);
   }
-  if (::close(fd) != 0) return fail("write", errno);
-  staged_.push_back({path, temp, slot});
+  try {
+    staged_.push_back({path, temp, slot, fd});
+  } catch (...) {
+    ::close(fd);
+    fail("write", ENOMEM);
+    throw;
+  }
   return true;
 }
 
@@ -143,6 +153,8 @@ bool OutputTransaction::commit(std::string& error) {
       return false;
     }
     releaseTempCleanup(s.cleanupSlot);
+    ::close(s.fd);  // the lock goes with it; the name is the target's now
+    s.fd = -1;
   }
   staged_.clear();
   return true;
@@ -152,6 +164,7 @@ void OutputTransaction::abandon() {
   for (const Staged& s : staged_) {
     ::unlink(s.temp.c_str());
     releaseTempCleanup(s.cleanupSlot);
+    if (s.fd >= 0) ::close(s.fd);
   }
   staged_.clear();
 }

@@ -4,7 +4,9 @@
 // every write checked and the file fsync'ed; only when every output is staged does
 // commit() rename them over their targets. Until then the targets are untouched; the
 // temporaries are removed on any error, when the transaction is dropped, and on SIGINT,
-// SIGTERM or SIGHUP (runtime/io/temp_cleanup.h).
+// SIGTERM or SIGHUP (runtime/io/temp_cleanup.h). Each temporary stays open and locked
+// until it is renamed or removed, and staging an output first removes the temporaries
+// that dead processes left for the same target (runtime/io/stale_temps.h).
 #pragma once
 
 #include "runtime/io/byte_sink.h"
@@ -47,6 +49,7 @@ class OutputTransaction {
   struct Staged {
     std::string target, temp;
     int cleanupSlot = -1;
+    int fd = -1;  // open, holding the in-use lock, until renamed or removed
   };
   std::vector<Staged> staged_;
 
