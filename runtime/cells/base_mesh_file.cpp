@@ -1,6 +1,7 @@
 // Reading an annotated base mesh from OBJ (base_mesh_file.h).
 #include "runtime/cells/base_mesh_file.h"
 
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 #include "runtime/surface/load_surface.h"
 
@@ -69,7 +70,7 @@ LabelledMesh parseBaseMeshObj(std::string_view text, const std::string& name) {
         const std::string_view t = token(rest);
         if (t.empty()) fail(name, lineNo, "'v' needs three coordinates");
         if (!parseWhole(t, p[k]) || !std::isfinite(p[k]))
-          fail(name, lineNo, "'" + std::string(t) + "' is not a finite number");
+          fail(name, lineNo, io::quoteText(t) + " is not a finite number");
       }
       raw.push_back(p);
       weldedOf.push_back(-1);
@@ -88,7 +89,7 @@ LabelledMesh parseBaseMeshObj(std::string_view text, const std::string& name) {
           ok = parts < 2 && (p.empty() || parseWhole(p, ignored));
           more.remove_prefix(p.size());
         }
-        if (!ok) fail(name, lineNo, "'" + std::string(t) + "' is not a face corner (i, i/t, i//n or i/t/n)");
+        if (!ok) fail(name, lineNo, io::quoteText(t) + " is not a face corner (i, i/t, i//n or i/t/n)");
         const long long n = (long long)raw.size(), at = i < 0 ? n + i : i - 1;
         if (at < 0 || at >= n)
           fail(name, lineNo, "vertex index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
@@ -119,7 +120,7 @@ LabelledMesh parseBaseMeshObj(std::string_view text, const std::string& name) {
         out.triangleGroup.push_back(it->second);
       }
     } else {
-      fail(name, lineNo, "unknown statement '" + std::string(kw) + "'");
+      fail(name, lineNo, "unknown statement " + io::quoteText(kw));
     }
   }
   if (m.faces.empty()) throw std::runtime_error(name + ": the file has no faces");

@@ -1,6 +1,7 @@
 #include "runtime/field/field_file.h"
 
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 
 #include <cctype>
@@ -97,30 +98,30 @@ bool parseField(std::string_view text, const std::string& name,
         return false;
       }
       if (w[1] != "1") {
-        error = at(name, lineNumber) + "unsupported version '" + std::string(w[1]) +
-                "' (this reader knows " + std::to_string(kVersion) + ")";
+        error = at(name, lineNumber) + "unsupported version " + io::quoteText(w[1]) +
+                " (this reader knows " + std::to_string(kVersion) + ")";
         return false;
       }
       if (w[2] != "vector" && w[2] != "tensor" && w[2] != "asymmetric") {
-        error = at(name, lineNumber) + "expected 'vector', 'tensor' or 'asymmetric', got '" +
-                std::string(w[2]) + "'" + (w[2] == "scalar" ? " (a scalar field is read by `scalar(\"...\")`)" : "");
+        error = at(name, lineNumber) + "expected 'vector', 'tensor' or 'asymmetric', got " +
+                io::quoteText(w[2]) + (w[2] == "scalar" ? " (a scalar field is read by `scalar(\"...\")`)" : "");
         return false;
       }
       kind = w[2] == "vector" ? FileKind::Vector : w[2] == "tensor" ? FileKind::Tensor : FileKind::Asymmetric;
       tensor = kind != FileKind::Vector;
       if (!parseNumber(w[3], count) || count < 0 || count != std::floor(count)) {
-        error = at(name, lineNumber) + "expected a vertex count, got '" + std::string(w[3]) + "'";
+        error = at(name, lineNumber) + "expected a vertex count, got " + io::quoteText(w[3]);
         return false;
       }
       if (size_t(count) != nv) {
-        error = at(name, lineNumber) + "the field has " + std::string(w[3]) +
+        error = at(name, lineNumber) + "the field has " + number(count) +
                 " vertices, the surface " + std::to_string(nv);
         return false;
       }
       if (w.size() == 5) {
         if (w[4] != "world" && w[4] != "frame") {
-          error = at(name, lineNumber) + "expected 'world' or 'frame', got '" +
-                  std::string(w[4]) + "'";
+          error = at(name, lineNumber) + "expected 'world' or 'frame', got " +
+                  io::quoteText(w[4]);
           return false;
         }
         coordinates = w[4] == "world" ? FieldCoordinates::World : FieldCoordinates::Frame;
@@ -146,12 +147,12 @@ bool parseField(std::string_view text, const std::string& name,
     double x[9];
     for (int i = 0; i < perLine; ++i) {
       if (!parseNumber(w[i], x[i])) {
-        error = at(name, lineNumber) + "'" + std::string(w[i]) + "' is not a number";
+        error = at(name, lineNumber) + io::quoteText(w[i]) + " is not a number";
         return false;
       }
       if (!std::isfinite(x[i])) {
         error = at(name, lineNumber) + "value " + std::to_string(i + 1) + " is not finite (" +
-                std::string(w[i]) + ")";
+                io::clipText(w[i]) + ")";
         return false;
       }
     }
@@ -233,7 +234,7 @@ bool parseScalarField(std::string_view text, const std::string& name, size_t ver
         return false;
       }
       if (size_t(count) != vertexCount) {
-        error = at(name, lineNumber) + "the field has " + std::string(w[3]) + " vertices, the surface " +
+        error = at(name, lineNumber) + "the field has " + number(count) + " vertices, the surface " +
                 std::to_string(vertexCount);
         return false;
       }
@@ -243,12 +244,12 @@ bool parseScalarField(std::string_view text, const std::string& name, size_t ver
     }
     double v = 0;
     if (w.size() != 1 || !parseNumber(w[0], v)) {
-      error = at(name, lineNumber) + "expected one number, got '" + std::string(w[0]) + "'" +
+      error = at(name, lineNumber) + "expected one number, got " + io::quoteText(w[0]) +
               (w.size() > 1 ? " and " + std::to_string(w.size() - 1) + " more" : "");
       return false;
     }
     if (!std::isfinite(v)) {
-      error = at(name, lineNumber) + "the value is not finite (" + std::string(w[0]) + ")";
+      error = at(name, lineNumber) + "the value is not finite (" + io::clipText(w[0]) + ")";
       return false;
     }
     if (out.values.size() == vertexCount) {

@@ -1,5 +1,7 @@
 #include "runtime/io/check_ply.h"
 
+#include "runtime/io/quoted_text.h"
+
 #include <charconv>
 #include <cstdio>
 #include <cstdint>
@@ -116,8 +118,8 @@ bool checkPlyStructure(const std::string& path, std::string_view bytes, std::str
       const auto [p, ec] =
           std::from_chars(tokens[2].data(), tokens[2].data() + tokens[2].size(), e.count);
       if (ec != std::errc() || p != tokens[2].data() + tokens[2].size() || e.count < 0) {
-        error = at(line) + "element '" + e.name + "' has the count '" + std::string(tokens[2]) +
-                "' (not a whole number of at least 0)";
+        error = at(line) + "element '" + e.name + "' has the count " + quoteText(tokens[2]) +
+                " (not a whole number of at least 0)";
         return false;
       }
       elements.push_back(std::move(e));
@@ -215,8 +217,8 @@ bool checkPlyStructure(const std::string& path, std::string_view bytes, std::str
           if (ec != std::errc() || q != t.data() + t.size() || n < 0 ||
               (long double)n * 2 > (long double)(bytes.size() - p) + 1) {
             error = path + ": " + e.name + " element " + std::to_string(i) + " has a '" +
-                    prop.name + "' list of '" + std::string(t) +
-                    "' items (not a whole number the rest of the file can hold)";
+                    prop.name + "' list of " + quoteText(t) +
+                    " items (not a whole number the rest of the file can hold)";
             return false;
           }
           for (long long k = 0; k < n; ++k)

@@ -2,6 +2,7 @@
 
 #include "runtime/io/check_ply.h"
 #include "runtime/io/openmesh_quiet.h"
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/read_off.h"
 
@@ -116,8 +117,8 @@ bool checkObjFaces(const std::string& path, std::string_view bytes, std::string&
     while (tokens >> corner) {
       const size_t sign = corner[0] == '-';
       if (corner.size() <= sign || !std::isdigit(static_cast<unsigned char>(corner[sign]))) {
-        error = path + ":" + std::to_string(lineNo) + ": face corner '" + corner +
-                "' names no vertex (a corner is v, v/vt, v//vn or v/vt/vn)";
+        error = path + ":" + std::to_string(lineNo) + ": face corner " + quoteText(corner) +
+                " names no vertex (a corner is v, v/vt, v//vn or v/vt/vn)";
         return false;
       }
     }
@@ -229,8 +230,8 @@ bool findNonFiniteText(const std::string& path, const std::string& ext, std::str
       const size_t sign = lower[0] == '-' || lower[0] == '+';
       if (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0) {
         error = path + ":" + std::to_string(lineNo) + ": " +
-                (obj && first == "vt" ? "texture" : "vertex") + " coordinate '" + t +
-                "' is not a finite number";
+                (obj && first == "vt" ? "texture" : "vertex") + " coordinate " + quoteText(t) +
+                " is not a finite number";
         return false;
       }
     }

@@ -1,5 +1,7 @@
 #include "runtime/io/read_off.h"
 
+#include "runtime/io/quoted_text.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -89,7 +91,7 @@ bool parseOff(const std::string& path, std::string_view text, MeshFileContent& o
     error = at(lines.line() ? lines.line() : 1) +
             "cannot read the file: it does not start with an OFF keyword (OFF, COFF, NOFF, "
             "4OFF, ...)" +
-            (tokens.empty() ? std::string() : ", found '" + std::string(tokens[0]) + "'");
+            (tokens.empty() ? std::string() : ", found " + quoteText(tokens[0]));
     return false;
   }
   size_t next = 1;  // the counts may follow the keyword on its line
@@ -129,8 +131,8 @@ bool parseOff(const std::string& path, std::string_view text, MeshFileContent& o
     }
     const std::string_view t = tokens[next + i];
     if (!parseInteger(t, counts[i])) {
-      error = at(countLine) + "the " + countName[i] + " count '" + std::string(t) +
-              "' is not a whole number";
+      error = at(countLine) + "the " + countName[i] + " count " + quoteText(t) +
+              " is not a whole number";
       return false;
     }
     if (counts[i] < 0) {
@@ -168,12 +170,12 @@ bool parseOff(const std::string& path, std::string_view text, MeshFileContent& o
       double value = 0;
       const std::string_view t = tokens[size_t(c)];
       if (!parseNumber(t, value)) {
-        error = at(lines.line()) + "vertex coordinate '" + std::string(t) + "' is not a number";
+        error = at(lines.line()) + "vertex coordinate " + quoteText(t) + " is not a number";
         return false;
       }
       if (!std::isfinite(value)) {
-        error = at(lines.line()) + "vertex coordinate '" + std::string(t) +
-                "' is not a finite number";
+        error = at(lines.line()) + "vertex coordinate " + quoteText(t) +
+                " is not a finite number";
         return false;
       }
       if (c < 3) x[c] = value;

@@ -1,5 +1,6 @@
 #include "runtime/io/seed_points.h"
 
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 
 #include <cmath>
@@ -65,7 +66,7 @@ bool readSeedPoints(const std::string& spec, std::vector<DeriveOptions::Seed>& s
     if (!line.empty() && line.back() == '\r') line.pop_back();
     DeriveOptions::Seed seed;
     if (!parseSeed(line, seed)) {
-      error = spec + ":" + std::to_string(number) + ": expected a seed \"x y z\" or \"x y z dx dy dz\" (a non-zero heading), got '" + line + "'";
+      error = spec + ":" + std::to_string(number) + ": expected a seed \"x y z\" or \"x y z dx dy dz\" (a non-zero heading), got " + quoteText(line);
       return false;
     }
     if (seeds.size() == kMaxSeeds) {
