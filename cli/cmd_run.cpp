@@ -11,6 +11,7 @@
 #include "cli/progress_line.h"
 #include "runtime/io/read_lots.h"
 #include "runtime/io/seed_points.h"
+#include "runtime/abandonable.h"
 #include "runtime/assemble.h"
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
@@ -303,8 +304,9 @@ int runCommand(const Args& args) {
   auto loader = std::make_unique<backend::native::CodeLoader>();
   const int code = run(args, *loader);
   loader.reset();
-  if (backend::native::abandonedCompiles() > 0) {
-    // A background compile still runs LLVM: end without destroying its static objects.
+  if (backend::native::abandonedCompiles() > 0 || rt::abandonedWorkers() > 0) {
+    // A background compile still runs LLVM, or a worker abandoned at --max-seconds still
+    // runs CGAL (runtime/abandonable.h): end without destroying their static objects.
     std::cout.flush();
     std::cerr.flush();
     std::fflush(nullptr);

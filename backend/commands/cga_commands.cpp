@@ -8,6 +8,19 @@
 
 namespace fgsg::backend {
 
+// A straight skeleton that --max-seconds abandoned ends the derivation with R004, as the
+// time limit does everywhere.
+namespace {
+template <class Op>
+bool skeletonWithin(Derivation& d, Op op) {
+  try {
+    return op();
+  } catch (const rt::TimeLimitReached&) {
+    throw d.timeLimit();
+  }
+}
+}  // namespace
+
 std::vector<ir::OpKind> CgaCommands::kinds() const {
   using K = ir::OpKind;
   return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Offset, K::Roof};
@@ -46,7 +59,10 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
         (d_.module().strings[op.partLabels[k]] == "inside" ? insideBodies : borderBodies).push_back(k);
       std::vector<rt::cga::Part> inside, border;
       std::string error;
-      if (!rt::cga::offset(st.scope, st.geom, a[0], !borderBodies.empty(), d_.arena(), inside, border, error))
+      if (!skeletonWithin(d_, [&] {
+            return rt::cga::offset(st.scope, st.geom, a[0], !borderBodies.empty(), d_.arena(), inside, border, error,
+                                   &d_.deadline());
+          }))
         throw DeriveError{op.loc, "R002", error};
       for (const auto& [pieces, bodies] : {std::pair{&inside, &insideBodies}, std::pair{&border, &borderBodies}})
         for (const rt::cga::Part& piece : *pieces)
@@ -59,7 +75,10 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
     case ir::OpKind::Roof: {
       rt::cga::Part part;
       std::string error;
-      if (!rt::cga::roof(st.scope, st.geom, d_.module().strings[op.str], a[0], d_.arena(), part, error))
+      if (!skeletonWithin(d_, [&] {
+            return rt::cga::roof(st.scope, st.geom, d_.module().strings[op.str], a[0], d_.arena(), part, error,
+                                 &d_.deadline());
+          }))
         throw DeriveError{op.loc, "R002", error};
       d_.runBody(op, 0, part.scope, part.geom, st, ex, f);
       break;

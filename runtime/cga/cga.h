@@ -4,6 +4,7 @@
 // that cannot fit, an unknown selector) come back as text in `error`, never thrown.
 #pragma once
 
+#include "runtime/deadline.h"
 #include "runtime/geometry.h"
 #include "runtime/mesh.h"
 #include "runtime/scope.h"
@@ -98,8 +99,11 @@ bool footprint(const Scope& scope, const std::vector<Eigen::Vector2d>& outer,
 // vanishes — and, `wantBorder`, the band between: the polygon with the inside pieces as
 // holes (joined by bridges) and, around a courtyard, the band between each inside
 // piece's hole and the polygon's holes within it. Every part keeps the polygon's scope.
+// `deadline` (--max-seconds): rt::TimeLimitReached when it passes while the skeleton is
+// built (CGAL's, which takes time as the cube of the corners and cannot be interrupted).
 bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantBorder, GeometryArena& arena,
-            std::vector<Part>& inside, std::vector<Part>& border, std::string& error);
+            std::vector<Part>& inside, std::vector<Part>& border, std::string& error,
+            const Deadline* deadline = nullptr);
 
 // Roof("hipped" | "gable" | "pyramid" | "shed", angle): a roof solid on the footprint the
 // scope stands on: a box's XZ rectangle at its base (the ridge along the longer side, the
@@ -107,9 +111,10 @@ bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantB
 // or a solid's flat bottom face, roofed by the straight skeleton so every sloped face of
 // a hipped roof tilts by `angle` (runtime/cga/skeleton_roof.h). The result's scope spans
 // the roof (sy = its height) and its geometry is a Polyhedron whose sloped faces are side
-// faces for Comp, whose ridge is a top edge and whose hips are side edges.
+// faces for Comp, whose ridge is a top edge and whose hips are side edges. `deadline`
+// as for offset.
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, double angleDeg,
-          GeometryArena& arena, Part& out, std::string& error);
+          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline = nullptr);
 
 // A shape's own surface as world polygons, each counter-clockwise seen from outside: a
 // flat shape (a Polygon, or a Box with no depth) is its one face, looking along the scope

@@ -3,6 +3,7 @@
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/skeleton_roof.h"
+#include "runtime/abandonable.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -62,7 +63,7 @@ bool store(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>
 }  // namespace
 
 bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantBorder, GeometryArena& arena,
-            std::vector<Part>& inside, std::vector<Part>& border, std::string& error) {
+            std::vector<Part>& inside, std::vector<Part>& border, std::string& error, const Deadline* deadline) {
   inside.clear();
   border.clear();
   if (!(distance > 0.0) || !std::isfinite(distance)) {
@@ -90,7 +91,11 @@ bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantB
   PolygonWithHoles2 shape(toCgal(rings[0], planar.S, false));
   for (size_t r = 1; r < rings.size(); ++r) shape.add_hole(toCgal(rings[r], planar.S, true));
 
-  const auto insides = CGAL::create_interior_skeleton_and_offset_polygons_with_holes_2(distance, shape);
+  // The skeleton's time grows as the cube of the corners: a large polygon's is built on a
+  // worker that the deadline abandons (skeleton_roof.h).
+  const auto insides = runAbandonable(deadline, pts.size() <= size_t(kInlineSkeletonCorners), [shape, distance] {
+    return CGAL::create_interior_skeleton_and_offset_polygons_with_holes_2(distance, shape);
+  });
   std::vector<std::vector<Vec2>> insideOutlines;
   for (const auto& piece : insides) {
     std::vector<std::vector<Vec2>> holes;

@@ -118,7 +118,7 @@ std::vector<Polygon3> roofFaces(RoofKind kind, double w, double d, double h) {
 // the hips of a hipped roof and the faces of a pyramid on a non-square rectangle follow
 // from that height. A shed rises from the first edge (the rectangle's back, -Z, edge).
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
-          GeometryArena& arena, Part& out, std::string& error) {
+          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline) {
   RoofKind kind;
   if (!parseKind(kindName, kind)) {
     error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid or shed)";
@@ -152,7 +152,7 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
   if (!onPolygon) {
     h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
     faces = roofFaces(kind, w, d, h);
-  } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error)) {
+  } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error, nullptr, deadline)) {
     return false;
   }
   if (!(h > 0.0)) {

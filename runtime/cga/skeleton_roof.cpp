@@ -2,6 +2,8 @@
 // and pyramid and shed roofs, each closed by the footprint as the bottom face.
 #include "runtime/cga/skeleton_roof.h"
 
+#include "runtime/abandonable.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
@@ -287,15 +289,19 @@ std::vector<int> weldPoints(const std::vector<Vec3>& pts, double tol) {
 }
 
 // The interior straight skeleton, each node lifted to offset time * slope.
-bool hippedRoof(const Footprint& fp, double slope, RoofMesh& mesh, std::string& error) {
+// Its time grows as the cube of the corners (a comb of 1 000 teeth: minutes), and CGAL
+// cannot be interrupted: past kInlineCorners it runs on a worker that `deadline` abandons.
+bool hippedRoof(const Footprint& fp, double slope, RoofMesh& mesh, std::string& error, const Deadline* deadline) {
   const std::vector<Point2>& outer = fp.rings[0].pts;
   std::vector<CgalPolygon> holes;
   for (std::size_t r = 1; r < fp.rings.size(); ++r)
     holes.emplace_back(fp.rings[r].pts.begin(), fp.rings[r].pts.end());
   decltype(CGAL::create_interior_straight_skeleton_2(outer.begin(), outer.end())) skeleton;
   try {
-    skeleton = CGAL::create_interior_straight_skeleton_2(outer.begin(), outer.end(), holes.begin(),
-                                                         holes.end(), Kernel());
+    skeleton = runAbandonable(deadline, fp.count <= kInlineSkeletonCorners, [outer, holes] {
+      return CGAL::create_interior_straight_skeleton_2(outer.begin(), outer.end(), holes.begin(), holes.end(),
+                                                       Kernel());
+    });
   } catch (const std::exception&) {  // a CGAL precondition failing
     skeleton.reset();
   }
@@ -517,7 +523,7 @@ double maxHeight(const std::vector<Polygon3>& faces) {
 
 bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                   SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
-                  double& height, std::string& error, std::vector<int>* faceEdges) {
+                  double& height, std::string& error, std::vector<int>* faceEdges, const Deadline* deadline) {
   if (!(angleDeg > 0.0 && angleDeg < 90.0)) {
     std::ostringstream m;
     m << "Roof: the angle " << angleDeg << " must lie strictly between 0 and 90 degrees";
@@ -564,7 +570,7 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
   } else {
     RoofMesh mesh;
     const bool built = kind == SkeletonRoofKind::Pyramid ? pyramidRoof(fp, slope, mesh, error)
-                                                         : hippedRoof(fp, slope, mesh, error);
+                                                         : hippedRoof(fp, slope, mesh, error, deadline);
     if (!built) return false;
     if (kind == SkeletonRoofKind::Gable) makeGables(fp, slope, mesh);
     for (int number = 0; number < fp.count; ++number) {

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/deadline.h"
 
 namespace fgsg::rt::cga {
 
@@ -18,6 +19,11 @@ using Vec2 = Eigen::Vector2d;
 // lifted by offset time * tan(angle)). Gable: hipped, with the ends of wings made vertical.
 // Pyramid: one triangle per edge up to a single apex. Shed: one plane rising from edge 0.
 enum class SkeletonRoofKind { Hipped, Gable, Pyramid, Shed };
+
+// CGAL's straight skeleton takes time as the cube of the corners and cannot be
+// interrupted: up to this many corners (a few milliseconds at worst) it runs on the
+// calling thread, past them on a worker abandoned at --max-seconds (runtime/abandonable.h).
+constexpr int kInlineSkeletonCorners = 96;
 
 // The footprint lies in the (x, z) plane, points given as (x, z); y is up. The outer ring
 // should run counter-clockwise seen from above (+Y) and holes clockwise; a ring given the
@@ -61,9 +67,12 @@ enum class SkeletonRoofKind { Hipped, Gable, Pyramid, Shed };
 // degrees, non-finite coordinates, a ring with fewer than 3 distinct points or no area, a
 // ring that intersects itself, a hole outside the outer ring or touching another ring,
 // the kind's conditions above, CGAL failing to build the straight skeleton.
+// `deadline` (--max-seconds): rt::TimeLimitReached when it passes while the skeleton is
+// built.
 bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                   SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
-                  double& height, std::string& error, std::vector<int>* faceEdges = nullptr);
+                  double& height, std::string& error, std::vector<int>* faceEdges = nullptr,
+                  const Deadline* deadline = nullptr);
 
 // A footprint with holes (a courtyard) as one polygon, (x, z) points counter-clockwise
 // seen from above: each hole joined to the outline by a zero-width bridge that the

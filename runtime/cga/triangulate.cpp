@@ -37,18 +37,35 @@ void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris) {
   const double eps = kDegenerateTol * (hi - lo).squaredNorm();
 
   auto coincide = [&](uint32_t i, uint32_t j) { return (q[i] - q[j]).squaredNorm() <= eps; };
-  auto isEar = [&](const std::vector<uint32_t>& idx, uint32_t a, uint32_t b, uint32_t c) {
+  // Another vertex inside or on the candidate triangle (the first found), or kNone.
+  constexpr uint32_t kNone = UINT32_MAX;
+  auto blockerOf = [&](const std::vector<uint32_t>& idx, uint32_t a, uint32_t b, uint32_t c) {
     for (uint32_t j : idx) {
       if (coincide(j, a) || coincide(j, b) || coincide(j, c)) continue;
       if (cross(q[a], q[b], q[j]) >= -eps && cross(q[b], q[c], q[j]) >= -eps &&
           cross(q[c], q[a], q[j]) >= -eps)
-        return false;  // another vertex inside or on the candidate triangle
+        return j;
     }
-    return true;
+    return kNone;
   };
+  // Each pass clips the first ear from the start of the list. A corner that was no ear
+  // stays none while its neighbours and the vertex found inside its triangle remain
+  // (vertices only go), so that vertex is remembered and the corner passed over at the
+  // cost of a look-up: without it a pass re-tested every corner before the ear against
+  // every vertex, and a comb-shaped lot's 2 000-corner roof took a minute.
+  thread_local std::vector<uint32_t> blocker, blockedA, blockedC;
+  thread_local std::vector<uint8_t> alive;
+  blocker.assign(count, kNone);
+  blockedA.assign(count, kNone);
+  blockedC.assign(count, kNone);
+  alive.assign(count, 1);
 
   idx.resize(count);
   std::iota(idx.begin(), idx.end(), 0u);
+  auto drop = [&](std::size_t k) {
+    alive[idx[k]] = 0;
+    idx.erase(idx.begin() + k);
+  };
   while (idx.size() > 3) {
     const std::size_t m = idx.size();
     bool clipped = false;
@@ -57,18 +74,24 @@ void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris) {
       const double cr = cross(q[a], q[b], q[c]);
       if (std::abs(cr) <= eps) {
         // A collinear vertex or the tip of a zero-width spike: dropping it loses no area.
-        idx.erase(idx.begin() + k);
+        drop(k);
         clipped = true;
-      } else if (cr > 0 && isEar(idx, a, b, c)) {
+      } else if (cr > 0) {
+        if (blocker[b] != kNone && alive[blocker[b]] && blockedA[b] == a && blockedC[b] == c) continue;
+        const uint32_t j = blockerOf(idx, a, b, c);
+        if (j != kNone) {
+          blocker[b] = j, blockedA[b] = a, blockedC[b] = c;
+          continue;
+        }
         tris.insert(tris.end(), {a, b, c});
-        idx.erase(idx.begin() + k);
+        drop(k);
         clipped = true;
       }
     }
     if (!clipped) {
       // Only a self-touching polygon has no ear: cut at the first vertex to terminate.
       tris.insert(tris.end(), {idx[m - 1], idx[0], idx[1]});
-      idx.erase(idx.begin());
+      drop(0);
     }
   }
   if (cross(q[idx[0]], q[idx[1]], q[idx[2]]) > eps)
