@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "cli/derive_flags.h"
 #include "cli/options.h"
+#include "cli/view_access.h"
 #include "cli/view_server.h"
 #include "cli/view_session.h"
 #include "runtime/io/read_input.h"
@@ -21,14 +22,21 @@ namespace fgsg::cli {
 
 namespace {
 
-const char* kViewHelp = R"(usage: fgsg view FILE [--port N] [--host ADDRESS] [--seed N] [--set name=value]...
-                 [--surface mesh.off] [--engine jit|interp]
+const char* kViewHelp = R"(usage: fgsg view FILE [--port N] [--host ADDRESS] [--no-token] [--seed N]
+                 [--set name=value]... [--surface mesh.off] [--engine jit|interp]
 
-Serves a page at http://ADDRESS:N/ (default 127.0.0.1, port 8765; --port 0 picks a free
-one) that shows FILE's model and re-derives it live: when FILE or a file in its folder
-or its assets/ folder is saved, when an attribute is changed in the page's inspector,
-and when the seed is stepped. Errors show in the page; the last good model stays.
-Ctrl-C stops the server. Documentation: docs/cli.md (fgsg view).
+Serves a page at http://ADDRESS:N/?token=... (default 127.0.0.1, port 8765; --port 0
+picks a free one) that shows FILE's model and re-derives it live: when FILE or a file in
+its folder or its assets/ folder is saved, when an attribute is changed in the page's
+inspector, and when the seed is stepped. Each open page has its own values and seed.
+Errors show in the page; the last good model stays. Ctrl-C stops the server.
+
+The server answers only requests that name it (Host 127.0.0.1, localhost, [::1] or
+--host), WebSockets only from its own page (Origin), and only with the session token
+printed in the address; it serves the page's own files and nothing else. --no-token
+drops the token (any program on this machine may then connect); --host 0.0.0.0 or
+another address reachable from the network needs the token. Documentation: docs/cli.md
+(fgsg view, Security).
 )";
 
 std::atomic<bool> stopRequested{false};
@@ -38,6 +46,7 @@ struct ViewCommandOptions {
   ViewOptions view;
   std::string host = "127.0.0.1";
   uint16_t port = 8765;
+  bool noToken = false;
 };
 
 ViewCommandOptions parseViewOptions(const Args& args) {
@@ -46,12 +55,15 @@ ViewCommandOptions parseViewOptions(const Args& args) {
   cl.input(o.view.file, "grammar file");
   cl.whole("--port", o.port, 0, 65535);
   cl.text("--host", o.host);
+  cl.flag("--no-token", o.noToken);
   cl.whole("--seed", o.view.derive.seed);
   surfaceFlags(cl, o.view.derive);
   engineFlag(cl, o.view.engine);
   setFlag(cl, o.view.derive);
   cl.parse(args);
   if (o.view.file.empty()) throw UsageError{"no grammar file given: fgsg view FILE [options]"};
+  if (o.noToken && !isLoopbackHost(o.host))
+    throw UsageError{"--host " + o.host + " with --no-token: a server reachable from the network needs its token"};
   return o;
 }
 
@@ -81,14 +93,17 @@ int view(const Args& args) {
     opt.view.derive.surfaceOverride = std::filesystem::absolute(opt.view.derive.surfaceOverride).string();
   }
   const std::string pageDir = findViewerDir(error);
-  if (pageDir.empty()) {
+  ViewStaticFiles page;
+  if (pageDir.empty() || !page.load(pageDir, error)) {
     std::cerr << "fgsg view: " << error << "\n";
     return 1;
   }
 
   std::unique_ptr<ViewSession> session;
-  ViewServer server(pageDir, {[&](uint64_t page) { session->pageOpened(page); },
-                             [&](uint64_t page, const std::string& m) { session->message(page, m); }});
+  ViewServer server(std::move(page), opt.noToken ? std::string() : newViewToken(),
+                    {[&](uint64_t id) { session->pageOpened(id); },
+                     [&](uint64_t id, const std::string& m) { session->message(id, m); },
+                     [&](uint64_t id) { session->pageClosed(id); }});
   if (!server.listen(opt.host, opt.port, error)) {
     std::cerr << "fgsg view: " << error << "\n";
     return 1;
@@ -100,8 +115,7 @@ int view(const Args& args) {
     if (stopRequested) return server.stop();
     session->checkFiles();
   });
-  std::cout << "fgsg view: " << opt.view.file << " at http://" << opt.host << ":" << server.port() << "/"
-            << " (Ctrl-C stops)" << std::endl;
+  std::cout << "fgsg view: " << opt.view.file << " at " << server.url() << " (Ctrl-C stops)" << std::endl;
   server.run();
   session.reset();
   return 0;

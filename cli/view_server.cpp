@@ -1,38 +1,39 @@
 #include "cli/view_server.h"
 
+#include "cli/view_access.h"
+
 #include <websocketpp/config/asio_no_tls.hpp>
 #include <websocketpp/server.hpp>
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace fgsg::cli {
 
 namespace fs = std::filesystem;
 using Server = websocketpp::server<websocketpp::config::asio>;
 using Handle = websocketpp::connection_hdl;
+using Status = websocketpp::http::status_code::value;
 
 namespace {
 
-const char* contentType(const fs::path& file) {
-  const std::string ext = file.extension().string();
-  if (ext == ".html") return "text/html; charset=utf-8";
-  if (ext == ".js" || ext == ".mjs") return "text/javascript; charset=utf-8";
-  if (ext == ".css") return "text/css; charset=utf-8";
-  if (ext == ".png") return "image/png";
-  if (ext == ".json") return "application/json";
-  return "application/octet-stream";
-}
+// Frames beyond this are refused by the protocol layer (close 1009); up to it the session
+// answers an oversized message with a reason (view_message.h caps it lower).
+constexpr size_t kMaxFrameBytes = size_t(256) << 10;
+// A page that reads more slowly than models come is closed before its queue grows past this.
+constexpr size_t kMaxQueuedBytes = size_t(512) << 20;
+constexpr size_t kMaxResourceBytes = 2048;
 
 }  // namespace
 
 struct ViewServer::Impl {
-  std::string staticDir;
+  ViewStaticFiles files;
+  std::string token;
   Handlers handlers;
   Server server;
+  std::string host;
+  std::unique_ptr<ViewAccess> access;  // made by listen(), once the port is known
   std::map<Handle, uint64_t, std::owner_less<Handle>> pages;  // open pages and their ids
   uint64_t nextPage = 0;
   struct Ticker {
@@ -51,65 +52,117 @@ struct ViewServer::Impl {
     });
   }
 
-  // A file under the static folder for a request's path ("/" is index.html); no "..".
-  bool resolve(const std::string& resource, fs::path& file) const {
-    std::string path = resource.substr(0, resource.find_first_of("?#"));
-    if (path == "/" || path.empty()) path = "/index.html";
-    if (path.find("..") != std::string::npos) return false;
-    file = fs::path(staticDir) / path.substr(1);
-    std::error_code ec;
-    return fs::is_regular_file(file, ec);
+  static void refuse(Server::connection_ptr c, Status status, const std::string& why) {
+    c->set_status(status);
+    c->append_header("Content-Type", "text/plain; charset=utf-8");
+    c->set_body("fgsg view: " + why + "\n");
+  }
+
+  // Host, then token: which requests may be answered at all. False: refused (set on `c`).
+  bool admitted(Server::connection_ptr c) {
+    const auto& request = c->get_request();
+    if (!access || !access->hostAllowed(request.get_header("Host"))) {
+      refuse(c, websocketpp::http::status_code::forbidden, "this server answers only to its own address (Host)");
+      return false;
+    }
+    if (c->get_resource().size() > kMaxResourceBytes) {
+      refuse(c, websocketpp::http::status_code::not_found, "not found");
+      return false;
+    }
+    if (!access->tokenPresented(c->get_resource(), request.get_header("Cookie"), request.get_header("Authorization"))) {
+      refuse(c, websocketpp::http::status_code::forbidden,
+             "open the page with the address fgsg view printed, token included (http://HOST:PORT/?token=...)");
+      return false;
+    }
+    return true;
   }
 
   void serveFile(Handle h) {
     Server::connection_ptr c = server.get_con_from_hdl(h);
-    fs::path file;
-    if (c->get_request().get_method() != "GET" || !resolve(c->get_resource(), file)) {
-      c->set_status(websocketpp::http::status_code::not_found);
-      c->set_body("not found: " + c->get_resource() + "\n");
+    if (!admitted(c)) return;
+    const std::string& method = c->get_request().get_method();
+    if (method != "GET" && method != "HEAD") {
+      refuse(c, websocketpp::http::status_code::method_not_allowed, "only GET");
       return;
     }
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream body;
-    body << in.rdbuf();
+    const ViewStaticFiles::File* file = files.find(c->get_resource());
+    if (!file) {
+      refuse(c, websocketpp::http::status_code::not_found, "not found");
+      return;
+    }
     c->set_status(websocketpp::http::status_code::ok);
-    c->append_header("Content-Type", contentType(file));
+    c->append_header("Content-Type", file->contentType);
     c->append_header("Cache-Control", "no-store");
-    c->set_body(body.str());
+    c->append_header("X-Content-Type-Options", "nosniff");
+    c->append_header("X-Frame-Options", "DENY");
+    c->append_header("Referrer-Policy", "no-referrer");  // the token stays out of other sites' logs
+    // The page's scripts and WebSocket then carry the token without repeating it.
+    if (access->tokenRequired()) c->append_header("Set-Cookie", access->setCookieHeader());
+    c->set_body(method == "HEAD" ? std::string() : file->body);
   }
 
-  void sendToAll(const std::string& payload, websocketpp::frame::opcode::value op) {
-    for (const auto& [h, id] : pages) {
-      websocketpp::lib::error_code ec;
-      server.send(h, payload, op, ec);  // a page that went away is dropped on close
+  // A WebSocket handshake: as HTTP, and from the page's own Origin, and not too many.
+  bool validate(Handle h) {
+    Server::connection_ptr c = server.get_con_from_hdl(h);
+    if (!admitted(c)) return false;
+    const auto& request = c->get_request();
+    if (!access->originAllowed(request.get_header("Origin"), request.get_header("Host"))) {
+      refuse(c, websocketpp::http::status_code::forbidden, "a page of another site (Origin) may not connect");
+      return false;
     }
+    if (pages.size() >= kMaxViewPages) {
+      refuse(c, websocketpp::http::status_code::service_unavailable,
+             "too many pages open (at most " + std::to_string(kMaxViewPages) + ")");
+      return false;
+    }
+    return true;
   }
 
   void sendTo(uint64_t page, const std::string& payload, websocketpp::frame::opcode::value op) {
     for (const auto& [h, id] : pages)
       if (id == page) {
         websocketpp::lib::error_code ec;
-        server.send(h, payload, op, ec);
+        Server::connection_ptr c = server.get_con_from_hdl(h, ec);
+        if (ec) return;
+        if (c->get_buffered_amount() + payload.size() > kMaxQueuedBytes) {
+          server.close(h, websocketpp::close::status::policy_violation, "the page reads too slowly", ec);
+          return;
+        }
+        server.send(h, payload, op, ec);  // a page that went away is dropped on close
+        return;
       }
+  }
+
+  void forget(Handle h) {
+    const auto it = pages.find(h);
+    if (it == pages.end()) return;
+    const uint64_t id = it->second;
+    pages.erase(it);
+    if (handlers.closed) handlers.closed(id);
   }
 };
 
-ViewServer::ViewServer(std::string staticDir, Handlers handlers) : impl_(std::make_unique<Impl>()) {
+ViewServer::ViewServer(ViewStaticFiles files, std::string token, Handlers handlers)
+    : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
-  s.staticDir = std::move(staticDir);
+  s.files = std::move(files);
+  s.token = std::move(token);
   s.handlers = std::move(handlers);
   s.server.clear_access_channels(websocketpp::log::alevel::all);
   s.server.clear_error_channels(websocketpp::log::elevel::all);
   s.server.init_asio();
   s.server.set_reuse_addr(true);
+  s.server.set_max_message_size(kMaxFrameBytes);
+  s.server.set_max_http_body_size(4096);  // GET has no body
   s.server.set_http_handler([this](Handle h) { impl_->serveFile(h); });
+  s.server.set_validate_handler([this](Handle h) { return impl_->validate(h); });
   s.server.set_open_handler([this](Handle h) {
     const uint64_t id = impl_->nextPage++;
     impl_->pages[h] = id;
     if (impl_->handlers.opened) impl_->handlers.opened(id);
   });
-  s.server.set_close_handler([this](Handle h) { impl_->pages.erase(h); });
-  s.server.set_fail_handler([this](Handle h) { impl_->pages.erase(h); });
+  s.server.set_close_handler([this](Handle h) { impl_->forget(h); });
+  s.server.set_fail_handler([this](Handle h) { impl_->forget(h); });
   s.server.set_message_handler([this](Handle h, Server::message_ptr m) {
     auto page = impl_->pages.find(h);
     if (m->get_opcode() == websocketpp::frame::opcode::text && impl_->handlers.message && page != impl_->pages.end())
@@ -137,12 +190,20 @@ bool ViewServer::listen(const std::string& host, uint16_t port, std::string& err
     error = "cannot accept connections: " + wec.message();
     return false;
   }
+  impl_->host = host;
+  impl_->access = std::make_unique<ViewAccess>(host, this->port(), impl_->token);
   return true;
 }
 
 uint16_t ViewServer::port() const {
   websocketpp::lib::asio::error_code ec;
   return impl_->server.get_local_endpoint(ec).port();
+}
+
+std::string ViewServer::url() const {
+  // Listening on every address, the page is still opened here.
+  const bool everywhere = impl_->host == "0.0.0.0" || impl_->host == "::";
+  return impl_->access->url(everywhere ? "127.0.0.1" : impl_->host);
 }
 
 void ViewServer::run() { impl_->server.run(); }
@@ -155,14 +216,6 @@ void ViewServer::stop() {
     for (auto& t : impl_->tickers) t->timer.cancel();
     impl_->server.stop();
   });
-}
-
-void ViewServer::sendTextToAll(std::string text) {
-  post([this, text = std::move(text)] { impl_->sendToAll(text, websocketpp::frame::opcode::text); });
-}
-
-void ViewServer::sendBinaryToAll(std::string bytes) {
-  post([this, bytes = std::move(bytes)] { impl_->sendToAll(bytes, websocketpp::frame::opcode::binary); });
 }
 
 void ViewServer::sendText(uint64_t page, std::string text) {

@@ -7,6 +7,7 @@
 #include "cli/derive_stats.h"
 #include "cli/grammar_files.h"
 #include "cli/options.h"
+#include "cli/view_message.h"
 #include "cli/view_scene.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_instances.h"
@@ -57,8 +58,8 @@ std::string errorJson(const std::string& diagnostics) {
 
 ViewSession::ViewSession(ViewOptions options, ViewServer& server)
     : options_(std::move(options)), server_(server) {
-  seed_ = options_.derive.seed;
-  for (const auto& [name, value] : options_.derive.attrOverrides) attrs_[name] = value;
+  startSeed_ = options_.derive.seed;
+  for (const auto& [name, value] : options_.derive.attrOverrides) startAttrs_[name] = value;
   options_.derive.attrOverrides.clear();
   seen_ = watchedFiles({});
   worker_ = std::thread([this] { work(); });
@@ -76,29 +77,42 @@ ViewSession::~ViewSession() {
 
 void ViewSession::pageOpened(uint64_t page) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!lastInfo_.empty()) server_.sendText(page, lastInfo_);
-  if (!lastModelJson_.empty()) {
-    server_.sendText(page, lastModelJson_);
-    for (const std::string& p : lastParts_) server_.sendBinary(page, p);
-  }
-  if (!lastError_.empty()) server_.sendText(page, lastError_);
+  Page& p = pages_[page];
+  p.attrs = startAttrs_;
+  p.seed = startSeed_;
+  p.pending = true;
+  wake_.notify_all();
+}
+
+void ViewSession::pageClosed(uint64_t page) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pages_.erase(page);
+}
+
+void ViewSession::reject(uint64_t page, const std::string& reason) {
+  server_.sendText(page, Json{{"type", "rejected"}, {"reason", reason}}.dump());
 }
 
 void ViewSession::message(uint64_t page, const std::string& text) {
-  const Json j = Json::parse(text, nullptr, false);
-  if (!j.is_discarded() && j.is_object() && j.value("type", "") == "pick" && j.contains("instance") &&
-      j["instance"].is_number_unsigned())
-    return pick(page, j["instance"].get<uint32_t>());
-  if (j.is_discarded() || !j.is_object() || j.value("type", "") != "set") return;  // not ours
+  PageRequest request;
+  std::string reason;
+  if (!parsePageRequest(text, request, reason)) return reject(page, reason);
+  if (request.kind == PageRequest::Kind::Pick) return pick(page, request.instance);
   std::lock_guard<std::mutex> lock(mutex_);
-  // The page sends every value its user has set; the others take the grammar's defaults.
-  if (j.contains("attrs") && j["attrs"].is_object()) {
-    attrs_.clear();
-    for (const auto& [name, value] : j["attrs"].items())
-      attrs_[name] = value.is_string() ? value.get<std::string>() : value.dump();
+  const auto it = pages_.find(page);
+  if (it == pages_.end()) return;
+  // Every value is checked before any is taken: a bad one changes nothing.
+  if (!request.attrs.empty() && !compiledOnce_)
+    return reject(page, "the grammar has not compiled yet: no attributes to set");
+  for (const auto& [name, value] : request.attrs) {
+    const std::string problem = backend::attributeOverrideProblem(attrShape_, name, value);
+    if (!problem.empty()) return reject(page, problem);
   }
-  if (j.contains("seed") && j["seed"].is_number_unsigned()) seed_ = j["seed"].get<uint64_t>();
-  pending_ = true;
+  Page& p = it->second;
+  // The page sends every value its user has set; the others take the starting values.
+  if (request.hasAttrs) p.attrs = std::map<std::string, std::string>(request.attrs.begin(), request.attrs.end());
+  if (request.hasSeed) p.seed = request.seed;
+  p.pending = true;
   wake_.notify_all();
 }
 
@@ -125,34 +139,67 @@ void ViewSession::checkFiles() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (now == seen_) return;
   seen_ = std::move(now);
-  pending_ = recompile_ = true;
+  recompile_ = true;
+  for (auto& [id, p] : pages_) p.pending = true;  // each page again, with its own values
   wake_.notify_all();
 }
 
 void ViewSession::work() {
   for (;;) {
     bool recompile = false;
-    std::map<std::string, std::string> attrs;
-    uint64_t seed = 1;
+    struct Group {
+      std::map<std::string, std::string> attrs;
+      uint64_t seed;
+      std::vector<uint64_t> pages;
+    };
+    std::map<std::pair<uint64_t, std::map<std::string, std::string>>, Group> groups;  // by seed and values
     {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [this] { return pending_ || stopping_; });
+      auto anyPending = [this] {
+        for (const auto& [id, p] : pages_)
+          if (p.pending) return true;
+        return false;
+      };
+      wake_.wait(lock, [&] { return stopping_ || anyPending(); });
       if (stopping_) return;
       recompile = recompile_;
-      attrs = attrs_;
-      seed = seed_;
-      pending_ = recompile_ = false;
+      recompile_ = false;
+      for (auto& [id, p] : pages_) {
+        if (!p.pending) continue;
+        p.pending = false;
+        Group& g = groups[{p.seed, p.attrs}];
+        g.attrs = p.attrs;
+        g.seed = p.seed;
+        g.pages.push_back(id);
+      }
     }
-    server_.sendTextToAll(Json{{"type", "progress"}, {"state", "deriving"}}.dump());
-    try {
-      deriveOnce(recompile, attrs, seed);
-    } catch (const std::exception& e) {  // the JIT's plugin missing, out of memory ...
-      const std::string j = errorJson(options_.file + ": " + e.what());
+    for (auto& [key, g] : groups) {
+      const std::string progress = Json{{"type", "progress"}, {"state", "deriving"}}.dump();
+      for (uint64_t page : g.pages) server_.sendText(page, progress);
+      std::shared_ptr<Derived> d;
+      try {
+        d = derive(recompile, g.attrs, g.seed);
+      } catch (const std::exception& e) {  // the JIT's plugin missing, out of memory ...
+        d = std::make_shared<Derived>();
+        d->error = options_.file + ": " + e.what();
+      }
+      recompile = false;
       std::lock_guard<std::mutex> lock(mutex_);
-      lastError_ = j;
-      server_.sendTextToAll(j);
+      for (uint64_t page : g.pages) {
+        const auto it = pages_.find(page);
+        // A page that changed its values meanwhile is pending again: it gets that result.
+        if (it != pages_.end() && !it->second.pending) send(page, it->second, d);
+      }
     }
   }
+}
+
+void ViewSession::send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d) {
+  if (!d->info.empty() && d->info != state.infoSent) server_.sendText(page, state.infoSent = d->info);
+  if (d->modelJson.empty()) return server_.sendText(page, errorJson(d->error));
+  state.model = d;
+  server_.sendText(page, d->modelJson);
+  for (const std::string& p : d->parts) server_.sendBinary(page, p);
 }
 
 std::string ViewSession::infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const {
@@ -167,19 +214,20 @@ std::string ViewSession::infoJson(const std::map<std::string, std::string>& attr
   return Json{{"type", "info"}, {"file", options_.file}, {"attrs", list}, {"seed", seed}}.dump();
 }
 
-void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed) {
+std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const std::map<std::string, std::string>& attrs,
+                                                          uint64_t seed) {
   std::unique_ptr<backend::native::CodeLoader>& loader = loader_;
   const auto start = std::chrono::steady_clock::now();
+  auto d = std::make_shared<Derived>();
   auto fail = [&](const std::string& diagnostics) {
-    const std::string j = errorJson(diagnostics);
-    std::lock_guard<std::mutex> lock(mutex_);
-    lastError_ = j;
-    server_.sendTextToAll(j);
+    d->error = diagnostics;
+    return d;
   };
   if (recompile || !compiled_) {
     std::ostringstream diagnostics;
     auto fresh = compileFile(options_.file, diagnostics, false);
-    if (!fresh) return fail(diagnostics.str());
+    if (!fresh) return fail(compileError_ = diagnostics.str());
+    compileError_.clear();
     compiled_ = std::move(fresh);
     loader.reset();  // a new grammar: its own code
     // Watch what this version reads too (its modules, a mesh, a texture, a field file beyond
@@ -189,14 +237,23 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
     for (const auto& m : compiled_->source.modules) extra.push_back(m.key);  // its imported modules
     std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
     std::lock_guard<std::mutex> lock(mutex_);
+    // What the pages' values are checked against (message()).
+    attrShape_ = ir::Module{};
+    attrShape_.attrs = compiled_->module.attrs;
+    attrShape_.countAttr = compiled_->module.countAttr;
+    attrShape_.mode = compiled_->module.mode;
+    compiledOnce_ = true;
     if (data != dataFiles_) {
       std::error_code ec;
       for (const std::string& f : data) seen_.emplace(f, fs::last_write_time(f, ec));
       dataFiles_ = std::move(data);
     }
   }
+  // The file as it is now does not compile: not the last version that did.
+  if (!compileError_.empty()) return fail(compileError_);
   // The page's values for attributes this grammar has; a value that does not fit its
   // attribute is an error in the page, not a crash.
+  d->info = infoJson(attrs, seed);
   rt::DeriveOptions derive = options_.derive;
   derive.seed = seed;
   derive.recordOrigins = true;  // picking shows each instance's rule and depth
@@ -206,12 +263,6 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
     if (!problem.empty()) return fail(options_.file + ": " + name + " = " + value + ": " + problem);
     derive.attrOverrides.push_back({name, value});
   }
-  const std::string info = infoJson(attrs, seed);
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (info != lastInfo_) server_.sendTextToAll(lastInfo_ = info);
-  }
-
   rt::AssetLibrary assets;
   for (const std::string& dir : grammarDataDirs(options_.file)) {
     assets.addSearchDir(dir);
@@ -249,32 +300,32 @@ void ViewSession::deriveOnce(bool recompile, const std::map<std::string, std::st
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms},
                                   {"seed", seed}, {"groups", groups}}.dump();
-  std::lock_guard<std::mutex> lock(mutex_);
-  lastError_.clear();
-  lastModelJson_ = header;
-  lastParts_ = parts;
-  lastInstances_ = std::move(result.instances);
-  lastRules_.clear();
+  d->modelJson = header;
+  d->parts = std::move(parts);
+  d->instances = std::move(result.instances);
   for (const ir::Rule& r : compiled_->module.rules) {  // "Tree#2 (line 9)", "15: flatbrick (line 68)"
     const std::string& symbol = compiled_->module.symbols[r.symbol].name;
     const bool own = r.label.rfind(symbol + "#", 0) == 0;
-    lastRules_.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
+    d->rules.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
   }
-  server_.sendTextToAll(header);
-  for (std::string& p : parts) server_.sendBinaryToAll(std::move(p));
+  return d;
 }
 
 void ViewSession::pick(uint64_t page, uint32_t instance) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (instance >= lastInstances_.instances.size()) return;
-  const rt::Instance& inst = lastInstances_.instances[instance];
-  const Json params = Json::parse(rt::io::instanceParamsJson(lastInstances_, inst), nullptr, false);
+  const auto it = pages_.find(page);
+  if (it == pages_.end() || !it->second.model) return reject(page, "pick: no model shown yet");
+  const rt::InstanceList& shown = it->second.model->instances;
+  const std::vector<std::string>& rules = it->second.model->rules;
+  if (instance >= shown.instances.size()) return reject(page, "pick: no instance " + std::to_string(instance));
+  const rt::Instance& inst = shown.instances[instance];
+  const Json params = Json::parse(rt::io::instanceParamsJson(shown, inst), nullptr, false);
   const Eigen::Map<const Eigen::Matrix4d> t(inst.transform.data());
   const Eigen::Vector4d centre = t * Eigen::Vector4d(0.5, 0.5, 0.5, 1);
   // Lines and the surface are placed by no rule; the axiom's own I() by the axiom.
   const rt::InstanceOrigin origin =
-      instance < lastInstances_.origins.size() ? lastInstances_.origins[instance] : rt::InstanceOrigin{};
-  const Json rule = origin.rule < lastRules_.size() ? Json(lastRules_[origin.rule])
+      instance < shown.origins.size() ? shown.origins[instance] : rt::InstanceOrigin{};
+  const Json rule = origin.rule < rules.size() ? Json(rules[origin.rule])
                     : origin.depth != UINT32_MAX    ? Json("the axiom")
                                                     : Json(nullptr);
   const Json depth = origin.depth == UINT32_MAX ? Json(nullptr) : Json(origin.depth);
@@ -282,8 +333,8 @@ void ViewSession::pick(uint64_t page, uint32_t instance) {
                              {"instance", instance},
                              {"rule", rule},
                              {"depth", depth},
-                             {"symbol", inst.symbol < lastInstances_.symbols.size() ? lastInstances_.symbols[inst.symbol] : ""},
-                             {"asset", inst.asset < lastInstances_.assets.size() ? lastInstances_.assets[inst.asset] : ""},
+                             {"symbol", inst.symbol < shown.symbols.size() ? shown.symbols[inst.symbol] : ""},
+                             {"asset", inst.asset < shown.assets.size() ? shown.assets[inst.asset] : ""},
                              {"params", params.is_discarded() ? Json::array() : params},
                              {"colour", inst.color},
                              {"centre", {centre.x(), centre.y(), centre.z()}}}

@@ -1,8 +1,10 @@
-// What `fgsg view` shows: the grammar derived with the page's attribute values and
-// seed, derived again on a worker thread whenever a page asks or a file the grammar may
-// read (the grammar, its folder, its assets/ folder) changes. Each result reaches the
-// pages as a JSON message, then the model as binary glTF; a grammar with errors sends
-// its diagnostics and the pages keep the last good model. Messages (docs/cli.md):
+// What `fgsg view` shows: the grammar derived with each page's own attribute values and
+// seed (a new page starts from the command line's --set and --seed, else the grammar's
+// defaults), derived again on a worker thread whenever a page asks or a file the grammar
+// may read (the grammar, its folder, its assets/ folder) changes. Pages asking for the
+// same values share one derivation. Each result reaches its pages as a JSON message,
+// then the model as binary glTF; a grammar with errors sends its diagnostics and the
+// pages keep their last good model. Messages (docs/cli.md):
 //   to the page:   {"type":"info", "file", "attrs":[{name, type, default, value}], "seed"}
 //                  {"type":"progress", "state":"deriving"}
 //                  {"type":"model", "figures":{...}, "milliseconds", "groups":[{asset, count}]},
@@ -11,12 +13,14 @@
 //                   (Uint32) in the derivation (view_scene.h)
 //                  {"type":"picked", "instance", "symbol", "asset", "params", "colour", "centre"}
 //                  {"type":"error", "diagnostics":"file:line:col: error[...] ...\n  line\n  ^"}
+//                  {"type":"rejected", "reason"}: a message of the page's that changed nothing
 //   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
-//                  {"type":"pick", "instance":N}
+//                  {"type":"pick", "instance":N}          (checked first: view_message.h)
 #pragma once
 
 #include "backend/engine.h"
 #include "cli/view_server.h"
+#include "ir/ir.h"
 #include "runtime/derivation.h"
 
 #include <condition_variable>
@@ -48,14 +52,34 @@ class ViewSession {
   ViewSession(const ViewSession&) = delete;
   ViewSession& operator=(const ViewSession&) = delete;
 
-  void pageOpened(uint64_t page);             // a new page gets the last info and model
+  void pageOpened(uint64_t page);             // a new page: the starting values, derived
+  void pageClosed(uint64_t page);
   void message(uint64_t page, const std::string& json);  // a page's {"type":"set" / "pick", ...}
   void checkFiles();                          // the server's timer: re-derive on a change
 
  private:
+  // One derivation's messages, shared by the pages that asked for the same values.
+  struct Derived {
+    std::string info;       // empty when the grammar did not compile
+    std::string modelJson;  // empty when it failed: `error` says why
+    std::string error;
+    std::vector<std::string> parts;  // the model's binary messages
+    rt::InstanceList instances;      // for picking
+    std::vector<std::string> rules;  // the grammar's rules as picking names them
+  };
+  struct Page {
+    std::map<std::string, std::string> attrs;  // the page's values, by attribute name
+    uint64_t seed = 1;
+    bool pending = true;
+    std::string infoSent;
+    std::shared_ptr<const Derived> model;  // its last good model, for picking
+  };
+
   void work();
-  void deriveOnce(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
+  std::shared_ptr<Derived> derive(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
+  void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
+  void reject(uint64_t page, const std::string& reason);
   std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const;
   // The grammar, its folder and assets/, and the data files it names (grammarDataFiles).
   std::map<std::string, std::filesystem::file_time_type> watchedFiles(const std::vector<std::string>& data) const;
@@ -64,16 +88,16 @@ class ViewSession {
   ViewServer& server_;
   std::unique_ptr<CompiledFile> compiled_;  // the last grammar that compiled (worker only)
   std::unique_ptr<backend::native::CodeLoader> loader_;  // its JIT code (worker only)
+  std::string compileError_;  // the file's diagnostics while it does not compile (worker only)
 
   std::mutex mutex_;  // guards what follows
   std::condition_variable wake_;
-  bool pending_ = true, recompile_ = true, stopping_ = false;
-  std::map<std::string, std::string> attrs_;  // the page's values, by attribute name
-  uint64_t seed_ = 1;
-  std::string lastInfo_, lastModelJson_, lastError_;
-  std::vector<std::string> lastParts_;  // the last model's binary messages
-  rt::InstanceList lastInstances_;      // its instances, for picking
-  std::vector<std::string> lastRules_;  // its grammar's rules as picking names them
+  bool recompile_ = true, stopping_ = false;
+  std::map<std::string, std::string> startAttrs_;  // --set: where a new page starts
+  uint64_t startSeed_ = 1;
+  std::map<uint64_t, Page> pages_;
+  bool compiledOnce_ = false;
+  ir::Module attrShape_;  // the compiled grammar's attributes, to check pages' values
   std::map<std::string, std::filesystem::file_time_type> seen_;
   std::vector<std::string> dataFiles_;  // the files the last compiled grammar names
 

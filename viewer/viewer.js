@@ -241,7 +241,10 @@ $('seed').addEventListener('change', () => { state.seed = Math.max(0, Math.floor
 $('prev').addEventListener('click', () => { state.seed = Math.max(0, state.seed - 1); $('seed').value = state.seed; send(); });
 $('next').addEventListener('click', () => { state.seed += 1; $('seed').value = state.seed; send(); });
 
-const ws = new WebSocket(`ws://${location.host}/`);
+// The session token came in the page's address (fgsg view prints it); the WebSocket
+// carries it too (the server also set it as a cookie with the page).
+const token = (new URLSearchParams(location.search).get('token') || '').replace(/[^0-9a-f]/g, '');
+const ws = new WebSocket(`ws://${location.host}/` + (token ? `?token=${token}` : ''));
 ws.binaryType = 'arraybuffer';
 ws.onopen = () => setStatus('deriving', 'deriving');
 ws.onclose = () => setStatus('disconnected: fgsg view stopped', 'error');
@@ -263,6 +266,9 @@ ws.onmessage = (event) => {
     header = m;
     parts = [];
     state.timing.announced = performance.now();
+  } else if (m.type === 'rejected') {  // a message of ours the server refused: nothing changed
+    state.rejected = (state.rejected || 0) + 1;
+    setStatus('refused: ' + m.reason, 'error');
   } else if (m.type === 'error') {
     state.errors += 1;
     $('diagnostics').textContent = m.diagnostics;

@@ -24,4 +24,8 @@ expect 2 "--port" -- "$source/examples/koch.fgsg" --port 70000
 expect 2 "--set expects name=value" -- "$source/examples/koch.fgsg" --set x
 expect 1 "missing.fgsg" -- "$source/examples/missing.fgsg"
 expect 1 "--host 300.1.1.1: not an IP address" -- "$source/examples/koch.fgsg" --host 300.1.1.1 --port 0
+# A server reachable from the network without its token is refused before it starts.
+expect 2 "needs its token" -- "$source/examples/koch.fgsg" --host 0.0.0.0 --no-token --port 0
+expect 2 "needs its token" -- "$source/examples/koch.fgsg" --host 192.168.1.5 --no-token --port 0
+expect 2 "needs its token" -- "$source/examples/koch.fgsg" --host :: --no-token --port 0
 exit $fail

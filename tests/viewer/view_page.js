@@ -41,15 +41,17 @@ async function main() {
       server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${text}`)));
       setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
     });
-    // The server answers files of the page's folder only.
+    // The address carries the session token; without it the page is refused (the rest of
+    // the server's checks: tests/viewer/view_security.py).
+    if (!/\/\?token=[0-9a-f]{48}$/.test(url)) fail(`the printed address has no token: ${url}`);
     const status = await new Promise((resolve) => {
       const u = new URL(url);
-      require('http').get({ host: u.hostname, port: u.port, path: '/../CMakeLists.txt' }, (r) => {
+      require('http').get({ host: u.hostname, port: u.port, path: '/' }, (r) => {
         r.resume();
         resolve(r.statusCode);
       }).on('error', () => resolve(0));
     });
-    if (status !== 404) fail(`a path out of the page's folder answered ${status}`);
+    if (status !== 403) fail(`the page without its token answered ${status}`);
 
     browser = await chromium.launch({
       executablePath: chromiumPath,
@@ -119,6 +121,24 @@ async function main() {
                 `${Date.now() - t0} ms seen by the test), triangles ${first.triangles} -> ${wider.triangles}`);
     if (!(wider.triangles > first.triangles)) fail('lot_width 28 did not give a larger building');
 
+    // 2b. A second tab has values of its own: it starts from the defaults, and its seed
+    // does not move the first tab's model.
+    const tab2 = await browser.newPage({ viewport: { width: 800, height: 600 } });
+    tab2.on('pageerror', (e) => console.error('tab 2 page error: ' + e.message));
+    await tab2.goto(url);
+    await tab2.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1, null, { timeout: 60000 });
+    const tab2Width = await tab2.evaluate(() => window.fgsgViewer.info.attrs.find((a) => a.name === 'lot_width').value);
+    const tab2Triangles = await tab2.evaluate(() => window.fgsgViewer.figures.triangles);
+    console.log(`tab 2: lot_width ${tab2Width}, triangles ${tab2Triangles} (tab 1: 28, ${wider.triangles})`);
+    if (String(tab2Width) === '28' || tab2Triangles !== first.triangles) fail('a new tab inherited the first tab\'s values');
+    const tab1Models = await page.evaluate(() => window.fgsgViewer.models);
+    await tab2.click('#next');
+    await tab2.waitForFunction(() => window.fgsgViewer.models >= 2, null, { timeout: 60000 });
+    if ((await tab2.evaluate(() => window.fgsgViewer.info.seed)) !== 2) fail('tab 2 did not step its seed');
+    await page.waitForTimeout(500);
+    if ((await page.evaluate(() => window.fgsgViewer.models)) !== tab1Models) fail('tab 2\'s seed re-derived tab 1');
+    if ((await page.evaluate(() => window.fgsgViewer.info.seed)) !== 1) fail('tab 2\'s seed reached tab 1');
+
     // 3. The file edited and saved: a taller building by default.
     let text = fs.readFileSync(grammar, 'utf8');
     if (!/attr building_height = 6;/.test(text)) fail('the example no longer declares building_height = 6');
@@ -129,6 +149,12 @@ async function main() {
     const taller = await page.evaluate(() => window.fgsgViewer.size[1]);
     console.log(`model height ${wideHeight.toFixed(2)} -> ${taller.toFixed(2)}`);
     if (!(Math.abs(taller - wideHeight - 6) < 0.01)) fail('building_height 12 did not raise the walls by 6');
+    // The edit re-derived the second tab too, with its own values.
+    await tab2.waitForFunction(() => window.fgsgViewer.models >= 3, null, { timeout: 60000 });
+    const tab2Info = await tab2.evaluate(() => window.fgsgViewer.info);
+    if (tab2Info.seed !== 2 || tab2Info.attrs.find((a) => a.name === 'building_height').default !== 12)
+      fail('the edit did not re-derive tab 2 with its own seed');
+    await tab2.close();
 
     // 3b. A mesh the grammar uses from a folder of its own: saving it derives again.
     await page.waitForTimeout(1000);

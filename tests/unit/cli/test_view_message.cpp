@@ -1,0 +1,80 @@
+// What a page may send fgsg view (cli/view_message.h): checked before anything changes.
+#include "cli/view_message.h"
+
+#include <catch2/catch.hpp>
+
+using fgsg::cli::PageRequest;
+using fgsg::cli::parsePageRequest;
+
+namespace {
+
+std::string refused(const std::string& text) {
+  PageRequest r;
+  std::string reason;
+  if (parsePageRequest(text, r, reason)) return "";
+  return reason.empty() ? "(no reason)" : reason;
+}
+
+}  // namespace
+
+TEST_CASE("view messages: set and pick as the page sends them") {
+  PageRequest r;
+  std::string reason;
+  REQUIRE(parsePageRequest(R"({"type":"set","attrs":{"lot_width":"24","roof":true,"h":3.5},"seed":7})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Set);
+  CHECK(r.hasAttrs);
+  CHECK(r.hasSeed);
+  CHECK(r.seed == 7);
+  REQUIRE(r.attrs.size() == 3);
+  CHECK(r.attrs[0] == std::make_pair(std::string("h"), std::string("3.5")));
+  CHECK(r.attrs[1] == std::make_pair(std::string("lot_width"), std::string("24")));
+  CHECK(r.attrs[2] == std::make_pair(std::string("roof"), std::string("true")));
+  REQUIRE(parsePageRequest(R"({"type":"set","seed":3})", r, reason));
+  CHECK_FALSE(r.hasAttrs);
+  REQUIRE(parsePageRequest(R"({"type":"pick","instance":12})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Pick);
+  CHECK(r.instance == 12);
+}
+
+TEST_CASE("view messages: garbage, wrong kinds and unknown fields are refused with a reason") {
+  CHECK(refused("") == "not a JSON object");
+  CHECK(refused("\x01\x02garbage") == "not a JSON object");
+  CHECK(refused("[1,2]") == "not a JSON object");
+  CHECK(refused(R"({"attrs":{}})") == "no \"type\"");
+  CHECK(refused(R"({"type":"read","file":"/etc/passwd"})").find("unknown message type") == 0);
+  CHECK(refused(R"({"type":"set","file":"/etc/passwd"})").find("unknown field") != std::string::npos);
+  CHECK_FALSE(refused(R"({"type":"set","seed":-1})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","seed":1.5})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","seed":"1"})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":[1]})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{"x":[1]}})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{"x":null}})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{"x":1e999}})").empty());  // not finite
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{"":"1"}})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{")" + std::string(200, 'n') + R"(":"1"}})").empty());
+  CHECK_FALSE(refused(R"({"type":"set","attrs":{"x":")" + std::string(5000, 'v') + R"("}})").empty());
+  CHECK_FALSE(refused(R"({"type":"pick"})").empty());
+  CHECK_FALSE(refused(R"({"type":"pick","instance":4294967296})").empty());
+  CHECK_FALSE(refused(R"({"type":"pick","instance":1,"zz":2})").empty());
+  // A long message's text is not quoted back whole.
+  const std::string why = refused(R"({"type":")" + std::string(10000, 'q') + R"("})");
+  CHECK(why.size() < 200);
+}
+
+TEST_CASE("view messages: size and nesting are bounded before any parse") {
+  // V3: 100 000 levels once overflowed the stack in a recursive dump.
+  const auto deep = [](int n) {
+    return R"({"type":"set","attrs":{"x":)" + std::string(n, '[') + std::string(n, ']') + "}}";
+  };
+  CHECK_FALSE(refused(deep(100000)).empty());
+  CHECK(refused(deep(30000)).find("nested deeper") != std::string::npos);  // under the size cap: the nesting check
+  CHECK(refused(deep(3)).find("nested deeper") != std::string::npos);
+  CHECK(fgsg::cli::jsonNestingWithin(R"({"a":"[[[[[[[[[[[["})", 1));  // brackets in strings do not count
+  CHECK(fgsg::cli::jsonNestingWithin(R"({"a":"\"[[[[[["})", 1));
+  CHECK_FALSE(fgsg::cli::jsonNestingWithin("[[[", 2));
+  const std::string big = R"({"type":"set","attrs":{"x":")" + std::string(70000, 'v') + R"("}})";
+  CHECK(refused(big).find("message of") == 0);
+  std::string many = R"({"type":"set","attrs":{)";
+  for (int i = 0; i < 300; ++i) many += (i ? "," : "") + ("\"a" + std::to_string(i) + "\":1");
+  CHECK_FALSE(refused(many + "}}").empty());
+}

@@ -1,0 +1,320 @@
+#!/usr/bin/env python3
+"""fgsg view as an attacker on the same machine, or a web page in the user's browser,
+would try it (issue 41): every path out of the page's files, foreign Host and Origin,
+missing and wrong tokens, garbage, deep and oversized messages, then load: 50 pages at
+once and 2 000 HTTP requests. The server must refuse each, keep answering and stay
+bounded in memory. Only 127.0.0.1 is contacted; every loop is bounded in count and time.
+
+usage: view_security.py FGSG SOURCE_DIR
+"""
+import base64
+import json
+import os
+import re
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+fgsg, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def http(port, request, timeout=10):
+    """Sends raw bytes (paths exactly as written), returns (status, headers, body)."""
+    with socket.create_connection(("127.0.0.1", port), timeout=timeout) as s:
+        s.sendall(request)
+        data = b""
+        while True:
+            chunk = s.recv(65536)
+            if not chunk:
+                break
+            data += chunk
+            head, _, body = data.partition(b"\r\n\r\n")
+            m = re.search(rb"content-length: *(\d+)", head, re.I)
+            if m and len(body) >= int(m.group(1)):
+                break
+    head, _, body = data.partition(b"\r\n\r\n")
+    status = int(head.split(b" ")[1]) if head.startswith(b"HTTP/") else 0
+    return status, head.decode("latin-1"), body
+
+
+def get(port, path, host=None, cookie=None, extra=b""):
+    req = b"GET " + path + b" HTTP/1.1\r\nHost: " + (host or b"127.0.0.1:%d" % port) + b"\r\n"
+    if cookie:
+        req += b"Cookie: " + cookie + b"\r\n"
+    return http(port, req + extra + b"Connection: close\r\n\r\n")
+
+
+class WebSocket:
+    """The smallest client that speaks RFC 6455: masked frames, text and binary."""
+
+    def __init__(self, port, resource, host=None, origin=None, timeout=30):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=timeout)
+        key = base64.b64encode(os.urandom(16))
+        req = (b"GET " + resource + b" HTTP/1.1\r\nHost: " + (host or b"127.0.0.1:%d" % port) +
+               b"\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Key: " + key +
+               b"\r\nSec-WebSocket-Version: 13\r\n")
+        if origin is not None:
+            req += b"Origin: " + origin + b"\r\n"
+        self.sock.sendall(req + b"\r\n")
+        self.buffer = b""
+        while b"\r\n\r\n" not in self.buffer:
+            chunk = self.sock.recv(4096)
+            if not chunk:
+                break
+            self.buffer += chunk
+        head, _, self.buffer = self.buffer.partition(b"\r\n\r\n")
+        self.status = int(head.split(b" ")[1]) if head.startswith(b"HTTP/") else 0
+
+    def send(self, payload, opcode=1):
+        if isinstance(payload, str):
+            payload = payload.encode()
+        n = len(payload)
+        header = bytes([0x80 | opcode])
+        if n < 126:
+            header += bytes([0x80 | n])
+        elif n < 65536:
+            header += bytes([0x80 | 126]) + struct.pack(">H", n)
+        else:
+            header += bytes([0x80 | 127]) + struct.pack(">Q", n)
+        mask = os.urandom(4)
+        body = bytes(b ^ mask[i % 4] for i, b in enumerate(payload)) if n < 1 << 16 else \
+            (int.from_bytes(payload, "big") ^ int.from_bytes((mask * (n // 4 + 1))[:n], "big")).to_bytes(n, "big")
+        self.sock.sendall(header + mask + body)
+
+    def _read(self, n):
+        while len(self.buffer) < n:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise ConnectionError("closed")
+            self.buffer += chunk
+        out, self.buffer = self.buffer[:n], self.buffer[n:]
+        return out
+
+    def receive(self):
+        """(opcode, payload) of the next frame; opcode 8 is a close."""
+        b0, b1 = self._read(2)
+        n = b1 & 0x7F
+        if n == 126:
+            n = struct.unpack(">H", self._read(2))[0]
+        elif n == 127:
+            n = struct.unpack(">Q", self._read(8))[0]
+        return b0 & 0x0F, self._read(n)
+
+    def next_text(self, want_type, limit_s=60):
+        """The next text message of the given type, skipping others."""
+        end = time.time() + limit_s
+        while time.time() < end:
+            op, payload = self.receive()
+            if op == 8:
+                return None
+            if op == 1:
+                m = json.loads(payload)
+                if m.get("type") == want_type:
+                    return m
+                if m.get("type") in ("error", "rejected"):
+                    print("     (skipped: %s)" % payload[:200].decode(errors="replace"), flush=True)
+        return None
+
+    def close(self):
+        try:
+            self.sock.close()
+        except OSError:
+            pass
+
+
+def rss_kib(pid):
+    with open("/proc/%d/status" % pid) as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    return 0
+
+
+work = tempfile.mkdtemp(prefix="fgsg-view-security-")
+grammar = os.path.join(work, "g.fgsg")
+shutil.copy(os.path.join(source, "examples/mueller_building.fgsg"), grammar)
+os.symlink(os.path.join(source, "examples/assets"), os.path.join(work, "assets"))
+env = dict(os.environ, FGSG_CACHE_DIR=os.path.join(work, "cache"))
+server = subprocess.Popen([fgsg, "view", grammar, "--port", "0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          env=env, text=True)
+try:
+    line = server.stdout.readline()
+    m = re.search(r"http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]{48})", line)
+    check(m is not None, "the printed address carries a 48-digit token: " + line.strip())
+    if not m:
+        raise SystemExit(1)
+    port, token = int(m.group(1)), m.group(2).encode()
+    cookie = b"fgsg-view-token-%d=" % port + token
+
+    # 1. The page with its token; the token becomes an HttpOnly cookie.
+    status, head, body = get(port, b"/?token=" + token)
+    check(status == 200 and b"<html" in body, "GET /?token=... answers the page (%d)" % status)
+    check("HttpOnly" in head and "SameSite=Strict" in head, "the page sets its token as an HttpOnly, SameSite cookie")
+    status, _, body = get(port, b"/viewer.js", cookie=cookie)
+    check(status == 200 and b"WebSocket" in body, "the page's script with the cookie (%d)" % status)
+    status, _, _ = get(port, b"/three/build/three.module.js", cookie=cookie)
+    check(status == 200, "three.js's module with the cookie (%d)" % status)
+
+    # 2. Paths out of the page's files: all 404 (or 400 where HTTP itself refuses them).
+    rel = os.path.relpath(grammar, "/").encode()
+    for path in [b"//etc/passwd", b"//proc/self/environ", b"//proc/self/maps", b"/" + b"/" + rel, b"/etc/passwd",
+                 b"/../CMakeLists.txt", b"/../../../../etc/passwd", b"/%2e%2e/%2e%2e/etc/passwd",
+                 b"/..%2f..%2fetc%2fpasswd", b"/%2E%2E%2F%2E%2E%2Fetc%2Fpasswd", b"/.%2e/.%2e/etc/passwd",
+                 b"/three/../../../../etc/passwd", b"/three/build/../../index.html", b"/./index.html",
+                 b"/index.html%00", b"/index.html%00.js", b"/\\..\\..\\etc\\passwd", b"/%5c..%5c..%5cetc%5cpasswd",
+                 b"/..;/etc/passwd", b"/" + b"a" * 10000, b"/three", b"/three/", b"/CMakeLists.txt", b"/g.fgsg",
+                 b"/assets/flatbrick.obj", b"file:///etc/passwd", b"http://127.0.0.1/etc/passwd"]:
+        status, _, body = get(port, path, cookie=cookie)
+        check(status in (400, 404) and b"root:" not in body and b"PATH=" not in body,
+              "GET %s -> %d" % (path[:60].decode("latin-1"), status))
+    status, _, _ = http(port, b"GET /index.html\x00 HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nCookie: " % port + cookie +
+                        b"\r\nConnection: close\r\n\r\n")
+    check(status in (0, 400, 404), "a NUL byte in the path -> %d" % status)
+    status, _, _ = http(port, b"POST / HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nCookie: " % port + cookie +
+                        b"\r\nContent-Length: 0\r\nConnection: close\r\n\r\n")
+    check(status == 405, "POST -> %d" % status)
+
+    # 3. Host (DNS rebinding) and token, over HTTP.
+    for host in [b"evil.example.com:%d" % port, b"evil.example.com", b"127.0.0.1:1", b"127.0.0.1.evil.example:%d" % port]:
+        status, _, body = get(port, b"/?token=" + token, host=host)
+        check(status == 403 and b"<html" not in body, "Host %s -> %d" % (host.decode(), status))
+    status, _, _ = get(port, b"/")
+    check(status == 403, "the page without a token -> %d" % status)
+    status, _, _ = get(port, b"/?token=" + b"0" * 48)
+    check(status == 403, "a wrong token -> %d" % status)
+    status, _, _ = get(port, b"/viewer.js", cookie=b"fgsg-view-token-%d=" % port + b"1" * 48)
+    check(status == 403, "a wrong cookie -> %d" % status)
+    status, _, _ = get(port, b"/", extra=b"Authorization: token " + token + b"\r\n")
+    check(status == 200, "Authorization: token ... -> %d" % status)
+
+    # 4. WebSocket handshakes: foreign Origin or Host, missing or wrong token.
+    own = b"http://127.0.0.1:%d" % port
+    for what, resource, host, origin, want in [
+        ("a foreign Origin", b"/?token=" + token, None, b"http://evil.example.com", 403),
+        ("Origin null", b"/?token=" + token, None, b"null", 403),
+        ("a foreign Host", b"/?token=" + token, b"evil.example.com:%d" % port, b"http://evil.example.com:%d" % port, 403),
+        ("no token", b"/", None, own, 403),
+        ("a wrong token", b"/?token=" + b"f" * 48, None, own, 403),
+        ("the page's own Origin and token", b"/?token=" + token, None, own, 101),
+    ]:
+        ws = WebSocket(port, resource, host, origin)
+        check(ws.status == want, "WebSocket with %s -> %d" % (what, ws.status))
+        ws.close()
+
+    # 5. Messages: each bad one gets a reason and changes nothing; the server lives on.
+    ws = WebSocket(port, b"/?token=" + token, origin=own)
+    info = ws.next_text("info")
+    check(info is not None and info["seed"] == 1, "a page gets the grammar's info")
+    model = ws.next_text("model")
+    check(model is not None, "a page gets its model")
+    triangles = model["figures"]["triangles"] if model else None
+    bad = [
+        '{"type":"set","attrs":{"lot_width":' + "[" * 100000 + "]" * 100000 + "}}",  # V3: over the size cap
+        '{"type":"set","attrs":{"lot_width":' + "[" * 30000 + "]" * 30000 + "}}",  # under it: the nesting cap
+        "x" * 200000,
+        "\x00\x01 not json",
+        '{"type":"set","attrs":{"lot_width":"wide"}}',
+        '{"type":"set","attrs":{"no_such_attr":"1"}}',
+        '{"type":"set","attrs":{"lot_width":1e999}}',
+        '{"type":"set","seed":-4}',
+        '{"type":"read","file":"/etc/passwd"}',
+        '{"type":"set","file":"/etc/passwd"}',
+        '{"type":"pick","instance":99999999}',
+    ]
+    for text in bad:
+        ws.send(text)
+        reply = ws.next_text("rejected", 30)
+        check(reply is not None and reply.get("reason"), "rejected with a reason: %s... (%s)" %
+              (text[:40].replace("\x00", "\\0"), reply and reply.get("reason", "")[:70]))
+    ws.send(b"\xff\xfe invalid utf-8", opcode=1)  # the protocol layer closes on invalid UTF-8
+    ws.close()
+    # A frame over the bound is refused by the protocol (close 1009), not read whole.
+    ws = WebSocket(port, b"/?token=" + token, origin=own)
+    ws.send("y" * (1 << 20))
+    op = None
+    try:
+        while op != 8:
+            op, _ = ws.receive()
+    except (ConnectionError, OSError):
+        op = 8
+    check(op == 8, "a 1 MiB message closes that connection")
+    ws.close()
+    # The model did not change, and a good message still derives.
+    ws = WebSocket(port, b"/?token=" + token, origin=own)
+    again = ws.next_text("model")
+    check(again is not None and again["figures"]["triangles"] == triangles, "the bad messages changed nothing")
+    ws.send('{"type":"set","attrs":{"lot_width":"28"},"seed":1}')
+    wider = ws.next_text("model")
+    check(wider is not None and wider["figures"]["triangles"] > triangles, "a good message still derives")
+    ws.close()
+    check(server.poll() is None, "the server is alive after the attacks")
+
+    # 6. Load: 50 pages at once, each with its model; then 2 000 HTTP requests.
+    time.sleep(1)
+    before = rss_kib(server.pid)
+    pages = [WebSocket(port, b"/?token=" + token, origin=own, timeout=120) for _ in range(50)]
+    got = [None] * len(pages)
+
+    def take(i):
+        try:
+            got[i] = pages[i].next_text("model", 120)
+        except (OSError, ConnectionError, ValueError):
+            got[i] = None
+
+    threads = [threading.Thread(target=take, args=(i,)) for i in range(len(pages))]
+    t0 = time.time()
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(150)
+    check(all(g is not None for g in got), "50 pages at once each got a model (%.1f s)" % (time.time() - t0))
+    peak = rss_kib(server.pid)
+    for p in pages:
+        p.close()
+    answered = [0]
+
+    def hammer(count):
+        for _ in range(count):
+            try:
+                status, _, _ = get(port, b"/viewer.js", cookie=cookie)
+                answered[0] += status == 200
+            except OSError:
+                pass
+
+    t0 = time.time()
+    threads = [threading.Thread(target=hammer, args=(250,)) for _ in range(8)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(300)
+    check(answered[0] == 2000, "2 000 HTTP requests answered: %d in %.1f s" % (answered[0], time.time() - t0))
+    time.sleep(1)
+    after = rss_kib(server.pid)
+    print("memory: %d MiB before, %d MiB with 50 pages, %d MiB after" % (before >> 10, peak >> 10, after >> 10))
+    check(after < before + 300 * 1024, "memory stays bounded (%d -> %d MiB)" % (before >> 10, after >> 10))
+    status, _, _ = get(port, b"/?token=" + token)
+    check(status == 200 and server.poll() is None, "the server still answers")
+finally:
+    server.terminate()
+    try:
+        server.wait(20)
+    except subprocess.TimeoutExpired:
+        server.kill()
+    shutil.rmtree(work, ignore_errors=True)
+
+if failures:
+    print("FAIL: %d checks failed" % len(failures))
+    sys.exit(1)
+print("PASS")
