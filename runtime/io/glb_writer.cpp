@@ -2,6 +2,7 @@
 
 #include "runtime/io/mesh_attributes.h"
 
+#include "runtime/io/read_image.h"
 #include "runtime/io/read_input.h"
 #include "runtime/texture/color_texture.h"
 
@@ -130,6 +131,13 @@ bool readImages(const Mesh& mesh, std::vector<EmbeddedImage>& images, std::strin
     image.mimeType = texture::ColorTexture::mimeType(image.bytes);
     if (!image.mimeType) {
       error = "the texture '" + path + "' is not a PNG or JPEG image (glTF embeds only those)";
+      return false;
+    }
+    // Embedded as it is, so it must be whole (the file may have changed since Texture()
+    // probed it): a truncated PNG would be a broken model in every viewer.
+    Image header;
+    if (!checkImage(path, image.bytes, ImageLimits{texture::kMaxColorTexturePixels}, header, error)) {
+      error = "the texture '" + path + "' cannot be embedded: " + withoutPath(error, path);
       return false;
     }
     images.push_back(std::move(image));

@@ -1,5 +1,5 @@
-// Reads PNG (and the other formats stb_image knows) as 8-bit RGB, for labelled example
-// images and mask images.
+// Labelled example images, mask images and image fields as 8-bit RGB, whatever the file
+// holds (grey, alpha, 16 bits), decoded by the image reader (runtime/io/read_image.h).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,8 @@ struct RgbImage {
   }
 };
 
+// False and "PATH: ..." when the file cannot be read, is not a PNG, JPEG, BMP or PGM/PPM
+// image, is truncated or damaged, or has more than io::ImageLimits' pixels.
 bool readRgbImage(const std::string& path, RgbImage& out, std::string& error);
 
 }  // namespace fgsg::rt::synthesis

@@ -1,63 +1,26 @@
 #include "runtime/texture/color_texture.h"
 
+#include "runtime/io/read_image.h"
 #include "runtime/io/read_input.h"
 
 #include <cmath>
-
-// Static linkage: other runtime files carry their own stb_image implementation
-// (runtime/texture/texture_map.cpp, runtime/synthesis/image_reader.cpp). Only the two
-// formats glTF embeds.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace fgsg::rt::texture {
 
 namespace {
 
 constexpr const char* kWhat = "a texture image";
-
-std::string failureReason() {
-  const char* why = stbi_failure_reason();
-  return why ? why : "unknown error";
-}
-
-std::string sizeText(long w, long h) { return std::to_string(w) + " x " + std::to_string(h); }
-
-const stbi_uc* data8(const std::string& bytes) { return reinterpret_cast<const stbi_uc*>(bytes.data()); }
+constexpr io::ImageLimits kLimits{kMaxColorTexturePixels, int64_t(1) << 31, "pixels", "textures"};
 
 // The checks probe and load share, from the file's bytes alone: the format by its magic,
-// then the size its header declares, before anything is decoded (a small file can declare
-// a huge picture).
-bool checkHeader(const std::string& path, const std::string& bytes, int& w, int& h, std::string& error) {
+// the size its header declares and the whole file present (a truncated PNG must not be
+// embedded), before anything is decoded.
+bool checkHeader(const std::string& path, const std::string& bytes, io::Image& header, std::string& error) {
   if (!ColorTexture::mimeType(bytes)) {
     error = path + ": is not a PNG or JPEG image (glTF embeds only those)";
     return false;
   }
-  const int length = int(bytes.size());  // within the input cap, far below INT_MAX
-  int channels = 0;
-  if (!stbi_info_from_memory(data8(bytes), length, &w, &h, &channels)) {
-    error = path + ": cannot read the image's header: " + failureReason();
-    return false;
-  }
-  if (w <= 0 || h <= 0) {
-    error = path + ": the image is empty (" + sizeText(w, h) + ")";
-    return false;
-  }
-  if (int64_t(w) * h > kMaxColorTexturePixels) {
-    error = path + ": the image is " + sizeText(w, h) + " pixels, more than the limit for textures (" +
-            std::to_string(kMaxColorTexturePixels) + ")";
-    return false;
-  }
-  return true;
+  return io::checkImage(path, bytes, kLimits, header, error);
 }
 
 // i mod n for any i, in [0, n).
@@ -68,41 +31,29 @@ int wrap(int64_t i, int n) {
 
 }  // namespace
 
-const char* ColorTexture::mimeType(const std::string& bytes) {
-  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) == 0) return "image/png";
-  if (bytes.compare(0, 3, "\xFF\xD8\xFF", 3) == 0) return "image/jpeg";
-  return nullptr;
-}
+const char* ColorTexture::mimeType(const std::string& bytes) { return io::imageMimeType(io::imageFormatOf(bytes)); }
 
 bool ColorTexture::probe(const std::string& path, std::string& error) {
   std::string bytes;
   if (!io::readInputFile(path, kWhat, bytes, error)) return false;
-  int w = 0, h = 0;
-  return checkHeader(path, bytes, w, h, error);
+  io::Image header;
+  return checkHeader(path, bytes, header, error);
 }
 
 bool ColorTexture::load(const std::string& path, std::string& error) {
   std::string bytes;
   if (!io::readInputFile(path, kWhat, bytes, error)) return false;
-  int w = 0, h = 0;
-  if (!checkHeader(path, bytes, w, h, error)) return false;
-  int dw = 0, dh = 0, channels = 0;
-  stbi_uc* data = stbi_load_from_memory(data8(bytes), int(bytes.size()), &dw, &dh, &channels, 3);
-  if (!data) {
-    error = path + ": cannot decode the image: " + failureReason();
-    return false;
-  }
-  // The decoder must agree with the header the size was checked by.
-  if (dw != w || dh != h) {
-    stbi_image_free(data);
-    error = path + ": the decoded image (" + sizeText(dw, dh) + ") does not match its header (" +
-            sizeText(w, h) + ")";
-    return false;
-  }
-  rgb_.assign(data, data + size_t(w) * size_t(h) * 3);
-  stbi_image_free(data);
-  width_ = w;
-  height_ = h;
+  io::Image header, image;
+  if (!checkHeader(path, bytes, header, error) || !io::decodeImage(path, bytes, kLimits, image, error)) return false;
+  bytes = std::string();
+  // RGB from any channel count: grey repeated, alpha dropped.
+  const size_t pixels = size_t(image.width) * size_t(image.height), channels = size_t(image.channels);
+  std::vector<uint8_t> rgb(pixels * 3);
+  for (size_t p = 0; p < pixels; ++p)
+    for (size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = image.sample8(p * channels + (channels >= 3 ? c : 0));
+  rgb_ = std::move(rgb);
+  width_ = image.width;
+  height_ = image.height;
   return true;
 }
 

@@ -20,7 +20,7 @@ constexpr int64_t kMaxColorTexturePixels = int64_t(1) << 26;
 class ColorTexture {
  public:
   // Reads a PNG or JPEG file through the bounded input reader (runtime/io/read_input.h) and
-  // decodes it with stb_image. False and a message naming `path` when the file is missing
+  // decodes it with the image reader (runtime/io/read_image.h). False and a message naming `path` when the file is missing
   // or unreadable, is not a PNG or JPEG, is corrupt or truncated, is empty, or has more
   // than kMaxColorTexturePixels pixels; the texture is then unchanged.
   bool load(const std::string& path, std::string& error);
@@ -38,8 +38,9 @@ class ColorTexture {
   bool empty() const { return rgb_.empty(); }
 
   // A check for refusing a bad texture file up front, short of decoding it: the file is
-  // readable, a PNG or JPEG by its first bytes, and has a header stb_image reads that
-  // declares a size within the limit. False and a message naming `path` otherwise.
+  // readable, a PNG or JPEG by its first bytes, has a header that declares a size within
+  // the limit, and is complete (io::checkImage: a truncated PNG is never embedded). False
+  // and a message naming `path` otherwise.
   static bool probe(const std::string& path, std::string& error);
 
   // "image/png" or "image/jpeg" by the file's first bytes, nullptr for anything else.

@@ -24,8 +24,8 @@ constexpr int64_t kMaxTexels = int64_t(1) << 26;
 class TextureMap {
  public:
   // Reads a PNG, JPEG, BMP or binary PGM/PPM (P5/P6) file, 8 or 16 bits per channel, 1 to 4
-  // channels, through the bounded input reader (runtime/io/read_input.h); PGM/PPM by
-  // pnm_reader.h, the others by stb_image. False and a message naming `path` when the
+  // channels (the format by its first bytes), through the bounded input reader
+  // (runtime/io/read_input.h) and the image reader (runtime/io/read_image.h). False and a message naming `path` when the
   // file is missing or unreadable, is not an image of these kinds, is corrupt or
   // truncated, is empty, or exceeds the limits above; the map is then unchanged.
   bool load(const std::string& path, std::string& error);

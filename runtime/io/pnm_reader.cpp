@@ -1,8 +1,8 @@
-#include "runtime/texture/pnm_reader.h"
+#include "runtime/io/pnm_reader.h"
 
 #include <algorithm>
 
-namespace fgsg::rt::texture {
+namespace fgsg::rt::io {
 
 namespace {
 
@@ -79,4 +79,4 @@ bool readPnmSamples(const std::string& bytes, const PnmHeader& header, std::vect
   return true;
 }
 
-}  // namespace fgsg::rt::texture
+}  // namespace fgsg::rt::io

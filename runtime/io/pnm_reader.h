@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace fgsg::rt::texture {
+namespace fgsg::rt::io {
 
 struct PnmHeader {
   int width = 0, height = 0, channels = 0;  // channels: 1 (P5) or 3 (P6)
@@ -34,4 +34,4 @@ bool readPnmHeader(const std::string& bytes, PnmHeader& header, std::string& err
 bool readPnmSamples(const std::string& bytes, const PnmHeader& header, std::vector<uint16_t>& samples,
                     std::string& error);
 
-}  // namespace fgsg::rt::texture
+}  // namespace fgsg::rt::io
