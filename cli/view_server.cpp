@@ -182,7 +182,15 @@ bool ViewServer::listen(const std::string& host, uint16_t port, std::string& err
   websocketpp::lib::error_code wec;
   impl_->server.listen(boost::asio::ip::tcp::endpoint(address, port), wec);
   if (wec) {
-    error = "cannot listen on " + host + ":" + std::to_string(port) + ": " + wec.message();
+    // websocketpp says only "Underlying Transport Error": ask the system what it was.
+    boost::asio::io_context probeContext;
+    boost::asio::ip::tcp::acceptor probe(probeContext);
+    boost::system::error_code why;
+    probe.open(address.is_v6() ? boost::asio::ip::tcp::v6() : boost::asio::ip::tcp::v4(), why);
+    if (!why) probe.bind(boost::asio::ip::tcp::endpoint(address, port), why);
+    error = "cannot listen on " + host + ":" + std::to_string(port) + ": " + (why ? why.message() : wec.message());
+    if (why == boost::asio::error::address_in_use)
+      error += " (another fgsg view?): choose another --port, or --port 0 for a free one";
     return false;
   }
   impl_->server.start_accept(wec);

@@ -24,6 +24,14 @@ expect 2 "--port" -- "$source/examples/koch.fgsg" --port 70000
 expect 2 "--set expects name=value" -- "$source/examples/koch.fgsg" --set x
 expect 1 "missing.fgsg" -- "$source/examples/missing.fgsg"
 expect 1 "--host 300.1.1.1: not an IP address" -- "$source/examples/koch.fgsg" --host 300.1.1.1 --port 0
+# A port in use says so, and how to choose another.
+python3 -c 'import socket,time; s=socket.socket(); s.bind(("127.0.0.1",0)); s.listen(); print(s.getsockname()[1], flush=True); time.sleep(30)' >"${TMPDIR:-/tmp}/fgsg-view-port.$$" &
+holder=$!
+for _ in $(seq 50); do [ -s "${TMPDIR:-/tmp}/fgsg-view-port.$$" ] && break; sleep 0.1; done
+busy=$(cat "${TMPDIR:-/tmp}/fgsg-view-port.$$")
+expect 1 "Address already in use (another fgsg view?): choose another --port" -- "$source/examples/koch.fgsg" --port "$busy"
+kill $holder 2>/dev/null
+rm -f "${TMPDIR:-/tmp}/fgsg-view-port.$$"
 # A server reachable from the network without its token is refused before it starts.
 expect 2 "needs its token" -- "$source/examples/koch.fgsg" --host 0.0.0.0 --no-token --port 0
 expect 2 "needs its token" -- "$source/examples/koch.fgsg" --host 192.168.1.5 --no-token --port 0
