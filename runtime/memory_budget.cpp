@@ -1,7 +1,9 @@
 #include "runtime/memory_budget.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -75,6 +77,13 @@ uint64_t availableMemoryBytes() {
 uint64_t defaultMemoryBudget() {
   const uint64_t bytes = availableMemoryBytes();
   return bytes > 0 ? bytes / 2 : uint64_t(4) << 30;
+}
+
+uint64_t readerMemoryLimit(uint64_t maxMemoryBytes) {
+  uint64_t limit = maxMemoryBytes ? maxMemoryBytes : defaultMemoryBudget();
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min<uint64_t>(limit, as.rlim_cur / 4 * 3);
+  return limit;
 }
 
 uint64_t residentMemoryBytes() {

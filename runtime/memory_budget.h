@@ -22,6 +22,11 @@ std::string formatMemorySize(uint64_t bytes);
 uint64_t availableMemoryBytes();
 // The default budget: half of availableMemoryBytes() (4 GiB when that is unknown).
 uint64_t defaultMemoryBudget();
+// The memory a reader may build from one input file (a mesh file's nodes expanded, its
+// meshes placed): `maxMemoryBytes` (--max-memory) when not 0, else defaultMemoryBudget();
+// never more than three quarters of the address-space limit (`ulimit -v`) when one is set.
+// Readers refuse a file whose declared content needs more, before reading it.
+uint64_t readerMemoryLimit(uint64_t maxMemoryBytes = 0);
 // The process's resident set, in bytes; 0 if it cannot be read.
 uint64_t residentMemoryBytes();
 

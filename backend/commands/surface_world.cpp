@@ -97,6 +97,7 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
   std::string error;
   rt::surface::SurfaceLoadOptions load;
   load.repair = options.repairSurface;
+  load.maxMemoryBytes = options.maxMemoryBytes;
   bool ok = false;
   if (!options.surfaceOverride.empty()) {
     ok = rt::surface::loadSurface(options.surfaceOverride, impl_->mesh, error, load);

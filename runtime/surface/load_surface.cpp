@@ -29,7 +29,7 @@ std::string lowerExtension(const std::string& path) {
 // Reads vertices and fan-triangulated polygons (and texture coordinates, where the file
 // has them); false with a message when the file cannot be read at all. `polygonal` tells
 // whether any polygon had more than three corners.
-bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::string& error) {
+bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, uint64_t memoryLimit, std::string& error) {
   const std::string ext = lowerExtension(path);
   static const char* const kFormats[] = {".obj", ".ply", ".off", ".stl", ".gltf", ".glb", ".fbx", ".dae"};
   if (std::find(std::begin(kFormats), std::end(kFormats), ext) == std::end(kFormats)) {
@@ -42,7 +42,7 @@ bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, std::s
   if (ext != ".off" && ext != ".stl") {
     std::string bytes;
     if (!io::readInputFile(path, "a mesh file", bytes, error)) return false;
-    if (readsThroughAssimp(ext, bytes)) return readTexturedMesh(path, bytes, mesh, polygonal, error);
+    if (readsThroughAssimp(ext, bytes)) return readTexturedMesh(path, bytes, mesh, polygonal, error, memoryLimit);
   }
   io::MeshFileContent file;
   if (!io::readMeshFile(path, file, error)) return false;
@@ -488,7 +488,7 @@ bool loadSurface(const std::string& path, SurfaceMesh& out, std::string& error,
   if (repaired) *repaired = {};
   SurfaceMesh mesh;
   bool polygonal = false;
-  if (!readRaw(path, mesh, polygonal, error)) return false;
+  if (!readRaw(path, mesh, polygonal, options.maxMemoryBytes, error)) return false;
   if (options.repair) {
     const SurfaceRepairReport report = repairSurface(mesh);
     if (repaired) *repaired = report;

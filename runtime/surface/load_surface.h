@@ -9,6 +9,7 @@
 #include "runtime/surface/surface_mesh.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct SurfaceLoadOptions {
   // isolated vertices, and orient every connected component consistently (outwards for a
   // closed one). Non-manifold geometry is never repaired: it stays an error.
   bool repair = false;
+  // --max-memory: the glTF reader refuses a file whose nodes would place more than this
+  // holds (memory_budget.h's readerMemoryLimit(); 0: the default budget).
+  uint64_t maxMemoryBytes = 0;
 };
 
 // What repairSurface() changed.

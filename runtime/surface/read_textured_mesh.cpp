@@ -1,8 +1,12 @@
 #include "runtime/surface/read_textured_mesh.h"
 
+#include "runtime/io/check_collada.h"
+#include "runtime/io/check_gltf.h"
 #include "runtime/io/check_ply.h"
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/read_mesh_file.h"
+#include "runtime/memory_budget.h"
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
@@ -105,8 +109,8 @@ bool checkObjText(const std::string& path, std::string_view bytes, std::string& 
       ++seen[kind];
       for (std::string_view t = nextWord(line, pos); !t.empty(); t = nextWord(line, pos))
         if (spellsNonFinite(t))
-          return fail(std::string(kind ? "texture" : "vertex") + " coordinate '" + std::string(t) +
-                      "' is not a finite number");
+          return fail(std::string(kind ? "texture" : "vertex") + " coordinate " + io::quoteText(t) +
+                      " is not a finite number");
     } else if (word == "f") {
       // v, v/vt, v//vn or v/vt/vn: the first two checked (negative: counted back from the
       // last one so far).
@@ -123,8 +127,8 @@ bool checkObjText(const std::string& path, std::string_view bytes, std::string& 
           const bool valid = !part[kind].empty() && status == std::errc() && end == part[kind].data() + part[kind].size() &&
                              (index > 0 ? index <= total[kind] : index < 0 && -index <= seen[kind]);
           if (!valid)
-            return fail("face corner '" + std::string(t) + "' names " + noun[kind] + " '" +
-                        std::string(part[kind]) + "', but there are " +
+            return fail("face corner " + io::quoteText(t) + " names " + noun[kind] + " " +
+                        io::quoteText(part[kind]) + ", but there are " +
                         std::to_string(index < 0 ? seen[kind] : total[kind]) + (index < 0 ? " so far" : "") +
                         " (counting from 1)");
         }
@@ -205,7 +209,7 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes) {
 }
 
 bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
-                      std::string& error) {
+                      std::string& error, uint64_t maxMemoryBytes) {
   mesh = SurfaceMesh{};
   polygonal = false;
   if (bytes.empty()) {
@@ -219,6 +223,12 @@ bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMe
   if (ext == ".ply" && !(io::checkPlyStructure(path, bytes, error) && io::findNonFiniteText(path, ext, bytes, error)))
     return false;
   if (ext == ".obj" && !checkObjText(path, bytes, error)) return false;
+  // assimp copies a node for every time it is listed as a child or instanced, and
+  // allocates what the file declares: the node graph and counts are checked first.
+  if ((ext == ".gltf" || ext == ".glb") &&
+      !io::checkGltfBounds(path, bytes, readerMemoryLimit(maxMemoryBytes), error))
+    return false;
+  if (ext == ".dae" && !io::checkColladaNodes(path, bytes, error)) return false;
 
   Assimp::Importer importer;
   importer.SetIOHandler(new CheckedIOSystem);  // the importer owns it

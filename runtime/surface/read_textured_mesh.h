@@ -8,6 +8,7 @@
 
 #include "runtime/surface/surface_mesh.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -28,8 +29,11 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes);
 // assimp turns it: 1 - v). `bytes` is the file's content as io::readInputFile read it
 // (assimp reads the file itself; the text formats are checked in `bytes` first). False
 // with a message starting with `path` when the file cannot be read or holds non-finite
-// numbers. `polygonal`: some polygon had more than three corners.
+// numbers. `polygonal`: some polygon had more than three corners. glTF files are checked
+// by io/check_gltf.h before assimp sees them (node trees, counts, and the memory the read
+// would take against `maxMemoryBytes`, 0 for the default: memory_budget.h's
+// readerMemoryLimit()), COLLADA files by io/check_collada.h (<instance_node> expansion).
 bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
-                      std::string& error);
+                      std::string& error, uint64_t maxMemoryBytes = 0);
 
 }  // namespace fgsg::rt::surface
