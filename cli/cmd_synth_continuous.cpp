@@ -124,6 +124,9 @@ int continuousSynthCommand(const Args& args) {
   if (onGround && floating) return usage("--on-ground and --floating exclude each other");
   o.onGround = !floating;
 
+  // --time-limit counts from here: reading a large example is part of the run.
+  rt::Deadline deadline = rt::Deadline::after(o.timeLimitSeconds);
+  o.deadline = &deadline;
   ExampleSolid ex;
   std::string err;
   if (!maskPath.empty()) {

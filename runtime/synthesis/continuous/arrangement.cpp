@@ -1,5 +1,7 @@
 #include "runtime/synthesis/continuous/arrangement.h"
 
+#include <atomic>
+
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -94,8 +96,10 @@ Key reduced(IVec3 n, int64_t d) {
 }  // namespace
 
 bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>& step,
-                      std::array<int64_t, 3> box, size_t maxVertices, Arrangement& A, std::string& error) {
+                      std::array<int64_t, 3> box, size_t maxVertices, Arrangement& A, std::string& error,
+                      const std::function<bool()>& timeUp) {
   A = Arrangement{};
+  const std::string stopped = "stopped by the time limit while the planes' vertices were found";
   A.dirs = dirs;
   A.step = step;
   A.box = box;
@@ -150,6 +154,7 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   };
 
   // Vertices: every triple of independent directions meets in a lattice (eq. 4.24).
+  size_t rows = 0;  // the time is asked every 256 rows
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j)
       for (size_t l = j + 1; l < m; ++l) {
@@ -165,6 +170,10 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
         const int64_t D = det * sgn;
         for (int64_t ki = loI; ki <= hiI; ++ki)
           for (int64_t kj = loJ; kj <= hiJ; ++kj) {
+            if ((++rows & 255) == 0 && timeUp()) {
+              error = stopped;
+              return false;
+            }
             IVec3 base{}, dir{};
             for (int c = 0; c < 3; ++c) {
               base[size_t(c)] = sgn * (step[i] * ki * c1[size_t(c)] + step[j] * kj * c2[size_t(c)]);
@@ -205,7 +214,15 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
     const double d = double(A.den[v]);
     keyed[v] = {double(A.num[v][2]) / d, double(A.num[v][1]) / d, double(A.num[v][0]) / d, int32_t(v)};
   }
+  if (timeUp()) {
+    error = stopped;
+    return false;
+  }
   tbb::parallel_sort(keyed.begin(), keyed.end());
+  if (timeUp()) {
+    error = stopped;
+    return false;
+  }
   std::vector<int32_t> order(A.den.size());
   for (size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].index;
   VertexIndex index;
@@ -247,7 +264,12 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   };
   constexpr size_t kChunk = 2048;  // vertices per chunk; chunks in order keep edges in vertex order
   std::vector<std::vector<Forward>> chunks((n + kChunk - 1) / kChunk);
+  std::atomic<bool> late{false};
   tbb::parallel_for(size_t(0), chunks.size(), [&](size_t chunk) {
+    if (late.load(std::memory_order_relaxed) || timeUp()) {
+      late = true;
+      return;
+    }
     std::vector<int32_t> through;
     std::vector<Forward>& found = chunks[chunk];
     for (size_t v = chunk * kChunk; v < std::min(n, (chunk + 1) * kChunk); ++v) {
@@ -291,6 +313,10 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
       }
     }
   });
+  if (late) {
+    error = stopped;
+    return false;
+  }
   // CSR: each vertex's edges along +line (in the order found), then those arriving along
   // -line (by their start).
   std::vector<uint32_t> count(n + 1, 0);

@@ -12,6 +12,7 @@
 #include "runtime/synthesis/continuous/directions.h"
 
 #include <array>
+#include <functional>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,8 +48,11 @@ struct Arrangement {
   }
 };
 
-// Builds it; false with a message when it would have more than `maxVertices` vertices.
+// Builds it; false with a message when it would have more than `maxVertices` vertices,
+// or when `timeUp` (asked every few thousand vertices, from several threads at once)
+// says the time is up.
 bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>& step,
-                      std::array<int64_t, 3> box, size_t maxVertices, Arrangement& out, std::string& error);
+                      std::array<int64_t, 3> box, size_t maxVertices, Arrangement& out, std::string& error,
+                      const std::function<bool()>& timeUp = [] { return false; });
 
 }  // namespace fgsg::rt::synthesis::continuous

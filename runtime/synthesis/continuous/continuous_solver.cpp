@@ -43,7 +43,13 @@ struct Problem {
   explicit Problem(const ContinuousOptions& opt) : o(opt), deadline(Deadline::after(opt.timeLimitSeconds)) {}
   const Word* base(int64_t v) const { return &baseTable[size_t(baseIndex[size_t(v)]) * size_t(W)]; }
   bool timeUp() { return deadline.expired() || (o.deadline && o.deadline->expired()); }
+  // The same from any thread (reads the clock).
+  bool timePassed() const { return deadline.passed() || (o.deadline && o.deadline->passed()); }
 };
+
+std::string timeLimitMessage(const ContinuousOptions& o) {
+  return "stopped by the time limit (" + std::to_string(o.timeLimitSeconds) + " s)";
+}
 
 // Does the label's solid reach both sides of a plane of direction `i` through its vertex?
 bool crosses(const std::vector<IVec3>& dirs, const Label& l, int i) {
@@ -139,8 +145,15 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
     const size_t ai = size_t(std::find(ex.dirs.begin(), ex.dirs.end(), axis) - ex.dirs.begin());
     box[size_t(c)] = (box[size_t(c)] + step[ai] - 1) / step[ai] * step[ai];
   }
-  if (!buildArrangement(ex.dirs, step, box, o.maxVertices, P.A, error)) return false;
-  const LabelCatalog cat = exampleLabels(ex);
+  // The time limit, asked throughout: the arrangement of a large box alone takes seconds.
+  auto timeLimit = [&] {
+    error = timeLimitMessage(o);
+    return false;
+  };
+  if (!buildArrangement(ex.dirs, step, box, o.maxVertices, P.A, error, [&] { return P.timePassed(); }))
+    return P.timePassed() ? timeLimit() : false;
+  LabelCatalog cat;
+  if (!exampleLabels(ex, cat, [&] { return P.timeUp(); })) return timeLimit();
   P.labels = cat.labels;
   P.k = int(P.labels.size());
   if (P.k > 4096) { error = "the example has more than 4096 distinct vertex figures"; return false; }
@@ -154,6 +167,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   const int yAxis = int(std::find(ex.dirs.begin(), ex.dirs.end(), IVec3{0, 1, 0}) - ex.dirs.begin());
   P.place.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
+    if ((v & 4095) == 0 && P.timeUp()) return timeLimit();
     const bool hidden = masked(P, v);
     P.place[v] = A.boundary[v] || hidden ? kBoundary : kInside;
     if (o.onGround && A.num[v][1] == 0 && !hidden) {
@@ -177,6 +191,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   std::map<std::tuple<uint32_t, uint8_t, uint8_t>, uint32_t> entry;
   P.baseIndex.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
+    if ((v & 4095) == 0 && P.timeUp()) return timeLimit();
     const auto key = std::make_tuple(A.planes[v], P.place[v], onMirror[v]);
     auto [it, added] = entry.emplace(key, uint32_t(P.baseTable.size() / W));
     if (added) {
@@ -202,7 +217,8 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   P.t = TransitionTable(P.k, P.W);
   std::map<std::pair<int32_t, uint32_t>, int> relation;
   std::vector<Link> links;
-  for (size_t v = 0; v < A.vertexCount(); ++v)
+  for (size_t v = 0; v < A.vertexCount(); ++v) {
+    if ((v & 4095) == 0 && P.timeUp()) return timeLimit();
     for (uint32_t e = A.edgeStart[v]; e < A.edgeStart[v + 1]; ++e) {
       if (A.edgeLine[e] < 0) continue;  // each edge once, from the end it leaves along +line
       const int32_t line = A.edgeLine[e] - 1;
@@ -234,6 +250,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
       }
       links.push_back({int32_t(v), A.edgeTo[e], it->second});
     }
+  }
   for (size_t s = 0; s < o.mirrorAxes.size(); ++s) {
     std::vector<std::pair<int32_t, int32_t>> pairs;
     for (int b = 0; b < P.k; ++b)
@@ -479,7 +496,7 @@ bool assignAll(Problem& P, std::vector<int32_t>& M, ContinuousStats& stats, std:
     ok = true;  // a block that failed was left as it was: still consistent
   }
   if (why == "the time limit") {
-    error = "stopped by the time limit (" + std::to_string(P.o.timeLimitSeconds) + " s)";
+    error = timeLimitMessage(P.o);
     return false;
   }
   if (block == 0 && !ok) {

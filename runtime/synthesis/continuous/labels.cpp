@@ -1,5 +1,7 @@
 #include "runtime/synthesis/continuous/labels.h"
 
+#include "runtime/synthesis/continuous/inside_test.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -41,19 +43,19 @@ namespace {
 
 // The figure of the solid at p with the planes of `mask` through it: each sector tested
 // a small step away from p.
-Label figureAt(const ExampleSolid& s, const DVec3& p, uint32_t mask, double step) {
+Label figureAt(const ExampleSolid& s, const InsideTest& solid, const DVec3& p, uint32_t mask, double step) {
   std::vector<std::pair<uint32_t, bool>> table;
   for (const Sector& sec : sectorsOf(s.dirs, mask)) {
     const DVec3 q{p[0] + step * sec.direction[0], p[1] + step * sec.direction[1], p[2] + step * sec.direction[2]};
-    table.push_back({sec.signs, windingNumber(s, q) > 0.5});
+    table.push_back({sec.signs, solid.inside(q)});
   }
   return canonicalLabel(mask, std::move(table));
 }
 
 }  // namespace
 
-LabelCatalog exampleLabels(const ExampleSolid& s) {
-  LabelCatalog c;
+bool exampleLabels(const ExampleSolid& s, LabelCatalog& c, const std::function<bool()>& timeUp) {
+  c = LabelCatalog{};
   auto add = [&](const Label& l) {
     if (std::find(c.labels.begin(), c.labels.end(), l) == c.labels.end()) c.labels.push_back(l);
   };
@@ -66,13 +68,10 @@ LabelCatalog exampleLabels(const ExampleSolid& s) {
   }
   // The step off a point: well inside its neighbourhood (a tenth of the distance to the
   // nearest other vertex, at most 1e-3 of the example's size).
+  const NearestVertex vertices(s);
+  const InsideTest solid(s);
   auto stepAt = [&](const DVec3& p, int skip) {  // skip: p's own vertex, -1 for none
-    double nearest = s.diagonal;
-    for (size_t v = 0; v < s.vertices.size(); ++v) {
-      if (int(v) == skip) continue;
-      const DVec3& q = s.vertices[v];
-      nearest = std::min(nearest, std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2])));
-    }
+    const double nearest = std::min(s.diagonal, vertices.distance(p, skip));
     return std::min(1e-3 * s.diagonal, 0.1 * nearest);
   };
   // Edges: the two faces' half-spaces at the edge's midpoint.
@@ -88,13 +87,16 @@ LabelCatalog exampleLabels(const ExampleSolid& s) {
     }
   }
   for (const auto& [e, mask] : edgeMask) {
+    if (timeUp()) return false;
     const DVec3 &a = s.vertices[size_t(e.first)], &b = s.vertices[size_t(e.second)];
     const DVec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
-    add(figureAt(s, mid, mask, stepAt(mid, -1)));
+    add(figureAt(s, solid, mid, mask, stepAt(mid, -1)));
   }
-  for (size_t v = 0; v < s.vertices.size(); ++v)
-    if (vertexMask[v]) add(figureAt(s, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v))));
-  return c;
+  for (size_t v = 0; v < s.vertices.size(); ++v) {
+    if (timeUp()) return false;
+    if (vertexMask[v]) add(figureAt(s, solid, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v))));
+  }
+  return true;
 }
 
 std::optional<uint64_t> edgePattern(const Label& label, const std::vector<IVec3>& dirs, const IVec3& axis,

@@ -14,6 +14,7 @@
 #include "runtime/synthesis/continuous/example_solid.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,8 +37,15 @@ struct LabelCatalog {
 };
 
 // Every vertex figure of the example: of its interior and exterior, its faces, its edges
-// and its vertices (§4.5.3).
-LabelCatalog exampleLabels(const ExampleSolid& solid);
+// and its vertices (§4.5.3). False when `timeUp` (asked at every edge and vertex) said
+// yes first.
+bool exampleLabels(const ExampleSolid& solid, LabelCatalog& out, const std::function<bool()>& timeUp);
+// The same without a limit.
+inline LabelCatalog exampleLabels(const ExampleSolid& solid) {
+  LabelCatalog c;
+  exampleLabels(solid, c, [] { return false; });
+  return c;
+}
 
 // The inside/outside of `label` just off a vertex along `axis`, one bit per wedge of
 // `wedges` (wedgesAround(axis, planes containing the axis)). None when the label uses a

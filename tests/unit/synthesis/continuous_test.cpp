@@ -3,6 +3,7 @@
 #include "runtime/io/write_mesh.h"
 #include "runtime/synthesis/continuous/arrangement.h"
 #include "runtime/synthesis/continuous/continuous.h"
+#include "runtime/synthesis/continuous/inside_test.h"
 #include "runtime/synthesis/continuous/labels.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -140,6 +141,63 @@ TEST_CASE("continuous: a box has 28 labels and a concave L-shape adds reflex one
     if (__builtin_popcount(l.dirs) == 2 && l.in.size() == 3) ++reflexEdges;
   CHECK(reflexEdges == 1);
   CHECK(c.labels.size() == 28 + 3);  // the reflex edge and the two vertices at its ends
+}
+
+TEST_CASE("continuous: the ray test agrees with the winding number, near faces, edges and corners too", "[continuous]") {
+  // A grid of points over the bounding box (with many exactly on faces, edges and
+  // vertices: those fall back to the sum) and points a small step off each vertex.
+  for (const auto& mesh : {box(2, 1, 1), lShape(), house()}) {
+    const ExampleSolid s = solid(mesh);
+    const InsideTest test(s);
+    int checked = 0, inside = 0;
+    for (int i = -1; i <= 9; ++i)
+      for (int j = -1; j <= 9; ++j)
+        for (int k = -1; k <= 9; ++k) {
+          const DVec3 p{i * 0.25 + 0.013, j * 0.25, k * 0.25 - 0.007};
+          const bool expected = windingNumber(s, p) > 0.5;
+          CHECK(test.inside(p) == expected);
+          ++checked, inside += expected;
+        }
+    for (const DVec3& v : s.vertices)
+      for (int d = 0; d < 27; ++d) {
+        const double step = 1e-4;
+        const DVec3 p{v[0] + step * (d % 3 - 1), v[1] + step * (d / 3 % 3 - 1), v[2] + step * (d / 9 - 1)};
+        INFO("point " << p[0] << " " << p[1] << " " << p[2] << " winding " << windingNumber(s, p));
+        CHECK(test.inside(p) == (windingNumber(s, p) > 0.5));
+      }
+    CHECK(inside > 0);
+    CHECK(inside < checked);
+    CHECK(test.fallbacks() < uint64_t(checked));  // most points take the ray
+  }
+}
+
+TEST_CASE("continuous: a box cut into many coplanar quads has the box's 28 labels", "[continuous]") {
+  // Each side of the unit cube as n x n quads (issue 42: thousands of them took seconds).
+  const int n = 12;
+  std::vector<std::array<double, 3>> v;
+  std::map<std::array<int, 3>, int> index;
+  std::vector<std::vector<int>> faces;
+  auto at = [&](std::array<int, 3> p) {
+    auto [it, added] = index.emplace(p, int(v.size()));
+    if (added) v.push_back({p[0] / double(n), p[1] / double(n), p[2] / double(n)});
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side : {0, n})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          auto corner = [&](int a, int b) {
+            std::array<int, 3> p{};
+            p[size_t(axis)] = side, p[size_t((axis + 1) % 3)] = a, p[size_t((axis + 2) % 3)] = b;
+            return at(p);
+          };
+          std::vector<int> q{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1)};
+          if (!side) std::reverse(q.begin(), q.end());
+          faces.push_back(q);
+        }
+  CHECK(exampleLabels(solid(polygons(v, faces))).labels.size() == 28);
+  LabelCatalog c;
+  CHECK_FALSE(exampleLabels(solid(polygons(v, faces)), c, [] { return true; }));  // the time is up at once
 }
 
 TEST_CASE("continuous: the arrangement meets four directions exactly on the lattice", "[continuous]") {
