@@ -3,6 +3,7 @@
 // copies. The Python face (GrammarError, Grammar.from_file ...) is python/fgsg/__init__.py.
 #include "backend/derive_messages.h"
 #include "backend/engine.h"
+#include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
 #include "runtime/abi.h"
 #include "cli/derive_stats.h"
@@ -110,7 +111,11 @@ struct Grammar {
     return compile(file.text, path);
   }
 
-  std::shared_ptr<Result> generate(uint64_t seed, const py::dict& attrs, const std::optional<std::string>& surface,
+  // `attrs`: (name, value as text) pairs, their Python types already checked against the
+  // attributes' kinds by the package (python/fgsg/__init__.py); `seed` a whole number from
+  // 0 to 2^64 - 1 (checked there too).
+  std::shared_ptr<Result> generate(uint64_t seed, const std::vector<std::pair<std::string, std::string>>& attrs,
+                                   const std::optional<std::string>& surface,
                                    std::optional<uint64_t> maxShapes, const std::string& engineName,
                                    const std::optional<std::string>& lots) {
     const auto engine = backend::parseEngine(engineName);
@@ -125,13 +130,8 @@ struct Grammar {
       if (!rt::readLots(*lots, options.lots, skipped, error)) throw std::runtime_error(error);
       options.lotsName = *lots;
     }
-    for (const auto& [key, value] : attrs) {
-      std::string text;
-      if (py::isinstance<py::bool_>(value)) text = value.cast<bool>() ? "true" : "false";
-      else if (py::isinstance<py::str>(value)) text = value.cast<std::string>();
-      else text = py::str(value).cast<std::string>();
-      options.attrOverrides.push_back({key.cast<std::string>(), text});
-    }
+    checkAttrs(attrs);
+    options.attrOverrides = attrs;
     auto result = std::make_shared<Result>();
     std::string error;
     frontend::Diagnostics diags(&source);
@@ -161,9 +161,46 @@ struct Grammar {
     return result;
   }
 
+  // An attribute the grammar does not declare, or a value it cannot take (a count that is
+  // not whole, ...): a GrammarError (R010) worded for Python, located at the attribute's
+  // declaration when there is one. The engine would say the same of `--set`.
+  void checkAttrs(const std::vector<std::pair<std::string, std::string>>& attrs) const {
+    for (const auto& [name, text] : attrs) {
+      std::string problem = backend::attributeOverrideProblem(module, name, text);
+      if (problem.empty()) continue;
+      const int a = module.findAttr(name);
+      // The problem begins "name: " (unknown) or "name=text: " (a bad value).
+      const std::string prefix = a < 0 ? name + ": " : name + "=" + text + ": ";
+      if (problem.rfind(prefix, 0) == 0) problem = problem.substr(prefix.size());
+      const std::string key = "attrs['" + name + "']";
+      frontend::Diagnostics diags(&source);
+      frontend::SourceRange at{};
+      if (a >= 0) {
+        const ir::Loc loc = module.attrs[a].value.loc;
+        at = {{loc.line, loc.col}, {loc.line, loc.col}};
+      }
+      diags.error("R010", at, a < 0 ? key + ": " + problem : key + " = " + text + ": " + problem);
+      throw CompileError{diagnosticList(diags, source.name)};
+    }
+  }
+
+  // name -> (kind, default): "num" (a float), "bool", "str" or "vec3" (3 floats).
   py::list attrs() const {
     py::list out;
-    for (const ir::Attr& a : module.attrs) out.append(a.name);
+    for (const ir::Attr& a : module.attrs) {
+      py::object value;
+      switch (a.type) {
+        case ir::Type::Num: value = py::float_(a.value.num); break;
+        case ir::Type::Bool: value = py::bool_(a.value.num != 0); break;
+        case ir::Type::Str: {
+          const auto id = static_cast<size_t>(a.value.num);
+          value = py::str(id < module.strings.size() ? module.strings[id] : std::string());
+          break;
+        }
+        case ir::Type::Vec3: value = py::make_tuple(a.value.vec[0], a.value.vec[1], a.value.vec[2]); break;
+      }
+      out.append(py::make_tuple(a.name, ir::typeName(a.type), value));
+    }
     return out;
   }
 };
@@ -254,5 +291,9 @@ PYBIND11_MODULE(_fgsg, m) {
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
            py::arg("max_shapes"), py::arg("engine"), py::arg("lots"))
       .def_property_readonly("attrs", &Grammar::attrs)
-      .def_property_readonly("name", [](const Grammar& g) { return g.source.name; });
+      .def_property_readonly("name", [](const Grammar& g) { return g.source.name; })
+      // The grammar's text, then each imported module's (what a compiled library embeds).
+      .def_property_readonly("source", [](const Grammar& g) { return py::bytes(g.source.text); })
+      .def_property_readonly("is_library", [](const Grammar& g) { return g.program != nullptr; });
+  m.attr("__version__") = FGSG_VERSION;
 }

@@ -12,8 +12,11 @@ file, line, column, code and message of the first error. generate() releases the
 threads derive in parallel.
 """
 import json
+import math
+import numbers
 import os
 import sys
+from typing import NamedTuple
 
 # The JIT (lib/libfgsg_llvm.so) resolves fgsg's own functions from the process: the
 # engine is loaded so that they are visible to it, and the plugins are looked up beside
@@ -30,7 +33,8 @@ try:
 finally:
     sys.setdlopenflags(_flags)
 
-__all__ = ["Grammar", "Result", "GrammarError"]
+__all__ = ["Grammar", "Result", "GrammarError", "Attr", "__version__"]
+__version__ = _fgsg.__version__  # the project's version (CMakeLists.txt)
 
 
 class GrammarError(Exception):
@@ -82,6 +86,68 @@ class Result:
         """Writes the mesh (.glb, .obj or .ply by the extension), atomically."""
         self._native.write(os.fspath(path))
 
+    def __repr__(self):
+        stats = self.stats
+        return (f"<fgsg.Result: {stats.get('triangles', 0)} triangles, {stats.get('instances', 0)} instances, "
+                f"{stats.get('shapes', 0)} shapes>")
+
+
+class Attr(NamedTuple):
+    """A grammar's attribute: its `name`, `kind` ("num", "bool", "str" or "vec3") and
+    `default` (a float, bool, str or a tuple of 3 floats)."""
+    name: str
+    kind: str
+    default: object
+
+
+_SEED_MAX = 2**64 - 1
+
+
+def _whole(what, value, high=_SEED_MAX):
+    """`value` as an int from 0 to `high`: a TypeError for a non-integer (7.9, "7", True),
+    a ValueError for one out of range."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{what} must be an int, not {type(value).__name__}")
+    value = int(value)
+    if not 0 <= value <= high:
+        raise ValueError(f"{what} must be from 0 to {high}, got {value}")
+    return value
+
+
+def _attr_text(key, value, attr):
+    """The value of `attrs[key]` as the engine reads it, after checking its Python type
+    against the attribute's kind (a TypeError or ValueError naming `attrs[key]`)."""
+    where = f"attrs[{key!r}]"
+    if attr is None:  # not declared: the engine says so (a GrammarError listing those that are)
+        return "true" if value is True else "false" if value is False else str(value)
+
+    def number(v, what):
+        if isinstance(v, bool) or not isinstance(v, numbers.Real):
+            raise TypeError(f"{where} must be {what}, not {type(v).__name__}")
+        try:
+            v = float(v)
+        except OverflowError:
+            v = math.inf
+        if not math.isfinite(v):
+            raise ValueError(f"{where} must be a finite number, got {v}")
+        return repr(v)
+
+    if attr.kind == "bool":
+        if type(value).__name__ not in ("bool", "bool_"):  # numpy's bool_ too
+            raise TypeError(f"{where} must be a bool, not {type(value).__name__}")
+        return "true" if value else "false"
+    if attr.kind == "str":
+        if not isinstance(value, str):
+            raise TypeError(f"{where} must be a str, not {type(value).__name__}")
+        return value
+    if attr.kind == "vec3":
+        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
+            raise TypeError(f"{where} must be 3 numbers (a tuple, list or array), not {type(value).__name__}")
+        if len(value) != 3:
+            raise ValueError(f"{where} must be 3 numbers, got {len(value)}")
+        return ",".join(number(v, "3 numbers") for v in value)
+    return number(value, "a number (int or float)")
+
 
 class Grammar:
     """A compiled grammar. Build it with from_file or from_text; generate() derives it."""
@@ -106,15 +172,50 @@ class Grammar:
         return cls(_raising(_fgsg.Grammar.compile, text, name))
 
     @property
+    def name(self):
+        """The grammar's file (or the name given to from_text)."""
+        return self._native.name
+
+    @property
     def attrs(self):
-        """The names of the grammar's attributes (settable in generate)."""
-        return list(self._native.attrs)
+        """The grammar's attributes (settable in generate), in declaration order: a dict
+        of name -> Attr(name, kind, default)."""
+        return {name: Attr(name, kind, default) for name, kind, default in self._native.attrs}
+
+    @property
+    def source(self):
+        """The grammar's text followed by each imported module's, as bytes (what a
+        compiled library embeds; fgsg.batch hashes it)."""
+        return self._native.source
+
+    def __repr__(self):
+        kind = "library" if self._native.is_library else "grammar"
+        return f"<fgsg.Grammar {self.name!r} ({kind}, {len(self._native.attrs)} attrs)>"
 
     def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit", lots=None):
-        """Derives the grammar: `seed`, attribute values by name (numbers, booleans,
-        strings), a surface mesh file replacing the grammar's, a shape limit, the engine
-        ("jit", or "interp": the reference interpreter; the results are equal), and lots:
-        a GeoJSON or OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots)."""
-        return Result(_raising(self._native.generate, int(seed), dict(attrs or {}),
+        """Derives the grammar: `seed` (an int from 0 to 2**64 - 1), attribute values by
+        name (a number for a num attribute, a bool, a str, 3 numbers for a vec3), a surface
+        mesh file replacing the grammar's, a shape limit, the engine ("jit", or "interp":
+        the reference interpreter; the results are equal), and lots: a GeoJSON or
+        OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots).
+
+        A value of the wrong type is a TypeError, a seed out of range a ValueError; an
+        attribute the grammar does not declare is a GrammarError (R010)."""
+        seed = _whole("seed", seed)
+        if max_shapes is not None:
+            max_shapes = _whole("max_shapes", max_shapes)
+        if attrs is None:
+            attrs = {}
+        if not hasattr(attrs, "items"):
+            raise TypeError(f"attrs must be a dict of attribute names to values, not {type(attrs).__name__}")
+        declared = self.attrs
+        texts = []
+        for key, value in attrs.items():
+            if not isinstance(key, str):
+                raise TypeError(f"attrs keys must be str (attribute names), not {type(key).__name__}")
+            texts.append((key, _attr_text(key, value, declared.get(key))))
+        if not isinstance(engine, str):
+            raise TypeError(f"engine must be a str ('jit' or 'interp'), not {type(engine).__name__}")
+        return Result(_raising(self._native.generate, seed, texts,
                                None if surface is None else os.fspath(surface), max_shapes, engine,
                                None if lots is None else os.fspath(lots)))

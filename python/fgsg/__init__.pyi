@@ -1,9 +1,16 @@
 # Type stubs of the fgsg package (python/fgsg/__init__.py).
 import os
-from typing import Any, Mapping, Optional, Union
+from typing import Any, Mapping, NamedTuple, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
+
+__version__: str
+
+class Attr(NamedTuple):
+    name: str
+    kind: str  # "num", "bool", "str" or "vec3"
+    default: Union[float, bool, str, tuple[float, float, float]]
 
 class GrammarError(Exception):
     diagnostics: list[dict[str, Any]]
@@ -42,7 +49,12 @@ class Grammar:
     @classmethod
     def from_text(cls, text: str, name: str = ...) -> "Grammar": ...
     @property
-    def attrs(self) -> list[str]: ...
-    def generate(self, seed: int = ..., attrs: Optional[Mapping[str, Union[int, float, bool, str]]] = ...,
+    def name(self) -> str: ...
+    @property
+    def attrs(self) -> dict[str, Attr]: ...
+    @property
+    def source(self) -> bytes: ...
+    def generate(self, seed: int = ...,
+                 attrs: Optional[Mapping[str, Union[int, float, bool, str, Sequence[float]]]] = ...,
                  surface: Optional[Union[str, os.PathLike[str]]] = ..., max_shapes: Optional[int] = ...,
                  engine: str = ..., lots: Optional[Union[str, os.PathLike[str]]] = ...) -> Result: ...

@@ -98,10 +98,10 @@ def test_a_grammar_error_carries_its_location():
 def test_a_derivation_error_carries_its_location():
     g = fgsg.Grammar.from_text("attr w = 2;\nA ~> S(w, 1, 1) I(\"cube\");\n", "attrs.fgsg")
     with pytest.raises(fgsg.GrammarError) as e:
-        g.generate(attrs={"w": "wide"})
+        g.generate(attrs={"width": 3})
     assert e.value.code.startswith("R")
     assert e.value.file == "attrs.fgsg"
-    assert "w" in e.value.message
+    assert "attrs['width']: the grammar declares no attr 'width'" in e.value.message
     with pytest.raises(ValueError):
         g.generate(engine="gpu")
 
