@@ -1,6 +1,8 @@
 // fgsg batch JOBS.json: the Python package's Dask batch runner (python/fgsg/batch.py),
 // run with the python3 the package was built for and the package of this build or
-// installation on its path: `python3 -m fgsg.batch` by another name.
+// installation on its path: `python3 -m fgsg.batch` by another name. Its main is called
+// from the imported module (not run as __main__), so that the tasks it sends a cluster
+// are fgsg.batch's functions, which the workers import.
 #include "cli/commands.h"
 
 #include <unistd.h>
@@ -36,7 +38,8 @@ int batchCommand(const Args& args) {
   const std::string path = package + (old && *old ? ":" + std::string(old) : "");
   setenv("PYTHONPATH", path.c_str(), 1);
   setenv("FGSG_BATCH_PROG", "fgsg batch", 1);  // its usage line names this command
-  std::vector<std::string> words = {FGSG_PYTHON_EXECUTABLE, "-m", "fgsg.batch"};
+  std::vector<std::string> words = {FGSG_PYTHON_EXECUTABLE, "-c",
+                                    "import sys; from fgsg.batch import main; sys.exit(main())"};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());

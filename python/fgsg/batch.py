@@ -11,13 +11,25 @@ with paths relative to the JOBS file's folder. The jobs are mapped over a dask.d
 cluster: an embedded LocalCluster (N worker processes, one thread each) unless
 --scheduler names a running scheduler. Each worker compiles a grammar once and keeps it.
 A job writes its .glb (atomically) and reports its figures; a job that fails reports its
-error (with the grammar's file:line:col) and the others go on. A job whose output exists
-and is whole (verify_output) is skipped, so a batch that was stopped resumes where it was;
-a damaged one (empty, a .glb whose header length is not the file's) is written again.
-Two jobs may not name one output. Dask retries the jobs of a worker that dies. The
-manifest, JOBS.manifest.json beside JOBS.json, lists every job's outcome; progress goes to
-stderr; the exit code is 0 when every job succeeded, 1 when one failed, 2 when nothing ran
-(a malformed JOBS file, a manifest that cannot be written).
+error (with the grammar's file:line:col) and the others go on. Two jobs may not name one
+output. Dask retries the jobs of a worker that dies.
+
+The manifest, JOBS.manifest.json beside JOBS.json (written atomically), lists the outcome
+of every job that finished, each with "inputs": a hash of what produced its output (the
+grammar with its imported modules, or the library; the seed, the attributes, the surface,
+the lots and every other field but "id" and "output"; job_inputs). Running the same
+command again resumes: a job is skipped when the manifest records it succeeded with the
+same inputs and its output is whole (verify_output), keeping its first run's figures;
+a job whose inputs changed, that failed, that the manifest does not record, or whose
+output is damaged (empty, a .glb whose header length is not the file's) runs again.
+--force runs every job. Progress goes to stderr. SIGINT (Ctrl-C) or SIGTERM stops the
+batch: the manifest says which jobs finished ("complete": false, "pending": the others),
+one line says so, and the exit code is 130 (143 for SIGTERM). Otherwise the exit code is
+0 when every job succeeded, 1 when one failed, 2 when nothing ran (a malformed JOBS file,
+a manifest that cannot be written).
+
+The tasks a cluster runs are functions of this module (run_job): its workers import
+fgsg.batch, so the package must be on their PYTHONPATH (docs/scale.md).
 
 Every server of the embedded LocalCluster (scheduler, nannies, workers, their HTTP
 servers) listens on 127.0.0.1 only; the scheduler's dashboard and information pages are
@@ -25,9 +37,11 @@ off unless --dashboard asks for them (then on 127.0.0.1, the address printed).
 """
 import argparse
 import functools
+import hashlib
 import json
 import logging
 import os
+import signal
 import struct
 import sys
 import tempfile
@@ -69,6 +83,55 @@ def load_jobs(path):
                              "give each job its own output")
         seen[key] = j
     return out
+
+
+# Bump when what job_inputs hashes changes: every recorded output is then made again.
+_INPUTS_VERSION = 1
+_FILE_FIELDS = ("grammar", "library", "surface", "lots")
+
+
+@functools.lru_cache(maxsize=256)
+def _file_digest(path, mtime_ns, size, grammar):
+    """sha256 of a file's bytes; of a grammar's text with its imported modules when it
+    compiles (a module changed is a grammar changed). Keyed by mtime and size too, so that
+    a file changed while the process lives is hashed again."""
+    if grammar:
+        try:
+            import fgsg
+            return hashlib.sha256(fgsg.Grammar.from_file(path).source).hexdigest()
+        except Exception:  # does not compile: its bytes (the job fails, and runs again)
+            pass
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _describe_file(path, grammar=False):
+    try:
+        st = os.stat(path)
+        return _file_digest(path, st.st_mtime_ns, st.st_size, grammar)
+    except OSError as e:
+        return f"unreadable: {e.strerror or e}"
+
+
+def job_inputs(job):
+    """A hash (hex sha256) of what a job's output is made from: the contents of its grammar
+    (with the modules it imports) or library, surface and lots files, and its seed,
+    attributes and every other field but "id" and "output". A resumed batch skips a job
+    only when its output was made from the same inputs. Assets a grammar loads are not
+    hashed: --force after changing one."""
+    described = {"inputs_version": _INPUTS_VERSION}
+    for key, value in job.items():
+        if key in ("id", "output"):
+            continue
+        if key in _FILE_FIELDS and isinstance(value, str) and value:
+            described[key] = {"sha256": _describe_file(value, grammar=key == "grammar")}
+        else:
+            described[key] = value
+    text = json.dumps(described, sort_keys=True, separators=(",", ":"), default=repr)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 _GLB_MAGIC, _GLB_JSON, _GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
@@ -153,20 +216,35 @@ def _verify_ply(f, size):
 
 
 @functools.lru_cache(maxsize=16)
-def _grammar(path, library=False, name=""):
+def _grammar(path, library=False, name="", version=None):
+    """The grammar at `path`, compiled once per `version` of it (a hash of its text with its
+    modules, or its file's mtime and size), so that a worker does not keep running a
+    grammar that changed."""
     import fgsg  # in the worker's process
     return fgsg.Grammar.from_library(path, name) if library else fgsg.Grammar.from_file(path)
 
 
-def run_job(job):
+def _file_version(path):
+    try:
+        st = os.stat(path)
+        return (st.st_mtime_ns, st.st_size)
+    except OSError:
+        return None
+
+
+def run_job(job, version=None):
     """Runs one job in the calling process: a dict with its outcome, never an exception
-    (a failing job must not take the batch down)."""
+    (a failing job must not take the batch down). `version` identifies the contents of
+    the job's grammar or library (run_batch passes their hash); by default its file's
+    mtime and size."""
     import fgsg
     start = time.monotonic()
     outcome = {"id": job["id"], "output": job["output"]}
     try:
-        grammar = (_grammar(job["library"], True, job.get("name", "")) if job.get("library")
-                   else _grammar(job["grammar"]))
+        path = job.get("library") or job["grammar"]
+        version = version or _file_version(path)
+        grammar = (_grammar(path, True, job.get("name", ""), version) if job.get("library")
+                   else _grammar(path, version=version))
         result = grammar.generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"),
                                   lots=job.get("lots"))
         os.makedirs(os.path.dirname(job["output"]) or ".", exist_ok=True)
@@ -180,38 +258,78 @@ def run_job(job):
     return outcome
 
 
-def run_batch(jobs, client, progress=None, on_result=None, on_damaged=None):
-    """Maps the jobs whose output is not there yet, or damaged (verify_output), over
-    `client`'s cluster; returns the outcomes in job order (skipped ones say so; a job run
-    again over a damaged output says why in "replaced"). `progress(done, total, failed)`
-    and `on_result(outcome)` are called as results arrive, `on_damaged(job, why)` before."""
+def _outcome_of(future, job):
+    """A finished future's outcome; a task that raised (a worker that cannot import fgsg,
+    one killed three times) is a failed job, not the end of the batch."""
+    try:
+        return future.result()
+    except Exception as e:
+        error = f"{type(e).__name__}: {e}"
+        if isinstance(e, ImportError) or "No module named 'fgsg'" in error:
+            error += " (the workers must import the fgsg package: put it on their PYTHONPATH)"
+        return {"id": job["id"], "output": job["output"], "ok": False, "error": error}
+
+
+def run_batch(jobs, client, progress=None, on_result=None, on_damaged=None, previous=None, force=False,
+              outcomes=None):
+    """Maps the jobs over `client`'s cluster and returns their outcomes in job order, each
+    with "inputs" (job_inputs). A job is skipped (its outcome the earlier one, "skipped":
+    True) when `previous` -- the outcomes of an earlier run, a manifest's "jobs" -- says it
+    succeeded with the same inputs and its output is whole (verify_output); unless `force`.
+    A job run again over a damaged output says why in "replaced", one run again over a
+    whole one in "rerun". `progress(done, total, failed)` and `on_result(outcome)` are
+    called as results arrive, `on_damaged(job, why)` before. `outcomes`, a list, is filled
+    in place as jobs finish (None for one that has not): what a caller interrupted by
+    KeyboardInterrupt knows finished."""
     from distributed import as_completed
 
     outputs = [os.path.realpath(job["output"]) for job in jobs]
     if len(set(outputs)) != len(outputs):
         raise ValueError("two jobs name one output (load_jobs says which)")
-    outcomes = [None] * len(jobs)
+    if outcomes is None:
+        outcomes = []
+    outcomes[:] = [None] * len(jobs)
+    earlier = {}
+    for o in previous or ():
+        if isinstance(o, dict) and isinstance(o.get("output"), str):
+            earlier[os.path.realpath(o["output"])] = o
+    inputs = [job_inputs(job) for job in jobs]
     futures = {}
-    damaged = {}
+    reasons = {}
     for i, job in enumerate(jobs):
+        record = earlier.get(outputs[i])
         if os.path.lexists(job["output"]):
             why = verify_output(job["output"])
-            if why is None:
-                outcomes[i] = {"id": job["id"], "output": job["output"], "ok": True, "skipped": True}
+            if why is not None:
+                reasons[i] = ("replaced", why)
+                if on_damaged:
+                    on_damaged(job, why)
+            elif force:
+                reasons[i] = ("rerun", "--force")
+            elif record is None:
+                reasons[i] = ("rerun", "no earlier outcome records what made the output")
+            elif not record.get("ok"):
+                reasons[i] = ("rerun", "it failed before")
+            elif record.get("inputs") != inputs[i]:
+                reasons[i] = ("rerun", "its inputs changed")
+            else:
+                kept = {k: v for k, v in record.items() if k not in ("replaced", "rerun")}
+                outcomes[i] = dict(kept, id=job["id"], output=job["output"], ok=True, skipped=True)
                 continue
-            damaged[i] = why
-            if on_damaged:
-                on_damaged(job, why)
-        futures[client.submit(run_job, job, key=f"fgsg-job-{i}-{job['id']}", pure=False)] = i
+        source = job.get("library") or job["grammar"]
+        version = _describe_file(source, grammar=not job.get("library"))
+        futures[client.submit(run_job, job, version, key=f"fgsg-job-{i}-{job['id']}", pure=False)] = i
     done = len(jobs) - len(futures)
     failed = 0
     if progress:
         progress(done, len(jobs), failed)
     for future in as_completed(futures):
-        outcome = future.result()
-        if futures[future] in damaged:
-            outcome["replaced"] = damaged[futures[future]]
-        outcomes[futures[future]] = outcome
+        i = futures[future]
+        outcome = _outcome_of(future, jobs[i])
+        outcome["inputs"] = inputs[i]
+        if i in reasons:
+            outcome[reasons[i][0]] = reasons[i][1]
+        outcomes[i] = outcome
         done += 1
         failed += not outcome["ok"]
         if on_result:
@@ -234,13 +352,47 @@ def manifest_problem(path):
     return None
 
 
-def write_manifest(path, outcomes):
+MANIFEST_VERSION = 2
+
+
+def manifest_path(jobs_path):
+    """Where `fgsg batch JOBS.json` writes its manifest: JOBS.manifest.json beside it."""
+    return os.path.splitext(jobs_path)[0] + ".manifest.json"
+
+
+def read_manifest(path):
+    """The outcomes an earlier run recorded at `path` (its "jobs"); [] when there is no
+    manifest. Raises ValueError for one that cannot be read as a manifest."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+    except FileNotFoundError:
+        return []
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise ValueError(f"the manifest {path} cannot be read ({e})") from None
+    if not isinstance(data, dict) or data.get("format") != "fgsg-batch-manifest" or \
+            not isinstance(data.get("jobs"), list):
+        raise ValueError(f"{path} is not an fgsg batch manifest")
+    return [o for o in data["jobs"] if isinstance(o, dict)]
+
+
+def write_manifest(path, outcomes, jobs=None, stopped=None):
     """The outcomes as JSON, replacing `path` atomically; no temporary file is left when
-    that fails."""
+    that fails. `outcomes` in job order, None for a job that has not finished (with `jobs`,
+    those are listed in "pending" by id); `stopped` says why the batch ended early."""
+    finished = [o for o in outcomes if o is not None]
+    pending = [j["id"] for j, o in zip(jobs or (), outcomes) if o is None]
+    summary = {"jobs": len(outcomes), "finished": len(finished),
+               "succeeded": sum(1 for o in finished if o.get("ok")),
+               "failed": sum(1 for o in finished if not o.get("ok")),
+               "skipped": sum(1 for o in finished if o.get("skipped"))}
+    document = {"format": "fgsg-batch-manifest", "version": MANIFEST_VERSION,
+                "complete": len(finished) == len(outcomes), "stopped": stopped, "summary": summary,
+                "jobs": finished, "pending": pending}
     folder = os.path.dirname(os.path.abspath(path))
     with tempfile.NamedTemporaryFile("w", dir=folder, delete=False, suffix=".tmp", encoding="utf-8") as f:
         try:
-            json.dump({"format": "fgsg-batch-manifest", "version": 1, "jobs": outcomes}, f, indent=1)
+            json.dump(document, f, indent=1)
             f.write("\n")
         except BaseException:
             f.close()
@@ -289,6 +441,29 @@ def local_cluster(workers, dashboard=False):
     return cluster
 
 
+class _Terminated(BaseException):
+    """SIGTERM, raised in the main thread as KeyboardInterrupt is for SIGINT."""
+
+
+# While jobs run, the manifest is written again at most this often (seconds): a batch
+# killed outright (SIGKILL, a lost machine) still leaves what finished until then.
+MANIFEST_EVERY = 10.0
+
+
+class IgnoreSigint:
+    """A worker plugin for the workers of `fgsg batch`'s own LocalCluster: a terminal's
+    Ctrl-C reaches every process of the batch, and the batch, which stops its workers, is
+    the one to answer it (a worker would print a traceback of its own). setup runs in the
+    worker's main thread, its event loop's."""
+
+    name = "fgsg-batch-ignore-sigint"
+
+    def setup(self, worker):
+        import threading
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog=os.environ.get("FGSG_BATCH_PROG", "python -m fgsg.batch"),
                                      description="Runs fgsg jobs on Dask (docs/scale.md).")
@@ -298,6 +473,8 @@ def main(argv=None):
                         help="LocalCluster worker processes (default: the cores)")
     parser.add_argument("--dashboard", action="store_true",
                         help="serve the LocalCluster's Dask dashboard on 127.0.0.1 (default: off)")
+    parser.add_argument("--force", action="store_true",
+                        help="run every job, also those the manifest records as done with the same inputs")
     args = parser.parse_args(argv)
     if os.path.isdir(args.jobs):
         print(f"fgsg batch: {args.jobs} is a directory, not a JOBS file", file=sys.stderr)
@@ -307,43 +484,96 @@ def main(argv=None):
     except (OSError, ValueError) as e:
         print(f"fgsg batch: {e}", file=sys.stderr)
         return 2
-    manifest = os.path.splitext(args.jobs)[0] + ".manifest.json"
+    manifest = manifest_path(args.jobs)
     problem = manifest_problem(manifest)
     if problem:
         print(f"fgsg batch: {problem}; no job was run", file=sys.stderr)
         return 2
+    try:
+        previous = read_manifest(manifest)
+    except ValueError as e:
+        print(f"fgsg batch: {e}: every job runs", file=sys.stderr)
+        previous = []
 
-    from distributed import Client
+    import threading
+    main_thread = threading.current_thread() is threading.main_thread()
+    line_open = [False]  # a progress line on a terminal not yet ended
 
     def progress(done, total, failed):
         end = "\n" if done == total or not sys.stderr.isatty() else ""
+        line_open[0] = not end
         print(f"\rfgsg batch: {done}/{total} jobs done" + (f", {failed} failed" if failed else ""),
               end=end, file=sys.stderr, flush=True)
-
-    if args.scheduler:
-        client = Client(args.scheduler)
-        cluster = None
-    else:
-        cluster = local_cluster(args.workers, dashboard=args.dashboard)
-        client = Client(cluster)
-        if args.dashboard:
-            print(f"fgsg batch: dashboard at {cluster.dashboard_link}", file=sys.stderr)
 
     def damaged(job, why):
         print(f"fgsg batch: job {job['id']}: {job['output']} is damaged ({why}); running it again", file=sys.stderr)
 
+    outcomes = []  # filled by run_batch as jobs finish
+    last_write = [time.monotonic()]
+
+    def on_result(outcome):
+        if time.monotonic() - last_write[0] >= MANIFEST_EVERY:
+            try:
+                write_manifest(manifest, outcomes, jobs)
+            except OSError:
+                pass  # said at the end, when it is written for good
+            last_write[0] = time.monotonic()
+
+    def terminated(signum, frame):
+        raise _Terminated()
+
+    old_term = signal.signal(signal.SIGTERM, terminated) if main_thread else None
+    stopped = None
+    client = cluster = None
     try:
-        outcomes = run_batch(jobs, client, progress=progress, on_damaged=damaged)
+        from distributed import Client
+        if args.scheduler:
+            client = Client(args.scheduler)
+        else:
+            cluster = local_cluster(args.workers, dashboard=args.dashboard)
+            client = Client(cluster)
+            client.register_worker_plugin(IgnoreSigint(), name=IgnoreSigint.name)
+            if args.dashboard:
+                print(f"fgsg batch: dashboard at {cluster.dashboard_link}", file=sys.stderr)
+        run_batch(jobs, client, progress=progress, on_result=on_result, on_damaged=damaged,
+                  previous=previous, force=args.force, outcomes=outcomes)
+    except KeyboardInterrupt:
+        stopped = "SIGINT"
+    except _Terminated:
+        stopped = "SIGTERM"
     finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+        if main_thread:  # a second Ctrl-C while the cluster closes: no traceback either
+            old_int = signal.signal(signal.SIGINT, signal.SIG_IGN)
+            signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        if stopped:  # closing a cluster mid-run: Dask's complaints are not news
+            logging.getLogger("distributed").setLevel(logging.CRITICAL)
+        for closing in (client, cluster):
+            try:
+                if closing is not None:
+                    closing.close()
+            except Exception:
+                if not stopped:
+                    raise
+        if main_thread:
+            signal.signal(signal.SIGINT, old_int)
+            signal.signal(signal.SIGTERM, old_term)
+    if line_open[0]:
+        print(file=sys.stderr)
+    code = {"SIGINT": 130, "SIGTERM": 143}.get(stopped)
+    if stopped and not outcomes:
+        print(f"fgsg batch: stopped by {stopped} before any job ran; {manifest} is unchanged", file=sys.stderr)
+        return code
     try:
-        write_manifest(manifest, outcomes)
+        write_manifest(manifest, outcomes, jobs, stopped=stopped and f"stopped by {stopped}")
     except OSError as e:
         print(f"fgsg batch: cannot write the manifest {manifest}: {e}", file=sys.stderr)
-        return 2
-    failures = [o for o in outcomes if not o["ok"]]
+        return code or 2
+    finished = [o for o in outcomes if o is not None]
+    failures = [o for o in finished if not o["ok"]]
+    if stopped:
+        print(f"fgsg batch: stopped by {stopped}: wrote {manifest} ({len(finished)} of {len(outcomes)} jobs "
+              f"finished, {len(failures)} failed); run the same command to go on", file=sys.stderr)
+        return code
     for o in failures:
         print(f"fgsg batch: job {o['id']} failed: {o['error']}", file=sys.stderr)
     print(f"fgsg batch: wrote {manifest} ({len(outcomes) - len(failures)} of {len(outcomes)} jobs succeeded)",
@@ -352,4 +582,8 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # `python -m fgsg.batch`: run the imported module's main, so that the tasks a cluster
+    # runs are fgsg.batch.run_job, which its workers import, not __main__'s (theirs is
+    # dask-worker's).
+    from fgsg.batch import main as _main
+    sys.exit(_main())

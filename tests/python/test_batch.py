@@ -1,5 +1,6 @@
 """fgsg.batch on Dask (python/fgsg/batch.py): 32 jobs on a LocalCluster of 2 workers give
-the same bytes as run one after another; a rerun skips what exists; a failing job is
+the same bytes as run one after another; a rerun given the first run's outcomes skips what
+they say was made from the same inputs; a failing job is
 reported with its location and the others succeed; the jobs of a worker killed mid-batch
 are retried and their outputs are the same. Two jobs naming one output and a manifest that
 cannot be written are refused before anything runs; a damaged output (empty, cut short) is
@@ -46,9 +47,9 @@ def test_a_local_cluster_gives_the_sequential_bytes_and_a_rerun_skips(tmp_path, 
     for a, b in zip(sequential, jobs):
         assert open(a["output"], "rb").read() == open(b["output"], "rb").read()
     assert seen[-1] == (32, 32, 0)
-    # Resumable: everything exists, nothing is run again.
+    # Resumable: everything exists and the outcomes say what made it: nothing runs again.
     mtimes = [os.path.getmtime(j["output"]) for j in jobs]
-    again = batch.run_batch(jobs, client)
+    again = batch.run_batch(jobs, client, previous=outcomes)
     assert all(o.get("skipped") for o in again)
     assert mtimes == [os.path.getmtime(j["output"]) for j in jobs]
 
@@ -75,7 +76,7 @@ def test_a_killed_worker_s_jobs_are_retried(tmp_path, client):
 
 def test_the_command_reports_failures_per_job_in_its_manifest(tmp_path, capsys):
     jobs = [{"id": "good", "grammar": "plant.fgsg", "seed": 1, "output": "out/good.glb"},
-            {"id": "bad", "grammar": "house.fgsg", "attrs": {"lot_width": "wide"}, "output": "out/bad.glb"},
+            {"id": "bad", "grammar": "house.fgsg", "attrs": {"lot_widht": 3}, "output": "out/bad.glb"},
             {"id": "missing", "grammar": "nothing.fgsg", "output": "out/missing.glb"}]
     os.symlink(PLANT, tmp_path / "plant.fgsg")
     os.symlink(MUELLER, tmp_path / "house.fgsg")
@@ -169,13 +170,15 @@ def test_verify_output_tells_a_whole_file_from_a_damaged_one(tmp_path):
 
 def test_a_damaged_output_is_written_again_not_skipped(tmp_path, client):
     jobs = jobs_in(tmp_path / "out", 4)
-    assert all(o["ok"] for o in batch.run_batch(jobs, client))
+    reference_outcomes = batch.run_batch(jobs, client)
+    assert all(o["ok"] for o in reference_outcomes)
     reference = [open(j["output"], "rb").read() for j in jobs]
     open(jobs[1]["output"], "wb").close()                      # 0 bytes
     with open(jobs[2]["output"], "r+b") as f:                   # cut short
         f.truncate(len(reference[2]) // 2)
     damaged = []
-    outcomes = batch.run_batch(jobs, client, on_damaged=lambda job, why: damaged.append(job["id"]))
+    outcomes = batch.run_batch(jobs, client, on_damaged=lambda job, why: damaged.append(job["id"]),
+                               previous=reference_outcomes)
     assert damaged == [jobs[1]["id"], jobs[2]["id"]]
     assert [bool(o.get("skipped")) for o in outcomes] == [True, False, False, True]
     assert "empty" in outcomes[1]["replaced"] and "header says" in outcomes[2]["replaced"]
