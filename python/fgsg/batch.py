@@ -289,6 +289,7 @@ def run_batch(jobs, client, progress=None, on_result=None, on_damaged=None, prev
     if outcomes is None:
         outcomes = []
     outcomes[:] = [None] * len(jobs)
+    decided = [None] * len(jobs)  # into `outcomes` once every job is looked at
     earlier = {}
     for o in previous or ():
         if isinstance(o, dict) and isinstance(o.get("output"), str):
@@ -314,8 +315,12 @@ def run_batch(jobs, client, progress=None, on_result=None, on_damaged=None, prev
                 reasons[i] = ("rerun", "its inputs changed")
             else:
                 kept = {k: v for k, v in record.items() if k not in ("replaced", "rerun")}
-                outcomes[i] = dict(kept, id=job["id"], output=job["output"], ok=True, skipped=True)
-                continue
+                decided[i] = dict(kept, id=job["id"], output=job["output"], ok=True, skipped=True)
+    # Stopped before this point, a caller has nothing new to record (and keeps its manifest).
+    outcomes[:] = decided
+    for i, job in enumerate(jobs):
+        if decided[i] is not None:
+            continue
         source = job.get("library") or job["grammar"]
         version = _describe_file(source, grammar=not job.get("library"))
         futures[client.submit(run_job, job, version, key=f"fgsg-job-{i}-{job['id']}", pure=False)] = i
@@ -560,8 +565,9 @@ def main(argv=None):
     if line_open[0]:
         print(file=sys.stderr)
     code = {"SIGINT": 130, "SIGTERM": 143}.get(stopped)
-    if stopped and not outcomes:
-        print(f"fgsg batch: stopped by {stopped} before any job ran; {manifest} is unchanged", file=sys.stderr)
+    if stopped and all(o is None for o in outcomes):
+        # Nothing finished or was found done: the earlier manifest still says what is.
+        print(f"fgsg batch: stopped by {stopped} before any job finished; {manifest} is unchanged", file=sys.stderr)
         return code
     try:
         write_manifest(manifest, outcomes, jobs, stopped=stopped and f"stopped by {stopped}")

@@ -4,7 +4,8 @@ modules, seed, attributes, files it reads) and keeps that outcome's figures; a c
 input, --force, or no record runs it again. Ctrl-C (SIGINT to the whole process group, as
 a terminal sends it) and SIGTERM end `fgsg batch` with one line and no traceback, exit
 130 / 143, and a manifest that lists exactly the jobs whose outputs were written; running
-the same command again finishes the rest."""
+the same command again finishes the rest. Stopped before any job finished, the earlier
+manifest is left as it was."""
 import json
 import os
 import shutil
@@ -196,3 +197,20 @@ def test_ctrl_c_and_sigterm_stop_with_one_line_and_the_manifest_lists_what_finis
     m = json.loads(manifest.read_text())
     assert m["complete"] and m["summary"]["succeeded"] == len(jobs)
     assert m["summary"]["skipped"] == after_term
+
+
+def test_stopped_before_any_job_finished_the_manifest_is_left_as_it_was(tmp_path, capsys, monkeypatch):
+    (tmp_path / "jobs.json").write_text(json.dumps([{"grammar": PLANT, "output": "a.glb"}]))
+    earlier = '{"format": "fgsg-batch-manifest", "version": 2, "jobs": []}\n'
+    (tmp_path / "jobs.manifest.json").write_text(earlier)
+
+    def interrupted(jobs, client, outcomes=None, **kw):
+        outcomes[:] = [None] * len(jobs)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(batch, "run_batch", interrupted)
+    assert batch.main([str(tmp_path / "jobs.json"), "--workers", "1"]) == 130
+    err = capsys.readouterr().err
+    assert err.strip().splitlines()[-1].endswith("stopped by SIGINT before any job finished; "
+                                                 f"{tmp_path / 'jobs.manifest.json'} is unchanged")
+    assert (tmp_path / "jobs.manifest.json").read_text() == earlier
