@@ -3,6 +3,7 @@
 #include "backend/commands/surface_world.h"
 #include "backend/declared_tiles.h"
 #include "backend/engine/derivation.h"
+#include "runtime/abandonable.h"
 #include "runtime/evolve/genetic.h"
 #include "runtime/evolve/lsystem2d.h"
 #include "runtime/evolve/offset_surface.h"
@@ -112,7 +113,17 @@ void EvolveCommand::ornamentSurface(const ir::Op& op, const std::string& file, c
   const rt::surface::SurfaceMesh& mesh = d_.surface()->mesh();
   try {
     auto& map = polycubes_[resolution];
-    if (!map) map = std::make_unique<rt::evolve::PolycubeMap>(mesh, rt::evolve::PolycubeOptions{0, resolution});
+    if (!map) {
+      // Seconds at a fine resolution on a large mesh, in steps that read no clock: on a
+      // worker --max-seconds abandons (it shares the surface, which outlives the map).
+      try {
+        map = rt::runAbandonable(&d_.deadline(), false, [world = d_.surface(), resolution] {
+          return std::make_unique<rt::evolve::PolycubeMap>(world->mesh(), rt::evolve::PolycubeOptions{0, resolution});
+        });
+      } catch (const rt::TimeLimitReached&) {
+        throw d_.timeLimit();
+      }
+    }
     if (!offset_) {
       rt::evolve::OffsetOptions o;
       o.deadline = &d_.deadline();

@@ -1,6 +1,7 @@
 #include "backend/commands/marching_commands.h"
 
 #include "backend/engine/derivation.h"
+#include "runtime/abandonable.h"
 #include "runtime/io/find_file.h"
 #include "runtime/marching/marching_surface.h"
 #include "runtime/marching/smooth_curves.h"
@@ -72,12 +73,27 @@ void MarchingCommands::prepareSurface() {
   rt::marching::MarchingOptions options;
   options.resolution = d_.options().atlasResolution;
   options.cacheDir = d_.options().atlasCacheDir;
-  std::string error;
   // Laid out once per derivation; the disk cache (options.cacheDir) spares the next run.
+  // Laying out a large mesh takes seconds in many steps (charts, their flattening and
+  // packing, the geometry image): on a worker that --max-seconds abandons. It reads
+  // only the surface, which it shares.
   const auto start = std::chrono::steady_clock::now();
-  surface_ = MarchingSurface::prepare(d_.surface()->mesh(), options, error);
+  std::pair<std::shared_ptr<const MarchingSurface>, std::string> prepared;
+  try {
+    prepared = rt::runAbandonable(&d_.deadline(), false, [world = d_.surface(), options] {
+      std::string error;
+      auto surface = MarchingSurface::prepare(world->mesh(), options, error);
+      return std::make_pair(std::move(surface), std::move(error));
+    });
+  } catch (const rt::TimeLimitReached&) {
+    d_.stats().surfaceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    prepared_ = false;  // asked again, it stops again at once
+    throw d_.timeLimit();
+  }
+  surface_ = std::move(prepared.first);
   d_.stats().surfaceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!surface_) unpreparedCode_ = "R023", unpreparedWhy_ = "the surface cannot be laid out for marching: " + error;
+  if (!surface_)
+    unpreparedCode_ = "R023", unpreparedWhy_ = "the surface cannot be laid out for marching: " + prepared.second;
 }
 
 void MarchingCommands::shareFrom(const MarchingCommands& other) {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -180,7 +181,10 @@ struct Entry {
 
 // The intersecting pairs among those with at least one offset face marked in `moved` (one
 // flag per face; empty: all faces). A pair whose faces both stayed put keeps its outcome.
-std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>& moved = {}) {
+// `deadline` (read by every thread, Deadline::passed): TimeLimitReached once it passed
+// (a first round on a large mesh takes a second).
+std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>& moved = {},
+                                  const Deadline* deadline = nullptr) {
   const int T = 2 * shell.F;
   auto isMoved = [&](int t) { return !shell.isMesh(t) && (moved.empty() || moved[t]); };
   std::vector<Box> boxes(T);
@@ -245,7 +249,10 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
       if (wanted(t, key)) entries[e++] = {key, t};
     });
   });
+  auto late = [&] { return deadline && deadline->passed(); };
+  if (late()) throw TimeLimitReached{deadline->seconds()};
   tbb::parallel_sort(entries.begin(), entries.end());
+  if (late()) throw TimeLimitReached{deadline->seconds()};
   std::vector<size_t> cellStart;
   for (size_t e = 0; e < entries.size(); ++e)
     if (e == 0 || entries[e].key != entries[e - 1].key) cellStart.push_back(e);
@@ -254,7 +261,12 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
   // A pair whose boxes overlap is examined only in the cell of the lower corner of their
   // common box: the cell (max of the lower cells) both boxes reach, so exactly once.
   tbb::enumerable_thread_specific<std::vector<OffsetContact>> found;
+  std::atomic<bool> stopped{false};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, cellStart.size() - 1), [&](const tbb::blocked_range<size_t>& r) {
+    if (stopped.load(std::memory_order_relaxed) || late()) {
+      stopped = true;
+      return;
+    }
     auto& out = found.local();
     for (size_t c = r.begin(); c != r.end(); ++c) {
       const size_t begin = cellStart[c], end = cellStart[c + 1];
@@ -280,6 +292,7 @@ std::vector<OffsetContact> search(const Shell& shell, const std::vector<uint8_t>
       }
     }
   });
+  if (stopped) throw TimeLimitReached{deadline->seconds()};
   std::vector<OffsetContact> all;
   for (auto& part : found) all.insert(all.end(), part.begin(), part.end());
   std::sort(all.begin(), all.end(), [](const OffsetContact& a, const OffsetContact& b) {
@@ -332,7 +345,7 @@ OffsetSurface offsetSurface(const surface::SurfaceMesh& mesh, const OffsetOption
   std::vector<uint8_t> moved;  // per offset face, since the last round; empty: all (round 1)
   for (int round = 1;; ++round) {
     if (o.deadline && o.deadline->expiredNow()) throw TimeLimitReached{o.deadline->seconds()};
-    const std::vector<OffsetContact> contacts = search(Shell(mesh, s.height), moved);
+    const std::vector<OffsetContact> contacts = search(Shell(mesh, s.height), moved, o.deadline);
     s.rounds = round;
     if (round == 1) s.initialContacts = contacts.size();
     if (contacts.empty()) break;

@@ -59,8 +59,9 @@ struct OffsetOptions {
   double fraction = 0.1;  // the full step, as a fraction of the bounding-box diagonal (> 0)
   double shrink = 0.5;    // a reverted vertex's step is multiplied by this, in (0, 1)
   int maxRounds = 30;     // rounds that shrink (>= 1); later rounds put vertices on the mesh
-  // Optional clock (runtime/deadline.h), read once per round: rt::TimeLimitReached when it
-  // expires before the offset is free of intersections.
+  // Optional clock (runtime/deadline.h), read once per round and by the threads of each
+  // round's search: rt::TimeLimitReached when it expires before the offset is free of
+  // intersections.
   Deadline* deadline = nullptr;
 };
 
