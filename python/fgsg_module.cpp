@@ -12,6 +12,7 @@
 #include "runtime/io/read_lots.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/out_of_resources.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -28,6 +29,17 @@ namespace py = pybind11;
 using namespace fgsg;
 
 namespace {
+
+// Memory ran out outside the derivation (which reports R020 as a diagnostic itself):
+// raised as MemoryError with the CLI's R020 message and the limit that was met, not
+// pybind's bare "std::bad_alloc".
+struct OutOfMemory {
+  std::string message;
+};
+
+OutOfMemory outOfMemory(const std::string& what) {
+  return {"R020: out of memory " + what + " (" + rt::memoryLimitInForce() + "); nothing was kept"};
+}
 
 // A grammar's diagnostics, raised as fgsg._fgsg.CompileError(list of dicts); the package
 // turns it into fgsg.GrammarError.
@@ -150,7 +162,12 @@ struct Grammar {
         if (!rt::resolveAssets(derived.instances, assets, meshOf, error)) {
           error = source.name + ": " + error;
         } else {
-          result->mesh = rt::assembleInstances(derived.instances, assets, meshOf);
+          try {
+            result->mesh = rt::assembleInstances(derived.instances, assets, meshOf);
+          } catch (const std::bad_alloc&) {
+            throw outOfMemory("assembling " + std::to_string(derived.instances.instances.size()) +
+                              " instances into one mesh");
+          }
           result->instances = std::move(derived.instances);
           result->stats = derived.stats;
         }
@@ -247,6 +264,8 @@ PYBIND11_MODULE(_fgsg, m) {
       if (p) std::rethrow_exception(p);
     } catch (const CompileError& e) {
       PyErr_SetObject(compileError.ptr(), e.diagnostics.ptr());
+    } catch (const OutOfMemory& e) {
+      PyErr_SetString(PyExc_MemoryError, e.message.c_str());
     }
   });
 
@@ -281,7 +300,11 @@ PYBIND11_MODULE(_fgsg, m) {
       })
       .def("write", [](const Result& r, const std::string& path) {
         std::string error;
-        if (!rt::io::writeMesh(r.mesh, path, error)) throw std::runtime_error(error);
+        try {
+          if (!rt::io::writeMesh(r.mesh, path, error)) throw std::runtime_error(error);
+        } catch (const std::bad_alloc&) {
+          throw outOfMemory("writing " + path);
+        }
       });
 
   py::class_<Grammar, std::shared_ptr<Grammar>>(m, "Grammar")

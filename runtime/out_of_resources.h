@@ -14,4 +14,9 @@ namespace fgsg::rt {
 // stack, so a tight `ulimit -v` fails here first); a PluginError the loader could not map.
 std::string outOfResources(const std::exception& e);
 
+// Which limit a process that ran out of memory met, for its message: "the address-space
+// limit (ulimit -v) of 781M", "the cgroup's memory limit of 2G" or "the machine's 16G
+// of memory", whichever is lowest; with the memory in use ("; 612M in use").
+std::string memoryLimitInForce();
+
 }  // namespace fgsg::rt
