@@ -133,6 +133,16 @@ bool reportMessages(const rt::DeriveResult& result, const frontend::SourceFile& 
   return !diags.hasErrors();
 }
 
+// About how long writing a triangle of the mesh takes (measured on a loaded 2-core
+// machine, with its vertices): the assembly keeps that much of --max-seconds for it.
+double writeSecondsPerTriangle(const std::string& output) {
+  std::string ext = std::filesystem::path(output).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj") return 0.8e-6;  // text
+  if (ext == ".ply") return 0.2e-6;
+  return 0.6e-6;                     // .glb: a buffer built, then written
+}
+
 // The whole command; `loader` is the caller's, so that it is destroyed (waiting for its
 // background compile, within --max-seconds) before the process ends.
 int run(const Args& args, backend::native::CodeLoader& loader) {
@@ -195,7 +205,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   if (!reportMessages(result, compiled->source)) return 1;
   // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started
   // (the JIT's compile excluded), the tenth a limit may overshoot, but has at least 0.1 S
-  // of its own, so that a derivation stopped at its limit still writes what it kept.
+  // of its own, so that a derivation stopped at its limit still writes what it kept; and
+  // it keeps time to write what it assembled (writeSecondsPerTriangle).
   const double assemblySeconds = std::max(1.1 * opt.derive.maxSeconds - deriveSeconds, 0.1 * opt.derive.maxSeconds);
   const rt::Deadline assemblyDeadline = rt::Deadline::after(assemblySeconds);
 
@@ -211,7 +222,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   progress.phase("assembling");
   try {
     size_t assembled = 0;
-    mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled);
+    mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled,
+                                 writeSecondsPerTriangle(opt.output));
     if (assembled < result.instances.instances.size()) {
       rt::DeriveResult cut;
       cut.messages.push_back({false, "R004", 0, 0,

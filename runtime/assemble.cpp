@@ -461,15 +461,16 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 }
 
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
-                       const std::vector<int>& meshOf, const Deadline* deadline, size_t* assembled) {
+                       const std::vector<int>& meshOf, const Deadline* deadline, size_t* assembled,
+                       double writeSecondsPerTriangle) {
   Mesh out;
-  assembleInstances(list, library, meshOf, out, deadline, assembled);
+  assembleInstances(list, library, meshOf, out, deadline, assembled, writeSecondsPerTriangle);
   return out;
 }
 
 void assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
-                       size_t* assembled) {
+                       size_t* assembled, double writeSecondsPerTriangle) {
   // Block by block, in list order: each instance writes its output in parallel into a
   // slot of its own (Slots), and closeUp moves them together where something was
   // dropped, so the bytes depend neither on the scheduling nor on the blocks. A block is
@@ -515,7 +516,13 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     if (meshOf[a] >= 0) traits[a] = traitsOf(library.mesh(meshOf[a]));
   Slots slots;
   size_t begin = 0;
-  while (begin < n && !(deadline && deadline->passed())) {
+  auto timeLeft = [&] {
+    if (!deadline) return true;
+    if (deadline->passed()) return false;
+    return !(writeSecondsPerTriangle > 0) ||
+           deadline->remainingSeconds() > writeSecondsPerTriangle * double(out.triangleCount());
+  };
+  while (begin < n && timeLeft()) {
     // The block, and each instance's slot: room for its whole asset.
     size_t end = begin, work = 0;
     slots.vertex.assign(1, 0);

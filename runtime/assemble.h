@@ -35,17 +35,19 @@ bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<
 // std::out_of_range, here and in countTriangles.
 // With a `deadline`, the instances are assembled in blocks of a few thousand triangles
 // and no block starts once it has passed: the mesh holds the first `*assembled`
-// instances (all of them when it did not pass).
+// instances (all of them when it did not pass). `writeSecondsPerTriangle` > 0 keeps
+// time for what comes after, within the deadline: no block starts once the time left
+// is less than writing the triangles assembled so far would take at that rate.
 Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, const Deadline* deadline = nullptr,
-                       size_t* assembled = nullptr);
+                       size_t* assembled = nullptr, double writeSecondsPerTriangle = 0);
 // The same into `out`, whose content it replaces but whose arrays' capacity it keeps: a
 // host regenerating a model assembles into the previous mesh without faulting in fresh
 // memory again (hundreds of megabytes for on-mesh marching). The arrays end up exactly
 // as a fresh mesh's would; only their capacity may be larger.
 void assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline = nullptr,
-                       size_t* assembled = nullptr);
+                       size_t* assembled = nullptr, double writeSecondsPerTriangle = 0);
 
 // The number of triangles assembleInstances would produce, without building the mesh.
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
