@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 
 using namespace fgsg::rt;
@@ -649,4 +650,29 @@ TEST_CASE("cga: Mueller's building grammar on a rectangular footprint", "[cga]")
         repeat(segments[2].scope, segments[2].geom, 2, {brickLength - overlap}, arena, tiles, err));
     CHECK(tiles.size() > 10);
   }
+}
+
+TEST_CASE("cga: ear clipping a 2 000-corner comb covers it, in well under a second", "[cga]") {
+  // Issue 42: a comb-shaped lot's flat roof (500 teeth) took most of a minute to clip.
+  Polygon3 comb = {Vec3(0, 0, 0), Vec3(1000, 0, 0)};
+  const int h = 1000;
+  for (int y = 1; y < h; ++y) {
+    if (y % 2) comb.insert(comb.end(), {Vec3(1000, y, 0), Vec3(1, y, 0)});
+    else comb.insert(comb.end(), {Vec3(1, y, 0), Vec3(1000, y, 0)});
+  }
+  comb.insert(comb.end(), {Vec3(1, h, 0), Vec3(0, h, 0)});
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<uint32_t> tris;
+  earClip(comb, tris);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(seconds < 1.0);
+  REQUIRE(tris.size() == 3 * (comb.size() - 2));
+  double area = 0;  // the comb: 1 x 1000 spine and 500 teeth of 999 x 1
+  for (size_t t = 0; t < tris.size(); t += 3) {
+    const Vec3 a = comb[tris[t]], b = comb[tris[t + 1]], c = comb[tris[t + 2]];
+    const double doubled = (b - a).cross(c - a).z();
+    CHECK(doubled > 0);
+    area += doubled / 2;
+  }
+  CHECK(area == Approx(1000.0 + 500 * 999.0));
 }
