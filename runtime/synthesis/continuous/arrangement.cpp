@@ -231,6 +231,10 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
     std::vector<IVec3> num(order.size());
     std::vector<int64_t> den(order.size());
     for (size_t k = 0; k < order.size(); ++k) {
+      if ((k & 65535) == 0 && timeUp()) {
+        error = stopped;
+        return false;
+      }
       num[k] = A.num[size_t(order[k])];
       den[k] = A.den[size_t(order[k])];
       index.put({num[k], den[k]}, int32_t(k));
@@ -242,6 +246,10 @@ bool buildArrangement(const std::vector<IVec3>& dirs, const std::vector<int64_t>
   A.planes.assign(n, 0);
   A.boundary.assign(n, 0);
   for (size_t v = 0; v < n; ++v) {
+    if ((v & 65535) == 0 && timeUp()) {
+      error = stopped;
+      return false;
+    }
     A.planes[v] = planesAt(A.num[v], A.den[v]);
     for (int c = 0; c < 3; ++c)
       if (A.num[v][size_t(c)] == 0 || A.num[v][size_t(c)] == box[size_t(c)] * A.den[v]) A.boundary[v] = 1;
