@@ -12,7 +12,7 @@ meshes="$root/tests/data/meshes"
 stopped='warning\[R004\]: derivation stopped after 1\.0+ s \(--max-seconds\); the shapes derived so far are kept'
 
 # run_within SECONDS NAME -- COMMAND...: R004, exit 0, the whole command within SECONDS
-# and its time.derive within 1.4 s of --max-seconds 1.
+# and its time.derive under 1.6 s for --max-seconds 1 (unloaded: about 1.1).
 run_within() {
   local limit=$1 name=$2 t0 took derive
   shift 3
@@ -21,7 +21,7 @@ run_within() {
   took=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
   awk -v t="$took" -v l="$limit" 'BEGIN { exit !(t < l) }' || fail "$name took $took s, more than $limit s"
   derive=$(awk '$1 == "time.derive" { print $2 }' "$tmp/out")
-  awk -v d="$derive" 'BEGIN { exit !(d >= 1.0 && d < 1.4) }' || fail "$name: time.derive $derive for --max-seconds 1"
+  awk -v d="$derive" 'BEGIN { exit !(d >= 1.0 && d < 1.6) }' || fail "$name: time.derive $derive for --max-seconds 1"
   [ -s "$tmp/$name.glb" ] || fail "$name: the kept result was not written"
 }
 
