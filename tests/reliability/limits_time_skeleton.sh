@@ -58,8 +58,9 @@ for engine in interp jit; do
       -o "$tmp/comb.obj" --stats
     t_below 6 "the $roof comb lot with --max-seconds 2 ($engine)"
     [ -s "$tmp/comb.obj" ] || fail "the kept result of the $roof comb lot was not written ($engine)"
-    # The derivation itself ends within 10 % of the limit and a scheduling slice.
-    awk '$1 == "time.derive" { exit !($2 >= 2.0 && $2 < 2.5) }' "$tmp/out" ||
+    # The derivation itself ends soon after the limit (unloaded: within 10 %; a loaded
+    # machine has reached 2.47).
+    awk '$1 == "time.derive" { exit !($2 >= 2.0 && $2 < 2.8) }' "$tmp/out" ||
       fail "time.derive $(awk '$1 == "time.derive" { print $2 }' "$tmp/out") for --max-seconds 2 ($roof, $engine)"
   done
 done
