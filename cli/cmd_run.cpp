@@ -9,6 +9,7 @@
 #include "cli/derive_stats.h"
 #include "cli/options.h"
 #include "cli/progress_line.h"
+#include "cli/scene_output.h"
 #include "runtime/io/read_lots.h"
 #include "runtime/io/seed_points.h"
 #include "runtime/abandonable.h"
@@ -46,6 +47,7 @@ struct RunOptions {
   size_t lotsSkipped = 0;  // --lots: geometries other than polygons, passed over
   backend::Engine engine = backend::Engine::Jit;
   rt::DeriveOptions derive;
+  SceneFlags scene;  // --instancing, --group-by
 };
 
 RunOptions parseRunOptions(const Args& args) {
@@ -101,6 +103,7 @@ RunOptions parseRunOptions(const Args& args) {
   cl.flag("--stats", o.stats);
   cl.flag("-q,--quiet", o.quiet);
   setFlag(cl, o.derive);
+  sceneFlags(cl, o.scene);
   cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
   if (o.derive.seedDensity.empty() != (o.derive.seedCount == 0))
@@ -109,7 +112,13 @@ RunOptions parseRunOptions(const Args& args) {
   // Bad output names are usage errors, found before any work is done.
   const std::string ext = lowerExtension(o.output);
   const auto& known = rt::io::supportedMeshExtensions();
-  if (std::find(known.begin(), known.end(), ext) == known.end()) {
+  if (writesScene(o.scene, o.output)) {
+    if (ext != ".glb" && ext != ".gltf")
+      throw UsageError{"-o " + o.output + ": --instancing and --group-by lay out a glTF scene (name it .glb or .gltf)"};
+    // Rule and label groups need to know which rule placed each instance.
+    if (o.scene.groupBy == rt::output::GroupBy::Rule || o.scene.groupBy == rt::output::GroupBy::Label)
+      o.derive.recordOrigins = true;
+  } else if (std::find(known.begin(), known.end(), ext) == known.end()) {
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
     throw UsageError{"-o " + o.output + ": unknown output format (use " + list + ")"};
@@ -252,7 +261,11 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   progress.phase("writing");
   rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
-  if (!rt::io::stageMesh(mesh, opt.output, outputs, error) ||
+  const bool staged = writesScene(opt.scene, opt.output)
+                         ? stageScene(opt.scene, compiled->module, opt.derive, result, assets, meshOf, opt.output,
+                                      outputs, error)
+                         : rt::io::stageMesh(mesh, opt.output, outputs, error);
+  if (!staged ||
       (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
       (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error))) {
     progress.clear();

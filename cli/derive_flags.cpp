@@ -30,4 +30,15 @@ void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive) {
   cl.flag("--repair-surface", derive.repairSurface);
 }
 
+void sceneFlags(CommandLine& cl, SceneFlags& scene) {
+  cl.option("--instancing", [&scene](const std::string& v) {
+    if (!rt::output::parseInstancing(v, scene.instancing))
+      throw UsageError{"--instancing " + v + ": use auto, on or off"};
+  });
+  cl.option("--group-by", [&scene](const std::string& v) {
+    if (!rt::output::parseGroupBy(v, scene.groupBy))
+      throw UsageError{"--group-by " + v + ": use symbol, rule, label or none"};
+  });
+}
+
 }  // namespace fgsg::cli

@@ -86,6 +86,11 @@ struct InstanceList {
   // Per instance when DeriveOptions::recordOrigins asked (fgsg view's picking), else empty;
   // kept beside `instances` so that the million-instance runs do not carry it.
   std::vector<InstanceOrigin> origins;
+  // The start shapes (a --lots lot, a seed derived apart, else the one axiom): start shape
+  // k placed instances [startBounds[k], startBounds[k + 1]); the instances past the last
+  // bound (lines, the surface) belong to none. Empty: not recorded (every instance is the
+  // axiom's). Seeds that grow in one queue are one start shape.
+  std::vector<uint32_t> startBounds;
 };
 
 }  // namespace fgsg::rt

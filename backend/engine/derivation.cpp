@@ -119,6 +119,7 @@ rt::DeriveResult Derivation::run() {
       runSequential();
     result.ok = true;
     if (depthLimitHit_) result.messages.push_back(depthWarning_);
+    closeStarts();
     orderDirectInstances();
     appendCurves();  // marching's curves first: their instances index them from 0
     appendLines();
@@ -152,12 +153,23 @@ void Derivation::appendLines() {
   appendLineTubes(collide_.lines(), assets_, out_, symbolColor_, normalAt);
 }
 
+// The end of the last start shape's instances (InstanceList::startBounds): lots and seeds
+// derived apart opened theirs as they began; anything else is the one axiom's.
+void Derivation::closeStarts() {
+  if (startsClosed_) return;
+  startsClosed_ = true;
+  auto& bounds = out_.startBounds;
+  if (bounds.empty()) bounds.push_back(0);
+  bounds.push_back(static_cast<uint32_t>(out_.instances.size()));
+}
+
 // A limit ends the derivation: what was derived is kept, with the R004 warning.
 void Derivation::keepAfter(const LimitReached& limit, rt::DeriveResult& result) {
   if (depthLimitHit_) result.messages.push_back(depthWarning_);
   result.ok = true;
   result.messages.push_back({false, "R004", limit.loc.line, limit.loc.col, limit.message});
   try {
+    closeStarts();
     orderDirectInstances();
     appendCurves();  // marching's curves first: their instances index them from 0
     appendLines();

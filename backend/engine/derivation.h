@@ -168,6 +168,7 @@ class Derivation final : public QueryHost {
 
   // derivation.cpp
   void keepAfter(const LimitReached& limit, rt::DeriveResult& result);
+  void closeStarts();
   void outOfMemory(rt::DeriveResult& result);
   void checkProgram() const;
   void checkEnvironment();
@@ -336,6 +337,7 @@ class Derivation final : public QueryHost {
   uint32_t placingDepth_ = UINT32_MAX;   // the depth of the shape whose successor runs (origins_)
   std::vector<PlacingShape> placedBy_;   // per instance, while orderedDirect_
   uint64_t visits_ = 1;                  // direct shapes visited so far, plus one
+  bool startsClosed_ = false;    // closeStarts ran
   bool inexactDirect_ = false;   // ... and one of them gave up (see deriveDirect)
   uintptr_t stackFloor_ = 0;     // recursion (direct code, Lock sets) stays above this frame address
   ir::ProgramLayout layout_;     // how program_ numbers blocks and ops (and the string's ops)

@@ -228,15 +228,30 @@ void Derivation::orderDirectInstances() {
     if (breadthFirst && x.depth != y.depth) return x.depth < y.depth;
     return x.preorder < y.preorder;
   };
+  // Each start shape (a lot) is derived to its end before the next begins: the order is
+  // restored within each one's instances (InstanceList::startBounds), which stay apart.
+  const std::vector<uint32_t>& bounds = out_.startBounds;
+  const auto sortedWithin = [&](uint32_t begin, uint32_t end) {
+    return std::is_sorted(placedBy_.begin() + begin, placedBy_.begin() + end, before);
+  };
+  bool sorted = true;
+  for (size_t k = 0; k + 1 < bounds.size(); ++k) sorted = sorted && sortedWithin(bounds[k], bounds[k + 1]);
+  if (bounds.size() < 2) sorted = sortedWithin(0, uint32_t(placedBy_.size()));
   // Often already so (depth-first, or every instance placed at one depth).
-  if (std::is_sorted(placedBy_.begin(), placedBy_.end(), before)) {
+  if (sorted) {
     placedBy_.clear();
     return;
   }
   std::vector<uint32_t> order(out_.instances.size());
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
+  if (bounds.size() < 2) {
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
+  } else {
+    for (size_t k = 0; k + 1 < bounds.size(); ++k)
+      std::stable_sort(order.begin() + bounds[k], order.begin() + bounds[k + 1],
+                       [&](uint32_t a, uint32_t b) { return before(placedBy_[a], placedBy_[b]); });
+  }
   rt::MeshArray<rt::Instance> instances;
   std::vector<double> params;
   std::vector<rt::InstanceOrigin> origins;

@@ -28,6 +28,7 @@ void Derivation::deriveLots(uint64_t root) {
     if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena_, part, error))
       throw DeriveError{{}, "R028", rt::lotName(opt_.lotsName, lot) + ": " + error};
     const auto index = static_cast<uint32_t>(k);
+    out_.startBounds.push_back(static_cast<uint32_t>(out_.instances.size()));
     execRoot(0, m_.axiom, part.scope, part.geom, rt::childKey(root, index), 0, index, &noParams, UINT32_MAX);
     deriveWaitingShapes();
     if (k == 0) reserveForLots(opt_.lots.size());

@@ -128,6 +128,7 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
     out_.params.insert(out_.params.end(), p.out.params.begin(), p.out.params.begin() + params);
     out_.curves.insert(out_.curves.end(), p.out.curves.begin(), p.out.curves.end());
     std::move(p.out.geometries.begin(), p.out.geometries.end(), std::back_inserter(out_.geometries));
+    out_.startBounds.push_back(static_cast<uint32_t>(out_.instances.size()));
     for (size_t i = 0; i < keep; ++i) {
       rt::Instance inst = p.out.instances[i];
       inst.firstParam = static_cast<uint32_t>(inst.firstParam + paramBase);

@@ -1,0 +1,25 @@
+// glTF 2.0 from a Scene (runtime/output/scene.h): .glb (binary) or .gltf (JSON, its one
+// buffer a base64 data URI). Instanced parts are one node each with the shared mesh and
+// EXT_mesh_gpu_instancing (TRANSLATION, ROTATION, SCALE and the instances' colours as
+// _COLOR_0, float accessors); mirrored instances a node each with a negative scale;
+// baked parts the group node's mesh, a primitive per material. The bytes depend only on
+// the scene.
+#pragma once
+
+#include "runtime/io/byte_sink.h"
+#include "runtime/io/output_transaction.h"
+#include "runtime/output/scene.h"
+
+#include <string>
+
+namespace fgsg::rt::output {
+
+// The whole file, binary (.glb) or not (.gltf), into `bytes`. False and a message when an
+// image cannot be embedded or a vertex is not finite, or the GLB would pass 4 GiB.
+bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error);
+
+// Encodes by the extension of `path` (.glb or .gltf, any case) into a temporary staged in
+// `outputs`.
+bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransaction& outputs, std::string& error);
+
+}  // namespace fgsg::rt::output
