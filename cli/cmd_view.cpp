@@ -10,6 +10,7 @@
 #include "cli/view_access.h"
 #include "cli/view_server.h"
 #include "cli/view_session.h"
+#include "runtime/abandonable.h"
 #include "runtime/io/read_input.h"
 
 #include <atomic>
@@ -125,8 +126,9 @@ int view(const Args& args) {
 
 int viewCommand(const Args& args) {
   const int code = view(args);
-  if (backend::native::abandonedCompiles() > 0) {
-    // A background compile still runs LLVM: end without destroying its static objects.
+  if (backend::native::abandonedCompiles() > 0 || rt::abandonedWorkers() > 0) {
+    // A background compile still runs LLVM, or a worker abandoned at --max-seconds still
+    // runs CGAL: end without destroying static objects under them.
     std::cout.flush();
     std::fflush(nullptr);
     std::_Exit(code);
