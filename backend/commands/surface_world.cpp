@@ -2,6 +2,7 @@
 
 #include "backend/interp/eval.h"
 
+#include "runtime/abandonable.h"
 #include "runtime/field/curvature.h"
 #include "runtime/field/design.h"
 #include "runtime/field/eigen_basis_direction.h"
@@ -105,7 +106,21 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
     ok = rt::surface::loadSurface(rt::io::findFile(spec.path, searchDirs), impl_->mesh, error,
                                   load);
   } else {
-    ok = rt::surface::makeProceduralSurface(spec.generator, spec.args, impl_->mesh, error);
+    // Some generators run CGAL's booleans and remeshing (three tori: seconds), which read
+    // no deadline: on a worker that --max-seconds abandons (R004, runtime/abandonable.h).
+    struct Made {
+      bool ok;
+      SurfaceMesh mesh;
+      std::string error;
+    };
+    Made made = rt::runAbandonable(deadline, false, [generator = spec.generator, args = spec.args] {
+      Made out{false, {}, {}};
+      out.ok = rt::surface::makeProceduralSurface(generator, args, out.mesh, out.error);
+      return out;
+    });
+    ok = made.ok;
+    impl_->mesh = std::move(made.mesh);
+    error = std::move(made.error);
   }
   if (!ok) throw DeriveError{spec.loc, "R015", error};
   if (options.surfaceSize > 0) rt::surface::fitToSize(impl_->mesh, options.surfaceSize);
