@@ -43,17 +43,28 @@ export ASAN_OPTIONS="detect_leaks=1:verify_asan_link_order=0:allocator_may_retur
 export LSAN_OPTIONS="suppressions=$root/scripts/sanitize.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$build"
-# A hang still ends: a test without its own limit stops after 600 s.
+# A hang still ends: a test without its own limit stops after 600 s. A failing test runs
+# once more (--repeat until-pass:2): under load GCC 12's LeakSanitizer sometimes crashes in
+# its own scan at exit ("Tracer caught signal 11" in __lsan::ScanRangeForPointers, about 4
+# processes in 1 000 at -j2, none when rerun); a real report fails both runs. The tracer
+# crashes are counted at the end, so that a rise shows.
+ctest_args=(-j "$jobs" --output-on-failure --timeout 600 --repeat until-pass:2)
+tracer_crashes() {
+  echo "sanitize: LeakSanitizer tracer crashes retried: $(grep -c 'Tracer caught signal' "$build/sanitize-ctest.log" || true)"
+}
 if [ "$quick" = 0 ]; then
-  ctest -j "$jobs" --output-on-failure --timeout 600 "$@" | tee "$build/sanitize-ctest.log"
-  exit "${PIPESTATUS[0]}"
+  status=0
+  ctest "${ctest_args[@]}" "$@" | tee "$build/sanitize-ctest.log" || status=1
+  tracer_crashes
+  exit $status
 fi
 # --quick: what finds most memory errors per minute. Ten examples that between them take
 # the L-system rewriter, CGA, FGSG fields, marching, synthesis, cells and Evolve paths.
 examples='fig4_local_pattern|mueller_building|abop_plant|koch|fig1_cracks_plane|stem_leaf|ivy|brick_building|synthesized_village|evolve_ornaments'
 start=$(date +%s)
 status=0
-ctest -j "$jobs" --output-on-failure --timeout 600 -L 'unit|reliability' "$@" | tee "$build/sanitize-ctest.log" || status=1
-ctest -j "$jobs" --output-on-failure --timeout 600 -R "^equivalence: ($examples)\$" "$@" | tee -a "$build/sanitize-ctest.log" || status=1
+ctest "${ctest_args[@]}" -L 'unit|reliability' "$@" | tee "$build/sanitize-ctest.log" || status=1
+ctest "${ctest_args[@]}" -R "^equivalence: ($examples)\$" "$@" | tee -a "$build/sanitize-ctest.log" || status=1
+tracer_crashes
 echo "sanitize --quick: $(( $(date +%s) - start )) s of tests, $([ $status = 0 ] && echo passed || echo FAILED)"
 exit $status

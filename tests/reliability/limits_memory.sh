@@ -3,6 +3,7 @@
 # before memory runs out, counting the mesh its instances will become; bad sizes are
 # usage errors.
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "it measures memory against --max-memory"
 export FGSG_CACHE_DIR=off
 
 stopped='warning\[R004\]: derivation stopped at [0-9.]+M of memory \(--max-memory 200M, with the instances. mesh to come\): rule .A#0. \(applied [0-9]+ times\) ran away; the shapes derived so far are kept'

@@ -4,6 +4,7 @@
 # and model synthesis all end soon after the limit. Bounds are loose (a loaded 2-core
 # machine runs the tests) but far below what the inputs would take unbounded (minutes).
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "it times --max-seconds"
 export FGSG_CACHE_DIR=off
 
 # within SECONDS -- COMMAND...: like expect, and the command ends within SECONDS.

@@ -7,6 +7,7 @@
 # the limit. Both engines; R004 and what was derived is written. Bounds are loose (a
 # loaded 2-core machine) but far below the minute the lots took.
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "it times --max-seconds"
 export FGSG_CACHE_DIR=off
 
 # comb TEETH ROOF FILE [LENGTH]: one lot, a serpentine of TEETH teeth 1 m apart, LENGTH

@@ -8,6 +8,7 @@
 # remeshing (FGSG Fig. 17's three tori: about 2 s) is made on such a worker too. Both engines; the derivation ends within a loaded
 # machine's margin of the limit and the surface is written.
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "it times --max-seconds"
 export FGSG_CACHE_DIR=off
 meshes="$root/tests/data/meshes"
 stopped='warning\[R004\]: derivation stopped after 1\.0+ s \(--max-seconds\); the shapes derived so far are kept'

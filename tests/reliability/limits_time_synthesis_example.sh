@@ -7,6 +7,7 @@
 # of the output's planes (houses.obj in 200 x 200 x 40 took 4.3 s with --time-limit 1).
 # Bounds are loose (a loaded 2-core machine) but far below what the examples took.
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "it times --max-seconds"
 export FGSG_CACHE_DIR=off
 
 # cube N FILE: the unit cube, each side cut into N x N quads (6 N^2 coplanar quads).

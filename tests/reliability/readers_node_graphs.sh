@@ -7,6 +7,7 @@
 # regression fails this test instead of the machine.
 fgsg=$1 root=$2
 . "$(dirname "$0")/lib.sh"
+skip_under_asan "its refusals run under ulimit -v"
 grammar="$inputs/readers_surface_grammar.fgsg"
 # Runs "$fgsg" ARGS... under the limit: "${limited[@]}" ARGS...
 limited=(bash -c 'ulimit -v 4000000 && exec "$0" "$@"' "$fgsg")
