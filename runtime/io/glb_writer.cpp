@@ -1,5 +1,7 @@
 #include "runtime/io/glb_writer.h"
 
+#include "runtime/io/glb_container.h"
+
 #include "runtime/io/mesh_attributes.h"
 
 #include "runtime/io/read_image.h"
@@ -25,10 +27,7 @@ static_assert(std::endian::native == std::endian::little, "GLB stores the arrays
 
 using nlohmann::json;
 
-// glTF's numeric codes.
-constexpr int kFloat = 5126, kUnsignedInt = 5125;
-constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
-constexpr int kLines = 1, kTriangles = 4;
+using namespace gltf;  // glTF's numeric codes, padded4
 
 // The BIN chunk's parts in file order; each is a whole number of 4-byte values, so no
 // part needs padding.
@@ -83,9 +82,6 @@ void appendTransformed(ByteSink& out, std::span<const float> values, F f) {
   }
 }
 
-void appendU32(ByteSink& out, uint32_t v) { out.append(&v, sizeof v); }
-
-size_t padded4(size_t bytes) { return (bytes + 3) & ~size_t(3); }
 
 // A textured mesh's triangles by image: the untextured ones (-1) first, then each image
 // in Mesh::textures order; each group one primitive with one material.
@@ -245,25 +241,14 @@ bool writeGlb(const Mesh& mesh, ByteSink& out, std::string& error) {
   std::vector<EmbeddedImage> images;
   if (!readImages(mesh, images, error)) return false;
   std::string text = glbJson(mesh, images);
-  text.resize(padded4(text.size()), ' ');  // chunks are 4-byte aligned
   size_t bin = 0;
   if (!mesh.empty())
     for (const Part& part : binParts(mesh)) bin += part.bytes;
   for (const EmbeddedImage& image : images) bin += padded4(image.bytes.size());
-  const size_t total = 12 + 8 + text.size() + (bin ? 8 + bin : 0);
-  if (total > std::numeric_limits<uint32_t>::max()) {
-    error = "the GLB file would be " + std::to_string(total) + " bytes, past the format's 4 GiB limit";
-    return false;
-  }
-  out.append("glTF", 4);
-  appendU32(out, 2);
-  appendU32(out, uint32_t(total));
-  appendU32(out, uint32_t(text.size()));
-  out.append("JSON", 4);
-  out.append(text);
+  std::string prefix;
+  if (!glbPrefix(text, bin, prefix, error)) return false;
+  out.append(prefix);
   if (!bin) return true;
-  appendU32(out, uint32_t(bin));
-  out.append("BIN\0", 4);
   out.append(mesh.positions.data(), mesh.positions.size() * sizeof(float));
   if (hasNormals(mesh)) out.append(mesh.normals.data(), mesh.normals.size() * sizeof(float));
   if (hasColors(mesh)) appendTransformed(out, mesh.colors, [](size_t, float c) { return clamp01(c); });

@@ -1,5 +1,6 @@
 #include "runtime/output/gltf_writer.h"
 
+#include "runtime/io/glb_container.h"
 #include "runtime/io/glb_writer.h"
 #include "runtime/io/mesh_attributes.h"
 
@@ -23,12 +24,8 @@ static_assert(std::endian::native == std::endian::little, "glTF buffers are litt
 
 using nlohmann::json;
 
-constexpr int kFloat = 5126, kUnsignedInt = 5125;
-constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
-constexpr int kLines = 1, kTriangles = 4;
+using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
-
-size_t padded4(size_t bytes) { return (bytes + 3) & ~size_t(3); }
 
 std::string base64(const std::string& bytes) {
   static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -367,26 +364,8 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
     bytes += '\n';
     return true;
   }
-  text.resize(padded4(text.size()), ' ');
-  const size_t total = 12 + 8 + text.size() + (bin_.empty() ? 0 : 8 + bin_.size());
-  if (total > std::numeric_limits<uint32_t>::max()) {
-    error = "the GLB file would be " + std::to_string(total) + " bytes, past the format's 4 GiB limit";
-    return false;
-  }
-  const auto u32 = [&](uint32_t v) { bytes.append(reinterpret_cast<const char*>(&v), 4); };
-  bytes.clear();
-  bytes.reserve(total);
-  bytes.append("glTF", 4);
-  u32(2);
-  u32(uint32_t(total));
-  u32(uint32_t(text.size()));
-  bytes.append("JSON", 4);
-  bytes += text;
-  if (!bin_.empty()) {
-    u32(uint32_t(bin_.size()));
-    bytes.append("BIN\0", 4);
-    bytes += bin_;
-  }
+  if (!glbPrefix(text, bin_.size(), bytes, error)) return false;
+  bytes += bin_;
   return true;
 }
 
