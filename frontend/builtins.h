@@ -15,6 +15,7 @@ enum class CommandId {
   Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
   BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators
   EnglishBond, FlemishBond, HeaderBond, Shingles,
+  Report, Print,  // CGA's report(key, value) (collected per start shape) and print(value)
 };
 
 enum class BodyRule {

@@ -267,6 +267,20 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
         expect(*item.args[k], w, k == 3 && cmd.id != CommandId::RandomStones ? ValueType::Bool : ValueType::Num,
                "this argument");
       break;
+    case CommandId::Report:
+    case CommandId::Print: {
+      // Report's key is a string; the value (Report's and Print's) a number, a truth value,
+      // a string or (Print) a vector.
+      if (cmd.id == CommandId::Report) expect(*item.args[0], w.operand(), ValueType::Str, "the key of 'Report'");
+      const Expr& value = *item.args.back();
+      const ValueType t = typeOf(value, w.operand(), true);
+      if (t == ValueType::Vec3 && cmd.id == CommandId::Report)
+        diags_.error("E013", value.range, "'Report' takes a number, a boolean or a string, not a vector: report its components");
+      else if (t == ValueType::Vec3 && value.kind != ExprKind::Vector && drawsRandom(value))
+        diags_.error("E016", value.range,
+                     "a vector that draws random numbers must be written (x, y, z) to be printed: each component is read from it");
+      break;
+    }
     default: numArgs(0, false); break;
   }
   for (const auto& b : item.body) checkSuccessor(b, w);
