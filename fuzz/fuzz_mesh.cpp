@@ -33,8 +33,8 @@ const char* guessExtension(std::string_view bytes) {
 }
 
 std::string scratchFolder() {
-  char name[] = "/tmp/fgsg-fuzz-mesh-XXXXXX";
-  if (!mkdtemp(name)) finding("cannot create a scratch folder in /tmp");
+  char name[] = "/dev/shm/fgsg-fuzz-mesh-XXXXXX";
+  if (!mkdtemp(name)) finding("cannot create a scratch folder in /dev/shm");
   return name;
 }
 
