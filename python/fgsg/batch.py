@@ -51,8 +51,15 @@ import time
 def load_jobs(path):
     """The jobs of a JOBS file, paths made absolute (relative to its folder); raises
     ValueError naming the job and field for a malformed one."""
-    with open(path, encoding="utf-8") as f:
-        data = json.load(f)
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+    except UnicodeDecodeError as e:
+        raise ValueError(f"{path}: not UTF-8 text (byte {e.start})") from None
+    except json.JSONDecodeError as e:
+        raise ValueError(f"{path}:{e.lineno}:{e.colno}: not valid JSON ({e.msg})") from None
+    except RecursionError:
+        raise ValueError(f"{path}: nested too deeply for a JOBS file") from None
     jobs = data.get("jobs") if isinstance(data, dict) else data
     if not isinstance(jobs, list):
         raise ValueError(f"{path}: expected a list of jobs or {{\"jobs\": [...]}}")
@@ -70,8 +77,13 @@ def load_jobs(path):
         j.setdefault("seed", 1)
         j.setdefault("attrs", {})
         for field in ("grammar", "library", "output", "surface", "lots"):
-            if j.get(field):
-                j[field] = os.path.normpath(os.path.join(base, j[field]))
+            value = j.get(field)
+            if value is None or value == "":
+                continue
+            if not isinstance(value, str) or "\0" in value:
+                raise ValueError(f"{path}: job {i}: \"{field}\" must be a path (text without NUL bytes), "
+                                 f"not {json.dumps(value)[:60]}")
+            j[field] = os.path.normpath(os.path.join(base, value))
         out.append(j)
     # Two jobs writing one file: one result would silently replace the other, and a
     # resumed batch would skip both.
@@ -375,6 +387,8 @@ def read_manifest(path):
         return []
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as e:
         raise ValueError(f"the manifest {path} cannot be read ({e})") from None
+    except RecursionError:
+        raise ValueError(f"the manifest {path} cannot be read (nested too deeply)") from None
     if not isinstance(data, dict) or data.get("format") != "fgsg-batch-manifest" or \
             not isinstance(data.get("jobs"), list):
         raise ValueError(f"{path} is not an fgsg batch manifest")
