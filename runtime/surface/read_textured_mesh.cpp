@@ -1,6 +1,7 @@
 #include "runtime/surface/read_textured_mesh.h"
 
 #include "runtime/io/check_collada.h"
+#include "runtime/io/check_fbx.h"
 #include "runtime/io/check_gltf.h"
 #include "runtime/io/check_ply.h"
 #include "runtime/io/quoted_text.h"
@@ -229,6 +230,7 @@ bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMe
       !io::checkGltfBounds(path, bytes, readerMemoryLimit(maxMemoryBytes), error))
     return false;
   if (ext == ".dae" && !io::checkColladaNodes(path, bytes, error)) return false;
+  if (ext == ".fbx" && !io::checkFbxNodes(path, bytes, readerMemoryLimit(maxMemoryBytes), error)) return false;
 
   Assimp::Importer importer;
   importer.SetIOHandler(new CheckedIOSystem);  // the importer owns it

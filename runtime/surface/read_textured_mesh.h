@@ -32,7 +32,8 @@ bool readsThroughAssimp(const std::string& ext, std::string_view bytes);
 // numbers. `polygonal`: some polygon had more than three corners. glTF files are checked
 // by io/check_gltf.h before assimp sees them (node trees, counts, and the memory the read
 // would take against `maxMemoryBytes`, 0 for the default: memory_budget.h's
-// readerMemoryLimit()), COLLADA files by io/check_collada.h (<instance_node> expansion).
+// readerMemoryLimit()), COLLADA files by io/check_collada.h (<instance_node> expansion), FBX
+// files by io/check_fbx.h (model connections: copies, cycles, depth).
 bool readTexturedMesh(const std::string& path, std::string_view bytes, SurfaceMesh& mesh, bool& polygonal,
                       std::string& error, uint64_t maxMemoryBytes = 0);
 
