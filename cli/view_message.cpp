@@ -61,6 +61,12 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
     reason = "message of " + std::to_string(text.size()) + " bytes (at most " + std::to_string(kMaxPageMessageBytes) + ")";
     return false;
   }
+  // JSON text holds no raw NUL (a string spells it \u0000), and the parser would stop at
+  // one, taking what precedes it for the whole message.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    reason = "a NUL byte at byte " + std::to_string(nul) + " (not JSON text)";
+    return false;
+  }
   if (!jsonNestingWithin(text, kMaxPageMessageDepth)) {
     reason = "message nested deeper than " + std::to_string(kMaxPageMessageDepth) + " levels";
     return false;

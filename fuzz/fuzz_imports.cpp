@@ -2,8 +2,9 @@
 // is split at lines "---" into up to five files written to a scratch folder: the first is
 // main.fgsg, compiled as `fgsg check` does; the others are m1.fgsg ... m4.fgsg beside it,
 // which it (and they) may import (`import "m1" as a;`, with settings, chains, diamonds,
-// cycles, missing modules, clashes), and "std/..." names the standard library of the
-// tree. Oracles, as fuzz_frontend's: no internal compiler error (E999), every error
+// cycles, missing modules, clashes); "std/..." names the same folder (FGSG_STDLIB is set
+// to it: parsing the real standard library's modules on every input would make the
+// target some ten times slower, and fuzz_frontend and the tests cover them). Oracles, as fuzz_frontend's: no internal compiler error (E999), every error
 // located within the grammar or one of its modules, failure iff an error was reported;
 // and a grammar that compiles compiles again from its text with the modules embedded (as
 // a compiled library carries them, SourceFile::make) to the same IR.
@@ -30,6 +31,8 @@ namespace {
 std::string scratchFolder() {
   char name[] = "/dev/shm/fgsg-fuzz-imports-XXXXXX";
   if (!mkdtemp(name)) finding("cannot create a scratch folder in /dev/shm");
+  setenv("FGSG_STDLIB", name, 1);
+  unsetenv("FGSG_PATH");
   return name;
 }
 

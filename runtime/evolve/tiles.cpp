@@ -1,5 +1,6 @@
 #include "runtime/evolve/tiles.h"
 
+#include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
 
 #include <nlohmann/json.hpp>
@@ -231,6 +232,23 @@ TileSet parseTileSet(std::string_view text, std::string_view source) {
     if (const size_t colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
     throw TileFileError(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(column) +
                         ": not valid JSON: " + what);
+  } catch (const json::exception& e) {
+    // A number too large for a double ("number overflow parsing '1e999'", out_of_range)
+    // carries no position: the first place the number's text occurs is where it is.
+    std::string what = e.what(), where(source);
+    const size_t open = what.find('\''), close = what.rfind('\'');
+    std::string number;
+    if (open != std::string::npos && close > open) number = what.substr(open + 1, close - open - 1);
+    if (const size_t at = number.empty() ? std::string_view::npos : text.find(number); at != std::string_view::npos) {
+      size_t line = 1, column = 1;
+      for (size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') ++line, column = 1;
+        else ++column;
+      }
+      where += ":" + std::to_string(line) + ":" + std::to_string(column);
+    }
+    throw TileFileError(where + ": not valid JSON: " +
+                        (number.empty() ? what : "the number " + io::quoteText(number) + " is too large"));
   }
   if (!root.is_object()) fail(source, "", std::string("a tile file is a JSON object, got ") + typeName(root));
 

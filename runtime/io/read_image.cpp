@@ -2,7 +2,11 @@
 
 #include "runtime/io/pnm_reader.h"
 
+#include <algorithm>
 #include <array>
+#include <vector>
+
+#include <zlib.h>
 #include <cstdlib>
 
 // The project's only stb_image implementation (read_image.h says why these formats).
@@ -85,6 +89,74 @@ bool checkPngComplete(const std::string& b, std::string& why) {
   }
 }
 
+// PNG image data (the IDAT chunks' zlib stream), inflated by zlib before stb_image sees it:
+// stb_image 2.27 takes the distance codes 30 and 31, which deflate does not define, for a
+// distance of 0 and copies bytes of its output buffer not yet written (a picture that
+// differs on every run), pads a stream cut short with zeros, and grows its buffer to
+// whatever the stream inflates to (4 GB from a few MB). The stream must inflate without an
+// error, end, and inflate to no more than the rows of the header's size need (what stb
+// reads of it; a quarter more and 64 KiB are allowed for writers that pad).
+bool checkPngInflates(const std::string& b, std::string& why) {
+  if (b.size() < 33) return true;  // no IHDR: stb_image has refused it already
+  const uint64_t w = bigEndian32(b, 16), h = bigEndian32(b, 20);
+  const int depth = uint8_t(b[24]), colour = uint8_t(b[25]), interlace = uint8_t(b[28]);
+  const int channels = colour == 2 ? 3 : colour == 4 ? 2 : colour == 6 ? 4 : 1;
+  const auto rows = [&](uint64_t pw, uint64_t ph) {
+    return pw == 0 || ph == 0 ? 0 : ph * (1 + (pw * uint64_t(channels) * uint64_t(depth) + 7) / 8);
+  };
+  uint64_t need = 0;
+  if (interlace == 1) {
+    static const int x0[7] = {0, 4, 0, 2, 0, 1, 0}, y0[7] = {0, 0, 4, 0, 2, 0, 1}, dx[7] = {8, 8, 4, 4, 2, 2, 1},
+                     dy[7] = {8, 8, 8, 4, 4, 2, 2};
+    for (int p = 0; p < 7; ++p)
+      need += rows((w + uint64_t(dx[p] - x0[p]) - 1) / uint64_t(dx[p]), (h + uint64_t(dy[p] - y0[p]) - 1) / uint64_t(dy[p]));
+  } else {
+    need = rows(w, h);
+  }
+  const uint64_t allowed = need + need / 4 + (uint64_t(64) << 10);
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) {
+    why = "not checked: zlib cannot start";
+    return false;
+  }
+  std::vector<unsigned char> out(size_t(64) << 10);
+  uint64_t inflated = 0;
+  int status = Z_OK;
+  for (size_t at = 8; at + 12 <= b.size() && status != Z_STREAM_END;) {
+    const uint32_t length = bigEndian32(b, at);
+    const bool idat = b.compare(at + 4, 4, "IDAT") == 0;
+    const size_t data = at + 8;
+    at += 12 + size_t(length);  // checkPngComplete: every chunk lies within the file
+    if (!idat) continue;
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(b.data() + data));
+    z.avail_in = length;
+    while (z.avail_in > 0 && status == Z_OK) {
+      z.next_out = out.data();
+      z.avail_out = uInt(out.size());
+      status = inflate(&z, Z_NO_FLUSH);
+      inflated += out.size() - z.avail_out;
+      if (status == Z_BUF_ERROR) status = Z_OK;  // no progress possible: more input is needed
+      if (inflated > allowed) {
+        inflateEnd(&z);
+        why = "damaged: its image data inflates to more than the " + std::to_string(need) + " bytes its " +
+              std::to_string(w) + " x " + std::to_string(h) + " pixels need";
+        return false;
+      }
+    }
+    if (status != Z_OK && status != Z_STREAM_END) {
+      why = std::string("damaged: its image data does not inflate (zlib: ") + (z.msg ? z.msg : "error") + ")";
+      inflateEnd(&z);
+      return false;
+    }
+  }
+  inflateEnd(&z);
+  if (status != Z_STREAM_END) {
+    why = "truncated: its image data ends before its compressed stream does";
+    return false;
+  }
+  return true;
+}
+
 // JPEG: the segments to the first scan, then the entropy-coded data (where 0xFF is always
 // followed by 0x00 or a restart marker) and any further segments and scans, up to the
 // end-of-image marker. stb_image decodes a cut-off scan as if zeros followed.
@@ -121,6 +193,56 @@ bool checkJpegComplete(const std::string& b, std::string& why) {
   }
   why = "truncated: it ends after " + std::to_string(b.size()) + " bytes, before its end-of-image marker";
   return false;
+}
+
+// JPEG Huffman tables (DHT segments), before stb_image reads any: a table declares how
+// many codes it has of each length, and stb_image (2.27) writes that many entries into a
+// table of 256 without checking (a 16-byte file writes 4 KB past it). Every DHT segment
+// up to the end of the image is checked: at most 256 codes a table, all within the
+// segment. The segments are walked as stb_image walks them (bytes between segments that
+// are not a marker are skipped, as stb_image skips padding); structural problems are
+// checkJpegComplete's to report.
+bool checkJpegTables(const std::string& b, std::string& why) {
+  const auto u8 = [&](size_t i) { return uint8_t(b[i]); };
+  size_t at = 2;
+  while (at + 1 < b.size()) {
+    if (u8(at) != 0xFF) {
+      ++at;
+      continue;
+    }
+    const uint8_t marker = u8(at + 1);
+    if (marker == 0xFF) {
+      ++at;
+      continue;
+    }
+    if (marker == 0xD9) return true;
+    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+      at += 2;
+      continue;
+    }
+    if (at + 4 > b.size()) return true;
+    const size_t length = size_t(u8(at + 2)) << 8 | u8(at + 3);
+    if (length < 2) return true;
+    const size_t end = std::min(b.size(), at + 2 + length);
+    if (marker == 0xC4) {
+      for (size_t t = at + 4; t < end;) {
+        size_t codes = 0;
+        for (size_t i = 0; i < 16 && t + 1 + i < end; ++i) codes += u8(t + 1 + i);
+        if (codes > 256 || t + 17 + codes > end) {
+          why = "damaged: its Huffman table at byte " + std::to_string(t) + " declares " + std::to_string(codes) +
+                " codes" + (codes > 256 ? " (at most 256)" : ", more than its segment holds");
+          return false;
+        }
+        t += 17 + codes;
+      }
+    }
+    at += 2 + length;
+    if (marker != 0xDA) continue;
+    while (at + 1 < b.size() &&
+           !(u8(at) == 0xFF && u8(at + 1) != 0x00 && u8(at + 1) != 0xFF && !(u8(at + 1) >= 0xD0 && u8(at + 1) <= 0xD7)))
+      ++at;
+  }
+  return true;
 }
 
 // BMP: the pixel rows the header declares, from the pixel-data offset on (uncompressed
@@ -232,13 +354,18 @@ bool checkImage(const std::string& path, const std::string& bytes, const ImageLi
   }
   const int length = int(bytes.size());  // within the input cap, far below INT_MAX
   int w = 0, h = 0, channels = 0;
+  std::string damaged;
+  if (header.format == ImageFormat::Jpeg && !checkJpegTables(bytes, damaged)) {
+    error = path + ": the JPEG file is " + damaged;
+    return false;
+  }
   if (!stbi_info_from_memory(data8(bytes), length, &w, &h, &channels)) {
     error = path + ": cannot read the " + format + " image's header: " + failureReason();
     return false;
   }
   if (!checkSize(path, w, h, limits, error)) return false;
   std::string why;
-  const bool complete = header.format == ImageFormat::Png    ? checkPngComplete(bytes, why)
+  const bool complete = header.format == ImageFormat::Png    ? checkPngComplete(bytes, why) && checkPngInflates(bytes, why)
                         : header.format == ImageFormat::Jpeg ? checkJpegComplete(bytes, why)
                                                              : checkBmpComplete(bytes, why);
   if (!complete) {

@@ -56,6 +56,11 @@ TEST_CASE("view messages: garbage, wrong kinds and unknown fields are refused wi
   CHECK_FALSE(refused(R"({"type":"pick"})").empty());
   CHECK_FALSE(refused(R"({"type":"pick","instance":4294967296})").empty());
   CHECK_FALSE(refused(R"({"type":"pick","instance":1,"zz":2})").empty());
+  // fuzz_view_message (issue 42): the JSON parser stops at a NUL byte, so a valid message
+  // followed by a NUL and anything was accepted as that message.
+  CHECK(refused(std::string(R"({"type":"set","seed":3})") + '\0' + "garbage") ==
+        "a NUL byte at byte 23 (not JSON text)");
+  CHECK(refused(std::string("\" \"\0\0\0type\": \"pcki\"", 20)).find("a NUL byte at byte 3") == 0);
   // A long message's text is not quoted back whole.
   const std::string why = refused(R"({"type":")" + std::string(10000, 'q') + R"("})");
   CHECK(why.size() < 200);
