@@ -35,9 +35,10 @@ bool loadSynthesisExample(const std::string& name, const std::vector<std::string
 }
 
 bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
-                           rt::synthesis::continuous::ExampleSolid& out, std::string& message) {
+                           rt::synthesis::continuous::ExampleSolid& out, std::string& message,
+                           rt::Deadline* deadline) {
   std::string error;
-  if (rt::synthesis::continuous::loadExampleSolid(rt::io::findFile(name, dirs), out, error)) return true;
+  if (rt::synthesis::continuous::loadExampleSolid(rt::io::findFile(name, dirs), out, error, deadline)) return true;
   message = "Synthesize: cannot use the example \"" + name + "\": " + error;
   return false;
 }

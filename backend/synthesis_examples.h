@@ -29,6 +29,7 @@ bool loadSynthesisExample(const std::string& name, const std::vector<std::string
 // Loads a polygonal example (continuous synthesis, Merrell ch. 4; which files are:
 // rt::synthesis::continuous::isPolygonalExampleFile) as loadSynthesisExample does the others.
 bool loadContinuousExample(const std::string& name, const std::vector<std::string>& dirs,
-                           rt::synthesis::continuous::ExampleSolid& out, std::string& message);
+                           rt::synthesis::continuous::ExampleSolid& out, std::string& message,
+                           rt::Deadline* deadline = nullptr);
 
 }  // namespace fgsg::backend

@@ -144,7 +144,12 @@ int continuousSynthCommand(const Args& args) {
         o.mask.push_back(0.299 * ((c >> 16) & 255) + 0.587 * ((c >> 8) & 255) + 0.114 * (c & 255) < 128.0 ? 1.0f : 0.0f);
       }
   }
-  if (!loadExampleSolid(example, ex, err)) {
+  if (!loadExampleSolid(example, ex, err, &deadline)) {
+    if (deadline.passed()) {  // reading a large example took the time: the limit's error
+      std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: stopped by the time limit (%s s)\n",
+                   example.c_str(), std::to_string(o.timeLimitSeconds).c_str());
+      return 1;
+    }
     // The message starts with where ("house.obj: face 7 ...", "house.obj:12: ..."): the
     // code goes after that place, as in every fgsg diagnostic.
     const size_t at = err.rfind(example, 0) == 0 ? err.find(": ", example.size()) : std::string::npos;

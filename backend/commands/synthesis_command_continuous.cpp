@@ -88,7 +88,11 @@ const rt::synthesis::continuous::ExampleSolid& SynthesisCommand::loadSolid(const
   if (it != solids_.end()) return it->second;
   cs::ExampleSolid solid;
   std::string message;
-  if (!loadContinuousExample(name, d_.options().assetDirs, solid, message)) throw DeriveError{at, "R013", message};
+  // --max-seconds counts the reading of a large example too.
+  if (!loadContinuousExample(name, d_.options().assetDirs, solid, message, &d_.deadline())) {
+    if (d_.deadline().expiredNow()) throw d_.timeLimit();
+    throw DeriveError{at, "R013", message};
+  }
   return solids_.emplace(name, std::move(solid)).first->second;
 }
 

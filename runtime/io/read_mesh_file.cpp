@@ -32,10 +32,23 @@ using RawMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
  public:
-  RawImporter(RawMesh& vertices, MeshFileContent& out) : ImporterT(vertices), out_(out) {}
+  RawImporter(RawMesh& vertices, MeshFileContent& out, Deadline* deadline)
+      : ImporterT(vertices), out_(out), deadline_(deadline) {}
+
+  // Asked at every vertex and face: OpenMesh's readers cannot be stopped otherwise.
+  using ImporterT::add_vertex;
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
+    if (deadline_) deadline_->check();  // TimeLimitReached, caught around the read
+    return ImporterT::add_vertex(p);
+  }
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override {
+    if (deadline_) deadline_->check();
+    return ImporterT::add_vertex(p);
+  }
 
   // Vertices go to the kernel (readers may attach properties to them); faces stay here.
   OpenMesh::FaceHandle add_face(const VHandles& corners) override {
+    if (deadline_) deadline_->check();
     for (auto v : corners) out_.corners.push_back(v.idx());
     out_.polygonStart.push_back(out_.corners.size());
     return OpenMesh::FaceHandle(int(out_.polygonCount() - 1));
@@ -89,6 +102,7 @@ class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
 
  private:
   MeshFileContent& out_;
+  Deadline* deadline_ = nullptr;
   std::vector<int> faceTexture_;
   std::vector<std::string> textureNames_;
   std::vector<std::array<double, 2>> faceUV_;
@@ -104,9 +118,13 @@ std::string lowerExtension(const std::string& path) {
 
 // OpenMesh's OBJ reader asserts (aborting the process) on a face corner that names no
 // vertex, such as `f /1 /2 /3`: every corner must start with a vertex index.
-bool checkObjFaces(const std::string& path, std::string_view bytes, std::string& error) {
+bool checkObjFaces(const std::string& path, std::string_view bytes, std::string& error, Deadline* deadline) {
   size_t lineNo = 0, pos = 0;
   while (pos < bytes.size()) {
+    if (deadline && deadline->expired()) {
+      error = readStoppedMessage(path, *deadline);
+      return false;
+    }
     size_t end = bytes.find('\n', pos);
     if (end == std::string_view::npos) end = bytes.size();
     std::istringstream tokens{std::string(bytes.substr(pos, end - pos))};
@@ -129,9 +147,9 @@ bool checkObjFaces(const std::string& path, std::string_view bytes, std::string&
 // OBJ, PLY and STL through OpenMesh (by path: the STL reader tells binary from text by the
 // file's size, and welds coincident corners).
 bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileContent& out,
-                      std::string& error) {
+                      std::string& error, Deadline* deadline) {
   RawMesh vertices;
-  RawImporter importer(vertices, out);
+  RawImporter importer(vertices, out, deadline);
   OpenMesh::IO::Options opt;
   // Texture coordinates: OBJ's per face corner (seams keep both sides), PLY's per vertex.
   if (ext == ".obj") opt += OpenMesh::IO::Options::FaceTexCoord;
@@ -144,6 +162,9 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
     QuietOpenMesh quiet;
     try {
       ok = OpenMesh::IO::IOManager().read(path, importer, opt);
+    } catch (const TimeLimitReached&) {
+      error = readStoppedMessage(path, *deadline);
+      return false;
     } catch (const std::exception&) {
       ok = false;  // a count the checks above did not foresee: still the file's fault
     }
@@ -200,12 +221,22 @@ bool readWithOpenMesh(const std::string& path, const std::string& ext, MeshFileC
 
 }  // namespace
 
+std::string readStoppedMessage(const std::string& path, const Deadline& deadline) {
+  std::ostringstream seconds;
+  seconds << deadline.seconds();
+  return path + ": stopped by the time limit (" + seconds.str() + " s) while reading the file";
+}
+
 bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
-                       std::string& error) {
+                       std::string& error, Deadline* deadline) {
   size_t lineNo = 0, pos = 0;
   bool data = ext != ".ply";  // PLY: only after the header, and only when it is ASCII
   std::string line;
   while (pos < bytes.size()) {
+    if (deadline && deadline->expired()) {
+      error = readStoppedMessage(path, *deadline);
+      return false;
+    }
     size_t end = bytes.find('\n', pos);
     if (end == std::string_view::npos) end = bytes.size();
     line.assign(bytes.substr(pos, end - pos));
@@ -239,7 +270,7 @@ bool findNonFiniteText(const std::string& path, const std::string& ext, std::str
   return true;
 }
 
-bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error) {
+bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error, Deadline* deadline) {
   out = MeshFileContent{};
   std::string bytes;
   if (!readInputFile(path, "a mesh file", bytes, error)) return false;
@@ -250,12 +281,13 @@ bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& er
   const std::string ext = lowerExtension(path);
   bool ok = false;
   if (ext == ".off") {
-    ok = parseOff(path, bytes, out, error);
+    ok = parseOff(path, bytes, out, error, deadline);
   } else {
     ok = (ext != ".ply" || checkPlyStructure(path, bytes, error)) &&
-         (ext != ".obj" || checkObjFaces(path, bytes, error)) && findNonFiniteText(path, ext, bytes, error);
+         (ext != ".obj" || checkObjFaces(path, bytes, error, deadline)) &&
+         findNonFiniteText(path, ext, bytes, error, deadline);
     bytes = std::string();  // OpenMesh reads the file itself
-    ok = ok && readWithOpenMesh(path, ext, out, error);
+    ok = ok && readWithOpenMesh(path, ext, out, error, deadline);
   }
   if (!ok) out = MeshFileContent{};
   return ok;

@@ -7,6 +7,8 @@
 // OBJ (`vt`, per face corner) and PLY (vertex properties u v / s t, per vertex).
 #pragma once
 
+#include "runtime/deadline.h"
+
 #include <array>
 #include <cstddef>
 #include <string>
@@ -38,8 +40,13 @@ struct MeshFileContent {
 // the caller has checked is .obj, .ply, .off or .stl). False with one located message
 // ("PATH:LINE: ..." where a line is known, else "PATH: ...") when the file cannot be read,
 // declares more than it holds, spells a coordinate that is not finite, or has a face with
-// fewer than three corners or an index out of range.
-bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error);
+// fewer than three corners or an index out of range. With a `deadline` (a command's time
+// limit, which counts the reading too), the checks and the parsing ask it line by line and
+// stop once it has passed: false with readStoppedMessage().
+bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& error, Deadline* deadline = nullptr);
+
+// "PATH: stopped by the time limit (2 s) while reading the file".
+std::string readStoppedMessage(const std::string& path, const Deadline& deadline);
 
 // Text readers (OpenMesh's, assimp's) cannot parse "nan" or "inf": they stop short or read
 // garbage without saying so. So text files (`ext` .obj, .ply or .stl, lower case) are
@@ -47,6 +54,6 @@ bool readMeshFile(const std::string& path, MeshFileContent& out, std::string& er
 // coordinate 'nan' is not a finite number"). True for binary files, whose non-finite
 // floats reach the caller's checks.
 bool findNonFiniteText(const std::string& path, const std::string& ext, std::string_view bytes,
-                       std::string& error);
+                       std::string& error, Deadline* deadline = nullptr);
 
 }  // namespace fgsg::rt::io

@@ -81,7 +81,7 @@ bool parseKeyword(std::string_view word, Keyword& k) {
 }  // namespace
 
 bool parseOff(const std::string& path, std::string_view text, MeshFileContent& out,
-              std::string& error) {
+              std::string& error, Deadline* deadline) {
   OffLines lines(text);
   std::vector<std::string_view> tokens;
   const auto at = [&](size_t line) { return path + ":" + std::to_string(line) + ": "; };
@@ -154,6 +154,10 @@ bool parseOff(const std::string& path, std::string_view text, MeshFileContent& o
 
   out.vertices.reserve(size_t(nv));
   for (long long v = 0; v < nv; ++v) {
+    if (deadline && deadline->expired()) {
+      error = readStoppedMessage(path, *deadline);
+      return false;
+    }
     if (!lines.next(tokens)) {
       error = path + ": the file ends after " + std::to_string(v) + " of " + std::to_string(nv) +
               " vertices";
@@ -195,6 +199,10 @@ bool parseOff(const std::string& path, std::string_view text, MeshFileContent& o
   out.corners.reserve(size_t(nf) * 3);
   out.polygonStart.reserve(size_t(nf) + 1);
   for (long long f = 0; f < nf; ++f) {
+    if (deadline && deadline->expired()) {
+      error = readStoppedMessage(path, *deadline);
+      return false;
+    }
     if (!lines.next(tokens)) {
       error = path + ": the file ends after " + std::to_string(f) + " of " + std::to_string(nf) +
               " faces";

@@ -13,7 +13,8 @@ namespace fgsg::rt::io {
 
 // Parses text OFF (binary OFF is refused with a message). Counts are checked against the
 // bytes that follow them before anything is allocated; every error names the line.
+// With a `deadline`, stops once it has passed (readStoppedMessage()).
 bool parseOff(const std::string& path, std::string_view text, MeshFileContent& out,
-              std::string& error);
+              std::string& error, Deadline* deadline = nullptr);
 
 }  // namespace fgsg::rt::io

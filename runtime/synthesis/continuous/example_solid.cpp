@@ -42,9 +42,16 @@ DVec3 newell(const ExampleSolid& s, const std::vector<int>& poly) {
 
 }  // namespace
 
-bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, ExampleSolid& out, std::string& error) {
+bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, ExampleSolid& out, std::string& error,
+                      Deadline* deadline) {
   out = ExampleSolid{};
   out.name = name;
+  // Asked once per vertex, face, edge: cheap (Deadline reads the clock now and then).
+  auto timeUp = [&] {
+    if (!deadline || !deadline->expired()) return false;
+    error = io::readStoppedMessage(name, *deadline);
+    return true;
+  };
   const size_t polygons = mesh.polygonCount();
   if (polygons < 4) {
     error = name + ": a continuous example is a closed solid; this file has " + std::to_string(polygons) +
@@ -55,6 +62,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
   std::map<DVec3, int> index;
   std::vector<int> welded(mesh.vertices.size());
   for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (timeUp()) return false;
     auto [it, added] = index.emplace(mesh.vertices[v], int(out.vertices.size()));
     if (added) out.vertices.push_back(mesh.vertices[v]);
     welded[v] = it->second;
@@ -69,6 +77,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
   if (!(out.diagonal > 0)) { error = name + ": the example has no extent"; return false; }
 
   for (size_t p = 0; p < polygons; ++p) {
+    if (timeUp()) return false;
     std::vector<int> poly;
     for (size_t c = mesh.polygonStart[p]; c < mesh.polygonStart[p + 1]; ++c) {
       const int v = welded[size_t(mesh.corners[c])];
@@ -115,6 +124,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
   auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
   auto corner = [&](int v) { return vec(out.vertices[size_t(v)]); };
   for (size_t p = 0; p < out.polygons.size(); ++p) {
+    if (timeUp()) return false;
     const auto& poly = out.polygons[p];
     for (size_t i = 0; i < poly.size(); ++i) {
       const int a = poly[i], b = poly[(i + 1) % poly.size()];
@@ -128,6 +138,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
     }
   }
   for (size_t p = 0; p < out.polygons.size(); ++p) {  // in file order: the first open edge
+    if (timeUp()) return false;
     const auto& poly = out.polygons[p];
     for (size_t i = 0; i < poly.size(); ++i) {
       const int a = poly[i], b = poly[(i + 1) % poly.size()];
@@ -144,6 +155,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
     for (size_t i = 0; i < poly.size(); ++i)
       around[size_t(poly[(i + 1) % poly.size()])].push_back({poly[i], poly[(i + 2) % poly.size()]});
   for (size_t v = 0; v < around.size(); ++v) {
+    if (timeUp()) return false;
     const auto& fan = around[v];
     if (fan.empty()) continue;
     // Walk next -> prev links from the first corner; a single cycle visits them all.
@@ -173,7 +185,7 @@ bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, 
   return true;
 }
 
-bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& error) {
+bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& error, Deadline* deadline) {
   io::MeshFileContent mesh;
   std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -191,10 +203,14 @@ bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& e
       mesh.corners.insert(mesh.corners.end(), f.begin(), f.end());
       mesh.polygonStart.push_back(mesh.corners.size());
     }
-  } else if (!io::readMeshFile(path, mesh, error)) {
+  } else if (!io::readMeshFile(path, mesh, error, deadline)) {
     return false;
   }
-  return makeExampleSolid(mesh, path, out, error);
+  if (deadline && deadline->expiredNow()) {
+    error = io::readStoppedMessage(path, *deadline);
+    return false;
+  }
+  return makeExampleSolid(mesh, path, out, error, deadline);
 }
 
 double windingNumber(const ExampleSolid& s, const DVec3& p) {

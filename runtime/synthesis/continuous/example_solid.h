@@ -31,9 +31,13 @@ constexpr int kMaxDirectionComponent = 12;
 constexpr double kDirectionToleranceDegrees = 0.1;
 constexpr int kMaxDirections = 24;
 
-bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& error);
+// With a `deadline` (the run's time limit, which counts from the start: reading a large
+// example is part of the run), the reading and every check ask it as they go and stop once
+// it has passed, false with a message saying so ("PATH: stopped by the time limit ...").
+bool loadExampleSolid(const std::string& path, ExampleSolid& out, std::string& error, Deadline* deadline = nullptr);
 // The same from polygons already read (`name` for messages).
-bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, ExampleSolid& out, std::string& error);
+bool makeExampleSolid(const io::MeshFileContent& mesh, const std::string& name, ExampleSolid& out, std::string& error,
+                      Deadline* deadline = nullptr);
 
 // The winding number of the solid around p: 1 inside, 0 outside (Van Oosterom-Strackee
 // solid angles summed over a fan of every polygon).
