@@ -119,85 +119,101 @@ bool checkHierarchy(const std::string& path, const Graph& g, uint64_t memoryLimi
 
 // ---- ASCII: key: value, value { ... } with ; comments, as assimp's tokenizer reads it.
 
-struct Token {
-  enum Kind { Word, String, Key, Open, Close, Comma } kind;
-  std::string_view text;
-  size_t line;
-};
 
 bool asciiGraph(const std::string& path, std::string_view s, Graph& g, std::string& error) {
-  std::vector<Token> tokens;
+  // Elements: a key, its values, and maybe a { scope }. Of interest: the elements of the
+  // top-level scopes Objects (Model: ID, "Model::name", ...) and Connections (C: "OO",
+  // child, parent), whose first four values are collected as the tokens stream by (a
+  // file's vertex arrays are not kept).
+  std::vector<std::string_view> scopes;  // the keys of the open scopes
+  std::string_view lastKey;
+  struct Value {
+    bool string;
+    std::string_view text;
+  };
+  std::string_view pendingKey;  // an element of interest whose values are being collected
+  size_t pendingLine = 0;
+  std::vector<Value> values;
+  const auto id = [](const Value& v, int64_t& out) {
+    if (v.string || v.text.empty()) return false;
+    const std::string text(v.text);
+    char* end = nullptr;
+    out = text[0] == '-' ? int64_t(std::strtoll(text.c_str(), &end, 10)) : int64_t(std::strtoull(text.c_str(), &end, 10));
+    return end && *end == '\0';
+  };
+  const auto finish = [&] {
+    if (pendingKey.empty()) return;
+    int64_t a = 0, b = 0;
+    if (scopes[0] == "Objects" && !values.empty() && id(values[0], a)) {
+      g.objects.insert(a);
+      if (pendingKey == "Model")
+        g.models[a] = {values.size() > 1 ? std::string(values[1].text) : std::string(), std::to_string(pendingLine)};
+    } else if (scopes[0] == "Connections" && pendingKey == "C" && values.size() >= 3 && values[0].string &&
+               (values[0].text == "OO" || (values[0].text == "OP" && (values.size() < 4 || values[3].text.empty()))) &&
+               id(values[1], a) && id(values[2], b)) {
+      g.links.push_back({a, b, std::to_string(pendingLine)});
+    }
+    pendingKey = {};
+    values.clear();
+  };
+  enum Kind { Word, String, Key, Open, Close, Comma };
+  // One token: false on an error.
+  const auto token = [&](Kind kind, std::string_view text, size_t line) {
+    if (!pendingKey.empty()) {
+      if (kind == Comma) return true;
+      if ((kind == Word || kind == String) && values.size() < 4) {
+        values.push_back({kind == String, text});
+        return true;
+      }
+      finish();
+    }
+    if (kind == Open) {
+      if (scopes.size() >= kMaxFbxNesting) {
+        error = path + ":" + std::to_string(line) + ": the file's scopes nest deeper than " +
+                std::to_string(kMaxFbxNesting) + " levels";
+        return false;
+      }
+      scopes.push_back(lastKey);
+    } else if (kind == Close) {
+      if (!scopes.empty()) scopes.pop_back();
+    } else if (kind == Key) {
+      lastKey = text;
+      if (scopes.size() == 1 && (scopes[0] == "Objects" || scopes[0] == "Connections") && !text.empty()) {
+        pendingKey = text;
+        pendingLine = line;
+      }
+    }
+    return true;
+  };
   size_t line = 1;
   for (size_t i = 0; i < s.size();) {
     const char c = s[i];
-    if (c == '\n') ++line, ++i;
-    else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') ++i;
-    else if (c == ';') {
+    bool ok = true;
+    if (c == '\n') {
+      ++line, ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == ':') {
+      ++i;  // (a ':' not after a word ends nothing)
+    } else if (c == ';') {
       while (i < s.size() && s[i] != '\n') ++i;
     } else if (c == '"') {
       const size_t end = s.find('"', i + 1);
       const size_t stop = end == std::string_view::npos ? s.size() : end;
-      tokens.push_back({Token::String, s.substr(i + 1, stop - i - 1), line});
+      ok = token(String, s.substr(i + 1, stop - i - 1), line);
       line += size_t(std::count(s.begin() + long(i), s.begin() + long(stop), '\n'));
       i = stop + 1;
     } else if (c == '{' || c == '}' || c == ',') {
-      tokens.push_back({c == '{' ? Token::Open : c == '}' ? Token::Close : Token::Comma, s.substr(i, 1), line});
+      ok = token(c == '{' ? Open : c == '}' ? Close : Comma, s.substr(i, 1), line);
       ++i;
     } else {
       size_t end = i;
       while (end < s.size() && !std::strchr(" \t\r\n\f\v;\"{},:", s[end])) ++end;
       const bool key = end < s.size() && s[end] == ':';
-      tokens.push_back({key ? Token::Key : Token::Word, s.substr(i, end - i), line});
+      ok = token(key ? Key : Word, s.substr(i, end - i), line);
       i = end + (key ? 1 : 0);
-      if (end == i && !key) ++i;  // a lone ':'
     }
+    if (!ok) return false;
   }
-  // Elements: a key, its values, and maybe a { scope }. Scopes of interest: top-level
-  // Objects (its Model elements) and Connections (its C elements).
-  std::vector<std::string_view> scopes;  // the keys of the open scopes
-  std::string_view lastKey;
-  for (size_t t = 0; t < tokens.size(); ++t) {
-    const Token& k = tokens[t];
-    if (k.kind == Token::Open) {
-      if (scopes.size() >= kMaxFbxNesting) {
-        error = path + ":" + std::to_string(k.line) + ": the file's scopes nest deeper than " +
-                std::to_string(kMaxFbxNesting) + " levels";
-        return false;
-      }
-      scopes.push_back(lastKey);
-      continue;
-    }
-    if (k.kind == Token::Close) {
-      if (!scopes.empty()) scopes.pop_back();
-      continue;
-    }
-    if (k.kind != Token::Key) continue;
-    lastKey = k.text;
-    if (scopes.size() != 1) continue;
-    std::vector<const Token*> values;
-    for (size_t v = t + 1; v < tokens.size() && values.size() < 4; ++v) {
-      if (tokens[v].kind == Token::Comma) continue;
-      if (tokens[v].kind != Token::Word && tokens[v].kind != Token::String) break;
-      values.push_back(&tokens[v]);
-    }
-    auto id = [](const Token* v, int64_t& out) {
-      if (v->kind != Token::Word || v->text.empty()) return false;
-      const std::string text(v->text);
-      char* end = nullptr;
-      out = text[0] == '-' ? int64_t(std::strtoll(text.c_str(), &end, 10)) : int64_t(std::strtoull(text.c_str(), &end, 10));
-      return end && *end == '\0';
-    };
-    int64_t a = 0, b = 0;
-    if (scopes[0] == "Objects" && !values.empty() && id(values[0], a)) {
-      g.objects.insert(a);
-      if (k.text == "Model")
-        g.models[a] = {values.size() > 1 ? std::string(values[1]->text) : std::string(), std::to_string(k.line)};
-    } else if (scopes[0] == "Connections" && k.text == "C" && values.size() >= 3 && values[0]->kind == Token::String &&
-               (values[0]->text == "OO" || (values[0]->text == "OP" && (values.size() < 4 || values[3]->text.empty()))) &&
-               id(values[1], a) && id(values[2], b)) {
-      g.links.push_back({a, b, std::to_string(k.line)});
-    }
-  }
+  if (!pendingKey.empty()) finish();
   return true;
 }
 
