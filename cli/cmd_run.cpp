@@ -17,6 +17,7 @@
 #include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/write_instances.h"
+#include "runtime/io/write_reports.h"
 #include "runtime/memory_budget.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
@@ -42,6 +43,7 @@ struct RunOptions {
   std::string preview;
   std::string instances;
   std::string lines;  // --lines: the line graph as JSON
+  std::string report;  // --report: Report(key, value)'s collections per start shape, as JSON
   bool stats = false;
   bool quiet = false;
   size_t lotsSkipped = 0;  // --lots: geometries other than polygons, passed over
@@ -60,6 +62,7 @@ RunOptions parseRunOptions(const Args& args) {
   cl.text("--preview", o.preview);
   cl.text("--instances", o.instances);
   cl.text("--lines", o.lines);
+  cl.text("--report", o.report);
   cl.whole("--max-shapes", o.derive.maxShapes);
   cl.whole("--max-depth", o.derive.maxDepth);
   cl.option("--max-seconds", [&](const std::string& v) {
@@ -127,6 +130,8 @@ RunOptions parseRunOptions(const Args& args) {
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   if (!o.lines.empty() && lowerExtension(o.lines) != ".json")
     throw UsageError{"--lines " + o.lines + ": the line graph is written as JSON (name it .json)"};
+  if (!o.report.empty() && lowerExtension(o.report) != ".json")
+    throw UsageError{"--report " + o.report + ": reports are written as JSON (name it .json)"};
   return o;
 }
 
@@ -211,6 +216,10 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
                                             opt.derive, assets, &engineReport, &loader);
   progress.clear();
   const double deriveSeconds = since(t0) - engineReport.compileSeconds;
+  // Print(value): a line each on stderr, as CityEngine's console shows them (also those
+  // that ran before an error).
+  for (const rt::PrintLine& p : result.prints)
+    std::cerr << compiled->source.name << ":" << p.line << ":" << p.col << ": print: " << p.text << "\n";
   if (!reportMessages(result, compiled->source)) return 1;
   // --max-seconds bounds the assembly too: it ends 1.1 S after the derivation started
   // (the JIT's compile excluded), the tenth a limit may overshoot, but has at least 0.1 S
@@ -267,7 +276,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
                          : rt::io::stageMesh(mesh, opt.output, outputs, error);
   if (!staged ||
       (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
-      (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error))) {
+      (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error)) ||
+      (!opt.report.empty() && !rt::io::stageReportsJson(result, opt.derive.lots, opt.report, outputs, error))) {
     progress.clear();
     std::cerr << "fgsg run: " << error << "\n";
     return 1;

@@ -18,7 +18,7 @@ usage:
                 [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
-                [--lots lots.geojson]
+                [--lots lots.geojson] [--report reports.json]
                 [--atlas-resolution N] [--march-units surface|texels]
   fgsg check FILE          report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)

@@ -63,8 +63,8 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::Shingles, "Shingles", 3, 3, BodyRule::Optional, "Shingles(width, exposure, thickness){ Tile }",
      nullptr},
-    {CommandId::Report, "Report", 2, 2, BodyRule::None, "Report(\"key\", value)", "issue 43"},
-    {CommandId::Print, "Print", 1, 1, BodyRule::None, "Print(value)", "issue 43"},
+    {CommandId::Report, "Report", 2, 2, BodyRule::None, "Report(\"key\", value)", nullptr},
+    {CommandId::Print, "Print", 1, 1, BodyRule::None, "Print(value)", nullptr},
 };
 
 const FunctionInfo kFunctions[] = {

@@ -115,6 +115,8 @@ enum class OpKind : uint8_t {
   Evolve,        // index 0: str = tile file; index i > 0: Module::tileSets[i - 1] (str its name); args generation, then optional k (rule size) and p4 (Bool): Chan & Hui's GA pattern fills the scope
   Cells,         // index 1: str = base mesh file, else the scope's own geometry; args joint, optional mortar; bodies[0]: each feature's shape (Legakis et al.)
   CellPattern,   // index = CellGenerator; args its sizes; bodies: none, or [0] each cell's shape
+  Report,        // args key (Str), value (Num/Bool/Str): CGA's report(), collected per start shape
+  Print,         // args the value (Num/Bool/Str), or a vector's three components: CGA's print()
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

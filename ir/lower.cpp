@@ -330,21 +330,7 @@ class Lowerer {
         op.kind = OpKind::Color;
         if (item.args.size() == 1 && sema_.exprTypes.count(item.args[0].get()) &&
             sema_.exprTypes.at(item.args[0].get()) == frontend::ValueType::Vec3) {
-          // A vector (r, g, b): its components (written out, each once; else read from it).
-          Expr v = expr(*item.args[0]);
-          if (v.op == ExprOp::MakeVec) {
-            op.args = std::move(v.args);
-          } else {
-            for (uint32_t k = 0; k < 3; ++k) {
-              Expr c;
-              c.op = ExprOp::VecElem;
-              c.type = Type::Num;
-              c.index = k;
-              c.loc = v.loc;
-              c.args.push_back(v);
-              op.args.push_back(std::move(c));
-            }
-          }
+          op.args = vectorComponents(expr(*item.args[0]));  // a vector (r, g, b)
         } else if (item.args.size() == 1) {  // "#rrggbb": three constant numbers
           std::array<double, 3> rgb{};
           frontend::parseHexColor(constString(*item.args[0]), rgb);
@@ -433,6 +419,15 @@ class Lowerer {
         // The parts' symbol of continuous synthesis, as a string id + 1 (0: none).
         op.index = item.args.size() > 4 ? m_.internString(constString(*item.args[4])) + 1 : 0;
         break;
+      case CommandId::Report: op.kind = OpKind::Report; allArgs(0); break;
+      case CommandId::Print:
+        op.kind = OpKind::Print;
+        if (sema_.exprTypes.count(item.args[0].get()) &&
+            sema_.exprTypes.at(item.args[0].get()) == frontend::ValueType::Vec3)
+          op.args = vectorComponents(expr(*item.args[0]));  // printed "(x, y, z)"
+        else
+          allArgs(0);
+        break;
       case CommandId::Forward:
       case CommandId::Move:
         op.kind = OpKind::Turtle;
@@ -447,6 +442,22 @@ class Lowerer {
         break;
     }
     out.push_back(std::move(op));
+  }
+
+  // A vector's three components: written out, each once; else read from it.
+  static std::vector<Expr> vectorComponents(Expr v) {
+    if (v.op == ExprOp::MakeVec) return std::move(v.args);
+    std::vector<Expr> out;
+    for (uint32_t k = 0; k < 3; ++k) {
+      Expr c;
+      c.op = ExprOp::VecElem;
+      c.type = Type::Num;
+      c.index = k;
+      c.loc = v.loc;
+      c.args.push_back(v);
+      out.push_back(std::move(c));
+    }
+    return out;
   }
 
   static uint32_t axisIndex(const std::string& s) {

@@ -402,6 +402,8 @@ class Printer {
         text = withArgs(op.index < 8 ? kNames[op.index] : "cell-pattern?");
         break;
       }
+      case OpKind::Report: text = withArgs("report"); break;
+      case OpKind::Print: text = withArgs("print"); break;
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
     }
     line(depth, text);

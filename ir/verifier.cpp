@@ -43,6 +43,8 @@ const char* opName(OpKind k) {
     case OpKind::Branch: return "branch";
     case OpKind::Cells: return "cells";
     case OpKind::CellPattern: return "cell-pattern";
+    case OpKind::Report: return "report";
+    case OpKind::Print: return "print";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -555,6 +557,18 @@ class Verifier {
         if (op.bodies.size() > 1) problem(std::to_string(op.bodies.size()) + " bodies, expected 0 or 1");
         if (op.args.size() < 3 || op.args.size() > 4) problem(std::to_string(op.args.size()) + " arguments, expected 3 or 4");
         break;
+      case OpKind::Report:
+      case OpKind::Print: {
+        expectBodies(op, 0);
+        const size_t values = op.kind == OpKind::Report ? 2 : op.args.size() == 3 ? 3 : 1;
+        if (op.args.size() != values) problem(std::to_string(op.args.size()) + " arguments, expected " + std::to_string(values));
+        if (op.kind == OpKind::Report && !op.args.empty()) expectType(op.args[0], Type::Str, "key");
+        for (size_t k = op.kind == OpKind::Report ? 1 : 0; k < op.args.size(); ++k)
+          if (op.args[k].type == Type::Vec3 || (op.args.size() == 3 && op.args[k].type != Type::Num))
+            problem(std::string("value is ") + str(op.args[k].type) + ", expected num, bool or str");
+        for (const Expr& a : op.args) expr(a, r);
+        break;
+      }
       case OpKind::Synthesize:
         stringId(op.str);
         if (op.index > 0) stringId(op.index - 1);

@@ -12,6 +12,7 @@
 #include "runtime/io/read_lots.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/io/write_reports.h"
 #include "runtime/out_of_resources.h"
 
 #include <pybind11/numpy.h>
@@ -68,6 +69,8 @@ struct Result {
   rt::Mesh mesh;
   rt::InstanceList instances;
   rt::DeriveStats stats;
+  std::string reportsJson;            // Report(key, value): what fgsg run --report writes
+  std::vector<rt::PrintLine> prints;  // Print(value)
 };
 
 // A view of `size` elements of `data` as a numpy array of `shape`, kept alive by `owner`.
@@ -168,6 +171,8 @@ struct Grammar {
             throw outOfMemory("assembling " + std::to_string(derived.instances.instances.size()) +
                               " instances into one mesh");
           }
+          result->reportsJson = rt::io::encodeReportsJson(derived, options.lots);
+          result->prints = std::move(derived.prints);
           result->instances = std::move(derived.instances);
           result->stats = derived.stats;
         }
@@ -289,6 +294,12 @@ PYBIND11_MODULE(_fgsg, m) {
       .def("instance_params_json", [](const Result& r, size_t i) {
         if (i >= r.instances.instances.size()) throw py::index_error("no instance " + std::to_string(i));
         return rt::io::instanceParamsJson(r.instances, r.instances.instances[i]);
+      })
+      .def("reports_json", [](const Result& r) { return r.reportsJson; })
+      .def_property_readonly("prints", [](const Result& r) {
+        py::list out;
+        for (const rt::PrintLine& p : r.prints) out.append(py::make_tuple(p.line, p.col, p.text));
+        return out;
       })
       .def_property_readonly("assets", [](const Result& r) { return r.instances.assets; })
       .def_property_readonly("symbols", [](const Result& r) { return r.instances.symbols; })

@@ -4,6 +4,7 @@
 
 #include "runtime/instances.h"
 #include "runtime/lot.h"
+#include "runtime/reports.h"
 
 #include <chrono>
 #include <cstdint>
@@ -104,6 +105,10 @@ struct DeriveResult {
   InstanceList instances;
   DeriveStats stats;
   std::vector<DeriveMessage> messages;
+  // Report(key, value) and Print(value), in the order the derivation ran them (also when
+  // an error or a limit stopped it: what ran before).
+  std::vector<Report> reports;
+  std::vector<PrintLine> prints;
 };
 
 }  // namespace fgsg::rt

@@ -16,6 +16,7 @@
 #include "runtime/abi.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/io/write_reports.h"
 #include "runtime/memory_budget.h"
 #include "runtime/out_of_resources.h"
 
@@ -66,6 +67,8 @@ struct fgsg_generator {
   rt::Mesh mesh;
   std::vector<double> transforms;
   std::vector<uint32_t> instanceAssets;
+  std::string reportsJson;  // fgsg_reports_json
+  std::string prints;       // fgsg_prints: also after a failed generation
 };
 
 namespace {
@@ -203,6 +206,7 @@ void clearResult(fgsg_generator* g) {
   g->mesh = rt::Mesh{};
   g->transforms.clear();
   g->instanceAssets.clear();
+  g->reportsJson.clear();
   g->assets.reset();
   g->warnings = g->compileWarnings;
 }
@@ -232,6 +236,9 @@ bool generate(fgsg_generator* g, std::string& error) {
 
   if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.atlasCacheDir = cache + "/atlas";
   rt::DeriveResult result = backend::deriveCompiled(g->module, *g->program, opt, *assets);
+  g->prints.clear();
+  for (const rt::PrintLine& p : result.prints)
+    g->prints += g->source.name + ":" + std::to_string(p.line) + ":" + std::to_string(p.col) + ": print: " + p.text + "\n";
   frontend::Diagnostics diags(&g->source);
   std::string warnings;
   backend::addDeriveMessages(result, diags);
@@ -259,6 +266,7 @@ bool generate(fgsg_generator* g, std::string& error) {
     g->transforms.insert(g->transforms.end(), inst.transform.begin(), inst.transform.end());
     g->instanceAssets.push_back(inst.asset);
   }
+  g->reportsJson = rt::io::encodeReportsJson(result, opt.lots);
   g->result = std::move(result);
   g->assets = std::move(assets);
   g->hasResult = true;
@@ -486,6 +494,26 @@ FGSG_API const char* fgsg_asset_name(const fgsg_generator* g, uint32_t asset) {
   if (!g || !g->hasResult || asset >= g->result.instances.assets.size()) return nullptr;
   return g->result.instances.assets[asset].c_str();
 }
+
+FGSG_API const char* fgsg_reports_json(const fgsg_generator* g) { return g ? g->reportsJson.c_str() : ""; }
+
+FGSG_API size_t fgsg_report_count(const fgsg_generator* g) {
+  return g && g->hasResult ? g->result.reports.size() : 0;
+}
+
+FGSG_API int fgsg_report(const fgsg_generator* g, size_t i, uint32_t* start, const char** key, int* kind,
+                         double* number, const char** text) {
+  if (!g || !g->hasResult || i >= g->result.reports.size()) return 1;
+  const rt::Report& r = g->result.reports[i];
+  if (start) *start = r.start;
+  if (key) *key = r.key.c_str();
+  if (kind) *kind = static_cast<int>(r.value.kind);
+  if (number) *number = r.value.number;
+  if (text) *text = r.value.text.c_str();
+  return 0;
+}
+
+FGSG_API const char* fgsg_prints(const fgsg_generator* g) { return g ? g->prints.c_str() : ""; }
 
 FGSG_API int fgsg_write(fgsg_generator* g, const char* path) {
   return guarded(g, [&](std::string& error) {

@@ -110,6 +110,24 @@ FGSG_API const uint32_t* fgsg_instance_assets(const fgsg_generator* g);
  * out of range. */
 FGSG_API const char* fgsg_asset_name(const fgsg_generator* g, uint32_t asset);
 
+/* What the grammar's Report(key, value) (CGA's report) collected in the last successful
+ * fgsg_generate, as the JSON `fgsg run --report` writes: per start shape (each lot of the
+ * "lots" option, else the one axiom) the collections by key with their values, count,
+ * sum, average, min, max. "" before a generation; never NULL. */
+FGSG_API const char* fgsg_reports_json(const fgsg_generator* g);
+
+/* The reports one by one, in the order the derivation made them. Report i's start shape,
+ * key and value: kind 0 a number, 1 a boolean (number 0 or 1), 2 a string (text); any
+ * output pointer may be NULL. The strings stay valid until the next fgsg_generate.
+ * Nonzero when i is out of range. */
+FGSG_API size_t fgsg_report_count(const fgsg_generator* g);
+FGSG_API int fgsg_report(const fgsg_generator* g, size_t i, uint32_t* start, const char** key, int* kind,
+                         double* number, const char** text);
+
+/* The lines the grammar's Print(value) wrote in the last fgsg_generate (also a failed
+ * one), each "file:line:col: print: text\n" as fgsg run writes them to stderr; "" when none. */
+FGSG_API const char* fgsg_prints(const fgsg_generator* g);
+
 /* Writes the last result's mesh as `fgsg run -o path` does (the same bytes for the same
  * seed and options); the extension picks the format: .glb, .obj or .ply. The file is
  * replaced atomically. */

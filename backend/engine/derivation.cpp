@@ -39,7 +39,8 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
                        std::vector<double> attrs, const FgsgProgram* program, bool direct)
     : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
-      scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this) {
+      scope_(surface_, stack_, deadline_), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this),
+      reports_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;
   // `derive parallel n;` with an attr n: the count is its value in this run (--set
@@ -58,7 +59,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
     depthBoundIsGrammars_ = true;
   }
   CommandFamily* const families[] = {&scope_,    &turtle_, &cga_,   &collide_,  &synthesis_,
-                                     &marching_, &evolve_, &cells_, &textures_};
+                                     &marching_, &evolve_, &cells_, &textures_, &reports_};
   for (CommandFamily* family : families) registerFamily(*family);
   // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {
@@ -141,6 +142,8 @@ rt::DeriveResult Derivation::run() {
   if (origins_.on()) out_.origins.resize(out_.instances.size());
   result.stats = stats_;
   result.instances = std::move(out_);
+  result.reports = reports_.takeReports();
+  result.prints = reports_.takePrints();
   return result;
 }
 

@@ -27,6 +27,7 @@
 #include "backend/commands/evolve_command.h"
 #include "backend/commands/collision_commands.h"
 #include "backend/commands/marching_commands.h"
+#include "backend/commands/report_commands.h"
 #include "backend/commands/scope_commands.h"
 #include "backend/commands/surface_world.h"
 #include "backend/commands/synthesis_command.h"
@@ -359,6 +360,7 @@ class Derivation final : public QueryHost {
   EvolveCommand evolve_;
   CellsCommand cells_;
   TextureCommands textures_;
+  ReportCommands reports_;
   std::array<CommandFamily*, static_cast<size_t>(ir::OpKind::Unsupported) + 1> familyOf_{};
 };
 

@@ -248,6 +248,11 @@ void Derivation::checkParallelOp(const ir::Op& op) {
     case ir::OpKind::Texture:  // textures only leaves' own geometry, which sequential CGA outputs
     case ir::OpKind::Line:
     case ir::OpKind::LineSeg: sequentialOnly(op);
+    case ir::OpKind::Report:
+    case ir::OpKind::Print:
+      throw DeriveError{op.loc, "R009",
+                        "'" + op.name + "' cannot appear in a parallel (L-system) derivation: reports and "
+                        "prints run as a shape is derived, in a sequential (CGA) derivation"};
     case ir::OpKind::Center:
       throw DeriveError{op.loc, "R009",
                         "'Center' cannot appear in a parallel (L-system) derivation: it centres the "

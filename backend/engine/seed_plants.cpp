@@ -26,6 +26,8 @@ struct Derivation::Plant {
   rt::DeriveStats stats;
   std::vector<uint64_t> shapesAtInstance;  // stats.shapesCreated when each was placed
   std::vector<uint64_t> ruleUses;
+  std::vector<rt::Report> reports;  // start 0: the plant's own
+  std::vector<rt::PrintLine> prints;
   std::optional<rt::DeriveMessage> depthWarning;
   std::optional<LimitReached> limit;  // a limit ended it: what it derived is kept
   std::optional<DeriveError> error;   // an error ended it
@@ -89,6 +91,8 @@ Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, 
   p.stats = stats_;
   p.shapesAtInstance = std::move(shapesAtInstance_);
   p.ruleUses = std::move(ruleUses_);
+  p.reports = reports_.takeReports();
+  p.prints = reports_.takePrints();
   return p;
 }
 
@@ -104,6 +108,8 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
   out_.params.reserve(out_.params.size() + params);
   out_.curves.reserve(out_.curves.size() + curves);
   for (Plant& p : plants) {
+    // Its reports and prints (also those before an error) under the start shape it opens.
+    reports_.adopt(std::move(p.reports), std::move(p.prints), static_cast<uint32_t>(out_.startBounds.size()));
     if (p.error) throw *p.error;
     if (p.outOfMemory) throw std::bad_alloc();
     if (p.out.assets.size() != out_.assets.size() || p.out.symbols.size() != out_.symbols.size())

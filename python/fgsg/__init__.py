@@ -64,7 +64,10 @@ class Result:
     """A derived model. positions, normals, colors: (n, 3) float32; indices: (m, 3)
     uint32 (numpy views that keep the result alive); instances: a structured array
     (asset, symbol, transform 4x4 float64, color, param_offset, param_count) with
-    `assets` and `symbols` naming the indices; stats: the figures of `fgsg run --stats`."""
+    `assets` and `symbols` naming the indices; stats: the figures of `fgsg run --stats`;
+    reports: what Report(key, value) collected, as `fgsg run --report` writes it (a dict:
+    "starts", one per start shape, each with its "reports" by key, and "all"); prints: the
+    (line, column, text) of each Print, in the order they ran."""
 
     def __init__(self, native):
         self._native = native
@@ -77,6 +80,11 @@ class Result:
     assets = property(lambda self: self._native.assets)
     symbols = property(lambda self: self._native.symbols)
     stats = property(lambda self: self._native.stats)
+    prints = property(lambda self: self._native.prints)
+
+    @property
+    def reports(self):
+        return json.loads(self._native.reports_json())
 
     def instance_params(self, i):
         """Instance i's parameters as the grammar typed them (numbers, booleans, strings, vectors)."""

@@ -126,3 +126,21 @@ def test_the_source_carries_the_imported_modules(tmp_path):
     g = fgsg.Grammar.from_file(tmp_path / "main.fgsg")
     assert g.source.startswith(b'import "part" as p;') and b"attr size = 1;" in g.source
     assert list(g.attrs) == ["p.size"]
+
+
+def test_reports_and_prints_come_with_the_result(tmp_path):
+    # Report(key, value) per lot as fgsg run --report writes it; Print's lines (issue 43).
+    lots = tmp_path / "lots.geojson"
+    lots.write_text('{"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": '
+                    '"urn:fgsg:local-metres"}}, "features": ['
+                    '{"type": "Feature", "id": "A", "properties": {}, "geometry": {"type": "Polygon", '
+                    '"coordinates": [[[0, 0], [20, 0], [20, 10], [0, 10], [0, 0]]]}},'
+                    '{"type": "Feature", "id": "B", "properties": {}, "geometry": {"type": "Polygon", '
+                    '"coordinates": [[[30, 0], [42, 0], [42, 8], [30, 8], [30, 0]]]}}]}')
+    g = fgsg.Grammar.from_text('Lot ~> Report("area", Lot.area) Print("lot") Extrude(2) Mass;\n', "lots.fgsg")
+    for engine in ("interp", "jit"):
+        r = g.generate(lots=str(lots), engine=engine)
+        assert [s["lot"]["id"] for s in r.reports["starts"]] == ["A", "B"]
+        assert [s["reports"]["area"]["values"] for s in r.reports["starts"]] == [[200], [96]]
+        assert r.reports["all"]["area"]["sum"] == 296
+        assert r.prints == [(1, 33, "lot"), (1, 33, "lot")]

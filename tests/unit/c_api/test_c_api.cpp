@@ -450,3 +450,39 @@ TEST_CASE("line segments read through fgsg_line_indices", "[c_api][compiled]") {
   CHECK(fgsg_line_index_count(nullptr) == 0);
   CHECK(fgsg_line_indices(nullptr) == nullptr);
 }
+
+TEST_CASE("Report and Print read through fgsg_reports_json, fgsg_report and fgsg_prints", "[c_api][compiled]") {
+  const fs::path grammar = scratchDir() / "reports.fgsg";
+  std::ofstream(grammar) << "Axiom ~> S(4, 3, 0) Report(\"area\", Scope.sx * Scope.sy) Print(\"facade\")\n"
+                            "         Subdiv(\"X\"){ ~1: Tile }*;\n"
+                            "Tile ~> Report(\"tile\", true) T;\n";
+  Generator g(compileAndLoad(grammar));
+  CHECK(std::string(fgsg_reports_json(g)).empty());
+  REQUIRE(fgsg_generate(g) == 0);
+  CHECK(std::string(fgsg_reports_json(g)) ==
+        "{\"format\":\"fgsg-reports\",\"version\":1,\"starts\":[\n"
+        "{\"start\":0,\"reports\":{\"area\":{\"values\":[12],\"count\":1,\"sum\":12,\"average\":12,\"min\":12,"
+        "\"max\":12,\"nnz\":1},\"tile\":{\"values\":[true,true,true,true],\"count\":4,\"sum\":4,\"average\":1,"
+        "\"min\":1,\"max\":1,\"nnz\":4}}}\n],\n"
+        "\"all\":{\"area\":{\"values\":[12],\"count\":1,\"sum\":12,\"average\":12,\"min\":12,\"max\":12,\"nnz\":1},"
+        "\"tile\":{\"values\":[true,true,true,true],\"count\":4,\"sum\":4,\"average\":1,\"min\":1,\"max\":1,\"nnz\":4}}}\n");
+  REQUIRE(fgsg_report_count(g) == 5);
+  uint32_t start = 9;
+  const char *key = nullptr, *text = nullptr;
+  int kind = -1;
+  double number = -1;
+  REQUIRE(fgsg_report(g, 0, &start, &key, &kind, &number, &text) == 0);
+  CHECK(start == 0);
+  CHECK(std::string(key) == "area");
+  CHECK(kind == 0);
+  CHECK(number == 12);
+  REQUIRE(fgsg_report(g, 4, nullptr, &key, &kind, &number, nullptr) == 0);
+  CHECK(std::string(key) == "tile");
+  CHECK(kind == 1);
+  CHECK(number == 1);
+  CHECK(fgsg_report(g, 5, &start, &key, &kind, &number, &text) != 0);
+  CHECK(std::string(fgsg_prints(g)) == grammar.string() + ":1:57: print: facade\n");
+  CHECK(fgsg_report_count(nullptr) == 0);
+  CHECK(std::string(fgsg_reports_json(nullptr)).empty());
+  CHECK(std::string(fgsg_prints(nullptr)).empty());
+}
