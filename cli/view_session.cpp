@@ -209,6 +209,16 @@ std::string ViewSession::infoJson(const std::map<std::string, std::string>& attr
     Json entry{{"name", a.name}, {"type", attrType(a.type)}, {"default", attrDefault(compiled_->module, a)}};
     auto it = attrs.find(a.name);
     entry["value"] = it != attrs.end() ? Json(it->second) : entry["default"];
+    // A .cga attr's @Range, @Enum ...: {"Range": [["min", "0"], ["max", "10"]], ...}.
+    if (!a.annotations.empty()) {
+      Json notes = Json::object();
+      for (const ir::AttrAnnotation& n : a.annotations) {
+        Json args = Json::array();
+        for (const auto& [key, value] : n.args) args.push_back(Json::array({key, value}));
+        notes[n.name] = args;
+      }
+      entry["annotations"] = notes;
+    }
     list.push_back(entry);
   }
   return Json{{"type", "info"}, {"file", options_.file}, {"attrs", list}, {"seed", seed}}.dump();

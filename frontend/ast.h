@@ -73,6 +73,10 @@ struct Item {
   bool repeatPattern = false;   // `{ ... }*`: the parts repeat as a pattern (CGA's repeat split)
   std::vector<Item> children;   // Bracket contents
   std::string surface;          // the turtle symbol `~`: the asset of the predefined surface
+  // A Subdiv from a CityEngine `.cga` split: sizes are laid out as CityEngine does
+  // (absolute sizes that do not fill the scope leave the rest empty, those that overflow
+  // are cut) instead of fgsg's "parts must fill the scope" (R002).
+  bool cityEngineSizing = false;
 };
 
 struct Successor {
@@ -122,11 +126,20 @@ struct Rule {
 
 // ---------------------------------------------------------------- declarations
 
+// One annotation of an attr, from a CityEngine `.cga` file: `@Range(min=0, max=10)` is
+// name "Range" and args [("min", "0"), ("max", "10")]; a value without a key has an empty
+// key; strings keep their quotes off.
+struct AttrAnnotation {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> args;
+};
+
 struct ValueDecl {  // const name = expr;   attr name = expr;
   SourceRange range;
   bool isAttr = false;
   std::string name;
   ExprPtr value;
+  std::vector<AttrAnnotation> annotations;  // metadata for inspectors (sliders, enums ...)
 };
 
 struct SurfaceDecl {  // surface "bunny.off";   surface torus(2, 0.6);

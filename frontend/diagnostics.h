@@ -33,6 +33,9 @@ struct SourceFile {
   // Import aliases declared outside this text (the REPL's earlier inputs): `alias.X` is one
   // name here too.
   std::vector<std::string> importAliases;
+  // A `.cga` grammar: the rule each start shape (lot) gets instead of its @StartRule
+  // (`fgsg run --start-rule NAME`); empty: the @StartRule.
+  std::string startRule;
 
   // `text` may be a grammar with its modules (as `text` above): they are split off again.
   static SourceFile make(std::string name, std::string text);

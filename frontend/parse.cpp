@@ -4,6 +4,7 @@
 #include "frontend/parse.h"
 
 #include "frontend/ast_builder.h"
+#include "frontend/cga/cga_parse.h"
 #include "frontend/lex.h"
 #include "frontend/syntax_errors.h"
 
@@ -97,11 +98,14 @@ class StatementScan {
 }  // namespace
 
 bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
+  if (isCgaSource(file.name, file.mainText())) return parseCgaText(file.name, file.mainText(), out, diags, file.startRule);
   return parseText(file.name, file.mainText(), out, diags, file.importAliases);
 }
 
 bool parseText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
                const std::vector<std::string>& importAliases) {
+  // A module written in CityEngine's CGA (`import "facade.cga" as facade;`).
+  if (isCgaSource(name, text)) return parseCgaText(name, text, out, diags);
   out.fileName = name;
   const int errorsBefore = diags.errorCount();
 
@@ -142,6 +146,9 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
     }
     if (tokens.index() == start) tokens.consume();  // always make progress
   }
+  if (diags.errorCount() != errorsBefore)
+    if (const int line = cgaLookingLine(text))
+      diags.note(SourceRange{{line, 1}, {line, 1}}, "this looks like CityEngine CGA: name the file .cga");
   return diags.errorCount() == errorsBefore;
 }
 

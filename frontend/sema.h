@@ -38,6 +38,7 @@ struct AttrInfo {
   std::string name;
   ConstValue value;
   SourceRange range;
+  std::vector<AttrAnnotation> annotations;  // from a .cga file's @Range, @Enum ...
 };
 
 // `tileset NAME { ... }` checked: its curves as constant points, in the order written.

@@ -63,6 +63,9 @@ class Analyzer {
   void collectIgnored();
   void collectSuccessorSymbols(const Successor& s);
   void collectItemSymbols(const Item& item);
+  // A CityEngine operation (`color("#f00")`, `taper(2)`) written in the fgsg dialect, where it
+  // would be a shape that does nothing: E800 with arguments, W800 without.
+  void checkCityEngineName(const Item& item);
   std::vector<std::pair<std::string, ValueType>> ruleParamList(const Rule& r) const;
   void inferParameterTypes();
   bool inferFromSuccessor(const Successor& s, int rule);

@@ -42,7 +42,7 @@ void Analyzer::collectValues() {
       continue;
     }
     if (v.isAttr)
-      res_.attrs.push_back({v.name, value, v.range});
+      res_.attrs.push_back({v.name, value, v.range, v.annotations});
     else
       res_.constants[v.name] = value;
   }

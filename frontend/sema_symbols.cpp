@@ -5,6 +5,9 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "frontend/cga/cga_parse.h"
+
+#include <cctype>
 
 #include <functional>
 
@@ -82,8 +85,28 @@ void Analyzer::collectItemSymbols(const Item& item) {
     for (const auto& c : item.children) collectItemSymbols(c);
     return;
   }
-  if (isShapeItem(item, res_)) useArity(item.name, item.args.size(), item.range, false);
+  if (isShapeItem(item, res_)) {
+    useArity(item.name, item.args.size(), item.range, false);
+    checkCityEngineName(item);
+  }
   for (const auto& b : item.body) collectSuccessorSymbols(b);
+}
+
+void Analyzer::checkCityEngineName(const Item& item) {
+  if (item.name.empty() || !std::islower(static_cast<unsigned char>(item.name[0])) ||
+      !isCityEngineOperationName(item.name))
+    return;
+  const int s = res_.findSymbol(item.name);
+  if (s >= 0 && !res_.symbols[size_t(s)].rules.empty()) return;  // the grammar's own symbol
+  const std::string hint = "; to read the file as CityEngine CGA, name it .cga (docs/cga.md, \"CGA for CityEngine users\")";
+  if (!item.args.empty() || item.hasBody)
+    diags_.error("E800", item.range,
+                 "unknown operation '" + item.name + "': a CityEngine CGA operation, which the fgsg dialect does not have" +
+                     hint);
+  else
+    diags_.warning("W800", item.range,
+                   "'" + item.name + "' is a CityEngine CGA operation; here it is a shape without rules, which does nothing" +
+                       hint);
 }
 
 std::vector<std::pair<std::string, ValueType>> Analyzer::ruleParamList(const Rule& r) const {

@@ -164,6 +164,9 @@ struct Op {
   uint32_t asset = 0;
   InstanceMode mode = InstanceMode::Plain;
   bool repeat = false;  // Subdiv `{ ... }*`: its parts repeat as a pattern along the axis
+  // Subdiv from a CityEngine `.cga` split: CityEngine's sizing (rt::cga::cityEngineSizes:
+  // the rest left empty, overflow cut) instead of R002 when the sizes do not fill the scope.
+  bool cityEngineSizing = false;
   std::vector<Expr> args;
   std::vector<Size> sizes;
   std::vector<Block> bodies;
@@ -219,10 +222,18 @@ struct Symbol {
   int priority = 0;             // highest priority among its rules
 };
 
+// An attr's annotation (`@Range(0, 10)` in a .cga file): metadata for inspectors, no
+// effect on deriving.
+struct AttrAnnotation {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> args;  // (key or "", value text)
+};
+
 struct Attr {
   std::string name;
   Type type = Type::Num;
   Expr value;  // constant default; `--set` replaces it
+  std::vector<AttrAnnotation> annotations;
 };
 
 enum class DeriveMode : uint8_t { BreadthFirst, DepthFirst, Parallel };

@@ -42,7 +42,10 @@ class Lowerer {
       sym.priority = s.rules.empty() ? 0 : prog_.rules[s.rules.front()].priority;
       m_.symbols.push_back(sym);
     }
-    for (const auto& a : sema_.attrs) m_.attrs.push_back({a.name, toType(a.value.type), constant(a.value)});
+    for (const auto& a : sema_.attrs) {
+      m_.attrs.push_back({a.name, toType(a.value.type), constant(a.value), {}});
+      for (const auto& n : a.annotations) m_.attrs.back().annotations.push_back({n.name, n.args});
+    }
     lowerEnvironment();  // first: queries refer to environment entries by index
     std::map<uint32_t, int> perSymbolCount;
     for (size_t i = 0; i < prog_.rules.size(); ++i) lowerRule(i, perSymbolCount);
@@ -284,6 +287,7 @@ class Lowerer {
         op.kind = OpKind::Subdiv;
         op.index = axisIndex(constString(*item.args[0]));
         op.repeat = item.repeatPattern;
+        op.cityEngineSizing = item.cityEngineSizing;
         for (size_t k = 1; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
         break;
       case CommandId::Repeat: {

@@ -125,8 +125,16 @@ class Printer {
       if (!d.detail.empty()) s += " " + quoted(d.detail);
       line(0, s);
     }
-    for (const Attr& a : m_.attrs)
-      line(0, "attr " + a.name + ": " + typeName(a.type) + " = " + expr(nullptr, a.value));
+    for (const Attr& a : m_.attrs) {
+      std::string notes;
+      for (const AttrAnnotation& n : a.annotations) {
+        notes += " @" + n.name;
+        std::string args;
+        for (const auto& [k, v] : n.args) args += (args.empty() ? "" : ", ") + (k.empty() ? v : k + "=" + v);
+        if (!n.args.empty()) notes += "(" + args + ")";
+      }
+      line(0, "attr " + a.name + ": " + typeName(a.type) + " = " + expr(nullptr, a.value) + notes);
+    }
     for (const Symbol& s : m_.symbols) {
       std::string text = "symbol " + s.name + "(";
       for (size_t i = 0; i < s.paramTypes.size(); ++i)
@@ -359,7 +367,8 @@ class Printer {
         break;
       }
       case OpKind::Subdiv:
-        text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes) + (op.repeat ? " repeated" : "");
+        text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes) + (op.repeat ? " repeated" : "") +
+               (op.cityEngineSizing ? " cityengine" : "");
         break;
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;

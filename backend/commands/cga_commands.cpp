@@ -92,19 +92,28 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   std::string error;
   bool ok = false;
   size_t derivedParts = SIZE_MAX;  // a repeat split's leftover piece (past these) is not derived
+  std::vector<bool> generated;     // a .cga split: which parts CityEngine generates
   if (op.kind == ir::OpKind::Subdiv) {
     std::vector<rt::cga::SizeValue> sizes;
     for (size_t k = 0; k < op.sizes.size(); ++k)
       sizes.push_back({static_cast<rt::cga::SizeValue::Kind>(op.sizes[k].kind), a[k]});
     const int axis = static_cast<int>(op.index);
     ok = true;
-    if (op.repeat) {
+    if (op.cityEngineSizing) {
+      // A .cga split: CityEngine's sizing; the parts it does not generate are skipped.
+      std::vector<rt::cga::SizeValue> written = std::move(sizes);
+      size_t pattern = 0;
+      ok = rt::cga::cityEngineSizes(written, st.scope.S[axis], axis, op.repeat, sizes, generated, pattern, error) &&
+           rt::cga::subdivide(st.scope, st.geom, axis, sizes, d_.arena(), parts, error);
+      if (!ok) throw DeriveError{op.loc, "R002", error};
+      for (size_t i = 0; i < parts.size(); ++i) parts[i].empty = parts[i].empty || !generated[i];
+    } else if (op.repeat) {
       std::vector<rt::cga::SizeValue> pattern = std::move(sizes);
       size_t repeats = 0;
       ok = rt::cga::repeatPattern(pattern, st.scope.S[axis], axis, sizes, repeats, error);
       derivedParts = repeats * pattern.size();
     }
-    ok = ok && rt::cga::subdivide(st.scope, st.geom, axis, sizes, d_.arena(), parts, error);
+    if (!op.cityEngineSizing) ok = ok && rt::cga::subdivide(st.scope, st.geom, axis, sizes, d_.arena(), parts, error);
   } else if (op.kind == ir::OpKind::Repeat) {
     std::vector<double> sizes(a, a + op.sizes.size());
     ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, d_.arena(), parts, error);

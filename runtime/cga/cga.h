@@ -55,6 +55,22 @@ bool subdivide(const Scope& scope, const GeomRef& geom, int axis,
 bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axis, std::vector<SizeValue>& sizes,
                    size_t& repeats, std::string& error);
 
+// A split of a CityEngine `.cga` file (`split(x){ 3 : A | ~1 : B }`, `{ ... }*`) laid out as
+// CityEngine does, on a scope `length` long: absolute sizes as given, floating sizes
+// scaled by one factor so that they fill what the absolute ones leave (nothing left: they
+// are not generated), relative sizes (a nested repeat's share here; `'0.3` is absolute
+// by then) sharing what both leave. Parts are laid end to end and the one crossing the
+// end is cut there; parts after it, and parts of size <= 0, are not generated. A repeated
+// pattern (`repeat`) is written out round(L / its length) times (at least once) when it
+// has a floating size, else as often as needed to cover the scope (the last one cut).
+// `sizes` gets one absolute size per part (the pattern written out) plus, when the parts
+// leave some of the scope, a last one for that rest; `derived[k]` says whether part k is
+// generated (the rest never is). False and a message for a size that is not finite, or a
+// repeated pattern of no length.
+bool cityEngineSizes(const std::vector<SizeValue>& parts, double length, int axis, bool repeat,
+                     std::vector<SizeValue>& sizes, std::vector<bool>& derived, size_t& patternLength,
+                     std::string& error);
+
 // Repeat("X", s) / Repeat("XY", sx, sy): tiles the scope with n = max(1, floor(L / s))
 // equal tiles per axis (each L / n long), axes given as a mask (1 X, 2 Y, 4 Z) with one
 // size per set bit, low bit first. Tiles are ordered X fastest, then Y, then Z. Tiles

@@ -1,0 +1,348 @@
+// The `.cga` dialect's expressions: CityEngine's operators, built-in functions and shape
+// attributes under fgsg's names (`rand` -> Rand, `rint` -> round, `p(x)` -> Rand(0, 1) < x,
+// `scope.sx` -> Scope.sx; trigonometry is in degrees in both), user functions and consts
+// inlined at each use (their parameters bound to the arguments), `case` and stochastic
+// values as conditional expressions.
+#include "frontend/cga/cga_translator.h"
+
+#include "frontend/builtins.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fgsg::frontend::cga {
+
+namespace {
+
+ExprPtr callExpr(const std::string& fn, std::vector<ExprPtr> args, const SourceRange& at) {
+  ExprPtr e = makeExpr(ExprKind::Call, at);
+  e->text = fn;
+  e->args = std::move(args);
+  return e;
+}
+
+ExprPtr uniform(const SourceRange& at) {
+  std::vector<ExprPtr> a;
+  a.push_back(number(0, at));
+  a.push_back(number(1, at));
+  return callExpr("Rand", std::move(a), at);
+}
+
+ExprPtr ternary(ExprPtr c, ExprPtr a, ExprPtr b, const SourceRange& at) {
+  ExprPtr e = makeExpr(ExprKind::Ternary, at);
+  e->args.push_back(std::move(c));
+  e->args.push_back(std::move(a));
+  e->args.push_back(std::move(b));
+  return e;
+}
+
+// CityEngine functions with an fgsg function of the same meaning and name.
+const char* const kSameFunctions[] = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2", "sqrt",
+                                      "abs", "min",  "max",  "floor", "ceil", "pow",  "exp"};
+
+// CityEngine functions (and shape attributes) this dialect does not have yet.
+const char* const kKnownFunctions[] = {
+    "isinf", "isnan", "bool", "float", "str", "sel", "len", "count", "find", "substring", "fileExists", "fileSearch",
+    "assetInfo", "imageInfo", "assetsSortRatio", "assetsSortSize", "imagesSortRatio", "inside", "overlaps", "touches",
+    "minimumDistance", "contextCount", "contextCompare", "occlusion", "convert", "listAdd", "listItem", "listSize",
+    "listClean", "listLast", "listFirst", "listRandom", "listRange", "listRemove", "listIndex", "replace", "findFirst",
+    "findLast", "getPrefix", "getSuffix", "getRange", "index", "size", "transpose", "splitString", "colorRamp",
+    "comp", "readTextFile", "readStringTable", "readFloatTable", "readBoolTable", "fileRandom", "filesSearch"};
+
+}  // namespace
+
+bool Translator::isRandom(const Expr& e) {
+  if (e.kind == ExprKind::Call && (e.text == "Rand" || e.text == "rand")) return true;
+  for (const auto& a : e.args)
+    if (a && isRandom(*a)) return true;
+  return false;
+}
+
+ExprPtr Translator::value(P::ValueContext* ctx, const Env& env) {
+  if (auto* plain = dynamic_cast<P::PlainValueContext*>(ctx)) return expr(plain->expr(), env);
+  const SourceRange at = rangeOf(ctx);
+  if (auto* c = dynamic_cast<P::CaseValueContext*>(ctx)) {
+    const auto conds = c->expr();
+    const auto values = c->value();
+    ExprPtr out = value(values.back(), env);
+    for (size_t i = conds.size(); i-- > 0;) {
+      ExprPtr cond = expr(conds[i], env), v = value(values[i], env);
+      if (!cond || !v || !out) return nullptr;
+      out = ternary(std::move(cond), std::move(v), std::move(out), at);
+    }
+    return out;
+  }
+  // `30% : a 20% : b else : c`: one draw per branch, each with the probability of that
+  // branch among those left (0.3, then 0.2 / 0.7), so that the choice has the percentages.
+  auto* s = static_cast<P::StochasticValueContext*>(ctx);
+  const auto percents = s->PERCENT_LIT();
+  const auto values = s->value();
+  ExprPtr out;
+  if (s->ELSE()) {
+    out = value(values.back(), env);
+  } else {
+    error("E803", at, "a stochastic value needs an `else :` (the value the rest of the time)");
+    return nullptr;
+  }
+  std::vector<double> p;
+  for (auto* t : percents) {
+    const std::string text = t->getText();
+    p.push_back(std::stod(text.substr(0, text.size() - 1)) / 100.0);
+  }
+  for (size_t i = percents.size(); i-- > 0;) {
+    double left = 1.0;
+    for (size_t k = 0; k < i; ++k) left -= p[k];
+    const double chance = left > 1e-12 ? std::min(1.0, p[i] / left) : 0.0;
+    ExprPtr v = value(values[i], env);
+    if (!v || !out) return nullptr;
+    out = ternary(binary("<", uniform(at), number(chance, at)), std::move(v), std::move(out), at);
+  }
+  return out;
+}
+
+ExprPtr Translator::expr(P::ExprContext* ctx, const Env& env) {
+  if (!ctx) return nullptr;
+  if (auto* p = dynamic_cast<P::PrimaryExprContext*>(ctx)) return primary(p->primary(), env);
+  if (auto* u = dynamic_cast<P::UnaryExprContext*>(ctx)) {
+    ExprPtr a = expr(u->expr(), env);
+    if (!a) return nullptr;
+    if (u->op->getText() == "+") return a;
+    ExprPtr e = makeExpr(ExprKind::Unary, rangeOf(ctx));
+    e->text = u->op->getText();
+    e->args.push_back(std::move(a));
+    return e;
+  }
+  auto* b = static_cast<P::BinaryExprContext*>(ctx);
+  ExprPtr l = expr(b->expr(0), env), r = expr(b->expr(1), env);
+  if (!l || !r) return nullptr;
+  const std::string op = b->op->getText();
+  // String concatenation of two constants folds here; fgsg has no string `+` at run time.
+  if (op == "+" && l->kind == ExprKind::String && r->kind == ExprKind::String) {
+    l->text += r->text;
+    l->range = rangeOf(ctx);
+    return l;
+  }
+  if (op == "+" && (l->kind == ExprKind::String || r->kind == ExprKind::String)) {
+    notSupported(rangeOf(ctx), "joining a string with a value computed at run time (`+` on strings)");
+    return nullptr;
+  }
+  ExprPtr e = binary(op, std::move(l), std::move(r));
+  e->range = rangeOf(ctx);
+  return e;
+}
+
+ExprPtr Translator::primary(P::PrimaryContext* ctx, const Env& env) {
+  const SourceRange at = rangeOf(ctx);
+  if (auto* n = dynamic_cast<P::NumberPrimaryContext*>(ctx)) {
+    const std::string text = n->getText();
+    double v = 0;
+    try {
+      v = std::stod(text);
+    } catch (const std::exception&) {
+      error("E002", at, "the number " + text + " is out of range");
+      return nullptr;
+    }
+    return number(v, at);
+  }
+  if (auto* s = dynamic_cast<P::StringPrimaryContext*>(ctx)) {
+    ExprPtr e = makeExpr(ExprKind::String, at);
+    e->text = stringValue(s->getText());
+    return e;
+  }
+  if (auto* b = dynamic_cast<P::BoolPrimaryContext*>(ctx)) {
+    ExprPtr e = makeExpr(ExprKind::Bool, at);
+    e->boolean = b->flag->getText() == "true";
+    return e;
+  }
+  if (auto* p = dynamic_cast<P::ParenPrimaryContext*>(ctx)) {
+    ExprPtr e = expr(p->expr(), env);
+    if (e) e->range = at;
+    return e;
+  }
+  if (dynamic_cast<P::ArrayPrimaryContext*>(ctx)) {
+    notSupported(at, "an array");
+    return nullptr;
+  }
+  if (auto* r = dynamic_cast<P::RelativePrimaryContext*>(ctx)) {
+    ExprPtr v = primary(r->primary(), env);
+    if (!v) return nullptr;
+    if (env.relativeAxis < 0) {
+      error("E803", at, "a relative size `'x` belongs to a split's sizes and to s() and t() arguments");
+      return nullptr;
+    }
+    if (env.relativeAxis == 3) {  // s('0.5, ...): fgsg's relative size 0.5r
+      ExprPtr e = makeExpr(ExprKind::RelSize, at);
+      if (v->kind == ExprKind::Number) {
+        e->number = v->number;
+        return e;
+      }
+      // A computed fraction: x times the current size.
+      ExprPtr size = makeExpr(ExprKind::Member, at);
+      size->object = "Scope";
+      size->text = std::string("s") + "xyz"[env.relativeIndex];
+      return binary("*", std::move(v), std::move(size));
+    }
+    ExprPtr size = makeExpr(ExprKind::Member, at);
+    size->object = "Scope";
+    size->text = std::string("s") + "xyz"[env.relativeAxis];
+    ExprPtr e = binary("*", std::move(v), std::move(size));
+    e->range = at;
+    return e;
+  }
+  if (auto* f = dynamic_cast<P::FloatingPrimaryContext*>(ctx)) {
+    ExprPtr v = primary(f->primary(), env);
+    if (!v) return nullptr;
+    ExprPtr e = makeExpr(ExprKind::FloatSize, at);
+    e->args.push_back(std::move(v));
+    return e;
+  }
+  if (auto* c = dynamic_cast<P::CallPrimaryContext*>(ctx))
+    return call(c->name->getText(), at, rangeOf(c->name), c->expr(), env);
+  auto* n = static_cast<P::NamePrimaryContext*>(ctx);
+  return name(n->name->getText(), at, env);
+}
+
+ExprPtr Translator::name(const std::string& text, const SourceRange& at, const Env& env) {
+  if (auto b = env.bound.find(text); b != env.bound.end()) {
+    ExprPtr e = cloneExpr(*b->second);
+    return e;
+  }
+  if (env.ruleParams && env.ruleParams->count(text)) {
+    ExprPtr e = makeExpr(ExprKind::Ident, at);
+    e->text = text;
+    return e;
+  }
+  if (functions_.count(text)) return call(text, at, at, {}, env);
+  if (attrs_.count(text) || text == "pi" || text == "PI") {
+    ExprPtr e = makeExpr(ExprKind::Ident, at);
+    e->text = text;
+    return e;
+  }
+  const size_t dot = text.find('.');
+  if (dot != std::string::npos) {
+    const std::string object = text.substr(0, dot), member = text.substr(dot + 1);
+    if (object == "scope") {
+      static const std::map<std::string, std::string> kScope = {{"sx", "sx"}, {"sy", "sy"}, {"sz", "sz"},
+                                                               {"tx", "px"}, {"ty", "py"}, {"tz", "pz"}};
+      if (auto m = kScope.find(member); m != kScope.end()) {
+        ExprPtr e = makeExpr(ExprKind::Member, at);
+        e->object = "Scope";
+        e->text = m->second;
+        return e;
+      }
+      notSupported(at, "the shape attribute '" + text + "'");
+      return nullptr;
+    }
+    if (importAliases_.count(object)) {  // an imported attr or const: `facade.height`
+      ExprPtr e = makeExpr(ExprKind::Ident, at);
+      e->text = text;
+      return e;
+    }
+    static const char* const kAttributes[] = {"split", "comp", "initialShape", "seedian", "geometry", "material",
+                                              "pivot", "trim", "world", "object", "street", "uv"};
+    for (const char* a : kAttributes)
+      if (object == a) {
+        notSupported(at, "the shape attribute '" + text + "'");
+        return nullptr;
+      }
+    error("E010", at, "unknown name '" + text + "'");
+    return nullptr;
+  }
+  if (text == "seedian") {
+    notSupported(at, "the shape attribute 'seedian'");
+    return nullptr;
+  }
+  error("E010", at, "unknown name '" + text + "' (not a parameter of this rule, an attr, a const or a function)");
+  return nullptr;
+}
+
+ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const SourceRange& nameAt,
+                         const std::vector<P::ExprContext*>& argCtx, const Env& env) {
+  // A user function: its body with the parameters bound to the arguments.
+  if (auto f = functions_.find(fn); f != functions_.end()) {
+    const Function& def = f->second;
+    if (argCtx.size() != def.params.size()) {
+      error("E016", nameAt, "'" + fn + "' takes " + std::to_string(def.params.size()) + " argument" +
+                                (def.params.size() == 1 ? "" : "s") + ", got " + std::to_string(argCtx.size()));
+      return nullptr;
+    }
+    if (std::find(inlining_.begin(), inlining_.end(), fn) != inlining_.end()) {
+      error("E802", nameAt, "'" + fn + "' calls itself (through " + inlining_.back() +
+                                "): recursive functions are not supported (functions are inlined)");
+      return nullptr;
+    }
+    std::vector<ExprPtr> args;
+    for (auto* a : argCtx) {
+      args.push_back(expr(a, env));
+      if (!args.back()) return nullptr;
+    }
+    Env inner;  // the body sees its parameters, attrs, consts and functions: not the rule's
+    for (size_t k = 0; k < args.size(); ++k) inner.bound[def.params[k]] = args[k].get();
+    inlining_.push_back(fn);
+    ExprPtr out = value(def.body, inner);
+    inlining_.pop_back();
+    if (out) out->range = at;
+    return out;
+  }
+  std::vector<ExprPtr> args;
+  Env plain = env;
+  plain.relativeAxis = -1;
+  for (auto* a : argCtx) {
+    args.push_back(expr(a, plain));
+    if (!args.back()) return nullptr;
+  }
+  auto wrongCount = [&](const std::string& forms) {
+    error("E016", nameAt, "'" + fn + "' takes " + forms + ", got " + std::to_string(args.size()) + " argument" +
+                              (args.size() == 1 ? "" : "s"));
+    return nullptr;
+  };
+  if (fn == "rand") {
+    if (args.size() == 0) return uniform(at);
+    if (args.size() == 1) args.insert(args.begin(), number(0, at));
+    if (args.size() != 2) return wrongCount("0, 1 or 2 arguments");
+    return callExpr("Rand", std::move(args), at);
+  }
+  if (fn == "p") {
+    if (args.size() != 1) return wrongCount("1 argument");
+    return binary("<", uniform(at), std::move(args[0]));
+  }
+  if (fn == "rint") {
+    if (args.size() != 1) return wrongCount("1 argument");
+    return callExpr("round", std::move(args), at);
+  }
+  if (fn == "ln") {
+    if (args.size() != 1) return wrongCount("1 argument");
+    return callExpr("log", std::move(args), at);
+  }
+  if (fn == "log10") {
+    if (args.size() != 1) return wrongCount("1 argument");
+    std::vector<ExprPtr> ten;
+    ten.push_back(number(10, at));
+    return binary("/", callExpr("log", std::move(args), at), callExpr("log", std::move(ten), at));
+  }
+  for (const char* same : kSameFunctions)
+    if (fn == same) {
+      const FunctionInfo* info = findFunction(fn);
+      if (info && (int(args.size()) < info->minArgs || int(args.size()) > info->maxArgs))
+        return wrongCount(std::to_string(info->minArgs) + " argument" + (info->minArgs == 1 ? "" : "s"));
+      return callExpr(fn, std::move(args), at);
+    }
+  const size_t dot = fn.find('.');
+  if (dot != std::string::npos && importAliases_.count(fn.substr(0, dot))) {
+    notSupported(nameAt, "calling an imported function ('" + fn + "')");
+    return nullptr;
+  }
+  if (dot != std::string::npos) {
+    notSupported(nameAt, "the function '" + fn + "'");
+    return nullptr;
+  }
+  for (const char* known : kKnownFunctions)
+    if (fn == known) {
+      notSupported(nameAt, "the function '" + fn + "'");
+      return nullptr;
+    }
+  error("E011", nameAt, "unknown function '" + fn + "' (not a function of this file or of CityEngine CGA)");
+  return nullptr;
+}
+
+}  // namespace fgsg::frontend::cga

@@ -1,0 +1,686 @@
+// The `.cga` dialect's operations: CityEngine's names and argument forms as fgsg commands.
+//
+//   extrude(h), extrude(world.y, h)     Extrude(h)
+//   split(x|y|z [, adjust|noAdjust]){ sizes : ops | { ... }* }[*]
+//                                       Subdiv with CityEngine's sizing (rest empty, overflow
+//                                       cut; a nested repeat takes what the others leave)
+//   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
+//   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
+//   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
+//   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
+//                                       it (CityEngine transforms the inserted geometry with
+//                                       the scope); a missing file is W801, the insert skipped
+//   s t r center color set(material.color.rgb, ...) texture setupProjection projectUV
+//   report(k, v), print(x)              Report(k, v), Print(x) (where fgsg has them)
+//   [ ... ]  NIL  X.  .
+// A successor that creates no shape ends with its shape as a leaf (CityEngine keeps it):
+// the leaf symbol is the rule's name followed by '.'. Any other CityEngine operation is
+// E800 at its name; an unknown lowercase call too.
+#include "frontend/cga/cga_translator.h"
+
+#include "frontend/builtins.h"
+
+#include <cctype>
+#include <filesystem>
+
+namespace fgsg::frontend::cga {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Every shape operation of CityEngine's CGA reference (2023): the dialect knows these
+// names, and those it does not translate are E800 "not supported yet".
+const char* const kCityEngineOperations[] = {
+    "alignScopeToAxes", "alignScopeToGeometry", "alignScopeToGeometryBBox", "center", "cleanupGeometry", "color",
+    "comp", "convexify", "deleteHoles", "deleteUV", "envelope", "extrude", "footprint", "i", "innerRect",
+    "innerRectangle", "insertAlongUV", "label", "mirror", "mirrorScope", "modify", "normalizeUV", "offset", "print",
+    "primitiveCube", "primitiveCylinder", "primitiveDisk", "primitiveQuad", "primitiveSphere", "projectUV", "r",
+    "rectify", "reduceGeometry", "report", "resetGeometry", "resetMaterial", "reverseNormals", "roofGable",
+    "roofHip", "roofPyramid", "roofRidge", "roofShed", "rotate", "rotateScope", "rotateUV", "s", "scaleUV",
+    "scatter", "set", "setback", "setbackPerEdge", "setbackToArea", "setNormals", "setPivot", "setupProjection",
+    "shapeL", "shapeO", "shapeU", "simplifyGeometry", "softenNormals", "split", "splitArea", "splitAndSetbackPerimeter",
+    "t", "taper", "texture", "tileUV", "translate", "translateUV", "trim", "deleteHoles", "fuse", "insert",
+    "scaleUV", "setElevation", "generateTexture", "text", "alignScopeToGeometry"};
+
+}  // namespace
+
+std::string symbolName(const std::string& name) {
+  const size_t dot = name.rfind('.');
+  if (dot != std::string::npos && dot + 1 < name.size())
+    return name.substr(0, dot + 1) + symbolName(name.substr(dot + 1));
+  return findCommand(name) ? name + "_" : name;
+}
+
+bool isCityEngineOperation(const std::string& name) {
+  for (const char* op : kCityEngineOperations)
+    if (name == op) return true;
+  return false;
+}
+
+struct Translator::Sequence {
+  Successor& out;
+  bool createsShapes = false;
+  bool nil = false;
+  bool done = false;  // an operation took the rest of the successor as its body
+  std::unique_ptr<Item> pendingInsert;
+  // setupProjection(0, scope.xy, w, h): the tile size a later texture() uses (null: the scope).
+  ExprPtr tileW, tileH;
+  const std::vector<P::OperationContext*>* ops = nullptr;
+  size_t index = 0;
+  bool topLevel = true;
+};
+
+Item Translator::command(const std::string& fgsgName, const SourceRange& at) {
+  Item item;
+  item.kind = ItemKind::Call;
+  item.name = fgsgName;
+  item.range = at;
+  return item;
+}
+
+namespace {
+
+ExprPtr stringExpr(const std::string& s, const SourceRange& at) {
+  ExprPtr e = makeExpr(ExprKind::String, at);
+  e->text = s;
+  return e;
+}
+
+ExprPtr scopeSize(int axis, const SourceRange& at) {
+  ExprPtr e = makeExpr(ExprKind::Member, at);
+  e->object = "Scope";
+  e->text = std::string("s") + "xyz"[axis];
+  return e;
+}
+
+// "#f00" -> "#ff0000"; anything else as written (sema checks it).
+std::string fullColor(const std::string& c) {
+  if (c.size() == 4 && c[0] == '#') return std::string("#") + c[1] + c[1] + c[2] + c[2] + c[3] + c[3];
+  return c;
+}
+
+}  // namespace
+
+// The word a selector argument is written as (`x`, `world.y`, `inside`, `noAdjust`), or "".
+std::string Translator::selectorWord(P::ExprContext* e) const {
+  auto* p = dynamic_cast<P::PrimaryExprContext*>(e);
+  if (!p) return "";
+  if (auto* n = dynamic_cast<P::NamePrimaryContext*>(p->primary())) return n->name->getText();
+  return "";
+}
+
+bool Translator::operations(const std::vector<P::OperationContext*>& ops, size_t from, Successor& out, const Env& env,
+                            bool topLevel) {
+  Sequence seq{out};
+  seq.ops = &ops;
+  seq.topLevel = topLevel;
+  for (size_t k = from; k < ops.size() && !seq.done; ++k) {
+    seq.index = k;
+    operation(ops[k], seq, env);
+  }
+  if (seq.pendingInsert && !seq.nil) {
+    out.items.push_back(std::move(*seq.pendingInsert));
+    seq.createsShapes = true;
+  }
+  if (topLevel && !seq.createsShapes && !seq.nil) {
+    Item leaf = command(currentRule_ + ".", out.range);
+    out.items.push_back(std::move(leaf));
+  }
+  if (out.items.empty()) out.epsilon = true;
+  return seq.createsShapes;
+}
+
+void Translator::operation(P::OperationContext* op, Sequence& seq, const Env& env) {
+  const SourceRange at = rangeOf(op);
+  auto flushInsert = [&] {
+    if (seq.pendingInsert) {
+      seq.out.items.push_back(std::move(*seq.pendingInsert));
+      seq.pendingInsert.reset();
+      seq.createsShapes = true;
+    }
+  };
+  auto emit = [&](const std::string& name, bool leaf, std::vector<ExprPtr> args) {
+    // After an insert a leaf is the inserted asset itself: nothing more to output.
+    if (seq.pendingInsert && leaf) {
+      flushInsert();
+      return;
+    }
+    flushInsert();
+    Item item = command(symbolName(name), at);
+    item.args = std::move(args);
+    seq.out.items.push_back(std::move(item));
+    seq.createsShapes = true;
+  };
+  if (dynamic_cast<P::NilOperationContext*>(op)) {
+    seq.nil = true;
+    seq.pendingInsert.reset();
+    return;
+  }
+  if (auto* l = dynamic_cast<P::LeafOperationContext*>(op)) {
+    std::string name = l->leaf->getText();
+    name.pop_back();
+    // `X.`: X without its rules; a name without rules keeps its name.
+    emit(rules_.count(name) ? name + "." : name, true, {});
+    return;
+  }
+  if (dynamic_cast<P::DotOperationContext*>(op)) {
+    emit(currentRule_ + ".", true, {});
+    return;
+  }
+  if (auto* b = dynamic_cast<P::PushPopOperationContext*>(op)) {
+    flushInsert();
+    Successor inner;
+    inner.range = at;
+    // A bracket's shapes replace the shape too.
+    if (operations(b->operation(), 0, inner, env, false)) seq.createsShapes = true;
+    Item bracket;
+    bracket.kind = ItemKind::Bracket;
+    bracket.range = at;
+    bracket.children = std::move(inner.items);
+    seq.out.items.push_back(std::move(bracket));
+    return;
+  }
+  if (auto* s = dynamic_cast<P::ShapeOperationContext*>(op)) {
+    const std::string name = s->name->getText();
+    const size_t dot = name.find('.');
+    const bool imported = dot != std::string::npos && importAliases_.count(name.substr(0, dot));
+    if (!rules_.count(name) && !imported && isCityEngineOperation(name)) {
+      error("E800", at, "unknown operation '" + name + "' (CityEngine CGA; not supported yet)");
+      return;
+    }
+    if (!imported && dot != std::string::npos) {
+      error("E010", at, "unknown name '" + name + "' (no import is called '" + name.substr(0, dot) + "')");
+      return;
+    }
+    if (rules_.count(name) && rules_[name] != 0) {
+      error("E019", at, "'" + name + "' takes " + std::to_string(rules_[name]) + " parameters");
+      return;
+    }
+    emit(name, !rules_.count(name) && !imported, {});
+    return;
+  }
+  callOperation(static_cast<P::CallOperationContext*>(op), seq, env);
+}
+
+void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const Env& env) {
+  const std::string name = op->name->getText();
+  const SourceRange at = rangeOf(op);
+  const SourceRange nameAt = rangeOf(op->name);
+  const auto argCtx = op->expr();
+  const size_t dot = name.find('.');
+  const bool imported = dot != std::string::npos && importAliases_.count(name.substr(0, dot));
+  auto flushInsert = [&] {
+    if (seq.pendingInsert) {
+      seq.out.items.push_back(std::move(*seq.pendingInsert));
+      seq.pendingInsert.reset();
+      seq.createsShapes = true;
+    }
+  };
+  auto args = [&](Env e) {
+    std::vector<ExprPtr> out;
+    for (auto* a : argCtx) out.push_back(expr(a, e));
+    return out;
+  };
+  auto allOk = [](const std::vector<ExprPtr>& v) {
+    for (const auto& e : v)
+      if (!e) return false;
+    return true;
+  };
+  auto count = [&](size_t lo, size_t hi, const std::string& forms) {
+    if (argCtx.size() >= lo && argCtx.size() <= hi) return true;
+    error("E016", nameAt, "'" + name + "' takes " + forms + ", got " + std::to_string(argCtx.size()));
+    return false;
+  };
+  auto noBody = [&] {
+    if (!op->splitBody()) return true;
+    error("E018", rangeOf(op->splitBody()), "'" + name + "' takes no { } body");
+    return false;
+  };
+  auto push = [&](Item item) { seq.out.items.push_back(std::move(item)); };
+  // The operations after this one, as the body of a command that replaces the shape.
+  auto restAsBody = [&](Item& item, const std::string& label) {
+    Successor part;
+    part.range = at;
+    part.selector = label;
+    operations(*seq.ops, seq.index + 1, part, env, true);
+    item.hasBody = true;
+    item.body.push_back(std::move(part));
+  };
+
+  // A parametric rule (or an imported one): a shape with these arguments.
+  if (rules_.count(name) || imported) {
+    if (!noBody()) return;
+    if (rules_.count(name) && rules_[name] != argCtx.size()) {
+      error("E019", nameAt, "'" + name + "' takes " + std::to_string(rules_[name]) + " parameters, got " +
+                                std::to_string(argCtx.size()));
+      return;
+    }
+    std::vector<ExprPtr> a = args(env);
+    if (!allOk(a)) return;
+    flushInsert();
+    Item item = command(symbolName(name), at);
+    item.args = std::move(a);
+    push(std::move(item));
+    seq.createsShapes = true;
+    return;
+  }
+
+  if (name == "extrude") {
+    if (!noBody() || !count(1, 2, "1 or 2 arguments (height, or axis and height)")) return;
+    if (argCtx.size() == 2) {
+      const std::string axis = selectorWord(argCtx[0]);
+      if (axis != "world.y") {
+        notSupported(rangeOf(argCtx[0]), "extrude along '" + argCtx[0]->getText() + "'");
+        return;
+      }
+    }
+    ExprPtr h = expr(argCtx.back(), env);
+    if (!h) return;
+    flushInsert();
+    Item item = command("Extrude", at);
+    item.args.push_back(std::move(h));
+    push(std::move(item));
+    return;
+  }
+  if (name == "split") {
+    if (!count(1, 2, "1 or 2 arguments (axis, and adjust or noAdjust)")) return;
+    split(op, selectorWord(argCtx[0]), seq, env);
+    return;
+  }
+  if (name == "comp") {
+    comp(op, seq, env);
+    return;
+  }
+  if (name == "offset") {
+    if (!noBody() || !count(1, 2, "1 or 2 arguments (distance, and inside or border)")) return;
+    const std::string part = argCtx.size() == 2 ? selectorWord(argCtx[1]) : "";
+    if (argCtx.size() == 2 && part != "inside" && part != "border") {
+      notSupported(rangeOf(argCtx[1]), "offset's selector '" + argCtx[1]->getText() + "'");
+      return;
+    }
+    ExprPtr d = expr(argCtx[0], env);
+    if (!d) return;
+    if (d->kind == ExprKind::Number && d->number >= 0) {
+      notSupported(rangeOf(argCtx[0]), "an outward offset (a distance >= 0)");
+      return;
+    }
+    flushInsert();
+    Item item = command("Offset", at);
+    ExprPtr inward = makeExpr(ExprKind::Unary, d->range);
+    inward->text = "-";
+    inward->args.push_back(std::move(d));
+    item.args.push_back(std::move(inward));
+    // Without a selector CityEngine keeps both as one shape; here they are two shapes.
+    if (part.empty() || part == "inside") restAsBody(item, "inside");
+    if (part.empty() || part == "border") restAsBody(item, "border");
+    push(std::move(item));
+    seq.createsShapes = true;
+    seq.done = true;
+    return;
+  }
+  if (name == "roofGable" || name == "roofHip" || name == "roofPyramid" || name == "roofShed") {
+    if (!noBody() || !count(1, 5, "an angle")) return;
+    if (argCtx.size() > 1) {
+      notSupported(rangeOf(argCtx[1]), name + "'s overhang and index arguments");
+      return;
+    }
+    ExprPtr angle = expr(argCtx[0], env);
+    if (!angle) return;
+    flushInsert();
+    const char* kind = name == "roofGable" ? "gable" : name == "roofHip" ? "hipped" : name == "roofPyramid" ? "pyramid" : "shed";
+    Item item = command("Roof", at);
+    item.args.push_back(stringExpr(kind, nameAt));
+    item.args.push_back(std::move(angle));
+    restAsBody(item, "");
+    push(std::move(item));
+    seq.createsShapes = true;
+    seq.done = true;
+    return;
+  }
+  if (name == "i") {
+    if (!noBody()) return;
+    insert(op, seq, env);
+    return;
+  }
+  if (name == "s" || name == "t") {
+    if (!noBody() || !count(3, 3, "3 arguments")) return;
+    Item item = command(name == "s" ? "S" : "T", at);
+    for (size_t k = 0; k < 3; ++k) {
+      Env e = env;
+      e.relativeAxis = name == "s" ? 3 : int(k);
+      e.relativeIndex = int(k);
+      item.args.push_back(expr(argCtx[k], e));
+    }
+    if (!allOk(item.args)) return;
+    push(std::move(item));
+    return;
+  }
+  if (name == "r") {
+    if (!noBody() || !count(3, 4, "3 angles, or scopeCenter / scopeOrigin and 3 angles")) return;
+    std::string pivot = argCtx.size() == 4 ? selectorWord(argCtx[0]) : "scopeOrigin";
+    if (pivot != "scopeOrigin" && pivot != "scopeCenter") {
+      notSupported(rangeOf(argCtx[0]), "rotating about '" + argCtx[0]->getText() + "'");
+      return;
+    }
+    Item rot = command("R", at);
+    for (size_t k = argCtx.size() - 3; k < argCtx.size(); ++k) rot.args.push_back(expr(argCtx[k], env));
+    if (!allOk(rot.args)) return;
+    auto half = [&](bool back) {
+      Item t = command("T", at);
+      for (int axis = 0; axis < 3; ++axis) {
+        ExprPtr h = binary("/", scopeSize(axis, at), number(back ? -2.0 : 2.0, at));
+        t.args.push_back(std::move(h));
+      }
+      return t;
+    };
+    if (pivot == "scopeCenter") push(half(false));
+    push(std::move(rot));
+    if (pivot == "scopeCenter") push(half(true));
+    return;
+  }
+  if (name == "center") {
+    if (!noBody() || !count(1, 1, "1 argument (x, y, z, xy, xz, yz or xyz)")) return;
+    std::string axes = selectorWord(argCtx[0]);
+    for (char& c : axes) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (axes.empty() || axes.find_first_not_of("XYZ") != std::string::npos) {
+      error("E028", rangeOf(argCtx[0]), "center takes the axes to centre on: x, y, z, xy, xz, yz or xyz");
+      return;
+    }
+    Item item = command("Center", at);
+    item.args.push_back(stringExpr(axes, rangeOf(argCtx[0])));
+    push(std::move(item));
+    return;
+  }
+  auto colorItem = [&](std::vector<P::ExprContext*> values) {
+    Item item = command("Color", at);
+    for (auto* v : values) item.args.push_back(expr(v, env));
+    if (!allOk(item.args)) return;
+    if (item.args.size() == 1 && item.args[0]->kind == ExprKind::String)
+      item.args[0]->text = fullColor(item.args[0]->text);
+    push(std::move(item));
+  };
+  if (name == "color") {
+    if (!noBody() || !count(1, 4, "a \"#rrggbb\" string or r, g, b")) return;
+    if (argCtx.size() == 4 || argCtx.size() == 2) {
+      notSupported(rangeOf(argCtx.back()), "a colour's opacity");
+      return;
+    }
+    colorItem(argCtx);
+    return;
+  }
+  if (name == "set") {
+    if (!noBody() || !count(2, 2, "2 arguments (attribute, value)")) return;
+    const std::string what = selectorWord(argCtx[0]);
+    if (what == "material.color.rgb" || what == "material.color") {
+      colorItem({argCtx[1]});
+      return;
+    }
+    if (what == "material.colormap") {
+      texture(op, seq, env);
+      return;
+    }
+    notSupported(rangeOf(argCtx[0]), "set(" + argCtx[0]->getText() + ", ...)");
+    return;
+  }
+  if (name == "texture") {
+    if (!noBody() || !count(1, 1, "1 argument (the image)")) return;
+    texture(op, seq, env);
+    return;
+  }
+  if (name == "setupProjection") {
+    // setupProjection(0, scope.xy, w, h): fgsg's Texture projects onto the scope's XY plane
+    // with a tile size; `'1` (the scope's size) is its default.
+    if (!noBody() || !count(4, 8, "uvSet, scope.xy, width, height")) return;
+    if (argCtx[0]->getText() != "0" || selectorWord(argCtx[1]) != "scope.xy" || argCtx.size() > 4) {
+      notSupported(at, "setupProjection other than setupProjection(0, scope.xy, width, height)");
+      return;
+    }
+    seq.tileW.reset();
+    seq.tileH.reset();
+    if (argCtx[2]->getText() != "'1" || argCtx[3]->getText() != "'1") {
+      Env e = env;
+      e.relativeAxis = 0;
+      seq.tileW = expr(argCtx[2], e);
+      e.relativeAxis = 1;
+      seq.tileH = expr(argCtx[3], e);
+    }
+    return;
+  }
+  if (name == "projectUV") {
+    if (!noBody() || !count(1, 1, "1 argument (the uv set)")) return;
+    if (argCtx[0]->getText() != "0") notSupported(rangeOf(argCtx[0]), "a uv set other than 0");
+    return;  // Texture projects when it is set
+  }
+  if (name == "print" && !findCommand("Print")) return;  // CityEngine's console: nothing to generate
+  if (name == "report" || name == "label" || name == "print") {
+    const std::string fgsgName = name == "report" ? "Report" : name == "print" ? "Print" : "Label";
+    if (!findCommand(fgsgName)) {
+      notSupported(nameAt, "the operation '" + name + "'");
+      return;
+    }
+    if (!noBody()) return;
+    Item item = command(fgsgName, at);
+    item.args = args(env);
+    if (!allOk(item.args)) return;
+    push(std::move(item));
+    return;
+  }
+  if (isCityEngineOperation(name)) {
+    error("E800", nameAt, "unknown operation '" + name + "' (CityEngine CGA; not supported yet)");
+    return;
+  }
+  if (dot != std::string::npos) {
+    error("E010", nameAt, "unknown name '" + name + "' (no import is called '" + name.substr(0, dot) + "')");
+    return;
+  }
+  if (std::islower(static_cast<unsigned char>(name[0]))) {
+    error("E800", nameAt, "unknown operation '" + name + "' (no rule of this file has that name)");
+    return;
+  }
+  // CityEngine derives a shape of a rule it does not have as a leaf (and warns).
+  if (!noBody()) return;
+  std::vector<ExprPtr> a = args(env);
+  if (!allOk(a)) return;
+  flushInsert();
+  Item item = command(symbolName(name), at);
+  item.args = std::move(a);
+  push(std::move(item));
+  seq.createsShapes = true;
+}
+
+void Translator::split(P::CallOperationContext* op, const std::string& axisWord, Sequence& seq, const Env& env) {
+  const SourceRange at = rangeOf(op);
+  const auto argCtx = op->expr();
+  if (axisWord == "u" || axisWord == "v") {
+    notSupported(rangeOf(argCtx[0]), "a split in texture space (u, v)");
+    return;
+  }
+  if (axisWord != "x" && axisWord != "y" && axisWord != "z") {
+    error("E028", rangeOf(argCtx[0]), "split splits along x, y or z, not '" + argCtx[0]->getText() + "'");
+    return;
+  }
+  if (argCtx.size() == 2) {
+    const std::string adjust = selectorWord(argCtx[1]);
+    if (adjust != "adjust" && adjust != "noAdjust") {
+      error("E028", rangeOf(argCtx[1]), "split's second argument is adjust or noAdjust");
+      return;
+    }
+  }
+  if (!op->splitBody()) {
+    error("E018", at, "split needs its parts: split(" + axisWord + "){ 2 : A | ~1 : B }");
+    return;
+  }
+  if (seq.pendingInsert) {
+    seq.out.items.push_back(std::move(*seq.pendingInsert));
+    seq.pendingInsert.reset();
+  }
+  Item item = command("Subdiv", at);
+  item.args.push_back(stringExpr(std::string(1, char(std::toupper(axisWord[0]))), rangeOf(argCtx[0])));
+  splitBody(op->splitBody(), axisWord, item, env);
+  seq.out.items.push_back(std::move(item));
+  seq.createsShapes = true;
+}
+
+void Translator::splitBody(P::SplitBodyContext* body, const std::string& axisWord, Item& item, const Env& env) {
+  item.cityEngineSizing = true;
+  item.hasBody = true;
+  item.repeatPattern = body->repeat != nullptr;
+  const int axis = axisWord[0] - 'x';
+  for (P::SplitPartContext* partCtx : body->splitPart()) {
+    Successor part;
+    part.range = rangeOf(partCtx);
+    if (auto* nested = dynamic_cast<P::NestedPartContext*>(partCtx)) {
+      // `{ ... }*` among the parts: a repeat that takes what the other parts leave.
+      if (item.repeatPattern || !nested->splitBody()->repeat) {
+        notSupported(part.range, item.repeatPattern ? "a repeat inside a repeated split"
+                                                    : "a group of parts `{ ... }` without `*`");
+        continue;
+      }
+      Item inner = command("Subdiv", part.range);
+      inner.args.push_back(cloneExpr(*item.args[0]));
+      splitBody(nested->splitBody(), axisWord, inner, env);
+      part.items.push_back(std::move(inner));
+      ExprPtr share = makeExpr(ExprKind::RelSize, part.range);
+      share->number = 1;
+      item.args.push_back(std::move(share));
+      item.body.push_back(std::move(part));
+      continue;
+    }
+    auto* sized = static_cast<P::SizedPartContext*>(partCtx);
+    if (sized->sep->getText() != ":")
+      error("E002", rangeOf(sized->sep), "a split's part is `size : operations` (`=` belongs to comp)");
+    Env e = env;
+    e.relativeAxis = axis;
+    ExprPtr size = expr(sized->key, e);
+    if (!size) continue;
+    operations(sized->operation(), 0, part, env, true);
+    item.args.push_back(std::move(size));
+    item.body.push_back(std::move(part));
+  }
+}
+
+void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env) {
+  const SourceRange at = rangeOf(op);
+  const auto argCtx = op->expr();
+  if (argCtx.size() != 1) {
+    error("E016", rangeOf(op->name), "comp takes 1 argument (f), got " + std::to_string(argCtx.size()));
+    return;
+  }
+  const std::string kind = selectorWord(argCtx[0]);
+  if (kind != "f") {
+    notSupported(rangeOf(argCtx[0]), "comp(" + argCtx[0]->getText() + ")");
+    return;
+  }
+  if (!op->splitBody() || op->splitBody()->repeat) {
+    error("E018", at, "comp(f) needs its parts: comp(f){ top : Roof | side : Facade }");
+    return;
+  }
+  static const char* const kSelectors[] = {"front", "back", "left", "right", "top", "bottom",
+                                           "side", "all", "vertical", "aslant"};
+  if (seq.pendingInsert) {
+    seq.out.items.push_back(std::move(*seq.pendingInsert));
+    seq.pendingInsert.reset();
+  }
+  Item item = command("Comp", at);
+  item.args.push_back(stringExpr("f", rangeOf(argCtx[0])));
+  item.hasBody = true;
+  for (P::SplitPartContext* partCtx : op->splitBody()->splitPart()) {
+    auto* sized = dynamic_cast<P::SizedPartContext*>(partCtx);
+    if (!sized) {
+      error("E018", rangeOf(partCtx), "comp's parts are `selector : operations`");
+      continue;
+    }
+    const std::string sel = selectorWord(sized->key);
+    bool known = false;
+    for (const char* k : kSelectors) known |= sel == k;
+    if (!known) {
+      notSupported(rangeOf(sized->key), "the comp selector '" + sized->key->getText() + "'");
+      continue;
+    }
+    if (sized->sep->getText() == "=")
+      warning("W800", rangeOf(sized->sep),
+              "comp's `" + sel + " =` (the faces merged into one shape) gives each face a shape of its own here");
+    Successor part;
+    part.range = rangeOf(partCtx);
+    part.selector = sel;
+    part.selectorRange = rangeOf(sized->key);
+    operations(sized->operation(), 0, part, env, true);
+    item.body.push_back(std::move(part));
+  }
+  seq.out.items.push_back(std::move(item));
+  seq.createsShapes = true;
+}
+
+// An asset or image named by a .cga file, found as CityEngine finds it: beside the rule
+// file, in its assets/ folder, or in the project (the folders above it, whose assets/
+// holds CityEngine's). Found: the path becomes absolute. Missing: W801 once per path.
+bool Translator::assetPath(std::string& path, const SourceRange& at, const char* what) {
+  std::error_code ec;
+  if (fs::path(path).is_absolute()) {
+    if (fs::is_regular_file(path, ec)) return true;
+  } else {
+    fs::path dir = fs::absolute(fs::path(fileName_), ec).parent_path();
+    for (int up = 0; up < 4 && !dir.empty(); ++up, dir = dir.parent_path()) {
+      for (const fs::path& c : {dir / path, dir / "assets" / path})
+        if (fs::is_regular_file(c, ec)) {
+          path = c.lexically_normal().string();
+          return true;
+        }
+      if (dir == dir.parent_path()) break;
+    }
+  }
+  if (warnedAssets_.insert(path).second)
+    warning("W801", at, std::string("the ") + what + " '" + path +
+                            "' is not found (beside the rule file, in its assets/ folder or the project's): "
+                            "skipped, as CityEngine does");
+  return false;
+}
+
+void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& env) {
+  const auto argCtx = op->expr();
+  const SourceRange at = rangeOf(op);
+  if (argCtx.size() != 1) {
+    if (argCtx.size() > 1) notSupported(rangeOf(argCtx[1]), "i()'s up axis and insert mode");
+    else error("E016", rangeOf(op->name), "i takes the asset to insert");
+    return;
+  }
+  ExprPtr asset = expr(argCtx[0], env);
+  if (!asset) return;
+  if (asset->kind == ExprKind::String) {
+    std::string& p = asset->text;
+    if (p.rfind("builtin:", 0) == 0) {
+      const std::string b = p.substr(8);
+      if (b == "cube") p = "cube";
+      else if (b == "unitQuad") p = "quad";
+      else {
+        notSupported(rangeOf(argCtx[0]), "the built-in asset '" + p + "'");
+        return;
+      }
+    } else if (!assetPath(p, at, "asset")) {
+      return;
+    }
+  }
+  Item item = command("I", at);
+  item.args.push_back(std::move(asset));
+  if (seq.pendingInsert) seq.out.items.push_back(std::move(*seq.pendingInsert));
+  seq.pendingInsert = std::make_unique<Item>(std::move(item));
+}
+
+void Translator::texture(P::CallOperationContext* op, Sequence& seq, const Env& env) {
+  const auto argCtx = op->expr();
+  const SourceRange at = rangeOf(op);
+  ExprPtr image = expr(argCtx.back(), env);
+  if (!image) return;
+  if (image->kind == ExprKind::String && !image->text.empty() && !assetPath(image->text, at, "texture")) return;
+  if (image->kind == ExprKind::String && image->text.empty()) image->text = "none";
+  Item item = command("Texture", at);
+  item.args.push_back(std::move(image));
+  if (seq.tileW && seq.tileH) {
+    item.args.push_back(cloneExpr(*seq.tileW));
+    item.args.push_back(cloneExpr(*seq.tileH));
+  }
+  seq.out.items.push_back(std::move(item));
+}
+
+}  // namespace fgsg::frontend::cga

@@ -1,0 +1,28 @@
+// The `.cga` dialect (CityEngine's CGA): which files are read as CGA, and parsing them into
+// the AST every engine runs (frontend/ast.h). See docs/cga.md, "CGA for CityEngine users".
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+
+#include <string>
+
+namespace fgsg::frontend {
+
+// A file named *.cga, or whose first statement is `dialect cga;`.
+bool isCgaSource(const std::string& name, const std::string& text);
+
+// Whether .fgsg text looks like CityEngine CGA (`-->`, `@StartRule`, `version "...`): a hint
+// for the fgsg dialect's syntax errors. The line where it shows, or 0.
+int cgaLookingLine(const std::string& text);
+
+// Parses and translates CGA text into `out`. `startRule` overrides the file's @StartRule
+// (empty: keep it). False when an error was reported.
+bool parseCgaText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
+                  const std::string& startRule = "");
+
+// A CityEngine operation name (`taper`, `rotateScope`, `color` ...): the fgsg dialect
+// refuses one used as a shape symbol with arguments.
+bool isCityEngineOperationName(const std::string& name);
+
+}  // namespace fgsg::frontend

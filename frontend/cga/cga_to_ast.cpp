@@ -1,0 +1,397 @@
+// The `.cga` dialect's declarations and rules: attrs, consts and functions, imports, the
+// start rule, and rule bodies — `case` chains (the first condition that holds wins, as in
+// CityEngine: each branch is guarded by its condition and the negation of every condition
+// before it) and stochastic choices (`30% : A 20% : B else : C`: weights 0.3, 0.2, 0.5).
+// A choice nested inside another's branch becomes a rule of a helper symbol `Name$n`
+// with the same parameters, created in its place.
+#include "frontend/cga/cga_translator.h"
+
+#include <cmath>
+
+namespace fgsg::frontend::cga {
+
+SourceRange rangeOf(const antlr4::Token* t) {
+  SourceRange r;
+  r.begin = {int(t->getLine()), int(t->getCharPositionInLine()) + 1};
+  const std::string text = t->getText();
+  size_t chars = 0;
+  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
+  r.end = {r.begin.line, r.begin.col + int(chars > 0 ? chars - 1 : 0)};
+  return r;
+}
+
+SourceRange rangeOf(const antlr4::ParserRuleContext* constCtx) {
+  auto* ctx = const_cast<antlr4::ParserRuleContext*>(constCtx);  // ANTLR's getters are not const
+  SourceRange r = rangeOf(ctx->getStart());
+  const antlr4::Token* stop = ctx->getStop();
+  if (stop && stop->getTokenIndex() >= ctx->getStart()->getTokenIndex()) r.end = rangeOf(stop).end;
+  return r;
+}
+
+ExprPtr makeExpr(ExprKind kind, const SourceRange& at) {
+  auto e = std::make_unique<Expr>();
+  e->kind = kind;
+  e->range = at;
+  return e;
+}
+
+ExprPtr cloneExpr(const Expr& e) {
+  auto c = std::make_unique<Expr>();
+  c->kind = e.kind;
+  c->range = e.range;
+  c->number = e.number;
+  c->boolean = e.boolean;
+  c->text = e.text;
+  c->object = e.object;
+  c->hasCall = e.hasCall;
+  for (const auto& a : e.args) c->args.push_back(a ? cloneExpr(*a) : nullptr);
+  return c;
+}
+
+ExprPtr number(double v, const SourceRange& at) {
+  ExprPtr e = makeExpr(ExprKind::Number, at);
+  e->number = v;
+  return e;
+}
+
+ExprPtr binary(const std::string& op, ExprPtr a, ExprPtr b) {
+  ExprPtr e = makeExpr(ExprKind::Binary, SourceRange{a->range.begin, b->range.end});
+  e->text = op;
+  e->args.push_back(std::move(a));
+  e->args.push_back(std::move(b));
+  return e;
+}
+
+ExprPtr unaryNot(ExprPtr a) {
+  ExprPtr e = makeExpr(ExprKind::Unary, a->range);
+  e->text = "!";
+  e->args.push_back(std::move(a));
+  return e;
+}
+
+ExprPtr conjunction(ExprPtr a, ExprPtr b) {
+  if (!a) return b;
+  if (!b) return a;
+  return binary("&&", std::move(a), std::move(b));
+}
+
+std::string stringValue(const std::string& token) {
+  std::string out;
+  for (size_t i = 1; i + 1 < token.size(); ++i) {
+    if (token[i] == '\\' && i + 2 < token.size()) {
+      const char c = token[++i];
+      out += c == 'n' ? '\n' : c == 't' ? '\t' : c;
+    } else {
+      out += token[i];
+    }
+  }
+  return out;
+}
+
+namespace {
+
+ExprPtr clone(const ExprPtr& e) { return e ? cloneExpr(*e) : nullptr; }
+
+// The side length of the square lot a `.cga` grammar starts on without --lots (metres).
+constexpr double kDefaultLotSide = 20.0;
+
+}  // namespace
+
+void Translator::run(P::CgaFileContext* file) {
+  collect(file);
+  for (P::DeclarationContext* d : file->declaration()) {
+    if (auto* v = d->versionDecl()) {
+      (void)v;  // any version: the dialect is CityEngine's current CGA
+    } else if (auto* dialect = d->dialectDecl()) {
+      if (dialect->ID()->getText() != "cga")
+        error("E002", rangeOf(dialect), "this file is read as CityEngine CGA: `dialect cga;` is the only dialect here");
+    } else if (auto* imp = d->importDecl()) {
+      importDecl(imp);
+    } else if (auto* style = d->styleDecl()) {
+      notSupported(rangeOf(style), style->EXTENDS() ? "'style ... extends'" : "'style'");
+    } else if (auto* a = d->annotated()) {
+      declaration(a);
+    }
+  }
+  startRule();
+}
+
+// Names first, so that a rule may use a function, attr or rule declared after it.
+void Translator::collect(P::CgaFileContext* file) {
+  for (P::DeclarationContext* d : file->declaration()) {
+    if (auto* imp = d->importDecl(); imp && imp->alias) importAliases_.insert(imp->alias->getText());
+    auto* a = d->annotated();
+    if (!a) continue;
+    if (auto* f = a->functionDecl()) {
+      Function fn{f->name->getText(), {}, f->value(), rangeOf(f->name)};
+      if (f->params())
+        for (auto* p : f->params()->ID()) fn.params.push_back(p->getText());
+      if (functions_.count(fn.name)) error("E803", fn.range, "the function '" + fn.name + "' is declared twice");
+      functions_[fn.name] = fn;
+    } else if (auto* c = a->constDecl()) {
+      Function fn{c->name->getText(), {}, c->value(), rangeOf(c->name)};
+      if (c->params())
+        for (auto* p : c->params()->ID()) fn.params.push_back(p->getText());
+      if (functions_.count(fn.name)) error("E803", fn.range, "the const '" + fn.name + "' is declared twice");
+      functions_[fn.name] = fn;
+    } else if (auto* at = a->attrDecl()) {
+      attrs_.insert(at->name->getText());
+    } else if (auto* r = a->ruleDecl()) {
+      const size_t n = r->params() ? r->params()->ID().size() : 0;
+      const std::string name = r->name->getText();
+      if (rules_.count(name) && rules_[name] != n)
+        error("E019", rangeOf(r->name), "'" + name + "' has rules with " + std::to_string(rules_[name]) + " and " +
+                                            std::to_string(n) + " parameters");
+      rules_[name] = n;
+    }
+  }
+}
+
+void Translator::importDecl(P::ImportDeclContext* ctx) {
+  if (ctx->LPAREN()) notSupported(rangeOf(ctx), "an import's list of attributes");
+  ImportDecl d;
+  d.range = rangeOf(ctx);
+  d.pathRange = rangeOf(ctx->path);
+  d.path = stringValue(ctx->path->getText());
+  if (ctx->alias) d.alias = ctx->alias->getText();
+  program_.imports.push_back(std::move(d));
+}
+
+void Translator::declaration(P::AnnotatedContext* ctx) {
+  bool start = false;
+  std::string name = ctx->attrDecl()    ? ctx->attrDecl()->name->getText()
+                     : ctx->ruleDecl()  ? ctx->ruleDecl()->name->getText()
+                     : ctx->constDecl() ? ctx->constDecl()->name->getText()
+                                        : ctx->functionDecl()->name->getText();
+  std::vector<AttrAnnotation> notes = annotations(ctx->annotation(), start, name);
+  if (start) {
+    if (!ctx->ruleDecl()) {
+      error("E803", rangeOf(ctx->annotation(0)), "@StartRule belongs to a rule, not to '" + name + "'");
+    } else if (!startRule_.empty() && startRule_ != name) {
+      error("E803", rangeOf(ctx->ruleDecl()->name),
+            "a second @StartRule ('" + startRule_ + "' has one): a file has one start rule");
+    } else {
+      startRule_ = name;
+      startRange_ = rangeOf(ctx->ruleDecl()->name);
+    }
+  }
+  if (auto* a = ctx->attrDecl()) {
+    ValueDecl v;
+    v.range = rangeOf(a);
+    v.isAttr = true;
+    v.name = name;
+    currentParams_ = nullptr;
+    v.value = value(a->value(), Env{});
+    v.annotations = std::move(notes);
+    if (v.value) program_.values.push_back(std::move(v));
+  } else if (auto* r = ctx->ruleDecl()) {
+    rule(r);
+  }
+  // consts and functions are inlined where they are used (cga_functions.cpp).
+}
+
+void Translator::rule(P::RuleDeclContext* ctx) {
+  RuleHead head;
+  head.name = symbolName(ctx->name->getText());
+  head.range = rangeOf(ctx->name);
+  if (ctx->params())
+    for (auto* p : ctx->params()->ID()) {
+      head.params.push_back({p->getText(), rangeOf(p->getSymbol())});
+      head.paramNames.insert(p->getText());
+    }
+  currentRule_ = head.name;
+  ruleBody(ctx->ruleBody(), head, nullptr);
+}
+
+Rule Translator::newRule(const RuleHead& head, ExprPtr guard) {
+  Rule r;
+  r.range = head.range;
+  r.predecessor.name = head.name;
+  r.predecessor.range = head.range;
+  r.predecessor.params = head.params;
+  r.guard = std::move(guard);
+  return r;
+}
+
+Translator::RuleHead Translator::auxHead(const RuleHead& head) {
+  RuleHead aux = head;
+  aux.name = head.name + "$" + std::to_string(++auxCount_);
+  return aux;
+}
+
+Successor Translator::emitOf(const RuleHead& head, const SourceRange& at) {
+  Successor s;
+  s.range = at;
+  Item item;
+  item.kind = ItemKind::Call;
+  item.range = at;
+  item.name = head.name;
+  for (const ParamDecl& p : head.params) {
+    ExprPtr e = makeExpr(ExprKind::Ident, at);
+    e->text = p.name;
+    item.args.push_back(std::move(e));
+  }
+  s.items.push_back(std::move(item));
+  return s;
+}
+
+void Translator::ruleBody(P::RuleBodyContext* body, const RuleHead& head, ExprPtr guard) {
+  if (auto* c = dynamic_cast<P::CaseBodyContext*>(body)) {
+    caseChain(c, 0, head, std::move(guard));
+    return;
+  }
+  Rule r = newRule(head, std::move(guard));
+  if (auto* s = dynamic_cast<P::StochasticBodyContext*>(body)) {
+    const auto percents = s->PERCENT_LIT();
+    const auto bodies = s->ruleBody();
+    double sum = 0.0;
+    for (size_t i = 0; i < percents.size(); ++i) {
+      std::string text = percents[i]->getText();
+      const double p = std::stod(text.substr(0, text.size() - 1));
+      sum += p;
+      Branch b;
+      b.range = rangeOf(bodies[i]);
+      b.successor = successorFor(bodies[i], head);
+      b.probability = number(p / 100.0, rangeOf(percents[i]->getSymbol()));
+      r.branches.push_back(std::move(b));
+    }
+    if (sum > 100.0 + 1e-9)
+      error("E803", rangeOf(percents.back()->getSymbol()),
+            "the percentages of this choice add up to " + std::to_string(sum) + "%, more than 100%");
+    const double rest = std::max(0.0, 1.0 - sum / 100.0);
+    if (s->ELSE() || rest > 1e-12) {
+      Branch b;
+      b.range = s->ELSE() ? rangeOf(bodies.back()) : rangeOf(s);
+      if (s->ELSE()) {
+        b.successor = successorFor(bodies.back(), head);
+      } else {
+        b.successor.epsilon = true;  // no `else`: the rest of the time the shape is removed
+        b.successor.range = b.range;
+      }
+      b.probability = number(rest, b.range);
+      r.branches.push_back(std::move(b));
+    }
+  } else {
+    auto* ops = static_cast<P::OperationBodyContext*>(body);
+    Branch b;
+    b.range = rangeOf(ops);
+    b.successor.range = b.range;
+    Env env;
+    env.ruleParams = &head.paramNames;
+    currentParams_ = &head.paramNames;
+    operations(ops->operation(), 0, b.successor, env, true);
+    r.branches.push_back(std::move(b));
+  }
+  program_.rules.push_back(std::move(r));
+}
+
+Successor Translator::successorFor(P::RuleBodyContext* body, const RuleHead& head) {
+  if (auto* ops = dynamic_cast<P::OperationBodyContext*>(body)) {
+    Successor s;
+    s.range = rangeOf(ops);
+    Env env;
+    env.ruleParams = &head.paramNames;
+    currentParams_ = &head.paramNames;
+    operations(ops->operation(), 0, s, env, true);
+    return s;
+  }
+  RuleHead aux = auxHead(head);
+  ruleBody(body, aux, nullptr);
+  return emitOf(aux, rangeOf(body));
+}
+
+// `case c1 : A case c2 : B else : C` from branch `from` on. A condition `p(x)` is a random
+// choice: the branch with weight x, the rest of the chain (a helper symbol) with 1 - x;
+// other random conditions would be drawn once per guard and are refused.
+void Translator::caseChain(P::CaseBodyContext* body, size_t from, const RuleHead& head, ExprPtr guard) {
+  const auto conds = body->expr();
+  const auto bodies = body->ruleBody();
+  Env env;
+  env.ruleParams = &head.paramNames;
+  currentParams_ = &head.paramNames;
+  ExprPtr notPrev;
+  for (size_t i = from; i < conds.size(); ++i) {
+    auto* prim = dynamic_cast<P::PrimaryExprContext*>(conds[i]);
+    auto* call = prim ? dynamic_cast<P::CallPrimaryContext*>(prim->primary()) : nullptr;
+    if (call && call->name->getText() == "p" && call->expr().size() == 1 && !functions_.count("p")) {
+      ExprPtr x = expr(call->expr(0), env);
+      if (!x) return;
+      Rule r = newRule(head, conjunction(clone(guard), clone(notPrev)));
+      Branch taken;
+      taken.range = rangeOf(bodies[i]);
+      taken.successor = successorFor(bodies[i], head);
+      taken.probability = clone(x);
+      RuleHead aux = auxHead(head);
+      caseChain(body, i + 1, aux, nullptr);
+      Branch rest;
+      rest.range = rangeOf(conds[i]);
+      rest.successor = emitOf(aux, rest.range);
+      const SourceRange xAt = x->range;  // before `x` is moved into the call
+      rest.probability = binary("-", number(1.0, xAt), std::move(x));
+      r.branches.push_back(std::move(taken));
+      r.branches.push_back(std::move(rest));
+      program_.rules.push_back(std::move(r));
+      return;
+    }
+    ExprPtr cond = expr(conds[i], env);
+    if (!cond) return;
+    if (isRandom(*cond)) {
+      notSupported(rangeOf(conds[i]), "a random `case` condition other than p(x) (write the choice as `30% : ...`)");
+      return;
+    }
+    ruleBody(bodies[i], head, conjunction(clone(guard), conjunction(clone(notPrev), clone(cond))));
+    notPrev = conjunction(std::move(notPrev), unaryNot(std::move(cond)));
+  }
+  currentParams_ = &head.paramNames;
+  ruleBody(bodies.back(), head, conjunction(std::move(guard), std::move(notPrev)));
+}
+
+// The start: each lot (--lots), or without lots a square lot kDefaultLotSide metres a
+// side at the origin, derived by the @StartRule (or --start-rule's rule). A rule `Axiom`
+// chooses between the two by Lot.area (0 without lots); an importer drops it.
+void Translator::startRule() {
+  std::string start = startRuleOverride_.empty() ? startRule_ : startRuleOverride_;
+  SourceRange at = startRange_;
+  if (start.empty()) {
+    if (rules_.count("Lot")) start = "Lot";
+    else return;  // a module of rules: nothing starts here
+  }
+  if (!rules_.count(start)) {
+    error("E803", SourceRange{{1, 1}, {1, 1}}, "the start rule '" + start + "' is not a rule of this file");
+    return;
+  }
+  if (rules_[start] != 0) {
+    error("E803", at, "the start rule '" + start + "' takes parameters: a start shape has none to give");
+    return;
+  }
+  auto lotArea = [&] {
+    ExprPtr e = makeExpr(ExprKind::Member, at);
+    e->object = "Lot";
+    e->text = "area";
+    return binary(">", std::move(e), number(0, at));
+  };
+  RuleHead axiom;
+  axiom.name = "Axiom";
+  axiom.range = at;
+  RuleHead target;
+  target.name = symbolName(start);
+  Rule onLot = newRule(axiom, lotArea());
+  Branch b;
+  b.range = at;
+  b.successor = emitOf(target, at);
+  onLot.branches.push_back(std::move(b));
+  program_.rules.push_back(std::move(onLot));
+
+  Rule alone = newRule(axiom, unaryNot(lotArea()));
+  Branch d;
+  d.range = at;
+  d.successor = emitOf(target, at);
+  Item lot = command("Footprint", at);
+  for (double v : {0.0, 0.0, kDefaultLotSide, 0.0, kDefaultLotSide, kDefaultLotSide, 0.0, kDefaultLotSide})
+    lot.args.push_back(number(v, at));
+  d.successor.items.insert(d.successor.items.begin(), std::move(lot));
+  alone.branches.push_back(std::move(d));
+  program_.rules.push_back(std::move(alone));
+}
+
+}  // namespace fgsg::frontend::cga

@@ -1,0 +1,156 @@
+// The `.cga` dialect's translator: CityEngine CGA parse trees (grammar/Cga.g4) into the
+// AST of frontend/ast.h, with CityEngine's meaning. Private to frontend/cga/: one class,
+// its parts in one file per concept —
+//   cga_to_ast.cpp      declarations, rules, `case` and stochastic choices, the start rule
+//   cga_operations.cpp  operations: CityEngine's names and argument forms -> fgsg commands
+//   cga_functions.cpp   expressions, built-in functions, user functions (inlined)
+//   cga_annotations.cpp @Range, @Enum ... as attr metadata
+#pragma once
+
+#include "frontend/ast.h"
+#include "frontend/diagnostics.h"
+
+#include "CgaParser.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fgsg::frontend::cga {
+
+using P = fgsg_grammar::CgaParser;
+
+SourceRange rangeOf(const antlr4::ParserRuleContext* ctx);
+SourceRange rangeOf(const antlr4::Token* token);
+ExprPtr makeExpr(ExprKind kind, const SourceRange& at);
+ExprPtr cloneExpr(const Expr& e);
+ExprPtr number(double v, const SourceRange& at);
+ExprPtr binary(const std::string& op, ExprPtr a, ExprPtr b);
+ExprPtr unaryNot(ExprPtr a);
+// a && b where either may be null (null: true).
+ExprPtr conjunction(ExprPtr a, ExprPtr b);
+// The text of a string literal token without its quotes, escapes resolved.
+std::string stringValue(const std::string& token);
+
+// The symbol a CityEngine rule name becomes: itself, or with a '_' after it where fgsg has
+// a command of that name (`Roof`, `Footprint`, `Texture` ...), which would take its place.
+std::string symbolName(const std::string& name);
+
+// A CityEngine operation this dialect knows the name of (supported or not).
+bool isCityEngineOperation(const std::string& name);
+
+// A user function (or a const: CityEngine's are functions without parameters).
+struct Function {
+  std::string name;
+  std::vector<std::string> params;
+  P::ValueContext* body = nullptr;
+  SourceRange range;
+};
+
+// What an expression is translated in: the names bound to arguments of an inlined
+// function, the rule's parameters, and how `'x` reads (the split's or s()'s axis).
+struct Env {
+  std::map<std::string, const Expr*> bound;  // function parameter -> argument
+  const std::set<std::string>* ruleParams = nullptr;
+  // `'x`: -1 not allowed here; 0..2 x times the scope's size along that axis (split, t);
+  // 3: fgsg's relative size `xr` (s()).
+  int relativeAxis = -1;
+  int relativeIndex = 0;  // t(): the argument's axis
+};
+
+class Translator {
+ public:
+  Translator(Program& program, Diagnostics& diags, const std::string& fileName, std::string startRule)
+      : program_(program), diags_(diags), fileName_(fileName), startRuleOverride_(std::move(startRule)) {}
+
+  void run(P::CgaFileContext* file);
+
+  // ---- expressions (cga_functions.cpp)
+  ExprPtr expr(P::ExprContext* ctx, const Env& env);
+  ExprPtr primary(P::PrimaryContext* ctx, const Env& env);
+  // case / stochastic values become conditional expressions.
+  ExprPtr value(P::ValueContext* ctx, const Env& env);
+  ExprPtr call(const std::string& name, const SourceRange& at, const SourceRange& nameAt,
+               const std::vector<P::ExprContext*>& args, const Env& env);
+  ExprPtr name(const std::string& name, const SourceRange& at, const Env& env);
+  // Whether `e` draws random numbers (Rand).
+  static bool isRandom(const Expr& e);
+
+  // ---- operations (cga_operations.cpp)
+  // Translates ops[from..] into `out` (appending); true when they create shapes. A
+  // top-level successor that creates none ends with the shape as a leaf.
+  bool operations(const std::vector<P::OperationContext*>& ops, size_t from, Successor& out, const Env& env,
+                  bool topLevel);
+
+  // ---- annotations (cga_annotations.cpp)
+  std::vector<AttrAnnotation> annotations(const std::vector<P::AnnotationContext*>& list, bool& startRule,
+                                          const std::string& declName);
+
+  void error(const std::string& code, const SourceRange& at, const std::string& message) {
+    diags_.error(code, at, message);
+  }
+  void warning(const std::string& code, const SourceRange& at, const std::string& message) {
+    diags_.warning(code, at, message);
+  }
+  void notSupported(const SourceRange& at, const std::string& what) {
+    diags_.error("E801", at, what + " (CityEngine CGA; not supported yet)");
+  }
+
+ private:
+  struct RuleHead {
+    std::string name;
+    std::vector<ParamDecl> params;
+    SourceRange range;
+    std::set<std::string> paramNames;
+  };
+
+  // cga_to_ast.cpp
+  void collect(P::CgaFileContext* file);
+  void declaration(P::AnnotatedContext* ctx);
+  void rule(P::RuleDeclContext* ctx);
+  void ruleBody(P::RuleBodyContext* body, const RuleHead& head, ExprPtr guard);
+  void caseChain(P::CaseBodyContext* body, size_t from, const RuleHead& head, ExprPtr guard);
+  Successor successorFor(P::RuleBodyContext* body, const RuleHead& head);
+  Rule newRule(const RuleHead& head, ExprPtr guard);
+  RuleHead auxHead(const RuleHead& head);
+  Successor emitOf(const RuleHead& head, const SourceRange& at);
+  void startRule();
+  void importDecl(P::ImportDeclContext* ctx);
+
+  // cga_operations.cpp
+  struct Sequence;
+  void operation(P::OperationContext* op, Sequence& seq, const Env& env);
+  void callOperation(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  void split(P::CallOperationContext* op, const std::string& axis, Sequence& seq, const Env& env);
+  void splitBody(P::SplitBodyContext* body, const std::string& axis, Item& item, const Env& env);
+  void comp(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  void insert(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  void texture(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  bool assetPath(std::string& path, const SourceRange& at, const char* what);
+  std::string selectorWord(P::ExprContext* e) const;
+  Item command(const std::string& fgsgName, const SourceRange& at);
+
+ public:
+  // The rule whose successor is being translated: implicit leaves are named after it.
+  std::string currentRule_;
+  const std::set<std::string>* currentParams_ = nullptr;
+
+ private:
+  friend struct SequenceAccess;
+  Program& program_;
+  Diagnostics& diags_;
+  std::string fileName_;
+  std::string startRuleOverride_;
+  std::map<std::string, Function> functions_;
+  std::set<std::string> attrs_;
+  std::map<std::string, size_t> rules_;  // rule name -> parameter count
+  std::set<std::string> importAliases_;
+  std::vector<std::string> inlining_;  // functions being inlined (recursion check)
+  std::string startRule_;              // @StartRule
+  SourceRange startRange_;
+  int auxCount_ = 0;
+  std::set<std::string> warnedAssets_;
+};
+
+}  // namespace fgsg::frontend::cga
