@@ -26,12 +26,15 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       break;
     }
     case TurtleOp::Move: st.scope.P += step * st.scope.Y(); break;
+    // The turtle's frame is H = Y, L = -X, U = Z (H x L = U); each turn is a right-handed
+    // rotation about one of them, with L-Py's and lpfg's signs: + about U (H towards L),
+    // & about L (H towards -U), / about H (L towards U). About L is about X negated.
     case TurtleOp::Left: scope_.turn(st.scope, 2, angle); break;
     case TurtleOp::Right: scope_.turn(st.scope, 2, -angle); break;
-    case TurtleOp::PitchDown: scope_.turn(st.scope, 0, angle); break;
-    case TurtleOp::PitchUp: scope_.turn(st.scope, 0, -angle); break;
-    case TurtleOp::RollLeft: scope_.turn(st.scope, 1, angle); break;
-    case TurtleOp::RollRight: scope_.turn(st.scope, 1, -angle); break;
+    case TurtleOp::PitchDown: scope_.turn(st.scope, 0, -angle); break;
+    case TurtleOp::PitchUp: scope_.turn(st.scope, 0, angle); break;
+    case TurtleOp::RollLeft: scope_.turn(st.scope, 1, -angle); break;
+    case TurtleOp::RollRight: scope_.turn(st.scope, 1, angle); break;
     case TurtleOp::TurnAround: scope_.turn(st.scope, 2, 180.0); break;
     case TurtleOp::Width:
       if (n > 0) st.width = args[0];
@@ -83,16 +86,17 @@ void TurtleCommands::surfaceBox(State& st, uint32_t asset, const double* args, u
   st.scope.S = size;
 }
 
-// ABOP's $ (§2.2, Fig. 2.6): roll about the heading (scope Y) until the left vector
-// (scope X) is level, by the book's formula L = V x H / |V x H| with V the world's up
-// (+Y). Heading straight up or down, no direction is level: the turtle stays as it is.
+// ABOP's $ (§2.2, Fig. 2.6): roll about the heading H (scope Y) until the left vector L
+// (scope -X) is level, by the book's formula L = V x H / |V x H| with V the world's up
+// (+Y), then U = H x L (scope Z), as L-Py's and lpfg's RollToVert. Heading straight up or
+// down, no direction is level: the turtle stays as it is.
 void TurtleCommands::rollHorizontal(rt::Scope& scope) {
   const rt::Vec3 heading = scope.Y();
   rt::Vec3 left = rt::Vec3::UnitY().cross(heading);
   if (!(left.norm() > 1e-12)) return;
   left.normalize();
-  scope.axes.col(0) = left;
-  scope.axes.col(2) = left.cross(heading);
+  scope.axes.col(0) = -left;
+  scope.axes.col(2) = heading.cross(left);
 }
 
 void TurtleCommands::drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {

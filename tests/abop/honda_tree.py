@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """ABOP Fig. 2.6a, Honda's monopodial tree: a parametric L-system with `$`, derived by an
-independent rewriter and drawn by an independent 3D turtle, compared segment by segment
+independent rewriter and drawn by an independent 3D turtle written from L-Py's
+conventions (lpy_turtle.py), compared segment by segment
 (start, end and width) with the segments fgsg places for examples/abop/fig2_6a.fgsg
 (`--instances`), at the book's n = 10 and at n = 6. The productions are written here
 again from the book, not read from the example.
@@ -13,7 +14,8 @@ import subprocess
 import sys
 import tempfile
 
-from lsystem_reference import TURNS, turn, unmatched
+from lpy_turtle import TURNS, Turtle, to_fgsg
+from lsystem_reference import unmatched
 
 R1, R2, A0, A2, D, WR = 0.9, 0.6, 45.0, 45.0, 137.5, 0.707
 
@@ -42,30 +44,22 @@ def derive(n):
 
 
 def turtle(modules):
-    """The turtle as docs/language.md describes it (lsystem_reference.turn; $ makes
-    X = up x Y, normalised). Returns
-    the segments F(l) draws as (start, end, width) flattened to 7 numbers."""
-    p, X, Y, Z, width = [0.0] * 3, [1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0], 0.1
-    stack, segs = [], []
+    """L-Py's turtle (lpy_turtle.Turtle, `$` its RollToVert). Returns the segments F(l)
+    draws as (start, end, width) in fgsg's axes, flattened to 7 numbers."""
+    t, stack, segs = Turtle(), [], []
+    t.width = 0.1
     for symbol, args in modules:
         if symbol == "F":
-            q = [a + args[0] * b for a, b in zip(p, Y)]
-            segs.append(tuple(p + q + [width]))
-            p = q
+            a, b = t.forward(args[0])
+            segs.append(to_fgsg(a) + to_fgsg(b) + (t.width,))
         elif symbol == "!":
-            width = args[0]
+            t.width = args[0]
         elif symbol in TURNS:
-            X, Y, Z = turn(symbol, args[0], X, Y, Z)
-        elif symbol == "$":
-            x = [Y[2], 0.0, -Y[0]]  # (0, 1, 0) x Y
-            norm = math.sqrt(sum(v * v for v in x))
-            if norm > 1e-12:
-                X = [v / norm for v in x]
-                Z = [X[1] * Y[2] - X[2] * Y[1], X[2] * Y[0] - X[0] * Y[2], X[0] * Y[1] - X[1] * Y[0]]
+            t.turn(symbol, args[0] if args else 0.0)
         elif symbol == "[":
-            stack.append((p, X, Y, Z, width))
+            stack.append(t.state())
         elif symbol == "]":
-            p, X, Y, Z, width = stack.pop()
+            t.restore(stack.pop())
     return segs
 
 

@@ -37,43 +37,6 @@ def turtle(s, angle):
     return segs, done
 
 
-def rotate(a, b, degrees):
-    """Turns the pair of frame vectors (a, b) by `degrees`: a towards b (the 3D turtle's
-    turns, tests/abop/plants3d.py and honda_tree.py)."""
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    return ([c * x + s * y for x, y in zip(a, b)], [c * y - s * x for x, y in zip(a, b)])
-
-
-TURNS = "+-&^\\/|"
-
-
-def turn(symbol, angle, X, Y, Z):
-    """The 3D turtle's turn `symbol` (one of TURNS) by `angle` degrees, as
-    docs/language.md describes it: heading Y; + turns Y towards -X, - towards +X; & pitches
-    Y towards +Z, ^ towards -Z; \\ rolls Z towards +X, / towards -X; | turns 180 degrees.
-    Returns the new frame (X, Y, Z)."""
-    neg = lambda v: [-c for c in v]
-    if symbol == "+":
-        Y, X = rotate(Y, neg(X), angle)
-        return neg(X), Y, Z
-    if symbol == "-":
-        Y, X = rotate(Y, X, angle)
-        return X, Y, Z
-    if symbol == "&":
-        Y, Z = rotate(Y, Z, angle)
-        return X, Y, Z
-    if symbol == "^":
-        Y, Z = rotate(Y, neg(Z), angle)
-        return X, Y, neg(Z)
-    if symbol == "\\":
-        Z, X = rotate(Z, X, angle)
-        return X, Y, Z
-    if symbol == "/":
-        Z, X = rotate(Z, neg(X), angle)
-        return neg(X), Y, Z
-    return neg(X), neg(Y), Z  # |
-
-
 def fan_triangles(polygon_list, min_area=1e-12):
     """The triangles fgsg fills a polygon with (a fan from its first vertex), without those
     whose area is below the assembler's threshold, as (x0, y0, x1, y1, x2, y2)."""

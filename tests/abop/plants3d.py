@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """ABOP's three-dimensional plants, derived by an independent rewriter and drawn by an
-independent 3D turtle, compared segment by segment (in 3D) and polygon by polygon with
+independent 3D turtle written from L-Py's conventions (lpy_turtle.py), compared segment by segment (in 3D) and polygon by polygon with
 what fgsg writes: Fig. 1.25, the bush (examples/abop/fig1_25.fgsg), and Fig. 1.26, the
 plant with flowers (examples/abop/fig1_26.fgsg), at the book's n and one step less. The
 grammars are written here again from the book, not read from the examples.
@@ -12,7 +12,8 @@ import struct
 import sys
 import tempfile
 
-from lsystem_reference import TURNS, fgsg_obj, turn, unmatched
+from lpy_turtle import draw
+from lsystem_reference import fgsg_obj, unmatched
 
 # Fig. 1.25 (ABOP p. 26), as fgsg spells it: symbols one character each, `.` after each
 # f of the leaf (the book's f records a polygon vertex), S written Seg (here: S).
@@ -44,30 +45,10 @@ def derive(axiom, rules, n):
 
 
 def turtle3d(s, angle):
-    """The turtle as docs/language.md describes it (lsystem_reference.turn): F draws a
-    unit segment, f moves; `.` inside `{ }` records a vertex. Returns (segments as
-    (x0, y0, z0, x1, y1, z1), polygons as lists of (x, y, z))."""
-    p, X, Y, Z = [0.0] * 3, [1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]
-    stack, open_, segs, done = [], [], [], []
-    for c in s:
-        if c in "Ff":
-            q = [a + b for a, b in zip(p, Y)]
-            if c == "F":
-                segs.append(tuple(p + q))
-            p = q
-        elif c in TURNS:
-            X, Y, Z = turn(c, angle, X, Y, Z)
-        elif c == "[":
-            stack.append((p, X, Y, Z))
-        elif c == "]":
-            p, X, Y, Z = stack.pop()
-        elif c == "{":
-            open_.append([])
-        elif c == "." and open_:
-            open_[-1].append(tuple(p))
-        elif c == "}" and open_:
-            done.append(open_.pop())
-    return segs, done
+    """L-Py's turtle (lpy_turtle.draw): F draws a unit segment, f moves; `.` inside
+    `{ }` records a vertex. Returns (segments as (x0, y0, z0, x1, y1, z1), polygons as
+    lists of (x, y, z)), in fgsg's axes."""
+    return draw(s, angle)
 
 
 def as_float32(v):

@@ -39,14 +39,18 @@ TEST_CASE("$ rolls about the heading until the left vector is level", "[lsystem]
   REQUIRE(r.ok);
   REQUIRE(r.instances.instances.size() == 1);
   const Eigen::Matrix4d t = test::transformOf(r.instances.instances[0]);
-  const Eigen::Vector3d left = t.block<3, 1>(0, 0).normalized(), heading = t.block<3, 1>(0, 1).normalized();
+  // The turtle's left L is the scope's -X (docs/language.md, the turtle).
+  const Eigen::Vector3d left = -t.block<3, 1>(0, 0).normalized(), heading = t.block<3, 1>(0, 1).normalized();
   CHECK(left.y() == Approx(0).margin(1e-12));                 // level
   // ABOP's L = V x H / |V x H|, whichever way the turtle was rolled before.
   CHECK((left - Eigen::Vector3d::UnitY().cross(heading).normalized()).norm() < 1e-12);
+  // U = H x L, so U points up (L-Py's and lpfg's RollToVert: "U closest to up").
+  CHECK((t.block<3, 1>(0, 2).normalized() - heading.cross(left)).norm() < 1e-12);
+  CHECK(t.block<3, 1>(0, 2).y() > 0);
   const auto over = test::deriveText("derive parallel 0;\naxiom: /(200) &(25) $ F;");
   const Eigen::Matrix4d o = test::transformOf(over.instances.instances[0]);
   const Eigen::Vector3d overHeading = o.block<3, 1>(0, 1).normalized();
-  CHECK((o.block<3, 1>(0, 0).normalized() - Eigen::Vector3d::UnitY().cross(overHeading).normalized()).norm() < 1e-9);
+  CHECK((-o.block<3, 1>(0, 0).normalized() - Eigen::Vector3d::UnitY().cross(overHeading).normalized()).norm() < 1e-9);
   CHECK(left.dot(heading) == Approx(0).margin(1e-12));        // still square to the heading
   // The heading itself is unchanged by the roll: &(25) tilted it 25 degrees from +Y.
   CHECK(heading.y() == Approx(std::cos(25 * 3.14159265358979323846 / 180)).epsilon(1e-12));
