@@ -292,6 +292,19 @@ std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_p
     Token* token = raw[i].get();
     switch (token->getType()) {
       case FgsgLexer::UNKNOWN_CHAR: {
+        // lpfg's and L-Py's turtle modules `@Tp(x, y, z)`, `@Ts(e)`, `@O(r)` ...: '@' and
+        // the name written after it are one turtle symbol (the parser's '$' token,
+        // with its text "@Tp"); the front end knows which it supports (E048 the rest).
+        if (token->getText() == "@" && i + 1 < raw.size() && raw[i + 1]->getType() == FgsgLexer::ID &&
+            adjacent(token, raw[i + 1].get()) && raw[i + 1]->getLine() == token->getLine()) {
+          auto* module = static_cast<antlr4::CommonToken*>(token);
+          module->setType(FgsgLexer::DOLLAR);
+          module->setText("@" + raw[i + 1]->getText());
+          module->setStopIndex(raw[i + 1]->getStopIndex());
+          out.push_back(std::move(raw[i]));
+          ++i;
+          break;
+        }
         // Merge a run of adjacent unknown characters into one error.
         std::string text = token->getText();
         SourceRange range = tokenRange(token);
@@ -371,6 +384,51 @@ void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens, std::vector
   tokens = std::move(out);
 }
 
+// lpfg's and L-Py's section headers, each alone on its line: `production:` (what every
+// fgsg rule is: dropped), and `homomorphism:` / `interpretation:` / `decomposition:` and
+// `maximum depth:`, which fgsg does not run yet: E048 at the header rather than reading
+// the word as a rule label and the section's rules as productions.
+void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
+  const auto firstOnLine = [&](size_t i) { return i == 0 || tokens[i]->getLine() > tokens[i - 1]->getLine(); };
+  const auto lastOnLine = [&](size_t i) {
+    return i + 1 >= tokens.size() || tokens[i + 1]->getType() == Token::EOF ||
+           tokens[i + 1]->getLine() > tokens[i]->getLine();
+  };
+  const auto is = [&](size_t i, size_t type, const char* text) {
+    return i < tokens.size() && tokens[i]->getType() == type && (!text || tokens[i]->getText() == text);
+  };
+  std::vector<bool> drop(tokens.size(), false);  // decided first: the lambdas read the tokens
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!is(i, FgsgLexer::ID, nullptr) || !firstOnLine(i)) continue;
+    const std::string word = tokens[i]->getText();
+    const bool section = word == "production" || word == "homomorphism" || word == "interpretation" ||
+                         word == "decomposition";
+    if (section && is(i + 1, FgsgLexer::COLON, nullptr) && lastOnLine(i + 1)) {
+      if (word != "production") {
+        SourceRange at = tokenRange(tokens[i].get());
+        at.end = tokenRange(tokens[i + 1].get()).end;
+        diags.error("E048", at,
+                    "lpfg's and L-Py's '" + word + ":' section is not supported yet: its rules would be "
+                    "read as productions (write them as productions, or leave them out)");
+      }
+      drop[i] = drop[i + 1] = true;  // the header goes; its rules stay, checked as productions
+      ++i;
+    } else if (word == "maximum" && is(i + 1, FgsgLexer::ID, "depth") && is(i + 2, FgsgLexer::COLON, nullptr)) {
+      SourceRange at = tokenRange(tokens[i].get());
+      at.end = tokenRange(tokens[i + 2].get()).end;
+      diags.error("E048", at, "lpfg's and L-Py's 'maximum depth:' (of a homomorphism or decomposition) is "
+                              "not supported yet");
+      drop[i] = true;
+      while (i + 1 < tokens.size() && tokens[i + 1]->getType() != Token::EOF && !firstOnLine(i + 1)) drop[++i] = true;
+    }
+  }
+  std::vector<std::unique_ptr<Token>> out;
+  out.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i)
+    if (!drop[i]) out.push_back(std::move(tokens[i]));
+  tokens = std::move(out);
+}
+
 }  // namespace
 
 bool isImplicitSemicolon(const Token* token) {
@@ -412,6 +470,7 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
   joinQualifiedNames(tokens, importAliases);
+  lsystemSections(tokens, diags);
   markPolygonVertices(tokens);
   for (size_t i : ImplicitSemicolons(tokens).colourSteps())
     static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);

@@ -75,6 +75,7 @@ class Analyzer {
   void checkProbabilitySums();
   void checkSuccessor(const Successor& s, const Where& w);
   void checkItem(const Item& item, const Where& w);
+  void checkAtModule(const Item& item, const Where& w);
   void checkShapeItem(const Item& item, const Where& w);
 
   // Commands: arity, argument types and constants, { } bodies (sema_commands.cpp).

@@ -88,6 +88,10 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
           !item.args.empty())
         diags_.error("E016", item.range, "turtle symbol '" + item.name + "' takes no argument");
       if (item.hasBody) diags_.error("E018", item.range, "a turtle symbol takes no { } body");
+      if (item.name[0] == '@') {  // lpfg's and L-Py's @ modules (frontend/lex.cpp)
+        checkAtModule(item, w);
+        return;
+      }
       if (item.name == "~" && (item.args.size() == 2 || item.args.size() > 3))
         diags_.error("E016", item.range,
                      "a predefined surface '~' takes one size, three sizes (x, y, z) or none (1)");
@@ -120,6 +124,35 @@ void Analyzer::checkShapeItem(const Item& item, const Where& w) {
                        valueTypeName(t) + " here but a " + valueTypeName(params[k]) +
                        " elsewhere");
   }
+}
+
+// lpfg's and L-Py's turtle modules written with '@': those fgsg runs take their
+// arguments as numbers; the others are a located E048, never silently dropped.
+void Analyzer::checkAtModule(const Item& item, const Where& w) {
+  struct AtModule {
+    const char* name;
+    size_t minArgs, maxArgs;
+    const char* usage;
+  };
+  static const AtModule kSupported[] = {
+      {"@Tp", 3, 3, "@Tp(x, y, z): the tropism vector"},
+      {"@Ts", 1, 1, "@Ts(e): the elasticity"},
+      {"@O", 0, 1, "@O(r): a sphere of radius r (default half the width)"},
+      {"@M", 3, 3, "@M(x, y, z): move to the point"},
+      {"@R", 6, 6, "@R(hx, hy, hz, ux, uy, uz): set the heading and up vectors"},
+  };
+  for (const AtModule& m : kSupported) {
+    if (item.name != m.name) continue;
+    if (item.args.size() < m.minArgs || item.args.size() > m.maxArgs)
+      diags_.error("E016", item.range,
+                   "'" + item.name + "' takes " + std::to_string(m.minArgs) + " argument" +
+                       (m.minArgs == 1 ? "" : "s") + ", got " + std::to_string(item.args.size()) + ": " + m.usage);
+    for (const auto& a : item.args) expect(*a, w, ValueType::Num, "a turtle argument");
+    return;
+  }
+  diags_.error("E048", item.range,
+               "the turtle module '" + item.name + "' (lpfg, L-Py) is not supported yet; supported: @Tp, @Ts, "
+               "@O, @M and @R (docs/language.md, the turtle)");
 }
 
 }  // namespace fgsg::frontend::sema_detail

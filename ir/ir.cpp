@@ -20,6 +20,11 @@ std::vector<std::array<float, 3>> defaultTurtleColors() {
 int turtleOpNamed(const std::string& name) {
   if (name == "F") return int(TurtleOp::Forward);
   if (name == "f") return int(TurtleOp::Move);
+  if (name == "@Tp") return int(TurtleOp::Tropism);
+  if (name == "@Ts") return int(TurtleOp::Elasticity);
+  if (name == "@O") return int(TurtleOp::Sphere);
+  if (name == "@M") return int(TurtleOp::MoveTo);
+  if (name == "@R") return int(TurtleOp::SetHeading);
   if (name.size() != 1) return -1;
   switch (name[0]) {
     case '+': return int(TurtleOp::Left);

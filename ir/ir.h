@@ -145,6 +145,11 @@ enum class TurtleOp : uint8_t {
   ColorIndex,      // ': the next colour of `turtle colors` ('(n): colour n; 0: the default colours)
   SurfaceBox,      // ~(s) / ~(sx, sy, sz): the scope becomes the box of a predefined surface at the turtle
                    // (`~leaf(s)` is `[ ~(s) I("leaf") ]`, ABOP's ~)
+  Tropism,         // @Tp(x, y, z): the tropism vector T of ABOP eq. 2.4 (L-Py's Tropism)
+  Elasticity,      // @Ts(e): the elasticity e; after each F, H turns by e |H x T| towards T
+  Sphere,          // @O(r): a sphere (Op::asset) of radius r, default half the width, centred on the turtle
+  MoveTo,          // @M(x, y, z): the turtle's position becomes (x, y, z)
+  SetHeading,      // @R(hx, hy, hz, ux, uy, uz): the turtle's heading and (squared to it) up
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the

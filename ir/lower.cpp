@@ -245,6 +245,7 @@ class Lowerer {
         op.kind = OpKind::Turtle;
         op.index = static_cast<uint32_t>(ir::turtleOpNamed(item.name));
         if (!item.surface.empty()) op.asset = m_.internAsset(item.surface);  // `~leaf`
+        if (item.name == "@O") op.asset = m_.internAsset("sphere");
         for (const auto& a : item.args) op.args.push_back(expr(*a));
         out.push_back(std::move(op));
         return;

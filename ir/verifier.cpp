@@ -456,9 +456,13 @@ class Verifier {
         break;
       case OpKind::Emit: emit(op, r); break;
       case OpKind::Turtle:
-        if (op.index > static_cast<uint32_t>(TurtleOp::SurfaceBox))
+        if (op.index > static_cast<uint32_t>(TurtleOp::SetHeading))
           problem("turtle op " + std::to_string(op.index) + " out of range");
-        if (op.index == static_cast<uint32_t>(TurtleOp::SurfaceBox))
+        if (op.index == static_cast<uint32_t>(TurtleOp::Tropism) || op.index == static_cast<uint32_t>(TurtleOp::MoveTo))
+          numArgs(op, r, 3);  // @Tp(x, y, z), @M(x, y, z)
+        else if (op.index == static_cast<uint32_t>(TurtleOp::SetHeading))
+          numArgs(op, r, 6);  // @R(hx, hy, hz, ux, uy, uz)
+        else if (op.index == static_cast<uint32_t>(TurtleOp::SurfaceBox))
           numArgs(op, r, op.args.size() == 3 ? 3 : std::min<size_t>(op.args.size(), 1));  // ~, ~(s), ~(x, y, z)
         else
           numArgs(op, r, std::min<size_t>(op.args.size(), 1));  // argument optional

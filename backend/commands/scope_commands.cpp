@@ -41,6 +41,7 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
       st.scope = stack_.back().scope;
       st.geom = stack_.back().geom;
       st.width = stack_.back().width;
+      st.tropism = stack_.back().tropism;
       st.line = stack_.back().line;
       stack_.pop_back();
       break;

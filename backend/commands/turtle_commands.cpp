@@ -2,6 +2,8 @@
 
 #include "backend/engine/derivation.h"
 
+#include <cmath>
+
 namespace fgsg::backend {
 
 void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc) {
@@ -23,6 +25,7 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       seg.S = rt::Vec3(st.width, step, st.width);
       d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       st.scope.P += step * st.scope.Y();
+      if (st.tropism.elasticity != 0) bend(st.scope, st.tropism);
       break;
     }
     case TurtleOp::Move: st.scope.P += step * st.scope.Y(); break;
@@ -64,6 +67,25 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       break;
     }
     case TurtleOp::SurfaceBox: surfaceBox(st, 0, args, n); break;  // only reached through the Op
+    case TurtleOp::Tropism: {
+      const rt::Vec3 t(args[0], args[1], args[2]);
+      if (!(t.norm() > 0 && t.allFinite()))
+        throw DeriveError{loc, "R027", "the tropism vector of @Tp must be finite and not zero"};
+      st.tropism.direction = t.normalized();
+      break;
+    }
+    case TurtleOp::Sphere: break;  // only reached through the Op (its asset)
+    case TurtleOp::MoveTo: {
+      const rt::Vec3 p(args[0], args[1], args[2]);
+      if (!p.allFinite()) throw DeriveError{loc, "R027", "the point of @M must be finite"};
+      st.scope.P = p;
+      break;
+    }
+    case TurtleOp::SetHeading: setHeading(st, args, loc); break;
+    case TurtleOp::Elasticity:
+      if (!std::isfinite(args[0])) throw DeriveError{loc, "R027", "the elasticity of @Ts must be a finite number"};
+      st.tropism.elasticity = args[0];
+      break;
     case TurtleOp::Cut:
       // A parallel derivation cuts its string after each step (cutBranches); a successor
       // of a sequential one has no rest of a branch in a string to cut.
@@ -97,6 +119,47 @@ void TurtleCommands::rollHorizontal(rt::Scope& scope) {
   left.normalize();
   scope.axes.col(0) = -left;
   scope.axes.col(2) = heading.cross(left);
+}
+
+// lpfg's and L-Py's @O(r): a sphere of radius r (default half the turtle's width, as
+// lpfg's), centred on the turtle, in the turtle's frame; the turtle does not move. It is
+// turtle geometry, recorded under F as segments are.
+void TurtleCommands::sphere(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc) {
+  const double r = n > 0 ? args[0] : 0.5 * st.width;
+  if (!(r >= 0 && std::isfinite(r)))
+    throw DeriveError{loc, "R027", "the radius of @O must be a finite number from 0, not " + std::to_string(r)};
+  rt::Scope box = st.scope;
+  box.P -= r * (st.scope.X() + st.scope.Y() + st.scope.Z());
+  box.S = rt::Vec3::Constant(2 * r);
+  d_.placeInstance(asset, box, d_.segmentSymbol(), nullptr, 0, loc);
+}
+
+// lpfg's @R(hx, hy, hz, ux, uy, uz) (SetHead): H = h / |h|, L = u x H normalised, U = H x L
+// (u need only not be parallel to h).
+void TurtleCommands::setHeading(State& st, const double* args, ir::Loc loc) {
+  const rt::Vec3 h(args[0], args[1], args[2]), u(args[3], args[4], args[5]);
+  const rt::Vec3 left = u.cross(h);
+  if (!(h.allFinite() && u.allFinite() && h.norm() > 1e-12 && left.norm() > 1e-12 * u.norm() * h.norm()))
+    throw DeriveError{loc, "R027", "@R needs a finite heading and up vector that are not zero and not parallel"};
+  const rt::Vec3 heading = h.normalized(), l = left.normalized();
+  st.scope.axes.col(1) = heading;
+  st.scope.axes.col(0) = -l;
+  st.scope.axes.col(2) = heading.cross(l);
+}
+
+// ABOP eq. 2.4: the heading H (scope Y) turns about H x T by e |H x T| radians, towards
+// T, and L, U with it (one rotation of the whole frame keeps it orthonormal; the axes
+// are renormalised against drift over long branches). Along T or -T nothing turns.
+void TurtleCommands::bend(rt::Scope& scope, const Tropism& tropism) {
+  const rt::Vec3 axis = scope.Y().cross(tropism.direction);
+  const double s = axis.norm();
+  if (!(s > 1e-12)) return;
+  const Eigen::AngleAxisd rotation(tropism.elasticity * s, axis / s);
+  const rt::Vec3 h = (rotation * scope.Y()).normalized();
+  const rt::Vec3 x = (rotation * scope.X() - (rotation * scope.X()).dot(h) * h).normalized();
+  scope.axes.col(1) = h;
+  scope.axes.col(0) = x;
+  scope.axes.col(2) = x.cross(h);
 }
 
 void TurtleCommands::drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {

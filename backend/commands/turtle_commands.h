@@ -26,6 +26,7 @@ class TurtleCommands final : public CommandFamily {
   // The turtle op `op` (a Turtle op) with its evaluated arguments.
   void command(State& st, const ir::Op& op, const double* args, uint32_t n) {
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::SurfaceBox)) return surfaceBox(st, op.asset, args, n);
+    if (op.index == static_cast<uint32_t>(ir::TurtleOp::Sphere)) return sphere(st, op.asset, args, n, op.loc);
     command(st, static_cast<ir::TurtleOp>(op.index), args, n, op.loc);
   }
 
@@ -39,7 +40,10 @@ class TurtleCommands final : public CommandFamily {
 
  private:
   static void rollHorizontal(rt::Scope& scope);
+  static void bend(rt::Scope& scope, const Tropism& tropism);
   void surfaceBox(State& st, uint32_t asset, const double* args, uint32_t n);
+  void sphere(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc);
+  static void setHeading(State& st, const double* args, ir::Loc loc);
 
   Derivation& d_;
   ScopeCommands& scope_;

@@ -14,6 +14,13 @@
 
 namespace fgsg::backend {
 
+// The turtle's tropism (ABOP eq. 2.4, `@Tp`, `@Ts`): after each F the heading turns by
+// elasticity |H x T| towards the direction T. Saved and restored by [ ] as L-Py does.
+struct Tropism {
+  rt::Vec3 direction = -rt::Vec3::UnitY();  // ABOP's gravitropism, T = (0, -1, 0)
+  double elasticity = 0;
+};
+
 // The scope a successor works on. Its [ ] stack lives in one shared vector above
 // `stackBase`, so pushing allocates nothing once the vector has grown.
 struct Saved {
@@ -22,6 +29,7 @@ struct Saved {
   double width;
   rt::LineCursor line;
   uint32_t bracket = UINT32_MAX;  // its '[' in the sequential string (grammars with contexts)
+  Tropism tropism;
 };
 struct State {
   rt::Scope scope;
@@ -30,6 +38,7 @@ struct State {
   size_t stackBase = 0;
   rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
   const rt::Scope* origin = nullptr;  // the scope the successor or body started with (Center)
+  Tropism tropism;
 };
 
 // What one running successor knows: its random stream, key and parameters, the
