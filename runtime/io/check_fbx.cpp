@@ -205,8 +205,11 @@ bool asciiGraph(const std::string& path, std::string_view s, Graph& g, std::stri
       ok = token(c == '{' ? Open : c == '}' ? Close : Comma, s.substr(i, 1), line);
       ++i;
     } else {
-      size_t end = i;
-      while (end < s.size() && !std::strchr(" \t\r\n\f\v;\"{},:", s[end])) ++end;
+      // A word: up to a space or a character the branches above take (a NUL byte is part
+      // of a word: strchr would find the set's own terminator for it, and the scan would
+      // stop there without advancing).
+      size_t end = i + 1;
+      while (end < s.size() && (s[end] == '\0' || !std::strchr(" \t\r\n\f\v;\"{},:", s[end]))) ++end;
       const bool key = end < s.size() && s[end] == ':';
       ok = token(key ? Key : Word, s.substr(i, end - i), line);
       i = end + (key ? 1 : 0);

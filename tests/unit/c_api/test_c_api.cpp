@@ -455,7 +455,7 @@ TEST_CASE("Report and Print read through fgsg_reports_json, fgsg_report and fgsg
   const fs::path grammar = scratchDir() / "reports.fgsg";
   std::ofstream(grammar) << "Axiom ~> S(4, 3, 0) Report(\"area\", Scope.sx * Scope.sy) Print(\"facade\")\n"
                             "         Subdiv(\"X\"){ ~1: Tile }*;\n"
-                            "Tile ~> Report(\"tile\", true) T;\n";
+                            "Tile ~> Report(\"tile\", true) Piece;\n";
   Generator g(compileAndLoad(grammar));
   CHECK(std::string(fgsg_reports_json(g)).empty());
   REQUIRE(fgsg_generate(g) == 0);
