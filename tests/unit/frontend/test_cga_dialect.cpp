@@ -1,0 +1,204 @@
+// The `.cga` dialect's front end: CityEngine CGA syntax translated into fgsg's AST and
+// checked like any grammar — every syntax item, case chains whose first true condition
+// wins, stochastic weights, inlined functions, annotations, and located errors for what
+// cannot run yet (and for CityEngine operations written in the fgsg dialect).
+#include "frontend/cga/cga_parse.h"
+#include "ir/ir.h"
+#include "ir/pipeline.h"
+#include "ir/printer.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+using namespace fgsg;
+
+namespace {
+
+struct Compiled {
+  bool ok = false;
+  ir::Module module;
+  std::string messages;
+};
+
+Compiled compile(const std::string& text, const std::string& name = "test.cga") {
+  Compiled c;
+  frontend::SourceFile file = frontend::SourceFile::make(name, text);
+  frontend::Diagnostics diags(&file);
+  c.ok = ir::compileSource(file, c.module, diags);
+  std::ostringstream out;
+  diags.print(out);
+  c.messages = out.str();
+  return c;
+}
+
+const ir::Rule* firstRule(const ir::Module& m, const std::string& symbol, size_t n = 0) {
+  const int s = m.findSymbol(symbol);
+  if (s < 0 || m.symbols[size_t(s)].rules.size() <= n) return nullptr;
+  return &m.rules[m.symbols[size_t(s)].rules[n]];
+}
+
+}  // namespace
+
+TEST_CASE("which files are CGA", "[cga][dialect]") {
+  CHECK(frontend::isCgaSource("rules/building.cga", ""));
+  CHECK_FALSE(frontend::isCgaSource("building.fgsg", "Lot ~> A;"));
+  CHECK(frontend::isCgaSource("x.fgsg", "// CityEngine\n  dialect cga;\nLot --> X."));
+  CHECK_FALSE(frontend::isCgaSource("x.fgsg", "attr dialect = 2;"));
+  CHECK(frontend::cgaLookingLine("attr a = 1\n\nLot --> extrude(3)\n") == 3);
+  CHECK(frontend::cgaLookingLine("Lot ~> A; // --> in a comment is fine\n") == 1);  // not at line start
+  CHECK(frontend::cgaLookingLine("// Lot --> A\nLot ~> A;") == 0);
+}
+
+TEST_CASE("every syntax item of a CityEngine rule file compiles", "[cga][dialect]") {
+  const Compiled c = compile(R"(version "2023.0"
+# a hash comment
+// a line comment
+/* a block
+   comment */
+@Range(min=1, max=10, stepsize=0.5) @Group("Mass", 1) @Order(2) @Description("how high")
+attr height = 8
+@Enum("red", "green") attr tint = "red"
+@Hidden @Color attr roof = "#f00"
+@Angle @Percent @Distance @File @Directory @Handle(shape=Lot, axis=y) attr misc = 1
+const half = height / 2
+const flag = true
+const choice = 30% : "a" 20% : "b" else : "c"
+twice(x) = 2 * x
+level(h) = case h > 6 : 2 case h > 3 : 1 else : 0
+
+@StartRule
+Lot --> extrude(height) comp(f) { top : Top | side = Side | bottom : NIL }
+Top --> case flag && !(height < 2) || false : roofHip(30) Roof. else : X.
+Side --> split(y, noAdjust) { '0.25 : A | ~twice(1) : B | { 2 : C | ~1 : D }* | 1 : . }
+A --> s('1, '0.5, 0) t(0, '0.5, 0) r(scopeCenter, 0, 90, 0) center(xz) color("#0f0") A2(level(height), choice)
+A2(n, s) --> 50% : [ t(0, 1, 0) B ] X. 25%: NIL else : color(0.1, 0.2, 0.3) i("builtin:cube")
+B --> split(x) { 1 : C }*
+C --> set(material.color.rgb, "#123456") print("c") D
+D --> offset(-0.1, inside) Inner.
+)");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  // W800: comp's `=` is read as `:`.
+  CHECK(c.messages.find("W800") != std::string::npos);
+  // The annotations are the attr's metadata.
+  const int h = c.module.findAttr("height");
+  REQUIRE(h >= 0);
+  const auto& notes = c.module.attrs[size_t(h)].annotations;
+  REQUIRE(notes.size() == 4);
+  CHECK(notes[0].name == "Range");
+  REQUIRE(notes[0].args.size() == 3);
+  CHECK(notes[0].args[0] == std::make_pair(std::string("min"), std::string("1")));
+  CHECK(notes[0].args[2] == std::make_pair(std::string("stepsize"), std::string("0.5")));
+  CHECK(notes[1].name == "Group");
+  CHECK(notes[1].args[0].second == "Mass");
+  CHECK(notes[3].name == "Description");
+  const int tint = c.module.findAttr("tint");
+  REQUIRE(tint >= 0);
+  REQUIRE(c.module.attrs[size_t(tint)].annotations.size() == 1);
+  CHECK(c.module.attrs[size_t(tint)].annotations[0].args.size() == 2);
+  // The printed IR shows them, and the split's CityEngine sizing.
+  const std::string ir = ir::printModule(c.module);
+  CHECK(ir.find("@Range(min=1, max=10, stepsize=0.5)") != std::string::npos);
+  CHECK(ir.find("cityengine") != std::string::npos);
+}
+
+TEST_CASE("a case chain: the first condition that holds wins", "[cga][dialect]") {
+  const Compiled c = compile("attr h = 5\n@StartRule\nLot --> case h > 3 : A case h > 1 : B else : C\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  // Three rules for Lot, guards h > 3; !(h > 3) && h > 1; !(h > 3) && !(h > 1).
+  const int lot = c.module.findSymbol("Lot");
+  REQUIRE(lot >= 0);
+  REQUIRE(c.module.symbols[size_t(lot)].rules.size() == 3);
+  for (uint32_t r : c.module.symbols[size_t(lot)].rules) CHECK(c.module.rules[r].hasGuard);
+  const std::string ir = ir::printModule(c.module);
+  CHECK(ir.find("!(") != std::string::npos);
+}
+
+TEST_CASE("a stochastic rule's branches have the percentages as weights", "[cga][dialect]") {
+  const Compiled c = compile("@StartRule\nLot --> 30% : A 20% : B else : C\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  const ir::Rule* r = firstRule(c.module, "Lot");
+  REQUIRE(r);
+  REQUIRE(r->alternatives.size() == 3);
+  CHECK(r->alternatives[0].probability.num == Approx(0.3));
+  CHECK(r->alternatives[1].probability.num == Approx(0.2));
+  CHECK(r->alternatives[2].probability.num == Approx(0.5));
+  // Without `else` the rest of the time the shape is removed.
+  const Compiled d = compile("@StartRule\nLot --> 40% : A\n");
+  REQUIRE(d.ok);
+  const ir::Rule* q = firstRule(d.module, "Lot");
+  REQUIRE(q);
+  REQUIRE(q->alternatives.size() == 2);
+  CHECK(q->alternatives[1].probability.num == Approx(0.6));
+  CHECK(q->alternatives[1].ops.empty());
+}
+
+TEST_CASE("functions are inlined; recursion is a located error", "[cga][dialect]") {
+  const Compiled c = compile("f(x) = x * 2 + 1\ng = f(3)\n@StartRule\nLot --> s(g, f(1), 1) X.\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  const std::string ir = ir::printModule(c.module);
+  CHECK(ir.find("7") != std::string::npos);  // folded: 3 * 2 + 1
+  const Compiled r = compile("f(x) = g(x)\ng(x) = f(x) + 1\n@StartRule\nLot --> s(f(1), 1, 1) X.\n");
+  CHECK_FALSE(r.ok);
+  CHECK(r.messages.find("E802") != std::string::npos);
+  CHECK(r.messages.find("test.cga:2:8: error[E802]: 'f' calls itself (through g)") != std::string::npos);
+}
+
+TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dialect]") {
+  const Compiled taper = compile("@StartRule\nLot --> extrude(10)\n   taper(3)\n");
+  CHECK_FALSE(taper.ok);
+  CHECK(taper.messages.find("test.cga:3:4: error[E800]: unknown operation 'taper' (CityEngine CGA; not supported yet)") !=
+        std::string::npos);
+  const Compiled unknown = compile("@StartRule\nLot --> frobnicate(3)\n");
+  CHECK(unknown.messages.find("test.cga:2:9: error[E800]: unknown operation 'frobnicate'") != std::string::npos);
+  const Compiled fn = compile("@StartRule\nLot --> s(geometry.area(), 1, 1) X.\n");
+  CHECK(fn.messages.find("E801") != std::string::npos);
+  CHECK(fn.messages.find("'geometry.area'") != std::string::npos);
+  const Compiled style = compile("style Night\n@StartRule\nLot --> X.\n");
+  CHECK(style.messages.find("test.cga:1:1: error[E801]: 'style'") != std::string::npos);
+  const Compiled overhang = compile("@StartRule\nLot --> roofGable(30, 1)\n");
+  CHECK(overhang.messages.find("E801") != std::string::npos);
+  const Compiled selector = compile("@StartRule\nLot --> extrude(3) comp(f) { horizontal : A }\n");
+  CHECK(selector.messages.find("the comp selector 'horizontal'") != std::string::npos);
+  const Compiled syntax = compile("@StartRule\nLot --> extrude(3\nA --> B\n");
+  CHECK(syntax.messages.find("E002") != std::string::npos);
+}
+
+TEST_CASE("CityEngine operations in the fgsg dialect are errors, and CGA files get a hint", "[cga][dialect]") {
+  const Compiled color = compile("Lot ~> S(1, 1, 1) color(\"#f00\") I(\"cube\");", "test.fgsg");
+  CHECK_FALSE(color.ok);
+  CHECK(color.messages.find("test.fgsg:1:19: error[E800]: unknown operation 'color'") != std::string::npos);
+  const Compiled rotate = compile("Lot ~> S(1, 1, 1) rotateScope I(\"cube\");", "test.fgsg");
+  CHECK(rotate.messages.find("W800") != std::string::npos);
+  // The grammar's own symbol of that name is fine.
+  CHECK(compile("Lot ~> taper(1);\ntaper(n) ~> S(n, 1, 1) I(\"cube\");", "test.fgsg").ok);
+  const Compiled cga = compile("@StartRule\nLot --> extrude(10)\n", "test.fgsg");
+  CHECK_FALSE(cga.ok);
+  CHECK(cga.messages.find("this looks like CityEngine CGA: name the file .cga") != std::string::npos);
+}
+
+TEST_CASE("a CGA file imports another, and an fgsg grammar imports a CGA file", "[cga][dialect]") {
+  // The modules' files are written beside each other in a temporary folder.
+  const std::string dir = "/tmp/fgsg_cga_import_test";
+  std::system(("mkdir -p " + dir).c_str());
+  {
+    FILE* f = std::fopen((dir + "/facade.cga").c_str(), "w");
+    std::fputs("attr floor = 3\nFacade --> split(y) { ~floor : Floor. }*\n", f);
+    std::fclose(f);
+  }
+  const Compiled c = compile("import facade : \"facade.cga\"\n@StartRule\nLot --> s(10, facade.floor * 3, 0) facade.Facade\n",
+                             dir + "/main.cga");
+  INFO(c.messages);
+  CHECK(c.ok);
+  CHECK(c.module.findAttr("facade.floor") >= 0);
+  CHECK(c.module.findSymbol("facade.Facade") >= 0);
+  const Compiled g = compile("import \"facade.cga\" as f;\naxiom: S(10, 9, 0) f.Facade;\n", dir + "/main.fgsg");
+  INFO(g.messages);
+  CHECK(g.ok);
+}
