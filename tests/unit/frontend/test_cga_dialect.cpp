@@ -138,7 +138,7 @@ TEST_CASE("a stochastic rule's branches have the percentages as weights", "[cga]
   CHECK(q->alternatives[1].ops.empty());
 }
 
-TEST_CASE("functions are inlined; recursion is a located error", "[cga][dialect]") {
+TEST_CASE("functions are inlined, and recursion is a located error", "[cga][dialect]") {
   const Compiled c = compile("f(x) = x * 2 + 1\ng = f(3)\n@StartRule\nLot --> s(g, f(1), 1) X.\n");
   INFO(c.messages);
   REQUIRE(c.ok);
