@@ -98,8 +98,8 @@ std::string materialName(const Mesh& mesh, int32_t texture) {
                                                                  : "fgsg_plain";
 }
 
-// `path` as seen from `folder`: relative, with symbolic links resolved so that it leads to
-// the same file, or absolute when there is no relative path.
+}  // namespace
+
 std::string pathFrom(const std::string& folder, const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -108,8 +108,6 @@ std::string pathFrom(const std::string& folder, const std::string& path) {
   const fs::path absolute = fs::absolute(path, ec);
   return ec || absolute.empty() ? path : absolute.lexically_normal().generic_string();
 }
-
-}  // namespace
 
 void writeObj(const Mesh& mesh, ByteSink& out) { writeObj(mesh, out, std::string()); }
 

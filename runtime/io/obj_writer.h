@@ -34,4 +34,8 @@ void writeObj(const Mesh& mesh, ByteSink& out, const std::string& mtlFileName);
 // spaces included (readers take the rest of the line).
 std::string mtlText(const Mesh& mesh, const std::string& mtlFolder);
 
+// `path` as seen from `folder` (a .mtl's `map_Kd`): relative, with symbolic links resolved
+// so that it leads to the same file, or absolute when there is no relative path.
+std::string pathFrom(const std::string& folder, const std::string& path);
+
 }  // namespace fgsg::rt::io

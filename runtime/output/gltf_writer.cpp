@@ -15,6 +15,8 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <string_view>
+#include <unordered_map>
 
 namespace fgsg::rt::output {
 
@@ -26,6 +28,39 @@ using nlohmann::json;
 
 using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
+constexpr int kUnsignedShort = 5123;
+// A triangle's vertex normals closer to its face's normal than this (the cosine of their
+// angle) are flat: glTF readers compute the same normals where a primitive has none.
+constexpr double kFlatCosine = 1 - 1e-5;
+
+// Whether every triangle of `m` is shaded flat by its vertex normals (turning as its
+// corners wind); degenerate triangles, which draw nothing, do not count.
+bool flatShaded(const Mesh& m) {
+  if (!io::hasNormals(m)) return false;
+  for (size_t t = 0; t < m.triangleCount(); ++t) {
+    const uint32_t* c = &m.indices[3 * t];
+    const float *a = &m.positions[3 * c[0]], *b = &m.positions[3 * c[1]], *d = &m.positions[3 * c[2]];
+    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+    const double v[3] = {double(d[0]) - a[0], double(d[1]) - a[1], double(d[2]) - a[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0) || !std::isfinite(len)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const float* vn = &m.normals[3 * c[k]];
+      const double vlen = std::sqrt(double(vn[0]) * vn[0] + double(vn[1]) * vn[1] + double(vn[2]) * vn[2]);
+      if (!(vlen > 0) || (n[0] * vn[0] + n[1] * vn[1] + n[2] * vn[2]) / (len * vlen) < kFlatCosine) return false;
+    }
+  }
+  return true;
+}
+
+// A baked part's vertex attributes as written, equal vertices (in every attribute
+// written, bit for bit) made one: the pieces of a facade meet at shared corners.
+struct WeldedVertices {
+  std::vector<float> positions, normals, texcoords, colors;
+  std::vector<uint32_t> of;  // per vertex of the mesh, its welded vertex
+  size_t count = 0;
+};
 
 std::string base64(const std::string& bytes) {
   static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -64,16 +99,23 @@ class Writer {
     return int(accessors_.size() - 1);
   }
   int positions(const float* p, size_t vertices);
+  std::vector<float> unitNormals(const Mesh& m) const;
+  std::vector<float> flippedTexcoords(const Mesh& m, std::array<float, 2> shift) const;
   int normals(const Mesh& m);
   int texcoords(const Mesh& m, std::array<float, 2> shift);
+  WeldedVertices weld(const Mesh& m, bool withNormals, bool withColors) const;
+  // Indices (of `vertices` vertices) as 16-bit where they fit, into a view of their own:
+  // the view and the component type.
+  template <class Indices>
+  std::pair<int, int> indexView(const Indices& indices, size_t vertices);
   json sharedAttributes(uint32_t mesh);
   int sharedMesh(uint32_t mesh, uint32_t material);
   int instancedNode(const InstancedPart& part);
-  int mirroredNode(const InstancedPart& part, size_t k);
+  int instanceNode(const InstancedPart& part, size_t k);
   int bakedMesh(const GroupNode& g, const std::string& name, bool& wrote);
   int groupNode(const GroupNode& g, json node);
   int startNode(const StartNode& s);
-  json materialJson(const Material& m, size_t index) const;
+  json materialJson(const Material& m);
   bool verticesFinite(std::string& error) const;
 
   const Scene& scene_;
@@ -84,11 +126,12 @@ class Writer {
   std::map<std::pair<uint32_t, uint32_t>, int> sharedMeshes_;  // (shared mesh, material) -> glTF mesh
   std::map<uint32_t, int> materialOut_;  // Scene::materials index -> the file's (only those used)
   json materials_ = json::array();
+  std::vector<uint32_t> imagesOut_;       // Scene::images of the file's textures, in order (only those used)
   bool instancing_ = false;
 
   int material(uint32_t k) {
     const auto [it, added] = materialOut_.emplace(k, int(materials_.size()));
-    if (added) materials_.push_back(materialJson(scene_.materials[k], materials_.size()));
+    if (added) materials_.push_back(materialJson(scene_.materials[k]));
     return it->second;
   }
 };
@@ -105,7 +148,7 @@ int Writer::positions(const float* p, size_t vertices) {
 }
 
 // Unit normals (glTF requires them): a vanished one as the flattened output writes it.
-int Writer::normals(const Mesh& m) {
+std::vector<float> Writer::unitNormals(const Mesh& m) const {
   std::vector<float> n(m.normals.begin(), m.normals.end());
   for (size_t v = 0; v < n.size(); v += 3) {
     const double len = std::sqrt(double(n[v]) * n[v] + double(n[v + 1]) * n[v + 1] + double(n[v + 2]) * n[v + 2]);
@@ -114,17 +157,74 @@ int Writer::normals(const Mesh& m) {
     else if (std::abs(len - 1) > 1e-6)
       for (int d = 0; d < 3; ++d) n[v + d] = float(n[v + d] / len);
   }
-  return accessor(view(n.data(), n.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC3");
+  return n;
 }
 
 // v flipped (glTF's runs down); whole tiles taken off.
-int Writer::texcoords(const Mesh& m, std::array<float, 2> shift) {
+std::vector<float> Writer::flippedTexcoords(const Mesh& m, std::array<float, 2> shift) const {
   std::vector<float> t(m.texcoords.size());
   for (size_t k = 0; k < t.size(); ++k) {
     const float x = m.texcoords[k] - shift[k % 2];
     t[k] = k % 2 ? 1.0f - x : x;
   }
+  return t;
+}
+
+int Writer::normals(const Mesh& m) {
+  const std::vector<float> n = unitNormals(m);
+  return accessor(view(n.data(), n.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC3");
+}
+
+int Writer::texcoords(const Mesh& m, std::array<float, 2> shift) {
+  const std::vector<float> t = flippedTexcoords(m, shift);
   return accessor(view(t.data(), t.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC2");
+}
+
+WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) const {
+  const size_t n = m.vertexCount();
+  const std::vector<float> normals = withNormals ? unitNormals(m) : std::vector<float>();
+  const std::vector<float> texcoords = m.hasTexcoords() ? flippedTexcoords(m, {0, 0}) : std::vector<float>();
+  std::vector<float> colors;
+  if (withColors) {
+    colors.assign(m.colors.begin(), m.colors.end());
+    for (float& x : colors) x = io::clamp01(x);
+  }
+  // Each vertex's attributes side by side, compared as bytes.
+  const size_t stride = 3 + (withNormals ? 3 : 0) + (texcoords.empty() ? 0 : 2) + (withColors ? 3 : 0);
+  std::vector<float> records(stride * n);
+  for (size_t v = 0; v < n; ++v) {
+    float* r = &records[stride * v];
+    r = std::copy_n(&m.positions[3 * v], 3, r);
+    if (withNormals) r = std::copy_n(&normals[3 * v], 3, r);
+    if (!texcoords.empty()) r = std::copy_n(&texcoords[2 * v], 2, r);
+    if (withColors) std::copy_n(&colors[3 * v], 3, r);
+  }
+  WeldedVertices w;
+  w.of.resize(n);
+  std::unordered_map<std::string_view, uint32_t> first;
+  first.reserve(n);
+  const char* bytes = reinterpret_cast<const char*>(records.data());
+  for (size_t v = 0; v < n; ++v) {
+    const auto [it, added] = first.emplace(std::string_view(bytes + 4 * stride * v, 4 * stride), uint32_t(w.count));
+    w.of[v] = it->second;
+    if (!added) continue;
+    ++w.count;
+    w.positions.insert(w.positions.end(), &m.positions[3 * v], &m.positions[3 * v] + 3);
+    if (withNormals) w.normals.insert(w.normals.end(), &normals[3 * v], &normals[3 * v] + 3);
+    if (!texcoords.empty()) w.texcoords.insert(w.texcoords.end(), &texcoords[2 * v], &texcoords[2 * v] + 2);
+    if (withColors) w.colors.insert(w.colors.end(), &colors[3 * v], &colors[3 * v] + 3);
+  }
+  return w;
+}
+
+template <class Indices>
+std::pair<int, int> Writer::indexView(const Indices& indices, size_t vertices) {
+  // 65535 is no index of a 16-bit accessor (primitive restart).
+  if (vertices < 65535) {
+    const std::vector<uint16_t> narrow(indices.begin(), indices.end());
+    return {view(narrow.data(), narrow.size(), kElementArrayBuffer), kUnsignedShort};
+  }
+  return {view(indices.data(), indices.size(), kElementArrayBuffer), kUnsignedInt};
 }
 
 json Writer::sharedAttributes(uint32_t mesh) {
@@ -135,8 +235,8 @@ json Writer::sharedAttributes(uint32_t mesh) {
   json attributes = {{"POSITION", positions(m.positions.data(), m.vertexCount())}};
   if (io::hasNormals(m)) attributes["NORMAL"] = normals(m);
   if (m.hasTexcoords()) attributes["TEXCOORD_0"] = texcoords(m, s.uvShift);
-  sharedIndices_[mesh] = accessor(view(m.indices.data(), m.indices.size(), kElementArrayBuffer), m.indices.size(),
-                                  kUnsignedInt, "SCALAR");
+  const auto [indices, type] = indexView(m.indices, m.vertexCount());
+  sharedIndices_[mesh] = accessor(indices, m.indices.size(), type, "SCALAR");
   return sharedAttributes_[mesh] = attributes;
 }
 
@@ -166,13 +266,16 @@ int Writer::instancedNode(const InstancedPart& part) {
   }
   for (const Trs& t : part.trs)
     for (double x : t.scale) data.push_back(float(x));
-  for (const auto& c : part.colors)
-    for (float x : c) data.push_back(io::clamp01(x));
+  // The colours only where they vary: else the material has the part's one colour.
+  const bool colored = scene_.materials[part.material].vertexColors;
+  if (colored)
+    for (const auto& c : part.colors)
+      for (float x : c) data.push_back(io::clamp01(x));
   const int v = view(data.data(), data.size(), 0);
   json attributes = {{"TRANSLATION", accessor(v, n, kFloat, "VEC3")},
                      {"ROTATION", accessor(v, n, kFloat, "VEC4", 12 * n)},
-                     {"SCALE", accessor(v, n, kFloat, "VEC3", 28 * n)},
-                     {"_COLOR_0", accessor(v, n, kFloat, "VEC3", 40 * n)}};
+                     {"SCALE", accessor(v, n, kFloat, "VEC3", 28 * n)}};
+  if (colored) attributes["_COLOR_0"] = accessor(v, n, kFloat, "VEC3", 40 * n);
   instancing_ = true;
   nodes_.push_back({{"name", scene_.meshes[part.mesh].name},
                     {"mesh", sharedMesh(part.mesh, part.material)},
@@ -181,7 +284,7 @@ int Writer::instancedNode(const InstancedPart& part) {
   return int(nodes_.size() - 1);
 }
 
-int Writer::mirroredNode(const InstancedPart& part, size_t k) {
+int Writer::instanceNode(const InstancedPart& part, size_t k) {
   const Trs& t = part.trs[k];
   nodes_.push_back({{"name", scene_.meshes[part.mesh].name},
                     {"mesh", sharedMesh(part.mesh, part.material)},
@@ -192,34 +295,39 @@ int Writer::mirroredNode(const InstancedPart& part, size_t k) {
   return int(nodes_.size() - 1);
 }
 
-// The group's baked parts as one glTF mesh: per part its own vertices, a primitive per
-// image (untextured last) and one for its line segments.
+// The group's baked parts as one glTF mesh: per part its own vertices (equal ones
+// welded; no normals where the part is shaded flat, as readers then shade it), a
+// primitive per image (untextured last) and one for its line segments.
 int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) {
   json primitives = json::array();
   for (const BakedPart& part : g.baked) {
     const Mesh& m = part.mesh;
     const Material& untextured = scene_.materials[part.materials.back()];
-    json attributes = {{"POSITION", positions(m.positions.data(), m.vertexCount())}};
-    if (io::hasNormals(m)) attributes["NORMAL"] = normals(m);
-    if (m.hasTexcoords()) attributes["TEXCOORD_0"] = texcoords(m, {0, 0});
-    if (untextured.vertexColors && io::hasColors(m)) {
-      std::vector<float> c(m.colors.begin(), m.colors.end());
-      for (float& x : c) x = io::clamp01(x);
-      attributes["COLOR_0"] = accessor(view(c.data(), c.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC3");
-    }
+    const bool colored = untextured.vertexColors && io::hasColors(m);
+    const WeldedVertices w = weld(m, io::hasNormals(m) && !flatShaded(m), colored);
+    json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
+    if (!w.normals.empty())
+      attributes["NORMAL"] = accessor(view(w.normals.data(), w.normals.size(), kArrayBuffer), w.count, kFloat, "VEC3");
+    if (!w.texcoords.empty())
+      attributes["TEXCOORD_0"] =
+          accessor(view(w.texcoords.data(), w.texcoords.size(), kArrayBuffer), w.count, kFloat, "VEC2");
+    if (colored)
+      attributes["COLOR_0"] = accessor(view(w.colors.data(), w.colors.size(), kArrayBuffer), w.count, kFloat, "VEC3");
     // The triangles grouped by image, as runs say; untextured ones (-1) last.
     std::vector<uint32_t> indices;
     indices.reserve(m.indices.size());
     std::vector<std::pair<uint32_t, size_t>> groups;  // (material, index count)
+    const auto put = [&](auto begin, auto end) {
+      for (auto it = begin; it != end; ++it) indices.push_back(w.of[*it]);
+    };
     const auto add = [&](int32_t image) {
       const size_t before = indices.size();
       if (!m.textured()) {
-        if (image < 0) indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+        if (image < 0) put(m.indices.begin(), m.indices.end());
       } else {
         for (size_t r = 0; r < m.textureRuns.size(); ++r)
           if (m.textureRuns[r].texture == image)
-            indices.insert(indices.end(), m.indices.begin() + 3 * m.textureRuns[r].firstTriangle,
-                           m.indices.begin() + 3 * m.runEnd(r));
+            put(m.indices.begin() + 3 * m.textureRuns[r].firstTriangle, m.indices.begin() + 3 * m.runEnd(r));
       }
       if (indices.size() > before)
         groups.push_back({part.materials[image < 0 ? part.materials.size() - 1 : size_t(image)], indices.size() - before});
@@ -227,20 +335,24 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     for (int32_t t = 0; t < int32_t(m.textures.size()); ++t) add(t);
     add(-1);
     if (!indices.empty()) {
-      const int v = view(indices.data(), indices.size(), kElementArrayBuffer);
+      const auto [v, type] = indexView(indices, w.count);
+      const size_t size = type == kUnsignedShort ? 2 : 4;
       size_t first = 0;
       for (const auto& [material, count] : groups) {
         primitives.push_back({{"attributes", attributes},
-                              {"indices", accessor(v, count, kUnsignedInt, "SCALAR", 4 * first)},
+                              {"indices", accessor(v, count, type, "SCALAR", size * first)},
                               {"material", this->material(material)},
                               {"mode", kTriangles}});
         first += count;
       }
     }
     if (!m.lines.empty()) {
-      const int v = view(m.lines.data(), m.lines.size(), kElementArrayBuffer);
+      std::vector<uint32_t> lines;
+      lines.reserve(m.lines.size());
+      for (uint32_t k : m.lines) lines.push_back(w.of[k]);
+      const auto [v, type] = indexView(lines, w.count);
       primitives.push_back({{"attributes", attributes},
-                            {"indices", accessor(v, m.lines.size(), kUnsignedInt, "SCALAR")},
+                            {"indices", accessor(v, lines.size(), type, "SCALAR")},
                             {"material", material(part.materials.back())},
                             {"mode", kLines}});
     }
@@ -255,9 +367,13 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
 // instanced part and per mirrored instance.
 int Writer::groupNode(const GroupNode& g, json node) {
   json children = json::array();
-  for (const InstancedPart& p : g.instanced) children.push_back(instancedNode(p));
+  for (const InstancedPart& p : g.instanced)
+    if (scene_.instancing == Instancing::Nodes)
+      for (size_t k = 0; k < p.instances.size(); ++k) children.push_back(instanceNode(p, k));
+    else
+      children.push_back(instancedNode(p));
   for (const InstancedPart& p : g.mirrored)
-    for (size_t k = 0; k < p.instances.size(); ++k) children.push_back(mirroredNode(p, k));
+    for (size_t k = 0; k < p.instances.size(); ++k) children.push_back(instanceNode(p, k));
   bool baked = false;
   const int mesh = bakedMesh(g, node.value("name", std::string("baked")), baked);
   if (baked) node["mesh"] = mesh;
@@ -294,16 +410,16 @@ int Writer::startNode(const StartNode& s) {
   return int(nodes_.size() - 1);
 }
 
-json Writer::materialJson(const Material& m, size_t index) const {
+json Writer::materialJson(const Material& m) {
   json pbr = {{"metallicFactor", 0.0}, {"roughnessFactor", 0.8}};
   if (!m.vertexColors && m.color != std::array<float, 3>{1, 1, 1})
     pbr["baseColorFactor"] = {io::clamp01(m.color[0]), io::clamp01(m.color[1]), io::clamp01(m.color[2]), 1.0f};
-  std::string name = "material " + std::to_string(index);
   if (m.image >= 0) {
-    pbr["baseColorTexture"] = {{"index", m.image}};
-    name = std::filesystem::path(scene_.images[size_t(m.image)]).stem().string() + " " + std::to_string(index);
+    const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(m.image));
+    pbr["baseColorTexture"] = {{"index", at - imagesOut_.begin()}};
+    if (at == imagesOut_.end()) imagesOut_.push_back(uint32_t(m.image));
   }
-  return {{"doubleSided", true}, {"name", name}, {"pbrMetallicRoughness", std::move(pbr)}};
+  return {{"doubleSided", true}, {"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
 }
 
 bool Writer::verticesFinite(std::string& error) const {
@@ -327,9 +443,9 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
   json roots = json::array();
   for (const StartNode& s : scene_.starts) roots.push_back(startNode(s));
   // The images after the geometry, each whole.
-  if (!scene_.images.empty()) {
+  if (!imagesOut_.empty()) {
     Mesh holder;  // io::readImages reads a mesh's images
-    holder.textures = scene_.images;
+    for (uint32_t k : imagesOut_) holder.textures.push_back(scene_.images[k]);
     holder.textureRuns.push_back({0, 0});
     std::vector<io::EmbeddedImage> images;
     if (!io::readImages(holder, images, error)) return false;

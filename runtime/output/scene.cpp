@@ -3,8 +3,11 @@
 #include "runtime/assemble.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -18,8 +21,11 @@ constexpr uint32_t kNone = UINT32_MAX;
 // 1 m piece), normals to 2^-16 and texture coordinates, whole tiles taken off, to 2^-12 of
 // a tile: the leaves of a facade repeat up to rounding, not bit for bit.
 constexpr double kPositionStep = 1.0 / (1 << 20), kNormalStep = 1.0 / (1 << 16), kTexcoordStep = 1.0 / (1 << 12);
-// A group with more baked colours than this keeps them per vertex (one material) rather
-// than a material each.
+// Per-vertex variation: a group (one start shape's instances of one symbol, rule or
+// label) whose instances carry more distinct colours than this — colours computed per
+// shape, as `Color(P.rgb)` from a picture or `Color(Rand(...), ...)` — keeps them per
+// vertex (COLOR_0, baked) and per instance (_COLOR_0, instanced) under white materials;
+// any other group has a material per colour and no vertex colours.
 constexpr size_t kMaxBakedColors = 64;
 // What one instance of EXT_mesh_gpu_instancing costs in the file (translation, rotation,
 // scale, colour), and what an instanced node costs once (its node, mesh and accessors in
@@ -89,11 +95,38 @@ struct Builder {
 
   std::map<std::tuple<float, float, float, int32_t, bool>, uint32_t> materialIndex;
 
+  std::unordered_map<std::string, int> materialNames;  // -> how many materials took it
+
   uint32_t material(const Material& m) {
     const auto [it, added] = materialIndex.emplace(std::make_tuple(m.color[0], m.color[1], m.color[2], m.image, m.vertexColors),
                                                    uint32_t(scene.materials.size()));
-    if (added) scene.materials.push_back(m);
+    if (added) {
+      scene.materials.push_back(m);
+      scene.materials.back().name = uniqueName(m);
+    }
     return it->second;
+  }
+
+  std::string uniqueName(const Material& m) {
+    std::string name;
+    if (m.image >= 0) {
+      for (char c : std::filesystem::path(scene.images[size_t(m.image)]).stem().string())
+        name += std::isspace(static_cast<unsigned char>(c)) ? '_' : c;
+      name += '_';
+    }
+    if (m.vertexColors) {
+      name += "vertex_colors";
+    } else {
+      char hex[8];
+      const auto byte = [](float c) { return int(std::lround(255.0 * (std::isfinite(c) ? std::clamp(c, 0.0f, 1.0f) : 0.0f))); };
+      std::snprintf(hex, sizeof hex, "%02x%02x%02x", byte(m.color[0]), byte(m.color[1]), byte(m.color[2]));
+      name += hex;
+    }
+    const int taken = ++materialNames[name];
+    if (taken == 1) return name;
+    std::string again = name + "_" + std::to_string(taken);
+    ++materialNames[again];  // a later colour cannot round to a name with a suffix
+    return again;
   }
 
   // Which instances can share a mesh, and which mesh: rigidly placed, not bent, drawing
@@ -176,10 +209,26 @@ struct Builder {
     return assembleInstances(sub, *in.library, *in.meshOf);
   }
 
+  // Whether the group's colours vary per instance (see kMaxBakedColors): then its parts
+  // carry their colours per vertex (baked) or per instance (_COLOR_0), under white
+  // materials, instead of a material per colour.
+  bool colorsVary(const std::vector<uint32_t>& members) const {
+    std::vector<std::array<float, 3>> colors;
+    for (uint32_t i : members) {
+      const auto& c = list.instances[i].color;
+      if (std::find(colors.begin(), colors.end(), c) != colors.end()) continue;
+      if (colors.size() == kMaxBakedColors) return true;
+      colors.push_back(c);
+    }
+    return false;
+  }
+
   GroupNode buildGroup(std::string name, const std::vector<uint32_t>& members) {
     GroupNode g;
     g.name = std::move(name);
     g.instanceCount = members.size();
+    // (A node per instance has no colour of its own but its material's.)
+    const bool vary = colorsVary(members) && in.instancing != Instancing::Nodes;
     std::vector<uint32_t> baked;
     std::map<std::tuple<uint32_t, uint32_t, bool>, size_t> partOf;  // (mesh, material, mirrored)
     std::vector<std::pair<bool, InstancedPart>> parts;
@@ -190,7 +239,9 @@ struct Builder {
       }
       const Instance& inst = list.instances[i];
       const bool mirrored = fitOf[i] == TrsFit::Mirrored;
-      const uint32_t mat = material(materialOf(inst));
+      Material look = materialOf(inst);
+      if (vary) look.color = {1, 1, 1}, look.vertexColors = true;
+      const uint32_t mat = material(look);
       const auto [it, added] = partOf.emplace(std::make_tuple(sharedOf[i], mat, mirrored), parts.size());
       if (added) parts.push_back({mirrored, InstancedPart{sharedOf[i], mat, {}, {}, {}}});
       InstancedPart& p = parts[it->second].second;
@@ -216,13 +267,13 @@ struct Builder {
     }
     std::sort(baked.begin(), baked.end());  // in placement order, as flattened
     scene.bakedCount += baked.size();
-    bakeParts(baked, g);
+    bakeParts(baked, vary, g);
     return g;
   }
 
-  // One baked part per colour (textured stretches with their images), or with many
-  // colours one part coloured per vertex.
-  void bakeParts(const std::vector<uint32_t>& baked, GroupNode& g) {
+  // One baked part per colour (textured stretches with their images), or where the
+  // group's colours vary one part coloured per vertex.
+  void bakeParts(const std::vector<uint32_t>& baked, bool vary, GroupNode& g) {
     if (baked.empty()) return;
     for (uint32_t i : baked) {
       const std::string& asset = list.assets[list.instances[i].asset];
@@ -232,21 +283,16 @@ struct Builder {
     }
     std::vector<std::array<float, 3>> colors;
     std::vector<std::vector<uint32_t>> byColor;
-    for (uint32_t i : baked) {
-      const auto& c = list.instances[i].color;
-      size_t k = std::find(colors.begin(), colors.end(), c) - colors.begin();
-      if (k == colors.size()) {
-        if (colors.size() == kMaxBakedColors) {
-          byColor.assign(1, baked);
-          colors.clear();
-          break;
-        }
-        colors.push_back(c);
-        byColor.emplace_back();
+    if (vary)
+      byColor.assign(1, baked);
+    else
+      for (uint32_t i : baked) {
+        const auto& c = list.instances[i].color;
+        const size_t k = std::find(colors.begin(), colors.end(), c) - colors.begin();
+        if (k == colors.size()) colors.push_back(c), byColor.emplace_back();
+        byColor[k].push_back(i);
       }
-      byColor[k].push_back(i);
-    }
-    const bool perVertex = colors.empty();
+    const bool perVertex = vary;
     for (size_t k = 0; k < byColor.size(); ++k) {
       BakedPart part;
       part.mesh = bake(byColor[k]);
@@ -287,6 +333,7 @@ struct Builder {
 
   void build() {
     scene.groupBy = in.groupBy;
+    scene.instancing = in.instancing;
     findShared();
     const auto n = uint32_t(list.instances.size());
     std::vector<uint32_t> bounds = list.startBounds;
@@ -310,6 +357,32 @@ Scene buildScene(const SceneInput& in) {
   return std::move(b.scene);
 }
 
+StartSummary summarizeStart(const Scene& scene, const StartNode& start) {
+  StartSummary sum;
+  const auto add = [&](const float* p, const std::array<double, 16>* m) {
+    double w[3];
+    for (int d = 0; d < 3; ++d)
+      w[d] = m ? (*m)[d] * p[0] + (*m)[4 + d] * p[1] + (*m)[8 + d] * p[2] + (*m)[12 + d] : double(p[d]);
+    for (int d = 0; d < 3; ++d) sum.lo[d] = std::min(sum.lo[d], w[d]), sum.hi[d] = std::max(sum.hi[d], w[d]);
+  };
+  for (const GroupNode& g : start.groups) {
+    for (const BakedPart& p : g.baked) {
+      sum.triangles += p.mesh.triangleCount();
+      for (size_t v = 0; v < p.mesh.vertexCount(); ++v) add(&p.mesh.positions[3 * v], nullptr);
+    }
+    for (const auto* parts : {&g.instanced, &g.mirrored})
+      for (const InstancedPart& p : *parts) {
+        const Mesh& m = *scene.meshes[p.mesh].mesh;
+        sum.triangles += m.triangleCount() * p.trs.size();
+        for (const Trs& t : p.trs) {
+          const std::array<double, 16> matrix = composeTrs(t);
+          for (size_t v = 0; v < m.vertexCount(); ++v) add(&m.positions[3 * v], &matrix);
+        }
+      }
+  }
+  return sum;
+}
+
 bool parseGroupBy(const std::string& name, GroupBy& out) {
   if (name == "none") return out = GroupBy::None, true;
   if (name == "symbol") return out = GroupBy::Symbol, true;
@@ -322,6 +395,7 @@ bool parseInstancing(const std::string& name, Instancing& out) {
   if (name == "off") return out = Instancing::Off, true;
   if (name == "auto") return out = Instancing::Auto, true;
   if (name == "on") return out = Instancing::On, true;
+  if (name == "nodes") return out = Instancing::Nodes, true;
   return false;
 }
 

@@ -17,6 +17,7 @@
 #include "runtime/output/trs.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -25,7 +26,11 @@
 namespace fgsg::rt::output {
 
 enum class GroupBy : uint8_t { None, Symbol, Rule, Label };
-enum class Instancing : uint8_t { Off, Auto, On };
+// Off: everything baked; Auto: instanced where that makes the file smaller; On: every
+// rigid repeat instanced (EXT_mesh_gpu_instancing); Nodes: as On, but each instance a
+// node of its own placing the shared mesh (core glTF, which readers without the
+// extension — Blender 3.4 — import as linked duplicates).
+enum class Instancing : uint8_t { Off, Auto, On, Nodes };
 
 // What names a start shape and what it carries (a lot's feature id and properties).
 struct StartInfo {
@@ -56,12 +61,18 @@ struct SharedMesh {
   size_t uses = 0;                     // instances placing it, in the whole scene
 };
 
-// A glTF PBR material: base colour factor, and image (index into Scene::images, -1: none);
-// vertexColors: the colours are per vertex (COLOR_0) and the factor is white.
+// A glTF PBR material (metallic 0, roughness 0.8, double-sided): base colour factor, and
+// image (index into Scene::images, -1: none; sampled with REPEAT); vertexColors: the
+// colours vary (scene.cpp, kMaxBakedColors) and are per vertex (COLOR_0) or per instance
+// (_COLOR_0), the factor white.
 struct Material {
   std::array<float, 3> color{1, 1, 1};
   int32_t image = -1;
   bool vertexColors = false;
+  // Unique in the scene, no spaces (an OBJ's `usemtl` takes it): the image's file name
+  // without extension, then the colour as rrggbb or "vertex_colors" ("brick_ffffff",
+  // "d8c4a2"), with _2, _3, ... after a name taken by a colour that rounds alike.
+  std::string name;
   bool operator==(const Material&) const = default;
 };
 
@@ -70,7 +81,7 @@ struct InstancedPart {
   uint32_t material = 0;  // Scene::materials
   std::vector<uint32_t> instances;  // indices into the instance list
   std::vector<Trs> trs;             // per instance
-  std::vector<std::array<float, 3>> colors;  // per instance
+  std::vector<std::array<float, 3>> colors;  // per instance (written where the material's vertexColors)
 };
 
 struct BakedPart {
@@ -101,11 +112,20 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<std::string> images;  // paths
   GroupBy groupBy = GroupBy::Symbol;
+  Instancing instancing = Instancing::Auto;
   size_t instancedCount = 0, mirroredCount = 0, bakedCount = 0;
 };
 
 // Builds the scene. May throw std::bad_alloc, and std::out_of_range as assembleInstances.
 Scene buildScene(const SceneInput& in);
+
+// What a start shape's subtree draws: its triangles (each instance's) and world bounds
+// (lo > hi when it draws nothing).
+struct StartSummary {
+  size_t triangles = 0;
+  std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+};
+StartSummary summarizeStart(const Scene& scene, const StartNode& start);
 
 // "symbol" -> GroupBy::Symbol etc.; false for an unknown name.
 bool parseGroupBy(const std::string& name, GroupBy& out);

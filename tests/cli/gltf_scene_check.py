@@ -116,7 +116,8 @@ def world_bounds(doc, bin_chunk):
                 t = accessor(doc, bin_chunk, a["TRANSLATION"]).astype(float)
                 r = accessor(doc, bin_chunk, a["ROTATION"]).astype(float)
                 s = accessor(doc, bin_chunk, a["SCALE"]).astype(float)
-                c = accessor(doc, bin_chunk, a["_COLOR_0"])
+                # Colours per instance only where a group's colours vary (else the material's).
+                c = accessor(doc, bin_chunk, a["_COLOR_0"]) if "_COLOR_0" in a else t
                 if not (len(t) == len(r) == len(s) == len(c)):
                     fail(f"node {i}: instancing accessors of different counts")
                 norms = np.linalg.norm(r, axis=1)
@@ -154,8 +155,7 @@ def main():
     listed = json.load(open(args.instances))
     per_asset = collections.Counter(i["asset"] for i in listed["instances"])
 
-    if args.expect_instanced or any(
-            "EXT_mesh_gpu_instancing" in n.get("extensions", {}) for n in doc.get("nodes", [])):
+    if any("EXT_mesh_gpu_instancing" in n.get("extensions", {}) for n in doc.get("nodes", [])):
         if "EXT_mesh_gpu_instancing" not in doc.get("extensionsUsed", []):
             fail("EXT_mesh_gpu_instancing is used but not in extensionsUsed")
 
