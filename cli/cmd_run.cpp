@@ -111,21 +111,11 @@ RunOptions parseRunOptions(const Args& args) {
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
   if (o.derive.seedDensity.empty() != (o.derive.seedCount == 0))
     throw UsageError{"--seed-density NAME and --seed-count N go together: N seeds drawn where texture NAME is bright"};
-  if (o.output.empty()) o.output = std::filesystem::path(o.file).stem().string() + ".glb";
+  // With --split-output alone, only the files per start shape are written.
+  if (o.output.empty() && o.scene.splitOutput.empty())
+    o.output = std::filesystem::path(o.file).stem().string() + ".glb";
   // Bad output names are usage errors, found before any work is done.
-  const std::string ext = lowerExtension(o.output);
-  const auto& known = rt::io::supportedMeshExtensions();
-  if (writesScene(o.scene, o.output)) {
-    if (ext != ".glb" && ext != ".gltf")
-      throw UsageError{"-o " + o.output + ": --instancing and --group-by lay out a glTF scene (name it .glb or .gltf)"};
-    // Rule and label groups need to know which rule placed each instance.
-    if (o.scene.groupBy == rt::output::GroupBy::Rule || o.scene.groupBy == rt::output::GroupBy::Label)
-      o.derive.recordOrigins = true;
-  } else if (std::find(known.begin(), known.end(), ext) == known.end()) {
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw UsageError{"-o " + o.output + ": unknown output format (use " + list + ")"};
-  }
+  checkOutput(o.scene, o.output, o.derive);
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   if (!o.lines.empty() && lowerExtension(o.lines) != ".json")
@@ -270,10 +260,11 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   progress.phase("writing");
   rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
-  const bool staged = writesScene(opt.scene, opt.output)
-                         ? stageScene(opt.scene, compiled->module, opt.derive, result, assets, meshOf, opt.output,
-                                      outputs, error)
-                         : rt::io::stageMesh(mesh, opt.output, outputs, error);
+  const SceneSource source{compiled->module, opt.derive, result, assets, meshOf};
+  const bool staged =
+      (opt.output.empty() || (writesScene(opt.scene, opt.output) ? stageScene(opt.scene, source, opt.output, outputs, error)
+                                                                  : rt::io::stageMesh(mesh, opt.output, outputs, error))) &&
+      (opt.scene.splitOutput.empty() || stageSplitOutput(opt.scene, source, opt.output, outputs, error));
   if (!staged ||
       (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
       (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error)) ||
@@ -311,7 +302,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   progress.done();
 
   if (!opt.quiet)
-    std::cerr << "wrote " << opt.output << " (" << result.instances.instances.size()
+    std::cerr << "wrote " << (opt.output.empty() ? opt.scene.splitOutput + "/" : opt.output) << " ("
+              << result.instances.instances.size()
               << " instances, " << mesh.triangleCount() << " triangles"
               << (mesh.lineCount() ? ", " + std::to_string(mesh.lineCount()) + " line segments" : std::string()) << ")"
               << (opt.preview.empty() ? "" : ", preview " + opt.preview) << "\n";

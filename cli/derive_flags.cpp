@@ -33,11 +33,17 @@ void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive) {
 void sceneFlags(CommandLine& cl, SceneFlags& scene) {
   cl.option("--instancing", [&scene](const std::string& v) {
     if (!rt::output::parseInstancing(v, scene.instancing))
-      throw UsageError{"--instancing " + v + ": use auto, on or off"};
+      throw UsageError{"--instancing " + v + ": use auto, on, nodes or off"};
+    scene.instancingGiven = true;
   });
   cl.option("--group-by", [&scene](const std::string& v) {
     if (!rt::output::parseGroupBy(v, scene.groupBy))
       throw UsageError{"--group-by " + v + ": use symbol, rule, label or none"};
+    scene.groupByGiven = true;
+  });
+  cl.option("--split-output", [&scene](const std::string& v) {
+    if (v.empty()) throw UsageError{"--split-output needs a folder"};
+    scene.splitOutput = v;
   });
 }
 

@@ -16,15 +16,15 @@ void setFlag(CommandLine& cl, rt::DeriveOptions& derive);
 // --surface MESH, --surface-size S, --repair-surface: the surface grown on.
 void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive);
 
-// --instancing auto|on|off, --group-by symbol|rule|label|none: the glTF scene's layout
-// (runtime/output/scene.h). Both left at off / none (the default for now): the one
-// flattened mesh of before.
+// --instancing auto|on|off, --group-by symbol|rule|label|none, --split-output DIR: the
+// output's layout (runtime/output/scene.h, cli/scene_output.h). A glTF output is a scene
+// by default (auto / symbol); `--instancing off --group-by none` gives the one flattened
+// mesh of before. OBJ is flattened unless --group-by is given; PLY is always flattened.
 struct SceneFlags {
-  rt::output::Instancing instancing = rt::output::Instancing::Off;
-  rt::output::GroupBy groupBy = rt::output::GroupBy::None;
-  bool flattened() const {
-    return instancing == rt::output::Instancing::Off && groupBy == rt::output::GroupBy::None;
-  }
+  rt::output::Instancing instancing = rt::output::Instancing::Auto;
+  rt::output::GroupBy groupBy = rt::output::GroupBy::Symbol;
+  bool instancingGiven = false, groupByGiven = false;
+  std::string splitOutput;  // --split-output: a file per start shape in this folder
 };
 void sceneFlags(CommandLine& cl, SceneFlags& scene);
 

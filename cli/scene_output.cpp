@@ -1,7 +1,15 @@
 #include "cli/scene_output.h"
 
 #include "cli/options.h"
+#include "runtime/io/write_mesh.h"
 #include "runtime/output/gltf_writer.h"
+#include "runtime/output/obj_scene_writer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
 
 namespace fgsg::cli {
 
@@ -37,34 +45,140 @@ rt::output::StartInfo lotInfo(const rt::Lot& lot) {
   return info;
 }
 
-}  // namespace
-
-bool writesScene(const SceneFlags& flags, const std::string& path) {
-  return !flags.flattened() || lowerExtension(path) == ".gltf";
-}
-
-bool stageScene(const SceneFlags& flags, const ir::Module& module, const rt::DeriveOptions& derive,
-                const rt::DeriveResult& result, const rt::AssetLibrary& assets, const std::vector<int>& meshOf,
-                const std::string& path, rt::io::OutputTransaction& outputs, std::string& error) {
+// The scene of the run as `layout` lays it out (OBJ: no instances).
+rt::output::Scene buildScene(const SceneFlags& flags, const SceneSource& run, OutputLayout layout) {
+  const rt::DeriveResult& result = run.result;
   rt::output::SceneInput in;
   in.list = &result.instances;
-  in.library = &assets;
-  in.meshOf = &meshOf;
+  in.library = &run.assets;
+  in.meshOf = &run.meshOf;
   in.groupBy = flags.groupBy;
-  in.instancing = flags.instancing;
-  if (flags.groupBy == rt::output::GroupBy::Rule || flags.groupBy == rt::output::GroupBy::Label)
-    in.ruleGroups = ruleGroups(module, flags.groupBy);
+  in.instancing = layout == OutputLayout::ObjScene ? rt::output::Instancing::Off : flags.instancing;
+  if (layout == OutputLayout::Flattened)  // a flattened -o split into files: each start alone, flattened
+    in.groupBy = rt::output::GroupBy::None, in.instancing = rt::output::Instancing::Off;
+  if (in.groupBy == rt::output::GroupBy::Rule || in.groupBy == rt::output::GroupBy::Label)
+    in.ruleGroups = ruleGroups(run.module, in.groupBy);
   const size_t starts = result.instances.startBounds.size() > 1 ? result.instances.startBounds.size() - 1 : 1;
   for (size_t k = 0; k < starts; ++k) {
-    if (!derive.lots.empty() && k < derive.lots.size())
-      in.starts.push_back(lotInfo(derive.lots[k]));
+    if (!run.derive.lots.empty() && k < run.derive.lots.size())
+      in.starts.push_back(lotInfo(run.derive.lots[k]));
     else if (starts > 1)
       in.starts.push_back({"seed " + std::to_string(k), {}, {}});
     else
       in.starts.push_back({"axiom", {}, {}});
   }
-  const rt::output::Scene scene = rt::output::buildScene(in);
+  return rt::output::buildScene(in);
+}
+
+bool stageAs(const rt::output::Scene& scene, OutputLayout layout, const std::string& path,
+             rt::io::OutputTransaction& outputs, std::string& error) {
+  if (layout == OutputLayout::ObjScene) {
+    if (rt::output::stageObjScene(scene, path, outputs, error)) return true;
+    error = path + ": " + error;
+    return false;
+  }
   return rt::output::stageGltf(scene, path, outputs, error);
+}
+
+// A start shape's name as a file name.
+std::string fileStem(const std::string& name) {
+  std::string stem;
+  for (char c : name) stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+  if (stem.empty() || stem[0] == '.') stem = "start" + stem;
+  return stem;
+}
+
+}  // namespace
+
+OutputLayout checkOutput(const SceneFlags& flags, const std::string& path, rt::DeriveOptions& derive) {
+  using rt::output::GroupBy;
+  using rt::output::Instancing;
+  OutputLayout layout = OutputLayout::Flattened;
+  const std::string ext = lowerExtension(path);
+  const auto& known = rt::io::supportedMeshExtensions();
+  if (path.empty()) {
+    layout = OutputLayout::GltfScene;
+  } else if (ext == ".gltf" || (ext == ".glb" && (flags.instancing != Instancing::Off || flags.groupBy != GroupBy::None))) {
+    layout = OutputLayout::GltfScene;
+  } else if (ext == ".obj") {
+    if (flags.instancingGiven && flags.instancing != Instancing::Off)
+      throw UsageError{"-o " + path + ": OBJ has no instances; --instancing lays out a glTF scene (name it .glb or .gltf)"};
+    if (flags.groupByGiven && flags.groupBy != GroupBy::None) layout = OutputLayout::ObjScene;
+  } else if (ext == ".ply") {
+    if ((flags.instancingGiven && flags.instancing != Instancing::Off) ||
+        (flags.groupByGiven && flags.groupBy != GroupBy::None) || !flags.splitOutput.empty())
+      throw UsageError{"-o " + path + ": PLY is one flattened mesh; --instancing, --group-by and --split-output lay out a glTF scene (.glb, .gltf) or a grouped OBJ"};
+  } else if (std::find(known.begin(), known.end(), ext) == known.end()) {
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw UsageError{"-o " + path + ": unknown output format (use " + list + " or .gltf)"};
+  }
+  // Rule and label groups need to know which rule placed each instance.
+  if ((layout != OutputLayout::Flattened || !flags.splitOutput.empty()) &&
+      (flags.groupBy == GroupBy::Rule || flags.groupBy == GroupBy::Label))
+    derive.recordOrigins = true;
+  return layout;
+}
+
+bool writesScene(const SceneFlags& flags, const std::string& path) {
+  rt::DeriveOptions unused;
+  return !path.empty() && checkOutput(flags, path, unused) != OutputLayout::Flattened;
+}
+
+bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::string& path,
+                rt::io::OutputTransaction& outputs, std::string& error) {
+  rt::DeriveOptions unused;
+  const OutputLayout layout = checkOutput(flags, path, unused);
+  return stageAs(buildScene(flags, run, layout), layout, path, outputs, error);
+}
+
+bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,
+                      rt::io::OutputTransaction& outputs, std::string& error) {
+  namespace fs = std::filesystem;
+  rt::DeriveOptions unused;
+  OutputLayout layout = checkOutput(flags, path, unused);
+  std::string ext = path.empty() ? ".glb" : fs::path(path).extension().string();
+  SceneFlags split = flags;
+  if (lowerExtension(path) == ".obj") {
+    layout = OutputLayout::ObjScene;
+    if (!flags.groupByGiven) split.groupBy = rt::output::GroupBy::None;  // as the flattened OBJ: no g lines
+  }
+  const fs::path dir(flags.splitOutput);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return error = "--split-output " + flags.splitOutput + ": " + ec.message(), false;
+  rt::output::Scene scene = buildScene(split, run, layout);
+  // Each start shape alone in a scene sharing the whole one's meshes and materials (the
+  // writers take only what it uses).
+  rt::output::Scene one;
+  one.meshes = scene.meshes;
+  one.materials = scene.materials;
+  one.images = scene.images;
+  one.groupBy = scene.groupBy;
+  nlohmann::json files = nlohmann::json::array();
+  std::set<std::string> taken = {"manifest"};
+  for (rt::output::StartNode& start : scene.starts) {
+    std::string stem = fileStem(start.info.name);
+    if (!taken.insert(stem).second) taken.insert(stem += "_" + std::to_string(start.index));
+    const std::string name = stem + ext;
+    const rt::output::StartSummary sum = rt::output::summarizeStart(scene, start);
+    nlohmann::json entry = {{"file", name},
+                            {"start", start.index},
+                            {"name", start.info.name},
+                            {"instances", start.instanceCount},
+                            {"triangles", sum.triangles}};
+    if (sum.lo[0] <= sum.hi[0])
+      entry["bounds"] = {{"min", sum.lo}, {"max", sum.hi}};
+    else
+      entry["bounds"] = nullptr;
+    files.push_back(std::move(entry));
+    one.starts.assign(1, std::move(start));
+    const bool staged = stageAs(one, layout, (dir / name).string(), outputs, error);
+    start = std::move(one.starts.front());
+    if (!staged) return false;
+  }
+  const nlohmann::json manifest = {{"format", "fgsg-split-output"}, {"version", 1}, {"files", std::move(files)}};
+  return outputs.stage((dir / "manifest.json").string(), manifest.dump(1) + "\n", error);
 }
 
 }  // namespace fgsg::cli

@@ -1,6 +1,7 @@
-// fgsg run's structured glTF output: the scene (runtime/output/scene.h) built from the
+// fgsg run's structured output: the scene (runtime/output/scene.h) built from the
 // derivation, its start shapes named after the lots (or seeds, or the axiom) and its
-// rule and label groups after the grammar's rules.
+// rule and label groups after the grammar's rules, written as glTF or OBJ, whole or a
+// file per start shape (--split-output).
 #pragma once
 
 #include "cli/derive_flags.h"
@@ -14,14 +15,41 @@
 
 namespace fgsg::cli {
 
-// Whether `-o path` is written as a scene: asked by the flags, or a .gltf (which has no
-// flattened writer).
+// How a file is written under the flags, by its extension: .glb a scene unless
+// `--instancing off --group-by none`; .gltf always a scene; .obj grouped (o/g, a .mtl
+// per material) when --group-by other than none is given, else flattened; .ply flattened.
+enum class OutputLayout { Flattened, GltfScene, ObjScene };
+
+// The layout of `path` (empty: none, --split-output alone). Throws UsageError for an
+// unknown extension, or a layout the format has not (instancing asked of OBJ, a scene of
+// PLY, --split-output as PLY), and sets derive.recordOrigins where rule and label groups
+// need them.
+OutputLayout checkOutput(const SceneFlags& flags, const std::string& path, rt::DeriveOptions& derive);
+
+// Whether `-o path` is written as a scene (else by rt::io::stageMesh, flattened).
 bool writesScene(const SceneFlags& flags, const std::string& path);
 
-// Builds the scene of `result` and stages it as `path` (.glb / .gltf) in `outputs`.
-// False and a message (an image that cannot be embedded, a vertex not finite).
-bool stageScene(const SceneFlags& flags, const ir::Module& module, const rt::DeriveOptions& derive,
-                const rt::DeriveResult& result, const rt::AssetLibrary& assets, const std::vector<int>& meshOf,
-                const std::string& path, rt::io::OutputTransaction& outputs, std::string& error);
+// What stageScene and stageSplitOutput read of the run.
+struct SceneSource {
+  const ir::Module& module;
+  const rt::DeriveOptions& derive;
+  const rt::DeriveResult& result;
+  const rt::AssetLibrary& assets;
+  const std::vector<int>& meshOf;
+};
+
+// Builds the scene of the run and stages it as `path` (.glb / .gltf / .obj with its .mtl)
+// in `outputs`. False and a message (an image that cannot be embedded, a vertex not
+// finite).
+bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::string& path,
+                rt::io::OutputTransaction& outputs, std::string& error);
+
+// --split-output DIR: a file per start shape in DIR (created if missing), named after it
+// (`lot-17.glb`; characters other than letters, digits, '-', '_' and '.' made '_', and
+// `_N` after a name taken), in the format of `path` (.glb when it is empty or flattened
+// .glb: the per-start scenes), and DIR/manifest.json listing them; all staged in
+// `outputs`, so that they replace what was there together.
+bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,
+                      rt::io::OutputTransaction& outputs, std::string& error);
 
 }  // namespace fgsg::cli

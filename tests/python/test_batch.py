@@ -132,7 +132,7 @@ def test_a_job_may_derive_lot_footprints(tmp_path):
                              "output": str(tmp_path / "block.glb")})
     assert outcome["ok"], outcome
     subprocess.run([os.environ["FGSG_BINARY"], "run", city, "--lots", lots, "--seed", "2", "-o",
-                    str(tmp_path / "cli.glb"), "--quiet"], check=True)
+                    str(tmp_path / "cli.glb"), "--quiet", "--instancing", "off", "--group-by", "none"], check=True)
     assert (tmp_path / "block.glb").read_bytes() == (tmp_path / "cli.glb").read_bytes()
 
 

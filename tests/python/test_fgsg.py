@@ -18,7 +18,9 @@ PLANT = os.path.join(SOURCE, "examples", "abop_plant.fgsg")
 
 
 def run_cli(grammar, out, *args):
-    subprocess.run([FGSG, "run", grammar, "-o", str(out), "--quiet", *args], check=True)
+    # Result.write writes the flattened mesh; fgsg run's .glb is a scene unless told so.
+    subprocess.run([FGSG, "run", grammar, "-o", str(out), "--quiet", "--instancing", "off", "--group-by", "none", *args],
+                   check=True)
     return out.read_bytes()
 
 
