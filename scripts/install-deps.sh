@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian bookworm packages fgsg builds against. Idempotent and non-interactive:
 # packages already present are skipped, so a second run costs one dpkg query.
+# --test: also what only the tests need (setup-and-test.sh passes it).
 set -euo pipefail
 
 packages=(
@@ -18,6 +19,11 @@ packages=(
   chromium
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
 )
+
+# Only for the tests: Blender imports fgsg's glTF and OBJ output headless
+# (tests/cli/blender_import.sh; about 106 MB to download, 3 minutes to install).
+test_packages=(blender)
+[ "${1:-}" = "--test" ] && packages+=("${test_packages[@]}")
 
 missing=()
 # Node.js may come from another source (it bundles npm); only ask Debian when absent.
