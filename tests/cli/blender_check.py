@@ -113,14 +113,16 @@ def check_gltf(path, lots_path):
             expected[doc["meshes"][n["mesh"]]["name"]] += 1
     if not expected:
         fail("the file places no shared mesh by a node per instance (write it with --instancing nodes)")
+    # Per glTF mesh name (Blender numbers repeated names: "Wall piece.003"), the objects
+    # placing it and the mesh datablocks they share.
     users = collections.Counter()
-    for o in objects:
-        if o.type == "MESH" and "asset" in o.keys():
-            users[o.data.name.split(".")[0] if o.data.name.split(".")[-1].isdigit() else o.data.name] += 1
     datablocks = collections.defaultdict(set)
     for o in objects:
         if o.type == "MESH" and "asset" in o.keys():
-            datablocks[o.data.name.rsplit(".", 1)[0] if o.data.name.rsplit(".", 1)[-1].isdigit() else o.data.name].add(o.data.name)
+            base, _, number = o.data.name.rpartition(".")
+            name = base if base and number.isdigit() else o.data.name
+            users[name] += 1
+            datablocks[name].add(o.data.name)
     for name, count in sorted(expected.items()):
         if users[name] != count:
             fail(f"mesh {name!r}: {count} instance nodes in the file, {users[name]} objects in Blender")
