@@ -217,6 +217,7 @@ struct Rule {
   bool hasGuard = false;
   Expr guard;
   std::vector<Alternative> alternatives;
+  bool weighted = false;  // some branch writes a probability (`: 0.3`)
 };
 
 struct Symbol {
@@ -225,6 +226,9 @@ struct Symbol {
   uint32_t slotCount = 0;       // sum of slot widths
   std::vector<uint32_t> rules;  // indices into Module::rules, in source order
   int priority = 0;             // highest priority among its rules
+  // Several rules with a guard or a context and none writes a probability: the first that
+  // applies is taken (CGA's case, lpfg's first matching production), not one at random.
+  bool firstApplicable = false;
 };
 
 // An attr's annotation (`@Range(0, 10)` in a .cga file): metadata for inspectors, no

@@ -49,6 +49,7 @@ class Lowerer {
     lowerEnvironment();  // first: queries refer to environment entries by index
     std::map<uint32_t, int> perSymbolCount;
     for (size_t i = 0; i < prog_.rules.size(); ++i) lowerRule(i, perSymbolCount);
+    markFirstApplicable();
     lowerAxiom();
     m_.mode = sema_.mode == "parallel"    ? DeriveMode::Parallel
               : sema_.mode == "depthfirst" ? DeriveMode::DepthFirst
@@ -124,6 +125,7 @@ class Lowerer {
       Alternative alt;
       alt.loc = toLoc(b.range);
       alt.probability = b.probability ? expr(*b.probability) : Expr::number(1.0);
+      out.weighted = out.weighted || b.probability != nullptr;
       alt.ops = block(b.successor);
       out.alternatives.push_back(std::move(alt));
     }
@@ -131,6 +133,22 @@ class Lowerer {
     m_.symbols[out.symbol].rules.push_back(static_cast<uint32_t>(m_.rules.size()));
     m_.symbols[out.symbol].priority = std::max(m_.symbols[out.symbol].priority, out.priority);
     m_.rules.push_back(std::move(out));
+  }
+
+  // Symbol::firstApplicable: at least two specific rules (a guard or a context), none of
+  // them weighted.
+  void markFirstApplicable() {
+    for (Symbol& sym : m_.symbols) {
+      int specific = 0;
+      bool weighted = false;
+      for (uint32_t ri : sym.rules) {
+        const Rule& r = m_.rules[ri];
+        if (!r.hasGuard && r.left.empty() && r.right.empty()) continue;
+        ++specific;
+        weighted = weighted || r.weighted;
+      }
+      sym.firstApplicable = specific >= 2 && !weighted;
+    }
   }
 
   void lowerAxiom() {

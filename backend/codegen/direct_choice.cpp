@@ -89,7 +89,7 @@ void ProgramCodegen::chooseStatic(const ir::Symbol& sym, llvm::Value* chosen, ll
 
 // Interpreter::choose in general: candidates (global alternative index, weight)
 // collected at run time, rules with a guard first, those without only when none
-// applies.
+// applies; of a symbol that takes the first rule that applies, the first guarded one.
 void ProgramCodegen::chooseDynamic(const ir::Symbol& sym, llvm::Value* chosen, llvm::BasicBlock* apply,
                                    size_t alternatives) {
   const size_t room = std::max<size_t>(alternatives, 1);
@@ -117,6 +117,10 @@ void ProgramCodegen::chooseDynamic(const ir::Symbol& sym, llvm::Value* chosen, l
         llvm::BasicBlock* holds = newBlock("holds");
         b_.CreateCondBr(b_.CreateFCmpUNE(g, zero()), holds, next);
         b_.SetInsertPoint(holds);
+        // Only the first rule that applies is taken (ir::Symbol::firstApplicable); a
+        // second one is an overlap, which the engine's own order reports (R029).
+        if (sym.firstApplicable)
+          giveUpIf(b_.CreateICmpNE(b_.CreateLoad(b_.getInt32Ty(), count), b_.getInt32(0)));
       }
       for (size_t a = 0; a < r.alternatives.size(); ++a) {
         const ir::Expr& weight = r.alternatives[a].probability;

@@ -140,6 +140,7 @@ rt::DeriveResult Derivation::run() {
   stats_.instances = out_.instances.size();
   // Lines and the surface are appended after the rules' instances: placed by no rule.
   if (origins_.on()) out_.origins.resize(out_.instances.size());
+  overlapWarnings(result.messages);
   result.stats = stats_;
   result.instances = std::move(out_);
   result.reports = reports_.takeReports();

@@ -215,6 +215,8 @@ class Derivation final : public QueryHost {
   const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f, uint32_t node, double* params);
   bool contextHolds(const ir::Rule& r, uint32_t node, double* params) const;
   bool guardHolds(uint32_t rule, const Frame& f);
+  bool takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken);
+  void overlapWarnings(std::vector<rt::DeriveMessage>& messages) const;
   void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total);
   const Candidate& pickCandidate(rt::RandomStream& rng, double total) const;
 
@@ -298,6 +300,7 @@ class Derivation final : public QueryHost {
   std::vector<Saved> stack_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
+  std::vector<std::pair<uint32_t, uint32_t>> overlaps_;  // (taken, also applying) rules, each pair once
   std::vector<uint64_t> ruleUses_;  // applications per rule, to name a runaway one
   uint32_t maxSlots_ = 0;           // the largest parameter block of any rule
   uint32_t chosenRule_ = 0;

@@ -285,16 +285,19 @@ const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const M
   double total = 0;
   const double* own = str.args.data() + str.modules[at].firstArg;
   const uint32_t index = plan_[str.modules[at].op].childIndex;
-  for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
-  for (uint32_t ri : sym.rules) {
-    const ir::Rule& r = m_.rules[ri];
-    if (isSpecific(r) != (pass == 0)) continue;
-    params_.assign(r.slotCount, 0.0);
-    std::copy(own, own + sym.slotCount, params_.begin());
-    if (!matchLeft(r, str, at) || !matchRight(r, str, at)) continue;
-    Frame f{params_.data(), &rng, nullptr, step, index, this};
-    if (r.hasGuard && !guardHolds(ri, f)) continue;
-    addCandidates(r, ri, f, total);
+  for (int pass = 0; pass < 2 && candidates_.empty(); ++pass) {
+    uint32_t taken = UINT32_MAX;
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = m_.rules[ri];
+      if (isSpecific(r) != (pass == 0)) continue;
+      params_.assign(r.slotCount, 0.0);
+      std::copy(own, own + sym.slotCount, params_.begin());
+      if (!matchLeft(r, str, at) || !matchRight(r, str, at)) continue;
+      Frame f{params_.data(), &rng, nullptr, step, index, this};
+      if (r.hasGuard && !guardHolds(ri, f)) continue;
+      if (pass == 0 && !takesPart(sym, ri, taken)) continue;
+      addCandidates(r, ri, f, total);
+    }
   }
   if (candidates_.empty()) return nullptr;
   const Candidate* pick = &pickCandidate(rng, total);

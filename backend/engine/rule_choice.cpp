@@ -4,6 +4,7 @@
 // stream.
 #include "backend/engine/derivation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -29,19 +30,52 @@ const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f,
   }
   candidates_.clear();
   double total = 0;
-  for (int pass = 0; pass < 2 && candidates_.empty(); ++pass)
-  for (uint32_t ri : sym.rules) {
-    const ir::Rule& r = m_.rules[ri];
-    if (isSpecific(r) != (pass == 0)) continue;
-    if (!contextHolds(r, node, params)) continue;
-    if (r.hasGuard && !guardHolds(ri, f)) continue;
-    addCandidates(r, ri, f, total);
+  for (int pass = 0; pass < 2 && candidates_.empty(); ++pass) {
+    uint32_t taken = UINT32_MAX;
+    for (uint32_t ri : sym.rules) {
+      const ir::Rule& r = m_.rules[ri];
+      if (isSpecific(r) != (pass == 0)) continue;
+      if (!contextHolds(r, node, params)) continue;
+      if (r.hasGuard && !guardHolds(ri, f)) continue;
+      if (pass == 0 && !takesPart(sym, ri, taken)) continue;
+      addCandidates(r, ri, f, total);
+    }
   }
   if (candidates_.empty()) return nullptr;
   const Candidate& pick = pickCandidate(*f.rng, total);
   chosenRule_ = pick.rule;
   contextHolds(m_.rules[pick.rule], node, params);  // its context's parameters again: another rule's may be there
   return pick.alt;
+}
+
+// Whether specific rule `ri`, which applies, joins the candidates. Of a symbol whose
+// specific rules write no probabilities (ir::Symbol::firstApplicable) only the first
+// that applies does; a later one that also applies is an overlap, reported once per
+// pair (R029). Every guard is still evaluated, so the random stream does not depend on
+// which rule wins.
+bool Derivation::takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken) {
+  if (!sym.firstApplicable) return true;
+  if (taken == UINT32_MAX) {
+    taken = ri;
+    return true;
+  }
+  const std::pair<uint32_t, uint32_t> pair{taken, ri};
+  if (std::find(overlaps_.begin(), overlaps_.end(), pair) == overlaps_.end()) overlaps_.push_back(pair);
+  return false;
+}
+
+// R029 for each pair of rules met applying to one shape, the first one's location.
+void Derivation::overlapWarnings(std::vector<rt::DeriveMessage>& messages) const {
+  for (const auto& [first, second] : overlaps_) {
+    const ir::Rule& a = m_.rules[first];
+    const ir::Rule& b = m_.rules[second];
+    messages.push_back({false, "R029", a.loc.line, a.loc.col,
+                        "rules '" + a.label + "' (line " + std::to_string(a.loc.line) + ") and '" + b.label +
+                            "' (line " + std::to_string(b.loc.line) + ") both apply to a '" +
+                            m_.symbols[a.symbol].name +
+                            "' shape: the first is taken, as CGA's case does (guards that exclude each other "
+                            "say which is meant; probabilities on the rules draw one at random)"});
+  }
 }
 
 // A rule's context around the shape at `node` of the sequential string (always true for a

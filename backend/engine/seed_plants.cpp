@@ -26,6 +26,7 @@ struct Derivation::Plant {
   rt::DeriveStats stats;
   std::vector<uint64_t> shapesAtInstance;  // stats.shapesCreated when each was placed
   std::vector<uint64_t> ruleUses;
+  std::vector<std::pair<uint32_t, uint32_t>> overlaps;  // rules met applying together (R029)
   std::vector<rt::Report> reports;  // start 0: the plant's own
   std::vector<rt::PrintLine> prints;
   std::optional<rt::DeriveMessage> depthWarning;
@@ -91,6 +92,7 @@ Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, 
   p.stats = stats_;
   p.shapesAtInstance = std::move(shapesAtInstance_);
   p.ruleUses = std::move(ruleUses_);
+  p.overlaps = std::move(overlaps_);
   p.reports = reports_.takeReports();
   p.prints = reports_.takePrints();
   return p;
@@ -115,6 +117,8 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
     if (p.out.assets.size() != out_.assets.size() || p.out.symbols.size() != out_.symbols.size())
       throw std::logic_error("a seed plant numbered its assets or symbols apart from the derivation");
     for (size_t r = 0; r < ruleUses_.size(); ++r) ruleUses_[r] += p.ruleUses[r];
+    for (const auto& pair : p.overlaps)
+      if (std::find(overlaps_.begin(), overlaps_.end(), pair) == overlaps_.end()) overlaps_.push_back(pair);
     if (p.depthWarning && !depthLimitHit_) depthLimitHit_ = true, depthWarning_ = *p.depthWarning;
 
     const uint64_t left = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);

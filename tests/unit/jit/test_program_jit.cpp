@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -409,4 +410,68 @@ TEST_CASE("each instance's origin: the rule that placed it and its shape's depth
         Approx(5.0));  // Leaf's S(depth + 1, ...): depth 4 there too
   // Not asked: nothing recorded.
   CHECK(backend::interpret(m, {}, assets).instances.origins.empty());
+}
+
+TEST_CASE("overlapping guards without probabilities: the first rule that applies is taken, with R029") {
+  // P(k) for k = 0..5: both guards hold for k = 0 and 3; the first rule wins on every
+  // seed, and the one warning names both rules. Both engines (direct code gives way to
+  // the engine's own order at the overlap).
+  const std::string text = R"(
+    Axiom ~> P(0) P(1) P(2) P(3) P(4) P(5);
+    P(k) : k % 3 == 0 ~> I("disc");
+    P(k) : k < 4 ~> I("cube");
+    P(k) ~> I("sphere");
+  )";
+  for (uint64_t seed : {1, 2, 3, 4, 5}) {
+    rt::DeriveOptions options;
+    options.seed = seed;
+    const rt::DeriveResult r = bothEngines(text, options);
+    REQUIRE(r.ok);
+    std::map<std::string, int> counts;
+    for (const auto& inst : r.instances.instances) ++counts[r.instances.assets[inst.asset]];
+    CHECK(counts["disc"] == 2);    // k = 0, 3
+    CHECK(counts["cube"] == 2);    // k = 1, 2
+    CHECK(counts["sphere"] == 2);  // k = 4, 5
+    REQUIRE(r.messages.size() == 1);
+    CHECK(r.messages[0].code == "R029");
+    CHECK_FALSE(r.messages[0].isError);
+    CHECK(r.messages[0].line == 3);
+    CHECK(r.messages[0].message.find("'P#0' (line 3) and 'P#1' (line 4)") != std::string::npos);
+  }
+  // Guards that exclude each other: no warning.
+  const rt::DeriveResult apart = bothEngines(R"(
+    Axiom ~> P(0) P(1);
+    P(k) : k == 0 ~> I("disc");
+    P(k) : k == 1 ~> I("cube");
+  )");
+  CHECK(apart.messages.empty());
+  // Probabilities ask for a draw among every rule that applies: over 200 shapes with
+  // both guards holding, both rules are taken, about half each, and nothing is warned.
+  const rt::DeriveResult drawn = bothEngines(R"(
+    Axiom ~> Row(200);
+    Row(n) : n > 0 ~> P Row(n - 1);
+    P : true ~> I("disc") : 1;
+    P : 1 > 0 ~> I("cube") : 1;
+  )");
+  REQUIRE(drawn.ok);
+  CHECK(drawn.messages.empty());
+  size_t discs = 0;
+  for (const auto& inst : drawn.instances.instances) discs += drawn.instances.assets[inst.asset] == "disc";
+  CHECK(discs > 60);
+  CHECK(discs < 140);
+}
+
+TEST_CASE("an L-system takes its first matching production, as lpfg does") {
+  // In a parallel derivation both context rules match the middle B; the first wins.
+  const rt::DeriveResult r = bothEngines(R"(
+    derive parallel 1;
+    axiom: A B C;
+    A < B ~> I("disc");
+    B > C ~> I("cube");
+  )");
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.instances.size() == 1);
+  CHECK(r.instances.assets[r.instances.instances[0].asset] == "disc");
+  REQUIRE(r.messages.size() == 1);
+  CHECK(r.messages[0].code == "R029");
 }
