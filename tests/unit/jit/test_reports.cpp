@@ -145,15 +145,12 @@ TEST_CASE("a start shape without reports has an empty entry", "[report]") {
 }
 
 TEST_CASE("mixed values of one key: numbers summed, strings counted", "[report]") {
-  std::vector<rt::Report> reports(4);
-  reports[0].key = reports[1].key = reports[2].key = reports[3].key = "k";
-  reports[0].value.number = 2;
-  reports[1].value.kind = rt::ReportValue::Kind::String;
-  reports[1].value.text = "b";
-  reports[2].value.kind = rt::ReportValue::Kind::Boolean;
-  reports[2].value.number = 0;
-  reports[3].value.kind = rt::ReportValue::Kind::String;
-  reports[3].value.text = "a";
+  using Kind = rt::ReportValue::Kind;
+  const std::string key = "k", a = "a", b = "b";
+  const std::vector<rt::Report> reports = {{0, key, {Kind::Number, 2, {}}},
+                                           {0, key, {Kind::String, 0, b}},
+                                           {0, key, {Kind::Boolean, 0, {}}},
+                                           {0, key, {Kind::String, 0, a}}};
   const auto all = rt::collectAllReports(reports);
   REQUIRE(all.size() == 1);
   CHECK(all[0].values.size() == 4);
@@ -190,4 +187,32 @@ TEST_CASE("Report and Print need a sequential derivation", "[report]") {
   REQUIRE_FALSE(r.messages.empty());
   CHECK(r.messages[0].code == "R009");
   CHECK(r.messages[0].message.find("'Report' cannot appear in a parallel") != std::string::npos);
+}
+
+TEST_CASE("each seed derived apart is a start shape of its own", "[report]") {
+  rt::DeriveOptions o;
+  for (int k = 0; k < 3; ++k) {
+    rt::DeriveOptions::Seed s;
+    s.point[0] = k == 0 ? 1 : 0, s.point[1] = k == 1 ? 1 : 0, s.point[2] = k == 2 ? 1 : 0;
+    o.seeds.push_back(s);
+  }
+  const auto r = bothEngines(R"(
+    surface sphere(1);
+    start = A(0)
+    A(n) : n < 2 ~> Report("step", n) Print("grown") I("cube") A(n + 1)
+  )", o);
+  REQUIRE(r.ok);
+  REQUIRE(r.instances.startBounds.size() == 4);  // three plants, apart
+  REQUIRE(r.reports.size() == 6);
+  for (size_t k = 0; k < 6; ++k) {
+    CHECK(r.reports[k].start == k / 2);
+    CHECK(r.reports[k].value.number == double(k % 2));
+  }
+  REQUIRE(r.prints.size() == 6);
+  CHECK(r.prints[5].start == 2);
+  const auto perStart = rt::collectReports(r.reports, 3);
+  for (const auto& start : perStart) {
+    REQUIRE(start.size() == 1);
+    CHECK(start[0].sum == 1);
+  }
 }
