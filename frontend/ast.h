@@ -20,6 +20,21 @@ struct SourceRange {
   SourceLoc end;  // last character, inclusive
 };
 
+// The name a symbol is shown by (the IR's symbol: instances, scene nodes, reports). The
+// .cga front end marks a rule named like an fgsg command (`Roof`, `Color` ...) with a '$'
+// after it (`Roof$`, its leaf `Roof$.`, a helper `Roof$$1`), which no name written in a
+// .cga or .fgsg file can hold: shown, the mark is dropped (`Roof`, `Roof.`, `Roof$1`).
+// '$' alone (the turtle's roll) and a helper's `$n` stay.
+inline std::string symbolDisplayName(const std::string& name) {
+  std::string out;
+  out.reserve(name.size());
+  for (size_t i = 0; i < name.size(); ++i) {
+    const bool mark = name[i] == '$' && i > 0 && (i + 1 == name.size() || name[i + 1] < '0' || name[i + 1] > '9');
+    if (!mark) out += name[i];
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------- expressions
 
 enum class ExprKind {

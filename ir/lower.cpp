@@ -34,7 +34,7 @@ class Lowerer {
     m_.sourceName = prog_.fileName;
     for (const auto& s : sema_.symbols) {
       Symbol sym;
-      sym.name = s.name;
+      sym.name = symbolDisplayName(s.name);  // `Roof$` from a .cga rule is `Roof`
       for (ValueType t : s.params) {
         sym.paramTypes.push_back(toType(t));
         sym.slotCount += slotWidth(toType(t));

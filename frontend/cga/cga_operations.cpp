@@ -49,7 +49,7 @@ std::string symbolName(const std::string& name) {
   const size_t dot = name.rfind('.');
   if (dot != std::string::npos && dot + 1 < name.size())
     return name.substr(0, dot + 1) + symbolName(name.substr(dot + 1));
-  return findCommand(name) ? name + "_" : name;
+  return findCommand(name) ? name + "$" : name;
 }
 
 bool isCityEngineOperation(const std::string& name) {
@@ -161,7 +161,7 @@ void Translator::operation(P::OperationContext* op, Sequence& seq, const Env& en
     std::string name = l->leaf->getText();
     name.pop_back();
     // `X.`: X without its rules; a name without rules keeps its name.
-    emit(rules_.count(name) ? name + "." : name, true, {});
+    emit(rules_.count(name) ? symbolName(name) + "." : name, true, {});
     return;
   }
   if (dynamic_cast<P::DotOperationContext*>(op)) {

@@ -33,8 +33,10 @@ ExprPtr conjunction(ExprPtr a, ExprPtr b);
 // The text of a string literal token without its quotes, escapes resolved.
 std::string stringValue(const std::string& token);
 
-// The symbol a CityEngine rule name becomes: itself, or with a '_' after it where fgsg has
+// The symbol a CityEngine rule name becomes: itself, or with a '$' after it where fgsg has
 // a command of that name (`Roof`, `Footprint`, `Texture` ...), which would take its place.
+// No CGA or fgsg name can hold a '$', and the IR's symbol (what outputs show) drops it
+// again: the user's `Roof` (frontend/ast.h: symbolDisplayName).
 std::string symbolName(const std::string& name);
 
 // A CityEngine operation this dialect knows the name of (supported or not).
