@@ -2,6 +2,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
+#include "cli/derive_flags.h"
 
 #include <iostream>
 
@@ -9,16 +10,18 @@ namespace fgsg::cli {
 
 int checkCommand(const Args& args) {
   std::string file;
+  std::string startRule;
   try {
     CommandLine cl("check");
     cl.input(file, "grammar file");
+    startRuleFlag(cl, startRule);
     cl.parse(args);
     if (file.empty()) throw UsageError{"no grammar file given: fgsg check FILE"};
   } catch (const UsageError& e) {
     std::cerr << "fgsg check: " << e.message << "\n";
     return 2;
   }
-  auto compiled = compileFile(file);
+  auto compiled = compileFile(file, true, startRule);
   if (!compiled) return 1;
   frontend::Diagnostics dataDiags(&compiled->source);
   checkDataFiles(compiled->module, file, dataDiags);

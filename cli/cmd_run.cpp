@@ -48,6 +48,7 @@ struct RunOptions {
   bool quiet = false;
   size_t lotsSkipped = 0;  // --lots: geometries other than polygons, passed over
   backend::Engine engine = backend::Engine::Jit;
+  std::string startRule;  // --start-rule: a .cga grammar's rule for the lots
   rt::DeriveOptions derive;
   SceneFlags scene;  // --instancing, --group-by
 };
@@ -106,6 +107,7 @@ RunOptions parseRunOptions(const Args& args) {
   cl.flag("--stats", o.stats);
   cl.flag("-q,--quiet", o.quiet);
   setFlag(cl, o.derive);
+  startRuleFlag(cl, o.startRule);
   sceneFlags(cl, o.scene);
   cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg run FILE [options]"};
@@ -172,7 +174,7 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     std::cerr << "fgsg run: " << opt.derive.lotsName << ": " << opt.lotsSkipped
               << (opt.lotsSkipped == 1 ? " geometry that is not a polygon was" : " geometries that are not polygons were")
               << " passed over\n";
-  auto compiled = compileFile(opt.file, !opt.quiet);
+  auto compiled = compileFile(opt.file, !opt.quiet, opt.startRule);
   if (!compiled) return 1;
   if (!compiled->module.surface.present && opt.derive.surfaceOverride.empty() &&
       (opt.derive.hasStart || opt.derive.repairSurface || opt.derive.surfaceSize > 0 || !opt.derive.seeds.empty())) {

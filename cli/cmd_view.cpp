@@ -25,6 +25,7 @@ namespace {
 
 const char* kViewHelp = R"(usage: fgsg view FILE [--port N] [--host ADDRESS] [--no-token] [--seed N]
                  [--set name=value]... [--surface mesh.off] [--engine jit|interp]
+                 [--start-rule NAME]
 
 Serves a page at http://ADDRESS:N/?token=... (default 127.0.0.1, port 8765; --port 0
 picks a free one) that shows FILE's model and re-derives it live: when FILE or a file in
@@ -61,6 +62,7 @@ ViewCommandOptions parseViewOptions(const Args& args) {
   surfaceFlags(cl, o.view.derive);
   engineFlag(cl, o.view.engine);
   setFlag(cl, o.view.derive);
+  startRuleFlag(cl, o.view.startRule);
   cl.parse(args);
   if (o.view.file.empty()) throw UsageError{"no grammar file given: fgsg view FILE [options]"};
   if (o.noToken && !isLoopbackHost(o.host))

@@ -4,11 +4,12 @@
 
 namespace fgsg::cli {
 
-std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings) {
-  return compileFile(path, std::cerr, printWarnings);
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings, const std::string& startRule) {
+  return compileFile(path, std::cerr, printWarnings, startRule);
 }
 
-std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream& diagnostics, bool printWarnings) {
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream& diagnostics, bool printWarnings,
+                                          const std::string& startRule) {
   std::ostream& err = diagnostics;
   auto out = std::make_unique<CompiledFile>();
   std::string error;
@@ -16,6 +17,7 @@ std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream&
     err << "fgsg: " << error << "\n";
     return nullptr;
   }
+  out->source.startRule = startRule;
   frontend::Diagnostics diags(&out->source);
   const bool ok = ir::compileSource(out->source, out->module, diags, &out->times);
   for (const auto& d : diags.all()) {

@@ -18,9 +18,13 @@ struct CompiledFile {
   int warnings = 0;
 };
 
-// Returns null after printing diagnostics (or the read error) to stderr.
-std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings = true);
+// Returns null after printing diagnostics (or the read error) to stderr. `startRule`
+// (--start-rule): a .cga grammar's rule for its start shapes instead of its @StartRule; an
+// error (E803) for a rule the file lacks, or for an fgsg grammar.
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, bool printWarnings = true,
+                                          const std::string& startRule = "");
 // The same, printing to `diagnostics` (fgsg view shows them in its page).
-std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream& diagnostics, bool printWarnings);
+std::unique_ptr<CompiledFile> compileFile(const std::string& path, std::ostream& diagnostics, bool printWarnings,
+                                          const std::string& startRule = "");
 
 }  // namespace fgsg::cli

@@ -18,6 +18,13 @@ void setFlag(CommandLine& cl, rt::DeriveOptions& derive) {
   });
 }
 
+void startRuleFlag(CommandLine& cl, std::string& startRule) {
+  cl.option("--start-rule", [&startRule](const std::string& v) {
+    if (v.empty()) throw UsageError{"--start-rule needs a rule name"};
+    startRule = v;
+  });
+}
+
 void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive) {
   cl.option("--surface", [&derive](const std::string& v) {
     if (v.empty()) throw UsageError{"--surface needs a mesh file name"};

@@ -13,6 +13,9 @@ namespace fgsg::cli {
 void engineFlag(CommandLine& cl, backend::Engine& engine);
 // --set name=value, repeatable: an attr's value.
 void setFlag(CommandLine& cl, rt::DeriveOptions& derive);
+// --start-rule NAME: a .cga grammar's rule for its start shapes instead of its @StartRule
+// (compileFile checks it: a rule the file lacks, or an fgsg grammar, is error E803).
+void startRuleFlag(CommandLine& cl, std::string& startRule);
 // --surface MESH, --surface-size S, --repair-surface: the surface grown on.
 void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive);
 

@@ -18,9 +18,10 @@ usage:
                 [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
-                [--lots lots.geojson] [--report reports.json]
+                [--lots lots.geojson] [--start-rule NAME] [--report reports.json]
                 [--atlas-resolution N] [--march-units surface|texels]
-  fgsg check FILE          report errors and warnings; exit 1 on errors
+  fgsg check FILE [--start-rule NAME]
+                           report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
@@ -61,6 +62,8 @@ run writes FILE's stem + .glb in the current directory when -o is not given.
                      MultiPolygon features) or per polygon face of an OBJ/PLY/OFF mesh
                      (Y up), its shape the lot's footprint; attrs named like a lot's
                      properties take their values (docs/cga.md)
+  --start-rule NAME  a .cga grammar: derive each lot (or the default lot) with rule NAME
+                     instead of the file's @StartRule (error E803 for an fgsg grammar)
   --march-candidates N  directions tried around a failed Marching condition (default 8)
   --atlas-resolution N  side of the marching geometry image in texels (default 1024)
   --march-units U    Marching's length: surface (3D distance, default) or texels

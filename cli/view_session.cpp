@@ -235,7 +235,7 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   };
   if (recompile || !compiled_) {
     std::ostringstream diagnostics;
-    auto fresh = compileFile(options_.file, diagnostics, false);
+    auto fresh = compileFile(options_.file, diagnostics, false, options_.startRule);
     if (!fresh) return fail(compileError_ = diagnostics.str());
     compileError_.clear();
     compiled_ = std::move(fresh);

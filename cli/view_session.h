@@ -41,6 +41,7 @@ struct CompiledFile;
 
 struct ViewOptions {
   std::string file;
+  std::string startRule;     // --start-rule: a .cga grammar's rule instead of its @StartRule
   rt::DeriveOptions derive;  // --surface, --set (the first values), --seed ...
   backend::Engine engine = backend::Engine::Jit;
 };

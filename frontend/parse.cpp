@@ -99,6 +99,15 @@ class StatementScan {
 
 bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
   if (isCgaSource(file.name, file.mainText())) return parseCgaText(file.name, file.mainText(), out, diags, file.startRule);
+  if (!file.startRule.empty()) {
+    // An fgsg grammar starts from its axiom, which may be any successor (or the seeds'):
+    // it has no rule to name instead. Said before the parse, so the run does nothing else.
+    diags.error("E803", SourceRange{{1, 1}, {1, 1}},
+                "--start-rule " + file.startRule +
+                    ": only a .cga grammar (CityEngine CGA) has a start rule to choose; this fgsg grammar "
+                    "starts from its `axiom:` line");
+    return false;
+  }
   return parseText(file.name, file.mainText(), out, diags, file.importAliases);
 }
 

@@ -356,12 +356,26 @@ void Translator::startRule() {
     if (rules_.count("Lot")) start = "Lot";
     else return;  // a module of rules: nothing starts here
   }
+  // --start-rule's name has no place in the file: its errors are at line 1 and say so.
+  const bool given = !startRuleOverride_.empty();
+  const std::string named = given ? "--start-rule " + start + ": " : "";
   if (!rules_.count(start)) {
-    error("E803", SourceRange{{1, 1}, {1, 1}}, "the start rule '" + start + "' is not a rule of this file");
+    // The rules a start shape can derive: those without parameters, the @StartRule first.
+    std::string candidates;
+    if (!startRule_.empty()) candidates = startRule_ + " (@StartRule)";
+    for (const auto& [name, params] : rules_) {
+      if (params != 0 || name == startRule_) continue;
+      candidates += (candidates.empty() ? "" : ", ") + name;
+    }
+    error("E803", given ? SourceRange{{1, 1}, {1, 1}} : at,
+          named + "the start rule '" + start + "' is not a rule of this file" +
+              (candidates.empty() ? std::string(" (it has no rule without parameters)")
+                                  : "; rules that can start: " + candidates));
     return;
   }
   if (rules_[start] != 0) {
-    error("E803", at, "the start rule '" + start + "' takes parameters: a start shape has none to give");
+    error("E803", given ? SourceRange{{1, 1}, {1, 1}} : at,
+          named + "the start rule '" + start + "' takes parameters: a start shape has none to give");
     return;
   }
   auto lotArea = [&] {
