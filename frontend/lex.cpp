@@ -389,7 +389,11 @@ void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens, std::vector
 // `maximum depth:`, which fgsg does not run yet: E048 at the header rather than reading
 // the word as a rule label and the section's rules as productions.
 void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
-  const auto firstOnLine = [&](size_t i) { return i == 0 || tokens[i]->getLine() > tokens[i - 1]->getLine(); };
+  // Each token's line, taken first: the tokens before i have been moved into `out` when
+  // token i is looked at (fuzz_imports: tokens[i - 1] was a null pointer there).
+  std::vector<size_t> lines(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i) lines[i] = tokens[i]->getLine();
+  const auto firstOnLine = [&](size_t i) { return i == 0 || lines[i] > lines[i - 1]; };
   const auto lastOnLine = [&](size_t i) {
     return i + 1 >= tokens.size() || tokens[i + 1]->getType() == Token::EOF ||
            tokens[i + 1]->getLine() > tokens[i]->getLine();
