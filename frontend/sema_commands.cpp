@@ -123,6 +123,12 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                        "component is read from it");
         break;
       }
+      // A string that is no constant (an attr, lot properties and --set may change it): read
+      // as "#rrggbb" when the command runs (R027 if it is no colour).
+      if (ConstValue cv; !evalConst(*item.args[0], cv) && typeOf(*item.args[0], w, false) == ValueType::Str) {
+        expect(*item.args[0], w.operand(), ValueType::Str, "the colour");
+        break;
+      }
       const std::string text = stringArg(0, "colour");
       std::array<double, 3> rgb;
       if (stringOk && !parseHexColor(text, rgb))

@@ -354,6 +354,10 @@ class Lowerer {
         if (item.args.size() == 1 && sema_.exprTypes.count(item.args[0].get()) &&
             sema_.exprTypes.at(item.args[0].get()) == frontend::ValueType::Vec3) {
           op.args = vectorComponents(expr(*item.args[0]));  // a vector (r, g, b)
+        } else if (item.args.size() == 1 && item.args[0]->kind != ExprKind::String &&
+                   !(sema_.names.count(item.args[0].get()) &&
+                     sema_.names.at(item.args[0].get()).kind == frontend::NameRef::Const)) {
+          op.args.push_back(expr(*item.args[0]));  // a string no constant: read as it runs
         } else if (item.args.size() == 1) {  // "#rrggbb": three constant numbers
           std::array<double, 3> rgb{};
           frontend::parseHexColor(constString(*item.args[0]), rgb);

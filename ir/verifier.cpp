@@ -511,7 +511,8 @@ class Verifier {
       }
       case OpKind::Color:
         expectBodies(op, 0);
-        numArgs(op, r, 3);
+        // r, g, b; or a string "#rrggbb" read as the command runs
+        if (op.args.size() != 1 || op.args[0].type != Type::Str) numArgs(op, r, 3);
         break;
       case OpKind::Texture:
         expectBodies(op, 0);

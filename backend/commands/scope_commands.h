@@ -10,6 +10,7 @@
 #include "backend/engine/sequential_string.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fgsg::backend {
@@ -22,9 +23,10 @@ class ScopeCommands final : public CommandFamily {
   // `surface`: the derivation's surface (null on the plane; set once the engine has
   // built it); `stack`: the derivation's shared [ ] stack; `deadline`: its
   // --max-seconds, which traces on the surface ask.
+  // `strings`: the module's strings (a colour given as a string id).
   ScopeCommands(const std::shared_ptr<const SurfaceWorld>& surface, std::vector<Saved>& stack,
-                rt::Deadline& deadline)
-      : surface_(surface), stack_(stack), deadline_(deadline) {}
+                rt::Deadline& deadline, const std::vector<std::string>& strings)
+      : surface_(surface), stack_(stack), deadline_(deadline), strings_(strings) {}
 
   std::vector<ir::OpKind> kinds() const override;
   void apply(const ir::Op& op, const double* a, uint32_t, State& st, Exec&, Frame&) override { command(st, op, a); }
@@ -62,6 +64,7 @@ class ScopeCommands final : public CommandFamily {
   const std::shared_ptr<const SurfaceWorld>& surface_;
   std::vector<Saved>& stack_;
   rt::Deadline& deadline_;
+  const std::vector<std::string>& strings_;
   rt::TrigMemo trig_;
   SequentialString* string_ = nullptr;
 };
