@@ -225,6 +225,26 @@ struct Grammar {
     }
     return out;
   }
+
+  // (name, [(annotation, [positional texts], {key: text})]) per attr, in declaration order:
+  // a .cga attr's @Range, @Enum, @Hidden ... (metadata only).
+  py::list attrAnnotations() const {
+    py::list out;
+    for (const ir::Attr& a : module.attrs) {
+      py::list notes;
+      for (const ir::AttrAnnotation& note : a.annotations) {
+        py::list args;
+        py::dict named;
+        for (const auto& [key, value] : note.args) {
+          if (key.empty()) args.append(py::str(value));
+          else named[py::str(key)] = py::str(value);
+        }
+        notes.append(py::make_tuple(note.name, args, named));
+      }
+      out.append(py::make_tuple(a.name, notes));
+    }
+    return out;
+  }
 };
 
 py::array instanceArray(const std::shared_ptr<Result>& r) {
@@ -325,6 +345,7 @@ PYBIND11_MODULE(_fgsg, m) {
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
            py::arg("max_shapes"), py::arg("engine"), py::arg("lots"))
       .def_property_readonly("attrs", &Grammar::attrs)
+      .def_property_readonly("attr_annotations", &Grammar::attrAnnotations)
       .def_property_readonly("name", [](const Grammar& g) { return g.source.name; })
       // The grammar's text, then each imported module's (what a compiled library embeds).
       .def_property_readonly("source", [](const Grammar& g) { return py::bytes(g.source.text); })

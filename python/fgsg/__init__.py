@@ -33,7 +33,7 @@ try:
 finally:
     sys.setdlopenflags(_flags)
 
-__all__ = ["Grammar", "Result", "GrammarError", "Attr", "__version__"]
+__all__ = ["Grammar", "Result", "GrammarError", "Attr", "Annotation", "__version__"]
 __version__ = _fgsg.__version__  # the project's version (CMakeLists.txt)
 
 
@@ -106,6 +106,17 @@ class Attr(NamedTuple):
     name: str
     kind: str
     default: object
+
+
+class Annotation(NamedTuple):
+    """An attribute's annotation in a .cga grammar (metadata for inspectors, no effect on
+    deriving): `name` without its @ ("Range", "Enum", "Hidden", "Group", "Order",
+    "Description" ...), `args` its positional arguments and `named` its keyed ones
+    (`@Range(min=0, max=10)`), each as text: a string without its quotes, anything else as
+    written ("0", "10", "2.5")."""
+    name: str
+    args: tuple
+    named: dict
 
 
 _SEED_MAX = 2**64 - 1
@@ -189,6 +200,15 @@ class Grammar:
         """The grammar's attributes (settable in generate), in declaration order: a dict
         of name -> Attr(name, kind, default)."""
         return {name: Attr(name, kind, default) for name, kind, default in self._native.attrs}
+
+    @property
+    def attr_annotations(self):
+        """Each attribute's annotations (a .cga file's @Range, @Enum, @Hidden, @Group,
+        @Order, @Description ...), in declaration order: a dict of name -> list of
+        Annotation(name, args, named) in the order written; [] for an attribute without
+        any (every .fgsg attribute)."""
+        return {name: [Annotation(n, tuple(args), dict(named)) for n, args, named in notes]
+                for name, notes in self._native.attr_annotations}
 
     @property
     def source(self):

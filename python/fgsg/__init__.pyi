@@ -12,6 +12,11 @@ class Attr(NamedTuple):
     kind: str  # "num", "bool", "str" or "vec3"
     default: Union[float, bool, str, tuple[float, float, float]]
 
+class Annotation(NamedTuple):
+    name: str  # "Range", "Enum", "Hidden", "Group", "Order", "Description" ...
+    args: tuple[str, ...]  # positional arguments as text
+    named: dict[str, str]  # keyed arguments as text
+
 class GrammarError(Exception):
     diagnostics: list[dict[str, Any]]
     file: str
@@ -56,6 +61,8 @@ class Grammar:
     def name(self) -> str: ...
     @property
     def attrs(self) -> dict[str, Attr]: ...
+    @property
+    def attr_annotations(self) -> dict[str, list[Annotation]]: ...
     @property
     def source(self) -> bytes: ...
     def generate(self, seed: int = ...,
