@@ -22,6 +22,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -59,6 +60,11 @@ struct fgsg_generator {
   ir::Module module;
   rt::DeriveOptions options;
   std::vector<std::string> extraAssetDirs;  // "asset-dir" options, in order
+  // fgsg_attr_*: per attr its name, kind, default and annotations JSON, made at compile.
+  struct AttrTexts {
+    std::string name, kind, value, annotations;
+  };
+  std::vector<AttrTexts> attrTexts;
 
   // The last generation.
   std::unique_ptr<rt::AssetLibrary> assets;
@@ -74,6 +80,71 @@ struct fgsg_generator {
 namespace {
 
 const char* const kNullGenerator = "fgsg: no generator (NULL)";
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", u);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string numberText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  // The shortest text that reads back as v.
+  for (int digits = 1; digits <= 17; ++digits) {
+    char shorter[32];
+    std::snprintf(shorter, sizeof shorter, "%.*g", digits, v);
+    if (std::strtod(shorter, nullptr) == v) return shorter;
+  }
+  return buf;
+}
+
+// An attr as fgsg_attr_* give it: name, kind, default as fgsg_set_attribute reads it,
+// and its annotations as JSON.
+fgsg_generator::AttrTexts attrTexts(const ir::Module& m, const ir::Attr& a) {
+  fgsg_generator::AttrTexts t;
+  t.name = a.name;
+  t.kind = ir::typeName(a.type);
+  switch (a.type) {
+    case ir::Type::Num: t.value = numberText(a.value.num); break;
+    case ir::Type::Bool: t.value = a.value.num != 0 ? "true" : "false"; break;
+    case ir::Type::Str: {
+      const auto id = static_cast<size_t>(a.value.num);
+      t.value = id < m.strings.size() ? m.strings[id] : std::string();
+      break;
+    }
+    case ir::Type::Vec3:
+      t.value = numberText(a.value.vec[0]) + "," + numberText(a.value.vec[1]) + "," + numberText(a.value.vec[2]);
+      break;
+  }
+  t.annotations = "[";
+  for (size_t i = 0; i < a.annotations.size(); ++i) {
+    const ir::AttrAnnotation& note = a.annotations[i];
+    std::string args, named;
+    for (const auto& [key, value] : note.args) {
+      if (key.empty())
+        args += (args.empty() ? "" : ", ") + jsonString(value);
+      else
+        named += (named.empty() ? "" : ", ") + jsonString(key) + ": " + jsonString(value);
+    }
+    t.annotations += std::string(i ? ", " : "") + "{\"name\": " + jsonString(note.name) + ", \"args\": [" + args +
+                     "], \"named\": {" + named + "}}";
+  }
+  t.annotations += "]";
+  return t;
+}
 
 // Compiles the program's grammar text into g->module; false with the diagnostics in
 // g->unusable. The ANTLR runtime's parser caches (ATN, DFA, prediction contexts) are
@@ -105,6 +176,8 @@ bool compileProgramSource(fgsg_generator* g) {
     return false;
   }
   g->warnings = g->compileWarnings;
+  g->attrTexts.clear();
+  for (const ir::Attr& a : g->module.attrs) g->attrTexts.push_back(attrTexts(g->module, a));
   return true;
 }
 
@@ -531,6 +604,24 @@ FGSG_API int fgsg_write(fgsg_generator* g, const char* path) {
     }
     return true;
   });
+}
+
+FGSG_API size_t fgsg_attr_count(const fgsg_generator* g) { return g ? g->attrTexts.size() : 0; }
+
+FGSG_API const char* fgsg_attr_name(const fgsg_generator* g, size_t index) {
+  return g && index < g->attrTexts.size() ? g->attrTexts[index].name.c_str() : nullptr;
+}
+
+FGSG_API const char* fgsg_attr_kind(const fgsg_generator* g, size_t index) {
+  return g && index < g->attrTexts.size() ? g->attrTexts[index].kind.c_str() : nullptr;
+}
+
+FGSG_API const char* fgsg_attr_default(const fgsg_generator* g, size_t index) {
+  return g && index < g->attrTexts.size() ? g->attrTexts[index].value.c_str() : nullptr;
+}
+
+FGSG_API const char* fgsg_attr_annotations_json(const fgsg_generator* g, size_t index) {
+  return g && index < g->attrTexts.size() ? g->attrTexts[index].annotations.c_str() : nullptr;
 }
 
 }  // extern "C"

@@ -61,6 +61,25 @@ FGSG_API int fgsg_set_seed(fgsg_generator* g, uint64_t seed);
  * fgsg_last_error and leaves the generator as it was. */
 FGSG_API int fgsg_set_attribute(fgsg_generator* g, const char* name, const char* value);
 
+/* The grammar's attributes (its `attr`s), in declaration order; 0 for an unusable
+ * generator. For index 0 .. count-1 (NULL when out of range; the texts stay valid until
+ * fgsg_generator_free):
+ *   fgsg_attr_name               the name, as fgsg_set_attribute takes it
+ *   fgsg_attr_kind               "num", "bool", "str" or "vec3"
+ *   fgsg_attr_default            the grammar's default as fgsg_set_attribute reads a value:
+ *                                a number ("2.5"), "true"/"false", the string, or "x,y,z"
+ *   fgsg_attr_annotations_json   a .cga attr's annotations (@Range, @Enum, @Hidden, @Group,
+ *                                @Order, @Description ...; metadata only) as a JSON array,
+ *                                in the order written: [{"name": "Range", "args": ["0", "10"],
+ *                                "named": {"stepsize": "1"}}, ...]; each argument is its text
+ *                                (a string without its quotes, anything else as written);
+ *                                "[]" when it has none (every .fgsg attr). */
+FGSG_API size_t fgsg_attr_count(const fgsg_generator* g);
+FGSG_API const char* fgsg_attr_name(const fgsg_generator* g, size_t index);
+FGSG_API const char* fgsg_attr_kind(const fgsg_generator* g, size_t index);
+FGSG_API const char* fgsg_attr_default(const fgsg_generator* g, size_t index);
+FGSG_API const char* fgsg_attr_annotations_json(const fgsg_generator* g, size_t index);
+
 /* Grows on this mesh file instead of the grammar's surface (as `fgsg run --surface`;
  * relative paths are relative to the current directory). The file must exist. NULL or
  * "" goes back to the grammar's own surface. */

@@ -174,6 +174,65 @@ TEST_CASE("the grammar's compile warnings are in fgsg_warnings, not errors", "[c
   CHECK(fgsg_set_seed(g, 2) == 0);
 }
 
+TEST_CASE("fgsg_attr_*: the attrs with their kinds, defaults and .cga annotations", "[c_api]") {
+  const FgsgProgram p = textOnlyProgram(
+      "version \"2023.0\"\n"
+      "@Range(min=2, max=30, stepsize=0.5) @Group(\"Size\", 1) @Order(2)\n"
+      "attr height = 12.5\n"
+      "@Enum(\"flat\", \"gable\") @Description(\"the \\\"roof\\\" shape\")\n"
+      "attr roof = \"gable\"\n"
+      "@Hidden\n"
+      "attr debug = false\n"
+      "attr plain = 3\n"
+      "@StartRule\n"
+      "Lot --> extrude(height) Mass\n",
+      "ann.cga");
+  Generator g(&p);
+  REQUIRE(g.error().empty());
+  REQUIRE(fgsg_attr_count(g) >= 4);
+  const auto text = [](const char* s) { return s ? std::string(s) : std::string("NULL"); };
+  CHECK(text(fgsg_attr_name(g, 0)) == "height");
+  CHECK(text(fgsg_attr_kind(g, 0)) == "num");
+  CHECK(text(fgsg_attr_default(g, 0)) == "12.5");
+  CHECK(text(fgsg_attr_annotations_json(g, 0)) ==
+        "[{\"name\": \"Range\", \"args\": [], \"named\": {\"min\": \"2\", \"max\": \"30\", \"stepsize\": \"0.5\"}}, "
+        "{\"name\": \"Group\", \"args\": [\"Size\", \"1\"], \"named\": {}}, "
+        "{\"name\": \"Order\", \"args\": [\"2\"], \"named\": {}}]");
+  CHECK(text(fgsg_attr_name(g, 1)) == "roof");
+  CHECK(text(fgsg_attr_kind(g, 1)) == "str");
+  CHECK(text(fgsg_attr_default(g, 1)) == "gable");
+  CHECK(text(fgsg_attr_annotations_json(g, 1)) ==
+        "[{\"name\": \"Enum\", \"args\": [\"flat\", \"gable\"], \"named\": {}}, "
+        "{\"name\": \"Description\", \"args\": [\"the \\\"roof\\\" shape\"], \"named\": {}}]");
+  CHECK(text(fgsg_attr_name(g, 2)) == "debug");
+  CHECK(text(fgsg_attr_kind(g, 2)) == "bool");
+  CHECK(text(fgsg_attr_default(g, 2)) == "false");
+  CHECK(text(fgsg_attr_annotations_json(g, 2)) == "[{\"name\": \"Hidden\", \"args\": [], \"named\": {}}]");
+  CHECK(text(fgsg_attr_name(g, 3)) == "plain");
+  CHECK(text(fgsg_attr_default(g, 3)) == "3");
+  CHECK(text(fgsg_attr_annotations_json(g, 3)) == "[]");
+  // Out of range and NULL.
+  const size_t n = fgsg_attr_count(g);
+  CHECK(fgsg_attr_name(g, n) == nullptr);
+  CHECK(fgsg_attr_kind(g, n) == nullptr);
+  CHECK(fgsg_attr_default(g, n) == nullptr);
+  CHECK(fgsg_attr_annotations_json(g, n) == nullptr);
+  CHECK(fgsg_attr_count(nullptr) == 0);
+  CHECK(fgsg_attr_name(nullptr, 0) == nullptr);
+  // What fgsg_attr_default gives, fgsg_set_attribute takes.
+  for (size_t i = 0; i < n; ++i) CHECK(fgsg_set_attribute(g, fgsg_attr_name(g, i), fgsg_attr_default(g, i)) == 0);
+
+  // An fgsg grammar's attrs: no annotations; a vec3 default as "x,y,z".
+  const FgsgProgram q = textOnlyProgram("attr w = 4;\nattr at = (1, 2.5, -3);\nAxiom ~> S(w, 1, 1) I(\"cube\");\n");
+  Generator h(&q);
+  REQUIRE(h.error().empty());
+  REQUIRE(fgsg_attr_count(h) == 2);
+  CHECK(text(fgsg_attr_name(h, 1)) == "at");
+  CHECK(text(fgsg_attr_kind(h, 1)) == "vec3");
+  CHECK(text(fgsg_attr_default(h, 1)) == "1,2.5,-3");
+  CHECK(text(fgsg_attr_annotations_json(h, 0)) == "[]");
+}
+
 TEST_CASE("fgsg_set_option: unknown names and bad values fail with a message and change nothing", "[c_api]") {
   const FgsgProgram p = textOnlyProgram(kSimpleGrammar);
   Generator g(&p);
