@@ -103,15 +103,19 @@ struct Grammar {
       throw std::runtime_error(path + ": compiled for ABI version " + std::to_string(program->abiVersion) +
                                ", this fgsg runs " + std::to_string(FGSG_ABI_VERSION) + ": compile it again");
     if (!program->source) throw std::runtime_error(path + ": the program carries no grammar text");
-    auto g = compile(program->source, program->sourceName && *program->sourceName ? program->sourceName : path);
+    auto g = compile(program->source, program->sourceName && *program->sourceName ? program->sourceName : path, "");
     g->program = program;
     g->library = std::move(library);
     return g;
   }
 
-  static std::shared_ptr<Grammar> compile(const std::string& text, const std::string& name) {
+  // `startRule`: a .cga grammar's rule for its start shapes instead of its @StartRule (as
+  // fgsg run --start-rule); "" its own.
+  static std::shared_ptr<Grammar> compile(const std::string& text, const std::string& name,
+                                          const std::string& startRule) {
     auto g = std::make_shared<Grammar>();
     g->source = frontend::SourceFile::make(name, text);
+    g->source.startRule = startRule;
     frontend::Diagnostics diags(&g->source);
     if (!ir::compileSource(g->source, g->module, diags)) throw CompileError{diagnosticList(diags, name)};
     const std::filesystem::path dir = std::filesystem::path(name).parent_path();
@@ -119,11 +123,11 @@ struct Grammar {
     return g;
   }
 
-  static std::shared_ptr<Grammar> fromFile(const std::string& path) {
+  static std::shared_ptr<Grammar> fromFile(const std::string& path, const std::string& startRule) {
     frontend::SourceFile file;
     std::string error;
     if (!ir::readSourceFile(path, file, error)) throw std::runtime_error(error);
-    return compile(file.text, path);
+    return compile(file.text, path, startRule);
   }
 
   // `attrs`: (name, value as text) pairs, their Python types already checked against the
@@ -339,8 +343,8 @@ PYBIND11_MODULE(_fgsg, m) {
       });
 
   py::class_<Grammar, std::shared_ptr<Grammar>>(m, "Grammar")
-      .def_static("compile", &Grammar::compile, py::arg("text"), py::arg("name"))
-      .def_static("from_file", &Grammar::fromFile, py::arg("path"))
+      .def_static("compile", &Grammar::compile, py::arg("text"), py::arg("name"), py::arg("start_rule") = "")
+      .def_static("from_file", &Grammar::fromFile, py::arg("path"), py::arg("start_rule") = "")
       .def_static("from_library", &Grammar::fromLibrary, py::arg("path"), py::arg("name"))
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
            py::arg("max_shapes"), py::arg("engine"), py::arg("lots"))

@@ -122,6 +122,15 @@ class Annotation(NamedTuple):
 _SEED_MAX = 2**64 - 1
 
 
+def _start_rule(value):
+    """from_file's and from_text's start_rule as the engine takes it: "" for None."""
+    if value is None:
+        return ""
+    if not isinstance(value, str) or not value:
+        raise TypeError(f"start_rule must be a rule name (a non-empty str) or None, not {value!r}")
+    return value
+
+
 def _whole(what, value, high=_SEED_MAX):
     """`value` as an int from 0 to `high`: a TypeError for a non-integer (7.9, "7", True),
     a ValueError for one out of range."""
@@ -175,9 +184,11 @@ class Grammar:
         self._native = native
 
     @classmethod
-    def from_file(cls, path):
-        """Compiles the grammar in `path` (its assets are looked up beside it, as fgsg run does)."""
-        return cls(_raising(_fgsg.Grammar.from_file, os.fspath(path)))
+    def from_file(cls, path, start_rule=None):
+        """Compiles the grammar in `path` (its assets are looked up beside it, as fgsg run does).
+        `start_rule`: a .cga grammar's rule for its lots instead of its @StartRule (as
+        fgsg run --start-rule); a rule the file lacks, or an fgsg grammar, is a GrammarError."""
+        return cls(_raising(_fgsg.Grammar.from_file, os.fspath(path), _start_rule(start_rule)))
 
     @classmethod
     def from_library(cls, path, name=""):
@@ -186,9 +197,10 @@ class Grammar:
         return cls(_raising(_fgsg.Grammar.from_library, os.fspath(path), name))
 
     @classmethod
-    def from_text(cls, text, name="<text>.fgsg"):
-        """Compiles grammar `text`; `name` names it in errors (and its folder holds its assets)."""
-        return cls(_raising(_fgsg.Grammar.compile, text, name))
+    def from_text(cls, text, name="<text>.fgsg", start_rule=None):
+        """Compiles grammar `text`; `name` names it in errors (and its folder holds its assets);
+        `start_rule` as in from_file (a name ending .cga makes the text CGA)."""
+        return cls(_raising(_fgsg.Grammar.compile, text, name, _start_rule(start_rule)))
 
     @property
     def name(self):

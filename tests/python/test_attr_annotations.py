@@ -1,5 +1,7 @@
 """Grammar.attr_annotations: a .cga attr's annotations (@Range, @Enum, @Hidden, @Group,
 @Order, @Description ...) as Annotation(name, args, named), without changing Grammar.attrs."""
+import pytest
+
 import fgsg
 
 CGA = '''version "2023.0"
@@ -43,3 +45,25 @@ def test_cga_attr_annotations(tmp_path):
 def test_fgsg_attrs_have_no_annotations():
     g = fgsg.Grammar.from_text('attr w = 4;\naxiom: A;\nA -> S(w, 1, 1) I("cube");\n', "plain.fgsg")
     assert g.attr_annotations == {"w": []}
+
+
+TWO_RULES = '''@StartRule
+Lot --> split(x) { 5 : A }*
+Other --> split(x) { 10 : A }*
+A --> extrude(3) Mass
+'''
+
+
+def test_start_rule():
+    """from_text/from_file(start_rule=...): as fgsg run --start-rule (the default lot is 20 m)."""
+    own = fgsg.Grammar.from_text(TWO_RULES, "two.cga").generate(seed=1)
+    other = fgsg.Grammar.from_text(TWO_RULES, "two.cga", start_rule="Other").generate(seed=1)
+    assert own.stats["instances"] == 4
+    assert other.stats["instances"] == 2
+    with pytest.raises(fgsg.GrammarError, match=r"--start-rule Nope: the start rule 'Nope' is not a rule of this file; "
+                                                r"rules that can start: Lot \(@StartRule\), A, Other"):
+        fgsg.Grammar.from_text(TWO_RULES, "two.cga", start_rule="Nope")
+    with pytest.raises(fgsg.GrammarError, match=r"only a \.cga grammar"):
+        fgsg.Grammar.from_text('axiom: A;\nA -> I("cube");\n', "g.fgsg", start_rule="A")
+    with pytest.raises(TypeError):
+        fgsg.Grammar.from_text(TWO_RULES, "two.cga", start_rule=3)
