@@ -33,7 +33,7 @@ done
 cmp -s "$tmp/chain.jit.glb" "$tmp/chain.interp.glb" || fail "chain: the engines wrote other bytes"
 
 # The REPL survives (and keeps its session).
-timeout 60 "$fgsg" repl <"$inputs/04_repl_jit_crash.script" >"$tmp/repl.out" 2>&1
+timeout "$(watchdog 60)" "$fgsg" repl <"$inputs/04_repl_jit_crash.script" >"$tmp/repl.out" 2>&1
 [ $? -lt 124 ] || { cat "$tmp/repl.out" >&2; fail "the REPL died deriving A ~> A A"; }
 grep -q "R004" "$tmp/repl.out" || { cat "$tmp/repl.out" >&2; fail "the REPL did not report the limit"; }
 

@@ -28,6 +28,13 @@ same_message() {
   cmp -s "$tmp/m1" "$tmp/m2" || fail "'$*' prints other messages on each run"
 }
 
+# watchdog SECONDS: a hang watchdog's budget, five times longer in the sanitized build
+# (2-4x slower, and sanitized suites run beside other work), so that there it still
+# catches a hang but not a slow process (deep_recursion's REPL took over 60 s at load 10).
+watchdog() {
+  if grep -qa __asan_init "$fgsg"; then echo $(($1 * 5)); else echo "$1"; fi
+}
+
 # skip_under_asan WHY: a test of elapsed time or of an address-space limit measures what
 # AddressSanitizer changes (2-4x slower, terabytes of shadow reserved): it stops here,
 # passing, in scripts/sanitize.sh's build and runs in every other.
