@@ -7,12 +7,16 @@ fgsg=$1 root=$2
 cd "$tmp" || fail "no scratch folder"
 g="$inputs/outputs_spheres.fgsg"
 
-# ulimit -f 64: 64 KiB, far below the mesh (about 10 MB as OBJ, 3.5 MB as GLB).
+# ulimit -f 64: 64 KiB, far below the flattened mesh (about 10 MB as OBJ, 3.5 MB as GLB).
 for out in big.obj big.glb big.ply; do
   echo "old" > "$out"
-  expect 1 "cannot write '$out': File too large" -- bash -c "ulimit -f 64; exec \"\$0\" run \"\$1\" -q -o \"\$2\"" "$fgsg" "$g" "$out"
+  expect 1 "cannot write '$out': File too large" -- bash -c "ulimit -f 64; exec \"\$0\" run \"\$1\" -q --instancing off --group-by none -o \"\$2\"" "$fgsg" "$g" "$out"
   [ "$(cat "$out")" = "old" ] || fail "ulimit -f: $out was replaced"
 done
+# The default glTF scene instances the spheres (about 24 KB): ulimit -f 8 cuts it.
+echo "old" > scene.glb
+expect 1 "cannot write 'scene.glb': File too large" -- bash -c "ulimit -f 8; exec \"\$0\" run \"\$1\" -q -o \"\$2\"" "$fgsg" "$g" scene.glb
+[ "$(cat scene.glb)" = "old" ] || fail "ulimit -f: scene.glb was replaced"
 ! ls -a | grep -q '\.tmp\.' || fail "temporaries left: $(ls -a)"
 
 # ulimit -v: under any memory limit the run either writes a whole file (a GLB as long
