@@ -1,49 +1,14 @@
 #include "runtime/io/write_instances.h"
 
+#include "runtime/io/json_text.h"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <new>
 
 namespace fgsg::rt::io {
 
 namespace {
-
-// Shortest round-trip text; a float prints as the float it is (0.8f as 0.8, not as the
-// double 0.800000011920929).
-template <typename T>
-void appendNumber(std::string& out, T v) {
-  if (!std::isfinite(v)) {
-    out += "null";
-    return;
-  }
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
-
-void appendString(std::string& out, const std::string& s) {
-  out += '"';
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += char(c);  // UTF-8 passes through unchanged
-        }
-    }
-  }
-  out += '"';
-}
 
 template <typename Range, typename Append>
 void appendArray(std::string& out, const Range& items, Append append) {
@@ -60,7 +25,7 @@ void appendArray(std::string& out, const Range& items, Append append) {
 // An index that does not name an entry of its table is written as null.
 void appendName(std::string& out, const std::vector<std::string>& table, uint32_t index) {
   if (index < table.size())
-    appendString(out, table[index]);
+    appendJsonString(out, table[index]);
   else
     out += "null";
 }
@@ -79,11 +44,11 @@ void appendParams(std::string& out, const InstanceList& list, const Instance& in
     const ParamKind kind = p < kinds.size() ? kinds[p] : ParamKind::Number;
     const double v = slot(k);
     switch (kind) {
-      case ParamKind::Number: appendNumber(out, v); k += 1; break;
+      case ParamKind::Number: appendJsonNumber(out, v); k += 1; break;
       case ParamKind::Boolean: out += v != 0 ? "true" : "false"; k += 1; break;
       case ParamKind::String:
         if (v >= 0 && v < double(list.strings.size()))
-          appendString(out, list.strings[size_t(v)]);
+          appendJsonString(out, list.strings[size_t(v)]);
         else
           out += "null";
         k += 1;
@@ -92,7 +57,7 @@ void appendParams(std::string& out, const InstanceList& list, const Instance& in
         out += '[';
         for (int c = 0; c < 3; ++c) {
           if (c) out += ',';
-          appendNumber(out, slot(k + c));
+          appendJsonNumber(out, slot(k + c));
         }
         out += ']';
         k += 3;
@@ -105,9 +70,9 @@ void appendParams(std::string& out, const InstanceList& list, const Instance& in
 
 std::string encodeInstancesJson(const InstanceList& list) {
   std::string out = "{\"format\":\"fgsg-instances\",\"version\":1,\n\"assets\":";
-  appendArray(out, list.assets, appendString);
+  appendArray(out, list.assets, appendJsonString);
   out += ",\n\"symbols\":";
-  appendArray(out, list.symbols, appendString);
+  appendArray(out, list.symbols, appendJsonString);
   out += ",\n\"instances\":[";
   for (size_t i = 0; i < list.instances.size(); ++i) {
     const Instance& inst = list.instances[i];
@@ -117,9 +82,9 @@ std::string encodeInstancesJson(const InstanceList& list) {
     out += ",\"symbol\":";
     appendName(out, list.symbols, inst.symbol);
     out += ",\"transform\":";
-    appendArray(out, inst.transform, appendNumber<double>);
+    appendArray(out, inst.transform, appendJsonNumber<double>);
     out += ",\"color\":";
-    appendArray(out, inst.color, appendNumber<float>);
+    appendArray(out, inst.color, appendJsonNumber<float>);
     out += ",\"params\":[";
     appendParams(out, list, inst);
     out += "]}";
@@ -159,10 +124,10 @@ std::string encodeLinesJson(const InstanceList& list) {
     out += i ? ",\n{\"symbol\":" : "\n{\"symbol\":";
     appendName(out, list.symbols, line.symbol);
     out += ",\"width\":";
-    appendNumber(out, line.width);
+    appendJsonNumber(out, line.width);
     out += line.merge ? ",\"merge\":true,\"points\":" : ",\"merge\":false,\"points\":";
     appendArray(out, line.points, [](std::string& o, const std::array<double, 3>& p) {
-      appendArray(o, p, [](std::string& oo, double v) { appendNumber(oo, v); });
+      appendArray(o, p, [](std::string& oo, double v) { appendJsonNumber(oo, v); });
     });
     out += '}';
   }

@@ -1,50 +1,17 @@
 #include "runtime/io/write_reports.h"
 
+#include "runtime/io/json_text.h"
+
 #include <algorithm>
-#include <charconv>
-#include <cmath>
-#include <cstdio>
 
 namespace fgsg::rt::io {
 namespace {
 
-void appendNumber(std::string& out, double v) {
-  if (!std::isfinite(v)) {
-    out += "null";
-    return;
-  }
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
-
-void appendString(std::string& out, const std::string& s) {
-  out += '"';
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += char(c);  // UTF-8 passes through unchanged
-        }
-    }
-  }
-  out += '"';
-}
-
 void appendValue(std::string& out, const ReportValue& v) {
   switch (v.kind) {
-    case ReportValue::Kind::Number: appendNumber(out, v.number); break;
+    case ReportValue::Kind::Number: appendJsonNumber(out, v.number); break;
     case ReportValue::Kind::Boolean: out += v.number != 0 ? "true" : "false"; break;
-    case ReportValue::Kind::String: appendString(out, v.text); break;
+    case ReportValue::Kind::String: appendJsonString(out, v.text); break;
   }
 }
 
@@ -53,7 +20,7 @@ void appendCollections(std::string& out, const std::vector<ReportCollection>& co
   for (size_t k = 0; k < collections.size(); ++k) {
     const ReportCollection& c = collections[k];
     if (k) out += ',';
-    appendString(out, c.key);
+    appendJsonString(out, c.key);
     out += ":{\"values\":[";
     for (size_t i = 0; i < c.values.size(); ++i) {
       if (i) out += ',';
@@ -62,20 +29,20 @@ void appendCollections(std::string& out, const std::vector<ReportCollection>& co
     out += "],\"count\":" + std::to_string(c.values.size());
     if (c.numeric) {
       out += ",\"sum\":";
-      appendNumber(out, c.sum);
+      appendJsonNumber(out, c.sum);
       out += ",\"average\":";
-      appendNumber(out, c.average);
+      appendJsonNumber(out, c.average);
       out += ",\"min\":";
-      appendNumber(out, c.min);
+      appendJsonNumber(out, c.min);
       out += ",\"max\":";
-      appendNumber(out, c.max);
+      appendJsonNumber(out, c.max);
       out += ",\"nnz\":" + std::to_string(c.nonZero);
     }
     if (!c.stringCounts.empty()) {
       out += ",\"strings\":{";
       for (size_t i = 0; i < c.stringCounts.size(); ++i) {
         if (i) out += ',';
-        appendString(out, c.stringCounts[i].first);
+        appendJsonString(out, c.stringCounts[i].first);
         out += ':' + std::to_string(c.stringCounts[i].second);
       }
       out += '}';
@@ -98,7 +65,7 @@ std::string encodeReportsJson(const DeriveResult& result, const std::vector<Lot>
       const Lot& lot = lots[s];
       out += std::string(",\"lot\":{\"") + (lot.isFace ? "face" : "feature") + "\":" + std::to_string(lot.feature) +
              ",\"part\":" + std::to_string(lot.part) + ",\"id\":";
-      appendString(out, lot.id);
+      appendJsonString(out, lot.id);
       out += '}';
     }
     out += ",\"reports\":";
