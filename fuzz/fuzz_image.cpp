@@ -11,7 +11,6 @@
 // stb's TGA did on a truncated file, is caught where the heap differs between the calls).
 #include "runtime/io/read_image.h"
 
-#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -24,28 +23,13 @@ namespace {
   std::abort();
 }
 
-uint32_t crc32(const char* data, size_t n) {
-  static const std::array<uint32_t, 256> table = [] {
-    std::array<uint32_t, 256> t{};
-    for (uint32_t i = 0; i < 256; ++i) {
-      uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  uint32_t c = 0xFFFFFFFFu;
-  for (size_t i = 0; i < n; ++i) c = table[(c ^ uint8_t(data[i])) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
-
 void fixPngCrcs(std::string& b) {
   size_t at = 8;
   while (at + 12 <= b.size()) {
     const uint32_t length = uint32_t(uint8_t(b[at])) << 24 | uint32_t(uint8_t(b[at + 1])) << 16 |
                             uint32_t(uint8_t(b[at + 2])) << 8 | uint32_t(uint8_t(b[at + 3]));
     if (at + 12 + uint64_t(length) > b.size()) return;
-    const uint32_t c = crc32(b.data() + at + 4, 4 + size_t(length));
+    const uint32_t c = fgsg::rt::io::pngChunkCrc(b, at, length);
     for (int k = 0; k < 4; ++k) b[at + 8 + length + size_t(k)] = char(c >> (24 - 8 * k));
     at += 12 + length;
   }

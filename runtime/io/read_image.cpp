@@ -3,7 +3,6 @@
 #include "runtime/io/pnm_reader.h"
 
 #include <algorithm>
-#include <array>
 #include <vector>
 
 #include <zlib.h>
@@ -46,21 +45,6 @@ uint32_t littleEndian(const std::string& b, size_t at, int n) {
   return v;
 }
 
-uint32_t crc32(const char* data, size_t n) {
-  static const std::array<uint32_t, 256> table = [] {
-    std::array<uint32_t, 256> t{};
-    for (uint32_t i = 0; i < 256; ++i) {
-      uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  uint32_t c = 0xFFFFFFFFu;
-  for (size_t i = 0; i < n; ++i) c = table[(c ^ uint8_t(data[i])) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
-
 // PNG: chunks (length, type, data, CRC) from the signature to IEND, all present; the
 // critical ones (upper-case first letter: IHDR, PLTE, IDAT, IEND) with a sound CRC, as
 // libpng requires. stb_image's inflater pads a short stream with zeros.
@@ -80,7 +64,7 @@ bool checkPngComplete(const std::string& b, std::string& why) {
       return false;
     }
     const bool critical = type[0] >= 'A' && type[0] <= 'Z';
-    if (critical && crc32(b.data() + at + 4, 4 + size_t(length)) != bigEndian32(b, at + 8 + length)) {
+    if (critical && pngChunkCrc(b, at, length) != bigEndian32(b, at + 8 + length)) {
       why = "damaged: its '" + type + "' chunk at byte " + std::to_string(at) + " fails its CRC check";
       return false;
     }
@@ -298,6 +282,10 @@ bool checkSize(const std::string& path, int64_t w, int64_t h, const ImageLimits&
 }
 
 }  // namespace
+
+uint32_t pngChunkCrc(const std::string& png, size_t chunkAt, uint32_t length) {
+  return static_cast<uint32_t>(crc32_z(0, reinterpret_cast<const Bytef*>(png.data() + chunkAt + 4), 4 + size_t(length)));
+}
 
 ImageFormat imageFormatOf(const std::string& bytes) {
   if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) == 0) return ImageFormat::Png;

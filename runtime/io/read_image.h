@@ -22,6 +22,10 @@ enum class ImageFormat { Unknown, Png, Jpeg, Bmp, Pnm };
 ImageFormat imageFormatOf(const std::string& bytes);
 // "PNG", "JPEG", "BMP", "PGM/PPM"; "unknown".
 const char* imageFormatName(ImageFormat format);
+
+// The CRC a PNG chunk carries: of its type and data, the 4 + length bytes from byte
+// chunkAt + 4 of `png` (which must hold them).
+uint32_t pngChunkCrc(const std::string& png, size_t chunkAt, uint32_t length);
 // "image/png" and "image/jpeg" (what glTF embeds); nullptr for the others.
 const char* imageMimeType(ImageFormat format);
 
