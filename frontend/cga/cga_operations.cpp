@@ -238,6 +238,16 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return false;
   };
   auto push = [&](Item item) { seq.out.items.push_back(std::move(item)); };
+  // A shape of `name` with the call's arguments, after the insert waiting for its scope.
+  auto pushShape = [&] {
+    std::vector<ExprPtr> a = args(env);
+    if (!allOk(a)) return;
+    flushInsert();
+    Item item = command(symbolName(name), at);
+    item.args = std::move(a);
+    push(std::move(item));
+    seq.createsShapes = true;
+  };
   // The operations after this one, as the body of a command that replaces the shape.
   auto restAsBody = [&](Item& item, const std::string& label) {
     Successor part;
@@ -256,13 +266,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
                                 std::to_string(argCtx.size()));
       return;
     }
-    std::vector<ExprPtr> a = args(env);
-    if (!allOk(a)) return;
-    flushInsert();
-    Item item = command(symbolName(name), at);
-    item.args = std::move(a);
-    push(std::move(item));
-    seq.createsShapes = true;
+    pushShape();
     return;
   }
 
@@ -480,13 +484,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
   }
   // CityEngine derives a shape of a rule it does not have as a leaf (and warns).
   if (!noBody()) return;
-  std::vector<ExprPtr> a = args(env);
-  if (!allOk(a)) return;
-  flushInsert();
-  Item item = command(symbolName(name), at);
-  item.args = std::move(a);
-  push(std::move(item));
-  seq.createsShapes = true;
+  pushShape();
 }
 
 void Translator::split(P::CallOperationContext* op, const std::string& axisWord, Sequence& seq, const Env& env) {
