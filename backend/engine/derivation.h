@@ -216,6 +216,7 @@ class Derivation final : public QueryHost {
   bool contextHolds(const ir::Rule& r, uint32_t node, double* params) const;
   bool guardHolds(uint32_t rule, const Frame& f);
   bool takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken);
+  void noteOverlap(const std::pair<uint32_t, uint32_t>& rules);  // (taken, also applying), once
   void overlapWarnings(std::vector<rt::DeriveMessage>& messages) const;
   void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total);
   const Candidate& pickCandidate(rt::RandomStream& rng, double total) const;

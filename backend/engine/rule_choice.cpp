@@ -59,9 +59,12 @@ bool Derivation::takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken) 
     taken = ri;
     return true;
   }
-  const std::pair<uint32_t, uint32_t> pair{taken, ri};
-  if (std::find(overlaps_.begin(), overlaps_.end(), pair) == overlaps_.end()) overlaps_.push_back(pair);
+  noteOverlap({taken, ri});
   return false;
+}
+
+void Derivation::noteOverlap(const std::pair<uint32_t, uint32_t>& rules) {
+  if (std::find(overlaps_.begin(), overlaps_.end(), rules) == overlaps_.end()) overlaps_.push_back(rules);
 }
 
 // R029 for each pair of rules met applying to one shape, the first one's location.

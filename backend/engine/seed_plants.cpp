@@ -117,8 +117,7 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
     if (p.out.assets.size() != out_.assets.size() || p.out.symbols.size() != out_.symbols.size())
       throw std::logic_error("a seed plant numbered its assets or symbols apart from the derivation");
     for (size_t r = 0; r < ruleUses_.size(); ++r) ruleUses_[r] += p.ruleUses[r];
-    for (const auto& pair : p.overlaps)
-      if (std::find(overlaps_.begin(), overlaps_.end(), pair) == overlaps_.end()) overlaps_.push_back(pair);
+    for (const auto& rules : p.overlaps) noteOverlap(rules);
     if (p.depthWarning && !depthLimitHit_) depthLimitHit_ = true, depthWarning_ = *p.depthWarning;
 
     const uint64_t left = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);
