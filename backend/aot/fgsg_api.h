@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /* fgsg C API: run a grammar compiled ahead of time (`fgsg compile`) from C or any
  * language with a C FFI. Link with -lfgsg (libfgsg.so); the compiled grammar library
  * (libNAME.so, header NAME.h) provides the program constant.
