@@ -29,7 +29,7 @@ python3 -c 'import socket,time; s=socket.socket(); s.bind(("127.0.0.1",0)); s.li
 holder=$!
 for _ in $(seq 50); do [ -s "${TMPDIR:-/tmp}/fgsg-view-port.$$" ] && break; sleep 0.1; done
 busy=$(cat "${TMPDIR:-/tmp}/fgsg-view-port.$$")
-expect 1 "Address already in use (another fgsg view?): choose another --port" -- "$source/examples/koch.fgsg" --port "$busy"
+expect 1 "Address already in use (another fgsg view?): choose another --port, or --port 0 for a free one" -- "$source/examples/koch.fgsg" --port "$busy"
 kill $holder 2>/dev/null
 rm -f "${TMPDIR:-/tmp}/fgsg-view-port.$$"
 # A server reachable from the network without its token is refused before it starts.
