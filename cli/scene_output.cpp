@@ -1,6 +1,7 @@
 #include "cli/scene_output.h"
 
 #include "cli/options.h"
+#include "backend/scene_starts.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/output/gltf_writer.h"
 #include "runtime/output/obj_scene_writer.h"
@@ -33,18 +34,6 @@ std::vector<std::string> ruleGroups(const ir::Module& m, rt::output::GroupBy by)
   return names;
 }
 
-rt::output::StartInfo lotInfo(const rt::Lot& lot) {
-  rt::output::StartInfo info;
-  if (!lot.id.empty())
-    info.name = lot.id;
-  else
-    info.name = (lot.isFace ? "face " : "feature ") + std::to_string(lot.feature);
-  if (lot.part > 0) info.name += " polygon " + std::to_string(lot.part);
-  info.numbers = lot.numbers;
-  info.strings = lot.strings;
-  return info;
-}
-
 // The scene of the run as `layout` lays it out (OBJ: no instances).
 rt::output::Scene buildScene(const SceneFlags& flags, const SceneSource& run, OutputLayout layout) {
   const rt::DeriveResult& result = run.result;
@@ -58,15 +47,7 @@ rt::output::Scene buildScene(const SceneFlags& flags, const SceneSource& run, Ou
     in.groupBy = rt::output::GroupBy::None, in.instancing = rt::output::Instancing::Off;
   if (in.groupBy == rt::output::GroupBy::Rule || in.groupBy == rt::output::GroupBy::Label)
     in.ruleGroups = ruleGroups(run.module, in.groupBy);
-  const size_t starts = result.instances.startBounds.size() > 1 ? result.instances.startBounds.size() - 1 : 1;
-  for (size_t k = 0; k < starts; ++k) {
-    if (!run.derive.lots.empty() && k < run.derive.lots.size())
-      in.starts.push_back(lotInfo(run.derive.lots[k]));
-    else if (starts > 1)
-      in.starts.push_back({"seed " + std::to_string(k), {}, {}});
-    else
-      in.starts.push_back({"axiom", {}, {}});
-  }
+  in.starts = backend::sceneStarts(run.module, run.derive, result);
   return rt::output::buildScene(in);
 }
 

@@ -3,6 +3,7 @@
 #include "runtime/io/glb_container.h"
 #include "runtime/io/glb_writer.h"
 #include "runtime/io/mesh_attributes.h"
+#include "runtime/output/start_extras.h"
 
 #include <nlohmann/json.hpp>
 
@@ -388,12 +389,7 @@ int Writer::groupNode(const GroupNode& g, json node) {
 }
 
 int Writer::startNode(const StartNode& s) {
-  json extras = {{"start", s.index}, {"instances", s.instanceCount}};
-  json properties = json::object();
-  for (const auto& [key, value] : s.info.numbers) properties[key] = value;
-  for (const auto& [key, value] : s.info.strings) properties[key] = value;
-  if (!properties.empty()) extras["properties"] = std::move(properties);
-  json node = {{"name", s.info.name}, {"extras", std::move(extras)}};
+  json node = {{"name", s.info.name}, {"extras", startExtras(s)}};
   if (scene_.groupBy == GroupBy::None) {
     // No group level: the one group's contents are the start node's own.
     if (s.groups.empty()) {

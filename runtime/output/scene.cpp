@@ -340,11 +340,11 @@ struct Builder {
     if (bounds.size() < 2) bounds = {0, n};
     for (uint32_t& b : bounds) b = std::min(b, n);  // an assembly cut short keeps the first instances
     for (size_t k = 0; k + 1 < bounds.size(); ++k) {
-      StartInfo info = k < in.starts.size() ? in.starts[k] : StartInfo{"start " + std::to_string(k), {}, {}};
+      StartInfo info = k < in.starts.size() ? in.starts[k] : StartInfo{"start " + std::to_string(k), {}, {}, {}, {}};
       scene.starts.push_back(buildStart(std::move(info), uint32_t(k), bounds[k], bounds[k + 1]));
     }
     if (bounds.back() < n)
-      scene.starts.push_back(buildStart(StartInfo{"(surface and lines)", {}, {}}, uint32_t(bounds.size() - 1),
+      scene.starts.push_back(buildStart(StartInfo{"(surface and lines)", {}, {}, {}, {}}, uint32_t(bounds.size() - 1),
                                         bounds.back(), n));
   }
 };

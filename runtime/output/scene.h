@@ -15,6 +15,7 @@
 #include "runtime/instances.h"
 #include "runtime/mesh.h"
 #include "runtime/output/trs.h"
+#include "runtime/reports.h"
 
 #include <array>
 #include <cmath>
@@ -32,11 +33,25 @@ enum class GroupBy : uint8_t { None, Symbol, Rule, Label };
 // extension — Blender 3.4 — import as linked duplicates).
 enum class Instancing : uint8_t { Off, Auto, On, Nodes };
 
-// What names a start shape and what it carries (a lot's feature id and properties).
+// A grammar attr's value as a start shape derived with it (its default, --set, the lot's
+// property of its name).
+struct StartAttr {
+  enum class Kind : uint8_t { Number, Boolean, String, Vector };
+  std::string name;
+  Kind kind = Kind::Number;
+  std::array<double, 3> number{};  // Number and Boolean (0/1) in [0]; Vector x y z
+  std::string text;                // String
+};
+
+// What names a start shape and what it carries (a lot's feature id and properties, the
+// attrs' values, the reports collected under it); the glTF writer puts them in the start
+// node's extras.
 struct StartInfo {
   std::string name;
   std::vector<std::pair<std::string, double>> numbers;
   std::vector<std::pair<std::string, std::string>> strings;
+  std::vector<StartAttr> attrs;           // in declaration order
+  std::vector<ReportCollection> reports;  // by key (runtime/reports.h)
 };
 
 struct SceneInput {
