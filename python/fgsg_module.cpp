@@ -136,12 +136,15 @@ struct Grammar {
   std::shared_ptr<Result> generate(uint64_t seed, const std::vector<std::pair<std::string, std::string>>& attrs,
                                    const std::optional<std::string>& surface,
                                    std::optional<uint64_t> maxShapes, const std::string& engineName,
-                                   const std::optional<std::string>& lots) {
+                                   const std::optional<std::string>& lots, std::optional<uint32_t> maxDepth,
+                                   std::optional<double> maxSeconds) {
     const auto engine = backend::parseEngine(engineName);
     if (!engine) throw py::value_error("engine must be 'jit' or 'interp', got '" + engineName + "'");
     rt::DeriveOptions options;
     options.seed = seed;
     if (maxShapes) options.maxShapes = *maxShapes;
+    if (maxDepth) options.maxDepth = *maxDepth;
+    if (maxSeconds) options.maxSeconds = *maxSeconds;  // positive and finite (checked by the package)
     if (surface) options.surfaceOverride = std::filesystem::absolute(*surface).string();
     if (lots) {  // as fgsg run --lots: the axiom once per lot, its footprint and properties
       size_t skipped = 0;
@@ -347,7 +350,7 @@ PYBIND11_MODULE(_fgsg, m) {
       .def_static("from_file", &Grammar::fromFile, py::arg("path"), py::arg("start_rule") = "")
       .def_static("from_library", &Grammar::fromLibrary, py::arg("path"), py::arg("name"))
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
-           py::arg("max_shapes"), py::arg("engine"), py::arg("lots"))
+           py::arg("max_shapes"), py::arg("engine"), py::arg("lots"), py::arg("max_depth"), py::arg("max_seconds"))
       .def_property_readonly("attrs", &Grammar::attrs)
       .def_property_readonly("attr_annotations", &Grammar::attrAnnotations)
       .def_property_readonly("name", [](const Grammar& g) { return g.source.name; })

@@ -22,8 +22,10 @@ from typing import NamedTuple
 # engine is loaded so that they are visible to it, and the plugins are looked up beside
 # the build or installation this package belongs to unless FGSG_LIBDIR says otherwise.
 _here = os.path.dirname(os.path.abspath(__file__))
-# build/python/fgsg -> build/lib; PREFIX/lib/python3/dist-packages/fgsg -> PREFIX/lib.
-for _candidate in (os.path.join(_here, "..", "..", "lib"), os.path.join(_here, "..", "..", "..")):
+# build/python/fgsg -> build/lib; PREFIX/lib/python3/dist-packages/fgsg -> PREFIX/lib;
+# a pip-installed wheel (setup.py) -> fgsg/lib.
+for _candidate in (os.path.join(_here, "..", "..", "lib"), os.path.join(_here, "..", "..", ".."),
+                   os.path.join(_here, "lib")):
     if "FGSG_LIBDIR" not in os.environ and os.path.isfile(os.path.join(_candidate, "libfgsg_llvm.so")):
         os.environ["FGSG_LIBDIR"] = os.path.normpath(_candidate)
 _flags = sys.getdlopenflags()
@@ -142,6 +144,19 @@ def _whole(what, value, high=_SEED_MAX):
     return value
 
 
+def _positive_seconds(value):
+    """max_seconds as a float: a TypeError for a non-number, a ValueError unless positive and finite."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"max_seconds must be a number (int or float), not {type(value).__name__}")
+    try:
+        seconds = float(value)
+    except OverflowError:  # an int beyond float's range
+        seconds = math.inf
+    if not (math.isfinite(seconds) and seconds > 0):
+        raise ValueError(f"max_seconds must be a positive, finite number of seconds, got {value!r}")
+    return seconds
+
+
 def _attr_text(key, value, attr):
     """The value of `attrs[key]` as the engine reads it, after checking its Python type
     against the attribute's kind (a TypeError or ValueError naming `attrs[key]`)."""
@@ -232,18 +247,25 @@ class Grammar:
         kind = "library" if self._native.is_library else "grammar"
         return f"<fgsg.Grammar {self.name!r} ({kind}, {len(self._native.attrs)} attrs)>"
 
-    def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit", lots=None):
+    def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit", lots=None,
+                 max_depth=None, max_seconds=None):
         """Derives the grammar: `seed` (an int from 0 to 2**64 - 1), attribute values by
         name (a number for a num attribute, a bool, a str, 3 numbers for a vec3), a surface
         mesh file replacing the grammar's, a shape limit, the engine ("jit", or "interp":
         the reference interpreter; the results are equal), and lots: a GeoJSON or
-        OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots).
+        OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots). The limits
+        are fgsg run's --max-shapes, --max-depth and --max-seconds (None: their defaults);
+        a derivation that meets one keeps what it derived.
 
-        A value of the wrong type is a TypeError, a seed out of range a ValueError; an
-        attribute the grammar does not declare is a GrammarError (R010)."""
+        A value of the wrong type is a TypeError, a seed or limit out of range a ValueError;
+        an attribute the grammar does not declare is a GrammarError (R010)."""
         seed = _whole("seed", seed)
         if max_shapes is not None:
             max_shapes = _whole("max_shapes", max_shapes)
+        if max_depth is not None:
+            max_depth = _whole("max_depth", max_depth, 2**32 - 1)
+        if max_seconds is not None:
+            max_seconds = _positive_seconds(max_seconds)
         if attrs is None:
             attrs = {}
         if not hasattr(attrs, "items"):
@@ -258,4 +280,4 @@ class Grammar:
             raise TypeError(f"engine must be a str ('jit' or 'interp'), not {type(engine).__name__}")
         return Result(_raising(self._native.generate, seed, texts,
                                None if surface is None else os.fspath(surface), max_shapes, engine,
-                               None if lots is None else os.fspath(lots)))
+                               None if lots is None else os.fspath(lots), max_depth, max_seconds))

@@ -68,4 +68,5 @@ class Grammar:
     def generate(self, seed: int = ...,
                  attrs: Optional[Mapping[str, Union[int, float, bool, str, Sequence[float]]]] = ...,
                  surface: Optional[Union[str, os.PathLike[str]]] = ..., max_shapes: Optional[int] = ...,
-                 engine: str = ..., lots: Optional[Union[str, os.PathLike[str]]] = ...) -> Result: ...
+                 engine: str = ..., lots: Optional[Union[str, os.PathLike[str]]] = ...,
+                 max_depth: Optional[int] = ..., max_seconds: Optional[float] = ...) -> Result: ...

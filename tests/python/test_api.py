@@ -144,3 +144,38 @@ def test_reports_and_prints_come_with_the_result(tmp_path):
         assert [s["reports"]["area"]["values"] for s in r.reports["starts"]] == [[200], [96]]
         assert r.reports["all"]["area"]["sum"] == 296
         assert r.prints == [(1, 33, "lot"), (1, 33, "lot")]
+
+
+KOCH = os.path.join(SOURCE, "examples", "koch.fgsg")
+
+
+@pytest.mark.parametrize("kwargs, error, message", [
+    ({"max_depth": 2.5}, TypeError, "max_depth must be an int, not float"),
+    ({"max_depth": -1}, ValueError, "max_depth must be from 0 to 4294967295, got -1"),
+    ({"max_depth": 2**32}, ValueError, "max_depth must be from 0 to 4294967295, got 4294967296"),
+    ({"max_seconds": "10"}, TypeError, "max_seconds must be a number (int or float), not str"),
+    ({"max_seconds": True}, TypeError, "max_seconds must be a number (int or float), not bool"),
+    ({"max_seconds": 0}, ValueError, "max_seconds must be a positive, finite number of seconds, got 0"),
+    ({"max_seconds": float("nan")}, ValueError, "max_seconds must be a positive, finite number of seconds, got nan"),
+    ({"max_seconds": 10**400}, ValueError, "max_seconds must be a positive, finite number of seconds, got " + str(10**400)),
+])
+def test_limits_are_checked_like_the_seed(house, kwargs, error, message):
+    with pytest.raises(error) as e:
+        house.generate(**kwargs)
+    assert str(e.value) == message
+
+
+def test_the_limits_stop_the_derivation_as_fgsg_run_does():
+    chain = fgsg.Grammar.from_text('axiom: A(0);\nA(i) : i < 50 ~> I("cube") T(1, 0, 0) A(i + 1);\n', "chain.fgsg")
+    koch = fgsg.Grammar.from_file(KOCH)
+    full = koch.generate(seed=2)
+    assert chain.generate().stats["shapes"] == 51 and full.stats["shapes"] == 256
+    for engine in ("jit", "interp"):
+        assert koch.generate(seed=2, max_shapes=10, engine=engine).stats["shapes"] == 10
+        # Depth 5: A(0) .. A(5), five cubes.
+        assert chain.generate(max_depth=5, engine=engine).stats == {
+            "shapes": 6, "rewrites": 5, "terminals": 1, "instances": 5, "triangles": 60}
+        # A nanosecond runs out at the deadline's first look, long before the 85 rewrites.
+        assert koch.generate(seed=2, max_seconds=1e-9, engine=engine).stats["shapes"] < 256
+        # A generous limit changes nothing.
+        np.testing.assert_array_equal(koch.generate(seed=2, max_seconds=600, engine=engine).positions, full.positions)
