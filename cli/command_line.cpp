@@ -1,4 +1,5 @@
 #include "cli/command_line.h"
+#include "frontend/did_you_mean.h"
 
 #include <CLI/CLI.hpp>
 
@@ -74,7 +75,16 @@ void CommandLine::parse(const Args& args) {
   } catch (const CLI::ExtrasError&) {
     const std::vector<std::string> extra = app_->remaining();
     const std::string first = extra.empty() ? std::string() : extra.front();
-    if (!first.empty() && first[0] == '-') throw UsageError{"unknown option '" + first + "'" + seeHelp};
+    if (!first.empty() && first[0] == '-') {
+      std::vector<std::string> names;  // every spelling this command accepts
+      for (const CLI::Option* o : app_->get_options()) {
+        for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+        for (const std::string& n : o->get_snames()) names.push_back("-" + n);
+      }
+      const std::string meant = frontend::closestName(first.substr(0, first.find('=')), names);
+      throw UsageError{"unknown option '" + first + "'" + (meant.empty() ? "" : "; did you mean " + meant + "?") +
+                       seeHelp};
+    }
     throw UsageError{"unexpected argument '" + first + "'" + seeHelp};
   } catch (const CLI::ArgumentMismatch& e) {
     // An option with too few values: it was the last argument, or values ran out. CLI11

@@ -5,6 +5,7 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "frontend/did_you_mean.h"
 
 #include <algorithm>
 #include <cctype>
@@ -44,35 +45,18 @@ void Analyzer::checkStart() {
   res_.startSymbol = first.predecessor.name;
 }
 
-namespace {
-
-// Whether one edit (a letter changed, added or dropped, or two neighbours swapped) or a
-// change of case turns a into b.
-bool oneEditApart(const std::string& a, const std::string& b) {
-  if (a == b) return false;
-  if (a.size() == b.size()) {
-    size_t first = 0;
-    while (a[first] == b[first]) ++first;
-    size_t last = a.size() - 1;
-    while (a[last] == b[last]) --last;
-    if (first == last) return true;
-    if (last == first + 1 && a[first] == b[last] && a[last] == b[first]) return true;
-    return std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
-  }
-  const std::string& shorter = a.size() < b.size() ? a : b;
-  const std::string& longer = a.size() < b.size() ? b : a;
-  if (longer.size() != shorter.size() + 1) return false;
-  size_t i = 0;
-  while (i < shorter.size() && shorter[i] == longer[i]) ++i;
-  return std::equal(shorter.begin() + i, shorter.end(), longer.begin() + i + 1);
-}
-
-}  // namespace
-
 // The name of a symbol with rules one edit away from `name`, if any.
 std::string Analyzer::nearName(const std::string& name) const {
+  auto lower = [](std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  // One edit (a letter changed, added or dropped, or two neighbours swapped), or only a
+  // change of case.
   for (const auto& other : res_.symbols)
-    if (!other.rules.empty() && oneEditApart(name, other.name)) return other.name;
+    if (!other.rules.empty() && other.name != name &&
+        (editDistance(name, other.name) == 1 || lower(name) == lower(other.name)))
+      return other.name;
   return "";
 }
 

@@ -1,5 +1,7 @@
 #include "backend/interp/eval.h"
 
+#include "frontend/did_you_mean.h"
+
 #include "runtime/builtins_math.h"
 
 #include <cmath>
@@ -214,8 +216,14 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
   const int a = m.findAttr(name);
   if (a < 0) {
     std::string known;
-    for (const auto& at : m.attrs) known += (known.empty() ? "" : ", ") + at.name;
+    std::vector<std::string> names;
+    for (const auto& at : m.attrs) {
+      known += (known.empty() ? "" : ", ") + at.name;
+      names.push_back(at.name);
+    }
+    const std::string meant = frontend::closestName(name, names);
     return name + ": the grammar declares no attr '" + name + "'" +
+           (meant.empty() ? "" : "; did you mean '" + meant + "'?") +
            (known.empty() ? " (it declares none)" : " (attrs: " + known + ")");
   }
   double value[3];

@@ -5,6 +5,7 @@
 // A choice nested inside another's branch becomes a rule of a helper symbol `Name$n`
 // with the same parameters, created in its place.
 #include "frontend/cga/cga_translator.h"
+#include "frontend/did_you_mean.h"
 
 #include <cmath>
 
@@ -362,13 +363,17 @@ void Translator::startRule() {
   if (!rules_.count(start)) {
     // The rules a start shape can derive: those without parameters, the @StartRule first.
     std::string candidates;
+    std::vector<std::string> startable;
     if (!startRule_.empty()) candidates = startRule_ + " (@StartRule)";
     for (const auto& [name, params] : rules_) {
+      if (params == 0) startable.push_back(name);
       if (params != 0 || name == startRule_) continue;
       candidates += (candidates.empty() ? "" : ", ") + name;
     }
+    const std::string meant = closestName(start, startable);
     error("E803", given ? SourceRange{{1, 1}, {1, 1}} : at,
           named + "the start rule '" + start + "' is not a rule of this file" +
+              (meant.empty() ? std::string() : "; did you mean '" + meant + "'?") +
               (candidates.empty() ? std::string(" (it has no rule without parameters)")
                                   : "; rules that can start: " + candidates));
     return;

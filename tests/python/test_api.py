@@ -85,8 +85,8 @@ def test_an_undeclared_attribute_or_a_value_the_grammar_refuses_is_a_grammar_err
     with pytest.raises(fgsg.GrammarError) as e:
         house.generate(attrs={"buildng_height": 3})
     assert e.value.code == "R010" and e.value.file == MUELLER
-    assert e.value.message.startswith("attrs['buildng_height']: the grammar declares no attr 'buildng_height' "
-                                      "(attrs: lot_width, lot_depth, building_height,")
+    assert e.value.message.startswith("attrs['buildng_height']: the grammar declares no attr 'buildng_height'; "
+                                      "did you mean 'building_height'? (attrs: lot_width, lot_depth, building_height,")
     with pytest.raises(fgsg.GrammarError) as e:
         kinds.generate(attrs={"n": 2.5})
     assert e.value.message == "attrs['n'] = 2.5: `derive parallel n` needs a whole number from 0 to 2147483647"
