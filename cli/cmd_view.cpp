@@ -4,6 +4,7 @@
 // once, and errors show in the page with the last good model kept (view_session.h).
 #include "backend/native/code_loader.h"
 #include "cli/command_line.h"
+#include "cli/option_help.h"
 #include "cli/commands.h"
 #include "cli/derive_flags.h"
 #include "cli/options.h"
@@ -73,7 +74,7 @@ ViewCommandOptions parseViewOptions(const Args& args) {
 int view(const Args& args) {
   for (const std::string& a : args)
     if (a == "--help" || a == "-h") {
-      std::cout << kViewHelp;
+      std::cout << kViewHelp << optionHelp("view");
       return 0;
     }
   ViewCommandOptions opt;

@@ -1,5 +1,6 @@
 // fgsg: the command-line front door. Each subcommand lives in cmd_<name>.cpp.
 #include "cli/commands.h"
+#include "cli/option_help.h"
 #include "runtime/out_of_resources.h"
 
 #include <algorithm>
@@ -19,7 +20,8 @@ usage:
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
                 [--lots lots.geojson] [--start-rule NAME] [--report reports.json]
-                [--atlas-resolution N] [--march-units surface|texels]
+                [--atlas-resolution N] [--march-units surface|texels] [--seed-density T --seed-count N]
+                [--instancing auto|on|nodes|off] [--group-by symbol|rule|label|none] [--split-output DIR]
   fgsg check FILE [--start-rule NAME]
                            report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
@@ -46,33 +48,7 @@ usage:
                            with a manifest of every job's outcome (docs/scale.md)
   fgsg --help | --version
 
-run writes FILE's stem + .glb in the current directory when -o is not given.
-  --surface FILE     grow on this mesh instead of the grammar's surface (path relative
-                     to the current directory)
-  --surface-size S   centre the surface and scale it so its largest extent is S
-  --repair-surface   repair what can be repaired in the surface mesh instead of failing
-  --start x,y,z      start the axiom's scope at the surface point closest to x,y,z
-                     (default: closest to the centre of the surface's bounding box)
-  --seed-points S    on-mesh marching: start the axiom once per seed, S a file of
-                     "x y z [dx dy dz]" lines, a seed x,y,z[:dx,dy,dz] or a quoted list
-                     "x,y,z;x,y,z"; repeatable
-  --seed-density T --seed-count N  N more seeds drawn where the grammar's texture T is
-                     bright (density proportional to its value and the area)
-  --lots FILE        derive the axiom once per lot of a GeoJSON file (Polygon and
-                     MultiPolygon features) or per polygon face of an OBJ/PLY/OFF mesh
-                     (Y up), its shape the lot's footprint; attrs named like a lot's
-                     properties take their values (docs/cga.md)
-  --start-rule NAME  a .cga grammar: derive each lot (or the default lot) with rule NAME
-                     instead of the file's @StartRule (error E803 for an fgsg grammar)
-  --march-candidates N  directions tried around a failed Marching condition (default 8)
-  --atlas-resolution N  side of the marching geometry image in texels (default 1024)
-  --march-units U    Marching's length: surface (3D distance, default) or texels
-  --max-seconds S    stop deriving after S seconds (default 120), keeping what was
-                     derived; field design, tracing and synthesis are bounded too
-  --max-memory SIZE  stop deriving when it holds SIZE (512M, 2G; default half the
-                     RAM), counting the mesh its instances will become; kept likewise
-  --engine E         jit (default): compile the rules to native code first (cached in
-                     $FGSG_CACHE_DIR or ~/.cache/fgsg); interp: the reference interpreter
+fgsg CMD --help describes each of CMD's options (run: -o, --seed, --set, --preview ...).
 compile writes lib + FILE's stem + .so when -o is not given, and NAME.h beside the
 library (or in --header DIR); the library runs through the C API of libfgsg.so with
 the same results as fgsg run (docs/cli.md).
@@ -87,24 +63,29 @@ const char* const kCommands[] = {"run",     "check", "ir",    "synth", "repl", "
                                  "atlas",   "evolve", "field", "view",  "batch"};
 
 // What `fgsg CMD --help` prints: the command's lines of the overall help (from "  fgsg
-// CMD" to the next command), the notes on its options that follow the list (run,
-// compile), and where to read more; synth and evolve print their own usage.
+// CMD" to the next command; synth and evolve have their own usage), a line on each of its
+// options (cli/option_help.cpp), and where to read more.
 std::string commandHelp(const std::string& cmd) {
-  if (cmd == "synth") return fgsg::cli::synthUsage();
-  if (cmd == "evolve") return fgsg::cli::evolveUsage();
-  const std::string help = kHelp;
-  std::string out = "usage:\n";
-  const size_t at = help.find("\n  fgsg " + cmd + " ");
-  if (at != std::string::npos) {
-    size_t end = help.find("\n  fgsg ", at + 1);
-    out += help.substr(at + 1, (end == std::string::npos ? help.size() : end) - at - 1) + "\n";
+  std::string out;
+  if (cmd == "synth") {
+    out = fgsg::cli::synthUsage();
+  } else if (cmd == "evolve") {
+    out = fgsg::cli::evolveUsage();
+  } else {
+    const std::string help = kHelp;
+    out = "usage:\n";
+    const size_t at = help.find("\n  fgsg " + cmd + " ");
+    if (at != std::string::npos) {
+      size_t end = help.find("\n  fgsg ", at + 1);
+      out += help.substr(at + 1, (end == std::string::npos ? help.size() : end) - at - 1) + "\n";
+    }
   }
-  auto notes = [&](const std::string& from, const std::string& to) {
-    const size_t a = help.find(from), b = help.find(to, a);
+  out += fgsg::cli::optionHelp(cmd);
+  if (cmd == "compile") {
+    const std::string help = kHelp;
+    const size_t a = help.find("compile writes lib"), b = help.find("Grammars import", a);
     if (a != std::string::npos && b != std::string::npos) out += "\n" + help.substr(a, b - a);
-  };
-  if (cmd == "run") notes("run writes FILE's stem", "compile writes lib");
-  if (cmd == "compile") notes("compile writes lib", "Exit codes:");
+  }
   return out + "\nExit codes: 0 success, 1 errors in the grammar or while deriving, 2 bad usage.\n"
                "Documentation: docs/cli.md (fgsg " + cmd + ").\n";
 }
