@@ -25,10 +25,12 @@ packages=(
   python3-dev pybind11-dev
 )
 
-# Only for the Python package and the tests. chromium: the viewer's browser tests;
-# Blender imports fgsg's glTF and OBJ output headless (tests/cli/blender_import.sh; about
-# 106 MB to download, 3 minutes to install).
-test_packages=(python3-numpy python3-pytest python3-distributed chromium blender)
+# Only for the Python package and the tests. venv, setuptools and wheel: `pip install .`
+# offline (tests/python/pip_install.sh); chromium: the viewer's browser tests; Blender
+# imports fgsg's glTF and OBJ output headless (tests/cli/blender_import.sh; about 106 MB
+# to download, 3 minutes to install).
+test_packages=(python3-numpy python3-pytest python3-distributed python3-venv python3-setuptools python3-wheel
+               chromium blender)
 testing=false
 [ "${1:-}" = "--test" ] && testing=true
 $testing && packages+=("${test_packages[@]}")
