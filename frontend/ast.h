@@ -3,6 +3,7 @@
 // semantic analysis and later passes can point at the text that caused a problem.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -127,8 +128,13 @@ struct Branch {
   ExprPtr probability;  // null: weight 1
 };
 
+// The section a rule is written in (lpfg's `decomposition:` / `homomorphism:`, L-Py's
+// `interpretation:`; everything else, and after `production:`, is a production).
+enum class RuleSection : uint8_t { Production, Decomposition, Homomorphism };
+
 struct Rule {
   SourceRange range;
+  RuleSection section = RuleSection::Production;
   std::string label;  // "1", "p4" or empty
   int priority = 0;   // from the last `priority N:` before the rule
   std::vector<ModulePattern> leftContext;   // lc < pred
@@ -279,6 +285,12 @@ struct Program {
   std::vector<IgnoreDecl> ignores;
   std::vector<CollisionDecl> collisions;
   std::vector<AxiomDecl> axioms;
+  // lpfg's and L-Py's `maximum depth: N` of the decomposition and homomorphism sections
+  // (default 1, as L-Py's): how many times their rules are applied in a row.
+  int decompositionDepth = 1;
+  int homomorphismDepth = 1;
+  // A `.cga` file: a lot is CityEngine's initial shape (scope x along its first edge, y up).
+  bool cityEngineLots = false;
 };
 
 }  // namespace fgsg::frontend

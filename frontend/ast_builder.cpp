@@ -291,6 +291,7 @@ Rule AstBuilder::buildRule(P::GrammarRuleContext* ctx) {
   Rule rule;
   rule.range = rangeOf(ctx);
   rule.priority = priority_;
+  rule.section = section_;
   if (ctx->label) rule.label = ctx->label->getText();
   if (auto* head = ctx->ruleHead()) {
     if (auto* left = head->leftContext()) {
@@ -533,7 +534,7 @@ Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {
 void AstBuilder::appendTurtleSymbols(antlr4::ParserRuleContext* ctx, Token* symbol,
                                      P::CallArgsContext* args, std::vector<Item>& out) {
   std::string name = text(symbol);
-  if (name == ";") name = "'";  // lpfg's colour step is ABOP's '
+  if (name == ";") name = "'";  // lpfg's colour step is ABOP's '; its `,` (the previous colour) stays `,`
   if (name == "&&" || name == "||") {
     Item first;
     first.kind = ItemKind::Turtle;

@@ -14,6 +14,8 @@ class AstBuilder {
   AstBuilder(Program& program, Diagnostics& diags) : program_(program), diags_(diags) {}
 
   void addStatement(fgsg_grammar::FgsgParser::StatementContext* ctx);
+  // The lpfg / L-Py section (`decomposition:` ...) the next statement's rule belongs to.
+  void setSection(RuleSection section) { section_ = section; }
 
  private:
   using P = fgsg_grammar::FgsgParser;
@@ -73,6 +75,7 @@ class AstBuilder {
   Program& program_;
   Diagnostics& diags_;
   int priority_ = 0;             // from the last `priority N:`
+  RuleSection section_ = RuleSection::Production;
   int exprDepth_ = 0;            // guards the recursion against absurdly deep expressions
   bool depthReported_ = false;   // one "too deep" error per statement
 };

@@ -174,6 +174,40 @@ class ImplicitSemicolons {
     return out;
   }
 
+  // lpfg's `,`, the colour index's previous colour: a ',' in a rule's or the axiom's
+  // successor outside parentheses and braces, where ',' separates arguments and body parts
+  // (`A -> F , F`; in a polygon's `{ }` it stays a separator). Returns their indices.
+  std::vector<size_t> colourBacks() const {
+    std::vector<size_t> out;
+    bool rule = startsRule(0), successor = false;
+    bool block = false;  // a field's or tileset's `{ ...; ...; }`, whose ';' end no statement
+    int parens = 0, braces = 0;
+    for (size_t i = 0; i < t_.size(); ++i) {
+      const size_t ty = type(i);
+      if (i > 0 && !(block && braces > 0) &&
+          (type(i - 1) == FgsgLexer::SEMI || (firstOnLine(i) && !expectsContinuation(type(i - 1)) &&
+                                              (isStatementKeyword(ty) || startsRuleHead(i))))) {
+        rule = startsRule(i), successor = false, parens = braces = 0;  // the next statement
+        block = ty == FgsgLexer::FIELD || ty == FgsgLexer::TILESET;
+      }
+      switch (ty) {
+        case FgsgLexer::LPAREN: ++parens; break;
+        case FgsgLexer::RPAREN: parens = std::max(parens - 1, 0); break;
+        case FgsgLexer::LBRACE: ++braces; break;
+        case FgsgLexer::RBRACE: braces = std::max(braces - 1, 0); break;
+        case FgsgLexer::ARROW: case FgsgLexer::ASSIGN: case FgsgLexer::COLON:
+          // A rule's successor follows its arrow; the axiom's, `axiom:`.
+          if (rule && parens == 0 && (ty != FgsgLexer::COLON || type(i - 1) == FgsgLexer::AXIOM)) successor = true;
+          break;
+        case FgsgLexer::COMMA:
+          if (successor && parens == 0 && braces == 0) out.push_back(i);
+          break;
+        default: break;
+      }
+    }
+    return out;
+  }
+
  private:
   size_t type(size_t i) const { return i < t_.size() ? t_[i]->getType() : Token::EOF; }
 
@@ -384,11 +418,11 @@ void joinQualifiedNames(std::vector<std::unique_ptr<Token>>& tokens, std::vector
   tokens = std::move(out);
 }
 
-// lpfg's and L-Py's section headers, each alone on its line: `production:` (what every
-// fgsg rule is: dropped), and `homomorphism:` / `interpretation:` / `decomposition:` and
-// `maximum depth:`, which fgsg does not run yet: E048 at the header rather than reading
-// the word as a rule label and the section's rules as productions.
-void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
+// lpfg's and L-Py's section headers, each alone on its line: `production:`,
+// `decomposition:`, `homomorphism:` (L-Py's `interpretation:`), and in the last two
+// `maximum depth: N`. They leave the token list; `lexed` keeps the line each section
+// starts on (the parser gives each rule its section) and the depths.
+void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags, LexedSource& lexed) {
   // Each token's line, taken first: the tokens before i have been moved into `out` when
   // token i is looked at (fuzz_imports: tokens[i - 1] was a null pointer there).
   std::vector<size_t> lines(tokens.size());
@@ -401,6 +435,7 @@ void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& d
   const auto is = [&](size_t i, size_t type, const char* text) {
     return i < tokens.size() && tokens[i]->getType() == type && (!text || tokens[i]->getText() == text);
   };
+  RuleSection current = RuleSection::Production;
   std::vector<bool> drop(tokens.size(), false);  // decided first: the lambdas read the tokens
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (!is(i, FgsgLexer::ID, nullptr) || !firstOnLine(i)) continue;
@@ -408,20 +443,32 @@ void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& d
     const bool section = word == "production" || word == "homomorphism" || word == "interpretation" ||
                          word == "decomposition";
     if (section && is(i + 1, FgsgLexer::COLON, nullptr) && lastOnLine(i + 1)) {
-      if (word != "production") {
-        SourceRange at = tokenRange(tokens[i].get());
-        at.end = tokenRange(tokens[i + 1].get()).end;
-        diags.error("E048", at,
-                    "lpfg's and L-Py's '" + word + ":' section is not supported yet: its rules would be "
-                    "read as productions (write them as productions, or leave them out)");
-      }
-      drop[i] = drop[i + 1] = true;  // the header goes; its rules stay, checked as productions
+      current = word == "production"      ? RuleSection::Production
+                : word == "decomposition" ? RuleSection::Decomposition
+                                          : RuleSection::Homomorphism;
+      lexed.sectionStarts.emplace_back(lines[i], current);
+      drop[i] = drop[i + 1] = true;
       ++i;
     } else if (word == "maximum" && is(i + 1, FgsgLexer::ID, "depth") && is(i + 2, FgsgLexer::COLON, nullptr)) {
       SourceRange at = tokenRange(tokens[i].get());
       at.end = tokenRange(tokens[i + 2].get()).end;
-      diags.error("E048", at, "lpfg's and L-Py's 'maximum depth:' (of a homomorphism or decomposition) is "
-                              "not supported yet");
+      // N, then at most a ';', alone on the line.
+      const size_t n = i + 3;
+      const bool wellFormed = is(n, FgsgLexer::INT, nullptr) && lines[n] == lines[i] &&
+                              (lastOnLine(n) || (is(n + 1, FgsgLexer::SEMI, nullptr) && lastOnLine(n + 1)));
+      long depth = 0;
+      if (wellFormed) {
+        const std::string digits = tokens[n]->getText();
+        depth = digits.size() > 6 ? 1000000 : std::stol(digits);
+      }
+      if (current == RuleSection::Production)
+        diags.error("E048", at, "'maximum depth:' belongs to a 'decomposition:' or 'homomorphism:' "
+                                "('interpretation:') section: write it on the line after the section's header");
+      else if (!wellFormed || depth < 1 || depth > 1000)
+        diags.error("E002", at, "'maximum depth:' takes a whole number from 1 to 1000, alone on its line "
+                                "(maximum depth: 3)");
+      else
+        (current == RuleSection::Decomposition ? lexed.decompositionDepth : lexed.homomorphismDepth) = int(depth);
       drop[i] = true;
       while (i + 1 < tokens.size() && tokens[i + 1]->getType() != Token::EOF && !firstOnLine(i + 1)) drop[++i] = true;
     }
@@ -433,7 +480,38 @@ void lsystemSections(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& d
   tokens = std::move(out);
 }
 
+// ABOP's and cpfg's `*` for "no context" and "no condition" in a production's head:
+// `* < A > * : * -> B` is `A -> B`. Read so only where an expression cannot have a `*`
+// (before '<', after '>' or ':' just before the arrow), so `a * b` stays a product.
+void abopWildcards(std::vector<std::unique_ptr<Token>>& tokens) {
+  const auto type = [&](size_t i) { return i < tokens.size() ? tokens[i]->getType() : size_t(Token::EOF); };
+  const auto isArrow = [&](size_t i) { return type(i) == FgsgLexer::ARROW || type(i) == FgsgLexer::ASSIGN; };
+  std::vector<bool> drop(tokens.size(), false);
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (type(i) != FgsgLexer::STAR) continue;
+    if (type(i + 1) == FgsgLexer::LT) {  // `* <`
+      drop[i] = drop[i + 1] = true;
+    } else if (i > 0 && type(i - 1) == FgsgLexer::GT && (isArrow(i + 1) || type(i + 1) == FgsgLexer::COLON)) {
+      drop[i - 1] = drop[i] = true;  // `> * ->`, `> * : guard ->`
+    } else if (i > 0 && type(i - 1) == FgsgLexer::COLON && isArrow(i + 1)) {
+      drop[i - 1] = drop[i] = true;  // `: * ->`
+    }
+  }
+  std::vector<std::unique_ptr<Token>> out;
+  out.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i)
+    if (!drop[i]) out.push_back(std::move(tokens[i]));
+  tokens = std::move(out);
+}
+
 }  // namespace
+
+RuleSection LexedSource::sectionAt(size_t line) const {
+  RuleSection section = RuleSection::Production;
+  for (const auto& [from, kind] : sectionStarts)
+    if (from < line) section = kind;
+  return section;
+}
 
 bool isImplicitSemicolon(const Token* token) {
   return token && token->getType() == FgsgLexer::SEMI && token->getStartIndex() == INVALID_INDEX;
@@ -474,9 +552,12 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
   joinQualifiedNames(tokens, importAliases);
-  lsystemSections(tokens, diags);
+  lsystemSections(tokens, diags, lexed);
+  abopWildcards(tokens);
   markPolygonVertices(tokens);
   for (size_t i : ImplicitSemicolons(tokens).colourSteps())
+    static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);
+  for (size_t i : ImplicitSemicolons(tokens).colourBacks())  // the parser reads `,` as a colour step too; its text tells the two apart
     static_cast<antlr4::CommonToken*>(tokens[i].get())->setType(fgsg_grammar::FgsgParser::COLORSTEP);
 
   const std::vector<size_t> semicolons = ImplicitSemicolons(tokens).positions();

@@ -8,6 +8,7 @@
 //    of a line (see grammar/Fgsg.g4).
 #pragma once
 
+#include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
 #include <memory>
@@ -23,6 +24,14 @@ struct LexedSource {
   std::unique_ptr<antlr4::ANTLRInputStream> input;
   std::unique_ptr<fgsg_grammar::FgsgLexer> lexer;
   std::vector<std::unique_ptr<antlr4::Token>> tokens;  // ends with EOF
+  // lpfg's and L-Py's section headers (`decomposition:` ...), taken out of the tokens:
+  // the line each section starts on, in order, and their `maximum depth:` values.
+  std::vector<std::pair<size_t, RuleSection>> sectionStarts;
+  int decompositionDepth = 1;
+  int homomorphismDepth = 1;
+
+  // The section of a statement that starts on `line`.
+  RuleSection sectionAt(size_t line) const;
 };
 
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags);  // the grammar's own text

@@ -119,6 +119,8 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
   const int errorsBefore = diags.errorCount();
 
   LexedSource lexed = lexText(name, text, diags, importAliases);
+  out.decompositionDepth = lexed.decompositionDepth;
+  out.homomorphismDepth = lexed.homomorphismDepth;
   antlr4::ListTokenSource source(std::move(lexed.tokens));
   antlr4::CommonTokenStream tokens(&source);
   tokens.fill();
@@ -149,6 +151,7 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
     parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
     strategy->reset(&parser);
     try {
+      builder.setSection(lexed.sectionAt(tokens.LT(1)->getLine()));
       builder.addStatement(parser.statement());
     } catch (const StatementAbandoned&) {
       tokens.seek(scan.endAtOrAfter(tokens.index()));

@@ -72,6 +72,7 @@ class Analyzer {
 
   // Rules: guards, contexts, probabilities, successors and shape items (sema_rules.cpp).
   void checkRules();
+  void checkSection(const Rule& r);
   void checkProbabilitySums();
   void checkSuccessor(const Successor& s, const Where& w);
   void checkItem(const Item& item, const Where& w);

@@ -21,6 +21,7 @@ void Analyzer::checkRules() {
       if (!names.insert(name).second)
         diags_.error("E021", r.range, "parameter '" + name + "' is declared twice in this rule");
     if (r.guard) expect(*r.guard, w, ValueType::Bool, "a guard");
+    checkSection(r);
     for (const auto& b : r.branches) {
       if (b.probability) {
         expect(*b.probability, w, ValueType::Num, "a probability");
@@ -38,35 +39,42 @@ void Analyzer::checkRules() {
 // Weights are normalised among the rules whose guards hold; a sum other than 1 over
 // unguarded constant weights is legal but worth a word, a zero sum is a mistake.
 void Analyzer::checkProbabilitySums() {
-  for (const auto& s : res_.symbols) {
-    double sum = 0;
-    bool allConst = true, anyExplicit = false;
-    for (size_t ri : s.rules) {
-      const Rule& r = prog_.rules[ri];
-      if (r.guard) allConst = false;
-      for (const auto& b : r.branches) {
-        if (!b.probability) {
-          sum += 1;
-          continue;
+  // Per section: a symbol's productions compete with each other, its homomorphisms too.
+  for (RuleSection section : {RuleSection::Production, RuleSection::Decomposition, RuleSection::Homomorphism}) {
+    for (const auto& whole : res_.symbols) {
+      SymbolInfo s = whole;
+      s.rules.clear();
+      for (size_t ri : whole.rules)
+        if (prog_.rules[ri].section == section) s.rules.push_back(ri);
+      double sum = 0;
+      bool allConst = true, anyExplicit = false;
+      for (size_t ri : s.rules) {
+        const Rule& r = prog_.rules[ri];
+        if (r.guard) allConst = false;
+        for (const auto& b : r.branches) {
+          if (!b.probability) {
+            sum += 1;
+            continue;
+          }
+          anyExplicit = true;
+          ConstValue v;
+          if (evalConst(*b.probability, v) && v.type == ValueType::Num)
+            sum += v.num;
+          else
+            allConst = false;
         }
-        anyExplicit = true;
-        ConstValue v;
-        if (evalConst(*b.probability, v) && v.type == ValueType::Num)
-          sum += v.num;
-        else
-          allConst = false;
       }
-    }
-    if (!allConst || !anyExplicit || s.rules.empty()) continue;
-    const Rule& first = prog_.rules[s.rules.front()];
-    if (sum <= 0)
-      diags_.error("E015", first.range,
-                   "the probabilities of the rules for '" + s.name + "' add up to " +
-                       formatNumber(sum) + "; at least one must be positive");
-    else if (std::abs(sum - 1.0) > 1e-9)
-      diags_.warning("W003", first.range,
+      if (!allConst || !anyExplicit || s.rules.empty()) continue;
+      const Rule& first = prog_.rules[s.rules.front()];
+      if (sum <= 0)
+        diags_.error("E015", first.range,
                      "the probabilities of the rules for '" + s.name + "' add up to " +
-                         formatNumber(sum) + "; they are normalised to 1");
+                         formatNumber(sum) + "; at least one must be positive");
+      else if (std::abs(sum - 1.0) > 1e-9)
+        diags_.warning("W003", first.range,
+                       "the probabilities of the rules for '" + s.name + "' add up to " +
+                           formatNumber(sum) + "; they are normalised to 1");
+    }
   }
 }
 
@@ -126,6 +134,21 @@ void Analyzer::checkShapeItem(const Item& item, const Where& w) {
   }
 }
 
+// lpfg's decomposition and homomorphism rules (L-Py's interpretation rules) run between
+// the steps of an L-system and context-free, as L-Py runs its interpretation rules.
+void Analyzer::checkSection(const Rule& r) {
+  if (r.section == RuleSection::Production) return;
+  const std::string what = r.section == RuleSection::Decomposition ? "a decomposition rule" : "a homomorphism rule";
+  if (res_.mode != "parallel")
+    diags_.error("E048", r.predecessor.range,
+                 what + " needs an L-system (`derive parallel N;`): decomposition and homomorphism run "
+                        "between and after the steps of a parallel derivation");
+  else if (!r.leftContext.empty() || !r.rightContext.empty())
+    diags_.error("E048", (r.leftContext.empty() ? r.rightContext : r.leftContext).front().range,
+                 what + " has no context in fgsg (L-Py's interpretation rules neither): write the context in a "
+                        "production");
+}
+
 // lpfg's and L-Py's turtle modules written with '@': those fgsg runs take their
 // arguments as numbers; the others are a located E048, never silently dropped.
 void Analyzer::checkAtModule(const Item& item, const Where& w) {
@@ -138,6 +161,7 @@ void Analyzer::checkAtModule(const Item& item, const Where& w) {
       {"@Tp", 3, 3, "@Tp(x, y, z): the tropism vector"},
       {"@Ts", 1, 1, "@Ts(e): the elasticity"},
       {"@O", 0, 1, "@O(r): a sphere of radius r (default half the width)"},
+      {"@o", 0, 1, "@o(r): a circle of radius r across the heading (default half the width)"},
       {"@M", 3, 3, "@M(x, y, z): move to the point"},
       {"@R", 6, 6, "@R(hx, hy, hz, ux, uy, uz): set the heading and up vectors"},
   };
@@ -145,14 +169,15 @@ void Analyzer::checkAtModule(const Item& item, const Where& w) {
     if (item.name != m.name) continue;
     if (item.args.size() < m.minArgs || item.args.size() > m.maxArgs)
       diags_.error("E016", item.range,
-                   "'" + item.name + "' takes " + std::to_string(m.minArgs) + " argument" +
-                       (m.minArgs == 1 ? "" : "s") + ", got " + std::to_string(item.args.size()) + ": " + m.usage);
+                   "'" + item.name + "' takes " + (m.minArgs == m.maxArgs ? "" : "at most ") +
+                       std::to_string(m.maxArgs) + " argument" + (m.maxArgs == 1 ? "" : "s") + ", got " +
+                       std::to_string(item.args.size()) + ": " + m.usage);
     for (const auto& a : item.args) expect(*a, w, ValueType::Num, "a turtle argument");
     return;
   }
   diags_.error("E048", item.range,
                "the turtle module '" + item.name + "' (lpfg, L-Py) is not supported yet; supported: @Tp, @Ts, "
-               "@O, @M and @R (docs/language.md, the turtle)");
+               "@O, @o, @M and @R (docs/language.md, the turtle)");
 }
 
 }  // namespace fgsg::frontend::sema_detail

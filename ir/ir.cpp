@@ -23,6 +23,7 @@ int turtleOpNamed(const std::string& name) {
   if (name == "@Tp") return int(TurtleOp::Tropism);
   if (name == "@Ts") return int(TurtleOp::Elasticity);
   if (name == "@O") return int(TurtleOp::Sphere);
+  if (name == "@o") return int(TurtleOp::Circle);
   if (name == "@M") return int(TurtleOp::MoveTo);
   if (name == "@R") return int(TurtleOp::SetHeading);
   if (name.size() != 1) return -1;
@@ -41,6 +42,7 @@ int turtleOpNamed(const std::string& name) {
     case '.': return int(TurtleOp::PolygonVertex);
     case '}': return int(TurtleOp::PolygonEnd);
     case '\'': return int(TurtleOp::ColorIndex);
+    case ',': return int(TurtleOp::ColorPrevious);
     case '~': return int(TurtleOp::SurfaceBox);
     default: return -1;
   }

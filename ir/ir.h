@@ -150,6 +150,8 @@ enum class TurtleOp : uint8_t {
   Sphere,          // @O(r): a sphere (Op::asset) of radius r, default half the width, centred on the turtle
   MoveTo,          // @M(x, y, z): the turtle's position becomes (x, y, z)
   SetHeading,      // @R(hx, hy, hz, ux, uy, uz): the turtle's heading and (squared to it) up
+  ColorPrevious,   // lpfg's `,`: the previous colour of `turtle colors` (`,(n)`: colour n)
+  Circle,          // @o(r): a disc (Op::asset) of radius r, default half the width, across the heading
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the
@@ -206,10 +208,16 @@ struct Alternative {
   Loc loc;
 };
 
+// A parallel derivation's rules by when they apply (lpfg, L-Py): productions at each
+// step; decompositions after each step until none applies; homomorphisms (L-Py's
+// interpretation rules) only on the way to the turtle, leaving the string as it was.
+enum class RuleSection : uint8_t { Production, Decomposition, Homomorphism };
+
 struct Rule {
   uint32_t symbol = 0;
   std::string label;  // user label or "<symbol>#<n>"
   int priority = 0;
+  RuleSection section = RuleSection::Production;
   Loc loc;
   std::vector<Param> params;  // predecessor params first, then context params
   uint32_t slotCount = 0;     // size of the parameter block
@@ -224,11 +232,13 @@ struct Symbol {
   std::string name;
   std::vector<Type> paramTypes;
   uint32_t slotCount = 0;       // sum of slot widths
-  std::vector<uint32_t> rules;  // indices into Module::rules, in source order
+  std::vector<uint32_t> rules;  // indices into Module::rules, in source order: its productions
+  std::vector<uint32_t> decompositions, homomorphisms;  // its rules of those sections, likewise
   int priority = 0;             // highest priority among its rules
   // Several rules with a guard or a context and none writes a probability: the first that
   // applies is taken (CGA's case, lpfg's first matching production), not one at random.
   bool firstApplicable = false;
+  bool firstApplicableDecomposition = false, firstApplicableHomomorphism = false;  // the same per section
 };
 
 // An attr's annotation (`@Range(0, 10)` in a .cga file): metadata for inspectors, no
@@ -365,6 +375,10 @@ struct Module {
   // that attr's value when the grammar runs (--set n=9), steps / depthBound its default.
   // -1: the count is a constant.
   int countAttr = -1;
+  // lpfg's and L-Py's `maximum depth:`: at most this many passes of the decomposition
+  // (homomorphism) rules after each step (before the turtle).
+  int decompositionDepth = 1;
+  int homomorphismDepth = 1;
   TurtleSettings turtle;
   // `#ignore: + - F;`: symbols context matching steps over (commands are always skipped).
   std::vector<uint32_t> contextIgnored;

@@ -39,7 +39,11 @@ class Lowerer {
         sym.paramTypes.push_back(toType(t));
         sym.slotCount += slotWidth(toType(t));
       }
-      sym.priority = s.rules.empty() ? 0 : prog_.rules[s.rules.front()].priority;
+      for (size_t ri : s.rules)  // its first production's (lowerRule raises it to the highest)
+        if (prog_.rules[ri].section == frontend::RuleSection::Production) {
+          sym.priority = prog_.rules[ri].priority;
+          break;
+        }
       m_.symbols.push_back(sym);
     }
     for (const auto& a : sema_.attrs) {
@@ -57,6 +61,8 @@ class Lowerer {
     m_.steps = sema_.steps;
     m_.depthBound = sema_.depthBound;
     m_.countAttr = sema_.countAttr.empty() ? -1 : m_.findAttr(sema_.countAttr);
+    m_.decompositionDepth = prog_.decompositionDepth;
+    m_.homomorphismDepth = prog_.homomorphismDepth;
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth,
                  sema_.turtleSegments == "tubes"     ? TurtleSegments::Tubes
                  : sema_.turtleSegments == "ribbons" ? TurtleSegments::Ribbons
@@ -130,24 +136,35 @@ class Lowerer {
       out.alternatives.push_back(std::move(alt));
     }
     params_ = nullptr;
-    m_.symbols[out.symbol].rules.push_back(static_cast<uint32_t>(m_.rules.size()));
-    m_.symbols[out.symbol].priority = std::max(m_.symbols[out.symbol].priority, out.priority);
+    Symbol& sym = m_.symbols[out.symbol];
+    out.section = r.section == frontend::RuleSection::Decomposition ? RuleSection::Decomposition
+                  : r.section == frontend::RuleSection::Homomorphism ? RuleSection::Homomorphism
+                                                                     : RuleSection::Production;
+    const uint32_t index = static_cast<uint32_t>(m_.rules.size());
+    if (out.section == RuleSection::Decomposition) sym.decompositions.push_back(index);
+    else if (out.section == RuleSection::Homomorphism) sym.homomorphisms.push_back(index);
+    else sym.rules.push_back(index), sym.priority = std::max(sym.priority, out.priority);
     m_.rules.push_back(std::move(out));
   }
 
   // Symbol::firstApplicable: at least two specific rules (a guard or a context), none of
   // them weighted.
   void markFirstApplicable() {
-    for (Symbol& sym : m_.symbols) {
+    const auto firstApplicable = [&](const std::vector<uint32_t>& rules) {
       int specific = 0;
       bool weighted = false;
-      for (uint32_t ri : sym.rules) {
+      for (uint32_t ri : rules) {
         const Rule& r = m_.rules[ri];
         if (!r.hasGuard && r.left.empty() && r.right.empty()) continue;
         ++specific;
         weighted = weighted || r.weighted;
       }
-      sym.firstApplicable = specific >= 2 && !weighted;
+      return specific >= 2 && !weighted;
+    };
+    for (Symbol& sym : m_.symbols) {
+      sym.firstApplicable = firstApplicable(sym.rules);
+      sym.firstApplicableDecomposition = firstApplicable(sym.decompositions);
+      sym.firstApplicableHomomorphism = firstApplicable(sym.homomorphisms);
     }
   }
 
@@ -264,6 +281,7 @@ class Lowerer {
         op.index = static_cast<uint32_t>(ir::turtleOpNamed(item.name));
         if (!item.surface.empty()) op.asset = m_.internAsset(item.surface);  // `~leaf`
         if (item.name == "@O") op.asset = m_.internAsset("sphere");
+        if (item.name == "@o") op.asset = m_.internAsset("disc");
         for (const auto& a : item.args) op.args.push_back(expr(*a));
         out.push_back(std::move(op));
         return;

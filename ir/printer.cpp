@@ -142,7 +142,17 @@ class Printer {
       text += ")  priority " + std::to_string(s.priority) + "  rules [";
       for (size_t i = 0; i < s.rules.size(); ++i)
         text += (i ? " " : "") + std::to_string(s.rules[i]);
-      line(0, text + "]");
+      text += "]";
+      // lpfg's and L-Py's other sections, only where the symbol has rules there.
+      const auto section = [&](const char* name, const std::vector<uint32_t>& rules) {
+        if (rules.empty()) return;
+        text += std::string("  ") + name + " [";
+        for (size_t i = 0; i < rules.size(); ++i) text += (i ? " " : "") + std::to_string(rules[i]);
+        text += "]";
+      };
+      section("decomposition", s.decompositions);
+      section("homomorphism", s.homomorphisms);
+      line(0, text);
     }
     line(0, "axiom");
     block(nullptr, m_.axiom, 1);

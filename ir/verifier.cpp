@@ -293,7 +293,10 @@ class Verifier {
       problem("symbol " + std::to_string(r.symbol) + " out of range");
     } else {
       const Symbol& s = m_.symbols[r.symbol];
-      if (std::find(s.rules.begin(), s.rules.end(), index) == s.rules.end())
+      const std::vector<uint32_t>& listed = r.section == RuleSection::Decomposition ? s.decompositions
+                                            : r.section == RuleSection::Homomorphism  ? s.homomorphisms
+                                                                                      : s.rules;
+      if (std::find(listed.begin(), listed.end(), index) == listed.end())
         problem("not listed in the rules of symbol " + s.name);
       predecessorParams(r, s);
     }
@@ -456,7 +459,7 @@ class Verifier {
         break;
       case OpKind::Emit: emit(op, r); break;
       case OpKind::Turtle:
-        if (op.index > static_cast<uint32_t>(TurtleOp::SetHeading))
+        if (op.index > static_cast<uint32_t>(TurtleOp::Circle))
           problem("turtle op " + std::to_string(op.index) + " out of range");
         if (op.index == static_cast<uint32_t>(TurtleOp::Tropism) || op.index == static_cast<uint32_t>(TurtleOp::MoveTo))
           numArgs(op, r, 3);  // @Tp(x, y, z), @M(x, y, z)

@@ -52,20 +52,13 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       d_.placePolygon(polygons_.back(), st.scope, loc);
       polygons_.pop_back();
       break;
-    case TurtleOp::ColorIndex: {
-      // ABOP's ': the next colour of the palette, or '(i) colour i; 0 gives back the
-      // default colours. Saved and restored by [ ] with the scope.
-      const double i = n > 0 ? args[0] : double(st.scope.colorIndex) + 1;
-      if (!(i >= 0 && i < 1e9 && i == std::floor(i)))
-        throw DeriveError{loc, "R027", "a colour index must be a whole number from 0, not " + std::to_string(i)};
-      st.scope.colorIndex = int32_t(i);
-      st.scope.colored = st.scope.colorIndex > 0;
-      if (st.scope.colored) {
-        const auto& colors = m.turtle.colors;
-        st.scope.color = colors[size_t(st.scope.colorIndex - 1) % colors.size()];
-      }
+    // ABOP's ' (lpfg's ;): the next colour of the palette, or '(i) colour i; lpfg's `,`
+    // the previous one (not below 0, the default colours).
+    case TurtleOp::ColorIndex: colorIndex(st, n > 0 ? args[0] : double(st.scope.colorIndex) + 1, loc); break;
+    case TurtleOp::ColorPrevious:
+      colorIndex(st, n > 0 ? args[0] : std::max(double(st.scope.colorIndex) - 1, 0.0), loc);
       break;
-    }
+    case TurtleOp::Circle: break;  // only reached through the Op (its asset)
     case TurtleOp::SurfaceBox: surfaceBox(st, 0, args, n); break;  // only reached through the Op
     case TurtleOp::Tropism: {
       const rt::Vec3 t(args[0], args[1], args[2]);
@@ -130,6 +123,37 @@ void TurtleCommands::sphere(const State& st, uint32_t asset, const double* args,
     throw DeriveError{loc, "R027", "the radius of @O must be a finite number from 0, not " + std::to_string(r)};
   rt::Scope box = st.scope;
   box.P -= r * (st.scope.X() + st.scope.Y() + st.scope.Z());
+  box.S = rt::Vec3::Constant(2 * r);
+  d_.placeInstance(asset, box, d_.segmentSymbol(), nullptr, 0, loc);
+}
+
+// Colour i of the palette (i >= 1), or 0: the default colours. Saved and restored by
+// [ ] with the scope.
+void TurtleCommands::colorIndex(State& st, double i, ir::Loc loc) const {
+  if (!(i >= 0 && i < 1e9 && i == std::floor(i)))
+    throw DeriveError{loc, "R027", "a colour index must be a whole number from 0, not " + std::to_string(i)};
+  st.scope.colorIndex = int32_t(i);
+  st.scope.colored = st.scope.colorIndex > 0;
+  if (st.scope.colored) {
+    const auto& colors = d_.module().turtle.colors;
+    st.scope.color = colors[size_t(st.scope.colorIndex - 1) % colors.size()];
+  }
+}
+
+// lpfg's and L-Py's @o(r): a circle (the built-in `disc`) of radius r (default half the
+// width), centred on the turtle, across the heading — in the plane of L and U, as
+// PlantGL's turtle draws its disc; the turtle does not move. Recorded under F as
+// segments are.
+void TurtleCommands::circle(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc) {
+  const double r = n > 0 ? args[0] : 0.5 * st.width;
+  if (!(r >= 0 && std::isfinite(r)))
+    throw DeriveError{loc, "R027", "the radius of @o must be a finite number from 0, not " + std::to_string(r)};
+  // The disc lies at z = 0 of its box: the box's X and Y are the turtle's X and U (scope
+  // Z), its Z is -H, which keeps the frame right-handed.
+  rt::Scope box = st.scope;
+  box.axes.col(1) = st.scope.Z();
+  box.axes.col(2) = -st.scope.Y();
+  box.P -= r * (st.scope.X() + st.scope.Z());
   box.S = rt::Vec3::Constant(2 * r);
   d_.placeInstance(asset, box, d_.segmentSymbol(), nullptr, 0, loc);
 }

@@ -27,6 +27,7 @@ class TurtleCommands final : public CommandFamily {
   void command(State& st, const ir::Op& op, const double* args, uint32_t n) {
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::SurfaceBox)) return surfaceBox(st, op.asset, args, n);
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::Sphere)) return sphere(st, op.asset, args, n, op.loc);
+    if (op.index == static_cast<uint32_t>(ir::TurtleOp::Circle)) return circle(st, op.asset, args, n, op.loc);
     command(st, static_cast<ir::TurtleOp>(op.index), args, n, op.loc);
   }
 
@@ -43,6 +44,8 @@ class TurtleCommands final : public CommandFamily {
   static void bend(rt::Scope& scope, const Tropism& tropism);
   void surfaceBox(State& st, uint32_t asset, const double* args, uint32_t n);
   void sphere(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc);
+  void circle(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc);
+  void colorIndex(State& st, double i, ir::Loc loc) const;
   static void setHeading(State& st, const double* args, ir::Loc loc);
 
   Derivation& d_;

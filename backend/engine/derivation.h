@@ -215,7 +215,7 @@ class Derivation final : public QueryHost {
   const ir::Alternative* choose(const ir::Symbol& sym, const Frame& f, uint32_t node, double* params);
   bool contextHolds(const ir::Rule& r, uint32_t node, double* params) const;
   bool guardHolds(uint32_t rule, const Frame& f);
-  bool takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken);
+  bool takesPart(bool firstApplicable, uint32_t ri, uint32_t& taken);
   void noteOverlap(const std::pair<uint32_t, uint32_t>& rules);  // (taken, also applying), once
   void overlapWarnings(std::vector<rt::DeriveMessage>& messages) const;
   void addCandidates(const ir::Rule& r, uint32_t ri, const Frame& f, double& total);
@@ -267,12 +267,17 @@ class Derivation final : public QueryHost {
                      uint32_t owner = UINT32_MAX);
   void checkParallelOp(const ir::Op& op);
   void appendModule(uint32_t op, const double* args, uint32_t n, StringTarget& t);
-  const ir::Alternative* chooseInString(const ir::Symbol& sym, const ModuleString& str, size_t at,
-                                        rt::RandomStream& rng, uint32_t step);
+  const ir::Alternative* chooseInString(const ir::Symbol& sym, ir::RuleSection section, const ModuleString& str,
+                                        size_t at, rt::RandomStream& rng, uint32_t step);
   void bind(const ir::ContextModule& cm, const ModuleString& str, size_t at);
   bool matchLeft(const ir::Rule& r, const ModuleString& str, size_t at);
   bool matchRight(const ir::Rule& r, const ModuleString& str, size_t at);
   void interpretString(const ModuleString& str);
+  // rule_sections.cpp
+  bool rewriteSection(ir::RuleSection section, const ModuleString& str, ModuleString& out, uint32_t step,
+                      bool& limitHit, std::optional<LimitReached>& stopped);
+  bool sectionPass(ir::RuleSection section, const ModuleString& str, ModuleString& next, uint32_t step,
+                   bool& limitHit, std::optional<LimitReached>& stopped);
   void linkBrackets(const ModuleString& str);
   [[noreturn]] void sequentialOnly(const ir::Op& op);
   void checkInstanceReach(const rt::Mat4& unitBoxToWorld, uint32_t symbol, ir::Loc loc) const;

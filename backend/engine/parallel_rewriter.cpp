@@ -65,7 +65,8 @@ void Derivation::runParallel() {
         } else {
           const ir::Symbol& sym = m_.symbols[so.op->index];
           rt::RandomStream modRng{mod.key, 0};
-          const ir::Alternative* alt = chooseInString(sym, str, i, modRng, static_cast<uint32_t>(step));
+          const ir::Alternative* alt =
+              chooseInString(sym, ir::RuleSection::Production, str, i, modRng, static_cast<uint32_t>(step));
           if (!alt) {
             copyModule(str, i, next);
             continue;
@@ -83,10 +84,22 @@ void Derivation::runParallel() {
     }
     cutBranches(next);
     str.swap(next);
+    // lpfg's and L-Py's decomposition: its result is the string (rule_sections.cpp).
+    if (!limitHit && rewriteSection(ir::RuleSection::Decomposition, str, next, static_cast<uint32_t>(step), limitHit,
+                                    stopped))
+      str.swap(next);
     if (!limitHit && deadline_.expiredNow()) stopped = timeLimit(), limitHit = true;
   }
   stats_.rewriteSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rewriteStart).count();
-  interpretString(str);
+  // The homomorphism: the turtle reads its result; the derived string stays as it is.
+  if (!limitHit && rewriteSection(ir::RuleSection::Homomorphism, str, next, static_cast<uint32_t>(steps_), limitHit,
+                                  stopped)) {
+    interpretString(next);
+    stats_.stringLength = str.size();
+    stats_.stringBytes = str.size() * sizeof(StringModule) + str.args.size() * sizeof(double);
+  } else {
+    interpretString(str);
+  }
   if (stopped) throw *stopped;
   if (limitHit) shapeLimit(ir::Op{});
 }
@@ -279,15 +292,22 @@ void Derivation::appendModule(uint32_t op, const double* args, uint32_t n, Strin
 }
 
 // Rule choice for one module of the string: context must match, then the guard.
-const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const ModuleString& str, size_t at,
-                                                  rt::RandomStream& rng, uint32_t step) {
+const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, ir::RuleSection section,
+                                                  const ModuleString& str, size_t at, rt::RandomStream& rng,
+                                                  uint32_t step) {
   candidates_.clear();
   double total = 0;
   const double* own = str.args.data() + str.modules[at].firstArg;
   const uint32_t index = plan_[str.modules[at].op].childIndex;
+  const bool decomposition = section == ir::RuleSection::Decomposition;
+  const bool homomorphism = section == ir::RuleSection::Homomorphism;
+  const std::vector<uint32_t>& rules = decomposition ? sym.decompositions : homomorphism ? sym.homomorphisms : sym.rules;
+  const bool firstApplicable = decomposition    ? sym.firstApplicableDecomposition
+                               : homomorphism ? sym.firstApplicableHomomorphism
+                                              : sym.firstApplicable;
   for (int pass = 0; pass < 2 && candidates_.empty(); ++pass) {
     uint32_t taken = UINT32_MAX;
-    for (uint32_t ri : sym.rules) {
+    for (uint32_t ri : rules) {
       const ir::Rule& r = m_.rules[ri];
       if (isSpecific(r) != (pass == 0)) continue;
       params_.assign(r.slotCount, 0.0);
@@ -295,7 +315,7 @@ const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, const M
       if (!matchLeft(r, str, at) || !matchRight(r, str, at)) continue;
       Frame f{params_.data(), &rng, nullptr, step, index, this};
       if (r.hasGuard && !guardHolds(ri, f)) continue;
-      if (pass == 0 && !takesPart(sym, ri, taken)) continue;
+      if (pass == 0 && !takesPart(firstApplicable, ri, taken)) continue;
       addCandidates(r, ri, f, total);
     }
   }

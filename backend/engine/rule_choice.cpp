@@ -37,7 +37,7 @@ const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f,
       if (isSpecific(r) != (pass == 0)) continue;
       if (!contextHolds(r, node, params)) continue;
       if (r.hasGuard && !guardHolds(ri, f)) continue;
-      if (pass == 0 && !takesPart(sym, ri, taken)) continue;
+      if (pass == 0 && !takesPart(sym.firstApplicable, ri, taken)) continue;
       addCandidates(r, ri, f, total);
     }
   }
@@ -53,8 +53,8 @@ const ir::Alternative* Derivation::choose(const ir::Symbol& sym, const Frame& f,
 // that applies does; a later one that also applies is an overlap, reported once per
 // pair (R029). Every guard is still evaluated, so the random stream does not depend on
 // which rule wins.
-bool Derivation::takesPart(const ir::Symbol& sym, uint32_t ri, uint32_t& taken) {
-  if (!sym.firstApplicable) return true;
+bool Derivation::takesPart(bool firstApplicable, uint32_t ri, uint32_t& taken) {
+  if (!firstApplicable) return true;
   if (taken == UINT32_MAX) {
     taken = ri;
     return true;
