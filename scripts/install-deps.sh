@@ -12,7 +12,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 # is built. catch2: CMake finds it at configure time too (header-only, small).
 packages=(
   build-essential cmake ninja-build pkg-config
-  antlr4 libantlr4-runtime-dev
+  libantlr4-runtime-dev
   llvm-19-dev
   libeigen3-dev libopenmesh-dev
   catch2
@@ -29,8 +29,10 @@ packages=(
 # offline (tests/python/pip_install.sh); chromium: the viewer's browser tests; Blender
 # imports fgsg's glTF and OBJ output headless (tests/cli/blender_import.sh; about 106 MB
 # to download, 3 minutes to install).
+# antlr4 (the tool, with a Java runtime): only to regenerate the parsers checked in under
+# grammar/generated (scripts/regen-grammar.sh); building needs only its C++ runtime.
 test_packages=(python3-numpy python3-pytest python3-distributed python3-venv python3-setuptools python3-wheel
-               chromium blender)
+               chromium blender antlr4)
 testing=false
 [ "${1:-}" = "--test" ] && testing=true
 $testing && packages+=("${test_packages[@]}")
