@@ -303,7 +303,7 @@ class Importer {
 
     for (ImportDecl& d : imports) {
       // `Scope.sx` and the other queries must stay queries: `alias.X` would join them.
-      static const std::set<std::string> kQueryObjects = {"Scope", "Shape", "Feature", "Lot", "context"};
+      static const std::set<std::string> kQueryObjects = {"Scope", "Shape", "Geometry", "Feature", "Lot", "context"};
       if (kQueryObjects.count(d.alias) || declared.count(d.alias)) {
         diags_.error("E062", d.range, "'" + d.alias + "' cannot name a module here: it is " +
                                           (kQueryObjects.count(d.alias) ? "a query (" + d.alias + ".X)" : "declared in this file") +

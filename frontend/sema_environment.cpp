@@ -169,9 +169,10 @@ class EnvironmentChecker {
     out.name = f.name;
     out.range = f.range;
     bool ok = true;
-    if (f.name == "Scope" || f.name == "Shape" || f.name == "context") {
-      const char* what = f.name == "Scope"   ? "the scope queries (Scope.sx ...)"
-                         : f.name == "Shape" ? "the shape queries (Shape.depth ...)"
+    if (f.name == "Scope" || f.name == "Shape" || f.name == "Geometry" || f.name == "context") {
+      const char* what = f.name == "Scope"      ? "the scope queries (Scope.sx ...)"
+                         : f.name == "Shape"    ? "the shape queries (Shape.depth ...)"
+                         : f.name == "Geometry" ? "the geometry queries (Geometry.area ...)"
                                              : "the texture contexts (context.mask(texCoord))";
       diags_.error("E036", f.nameRange,
                    "a field cannot be called '" + f.name + "': '" + f.name + "' names " + what +

@@ -250,12 +250,26 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
                 "' (Scope.sx sy sz px py pz, Scope.occ(\"noparent\"))");
   }
   if (e.object == "Shape") {
-    if ((e.text == "depth" || e.text == "index") && !e.hasCall)
-      return record(e, ValueType::Num, report);
+    static const std::set<std::string> kShape = {"depth", "index", "splitIndex", "splitTotal", "compIndex",
+                                                 "compTotal"};
+    if (kShape.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
     if (e.text == "visible" && e.hasCall && e.args.size() == 1)
       return record(e, ValueType::Bool, report);
     return fail("unknown shape query 'Shape." + e.text +
-                "' (Shape.depth, Shape.index, Shape.visible(\"street\"))");
+                "' (Shape.depth, Shape.index, Shape.splitIndex, Shape.splitTotal, Shape.compIndex, "
+                "Shape.compTotal, Shape.visible(\"street\"))");
+  }
+  if (e.object == "Geometry") {  // CGA's geometry.*(): the shape's own geometry
+    static const std::set<std::string> kNumbers = {"area", "height", "nVertices", "nFaces", "boundaryLength"};
+    if (kNumbers.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
+    if (e.text == "isConcave" && !e.hasCall) return record(e, ValueType::Bool, report);
+    if (e.text == "isPlanar" && e.hasCall && e.args.size() == 1) {
+      if (report && typeOf(*e.args[0], inner, false) != ValueType::Num)
+        return fail("Geometry.isPlanar takes a tolerance in degrees: Geometry.isPlanar(1)");
+      return record(e, ValueType::Bool, report);
+    }
+    return fail("unknown geometry query 'Geometry." + e.text +
+                "' (Geometry.area height nVertices nFaces boundaryLength isConcave, Geometry.isPlanar(degrees))");
   }
   if (e.object == "Feature") {
     bool number = false, takesString = false;

@@ -38,7 +38,8 @@ annotationArg : ( key=ID '=' )? expr ;
 
 attrDecl     : ATTR name=ID '=' value ;
 constDecl    : CONST name=ID ( '(' params? ')' )? '=' value ;
-functionDecl : name=ID ( '(' params? ')' )? '=' value ;
+// `name.attr = value` after `import name : "..."`: the imported file's attr set from here.
+functionDecl : name=( ID | QID ) ( '(' params? ')' )? '=' value ;
 ruleDecl     : name=ID ( '(' params? ')' )? ARROW ruleBody ;
 
 params : ID ( ',' ID )* ;

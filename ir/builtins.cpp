@@ -41,8 +41,19 @@ constexpr QuerySignature kQueries[] = {
     {"", "", 0, N, N, false},   // Field: F1.vector1 is Vec3, F1.value1 Num ...
     {"", "", -1, N, N, false},  // Texture: context.mask(uv)
     {"", "", -1, N, N, false},  // Feature: Feature.edge is Bool, Feature.index Num, Feature.label("x") Bool
+    {"Shape", "splitIndex", 0, N, N, true},
+    {"Shape", "splitTotal", 0, N, N, true},
+    {"Shape", "compIndex", 0, N, N, true},
+    {"Shape", "compTotal", 0, N, N, true},
+    {"Geometry", "area", 0, N, N, true},
+    {"Geometry", "height", 0, N, N, true},
+    {"Geometry", "nVertices", 0, N, N, true},
+    {"Geometry", "nFaces", 0, N, N, true},
+    {"Geometry", "isPlanar", 1, N, Type::Bool, true},
+    {"Geometry", "isConcave", 0, N, Type::Bool, true},
+    {"Geometry", "boundaryLength", 0, N, N, true},
 };
-static_assert(std::size(kQueries) == static_cast<size_t>(Query::Feature) + 1,
+static_assert(std::size(kQueries) == static_cast<size_t>(kLastQuery) + 1,
               "one signature per Query");
 
 double deg(double radians) { return radians / kRadiansPerDegree; }

@@ -58,7 +58,16 @@ enum class Query : uint8_t {
   Field,               // F1.member: env = the field, extra = string id of the member
   Texture,             // context.mask(uv): env = the texture; args as written
   Feature,             // Feature.edge, Feature.label("window") inside Cells: extra = string id of the member; args as written
+  // CGA's shape attributes split.index/total, comp.index/total: the shape's place among
+  // the parts of the last split (comp) above it, inherited by the shapes it creates.
+  ShapeSplitIndex, ShapeSplitTotal, ShapeCompIndex, ShapeCompTotal,
+  // CGA's geometry.*(): of the shape's own geometry (a box, polygon or solid), in metres.
+  GeometryArea, GeometryHeight, GeometryVertices, GeometryFaces,
+  GeometryIsPlanar,     // args[0]: the tolerance in degrees (Num); Bool
+  GeometryIsConcave,    // Bool
+  GeometryBoundaryLength,
 };
+inline constexpr Query kLastQuery = Query::GeometryBoundaryLength;
 
 struct Expr {
   ExprOp op = ExprOp::Const;
@@ -375,6 +384,10 @@ struct Module {
   // that attr's value when the grammar runs (--set n=9), steps / depthBound its default.
   // -1: the count is a constant.
   int countAttr = -1;
+  // A `.cga` grammar: each lot (and the Footprint of its start) is CityEngine's initial
+  // shape, a face in its scope's XZ plane with x along its first edge and y up
+  // (rt::cga::polygonOnGround), not fgsg's Z-up footprint.
+  bool cityEngineLots = false;
   // lpfg's and L-Py's `maximum depth:`: at most this many passes of the decomposition
   // (homomorphism) rules after each step (before the turtle).
   int decompositionDepth = 1;

@@ -61,6 +61,7 @@ class Lowerer {
     m_.steps = sema_.steps;
     m_.depthBound = sema_.depthBound;
     m_.countAttr = sema_.countAttr.empty() ? -1 : m_.findAttr(sema_.countAttr);
+    m_.cityEngineLots = prog_.cityEngineLots;
     m_.decompositionDepth = prog_.decompositionDepth;
     m_.homomorphismDepth = prog_.homomorphismDepth;
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth,
@@ -632,10 +633,18 @@ class Lowerer {
       out.index = static_cast<uint32_t>(Query::ScopeOcc);
     } else if (e.object == "Scope") {
       out.index = static_cast<uint32_t>(kScope.at(e.text));
-    } else if (e.object == "Shape") {
-      out.index = static_cast<uint32_t>(e.text == "depth"   ? Query::ShapeDepth
-                                        : e.text == "index" ? Query::ShapeIndex
-                                                            : Query::ShapeVisible);
+    } else if (e.object == "Shape" || e.object == "Geometry") {
+      static const std::map<std::string, Query> kShape = {
+          {"depth", Query::ShapeDepth},           {"index", Query::ShapeIndex},
+          {"visible", Query::ShapeVisible},       {"splitIndex", Query::ShapeSplitIndex},
+          {"splitTotal", Query::ShapeSplitTotal}, {"compIndex", Query::ShapeCompIndex},
+          {"compTotal", Query::ShapeCompTotal}};
+      static const std::map<std::string, Query> kGeometry = {
+          {"area", Query::GeometryArea},         {"height", Query::GeometryHeight},
+          {"nVertices", Query::GeometryVertices}, {"nFaces", Query::GeometryFaces},
+          {"isPlanar", Query::GeometryIsPlanar}, {"isConcave", Query::GeometryIsConcave},
+          {"boundaryLength", Query::GeometryBoundaryLength}};
+      out.index = static_cast<uint32_t>((e.object == "Shape" ? kShape : kGeometry).at(e.text));
     } else if (e.object == "Feature") {
       out.index = static_cast<uint32_t>(Query::Feature);
       out.extra = m_.internString(e.text);

@@ -523,7 +523,7 @@ class Printer {
   }
 
   void writeQuery(const Rule* rule, const Expr& e, std::string& s) {
-    if (e.index > static_cast<uint32_t>(Query::Feature)) {
+    if (e.index > static_cast<uint32_t>(kLastQuery)) {
       s += "query#" + std::to_string(e.index);
       writeArgs(rule, e.args, s);
       return;

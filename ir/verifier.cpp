@@ -749,7 +749,7 @@ class Verifier {
   }
 
   void query(const Expr& e) {
-    if (e.index > static_cast<uint32_t>(Query::Feature)) {
+    if (e.index > static_cast<uint32_t>(kLastQuery)) {
       problem("query " + std::to_string(e.index) + " out of range");
       return;
     }

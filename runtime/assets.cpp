@@ -467,6 +467,9 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
       {"bark", [](Builder& b) { buildBark(b, 24, 9); }},  // 216 quads, as the paper's
       {"leaf", buildLeaf},
   };
+  // CityEngine's built-in assets (a `.cga` file's i("builtin:cube")), under their names.
+  if (name == "builtin:cube") return makeBuiltinPrimitive("cube", out);
+  if (name == "builtin:unitQuad") return makeBuiltinPrimitive("quad", out);
   if (name == "none") {  // I("none"): CGA's way to place nothing
     out = Mesh{};
     return true;

@@ -40,6 +40,11 @@ struct Scope {
   // Texture(...): 1 + the index of the derivation's texture projection the leaves output
   // from this scope on are textured by (backend/commands/texture_commands.h); 0: none.
   uint32_t projection = 0;
+  // CGA's split.index / split.total and comp.index / comp.total: this shape's place among
+  // the parts of the last split (and comp) above it, inherited by the shapes it creates.
+  struct Place {
+    int32_t splitIndex = 0, splitTotal = 0, compIndex = 0, compTotal = 0;
+  } place;
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

@@ -2,6 +2,7 @@
 
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
+#include "runtime/cga/ground_face.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -27,11 +28,17 @@ std::vector<ir::OpKind> CgaCommands::kinds() const {
 }
 
 void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+  // A `.cga` lot (a ground face) goes to extrude, offset and the roofs as fgsg's polygon.
+  const bool ground = (op.kind == ir::OpKind::Extrude || op.kind == ir::OpKind::Offset || op.kind == ir::OpKind::Roof) &&
+                      rt::cga::isGroundFace(st.geom, d_.arena());
+  rt::Scope scope = st.scope;
+  rt::GeomRef geom = st.geom;
+  if (ground) rt::cga::groundToPolygon(scope, geom, d_.arena());
   switch (op.kind) {
     case ir::OpKind::Extrude: {
       rt::cga::Part part;
       std::string error;
-      if (!rt::cga::extrude(st.scope, st.geom, a[0], d_.arena(), part, error))
+      if (!rt::cga::extrude(scope, geom, a[0], d_.arena(), part, error))
         throw DeriveError{op.loc, "R002", error};
       st.scope = part.scope;
       st.geom = part.geom;
@@ -49,6 +56,7 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       const std::vector<std::vector<Eigen::Vector2d>> holes(rings.begin() + 1, rings.end());
       if (!rt::cga::footprint(st.scope, rings[0], holes, d_.arena(), part, error))
         throw DeriveError{op.loc, "R002", error};
+      if (d_.module().cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, d_.arena());
       st.scope = part.scope;
       st.geom = part.geom;
       break;
@@ -60,10 +68,15 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       std::vector<rt::cga::Part> inside, border;
       std::string error;
       if (!skeletonWithin(d_, [&] {
-            return rt::cga::offset(st.scope, st.geom, a[0], !borderBodies.empty(), d_.arena(), inside, border, error,
+            return rt::cga::offset(scope, geom, a[0], !borderBodies.empty(), d_.arena(), inside, border, error,
                                    &d_.deadline());
           }))
         throw DeriveError{op.loc, "R002", error};
+      if (ground) {  // the pieces of a ground face are ground faces, x along the lot's
+        const rt::Vec3 x = st.scope.X();
+        for (auto* pieces : {&inside, &border})
+          for (rt::cga::Part& piece : *pieces) rt::cga::polygonOnGround(piece.scope, piece.geom, d_.arena(), &x);
+      }
       for (const auto& [pieces, bodies] : {std::pair{&inside, &insideBodies}, std::pair{&border, &borderBodies}})
         for (const rt::cga::Part& piece : *pieces)
           for (uint32_t k : *bodies) {
@@ -76,7 +89,7 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       rt::cga::Part part;
       std::string error;
       if (!skeletonWithin(d_, [&] {
-            return rt::cga::roof(st.scope, st.geom, d_.module().strings[op.str], a[0], d_.arena(), part, error,
+            return rt::cga::roof(scope, geom, d_.module().strings[op.str], a[0], d_.arena(), part, error,
                                  &d_.deadline());
           }))
         throw DeriveError{op.loc, "R002", error};
@@ -124,16 +137,34 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   // Labelled parts of Comp: each face goes to the first part whose label names it.
   std::vector<unsigned> labelMasks;
   for (uint32_t label : op.partLabels) labelMasks.push_back(rt::cga::faceSelectorMask(d_.module().strings[label]));
-  for (size_t i = 0; i < parts.size(); ++i) {
+  // The body each derived part runs (SIZE_MAX: none), and how many parts each body runs.
+  std::vector<size_t> bodyOf(parts.size(), SIZE_MAX);
+  std::vector<int32_t> perBody(op.bodies.size() + labelMasks.size() + 1, 0);
+  int32_t derived = 0;
+  for (size_t i = 0; i < parts.size() && i < derivedParts; ++i) {
     if (parts[i].empty) continue;
-    if (i >= derivedParts) break;
     size_t body = op.kind == ir::OpKind::Subdiv ? i % op.bodies.size() : 0;
     if (!labelMasks.empty()) {
       body = 0;
       while (body < labelMasks.size() && !(labelMasks[body] & parts[i].faceClass)) ++body;
       if (body == labelMasks.size()) continue;  // no part takes this face
     }
-    d_.runBody(op, body, parts[i].scope, parts[i].geom, st, ex, f);
+    bodyOf[i] = body;
+    ++perBody[body];
+    ++derived;
+  }
+  // CGA's split.index / split.total count the parts a split derives; comp.index /
+  // comp.total the faces of the part's selector (CityEngine's per-selector count).
+  std::vector<int32_t> seen(perBody.size(), 0);
+  int32_t index = 0;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    if (bodyOf[i] == SIZE_MAX) continue;
+    rt::Scope::Place place = st.scope.place;
+    if (op.kind == ir::OpKind::Comp)
+      place.compIndex = seen[bodyOf[i]]++, place.compTotal = perBody[bodyOf[i]];
+    else
+      place.splitIndex = index++, place.splitTotal = derived;
+    d_.runBody(op, bodyOf[i], parts[i].scope, parts[i].geom, st, ex, f, &place);
     if (ex.culled) return;
   }
 }

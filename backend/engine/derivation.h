@@ -110,9 +110,10 @@ class Derivation final : public QueryHost {
   // Writes a shape of `symbol` (parameterless) on `scope` as an Emit at `at` would: how
   // the solvers' pieces (Synthesize, Evolve) become shapes.
   void emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at, const rt::GeomRef& geom = {});
-  // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
+  // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope; the part
+  // takes `place` (CGA's split/comp index and total), else the outer shape's.
   void runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom, const State& outer,
-               Exec& ex, Frame& f);
+               Exec& ex, Frame& f, const rt::Scope::Place* place = nullptr);
   // Inside a Lock every shape is derived where it is written.
   void enterLock() { ++lockDepth_; }
   void leaveLock() { --lockDepth_; }
@@ -134,6 +135,7 @@ class Derivation final : public QueryHost {
   double feature(const std::string& member, const std::string& arg, ir::Loc at) override {
     return cells_.feature(member, arg, at);
   }
+  double geometry(ir::Query q, const rt::Scope& scope, const rt::GeomRef& geom, double arg, ir::Loc at) override;
 
   // ------------------------------------------------ the runtime entry points of compiled
   // code (runtime/abi.def, native_bridge.cpp), for a sequential derivation (call.st set)

@@ -75,7 +75,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
   const rt::Scope& scope = shape.scope;
   const uint32_t depth = shape.depth;
   rt::RandomStream rng{shape.key, 0};
-  Frame f{params_.data(), &rng, &scope, depth, shape.index, this};
+  Frame f{params_.data(), &rng, &scope, depth, shape.index, this, &shape.geom};
   if (depth >= maxDepth_) {
     depthLimit(sym, shape.creator);
     return;
@@ -120,7 +120,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   std::vector<double> params(std::max(maxSlots_, 1u), 0.0);
   std::copy(slots, slots + sym.slotCount, params.begin());
   rt::RandomStream rng{key, 0};
-  Frame f{params.data(), &rng, &at.scope, depth, index, this};
+  Frame f{params.data(), &rng, &at.scope, depth, index, this, &at.geom};
   if (depth >= maxDepth_) {
     depthLimit(sym, creatorRule_);
     return false;
@@ -140,6 +140,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line, &at.scope};
   Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
   f.scope = &st.scope;
+  f.geom = &st.geom;
   const auto writing = sequentialString_ ? sequentialString_->beginRewrite(node) : SequentialString::Writing{};
   runBlock(blockOf(alt), alt->ops, st, ex, f);
   stack_.resize(st.stackBase);
@@ -178,7 +179,7 @@ void Derivation::execRoot(uint32_t block, const ir::Block& ops, const rt::Scope&
     marks_.clear();
     for (const auto& [priority, queue] : buckets_) marks_.emplace_back(priority, queue.mark());
   }
-  Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this};
+  Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this, &st.geom};
   const uint32_t outerDepth = placingDepth_;
   placingDepth_ = f.depth;
   runBlock(block, ops, st, ex, f);
@@ -218,6 +219,7 @@ void Derivation::execBlock(const ir::Block& ops, State& st, Exec& ex, Frame& f) 
   ArgBuffer buf;
   for (const ir::Op& op : ops) {
     f.scope = &st.scope;
+    f.geom = &st.geom;
     switch (op.kind) {
       // The commands of nearly every successor are applied here directly, without
       // going through the argument buffer (the hot path of every derivation).
@@ -259,13 +261,16 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 
 // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
-                         const State& outer, Exec& ex, Frame& f) {
+                         const State& outer, Exec& ex, Frame& f, const rt::Scope::Place* place) {
   State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope};
-  // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour.
+  // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour and
+  // the split and comp indices (those of this split, when it is one).
   inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;
+  inner.scope.place = place ? *place : outer.scope.place;
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);
   stack_.resize(inner.stackBase);
   f.scope = &outer.scope;
+  f.geom = &outer.geom;
 }
 
 // Writes a shape of op's symbol with its parameter slots evaluated.

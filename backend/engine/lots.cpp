@@ -6,6 +6,7 @@
 #include "backend/engine/derivation.h"
 
 #include "runtime/cga/cga.h"
+#include "runtime/cga/ground_face.h"
 
 namespace fgsg::backend {
 
@@ -27,6 +28,8 @@ void Derivation::deriveLots(uint64_t root) {
     std::string error;
     if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena_, part, error))
       throw DeriveError{{}, "R028", rt::lotName(opt_.lotsName, lot) + ": " + error};
+    // A `.cga` grammar starts on CityEngine's initial shape: x along the first edge, y up.
+    if (m_.cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, arena_);
     const auto index = static_cast<uint32_t>(k);
     out_.startBounds.push_back(static_cast<uint32_t>(out_.instances.size()));
     execRoot(0, m_.axiom, part.scope, part.geom, rt::childKey(root, index), 0, index, &noParams, UINT32_MAX);

@@ -69,6 +69,7 @@ void Derivation::deriveDirect(uint32_t symbol, const double* slots, const rt::Sc
 // Runs a compiled successor on st; what its ops threw is rethrown once it returned.
 void Derivation::runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
   f.scope = &st.scope;
+  f.geom = &st.geom;
   NativeCall call;
   call.engine = this;
   call.st = &st;
@@ -78,6 +79,7 @@ void Derivation::runNative(uint32_t block, State& st, Exec& ex, Frame& f) {
   bridge.attach(call);
   program_->blocks[block](&call, f.params, eval_.attrData());
   f.scope = &st.scope;
+  f.geom = &st.geom;
   if (call.thrown) std::rethrow_exception(call.thrown);
   if (call.errorCode != FGSG_OK) throw bridge.error(call);
 }

@@ -40,7 +40,7 @@ void Derivation::runParallel() {
   });
   ModuleString str, next;
   std::vector<double> none;
-  Frame f{none.data(), nullptr, nullptr, 0, 0, this};
+  Frame f{none.data(), nullptr, nullptr, 0, 0, this, nullptr};
   rt::RandomStream rng{rt::rootKey(opt_.seed), 0};
   f.rng = &rng;
   appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str);
@@ -313,7 +313,7 @@ const ir::Alternative* Derivation::chooseInString(const ir::Symbol& sym, ir::Rul
       params_.assign(r.slotCount, 0.0);
       std::copy(own, own + sym.slotCount, params_.begin());
       if (!matchLeft(r, str, at) || !matchRight(r, str, at)) continue;
-      Frame f{params_.data(), &rng, nullptr, step, index, this};
+      Frame f{params_.data(), &rng, nullptr, step, index, this, nullptr};
       if (r.hasGuard && !guardHolds(ri, f)) continue;
       if (pass == 0 && !takesPart(firstApplicable, ri, taken)) continue;
       addCandidates(r, ri, f, total);

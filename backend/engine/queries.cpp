@@ -1,6 +1,9 @@
 // The queries a rule may ask about its shape (QueryHost): Shape.visible, Shape.occlusion
 // and the field queries, answered by the derivation's state.
 #include "backend/engine/derivation.h"
+#include "runtime/cga/geometry_queries.h"
+
+#include <cmath>
 
 namespace fgsg::backend {
 
@@ -33,6 +36,26 @@ rt::Vec3 Derivation::fieldVector(const rt::Scope& scope, uint32_t env, const std
                                  ir::Loc at) {
   if (!surface_) throw DeriveError{at, "R016", "field queries need a surface"};
   return surface_->fieldVector(scope, env, member, at);
+}
+
+// Geometry.area ... (CGA's geometry.*()) of the shape's own geometry.
+double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomRef& geom, double arg, ir::Loc at) {
+  if (q == ir::Query::GeometryIsPlanar) {
+    if (!std::isfinite(arg) || arg < 0)
+      throw DeriveError{at, "R011", "Geometry.isPlanar: the tolerance must be an angle of 0 degrees or more"};
+    return rt::cga::geometryIsPlanar(scope, geom, arena_, arg) ? 1.0 : 0.0;
+  }
+  const rt::cga::GeometryFacts g = rt::cga::geometryFacts(scope, geom, arena_);
+  switch (q) {
+    case ir::Query::GeometryArea: return g.area;
+    case ir::Query::GeometryHeight: return g.height;
+    case ir::Query::GeometryVertices: return g.vertices;
+    case ir::Query::GeometryFaces: return g.faces;
+    case ir::Query::GeometryIsConcave: return g.concave ? 1.0 : 0.0;
+    case ir::Query::GeometryBoundaryLength: return g.boundaryLength;
+    default: break;
+  }
+  throw DeriveError{at, "R900", "internal: unknown geometry query"};
 }
 
 double Derivation::texture(const rt::Scope& scope, uint32_t env, ir::Loc at) {

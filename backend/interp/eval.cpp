@@ -157,6 +157,9 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   using ir::Query;
   const auto q = static_cast<Query>(e.index);
   if (q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Feature) requireScope(e, f);
+  if (q >= Query::GeometryArea)
+    return f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
+                            q == Query::GeometryIsPlanar ? num(e.args[0], f) : 0.0, e.loc);
   switch (q) {
     case Query::ScopeSx: return f.scope->S.x();
     case Query::ScopeSy: return f.scope->S.y();
@@ -173,6 +176,11 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
     case Query::Texture: return f.host->texture(*f.scope, e.env, e.loc);
     case Query::Feature:
       return f.host->feature(m_.strings[e.extra], e.args.empty() ? std::string() : string(num(e.args[0], f)), e.loc);
+    case Query::ShapeSplitIndex: return f.scope->place.splitIndex;
+    case Query::ShapeSplitTotal: return f.scope->place.splitTotal;
+    case Query::ShapeCompIndex: return f.scope->place.compIndex;
+    case Query::ShapeCompTotal: return f.scope->place.compTotal;
+    default: break;  // the geometry queries, above
   }
   throw DeriveError{e.loc, "R900", "internal: unknown query"};
 }

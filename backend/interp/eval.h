@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ir/ir.h"
+#include "runtime/geometry.h"
 #include "runtime/random.h"
 #include "runtime/scope.h"
 
@@ -42,6 +43,12 @@ struct QueryHost {
   // Feature.member inside Cells (`arg`: Feature.label's string, else empty): a number, or
   // 1 / 0 for a truth value.
   virtual double feature(const std::string& member, const std::string& arg, ir::Loc at) = 0;
+  // Geometry.area ... (CGA's geometry.*()) of the shape's own geometry; `arg`: isPlanar's
+  // tolerance in degrees.
+  virtual double geometry(ir::Query q, const rt::Scope& scope, const rt::GeomRef& geom, double arg, ir::Loc at) {
+    (void)q, (void)scope, (void)geom, (void)arg;
+    throw DeriveError{at, "R900", "internal: geometry queries are not answered here"};
+  }
 };
 
 struct Frame {
@@ -51,6 +58,7 @@ struct Frame {
   uint32_t depth = 0;
   uint32_t index = 0;
   QueryHost* host = nullptr;
+  const rt::GeomRef* geom = nullptr;  // the shape's own geometry (null: its scope box)
 };
 
 class Evaluator {

@@ -12,6 +12,12 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex && q != ir::Query::Feature;
   if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
   try {
+    if (q >= ir::Query::GeometryArea) {
+      if (q == ir::Query::GeometryIsPlanar && nargs < 1) return FGSG_E_INTERNAL;
+      *out = f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
+                              q == ir::Query::GeometryIsPlanar ? args[0] : 0.0, at);
+      return FGSG_OK;
+    }
     switch (q) {
       case ir::Query::ScopeSx: *out = f.scope->S.x(); return FGSG_OK;
       case ir::Query::ScopeSy: *out = f.scope->S.y(); return FGSG_OK;
@@ -37,6 +43,11 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
         *out = f.host->feature(self.m_.strings.at(extra),
                                nargs ? self.m_.strings.at(static_cast<size_t>(args[0])) : std::string(), at);
         return FGSG_OK;
+      case ir::Query::ShapeSplitIndex: *out = f.scope->place.splitIndex; return FGSG_OK;
+      case ir::Query::ShapeSplitTotal: *out = f.scope->place.splitTotal; return FGSG_OK;
+      case ir::Query::ShapeCompIndex: *out = f.scope->place.compIndex; return FGSG_OK;
+      case ir::Query::ShapeCompTotal: *out = f.scope->place.compTotal; return FGSG_OK;
+      default: break;  // the geometry queries, above
     }
     return FGSG_E_INTERNAL;
   } catch (const DeriveError& e) {

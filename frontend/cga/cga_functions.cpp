@@ -8,7 +8,9 @@
 #include "frontend/builtins.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <set>
 
 namespace fgsg::frontend::cga {
 
@@ -233,6 +235,12 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
       notSupported(at, "the shape attribute '" + text + "'");
       return nullptr;
     }
+    if ((object == "split" || object == "comp") && (member == "index" || member == "total")) {
+      ExprPtr e = makeExpr(ExprKind::Member, at);  // Shape.splitIndex ...
+      e->object = "Shape";
+      e->text = object + char(std::toupper(static_cast<unsigned char>(member[0]))) + member.substr(1);
+      return e;
+    }
     if (importAliases_.count(object)) {  // an imported attr or const: `facade.height`
       ExprPtr e = makeExpr(ExprKind::Ident, at);
       e->text = text;
@@ -283,6 +291,40 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     inlining_.pop_back();
     if (out) out->range = at;
     return out;
+  }
+  if (fn.rfind("geometry.", 0) == 0) {
+    // geometry.area() ...: fgsg's Geometry.area queries; the surface selectors
+    // (geometry.area(top)) are not here yet.
+    static const std::set<std::string> kGeometry = {"area", "height", "nVertices", "nFaces", "isConcave",
+                                                    "boundaryLength", "isPlanar"};
+    const std::string member = fn.substr(9);
+    if (!kGeometry.count(member)) {
+      notSupported(nameAt, "the function '" + fn + "'");
+      return nullptr;
+    }
+    const size_t want = member == "isPlanar" ? 1 : 0;
+    if (argCtx.size() != want) {
+      if (want == 0 && argCtx.size() == 1) {
+        notSupported(at, "'" + fn + "' with a selector of faces");
+        return nullptr;
+      }
+      error("E016", nameAt, "'" + fn + "' takes " + (want ? "1 argument (the tolerance in degrees)" : "no arguments") +
+                                ", got " + std::to_string(argCtx.size()));
+      return nullptr;
+    }
+    std::vector<ExprPtr> args;
+    for (auto* a : argCtx) {
+      Env plain = env;
+      plain.relativeAxis = -1;
+      args.push_back(expr(a, plain));
+      if (!args.back()) return nullptr;
+    }
+    ExprPtr e = makeExpr(ExprKind::Member, at);
+    e->object = "Geometry";
+    e->text = member;
+    e->hasCall = want == 1;
+    e->args = std::move(args);
+    return e;
   }
   std::vector<ExprPtr> args;
   Env plain = env;

@@ -6,6 +6,7 @@
 //                                       cut; a nested repeat takes what the others leave)
 //   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
+//   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
 //   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
 //                                       it (CityEngine transforms the inserted geometry with
@@ -315,6 +316,12 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     inward->text = "-";
     inward->args.push_back(std::move(d));
     item.args.push_back(std::move(inward));
+    if (part.empty() && offsetComp(*seq.ops, seq.index + 1, item, env)) {
+      push(std::move(item));
+      seq.createsShapes = true;
+      seq.done = true;
+      return;
+    }
     // Without a selector CityEngine keeps both as one shape; here they are two shapes.
     if (part.empty() || part == "inside") restAsBody(item, "inside");
     if (part.empty() || part == "border") restAsBody(item, "border");
@@ -610,6 +617,36 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
   seq.createsShapes = true;
 }
 
+// `offset(-d) comp(f) { inside : A | border : B }`: the comp's parts become the Offset's
+// inside and border bodies (`=` too: each piece is one shape either way). False (nothing
+// done) when the operation after the offset is not such a comp.
+bool Translator::offsetComp(const std::vector<P::OperationContext*>& ops, size_t next, Item& offset, const Env& env) {
+  if (next >= ops.size()) return false;
+  auto* c = dynamic_cast<P::CallOperationContext*>(ops[next]);
+  if (!c || c->name->getText() != "comp" || c->expr().size() != 1 || selectorWord(c->expr()[0]) != "f" ||
+      !c->splitBody() || c->splitBody()->repeat)
+    return false;
+  std::vector<P::SizedPartContext*> parts;
+  for (P::SplitPartContext* partCtx : c->splitBody()->splitPart()) {
+    auto* sized = dynamic_cast<P::SizedPartContext*>(partCtx);
+    const std::string sel = sized ? selectorWord(sized->key) : "";
+    if (sel != "inside" && sel != "border") return false;
+    parts.push_back(sized);
+  }
+  for (P::SizedPartContext* sized : parts) {
+    Successor part;
+    part.range = rangeOf(sized);
+    part.selector = selectorWord(sized->key);
+    part.selectorRange = rangeOf(sized->key);
+    operations(sized->operation(), 0, part, env, true);
+    offset.body.push_back(std::move(part));
+  }
+  offset.hasBody = true;
+  if (next + 1 < ops.size())
+    warning("W800", rangeOf(ops[next + 1]), "operations after comp(f) { ... } are never applied (comp replaces the shape)");
+  return true;
+}
+
 // An asset or image named by a .cga file, found as CityEngine finds it: beside the rule
 // file, in its assets/ folder, or in the project (the folders above it, whose assets/
 // holds CityEngine's). Found: the path becomes absolute. Missing: W801 once per path.
@@ -648,10 +685,9 @@ void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& e
   if (asset->kind == ExprKind::String) {
     std::string& p = asset->text;
     if (p.rfind("builtin:", 0) == 0) {
+      // CityEngine's built-in assets keep their names (runtime/assets.cpp builds them).
       const std::string b = p.substr(8);
-      if (b == "cube") p = "cube";
-      else if (b == "unitQuad") p = "quad";
-      else {
+      if (b != "cube" && b != "unitQuad") {
         notSupported(rangeOf(argCtx[0]), "the built-in asset '" + p + "'");
         return;
       }

@@ -99,7 +99,9 @@ constexpr double kDefaultLotSide = 20.0;
 }  // namespace
 
 void Translator::run(P::CgaFileContext* file) {
+  program_.cityEngineLots = true;
   collect(file);
+  bool sawStyle = false;
   for (P::DeclarationContext* d : file->declaration()) {
     if (auto* v = d->versionDecl()) {
       (void)v;  // any version: the dialect is CityEngine's current CGA
@@ -109,7 +111,11 @@ void Translator::run(P::CgaFileContext* file) {
     } else if (auto* imp = d->importDecl()) {
       importDecl(imp);
     } else if (auto* style = d->styleDecl()) {
-      notSupported(rangeOf(style), style->EXTENDS() ? "'style ... extends'" : "'style'");
+      // `style Default` names the file's own declarations' style: nothing to do. A second
+      // style (`style Winter extends Default`) would override attrs: not here yet.
+      if (style->EXTENDS() || sawStyle)
+        notSupported(rangeOf(style), style->EXTENDS() ? "'style ... extends'" : "a second 'style'");
+      sawStyle = true;
     } else if (auto* a = d->annotated()) {
       declaration(a);
     }
@@ -124,6 +130,7 @@ void Translator::collect(P::CgaFileContext* file) {
     auto* a = d->annotated();
     if (!a) continue;
     if (auto* f = a->functionDecl()) {
+      if (f->name->getText().find('.') != std::string::npos) continue;  // an import's attr, set (declaration)
       Function fn{f->name->getText(), {}, f->value(), rangeOf(f->name)};
       if (f->params())
         for (auto* p : f->params()->ID()) fn.params.push_back(p->getText());
@@ -158,6 +165,31 @@ void Translator::importDecl(P::ImportDeclContext* ctx) {
   program_.imports.push_back(std::move(d));
 }
 
+// `f.tileWidth = 5` after `import f : "lib.cga"`: the library's attr takes this value, as
+// fgsg's `import "lib" as f (tileWidth = 5)` sets it.
+void Translator::importSetting(P::FunctionDeclContext* ctx) {
+  const std::string name = ctx->name->getText();
+  const SourceRange at = rangeOf(ctx->name);
+  const size_t dot = name.find('.');
+  const std::string alias = name.substr(0, dot), attr = name.substr(dot + 1);
+  ImportDecl* target = nullptr;
+  for (ImportDecl& d : program_.imports)
+    if (d.alias == alias) target = &d;
+  if (!target) {
+    error("E010", at, "'" + name + "' sets an attr of an import, but no import before it is called '" + alias + "'");
+    return;
+  }
+  if (ctx->params() || ctx->LPAREN() || attr.find('.') != std::string::npos) {
+    error("E002", at, "'" + name + " = value' sets the imported attr '" + attr + "': it takes no parameters");
+    return;
+  }
+  currentParams_ = nullptr;
+  ExprPtr v = value(ctx->value(), Env{});
+  if (!v) return;
+  target->settings.emplace_back(attr, std::move(v));
+  target->settingRanges.push_back(at);
+}
+
 void Translator::declaration(P::AnnotatedContext* ctx) {
   bool start = false;
   std::string name = ctx->attrDecl()    ? ctx->attrDecl()->name->getText()
@@ -187,6 +219,8 @@ void Translator::declaration(P::AnnotatedContext* ctx) {
     if (v.value) program_.values.push_back(std::move(v));
   } else if (auto* r = ctx->ruleDecl()) {
     rule(r);
+  } else if (auto* f = ctx->functionDecl(); f && name.find('.') != std::string::npos) {
+    importSetting(f);
   }
   // consts and functions are inlined where they are used (cga_functions.cpp).
 }

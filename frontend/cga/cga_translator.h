@@ -119,6 +119,7 @@ class Translator {
   Successor emitOf(const RuleHead& head, const SourceRange& at);
   void startRule();
   void importDecl(P::ImportDeclContext* ctx);
+  void importSetting(P::FunctionDeclContext* ctx);
 
   // cga_operations.cpp
   struct Sequence;
@@ -127,6 +128,7 @@ class Translator {
   void split(P::CallOperationContext* op, const std::string& axis, Sequence& seq, const Env& env);
   void splitBody(P::SplitBodyContext* body, const std::string& axis, Item& item, const Env& env);
   void comp(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  bool offsetComp(const std::vector<P::OperationContext*>& ops, size_t next, Item& offset, const Env& env);
   void insert(P::CallOperationContext* op, Sequence& seq, const Env& env);
   void texture(P::CallOperationContext* op, Sequence& seq, const Env& env);
   bool assetPath(std::string& path, const SourceRange& at, const char* what);

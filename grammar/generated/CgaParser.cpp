@@ -84,6 +84,7 @@ CgaParser::CgaFileContext* CgaParser::cgaFile() {
       | (1ULL << CgaParser::ATTR)
       | (1ULL << CgaParser::CONST)
       | (1ULL << CgaParser::AT)
+      | (1ULL << CgaParser::QID)
       | (1ULL << CgaParser::ID))) != 0)) {
       setState(44);
       declaration();
@@ -184,6 +185,7 @@ CgaParser::DeclarationContext* CgaParser::declaration() {
       case CgaParser::ATTR:
       case CgaParser::CONST:
       case CgaParser::AT:
+      case CgaParser::QID:
       case CgaParser::ID: {
         enterOuterAlt(_localctx, 5);
         setState(56);
@@ -982,6 +984,10 @@ tree::TerminalNode* CgaParser::FunctionDeclContext::ID() {
   return getToken(CgaParser::ID, 0);
 }
 
+tree::TerminalNode* CgaParser::FunctionDeclContext::QID() {
+  return getToken(CgaParser::QID, 0);
+}
+
 tree::TerminalNode* CgaParser::FunctionDeclContext::LPAREN() {
   return getToken(CgaParser::LPAREN, 0);
 }
@@ -1017,7 +1023,17 @@ CgaParser::FunctionDeclContext* CgaParser::functionDecl() {
   try {
     enterOuterAlt(_localctx, 1);
     setState(144);
-    dynamic_cast<FunctionDeclContext *>(_localctx)->name = match(CgaParser::ID);
+    dynamic_cast<FunctionDeclContext *>(_localctx)->name = _input->LT(1);
+    _la = _input->LA(1);
+    if (!(_la == CgaParser::QID
+
+    || _la == CgaParser::ID)) {
+      dynamic_cast<FunctionDeclContext *>(_localctx)->name = _errHandler->recoverInline(this);
+    }
+    else {
+      _errHandler->reportMatch(this);
+      consume();
+    }
     setState(150);
     _errHandler->sync(this);
 
@@ -3259,7 +3275,7 @@ CgaParser::Initializer::Initializer() {
     0x28, 0x2, 0x2, 0x8d, 0x88, 0x3, 0x2, 0x2, 0x2, 0x8d, 0x8e, 0x3, 0x2, 
     0x2, 0x2, 0x8e, 0x8f, 0x3, 0x2, 0x2, 0x2, 0x8f, 0x90, 0x7, 0x19, 0x2, 
     0x2, 0x90, 0x91, 0x5, 0x1e, 0x10, 0x2, 0x91, 0x17, 0x3, 0x2, 0x2, 0x2, 
-    0x92, 0x98, 0x7, 0x32, 0x2, 0x2, 0x93, 0x95, 0x7, 0x27, 0x2, 0x2, 0x94, 
+    0x92, 0x98, 0x9, 0x2, 0x2, 0x2, 0x93, 0x95, 0x7, 0x27, 0x2, 0x2, 0x94, 
     0x96, 0x5, 0x1c, 0xf, 0x2, 0x95, 0x94, 0x3, 0x2, 0x2, 0x2, 0x95, 0x96, 
     0x3, 0x2, 0x2, 0x2, 0x96, 0x97, 0x3, 0x2, 0x2, 0x2, 0x97, 0x99, 0x7, 
     0x28, 0x2, 0x2, 0x98, 0x93, 0x3, 0x2, 0x2, 0x2, 0x98, 0x99, 0x3, 0x2, 

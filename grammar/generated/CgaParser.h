@@ -259,6 +259,7 @@ public:
     antlr4::tree::TerminalNode *ASSIGN();
     ValueContext *value();
     antlr4::tree::TerminalNode *ID();
+    antlr4::tree::TerminalNode *QID();
     antlr4::tree::TerminalNode *LPAREN();
     antlr4::tree::TerminalNode *RPAREN();
     ParamsContext *params();

@@ -162,7 +162,7 @@ TEST_CASE("an insert takes the scope operations written after it", "[cga][dialec
   const auto r = deriveCga("@StartRule\nLot --> s(2, 2, 2) i(\"builtin:cube\") s(1, 3, 1) t(1, 0, 0) X.\n");
   REQUIRE(r.ok);
   REQUIRE(r.instances.instances.size() == 1);
-  CHECK(r.instances.assets[r.instances.instances[0].asset] == "cube");
+  CHECK(r.instances.assets[r.instances.instances[0].asset] == "builtin:cube");  // CityEngine's name, kept
   const Eigen::Vector3d a = test::unitPoint(r.instances.instances[0], 0, 0, 0);
   const Eigen::Vector3d b = test::unitPoint(r.instances.instances[0], 1, 1, 1);
   CHECK(a.x() == Approx(1));

@@ -157,11 +157,18 @@ TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dial
         std::string::npos);
   const Compiled unknown = compile("@StartRule\nLot --> frobnicate(3)\n");
   CHECK(unknown.messages.find("test.cga:2:9: error[E800]: unknown operation 'frobnicate'") != std::string::npos);
-  const Compiled fn = compile("@StartRule\nLot --> s(geometry.area(), 1, 1) X.\n");
-  CHECK(fn.messages.find("E801") != std::string::npos);
-  CHECK(fn.messages.find("'geometry.area'") != std::string::npos);
-  const Compiled style = compile("style Night\n@StartRule\nLot --> X.\n");
-  CHECK(style.messages.find("test.cga:1:1: error[E801]: 'style'") != std::string::npos);
+  const Compiled fn = compile("@StartRule\nLot --> s(geometry.angle(maxSlope), 1, 1) X.\n");
+  CHECK(fn.messages.find("test.cga:2:11: error[E801]: the function 'geometry.angle'") != std::string::npos);
+  const Compiled faces = compile("@StartRule\nLot --> s(geometry.area(top), 1, 1) X.\n");
+  CHECK(faces.messages.find("E801") != std::string::npos);
+  CHECK(faces.messages.find("with a selector of faces") != std::string::npos);
+  // `style Default` names the file's own style; a style that extends another is not here yet.
+  CHECK(compile("style Default\n@StartRule\nLot --> X.\n").ok);
+  const Compiled style = compile("style Default\nstyle Night extends Default\n@StartRule\nLot --> X.\n");
+  CHECK(style.messages.find("test.cga:2:1: error[E801]: 'style ... extends'") != std::string::npos);
+  const Compiled setting = compile("nope.width = 3\n@StartRule\nLot --> X.\n");
+  CHECK(setting.messages.find("test.cga:1:1: error[E010]: 'nope.width' sets an attr of an import") !=
+        std::string::npos);
   const Compiled overhang = compile("@StartRule\nLot --> roofGable(30, 1)\n");
   CHECK(overhang.messages.find("E801") != std::string::npos);
   const Compiled selector = compile("@StartRule\nLot --> extrude(3) comp(f) { horizontal : A }\n");

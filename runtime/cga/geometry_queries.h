@@ -1,0 +1,27 @@
+// CityEngine's geometry functions (geometry.area(), height(), nVertices(), nFaces(),
+// isPlanar(tol), isConcave(), boundaryLength()) on a shape's own geometry: a box (its six
+// faces; a flat box its one face), a polygon or a solid. World units (metres).
+#pragma once
+
+#include "runtime/geometry.h"
+#include "runtime/scope.h"
+
+namespace fgsg::rt::cga {
+
+struct GeometryFacts {
+  double area = 0;            // all faces (a solid's bottom too)
+  double height = 0;          // the extent of its vertices along world Y
+  int vertices = 0;           // distinct corners (a cube has 8)
+  int faces = 0;
+  bool concave = false;       // a face with a reflex corner or a hole
+  double boundaryLength = 0;  // edges only one face has: a polygon's perimeter, 0 for a closed solid
+};
+
+GeometryFacts geometryFacts(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
+
+// Whether every face lies in one plane: face normals within `toleranceDegrees` of the
+// first's and every corner on its plane (within the same angle seen over the geometry's
+// size). No faces (an edge): false.
+bool geometryIsPlanar(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, double toleranceDegrees);
+
+}  // namespace fgsg::rt::cga
