@@ -1,0 +1,364 @@
+// Scope operations (rotateScope, alignScopeToAxes, alignScopeToGeometry, mirrorScope) and
+// the geometry operations that keep the scope (mirror, reverseNormals, deleteHoles,
+// cleanupGeometry): the geometry is taken to world coordinates, the new scope fitted
+// around it, and the geometry stored again in the new scope's unit box.
+#include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/shape_operations.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fgsg::rt::cga {
+namespace {
+
+struct WorldGeometry {
+  GeomKind kind = GeomKind::Polygon;
+  std::vector<Polygon3> faces;  // world points, each face as stored (outward / counter-clockwise)
+  bool box = false;             // the scope box itself
+};
+
+bool worldGeometry(const Scope& s, const GeomRef& g, const GeometryArena& arena, const char* what,
+                   WorldGeometry& out, std::string& error) {
+  auto world = [&](const Vec3& u) -> Vec3 { return s.P + s.axes * s.S.cwiseProduct(u); };
+  out = WorldGeometry{};
+  if (g.kind == GeomKind::Edge) {
+    error = std::string(what) + ": expects a face or a solid, not an edge";
+    return false;
+  }
+  if (g.kind == GeomKind::Box) {
+    int zero = -1, zeros = 0;
+    for (int k = 0; k < 3; ++k)
+      if (!(s.S[k] > 0.0)) zero = k, ++zeros;
+    if (zeros == 0) {
+      out.kind = GeomKind::Polyhedron;
+      out.box = true;
+      for (const Polygon3& f : unitBoxFaces()) {
+        out.faces.emplace_back();
+        for (const Vec3& u : f) out.faces.back().push_back(world(u));
+      }
+      return true;
+    }
+    if (zeros > 1) {
+      error = std::string(what) + ": the shape has no area (two of its scope sizes are zero)";
+      return false;
+    }
+    // A flat box (a footprint S(w, 0, d), a facade piece): its one face, counter-clockwise
+    // about the axis it has no size in.
+    const int i = (zero + 1) % 3, j = (zero + 2) % 3;
+    Polygon3 face;
+    for (const auto& [a, b] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}) {
+      Vec3 u = Vec3::Zero();
+      u[i] = a, u[j] = b;
+      face.push_back(world(u));
+    }
+    out.kind = GeomKind::Polygon;
+    out.faces.push_back(face);
+    return true;
+  }
+  const LocalGeometry local = loadGeometry(arena, g);
+  out.kind = g.kind;
+  for (const Polygon3& f : local.faces) {
+    out.faces.emplace_back();
+    for (const Vec3& u : f) out.faces.back().push_back(world(u));
+  }
+  return true;
+}
+
+Vec3 faceNormal(const Polygon3& f) { return newellNormal(f); }  // length: twice the area
+
+// The least rotation that turns unit vector a onto unit vector b.
+Mat3 rotationOnto(const Vec3& a, const Vec3& b) {
+  return Eigen::Quaterniond::FromTwoVectors(a, b).toRotationMatrix();
+}
+
+// fgsg's polygon frame: the axis nearest the polygon's normal renamed Z, the frame kept
+// right-handed (Y the normal: X kept, Y = -Z, as Footprint turns a box's frame; X the
+// normal: the axes named cyclically), then the least rotation laying Z on the normal.
+Mat3 polygonFrame(const Mat3& axes, const Vec3& normal) {
+  const Vec3 n = normal.normalized();
+  int k = 0;
+  for (int c = 1; c < 3; ++c)
+    if (std::abs(axes.col(c).dot(n)) > std::abs(axes.col(k).dot(n))) k = c;
+  Mat3 a = axes;
+  if (k == 1) a.col(1) = -axes.col(2), a.col(2) = axes.col(1);
+  if (k == 0) a.col(0) = axes.col(1), a.col(1) = axes.col(2), a.col(2) = axes.col(0);
+  if (a.col(2).dot(n) < 0) a.col(1) = -a.col(1), a.col(2) = -a.col(2);
+  return rotationOnto(a.col(2), n) * a;
+}
+
+bool signedPermutationOf(const Mat3& a, const Mat3& b) {
+  for (int c = 0; c < 3; ++c) {
+    bool found = false;
+    for (int d = 0; d < 3; ++d) found |= std::abs(std::abs(a.col(c).dot(b.col(d))) - 1.0) < 1e-12;
+    if (!found) return false;
+  }
+  return true;
+}
+
+// The shape with scope axes `axes` fitted around the geometry.
+void fit(const Scope& base, const Mat3& axes, const WorldGeometry& g, GeometryArena& arena, Part& out) {
+  const Mat3 inverse = axes.transpose();  // orthonormal (mirrored too)
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Polygon3& f : g.faces)
+    for (const Vec3& p : f) {
+      const Vec3 l = inverse * p;
+      lo = lo.cwiseMin(l), hi = hi.cwiseMax(l);
+    }
+  out = Part{};
+  out.scope = base;  // keeps what is not geometry: the colour, the projection
+  out.scope.axes = axes;
+  out.scope.P = axes * lo;
+  out.scope.S = hi - lo;
+  const double extent = out.scope.S.maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    if (out.scope.S[k] <= 1e-9 * extent) out.scope.S[k] = 0.0;
+  if (g.box && signedPermutationOf(axes, base.axes)) {
+    out.geom = GeomRef{};  // still the scope box
+    return;
+  }
+  const bool mirrored = axes.determinant() < 0;
+  std::vector<Polygon3> faces;
+  for (const Polygon3& f : g.faces) {
+    Polygon3 u;
+    for (const Vec3& p : f) {
+      const Vec3 l = inverse * p - lo;
+      Vec3 n;
+      for (int k = 0; k < 3; ++k) n[k] = out.scope.S[k] > 0 ? l[k] / out.scope.S[k] : 0.0;
+      u.push_back(n);
+    }
+    if (mirrored) std::reverse(u.begin(), u.end());  // counter-clockwise in the mirrored frame
+    faces.push_back(std::move(u));
+  }
+  // A one-face solid that lies in the new scope's XY plane is fgsg's polygon again.
+  bool inPlane = g.kind == GeomKind::Polyhedron && faces.size() == 1 && !(out.scope.S.z() > 0);
+  if (inPlane && !(out.scope.S.y() > 0)) inPlane = false;  // lying on the ground (XZ): a ground face
+  if (g.kind == GeomKind::Polygon || inPlane) {
+    Polygon3& p = faces[0];
+    for (Vec3& q : p) q.z() = 0.0;
+    if (newellNormal(p).z() < 0) std::reverse(p.begin(), p.end());
+    out.geom = arena.addPolygon(p);
+  } else {
+    out.geom = arena.addPolyhedron(faces);
+  }
+}
+
+Mat3 keepPolygonFrame(const Mat3& axes, const WorldGeometry& g) {
+  return g.kind == GeomKind::Polygon ? polygonFrame(axes, faceNormal(g.faces[0])) : axes;
+}
+
+}  // namespace
+
+bool lyingOnGround(const GeomRef& geom, const GeometryArena& arena) {
+  if (geom.kind != GeomKind::Polyhedron || geom.count != 1) return false;
+  const GeometryArena::Face& f = arena.face(geom, 0);
+  for (uint32_t i = 0; i < f.count; ++i)
+    if (arena.facePoints(f)[i].y() != 0.0) return false;
+  return f.count >= 3;
+}
+
+void asGroundFace(Part& part, const Vec3& xAxis, GeometryArena& arena) {
+  WorldGeometry g;
+  std::string error;
+  if (part.geom.kind != GeomKind::Polygon || !worldGeometry(part.scope, part.geom, arena, "", g, error)) return;
+  const Vec3 up = part.scope.Z();
+  Vec3 x = xAxis - xAxis.dot(up) * up;
+  if (!(x.norm() > 1e-12)) x = part.scope.X();
+  x.normalize();
+  Mat3 axes;
+  axes.col(0) = x;
+  axes.col(1) = up;
+  axes.col(2) = x.cross(up);
+  g.kind = GeomKind::Polyhedron;  // one face, counter-clockwise seen from above
+  fit(part.scope, axes, g, arena, part);
+}
+
+bool rotateScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const Vec3& degrees, Part& out,
+                 std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "rotateScope", g, error)) return false;
+  Scope turned = scope;
+  for (int k = 0; k < 3; ++k) rotateLocal(turned, k, degrees[k]);
+  fit(scope, keepPolygonFrame(turned.axes, g), g, arena, out);
+  return true;
+}
+
+bool alignScopeToAxes(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int axis, Part& out,
+                      std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "alignScopeToAxes", g, error)) return false;
+  Mat3 axes = Mat3::Identity();
+  if (axis >= 0 && axis < 3) axes = rotationOnto(scope.axes.col(axis), Vec3::Unit(axis)) * scope.axes;
+  fit(scope, keepPolygonFrame(axes, g), g, arena, out);
+  return true;
+}
+
+bool alignScopeToGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int upAxis, int face,
+                          int edge, Part& out, std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "alignScopeToGeometry", g, error)) return false;
+  const int faces = static_cast<int>(g.faces.size());
+  if (face < 0 && face != -1) face += faces;  // CityEngine's negative indices count from the end
+  int f = face;
+  if (face == -1) {
+    f = 0;
+    for (int k = 1; k < faces; ++k)
+      if (faceNormal(g.faces[k]).norm() > faceNormal(g.faces[f]).norm()) f = k;
+  }
+  if (f < 0 || f >= faces) {
+    error = "alignScopeToGeometry: no face " + std::to_string(face) + " (the geometry has " + std::to_string(faces) +
+            ")";
+    return false;
+  }
+  const Polygon3& poly = g.faces[f];
+  const int corners = static_cast<int>(poly.size());
+  int e = edge;
+  if (edge < -1) e = edge + corners;
+  if (edge == -1) {
+    e = 0;
+    for (int k = 1; k < corners; ++k)
+      if ((poly[(k + 1) % corners] - poly[k]).norm() > (poly[(e + 1) % corners] - poly[e]).norm()) e = k;
+  }
+  if (e < 0 || e >= corners) {
+    error = "alignScopeToGeometry: face " + std::to_string(f) + " has no edge " + std::to_string(edge) + " (it has " +
+            std::to_string(corners) + ")";
+    return false;
+  }
+  const Vec3 up = faceNormal(poly).normalized();
+  Vec3 x = poly[(e + 1) % corners] - poly[e];
+  x -= up * up.dot(x);
+  if (!(x.norm() > 0) || !up.allFinite()) {
+    error = "alignScopeToGeometry: face " + std::to_string(f) + " or its edge " + std::to_string(e) + " has no extent";
+    return false;
+  }
+  x.normalize();
+  Mat3 axes;
+  axes.col(0) = x;
+  if (upAxis == 1) {
+    axes.col(1) = up;
+    axes.col(2) = x.cross(up);
+  } else {
+    axes.col(2) = up;
+    axes.col(1) = up.cross(x);
+  }
+  fit(scope, keepPolygonFrame(axes, g), g, arena, out);
+  return true;
+}
+
+bool mirrorScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
+                 std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "mirrorScope", g, error)) return false;
+  Mat3 axes = scope.axes;
+  for (int k = 0; k < 3; ++k)
+    if (flip[k]) axes.col(k) = -axes.col(k);
+  fit(scope, axes, g, arena, out);  // the origin: the box's corner on the far side of each flipped axis
+  return true;
+}
+
+bool mirrorGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
+                    std::string& error) {
+  out = Part{scope, geom, false, 0};
+  if (geom.kind == GeomKind::Box || geom.kind == GeomKind::Edge) return true;  // symmetric in its scope
+  LocalGeometry local = loadGeometry(arena, geom);
+  const bool odd = (flip[0] != flip[1]) != flip[2];
+  for (Polygon3& f : local.faces) {
+    for (Vec3& u : f)
+      for (int k = 0; k < 3; ++k)
+        if (flip[k] && scope.S[k] > 0) u[k] = 1.0 - u[k];
+    if (odd) std::reverse(f.begin(), f.end());  // a mirror image turns faces inside out
+  }
+  if (geom.kind == GeomKind::Polygon && newellNormal(local.faces[0]).z() < 0)
+    std::reverse(local.faces[0].begin(), local.faces[0].end());
+  out.geom = storeGeometry(arena, local);
+  (void)error;
+  return true;
+}
+
+bool reverseNormals(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "reverseNormals", g, error)) return false;
+  for (Polygon3& f : g.faces) std::reverse(f.begin(), f.end());
+  if (g.kind == GeomKind::Polygon) {
+    // fgsg's polygon frame has Z along the normal: the frame turns over (half a turn about X).
+    Mat3 axes = scope.axes;
+    if (geom.kind == GeomKind::Box) axes = polygonFrame(axes, faceNormal(g.faces[0]));
+    axes.col(1) = -axes.col(1), axes.col(2) = -axes.col(2);
+    fit(scope, axes, g, arena, out);
+    return true;
+  }
+  g.box = false;
+  fit(scope, scope.axes, g, arena, out);
+  return true;
+}
+
+bool deleteHoles(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error) {
+  out = Part{scope, geom, false, 0};
+  if (geom.kind != GeomKind::Polygon) return true;  // boxes and solids have no holes
+  const Polygon3 pts(arena.polygon(geom), arena.polygon(geom) + geom.count);
+  const std::vector<Polygon3> rings = ringsOf(pts);
+  if (rings.size() > 1) out.geom = arena.addPolygon(rings[0]);
+  (void)error;
+  return true;
+}
+
+bool cleanupGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int what, double tolerance,
+                     Part& out, std::string& error) {
+  WorldGeometry g;
+  if (!worldGeometry(scope, geom, arena, "cleanupGeometry", g, error)) return false;
+  if (!(tolerance >= 0) || !std::isfinite(tolerance)) {
+    error = "cleanupGeometry: the tolerance must be a finite number >= 0";
+    return false;
+  }
+  const double eps = std::max(tolerance, 1e-9);
+  bool changed = false;
+  std::vector<Polygon3> kept;
+  for (Polygon3 f : g.faces) {
+    if (what & 1) {  // merge corners within the tolerance of the one before
+      Polygon3 merged;
+      for (const Vec3& p : f)
+        if (merged.empty() || (p - merged.back()).norm() > eps) merged.push_back(p);
+      while (merged.size() > 1 && (merged.front() - merged.back()).norm() <= eps) merged.pop_back();
+      changed |= merged.size() != f.size();
+      f = std::move(merged);
+    }
+    if (what & 2) {  // drop corners on a straight line between their neighbours
+      for (bool again = true; again && f.size() > 3;) {
+        again = false;
+        for (size_t i = 0; i < f.size() && f.size() > 3; ++i) {
+          const Vec3& a = f[(i + f.size() - 1) % f.size()];
+          const Vec3& b = f[i];
+          const Vec3& c = f[(i + 1) % f.size()];
+          const Vec3 ac = c - a;
+          if (ac.norm() > 0 && (b - a).cross(ac).norm() / ac.norm() <= eps && (b - a).dot(ac) > 0 &&
+              (c - b).dot(ac) > 0) {
+            f.erase(f.begin() + static_cast<long>(i));
+            again = changed = true;
+            break;
+          }
+        }
+      }
+    }
+    if ((what & 4) && (f.size() < 3 || faceNormal(f).norm() / 2 <= eps * eps)) {
+      changed = true;
+      continue;
+    }
+    kept.push_back(std::move(f));
+  }
+  if (!changed) {
+    out = Part{scope, geom, false, 0};
+    return true;
+  }
+  if (kept.empty()) {
+    error = "cleanupGeometry: no face is left";
+    return false;
+  }
+  g.faces = std::move(kept);
+  g.box = false;
+  fit(scope, scope.axes, g, arena, out);
+  return true;
+}
+
+}  // namespace fgsg::rt::cga

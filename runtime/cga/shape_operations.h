@@ -1,0 +1,106 @@
+// CityEngine's scope operations and footprint shaping (issue #44) on a shape's scope and
+// geometry, as pure functions like the rest of runtime/cga (errors come back as text).
+//
+// Scope operations keep the geometry where it is in the world and give the shape a new
+// scope fitted to it (the geometry's bounding box in the new axes), as CityEngine does.
+// A polygon's scope keeps fgsg's polygon frame: Z is the polygon's normal (CityEngine's y
+// on a lot; docs/cga.md), so an axis that a scope operation turns onto the normal is
+// renamed Z, the frame kept right-handed.
+#pragma once
+
+#include "runtime/cga/cga.h"
+#include "runtime/cga/skeleton_roof.h"
+
+#include <string>
+#include <vector>
+
+namespace fgsg::rt::cga {
+
+// rotateScope(ax, ay, az): the scope's axes turned about its own x, then y, then z (as R).
+bool rotateScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const Vec3& degrees, Part& out,
+                 std::string& error);
+
+// alignScopeToAxes() (axis 7): the world's axes; alignScopeToAxes(x|y|z) (axis 0..2): the
+// scope turned by the least rotation that lays that axis on the world's.
+bool alignScopeToAxes(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int axis, Part& out,
+                      std::string& error);
+
+// alignScopeToGeometry(upAxis, face, edge): the up axis (1 y, 2 z) along face `face`'s normal
+// (-1: the largest face; negative indices count from the end), x along its edge `edge`
+// (-1: the longest; negative indices count from the end), the third axis completing a
+// right-handed frame.
+bool alignScopeToGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int upAxis, int face,
+                          int edge, Part& out, std::string& error);
+
+// mirrorScope(x, y, z): each flipped axis reversed and the origin moved to the far side of
+// the scope; the geometry keeps its place (the scope is left-handed after an odd number
+// of flips). mirror(x, y, z): the geometry mirrored within its scope; faces keep facing out.
+bool mirrorScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
+                 std::string& error);
+bool mirrorGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
+                    std::string& error);
+
+// reverseNormals(): every face's corners in the opposite order. deleteHoles(): a polygon's
+// outline alone. resetGeometry(): the geometry becomes the scope box.
+// cleanupGeometry(what, tolerance): corners closer than `tolerance` merged (what & 1), corners
+// on a straight line dropped (what & 2), faces left without area dropped (what & 4).
+bool reverseNormals(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error);
+bool deleteHoles(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error);
+bool cleanupGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int what, double tolerance,
+                     Part& out, std::string& error);
+
+// CityEngine's initial shape in the `.cga` dialect is a ground face: a one-face
+// Polyhedron lying in its scope's XZ plane (y = 0, y its normal). The footprint
+// operations take it as they take fgsg's polygon and give their parts back as ground faces.
+bool lyingOnGround(const GeomRef& geom, const GeometryArena& arena);
+// The polygon part as a ground face: y its normal, x along `xAxis` laid onto its plane.
+void asGroundFace(Part& part, const Vec3& xAxis, GeometryArena& arena);
+
+// ---- footprints: a polygon (or a flat footprint box, or a ground face) seen in its own plane
+
+// The polygon's outline in metres in its scope's XY plane, counter-clockwise; no holes.
+struct FlatPolygon {
+  Scope scope;
+  std::vector<Vec2> ring;
+  bool groundFace = false;  // it was a ground face: its parts become ground faces (x along xAxis)
+  Vec3 xAxis = Vec3::UnitX();
+};
+bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const char* what, FlatPolygon& out,
+                 std::string& error);
+
+// Which selectors take each edge (the edge from corner i to i + 1): its outward normal
+// classified into the scope's quadrants (front: -Y, the side of a lot's first edge; back
+// +Y; left -X; right +X; a diagonal goes to front or back) and the world's (north -Z,
+// south +Z, east +X, west -X; a diagonal to north or south); the first edge is street.front.
+enum EdgeSelector : unsigned {
+  kEdgeFront = 1, kEdgeBack = 2, kEdgeLeft = 4, kEdgeRight = 8, kEdgeStreetFront = 16,
+  kEdgeNorth = 32, kEdgeSouth = 64, kEdgeEast = 128, kEdgeWest = 256,
+};
+std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon);
+// The selector bits a setback label takes ("front", "side", "streetFront", "all" ...; 0: none).
+unsigned edgeSelectorMask(const std::string& label);
+
+// setback: edge i set back by distance[i] (0: not set back) and given to group[i] (-1: none).
+// Each set-back edge's band (the edge, the offset edge, and the lines between their ends
+// where neighbouring bands meet) is one piece; with merged[group] the bands of consecutive
+// edges of a group are one piece (all of them around the polygon: a ring with the
+// remainder as its hole). `remainder` gets the polygon left inside (one piece). Every
+// piece keeps the polygon's axes, its scope fitted to it. Fails when a distance makes an
+// edge vanish (the band of a neighbour swallows it) or the remainder cross itself.
+bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, const std::vector<int>& group,
+             const std::vector<bool>& merged, GeometryArena& arena, std::vector<Part>& pieces,
+             std::vector<int>& pieceGroup, std::vector<Part>& remainder, std::string& error);
+
+// innerRectangle(scope | edge): the largest rectangle inside the polygon with sides along
+// the scope's x and y (alongEdge: along the edge that gives the largest), its scope fitted
+// to it (x along its sides). Exact where the polygon's sides run along the rectangle's
+// axes; otherwise found on a grid of 1/256 of the polygon's extent.
+bool innerRectangle(const FlatPolygon& polygon, bool alongEdge, GeometryArena& arena, Part& out, std::string& error);
+
+// The primitives: the geometry replaced, in the scope (CityEngine's primitive* operations).
+// sizes < 0: fit the scope (a zero size replaced by the mean of the others, as i() does);
+// else centred on the scope's xz, standing on y = 0.
+bool primitive(const Scope& scope, const std::string& kind, const std::vector<double>& args, GeometryArena& arena,
+               Part& out, std::string& error);
+
+}  // namespace fgsg::rt::cga

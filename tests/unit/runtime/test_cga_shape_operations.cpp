@@ -1,0 +1,321 @@
+// CityEngine's scope operations and footprint shaping (issue #44; runtime/cga/
+// shape_operations.h), checked against areas, sizes and positions computed by hand.
+#include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/shape_operations.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace fgsg::rt;
+using namespace fgsg::rt::cga;
+
+namespace {
+
+constexpr double kTol = 1e-9;
+
+bool near(const Vec3& a, const Vec3& b, double tol = kTol) { return (a - b).norm() <= tol; }
+
+Polygon3 worldPolygon(const Part& p, const GeometryArena& arena) {
+  Polygon3 world;
+  const Vec3* pts = arena.polygon(p.geom);
+  for (uint32_t i = 0; i < p.geom.count; ++i) world.push_back(p.scope.toWorld(p.scope.S.cwiseProduct(pts[i])));
+  return world;
+}
+
+// A polygon part's area in square metres (holes joined by bridges count off).
+double area(const Part& p, const GeometryArena& arena) { return 0.5 * newellNormal(worldPolygon(p, arena)).norm(); }
+
+double volume(const Part& p, const GeometryArena& arena) {
+  if (p.geom.kind == GeomKind::Box) return p.scope.S.prod();
+  double v = 0.0;
+  for (uint32_t i = 0; i < p.geom.count; ++i) {
+    const GeometryArena::Face& f = arena.face(p.geom, i);
+    Polygon3 world;
+    for (uint32_t k = 0; k < f.count; ++k) world.push_back(p.scope.toWorld(p.scope.S.cwiseProduct(arena.facePoints(f)[k])));
+    v += world[0].dot(0.5 * newellNormal(world)) / 3.0;
+  }
+  return v;
+}
+
+// A lot as Footprint makes it from (x, z) corners.
+Part lot(GeometryArena& arena, const std::vector<Vec2>& corners, const std::vector<std::vector<Vec2>>& holes = {}) {
+  Part part;
+  std::string error;
+  const bool ok = footprint(Scope{}, corners, holes, arena, part, error);
+  INFO(error);
+  REQUIRE(ok);
+  return part;
+}
+
+FlatPolygon flat(const Part& p, GeometryArena& arena) {
+  FlatPolygon f;
+  std::string error;
+  REQUIRE(flatPolygon(p.scope, p.geom, arena, "test", f, error));
+  return f;
+}
+
+const std::vector<Vec2> kRect20x10{{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+
+// Runs setback with one distance per edge and every set-back edge in group 0.
+void setbackAll(const FlatPolygon& f, const std::vector<double>& d, bool merged, GeometryArena& arena,
+                std::vector<Part>& pieces, std::vector<Part>& rest) {
+  std::vector<int> group(d.size());
+  for (size_t i = 0; i < d.size(); ++i) group[i] = d[i] > 0 ? 0 : -1;
+  std::vector<int> pieceGroup;
+  std::string error;
+  REQUIRE(setback(f, d, group, {merged}, arena, pieces, pieceGroup, rest, error));
+}
+
+}  // namespace
+
+TEST_CASE("setback(3) on every edge of a 20 x 10 lot: trapezoid bands and a 14 x 4 remainder") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  REQUIRE(f.ring.size() == 4);
+  std::vector<Part> pieces, rest;
+  setbackAll(f, {3, 3, 3, 3}, false, arena, pieces, rest);
+  REQUIRE(pieces.size() == 4);
+  double sum = 0;
+  std::vector<double> areas;
+  for (const Part& p : pieces) {
+    CHECK(p.geom.count == 4);
+    areas.push_back(area(p, arena));
+    sum += areas.back();
+  }
+  std::sort(areas.begin(), areas.end());
+  // Long sides (20 + 14) / 2 * 3 = 51, short sides (10 + 4) / 2 * 3 = 21.
+  CHECK(areas[0] == Approx(21).margin(kTol));
+  CHECK(areas[1] == Approx(21).margin(kTol));
+  CHECK(areas[2] == Approx(51).margin(kTol));
+  CHECK(areas[3] == Approx(51).margin(kTol));
+  CHECK(sum == Approx(144).margin(kTol));
+  REQUIRE(rest.size() == 1);
+  CHECK(area(rest[0], arena) == Approx(56).margin(kTol));
+  // The remainder's scope is fitted to it: 14 x 4, 3 m in from the lot's corner (x 3..17, z -7..-3).
+  CHECK(near(rest[0].scope.S, Vec3(14, 4, 0)));
+  Vec3 lo = Vec3::Constant(1e9), hi = -lo;
+  for (const Vec3& p : worldPolygon(rest[0], arena)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  CHECK(near(lo, Vec3(3, 0, 3)));
+  CHECK(near(hi, Vec3(17, 0, 7)));
+
+  // Merged (`all = A`): one ring around the remainder.
+  setbackAll(f, {3, 3, 3, 3}, true, arena, pieces, rest);
+  REQUIRE(pieces.size() == 1);
+  CHECK(area(pieces[0], arena) == Approx(144).margin(kTol));
+  CHECK(ringsOf(Polygon3(arena.polygon(pieces[0].geom), arena.polygon(pieces[0].geom) + pieces[0].geom.count)).size() ==
+        2);
+}
+
+TEST_CASE("setback selectors classify edges by the scope's quadrants; the first edge is street.front") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  const std::vector<unsigned> c = edgeSelectors(f);
+  REQUIRE(c.size() == 4);
+  int front = -1, back = -1, left = -1, right = -1;
+  for (int i = 0; i < 4; ++i) {
+    if (c[i] & kEdgeFront) front = i;
+    if (c[i] & kEdgeBack) back = i;
+    if (c[i] & kEdgeLeft) left = i;
+    if (c[i] & kEdgeRight) right = i;
+  }
+  // Footprint's scope has y running north (-z): the front edge is the south one (z = 10).
+  CHECK(front >= 0);
+  CHECK((c[front] & kEdgeStreetFront) != 0);
+  CHECK((c[front] & kEdgeSouth) != 0);
+  CHECK((c[back] & kEdgeNorth) != 0);
+  CHECK((c[left] & kEdgeWest) != 0);
+  CHECK((c[right] & kEdgeEast) != 0);
+  CHECK(edgeSelectorMask("side") == (kEdgeLeft | kEdgeRight));
+  CHECK(edgeSelectorMask("all=") == ~0u);
+
+  // setback(2) on the front edge alone: a 20 x 2 band and a 20 x 8 remainder.
+  std::vector<double> d(4, 0.0);
+  d[front] = 2;
+  std::vector<Part> pieces, rest;
+  setbackAll(f, d, false, arena, pieces, rest);
+  REQUIRE(pieces.size() == 1);
+  CHECK(area(pieces[0], arena) == Approx(40).margin(kTol));
+  CHECK(near(pieces[0].scope.S, Vec3(20, 2, 0)));
+  REQUIRE(rest.size() == 1);
+  CHECK(area(rest[0], arena) == Approx(160).margin(kTol));
+}
+
+TEST_CASE("shapeL, shapeU and shapeO are setbacks of the front, side and back wings, merged") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  const std::vector<unsigned> c = edgeSelectors(f);
+  auto wings = [&](double front, double right, double back, double left) {
+    std::vector<double> d;
+    for (unsigned k : c)
+      d.push_back(k & kEdgeFront ? front : k & kEdgeRight ? right : k & kEdgeBack ? back : left);
+    return d;
+  };
+  std::vector<Part> pieces, rest;
+  // shapeL(4, 5): 20 x 4 along the front, 5 x 6 along the left: 110 m2 in one L of 6 corners.
+  setbackAll(f, wings(4, 0, 0, 5), true, arena, pieces, rest);
+  REQUIRE(pieces.size() == 1);
+  CHECK(pieces[0].geom.count == 6);
+  CHECK(area(pieces[0], arena) == Approx(110).margin(kTol));
+  CHECK(area(rest[0], arena) == Approx(90).margin(kTol));  // 15 x 6
+  // shapeU(2, 3, 4): 200 - 13 x 8 = 96 in 8 corners.
+  setbackAll(f, wings(2, 3, 0, 4), true, arena, pieces, rest);
+  REQUIRE(pieces.size() == 1);
+  CHECK(pieces[0].geom.count == 8);
+  CHECK(area(pieces[0], arena) == Approx(96).margin(kTol));
+  CHECK(area(rest[0], arena) == Approx(104).margin(kTol));
+  // shapeO(1, 2, 3, 4): a ring around 14 x 6.
+  setbackAll(f, wings(1, 2, 3, 4), true, arena, pieces, rest);
+  REQUIRE(pieces.size() == 1);
+  CHECK(area(pieces[0], arena) == Approx(116).margin(kTol));
+  CHECK(near(rest[0].scope.S, Vec3(14, 6, 0)));
+}
+
+TEST_CASE("setback refuses distances that make an edge vanish") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  std::vector<Part> pieces, rest;
+  std::vector<int> pieceGroup;
+  std::string error;
+  CHECK_FALSE(setback(f, {6, 6, 6, 6}, {0, 0, 0, 0}, {false}, arena, pieces, pieceGroup, rest, error));
+  CHECK(error.find("vanish") != std::string::npos);
+  CHECK_FALSE(setback(f, {-1, 0, 0, 0}, {0, 0, 0, 0}, {false}, arena, pieces, pieceGroup, rest, error));
+}
+
+TEST_CASE("innerRectangle: the largest rectangle along the scope or along an edge") {
+  GeometryArena arena;
+  Part out;
+  std::string error;
+  // An L of 20 x 9 and 9 x 18: the 20 x 9 wing is the larger (180 > 162).
+  REQUIRE(innerRectangle(flat(lot(arena, {{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}), arena), false, arena,
+                         out, error));
+  CHECK(area(out, arena) == Approx(180).margin(kTol));
+  CHECK(out.geom.count == 4);
+  // A right triangle with legs of 10: a 5 x 5 square in its right angle.
+  REQUIRE(innerRectangle(flat(lot(arena, {{0, 0}, {10, 0}, {0, 10}}), arena), false, arena, out, error));
+  CHECK(area(out, arena) == Approx(25).margin(1e-6));
+  // A square turned by 45 degrees (side sqrt(50)): 25 along the scope, all of it (50) along an edge.
+  const FlatPolygon diamond = flat(lot(arena, {{5, 0}, {10, 5}, {5, 10}, {0, 5}}), arena);
+  REQUIRE(innerRectangle(diamond, false, arena, out, error));
+  CHECK(area(out, arena) == Approx(25).margin(1e-6));
+  REQUIRE(innerRectangle(diamond, true, arena, out, error));
+  CHECK(area(out, arena) == Approx(50).margin(1e-6));
+  CHECK(out.scope.S.x() == Approx(std::sqrt(50.0)).margin(1e-6));
+}
+
+TEST_CASE("rotateScope keeps the geometry and fits the scope around it") {
+  GeometryArena arena;
+  Scope s;
+  s.S = Vec3(4, 2, 1);
+  Part out;
+  std::string error;
+  // A quarter turn about y: still the box, now 1 x 2 x 4 with its origin at world (0, 0, 1).
+  REQUIRE(rotateScope(s, GeomRef{}, arena, Vec3(0, 90, 0), out, error));
+  CHECK(out.geom.kind == GeomKind::Box);
+  CHECK(near(out.scope.S, Vec3(1, 2, 4)));
+  CHECK(near(out.scope.P, Vec3(0, 0, 1)));
+  // 45 degrees: a 2 x 1 x 2 box spans 2 sqrt(2) across both turned axes; its volume stays 4.
+  s.S = Vec3(2, 1, 2);
+  REQUIRE(rotateScope(s, GeomRef{}, arena, Vec3(0, 45, 0), out, error));
+  CHECK(out.geom.kind == GeomKind::Polyhedron);
+  CHECK(near(out.scope.S, Vec3(2 * std::sqrt(2.0), 1, 2 * std::sqrt(2.0))));
+  CHECK(volume(out, arena) == Approx(4).margin(kTol));
+  // alignScopeToAxes() turns it back: the world's axes, 2 x 1 x 2 at the origin.
+  Part back;
+  REQUIRE(alignScopeToAxes(out.scope, out.geom, arena, 7, back, error));
+  CHECK(near(back.scope.axes.col(0), Vec3(1, 0, 0)));
+  CHECK(near(back.scope.S, Vec3(2, 1, 2)));
+  CHECK(near(back.scope.P, Vec3(0, 0, 0)));
+  CHECK(volume(back, arena) == Approx(4).margin(kTol));
+}
+
+TEST_CASE("alignScopeToGeometry lays x along the chosen edge; a polygon keeps z as its normal") {
+  GeometryArena arena;
+  // A 10 x 5 rectangle turned by 30 degrees, its long edge first.
+  const double c = std::cos(3.14159265358979323846 / 6), s = std::sin(3.14159265358979323846 / 6);
+  const Part rect = lot(arena, {{0, 0}, {10 * c, 10 * s}, {10 * c - 5 * s, 10 * s + 5 * c}, {-5 * s, 5 * c}});
+  Part out;
+  std::string error;
+  for (int up : {1, 2}) {
+    REQUIRE(alignScopeToGeometry(rect.scope, rect.geom, arena, up, -1, -1, out, error));
+    INFO("S " << out.scope.S.transpose() << " X " << out.scope.X().transpose() << " Z " << out.scope.Z().transpose());
+    CHECK(near(out.scope.S, Vec3(10, 5, 0), 1e-9));
+    // Along the long edge, in whichever direction the stored ring runs it.
+    CHECK(std::abs(out.scope.X().dot(Vec3(c, 0, s))) == Approx(1).margin(kTol));
+    CHECK(near(out.scope.Z(), Vec3(0, 1, 0)));
+    CHECK(area(out, arena) == Approx(50).margin(kTol));
+  }
+  // Its second edge (5 m): x along it, the scope 5 x 10.
+  REQUIRE(alignScopeToGeometry(rect.scope, rect.geom, arena, 2, 0, 1, out, error));
+  CHECK(near(out.scope.S, Vec3(5, 10, 0), 1e-9));
+  CHECK_FALSE(alignScopeToGeometry(rect.scope, rect.geom, arena, 2, 3, 0, out, error));  // one face only
+}
+
+TEST_CASE("mirrorScope flips axes around the geometry; mirror flips the geometry in its scope") {
+  GeometryArena arena;
+  Scope s;
+  s.S = Vec3(4, 2, 1);
+  Part out;
+  std::string error;
+  const bool flipX[3] = {true, false, false};
+  REQUIRE(mirrorScope(s, GeomRef{}, arena, flipX, out, error));
+  CHECK(out.geom.kind == GeomKind::Box);
+  CHECK(near(out.scope.P, Vec3(4, 0, 0)));
+  CHECK(near(out.scope.X(), Vec3(-1, 0, 0)));
+  CHECK(near(out.scope.S, Vec3(4, 2, 1)));
+  // A right triangle (0,0) (4,0) (0,3) mirrored across its scope's x: the right angle moves to x = 4.
+  const Part tri = lot(arena, {{0, 0}, {4, 0}, {0, 3}});
+  REQUIRE(mirrorGeometry(tri.scope, tri.geom, arena, flipX, out, error));
+  CHECK(area(out, arena) == Approx(6).margin(kTol));
+  CHECK(newellNormal(Polygon3(arena.polygon(out.geom), arena.polygon(out.geom) + 3)).z() > 0);
+  bool rightAngleAt4 = false;
+  for (const Vec3& p : worldPolygon(out, arena)) rightAngleAt4 |= near(p, Vec3(4, 0, 0)) || near(p, Vec3(4, 0, 3));
+  CHECK(rightAngleAt4);
+}
+
+TEST_CASE("primitives fill the scope or stand centred on it with the given sizes") {
+  GeometryArena arena;
+  Scope s;
+  s.S = Vec3(4, 3, 4);
+  Part out;
+  std::string error;
+  // An octagon of radius 1, 2 high: 8 sides, top and bottom; volume 2 * 2 sqrt(2).
+  REQUIRE(primitive(s, "PrimitiveCylinder", {8, 1, 2}, arena, out, error));
+  CHECK(out.geom.count == 10);
+  CHECK(near(out.scope.S, Vec3(2, 2, 2)));
+  CHECK(near(out.scope.P, Vec3(1, 0, 1)));
+  CHECK(volume(out, arena) == Approx(4 * std::sqrt(2.0)).margin(1e-9));
+  REQUIRE(primitive(s, "PrimitiveSphere", {8, 16, 1}, arena, out, error));
+  CHECK(out.geom.count == 128);
+  CHECK(volume(out, arena) > 0);
+  REQUIRE(primitive(s, "PrimitiveQuad", {2, 3}, arena, out, error));
+  CHECK(area(out, arena) == Approx(6).margin(kTol));
+  CHECK(out.geom.count == 4);
+  REQUIRE(primitive(s, "PrimitiveDisk", {4, 1}, arena, out, error));
+  CHECK(area(out, arena) == Approx(2).margin(kTol));
+  Scope flatScope;
+  flatScope.S = Vec3(4, 0, 2);
+  REQUIRE(primitive(flatScope, "PrimitiveCube", {}, arena, out, error));
+  CHECK(near(out.scope.S, Vec3(4, 3, 2)));  // the zero size: the mean of 4 and 2
+  CHECK_FALSE(primitive(s, "PrimitiveCylinder", {2}, arena, out, error));
+}
+
+TEST_CASE("reverseNormals, deleteHoles and cleanupGeometry") {
+  GeometryArena arena;
+  Part out;
+  std::string error;
+  const Part tri = lot(arena, {{0, 0}, {4, 0}, {0, 3}});
+  REQUIRE(reverseNormals(tri.scope, tri.geom, arena, out, error));
+  CHECK(area(out, arena) == Approx(6).margin(kTol));
+  CHECK(near(out.scope.Z(), Vec3(0, -1, 0)));
+  const Part court = lot(arena, {{0, 0}, {30, 0}, {30, 20}, {0, 20}}, {{{10, 5}, {10, 15}, {20, 15}, {20, 5}}});
+  CHECK(area(court, arena) == Approx(500).margin(kTol));
+  REQUIRE(deleteHoles(court.scope, court.geom, arena, out, error));
+  CHECK(area(out, arena) == Approx(600).margin(kTol));
+  CHECK(out.geom.count == 4);
+  // A corner on a straight edge and one 1 mm from its neighbour: both go at a 1 cm tolerance.
+  const Part messy = lot(arena, {{0, 0}, {5, 0}, {10, 0}, {10, 10}, {9.999, 10}, {0, 10}});
+  REQUIRE(cleanupGeometry(messy.scope, messy.geom, arena, 7, 0.01, out, error));
+  CHECK(out.geom.count == 4);
+  CHECK(area(out, arena) == Approx(100).margin(1e-2));
+}
