@@ -12,6 +12,29 @@
 
 namespace fgsg::frontend::sema_detail {
 
+namespace {
+
+// Why field `name` cannot answer `member` (docs/language.md, Fields), or null when it can
+// or its declaration did not check out (already reported). Curvatures come only from a
+// `curvature` field, intensity and rgb only from an `image(...)` one.
+const char* memberNotAnswered(const std::vector<FieldInfo>& specs, const std::string& name,
+                              const std::string& member) {
+  for (const FieldInfo& f : specs) {
+    if (f.name != name) continue;
+    const bool curvature = member == "mincurv" || member == "maxcurv" || member == "meancurv" ||
+                           member == "gausscurv";
+    if (curvature && f.source != "curvature")
+      return "curvatures are answered by a curvature field only (declare one: `field K = curvature;`)";
+    if ((member == "intensity" || member == "rgb") && f.source != "image")
+      return "only a field made from a picture (`field P = image(\"picture.png\");`) has an intensity and "
+             "colours";
+    return nullptr;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
 void Analyzer::expect(const Expr& e, const Where& w, ValueType want, const std::string& what) {
   ValueType t = typeOf(e, w, true);
   if (t != ValueType::Unknown && t != want)
@@ -303,6 +326,9 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
         return fail("unknown field query '" + e.object + "." + e.text +
                     "' (vector1 vector2 value1 value2 length1 Xangle1 div curl gradient "
                     "mincurv maxcurv meancurv gausscurv ...)");
+      // Some members only one source answers (R016 at run time): a check-time error instead.
+      if (const char* why = memberNotAnswered(res_.fieldSpecs, e.object, e.text))
+        return fail("'" + e.object + "." + e.text + "': " + why);
       return record(e, vec ? ValueType::Vec3 : ValueType::Num, report);
     }
   return fail("'" + e.object + "' is not a field, a texture context, Scope, Shape or Feature");

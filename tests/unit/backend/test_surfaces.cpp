@@ -108,16 +108,39 @@ TEST_CASE("Surface problems are errors at the declaration", "[surface][errors]")
   CHECK(missing.messages[0].code == "R015");
   CHECK(missing.messages[0].line == 1);
   CHECK(missing.messages[0].message.find("no-such-mesh.off") != std::string::npos);
-  auto notCurvature = deriveText(R"(
+  // A curvature query of a designed field is caught before running (E025 at 4:12), not
+  // at run time (R016); tests/cases/error_field_member_source has the other members.
+  CHECK_THROWS_WITH(compileText(R"(
 surface sphere(1);
 field F = design tensor { regular at (1, 0, 0); };
 Axiom ~> A(F.mincurv)
 A(x) ~> I("cube")
-)");
-  CHECK_FALSE(notCurvature.ok);
-  REQUIRE(notCurvature.messages.size() == 1);
-  CHECK(notCurvature.messages[0].code == "R016");
-  CHECK(notCurvature.messages[0].line == 4);
+)"),
+                    Catch::Contains("test.fgsg:4:12: error[E025]: 'F.mincurv': curvatures are answered by a "
+                                    "curvature field only"));
+}
+
+TEST_CASE("Design element points are in the surface's units after --surface-size", "[surface][field]") {
+  // plane(2, 2) scaled to 4 spans -2..2. A source (node) at x = 1 in the scaled units
+  // makes the field at x = 1.5 point along +X (Xangle 0); were the point read in the
+  // mesh file's units it would sit at x = 2 and the field would point along -X (180).
+  rt::DeriveOptions opt;
+  opt.surfaceSize = 4;
+  opt.hasStart = true;
+  opt.start[0] = 1.5;
+  opt.start[1] = 0;
+  opt.start[2] = 0;
+  auto res = deriveText(R"(
+surface plane(2, 2);
+field V = design vector { node at (1, 0, 0) decay 0.5; };
+Axiom ~> A(V.Xangle1)
+A(a) ~> I("cube")
+)",
+                        opt);
+  REQUIRE(res.ok);
+  const auto& inst = res.instances.instances.at(0);
+  CHECK(unitPoint(inst, 0, 0, 0).x() == Approx(1.5).margin(1e-9));
+  CHECK(res.instances.params[inst.firstParam] == Approx(0).margin(1e-6));
 }
 
 TEST_CASE("Geodesic centre distance measures along the surface", "[surface][collision]") {
