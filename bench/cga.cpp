@@ -6,7 +6,13 @@
 //    "assemble_s":..,"lots_per_s":..,"triangles_per_s":..}
 // (best of `reps` runs; the JIT's compile excluded). The issue's target: 10 000 lots per
 // second on one core, with geometry.
-// Usage: bench_cga [--quick]
+//
+// --pair [A.cga B.fgsg]: a CityEngine rule file and the same grammar in the fgsg dialect
+// (default bench/cga_pair/building.cga and building.fgsg), each on the same 200 lots, one
+// line per grammar and engine, then per engine
+//   {"bench":"cga_pair","engine":E,"cga_lots_per_s":..,"fgsg_lots_per_s":..,"ratio":..}
+// (ratio: the .cga file's speed over the .fgsg file's; issue #43's target is 1).
+// Usage: bench_cga [--quick] [--pair [A.cga B.fgsg]]
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
 #include "backend/native/object_cache.h"
@@ -22,12 +28,16 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <string>
+#include <vector>
 
 using namespace fgsg;
 
 namespace {
 
-void run(const char* engine, size_t lots, int reps, const std::function<rt::DeriveResult()>& derive) {
+// Returns lots per second (derive and assemble).
+double run(const char* engine, size_t lots, int reps, const std::function<rt::DeriveResult()>& derive,
+           const std::string& grammar = "") {
   double bestDerive = 1e30, bestAssemble = 1e30;
   size_t instances = 0, triangles = 0;
   for (int i = 0; i < reps; ++i) {
@@ -53,16 +63,64 @@ void run(const char* engine, size_t lots, int reps, const std::function<rt::Deri
     triangles = mesh.triangleCount();
   }
   const double total = bestDerive + bestAssemble;
-  std::printf("{\"bench\":\"cga\",\"engine\":\"%s\",\"lots\":%zu,\"instances\":%zu,\"triangles\":%zu,"
+  const std::string named = grammar.empty() ? "" : ",\"grammar\":\"" + grammar + "\"";
+  std::printf("{\"bench\":\"cga\"%s,\"engine\":\"%s\",\"lots\":%zu,\"instances\":%zu,\"triangles\":%zu,"
               "\"derive_s\":%.6f,\"assemble_s\":%.6f,\"lots_per_s\":%.0f,\"triangles_per_s\":%.0f}\n",
-              engine, lots, instances, triangles, bestDerive, bestAssemble, lots / total, triangles / total);
+              named.c_str(), engine, lots, instances, triangles, bestDerive, bestAssemble, lots / total,
+              triangles / total);
   std::fflush(stdout);
+  return lots / total;
+}
+
+std::string readSource(const std::string& path) {
+  std::string source, error;
+  if (!rt::io::readInputFile(path, "grammar", source, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  }
+  return source;
+}
+
+// The two dialects side by side: lots/s of each grammar with each engine, and their ratio.
+void runPair(const std::string& cgaPath, const std::string& fgsgPath, const rt::DeriveOptions& options, int reps) {
+  rt::AssetLibrary assets;
+  const std::string paths[2] = {cgaPath, fgsgPath};
+  double speed[2][2] = {};  // [grammar][interp, jit]
+  backend::jit::Jit jit;
+  for (int g = 0; g < 2; ++g) {
+    const ir::Module m = bench::compileGrammarFile(paths[g]);
+    const std::string source = readSource(paths[g]);
+    speed[g][0] = run("interp", options.lots.size(), reps, [&] { return backend::interpret(m, options, assets); },
+                      paths[g]);
+    const auto code = jit.compileProgram(m, source, backend::native::ObjectCache(std::string()),
+                                         backend::native::Tiering::Optimized);
+    speed[g][1] = run("jit", options.lots.size(), reps,
+                      [&] { return backend::deriveCompiled(m, code.program(), options, assets); }, paths[g]);
+  }
+  for (int e = 0; e < 2; ++e)
+    std::printf("{\"bench\":\"cga_pair\",\"engine\":\"%s\",\"cga_lots_per_s\":%.0f,\"fgsg_lots_per_s\":%.0f,"
+                "\"ratio\":%.3f}\n",
+                e == 0 ? "interp" : "jit", speed[0][e], speed[1][e], speed[0][e] / speed[1][e]);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  bool quick = false, pair = false;
+  std::vector<std::string> pairFiles;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[i], "--pair") == 0) pair = true;
+    else if (pair) pairFiles.push_back(argv[i]);
+    else {
+      std::fprintf(stderr, "usage: bench_cga [--quick] [--pair [A.cga B.fgsg]]\n");
+      return 2;
+    }
+  }
+  if (pair && pairFiles.size() != 0 && pairFiles.size() != 2) {
+    std::fprintf(stderr, "bench_cga --pair takes a .cga file and its .fgsg twin, or neither\n");
+    return 2;
+  }
   tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
   rt::DeriveOptions options;
   size_t skipped = 0;
@@ -72,6 +130,12 @@ int main(int argc, char** argv) {
   if (!rt::readGeoJsonLots(options.lotsName, options.lots, skipped, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
+  }
+  if (pair) {
+    if (pairFiles.empty())
+      pairFiles = {FGSG_SOURCE_DIR "/bench/cga_pair/building.cga", FGSG_SOURCE_DIR "/bench/cga_pair/building.fgsg"};
+    runPair(pairFiles[0], pairFiles[1], options, quick ? 1 : 5);
+    return 0;
   }
   const std::string path = FGSG_SOURCE_DIR "/examples/city.fgsg";
   const ir::Module m = bench::compileGrammarFile(path);
