@@ -13,6 +13,7 @@
 #include "runtime/synthesis/continuous/example_file.h"
 #include "runtime/synthesis/synthesis.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <functional>
@@ -227,6 +228,23 @@ int synthCommand(const Args& args) {
   if (auto v = checkModel(r.labels, ex, spec); !v.empty()) {
     std::fprintf(stderr, "%s: error[E741]: internal error: output fails the checker: %s\n", example.c_str(),
                  v[0].what.c_str());
+    return 1;
+  }
+
+  // Never a silent empty file (#46): a model that is empty space in every cell (every block
+  // failed, or the mask or borders left room for nothing else) is an error.
+  const auto& cells = r.labels.data();
+  if (r.ok && ex.emptyLabel >= 0 && !cells.empty() &&
+      std::all_of(cells.begin(), cells.end(), [&](int32_t l) { return l == ex.emptyLabel; })) {
+    std::fprintf(stderr,
+                 "%s: error[E746]: the synthesized model is empty space in every cell (label %s), nothing "
+                 "was written: %s; try another --seed, more --retries or --attempts, a larger --size, or "
+                 "fewer constraints (--mask, --border, --closed, --symmetry)\n",
+                 example.c_str(), ex.labels[size_t(ex.emptyLabel)].name.c_str(),
+                 r.stats.blocksFailed > 0 ? (std::to_string(r.stats.blocksFailed) + " of " +
+                                             std::to_string(r.stats.blocks) + " blocks found no consistent labels")
+                                                .c_str()
+                                          : "the constraints allow nothing but empty space here");
     return 1;
   }
 

@@ -44,6 +44,32 @@ bool parseFixedWidth(const std::string& s, FixedWidth& f) {
   return n >= 1 && n <= 1000;
 }
 
+// Why a synthesis that succeeded holds no solid, and what to try: a --fixed-width wider
+// than the box along its direction can never fit (planes a.x = k, k whole in lattice units:
+// the box spans sum |a_i| size_i / spacing of them); otherwise the constraints together
+// left only empty space.
+std::string whyEmpty(const ContinuousOptions& o) {
+  for (const FixedWidth& f : o.fixedWidth) {
+    double span = 0;
+    for (int i = 0; i < 3; ++i)
+      span += double(f.normal[i] < 0 ? -f.normal[i] : f.normal[i]) * o.size[size_t(i)] / o.spacing;
+    if (f.planes > span + 1e-9) {
+      const long long a = f.normal[0], b = f.normal[1], c = f.normal[2];
+      char buf[400];
+      std::snprintf(buf, sizeof buf,
+                    "--fixed-width %lld,%lld,%lld:%d makes every object %d plane spacings across along "
+                    "(%lld,%lld,%lld), but the box spans only %g of them that way%s: enlarge --size or give "
+                    "a smaller width",
+                    a, b, c, f.planes, f.planes, a, b, c, span,
+                    a == 0 && c == 0 ? " (it is the box's height, --size's Z)" : "");
+      return buf;
+    }
+  }
+  return "every vertex of the box took empty space: the constraints (--fixed-width, --mask, --connect, "
+         "standing on the ground, --fill) leave no solid the example allows here; try a larger --size, "
+         "another --seed, a higher --fill, --floating or fewer constraints";
+}
+
 }  // namespace
 
 const char* continuousSynthUsage() { return kUsage; }
@@ -175,6 +201,11 @@ int continuousSynthCommand(const Args& args) {
                  s.compileSeconds, s.assignSeconds, s.surfaceSeconds);
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: %s\n", example.c_str(), r.error.c_str());
+    return 1;
+  }
+  if (s.parts == 0) {  // never a silent empty file (#46)
+    std::fprintf(stderr, "%s: error[E752]: the synthesized model is empty (0 parts), nothing was written: %s\n",
+                 example.c_str(), whyEmpty(o).c_str());
     return 1;
   }
   if (s.blocksFailed > 0)

@@ -115,7 +115,11 @@ std::vector<Violation> checkModel(const LabelGrid& m, const Example& ex, const C
           const int p[3] = {x, y, z};
           if (p[a] != (f % 2 == 0 ? 0 : s[a] - 1)) continue;
           const int32_t l = m.at(x, y, z);
-          if (!only.empty() && std::find(only.begin(), only.end(), l) == only.end())
+          const size_t region = spec.weights && !spec.weights->region.empty()
+                                    ? spec.weights->region[size_t(m.index(x, y, z))]
+                                    : 0;
+          const bool bindsOnly = !(spec.weights && backgroundOnlyRegion(*spec.weights, region, ex));
+          if (bindsOnly && !only.empty() && std::find(only.begin(), only.end(), l) == only.end())
             add(x, y, z, "label " + name(l) + " at " + cellStr(x, y, z) + " may not lie on face " + faceName(f));
           if (fixed >= 0 && l != fixed)
             add(x, y, z, "cell " + cellStr(x, y, z) + " on face " + faceName(f) + " must be " + name(fixed) + ", is " + name(l));

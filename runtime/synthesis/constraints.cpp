@@ -73,6 +73,13 @@ std::vector<int32_t> symmetryLabelMap(const SymmetrySpec& s, const Example& ex) 
   }
 }
 
+bool backgroundOnlyRegion(const PositionWeights& w, size_t region, const Example& ex) {
+  if (w.empty() || region >= w.factor.size()) return false;
+  for (int l = 0; l < ex.labelCount(); ++l)
+    if (w.factor[region][size_t(l)] > 0 && !ex.labels[size_t(l)].background) return false;
+  return true;
+}
+
 PositionWeights maskFromCells(const std::vector<uint8_t>& inside, const GridSize& size,
                               const Example& ex, double insideBoost) {
   PositionWeights w;

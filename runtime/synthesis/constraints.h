@@ -41,6 +41,12 @@ struct PositionWeights {
   }
 };
 
+// Whether the cells of `region` may hold background labels only (a mask's outside, where
+// no object stands). A face's `only` labels (--closed) do not bind there: no object
+// crosses the face where none may stand, and the example's face labels need not be
+// background (the city's streets along its sides), which would leave such cells no label.
+bool backgroundOnlyRegion(const PositionWeights& w, size_t region, const Example& ex);
+
 // A large-scale mask from an image (a letter, a symbol): dark pixels are "inside". The image
 // is stretched over the grid's x-y extent (all layers alike; image row 0 is y = ny-1).
 // Outside, only background labels may appear; inside, non-background labels are weighted

@@ -20,6 +20,17 @@ M4 mul(const M4& a, const M4& b) {
 M4 identity() { M4 m{}; m[0] = m[5] = m[10] = m[15] = 1; return m; }
 M4 translate(double x, double y, double z) { M4 m = identity(); m[12] = x; m[13] = y; m[14] = z; return m; }
 M4 scale(double x, double y, double z) { M4 m{}; m[0] = x; m[5] = y; m[10] = z; m[15] = 1; return m; }
+
+// Assets are y-up (glTF, OBJ, and CGA's I in a scope whose y is up), the grid is z-up: an
+// asset stands in its cell with its y along the grid's z, so a `cylinder` (a tower, a
+// trunk) stands on its cap. The unit box's (x, y, z) goes to (x, 1 - z, y): in the y-up
+// world (PlacementFrame::yUp) the asset keeps its own axes. The flat built-ins `quad` and
+// `disc` (in their xy plane, facing +z) are floor tiles: they keep lying on the cell's
+// floor, facing up.
+M4 upright(const std::string& asset) {
+  if (asset == "quad" || asset == "disc") return identity();
+  return M4{1, 0, 0, 0,  0, 0, 1, 0,  0, -1, 0, 0,  0, 1, 0, 1};
+}
 }  // namespace
 
 std::vector<PiecePlacement> piecePlacements(const LabelGrid& labels, const Example& ex,
@@ -48,7 +59,7 @@ std::vector<PiecePlacement> piecePlacements(const LabelGrid& labels, const Examp
     const double c = std::cos(p.rotation * M_PI / 2), s = std::sin(p.rotation * M_PI / 2);
     M4 rot = identity();
     rot[0] = std::round(c); rot[1] = std::round(s); rot[4] = -std::round(s); rot[5] = std::round(c);
-    M4 local = mul(rot, mul(scale(p.mirrored ? -1 : 1, 1, 1), translate(-0.5, -0.5, 0)));
+    M4 local = mul(rot, mul(scale(p.mirrored ? -1 : 1, 1, 1), mul(translate(-0.5, -0.5, 0), upright(p.asset))));
     local = mul(translate(0.5, 0.5, 0), local);
     const double ox = pl.at.x * cs[0], oy = pl.at.y * cs[1], oz = pl.at.z * cs[2];
     M4 grid = mul(translate(ox, oy, oz), mul(scale(cs[0], cs[1], cs[2]), local));

@@ -127,10 +127,12 @@ bool compile(Problem& P, std::string& error) {
   // Base domains: region ∩ borders ∩ symmetry fixed points.
   BorderSpec border = o.border ? *o.border : ex.border;
   P.baseIndex.resize(size_t(o.size.count()));
-  // Per face: the labels its cells may hold (all when the face is unconstrained).
-  std::vector<Word> faceMask(6 * size_t(P.W), ~Word(0));
+  // Per face: the labels its cells may hold (all when the face is unconstrained); the
+  // second half of faceMask leaves out `only`, for the cells of a background-only region.
+  std::vector<Word> faceMask(12 * size_t(P.W), ~Word(0));
   for (int f = 0; f < 6; ++f) {
     Word* m = &faceMask[size_t(f) * size_t(P.W)];
+    Word* withoutOnly = &faceMask[size_t(6 + f) * size_t(P.W)];
     const int axis = f / 2;
     if (o.periodic[size_t(axis)] || (axis == 2 && ex.dims == 2)) continue;  // planar: no z faces
     const int32_t fixed = border.fixed[size_t(f)], out = border.outside[size_t(f)];
@@ -143,13 +145,15 @@ bool compile(Problem& P, std::string& error) {
     if (fixed >= 0 && fixed < P.k) {
       std::fill(one.begin(), one.end(), 0);
       setBit(one.data(), fixed);
-      for (int w = 0; w < P.W; ++w) m[w] &= one[size_t(w)];
+      for (int w = 0; w < P.W; ++w) m[w] &= one[size_t(w)], withoutOnly[w] &= one[size_t(w)];
     }
     // The virtual outside cell lies across the face; this cell is at relation f from it
     // (xmin: the cell is at +x of the outside cell, relation +x = 0 = face xmin).
     if (out >= 0 && out < P.k)
-      for (int w = 0; w < P.W; ++w) m[w] &= P.t.row(f, out)[w];
+      for (int w = 0; w < P.W; ++w) m[w] &= P.t.row(f, out)[w], withoutOnly[w] &= P.t.row(f, out)[w];
   }
+  std::vector<uint8_t> backgroundOnly(regions, 0);
+  for (size_t r = 0; r < regions; ++r) backgroundOnly[r] = backgroundOnlyRegion(o.weights, r, ex);
   // Face f of the border (xmin, xmax, ymin, ...) is the one slot f ^ 1 points through:
   // the site graph's face bits, in slot order, name the border faces a cell lies on.
   const size_t W = size_t(P.W);
@@ -162,9 +166,10 @@ bool compile(Problem& P, std::string& error) {
       e = uint32_t(P.baseTable.size() / W);
       P.baseTable.insert(P.baseTable.end(), &regionDom[r * W], &regionDom[r * W] + W);
       Word* d = &P.baseTable[size_t(e) * W];
+      const size_t half = backgroundOnly[r] ? 6 : 0;
       for (int f = 0; f < 6; ++f)
         if ((faces >> (f ^ 1)) & 1)
-          for (size_t w = 0; w < W; ++w) d[w] &= faceMask[size_t(f) * W + w];
+          for (size_t w = 0; w < W; ++w) d[w] &= faceMask[(half + size_t(f)) * W + w];
     }
     P.baseIndex[size_t(c)] = e;
   }

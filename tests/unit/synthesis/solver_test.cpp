@@ -337,9 +337,12 @@ TEST_CASE("piece placements: asset, quarter turns, cell box", "[synthesis][place
   CHECK(p[0].rotation == 1);
   CHECK(p[0].boxMin == std::array<double, 3>{2, 0, 0});
   CHECK(p[0].boxMax == std::array<double, 3>{4, 2, 3});
-  // The unit box corner (0,0,0), turned a quarter about the cell centre, lands at (4,0,0).
-  CHECK(p[0].transform[12] == Approx(4));
+  // The unit box corner (0,0,0) stands upright at (0,1,0) (the asset's y along the grid's
+  // z: its z goes to 1 - z along y), then turned a quarter about the cell centre, (x, y)
+  // -> (1 - y, x): (0,0,0), scaled by 2 and moved to the cell: (2,0,0).
+  CHECK(p[0].transform[12] == Approx(2));
   CHECK(p[0].transform[13] == Approx(0));
+  CHECK(p[0].transform[14] == Approx(0));
   f.yUp = true;
   p = piecePlacements(g, ex, f);
   CHECK(p[0].boxMin[1] == Approx(0));  // grid z -> world y
@@ -349,4 +352,33 @@ TEST_CASE("piece placements: asset, quarter turns, cell box", "[synthesis][place
   appendInstances(p, "Synth", list);
   CHECK(list.instances.size() == 1);
   CHECK(list.assets == std::vector<std::string>{"cube"});
+}
+
+TEST_CASE("piece placements: a cylinder stands upright, a quad lies on the floor", "[synthesis][placements]") {
+  // #46: the built-in cylinder's axis is its y; in the y-up output it must stay world Y
+  // (it lay along -Z). A quad (facing +z) stays a floor tile facing world +Y.
+  Example ex = parse("size 2 1\nlabel T cylinder\nlabel Q quad\nT Q\n");
+  LabelGrid g(GridSize{2, 1, 1}, 0);
+  g.at(1, 0, 0) = 1;
+  PlacementFrame f;
+  f.cellSize = {1, 1, 3};  // tall cells: a standing asset is 3 high
+  auto p = piecePlacements(g, ex, f);
+  REQUIRE(p.size() == 2);
+  // Column k of the 4x4 column-major transform is where the asset's axis k goes.
+  const auto& t = p[0].transform;
+  CHECK(t[4] == Approx(0));  // asset y -> world (0, 3, 0): up, the cell's height
+  CHECK(t[5] == Approx(3));
+  CHECK(t[6] == Approx(0));
+  CHECK(t[0] == Approx(1));  // asset x -> world x
+  CHECK(t[8] == Approx(0));  // asset z -> world +z, one cell deep
+  CHECK(t[9] == Approx(0));
+  CHECK(t[10] == Approx(1));
+  CHECK(t[12] == Approx(0));  // corner (0,0,0) -> world (0, 0, -1): the cell spans z -1..0
+  CHECK(t[13] == Approx(0));
+  CHECK(t[14] == Approx(-1));
+  const auto& q = p[1].transform;
+  CHECK(q[8] == Approx(0));  // the quad's normal (its z) -> world +Y
+  CHECK(q[9] == Approx(3));
+  CHECK(q[10] == Approx(0));
+  CHECK(q[13] == Approx(0));  // on the floor
 }
