@@ -233,6 +233,15 @@ void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State&
   } catch (const std::invalid_argument& e) {
     fail(op.loc, "'" + op.name + "': " + e.what());
   }
+  if (static_cast<ir::CellGenerator>(op.index) == ir::CellGenerator::ArchBricks && tex.cells().size() == first &&
+      at.feature.kind == FeatureKind::Edge) {
+    // Never a silent empty ring (#46): each ArchBricks on an arc lays a ring outside the last.
+    const rt::cells::FeatureEdge& arc = tex.features().edges[at.feature.index];
+    if (arc.shape == rt::cells::EdgeShape::Arc && arc.rightFace >= 0)
+      fail(op.loc, "'ArchBricks' placed no voussoir on this arc (radius " + std::to_string(arc.radius) +
+                       "): cells placed before it (on the arc's corners, or by another generator on this edge) "
+                       "take all the room its ring needs");
+  }
   for (size_t k = first; k < tex.cells().size(); ++k) {
     const rt::cells::Cell c = rt::cells::shrunk(tex.cells()[k], at.joint);
     rt::Scope s = st.scope;

@@ -420,6 +420,47 @@ int layHeaders(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
   return placed;
 }
 
+namespace {
+
+// How far from the arc's axis the cells already laid on arc `edge` reach (their farthest
+// corner); 0 when the edge holds no cell yet. A ring starting there overlaps none of them:
+// a voussoir's outer face is flat, its corners stand out past its middle.
+double outerRingRadius(const CellularTexture& tex, int edge) {
+  const FeatureEdge& e = tex.features().edges[edge];
+  double outer = 0;
+  for (const Cell& c : tex.cells()) {
+    if (c.feature.kind != FeatureKind::Edge || c.feature.index != edge) continue;
+    for (const Vec3& p : c.corners()) {
+      const Vec3 d = p - e.centre;
+      outer = std::max(outer, (d - d.dot(e.axis) * e.axis).norm());
+    }
+  }
+  return outer;
+}
+
+// One ring of `count` voussoirs over the arc's whole sweep, from radius r0 outward by the
+// brick's length, each as wide as a course (b.height) at r0, in the wall (normal n).
+int voussoirRing(CellularTexture& tex, int edge, double from, double to, double r0, const Vec3& n,
+                 const BrickSize& b) {
+  const FeatureEdge& e = tex.features().edges[edge];
+  const double sweep = (to - from) / e.radius;  // radians
+  const int count = std::max(1, int(std::lround(sweep * r0 / b.height)));
+  const double step = sweep / count;
+  int placed = 0;
+  for (int k = 0; k < count; ++k) {
+    const double a = from / e.radius + (k + 0.5) * step, half = 0.5 * step;
+    const Vec3 radial = std::cos(a) * e.ref + std::sin(a) * e.axis.cross(e.ref);
+    const Vec3 tangent = e.axis.cross(radial);
+    const double w = r0 * std::tan(half);
+    const Vec3 origin = e.centre + r0 * radial - w * tangent;
+    placed += tex.add(makeCell(origin, radial, tangent, n, Vec3(b.length, 2 * w, b.depth)),
+                      {FeatureKind::Edge, edge});
+  }
+  return placed;
+}
+
+}  // namespace
+
 int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
   checkSize(b);
   if (on.kind != FeatureKind::Edge) return layBricks(tex, on, b);
@@ -433,21 +474,18 @@ int layArchBricks(CellularTexture& tex, FeatureRef on, const BrickSize& b) {
   const Vec3 mid = edgeAt(e, 0.5 * e.length).point;
   // Inward: the intrados faces the centre, so the shared region lies inside the radius.
   const bool inside = sd.normal[1 - wall].dot(e.centre - mid) > 0;
+  // A second ArchBricks on the same arc lays the next ring outward, from where the rings
+  // before it end, over the whole sweep (the edge's own map is theirs already).
+  if (const double outer = outerRingRadius(tex, on.index); outer > 0)
+    return voussoirRing(tex, on.index, 0, e.length, outer, n, b);
   const double r0 = inside ? e.radius - b.depth : e.radius;
   const double tol = 1e3 * tex.tolerance();
   int placed = 0;
+  // The first ring: in each stretch of the edge still free, voussoirs as wide as a course
+  // along the edge (at radius e.radius).
   for (const Interval& gap : tex.edgeMap(on.index).gaps(0, e.length, tol)) {
-    const int count = std::max(1, int(std::lround(gap.length() / b.height)));
-    const double step = gap.length() / count;
-    for (int k = 0; k < count; ++k) {
-      const double a = (gap.lo + (k + 0.5) * step) / e.radius, half = 0.5 * step / e.radius;
-      const Vec3 radial = std::cos(a) * e.ref + std::sin(a) * e.axis.cross(e.ref);
-      const Vec3 tangent = e.axis.cross(radial);
-      const double w = r0 * std::tan(half);
-      const Vec3 origin = e.centre + r0 * radial - w * tangent;
-      placed += tex.add(makeCell(origin, radial, tangent, n, Vec3(b.length, 2 * w, b.depth)),
-                        {FeatureKind::Edge, on.index});
-    }
+    const BrickSize atEdge{b.length, b.height * r0 / e.radius, b.depth};
+    placed += voussoirRing(tex, on.index, gap.lo, gap.hi, r0, n, atEdge);
   }
   return placed;
 }

@@ -84,6 +84,26 @@ assert all(d <= 1.1 * base + 1e-9 for d in depths), max(depths) / base
 assert max(depths) > 1.09 * base and sum(d > 1.05 * base for d in depths) > 0.4 * n, "no roughness"
 P
 
+# Arch rings (#46): each further ArchBricks on an arc lays the next ring outward (a
+# second ArchBricks used to place none). The door's half circle (radius 0.6, bricks
+# 0.215 x 0.075 x 0.1025): ring 1 from r = 0.6 - 0.1025 = 0.4975 (the intrados' cell layer),
+# as wide as a course along the arc: pi 0.6 / 0.075 = 25.1 -> 25; ring 2 from the farthest
+# corner sqrt(0.7125^2 + (0.4975 tan(pi/50))^2) = 0.7132: pi 0.7132 / 0.075 = 29.9 -> 30;
+# ring 3 from sqrt(0.9282^2 + (0.7132 tan(pi/60))^2) = 0.9289: 38.9 -> 39.
+for rings in 1 2 3; do
+  call='ArchBricks(length, course, depth){ Voussoir }'
+  calls=$call; for ((k = 1; k < rings; k++)); do calls="$calls $call"; done
+  sed "s/^WallRim : Feature.arc -> .*/WallRim : Feature.arc -> $calls/" examples/brick_building.fgsg >"$tmp/rings$rings.fgsg"
+  cp examples/assets/brick_building.obj "$tmp/"  # the base mesh, beside the grammar
+  "$fgsg" run "$tmp/rings$rings.fgsg" -q -o "$tmp/rings.obj" --instances "$tmp/rings$rings.json" ||
+    fail "brick_building with $rings arch rings: exit $?"
+done
+python3 - "$tmp"/rings{1,2,3}.json <<'P' || fail "arch rings: not 25, 30 and 39 voussoirs"
+import json, sys
+n = [sum(i["symbol"] == "Voussoir" for i in json.load(open(p))["instances"]) for p in sys.argv[1:]]
+assert n == [25, 25 + 30, 25 + 30 + 39], n
+P
+
 # grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints
 # PATTERN (lib.sh's expect) and writes no output.
 grammar_fails() {

@@ -263,6 +263,60 @@ TEST_CASE("the brick building: voussoirs radial to the arch within 1°, header r
   CHECK(fclContacts(tex.cells()) == 0);
 }
 
+TEST_CASE("arch rings: a second and third ArchBricks on one arc lay rings outward", "[cells][arch]") {
+  // #46: a second ArchBricks on the same arc placed 0 cells. Each call now lays the next
+  // ring: from where the last one ends (its farthest corner), a brick long, as many voussoirs as
+  // courses fit along that radius over the arc's sweep, none overlapping.
+  const LabelledMesh lm = readBaseMeshObj(FGSG_SOURCE_DIR "/examples/assets/brick_building.obj");
+  CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm));
+  const FeatureMesh& fm = tex.features();
+  int arcIndex = -1;
+  for (size_t i = 0; i < fm.edges.size(); ++i)
+    if (fm.edges[i].shape == EdgeShape::Arc && fm.edges[i].rightFace >= 0) arcIndex = int(i);
+  REQUIRE(arcIndex >= 0);
+  const FeatureEdge& arc = fm.edges[size_t(arcIndex)];
+  const FeatureRef on{FeatureKind::Edge, arcIndex};
+  // Of the cells from index `from` on: the smallest and largest distance of their inner
+  // faces' middles from the centre along their radial axis, the outer faces' largest, and
+  // how far their farthest corner lies from the arc's axis (where the next ring starts).
+  struct Ring {
+    double inner = 1e9, innerMax = 0, outer = 0, reach = 0;
+  };
+  auto ring = [&](size_t from) {
+    Ring r;
+    for (size_t k = from; k < tex.cells().size(); ++k) {
+      const Cell& c = tex.cells()[k];
+      const double in = (c.origin - arc.centre).dot(c.axes.col(0));
+      r.inner = std::min(r.inner, in), r.innerMax = std::max(r.innerMax, in);
+      r.outer = std::max(r.outer, in + c.size.x());
+      for (const Vec3& p : c.corners()) {
+        const Vec3 d = p - arc.centre;
+        r.reach = std::max(r.reach, (d - d.dot(arc.axis) * arc.axis).norm());
+      }
+    }
+    return r;
+  };
+  REQUIRE(layArchBricks(tex, on, kBrick) > 0);
+  Ring last = ring(0);
+  CHECK(last.outer - last.inner == Approx(kBrick.length).margin(1e-9));
+  const double sweep = arc.length / arc.radius;
+  CHECK(sweep == Approx(M_PI).margin(1e-6));  // the door's half circle
+  for (int k = 1; k <= 2; ++k) {
+    const size_t before = tex.cells().size();
+    const int placed = layArchBricks(tex, on, kBrick);
+    const Ring r = ring(before);
+    // Every voussoir of the ring starts at the last ring's farthest corner, a brick long.
+    CHECK(r.inner == Approx(last.reach).margin(1e-9));
+    CHECK(r.innerMax == Approx(last.reach).margin(1e-9));
+    CHECK(r.outer == Approx(last.reach + kBrick.length).margin(1e-9));
+    CHECK(last.reach - last.outer < 0.002);  // corners stand out by about w^2 / 2r: under 2 mm
+    // A course wide at its inner radius, over the whole sweep.
+    CHECK(placed == std::lround(sweep * r.inner / kBrick.height));
+    last = r;
+  }
+  CHECK(fclContacts(tex.cells()) == 0);
+}
+
 TEST_CASE("bonds: English, Flemish and header courses, closers at the free ends", "[cells][bonds]") {
   // The front of a 3 m wall 1.5 m high (20 courses), laid alone: its courses as the
   // bond lays them, each from its free end at x = 0... along the face's u axis.
