@@ -173,16 +173,19 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
   const MarchingSurface& s = surface(op.loc);
   if (st.scope.face < 0)
     throw DeriveError{op.loc, "R022", "Marching starts from a point of the surface, and this scope is on none"};
-  ++marches_;
   const auto& options = d_.options();
+  if (!tally_.hasFirst) tally_.first = op.loc, tally_.hasFirst = true;
+  ++tally_.marches;
+  tally_.candidates = std::max(0, options.marchCandidates);
   const auto unit = options.marchInTexels ? rt::marching::LengthUnit::Image : rt::marching::LengthUnit::Surface;
   // No two points of the surface are farther apart than its bounding box's diagonal: a
   // longer step has no destination, and would only walk far before finding so.
   const auto& mesh = s.mesh();
   if (unit == rt::marching::LengthUnit::Surface && length > (mesh.boundsMax - mesh.boundsMin).norm()) {
-    ++stopped_;
+    ++tally_.tooLong;
     return;
   }
+  bool landed = false;  // some direction reached a destination (where the condition failed)
   MarchPoint from = s.place({st.scope.face, st.scope.bary}, st.scope.X());
   const rt::marching::Vec2 ahead = turned(from.dir, angle);
   const int sides = std::max(0, options.marchCandidates);
@@ -195,12 +198,17 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
     from.dir = turned(ahead, (k % 2 ? 1 : -1) * step * spacing);
     MarchPoint to;
     if (!s.march(from, length, unit, to)) continue;  // the surface's edge came first
+    landed = true;
     rt::Scope top = st.scope;
     d_.surface()->placeOn(top, to.at.face, to.at.bary, s.direction(to));
     condition_ = false;
     d_.runBody(op, 2, top, st.geom, st, ex, f);
-    if (ex.culled) return;
+    if (ex.culled) {  // the condition's own body ended the shape: it did land
+      ++tally_.steps;
+      return;
+    }
     if (!condition_) continue;
+    ++tally_.steps;
     // The destination is a new node; the segment to it carries the Extruded part.
     const int32_t start = nodeAt(st.scope);
     nodes_.push_back({top.P, top.Z()});
@@ -214,7 +222,7 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
     d_.runBody(op, 1, extruded, st.geom, st, ex, f);
     return;
   }
-  ++stopped_;
+  ++(landed ? tally_.conditionFailed : tally_.atEdge);
 }
 
 // The Extruded part's scope: X along the straight segment from `from` to `to`, Z the

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "backend/commands/command_family.h"
+#include "backend/commands/march_tally.h"
 #include "runtime/instances.h"
 #include "runtime/marching/march_graph.h"
 #include "runtime/scope.h"
@@ -53,8 +54,11 @@ class MarchingCommands final : public CommandFamily {
   // After deriving: the Bezier path of every march segment, indexed as the instances'
   // `curve` (runtime/instances.h).
   std::vector<rt::CurveSegment> curves() const;
-  uint64_t marches() const { return marches_; }
-  uint64_t marchesStopped() const { return stopped_; }
+  uint64_t marches() const { return tally_.marches; }
+  uint64_t marchesStopped() const { return tally_.marches - tally_.steps; }
+  // How the marches ended (a seed plant's join its parent's): for the R030 warning.
+  const MarchTally& tally() const { return tally_; }
+  void addTally(const MarchTally& plant) { tally_.add(plant); }
 
  private:
   const rt::marching::MarchingSurface& surface(ir::Loc at);
@@ -71,7 +75,7 @@ class MarchingCommands final : public CommandFamily {
   std::vector<rt::marching::MarchNode> nodes_;
   std::vector<rt::marching::MarchSegment> segments_;
   bool condition_ = false;  // what the last MarchCondition said
-  uint64_t marches_ = 0, stopped_ = 0;
+  MarchTally tally_;
 };
 
 }  // namespace fgsg::backend

@@ -141,6 +141,8 @@ rt::DeriveResult Derivation::run() {
   // Lines and the surface are appended after the rules' instances: placed by no rule.
   if (origins_.on()) out_.origins.resize(out_.instances.size());
   overlapWarnings(result.messages);
+  if (result.ok)
+    if (auto never = marching_.tally().neverStarted()) result.messages.push_back(*never);  // R030
   result.stats = stats_;
   result.instances = std::move(out_);
   result.reports = reports_.takeReports();

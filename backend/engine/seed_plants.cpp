@@ -27,6 +27,7 @@ struct Derivation::Plant {
   std::vector<uint64_t> shapesAtInstance;  // stats.shapesCreated when each was placed
   std::vector<uint64_t> ruleUses;
   std::vector<std::pair<uint32_t, uint32_t>> overlaps;  // rules met applying together (R029)
+  MarchTally marching;                                   // how its marches ended (R030)
   std::vector<rt::Report> reports;  // start 0: the plant's own
   std::vector<rt::PrintLine> prints;
   std::optional<rt::DeriveMessage> depthWarning;
@@ -93,6 +94,7 @@ Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, 
   p.shapesAtInstance = std::move(shapesAtInstance_);
   p.ruleUses = std::move(ruleUses_);
   p.overlaps = std::move(overlaps_);
+  p.marching = marching_.tally();
   p.reports = reports_.takeReports();
   p.prints = reports_.takePrints();
   return p;
@@ -118,6 +120,7 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
       throw std::logic_error("a seed plant numbered its assets or symbols apart from the derivation");
     for (size_t r = 0; r < ruleUses_.size(); ++r) ruleUses_[r] += p.ruleUses[r];
     for (const auto& rules : p.overlaps) noteOverlap(rules);
+    marching_.addTally(p.marching);
     if (p.depthWarning && !depthLimitHit_) depthLimitHit_ = true, depthWarning_ = *p.depthWarning;
 
     const uint64_t left = opt_.maxShapes - std::min(opt_.maxShapes, stats_.shapesCreated);

@@ -262,3 +262,58 @@ TEST_CASE("Seeds without a surface are an error, not ignored", "[marching][error
   CHECK(r.messages[0].code == "R022");
   CHECK_FALSE(r.ok);
 }
+
+TEST_CASE("A march that can never start is a warning that says why", "[marching][errors]") {
+  // #46: seeds all outside the painted disc: every march's condition fails wherever it
+  // lands, nothing grows — R030 at the Marching, naming the reason, with the count.
+  const auto dir = test::scratchDir("marching", "never");
+  rt::surface::SurfaceMesh plane;
+  std::string error;
+  REQUIRE(rt::surface::makeProceduralSurface("plane", {4, 4, 32}, plane, error));
+  const auto surface = rt::marching::MarchingSurface::prepare(plane, {}, error);
+  REQUIRE(surface);
+  const auto mask = rt::texture::paintMask(*surface, 512, {{rt::Vec3(0.5, 0, 0), 0.3}});
+  REQUIRE(rt::texture::writeMaskPng(mask, (dir / "disc.png").string(), error));
+  rt::DeriveOptions opt = inFolder(dir);
+  opt.seeds.resize(2);
+  opt.seeds[0].point[0] = -1.5, opt.seeds[0].point[1] = -1.5;
+  opt.seeds[1].point[0] = 1.5, opt.seeds[1].point[1] = 1.5;
+  auto r = deriveText("surface plane(4, 4, 32);\ntexture disc = \"disc.png\";\n"
+                      "start = Walk(0)\n"
+                      "Walk(n) : n < 40 ~> Marching(0.05, 0, context.disc(texCoord) > 0.5){ I(\"cube\") Walk(n + 1) }",
+                      opt);
+  REQUIRE(r.ok);
+  CHECK(test::countAsset(r, "cube") == 0);
+  REQUIRE(r.messages.size() == 1);
+  CHECK_FALSE(r.messages[0].isError);
+  CHECK(r.messages[0].code == "R030");
+  CHECK(r.messages[0].line == 4);
+  CHECK(r.messages[0].col == 21);
+  CHECK_THAT(r.messages[0].message,
+             Catch::Contains("no march ever started: all 2 Marching steps stopped where they began") &&
+                 Catch::Contains("the condition was false at every destination tried, straight ahead and 8 other "
+                                 "directions (--march-candidates)") &&
+                 Catch::Contains("texture says no (2 marches)"));
+
+  // Longer than the unit sphere's bounding-box diagonal (2 sqrt 3 = 3.46), and longer than
+  // any chord (2.5 > 2) though not than the diagonal: those reasons instead.
+  auto tooLong = deriveText("surface sphere(1);\nstart = Marching(3.5, 0, true){ I(\"cube\") }");
+  REQUIRE(tooLong.ok);
+  REQUIRE(tooLong.messages.size() == 1);
+  CHECK(tooLong.messages[0].code == "R030");
+  CHECK_THAT(tooLong.messages[0].message,
+             Catch::Contains("all 1 Marching steps") &&
+                 Catch::EndsWith("the step is longer than the surface's bounding-box diagonal (a smaller length, "
+                                 "or --surface-size to scale the surface up) (1 march)"));
+  auto noChord = deriveText("surface sphere(1);\nstart = Marching(2.5, 0, true){ I(\"cube\") }");
+  REQUIRE(noChord.messages.size() == 1);
+  CHECK_THAT(noChord.messages[0].message,
+             Catch::EndsWith(": no point of the surface lay a step away in any direction tried (its open edge came "
+                             "first, or it does not reach that far that way) (1 march)"));
+
+  // One march that moves silences it.
+  auto moved = deriveText("surface sphere(1);\nstart = Marching(2.5, 0, true){ I(\"cube\") } "
+                          "Marching(0.5, 0, true){ I(\"cube\") }");
+  REQUIRE(moved.ok);
+  CHECK(moved.messages.empty());
+}
