@@ -285,8 +285,6 @@ struct Program {
   std::vector<IgnoreDecl> ignores;
   std::vector<CollisionDecl> collisions;
   std::vector<AxiomDecl> axioms;
-  // A `.cga` file: a lot is CityEngine's initial shape (scope x along its first edge, y up).
-  bool cityEngineLots = false;
   // lpfg's and L-Py's `maximum depth: N` of the decomposition and homomorphism sections
   // (default 1, as L-Py's): how many times their rules are applied in a row.
   int decompositionDepth = 1;

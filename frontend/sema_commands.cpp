@@ -6,6 +6,7 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "frontend/shape_operations.h"
 #include "runtime/synthesis/continuous/example_file.h"
 
 #include <set>
@@ -165,6 +166,22 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       break;
     }
     case CommandId::Offset: numArgs(0, false); break;
+    case CommandId::ShapeOperation:
+      // A word where the operation takes one ("largest", "y"), else a number.
+      for (size_t k = 0; k < item.args.size(); ++k) {
+        ConstValue v;
+        double code = 0;
+        std::string allowed;
+        if (!(evalConst(*item.args[k], v) && v.type == ValueType::Str)) {
+          expect(*item.args[k], w.operand(), ValueType::Num, "this argument");
+        } else if (res_.exprTypes[item.args[k].get()] = ValueType::Str;
+                   !shapeOperationWord(item.name, k, v.str, code, allowed)) {
+          diags_.error("E028", item.args[k]->range,
+                       "'" + item.name + "' takes " + (allowed.empty() ? "a number" : allowed) + " here, not \"" +
+                           v.str + "\": " + cmd.signature);
+        }
+      }
+      break;
     case CommandId::Footprint: {
       // Rings of corner pairs, each hole after the word "hole": Footprint(outline..., "hole", ...).
       size_t ringStart = 0;
@@ -334,7 +351,13 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   for (const auto& part : item.body) {
     if (part.selector.empty()) continue;
     ++labelled;
-    if (cmd.id == CommandId::Offset) {
+    if (cmd.id == CommandId::ShapeOperation) {
+      std::string allowed;
+      if (!shapeOperationLabel(item.name, part.selector, allowed))
+        diags_.error("E028", part.selectorRange,
+                     "unknown part '" + part.selector + ":' of " + item.name +
+                         (allowed.empty() ? " (it takes no labelled parts)" : " (" + allowed + ")"));
+    } else if (cmd.id == CommandId::Offset) {
       if (part.selector != "inside" && part.selector != "border")
         diags_.error("E028", part.selectorRange, "unknown part '" + part.selector + ":' of Offset (inside, border)");
     } else if (cmd.id != CommandId::Comp) {
@@ -346,6 +369,8 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
                    "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, vertical, aslant, side, all)");
     }
   }
+  if (cmd.id == CommandId::ShapeOperation && labelled != parts)
+    diags_.error("E018", item.range, "label every part of '" + item.name + "': " + std::string(cmd.signature));
   if (cmd.id == CommandId::Offset && labelled != parts)
     diags_.error("E018", item.range, "label every part of 'Offset': " + std::string(cmd.signature));
   if (cmd.id == CommandId::Comp && labelled > 0) {

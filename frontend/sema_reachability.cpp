@@ -101,6 +101,7 @@ void Analyzer::checkReachability() {
           if (item.name == "Synthesize" || item.name == "Evolve") synthesizes = true;
           for (const char* name : {"Subdiv", "Repeat", "Comp", "Extrude", "Roof", "Footprint", "Offset"})
             if (item.name == name) cga = true;
+          if (const CommandInfo* c = findCommand(item.name); c && c->id == CommandId::ShapeOperation) cga = true;
           if (item.name == "Cells" && item.body.size() == 2)
             for (const auto& c : item.body[0].items) baseParts.push_back(&c);
         });

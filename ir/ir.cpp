@@ -119,6 +119,7 @@ bool isCgaGeometryOp(OpKind kind) {
     case OpKind::Extrude:
     case OpKind::Roof:
     case OpKind::Footprint:
+    case OpKind::ShapeOperation:
     case OpKind::Offset: return true;
     default: return false;
   }

@@ -126,6 +126,8 @@ enum class OpKind : uint8_t {
   CellPattern,   // index = CellGenerator; args its sizes; bodies: none, or [0] each cell's shape
   Report,        // args key (Str), value (Num/Bool/Str): CGA's report(), collected per start shape
   Print,         // args the value (Num/Bool/Str), or a vector's three components: CGA's print()
+  ShapeOperation,  // str = the command (AlignScopeToAxes, Setback, ShapeL ...: frontend/shape_operations.h); args its
+                   // numbers (a word argument as the number it stands for); bodies labelled (partLabels) or none
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

@@ -2,6 +2,7 @@
 #include "ir/lower.h"
 
 #include "frontend/builtins.h"
+#include "frontend/shape_operations.h"
 
 #include <algorithm>
 #include <map>
@@ -466,6 +467,23 @@ class Lowerer {
         op.index = item.args.size() > 4 ? m_.internString(constString(*item.args[4])) + 1 : 0;
         break;
       case CommandId::Report: op.kind = OpKind::Report; allArgs(0); break;
+      case CommandId::ShapeOperation:
+        op.kind = OpKind::ShapeOperation;
+        op.str = m_.internString(cmd.name);
+        for (size_t k = 0; k < item.args.size(); ++k) {
+          double code = 0;
+          std::string allowed;
+          if (item.args[k]->kind == ExprKind::String || !constString(*item.args[k]).empty()) {
+            frontend::shapeOperationWord(cmd.name, k, constString(*item.args[k]), code, allowed);
+            Expr e = Expr::number(code);
+            e.loc = op.loc;
+            op.args.push_back(std::move(e));
+          } else {
+            op.args.push_back(expr(*item.args[k]));
+          }
+        }
+        for (const auto& part : item.body) op.partLabels.push_back(m_.internString(part.selector));
+        break;
       case CommandId::Print:
         op.kind = OpKind::Print;
         if (sema_.exprTypes.count(item.args[0].get()) &&

@@ -423,6 +423,10 @@ class Printer {
       }
       case OpKind::Report: text = withArgs("report"); break;
       case OpKind::Print: text = withArgs("print"); break;
+      case OpKind::ShapeOperation:
+        text = withArgs("shape-operation " + stringLit(op.str));
+        for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
+        break;
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;
     }
     line(depth, text);

@@ -45,6 +45,7 @@ const char* opName(OpKind k) {
     case OpKind::CellPattern: return "cell-pattern";
     case OpKind::Report: return "report";
     case OpKind::Print: return "print";
+    case OpKind::ShapeOperation: return "shape-operation";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -564,6 +565,14 @@ class Verifier {
           problem("cell generator " + std::to_string(op.index) + " out of range");
         if (op.bodies.size() > 1) problem(std::to_string(op.bodies.size()) + " bodies, expected 0 or 1");
         if (op.args.size() < 3 || op.args.size() > 4) problem(std::to_string(op.args.size()) + " arguments, expected 3 or 4");
+        break;
+      case OpKind::ShapeOperation:
+        stringId(op.str);
+        if (op.partLabels.size() != op.bodies.size())
+          problem(std::to_string(op.partLabels.size()) + " part labels for " + std::to_string(op.bodies.size()) +
+                  " bodies");
+        for (uint32_t label : op.partLabels) stringId(label);
+        numArgs(op, r, op.args.size());
         break;
       case OpKind::Report:
       case OpKind::Print: {

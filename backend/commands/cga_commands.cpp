@@ -1,5 +1,6 @@
 #include "backend/commands/cga_commands.h"
 
+#include "backend/commands/shape_operations.h"
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
 #include "runtime/cga/ground_face.h"
@@ -24,7 +25,7 @@ bool skeletonWithin(Derivation& d, Op op) {
 
 std::vector<ir::OpKind> CgaCommands::kinds() const {
   using K = ir::OpKind;
-  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Offset, K::Roof};
+  return {K::Subdiv, K::Repeat, K::Comp, K::Extrude, K::Footprint, K::Offset, K::Roof, K::ShapeOperation};
 }
 
 void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
@@ -96,6 +97,7 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       d_.runBody(op, 0, part.scope, part.geom, st, ex, f);
       break;
     }
+    case ir::OpKind::ShapeOperation: applyShapeOperation(d_, op, a, n, st, ex, f); break;
     default: split(op, a, st, ex, f); break;
   }
 }

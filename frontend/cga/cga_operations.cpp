@@ -477,6 +477,13 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     push(std::move(item));
     return;
   }
+  if (std::optional<Item> shaped; shapeOperation(op, env, shaped)) {
+    if (!shaped) return;
+    flushInsert();
+    if (shaped->hasBody) seq.createsShapes = true;
+    push(std::move(*shaped));
+    return;
+  }
   if (isCityEngineOperation(name)) {
     error("E800", nameAt, "unknown operation '" + name + "' (CityEngine CGA; not supported yet)");
     return;

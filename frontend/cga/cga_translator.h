@@ -13,6 +13,7 @@
 #include "CgaParser.h"
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -131,6 +132,9 @@ class Translator {
   bool offsetComp(const std::vector<P::OperationContext*>& ops, size_t next, Item& offset, const Env& env);
   void insert(P::CallOperationContext* op, Sequence& seq, const Env& env);
   void texture(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  // cga_shape_operations.cpp: true when the call is one of issue #44's footprint-shaping or
+  // scope operations; `item` is then its command (empty after an error).
+  bool shapeOperation(P::CallOperationContext* op, const Env& env, std::optional<Item>& item);
   bool assetPath(std::string& path, const SourceRange& at, const char* what);
   std::string selectorWord(P::ExprContext* e) const;
   Item command(const std::string& fgsgName, const SourceRange& at);

@@ -1,0 +1,127 @@
+#include "backend/commands/shape_operations.h"
+
+#include "backend/engine/derivation.h"
+#include "runtime/cga/shape_operations.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace fgsg::backend {
+namespace {
+
+std::string bare(std::string label) {
+  if (!label.empty() && label.back() == '=') label.pop_back();
+  return label;
+}
+
+// Setback and shapeL/U/O: each edge's distance and the part it goes to, then the bands
+// and the remainder through their parts, in the order the edges run.
+void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, const double* a, State& st, Exec& ex,
+                  Frame& f) {
+  std::string error;
+  rt::cga::FlatPolygon polygon;
+  if (!rt::cga::flatPolygon(st.scope, st.geom, d.arena(), name.c_str(), polygon, error))
+    throw DeriveError{op.loc, "R002", error};
+  std::vector<std::string> labels;
+  for (uint32_t l : op.partLabels) labels.push_back(d.module().strings[l]);
+  const std::vector<unsigned> classes = rt::cga::edgeSelectors(polygon);
+  const size_t edges = classes.size();
+  std::vector<double> distance(edges, 0.0);
+  std::vector<int> group(edges, -1);
+  std::vector<bool> merged(labels.size(), false);
+  if (name == "Setback") {
+    for (size_t k = 0; k < labels.size(); ++k) merged[k] = !labels[k].empty() && labels[k].back() == '=';
+    for (size_t i = 0; i < edges; ++i)
+      for (size_t k = 0; k < labels.size(); ++k)
+        if (bare(labels[k]) != "remainder" && (rt::cga::edgeSelectorMask(labels[k]) & classes[i])) {
+          distance[i] = a[0];
+          group[i] = static_cast<int>(k);
+          break;
+        }
+  } else {
+    // shapeL(front, left), shapeU(front, right, left), shapeO(front, right, back, left): the
+    // wings along those edges, one merged `shape`.
+    using namespace rt::cga;
+    std::vector<std::pair<unsigned, double>> wings;
+    if (name == "ShapeL") wings = {{kEdgeFront, a[0]}, {kEdgeLeft, a[1]}};
+    if (name == "ShapeU") wings = {{kEdgeFront, a[0]}, {kEdgeRight, a[1]}, {kEdgeLeft, a[2]}};
+    if (name == "ShapeO") wings = {{kEdgeFront, a[0]}, {kEdgeRight, a[1]}, {kEdgeBack, a[2]}, {kEdgeLeft, a[3]}};
+    int shape = -1;
+    for (size_t k = 0; k < labels.size(); ++k)
+      if (bare(labels[k]) == "shape") shape = shape < 0 ? static_cast<int>(k) : shape, merged[k] = true;
+    for (size_t i = 0; i < edges; ++i)
+      for (const auto& [mask, width] : wings)
+        if (classes[i] & mask) distance[i] = width, group[i] = width > 0 ? shape : -1;
+  }
+  std::vector<rt::cga::Part> pieces, remainder;
+  std::vector<int> pieceGroup;
+  if (!rt::cga::setback(polygon, distance, group, merged, d.arena(), pieces, pieceGroup, remainder, error))
+    throw DeriveError{op.loc, "R002", error};
+  for (size_t j = 0; j < pieces.size(); ++j) {
+    d.runBody(op, static_cast<size_t>(pieceGroup[j]), pieces[j].scope, pieces[j].geom, st, ex, f);
+    if (ex.culled) return;
+  }
+  for (size_t k = 0; k < labels.size(); ++k)
+    if (bare(labels[k]) == "remainder")
+      for (const rt::cga::Part& part : remainder) {
+        d.runBody(op, k, part.scope, part.geom, st, ex, f);
+        if (ex.culled) return;
+      }
+}
+
+}  // namespace
+
+void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex,
+                         Frame& f) {
+  const std::string& name = d.module().strings[op.str];
+  if (name == "Setback" || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {
+    setbackParts(d, op, name, a, st, ex, f);
+    return;
+  }
+  rt::cga::Part part;
+  std::string error;
+  bool ok = true;
+  const bool flip[3] = {n > 0 && a[0] != 0, n > 1 && a[1] != 0, n > 2 && a[2] != 0};
+  if (name == "AlignScopeToAxes") {
+    ok = rt::cga::alignScopeToAxes(st.scope, st.geom, d.arena(), n ? static_cast<int>(a[0]) : 7, part, error);
+  } else if (name == "AlignScopeToGeometry") {
+    for (int k = 1; k < 3; ++k)
+      if (a[k] != std::floor(a[k]) || std::abs(a[k]) > 1e9)
+        throw DeriveError{op.loc, "R002", "AlignScopeToGeometry: a face or edge index must be a whole number"};
+    ok = rt::cga::alignScopeToGeometry(st.scope, st.geom, d.arena(), static_cast<int>(a[0]), static_cast<int>(a[1]),
+                                       static_cast<int>(a[2]), part, error);
+  } else if (name == "RotateScope") {
+    ok = rt::cga::rotateScope(st.scope, st.geom, d.arena(), rt::Vec3(a[0], a[1], a[2]), part, error);
+  } else if (name == "MirrorScope") {
+    ok = rt::cga::mirrorScope(st.scope, st.geom, d.arena(), flip, part, error);
+  } else if (name == "Mirror") {
+    ok = rt::cga::mirrorGeometry(st.scope, st.geom, d.arena(), flip, part, error);
+  } else if (name == "ReverseNormals") {
+    ok = rt::cga::reverseNormals(st.scope, st.geom, d.arena(), part, error);
+  } else if (name == "DeleteHoles") {
+    ok = rt::cga::deleteHoles(st.scope, st.geom, d.arena(), part, error);
+  } else if (name == "ResetGeometry") {
+    part = rt::cga::Part{st.scope, rt::GeomRef{}, false, 0};
+  } else if (name == "CleanupGeometry") {
+    ok = rt::cga::cleanupGeometry(st.scope, st.geom, d.arena(), n > 0 ? static_cast<int>(a[0]) : 7, n > 1 ? a[1] : 0.0,
+                                  part, error);
+  } else if (name == "InnerRectangle") {
+    rt::cga::FlatPolygon polygon;
+    ok = rt::cga::flatPolygon(st.scope, st.geom, d.arena(), "InnerRectangle", polygon, error) &&
+         rt::cga::innerRectangle(polygon, n > 0 && a[0] == 1, d.arena(), part, error);
+    if (ok && !op.bodies.empty()) {
+      d.runBody(op, 0, part.scope, part.geom, st, ex, f);
+      return;
+    }
+  } else if (name.rfind("Primitive", 0) == 0) {
+    ok = rt::cga::primitive(st.scope, name, std::vector<double>(a, a + n), d.arena(), part, error);
+  } else {
+    throw DeriveError{op.loc, "R002", "unknown shape operation '" + name + "'"};
+  }
+  if (!ok) throw DeriveError{op.loc, "R002", error};
+  st.scope = part.scope;
+  st.geom = part.geom;
+}
+
+}  // namespace fgsg::backend

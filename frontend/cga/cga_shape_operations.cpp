@@ -1,0 +1,133 @@
+// The `.cga` dialect's footprint-shaping and scope operations (issue #44) as fgsg's
+// commands of frontend/shape_operations.h:
+//
+//   alignScopeToAxes() / (x|y|z)              AlignScopeToAxes() / ("y")
+//   alignScopeToGeometry(yUp|zUp, i|largest, j|longest)
+//                                             AlignScopeToGeometry("y", i or "largest", j or "longest")
+//   rotateScope(x, y, z)  mirrorScope(...)  mirror(...)
+//                                             RotateScope  MirrorScope  Mirror (true/false as 1/0)
+//   setback(d){ front : A | street.front = B | remainder : C }
+//                                             Setback(d){ front: A | streetFront=: B | remainder: C }
+//                                             (object.x as x, world.north as north; `=` merged)
+//   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
+//   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance)
+//   primitiveQuad/Cube/Cylinder/Sphere/Disk(...)
+#include "frontend/builtins.h"
+#include "frontend/cga/cga_translator.h"
+#include "frontend/shape_operations.h"
+
+#include <map>
+
+namespace fgsg::frontend::cga {
+
+namespace {
+
+// CityEngine's name -> fgsg's command.
+const std::map<std::string, std::string>& shapeOperationNames() {
+  static const std::map<std::string, std::string> names = {
+      {"alignScopeToAxes", "AlignScopeToAxes"}, {"alignScopeToGeometry", "AlignScopeToGeometry"},
+      {"rotateScope", "RotateScope"},           {"mirrorScope", "MirrorScope"},
+      {"mirror", "Mirror"},                     {"setback", "Setback"},
+      {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
+      {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
+      {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},
+      {"reverseNormals", "ReverseNormals"},     {"resetGeometry", "ResetGeometry"},
+      {"cleanupGeometry", "CleanupGeometry"},   {"primitiveQuad", "PrimitiveQuad"},
+      {"primitiveCube", "PrimitiveCube"},       {"primitiveCylinder", "PrimitiveCylinder"},
+      {"primitiveSphere", "PrimitiveSphere"},   {"primitiveDisk", "PrimitiveDisk"}};
+  return names;
+}
+
+// A setback selector as fgsg's label ("" when it has none).
+std::string setbackLabel(const std::string& sel) {
+  static const std::map<std::string, std::string> labels = {
+      {"front", "front"},         {"back", "back"},           {"left", "left"},
+      {"right", "right"},         {"side", "side"},           {"all", "all"},
+      {"remainder", "remainder"}, {"object.front", "front"},  {"object.back", "back"},
+      {"object.left", "left"},    {"object.right", "right"},  {"object.side", "side"},
+      {"street.front", "streetFront"}, {"street.back", "streetBack"}, {"street.left", "streetLeft"},
+      {"street.right", "streetRight"}, {"street.side", "streetSide"}, {"streetSide", "streetFront"},
+      {"world.north", "north"},   {"world.south", "south"},   {"world.east", "east"},
+      {"world.west", "west"}};
+  const auto it = labels.find(sel);
+  return it == labels.end() ? "" : it->second;
+}
+
+}  // namespace
+
+bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std::optional<Item>& item) {
+  const std::string name = op->name->getText();
+  const auto found = shapeOperationNames().find(name);
+  if (found == shapeOperationNames().end()) return false;
+  const std::string& fgsgName = found->second;
+  const CommandInfo& info = *findCommand(fgsgName);
+  const SourceRange at = rangeOf(op);
+  const auto argCtx = op->expr();
+  if (int(argCtx.size()) < info.minArgs || int(argCtx.size()) > info.maxArgs) {
+    error("E016", rangeOf(op->name), "'" + name + "' takes " + std::to_string(info.minArgs) +
+                                         (info.minArgs == info.maxArgs ? "" : " to " + std::to_string(info.maxArgs)) +
+                                         " arguments, got " + std::to_string(argCtx.size()));
+    return true;
+  }
+  Item made = command(fgsgName, at);
+  for (size_t k = 0; k < argCtx.size(); ++k) {
+    // A selector word (`y`, `largest`, `scope`, `vertices`) is the command's string argument.
+    std::string word = selectorWord(argCtx[k]);
+    if (word == "yUp" || word == "zUp") word = word.substr(0, 1);
+    if (word.rfind("world.", 0) == 0 && fgsgName == "AlignScopeToAxes") word = word.substr(6);
+    double code = 0;
+    std::string allowed;
+    if (!word.empty() && shapeOperationWord(fgsgName, k, word, code, allowed)) {
+      ExprPtr s = makeExpr(ExprKind::String, rangeOf(argCtx[k]));
+      s->text = word;
+      made.args.push_back(std::move(s));
+      continue;
+    }
+    ExprPtr e = expr(argCtx[k], env);
+    if (!e) return true;
+    if (e->kind == ExprKind::Bool) {  // mirror(true, false, false): flips as 1 and 0
+      e->kind = ExprKind::Number;
+      e->number = e->boolean ? 1 : 0;
+    }
+    made.args.push_back(std::move(e));
+  }
+  const bool takesBody = info.body != BodyRule::None;
+  if (!op->splitBody()) {
+    if (takesBody && info.body != BodyRule::Optional) {
+      error("E018", at, "'" + name + "' needs its parts: " + name + "(...){ " +
+                            (fgsgName == "Setback" ? "front" : "shape") + " : A | remainder : B }");
+      return true;
+    }
+    item = std::move(made);
+    return true;
+  }
+  if (!takesBody || op->splitBody()->repeat) {
+    error("E018", rangeOf(op->splitBody()), "'" + name + "' takes no { } body");
+    return true;
+  }
+  made.hasBody = true;
+  for (P::SplitPartContext* partCtx : op->splitBody()->splitPart()) {
+    auto* sized = dynamic_cast<P::SizedPartContext*>(partCtx);
+    if (!sized) {
+      error("E018", rangeOf(partCtx), "'" + name + "''s parts are `selector : operations`");
+      continue;
+    }
+    const std::string sel = selectorWord(sized->key);
+    std::string label = fgsgName == "Setback" ? setbackLabel(sel) : (sel == "shape" || sel == "remainder") ? sel : "";
+    if (label.empty() || (fgsgName == "InnerRectangle" && label == "remainder")) {
+      notSupported(rangeOf(sized->key), "the selector '" + sized->key->getText() + "' of " + name);
+      continue;
+    }
+    if (sized->sep->getText() == "=") label += "=";
+    Successor part;
+    part.range = rangeOf(partCtx);
+    part.selector = label;
+    part.selectorRange = rangeOf(sized->key);
+    operations(sized->operation(), 0, part, env, true);
+    made.body.push_back(std::move(part));
+  }
+  item = std::move(made);
+  return true;
+}
+
+}  // namespace fgsg::frontend::cga

@@ -1,0 +1,58 @@
+#include "frontend/shape_operations.h"
+
+#include <cstring>
+#include <initializer_list>
+#include <utility>
+
+namespace fgsg::frontend {
+namespace {
+
+using Words = std::initializer_list<std::pair<const char*, double>>;
+
+bool pick(Words words, const std::string& word, double& value, std::string& allowed) {
+  for (const auto& [w, v] : words)
+    if (word == w) return value = v, true;
+  for (const auto& [w, v] : words) allowed += (allowed.empty() ? "" : ", ") + std::string(w);
+  return false;
+}
+
+bool labelIn(std::initializer_list<const char*> labels, const std::string& label, std::string& allowed) {
+  std::string bare = label;
+  if (!bare.empty() && bare.back() == '=') bare.pop_back();  // merged parts (from a .cga `=`)
+  for (const char* l : labels)
+    if (bare == l) return true;
+  for (const char* l : labels) allowed += (allowed.empty() ? "" : ", ") + std::string(l);
+  return false;
+}
+
+}  // namespace
+
+bool shapeOperationWord(const std::string& command, size_t k, const std::string& word, double& value,
+                        std::string& allowed) {
+  allowed.clear();
+  // Axis words: the scope axis's index; 7 all three.
+  if (command == "AlignScopeToAxes" && k == 0) return pick({{"x", 0}, {"y", 1}, {"z", 2}, {"xyz", 7}}, word, value, allowed);
+  if (command == "AlignScopeToGeometry") {
+    if (k == 0) return pick({{"y", 1}, {"yUp", 1}, {"z", 2}, {"zUp", 2}}, word, value, allowed);
+    if (k == 1) return pick({{"largest", -1}}, word, value, allowed);  // else a face index
+    if (k == 2) return pick({{"longest", -1}}, word, value, allowed);  // else an edge index
+  }
+  if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
+  if (command == "CleanupGeometry" && k == 0)
+    return pick({{"vertices", 1}, {"edges", 2}, {"faces", 4}, {"all", 7}}, word, value, allowed);
+  return false;
+}
+
+bool shapeOperationLabel(const std::string& command, const std::string& label, std::string& allowed) {
+  allowed.clear();
+  if (command == "Setback")
+    return labelIn({"front", "back", "left", "right", "side", "all", "remainder", "streetFront", "streetBack",
+                    "streetLeft", "streetRight", "streetSide", "north", "south", "east", "west"},
+                   label, allowed);
+  if (command == "ShapeL" || command == "ShapeU" || command == "ShapeO")
+    return labelIn({"shape", "remainder"}, label, allowed);
+  if (command == "InnerRectangle") return labelIn({"shape"}, label, allowed);
+  return false;
+}
+
+}  // namespace fgsg::frontend

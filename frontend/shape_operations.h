@@ -1,0 +1,23 @@
+// CityEngine's footprint-shaping and scope operations as fgsg commands (issue #44):
+// AlignScopeToAxes, AlignScopeToGeometry, RotateScope, MirrorScope, Mirror, Setback, ShapeL,
+// ShapeU, ShapeO, InnerRectangle, DeleteHoles, ReverseNormals, ResetGeometry,
+// CleanupGeometry and the Primitive* shapes. They share one command id and one op kind
+// (ir::OpKind::ShapeOperation, named by op.str); this table says which words their string
+// arguments may be (each becomes a number the runtime reads) and which labels their body
+// parts may carry. Semantic analysis and lowering both read it, so they agree.
+#pragma once
+
+#include <string>
+
+namespace fgsg::frontend {
+
+// Argument `k` of `command` written as the word `word`: the number it stands for (true), or
+// false with the words allowed there in `allowed` (empty: a string is not allowed there).
+bool shapeOperationWord(const std::string& command, size_t k, const std::string& word, double& value,
+                        std::string& allowed);
+
+// Whether a body part of `command` may be labelled `label` (false: `allowed` lists the labels).
+// Setback's edge selectors may end in '=' (CGA's `all = A`: the selected edges' setbacks merged).
+bool shapeOperationLabel(const std::string& command, const std::string& label, std::string& allowed);
+
+}  // namespace fgsg::frontend
