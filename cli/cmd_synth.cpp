@@ -5,6 +5,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
+#include "cli/synth_like_run.h"
 #include "runtime/assemble.h"
 #include "runtime/assets.h"
 #include "runtime/io/write_mesh.h"
@@ -30,7 +31,7 @@ const char* const kUsage =
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--periodic] [--mask image.png]\n"
     "                  [--order scanline|entropy] [--retries N] [--attempts N] [--closed]\n"
     "                  [--border FACE=LABEL] [--symmetry mirror-x|mirror-y|rotate-90|rotate-180|translate-x:N|translate-y:N]\n"
-    "                  [--connect N] [--max-steps N] [--time-limit S] [--cell SIZE] [--stats]\n";
+    "                  [--connect N] [--max-steps N] [--max-seconds S] [--cell SIZE] [--stats]\n";
 
 int usage(const std::string& msg) {
   std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kUsage);
@@ -138,9 +139,7 @@ int synthCommand(const Args& args) {
                 [&](long long v) { connectSeeds = int(v); });
     wholeOption(cl, "--max-steps", 1, INT64_MAX, "--max-steps needs a whole number from 1 to " + std::to_string(INT64_MAX),
                 [&](long long v) { o.maxAssignments = uint64_t(v); });
-    cl.option("--time-limit", [&](const std::string& s) {
-      need(toDouble(s, o.timeLimitSeconds), "--time-limit needs seconds from 0 to 1e9");
-    });
+    synthMaxSecondsFlag(cl, o.timeLimitSeconds);
     cl.option("--cell", [&](const std::string& s) {
       need(toDouble(s, cell) && cell > 0, "--cell needs a size greater than 0 and below 1e9");
     });
@@ -167,6 +166,7 @@ int synthCommand(const Args& args) {
   if (periodic) o.periodic = {true, true, false};
   if (example.empty()) return usage("no example file given");
   if (!haveSize) return usage("--size X Y Z is required");
+  if (meshOut.empty() && labelsOut.empty()) meshOut = defaultModelOutput(example);  // as fgsg run
 
   Example ex;
   Diagnostics diags;
@@ -198,18 +198,18 @@ int synthCommand(const Args& args) {
   progress.phase("synthesizing");
   SynthesisResult r = synthesize(ex, o);
   progress.done();
-  if (stats) {  // on stdout, as fgsg run --stats; messages go to stderr
-    std::fprintf(stdout,
-                 "{\"ok\":%s,\"consistent\":%s,\"size\":[%d,%d,%d],\"labels\":%d,\"seconds\":%.6f,"
-                 "\"assignments\":%llu,\"propagation_steps\":%llu,\"support_misses\":%llu,"
-                 "\"blocks\":%d,\"blocks_failed\":%d,"
-                 "\"block_retries\":%d,\"backtracks\":%llu,\"repairs\":%llu,\"attempts\":%d,\"catalog_bytes\":%zu}\n",
-                 r.ok ? "true" : "false", r.consistent ? "true" : "false", o.size.nx, o.size.ny, o.size.nz,
-                 ex.labelCount(), r.stats.seconds, (unsigned long long)r.stats.assignments,
-                 (unsigned long long)r.stats.propagationSteps, (unsigned long long)r.stats.supportMisses,
-                 r.stats.blocks, r.stats.blocksFailed,
-                 r.stats.blockRetries, (unsigned long long)r.stats.backtracks, (unsigned long long)r.stats.repairs,
-                 r.stats.attempts, r.stats.catalogBytes);
+  if (stats) {  // on stdout, as fgsg run --stats prints its figures; messages go to stderr
+    const std::pair<const char*, uint64_t> figures[] = {
+        {"consistent", r.consistent},        {"size.x", uint64_t(o.size.nx)},
+        {"size.y", uint64_t(o.size.ny)},     {"size.z", uint64_t(o.size.nz)},
+        {"labels", uint64_t(ex.labelCount())}, {"assignments", r.stats.assignments},
+        {"propagation.steps", r.stats.propagationSteps}, {"support.misses", r.stats.supportMisses},
+        {"blocks", uint64_t(r.stats.blocks)}, {"blocks.failed", uint64_t(r.stats.blocksFailed)},
+        {"block.retries", uint64_t(r.stats.blockRetries)}, {"backtracks", r.stats.backtracks},
+        {"repairs", r.stats.repairs},         {"attempts", uint64_t(r.stats.attempts)},
+        {"catalog.bytes", r.stats.catalogBytes}};
+    for (const auto& [name, value] : figures) printStat(name, value);
+    printStatSeconds("synthesize", r.stats.seconds);
   }
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E740]: synthesis failed: %s\n", example.c_str(), r.failure.message.c_str());

@@ -7,6 +7,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
+#include "cli/synth_like_run.h"
 #include "runtime/io/output_transaction.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/render/preview.h"
@@ -25,7 +26,7 @@ using namespace fgsg::rt::synthesis::continuous;
 const char* const kUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl|.glb --size X Y Z [--spacing S] [--seed N] [--block N]\n"
     "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--floating] [--connect N]\n"
-    "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--time-limit S]\n"
+    "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--max-seconds S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
 int usage(const std::string& msg) {
@@ -122,10 +123,7 @@ int continuousSynthCommand(const Args& args) {
       o.fill = CommandLine::parseNumber("--fill", s);
       need(o.fill >= 0 && o.fill <= 1, "--fill needs a number from 0 to 1");
     });
-    cl.option("--time-limit", [&](const std::string& s) {
-      o.timeLimitSeconds = CommandLine::parseNumber("--time-limit", s);
-      need(o.timeLimitSeconds > 0, "--time-limit needs seconds greater than 0");
-    });
+    synthMaxSecondsFlag(cl, o.timeLimitSeconds);
     cl.repeated("--fixed-width", [&](const std::string& s) {
       FixedWidth f;
       need(parseFixedWidth(s, f), "--fixed-width needs A,B,C:N: a face direction of the example (integers) and a width "
@@ -149,8 +147,9 @@ int continuousSynthCommand(const Args& args) {
   if (!haveSize) return usage("--size X Y Z is required");
   if (onGround && floating) return usage("--on-ground and --floating exclude each other");
   o.onGround = !floating;
+  if (meshOut.empty()) meshOut = defaultModelOutput(example);  // as fgsg run
 
-  // --time-limit counts from here: reading a large example is part of the run.
+  // --max-seconds counts from here: reading a large example is part of the run.
   rt::Deadline deadline = rt::Deadline::after(o.timeLimitSeconds);
   o.deadline = &deadline;
   ExampleSolid ex;
@@ -190,15 +189,21 @@ int continuousSynthCommand(const Args& args) {
   ContinuousResult r = synthesizeContinuous(ex, o);
   progress.done();
   const auto& s = r.stats;
-  if (stats)
-    std::fprintf(stdout,
-                 "{\"ok\":%s,\"mode\":\"continuous\",\"example_polygons\":%d,\"directions\":%d,\"labels\":%d,"
-                 "\"relations\":%d,\"vertices\":%zu,\"edges\":%zu,\"output_polygons\":%zu,\"arrangement_faces\":%zu,\"parts\":%zu,\"triangles\":%zu,"
-                 "\"blocks\":%d,\"blocks_failed\":%d,\"assignments\":%llu,\"seconds\":%.6f,"
-                 "\"compile_seconds\":%.6f,\"assign_seconds\":%.6f,\"surface_seconds\":%.6f}\n",
-                 r.ok ? "true" : "false", s.exampleFaces, s.directions, s.labels, s.relations, s.vertices, s.edges,
-                 s.outputPolygons, s.arrangementFaces, s.parts, s.triangles, s.blocks, s.blocksFailed, (unsigned long long)s.assignments, s.seconds,
-                 s.compileSeconds, s.assignSeconds, s.surfaceSeconds);
+  if (stats) {  // on stdout, as fgsg run --stats prints its figures
+    const std::pair<const char*, uint64_t> figures[] = {
+        {"example.polygons", uint64_t(s.exampleFaces)}, {"directions", uint64_t(s.directions)},
+        {"labels", uint64_t(s.labels)},                 {"relations", uint64_t(s.relations)},
+        {"vertices", s.vertices},                       {"edges", s.edges},
+        {"output.polygons", s.outputPolygons},          {"arrangement.faces", s.arrangementFaces},
+        {"parts", s.parts},                             {"triangles", s.triangles},
+        {"blocks", uint64_t(s.blocks)},                 {"blocks.failed", uint64_t(s.blocksFailed)},
+        {"assignments", s.assignments}};
+    for (const auto& [name, value] : figures) printStat(name, value);
+    printStatSeconds("synthesize", s.seconds);
+    printStatSeconds("compile", s.compileSeconds);
+    printStatSeconds("assign", s.assignSeconds);
+    printStatSeconds("surface", s.surfaceSeconds);
+  }
   if (!r.ok) {
     std::fprintf(stderr, "%s: error[E751]: continuous synthesis failed: %s\n", example.c_str(), r.error.c_str());
     return 1;

@@ -45,7 +45,8 @@ synth_usage '--attempts needs an integer 1..100000' --size 4 4 1 --attempts 0
 synth_usage '--connect needs a seed count from 1 to 100000' --size 4 4 1 --connect 100001
 synth_usage '--max-steps needs a whole number from 1 to 9223372036854775807' --size 4 4 1 --max-steps 0
 synth_usage '--symmetry is .* \(N from 1 to 1048576\)' --size 4 4 1 --symmetry translate-x:4294967297
-synth_usage '--time-limit needs seconds from 0 to 1e9' --size 4 4 1 --time-limit 1e10
+synth_usage '--max-seconds needs seconds greater than 0, at most 1e9' --size 4 4 1 --max-seconds 1e10
+synth_usage '--time-limit needs seconds greater than 0, at most 1e9' --size 4 4 1 --time-limit 1e10
 
 # The REPL's numbers too; a priority too large for an int is the compile error, not a crash.
 printf 'priority 99999999999:\n:seed 18446744073709551616\n:derive 1000001\n:quit\n' > "$tmp/session"
