@@ -5,6 +5,7 @@
 #include "backend/engine.h"
 #include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
+#include "backend/scene_starts.h"
 #include "runtime/abi.h"
 #include "cli/derive_stats.h"
 #include "ir/pipeline.h"
@@ -14,6 +15,7 @@
 #include "runtime/io/write_mesh.h"
 #include "runtime/io/write_reports.h"
 #include "runtime/out_of_resources.h"
+#include "runtime/output/scene_nodes.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -71,6 +73,10 @@ struct Result {
   rt::DeriveStats stats;
   std::string reportsJson;            // Report(key, value): what fgsg run --report writes
   std::vector<rt::PrintLine> prints;  // Print(value)
+  // What Result.scene builds the scene from (with `instances`).
+  std::shared_ptr<const rt::AssetLibrary> assets;
+  std::vector<int> meshOf;
+  std::vector<rt::output::StartInfo> starts;
 };
 
 // A view of `size` elements of `data` as a numpy array of `shape`, kept alive by `owner`.
@@ -159,7 +165,8 @@ struct Grammar {
     frontend::Diagnostics diags(&source);
     {
       py::gil_scoped_release release;  // other Python threads derive meanwhile
-      rt::AssetLibrary assets;
+      auto library = std::make_shared<rt::AssetLibrary>();
+      rt::AssetLibrary& assets = *library;
       for (const std::string& d : dataDirs) {
         assets.addSearchDir(d);
         options.assetDirs.push_back(d);
@@ -180,6 +187,9 @@ struct Grammar {
           }
           result->reportsJson = rt::io::encodeReportsJson(derived, options.lots);
           result->prints = std::move(derived.prints);
+          result->starts = backend::sceneStarts(module, options, derived);
+          result->assets = std::move(library);
+          result->meshOf = std::move(meshOf);
           result->instances = std::move(derived.instances);
           result->stats = derived.stats;
         }
@@ -323,6 +333,23 @@ PYBIND11_MODULE(_fgsg, m) {
         return rt::io::instanceParamsJson(r.instances, r.instances.instances[i]);
       })
       .def("reports_json", [](const Result& r) { return r.reportsJson; })
+      // The scene's nodes as fgsg run's glTF lays them out (runtime/output/scene_nodes.h);
+      // the package checks the names of `instancing` and `group_by`.
+      .def("scene_nodes_json", [](const Result& r, const std::string& instancing, const std::string& groupBy) {
+        rt::output::SceneInput in;
+        if (!rt::output::parseInstancing(instancing, in.instancing) || !rt::output::parseGroupBy(groupBy, in.groupBy))
+          throw py::value_error("instancing or group_by unknown");
+        in.list = &r.instances;
+        in.library = r.assets.get();
+        in.meshOf = &r.meshOf;
+        in.starts = r.starts;
+        py::gil_scoped_release release;
+        try {
+          return rt::output::sceneNodesJson(rt::output::sceneNodes(rt::output::buildScene(in)));
+        } catch (const std::bad_alloc&) {
+          throw outOfMemory("building the scene");
+        }
+      })
       .def_property_readonly("prints", [](const Result& r) {
         py::list out;
         for (const rt::PrintLine& p : r.prints) out.append(py::make_tuple(p.line, p.col, p.text));

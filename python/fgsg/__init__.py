@@ -35,7 +35,7 @@ try:
 finally:
     sys.setdlopenflags(_flags)
 
-__all__ = ["Grammar", "Result", "GrammarError", "Attr", "Annotation", "__version__"]
+__all__ = ["Grammar", "Result", "GrammarError", "Attr", "Annotation", "SceneNode", "__version__"]
 __version__ = _fgsg.__version__  # the project's version (CMakeLists.txt)
 
 
@@ -92,6 +92,23 @@ class Result:
         """Instance i's parameters as the grammar typed them (numbers, booleans, strings, vectors)."""
         return json.loads(self._native.instance_params_json(i))
 
+    def scene(self, instancing="auto", group_by="symbol"):
+        """The nodes of the glTF scene `fgsg run -o x.glb --instancing I --group-by G` writes,
+        as a list of SceneNode, a node before its children: per start shape (lot, seed,
+        axiom) a node named after it whose extras hold its "properties", "attrs" and
+        "reports"; under it a node per group; under those a node per instanced mesh (or per
+        instance with instancing="nodes", and per mirrored instance). instancing: "auto",
+        "on", "nodes" or "off"; group_by: "symbol" or "none" (rule and label groups need the
+        rule of each instance, which only fgsg run records)."""
+        if instancing not in ("auto", "on", "nodes", "off"):
+            raise ValueError(f"instancing must be 'auto', 'on', 'nodes' or 'off', got {instancing!r}")
+        if group_by not in ("symbol", "none"):
+            raise ValueError(f"group_by must be 'symbol' or 'none', got {group_by!r}")
+        nodes = json.loads(self._native.scene_nodes_json(instancing, group_by))
+        # The transform column-major in the JSON, as rows here (as `instances` gives them).
+        return [SceneNode(n["name"], n["parent"], tuple(tuple(n["transform"][4 * c + r] for c in range(4)) for r in range(4)),
+                          n["extras"], n["meshes"], n["instances"]) for n in nodes]
+
     def write(self, path):
         """Writes the mesh (.glb, .obj or .ply by the extension), atomically."""
         self._native.write(os.fspath(path))
@@ -100,6 +117,20 @@ class Result:
         stats = self.stats
         return (f"<fgsg.Result: {stats.get('triangles', 0)} triangles, {stats.get('instances', 0)} instances, "
                 f"{stats.get('shapes', 0)} shapes>")
+
+
+class SceneNode(NamedTuple):
+    """A node of Result.scene(): its `name`, `parent` (the index of its parent in the list,
+    -1 for a start shape's node), `transform` (4x4 rows, relative to the parent; the
+    identity but for a node per instance), `extras` (the glTF node's extras, a dict),
+    `meshes` (what it draws itself: baked parts, or its one shared mesh) and `instances`
+    (the instances it and its descendants draw)."""
+    name: str
+    parent: int
+    transform: tuple
+    extras: dict
+    meshes: int
+    instances: int
 
 
 class Attr(NamedTuple):

@@ -17,6 +17,14 @@ class Annotation(NamedTuple):
     args: tuple[str, ...]  # positional arguments as text
     named: dict[str, str]  # keyed arguments as text
 
+class SceneNode(NamedTuple):
+    name: str
+    parent: int  # index in the list; -1 for a start shape's node
+    transform: tuple[tuple[float, float, float, float], ...]  # 4x4 rows, relative to the parent
+    extras: dict[str, Any]
+    meshes: int
+    instances: int
+
 class GrammarError(Exception):
     diagnostics: list[dict[str, Any]]
     file: str
@@ -48,6 +56,7 @@ class Result:
     @property
     def prints(self) -> list[tuple[int, int, str]]: ...
     def instance_params(self, i: int) -> list[Any]: ...
+    def scene(self, instancing: str = ..., group_by: str = ...) -> list["SceneNode"]: ...
     def write(self, path: Union[str, os.PathLike[str]]) -> None: ...
 
 class Grammar:
