@@ -107,7 +107,7 @@ TEST_CASE("setback(3) on every edge of a 20 x 10 lot: trapezoid bands and a 14 x
         2);
 }
 
-TEST_CASE("setback selectors classify edges by the scope's quadrants; the first edge is street.front") {
+TEST_CASE("setback selectors classify edges by the scope's quadrants, street.front the front edge") {
   GeometryArena arena;
   const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
   const std::vector<unsigned> c = edgeSelectors(f);
@@ -229,7 +229,7 @@ TEST_CASE("rotateScope keeps the geometry and fits the scope around it") {
   CHECK(volume(back, arena) == Approx(4).margin(kTol));
 }
 
-TEST_CASE("alignScopeToGeometry lays x along the chosen edge; a polygon keeps z as its normal") {
+TEST_CASE("alignScopeToGeometry lays x along the chosen edge, a polygon keeps z as its normal") {
   GeometryArena arena;
   // A 10 x 5 rectangle turned by 30 degrees, its long edge first.
   const double c = std::cos(3.14159265358979323846 / 6), s = std::sin(3.14159265358979323846 / 6);
@@ -251,7 +251,7 @@ TEST_CASE("alignScopeToGeometry lays x along the chosen edge; a polygon keeps z 
   CHECK_FALSE(alignScopeToGeometry(rect.scope, rect.geom, arena, 2, 3, 0, out, error));  // one face only
 }
 
-TEST_CASE("mirrorScope flips axes around the geometry; mirror flips the geometry in its scope") {
+TEST_CASE("mirrorScope flips axes around the geometry, mirror flips the geometry in its scope") {
   GeometryArena arena;
   Scope s;
   s.S = Vec3(4, 2, 1);
