@@ -29,8 +29,9 @@ std::vector<ir::OpKind> CgaCommands::kinds() const {
 }
 
 void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
-  // A `.cga` lot (a ground face) goes to extrude, offset and the roofs as fgsg's polygon.
-  const bool ground = (op.kind == ir::OpKind::Extrude || op.kind == ir::OpKind::Offset || op.kind == ir::OpKind::Roof) &&
+  // A `.cga` lot (a ground face) goes to offset and the roofs as fgsg's polygon (extrude
+  // takes it as it is).
+  const bool ground = (op.kind == ir::OpKind::Offset || op.kind == ir::OpKind::Roof) &&
                       rt::cga::isGroundFace(st.geom, d_.arena());
   rt::Scope scope = st.scope;
   rt::GeomRef geom = st.geom;

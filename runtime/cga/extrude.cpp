@@ -1,5 +1,6 @@
 // Extrude: grows a footprint (a flat box or a polygon) into a solid.
 #include "runtime/cga/cga.h"
+#include "runtime/cga/ground_face.h"
 #include "runtime/cga/polygon_clip.h"
 
 #include <algorithm>
@@ -12,8 +13,9 @@ namespace fgsg::rt::cga {
 // A polygon becomes a prism whose scope stands on the polygon (solidFrameOnPolygon: Y is
 // the polygon's normal, so buildings on polygon footprints are Y-up like box buildings);
 // its faces are the sides in the polygon's edge order (none along a courtyard's bridge),
-// then the top, then the bottom. A
-// unit-square polygon gives a Box, which is the same solid, with no arena use.
+// then the top, then the bottom. A `.cga` lot (a ground face, ground_face.h) is the base
+// of its prism in its own scope. A unit-square polygon (a rectangular lot) gives a Box,
+// which is the same solid, with no arena use.
 bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena,
              Part& out, std::string& error) {
   if (!(height > 0.0) || !std::isfinite(height)) {
@@ -28,21 +30,35 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
     out.scope.S.y() = height;
     return true;
   }
-  if (geom.kind != GeomKind::Polygon) {
+  Polygon3 base;
+  if (isGroundFace(geom, arena)) {
+    // A `.cga` lot already lies in its solid's frame: its face is the base as it is
+    // (through fgsg's polygon frame each corner would be rounded twice, 1 - (1 - z)).
+    out.scope = scope;
+    out.scope.S.y() = height;
+    const GeometryArena::Face& f = arena.face(geom, 0);
+    base.assign(arena.facePoints(f), arena.facePoints(f) + f.count);
+    Polygon3 square;  // a rectangle is a Box, as a unit-square polygon is
+    for (const Vec3& p : base) square.emplace_back(p.x(), 1.0 - p.z(), 0.0);
+    if (isUnitSquare(square.data(), square.size())) {
+      out.geom = GeomRef{};
+      return true;
+    }
+  } else if (geom.kind != GeomKind::Polygon) {
     error = "Extrude: expects a polygon or a flat box (a footprint), got a solid or an edge";
     return false;
-  }
-  out.scope = solidFrameOnPolygon(scope);
-  out.scope.S.y() = height;
-  if (isUnitSquare(arena.polygon(geom), geom.count)) return true;
+  } else {
+    out.scope = solidFrameOnPolygon(scope);
+    out.scope.S.y() = height;
+    if (isUnitSquare(arena.polygon(geom), geom.count)) return true;
 
-  // Polygon (x, y) lies at (x, 0, 1 - y) of the solid's frame (see solidFrameOnPolygon).
-  const bool flat = scope.S.y() <= 0.0;
-  Polygon3 base;
-  base.reserve(geom.count);
-  for (uint32_t i = 0; i < geom.count; ++i) {
-    const Vec3& p = arena.polygon(geom)[i];
-    base.emplace_back(p.x(), 0.0, flat ? 0.0 : 1.0 - p.y());
+    // Polygon (x, y) lies at (x, 0, 1 - y) of the solid's frame (see solidFrameOnPolygon).
+    const bool flat = scope.S.y() <= 0.0;
+    base.reserve(geom.count);
+    for (uint32_t i = 0; i < geom.count; ++i) {
+      const Vec3& p = arena.polygon(geom)[i];
+      base.emplace_back(p.x(), 0.0, flat ? 0.0 : 1.0 - p.y());
+    }
   }
   // The polygon is counter-clockwise about its normal (+Y here); repair a clockwise one
   // so the solid is not inside out.
