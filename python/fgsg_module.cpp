@@ -10,12 +10,14 @@
 #include "cli/derive_stats.h"
 #include "ir/pipeline.h"
 #include "runtime/assemble.h"
+#include "runtime/io/png_encode.h"
 #include "runtime/io/read_lots.h"
 #include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/io/write_reports.h"
 #include "runtime/out_of_resources.h"
 #include "runtime/output/scene_nodes.h"
+#include "runtime/render/preview.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -363,6 +365,23 @@ PYBIND11_MODULE(_fgsg, m) {
           d[py::str(name)] = value;
         return d;
       })
+      // fgsg run --preview's picture as PNG bytes (Result._repr_html_ shows it in Jupyter).
+      .def("preview_png", [](const Result& r, int width, int height) {
+        if (width < 1 || height < 1 || width > 8192 || height > 8192)
+          throw py::value_error("preview width and height must be from 1 to 8192, got " + std::to_string(width) +
+                                " x " + std::to_string(height));
+        std::string png;
+        {
+          py::gil_scoped_release unlocked;  // the ray casting may take a while; other threads go on
+          rt::render::PreviewOptions options;
+          options.width = width;
+          options.height = height;
+          const rt::render::Image image = rt::render::renderImage(r.mesh, options);
+          if (!rt::io::encodePng(image.width, image.height, 3, image.rgb.data(), png)) png.clear();
+        }
+        if (png.empty()) throw std::runtime_error("the preview could not be encoded as PNG");
+        return py::bytes(png);
+      }, py::arg("width"), py::arg("height"))
       .def("write", [](const Result& r, const std::string& path) {
         std::string error;
         try {

@@ -11,6 +11,8 @@ Grammars that do not compile, and derivations that fail, raise GrammarError with
 file, line, column, code and message of the first error. generate() releases the GIL:
 threads derive in parallel.
 """
+import base64
+import html
 import json
 import math
 import numbers
@@ -113,6 +115,21 @@ class Result:
         """Writes the mesh (.glb, .obj or .ply by the extension), atomically."""
         self._native.write(os.fspath(path))
 
+    def preview_png(self, width=800, height=600):
+        """The picture `fgsg run --preview` draws of the mesh, as PNG bytes."""
+        return self._native.preview_png(_whole("width", width, 8192), _whole("height", height, 8192))
+
+    def _repr_html_(self):
+        """Jupyter's view: the preview inline (a base64 PNG) when there is a mesh to draw,
+        else a table of the stats."""
+        stats = self.stats
+        if stats.get("triangles", 0) or stats.get("lines", 0):
+            data = base64.b64encode(self.preview_png(480, 360)).decode("ascii")
+            return (f'<img src="data:image/png;base64,{data}" width="480" height="360" '
+                    f'alt="{html.escape(repr(self))}"/>')
+        rows = "".join(f"<tr><td>{html.escape(name)}</td><td>{value}</td></tr>" for name, value in stats.items())
+        return f"<table><caption>{html.escape(repr(self))}</caption>{rows}</table>"
+
     def __repr__(self):
         stats = self.stats
         return (f"<fgsg.Result: {stats.get('triangles', 0)} triangles, {stats.get('instances', 0)} instances, "
@@ -133,12 +150,69 @@ class SceneNode(NamedTuple):
     instances: int
 
 
-class Attr(NamedTuple):
-    """A grammar's attribute: its `name`, `kind` ("num", "bool", "str" or "vec3") and
-    `default` (a float, bool, str or a tuple of 3 floats)."""
+class _AttrFields(NamedTuple):
     name: str
     kind: str
     default: object
+
+
+def _number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+class Attr(_AttrFields):
+    """A grammar's attribute: its `name`, `kind` ("num", "bool", "str" or "vec3") and
+    `default` (a float, bool, str or a tuple of 3 floats) — the tuple (name, kind, default)
+    it always was, so equality and unpacking are unchanged — and its `annotations` (a
+    .cga file's @Range, @Enum ... as Annotation; [] for every .fgsg attribute, which has
+    none), with what they say: `range` (min, max) floats from @Range(min=, max=) or
+    @Range(lo, hi), `step` from @Range's stepsize, `enum` the tuple of @Enum's values
+    (floats for a num attribute, else text); None where not annotated."""
+
+    annotations = ()  # _make and _replace build an Attr without them
+
+    def __new__(cls, name, kind, default, annotations=()):
+        self = super().__new__(cls, name, kind, default)
+        self.annotations = list(annotations)
+        return self
+
+    def _first(self, name):
+        return next((a for a in self.annotations if a.name == name), None)
+
+    @property
+    def range(self):
+        note = self._first("Range")
+        if note is None:
+            return None
+        low, high = note.named.get("min"), note.named.get("max")
+        if low is None and high is None and len(note.args) >= 2:
+            low, high = note.args[0], note.args[1]
+        low, high = _number(low) if low is not None else None, _number(high) if high is not None else None
+        return None if low is None or high is None else (low, high)
+
+    @property
+    def step(self):
+        note = self._first("Range")
+        step = note.named.get("stepsize") if note is not None else None
+        return None if step is None else _number(step)
+
+    @property
+    def enum(self):
+        note = self._first("Enum")
+        if note is None:
+            return None
+        if self.kind == "num":
+            values = tuple(_number(v) for v in note.args)
+            return None if None in values else values
+        return tuple(note.args)
+
+    def __repr__(self):
+        extra = "".join(f", {key}={value!r}" for key, value in
+                        (("range", self.range), ("step", self.step), ("enum", self.enum)) if value is not None)
+        return f"Attr(name={self.name!r}, kind={self.kind!r}, default={self.default!r}{extra})"
 
 
 class Annotation(NamedTuple):
@@ -256,8 +330,10 @@ class Grammar:
     @property
     def attrs(self):
         """The grammar's attributes (settable in generate), in declaration order: a dict
-        of name -> Attr(name, kind, default)."""
-        return {name: Attr(name, kind, default) for name, kind, default in self._native.attrs}
+        of name -> Attr(name, kind, default) with its annotations and their range, step
+        and enum (iterating gives the names, as it always did)."""
+        notes = self.attr_annotations
+        return {name: Attr(name, kind, default, notes.get(name, ())) for name, kind, default in self._native.attrs}
 
     @property
     def attr_annotations(self):

@@ -7,10 +7,19 @@ import numpy.typing as npt
 
 __version__: str
 
-class Attr(NamedTuple):
+class Attr(NamedTuple):  # a tuple of these three, with more as attributes
     name: str
     kind: str  # "num", "bool", "str" or "vec3"
     default: Union[float, bool, str, tuple[float, float, float]]
+    def __new__(cls, name: str, kind: str, default: Any, annotations: Sequence["Annotation"] = ...) -> "Attr": ...
+    @property
+    def annotations(self) -> list["Annotation"]: ...
+    @property
+    def range(self) -> Optional[tuple[float, float]]: ...  # @Range(min=, max=)
+    @property
+    def step(self) -> Optional[float]: ...  # @Range(stepsize=)
+    @property
+    def enum(self) -> Optional[tuple[Union[float, str], ...]]: ...  # @Enum(...)
 
 class Annotation(NamedTuple):
     name: str  # "Range", "Enum", "Hidden", "Group", "Order", "Description" ...
@@ -58,6 +67,8 @@ class Result:
     def instance_params(self, i: int) -> list[Any]: ...
     def scene(self, instancing: str = ..., group_by: str = ...) -> list["SceneNode"]: ...
     def write(self, path: Union[str, os.PathLike[str]]) -> None: ...
+    def preview_png(self, width: int = ..., height: int = ...) -> bytes: ...
+    def _repr_html_(self) -> str: ...
 
 class Grammar:
     @classmethod
