@@ -7,6 +7,7 @@
 #include "backend/derive_messages.h"
 #include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
+#include "backend/scene_starts.h"
 #include "frontend/diagnostics.h"
 #include "ir/pipeline.h"
 #include "runtime/io/cache_folder.h"
@@ -19,6 +20,7 @@
 #include "runtime/io/write_reports.h"
 #include "runtime/memory_budget.h"
 #include "runtime/out_of_resources.h"
+#include "runtime/output/scene_nodes.h"
 
 #include <cerrno>
 #include <cmath>
@@ -74,6 +76,10 @@ struct fgsg_generator {
   std::vector<double> transforms;
   std::vector<uint32_t> instanceAssets;
   std::string reportsJson;  // fgsg_reports_json
+  // fgsg_scene_node_*: the scene is built from these on the first call after a generation.
+  std::vector<int> meshOf;
+  std::vector<fgsg::rt::output::StartInfo> starts;
+  mutable std::optional<std::vector<fgsg::rt::output::SceneNodeInfo>> sceneNodes;
   std::string prints;       // fgsg_prints: also after a failed generation
 };
 
@@ -280,6 +286,9 @@ void clearResult(fgsg_generator* g) {
   g->transforms.clear();
   g->instanceAssets.clear();
   g->reportsJson.clear();
+  g->meshOf.clear();
+  g->starts.clear();
+  g->sceneNodes.reset();
   g->assets.reset();
   g->warnings = g->compileWarnings;
 }
@@ -340,6 +349,8 @@ bool generate(fgsg_generator* g, std::string& error) {
     g->instanceAssets.push_back(inst.asset);
   }
   g->reportsJson = rt::io::encodeReportsJson(result, opt.lots);
+  g->starts = backend::sceneStarts(g->module, opt, result);
+  g->meshOf = std::move(meshOf);
   g->result = std::move(result);
   g->assets = std::move(assets);
   g->hasResult = true;
@@ -584,6 +595,57 @@ FGSG_API int fgsg_report(const fgsg_generator* g, size_t i, uint32_t* start, con
   if (number) *number = r.value.number;
   if (text) *text = r.value.text.c_str();
   return 0;
+}
+
+namespace {
+
+// The scene's nodes (--instancing auto --group-by symbol), built on first use; NULL before
+// a generation, or when building it runs out of memory.
+const fgsg::rt::output::SceneNodeInfo* sceneNode(const fgsg_generator* g, size_t i) {
+  if (!g || !g->hasResult) return nullptr;
+  if (!g->sceneNodes) {
+    try {
+      fgsg::rt::output::SceneInput in;
+      in.list = &g->result.instances;
+      in.library = g->assets.get();
+      in.meshOf = &g->meshOf;
+      in.starts = g->starts;
+      g->sceneNodes = fgsg::rt::output::sceneNodes(fgsg::rt::output::buildScene(in));
+    } catch (...) {
+      return nullptr;
+    }
+  }
+  return i < g->sceneNodes->size() ? &(*g->sceneNodes)[i] : nullptr;
+}
+
+}  // namespace
+
+FGSG_API size_t fgsg_scene_node_count(const fgsg_generator* g) {
+  return sceneNode(g, 0) ? g->sceneNodes->size() : 0;
+}
+FGSG_API const char* fgsg_scene_node_name(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->name.c_str() : nullptr;
+}
+FGSG_API int64_t fgsg_scene_node_parent(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->parent : -1;
+}
+FGSG_API const double* fgsg_scene_node_transform(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->transform.data() : nullptr;
+}
+FGSG_API const char* fgsg_scene_node_extras_json(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->extras.c_str() : nullptr;
+}
+FGSG_API size_t fgsg_scene_node_meshes(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->meshes : 0;
+}
+FGSG_API size_t fgsg_scene_node_instances(const fgsg_generator* g, size_t i) {
+  const auto* n = sceneNode(g, i);
+  return n ? n->instances : 0;
 }
 
 FGSG_API const char* fgsg_prints(const fgsg_generator* g) { return g ? g->prints.c_str() : ""; }

@@ -144,6 +144,29 @@ FGSG_API size_t fgsg_report_count(const fgsg_generator* g);
 FGSG_API int fgsg_report(const fgsg_generator* g, size_t i, uint32_t* start, const char** key, int* kind,
                          double* number, const char** text);
 
+/* The scene of the last successful fgsg_generate as `fgsg run -o x.glb` lays it out
+ * (--instancing auto --group-by symbol): its nodes, each before its children. Per start
+ * shape (a lot of the "lots" option, named after its feature id, else "feature N"; else the
+ * one "axiom") a node whose extras hold "start", "instances", the lot's "properties", the
+ * grammar attrs' values it derived with ("attrs") and its reports by key ("reports", as
+ * fgsg_reports_json gives them); under it a node per symbol; under those a node per mesh
+ * shared by instances (EXT_mesh_gpu_instancing) and per mirrored instance. For index
+ * 0 .. count-1 (built on the first call after fgsg_generate, valid until the next one):
+ *   fgsg_scene_node_name         the glTF node's name (NULL out of range)
+ *   fgsg_scene_node_parent       its parent's index; -1 for a start shape's (and out of range)
+ *   fgsg_scene_node_transform    16 doubles, column-major, relative to the parent: the
+ *                                identity but for a node per instance (NULL out of range)
+ *   fgsg_scene_node_extras_json  the glTF node's extras, a JSON object (NULL out of range)
+ *   fgsg_scene_node_meshes       the meshes it draws itself (baked parts, or its shared one)
+ *   fgsg_scene_node_instances    the instances it and its descendants draw */
+FGSG_API size_t fgsg_scene_node_count(const fgsg_generator* g);
+FGSG_API const char* fgsg_scene_node_name(const fgsg_generator* g, size_t index);
+FGSG_API int64_t fgsg_scene_node_parent(const fgsg_generator* g, size_t index);
+FGSG_API const double* fgsg_scene_node_transform(const fgsg_generator* g, size_t index);
+FGSG_API const char* fgsg_scene_node_extras_json(const fgsg_generator* g, size_t index);
+FGSG_API size_t fgsg_scene_node_meshes(const fgsg_generator* g, size_t index);
+FGSG_API size_t fgsg_scene_node_instances(const fgsg_generator* g, size_t index);
+
 /* The lines the grammar's Print(value) wrote in the last fgsg_generate (also a failed
  * one), each "file:line:col: print: text\n" as fgsg run writes them to stderr; "" when none. */
 FGSG_API const char* fgsg_prints(const fgsg_generator* g);

@@ -558,3 +558,57 @@ TEST_CASE("Report and Print read through fgsg_reports_json, fgsg_report and fgsg
   CHECK(std::string(fgsg_reports_json(nullptr)).empty());
   CHECK(std::string(fgsg_prints(nullptr)).empty());
 }
+
+TEST_CASE("the scene's nodes read through fgsg_scene_node_*, with each lot's attrs and reports", "[c_api][compiled]") {
+  // Lot A 20 x 10 m, 12 m high; lot B 12 x 8 m without an id, 5 m high (#45).
+  const fs::path lots = scratchDir() / "scene_lots.geojson";
+  std::ofstream(lots) << "{\"type\": \"FeatureCollection\", \"crs\": {\"type\": \"name\", \"properties\": "
+                         "{\"name\": \"urn:fgsg:local-metres\"}}, \"features\": ["
+                         "{\"type\": \"Feature\", \"id\": \"A\", \"properties\": {\"height\": 12}, \"geometry\": "
+                         "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [20, 0], [20, 10], [0, 10], [0, 0]]]}},"
+                         "{\"type\": \"Feature\", \"properties\": {\"height\": 5, \"use\": \"x y\"}, \"geometry\": "
+                         "{\"type\": \"Polygon\", \"coordinates\": [[[30, 0], [42, 0], [42, 8], [30, 8], [30, 0]]]}}]}";
+  const fs::path grammar = scratchDir() / "scene.fgsg";
+  std::ofstream(grammar) << "attr height = 0;\nattr flat = false;\n"
+                            "Lot ~> Report(\"lot.area\", Lot.area) Extrude(height) Comp(\"sidefaces\"){ Wall };\n"
+                            "Wall ~> Report(\"tall\", Scope.sy > 10) W;\n";
+  Generator g(compileAndLoad(grammar));
+  CHECK(fgsg_scene_node_count(g) == 0);  // nothing generated yet
+  REQUIRE(fgsg_set_option(g, "lots", lots.c_str()) == 0);
+  REQUIRE(fgsg_set_attribute(g, "flat", "true") == 0);
+  REQUIRE(fgsg_generate(g) == 0);
+  // Per lot its node and a node for its symbol W (the walls baked: four are too few to share).
+  REQUIRE(fgsg_scene_node_count(g) == 4);
+  const char* names[] = {"A", "W", "feature 1", "W"};
+  const int64_t parents[] = {-1, 0, -1, 2};
+  const size_t meshes[] = {0, 1, 0, 1};
+  for (size_t i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    CHECK(std::string(fgsg_scene_node_name(g, i)) == names[i]);
+    CHECK(fgsg_scene_node_parent(g, i) == parents[i]);
+    CHECK(fgsg_scene_node_meshes(g, i) == meshes[i]);
+    CHECK(fgsg_scene_node_instances(g, i) == 4);
+    const double* m = fgsg_scene_node_transform(g, i);
+    REQUIRE(m != nullptr);
+    for (int k = 0; k < 16; ++k) CHECK(m[k] == (k % 5 == 0 ? 1.0 : 0.0));
+  }
+  CHECK(std::string(fgsg_scene_node_extras_json(g, 0)) ==
+        "{\"attrs\":{\"flat\":true,\"height\":12},\"instances\":4,\"properties\":{\"height\":12},"
+        "\"reports\":{\"lot.area\":{\"average\":200,\"count\":1,\"max\":200,\"min\":200,\"nnz\":1,\"sum\":200,"
+        "\"values\":[200]},\"tall\":{\"average\":1,\"count\":4,\"max\":1,\"min\":1,\"nnz\":4,\"sum\":4,"
+        "\"values\":[true,true,true,true]}},\"start\":0}");
+  CHECK(std::string(fgsg_scene_node_extras_json(g, 2)) ==
+        "{\"attrs\":{\"flat\":true,\"height\":5},\"instances\":4,\"properties\":{\"height\":5,\"use\":\"x y\"},"
+        "\"reports\":{\"lot.area\":{\"average\":96,\"count\":1,\"max\":96,\"min\":96,\"nnz\":1,\"sum\":96,"
+        "\"values\":[96]},\"tall\":{\"average\":0,\"count\":4,\"max\":0,\"min\":0,\"nnz\":0,\"sum\":0,"
+        "\"values\":[false,false,false,false]}},\"start\":1}");
+  CHECK(std::string(fgsg_scene_node_extras_json(g, 1)) == "{\"baked\":{\"quad\":4},\"instances\":4}");
+  // Out of range, and NULL.
+  CHECK(fgsg_scene_node_name(g, 4) == nullptr);
+  CHECK(fgsg_scene_node_parent(g, 4) == -1);
+  CHECK(fgsg_scene_node_transform(g, 4) == nullptr);
+  CHECK(fgsg_scene_node_extras_json(g, 4) == nullptr);
+  CHECK(fgsg_scene_node_instances(g, 4) == 0);
+  CHECK(fgsg_scene_node_count(nullptr) == 0);
+  CHECK(fgsg_scene_node_name(nullptr, 0) == nullptr);
+}
