@@ -161,6 +161,8 @@ def check(expect, instances_doc, reports_doc, stderr, problems):
 
 def run_one(fgsg, folder, name, work):
     cga = os.path.join(folder, name + ".cga")
+    if not os.path.exists(cga) and os.path.exists(os.path.join(folder, name + ".fgsg")):
+        cga = os.path.join(folder, name + ".fgsg")  # the same checks for fgsg's dialect
     with open(os.path.join(folder, name + ".expect.json"), encoding="utf-8") as f:
         expect = json.load(f)
     outputs, problems = {}, []
