@@ -307,7 +307,25 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     ExprPtr d = expr(argCtx[0], env);
     if (!d) return;
     if (d->kind == ExprKind::Number && d->number >= 0) {
-      notSupported(rangeOf(argCtx[0]), "an outward offset (a distance >= 0)");
+      // Outward (issue #44): Setback(-d){ remainder: the grown polygon | all=: the band around it }.
+      flushInsert();
+      Item item = command("Setback", at);
+      d->number = -d->number;
+      item.args.push_back(std::move(d));
+      if (part == "border") {
+        restAsBody(item, "all=");
+      } else {
+        Successor band;  // every edge moves out; the band itself makes nothing
+        band.range = at;
+        band.selector = "all=";
+        band.epsilon = true;
+        item.hasBody = true;
+        item.body.push_back(std::move(band));
+        restAsBody(item, "remainder");
+      }
+      push(std::move(item));
+      seq.createsShapes = true;
+      seq.done = true;
       return;
     }
     flushInsert();

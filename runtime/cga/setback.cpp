@@ -157,13 +157,21 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
   double extent = 0;
   for (const Vec2& q : p) extent = std::max(extent, (q - p[0]).norm());
   const double eps = 1e-9 * std::max(extent, 1.0);
-  for (size_t i = 0; i < n; ++i)
-    if (!(distance[i] >= 0) || !std::isfinite(distance[i])) {
+  // Negative distances move edges outward (CGA's offset(+d)); one direction for all edges.
+  bool inward = false, outward = false;
+  for (size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(distance[i])) {
       std::ostringstream m;
-      m << "Setback: the distance " << distance[i] << " of edge " << i << " must be a finite number >= 0";
+      m << "Setback: the distance " << distance[i] << " of edge " << i << " is not a finite number";
       error = m.str();
       return false;
     }
+    inward |= distance[i] > 0, outward |= distance[i] < 0;
+  }
+  if (inward && outward) {
+    error = "Setback: some edges would move in and others out (distances of both signs)";
+    return false;
+  }
   // Each edge's line moved inward; the remainder's corner i where lines i - 1 and i meet.
   std::vector<Vec2> t(n), a(n), q(n);
   for (size_t i = 0; i < n; ++i) {
@@ -198,7 +206,7 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
         return false;
       }
     }
-  auto setBack = [&](size_t i) { return group[i] >= 0 && distance[i] > 0; };
+  auto setBack = [&](size_t i) { return group[i] >= 0 && distance[i] != 0; };
   auto add = [&](const std::vector<Vec2>& ring, const std::vector<std::vector<Vec2>>& holes, int g) {
     const std::vector<Vec2> r = distinct(ring, eps);
     if (r.size() < 3 || !(std::abs(twiceRingArea(r)) > eps * eps)) return true;
@@ -212,8 +220,11 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
   bool around = n > 0 && setBack(0) && merged[size_t(group[0])];
   for (size_t i = 0; i < n && around; ++i) around = setBack(i) && group[i] == group[0];
   if (around) {
-    std::vector<Vec2> hole(q.rbegin(), q.rend());
-    if (!add(p, {hole}, group[0])) return false;
+    // The band around the remainder (inward) or around the polygon (outward).
+    const std::vector<Vec2>& outer = outward ? q : p;
+    const std::vector<Vec2>& inner = outward ? p : q;
+    std::vector<Vec2> hole(inner.rbegin(), inner.rend());
+    if (!add(outer, {hole}, group[0])) return false;
   } else {
     for (size_t i = 0; i < n; ++i) {
       if (!setBack(i)) continue;

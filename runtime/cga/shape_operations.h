@@ -85,8 +85,10 @@ unsigned edgeSelectorMask(const std::string& label);
 // where neighbouring bands meet) is one piece; with merged[group] the bands of consecutive
 // edges of a group are one piece (all of them around the polygon: a ring with the
 // remainder as its hole). `remainder` gets the polygon left inside (one piece). Every
-// piece keeps the polygon's axes, its scope fitted to it. Fails when a distance makes an
-// edge vanish (the band of a neighbour swallows it) or the remainder cross itself.
+// piece keeps the polygon's axes, its scope fitted to it. Negative distances move the edges
+// outward (CGA's offset(+d)): the remainder is then the grown polygon and the bands lie
+// around the polygon. Fails when a distance makes an edge vanish (the band of a neighbour
+// swallows it), the remainder cross itself, or distances have both signs.
 bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, const std::vector<int>& group,
              const std::vector<bool>& merged, GeometryArena& arena, std::vector<Part>& pieces,
              std::vector<int>& pieceGroup, std::vector<Part>& remainder, std::string& error);

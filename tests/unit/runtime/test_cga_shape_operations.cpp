@@ -61,7 +61,7 @@ const std::vector<Vec2> kRect20x10{{0, 0}, {20, 0}, {20, 10}, {0, 10}};
 void setbackAll(const FlatPolygon& f, const std::vector<double>& d, bool merged, GeometryArena& arena,
                 std::vector<Part>& pieces, std::vector<Part>& rest) {
   std::vector<int> group(d.size());
-  for (size_t i = 0; i < d.size(); ++i) group[i] = d[i] > 0 ? 0 : -1;
+  for (size_t i = 0; i < d.size(); ++i) group[i] = d[i] != 0 ? 0 : -1;
   std::vector<int> pieceGroup;
   std::string error;
   REQUIRE(setback(f, d, group, {merged}, arena, pieces, pieceGroup, rest, error));
@@ -179,7 +179,27 @@ TEST_CASE("setback refuses distances that make an edge vanish") {
   std::string error;
   CHECK_FALSE(setback(f, {6, 6, 6, 6}, {0, 0, 0, 0}, {false}, arena, pieces, pieceGroup, rest, error));
   CHECK(error.find("vanish") != std::string::npos);
-  CHECK_FALSE(setback(f, {-1, 0, 0, 0}, {0, 0, 0, 0}, {false}, arena, pieces, pieceGroup, rest, error));
+  CHECK_FALSE(setback(f, {-1, 1, 0, 0}, {0, 0, 0, 0}, {false}, arena, pieces, pieceGroup, rest, error));
+  CHECK(error.find("both signs") != std::string::npos);
+}
+
+TEST_CASE("negative setback distances grow the polygon outward (CGA's offset(+d))") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  std::vector<Part> pieces, rest;
+  // 2 m all round: a 24 x 14 polygon (336 m2), the band around the lot 336 - 200 = 136 m2.
+  setbackAll(f, {-2, -2, -2, -2}, true, arena, pieces, rest);
+  REQUIRE(rest.size() == 1);
+  CHECK(area(rest[0], arena) == Approx(336).margin(kTol));
+  CHECK(near(rest[0].scope.S, Vec3(24, 14, 0)));
+  REQUIRE(pieces.size() == 1);
+  CHECK(area(pieces[0], arena) == Approx(136).margin(kTol));
+  // Per edge: trapezoids (20 + 24) / 2 * 2 = 44 and (10 + 14) / 2 * 2 = 24.
+  setbackAll(f, {-2, -2, -2, -2}, false, arena, pieces, rest);
+  REQUIRE(pieces.size() == 4);
+  double sum = 0;
+  for (const Part& p : pieces) sum += area(p, arena);
+  CHECK(sum == Approx(136).margin(kTol));
 }
 
 TEST_CASE("innerRectangle: the largest rectangle along the scope or along an edge") {
