@@ -30,7 +30,7 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
   std::vector<double> distance(edges, 0.0);
   std::vector<int> group(edges, -1);
   std::vector<bool> merged(labels.size(), false);
-  if (name == "Setback") {
+  if (name == "Setback" || name == "SetbackToArea") {
     for (size_t k = 0; k < labels.size(); ++k) merged[k] = !labels[k].empty() && labels[k].back() == '=';
     for (size_t i = 0; i < edges; ++i)
       for (size_t k = 0; k < labels.size(); ++k)
@@ -54,6 +54,14 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
       for (const auto& [mask, width] : wings)
         if (classes[i] & mask) distance[i] = width, group[i] = width > 0 ? shape : -1;
   }
+  if (name == "SetbackToArea") {
+    // One distance for the selected edges, chosen so that the remainder has the area asked for.
+    std::vector<bool> selected(edges);
+    for (size_t i = 0; i < edges; ++i) selected[i] = group[i] >= 0;
+    double d = 0;
+    if (!rt::cga::setbackDistanceForArea(polygon, selected, a[0], d, error)) throw DeriveError{op.loc, "R002", error};
+    for (size_t i = 0; i < edges; ++i) distance[i] = selected[i] ? d : 0.0;
+  }
   std::vector<rt::cga::Part> pieces, remainder;
   std::vector<int> pieceGroup;
   if (!rt::cga::setback(polygon, distance, group, merged, d.arena(), pieces, pieceGroup, remainder, error))
@@ -75,7 +83,7 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
 void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex,
                          Frame& f) {
   const std::string& name = d.module().strings[op.str];
-  if (name == "Setback" || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {
+  if (name.rfind("Setback", 0) == 0 || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {
     setbackParts(d, op, name, a, st, ex, f);
     return;
   }

@@ -28,6 +28,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"alignScopeToAxes", "AlignScopeToAxes"}, {"alignScopeToGeometry", "AlignScopeToGeometry"},
       {"rotateScope", "RotateScope"},           {"mirrorScope", "MirrorScope"},
       {"mirror", "Mirror"},                     {"setback", "Setback"},
+      {"setbackToArea", "SetbackToArea"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},
@@ -95,7 +96,7 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
   if (!op->splitBody()) {
     if (takesBody && info.body != BodyRule::Optional) {
       error("E018", at, "'" + name + "' needs its parts: " + name + "(...){ " +
-                            (fgsgName == "Setback" ? "front" : "shape") + " : A | remainder : B }");
+                            (fgsgName.rfind("Setback", 0) == 0 ? "front" : "shape") + " : A | remainder : B }");
       return true;
     }
     item = std::move(made);
@@ -113,7 +114,8 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
       continue;
     }
     const std::string sel = selectorWord(sized->key);
-    std::string label = fgsgName == "Setback" ? setbackLabel(sel) : (sel == "shape" || sel == "remainder") ? sel : "";
+    const bool edges = fgsgName == "Setback" || fgsgName == "SetbackToArea";
+    std::string label = edges ? setbackLabel(sel) : (sel == "shape" || sel == "remainder") ? sel : "";
     if (label.empty() || (fgsgName == "InnerRectangle" && label == "remainder")) {
       notSupported(rangeOf(sized->key), "the selector '" + sized->key->getText() + "' of " + name);
       continue;

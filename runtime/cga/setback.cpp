@@ -146,34 +146,14 @@ unsigned edgeSelectorMask(const std::string& label) {
   return 0;
 }
 
-bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, const std::vector<int>& group,
-             const std::vector<bool>& merged, GeometryArena& arena, std::vector<Part>& pieces,
-             std::vector<int>& pieceGroup, std::vector<Part>& remainder, std::string& error) {
-  pieces.clear();
-  pieceGroup.clear();
-  remainder.clear();
-  const std::vector<Vec2>& p = polygon.ring;
+// The remainder's corners: each edge's line moved inward by its distance, corner i where
+// lines i - 1 and i meet. False when an edge would vanish or the remainder cross itself.
+static bool insetCorners(const std::vector<Vec2>& p, const std::vector<double>& distance, double eps,
+                         std::vector<Vec2>& q, std::string& error) {
   const size_t n = p.size();
-  double extent = 0;
-  for (const Vec2& q : p) extent = std::max(extent, (q - p[0]).norm());
-  const double eps = 1e-9 * std::max(extent, 1.0);
-  // Negative distances move edges outward (CGA's offset(+d)); one direction for all edges.
-  bool inward = false, outward = false;
-  for (size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(distance[i])) {
-      std::ostringstream m;
-      m << "Setback: the distance " << distance[i] << " of edge " << i << " is not a finite number";
-      error = m.str();
-      return false;
-    }
-    inward |= distance[i] > 0, outward |= distance[i] < 0;
-  }
-  if (inward && outward) {
-    error = "Setback: some edges would move in and others out (distances of both signs)";
-    return false;
-  }
   // Each edge's line moved inward; the remainder's corner i where lines i - 1 and i meet.
-  std::vector<Vec2> t(n), a(n), q(n);
+  std::vector<Vec2> t(n), a(n);
+  q.assign(n, Vec2::Zero());
   for (size_t i = 0; i < n; ++i) {
     t[i] = (p[(i + 1) % n] - p[i]).normalized();
     a[i] = p[i] + distance[i] * Vec2(-t[i].y(), t[i].x());
@@ -206,6 +186,75 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
         return false;
       }
     }
+  return true;
+}
+
+bool setbackDistanceForArea(const FlatPolygon& polygon, const std::vector<bool>& selected, double area,
+                            double& distance, std::string& error) {
+  const std::vector<Vec2>& p = polygon.ring;
+  double extent = 0;
+  for (const Vec2& x : p) extent = std::max(extent, (x - p[0]).norm());
+  const double eps = 1e-9 * std::max(extent, 1.0);
+  const double whole = twiceRingArea(p) / 2;
+  if (!(area > 0) || !(area < whole)) {
+    std::ostringstream m;
+    m << "setbackToArea: the area " << area << " must be above 0 and below the polygon's " << whole;
+    error = m.str();
+    return false;
+  }
+  // The remainder shrinks as the distance grows: bisect for the distance that leaves `area`.
+  auto remainderArea = [&](double d) {
+    std::vector<double> dist(p.size(), 0.0);
+    for (size_t i = 0; i < p.size(); ++i) dist[i] = selected[i] ? d : 0.0;
+    std::vector<Vec2> q;
+    std::string ignored;
+    return insetCorners(p, dist, eps, q, ignored) ? twiceRingArea(q) / 2 : -1.0;  // -1: too far
+  };
+  double lo = 0, hi = extent;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (remainderArea(mid) >= area ? lo : hi) = mid;
+  }
+  const double reached = remainderArea(lo);
+  if (!(std::abs(reached - area) <= 1e-6 * std::max(1.0, area))) {
+    std::ostringstream m;
+    m << "setbackToArea: the area " << area << " cannot be reached by setting these edges back (the least is "
+      << reached << " before an edge vanishes)";
+    error = m.str();
+    return false;
+  }
+  distance = lo;
+  return true;
+}
+
+bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, const std::vector<int>& group,
+             const std::vector<bool>& merged, GeometryArena& arena, std::vector<Part>& pieces,
+             std::vector<int>& pieceGroup, std::vector<Part>& remainder, std::string& error) {
+  pieces.clear();
+  pieceGroup.clear();
+  remainder.clear();
+  const std::vector<Vec2>& p = polygon.ring;
+  const size_t n = p.size();
+  double extent = 0;
+  for (const Vec2& q : p) extent = std::max(extent, (q - p[0]).norm());
+  const double eps = 1e-9 * std::max(extent, 1.0);
+  // Negative distances move edges outward (CGA's offset(+d)); one direction for all edges.
+  bool inward = false, outward = false;
+  for (size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(distance[i])) {
+      std::ostringstream m;
+      m << "Setback: the distance " << distance[i] << " of edge " << i << " is not a finite number";
+      error = m.str();
+      return false;
+    }
+    inward |= distance[i] > 0, outward |= distance[i] < 0;
+  }
+  if (inward && outward) {
+    error = "Setback: some edges would move in and others out (distances of both signs)";
+    return false;
+  }
+  std::vector<Vec2> q;
+  if (!insetCorners(p, distance, eps, q, error)) return false;
   auto setBack = [&](size_t i) { return group[i] >= 0 && distance[i] != 0; };
   auto add = [&](const std::vector<Vec2>& ring, const std::vector<std::vector<Vec2>>& holes, int g) {
     const std::vector<Vec2> r = distinct(ring, eps);

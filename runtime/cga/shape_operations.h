@@ -93,6 +93,12 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
              const std::vector<bool>& merged, GeometryArena& arena, std::vector<Part>& pieces,
              std::vector<int>& pieceGroup, std::vector<Part>& remainder, std::string& error);
 
+// setbackToArea(area): the one distance by which the `selected` edges are set back so that
+// the remainder has `area` (bisection to within 1e-6 of it). Fails for an area not between 0
+// and the polygon's, or one an edge would vanish before reaching.
+bool setbackDistanceForArea(const FlatPolygon& polygon, const std::vector<bool>& selected, double area,
+                            double& distance, std::string& error);
+
 // innerRectangle(scope | edge): the largest rectangle inside the polygon with sides along
 // the scope's x and y (alongEdge: along the edge that gives the largest), its scope fitted
 // to it (x along its sides). Exact where the polygon's sides run along the rectangle's

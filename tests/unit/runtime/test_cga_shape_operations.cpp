@@ -339,3 +339,18 @@ TEST_CASE("reverseNormals, deleteHoles and cleanupGeometry") {
   CHECK(out.geom.count == 4);
   CHECK(area(out, arena) == Approx(100).margin(1e-2));
 }
+
+TEST_CASE("setbackToArea finds the distance that leaves the area asked for") {
+  GeometryArena arena;
+  const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
+  double d = 0;
+  std::string error;
+  // Every edge: (20 - 2d)(10 - 2d) = 56 at d = 3.
+  REQUIRE(setbackDistanceForArea(f, {true, true, true, true}, 56, d, error));
+  CHECK(d == Approx(3).margin(1e-6));
+  // One long edge: 20 (10 - d) = 160 at d = 2.
+  REQUIRE(setbackDistanceForArea(f, {true, false, false, false}, 160, d, error));
+  CHECK(d == Approx(2).margin(1e-6));
+  CHECK_FALSE(setbackDistanceForArea(f, {true, true, true, true}, 250, d, error));  // more than the lot
+  CHECK_FALSE(setbackDistanceForArea(f, {true, false, false, false}, 0, d, error));
+}
