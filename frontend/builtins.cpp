@@ -112,6 +112,10 @@ const CommandInfo* findCommand(const std::string& name) {
   return nullptr;
 }
 
+std::span<const CommandInfo> allCommands() { return kCommands; }
+
+std::span<const FunctionInfo> allFunctions() { return kFunctions; }
+
 const FunctionInfo* findFunction(const std::string& name) {
   for (const auto& f : kFunctions)
     if (name == f.name) return &f;

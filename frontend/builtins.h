@@ -3,6 +3,7 @@
 // each, shared by semantic analysis and lowering so both agree on every name.
 #pragma once
 
+#include <span>
 #include <string>
 
 namespace fgsg::frontend {
@@ -40,6 +41,8 @@ struct CommandInfo {
 // The command a successor identifier names, or nullptr for a shape symbol. Accepts the
 // FGSG paper's upper-case spellings RX RY RZ.
 const CommandInfo* findCommand(const std::string& name);
+// Every command, in the table's order (editors complete and describe them: fgsg lsp).
+std::span<const CommandInfo> allCommands();
 
 struct FunctionInfo {
   const char* name;
@@ -49,6 +52,7 @@ struct FunctionInfo {
 // Math functions and Rand; nullptr when unknown. Names are matched exactly, with
 // `Rand` and `rand` both accepted.
 const FunctionInfo* findFunction(const std::string& name);
+std::span<const FunctionInfo> allFunctions();
 
 // The members Feature answers inside Cells (Feature.edge, Feature.label("window") ...),
 // with whether the value is a number (else a truth value) and whether it takes the one

@@ -1,0 +1,110 @@
+#include "cli/lsp/lsp_analysis.h"
+
+#include "cli/check_data_files.h"
+#include "cli/lsp/lsp_text.h"
+#include "frontend/imports.h"
+#include "frontend/parse.h"
+#include "ir/pipeline.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace fgsg::cli::lsp {
+namespace {
+
+using frontend::SourceRange;
+
+bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
+
+// A range that ends where it starts when the front end did not record its end.
+SourceRange ordered(SourceRange r) {
+  if (r.end.line < r.begin.line || (r.end.line == r.begin.line && r.end.col < r.begin.col)) r.end = r.begin;
+  return r;
+}
+
+void collectDefinitions(Analysis& a) {
+  const int documentLines =
+      a.source.modules.empty() ? static_cast<int>(a.source.lines.size()) : a.source.modules.front().firstLine - 1;
+  auto add = [&](Definition::Kind kind, const std::string& name, const SourceRange& range, const SourceRange& nameRange) {
+    const std::string shown = frontend::symbolDisplayName(name);
+    // A .cga rule's helpers (`Roof$1`) are the translator's, not the user's.
+    if (shown.empty() || shown.find('$') != std::string::npos || range.begin.line <= 0) return;
+    a.definitions.push_back({kind, shown, ordered(range), ordered(nameRange.begin.line > 0 ? nameRange : range),
+                             range.begin.line <= documentLines});
+  };
+  for (const auto& rule : a.program.rules) {
+    add(Definition::Kind::Rule, rule.predecessor.name, rule.range, rule.predecessor.range);
+  }
+  for (const auto& value : a.program.values)
+    add(value.isAttr ? Definition::Kind::Attr : Definition::Kind::Const, value.name, value.range, value.range);
+  for (const auto& field : a.program.fields) add(Definition::Kind::Field, field.name, field.range, field.nameRange);
+  // The document's in the order written, then the modules'.
+  std::stable_sort(a.definitions.begin(), a.definitions.end(), [](const Definition& x, const Definition& y) {
+    if (x.inDocument != y.inDocument) return x.inDocument;
+    return x.range.begin.line != y.range.begin.line ? x.range.begin.line < y.range.begin.line
+                                                    : x.range.begin.col < y.range.begin.col;
+  });
+}
+
+}  // namespace
+
+Analysis::Place Analysis::placeOf(int wholeLine) const {
+  for (auto m = source.modules.rbegin(); m != source.modules.rend(); ++m)
+    if (wholeLine >= m->firstLine) return {m->key, wholeLine - m->firstLine, false};
+  return {path, std::max(wholeLine - 1, 0), true};
+}
+
+Json Analysis::rangeOf(const SourceRange& given) const {
+  const SourceRange r = ordered(given);
+  auto position = [&](int line, int col) {
+    if (line <= 0) return Json{{"line", 0}, {"character", 0}};
+    const std::string text = line <= static_cast<int>(source.lines.size()) ? source.lines[line - 1] : "";
+    return Json{{"line", placeOf(line).line}, {"character", utf16Units(text, std::max(col, 1) - 1)}};
+  };
+  // The front end's end is the last character, inclusive: LSP's is the one after it.
+  return Json{{"start", position(r.begin.line, r.begin.col)}, {"end", position(r.end.line, r.end.col + 1)}};
+}
+
+Json Analysis::locationOf(const SourceRange& range) const {
+  return Json{{"uri", uriOfPath(placeOf(range.begin.line).path)}, {"range", rangeOf(range)}};
+}
+
+std::vector<const Definition*> Analysis::find(const std::string& name) const {
+  std::vector<const Definition*> out;
+  for (const auto& d : definitions)
+    if (d.name == name) out.push_back(&d);
+  return out;
+}
+
+std::shared_ptr<const Analysis> analyze(const std::string& path, const std::string& text) {
+  auto a = std::make_shared<Analysis>();
+  a->path = path;
+  // What `fgsg check` reports (cli/cmd_check.cpp): the compile's diagnostics, then, when it
+  // compiled, the data files' (fields, meshes, images the grammar names).
+  a->checked = frontend::SourceFile::make(path, text);
+  frontend::Diagnostics diags(&a->checked);
+  ir::Module module;
+  if (ir::compileSource(a->checked, module, diags)) checkDataFiles(module, path, diags);
+  a->diagnostics = diags.all();
+  // The program itself (compileSource keeps it to itself), parsed on after errors.
+  a->source = frontend::SourceFile::make(path, text);
+  frontend::Diagnostics ignored(&a->source);
+  frontend::parseProgram(a->source, a->program, ignored);
+  frontend::resolveImports(a->source, a->program, ignored);
+  collectDefinitions(*a);
+  return a;
+}
+
+std::string nameAt(const std::string& line, size_t at, bool prefixOnly) {
+  at = std::min(at, line.size());
+  size_t begin = at, end = at;
+  while (begin > 0 && isNameChar(line[begin - 1])) --begin;
+  if (!prefixOnly)
+    while (end < line.size() && isNameChar(line[end])) ++end;
+  std::string name = line.substr(begin, end - begin);
+  while (!name.empty() && name.front() == '.') name.erase(0, 1);
+  while (!name.empty() && name.back() == '.') name.pop_back();
+  return prefixOnly && at > begin && line[at - 1] == '.' ? name + "." : name;
+}
+
+}  // namespace fgsg::cli::lsp

@@ -1,0 +1,53 @@
+#include "cli/lsp/lsp_features.h"
+
+#include "cli/lsp/lsp_text.h"
+#include "frontend/builtins.h"
+
+#include <cctype>
+#include <set>
+
+namespace fgsg::cli::lsp {
+namespace {
+
+// LSP's CompletionItemKind.
+constexpr int kFunction = 3, kField = 5, kClass = 7, kProperty = 10, kConstant = 21;
+
+bool startsLike(const std::string& name, const std::string& prefix) {
+  if (prefix.size() > name.size()) return false;
+  for (size_t i = 0; i < prefix.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(name[i])) != std::tolower(static_cast<unsigned char>(prefix[i])))
+      return false;
+  return true;
+}
+
+std::string functionSignature(const frontend::FunctionInfo& f) {
+  std::string s = std::string(f.name) + "(";
+  for (int i = 0; i < f.maxArgs; ++i) s += (i ? ", " : "") + std::string(1, static_cast<char>('a' + i));
+  return s + ")";
+}
+
+}  // namespace
+
+Json completion(const Analysis& a, const std::string& text, int line, int character) {
+  const std::string lineText = lineAt(text, line);
+  const std::string prefix = nameAt(lineText, byteAtUtf16(lineText, character), true);
+  Json items = Json::array();
+  std::set<std::string> seen;
+  auto add = [&](const std::string& label, int kind, const std::string& detail) {
+    if (!startsLike(label, prefix) || !seen.insert(label).second) return;
+    items.push_back(Json{{"label", label}, {"kind", kind}, {"detail", detail}});
+  };
+  for (const auto& d : a.definitions) {
+    switch (d.kind) {
+      case Definition::Kind::Rule: add(d.name, kClass, "rule"); break;
+      case Definition::Kind::Attr: add(d.name, kProperty, "attr"); break;
+      case Definition::Kind::Const: add(d.name, kConstant, "const"); break;
+      case Definition::Kind::Field: add(d.name, kField, "field"); break;
+    }
+  }
+  for (const auto& c : frontend::allCommands()) add(c.name, kFunction, c.signature);
+  for (const auto& f : frontend::allFunctions()) add(f.name, kFunction, functionSignature(f));
+  return Json{{"isIncomplete", false}, {"items", std::move(items)}};
+}
+
+}  // namespace fgsg::cli::lsp

@@ -1,0 +1,59 @@
+#include "cli/lsp/lsp_features.h"
+
+namespace fgsg::cli::lsp {
+namespace {
+
+int severityOf(frontend::Severity s) {
+  switch (s) {
+    case frontend::Severity::Error: return 1;
+    case frontend::Severity::Warning: return 2;
+    case frontend::Severity::Note: return 3;  // Information
+  }
+  return 1;
+}
+
+// The document's import that (directly or through other modules) read the module at
+// `key`: where a diagnostic inside that module is shown.
+frontend::SourceRange importSiteOf(const Analysis& a, std::string key) {
+  const frontend::SourceFile::Module* top = nullptr;
+  for (int hops = 0; hops <= static_cast<int>(a.checked.modules.size()); ++hops) {
+    const frontend::SourceFile::Module* m = nullptr;
+    for (const auto& candidate : a.checked.modules)
+      if (candidate.key == key) m = &candidate;
+    if (!m) break;
+    top = m;
+    if (m->importer.empty()) break;
+    key = m->importer;
+  }
+  if (top)
+    for (const auto& import : a.program.imports)
+      if (import.path == top->written && a.placeOf(import.range.begin.line).inDocument) return import.pathRange;
+  return frontend::SourceRange{{1, 1}, {1, 1}};
+}
+
+}  // namespace
+
+Json diagnosticsParams(const Analysis& a, const std::string& uri) {
+  Json list = Json::array();
+  for (const auto& d : a.diagnostics) {
+    Json item{{"severity", severityOf(d.severity)}, {"source", "fgsg"}, {"message", d.message}};
+    if (!d.code.empty()) item["code"] = d.code;
+    if (d.range.begin.line <= 0) {
+      item["range"] = a.rangeOf(frontend::SourceRange{{1, 1}, {1, 0}});
+    } else if (const auto [file, line] = a.checked.locate(d.range.begin.line); file == a.checked.name) {
+      item["range"] = a.rangeOf(d.range);
+    } else {
+      // In a module: its file:line:col as `fgsg check` prints it, on the import.
+      std::string key;
+      for (const auto& m : a.checked.modules)
+        if (d.range.begin.line >= m.firstLine) key = m.key;
+      item["range"] = a.rangeOf(importSiteOf(a, key));
+      item["message"] = "in " + file + ":" + std::to_string(line) + ":" + std::to_string(std::max(d.range.begin.col, 1)) +
+                        ": " + d.message;
+    }
+    list.push_back(std::move(item));
+  }
+  return Json{{"uri", uri}, {"diagnostics", std::move(list)}};
+}
+
+}  // namespace fgsg::cli::lsp

@@ -1,0 +1,31 @@
+// The language features, one file each: each takes a document's analysis (and text) and
+// the request's position, and returns the LSP result.
+#pragma once
+
+#include "cli/lsp/lsp_analysis.h"
+
+#include <string>
+
+namespace fgsg::cli::lsp {
+
+// textDocument/publishDiagnostics' params: what `fgsg check` says, with its codes and
+// ranges. A diagnostic inside an imported module is shown on the document's import of it,
+// its message prefixed with the module's file:line:col.
+Json diagnosticsParams(const Analysis& analysis, const std::string& uri);
+
+// textDocument/completion: the builtin commands and functions (frontend/builtins.h's
+// tables) and the grammar's rules, attrs, consts and fields that start like the name
+// being written at (line, character).
+Json completion(const Analysis& analysis, const std::string& text, int line, int character);
+
+// textDocument/hover: a builtin's signature, or a declaration's line.
+Json hover(const Analysis& analysis, const std::string& text, int line, int character);
+
+// textDocument/definition: where the rule, attr, const or field under the cursor is
+// declared, in the document or a module it imports.
+Json definition(const Analysis& analysis, const std::string& text, int line, int character);
+
+// textDocument/documentSymbol: the document's rules, attrs, consts and fields.
+Json documentSymbols(const Analysis& analysis);
+
+}  // namespace fgsg::cli::lsp

@@ -1,0 +1,38 @@
+#include "cli/lsp/lsp_features.h"
+
+namespace fgsg::cli::lsp {
+namespace {
+
+// LSP's SymbolKind.
+constexpr int kField = 8, kFunction = 12, kConstant = 14, kProperty = 7;
+
+bool contains(const frontend::SourceRange& outer, const frontend::SourceRange& inner) {
+  auto before = [](const frontend::SourceLoc& x, const frontend::SourceLoc& y) {
+    return x.line < y.line || (x.line == y.line && x.col <= y.col);
+  };
+  return before(outer.begin, inner.begin) && before(inner.end, outer.end);
+}
+
+}  // namespace
+
+Json documentSymbols(const Analysis& a) {
+  Json symbols = Json::array();
+  for (const auto& d : a.definitions) {
+    if (!d.inDocument) continue;
+    int kind = kFunction;
+    const char* detail = "rule";
+    if (d.kind == Definition::Kind::Attr) kind = kProperty, detail = "attr";
+    if (d.kind == Definition::Kind::Const) kind = kConstant, detail = "const";
+    if (d.kind == Definition::Kind::Field) kind = kField, detail = "field";
+    // LSP wants the name's range inside the declaration's.
+    const frontend::SourceRange selection = contains(d.range, d.nameRange) ? d.nameRange : d.range;
+    symbols.push_back(Json{{"name", d.name},
+                           {"detail", detail},
+                           {"kind", kind},
+                           {"range", a.rangeOf(d.range)},
+                           {"selectionRange", a.rangeOf(selection)}});
+  }
+  return symbols;
+}
+
+}  // namespace fgsg::cli::lsp

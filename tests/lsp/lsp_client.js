@@ -1,0 +1,133 @@
+// fgsg lsp driven by a real LSP client: vscode-jsonrpc, the JSON-RPC layer of VS Code's
+// language client (scripts/install-node-packages.sh puts it in tools/node). Diagnostics
+// with fgsg check's codes and ranges (UTF-16 columns), incremental sync, completion,
+// hover, definition across an import, document symbols, shutdown and exit.
+// usage: node lsp_client.js FGSG SOURCE_DIR
+'use strict';
+const { spawn, execFileSync } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const assert = require('assert');
+
+const [fgsg, source] = process.argv.slice(2);
+// Resolved as tools/node's own code would (the package's exports name vscode-jsonrpc/node).
+const rpc = require('module').createRequire(path.join(source, 'tools/node/package.json'))('vscode-jsonrpc/node');
+
+const uriOf = (p) => 'file://' + path.resolve(p);
+setTimeout(() => { console.error('FAIL: no answer within 60 s'); process.exit(1); }, 60000).unref();
+
+async function main() {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), 'fgsg-lsp-'));
+  const server = spawn(fgsg, ['lsp', '--stdio'], { stdio: ['pipe', 'pipe', 'inherit'] });
+  const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));
+  const connection = rpc.createMessageConnection(new rpc.StreamMessageReader(server.stdout),
+                                                 new rpc.StreamMessageWriter(server.stdin));
+  // Each publishDiagnostics in order, per URI; next(uri) waits for the next one.
+  const published = new Map();
+  const waiting = new Map();
+  connection.onNotification('textDocument/publishDiagnostics', (params) => {
+    const w = waiting.get(params.uri);
+    if (w) { waiting.delete(params.uri); w(params.diagnostics); return; }
+    if (!published.has(params.uri)) published.set(params.uri, []);
+    published.get(params.uri).push(params.diagnostics);
+  });
+  const nextDiagnostics = (uri) => {
+    const queued = published.get(uri);
+    if (queued && queued.length) return Promise.resolve(queued.shift());
+    return new Promise((resolve) => waiting.set(uri, resolve));
+  };
+  connection.listen();
+
+  const init = await connection.sendRequest('initialize', { processId: process.pid, rootUri: null, capabilities: {} });
+  assert.strictEqual(init.capabilities.textDocumentSync.change, 2, 'incremental sync');
+  assert.strictEqual(init.capabilities.definitionProvider, true);
+  connection.sendNotification('initialized', {});
+
+  // A misspelt attr after a character outside the BMP: UTF-16 counts it twice.
+  const errPath = path.join(work, 'err.fgsg');
+  const errText = 'attr height = 6;\naxiom: S(1, 0, 1) Lot;\nLot ~> Print("🧱é") Extrude(heigth) Lot2;\n';
+  fs.writeFileSync(errPath, errText);
+  const errUri = uriOf(errPath);
+  connection.sendNotification('textDocument/didOpen',
+                              { textDocument: { uri: errUri, languageId: 'fgsg', version: 1, text: errText } });
+  let diags = await nextDiagnostics(errUri);
+  const brief = (d) => [d.code, d.severity, d.range.start.line, d.range.start.character, d.range.end.line,
+                        d.range.end.character];
+  assert.deepStrictEqual(diags.map(brief), [['E010', 1, 2, 28, 2, 34], ['W001', 2, 2, 36, 2, 40]]);
+  assert.strictEqual(diags[0].message, "unknown name 'heigth' (not a parameter of this rule, a const or an attr)");
+  // The same codes, messages and places as fgsg check prints (its columns count characters).
+  let check = '';
+  try { execFileSync(fgsg, ['check', errPath], { encoding: 'utf8', stdio: 'pipe' }); } catch (e) { check = e.stderr; }
+  const lines = errText.split('\n');
+  for (const d of diags) {
+    const col = Array.from(lines[d.range.start.line].slice(0, d.range.start.character)).length + 1;
+    const kind = d.severity === 1 ? 'error' : 'warning';
+    const expected = `${errPath}:${d.range.start.line + 1}:${col}: ${kind}[${d.code}]: ${d.message}`;
+    assert.ok(check.split('\n').includes(expected), `fgsg check says: ${expected}\n---\n${check}`);
+  }
+
+  // Incremental sync: the name corrected in place leaves the warning alone.
+  connection.sendNotification('textDocument/didChange', {
+    textDocument: { uri: errUri, version: 2 },
+    contentChanges: [{ range: { start: { line: 2, character: 28 }, end: { line: 2, character: 34 } }, text: 'height' }],
+  });
+  diags = await nextDiagnostics(errUri);
+  assert.deepStrictEqual(diags.map(brief), [['W001', 2, 2, 36, 2, 40]]);
+
+  // Completion: `Sub` offers the builtin Subdiv with its signature; `hei` the attr.
+  connection.sendNotification('textDocument/didChange', {
+    textDocument: { uri: errUri, version: 3 },
+    contentChanges: [{ range: { start: { line: 2, character: 36 }, end: { line: 2, character: 36 } }, text: 'Sub ' }],
+  });
+  assert.deepStrictEqual((await nextDiagnostics(errUri)).map(brief), [['W001', 2, 2, 40, 2, 44]]);
+  let list = await connection.sendRequest('textDocument/completion',
+                                          { textDocument: { uri: errUri }, position: { line: 2, character: 39 } });
+  assert.deepStrictEqual(list.items.map((i) => i.label), ['Subdiv']);
+  assert.strictEqual(list.items[0].detail, 'Subdiv("X", s1, s2, ...){ a | b ... }');
+  list = await connection.sendRequest('textDocument/completion',
+                                      { textDocument: { uri: errUri }, position: { line: 2, character: 31 } });
+  assert.deepStrictEqual(list.items.map((i) => [i.label, i.kind]), [['height', 10]]);
+
+  // Hover: a builtin's signature, an attr's declaration.
+  let hover = await connection.sendRequest('textDocument/hover',
+                                           { textDocument: { uri: errUri }, position: { line: 2, character: 26 } });
+  assert.strictEqual(hover.contents.value, '```\nExtrude(height)\n```');
+  hover = await connection.sendRequest('textDocument/hover',
+                                       { textDocument: { uri: errUri }, position: { line: 2, character: 30 } });
+  assert.strictEqual(hover.contents.value, '```\nattr height = 6;\n```');
+
+  // Definition of a rule from an imported module (tests/lsp/inputs/parts.fgsg).
+  const housePath = path.join(source, 'tests/lsp/inputs/house.fgsg');
+  const houseUri = uriOf(housePath);
+  connection.sendNotification('textDocument/didOpen', {
+    textDocument: { uri: houseUri, languageId: 'fgsg', version: 1, text: fs.readFileSync(housePath, 'utf8') },
+  });
+  assert.deepStrictEqual(await nextDiagnostics(houseUri), []);
+  const where = await connection.sendRequest('textDocument/definition',
+                                             { textDocument: { uri: houseUri }, position: { line: 8, character: 35 } });
+  assert.deepStrictEqual(where, [{ uri: uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg')),
+                                   range: { start: { line: 3, character: 0 }, end: { line: 3, character: 6 } } }]);
+
+  // Document symbols of an example: its attr and every rule, in order.
+  const examplePath = path.join(source, 'examples/context_facade.fgsg');
+  const exampleUri = uriOf(examplePath);
+  connection.sendNotification('textDocument/didOpen', {
+    textDocument: { uri: exampleUri, languageId: 'fgsg', version: 1, text: fs.readFileSync(examplePath, 'utf8') },
+  });
+  const symbols = await connection.sendRequest('textDocument/documentSymbol', { textDocument: { uri: exampleUri } });
+  assert.deepStrictEqual(symbols.map((s) => [s.name, s.kind, s.selectionRange.start.line, s.selectionRange.start.character]), [
+    ['floors', 7, 7, 0], ['Building', 12, 9, 0], ['Uppers', 12, 10, 0], ['Ground', 12, 11, 0], ['Upper', 12, 12, 0],
+    ['Win', 12, 14, 7], ['Win', 12, 15, 0], ['Win', 12, 16, 0], ['Glass', 12, 17, 0], ['Door', 12, 18, 6],
+    ['Door', 12, 19, 0], ['Frame', 12, 20, 0], ['Wall', 12, 21, 0]]);
+
+  await connection.sendRequest('shutdown');
+  connection.sendNotification('exit');
+  const { code, signal } = await exited;
+  assert.deepStrictEqual([code, signal], [0, null], 'exit after shutdown: 0');
+  connection.dispose();
+  fs.rmSync(work, { recursive: true, force: true });
+  console.log('ok: fgsg lsp answered a vscode-jsonrpc client');
+}
+
+main().catch((e) => { console.error('FAIL:', e.message || e); process.exit(1); });
