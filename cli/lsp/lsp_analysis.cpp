@@ -12,6 +12,7 @@
 namespace fgsg::cli::lsp {
 namespace {
 
+using frontend::SourceLoc;
 using frontend::SourceRange;
 
 bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
@@ -22,22 +23,49 @@ SourceRange ordered(SourceRange r) {
   return r;
 }
 
+// Where `name` is written on `line` at or after code point `fromCol` (1-based), as a
+// whole word: its range, or line 0 when it is not there.
+SourceRange writtenAt(const std::string& line, int lineNumber, int fromCol, const std::string& name) {
+  std::vector<size_t> starts;  // the byte each code point starts at
+  for (size_t i = 0; i < line.size(); ++i)
+    if ((static_cast<unsigned char>(line[i]) & 0xC0) != 0x80) starts.push_back(i);
+  auto isWordByte = [&](size_t i) { return std::isalnum(static_cast<unsigned char>(line[i])) || line[i] == '_'; };
+  for (size_t c = std::max(fromCol, 1) - 1; c < starts.size(); ++c) {
+    const size_t at = starts[c];
+    if (line.compare(at, name.size(), name) != 0) continue;
+    if ((at > 0 && isWordByte(at - 1)) || (at + name.size() < line.size() && isWordByte(at + name.size()))) continue;
+    const int col = static_cast<int>(c) + 1;
+    return SourceRange{{lineNumber, col}, {lineNumber, col + static_cast<int>(name.size()) - 1}};
+  }
+  return SourceRange{};
+}
+
 void collectDefinitions(Analysis& a) {
   const int documentLines =
       a.source.modules.empty() ? static_cast<int>(a.source.lines.size()) : a.source.modules.front().firstLine - 1;
-  auto add = [&](Definition::Kind kind, const std::string& name, const SourceRange& range, const SourceRange& nameRange) {
+  auto add = [&](Definition::Kind kind, const std::string& name, const SourceRange& range, const SourceLoc& from) {
     const std::string shown = frontend::symbolDisplayName(name);
     // A .cga rule's helpers (`Roof$1`) are the translator's, not the user's.
-    if (shown.empty() || shown.find('$') != std::string::npos || range.begin.line <= 0) return;
-    a.definitions.push_back({kind, shown, ordered(range), ordered(nameRange.begin.line > 0 ? nameRange : range),
-                             range.begin.line <= documentLines});
+    if (shown.empty() || shown.find('$') != std::string::npos || range.begin.line <= 0 || from.line <= 0 ||
+        from.line > static_cast<int>(a.source.lines.size()))
+      return;
+    // The name as written where it is declared (a module's without its alias): a rule the
+    // .cga translator made up (its start rules, a case's branches) is not written there.
+    const size_t dot = shown.rfind('.');
+    const std::string written = dot == std::string::npos ? shown : shown.substr(dot + 1);
+    const SourceRange nameRange = writtenAt(a.source.lines[from.line - 1], from.line, from.col, written);
+    if (nameRange.begin.line == 0) return;
+    for (const auto& d : a.definitions)
+      if (d.name == shown && d.nameRange.begin.line == nameRange.begin.line && d.nameRange.begin.col == nameRange.begin.col)
+        return;
+    a.definitions.push_back({kind, shown, ordered(range), nameRange, range.begin.line <= documentLines});
   };
-  for (const auto& rule : a.program.rules) {
-    add(Definition::Kind::Rule, rule.predecessor.name, rule.range, rule.predecessor.range);
-  }
+  for (const auto& rule : a.program.rules)
+    add(Definition::Kind::Rule, rule.predecessor.name, rule.range, rule.predecessor.range.begin);
   for (const auto& value : a.program.values)
-    add(value.isAttr ? Definition::Kind::Attr : Definition::Kind::Const, value.name, value.range, value.range);
-  for (const auto& field : a.program.fields) add(Definition::Kind::Field, field.name, field.range, field.nameRange);
+    add(value.isAttr ? Definition::Kind::Attr : Definition::Kind::Const, value.name, value.range, value.range.begin);
+  for (const auto& field : a.program.fields)
+    add(Definition::Kind::Field, field.name, field.range, field.nameRange.begin.line > 0 ? field.nameRange.begin : field.range.begin);
   // The document's in the order written, then the modules'.
   std::stable_sort(a.definitions.begin(), a.definitions.end(), [](const Definition& x, const Definition& y) {
     if (x.inDocument != y.inDocument) return x.inDocument;

@@ -22,7 +22,7 @@ struct Definition {
   Kind kind;
   std::string name;         // as written and shown (a .cga rule's '$' mark dropped)
   frontend::SourceRange range;      // the whole declaration (a rule: its first line)
-  frontend::SourceRange nameRange;  // the name (its declaration's start where not recorded)
+  frontend::SourceRange nameRange;  // the name, where the declaration writes it
   bool inDocument = true;   // false: in an imported module
 };
 

@@ -25,6 +25,16 @@ Json hover(const Analysis& analysis, const std::string& text, int line, int char
 // declared, in the document or a module it imports.
 Json definition(const Analysis& analysis, const std::string& text, int line, int character);
 
+// textDocument/references: every place the name under the cursor is written, in the
+// document and in the module that declares it (a lexical search outside comments and
+// strings: a rule parameter that shadows an attr's name is counted too).
+Json references(const Analysis& analysis, const std::string& text, int line, int character, bool includeDeclaration);
+
+// textDocument/rename: those places renamed, as a WorkspaceEdit; null with `error` for a
+// new name that is not one or a place that names nothing of the grammar's.
+Json rename(const Analysis& analysis, const std::string& text, int line, int character, const std::string& newName,
+            std::string& error);
+
 // textDocument/documentSymbol: the document's rules, attrs, consts and fields.
 Json documentSymbols(const Analysis& analysis);
 

@@ -12,7 +12,8 @@ namespace fgsg::cli::lsp {
 namespace {
 
 // JSON-RPC's and LSP's error codes.
-constexpr int kParseError = -32700, kInvalidRequest = -32600, kMethodNotFound = -32601, kInternalError = -32603,
+constexpr int kParseError = -32700, kInvalidRequest = -32600, kMethodNotFound = -32601, kInvalidParams = -32602,
+              kInternalError = -32603,
               kServerNotInitialized = -32002;
 // Deeper JSON than any LSP message has is refused before it is parsed.
 constexpr int kMaxJsonDepth = 64;
@@ -89,7 +90,9 @@ class Server {
                                 {"completionProvider", Json{{"triggerCharacters", Json::array({"."})}}},
                                 {"hoverProvider", true},
                                 {"definitionProvider", true},
-                                {"documentSymbolProvider", true}}},
+                                {"documentSymbolProvider", true},
+                                {"referencesProvider", true},
+                                {"renameProvider", true}}},
                           {"serverInfo", Json{{"name", "fgsg"}, {"version", "0.1.0"}}}});
       return;
     }
@@ -100,7 +103,8 @@ class Server {
       return sendResult(id, nullptr);
     }
     const bool positional = method == "textDocument/completion" || method == "textDocument/hover" ||
-                            method == "textDocument/definition";
+                            method == "textDocument/definition" || method == "textDocument/references" ||
+                            method == "textDocument/rename";
     if (!positional && method != "textDocument/documentSymbol")
       return sendError(id, kMethodNotFound, "fgsg lsp: no method " + method);
     const std::string uri = params.at("textDocument").at("uri").get<std::string>();
@@ -112,6 +116,15 @@ class Server {
     const int character = params.at("position").at("character").get<int>();
     if (method == "textDocument/completion") return sendResult(id, completion(*analysis, text, line, character));
     if (method == "textDocument/hover") return sendResult(id, hover(*analysis, text, line, character));
+    if (method == "textDocument/references") {
+      const bool declaration = params.value("context", Json::object()).value("includeDeclaration", true);
+      return sendResult(id, references(*analysis, text, line, character, declaration));
+    }
+    if (method == "textDocument/rename") {
+      std::string error;
+      const Json edit = rename(*analysis, text, line, character, params.at("newName").get<std::string>(), error);
+      return edit.is_null() ? sendError(id, kInvalidParams, "fgsg lsp: " + error) : sendResult(id, edit);
+    }
     sendResult(id, definition(*analysis, text, line, character));
   }
 

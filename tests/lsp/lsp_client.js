@@ -1,7 +1,8 @@
 // fgsg lsp driven by a real LSP client: vscode-jsonrpc, the JSON-RPC layer of VS Code's
 // language client (scripts/install-node-packages.sh puts it in tools/node). Diagnostics
 // with fgsg check's codes and ranges (UTF-16 columns), incremental sync, completion,
-// hover, definition across an import, document symbols, shutdown and exit.
+// hover, definition across an import, references and rename across two files, document
+// symbols, shutdown and exit.
 // usage: node lsp_client.js FGSG SOURCE_DIR
 'use strict';
 const { spawn, execFileSync } = require('child_process');
@@ -109,6 +110,23 @@ async function main() {
   assert.deepStrictEqual(where, [{ uri: uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg')),
                                    range: { start: { line: 3, character: 0 }, end: { line: 3, character: 6 } } }]);
 
+  // References and rename of a module's attr, from the importer: both files, not the
+  // module's comment that names it.
+  const partsUri = uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg'));
+  const span = (line, from, to) => ({ start: { line, character: from }, end: { line, character: to } });
+  const refs = await connection.sendRequest('textDocument/references', {
+    textDocument: { uri: houseUri }, position: { line: 7, character: 31 }, context: { includeDeclaration: true } });
+  assert.deepStrictEqual(refs, [{ uri: houseUri, range: span(7, 30, 34) }, { uri: partsUri, range: span(1, 5, 9) },
+                                { uri: partsUri, range: span(3, 12, 16) }, { uri: partsUri, range: span(3, 18, 22) }]);
+  const edit = await connection.sendRequest('textDocument/rename',
+                                            { textDocument: { uri: houseUri }, position: { line: 7, character: 31 }, newName: 'glass' });
+  const renamed = (range) => ({ range, newText: 'glass' });
+  assert.deepStrictEqual(edit, { changes: { [houseUri]: [renamed(span(7, 30, 34))],
+                                            [partsUri]: [renamed(span(1, 5, 9)), renamed(span(3, 12, 16)), renamed(span(3, 18, 22))] } });
+  await assert.rejects(connection.sendRequest('textDocument/rename',
+                                              { textDocument: { uri: houseUri }, position: { line: 7, character: 31 }, newName: '2x' }),
+                       (e) => e.code === -32602);
+
   // Document symbols of an example: its attr and every rule, in order.
   const examplePath = path.join(source, 'examples/context_facade.fgsg');
   const exampleUri = uriOf(examplePath);
@@ -117,9 +135,22 @@ async function main() {
   });
   const symbols = await connection.sendRequest('textDocument/documentSymbol', { textDocument: { uri: exampleUri } });
   assert.deepStrictEqual(symbols.map((s) => [s.name, s.kind, s.selectionRange.start.line, s.selectionRange.start.character]), [
-    ['floors', 7, 7, 0], ['Building', 12, 9, 0], ['Uppers', 12, 10, 0], ['Ground', 12, 11, 0], ['Upper', 12, 12, 0],
+    ['floors', 7, 7, 5], ['Building', 12, 9, 0], ['Uppers', 12, 10, 0], ['Ground', 12, 11, 0], ['Upper', 12, 12, 0],
     ['Win', 12, 14, 7], ['Win', 12, 15, 0], ['Win', 12, 16, 0], ['Glass', 12, 17, 0], ['Door', 12, 18, 6],
     ['Door', 12, 19, 0], ['Frame', 12, 20, 0], ['Wall', 12, 21, 0]]);
+
+  // A .cga file is read as CityEngine CGA (by its extension): its attrs and rules, not the
+  // start and case rules its translation adds.
+  const cgaPath = path.join(source, 'examples/cga/building.cga');
+  const cgaUri = uriOf(cgaPath);
+  connection.sendNotification('textDocument/didOpen', {
+    textDocument: { uri: cgaUri, languageId: 'cga', version: 1, text: fs.readFileSync(cgaPath, 'utf8') },
+  });
+  assert.deepStrictEqual(await nextDiagnostics(cgaUri), []);
+  const cgaSymbols = await connection.sendRequest('textDocument/documentSymbol', { textDocument: { uri: cgaUri } });
+  assert.deepStrictEqual(cgaSymbols.map((s) => s.name), [
+    'height', 'floor_height', 'brick_share', 'setback_distance', 'Lot', 'Footprint', 'Tower', 'Building', 'Roof',
+    'Facade', 'Floors', 'GroundFloor', 'Floor', 'Tile', 'Window', 'Glass', 'Balcony', 'Door', 'Wall']);
 
   await connection.sendRequest('shutdown');
   connection.sendNotification('exit');

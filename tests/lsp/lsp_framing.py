@@ -85,6 +85,14 @@ case("body cut short by the end of input", b"Content-Length: 100\r\n\r\n{\"jsonr
      clean_end=False)
 case("binary noise", bytes(range(256)) * 40, [(None, -32600)], clean_end=False)
 
+# The command line: --help, and any argument but --stdio refused.
+usage = subprocess.run([FGSG, "lsp", "--help"], capture_output=True, text=True, timeout=30)
+if usage.returncode != 0 or "fgsg lsp" not in usage.stdout:
+    failures.append("fgsg lsp --help: exit %d, %r" % (usage.returncode, usage.stdout[:200]))
+bad = subprocess.run([FGSG, "lsp", "--port", "4"], capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+if bad.returncode != 2 or "unknown argument '--port'" not in bad.stderr:
+    failures.append("fgsg lsp --port 4: exit %d, %r" % (bad.returncode, bad.stderr[:200]))
+
 for f in failures:
     print("FAIL:", f)
 print("ok" if not failures else "%d failure(s)" % len(failures))
