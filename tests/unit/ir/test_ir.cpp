@@ -53,9 +53,9 @@ Module sampleModule() {
   m.sourceName = "fig4.fgsg";
   m.attrs.push_back({"height", Type::Num, Expr::number(12)});
   m.internAsset("torus");
-  m.symbols.push_back({"Axiom", {}, 0, {0}, 0});
-  m.symbols.push_back({"A", {Type::Num, Type::Num}, 2, {1}, 0});
-  m.symbols.push_back({"wall", {}, 0, {}, 0});
+  m.symbols.push_back({"Axiom", {}, 0, {0}});
+  m.symbols.push_back({"A", {Type::Num, Type::Num}, 2, {1}});
+  m.symbols.push_back({"wall", {}, 0, {}});
 
   Rule axiomRule;
   axiomRule.symbol = 0;
