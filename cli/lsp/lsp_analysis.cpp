@@ -118,6 +118,7 @@ std::shared_ptr<const Analysis> analyze(const std::string& path, const std::stri
   a->source = frontend::SourceFile::make(path, text);
   frontend::Diagnostics ignored(&a->source);
   frontend::parseProgram(a->source, a->program, ignored);
+  for (const auto& import : a->program.imports) a->imports.emplace_back(import.path, import.pathRange);
   frontend::resolveImports(a->source, a->program, ignored);
   collectDefinitions(*a);
   return a;

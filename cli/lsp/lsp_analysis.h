@@ -33,6 +33,8 @@ struct Analysis {
   frontend::SourceFile source;   // the parse's: the document's lines, then its modules'
   frontend::Program program;
   std::vector<Definition> definitions;  // the document's first, in order, then the modules'
+  // The document's imports, path as written and where (resolving them empties program.imports).
+  std::vector<std::pair<std::string, frontend::SourceRange>> imports;
 
   // A line of `source` (1-based, whole numbering) as the file it is in and its 0-based line there.
   struct Place {

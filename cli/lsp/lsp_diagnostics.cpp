@@ -26,8 +26,8 @@ frontend::SourceRange importSiteOf(const Analysis& a, std::string key) {
     key = m->importer;
   }
   if (top)
-    for (const auto& import : a.program.imports)
-      if (import.path == top->written && a.placeOf(import.range.begin.line).inDocument) return import.pathRange;
+    for (const auto& [written, range] : a.imports)
+      if (written == top->written) return range;
   return frontend::SourceRange{{1, 1}, {1, 1}};
 }
 

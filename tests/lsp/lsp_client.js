@@ -110,6 +110,17 @@ async function main() {
   assert.deepStrictEqual(where, [{ uri: uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg')),
                                    range: { start: { line: 3, character: 0 }, end: { line: 3, character: 6 } } }]);
 
+  // An error inside an imported module: on the importer's import path, as fgsg check names it.
+  const usesPath = path.join(source, 'tests/lsp/inputs/uses_broken.fgsg');
+  const usesUri = uriOf(usesPath);
+  connection.sendNotification('textDocument/didOpen', {
+    textDocument: { uri: usesUri, languageId: 'fgsg', version: 1, text: fs.readFileSync(usesPath, 'utf8') },
+  });
+  diags = await nextDiagnostics(usesUri);
+  assert.deepStrictEqual(diags.map(brief), [['E010', 1, 1, 7, 1, 15]]);
+  assert.strictEqual(diags[0].message, `in ${path.resolve(source, 'tests/lsp/inputs/broken.fgsg')}:2:16: ` +
+                                       "unknown name 'nope' (not a parameter of this rule, a const or an attr)");
+
   // References and rename of a module's attr, from the importer: both files, not the
   // module's comment that names it.
   const partsUri = uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg'));
