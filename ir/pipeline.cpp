@@ -21,9 +21,10 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 }  // namespace
 
 bool compileSource(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
-                   CompileTimes* times) {
+                   CompileTimes* times, frontend::Program* keep) {
   auto t0 = std::chrono::steady_clock::now();
-  frontend::Program program;
+  frontend::Program local;
+  frontend::Program& program = keep ? *keep : local;
   program.fileName = file.name;
   bool parsed = frontend::parseProgram(file, program, diags);
   // Its modules: their texts join `file`'s, which then keys the JIT's cache on them too.

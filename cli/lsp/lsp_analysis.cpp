@@ -2,8 +2,6 @@
 
 #include "cli/check_data_files.h"
 #include "cli/lsp/lsp_text.h"
-#include "frontend/imports.h"
-#include "frontend/parse.h"
 #include "ir/pipeline.h"
 
 #include <algorithm>
@@ -41,8 +39,7 @@ SourceRange writtenAt(const std::string& line, int lineNumber, int fromCol, cons
 }
 
 void collectDefinitions(Analysis& a) {
-  const int documentLines =
-      a.source.modules.empty() ? static_cast<int>(a.source.lines.size()) : a.source.modules.front().firstLine - 1;
+  const int documentLines = a.documentLines();
   auto add = [&](Definition::Kind kind, const std::string& name, const SourceRange& range, const SourceLoc& from) {
     const std::string shown = frontend::symbolDisplayName(name);
     // A .cga rule's helpers (`Roof$1`) are the translator's, not the user's.
@@ -76,6 +73,10 @@ void collectDefinitions(Analysis& a) {
 
 }  // namespace
 
+int Analysis::documentLines() const {
+  return source.modules.empty() ? static_cast<int>(source.lines.size()) : source.modules.front().firstLine - 1;
+}
+
 Analysis::Place Analysis::placeOf(int wholeLine) const {
   for (auto m = source.modules.rbegin(); m != source.modules.rend(); ++m)
     if (wholeLine >= m->firstLine) return {m->key, wholeLine - m->firstLine, false};
@@ -108,18 +109,13 @@ std::shared_ptr<const Analysis> analyze(const std::string& path, const std::stri
   auto a = std::make_shared<Analysis>();
   a->path = path;
   // What `fgsg check` reports (cli/cmd_check.cpp): the compile's diagnostics, then, when it
-  // compiled, the data files' (fields, meshes, images the grammar names).
-  a->checked = frontend::SourceFile::make(path, text);
-  frontend::Diagnostics diags(&a->checked);
-  ir::Module module;
-  if (ir::compileSource(a->checked, module, diags)) checkDataFiles(module, path, diags);
-  a->diagnostics = diags.all();
-  // The program itself (compileSource keeps it to itself), parsed on after errors.
+  // compiled, the data files' (fields, meshes, images the grammar names). The compile keeps
+  // the parsed program, with what could be built of it after errors.
   a->source = frontend::SourceFile::make(path, text);
-  frontend::Diagnostics ignored(&a->source);
-  frontend::parseProgram(a->source, a->program, ignored);
-  for (const auto& import : a->program.imports) a->imports.emplace_back(import.path, import.pathRange);
-  frontend::resolveImports(a->source, a->program, ignored);
+  frontend::Diagnostics diags(&a->source);
+  ir::Module module;
+  if (ir::compileSource(a->source, module, diags, nullptr, &a->program)) checkDataFiles(module, path, diags);
+  a->diagnostics = diags.all();
   collectDefinitions(*a);
   return a;
 }

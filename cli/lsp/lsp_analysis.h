@@ -28,14 +28,13 @@ struct Definition {
 
 struct Analysis {
   std::string path;
-  frontend::SourceFile checked;  // as compiled for the diagnostics
+  frontend::SourceFile source;  // the document's lines, then its modules'
   std::vector<frontend::Diagnostic> diagnostics;
-  frontend::SourceFile source;   // the parse's: the document's lines, then its modules'
-  frontend::Program program;
+  frontend::Program program;    // its modules' declarations merged in
   std::vector<Definition> definitions;  // the document's first, in order, then the modules'
-  // The document's imports, path as written and where (resolving them empties program.imports).
-  std::vector<std::pair<std::string, frontend::SourceRange>> imports;
 
+  // The last line of the document itself in `source`.
+  int documentLines() const;
   // A line of `source` (1-based, whole numbering) as the file it is in and its 0-based line there.
   struct Place {
     std::string path;

@@ -13,21 +13,30 @@ int severityOf(frontend::Severity s) {
 }
 
 // The document's import that (directly or through other modules) read the module at
-// `key`: where a diagnostic inside that module is shown.
+// `key`: the path string it writes, where a diagnostic inside that module is shown.
 frontend::SourceRange importSiteOf(const Analysis& a, std::string key) {
   const frontend::SourceFile::Module* top = nullptr;
-  for (int hops = 0; hops <= static_cast<int>(a.checked.modules.size()); ++hops) {
+  for (size_t hops = 0; hops <= a.source.modules.size(); ++hops) {
     const frontend::SourceFile::Module* m = nullptr;
-    for (const auto& candidate : a.checked.modules)
+    for (const auto& candidate : a.source.modules)
       if (candidate.key == key) m = &candidate;
     if (!m) break;
     top = m;
     if (m->importer.empty()) break;
     key = m->importer;
   }
-  if (top)
-    for (const auto& [written, range] : a.imports)
-      if (written == top->written) return range;
+  if (top) {
+    const std::string quoted = "\"" + top->written + "\"";
+    for (int n = 1; n <= a.documentLines(); ++n) {
+      const std::string& line = a.source.lines[n - 1];
+      const size_t at = line.find(quoted);
+      if (at == std::string::npos || line.find("import") == std::string::npos) continue;
+      int col = 1;  // in code points, as the front end counts
+      for (size_t i = 0; i < at; ++i)
+        if ((static_cast<unsigned char>(line[i]) & 0xC0) != 0x80) ++col;
+      return frontend::SourceRange{{n, col}, {n, col + static_cast<int>(quoted.size()) - 1}};
+    }
+  }
   return frontend::SourceRange{{1, 1}, {1, 1}};
 }
 
@@ -40,12 +49,12 @@ Json diagnosticsParams(const Analysis& a, const std::string& uri) {
     if (!d.code.empty()) item["code"] = d.code;
     if (d.range.begin.line <= 0) {
       item["range"] = a.rangeOf(frontend::SourceRange{{1, 1}, {1, 0}});
-    } else if (const auto [file, line] = a.checked.locate(d.range.begin.line); file == a.checked.name) {
+    } else if (const auto [file, line] = a.source.locate(d.range.begin.line); file == a.source.name) {
       item["range"] = a.rangeOf(d.range);
     } else {
       // In a module: its file:line:col as `fgsg check` prints it, on the import.
       std::string key;
-      for (const auto& m : a.checked.modules)
+      for (const auto& m : a.source.modules)
         if (d.range.begin.line >= m.firstLine) key = m.key;
       item["range"] = a.rangeOf(importSiteOf(a, key));
       item["message"] = "in " + file + ":" + std::to_string(line) + ":" + std::to_string(std::max(d.range.begin.col, 1)) +

@@ -66,8 +66,7 @@ void occurrences(const Analysis& a, int first, int last, const std::string& spel
 // Every place the declaration is named: in the document (qualified by its alias when it is
 // a module's) and in the module that declares it.
 std::vector<SourceRange> uses(const Analysis& a, const Definition& d) {
-  const int documentLines =
-      a.source.modules.empty() ? static_cast<int>(a.source.lines.size()) : a.source.modules.front().firstLine - 1;
+  const int documentLines = a.documentLines();
   const size_t dot = d.name.rfind('.');
   const std::string bare = dot == std::string::npos ? d.name : d.name.substr(dot + 1);
   std::vector<SourceRange> out;
