@@ -5,6 +5,7 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "frontend/did_you_mean.h"
 
 #include <set>
 #include <string>
@@ -186,10 +187,13 @@ ValueType Analyzer::typeOfCall(const Expr& e, const Where& w, bool report) {
   std::vector<ValueType> args;
   for (const auto& a : e.args) args.push_back(typeOf(*a, inner, report));
   if (!f) {
+    std::vector<std::string> known;
+    for (const FunctionInfo& k : allFunctions()) known.push_back(k.name);
+    const std::string near = closestName(e.text, known);  // "sqr": sqrt
     if (report)
       diags_.error("E011", e.range,
-                   "unknown function '" + e.text +
-                       "' (math: sin cos tan asin acos atan atan2 sqrt abs min max floor ceil "
+                   "unknown function '" + e.text + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                       " (math: sin cos tan asin acos atan atan2 sqrt abs min max floor ceil "
                        "round clamp lerp pow exp log sign; vectors: length dot normalize; "
                        "random: Rand(a, b))");
     return ValueType::Unknown;

@@ -45,6 +45,16 @@ void Analyzer::checkStart() {
   res_.startSymbol = first.predecessor.name;
 }
 
+// The operation a rule-less shape used with arguments was meant to be ("Extrud(2)":
+// Extrude); "" when none is near. Without arguments it may well be a shape of its own, and
+// a name of one or two letters is one edit from too many (B(3) is no slip for T).
+static std::string nearOperation(const SymbolInfo& s) {
+  if (s.params.empty() || s.name.size() < 3) return "";
+  std::vector<std::string> names;
+  for (const CommandInfo& c : allCommands()) names.push_back(c.name);
+  return closestName(s.name, names);
+}
+
 // The name of a symbol with rules one edit away from `name`, if any.
 std::string Analyzer::nearName(const std::string& name) const {
   auto lower = [](std::string s) {
@@ -118,10 +128,14 @@ void Analyzer::checkReachability() {
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");
     else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si]) {
+      const std::string op = nearOperation(s);
+      const std::string opHint = op.empty() ? "" : "; did you mean the operation '" + op + "'?";
       if (!(cga && res_.mode != "parallel"))
         diags_.warning("W001", s.firstUse,
                        "'" + s.name + "' has no rule: it stays a terminal shape and places no "
-                       "geometry");
+                       "geometry" + opHint);
+      else if (!op.empty())
+        diags_.warning("W001", s.firstUse, "'" + s.name + "' has no rule: it is a leaf and outputs its own geometry" + opHint);
       else if (const std::string near = nearName(s.name); !near.empty())
         // A CGA leaf is meant to have no rule, unless its name is a slip for one that has.
         diags_.warning("W001", s.firstUse,

@@ -6,6 +6,7 @@
 #include "frontend/cga/cga_translator.h"
 
 #include "frontend/builtins.h"
+#include "frontend/did_you_mean.h"
 
 #include <algorithm>
 #include <cctype>
@@ -383,7 +384,12 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
       notSupported(nameAt, "the function '" + fn + "'");
       return nullptr;
     }
-  error("E011", nameAt, "unknown function '" + fn + "' (not a function of this file or of CityEngine CGA)");
+  std::vector<std::string> known(std::begin(kSameFunctions), std::end(kSameFunctions));
+  known.insert(known.end(), std::begin(kKnownFunctions), std::end(kKnownFunctions));
+  for (const auto& [name, f] : functions_) known.push_back(name);
+  const std::string near = closestName(fn, known);  // "sqr": sqrt, or a slip for one of the file's
+  error("E011", nameAt, "unknown function '" + fn + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                            " (not a function of this file or of CityEngine CGA)");
   return nullptr;
 }
 

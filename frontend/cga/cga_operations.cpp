@@ -20,6 +20,7 @@
 #include "frontend/cga/cga_translator.h"
 
 #include "frontend/builtins.h"
+#include "frontend/did_you_mean.h"
 
 #include <cctype>
 #include <filesystem>
@@ -511,7 +512,11 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return;
   }
   if (std::islower(static_cast<unsigned char>(name[0]))) {
-    error("E800", nameAt, "unknown operation '" + name + "' (no rule of this file has that name)");
+    std::vector<std::string> known(std::begin(kCityEngineOperations), std::end(kCityEngineOperations));
+    for (const auto& [rule, params] : rules_) known.push_back(rule);
+    const std::string near = closestName(name, known);  // "extrud": extrude, or a rule's slip
+    error("E800", nameAt, "unknown operation '" + name + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                              " (no rule of this file has that name)");
     return;
   }
   // CityEngine derives a shape of a rule it does not have as a leaf (and warns).
