@@ -2,6 +2,7 @@
 
 #include "cli/lsp/lsp_text.h"
 #include "frontend/builtins.h"
+#include "frontend/cga/cga_parse.h"
 
 #include <cctype>
 #include <set>
@@ -45,7 +46,10 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
       case Definition::Kind::Field: add(d.name, kField, "field"); break;
     }
   }
-  for (const auto& c : frontend::allCommands()) add(c.name, kFunction, c.signature);
+  // fgsg's commands are not CGA's operations (split, extrude ...): a .cga file gets its
+  // own names and the math functions both dialects share.
+  if (!frontend::isCgaSource(a.path, text))
+    for (const auto& c : frontend::allCommands()) add(c.name, kFunction, c.signature);
   for (const auto& f : frontend::allFunctions()) add(f.name, kFunction, functionSignature(f));
   return Json{{"isIncomplete", false}, {"items", std::move(items)}};
 }

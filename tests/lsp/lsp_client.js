@@ -158,6 +158,10 @@ async function main() {
     textDocument: { uri: cgaUri, languageId: 'cga', version: 1, text: fs.readFileSync(cgaPath, 'utf8') },
   });
   assert.deepStrictEqual(await nextDiagnostics(cgaUri), []);
+  // Its completion offers its own names, not fgsg's commands (CGA's are lower-case).
+  const cgaList = await connection.sendRequest('textDocument/completion',
+                                               { textDocument: { uri: cgaUri }, position: { line: 39, character: 1 } });
+  assert.deepStrictEqual(cgaList.items.map((i) => i.label), ['Tower', 'Tile', 'tan']);
   const cgaSymbols = await connection.sendRequest('textDocument/documentSymbol', { textDocument: { uri: cgaUri } });
   assert.deepStrictEqual(cgaSymbols.map((s) => s.name), [
     'height', 'floor_height', 'brick_share', 'setback_distance', 'Lot', 'Footprint', 'Tower', 'Building', 'Roof',
