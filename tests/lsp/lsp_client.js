@@ -15,7 +15,8 @@ const [fgsg, source] = process.argv.slice(2);
 // Resolved as tools/node's own code would (the package's exports name vscode-jsonrpc/node).
 const rpc = require('module').createRequire(path.join(source, 'tools/node/package.json'))('vscode-jsonrpc/node');
 
-const uriOf = (p) => 'file://' + path.resolve(p);
+// As VS Code writes them: percent-encoded (a space is %20).
+const uriOf = (p) => require('url').pathToFileURL(path.resolve(p)).href;
 setTimeout(() => { console.error('FAIL: no answer within 60 s'); process.exit(1); }, 60000).unref();
 
 async function main() {
@@ -120,6 +121,22 @@ async function main() {
   assert.deepStrictEqual(diags.map(brief), [['E010', 1, 1, 7, 1, 15]]);
   assert.strictEqual(diags[0].message, `in ${path.resolve(source, 'tests/lsp/inputs/broken.fgsg')}:2:16: ` +
                                        "unknown name 'nope' (not a parameter of this rule, a const or an attr)");
+
+  // A folder whose name needs percent-encoding: the URI is decoded to find the import
+  // beside the file, and the module's URI is encoded again.
+  const spaced = path.join(work, 'my grammars');
+  fs.mkdirSync(spaced);
+  fs.writeFileSync(path.join(spaced, 'trim.fgsg'), 'Trim ~> I("cube");\n');
+  const spacedText = 'import "trim" as trim;\naxiom: S(1, 0, 1) trim.Trim;\n';
+  const spacedUri = uriOf(path.join(spaced, 'main.fgsg'));
+  assert.ok(spacedUri.includes('my%20grammars'));
+  connection.sendNotification('textDocument/didOpen',
+                              { textDocument: { uri: spacedUri, languageId: 'fgsg', version: 1, text: spacedText } });
+  assert.deepStrictEqual(await nextDiagnostics(spacedUri), []);
+  assert.deepStrictEqual(await connection.sendRequest('textDocument/definition',
+                                                      { textDocument: { uri: spacedUri }, position: { line: 1, character: 25 } }),
+                         [{ uri: uriOf(path.join(spaced, 'trim.fgsg')),
+                            range: { start: { line: 0, character: 0 }, end: { line: 0, character: 4 } } }]);
 
   // References and rename of a module's attr, from the importer: both files, not the
   // module's comment that names it.
