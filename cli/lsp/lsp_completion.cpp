@@ -4,6 +4,7 @@
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_parse.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -34,9 +35,16 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
   const std::string prefix = nameAt(lineText, byteAtUtf16(lineText, character), true);
   Json items = Json::array();
   std::set<std::string> seen;
+  // Each item replaces the whole name being written, its alias included: an editor's own
+  // idea of a word stops at the '.', and would write `parts.parts.Window`.
+  const Json replaced{{"start", {{"line", line}, {"character", std::max(character - static_cast<int>(prefix.size()), 0)}}},
+                      {"end", {{"line", line}, {"character", character}}}};
   auto add = [&](const std::string& label, int kind, const std::string& detail) {
     if (!startsLike(label, prefix) || !seen.insert(label).second) return;
-    items.push_back(Json{{"label", label}, {"kind", kind}, {"detail", detail}});
+    items.push_back(Json{{"label", label},
+                         {"kind", kind},
+                         {"detail", detail},
+                         {"textEdit", Json{{"range", replaced}, {"newText", label}}}});
   };
   for (const auto& d : a.definitions) {
     switch (d.kind) {

@@ -111,6 +111,22 @@ async function main() {
   assert.deepStrictEqual(where, [{ uri: uriOf(path.join(source, 'tests/lsp/inputs/parts.fgsg')),
                                    range: { start: { line: 3, character: 0 }, end: { line: 3, character: 6 } } }]);
 
+  // After `parts.`: the module's names, each replacing the whole qualified name.
+  connection.sendNotification('textDocument/didChange', {
+    textDocument: { uri: houseUri, version: 2 },
+    contentChanges: [{ range: { start: { line: 9, character: 0 }, end: { line: 9, character: 0 } }, text: 'Extra ~> parts.' }],
+  });
+  await nextDiagnostics(houseUri);
+  list = await connection.sendRequest('textDocument/completion',
+                                      { textDocument: { uri: houseUri }, position: { line: 9, character: 15 } });
+  assert.deepStrictEqual(list.items.map((i) => [i.label, i.kind, i.textEdit.range.start.character, i.textEdit.newText]),
+                         [['parts.pane', 10, 9, 'parts.pane'], ['parts.Window', 7, 9, 'parts.Window']]);
+  connection.sendNotification('textDocument/didChange', {
+    textDocument: { uri: houseUri, version: 3 },
+    contentChanges: [{ range: { start: { line: 9, character: 0 }, end: { line: 9, character: 15 } }, text: '' }],
+  });
+  assert.deepStrictEqual(await nextDiagnostics(houseUri), []);
+
   // An error inside an imported module: on the importer's import path, as fgsg check names it.
   const usesPath = path.join(source, 'tests/lsp/inputs/uses_broken.fgsg');
   const usesUri = uriOf(usesPath);
