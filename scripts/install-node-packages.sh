@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Installs the npm packages fgsg uses into tools/node/, pinned: the Khronos glTF
 # validator (the tests check every .glb we write against it), three.js (the page of
-# `fgsg view`, served from the build folder) and playwright-core (drives Debian's
-# chromium in the viewer's browser tests) and vscode-jsonrpc (the LSP client that drives
-# `fgsg lsp` in its tests). Idempotent: when the pinned versions are
-# already installed nothing touches the network, so a second run works offline.
+# `fgsg view`, served from the build folder), playwright-core (drives Debian's chromium
+# in the viewer's browser tests) and vscode-jsonrpc (the LSP client that drives `fgsg lsp`
+# in its tests). Idempotent: when the pinned versions are already installed nothing
+# touches the network, so a second run works offline.
 set -euo pipefail
 
 # Only 2.0.0-dev.* releases of the validator exist; a range like @2 would not match one.
