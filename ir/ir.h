@@ -386,14 +386,14 @@ struct Module {
   // that attr's value when the grammar runs (--set n=9), steps / depthBound its default.
   // -1: the count is a constant.
   int countAttr = -1;
-  // A `.cga` grammar: each lot (and the Footprint of its start) is CityEngine's initial
-  // shape, a face in its scope's XZ plane with x along its first edge and y up
-  // (rt::cga::polygonOnGround), not fgsg's Z-up footprint.
-  bool cityEngineLots = false;
   // lpfg's and L-Py's `maximum depth:`: at most this many passes of the decomposition
   // (homomorphism) rules after each step (before the turtle).
   int decompositionDepth = 1;
   int homomorphismDepth = 1;
+  // A `.cga` grammar: each lot (and the Footprint of its start) is CityEngine's initial
+  // shape, a face in its scope's XZ plane with x along its first edge and y up
+  // (rt::cga::polygonOnGround), not fgsg's Z-up footprint.
+  bool cityEngineLots = false;
   TurtleSettings turtle;
   // `#ignore: + - F;`: symbols context matching steps over (commands are always skipped).
   std::vector<uint32_t> contextIgnored;

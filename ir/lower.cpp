@@ -62,9 +62,9 @@ class Lowerer {
     m_.steps = sema_.steps;
     m_.depthBound = sema_.depthBound;
     m_.countAttr = sema_.countAttr.empty() ? -1 : m_.findAttr(sema_.countAttr);
-    m_.cityEngineLots = prog_.cityEngineLots;
     m_.decompositionDepth = prog_.decompositionDepth;
     m_.homomorphismDepth = prog_.homomorphismDepth;
+    m_.cityEngineLots = prog_.cityEngineLots;
     m_.turtle = {sema_.turtleAngle, sema_.turtleStep, sema_.turtleWidth,
                  sema_.turtleSegments == "tubes"     ? TurtleSegments::Tubes
                  : sema_.turtleSegments == "ribbons" ? TurtleSegments::Ribbons
