@@ -35,24 +35,11 @@ std::vector<Vec2> toPoints(const Polygon2& p) {
   return pts;
 }
 
-// joinHoles works on the ground, (x, z) counter-clockwise seen from +Y; a polygon's plane
-// (x, y) counter-clockwise about +Z is that with z = -y.
-std::vector<Vec2> flipped(const std::vector<Vec2>& pts) {
-  std::vector<Vec2> out;
-  for (const Vec2& p : pts) out.emplace_back(p.x(), -p.y());
-  return out;
-}
-
 // An outline with holes as one bridged polygon in the scope's normalised coordinates.
 bool store(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes, const Vec3& size,
            GeometryArena& arena, GeomRef& out, std::string& error) {
   std::vector<Vec2> ring = outline;
-  if (!holes.empty()) {
-    std::vector<std::vector<Vec2>> groundHoles;
-    for (const auto& h : holes) groundHoles.push_back(flipped(h));
-    if (!joinHoles(flipped(outline), groundHoles, "Offset: ", ring, error)) return false;
-    ring = flipped(ring);
-  }
+  if (!holes.empty() && !joinHolesInPlane(outline, holes, "Offset: ", ring, error)) return false;
   Polygon3 normalised;
   for (const Vec2& p : ring) normalised.emplace_back(p.x() / size.x(), p.y() / size.y(), 0.0);
   if (newellNormal(normalised).z() < 0) std::reverse(normalised.begin(), normalised.end());

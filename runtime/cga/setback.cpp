@@ -16,12 +16,6 @@ namespace {
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-std::vector<Vec2> flipped(const std::vector<Vec2>& pts) {
-  std::vector<Vec2> out;
-  for (const Vec2& p : pts) out.emplace_back(p.x(), -p.y());
-  return out;
-}
-
 // Corners that repeat the one before (a band ending in a point) taken out.
 std::vector<Vec2> distinct(const std::vector<Vec2>& ring, double eps) {
   std::vector<Vec2> out;
@@ -36,12 +30,7 @@ std::vector<Vec2> distinct(const std::vector<Vec2>& ring, double eps) {
 bool planePart(const FlatPolygon& poly, const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes,
                GeometryArena& arena, Part& out, std::string& error) {
   std::vector<Vec2> ring = outline;
-  if (!holes.empty()) {
-    std::vector<std::vector<Vec2>> groundHoles;
-    for (const auto& h : holes) groundHoles.push_back(flipped(h));
-    if (!joinHoles(flipped(outline), groundHoles, "Setback: ", ring, error)) return false;
-    ring = flipped(ring);
-  }
+  if (!holes.empty() && !joinHolesInPlane(outline, holes, "Setback: ", ring, error)) return false;
   Vec2 lo = ring[0], hi = ring[0];
   for (const Vec2& p : ring) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const Vec2 size = hi - lo;

@@ -604,4 +604,20 @@ bool joinHoles(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec
   return true;
 }
 
+bool joinHolesInPlane(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes,
+                      const std::string& what, std::vector<Vec2>& joined, std::string& error) {
+  const auto mirrored = [](const std::vector<Vec2>& pts) {
+    std::vector<Vec2> out;
+    out.reserve(pts.size());
+    for (const Vec2& p : pts) out.emplace_back(p.x(), -p.y());
+    return out;
+  };
+  std::vector<std::vector<Vec2>> groundHoles;
+  for (const auto& h : holes) groundHoles.push_back(mirrored(h));
+  std::vector<Vec2> ground;
+  if (!joinHoles(mirrored(outline), groundHoles, what, ground, error)) return false;
+  joined = mirrored(ground);
+  return true;
+}
+
 }  // namespace fgsg::rt::cga

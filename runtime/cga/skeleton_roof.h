@@ -82,4 +82,10 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
 bool joinHoles(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                const std::string& what, std::vector<Vec2>& joined, std::string& error);
 
+// The same for an outline and holes in a polygon's plane (x, y counter-clockwise seen from
+// +z, holes clockwise), whose y runs opposite to the ground's z: the rings are mirrored
+// onto the ground, joined there, and the joined ring mirrored back (Offset, Setback).
+bool joinHolesInPlane(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes,
+                      const std::string& what, std::vector<Vec2>& joined, std::string& error);
+
 }  // namespace fgsg::rt::cga
