@@ -64,6 +64,39 @@ TEST_CASE("an instance wholly inside another collides", "[collision]") {
   CHECK(flat.collides(a.cube, box({0, 0, 0.4}, {1, 1, 1})));
 }
 
+// docs/language.md: only a closed mesh encloses another. An open tube (no caps) with
+// room inside leaves a small cube in its hollow alone; a capped cylinder of the same
+// size holds it and so collides. Both tests that look for enclosure agree.
+TEST_CASE("only a closed mesh encloses another", "[collision]") {
+  Assets a;
+  std::string error;
+  const int tube = a.library.resolve("tube16", error);
+  const int cylinder = a.library.resolve("cylinder", error);
+  REQUIRE((tube >= 0 && cylinder >= 0));
+  for (CollisionTest test : {CollisionTest::Mesh, CollisionTest::Distance}) {
+    CAPTURE(static_cast<int>(test));
+    // The inner cube keeps 1.5 from every wall, more than the clearance of 0.1.
+    const Mat4 inner = box({0, 0, 0}, {0.5, 0.5, 0.5});
+    CollisionWorld open(a.library, test, 0.1);
+    open.add(tube, box({0, 0, 0}, {4, 4, 4}));
+    CHECK_FALSE(open.collides(a.cube, inner));
+    CHECK_FALSE(open.collides(a.cube, box({0.3, -0.4, 0.2}, {0.5, 0.5, 0.5}, 30)));
+    // Around the other way: a tube placed over a cube already there does not enclose it.
+    CollisionWorld openAround(a.library, test, 0.1);
+    openAround.add(a.cube, inner);
+    CHECK_FALSE(openAround.collides(tube, box({0, 0, 0}, {4, 4, 4})));
+    CollisionWorld closed(a.library, test, 0.1);
+    closed.add(cylinder, box({0, 0, 0}, {4, 4, 4}));
+    CHECK(closed.collides(a.cube, inner));
+    CHECK(closed.collides(a.cube, box({0.3, -0.4, 0.2}, {0.5, 0.5, 0.5}, 30)));
+    CollisionWorld closedAround(a.library, test, 0.1);
+    closedAround.add(a.cube, inner);
+    CHECK(closedAround.collides(cylinder, box({0, 0, 0}, {4, 4, 4})));
+    // The tube's wall itself still collides: open meshes are obstacles, only not solid.
+    CHECK(open.collides(a.cube, box({1.9, 0, 0}, {0.5, 0.5, 0.5})));
+  }
+}
+
 TEST_CASE("scaled instances share a mesh but keep their own sizes", "[collision]") {
   Assets a;
   CollisionWorld world(a.library, CollisionTest::Mesh, 0);
