@@ -75,6 +75,8 @@ const CommandInfo kCommands[] = {
     {CommandId::ShapeOperation, "Setback", 1, 1, BodyRule::AtLeastOne, "Setback(distance){ front: A | remainder: B }", nullptr},
     {CommandId::ShapeOperation, "SetbackToArea", 1, 1, BodyRule::AtLeastOne,
      "SetbackToArea(area){ all=: A | remainder: B }", nullptr},
+    {CommandId::ShapeOperation, "SetbackPerEdge", 1, 1, BodyRule::AtLeastOne,
+     "SetbackPerEdge(distance){ front: A | remainder: B } (distance evaluated on each edge)", nullptr},
     {CommandId::ShapeOperation, "ShapeL", 2, 2, BodyRule::AtLeastOne, "ShapeL(frontWidth, leftWidth){ shape: A | remainder: B }", nullptr},
     {CommandId::ShapeOperation, "ShapeU", 3, 3, BodyRule::AtLeastOne,
      "ShapeU(frontWidth, rightWidth, leftWidth){ shape: A | remainder: B }", nullptr},

@@ -45,7 +45,7 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
 
 bool shapeOperationLabel(const std::string& command, const std::string& label, std::string& allowed) {
   allowed.clear();
-  if (command == "Setback" || command == "SetbackToArea")
+  if (command == "Setback" || command == "SetbackToArea" || command == "SetbackPerEdge")
     return labelIn({"front", "back", "left", "right", "side", "all", "remainder", "streetFront", "streetBack",
                     "streetLeft", "streetRight", "streetSide", "north", "south", "east", "west"},
                    label, allowed);

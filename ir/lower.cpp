@@ -483,6 +483,19 @@ class Lowerer {
           }
         }
         for (const auto& part : item.body) op.partLabels.push_back(m_.internString(part.selector));
+        if (cmd.name == std::string("SetbackPerEdge")) {
+          // CityEngine evaluates the distance once per edge, on the edge (comp.index set):
+          // it moves into a first body, an EdgeDistance op the setback runs on each edge.
+          Op distance;
+          distance.kind = OpKind::ShapeOperation;
+          distance.loc = op.loc;
+          distance.str = m_.internString("EdgeDistance");
+          distance.args = std::move(op.args);
+          op.args.clear();
+          op.bodies.insert(op.bodies.begin(), Block{});
+          op.bodies.front().push_back(std::move(distance));
+          op.partLabels.insert(op.partLabels.begin(), m_.internString("#distance"));
+        }
         break;
       case CommandId::Print:
         op.kind = OpKind::Print;

@@ -15,6 +15,42 @@ std::string bare(std::string label) {
   return label;
 }
 
+// SetbackPerEdge's distance is an expression evaluated once per edge: the lowering puts it
+// in the op's first body as an EdgeDistance op (ir/lower.cpp), which the setback runs on
+// each edge and which leaves its value here. Per thread: each thread derives on its own.
+thread_local double* edgeDistanceSink = nullptr;
+
+// The distance of each edge of SetbackPerEdge: body 0 run on the edge as CityEngine's
+// comp(fe) component (x along the edge from corner i to i + 1, z the polygon's normal,
+// sx its length), with comp.index = i and comp.total = the number of edges.
+std::vector<double> distancesPerEdge(Derivation& d, const ir::Op& op, const rt::cga::FlatPolygon& polygon, State& st,
+                                     Exec& ex, Frame& f) {
+  const size_t n = polygon.ring.size();
+  std::vector<double> out(n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const auto a = polygon.ring[i], b = polygon.ring[(i + 1) % n];
+    const rt::Scope& plane = polygon.scope;
+    rt::Scope edge = plane;
+    const rt::Vec3 along = (plane.X() * (b.x() - a.x()) + plane.Y() * (b.y() - a.y())).normalized();
+    edge.axes.col(0) = along;
+    edge.axes.col(2) = plane.Z();
+    edge.axes.col(1) = plane.Z().cross(along);
+    edge.P = plane.P + plane.X() * a.x() + plane.Y() * a.y();
+    edge.S = rt::Vec3((b - a).norm(), 0.0, 0.0);
+    rt::Scope::Place place = st.scope.place;
+    place.compIndex = static_cast<int32_t>(i);
+    place.compTotal = static_cast<int32_t>(n);
+    double value = 0.0;
+    edgeDistanceSink = &value;
+    d.runBody(op, 0, edge, rt::GeomRef{rt::GeomKind::Edge, 0, 0}, st, ex, f, &place);
+    edgeDistanceSink = nullptr;
+    if (!std::isfinite(value))
+      throw DeriveError{op.loc, "R002", "SetbackPerEdge: the distance of edge " + std::to_string(i) + " is not a number"};
+    out[i] = value;
+  }
+  return out;
+}
+
 // Setback and shapeL/U/O: each edge's distance and the part it goes to, then the bands
 // and the remainder through their parts, in the order the edges run.
 void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, const double* a, State& st, Exec& ex,
@@ -30,12 +66,15 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
   std::vector<double> distance(edges, 0.0);
   std::vector<int> group(edges, -1);
   std::vector<bool> merged(labels.size(), false);
-  if (name == "Setback" || name == "SetbackToArea") {
+  if (name == "Setback" || name == "SetbackToArea" || name == "SetbackPerEdge") {
+    // SetbackPerEdge's body 0 is its distance (its label "#distance" selects no edge).
+    const std::vector<double> perEdge =
+        name == "SetbackPerEdge" ? distancesPerEdge(d, op, polygon, st, ex, f) : std::vector<double>(edges, a[0]);
     for (size_t k = 0; k < labels.size(); ++k) merged[k] = !labels[k].empty() && labels[k].back() == '=';
     for (size_t i = 0; i < edges; ++i)
       for (size_t k = 0; k < labels.size(); ++k)
         if (bare(labels[k]) != "remainder" && (rt::cga::edgeSelectorMask(labels[k]) & classes[i])) {
-          distance[i] = a[0];
+          distance[i] = perEdge[i];
           group[i] = static_cast<int>(k);
           break;
         }
@@ -83,6 +122,11 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
 void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex,
                          Frame& f) {
   const std::string& name = d.module().strings[op.str];
+  if (name == "EdgeDistance") {  // SetbackPerEdge's distance for the edge it runs on
+    if (!edgeDistanceSink) throw DeriveError{op.loc, "R002", "EdgeDistance outside SetbackPerEdge"};
+    *edgeDistanceSink = a[0];
+    return;
+  }
   if (name.rfind("Setback", 0) == 0 || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {
     setbackParts(d, op, name, a, st, ex, f);
     return;

@@ -9,6 +9,8 @@
 //   setback(d){ front : A | street.front = B | remainder : C }
 //                                             Setback(d){ front: A | streetFront=: B | remainder: C }
 //                                             (object.x as x, world.north as north; `=` merged)
+//   setbackToArea(area){ ... }  setbackPerEdge(distance){ ... }
+//                                             SetbackToArea  SetbackPerEdge (distance evaluated per edge)
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
 //   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance)
 //   primitiveQuad/Cube/Cylinder/Sphere/Disk(...)
@@ -28,7 +30,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"alignScopeToAxes", "AlignScopeToAxes"}, {"alignScopeToGeometry", "AlignScopeToGeometry"},
       {"rotateScope", "RotateScope"},           {"mirrorScope", "MirrorScope"},
       {"mirror", "Mirror"},                     {"setback", "Setback"},
-      {"setbackToArea", "SetbackToArea"},
+      {"setbackToArea", "SetbackToArea"},       {"setbackPerEdge", "SetbackPerEdge"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},
@@ -114,7 +116,7 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
       continue;
     }
     const std::string sel = selectorWord(sized->key);
-    const bool edges = fgsgName == "Setback" || fgsgName == "SetbackToArea";
+    const bool edges = fgsgName.rfind("Setback", 0) == 0;
     std::string label = edges ? setbackLabel(sel) : (sel == "shape" || sel == "remainder") ? sel : "";
     if (label.empty() || (fgsgName == "InnerRectangle" && label == "remainder")) {
       notSupported(rangeOf(sized->key), "the selector '" + sized->key->getText() + "' of " + name);
