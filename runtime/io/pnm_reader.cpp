@@ -32,10 +32,64 @@ bool readNumber(const std::string& b, size_t& pos, long& value) {
   return true;
 }
 
+// The 1-based line of byte `pos`, for the messages of plain files.
+size_t lineAt(const std::string& b, size_t pos) {
+  return 1 + size_t(std::count(b.begin(), b.begin() + std::min(pos, b.size()), '\n'));
+}
+
+// A byte as a message shows it: quoted when printable, else in hex.
+std::string shown(char c) {
+  if (c > ' ' && c < 127) return std::string("'") + c + "'";
+  static const char* hex = "0123456789abcdef";
+  return std::string("byte 0x") + hex[(unsigned char)c >> 4] + hex[(unsigned char)c & 15];
+}
+
+// P2/P3: the samples as decimal text.
+bool readPlainSamples(const std::string& b, const PnmHeader& header, std::vector<uint16_t>& samples,
+                      std::string& error) {
+  const size_t count = size_t(header.width) * size_t(header.height) * size_t(header.channels);
+  samples.assign(count, 0);
+  size_t pos = header.rasterOffset;
+  for (size_t i = 0; i < count; ++i) {
+    const size_t pixel = i / size_t(header.channels);
+    const std::string which = "sample " + std::to_string(i + 1) + " (row " + std::to_string(pixel / header.width + 1) +
+                              ", column " + std::to_string(pixel % header.width + 1) + ")";
+    skipBlanks(b, pos);
+    if (pos >= b.size()) {
+      error = "the plain PGM/PPM file is truncated: it ends at line " + std::to_string(lineAt(b, pos)) + " after " +
+              std::to_string(i) + " of its " + std::to_string(count) + " samples";
+      return false;
+    }
+    const size_t start = pos;
+    long value = 0;
+    if (!readNumber(b, pos, value) || (pos < b.size() && !isBlank(b[pos]) && b[pos] != '#')) {
+      const size_t bad = pos < b.size() && start < pos ? pos : start;
+      error = "the plain PGM/PPM file has " + shown(b[bad]) + " at line " + std::to_string(lineAt(b, bad)) +
+              " in " + which + ", which should be a decimal number";
+      return false;
+    }
+    if (value > header.maxValue) {
+      error = "the plain PGM/PPM file's " + which + " at line " + std::to_string(lineAt(b, start)) + " is " +
+              (value > 100000000 ? std::string("above 10^8") : std::to_string(value)) + ", above its maxval " +
+              std::to_string(header.maxValue);
+      return false;
+    }
+    samples[i] = uint16_t(value);
+  }
+  skipBlanks(b, pos);
+  if (pos < b.size()) {
+    error = "the plain PGM/PPM file goes on after its " + std::to_string(count) + " samples: " + shown(b[pos]) +
+            " at line " + std::to_string(lineAt(b, pos)) + " (is its width or height wrong?)";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool looksLikePnm(const std::string& bytes) {
-  return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6');
+  return bytes.size() >= 2 && bytes[0] == 'P' &&
+         (bytes[1] == '2' || bytes[1] == '3' || bytes[1] == '5' || bytes[1] == '6');
 }
 
 bool readPnmHeader(const std::string& bytes, PnmHeader& header, std::string& error) {
@@ -53,7 +107,8 @@ bool readPnmHeader(const std::string& bytes, PnmHeader& header, std::string& err
     error = "the PGM/PPM header does not end in a blank after its maxval";
     return false;
   }
-  header.channels = bytes[1] == '6' ? 3 : 1;
+  header.channels = bytes[1] == '3' || bytes[1] == '6' ? 3 : 1;
+  header.plain = bytes[1] == '2' || bytes[1] == '3';
   header.width = int(width);
   header.height = int(height);
   header.maxValue = int(maxValue);
@@ -63,6 +118,7 @@ bool readPnmHeader(const std::string& bytes, PnmHeader& header, std::string& err
 
 bool readPnmSamples(const std::string& bytes, const PnmHeader& header, std::vector<uint16_t>& samples,
                     std::string& error) {
+  if (header.plain) return readPlainSamples(bytes, header, samples, error);
   const size_t have = bytes.size() - std::min(bytes.size(), header.rasterOffset);
   if (have < header.rasterBytes()) {
     error = "the PGM/PPM file is truncated: " + std::to_string(have) + " bytes of samples, " +

@@ -328,7 +328,12 @@ bool checkImage(const std::string& path, const std::string& bytes, const ImageLi
       return false;
     }
     if (!checkSize(path, pnm.width, pnm.height, limits, error)) return false;
-    if (bytes.size() - pnm.rasterOffset < pnm.rasterBytes()) {
+    std::vector<uint16_t> samples;  // a plain file is complete only when every sample reads
+    if (pnm.plain && !readPnmSamples(bytes, pnm, samples, why)) {
+      error = path + ": " + why;
+      return false;
+    }
+    if (!pnm.plain && bytes.size() - pnm.rasterOffset < pnm.rasterBytes()) {
       error = path + ": the PGM/PPM file is truncated: " + std::to_string(bytes.size() - pnm.rasterOffset) +
               " bytes of samples, " + std::to_string(pnm.rasterBytes()) + " needed";
       return false;

@@ -2,12 +2,12 @@
 // (texture/color_texture.h, what Texture() embeds), image fields and synthesis examples and
 // masks (synthesis/image_reader.h) all decode here, with the project's only copy of
 // stb_image. The format is told by the file's first bytes, never by its name: PNG, JPEG,
-// BMP and binary PGM/PPM (pnm_reader.h). TGA is not read: it has no signature (any few
-// bytes pass for one) and stb_image decodes a short one into uninitialised memory.
-// Every file is checked complete before anything is decoded (PNG: every chunk present up
-// to IEND, critical ones with a sound CRC; JPEG: the end-of-image marker after the scans;
-// BMP and PGM/PPM: as many pixel bytes as the header declares), so a truncated image is an
-// error, never pixels made up by the decoder.
+// BMP and PGM/PPM, binary or plain text (pnm_reader.h). TGA is not read: it has no
+// signature (any few bytes pass for one) and stb_image decodes a short one into
+// uninitialised memory. Every file is checked complete before anything is decoded (PNG:
+// every chunk present up to IEND, critical ones with a sound CRC; JPEG: the end-of-image
+// marker after the scans; BMP and PGM/PPM: as many pixel bytes, or numbers, as the header
+// declares), so a truncated image is an error, never pixels made up by the decoder.
 #pragma once
 
 #include <cstdint>

@@ -23,8 +23,8 @@ constexpr int64_t kMaxTexels = int64_t(1) << 26;
 //    (samples above it read 1).
 class TextureMap {
  public:
-  // Reads a PNG, JPEG, BMP or binary PGM/PPM (P5/P6) file, 8 or 16 bits per channel, 1 to 4
-  // channels (the format by its first bytes), through the bounded input reader
+  // Reads a PNG, JPEG, BMP or PGM/PPM (P5/P6, or plain P2/P3) file, 8 or 16 bits per
+  // channel, 1 to 4 channels (the format by its first bytes), through the bounded input reader
   // (runtime/io/read_input.h) and the image reader (runtime/io/read_image.h). False and a message naming `path` when the
   // file is missing or unreadable, is not an image of these kinds, is corrupt or
   // truncated, is empty, or exceeds the limits above; the map is then unchanged.

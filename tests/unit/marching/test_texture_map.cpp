@@ -331,3 +331,69 @@ TEST_CASE("a failed texture load keeps the texture already loaded", "[texture]")
   CHECK(m.width() == 1);
   CHECK(m.texel(0, 0) == 100 / 255.0);
 }
+
+TEST_CASE("a plain (ASCII) PGM or PPM reads as its binary twin does", "[texture][pnm]") {
+  const auto dir = fgsg::test::scratchDir("texture", "plain");
+  SECTION("8-bit P2 with comments and ragged whitespace") {
+    writeBytes(dir / "grey.pgm", "P2 # painted in a text editor\n3\t2\n# maxval next\n255\n"
+                                 "0   128\n\n255 # end of row 1 is mid-line\r\n7\t\t8 9   \n");
+    writeBytes(dir / "grey5.pgm", pnm('5', 3, 2, 255, {0, 128, 255, 7, 8, 9}));
+    const TextureMap m = loaded(dir / "grey.pgm"), twin = loaded(dir / "grey5.pgm");
+    CHECK(m.width() == 3);
+    CHECK(m.height() == 2);
+    CHECK(m.bitsPerChannel() == 8);
+    const int expected[2][3] = {{0, 128, 255}, {7, 8, 9}};
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        CHECK(m.texel(i, j) == expected[j][i] / 255.0);
+        CHECK(m.texel(i, j) == twin.texel(i, j));
+      }
+  }
+  SECTION("16-bit P2 up to maxval 65535") {
+    writeBytes(dir / "grey16.pgm", "P2\n2 2\n65535\n0 65535\n12345 300\n");
+    const TextureMap m = loaded(dir / "grey16.pgm");
+    CHECK(m.bitsPerChannel() == 16);
+    CHECK(m.texel(0, 0) == 0.0);
+    CHECK(m.texel(1, 0) == 1.0);
+    CHECK(m.texel(0, 1) == 12345 / 65535.0);
+    CHECK(m.texel(1, 1) == 300 / 65535.0);
+  }
+  SECTION("a small maxval scales the samples") {
+    writeBytes(dir / "four.pgm", "P2 2 1 4 1 4");
+    const TextureMap m = loaded(dir / "four.pgm");
+    CHECK(m.texel(0, 0) == 0.25);
+    CHECK(m.texel(1, 0) == 1.0);
+  }
+  SECTION("P3 colour, brightest channel as P6") {
+    writeBytes(dir / "rgb.ppm", "P3\n1 1\n100\n20 50 10\n");
+    CHECK(loaded(dir / "rgb.ppm").texel(0, 0) == 50 / 100.0);
+  }
+}
+
+TEST_CASE("a broken plain PGM is refused with its line and sample", "[texture][pnm]") {
+  const auto dir = fgsg::test::scratchDir("texture", "plain_errors");
+  const auto error = [&](const std::string& name, const std::string& bytes) {
+    writeBytes(dir / name, bytes);
+    const std::string e = loadError(dir / name);
+    CHECK(e.rfind((dir / name).string() + ": ", 0) == 0);
+    return e.substr((dir / name).string().size() + 2);
+  };
+  CHECK(error("short.pgm", "P2\n2 2\n255\n1 2\n3\n") ==
+        "the plain PGM/PPM file is truncated: it ends at line 6 after 3 of its 4 samples");
+  CHECK(error("letter.pgm", "P2\n2 1\n255\n1\nx\n") ==
+        "the plain PGM/PPM file has 'x' at line 5 in sample 2 (row 1, column 2), which should be a decimal number");
+  CHECK(error("glued.pgm", "P2\n2 1\n255\n12a 3\n") ==
+        "the plain PGM/PPM file has 'a' at line 4 in sample 1 (row 1, column 1), which should be a decimal number");
+  CHECK(error("minus.pgm", "P2\n1 2\n255\n0\n-4\n") ==
+        "the plain PGM/PPM file has '-' at line 5 in sample 2 (row 2, column 1), which should be a decimal number");
+  CHECK(error("bright.pgm", "P2\n2 1\n255\n255 256\n") ==
+        "the plain PGM/PPM file's sample 2 (row 1, column 2) at line 4 is 256, above its maxval 255");
+  CHECK(error("huge.pgm", "P2\n1 1\n65535\n99999999999\n") ==
+        "the plain PGM/PPM file's sample 1 (row 1, column 1) at line 4 is above 10^8, above its maxval 65535");
+  CHECK(error("long.pgm", "P2\n1 1\n255\n1 2\n") ==
+        "the plain PGM/PPM file goes on after its 1 samples: '2' at line 4 (is its width or height wrong?)");
+  CHECK(error("binary.pgm", std::string("P2\n1 1\n255\n") + char(0)) ==
+        "the plain PGM/PPM file has byte 0x00 at line 4 in sample 1 (row 1, column 1), which should be a decimal number");
+  CHECK(error("deep.pgm", "P2\n1 1\n70000\n1\n") == "the PGM/PPM maxval is 70000, not between 1 and 65535");
+  CHECK(error("noheader.pgm", "P2\n4\n") == "the PGM/PPM header lacks its width, height or maxval");
+}
