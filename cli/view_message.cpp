@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 
@@ -32,6 +33,108 @@ bool valueText(const Json& v, std::string& text) {
     return true;
   }
   return false;
+}
+
+// A finite number within kMaxPageCoordinate.
+bool coordinate(const Json& v, double& out) {
+  if (!v.is_number()) return false;
+  out = v.get<double>();
+  return std::isfinite(out) && std::abs(out) <= kMaxPageCoordinate;
+}
+
+// A number from 0 to 1.
+bool unit(const Json& v, double& out) { return v.is_number() && (out = v.get<double>()) >= 0 && out <= 1; }
+
+// Only the fields in `allowed` besides "type".
+bool onlyFields(const Json& j, std::initializer_list<const char*> allowed, const std::string& kind, std::string& reason) {
+  for (const auto& [key, value] : j.items()) {
+    if (key == "type") continue;
+    bool known = false;
+    for (const char* a : allowed) known = known || key == a;
+    if (!known) {
+      reason = kind + ": unknown field " + quoted(key);
+      return false;
+    }
+  }
+  return true;
+}
+
+bool parseSeeds(const Json& j, std::vector<PageSeed>& out, std::string& reason) {
+  if (!onlyFields(j, {"seeds"}, "seeds", reason)) return false;
+  const auto list = j.find("seeds");
+  if (list == j.end() || !list->is_array() || list->size() > kMaxPageSeeds) {
+    reason = "seeds: \"seeds\" must be a list of at most " + std::to_string(kMaxPageSeeds) + " seeds";
+    return false;
+  }
+  for (const Json& s : *list) {
+    PageSeed seed;
+    bool ok = s.is_array() && (s.size() == 3 || s.size() == 6);
+    for (size_t k = 0; ok && k < s.size(); ++k) ok = coordinate(s[k], k < 3 ? seed.point[k] : seed.direction[k - 3]);
+    seed.hasDirection = ok && s.size() == 6;
+    if (ok && seed.hasDirection) ok = std::hypot(seed.direction[0], seed.direction[1], seed.direction[2]) > 0;
+    if (!ok) {
+      reason = "seeds: seed " + std::to_string(out.size()) + " must be [x,y,z] or [x,y,z,dx,dy,dz] (finite, a non-zero heading)";
+      return false;
+    }
+    out.push_back(seed);
+  }
+  return true;
+}
+
+bool parsePaint(const Json& j, PagePaint& out, std::string& reason) {
+  if (!onlyFields(j, {"texture", "stroke", "dabs", "radius", "strength", "value", "erase"}, "paint", reason)) return false;
+  const auto texture = j.find("texture");
+  bool named = texture != j.end() && texture->is_string();
+  if (named) {
+    out.texture = texture->get<std::string>();
+    named = !out.texture.empty() && out.texture.size() <= kMaxPageNameBytes;
+    for (const char c : out.texture) named = named && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  }
+  if (!named) {
+    reason = "paint: \"texture\" must name one of the grammar's textures (letters, digits, _)";
+    return false;
+  }
+  const auto stroke = j.find("stroke");
+  if (stroke == j.end() || !stroke->is_number_unsigned()) {
+    reason = "paint: \"stroke\" must be a whole number from 0";
+    return false;
+  }
+  out.stroke = stroke->get<uint64_t>();
+  const auto dabs = j.find("dabs");
+  if (dabs == j.end() || !dabs->is_array() || dabs->empty() || dabs->size() > kMaxPageDabs) {
+    reason = "paint: \"dabs\" must be a list of 1 to " + std::to_string(kMaxPageDabs) + " points [x,y,z]";
+    return false;
+  }
+  for (const Json& d : *dabs) {
+    std::array<double, 3> p{};
+    bool ok = d.is_array() && d.size() == 3;
+    for (size_t k = 0; ok && k < 3; ++k) ok = coordinate(d[k], p[k]);
+    if (!ok) {
+      reason = "paint: every dab must be [x,y,z] of finite numbers";
+      return false;
+    }
+    out.dabs.push_back(p);
+  }
+  const auto radius = j.find("radius");
+  if (radius == j.end() || !coordinate(*radius, out.radius) || !(out.radius > 0)) {
+    reason = "paint: \"radius\" must be a positive finite number";
+    return false;
+  }
+  for (const auto& [key, target] : {std::pair<const char*, double*>{"strength", &out.strength}, {"value", &out.value}}) {
+    const auto it = j.find(key);
+    if (it != j.end() && !unit(*it, *target)) {
+      reason = std::string("paint: \"") + key + "\" must be a number from 0 to 1";
+      return false;
+    }
+  }
+  if (const auto erase = j.find("erase"); erase != j.end()) {
+    if (!erase->is_boolean()) {
+      reason = "paint: \"erase\" must be true or false";
+      return false;
+    }
+    out.erase = erase->get<bool>();
+  }
+  return true;
 }
 
 }  // namespace
@@ -100,6 +203,18 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
     }
     if (!found) reason = "pick: no \"instance\"";
     return found;
+  }
+  if (kind == "seeds") {
+    out.kind = PageRequest::Kind::Seeds;
+    return parseSeeds(j, out.seeds, reason);
+  }
+  if (kind == "paint") {
+    out.kind = PageRequest::Kind::Paint;
+    return parsePaint(j, out.paint, reason);
+  }
+  if (kind == "undo" || kind == "redo") {
+    out.kind = kind == "undo" ? PageRequest::Kind::Undo : PageRequest::Kind::Redo;
+    return onlyFields(j, {}, kind, reason);
   }
   if (kind != "set") {
     reason = "unknown message type " + quoted(kind);

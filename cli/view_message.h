@@ -3,10 +3,15 @@
 // schema. A message that fails gets a {"type":"rejected"} reply and is otherwise ignored.
 //   {"type":"set", "attrs":{"name": "text" | number | boolean, ...}, "seed": N}
 //   {"type":"pick", "instance": N}
+//   {"type":"seeds", "seeds":[[x,y,z] | [x,y,z,dx,dy,dz], ...]}   (the whole list, #49)
+//   {"type":"paint", "texture":"NAME", "stroke":N, "dabs":[[x,y,z], ...], "radius":R,
+//    "strength":S, "value":G, "erase":false}                       (a brush stroke, #49)
+//   {"type":"undo"}, {"type":"redo"}                               (the last paint stroke)
 // Whether each name is an attribute of the grammar, and each value one of its kind, the
 // session checks against the grammar it has compiled.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -20,15 +25,36 @@ constexpr int kMaxPageMessageDepth = 4;
 constexpr size_t kMaxPageAttrs = 256;
 constexpr size_t kMaxPageNameBytes = 128;
 constexpr size_t kMaxPageValueBytes = 4096;
+constexpr size_t kMaxPageSeeds = 1024;   // a seed file the page edits by hand
+constexpr size_t kMaxPageDabs = 256;     // brush positions in one paint message
+constexpr double kMaxPageCoordinate = 1e9;  // |x|, beyond any surface's size
+
+struct PageSeed {
+  double point[3] = {0, 0, 0};
+  bool hasDirection = false;
+  double direction[3] = {1, 0, 0};
+};
+
+// One piece of a brush stroke: every texel whose surface point lies within `radius` of a
+// dab moves `strength` of the way to `value` (erase: to the texture as it was loaded).
+struct PagePaint {
+  std::string texture;  // the grammar's texture name, not a file
+  uint64_t stroke = 0;  // pieces of one stroke share it: one undo step
+  std::vector<std::array<double, 3>> dabs;
+  double radius = 0, strength = 1, value = 1;
+  bool erase = false;
+};
 
 struct PageRequest {
-  enum class Kind { Set, Pick };
+  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo };
   Kind kind = Kind::Set;
   bool hasAttrs = false;  // set: the page's values replace all earlier ones
   std::vector<std::pair<std::string, std::string>> attrs;  // name, value as --set writes it
   bool hasSeed = false;
   uint64_t seed = 0;
   uint32_t instance = 0;  // pick
+  std::vector<PageSeed> seeds;  // seeds
+  PagePaint paint;              // paint
 };
 
 // False with a short reason (no text of the message quoted beyond 60 bytes).

@@ -83,3 +83,55 @@ TEST_CASE("view messages: size and nesting are bounded before any parse") {
   for (int i = 0; i < 300; ++i) many += (i ? "," : "") + ("\"a" + std::to_string(i) + "\":1");
   CHECK_FALSE(refused(many + "}}").empty());
 }
+
+TEST_CASE("view messages: seeds, paint, undo and redo as the page sends them (#49)") {
+  PageRequest r;
+  std::string reason;
+  REQUIRE(parsePageRequest(R"({"type":"seeds","seeds":[[0.25,1,0],[1,2,3,0,0,-1]]})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Seeds);
+  REQUIRE(r.seeds.size() == 2);
+  CHECK(r.seeds[0].point[0] == 0.25);
+  CHECK_FALSE(r.seeds[0].hasDirection);
+  CHECK(r.seeds[1].hasDirection);
+  CHECK(r.seeds[1].direction[2] == -1);
+  REQUIRE(parsePageRequest(R"({"type":"seeds","seeds":[]})", r, reason));
+  CHECK(r.seeds.empty());
+  REQUIRE(parsePageRequest(
+      R"({"type":"paint","texture":"mask","stroke":4,"dabs":[[0,1,0],[0.1,1,0]],"radius":0.2,"strength":0.5,"value":1,"erase":false})",
+      r, reason));
+  CHECK(r.kind == PageRequest::Kind::Paint);
+  CHECK(r.paint.texture == "mask");
+  CHECK(r.paint.stroke == 4);
+  CHECK(r.paint.dabs.size() == 2);
+  CHECK(r.paint.radius == 0.2);
+  CHECK(r.paint.strength == 0.5);
+  REQUIRE(parsePageRequest(R"({"type":"undo"})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Undo);
+  REQUIRE(parsePageRequest(R"({"type":"redo"})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Redo);
+}
+
+TEST_CASE("view messages: bad seeds and strokes are refused with a reason (#49)") {
+  CHECK(refused(R"({"type":"seeds","seeds":[[0,1]]})").find("seed 0") != std::string::npos);
+  CHECK(refused(R"({"type":"seeds","seeds":[[0,1,0,0,0,0]]})").find("non-zero heading") != std::string::npos);
+  CHECK(refused(R"({"type":"seeds","seeds":[[0,1,1e300]]})") != "");
+  CHECK(refused(R"({"type":"seeds","seeds":[["0",1,0]]})") != "");
+  CHECK(refused(R"({"type":"seeds","seeds":[[0,1,0]],"file":"/etc/passwd"})").find("unknown field") != std::string::npos);
+  std::string many = R"({"type":"seeds","seeds":[)";
+  for (int i = 0; i < 1025; ++i) many += std::string(i ? "," : "") + "[0,0,0]";
+  CHECK(refused(many + "]}").find("at most 1024") != std::string::npos);
+  const std::string dab = R"("stroke":1,"dabs":[[0,0,0]],"radius":0.1)";
+  CHECK(refused(R"({"type":"paint","texture":"../g.fgsg",)" + dab + "}").find("texture") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"a/b",)" + dab + "}") != "");
+  CHECK(refused(R"({"type":"paint","texture":"",)" + dab + "}") != "");
+  CHECK(refused(R"({"type":"paint","texture":"mask","stroke":1,"dabs":[],"radius":0.1})").find("dabs") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"mask","stroke":1,"dabs":[[0,0,0]],"radius":-1})").find("radius") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"mask",)" + dab + R"(,"strength":2})").find("strength") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"mask",)" + dab + R"(,"value":-0.1})").find("value") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"mask",)" + dab + R"(,"path":"x.png"})").find("unknown field") != std::string::npos);
+  CHECK(refused(R"({"type":"paint","texture":"mask","stroke":-1,"dabs":[[0,0,0]],"radius":0.1})").find("stroke") != std::string::npos);
+  std::string dabs = R"({"type":"paint","texture":"mask","stroke":1,"radius":0.1,"dabs":[)";
+  for (int i = 0; i < 257; ++i) dabs += std::string(i ? "," : "") + "[0,0,0]";
+  CHECK(refused(dabs + "]}").find("dabs") != std::string::npos);
+  CHECK(refused(R"({"type":"undo","steps":3})").find("unknown field") != std::string::npos);
+}
