@@ -12,6 +12,7 @@
 #include "cli/view_server.h"
 #include "cli/view_session.h"
 #include "runtime/abandonable.h"
+#include "runtime/io/cache_folder.h"
 #include "runtime/io/read_input.h"
 
 #include <atomic>
@@ -26,13 +27,19 @@ namespace {
 
 const char* kViewHelp = R"(usage: fgsg view FILE [--port N] [--host ADDRESS] [--no-token] [--seed N]
                  [--set name=value]... [--surface mesh.off] [--engine jit|interp]
-                 [--start-rule NAME]
+                 [--start-rule NAME] [--seed-points FILE]
 
 Serves a page at http://ADDRESS:N/?token=... (default 127.0.0.1, port 8765; --port 0
 picks a free one) that shows FILE's model and re-derives it live: when FILE or a file in
 its folder or its assets/ folder is saved, when an attribute is changed in the page's
 inspector, and when the seed is stepped. Each open page has its own values and seed.
 Errors show in the page; the last good model stays. Ctrl-C stops the server.
+
+On a surface the page also edits what a run reads from files: the seeds of on-mesh
+marching (click the surface, drag, set a heading), written to FILE of --seed-points
+(default: FILE's name with .seeds, beside it) as `fgsg run --seed-points` reads them;
+and the grammar's textures, painted with a brush and written back as grey PNG (only
+files inside the grammar's folder). Every page re-derives after such an edit.
 
 The server answers only requests that name it (Host 127.0.0.1, localhost, [::1] or
 --host), WebSockets only from its own page (Origin), and only with the session token
@@ -64,8 +71,12 @@ ViewCommandOptions parseViewOptions(const Args& args) {
   engineFlag(cl, o.view.engine);
   setFlag(cl, o.view.derive);
   startRuleFlag(cl, o.view.startRule);
+  cl.text("--seed-points", o.view.seedFile);
   cl.parse(args);
   if (o.view.file.empty()) throw UsageError{"no grammar file given: fgsg view FILE [options]"};
+  // fgsg view writes its seeds to a file: an inline list ("x,y,z") has nowhere to go.
+  if (o.view.seedFile.find_first_of(",;") != std::string::npos)
+    throw UsageError{"--seed-points " + o.view.seedFile + ": fgsg view takes a seed file (it writes the seeds the page places)"};
   if (o.noToken && !isLoopbackHost(o.host))
     throw UsageError{"--host " + o.host + " with --no-token: a server reachable from the network needs its token"};
   return o;
@@ -96,6 +107,17 @@ int view(const Args& args) {
     }
     opt.view.derive.surfaceOverride = std::filesystem::absolute(opt.view.derive.surfaceOverride).string();
   }
+  if (opt.view.seedFile.empty()) opt.view.seedFile = defaultSeedFile(opt.view.file);
+  opt.view.seedFile = std::filesystem::absolute(opt.view.seedFile).lexically_normal().string();
+  {
+    ViewSeeds seeds;
+    if (!readSeedFile(opt.view.seedFile, seeds, error)) {
+      std::cerr << "fgsg view: " << error << "\n";
+      return 1;
+    }
+  }
+  // Surfaces laid out once are kept, as fgsg run keeps them (a page's edit derives again).
+  if (const std::string cache = rt::io::cacheFolder(); !cache.empty()) opt.view.derive.atlasCacheDir = cache + "/atlas";
   const std::string pageDir = findViewerDir(error);
   ViewStaticFiles page;
   if (pageDir.empty() || !page.load(pageDir, error)) {

@@ -123,6 +123,8 @@ const char* const kView =
     "  --host ADDRESS     the address to listen on (default 127.0.0.1)\n"
     "  --no-token         serve without the session token (127.0.0.1 only)\n"
     "  --seed N           the first seed (the page steps it)\n"
+    "  --seed-points FILE where the page's marching seeds are written and read (default: the\n"
+    "                     grammar's name with .seeds, beside it; fgsg run --seed-points reads it)\n"
     "%SET%"
     "%ENGINE%"
     "%SURFACE%"

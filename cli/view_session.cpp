@@ -9,6 +9,7 @@
 #include "cli/options.h"
 #include "cli/view_message.h"
 #include "cli/view_scene.h"
+#include "cli/view_surface.h"
 #include "runtime/assemble.h"
 #include "runtime/io/write_instances.h"
 
@@ -16,7 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace fgsg::cli {
@@ -61,6 +65,8 @@ ViewSession::ViewSession(ViewOptions options, ViewServer& server)
   startSeed_ = options_.derive.seed;
   for (const auto& [name, value] : options_.derive.attrOverrides) startAttrs_[name] = value;
   options_.derive.attrOverrides.clear();
+  std::string error;
+  if (!readSeedFile(options_.seedFile, seeds_, error)) std::cerr << "fgsg view: " << error << "\n";
   seen_ = watchedFiles({});
   worker_ = std::thread([this] { work(); });
 }
@@ -98,6 +104,7 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   std::string reason;
   if (!parsePageRequest(text, request, reason)) return reject(page, reason);
   if (request.kind == PageRequest::Kind::Pick) return pick(page, request.instance);
+  if (request.kind != PageRequest::Kind::Set) return editFiles(page, request);
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = pages_.find(page);
   if (it == pages_.end()) return;
@@ -116,12 +123,54 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   wake_.notify_all();
 }
 
+void ViewSession::editFiles(uint64_t page, const PageRequest& request) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::string file, reason;
+  bool done = false;
+  switch (request.kind) {
+    case PageRequest::Kind::Seeds: {
+      ViewSeeds seeds;
+      for (const PageSeed& p : request.seeds) {
+        rt::DeriveOptions::Seed s;
+        std::copy(p.point, p.point + 3, s.point);
+        std::copy(p.direction, p.direction + 3, s.direction);
+        s.hasDirection = p.hasDirection;
+        seeds.push_back(s);
+      }
+      done = writeSeedFile(options_.seedFile, seeds, fs::path(options_.file).filename().string(), reason);
+      if (done) seeds_ = std::move(seeds), file = options_.seedFile;
+      break;
+    }
+    case PageRequest::Kind::Paint: done = paint_.paint(request.paint, file, reason); break;
+    case PageRequest::Kind::Undo: done = paint_.undo(file, reason); break;
+    case PageRequest::Kind::Redo: done = paint_.redo(file, reason); break;
+    default: break;
+  }
+  if (!done) return reject(page, reason);
+  edited(page, file);
+}
+
+void ViewSession::edited(uint64_t page, const std::string& file) {
+  // Written here: the watcher has no reason to compile again. Its names for the file may
+  // be spelt otherwise (relative data folders): each that is the same file is updated.
+  std::error_code ec;
+  const auto now = watchedFiles(dataFiles_);
+  for (auto it = seen_.begin(); it != seen_.end();)
+    it = it->first == file && !now.count(file) ? seen_.erase(it) : std::next(it);  // a seed file removed
+  for (const auto& [name, time] : now)
+    if (name == file || fs::equivalent(name, file, ec)) seen_[name] = time;
+  for (auto& [id, p] : pages_) p.pending = true;
+  server_.sendText(page, Json{{"type", "written"}, {"file", fs::path(file).filename().string()}}.dump());
+  wake_.notify_all();
+}
+
 std::map<std::string, fs::file_time_type> ViewSession::watchedFiles(const std::vector<std::string>& data) const {
   std::map<std::string, fs::file_time_type> out;
   std::error_code ec;
   for (const std::string& f : data) out[f] = fs::last_write_time(f, ec);
   const fs::path grammar = fs::absolute(options_.file, ec);
   out[grammar.string()] = fs::last_write_time(grammar, ec);
+  if (fs::exists(options_.seedFile, ec)) out[options_.seedFile] = fs::last_write_time(options_.seedFile, ec);
   for (const fs::path& dir : {grammar.parent_path(), grammar.parent_path() / "assets"}) {
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
       if (it->is_regular_file(ec)) out[it->path().string()] = fs::last_write_time(it->path(), ec);
@@ -138,6 +187,17 @@ void ViewSession::checkFiles() {
   auto now = watchedFiles(data);
   std::lock_guard<std::mutex> lock(mutex_);
   if (now == seen_) return;
+  // The seed file edited outside the page: its seeds from now on (a bad one: the last).
+  const auto seedFile = [&](const auto& files) {
+    const auto it = files.find(options_.seedFile);
+    return it == files.end() ? std::optional<fs::file_time_type>() : it->second;
+  };
+  if (seedFile(now) != seedFile(seen_)) {
+    std::string error;
+    ViewSeeds seeds;
+    if (readSeedFile(options_.seedFile, seeds, error)) seeds_ = std::move(seeds);
+    else std::cerr << "fgsg view: " << error << " (the last seeds kept)\n";
+  }
   seen_ = std::move(now);
   recompile_ = true;
   for (auto& [id, p] : pages_) p.pending = true;  // each page again, with its own values
@@ -152,6 +212,7 @@ void ViewSession::work() {
       uint64_t seed;
       std::vector<uint64_t> pages;
     };
+    ViewSeeds seeds;
     std::map<std::pair<uint64_t, std::map<std::string, std::string>>, Group> groups;  // by seed and values
     {
       std::unique_lock<std::mutex> lock(mutex_);
@@ -164,6 +225,7 @@ void ViewSession::work() {
       if (stopping_) return;
       recompile = recompile_;
       recompile_ = false;
+      seeds = seeds_;
       for (auto& [id, p] : pages_) {
         if (!p.pending) continue;
         p.pending = false;
@@ -178,7 +240,7 @@ void ViewSession::work() {
       for (uint64_t page : g.pages) server_.sendText(page, progress);
       std::shared_ptr<Derived> d;
       try {
-        d = derive(recompile, g.attrs, g.seed);
+        d = derive(recompile, g.attrs, g.seed, seeds);
       } catch (const std::exception& e) {  // the JIT's plugin missing, out of memory ...
         d = std::make_shared<Derived>();
         d->error = options_.file + ": " + e.what();
@@ -196,13 +258,19 @@ void ViewSession::work() {
 
 void ViewSession::send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d) {
   if (!d->info.empty() && d->info != state.infoSent) server_.sendText(page, state.infoSent = d->info);
+  if (d->surface && d->surface.get() != state.surfaceSent) {
+    state.surfaceSent = d->surface.get();
+    server_.sendText(page, d->surface->first);
+    server_.sendBinary(page, d->surface->second);
+  }
   if (d->modelJson.empty()) return server_.sendText(page, errorJson(d->error));
   state.model = d;
   server_.sendText(page, d->modelJson);
   for (const std::string& p : d->parts) server_.sendBinary(page, p);
 }
 
-std::string ViewSession::infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const {
+std::string ViewSession::infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed,
+                                  const ViewSeeds& seeds) const {
   Json list = Json::array();
   for (const ir::Attr& a : compiled_->module.attrs) {
     if (a.name.rfind("lot:", 0) == 0) continue;  // Lot.* queries, set by --lots only
@@ -221,11 +289,40 @@ std::string ViewSession::infoJson(const std::map<std::string, std::string>& attr
     }
     list.push_back(entry);
   }
-  return Json{{"type", "info"}, {"file", options_.file}, {"attrs", list}, {"seed", seed}}.dump();
+  Json seedList = Json::array();
+  for (const auto& s : seeds) {
+    Json one = {s.point[0], s.point[1], s.point[2]};
+    if (s.hasDirection) one.insert(one.end(), {s.direction[0], s.direction[1], s.direction[2]});
+    seedList.push_back(one);
+  }
+  return Json{{"type", "info"}, {"file", options_.file}, {"attrs", list}, {"seed", seed}, {"seeds", seedList},
+              {"seedFile", fs::path(options_.seedFile).filename().string()}}
+      .dump();
+}
+
+void ViewSession::prepareSurface(const std::vector<std::string>& dataDirs) {
+  ViewSurface surface;
+  std::string error;
+  rt::DeriveOptions options = options_.derive;
+  options.assetDirs = dataDirs;
+  // A surface that cannot be built fails the derivation too, which says why.
+  const bool built = buildViewSurface(compiled_->module, options, dataDirs, surface, error);
+  Json textures = Json::array();
+  std::lock_guard<std::mutex> lock(mutex_);
+  paint_.reset(compiled_->module, options_.file, dataDirs, built ? surface.marching : nullptr);
+  for (const ViewPaint::Texture& t : paint_.textures())
+    textures.push_back({{"name", t.name}, {"width", t.width}, {"height", t.height}, {"why", t.why},
+                        {"file", fs::path(t.file).filename().string()}});
+  if (!built || surface.glb.empty()) {
+    surface_.reset();
+    return;
+  }
+  surface_ = std::make_shared<std::pair<std::string, std::string>>(
+      Json{{"type", "surface"}, {"triangles", surface.triangles}, {"textures", textures}}.dump(), std::move(surface.glb));
 }
 
 std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const std::map<std::string, std::string>& attrs,
-                                                          uint64_t seed) {
+                                                          uint64_t seed, const ViewSeeds& seeds) {
   std::unique_ptr<backend::native::CodeLoader>& loader = loader_;
   const auto start = std::chrono::steady_clock::now();
   auto d = std::make_shared<Derived>();
@@ -246,6 +343,7 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     if (!options_.derive.surfaceOverride.empty()) extra.push_back(options_.derive.surfaceOverride);
     for (const auto& m : compiled_->source.modules) extra.push_back(m.key);  // its imported modules
     std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
+    prepareSurface(grammarDataDirs(options_.file));
     std::lock_guard<std::mutex> lock(mutex_);
     // What the pages' values are checked against (message()).
     attrShape_ = ir::Module{};
@@ -263,9 +361,14 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   if (!compileError_.empty()) return fail(compileError_);
   // The page's values for attributes this grammar has; a value that does not fit its
   // attribute is an error in the page, not a crash.
-  d->info = infoJson(attrs, seed);
+  d->info = infoJson(attrs, seed, seeds);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    d->surface = surface_;
+  }
   rt::DeriveOptions derive = options_.derive;
   derive.seed = seed;
+  derive.seeds = seeds;
   derive.recordOrigins = true;  // picking shows each instance's rule and depth
   for (const auto& [name, value] : attrs) {
     if (compiled_->module.findAttr(name) < 0) continue;

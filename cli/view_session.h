@@ -14,11 +14,20 @@
 //                  {"type":"picked", "instance", "symbol", "asset", "params", "colour", "centre"}
 //                  {"type":"error", "diagnostics":"file:line:col: error[...] ...\n  line\n  ^"}
 //                  {"type":"rejected", "reason"}: a message of the page's that changed nothing
+//                  {"type":"surface", "triangles", "textures":[{name, width, height, why}]},
+//                   then binary: the surface as .glb (view_surface.h), for seeds and paint
+//                  {"type":"written", "file"}: a seed file or texture the page's edit wrote
 //   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
-//                  {"type":"pick", "instance":N}          (checked first: view_message.h)
+//                  {"type":"pick", "instance":N}
+//                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}
+//                                                          (checked first: view_message.h)
+// Seeds and painted textures are files, so they are the session's, not a page's: an
+// edit re-derives every page (#49).
 #pragma once
 
 #include "backend/engine.h"
+#include "cli/view_paint.h"
+#include "cli/view_seed_file.h"
 #include "cli/view_server.h"
 #include "ir/ir.h"
 #include "runtime/derivation.h"
@@ -44,6 +53,7 @@ struct ViewOptions {
   std::string startRule;     // --start-rule: a .cga grammar's rule instead of its @StartRule
   rt::DeriveOptions derive;  // --surface, --set (the first values), --seed ...
   backend::Engine engine = backend::Engine::Jit;
+  std::string seedFile;  // absolute: where the page's seeds are written (view_seed_file.h)
 };
 
 class ViewSession {
@@ -67,6 +77,7 @@ class ViewSession {
     std::vector<std::string> parts;  // the model's binary messages
     rt::InstanceList instances;      // for picking
     std::vector<std::string> rules;  // the grammar's rules as picking names them
+    std::shared_ptr<const std::pair<std::string, std::string>> surface;  // JSON, .glb (null: none)
   };
   struct Page {
     std::map<std::string, std::string> attrs;  // the page's values, by attribute name
@@ -74,14 +85,21 @@ class ViewSession {
     bool pending = true;
     std::string infoSent;
     std::shared_ptr<const Derived> model;  // its last good model, for picking
+    const void* surfaceSent = nullptr;
   };
 
   void work();
-  std::shared_ptr<Derived> derive(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed);
+  std::shared_ptr<Derived> derive(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed,
+                                  const ViewSeeds& seeds);
+  void prepareSurface(const std::vector<std::string>& dataDirs);  // after a compile (worker)
+  // A seed file or texture written for a page: seen (no second derivation), every page
+  // derived again, the page told. Under mutex_.
+  void edited(uint64_t page, const std::string& file);
+  void editFiles(uint64_t page, const PageRequest& request);  // seeds, paint, undo, redo
   void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
-  std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed) const;
+  std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed, const ViewSeeds& seeds) const;
   // The grammar, its folder and assets/, and the data files it names (grammarDataFiles).
   std::map<std::string, std::filesystem::file_time_type> watchedFiles(const std::vector<std::string>& data) const;
 
@@ -101,6 +119,9 @@ class ViewSession {
   ir::Module attrShape_;  // the compiled grammar's attributes, to check pages' values
   std::map<std::string, std::filesystem::file_time_type> seen_;
   std::vector<std::string> dataFiles_;  // the files the last compiled grammar names
+  ViewSeeds seeds_;                      // the seed file's, as the page last set them
+  ViewPaint paint_;                      // the textures the page paints
+  std::shared_ptr<const std::pair<std::string, std::string>> surface_;  // the last compile's
 
   std::thread worker_;
 };
