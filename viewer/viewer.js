@@ -1,16 +1,20 @@
 // fgsg view's page: draws the models the server pushes (binary glTF) with three.js,
 // keeps the camera across models, and sends attribute and seed changes back. The
 // messages are described in cli/view_session.h. window.fgsgViewer is what the browser
-// tests read (tests/viewer/).
+// tests read (tests/viewer/). Seeds, painting and the camera tools are modules of their
+// own (seeds.js, paint.js, view_tools.js) sharing `ctx` below.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { createSeeds } from './seeds.js';
+import { createPaint } from './paint.js';
+import { createViewTools } from './view_tools.js';
 
 const $ = (id) => document.getElementById(id);
 // timing: when the last change was sent, its model announced, its bytes received and
 // shown (performance.now() milliseconds); serverMilliseconds: the server's part.
 const state = { models: 0, errors: 0, figures: null, info: null, seed: 1, size: null, timing: {}, serverMilliseconds: 0,
-                instanced: 0, picked: null };
+                instanced: 0, picked: null, mode: 'pick', seeds: [], surfaceTriangles: 0, written: [] };
 window.fgsgViewer = state;
 
 const canvas = $('canvas');
@@ -26,6 +30,7 @@ const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 1e6);
 camera.position.set(3, 2, 4);
 const controls = new OrbitControls(camera, canvas);
 let model = null;
+let surface = null;  // the surface the grammar grows on (seeds, paint), when it has one
 
 function resize() {
   const w = canvas.clientWidth, h = canvas.clientHeight;
@@ -53,7 +58,9 @@ requestRender();
 
 // The first model decides the view; later ones keep the camera the user chose.
 function frame(object) {
-  const box = new THREE.Box3().setFromObject(object);
+  frameBox(new THREE.Box3().setFromObject(object));
+}
+function frameBox(box) {
   if (box.isEmpty()) return;
   const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3()).length();
   controls.target.copy(centre);
@@ -124,9 +131,11 @@ function showModel(buffer) {
     model = built;
     scene.add(model);
     if (state.models === 0) {
-      frame(model);
+      if (surface) frameBox(new THREE.Box3().setFromObject(model).union(new THREE.Box3().setFromObject(surface)));
+      else frame(model);
       controls.update();
     }
+    tools.refresh();
     requestRender();
     state.timing.shown = performance.now();
     state.serverMilliseconds = announced ? announced.milliseconds : 0;
@@ -146,6 +155,7 @@ const raycaster = new THREE.Raycaster();
 let downAt = null;
 canvas.addEventListener('pointerdown', (e) => { downAt = [e.clientX, e.clientY]; });
 canvas.addEventListener('pointerup', (e) => {
+  if (state.mode !== 'pick') return;
   if (!downAt || Math.hypot(e.clientX - downAt[0], e.clientY - downAt[1]) > 4 || !model) return;
   const r = canvas.getBoundingClientRect();
   const ndc = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
@@ -175,9 +185,85 @@ function send(changed) {
     if (input.dataset.kind === 'range') continue;
     attrs[input.dataset.attr] = input.type === 'checkbox' ? String(input.checked) : input.value;
   }
-  state.timing = { sent: performance.now() };
-  ws.send(JSON.stringify({ type: 'set', attrs, seed: state.seed }));
+  sendMessage({ type: 'set', attrs, seed: state.seed });
 }
+
+// Every change goes out here: the bench (bench/view_latency.js) times from this to the
+// model shown.
+function sendMessage(message) {
+  state.timing = { sent: performance.now() };
+  ws.send(JSON.stringify(message));
+}
+
+// The surface: drawn in grey under the model, what seeds and the brush land on.
+async function showSurface(buffer) {
+  const geometry = await geometryOf(buffer);
+  if (surface) { scene.remove(surface); surface.geometry.dispose(); }
+  surface = null;
+  if (!geometry) return;
+  surface = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: 0x8a939e, roughness: 0.9,
+    polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+  surface.geometry.computeBoundingSphere();
+  surface.geometry.computeBoundingBox();
+  scene.add(surface);
+  state.surfaceTriangles = geometry.index ? geometry.index.count / 3 : geometry.attributes.position.count / 3;
+  state.surfaces = (state.surfaces || 0) + 1;
+  seeds.redraw();
+  tools.refresh();
+  requestRender();
+}
+
+function ndc(e) {
+  const r = canvas.getBoundingClientRect();
+  return new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+}
+
+const ctx = {
+  scene, camera, canvas, controls, state, raycaster, ndc, requestRender, frameBox,
+  send: sendMessage,
+  surfaceHit(e) {
+    if (!surface) return null;
+    raycaster.setFromCamera(ndc(e), camera);
+    return raycaster.intersectObject(surface, false)[0] || null;
+  },
+  surfaceSize() { return surface ? surface.geometry.boundingSphere.radius * 2 : 1; },
+  drawn() { return [model, surface].filter(Boolean); },
+};
+const seeds = createSeeds(ctx);
+const paint = createPaint(ctx);
+const tools = createViewTools(ctx);
+// What the browser tests read besides `state`.
+state.hooks = {
+  wireframeCount: () => tools.wireframeCount(),
+  drawnBox() {
+    const box = new THREE.Box3();
+    for (const o of ctx.drawn()) box.expandByObject(o);
+    return [box.min.toArray(), box.max.toArray()];
+  },
+  // Points of the surface spread through its vertices (the bench's seeds).
+  surfacePoints(count) {
+    if (!surface) return [];
+    const p = surface.geometry.attributes.position;
+    return Array.from({ length: count }, (_, k) => {
+      const v = Math.floor(((k + 0.5) / count) * p.count);
+      return [p.getX(v), p.getY(v), p.getZ(v)].map((x) => Number(x.toFixed(6)));
+    });
+  },
+  send: (message) => sendMessage(message),  // the bench times the server's loop alone
+  // A world point's position on the canvas, in CSS pixels from its top left corner.
+  toScreen(p) {
+    const v = new THREE.Vector3(...p).project(camera);
+    return [(v.x + 1) / 2 * canvas.clientWidth, (1 - v.y) / 2 * canvas.clientHeight];
+  },
+};
+
+// Pick, Seeds or Paint: what a click or drag on the surface does.
+for (const button of document.querySelectorAll('[data-mode]'))
+  button.addEventListener('click', () => {
+    state.mode = button.dataset.mode;
+    for (const b of document.querySelectorAll('[data-mode]')) b.classList.toggle('on', b === button);
+    for (const box of document.querySelectorAll('[data-for-mode]')) box.hidden = box.dataset.forMode !== state.mode;
+  });
 
 // A number attribute gets a slider around its default and a field for exact values.
 function numberRange(d) {
@@ -248,8 +334,15 @@ const ws = new WebSocket(`ws://${location.host}/` + (token ? `?token=${token}` :
 ws.binaryType = 'arraybuffer';
 ws.onopen = () => setStatus('deriving', 'deriving');
 ws.onclose = () => setStatus('disconnected: fgsg view stopped', 'error');
+let surfaceHeader = null;  // a "surface" message whose .glb comes next
 ws.onmessage = (event) => {
-  if (typeof event.data !== 'string') return showModel(event.data);
+  if (typeof event.data !== 'string') {
+    if (surfaceHeader) {
+      surfaceHeader = null;
+      return showSurface(event.data);
+    }
+    return showModel(event.data);
+  }
   const m = JSON.parse(event.data);
   if (m.type === 'info') {
     state.info = m;
@@ -258,8 +351,15 @@ ws.onmessage = (event) => {
     $('file').textContent = m.file;
     document.title = `fgsg view - ${m.file}`;
     buildInspector(m);
+    seeds.update(m.seeds, m.seedFile);
   } else if (m.type === 'progress') {
     setStatus('deriving', 'deriving');
+  } else if (m.type === 'surface') {
+    surfaceHeader = m;
+    paint.textures(m.textures);
+  } else if (m.type === 'written') {
+    state.written.push(m.file);
+    setStatus('wrote ' + m.file + ', deriving', 'deriving');
   } else if (m.type === 'picked') {
     showPicked(m);
   } else if (m.type === 'model') {
