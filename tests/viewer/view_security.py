@@ -314,6 +314,124 @@ finally:
         server.kill()
     shutil.rmtree(work, ignore_errors=True)
 
+
+
+def edit_attacks():
+    """7. The editing messages (#49): seeds and paint write files, so each is tried as an
+    attacker would: paths for texture names, textures that resolve outside the grammar's
+    folder (a '..' in the grammar, a symlink), oversized and malformed lists, unknown fields,
+    a foreign Origin. Each must be refused and leave every file as it was."""
+    work = tempfile.mkdtemp(prefix="fgsg-view-edit-security-")
+    folder, outside = os.path.join(work, "grammar"), os.path.join(work, "outside")
+    os.makedirs(folder)
+    os.makedirs(outside)
+    white = os.path.join(source, "examples/assets/ivy_anywhere.png")
+    for name in ("mask.png", "real.png"):
+        shutil.copy(white, os.path.join(folder, name))
+    for name in ("secret.png", "above.png"):
+        shutil.copy(white, os.path.join(outside, name))
+    os.symlink(os.path.join(outside, "secret.png"), os.path.join(folder, "linked.png"))
+    with open(os.path.join(source, "examples/ivy.fgsg")) as f:
+        text = f.read().replace('texture mask = "ivy_anywhere.png";', 'texture mask = "mask.png";\n'
+                                'texture linked = "linked.png";\ntexture above = "../outside/above.png";')
+    grammar = os.path.join(folder, "g.fgsg")
+    with open(grammar, "w") as f:
+        f.write(text)
+    seeds = os.path.join(folder, "g.seeds")
+
+    def contents():
+        out = {}
+        for d in (folder, outside):
+            for name in sorted(os.listdir(d)):
+                p = os.path.join(d, name)
+                if os.path.isfile(p) and not name.endswith(".fgsg"):
+                    with open(p, "rb") as f:
+                        out[p] = f.read()
+        return out
+
+    env = dict(os.environ, FGSG_CACHE_DIR=os.path.join(work, "cache"))
+    server = subprocess.Popen([fgsg, "view", grammar, "--port", "0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                              env=env, text=True)
+    try:
+        m = re.search(r"http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]{48})", server.stdout.readline())
+        check(m is not None, "the editing server prints its address")
+        if not m:
+            return
+        port, token = int(m.group(1)), m.group(2).encode()
+        own = b"http://127.0.0.1:%d" % port
+        # A foreign page cannot open the socket that carries seeds and paint at all.
+        ws = WebSocket(port, b"/?token=" + token, origin=b"http://evil.example.com")
+        check(ws.status == 403, "seeds and paint from a foreign Origin: handshake -> %d" % ws.status)
+        ws.close()
+        ws = WebSocket(port, b"/?token=" + token, origin=own)
+        surface = ws.next_text("surface", 120)
+        check(surface is not None, "the page gets the surface")
+        why = {t["name"]: t["why"] for t in surface["textures"]} if surface else {}
+        check(why.get("mask") == "", "mask.png inside the folder may be painted")
+        check("symbolic link" in why.get("linked", ""), "a texture that is a symlink may not: " + why.get("linked", ""))
+        check("outside the grammar's folder" in why.get("above", ""), "a texture above the folder may not: " +
+              why.get("above", ""))
+        check(ws.next_text("model", 120) is not None, "the page gets its model")
+        before = contents()
+        dab = '"stroke":1,"dabs":[[0,0,1]],"radius":0.5'
+        many_seeds = ",".join(["[0,0,1]"] * 1025)
+        many_dabs = ",".join(["[0,0,1]"] * 257)
+        bad = [
+            '{"type":"paint","texture":"linked",%s}' % dab,
+            '{"type":"paint","texture":"above",%s}' % dab,
+            '{"type":"paint","texture":"../outside/secret",%s}' % dab,
+            '{"type":"paint","texture":"/etc/passwd",%s}' % dab,
+            '{"type":"paint","texture":"mask.png",%s}' % dab,
+            '{"type":"paint","texture":"real",%s}' % dab,  # a file in the folder the grammar does not declare
+            '{"type":"paint","texture":"mask","file":"../outside/secret.png",%s}' % dab,
+            '{"type":"paint","texture":"mask","stroke":1,"dabs":[%s],"radius":0.5}' % many_dabs,
+            '{"type":"paint","texture":"mask","stroke":1,"dabs":[[0,0,1]],"radius":1e300}',
+            '{"type":"paint","texture":"mask","stroke":1,"dabs":[[0,0,1]],"radius":"0.5"}',
+            '{"type":"paint","texture":"mask",%s,"strength":7}' % dab,
+            '{"type":"paint","texture":"mask","stroke":1,"dabs":[[0,0,"1"]],"radius":0.5}',
+            '{"type":"paint","texture":"mask","stroke":1,"dabs":[[[[0]]]],"radius":0.5}',
+            '{"type":"seeds","seeds":[%s]}' % many_seeds,
+            '{"type":"seeds","seeds":[[0,0,1]],"file":"/tmp/x.seeds"}',
+            '{"type":"seeds","seeds":[[0,0,1e300]]}',
+            '{"type":"seeds","seeds":[[0,0,1,0,0,0]]}',
+            '{"type":"seeds","seeds":"0,0,1"}',
+            '{"type":"undo"}',
+            '{"type":"redo","count":100}',
+        ]
+        for text in bad:
+            ws.send(text)
+            reply = ws.next_text("rejected", 30)
+            check(reply is not None and reply.get("reason"), "edit rejected: %s... (%s)" %
+                  (text[:60], reply and reply.get("reason", "")[:90]))
+        check(contents() == before and not os.path.exists(seeds), "the refused edits wrote no file")
+        # The same messages done right are taken: the mask keeps its size, the seed file
+        # is written where it belongs.
+        ws.send('{"type":"paint","texture":"mask",%s,"value":0}' % dab)
+        written = ws.next_text("written", 30)
+        check(written is not None and written["file"] == "mask.png", "a good stroke writes mask.png")
+        with open(os.path.join(folder, "mask.png"), "rb") as f:
+            png = f.read()
+        check(png[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", png[16:24]) == (16, 16),
+              "the painted mask is a PNG of the texture's own 16 x 16 texels")
+        ws.send('{"type":"seeds","seeds":[[0,0,1]]}')
+        written = ws.next_text("written", 30)
+        check(written is not None and written["file"] == "g.seeds" and os.path.isfile(seeds), "good seeds write g.seeds")
+        after = contents()
+        check(all(after[p] == before[p] for p in before if not p.endswith("mask.png")),
+              "no file but mask.png and g.seeds changed (the symlink's target and the folder above included)")
+        ws.close()
+        check(server.poll() is None, "the editing server is alive after the attacks")
+    finally:
+        server.terminate()
+        try:
+            server.wait(20)
+        except subprocess.TimeoutExpired:
+            server.kill()
+        shutil.rmtree(work, ignore_errors=True)
+
+
+edit_attacks()
+
 if failures:
     print("FAIL: %d checks failed" % len(failures))
     sys.exit(1)
