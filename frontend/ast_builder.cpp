@@ -387,12 +387,12 @@ void AstBuilder::cornersAsPairs(Item& item) {
   item.args = std::move(flat);
 }
 
-// CGA's split syntax, `Subdiv("Y"){ 4: Ground | ~3: Floor }`, is Subdiv("Y", 4, ~3){
+// CGA's split syntax, `Subdiv("Y"){ 4: Ground | ~3: Floor }` (and SplitArea's), is Subdiv("Y", 4, ~3){
 // Ground | Floor }: when every part is labelled and only the axis is given, the labels
 // become the sizes (a bare name, `floor_h: Floor`, is read as the value it names).
 // Anything else stays as written for the analyzer to judge.
 void AstBuilder::sizesFromParts(Item& item) {
-  if (item.name != "Subdiv" || item.args.size() != 1 || item.body.empty()) return;
+  if ((item.name != "Subdiv" && item.name != "SplitArea") || item.args.size() != 1 || item.body.empty()) return;
   for (const Successor& part : item.body)
     if (!part.size && part.selector.empty()) return;
   for (Successor& part : item.body) {

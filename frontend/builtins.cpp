@@ -24,6 +24,9 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::Subdiv, "Subdiv", 2, -1, BodyRule::PerSize, "Subdiv(\"X\", s1, s2, ...){ a | b ... }",
      nullptr},
+    // CityEngine's splitArea: the sizes are areas (ir::Op::str names it; sized as a .cga split).
+    {CommandId::Subdiv, "SplitArea", 2, -1, BodyRule::PerSize,
+     "SplitArea(\"X\", area1, area2, ...){ a | b ... }", nullptr},
     {CommandId::Repeat, "Repeat", 2, 4, BodyRule::One, "Repeat(\"X\", s){ tile }", nullptr},
     {CommandId::Comp, "Comp", 1, 1, BodyRule::One, "Comp(\"sidefaces\"){ face }", nullptr},
     {CommandId::Extrude, "Extrude", 1, 1, BodyRule::None, "Extrude(height)", nullptr},
@@ -84,6 +87,7 @@ const CommandInfo kCommands[] = {
      "ShapeO(frontWidth, rightWidth, backWidth, leftWidth){ shape: A | remainder: B }", nullptr},
     {CommandId::ShapeOperation, "InnerRectangle", 0, 1, BodyRule::Optional,
      "InnerRectangle(\"scope\" or \"edge\") or InnerRectangle(\"scope\"){ shape: A }", nullptr},
+    {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
     {CommandId::ShapeOperation, "DeleteHoles", 0, 0, BodyRule::None, "DeleteHoles()", nullptr},
     {CommandId::ShapeOperation, "ReverseNormals", 0, 0, BodyRule::None, "ReverseNormals()", nullptr},
     {CommandId::ShapeOperation, "ResetGeometry", 0, 0, BodyRule::None, "ResetGeometry()", nullptr},

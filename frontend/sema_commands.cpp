@@ -80,7 +80,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       int mask = axisMask(axis);
       if (stringOk && (mask != 1 && mask != 2 && mask != 4))
         diags_.error("E028", item.args[0]->range,
-                     "Subdiv splits along one axis: \"X\", \"Y\" or \"Z\", not \"" + axis + "\"");
+                     item.name + " splits along one axis: \"X\", \"Y\" or \"Z\", not \"" + axis + "\"");
       numArgs(1, true);
       break;
     }

@@ -109,7 +109,7 @@ void Analyzer::checkReachability() {
         [&](const Item& item) {
           if (item.kind != ItemKind::Call || isShapeItem(item, res_)) return;
           if (item.name == "Synthesize" || item.name == "Evolve") synthesizes = true;
-          for (const char* name : {"Subdiv", "Repeat", "Comp", "Extrude", "Roof", "Footprint", "Offset"})
+          for (const char* name : {"Subdiv", "SplitArea", "Repeat", "Comp", "Extrude", "Roof", "Footprint", "Offset"})
             if (item.name == name) cga = true;
           if (const CommandInfo* c = findCommand(item.name); c && c->id == CommandId::ShapeOperation) cga = true;
           if (item.name == "Cells" && item.body.size() == 2)

@@ -327,6 +327,10 @@ class Lowerer {
         op.index = axisIndex(constString(*item.args[0]));
         op.repeat = item.repeatPattern;
         op.cityEngineSizing = item.cityEngineSizing;
+        // Subdiv or SplitArea (sizes that are areas, laid out as a .cga split's): every
+        // Subdiv names its command, so a plain split never reads as an area split.
+        op.str = m_.internString(cmd.name);
+        if (cmd.name == std::string("SplitArea")) op.cityEngineSizing = true;
         for (size_t k = 1; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
         break;
       case CommandId::Repeat: {

@@ -378,7 +378,8 @@ class Printer {
       }
       case OpKind::Subdiv:
         text = "subdiv " + axisName(op.index) + " " + sizeList(r, op.sizes) + (op.repeat ? " repeated" : "") +
-               (op.cityEngineSizing ? " cityengine" : "");
+               (op.cityEngineSizing ? " cityengine" : "") +
+               (op.str < m_.strings.size() && m_.strings[op.str] == "SplitArea" ? " by area" : "");
         break;
       case OpKind::Repeat: text = "repeat " + axesName(op.index) + " " + sizeList(r, op.sizes); break;
       case OpKind::Center: text = "center " + axesName(op.index); break;

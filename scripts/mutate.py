@@ -329,6 +329,11 @@ class Commands:
     def configure(self):
         if self.args.build_cmd:
             return
+        for relative in SHARED_IGNORED_DATA:
+            source = os.path.join(self.ws.repo, relative)
+            link = os.path.join(self.ws.worktree, relative)
+            if os.path.isdir(source) and not os.path.lexists(link):
+                os.symlink(source, link)
         if os.path.exists(os.path.join(self.ws.build, "build.ninja")):
             return
         launcher = []
@@ -336,11 +341,6 @@ class Commands:
             launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"]
         run_logged(["cmake", "-S", self.ws.worktree, "-B", self.ws.build, "-G", "Ninja",
                     "-DCMAKE_BUILD_TYPE=Release", *launcher], "configure", self.ws)
-        for relative in SHARED_IGNORED_DATA:
-            source = os.path.join(self.ws.repo, relative)
-            link = os.path.join(self.ws.worktree, relative)
-            if os.path.isdir(source) and not os.path.lexists(link):
-                os.symlink(source, link)
 
     def build(self, area_targets, area=None):
         """True when the build succeeded."""

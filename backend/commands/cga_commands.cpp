@@ -4,6 +4,7 @@
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
 #include "runtime/cga/ground_face.h"
+#include "runtime/cga/shape_operations.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -117,9 +118,14 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     ok = true;
     if (op.cityEngineSizing) {
       // A .cga split: CityEngine's sizing; the parts it does not generate are skipped.
+      // SplitArea's sizes are areas, turned into the lengths that cut them off.
       std::vector<rt::cga::SizeValue> written = std::move(sizes);
       size_t pattern = 0;
-      ok = rt::cga::cityEngineSizes(written, st.scope.S[axis], axis, op.repeat, sizes, generated, pattern, error) &&
+      const bool byArea = op.str < d_.module().strings.size() && d_.module().strings[op.str] == "SplitArea";
+      ok = (byArea ? rt::cga::splitAreaSizes(st.scope, st.geom, d_.arena(), axis, op.repeat, written, sizes, generated,
+                                             error)
+                   : rt::cga::cityEngineSizes(written, st.scope.S[axis], axis, op.repeat, sizes, generated, pattern,
+                                              error)) &&
            rt::cga::subdivide(st.scope, st.geom, axis, sizes, d_.arena(), parts, error);
       if (!ok) throw DeriveError{op.loc, "R002", error};
       for (size_t i = 0; i < parts.size(); ++i) parts[i].empty = parts[i].empty || !generated[i];

@@ -186,8 +186,8 @@ ExprPtr Translator::primary(P::PrimaryContext* ctx, const Env& env) {
       return binary("*", std::move(v), std::move(size));
     }
     ExprPtr size = makeExpr(ExprKind::Member, at);
-    size->object = "Scope";
-    size->text = std::string("s") + "xyz"[env.relativeAxis];
+    size->object = env.relativeAxis == 4 ? "Geometry" : "Scope";
+    size->text = env.relativeAxis == 4 ? "area" : std::string("s") + "xyz"[env.relativeAxis];
     ExprPtr e = binary("*", std::move(v), std::move(size));
     e->range = at;
     return e;

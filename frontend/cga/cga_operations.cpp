@@ -4,6 +4,7 @@
 //   split(x|y|z [, adjust|noAdjust]){ sizes : ops | { ... }* }[*]
 //                                       Subdiv with CityEngine's sizing (rest empty, overflow
 //                                       cut; a nested repeat takes what the others leave)
+//   splitArea(x|y|z [, adjust|noAdjust]){ areas : ops }[*]   SplitArea: the same, in areas
 //   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
@@ -289,7 +290,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     push(std::move(item));
     return;
   }
-  if (name == "split") {
+  if (name == "split" || name == "splitArea") {
     if (!count(1, 2, "1 or 2 arguments (axis, and adjust or noAdjust)")) return;
     split(op, selectorWord(argCtx[0]), seq, env);
     return;
@@ -527,30 +528,31 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
 void Translator::split(P::CallOperationContext* op, const std::string& axisWord, Sequence& seq, const Env& env) {
   const SourceRange at = rangeOf(op);
   const auto argCtx = op->expr();
-  if (axisWord == "u" || axisWord == "v") {
+  const std::string name = op->name->getText();  // split or splitArea (sizes that are areas)
+  if ((axisWord == "u" || axisWord == "v") && name == "split") {
     notSupported(rangeOf(argCtx[0]), "a split in texture space (u, v)");
     return;
   }
   if (axisWord != "x" && axisWord != "y" && axisWord != "z") {
-    error("E028", rangeOf(argCtx[0]), "split splits along x, y or z, not '" + argCtx[0]->getText() + "'");
+    error("E028", rangeOf(argCtx[0]), name + " splits along x, y or z, not '" + argCtx[0]->getText() + "'");
     return;
   }
   if (argCtx.size() == 2) {
     const std::string adjust = selectorWord(argCtx[1]);
     if (adjust != "adjust" && adjust != "noAdjust") {
-      error("E028", rangeOf(argCtx[1]), "split's second argument is adjust or noAdjust");
+      error("E028", rangeOf(argCtx[1]), name + "'s second argument is adjust or noAdjust");
       return;
     }
   }
   if (!op->splitBody()) {
-    error("E018", at, "split needs its parts: split(" + axisWord + "){ 2 : A | ~1 : B }");
+    error("E018", at, name + " needs its parts: " + name + "(" + axisWord + "){ 2 : A | ~1 : B }");
     return;
   }
   if (seq.pendingInsert) {
     seq.out.items.push_back(std::move(*seq.pendingInsert));
     seq.pendingInsert.reset();
   }
-  Item item = command("Subdiv", at);
+  Item item = command(name == "splitArea" ? "SplitArea" : "Subdiv", at);
   item.args.push_back(stringExpr(std::string(1, char(std::toupper(axisWord[0]))), rangeOf(argCtx[0])));
   splitBody(op->splitBody(), axisWord, item, env);
   seq.out.items.push_back(std::move(item));
@@ -562,9 +564,14 @@ void Translator::splitBody(P::SplitBodyContext* body, const std::string& axisWor
   item.hasBody = true;
   item.repeatPattern = body->repeat != nullptr;
   const int axis = axisWord[0] - 'x';
+  const bool byArea = item.name == "SplitArea";
   for (P::SplitPartContext* partCtx : body->splitPart()) {
     Successor part;
     part.range = rangeOf(partCtx);
+    if (auto* nested = dynamic_cast<P::NestedPartContext*>(partCtx); nested && byArea) {
+      notSupported(part.range, "a group of parts `{ ... }*` inside splitArea");
+      continue;
+    }
     if (auto* nested = dynamic_cast<P::NestedPartContext*>(partCtx)) {
       // `{ ... }*` among the parts: a repeat that takes what the other parts leave.
       if (item.repeatPattern || !nested->splitBody()->repeat) {
@@ -586,7 +593,7 @@ void Translator::splitBody(P::SplitBodyContext* body, const std::string& axisWor
     if (sized->sep->getText() != ":")
       error("E002", rangeOf(sized->sep), "a split's part is `size : operations` (`=` belongs to comp)");
     Env e = env;
-    e.relativeAxis = axis;
+    e.relativeAxis = byArea ? 4 : axis;  // splitArea: 'x is that share of the shape's area
     ExprPtr size = expr(sized->key, e);
     if (!size) continue;
     operations(sized->operation(), 0, part, env, true);

@@ -12,7 +12,7 @@
 //   setbackToArea(area){ ... }  setbackPerEdge(distance){ ... }
 //                                             SetbackToArea  SetbackPerEdge (distance evaluated per edge)
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
-//   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance)
+//   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance) convexify(maxLength)
 //   primitiveQuad/Cube/Cylinder/Sphere/Disk(...)
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_translator.h"
@@ -31,6 +31,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"rotateScope", "RotateScope"},           {"mirrorScope", "MirrorScope"},
       {"mirror", "Mirror"},                     {"setback", "Setback"},
       {"setbackToArea", "SetbackToArea"},       {"setbackPerEdge", "SetbackPerEdge"},
+      {"convexify", "Convexify"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},

@@ -57,7 +57,7 @@ struct Env {
   std::map<std::string, const Expr*> bound;  // function parameter -> argument
   const std::set<std::string>* ruleParams = nullptr;
   // `'x`: -1 not allowed here; 0..2 x times the scope's size along that axis (split, t);
-  // 3: fgsg's relative size `xr` (s()).
+  // 3: fgsg's relative size `xr` (s()); 4: x times the shape's area (splitArea).
   int relativeAxis = -1;
   int relativeIndex = 0;  // t(): the argument's axis
 };

@@ -99,6 +99,20 @@ bool setback(const FlatPolygon& polygon, const std::vector<double>& distance, co
 bool setbackDistanceForArea(const FlatPolygon& polygon, const std::vector<bool>& selected, double area,
                             double& distance, std::string& error);
 
+// splitArea(axis){ area : A | ... }: the lengths along `axis` (0 x, 1 y, 2 z) that cut a flat
+// shape into parts of the areas asked for, laid out as a `.cga` split lays out its sizes
+// (cityEngineSizes on the shape's area: `derived` says which parts are generated; relative
+// areas are shares of the whole). Fails for a solid, an edge or a shape without area.
+bool splitAreaSizes(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, int axis, bool repeat,
+                    const std::vector<SizeValue>& areas, std::vector<SizeValue>& lengths, std::vector<bool>& derived,
+                    std::string& error);
+
+// convexify(maxLength): a concave polygon cut along diagonals into convex pieces, one face
+// each, the shape keeping its scope (maxLength infinite: every cut; else only cuts shorter
+// than it). A convex polygon is left as it is. Fails for a polygon that crosses itself.
+bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, double maxLength, Part& out,
+               std::string& error);
+
 // innerRectangle(scope | edge): the largest rectangle inside the polygon with sides along
 // the scope's x and y (alongEdge: along the edge that gives the largest), its scope fitted
 // to it (x along its sides). Exact where the polygon's sides run along the rectangle's
