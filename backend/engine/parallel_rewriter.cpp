@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace fgsg::backend {
@@ -25,6 +26,20 @@ void writeTemplate(const SuccessorTemplate& t, uint64_t key, StringModule* w, do
   for (size_t k = 0; k < t.ops.size(); ++k)
     w[k] = {t.ops[k], base + t.firstArg[k], rt::keyWithSalt(key, t.keySalt[k]) & t.keyMask[k]};
   if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
+}
+
+// Before a step writes `next` from `str`: room, in one allocation, for the longest string
+// `next` will hold — this step's and every other one after it, `stepsAfter` being left
+// after this one — predicted from the last step's growth and at most `maxModules`. So a
+// growing string is not copied into a fresh, page-faulting buffer at every step (the
+// prediction is only room: a longer string grows the buffer as before, a shorter one
+// leaves pages that were never written, which cost nothing).
+void reserveForGrowth(ModuleString& next, const ModuleString& str, double growth, int stepsAfter, size_t maxModules) {
+  if (!(growth > 1.0) || str.size() == 0) return;
+  const double modules = std::min(double(str.size()) * std::pow(growth, 1 + 2 * (stepsAfter / 2)), double(maxModules));
+  if (modules <= double(next.modules.capacity())) return;
+  next.modules.reserve(size_t(modules));
+  next.args.reserve(size_t(modules / double(str.size()) * double(str.args.size())));
 }
 
 }  // namespace
@@ -48,8 +63,10 @@ void Derivation::runParallel() {
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
   const auto rewriteStart = std::chrono::steady_clock::now();
+  double growth = 0;  // the last step's: modules written over modules read
   for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
+    reserveForGrowth(next, str, growth, steps_ - 1 - step, opt_.maxShapes);
     if (!rewriteTemplatesConcurrently(str, next)) {
       next.clear();
       if (plan_.hasContext) linkBrackets(str);
@@ -83,6 +100,7 @@ void Derivation::runParallel() {
       }
     }
     cutBranches(next);
+    growth = str.size() ? double(next.size()) / double(str.size()) : 0;
     str.swap(next);
     // lpfg's and L-Py's decomposition: its result is the string (rule_sections.cpp).
     if (!limitHit && rewriteSection(ir::RuleSection::Decomposition, str, next, static_cast<uint32_t>(step), limitHit,

@@ -7,6 +7,7 @@
 
 #include "ir/ir.h"
 #include "ir/program_layout.h"
+#include "runtime/mesh_array.h"
 
 #include <cstdint>
 #include <cstring>
@@ -26,17 +27,34 @@ static_assert(sizeof(StringModule) == 16);
 
 // A growing array that is not cleared or value-initialised: a step's string is written
 // over the buffer of the string two steps before (double buffering), and the parallel
-// writer fills a resized array in place.
+// writer fills a resized array in place. Its storage is rt::MeshArray's: from 4 MiB on,
+// asked for transparent huge pages, because the kernel's fault per fresh 4 KiB page was
+// most of a large step's time (a 25 MB string: 6 000 faults, each a trap to the
+// hypervisor on a VM).
 template <typename T>
 class StringBuffer {
  public:
+  StringBuffer() = default;
+  StringBuffer(const StringBuffer&) = delete;
+  StringBuffer& operator=(const StringBuffer&) = delete;
+  StringBuffer(StringBuffer&& o) noexcept { swap(o); }
+  StringBuffer& operator=(StringBuffer&& o) noexcept {
+    swap(o);
+    return *this;
+  }
+  ~StringBuffer() { release(); }
+  void swap(StringBuffer& o) noexcept {
+    std::swap(data_, o.data_), std::swap(size_, o.size_), std::swap(capacity_, o.capacity_);
+  }
+
   size_t size() const { return size_; }
-  T* data() { return data_.get(); }
-  const T* data() const { return data_.get(); }
+  size_t capacity() const { return capacity_; }
+  T* data() { return data_; }
+  const T* data() const { return data_; }
   T& operator[](size_t i) { return data_[i]; }
   const T& operator[](size_t i) const { return data_[i]; }
-  const T* begin() const { return data_.get(); }
-  const T* end() const { return data_.get() + size_; }
+  const T* begin() const { return data_; }
+  const T* end() const { return data_ + size_; }
   void clear() { size_ = 0; }
   void push_back(const T& v) {
     if (size_ == capacity_) grow(size_ + 1);
@@ -45,7 +63,7 @@ class StringBuffer {
   // Appends n values; returns where they go.
   T* extend(size_t n) {
     if (size_ + n > capacity_) grow(size_ + n);
-    T* at = data_.get() + size_;
+    T* at = data_ + size_;
     size_ += n;
     return at;
   }
@@ -58,18 +76,30 @@ class StringBuffer {
     size_ = n;
   }
   void truncate(size_t n) { size_ = n < size_ ? n : size_; }
+  // Room for n elements at least, in one allocation: pages not yet written cost nothing.
+  void reserve(size_t n) {
+    if (n > capacity_) reallocate(n);
+  }
 
  private:
   void grow(size_t need) {
     size_t cap = capacity_ ? capacity_ : 64;
     while (cap < need) cap += cap / 2 + 64;
-    auto bigger = std::make_unique_for_overwrite<T[]>(cap);
-    if (size_) std::memcpy(bigger.get(), data_.get(), size_ * sizeof(T));
-    data_ = std::move(bigger);
+    reallocate(cap);
+  }
+  void reallocate(size_t cap) {
+    T* bigger = static_cast<T*>(rt::allocateMeshStorage(cap * sizeof(T)));
+    if (size_) std::memcpy(bigger, data_, size_ * sizeof(T));
+    release();
+    data_ = bigger;
     capacity_ = cap;
   }
+  void release() noexcept {
+    if (data_) rt::freeMeshStorage(data_, capacity_ * sizeof(T));
+    data_ = nullptr;
+  }
 
-  std::unique_ptr<T[]> data_;
+  T* data_ = nullptr;
   size_t size_ = 0, capacity_ = 0;
 };
 
@@ -79,7 +109,7 @@ struct ModuleString {
   StringBuffer<double> args;
   size_t size() const { return modules.size(); }
   void clear() { modules.clear(), args.clear(); }
-  void swap(ModuleString& other) noexcept { std::swap(modules, other.modules), std::swap(args, other.args); }
+  void swap(ModuleString& other) noexcept { modules.swap(other.modules), args.swap(other.args); }
   void append(uint32_t op, uint64_t key, const double* a, uint32_t n) {
     modules.push_back({op, static_cast<uint32_t>(args.size()), key});
     args.append(a, n);
