@@ -88,6 +88,7 @@ const CommandInfo kCommands[] = {
     {CommandId::ShapeOperation, "InnerRectangle", 0, 1, BodyRule::Optional,
      "InnerRectangle(\"scope\" or \"edge\") or InnerRectangle(\"scope\"){ shape: A }", nullptr},
     {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
+    {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
     {CommandId::ShapeOperation, "DeleteHoles", 0, 0, BodyRule::None, "DeleteHoles()", nullptr},
     {CommandId::ShapeOperation, "ReverseNormals", 0, 0, BodyRule::None, "ReverseNormals()", nullptr},
     {CommandId::ShapeOperation, "ResetGeometry", 0, 0, BodyRule::None, "ResetGeometry()", nullptr},

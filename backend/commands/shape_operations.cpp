@@ -161,6 +161,8 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   } else if (name == "Convexify") {
     if (n > 0 && !(a[0] > 0)) throw DeriveError{op.loc, "R002", "Convexify: maxLength must be a positive number"};
     ok = rt::cga::convexify(st.scope, st.geom, d.arena(), n > 0 ? a[0] : INFINITY, part, error);
+  } else if (name == "Taper") {
+    ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
   } else if (name == "InnerRectangle") {
     rt::cga::FlatPolygon polygon;
     ok = rt::cga::flatPolygon(st.scope, st.geom, d.arena(), "InnerRectangle", polygon, error) &&

@@ -13,6 +13,7 @@
 //                                             SetbackToArea  SetbackPerEdge (distance evaluated per edge)
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
 //   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance) convexify(maxLength)
+//   taper(height)
 //   primitiveQuad/Cube/Cylinder/Sphere/Disk(...)
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_translator.h"
@@ -31,7 +32,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"rotateScope", "RotateScope"},           {"mirrorScope", "MirrorScope"},
       {"mirror", "Mirror"},                     {"setback", "Setback"},
       {"setbackToArea", "SetbackToArea"},       {"setbackPerEdge", "SetbackPerEdge"},
-      {"convexify", "Convexify"},
+      {"convexify", "Convexify"},               {"taper", "Taper"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},

@@ -113,6 +113,12 @@ bool splitAreaSizes(const Scope& scope, const GeomRef& geom, const GeometryArena
 bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, double maxLength, Part& out,
                std::string& error);
 
+// taper(height): a pyramid over the polygon (a lot, a Footprint, a face), its apex `height`
+// along the normal above the polygon's centre of gravity; its faces the sides (one
+// triangle per edge, in the polygon's edge order), then the base. The scope is extrude's.
+bool taper(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena, Part& out,
+           std::string& error);
+
 // innerRectangle(scope | edge): the largest rectangle inside the polygon with sides along
 // the scope's x and y (alongEdge: along the edge that gives the largest), its scope fitted
 // to it (x along its sides). Exact where the polygon's sides run along the rectangle's
