@@ -89,6 +89,8 @@ const CommandInfo kCommands[] = {
      "InnerRectangle(\"scope\" or \"edge\") or InnerRectangle(\"scope\"){ shape: A }", nullptr},
     {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
     {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
+    {CommandId::ShapeOperation, "Translate", 5, 5, BodyRule::None,
+     "Translate(\"rel\" or \"abs\", \"scope\" or \"world\", x, y, z)", nullptr},
     {CommandId::ShapeOperation, "DeleteHoles", 0, 0, BodyRule::None, "DeleteHoles()", nullptr},
     {CommandId::ShapeOperation, "ReverseNormals", 0, 0, BodyRule::None, "ReverseNormals()", nullptr},
     {CommandId::ShapeOperation, "ResetGeometry", 0, 0, BodyRule::None, "ResetGeometry()", nullptr},

@@ -161,6 +161,15 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   } else if (name == "Convexify") {
     if (n > 0 && !(a[0] > 0)) throw DeriveError{op.loc, "R002", "Convexify: maxLength must be a positive number"};
     ok = rt::cga::convexify(st.scope, st.geom, d.arena(), n > 0 ? a[0] : INFINITY, part, error);
+  } else if (name == "Translate") {
+    // Translate(rel|abs, scope|world, x, y, z): CityEngine's translate in the scope's or the
+    // world's axes; abs sets the origin (the world's only: a scope has no place of its own).
+    const bool absolute = a[0] != 0, world = a[1] != 0;
+    const rt::Vec3 v(a[2], a[3], a[4]);
+    if (!world && absolute)
+      throw DeriveError{op.loc, "R002", "Translate: \"abs\" takes the world's coordinates, not the scope's"};
+    part = rt::cga::Part{st.scope, st.geom, false, 0};
+    part.scope.P = world ? (absolute ? v : st.scope.P + v) : st.scope.P + st.scope.axes * v;
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
   } else if (name == "InnerRectangle") {

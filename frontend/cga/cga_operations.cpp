@@ -9,6 +9,8 @@
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
+//   translate(rel, scope, x, y, z)      T(x, y, z)
+//   translate(rel|abs, world, x, y, z)  Translate("rel" or "abs", "world", x, y, z)
 //   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
 //                                       it (CityEngine transforms the inserted geometry with
 //                                       the scope); a missing file is W801, the insert skipped
@@ -383,6 +385,35 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
       e.relativeIndex = int(k);
       item.args.push_back(expr(argCtx[k], e));
     }
+    if (!allOk(item.args)) return;
+    push(std::move(item));
+    return;
+  }
+  if (name == "translate") {
+    // translate(rel|abs, scope|world, x, y, z) (op_translate): rel scope is t(); rel and abs
+    // world are fgsg's Translate. The pivot and object systems (and abs in the scope's own
+    // system) are not here yet.
+    if (!noBody() || !count(5, 5, "5 arguments (rel or abs, scope or world, x, y, z)")) return;
+    const std::string mode = selectorWord(argCtx[0]), system = selectorWord(argCtx[1]);
+    if (mode != "rel" && mode != "abs") {
+      error("E028", rangeOf(argCtx[0]), "translate's mode is rel or abs, not '" + argCtx[0]->getText() + "'");
+      return;
+    }
+    if (system != "scope" && system != "world" && system != "pivot" && system != "object") {
+      error("E028", rangeOf(argCtx[1]),
+            "translate's coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
+      return;
+    }
+    if (system == "pivot" || system == "object" || (system == "scope" && mode == "abs")) {
+      notSupported(rangeOf(argCtx[1]), "translate(" + mode + ", " + system + ", ...)");
+      return;
+    }
+    Item item = command(system == "scope" ? "T" : "Translate", at);
+    if (system == "world") {
+      item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
+      item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
+    }
+    for (size_t k = 2; k < 5; ++k) item.args.push_back(expr(argCtx[k], env));
     if (!allOk(item.args)) return;
     push(std::move(item));
     return;
