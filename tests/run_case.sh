@@ -4,6 +4,10 @@
 #   args                  extra options for `fgsg run` (optional)
 #   expected_stats.txt    `fgsg run --stats` output without its time.* lines (exact)
 #   expected_ir.txt       `fgsg ir` output (exact, optional)
+#   expected_geometry.txt the run's mesh as scripts/mesh_digest.py digests it: positions
+#                         to its stated precision, triangles listed (or, for large ones,
+#                         summarised and hashed); a change prints the first differences.
+#                         Re-bless with scripts/bless_goldens.sh (docs/testing.md)
 #   expected_errors.txt   an error case: `fgsg check` (or `fgsg run` when the file
 #                         `mode` says run) must exit 1 and print every line given here
 # A run case is also derived twice: the two .glb files must be byte-identical.
@@ -13,6 +17,7 @@ dir=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL [$(basename "$dir")]: $*" >&2; exit 1; }
+digest="$(cd "$(dirname "$0")/.." && pwd)/scripts/mesh_digest.py"
 
 args=()
 [ -f "$dir/args" ] && read -r -a args < "$dir/args"
@@ -51,6 +56,10 @@ fi
 if [ -f "$dir/expected_ir.txt" ]; then
   "$fgsg" ir input.fgsg > "$tmp/ir.txt" 2>"$tmp/stderr" || fail "fgsg ir failed"
   diff -u "$dir/expected_ir.txt" "$tmp/ir.txt" >&2 || fail "IR differs"
+fi
+if [ -f "$dir/expected_geometry.txt" ]; then
+  "$fgsg" run input.fgsg -o "$tmp/geometry.obj" --quiet "${args[@]}" 2>"$tmp/stderr" || fail "the OBJ run failed"
+  python3 "$digest" check "$dir/expected_geometry.txt" "$tmp/geometry.obj" || fail "geometry differs"
 fi
 "$fgsg" run input.fgsg -o "$tmp/b.glb" --quiet "${args[@]}" 2>"$tmp/stderr" || fail "second run failed"
 cmp -s "$tmp/a.glb" "$tmp/b.glb" || fail "two runs with the same seed gave different .glb bytes"
