@@ -8,6 +8,7 @@
 #include "cli/compile_file.h"
 #include "cli/derive_stats.h"
 #include "cli/options.h"
+#include "cli/preview_camera_flag.h"
 #include "cli/progress_line.h"
 #include "cli/scene_output.h"
 #include "runtime/io/read_lots.h"
@@ -41,6 +42,8 @@ struct RunOptions {
   std::string file;
   std::string output;
   std::string preview;
+  rt::render::PreviewCamera camera;  // --camera: where the preview is seen from
+  bool cameraGiven = false;
   std::string instances;
   std::string lines;  // --lines: the line graph as JSON
   std::string report;  // --report: Report(key, value)'s collections per start shape, as JSON
@@ -61,6 +64,7 @@ RunOptions parseRunOptions(const Args& args) {
   cl.whole("--seed", o.derive.seed);
   engineFlag(cl, o.engine);
   cl.text("--preview", o.preview);
+  cameraFlag(cl, o.camera, o.cameraGiven);
   cl.text("--instances", o.instances);
   cl.text("--lines", o.lines);
   cl.text("--report", o.report);
@@ -120,6 +124,7 @@ RunOptions parseRunOptions(const Args& args) {
   checkOutput(o.scene, o.output, o.derive);
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
+  if (o.cameraGiven && o.preview.empty()) throw UsageError{"--camera sets the preview's view: it needs --preview FILE.png"};
   if (!o.lines.empty() && lowerExtension(o.lines) != ".json")
     throw UsageError{"--lines " + o.lines + ": the line graph is written as JSON (name it .json)"};
   if (!o.report.empty() && lowerExtension(o.report) != ".json")
@@ -281,7 +286,9 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   if (!opt.preview.empty()) {
     progress.phase("drawing the preview");
     std::string warning;
-    if (!rt::render::stagePreview(mesh, rt::render::PreviewOptions{}, opt.preview, outputs, error, &warning)) {
+    rt::render::PreviewOptions look;
+    look.camera = opt.camera;
+    if (!rt::render::stagePreview(mesh, look, opt.preview, outputs, error, &warning)) {
       progress.clear();
       std::cerr << "fgsg run: " << error << "\n";
       return 1;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iterator>
 #include <memory>
@@ -48,6 +49,34 @@ struct Camera {
   }
 };
 
+// A perspective camera looking at `centre` along -towardsEye, `right` square to it and
+// horizontal, at `distance`, or when that is 0 backed off until all eight box corners
+// are inside the view (tighter than framing the bounding sphere when the scene is long
+// and thin).
+Camera perspectiveCamera(const Vector3d& mn, const Vector3d& mx, const Vector3d& towardsEye, const Vector3d& right,
+                         double distance, double aspect) {
+  const Vector3d centre = 0.5 * (mn + mx);
+  Camera cam;
+  cam.halfHeight = std::tan(0.5 * kFieldOfViewDegrees * kPi / 180.0);
+  cam.halfWidth = cam.halfHeight * aspect;
+  cam.forward = -towardsEye;
+  cam.right = right;
+  cam.up = cam.right.cross(cam.forward);
+  if (distance <= 0) {
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vector3d p((corner & 1) ? mx.x() : mn.x(), (corner & 2) ? mx.y() : mn.y(),
+                       (corner & 4) ? mx.z() : mn.z());
+      const Vector3d d = p - centre;
+      const double depth = d.dot(towardsEye);  // towards the camera
+      distance = std::max({distance, depth + kFramingMargin * std::abs(d.dot(cam.right)) / cam.halfWidth,
+                           depth + kFramingMargin * std::abs(d.dot(cam.up)) / cam.halfHeight});
+    }
+    distance = std::max(distance, 1e-9);
+  }
+  cam.eye = centre + distance * towardsEye;
+  return cam;
+}
+
 Camera fitCamera(const Mesh& mesh, double aspect) {
   const auto lo = mesh.boundsMin(), hi = mesh.boundsMax();
   const Vector3d mn(lo[0], lo[1], lo[2]), mx(hi[0], hi[1], hi[2]);
@@ -69,25 +98,18 @@ Camera fitCamera(const Mesh& mesh, double aspect) {
       cam.halfHeight = cam.halfWidth / aspect;
     return cam;
   }
-  // Perspective: back off until all eight box corners are inside the view. Tighter than
-  // framing the bounding sphere when the scene is long and thin.
-  cam.halfHeight = std::tan(0.5 * kFieldOfViewDegrees * kPi / 180.0);
-  cam.halfWidth = cam.halfHeight * aspect;
   const Vector3d towardsEye = kViewFrom.normalized();
-  cam.forward = -towardsEye;
-  cam.right = cam.forward.cross(Vector3d(0, 1, 0)).normalized();
-  cam.up = cam.right.cross(cam.forward);
-  double distance = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vector3d p((corner & 1) ? mx.x() : mn.x(), (corner & 2) ? mx.y() : mn.y(),
-                     (corner & 4) ? mx.z() : mn.z());
-    const Vector3d d = p - centre;
-    const double depth = d.dot(towardsEye);  // towards the camera
-    distance = std::max({distance, depth + kFramingMargin * std::abs(d.dot(cam.right)) / cam.halfWidth,
-                         depth + kFramingMargin * std::abs(d.dot(cam.up)) / cam.halfHeight});
-  }
-  cam.eye = centre + std::max(distance, 1e-9) * towardsEye;
-  return cam;
+  return perspectiveCamera(mn, mx, towardsEye, (-towardsEye).cross(Vector3d(0, 1, 0)).normalized(), 0, aspect);
+}
+
+// PreviewCamera's orbit. `right` comes from the azimuth alone, so it stays defined
+// looking straight down or up.
+Camera orbitCamera(const Mesh& mesh, const PreviewCamera& orbit, double aspect) {
+  const auto lo = mesh.boundsMin(), hi = mesh.boundsMax();
+  const Vector3d mn(lo[0], lo[1], lo[2]), mx(hi[0], hi[1], hi[2]);
+  const double az = orbit.azimuthDegrees * kPi / 180.0, el = orbit.elevationDegrees * kPi / 180.0;
+  const Vector3d towardsEye(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+  return perspectiveCamera(mn, mx, towardsEye, Vector3d(std::sin(az), 0, -std::cos(az)), orbit.distance, aspect);
 }
 
 Vector3f background(double y) {  // y in [0,1] from the top
@@ -251,7 +273,8 @@ Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const 
   img.height = std::max(options.height, 1);
   img.rgb.resize(size_t(img.width) * img.height * 3);
   const int spa = std::max(options.samplesPerAxis, 1);
-  const Camera cam = fitCamera(mesh, double(img.width) / img.height);
+  const double aspect = double(img.width) / img.height;
+  const Camera cam = options.camera.fit ? fitCamera(mesh, aspect) : orbitCamera(mesh, options.camera, aspect);
   std::unique_ptr<RayScene> scene;
   if (mesh.triangleCount() > 0) scene = std::make_unique<RayScene>(mesh);
   // Every pixel depends only on its own rays, so rows can be rendered in any order.
@@ -282,6 +305,28 @@ Image render(const Mesh& mesh, const std::vector<ColorTexture>& textures, const 
 
 }  // namespace
 
+bool checkPreviewCamera(const PreviewCamera& camera, std::string& error) {
+  if (camera.fit) return true;
+  const auto text = [](double v) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%.10g", v);
+    return std::isfinite(v) ? std::string(number) : std::string(std::isnan(v) ? "not a number" : "infinite");
+  };
+  if (!std::isfinite(camera.azimuthDegrees)) {
+    error = "the camera's azimuth is " + text(camera.azimuthDegrees) + ", not a finite angle";
+    return false;
+  }
+  if (!(camera.elevationDegrees >= -90 && camera.elevationDegrees <= 90)) {
+    error = "the camera's elevation is " + text(camera.elevationDegrees) + ", not between -90 and 90 degrees";
+    return false;
+  }
+  if (!(camera.distance >= 0 && std::isfinite(camera.distance))) {
+    error = "the camera's distance is " + text(camera.distance) + ", not a positive number of scene units";
+    return false;
+  }
+  return true;
+}
+
 Image renderImage(const Mesh& mesh, const PreviewOptions& options) {
   return render(mesh, loadTextures(mesh, nullptr), options);
 }
@@ -297,6 +342,10 @@ bool stagePreview(const Mesh& mesh, const PreviewOptions& options, const std::st
   if (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384) {
     error = "preview size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
             " is out of range (1..16384)";
+    return false;
+  }
+  if (std::string why; !checkPreviewCamera(options.camera, why)) {
+    error = "cannot write '" + pngPath + "': " + why;
     return false;
   }
   if (mesh.empty() && warning) *warning = "the mesh is empty: the preview shows only the background";

@@ -176,3 +176,131 @@ TEST_CASE("a texture that cannot be loaded leaves vertex colours and a warning",
   REQUIRE(render::renderPreview(quad, opt, (dir / "a.png").string(), error, &warning));
   CHECK_THAT(warning, Catch::Contains("missing.png"));
 }
+
+namespace {
+
+// A red unit cube at x = +2 and a blue one at x = -2: which shows where tells the side seen.
+Mesh redEastBlueWest() {
+  Mesh red = coloured("cube", {1.0f, 0.0f, 0.0f}), blue = coloured("cube", {0.0f, 0.0f, 1.0f});
+  for (size_t v = 0; v < red.vertexCount(); ++v) red.positions[3 * v] += 2;
+  for (size_t v = 0; v < blue.vertexCount(); ++v) blue.positions[3 * v] -= 2;
+  const uint32_t offset = uint32_t(red.vertexCount());
+  red.positions.insert(red.positions.end(), blue.positions.begin(), blue.positions.end());
+  red.normals.insert(red.normals.end(), blue.normals.begin(), blue.normals.end());
+  red.colors.insert(red.colors.end(), blue.colors.begin(), blue.colors.end());
+  for (uint32_t i : blue.indices) red.indices.push_back(i + offset);
+  red.texcoords.clear();
+  return red;
+}
+
+PreviewOptions orbit(double azimuth, double elevation, double distance = 0) {
+  PreviewOptions opt{160, 120, 1};
+  opt.camera.fit = false;
+  opt.camera.azimuthDegrees = azimuth;
+  opt.camera.elevationDegrees = elevation;
+  opt.camera.distance = distance;
+  return opt;
+}
+
+bool reddish(std::array<uint8_t, 3> p) { return p[0] > 60 && p[1] < 20 && p[2] < 20; }
+bool bluish(std::array<uint8_t, 3> p) { return p[2] > 60 && p[0] < 20 && p[1] < 20; }
+
+// Pixels of one colour, and their mean column.
+struct Blob {
+  int count = 0;
+  double column = 0;
+};
+Blob blob(const Image& img, bool (*is)(std::array<uint8_t, 3>)) {
+  Blob b;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (is(pixel(img, x, y))) ++b.count, b.column += x;
+  if (b.count) b.column /= b.count;
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("an orbit camera shows the side its azimuth and elevation name", "[preview][camera]") {
+  const Mesh pair = redEastBlueWest();
+  SECTION("azimuth 0 looks from +X: the red cube hides the blue one") {
+    const Image img = render::renderImage(pair, orbit(0, 0));
+    CHECK(reddish(pixel(img, 80, 60)));
+    CHECK(blob(img, bluish).count == 0);
+    CHECK(blob(img, reddish).count > 500);
+  }
+  SECTION("azimuth 180 looks from -X: blue in front") {
+    const Image img = render::renderImage(pair, orbit(180, 0));
+    CHECK(bluish(pixel(img, 80, 60)));
+    CHECK(blob(img, reddish).count == 0);
+  }
+  SECTION("azimuth 90 looks from +Z: +X on the right") {
+    const Image img = render::renderImage(pair, orbit(90, 0));
+    const Blob red = blob(img, reddish), blue = blob(img, bluish);
+    REQUIRE(red.count > 200);
+    CHECK(red.count == blue.count);  // seen square on, the two faces mirror each other
+    CHECK(red.column > 100);
+    CHECK(blue.column < 60);
+    CHECK(red.column - 79.5 == Approx(79.5 - blue.column).margin(0.01));  // pixel centres: 79.5 is the middle
+    CHECK(render::renderImage(pair, orbit(90 + 360, 0)).rgb == img.rgb);  // angles wrap
+  }
+  SECTION("azimuth 270 (or -90) looks from -Z: +X on the left") {
+    const Image img = render::renderImage(pair, orbit(-90, 0));
+    CHECK(blob(img, reddish).column < 60);
+    CHECK(blob(img, bluish).column > 100);
+  }
+  SECTION("elevation 90 looks straight down, the picture's top away from the azimuth") {
+    // From above with azimuth 90, +X is right as from the front; the cubes' tops (y = 1)
+    // face the camera and both are lit alike.
+    const Image img = render::renderImage(pair, orbit(90, 90));
+    const Blob red = blob(img, reddish), blue = blob(img, bluish);
+    CHECK(red.count == blue.count);
+    CHECK(red.column > 100);
+    CHECK(blue.column < 60);
+    // Azimuth 0 from above turns the picture a quarter: the cubes stack vertically.
+    const Image turned = render::renderImage(pair, orbit(0, 90));
+    CHECK(std::abs(blob(turned, reddish).column - 79.5) < 1);
+    CHECK(std::abs(blob(turned, bluish).column - 79.5) < 1);
+  }
+  SECTION("a larger distance shows the model smaller") {
+    const int fitted = blob(render::renderImage(pair, orbit(90, 0)), reddish).count;
+    const int far = blob(render::renderImage(pair, orbit(90, 0, 40)), reddish).count;
+    const int farther = blob(render::renderImage(pair, orbit(90, 0, 80)), reddish).count;
+    CHECK(far > 0);
+    CHECK(far < fitted);
+    // Perspective: twice as far, a quarter of the area (within the pixel rounding).
+    CHECK(double(farther) == Approx(far / 4.0).epsilon(0.15));
+  }
+}
+
+TEST_CASE("the orbit at the fitted view's angles draws the fitted picture", "[preview][camera]") {
+  // The default framing is the orbit at kFitAzimuthDegrees / kFitElevationDegrees with the
+  // fitted distance; the two directions differ only by rounding, so at most a few
+  // pixels on an edge may differ.
+  const Mesh torus = coloured("torus", {0.7f, 0.6f, 0.2f});
+  const Image fit = render::renderImage(torus, {160, 120, 2});
+  PreviewOptions same = orbit(render::kFitAzimuthDegrees, render::kFitElevationDegrees);
+  same.samplesPerAxis = 2;
+  const Image img = render::renderImage(torus, same);
+  int differ = 0;
+  for (size_t i = 0; i < fit.rgb.size(); ++i) differ += std::abs(int(fit.rgb[i]) - int(img.rgb[i])) > 2;
+  CHECK(differ <= 10);
+  // A flat pattern is still fitted from above, and the orbit ignores flatness.
+  Mesh quad = coloured("quad", {0.2f, 0.4f, 0.9f});
+  CHECK(render::renderImage(quad, {160, 120, 1}).rgb != render::renderImage(quad, orbit(90, 90)).rgb);
+}
+
+TEST_CASE("bad camera values are refused before anything is written", "[preview][camera]") {
+  const fs::path dir = scratchDir("camera_bad");
+  const Mesh cube = coloured("cube", {1, 1, 1});
+  std::string error;
+  CHECK_FALSE(render::renderPreview(cube, orbit(0, 91), (dir / "x.png").string(), error));
+  CHECK(error == "cannot write '" + (dir / "x.png").string() +
+                     "': the camera's elevation is 91, not between -90 and 90 degrees");
+  CHECK_FALSE(render::renderPreview(cube, orbit(std::nan(""), 0), (dir / "x.png").string(), error));
+  CHECK_THAT(error, Catch::EndsWith("the camera's azimuth is not a number, not a finite angle"));
+  CHECK_FALSE(render::renderPreview(cube, orbit(0, 0, -1), (dir / "x.png").string(), error));
+  CHECK_THAT(error, Catch::EndsWith("the camera's distance is -1, not a positive number of scene units"));
+  CHECK(fs::is_empty(dir));
+  CHECK(render::renderPreview(cube, orbit(0, -90, 5), (dir / "x.png").string(), error));
+}
