@@ -1,6 +1,7 @@
 // fgsg atlas: lay a mesh out for on-mesh marching (its atlas and indirection geometry
 // image, cached like `fgsg run` caches them), say what was built, and optionally draw
-// it (--preview) or paint a mask for a texture context (--paint ... --mask).
+// it (--preview), paint a mask for a texture context (--paint ... --mask) or export the
+// mesh with its texture coordinates to paint one elsewhere (--export-uv).
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/options.h"
@@ -9,6 +10,7 @@
 #include "runtime/marching/atlas_preview.h"
 #include "runtime/marching/marching_surface.h"
 #include "runtime/surface/load_surface.h"
+#include "runtime/texture/atlas_uv_export.h"
 #include "runtime/texture/paint_mask.h"
 
 #include <chrono>
@@ -23,6 +25,7 @@ struct AtlasOptions {
   std::string mesh;
   std::string preview;
   std::string mask;
+  std::string exportUv;  // --export-uv: the mesh with the atlas's UVs, as OBJ
   int maskSize = 1024;
   int resolution = 1024;
   bool repair = false;
@@ -70,11 +73,14 @@ AtlasOptions parseAtlasOptions(const Args& args) {
   });
   cl.text("--mask", o.mask);
   cl.whole("--mask-size", o.maskSize, 8, 8192);
+  cl.text("--export-uv", o.exportUv);
   cl.parse(args);
   if (o.mesh.empty()) throw UsageError{"no mesh given: fgsg atlas MESH [--preview atlas.png]"};
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
   if (!o.mask.empty() && lowerExtension(o.mask) != ".png") throw UsageError{"--mask " + o.mask + ": masks are PNG files (name it .png)"};
+  if (!o.exportUv.empty() && lowerExtension(o.exportUv) != ".obj")
+    throw UsageError{"--export-uv " + o.exportUv + ": the mesh with its texture coordinates is an OBJ file (name it .obj)"};
   if (!o.brushes.empty() && o.mask.empty())
     throw UsageError{"--paint and --paint-slab need --mask FILE.png to write the mask to"};
   return o;
@@ -131,6 +137,14 @@ int atlasCommand(const Args& args) {
       return 1;
     }
     std::printf("wrote %s (%dx%d, %zu brushes)\n", opt.mask.c_str(), opt.maskSize, opt.maskSize, opt.brushes.size());
+  }
+  if (!opt.exportUv.empty()) {
+    if (!rt::texture::writeAtlasUvObj(*surface, opt.exportUv, error)) {
+      std::cerr << "fgsg atlas: " << error << "\n";
+      return 1;
+    }
+    std::printf("wrote %s (%zu faces, their corners' texture coordinates: paint an image over them for a texture context)\n",
+                opt.exportUv.c_str(), mesh.faceCount());
   }
   return 0;
 }

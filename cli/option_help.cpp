@@ -87,7 +87,9 @@ const char* const kAtlas =
     "  --paint-slab x,y,z,nx,ny,nz,w  paint the band within w of the plane through x,y,z\n"
     "                     square to n into --mask (repeatable)\n"
     "  --mask FILE        the painted mask, a grey PNG in the mesh's texture coordinates\n"
-    "  --mask-size N      the mask's side in pixels, 8 to 8192 (default 1024)\n";
+    "  --mask-size N      the mask's side in pixels, 8 to 8192 (default 1024)\n"
+    "  --export-uv FILE   write the mesh as OBJ with the texture coordinates contexts are\n"
+    "                     read at (one vt per chart corner), to paint a mask elsewhere\n";
 
 const char* const kEvolve =
     "  --k K              every rule is K x K alleles (1 to 16, default 3)\n"
