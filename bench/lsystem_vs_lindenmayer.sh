@@ -1,26 +1,34 @@
 #!/usr/bin/env bash
 # fgsg's L-system rewriting side by side with npm `lindenmayer` (JavaScript), in one run:
 # the two tools alternate ROUNDS times on the same machine, and the script prints each
-# round's ratio (lindenmayer's warm time over fgsg's) and their median (issue 48: a ratio
-# is only ever reported from one such run, never against a figure measured elsewhere).
+# round's ratios and their medians (issue 48: a ratio is only ever reported from one such
+# run, never against a figure measured elsewhere). Like is set beside like:
 #
-#   bench/lsystem_vs_lindenmayer.sh [FGSG] [ROUNDS]     (defaults: build/fgsg, 5)
+#   warm  both in process, their code compiled, after a first repetition: lindenmayer's
+#         fastest of 6 repetitions in one node process against fgsg's fastest of 6 in one
+#         `bench_lsystem --warm` process (the grammar compiled by the JIT once, each
+#         repetition a whole derivation, its `time.rewrite` / `time.derive`);
+#   cold  a whole process each, its start-up included, wall clock: `node` deriving once
+#         against `fgsg run` (code cache filled by one run before the rounds; fgsg also
+#         writes its .glb, lindenmayer writes nothing: fgsg's goes to /dev/shm where there
+#         is one, because on a disk fgsg's fsync of its output, 0.1-0.2 s on this VM, would
+#         be most of what is measured).
 #
+#   bench/lsystem_vs_lindenmayer.sh [FGSG] [ROUNDS]   (defaults: build/bin/fgsg, 5;
+#                                                      bench_lsystem beside FGSG)
 # Workloads:
-#   fff   axiom F, F -> F F F, 13 steps (1 594 323 modules), the string only: lindenmayer's
-#         iterate() against fgsg's `time.rewrite` (fgsg's symbol is A, which the turtle
-#         does not draw, so that nothing but the string is made: the same rewriting);
+#   fff   axiom F, F -> F F F, 13 steps (1 594 323 modules), the string only (fgsg's
+#         symbol is A, which the turtle does not draw, so nothing but the string is made);
 #   plant ABOP Fig. 1.24d, X -> F[+X]F[-X]+X, F -> FF, 9 steps (126 912 modules): the
-#         rewriting alone (iterate() against `time.rewrite`), and the whole derivation with
-#         the turtle's segments (iterate() + final() against `time.derive`).
-# lindenmayer's time is the fastest of 6 repetitions in one node process (warm: its
-# code compiled by V8); fgsg's is one `fgsg run --stats` (its grammar compiled by the JIT,
-# the object cache warm after the first round). lindenmayer is installed with npm into
-# $LINDENMAYER_DIR (default /tmp/fgsg-lindenmayer) on first use.
+#         rewriting alone (warm only) and the whole derivation with the turtle's segments.
+# lindenmayer is installed with npm into $LINDENMAYER_DIR (default /tmp/fgsg-lindenmayer)
+# on first use.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-fgsg=${1:-$root/build/fgsg}
+fgsg=${1:-$root/build/bin/fgsg}
 rounds=${2:-5}
+bench=$(dirname "$fgsg")/bench_lsystem
+[ -x "$bench" ] || { echo "no $bench: build the bench_lsystem target" >&2; exit 2; }
 scratch=${LINDENMAYER_DIR:-/tmp/fgsg-lindenmayer}
 mkdir -p "$scratch"
 if [ ! -d "$scratch/node_modules/lindenmayer" ]; then
@@ -28,8 +36,8 @@ if [ ! -d "$scratch/node_modules/lindenmayer" ]; then
     { echo "npm could not install lindenmayer into $scratch" >&2; exit 2; }
 fi
 
-cat > "$scratch/side_by_side.js" <<'EOF'
-// node side_by_side.js fff|plant N REPS: prints the fastest and median seconds as JSON.
+cat > "$scratch/side_by_side.js" <<'JS'
+// node side_by_side.js fff|plant N REPS: prints the fastest seconds as JSON.
 const LSystem = require('lindenmayer');
 const [, , workload, steps, repsText] = process.argv;
 const n = parseInt(steps, 10), reps = parseInt(repsText, 10);
@@ -62,47 +70,70 @@ for (let r = 0; r < reps; r++) {
 }
 const fastest = (v) => Math.min(...v);
 console.log(JSON.stringify({length, segments, rewrite_s: fastest(rewrite), whole_s: fastest(whole)}));
-EOF
+JS
 
-cat > "$scratch/fff13.fgsg" <<'EOF'
+cat > "$scratch/fff13.fgsg" <<'FGSG'
 derive parallel 13;
 axiom: A;
 A -> A A A;
-EOF
-cat > "$scratch/plant9.fgsg" <<'EOF'
+FGSG
+cat > "$scratch/plant9.fgsg" <<'FGSG'
 derive parallel 9;
 turtle angle 20 step 1 width 0.1 segments "lines";
 axiom: X;
 X -> F [ + X ] F [ - X ] + X;
 F -> F F;
-EOF
+FGSG
 
-stat() { grep "^$2 " "$1" | awk '{print $2}'; }
+field() { echo "$1" | sed "s/.*\"$2\":\([0-9.e-]*\).*/\1/"; }
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+# Wall seconds of one command, its output discarded.
+wall() {
+  local t0 t1
+  t0=$(date +%s%N)
+  "$@" > /dev/null
+  t1=$(date +%s%N)
+  awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.4f", (b - a) / 1e9}'
+}
 
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+out=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
+trap 'rm -rf "$tmp" "$out"' EXIT
+export FGSG_CACHE_DIR=$tmp/cache
+"$fgsg" run "$scratch/fff13.fgsg" -o "$out/fff.glb" -q
+"$fgsg" run "$scratch/plant9.fgsg" -o "$out/plant.glb" -q
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-printf '%-6s %-26s %-26s %-34s\n' round "fff13 rewrite (js/fgsg)" "plant9 rewrite (js/fgsg)" "plant9 with turtle (js/fgsg)"
+# Columns: warm fff rewrite, warm plant rewrite, warm plant whole, cold fff, cold plant;
+# each lindenmayer's seconds / fgsg's seconds = ratio.
 for r in $(seq 1 "$rounds"); do
   js_fff=$(cd "$scratch" && node side_by_side.js fff 13 6)
-  "$fgsg" run "$scratch/fff13.fgsg" -o "$tmp/fff.obj" --stats -q > "$tmp/fff.stats"
+  fg_fff=$("$bench" --warm "$scratch/fff13.fgsg" 6)
   js_plant=$(cd "$scratch" && node side_by_side.js plant 9 6)
-  "$fgsg" run "$scratch/plant9.fgsg" -o "$tmp/plant.obj" --stats -q > "$tmp/plant.stats"
-  jf=$(echo "$js_fff" | sed 's/.*"rewrite_s":\([0-9.e-]*\).*/\1/')
-  jpr=$(echo "$js_plant" | sed 's/.*"rewrite_s":\([0-9.e-]*\).*/\1/')
-  jpw=$(echo "$js_plant" | sed 's/.*"whole_s":\([0-9.e-]*\).*/\1/')
-  ff=$(stat "$tmp/fff.stats" time.rewrite)
-  fpr=$(stat "$tmp/plant.stats" time.rewrite)
-  fpw=$(stat "$tmp/plant.stats" time.derive)
-  echo "$(ratio "$jf" "$ff") $(ratio "$jpr" "$fpr") $(ratio "$jpw" "$fpw")" >> "$tmp/ratios"
-  printf '%-6s %-26s %-26s %-34s\n' "$r" "$jf/$ff = $(ratio "$jf" "$ff")x" "$jpr/$fpr = $(ratio "$jpr" "$fpr")x" \
-    "$jpw/$fpw = $(ratio "$jpw" "$fpw")x"
+  fg_plant=$("$bench" --warm "$scratch/plant9.fgsg" 6)
+  jc_fff=$(cd "$scratch" && wall node side_by_side.js fff 13 1)
+  fc_fff=$(wall "$fgsg" run "$scratch/fff13.fgsg" -o "$out/fff.glb" -q)
+  jc_plant=$(cd "$scratch" && wall node side_by_side.js plant 9 1)
+  fc_plant=$(wall "$fgsg" run "$scratch/plant9.fgsg" -o "$out/plant.glb" -q)
+  set -- "$(field "$js_fff" rewrite_s)" "$(field "$fg_fff" rewrite_s)" \
+    "$(field "$js_plant" rewrite_s)" "$(field "$fg_plant" rewrite_s)" \
+    "$(field "$js_plant" whole_s)" "$(field "$fg_plant" derive_s)" \
+    "$jc_fff" "$fc_fff" "$jc_plant" "$fc_plant"
+  echo "$1 $2 $3 $4 $5 $6 $7 $8 $9 ${10}" >> "$tmp/times"
+  printf 'round %s  warm: fff %s/%s = %sx  plant rewrite %s/%s = %sx  plant+turtle %s/%s = %sx\n' "$r" \
+    "$1" "$2" "$(ratio "$1" "$2")" "$3" "$4" "$(ratio "$3" "$4")" "$5" "$6" "$(ratio "$5" "$6")"
+  printf '          cold: fff %s/%s = %sx  plant+turtle %s/%s = %sx\n' \
+    "$7" "$8" "$(ratio "$7" "$8")" "$9" "${10}" "$(ratio "$9" "${10}")"
 done
-echo "lindenmayer: $js_fff; $js_plant"
-echo "median ratio (lindenmayer's time / fgsg's; above 1: fgsg is faster):"
-echo "  F -> FFF n=13, rewriting:            $(cut -d' ' -f1 "$tmp/ratios" | median)"
-echo "  ABOP Fig. 1.24d n=9, rewriting:      $(cut -d' ' -f2 "$tmp/ratios" | median)"
-echo "  ABOP Fig. 1.24d n=9, with the turtle: $(cut -d' ' -f3 "$tmp/ratios" | median)"
+echo "lindenmayer's last: $js_fff; $js_plant"
+echo "fgsg's last: $fg_fff; $fg_plant"
+col() { awk -v c="$1" '{print $c}' "$tmp/times" | median; }
+rcol() { awk -v a="$1" -v b="$2" '{printf "%.6f\n", $a / $b}' "$tmp/times" | median; }
+echo "medians over $rounds rounds (ratio: lindenmayer's time / fgsg's; above 1: fgsg is faster):"
+printf '  warm  F -> FFF n=13, rewriting:             %s s / %s s, ratio %.2f\n' "$(col 1)" "$(col 2)" "$(rcol 1 2)"
+printf '  warm  ABOP Fig. 1.24d n=9, rewriting:       %s s / %s s, ratio %.2f\n' "$(col 3)" "$(col 4)" "$(rcol 3 4)"
+printf '  warm  ABOP Fig. 1.24d n=9, with the turtle: %s s / %s s, ratio %.2f\n' "$(col 5)" "$(col 6)" "$(rcol 5 6)"
+printf '  cold  F -> FFF n=13, whole process:         %s s / %s s, ratio %.2f\n' "$(col 7)" "$(col 8)" "$(rcol 7 8)"
+printf '  cold  ABOP Fig. 1.24d n=9, whole process:   %s s / %s s, ratio %.2f\n' "$(col 9)" "$(col 10)" "$(rcol 9 10)"
+awk '{print 1594323 / $2 / 1e6}' "$tmp/times" | median | xargs printf '  fgsg warm template rewriting, F -> FFF n=13: %.0f M modules/s\n'
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
