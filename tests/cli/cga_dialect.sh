@@ -19,10 +19,10 @@ cd "$root" || fail "no root $root"
 "$root/tests/engine_equivalence.sh" "$fgsg" "$runlib" "$root" examples/cga/building.cga || fail "engines differ"
 
 # An operation the dialect does not run yet: E800 at its name.
-printf '@StartRule\nLot --> extrude(10)\n    taper(2)\n' >"$tmp/taper.cga"
-"$fgsg" check "$tmp/taper.cga" >"$tmp/taper.txt" 2>&1 && fail "taper passes check"
-grep -q "taper.cga:3:5: error\[E800\]: unknown operation 'taper' (CityEngine CGA; not supported yet)" "$tmp/taper.txt" ||
-  { cat "$tmp/taper.txt"; fail "no located E800 for taper"; }
+printf '@StartRule\nLot --> extrude(10)\n    trim()\n' >"$tmp/taper.cga"
+"$fgsg" check "$tmp/taper.cga" >"$tmp/taper.txt" 2>&1 && fail "trim passes check"
+grep -q "taper.cga:3:5: error\[E800\]: unknown operation 'trim' (CityEngine CGA; not supported yet)" "$tmp/taper.txt" ||
+  { cat "$tmp/taper.txt"; fail "no located E800 for trim"; }
 # The same file named .fgsg: the hint to name it .cga.
 cp "$tmp/taper.cga" "$tmp/taper.fgsg"
 "$fgsg" check "$tmp/taper.fgsg" >"$tmp/hint.txt" 2>&1 && fail "CGA text passes as .fgsg"
