@@ -31,8 +31,10 @@ packages=(
 # to download, 3 minutes to install).
 # antlr4 (the tool, with a Java runtime): only to regenerate the parsers checked in under
 # grammar/generated (scripts/regen-grammar.sh); building needs only its C++ runtime.
+# time: /usr/bin/time measures the peak memory under --max-memory
+# (tests/reliability/limits_memory.sh).
 test_packages=(python3-numpy python3-pytest python3-distributed python3-venv python3-setuptools python3-wheel
-               chromium blender antlr4)
+               chromium blender antlr4 time)
 testing=false
 [ "${1:-}" = "--test" ] && testing=true
 $testing && packages+=("${test_packages[@]}")

@@ -74,9 +74,9 @@ check_same() {
 }
 check_same ply --seed 3 --max-shapes 4000
 check_same obj --seed=9 --collide-all --max-depth 60
-if [ -f tests/data/meshes/bunny00.off ]; then
-  check_same glb --seed 4 --surface tests/data/meshes/bunny00.off --surface-size 8 --start 0,1,0 --max-shapes 3000
-fi
+[ -f tests/data/meshes/bunny00.off ] ||
+  fail "tests/data/meshes/bunny00.off is missing: run scripts/fetch-test-meshes.sh (the test set-up, scripts/install-deps.sh --test, does)"
+check_same glb --seed 4 --surface tests/data/meshes/bunny00.off --surface-size 8 --start 0,1,0 --max-shapes 3000
 "$run_library" "$tmp/libstem_leaf.so" --set nope=1 -o "$tmp/x.glb" 2>"$tmp/lib.err" && fail "run_library accepted --set nope=1"
 grep -q 'R010' "$tmp/lib.err" || { cat "$tmp/lib.err" >&2; fail "no R010 for an unknown attribute"; }
 [ -e "$tmp/x.glb" ] && fail "a file was written although generating failed"

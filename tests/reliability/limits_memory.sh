@@ -14,11 +14,11 @@ for engine in interp jit; do
 done
 
 # The process never holds much more than the budget (assembling and writing included).
-if [ -x /usr/bin/time ]; then
+[ -x /usr/bin/time ] ||
+  fail "/usr/bin/time is missing: install Debian's time package (scripts/install-deps.sh --test does)"
 peak=$( { /usr/bin/time -f '%M' "$fgsg" run "$inputs/limits_runaway.fgsg" --engine interp --max-memory 200M \
   --max-depth 1000 --max-shapes 1000000000 -o "$tmp/peak.glb" 2>&1 >/dev/null; } | tail -1)
 [ "$peak" -lt 330000 ] || fail "peak resident memory ${peak} KB under --max-memory 200M"
-fi
 
 for bad in 0 12X -5 1.5Q M ''; do
   expect 2 'fgsg run: --max-memory .*: expected a size such as 512M or 2G' -- \
