@@ -91,6 +91,8 @@ const CommandInfo kCommands[] = {
     {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
     {CommandId::ShapeOperation, "Translate", 5, 5, BodyRule::None,
      "Translate(\"rel\" or \"abs\", \"scope\" or \"world\", x, y, z)", nullptr},
+    {CommandId::ShapeOperation, "Rotate", 5, 5, BodyRule::None,
+     "Rotate(\"rel\" or \"abs\", \"scope\" or \"world\", ax, ay, az)", nullptr},
     {CommandId::ShapeOperation, "DeleteHoles", 0, 0, BodyRule::None, "DeleteHoles()", nullptr},
     {CommandId::ShapeOperation, "ReverseNormals", 0, 0, BodyRule::None, "ReverseNormals()", nullptr},
     {CommandId::ShapeOperation, "ResetGeometry", 0, 0, BodyRule::None, "ResetGeometry()", nullptr},

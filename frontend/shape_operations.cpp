@@ -37,8 +37,10 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
     if (k == 1) return pick({{"largest", -1}}, word, value, allowed);  // else a face index
     if (k == 2) return pick({{"longest", -1}}, word, value, allowed);  // else an edge index
   }
-  if (command == "Translate" && k == 0) return pick({{"rel", 0}, {"abs", 1}}, word, value, allowed);
-  if (command == "Translate" && k == 1) return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
+  if ((command == "Translate" || command == "Rotate") && k == 0)
+    return pick({{"rel", 0}, {"abs", 1}}, word, value, allowed);
+  if ((command == "Translate" || command == "Rotate") && k == 1)
+    return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
   if (command == "CleanupGeometry" && k == 0)
     return pick({{"vertices", 1}, {"edges", 2}, {"faces", 4}, {"all", 7}}, word, value, allowed);

@@ -170,6 +170,23 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
       throw DeriveError{op.loc, "R002", "Translate: \"abs\" takes the world's coordinates, not the scope's"};
     part = rt::cga::Part{st.scope, st.geom, false, 0};
     part.scope.P = world ? (absolute ? v : st.scope.P + v) : st.scope.P + st.scope.axes * v;
+  } else if (name == "Rotate") {
+    // Rotate(rel|abs, scope|world, ax, ay, az): CityEngine's rotate about the scope's
+    // origin, the geometry turning with it: in the scope's own axes (x, then y, then z, as
+    // R), about the world's axes (x, then y, then z), or to the world's axes so turned (abs).
+    const bool absolute = a[0] != 0, world = a[1] != 0;
+    if (!world && absolute)
+      throw DeriveError{op.loc, "R002", "Rotate: \"abs\" takes the world's angles, not the scope's"};
+    auto turn = [&](int axis, double degrees) {
+      return rt::Mat3(Eigen::AngleAxisd(degrees * M_PI / 180.0, rt::Vec3::Unit(axis)).toRotationMatrix());
+    };
+    part = rt::cga::Part{st.scope, st.geom, false, 0};
+    if (world) {  // about the fixed world axes, x first
+      const rt::Mat3 r = turn(2, a[4]) * turn(1, a[3]) * turn(0, a[2]);
+      part.scope.axes = absolute ? r : rt::Mat3(r * st.scope.axes);
+    } else {  // about the scope's own axes as they turn, x first
+      part.scope.axes = st.scope.axes * turn(0, a[2]) * turn(1, a[3]) * turn(2, a[4]);
+    }
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
   } else if (name == "InnerRectangle") {

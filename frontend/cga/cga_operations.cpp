@@ -11,6 +11,8 @@
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
 //   translate(rel, scope, x, y, z)      T(x, y, z)
 //   translate(rel|abs, world, x, y, z)  Translate("rel" or "abs", "world", x, y, z)
+//   rotate(rel, scope, x, y, z)         R(x, y, z)
+//   rotate(rel|abs, world, x, y, z)     Rotate("rel" or "abs", "world", x, y, z)
 //   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
 //                                       it (CityEngine transforms the inserted geometry with
 //                                       the scope); a missing file is W801, the insert skipped
@@ -409,6 +411,35 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
       return;
     }
     Item item = command(system == "scope" ? "T" : "Translate", at);
+    if (system == "world") {
+      item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
+      item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
+    }
+    for (size_t k = 2; k < 5; ++k) item.args.push_back(expr(argCtx[k], env));
+    if (!allOk(item.args)) return;
+    push(std::move(item));
+    return;
+  }
+  if (name == "rotate") {
+    // rotate(rel|abs, scope|world, x, y, z) (op_rotate: about the scope's origin): rel scope
+    // is r(); rel and abs world are fgsg's Rotate. The pivot and object systems (and abs in
+    // the scope's own system) are not here yet.
+    if (!noBody() || !count(5, 5, "5 arguments (rel or abs, scope or world, x, y, z angles)")) return;
+    const std::string mode = selectorWord(argCtx[0]), system = selectorWord(argCtx[1]);
+    if (mode != "rel" && mode != "abs") {
+      error("E028", rangeOf(argCtx[0]), "rotate's mode is rel or abs, not '" + argCtx[0]->getText() + "'");
+      return;
+    }
+    if (system != "scope" && system != "world" && system != "pivot" && system != "object") {
+      error("E028", rangeOf(argCtx[1]),
+            "rotate's coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
+      return;
+    }
+    if (system == "pivot" || system == "object" || (system == "scope" && mode == "abs")) {
+      notSupported(rangeOf(argCtx[1]), "rotate(" + mode + ", " + system + ", ...)");
+      return;
+    }
+    Item item = command(system == "scope" ? "R" : "Rotate", at);
     if (system == "world") {
       item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
       item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
