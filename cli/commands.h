@@ -23,6 +23,7 @@ int evolveCommand(const Args& args);   // fgsg evolve TILES.json (L-system tile 
 int fieldCommand(const Args& args);    // fgsg field FILE (a grammar's field: streamlines, singularities)
 int viewCommand(const Args& args);     // fgsg view FILE (a live viewer in the browser)
 int lspCommand(const Args& args);      // fgsg lsp (a language server on stdin/stdout)
+int fmtCommand(const Args& args);      // fgsg fmt FILE... (canonical layout, in place)
 int batchCommand(const Args& args);    // fgsg batch JOBS.json (python -m fgsg.batch: jobs on Dask)
 
 // The usage lines of the commands with their own (fgsg synth --help, fgsg evolve --help).

@@ -48,6 +48,9 @@ usage:
                            with a manifest of every job's outcome (docs/scale.md)
   fgsg lsp                 a language server for editors: LSP on stdin and stdout
                            (diagnostics, completion, hover, definition; docs/editors.md)
+  fgsg fmt FILE... [--check] [--stdout]
+                           rewrite grammars in the canonical layout, in place (- : stdin to
+                           stdout); --check lists the files that would change, exit 1
   fgsg --help | --version
 
 fgsg CMD --help describes each of CMD's options (run: -o, --seed, --set, --preview ...).
@@ -62,7 +65,7 @@ Documentation: docs/language.md, docs/cli.md.
 )";
 
 const char* const kCommands[] = {"run",     "check", "ir",    "synth", "repl", "compile",
-                                 "atlas",   "evolve", "field", "view",  "batch", "lsp"};
+                                 "atlas",   "evolve", "field", "view",  "batch", "lsp", "fmt"};
 
 // What `fgsg CMD --help` prints: the command's lines of the overall help (from "  fgsg
 // CMD" to the next command; synth and evolve have their own usage), a line on each of its
@@ -129,6 +132,7 @@ int main(int argc, char** argv) {
     if (cmd == "view") return fgsg::cli::viewCommand(args);
     if (cmd == "batch") return fgsg::cli::batchCommand(args);
     if (cmd == "lsp") return fgsg::cli::lspCommand(args);
+    if (cmd == "fmt") return fgsg::cli::fmtCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;
@@ -140,6 +144,6 @@ int main(int argc, char** argv) {
     std::cerr << "fgsg " << cmd << ": internal error: " << e.what() << " (please report it)\n";
     return 1;
   }
-  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field, view, batch, lsp; see fgsg --help)\n";
+  std::cerr << "fgsg: unknown command '" << cmd << "' (run, check, ir, synth, repl, compile, atlas, evolve, field, view, batch, lsp, fmt; see fgsg --help)\n";
   return 2;
 }

@@ -69,6 +69,11 @@ const char* const kRun =
 
 const char* const kCheck = "%START_RULE%";
 
+const char* const kFmt =
+    "  --check            write nothing; list the files that would change and exit 1 if any\n"
+    "                     does (for CI)\n"
+    "  --stdout           print the formatted grammars instead of rewriting the files\n";
+
 const char* const kIr = "  --llvm             print the LLVM IR the JIT compiles instead of fgsg's IR\n";
 
 const char* const kRepl = "%ENGINE%";
@@ -190,7 +195,8 @@ std::string expand(std::string text) {
 std::string optionHelp(const std::string& command) {
   const std::pair<const char*, const char*> texts[] = {
       {"run", kRun},         {"check", kCheck}, {"ir", kIr},         {"repl", kRepl},   {"compile", kCompile},
-      {"atlas", kAtlas},     {"evolve", kEvolve}, {"field", kField}, {"view", kView},   {"synth", kSynth}};
+      {"atlas", kAtlas},     {"evolve", kEvolve}, {"field", kField}, {"view", kView},   {"synth", kSynth},
+      {"fmt", kFmt}};
   for (const auto& [name, text] : texts)
     if (command == name) return "\noptions:\n" + expand(text);
   return "";
