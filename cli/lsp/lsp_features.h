@@ -38,4 +38,10 @@ Json rename(const Analysis& analysis, const std::string& text, int line, int cha
 // textDocument/documentSymbol: the document's rules, attrs, consts and fields.
 Json documentSymbols(const Analysis& analysis);
 
+// textDocument/formatting: the document in `fgsg fmt`'s layout (frontend/format_grammar.h),
+// as one edit of the whole text, or none when it is laid out so already; null with `error`
+// (the first problem, file:line:col) for text it cannot format: a syntax error, a .cga file.
+// The editor's tab size is not asked: the layout is the canonical one.
+Json formatting(const std::string& path, const std::string& text, std::string& error);
+
 }  // namespace fgsg::cli::lsp

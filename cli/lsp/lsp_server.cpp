@@ -3,6 +3,7 @@
 #include "cli/lsp/lsp_documents.h"
 #include "cli/lsp/lsp_features.h"
 #include "cli/lsp/lsp_framing.h"
+#include "cli/lsp/lsp_text.h"
 #include "cli/view_message.h"
 
 #include <iostream>
@@ -14,7 +15,7 @@ namespace {
 // JSON-RPC's and LSP's error codes.
 constexpr int kParseError = -32700, kInvalidRequest = -32600, kMethodNotFound = -32601, kInvalidParams = -32602,
               kInternalError = -32603,
-              kServerNotInitialized = -32002;
+              kServerNotInitialized = -32002, kRequestFailed = -32803;
 // Deeper JSON than any LSP message has is refused before it is parsed.
 constexpr int kMaxJsonDepth = 64;
 
@@ -92,7 +93,8 @@ class Server {
                                 {"definitionProvider", true},
                                 {"documentSymbolProvider", true},
                                 {"referencesProvider", true},
-                                {"renameProvider", true}}},
+                                {"renameProvider", true},
+                                {"documentFormattingProvider", true}}},
                           {"serverInfo", Json{{"name", "fgsg"}, {"version", "0.1.0"}}}});
       return;
     }
@@ -105,9 +107,16 @@ class Server {
     const bool positional = method == "textDocument/completion" || method == "textDocument/hover" ||
                             method == "textDocument/definition" || method == "textDocument/references" ||
                             method == "textDocument/rename";
-    if (!positional && method != "textDocument/documentSymbol")
+    if (!positional && method != "textDocument/documentSymbol" && method != "textDocument/formatting")
       return sendError(id, kMethodNotFound, "fgsg lsp: no method " + method);
     const std::string uri = params.at("textDocument").at("uri").get<std::string>();
+    if (method == "textDocument/formatting") {  // from the text alone: no analysis needed
+      const std::string* text = documents_.text(uri);
+      if (!text) return sendResult(id, nullptr);
+      std::string error;
+      const Json edits = formatting(pathOfUri(uri), *text, error);
+      return edits.is_null() ? sendError(id, kRequestFailed, "fgsg lsp: " + error) : sendResult(id, edits);
+    }
     const auto analysis = documents_.analysis(uri);
     if (!analysis) return sendResult(id, nullptr);  // not open: nothing known of it
     if (method == "textDocument/documentSymbol") return sendResult(id, documentSymbols(*analysis));

@@ -2,7 +2,7 @@
 // language client (scripts/install-node-packages.sh puts it in tools/node). Diagnostics
 // with fgsg check's codes and ranges (UTF-16 columns), incremental sync, completion,
 // hover, definition across an import, references and rename across two files, document
-// symbols, shutdown and exit.
+// symbols, formatting, shutdown and exit.
 // usage: node lsp_client.js FGSG SOURCE_DIR
 'use strict';
 const { spawn, execFileSync } = require('child_process');
@@ -199,6 +199,34 @@ async function main() {
   assert.deepStrictEqual(cgaSymbols.map((s) => s.name), [
     'height', 'floor_height', 'brick_share', 'setback_distance', 'Lot', 'Footprint', 'Tower', 'Building', 'Roof',
     'Facade', 'Floors', 'GroundFloor', 'Floor', 'Tile', 'Window', 'Glass', 'Balcony', 'Door', 'Wall']);
+
+  // Formatting (#50): fgsg fmt's layout as one edit of the whole text; the same text as
+  // `fgsg fmt -` prints; none once formatted; a syntax error or a .cga file fails the request.
+  assert.strictEqual(init.capabilities.documentFormattingProvider, true);
+  const fmtPath = path.join(work, 'fmt.fgsg');
+  const fmtText = 'attr  w=2*3;   // w\naxiom:S(w,1,1)  A\nA ~> Print("🧱") S(1r,w,1r)   B\n';
+  const fmtUri = uriOf(fmtPath);
+  connection.sendNotification('textDocument/didOpen',
+                              { textDocument: { uri: fmtUri, languageId: 'fgsg', version: 1, text: fmtText } });
+  const formatOptions = { tabSize: 8, insertSpaces: false };
+  const fmtEdits = await connection.sendRequest('textDocument/formatting', { textDocument: { uri: fmtUri }, options: formatOptions });
+  const formatted = 'attr w = 2 * 3; // w\naxiom: S(w, 1, 1) A\nA ~> Print("🧱") S(1r, w, 1r) B\n';
+  assert.deepStrictEqual(fmtEdits, [{ range: { start: { line: 0, character: 0 }, end: { line: 3, character: 0 } }, newText: formatted }]);
+  assert.strictEqual(execFileSync(fgsg, ['fmt', '-'], { input: fmtText, encoding: 'utf8' }), formatted);
+  connection.sendNotification('textDocument/didChange',
+                              { textDocument: { uri: fmtUri, version: 2 }, contentChanges: [{ text: formatted.trimEnd() }] });
+  // Without the final line break: the edit ends at the last line's end (UTF-16 columns).
+  assert.deepStrictEqual(await connection.sendRequest('textDocument/formatting', { textDocument: { uri: fmtUri }, options: formatOptions }),
+                         [{ range: { start: { line: 0, character: 0 }, end: { line: 2, character: 31 } }, newText: formatted }]);
+  connection.sendNotification('textDocument/didChange',
+                              { textDocument: { uri: fmtUri, version: 3 }, contentChanges: [{ text: formatted }] });
+  assert.deepStrictEqual(await connection.sendRequest('textDocument/formatting', { textDocument: { uri: fmtUri }, options: formatOptions }), []);
+  connection.sendNotification('textDocument/didChange',
+                              { textDocument: { uri: fmtUri, version: 4 }, contentChanges: [{ text: 'axiom: A;\nA -> B(1,;\n' }] });
+  await assert.rejects(connection.sendRequest('textDocument/formatting', { textDocument: { uri: fmtUri }, options: formatOptions }),
+                       (e) => e.code === -32803 && e.message.startsWith(`fgsg lsp: ${fmtPath}:2:10: `) && e.message.endsWith('(not formatted)'));
+  await assert.rejects(connection.sendRequest('textDocument/formatting', { textDocument: { uri: cgaUri }, options: formatOptions }),
+                       (e) => e.code === -32803 && e.message.includes('CityEngine CGA (.cga) is not supported yet'));
 
   await connection.sendRequest('shutdown');
   connection.sendNotification('exit');
