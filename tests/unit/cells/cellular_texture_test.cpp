@@ -190,6 +190,16 @@ TEST_CASE("the occupancy maps are respected: a face generator fills only what ed
   for (FeatureRef f : tex.order())
     if (f.kind == FeatureKind::Face) layBricks(tex, f, {0.215, 0.075, 0.1});
   const auto& cells = tex.cells();
+  // Both kinds were laid (with none on either side the loop below checks nothing), and
+  // the faces got fewer bricks than on a column with no edge bricks: the edges' cells
+  // were taken out of them.
+  CellularTexture facesOnly(m, buildFeatureMesh(m));
+  for (FeatureRef f : facesOnly.order())
+    if (f.kind == FeatureKind::Face) layBricks(facesOnly, f, {0.215, 0.075, 0.1});
+  // (Counts pinned from the deterministic layout: a change shows here first.)
+  CHECK(edgeCells == 200);
+  CHECK(cells.size() - edgeCells == 682);
+  CHECK(facesOnly.cells().size() == 988);
   for (size_t i = edgeCells; i < cells.size(); ++i)
     for (size_t j = 0; j < edgeCells; ++j) REQUIRE_FALSE(cellsOverlap(cells[i], cells[j], 1e-9));
 }
