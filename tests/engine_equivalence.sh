@@ -3,8 +3,9 @@
 # examples/NAME.fgsg ...` header line, from the repository root) or one golden case
 # folder (its args, inside the folder) with the interpreter, with the JIT, and through
 # the grammar compiled to a shared library (fgsg compile + tests/tools/run_library),
-# and compares the written .glb files. A case that must fail must fail alike: same exit
-# code, same diagnostics from both fgsg engines.
+# and compares the written .glb files. A case that must fail (a case folder with
+# expected_errors.txt) must fail alike: same exit code, same diagnostics from both fgsg
+# engines. Any other run must succeed: two engines failing alike is no agreement (#51).
 #   engine_equivalence.sh FGSG RUN_LIBRARY ROOT (examples/NAME.fgsg | tests/cases/NAME)
 set -uo pipefail
 fgsg=$1
@@ -16,6 +17,7 @@ trap 'rm -rf "$tmp"' EXIT
 export FGSG_CACHE_DIR="$tmp/cache"  # the JIT compiles each grammar afresh, then reuses it
 name=$(basename "$target" .fgsg)
 fail() { echo "FAIL [$name]: $*" >&2; exit 1; }
+expect_error=false  # set for a case folder whose expected_errors.txt declares the failure
 
 # Runs one grammar with the given options in the current folder, three ways.
 compare() {
@@ -33,7 +35,12 @@ compare() {
     diff "$tmp/$tag-interp.err" "$tmp/$tag-jit.err" >&2
     fail "$tag: the engines report differently"
   }
-  [ $rc_i -eq 0 ] || return 0  # a failing run writes nothing to compare
+  if [ $rc_i -ne 0 ]; then  # a failing run writes nothing to compare
+    $expect_error && return 0
+    cat "$tmp/$tag-interp.err" >&2
+    fail "$tag: both engines failed alike (exit $rc_i), and no expected_errors.txt declares it"
+  fi
+  $expect_error && fail "$tag: expected_errors.txt declares an error, but both engines succeeded"
   cmp "$tmp/$tag-interp.glb" "$tmp/$tag-jit.glb" || fail "$tag: the JIT's output differs from the interpreter's"
   local lib="$tmp/lib${tag//-/_}.so"
   "$fgsg" compile "$grammar" -o "$lib" -q 2>"$tmp/$tag-compile.err" || {
@@ -55,6 +62,7 @@ if [ -d "$target" ]; then
     echo "ok: $name (a compile-time error case: no engine runs)"
     exit 0
   fi
+  [ -f expected_errors.txt ] && expect_error=true
   compare input.fgsg case "${args[@]}"
   echo "ok: $name"
   exit 0
