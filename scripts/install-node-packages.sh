@@ -2,13 +2,15 @@
 # Installs the npm packages fgsg uses into tools/node/, pinned: the Khronos glTF
 # validator (the tests check every .glb we write against it), three.js (the page of
 # `fgsg view`, served from the build folder), playwright-core (drives Debian's chromium
-# in the viewer's browser tests) and vscode-jsonrpc (the LSP client that drives `fgsg lsp`
-# in its tests). Idempotent: when the pinned versions are already installed nothing
-# touches the network, so a second run works offline.
+# in the viewer's browser tests), vscode-jsonrpc (the LSP client that drives `fgsg lsp`
+# in its tests) and vscode-textmate with vscode-oniguruma (VS Code's tokeniser, which
+# the tests run on editors/*.tmLanguage.json). Idempotent: when the pinned versions are
+# already installed nothing touches the network, so a second run works offline.
 set -euo pipefail
 
 # Only 2.0.0-dev.* releases of the validator exist; a range like @2 would not match one.
-packages=("gltf-validator@2.0.0-dev.3.10" "three@0.187.0" "playwright-core@1.65.2" "vscode-jsonrpc@10.0.0")
+packages=("gltf-validator@2.0.0-dev.3.10" "three@0.187.0" "playwright-core@1.65.2" "vscode-jsonrpc@10.0.0"
+          "vscode-textmate@9.4.0" "vscode-oniguruma@2.0.1")
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 prefix="$root/tools/node"
 

@@ -1,0 +1,2 @@
+" .fgsg files are fgsg grammars (editors/vim/syntax/fgsg.vim).
+autocmd BufRead,BufNewFile *.fgsg setfiletype fgsg
