@@ -1,7 +1,8 @@
 // A quick look at an assembled mesh: an Embree ray-cast PNG with a camera fitted to the
 // bounding box. A pattern flat in Z (a planar design in the XY plane) is seen straight
 // from above with an orthographic camera; anything else in perspective from the
-// (+X, +Y, +Z) side with Y up, close enough that the bounding box just fits. Lambert
+// (+X, +Y, +Z) side with Y up, close enough that the bounding box just fits; or, when
+// asked (PreviewCamera, `fgsg run --camera`), from any side of an orbit. Lambert
 // shading (headlight + key light + ambient) of the vertex colours, times the image on
 // textured triangles (Mesh::textureRuns), over a soft gradient, 2x2 supersampled.
 // Deterministic bytes.
