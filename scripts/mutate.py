@@ -197,6 +197,7 @@ class Workspace:
         self.build = os.path.realpath(build)
         self.commit = commit
         self.applied = None  # (absolute path, original bytes) while a mutation is in
+        self.interrupted_in = None  # the file a Ctrl-C found mutated (then restored)
         self.journal = os.path.join(os.path.dirname(self.worktree), JOURNAL)
 
     def refuse_shared_paths(self):
@@ -400,7 +401,15 @@ def run_shell(command, cwd, timeout):
 def run_logged(command, what, ws, check=True):
     log = os.path.join(os.path.dirname(ws.worktree), f"last-{what}.log")
     with open(log, "w") as out:
-        result = subprocess.run(command, stdout=out, stderr=subprocess.STDOUT)
+        process = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT)
+        try:
+            process.wait()
+        except BaseException:
+            # Interrupted (a signal to this process only): the build must not go on.
+            process.terminate()
+            process.wait()
+            raise
+        result = subprocess.CompletedProcess(command, process.returncode)
     if check and result.returncode != 0:
         raise MutateError(f"{what} failed ({' '.join(command[:3])} ...); see {log}")
     return result
@@ -444,6 +453,9 @@ def run_area(area, ws, commands, keep_going, log):
             else:
                 outcome, detail = commands.test(area)
                 status = {"passed": "survived", "failed": "killed", "timeout": "timeout"}[outcome]
+        except KeyboardInterrupt:
+            ws.interrupted_in = mutation.path
+            raise
         finally:
             ws.restore()
         seconds = round(time.time() - begun, 1)
@@ -615,7 +627,8 @@ def main(argv):
                 log(f"  error: {error}")
     except KeyboardInterrupt:
         ws.restore()
-        print("mutate: interrupted; the mutated file is restored", file=sys.stderr)
+        print("mutate: interrupted; " + (f"{ws.interrupted_in} is restored" if ws.interrupted_in
+                                         else "no mutation was applied"), file=sys.stderr)
         return 130
     text = summary_text(report)
     print("\n" + text, end="")
