@@ -9,9 +9,9 @@ golden tests that compare geometry, not only counts (#51), and a diff of two dig
 Canonical form: every position is rounded to a multiple of P (default 1e-4; -0 is 0), each
 triangle is written as its three rounded corners starting at its least one (its winding,
 and so its facing, kept), each line segment as its two corners in order, and both lists are
-sorted. Vertex order, instance order and how vertices are shared do not matter; positions,
-facing and connectivity do. The digest's summary (counts, bounding box, centroid of the
-corners, total area) is always written; the triangles and segments themselves when there
+sorted. Vertex and triangle order do not matter; positions, facing and connectivity do.
+The digest's summary (counts, bounding box, centroid of the corners, total area of the
+rounded triangles) is always written; the triangles and segments themselves when there
 are at most --full-limit of them (default 2000), else their sha256 alone (16 hex digits) —
 the summary still says what changed.
 """
@@ -80,10 +80,12 @@ def digest(path, precision=1e-4, full_limit=2000):
         used = [vertices[i] for t in triangles for i in t] + [vertices[i] for s in segments for i in s]
         centroid = [sum(p[a] for p in used) / len(used) for a in range(3)] if used else [0, 0, 0]
         lines += [f"bbox.min {text(lo)}", f"bbox.max {text(hi)}", f"centroid {text(centroid)}"]
+    # The area of the rounded triangles: a move below the precision cannot change it.
+    snapped = [tuple(k * precision for k in key) for key in keys]
     area = 0.0
     for a, b, c in triangles:
-        u = [vertices[b][k] - vertices[a][k] for k in range(3)]
-        v = [vertices[c][k] - vertices[a][k] for k in range(3)]
+        u = [snapped[b][k] - snapped[a][k] for k in range(3)]
+        v = [snapped[c][k] - snapped[a][k] for k in range(3)]
         n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
         area += 0.5 * math.sqrt(sum(x * x for x in n))
     # The area to 6 significant digits: exact enough to see a change, not float noise.
