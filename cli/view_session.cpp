@@ -382,6 +382,11 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     derive.assetDirs.push_back(dir);
   }
   if (!loader) loader = std::make_unique<backend::native::CodeLoader>();
+  if (recompile || !surfaceReuse_ || surfaceReuseKey_ != std::make_pair(attrs, seed)) {
+    surfaceReuse_ = std::make_unique<backend::SurfaceReuse>();
+    surfaceReuseKey_ = {attrs, seed};
+  }
+  const backend::SurfaceReuseScope reuseSurface(*surfaceReuse_);
   rt::DeriveResult result =
       backend::derive(options_.engine, compiled_->module, compiled_->source.text, derive, assets, nullptr, loader.get());
   frontend::Diagnostics diags(&compiled_->source);

@@ -26,6 +26,7 @@
 #pragma once
 
 #include "backend/engine.h"
+#include "backend/engine/surface_reuse.h"
 #include "cli/view_paint.h"
 #include "cli/view_seed_file.h"
 #include "cli/view_server.h"
@@ -108,6 +109,10 @@ class ViewSession {
   std::unique_ptr<CompiledFile> compiled_;  // the last grammar that compiled (worker only)
   std::unique_ptr<backend::native::CodeLoader> loader_;  // its JIT code (worker only)
   std::string compileError_;  // the file's diagnostics while it does not compile (worker only)
+  // The surface of the last derivation, kept for the next with the same values and seed
+  // (a seed or paint edit); any other starts afresh (worker only).
+  std::unique_ptr<backend::SurfaceReuse> surfaceReuse_;
+  std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
 
   std::mutex mutex_;  // guards what follows
   std::condition_variable wake_;

@@ -1,6 +1,7 @@
 #include "backend/commands/marching_commands.h"
 
 #include "backend/engine/derivation.h"
+#include "backend/engine/surface_reuse.h"
 #include "runtime/abandonable.h"
 #include "runtime/io/find_file.h"
 #include "runtime/marching/marching_surface.h"
@@ -78,6 +79,16 @@ void MarchingCommands::prepareSurface() {
   // packing, the geometry image): on a worker that --max-seconds abandons. It reads
   // only the surface, which it shares.
   const auto start = std::chrono::steady_clock::now();
+  // fgsg view: the layout of the last derivation on this surface (surface_reuse.h).
+  SurfaceReuse* reuse = SurfaceReuseScope::current();
+  if (reuse) {
+    std::lock_guard<std::mutex> lock(reuse->mutex);
+    if (reuse->world == d_.surface() && reuse->marching) {
+      surface_ = reuse->marching;
+      d_.stats().surfaceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return;
+    }
+  }
   std::pair<std::shared_ptr<const MarchingSurface>, std::string> prepared;
   try {
     prepared = rt::runAbandonable(&d_.deadline(), false, [world = d_.surface(), options] {
@@ -91,6 +102,10 @@ void MarchingCommands::prepareSurface() {
     throw d_.timeLimit();
   }
   surface_ = std::move(prepared.first);
+  if (reuse && surface_) {
+    std::lock_guard<std::mutex> lock(reuse->mutex);
+    if (reuse->world == d_.surface()) reuse->marching = surface_;
+  }
   d_.stats().surfaceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!surface_)
     unpreparedCode_ = "R023", unpreparedWhy_ = "the surface cannot be laid out for marching: " + prepared.second;

@@ -128,6 +128,9 @@ SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options
   buildFields(m, options, searchDirs);
   impl_->start = options.hasStart ? Vec3(options.start[0], options.start[1], options.start[2])
                                   : Vec3(0.5 * (impl_->mesh.boundsMin + impl_->mesh.boundsMax));
+  // The deadline is the building derivation's: fgsg view hands the world to later ones
+  // (engine/surface_reuse.h), so it is not kept past construction.
+  impl_->deadline = nullptr;
 }
 
 SurfaceWorld::~SurfaceWorld() = default;

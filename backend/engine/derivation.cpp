@@ -3,6 +3,7 @@
 // how run() ends: a limit keeps what was derived (R004), running out of memory keeps
 // nothing (R020), a DeriveError is the located error.
 #include "backend/engine/derivation.h"
+#include "backend/engine/surface_reuse.h"
 
 #include "runtime/memory_budget.h"
 #include "runtime/stack_budget.h"
@@ -229,7 +230,18 @@ void Derivation::checkEnvironment() {
                         "a surface needs a sequential derivation: L-system turtles draw on the "
                         "plane"};
     const auto start = Clock::now();
-    surface_ = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+    SurfaceReuse* reuse = SurfaceReuseScope::current();  // fgsg view: the last derivation's
+    if (reuse) {
+      std::lock_guard<std::mutex> lock(reuse->mutex);
+      surface_ = reuse->world;
+    }
+    if (!surface_) {
+      surface_ = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+      if (reuse) {
+        std::lock_guard<std::mutex> lock(reuse->mutex);
+        reuse->world = surface_;
+      }
+    }
     stats_.surfaceSeconds += std::chrono::duration<double>(Clock::now() - start).count();
   }
   marching_.loadTextures();
