@@ -4,9 +4,21 @@
 // in Debian's chromium (headless, software WebGL) from the page sending the change to the
 // new model parsed and in the scene; the server's part (derive, assemble, encode) too.
 // usage: node bench/view_latency.js [FGSG_BINARY] [N]   (prints one JSON line)
+//
+// With `edits` (#49): the editing loop instead. examples/ivy.fgsg (its mask a white 256²
+// PNG in a folder of its own) on MESH (default the bunny, --surface-size 2) from K seeds
+// spread over the surface; N seed drags (seed 0 moved between two surface points) and N
+// paint dabs (black, then white again, under seed 0), each timed in the page from the
+// message sent to the new model in the scene; median and p95 of each, and the server's part.
+// STEPS (default the example's 120) shortens each plant's main branch: a software-WebGL
+// page on a small machine holds a few million triangles, not the issue's 4.5 M.
+// usage: node bench/view_latency.js FGSG_BINARY N edits [MESH] [K] [STEPS]
 'use strict';
 const { spawn } = require('child_process');
+const fs = require('fs');
+const os = require('os');
 const path = require('path');
+const zlib = require('zlib');
 
 const root = path.resolve(__dirname, '..');
 const fgsg = process.argv[2] || path.join(root, 'build/bin/fgsg');
@@ -14,8 +26,96 @@ const runs = Number(process.argv[3] || 20);
 const { chromium } = require(path.join(root, 'tools/node/node_modules/playwright-core'));
 
 function median(v) { const s = [...v].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; }
+function p95(v) { const s = [...v].sort((a, b) => a - b); return s[Math.min(s.length - 1, Math.ceil(0.95 * s.length) - 1)]; }
 
-(async () => {
+// A white 8-bit grey PNG (filter 0 rows; the CRCs computed: no library here).
+function whitePng(side) {
+  const crc = (buf) => {
+    let c = 0xffffffff;
+    for (const b of buf) { c ^= b; for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1; }
+    return (c ^ 0xffffffff) >>> 0;
+  };
+  const chunk = (type, data) => {
+    const out = Buffer.alloc(12 + data.length);
+    out.writeUInt32BE(data.length, 0);
+    out.write(type, 4, 'latin1');
+    data.copy(out, 8);
+    out.writeUInt32BE(crc(out.subarray(4, 8 + data.length)), 8 + data.length);
+    return out;
+  };
+  const ihdr = Buffer.alloc(13);
+  ihdr.writeUInt32BE(side, 0); ihdr.writeUInt32BE(side, 4); ihdr[8] = 8;
+  const raw = Buffer.alloc((side + 1) * side, 255);
+  for (let y = 0; y < side; ++y) raw[y * (side + 1)] = 0;
+  return Buffer.concat([Buffer.from('89504e470d0a1a0a', 'hex'), chunk('IHDR', ihdr), chunk('IDAT', zlib.deflateSync(raw)),
+                        chunk('IEND', Buffer.alloc(0))]);
+}
+
+async function edits() {
+  const mesh = path.resolve(process.argv[5] || path.join(root, 'tests/data/meshes/bunny00.off'));
+  const seedCount = Number(process.argv[6] || 25);
+  const steps = Number(process.argv[7] || 120);
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fgsg-view-bench-'));
+  fs.writeFileSync(path.join(dir, 'ivy.fgsg'),
+                   fs.readFileSync(path.join(root, 'examples/ivy.fgsg'), 'utf8').replace('ivy_anywhere.png', 'mask.png')
+                     .replace('const mainSteps = 120;', `const mainSteps = ${steps};`));
+  fs.writeFileSync(path.join(dir, 'mask.png'), whitePng(256));
+  const server = spawn(fgsg, ['view', path.join(dir, 'ivy.fgsg'), '--port', '0', '--surface', mesh, '--surface-size', '2'],
+                       { stdio: ['ignore', 'pipe', 'inherit'] });
+  const url = await new Promise((resolve) => {
+    let text = '';
+    server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
+  });
+  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
+  try {
+    const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+    page.on('crash', () => console.error('the page crashed (out of memory?): fewer seeds or STEPS'));
+    await page.goto(url);
+    await page.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1 && window.fgsgViewer.surfaces >= 1,
+                               null, { timeout: 120000 });
+    // Seeds on surface vertices spread through the mesh's order.
+    const points = await page.evaluate((k) => window.fgsgViewer.hooks.surfacePoints(k), seedCount + 2);
+    const seeds = points.slice(0, seedCount);
+    const timed = async (message) => {
+      const n = await page.evaluate(() => window.fgsgViewer.models);
+      await page.evaluate((m) => window.fgsgViewer.hooks.send(m), message);
+      await page.waitForFunction((k) => window.fgsgViewer.models > k, n, { timeout: 120000 });
+      return page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
+                                    f: window.fgsgViewer.figures }));
+    };
+    await timed({ type: 'seeds', seeds });  // the first derivation of K seeds: not counted
+    const result = { bench: 'view_edit_latency', mesh: path.basename(mesh), seeds: seedCount, main_steps: steps,
+                     edits: runs };
+    for (const kind of ['seed_drag', 'paint']) {
+      const page_ms = [], server_ms = [], received_ms = [];
+      let polygons = 0;
+      for (let i = 0; i < runs; ++i) {
+        const message = kind === 'seed_drag'
+          ? { type: 'seeds', seeds: [points[seedCount + (i % 2)], ...seeds.slice(1)] }
+          : { type: 'paint', texture: 'mask', stroke: i, dabs: [seeds[0]], radius: 0.1, strength: 1, value: i % 2 ? 1 : 0 };
+        const r = await timed(message);
+        page_ms.push(r.t.shown - r.t.sent);
+        received_ms.push(r.t.received - r.t.sent);
+        server_ms.push(r.s);
+        polygons = Math.max(polygons, r.f.triangles);
+      }
+      Object.assign(result, { [`${kind}_triangles`]: polygons,
+        [`${kind}_page_ms_median`]: +median(page_ms).toFixed(1), [`${kind}_page_ms_p95`]: +p95(page_ms).toFixed(1),
+        [`${kind}_received_ms_median`]: +median(received_ms).toFixed(1),
+        [`${kind}_server_ms_median`]: +median(server_ms).toFixed(1), [`${kind}_server_ms_p95`]: +p95(server_ms).toFixed(1) });
+    }
+    result.surfaces_sent = await page.evaluate(() => window.fgsgViewer.surfaces);  // 1: no edit recompiled
+    console.log(JSON.stringify(result));
+  } finally {
+    await browser.close();
+    server.kill('SIGTERM');
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+if (process.argv[4] === 'edits') edits();
+else (async () => {
   const server = spawn(fgsg, ['view', path.join(root, 'examples/mueller_building.fgsg'), '--port', '0',
                               '--set', 'lot_width=31'], { stdio: ['ignore', 'pipe', 'inherit'] });
   const url = await new Promise((resolve) => {
