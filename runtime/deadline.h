@@ -6,6 +6,9 @@
 //
 // Not thread-safe (the countdown is plain): one thread asks `expired()`; other threads
 // may ask `passed()`, which reads the clock every time.
+//
+// The clock is the steady clock unless a test passes its own time source, so that the
+// stride's behaviour is checked without wall-clock thresholds (timing lives in bench/).
 #pragma once
 
 #include <algorithm>
@@ -24,11 +27,14 @@ struct TimeLimitReached {
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;
+  // Where the deadline reads the time: Clock::now, or a test's fake clock.
+  using TimeSource = Clock::time_point (*)();
 
   // Never expires.
   Deadline() = default;
-  // Expires `seconds` after `start` (not finite or not positive: never).
-  Deadline(Clock::time_point start, double seconds) : start_(start), last_(start), seconds_(seconds) {
+  // Expires `seconds` after `start` (not finite or not positive: never), by `now`'s time.
+  Deadline(Clock::time_point start, double seconds, TimeSource now = &Clock::now)
+      : start_(start), last_(start), seconds_(seconds), now_(now) {
     if (seconds > 0 && seconds < 1e9)
       end_ = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   }
@@ -50,14 +56,14 @@ class Deadline {
     return poll();
   }
   // Thread-safe: whether the end has passed, reading the clock.
-  bool passed() const noexcept { return expired_ || Clock::now() >= end_; }
+  bool passed() const noexcept { return expired_ || now_() >= end_; }
 
   bool limited() const noexcept { return end_ != Clock::time_point::max(); }
   double seconds() const noexcept { return seconds_; }
   Clock::time_point start() const noexcept { return start_; }
   double remainingSeconds() const noexcept {
     if (!limited()) return std::numeric_limits<double>::infinity();
-    return std::max(0.0, std::chrono::duration<double>(end_ - Clock::now()).count());
+    return std::max(0.0, std::chrono::duration<double>(end_ - now_()).count());
   }
   // When the clock was last read by expired() / expiredNow(): other periodic checks
   // (the memory budget) piggyback on it instead of reading the clock themselves.
@@ -74,7 +80,7 @@ class Deadline {
       countdown_ = 0;
       return true;
     }
-    const Clock::time_point now = Clock::now();
+    const Clock::time_point now = now_();
     const auto gap = now - last_;
     last_ = now;
     if (gap < std::chrono::microseconds(50)) stride_ = std::min(stride_ * 2, kMaxStride);
@@ -91,6 +97,7 @@ class Deadline {
   int64_t stride_ = 1;
   int64_t countdown_ = 1;
   bool expired_ = false;
+  TimeSource now_ = &Clock::now;
 };
 
 }  // namespace fgsg::rt

@@ -15,17 +15,29 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// Busy work of about `micros` microseconds, then one question to the deadline; the
-// seconds from the deadline's end to the first `true`.
-double overshoot(double limit, double micros) {
-  Deadline d = Deadline::after(limit);
-  const auto end = d.start() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
+// A fake steady clock the tests move by hand: the deadline's stride is checked exactly,
+// with no wall-clock thresholds on a loaded machine (timing lives in bench/).
+Clock::time_point fakeNow;
+Clock::time_point readFakeClock() { return fakeNow; }
+
+Clock::duration micros(double us) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::micro>(us));
+}
+
+// Units of work of `unitMicros` each on the fake clock, one question to the deadline
+// after each: how long after the deadline's end the first `true` comes, in units.
+double unitsLate(Deadline& d, double unitMicros) {
+  const Clock::time_point end = d.start() + micros(d.seconds() * 1e6);
   for (;;) {
-    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::micro>(micros));
-    while (Clock::now() < until) {
-    }
-    if (d.expired()) return std::chrono::duration<double>(Clock::now() - end).count();
+    fakeNow += micros(unitMicros);
+    if (d.expired()) return std::chrono::duration<double, std::micro>(fakeNow - end).count() / unitMicros;
   }
+}
+
+double unitsLate(double limit, double unitMicros) {
+  fakeNow = Clock::time_point{};
+  Deadline d(fakeNow, limit, readFakeClock);
+  return unitsLate(d, unitMicros);
 }
 
 }  // namespace
@@ -65,32 +77,54 @@ TEST_CASE("a deadline without a limit never expires") {
   CHECK_FALSE(Deadline::after(-1).limited());
 }
 
-TEST_CASE("a deadline is noticed within a millisecond or so, for cheap and costly units") {
-  // Loose bounds: the tests share a loaded machine, where a thread may lose its core for
-  // tens of milliseconds (22 ms was seen under ctest -j2); a stride gone wrong overshoots
-  // by far more.
-  CHECK(overshoot(0.05, 0.01) < 0.05);  // 10 ns units: the stride grows to its cap
-  CHECK(overshoot(0.05, 20) < 0.05);    // 20 us units: a clock read every few units
-  CHECK(overshoot(0.05, 500) < 0.05);   // 0.5 ms units: every unit
-  Deadline d = Deadline::after(0.01);
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+TEST_CASE("a deadline is noticed within one stride of units, for cheap and costly units") {
+  // The clock is read when the stride's countdown runs out; the stride doubles while reads
+  // come under 50 us apart, up to 1024, and falls to a quarter when they come over 200 us
+  // apart. So the deadline is noticed at most a stride of units late:
+  CHECK(unitsLate(0.05, 0.01) <= 1024);  // 10 ns units: the stride grows to its cap
+  CHECK(unitsLate(0.05, 0.01) >= 0);
+  // 20 us units: the stride doubles to 4 (reads 80 us apart) and stays there.
+  CHECK(unitsLate(0.05, 20) < 4);
+  // 0.5 ms units: every unit reads the clock, so the first unit past the end sees it.
+  CHECK(unitsLate(0.05, 500) < 1);
+  CHECK(unitsLate(0.05, 500) >= 0);
+}
+
+TEST_CASE("a passed deadline stays passed, and says so every way") {
+  fakeNow = Clock::time_point{};
+  Deadline d(fakeNow, 0.01, readFakeClock);
+  fakeNow += micros(5000);
+  CHECK_FALSE(d.passed());
+  CHECK_FALSE(d.expiredNow());
+  CHECK(d.remainingSeconds() == Approx(0.005));
+  fakeNow += micros(15000);
   CHECK(d.passed());
   CHECK(d.expiredNow());
-  CHECK(d.expired());  // and from then on
+  fakeNow -= micros(15000);  // even were the clock to go back: expiry is sticky
+  CHECK(d.expired());
   CHECK_THROWS_AS(d.check(), TimeLimitReached);
+  fakeNow += micros(15000);
   CHECK(d.remainingSeconds() == 0);
 }
 
+TEST_CASE("the real clock: a deadline after a short limit has passed once the limit has") {
+  // Only a lower bound on elapsed time, which a loaded machine cannot break.
+  Deadline d = Deadline::after(0.001);
+  std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  CHECK(d.passed());
+  CHECK(d.expiredNow());
+}
+
 TEST_CASE("after cheap units, costly ones are still timed: the stride adapts") {
-  Deadline d = Deadline::after(0.1);
+  fakeNow = Clock::time_point{};
+  Deadline d(fakeNow, 0.1, readFakeClock);
   int early = 0;
-  for (int i = 0; i < 200000; ++i) early += d.expired();  // ~1 ns units: the stride grows
-  CHECK(early == 0);
-  while (!d.expired()) {  // 20 us units from now on
-    const auto until = Clock::now() + std::chrono::microseconds(20);
-    while (Clock::now() < until) {
-    }
+  for (int i = 0; i < 200000; ++i) {  // 1 ns units: the stride grows to 1024
+    fakeNow += micros(0.001);
+    early += d.expired();
   }
-  const auto end = d.start() + std::chrono::milliseconds(100);
-  CHECK(std::chrono::duration<double>(Clock::now() - end).count() < 0.02);
+  CHECK(early == 0);
+  // 20 us units from now on: the first read comes at most 1024 units (20 ms) late and
+  // quarters the stride, as do the next until it is 4 again, long before the end at 100 ms.
+  CHECK(unitsLate(d, 20) < 4);
 }
