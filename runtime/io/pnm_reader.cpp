@@ -51,9 +51,11 @@ bool readPlainSamples(const std::string& b, const PnmHeader& header, std::vector
   samples.assign(count, 0);
   size_t pos = header.rasterOffset;
   for (size_t i = 0; i < count; ++i) {
-    const size_t pixel = i / size_t(header.channels);
-    const std::string which = "sample " + std::to_string(i + 1) + " (row " + std::to_string(pixel / header.width + 1) +
-                              ", column " + std::to_string(pixel % header.width + 1) + ")";
+    const auto which = [&] {  // for messages only: not built for every sample
+      const size_t pixel = i / size_t(header.channels);
+      return "sample " + std::to_string(i + 1) + " (row " + std::to_string(pixel / header.width + 1) + ", column " +
+             std::to_string(pixel % header.width + 1) + ")";
+    };
     skipBlanks(b, pos);
     if (pos >= b.size()) {
       error = "the plain PGM/PPM file is truncated: it ends at line " + std::to_string(lineAt(b, pos)) + " after " +
@@ -65,11 +67,11 @@ bool readPlainSamples(const std::string& b, const PnmHeader& header, std::vector
     if (!readNumber(b, pos, value) || (pos < b.size() && !isBlank(b[pos]) && b[pos] != '#')) {
       const size_t bad = pos < b.size() && start < pos ? pos : start;
       error = "the plain PGM/PPM file has " + shown(b[bad]) + " at line " + std::to_string(lineAt(b, bad)) +
-              " in " + which + ", which should be a decimal number";
+              " in " + which() + ", which should be a decimal number";
       return false;
     }
     if (value > header.maxValue) {
-      error = "the plain PGM/PPM file's " + which + " at line " + std::to_string(lineAt(b, start)) + " is " +
+      error = "the plain PGM/PPM file's " + which() + " at line " + std::to_string(lineAt(b, start)) + " is " +
               (value > 100000000 ? std::string("above 10^8") : std::to_string(value)) + ", above its maxval " +
               std::to_string(header.maxValue);
       return false;
