@@ -354,3 +354,69 @@ TEST_CASE("setbackToArea finds the distance that leaves the area asked for") {
   CHECK_FALSE(setbackDistanceForArea(f, {true, true, true, true}, 250, d, error));  // more than the lot
   CHECK_FALSE(setbackDistanceForArea(f, {true, false, false, false}, 0, d, error));
 }
+
+TEST_CASE("splitAreaSizes cuts where the part before the cut has the area asked for") {
+  GeometryArena arena;
+  // The right triangle (0,0) (20,0) (0,10): 100 m2, the area left of x = t is 10 t - t^2 / 4,
+  // so 50 m2 end at t = 20 - sqrt(200); the floating part takes the rest of the 20 m.
+  const Part tri = lot(arena, {{0, 0}, {20, 0}, {0, 10}});
+  std::vector<SizeValue> lengths;
+  std::vector<bool> derived;
+  std::string error;
+  REQUIRE(splitAreaSizes(tri.scope, tri.geom, arena, 0, false, {{SizeValue::Absolute, 50}, {SizeValue::Floating, 1}},
+                         lengths, derived, error));
+  REQUIRE(lengths.size() == 2);
+  CHECK(lengths[0].value == Approx(20 - std::sqrt(200.0)).margin(1e-9));
+  CHECK(lengths[1].value == Approx(std::sqrt(200.0)).margin(1e-9));
+  CHECK((derived[0] && derived[1]));
+  // A relative area is that share of the whole: 0.25 of the 20 x 10 lot along x is 5 m.
+  const Part rect = lot(arena, kRect20x10);
+  REQUIRE(splitAreaSizes(rect.scope, rect.geom, arena, 0, false, {{SizeValue::Relative, 0.25}}, lengths, derived,
+                         error));
+  REQUIRE(lengths.size() == 2);  // the part asked for, then the rest (not derived)
+  CHECK(lengths[0].value == Approx(5).margin(1e-9));
+  CHECK((derived[0] && !derived[1]));
+  // A solid is refused.
+  Part box;
+  REQUIRE(extrude(rect.scope, rect.geom, 3, arena, box, error));
+  CHECK_FALSE(splitAreaSizes(box.scope, box.geom, arena, 0, false, {{SizeValue::Absolute, 10}}, lengths, derived,
+                             error));
+}
+
+TEST_CASE("convexify cuts an L from its reflex corner, and not where maxLength forbids") {
+  GeometryArena arena;
+  const Part l = lot(arena, {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}});
+  Part out;
+  std::string error;
+  REQUIRE(convexify(l.scope, l.geom, arena, INFINITY, out, error));
+  REQUIRE(out.geom.kind == GeomKind::Polyhedron);
+  REQUIRE(out.geom.count == 2);
+  for (uint32_t i = 0; i < 2; ++i) {  // the cut (0,0)-(10,10) leaves two 150 m2 quadrilaterals
+    const GeometryArena::Face& f = arena.face(out.geom, i);
+    Polygon3 world;
+    for (uint32_t k = 0; k < f.count; ++k) world.push_back(out.scope.toWorld(out.scope.S.cwiseProduct(arena.facePoints(f)[k])));
+    CHECK(world.size() == 4);
+    CHECK(0.5 * newellNormal(world).norm() == Approx(150).margin(1e-9));
+  }
+  // The only cut is 14.14 m long: maxLength 10 leaves the L as it was.
+  REQUIRE(convexify(l.scope, l.geom, arena, 10, out, error));
+  CHECK(out.geom.kind == l.geom.kind);
+  CHECK(out.geom.first == l.geom.first);
+}
+
+TEST_CASE("taper raises a pyramid over the polygon's centre of gravity") {
+  GeometryArena arena;
+  // The 20 x 10 lot tapered by 6: apex (10, 6, 5), volume 200 * 6 / 3 = 400.
+  const Part rect = lot(arena, kRect20x10);
+  Part out;
+  std::string error;
+  REQUIRE(taper(rect.scope, rect.geom, 6, arena, out, error));
+  REQUIRE(out.geom.kind == GeomKind::Polyhedron);
+  CHECK(out.geom.count == 5);
+  CHECK(out.scope.S.y() == Approx(6));
+  CHECK(volume(out, arena) == Approx(400).margin(1e-9));
+  const GeometryArena::Face& side = arena.face(out.geom, 0);
+  const Vec3 apex = out.scope.toWorld(out.scope.S.cwiseProduct(arena.facePoints(side)[2]));
+  CHECK(near(apex, Vec3(10, 6, 5), 1e-9));
+  CHECK_FALSE(taper(rect.scope, rect.geom, -1, arena, out, error));
+}
