@@ -1,4 +1,5 @@
 #include "frontend/lex.h"
+#include "frontend/lsystem_not_yet.h"
 
 #include "FgsgParser.h"
 
@@ -549,6 +550,7 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   }
   lexed.lexer->removeErrorListeners();
 
+  dropLsystemSyntaxNotYetSupported(raw, diags);
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
   joinQualifiedNames(tokens, importAliases);

@@ -1,0 +1,81 @@
+#include "frontend/lsystem_not_yet.h"
+
+#include "frontend/lex.h"
+
+#include <string>
+
+namespace fgsg::frontend {
+
+using antlr4::Token;
+using fgsg_grammar::FgsgLexer;
+
+namespace {
+
+bool adjacent(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
+
+// The index after the ')' closing the '(' at `open` (or the EOF's index).
+size_t afterClosing(const std::vector<std::unique_ptr<Token>>& tokens, size_t open) {
+  int depth = 0;
+  for (size_t i = open; i < tokens.size(); ++i) {
+    const size_t type = tokens[i]->getType();
+    if (type == Token::EOF) return i;
+    if (type == FgsgLexer::LPAREN) ++depth;
+    if (type == FgsgLexer::RPAREN && --depth == 0) return i + 1;
+  }
+  return tokens.size();
+}
+
+// The index after a statement starting at `from`: past its ';', or at the first token on
+// a later line.
+size_t afterStatement(const std::vector<std::unique_ptr<Token>>& tokens, size_t from) {
+  const size_t line = tokens[from]->getLine();
+  for (size_t i = from; i < tokens.size(); ++i) {
+    if (tokens[i]->getType() == Token::EOF || tokens[i]->getLine() != line) return i;
+    if (tokens[i]->getType() == FgsgLexer::SEMI) return i + 1;
+  }
+  return tokens.size();
+}
+
+bool isQueryLetter(const std::string& s) { return s == "P" || s == "H" || s == "U" || s == "L" || s == "E"; }
+
+}  // namespace
+
+void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
+  std::vector<std::unique_ptr<Token>> kept;
+  kept.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size();) {
+    const Token* t = tokens[i].get();
+    const Token* next = i + 1 < tokens.size() ? tokens[i + 1].get() : nullptr;
+    const bool named = next && next->getType() == FgsgLexer::ID && adjacent(t, next);
+    if (named && t->getType() == FgsgLexer::UNKNOWN_CHAR && t->getText() == "#" && next->getText() == "consider") {
+      const SourceRange at{tokenRange(t).begin, tokenRange(next).end};
+      diags.error("E048", at,
+                  "lpfg's '#consider' (context matching sees only the symbols listed) is not supported "
+                  "yet; '#ignore: ...;' lists the symbols context matching steps over (docs/language.md)");
+      i = afterStatement(tokens, i);
+      continue;
+    }
+    if (named && t->getType() == FgsgLexer::QUESTION && isQueryLetter(next->getText()) && i + 2 < tokens.size() &&
+        tokens[i + 2]->getType() == FgsgLexer::LPAREN && adjacent(next, tokens[i + 2].get())) {
+      const size_t end = afterClosing(tokens, i + 2);
+      const SourceRange at{tokenRange(t).begin, tokenRange(tokens[end - 1].get()).end};
+      const std::string name = "?" + next->getText();
+      diags.error("E048", at,
+                  name == "?E" ? "the environmental query module '?E' (Mech and Prusinkiewicz 1996) is not "
+                                 "supported yet (docs/language.md, the turtle)"
+                               : "ABOP's query module '" + name +
+                                     "' (the turtle's state after interpretation, ABOP §1.10) is not supported "
+                                     "yet (docs/language.md, the turtle)");
+      // A whole left context (`?P(x, y) < A -> ...`) goes with its '<', so the rule reads on.
+      const bool aloneBefore = kept.empty() || kept.back()->getType() == FgsgLexer::SEMI ||
+                               kept.back()->getLine() != t->getLine();
+      i = aloneBefore && end < tokens.size() && tokens[end]->getType() == FgsgLexer::LT ? end + 1 : end;
+      continue;
+    }
+    kept.push_back(std::move(tokens[i]));
+    ++i;
+  }
+  tokens = std::move(kept);
+}
+
+}  // namespace fgsg::frontend
