@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,8 +22,11 @@ constexpr double kMaxEdgeInCells = 2.0;
 
 rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const PolycubeMap& map,
                          const std::function<double(const MappedPoint&)>& maxHeight, const OrnamentOptions& options,
-                         SurfaceOrnamentStats* stats) {
+                         SurfaceOrnamentStats* stats, double maxStretch) {
   const int n = pattern.side;
+  if (!(maxStretch == 0 || (maxStretch >= 1 && std::isfinite(maxStretch))))
+    throw std::invalid_argument("surfaceOrnament: the stretch limit must be 0 (none) or a ratio of at least 1, got " +
+                                std::to_string(maxStretch));
   if (n <= 0 || pattern.cells.size() != size_t(n) * size_t(n))
     throw std::invalid_argument("surfaceOrnament: an empty pattern");
   for (const Allele& a : pattern.cells)
@@ -59,12 +63,19 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
   mesh.texcoords.resize(2 * facelets.size() * vertices);
   mesh.indices.resize(facelets.size() * indices);
   std::vector<double> lowest(facelets.size(), 1.0);
+  const size_t perFacelet = pattern.cells.size();
+  std::vector<double> stretch(facelets.size() * perFacelet);
+  std::vector<size_t> stretchedTriangles(facelets.size(), 0);
   tbb::parallel_for(size_t(0), facelets.size(), [&](size_t f) {
     const double w = facelets[f].u.norm() / n;  // a cell's width on this face-let
     const size_t vBase = f * vertices, iBase = f * indices;
+    faceletStretch(map, f, n, stretch.data() + f * perFacelet);
     for (int row = 0; row < n; ++row)
       for (int col = 0; col < n; ++col) {
-        const CellBlock& cell = cells[size_t(row) * size_t(n) + size_t(col)];
+        const size_t c = size_t(row) * size_t(n) + size_t(col);
+        const CellBlock& cell = cells[c];
+        // Its vertices are still placed (on the surface, so the ornament's box stays true).
+        const bool tooStretched = maxStretch > 0 && stretch[f * perFacelet + c] > maxStretch;
         const OrnamentGrid& g = *cell.grid;
         const size_t nt = g.t.size(), nr = g.r.size();
         for (size_t i = 0; i < nt; ++i)
@@ -95,11 +106,12 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
           }
           return d2 > longest * longest;
         };
+        if (tooStretched) stretchedTriangles[f] += 2 * (nt - 1) * (nr - 1);
         for (size_t i = 0; i + 1 < nt; ++i)
           for (size_t j = 0; j + 1 < nr; ++j) {
             const auto a = uint32_t(first + i * nr + j), b = a + 1, c = uint32_t(a + nr), d = c + 1;
             for (const std::array<uint32_t, 3> t : {std::array{a, b, c}, std::array{b, d, c}}) {
-              const bool drop = jumps(t[0], t[1]) || jumps(t[1], t[2]) || jumps(t[2], t[0]);
+              const bool drop = tooStretched || jumps(t[0], t[1]) || jumps(t[1], t[2]) || jumps(t[2], t[0]);
               for (const uint32_t v : t) mesh.indices[k++] = drop ? t[0] : v;
             }
           }
@@ -110,7 +122,9 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
   for (size_t t = 0; t < mesh.indices.size(); t += 3)
     if (mesh.indices[t] != mesh.indices[t + 1] || mesh.indices[t] != mesh.indices[t + 2])
       for (size_t c = 0; c < 3; ++c) mesh.indices[kept++] = mesh.indices[t + c];
-  const size_t dropped = (mesh.indices.size() - kept) / 3;
+  size_t leftOut = 0;
+  for (const size_t t : stretchedTriangles) leftOut += t;
+  const size_t dropped = (mesh.indices.size() - kept) / 3 - leftOut;
   mesh.indices.resize(kept);
   mesh.computeNormals();
   if (stats) {
@@ -119,6 +133,12 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
     stats->triangles = mesh.triangleCount();
     stats->lowestScale = lowest.empty() ? 1.0 : *std::min_element(lowest.begin(), lowest.end());
     stats->droppedTriangles = dropped;
+    std::vector<double> emitted;
+    for (const double r : stretch)
+      if (!(maxStretch > 0 && r > maxStretch)) emitted.push_back(r);
+    stats->stretchedCells = stretch.size() - emitted.size();
+    stats->emittedStretch = summarizeStretch(std::move(emitted));
+    stats->stretch = summarizeStretch(std::move(stretch));
   }
   return mesh;
 }

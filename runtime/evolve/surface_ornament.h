@@ -21,6 +21,12 @@
 // both sides by neighbouring face-let points), triangles with an edge longer than two cell
 // widths are dropped rather than stretched across the gap (SurfaceOrnamentStats counts them).
 //
+// Where the map stretches a cell into a streak (§6.4: thin parts, a bunny's ears, an
+// elephant's trunk; ornament_stretch.h measures a cell's stretch as the ratio of its
+// longest to its shortest mapped side), the cell's ornament is left out when `maxStretch`
+// is given and the cell's stretch exceeds it: a gap in the pattern rather than a streak
+// the pattern never had (SurfaceOrnamentStats counts those cells).
+//
 // Each cell's ornament ends exactly on its cell's border where its locus does (ornament.h),
 // and points on a border shared by two face-lets map to the same surface point, so
 // neighbouring ornaments meet; a p4 pattern (§6.1) meets itself across face-lets however
@@ -29,6 +35,7 @@
 
 #include "runtime/evolve/lsystem2d.h"
 #include "runtime/evolve/ornament.h"
+#include "runtime/evolve/ornament_stretch.h"
 #include "runtime/evolve/polycube_map.h"
 #include "runtime/evolve/tiles.h"
 #include "runtime/mesh.h"
@@ -43,16 +50,25 @@ struct SurfaceOrnamentStats {
   size_t triangles = 0;
   double lowestScale = 1;  // the smallest s(P) the height limit applied
   size_t droppedTriangles = 0;  // spanning a jump of the map (an edge over 2 cell widths)
+  StretchSummary stretch;        // every mapped cell's stretch
+  StretchSummary emittedStretch;  // the stretch of the cells whose ornament was emitted
+  size_t stretchedCells = 0;     // left out: stretched beyond maxStretch
 };
+
+// The stretch bound `fgsg evolve --max-stretch` applies unless told otherwise.
+constexpr double kDefaultMaxStretch = 4.0;
 
 // The most triangles one surface ornament may have (about 1 GB of mesh).
 constexpr size_t kMaxSurfaceOrnamentTriangles = size_t(1) << 25;
 
 // `maxHeight(point)`: the room above a surface point (world units), or empty for none.
+// `maxStretch`: cells stretched more than this are left out; 0 for no limit.
 // Throws std::invalid_argument for an empty pattern, symbols the tile set lacks, bad
-// ornament options, or more than kMaxSurfaceOrnamentTriangles triangles.
+// ornament options, a maxStretch neither 0 nor at least 1, or more than
+// kMaxSurfaceOrnamentTriangles triangles.
 rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const PolycubeMap& map,
                          const std::function<double(const MappedPoint&)>& maxHeight,
-                         const OrnamentOptions& options = {}, SurfaceOrnamentStats* stats = nullptr);
+                         const OrnamentOptions& options = {}, SurfaceOrnamentStats* stats = nullptr,
+                         double maxStretch = 0);
 
 }  // namespace fgsg::rt::evolve
