@@ -150,15 +150,18 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
           "faces", "f", "sidefaces", "vertical", "aslant", "top", "bottom", "front", "back", "left", "right",
-          "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips", "valleys"};
-      static const std::set<std::string> kEdgeSelectors = {"edges",  "e",     "sideedges", "topedges", "bottomedges",
-                                                           "eaves", "ridges", "rakes",     "hips",     "valleys"};
+          "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips", "valleys",
+          "v", "vertices"};
+      static const std::set<std::string> kEdgeSelectors = {"edges", "e",     "sideedges", "topedges", "bottomedges",
+                                                           "eaves", "ridges", "rakes",    "hips",     "valleys",
+                                                           "v",     "vertices"};
       std::string sel = stringArg(0, "selector");
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
                          "\" (faces or f, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges or e, "
-                         "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys)");
+                         "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys; "
+                         "vertices or v)");
       else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
                kEdgeSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,

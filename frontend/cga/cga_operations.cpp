@@ -672,12 +672,17 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
     return;
   }
   const std::string kind = selectorWord(argCtx[0]);
-  if (kind != "f") {
+  if (kind != "f" && kind != "e" && kind != "v") {
     notSupported(rangeOf(argCtx[0]), "comp(" + argCtx[0]->getText() + ")");
     return;
   }
   if (!op->splitBody() || op->splitBody()->repeat) {
-    error("E018", at, "comp(f) needs its parts: comp(f){ top : Roof | side : Facade }");
+    error("E018", at, "comp(" + kind + ") needs its parts: comp(" + kind + "){ " +
+                          (kind == "f" ? "top : Roof | side : Facade" : "all : Post") + " }");
+    return;
+  }
+  if (kind != "f") {
+    compEdgesOrVertices(op, kind, seq, env);
     return;
   }
   static const char* const kSelectors[] = {"front", "back", "left", "right", "top", "bottom",
@@ -712,6 +717,36 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
     operations(sized->operation(), 0, part, env, true);
     item.body.push_back(std::move(part));
   }
+  seq.out.items.push_back(std::move(item));
+  seq.createsShapes = true;
+}
+
+// comp(e){ all : A } and comp(v){ all : A }: fgsg's Comp("e") / Comp("v") with A as its
+// one body (each edge or vertex a shape of its own); the only selector read is `all`.
+void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq,
+                                     const Env& env) {
+  const auto parts = op->splitBody()->splitPart();
+  auto* sized = parts.size() == 1 ? dynamic_cast<P::SizedPartContext*>(parts[0]) : nullptr;
+  if (!sized || selectorWord(sized->key) != "all") {
+    notSupported(sized ? rangeOf(sized->key) : rangeOf(op->splitBody()),
+                 "comp(" + kind + ") with selectors other than one `all : ...`");
+    return;
+  }
+  if (sized->sep->getText() == "=") {
+    notSupported(rangeOf(sized->sep), "comp(" + kind + ")'s `all =` (the components merged into one shape)");
+    return;
+  }
+  if (seq.pendingInsert) {
+    seq.out.items.push_back(std::move(*seq.pendingInsert));
+    seq.pendingInsert.reset();
+  }
+  Item item = command("Comp", rangeOf(op));
+  item.args.push_back(stringExpr(kind, rangeOf(op->expr()[0])));
+  item.hasBody = true;
+  Successor part;
+  part.range = rangeOf(sized);
+  operations(sized->operation(), 0, part, env, true);
+  item.body.push_back(std::move(part));
   seq.out.items.push_back(std::move(item));
   seq.createsShapes = true;
 }

@@ -129,6 +129,7 @@ class Translator {
   void split(P::CallOperationContext* op, const std::string& axis, Sequence& seq, const Env& env);
   void splitBody(P::SplitBodyContext* body, const std::string& axis, Item& item, const Env& env);
   void comp(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  void compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq, const Env& env);
   bool offsetComp(const std::vector<P::OperationContext*>& ops, size_t next, Item& offset, const Env& env);
   void insert(P::CallOperationContext* op, Sequence& seq, const Env& env);
   void texture(P::CallOperationContext* op, Sequence& seq, const Env& env);

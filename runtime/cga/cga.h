@@ -88,7 +88,9 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
 // "sideedges", "topedges", "bottomedges": an edge is top when both ends are at the
 // solid's maximum height, bottom when both are at its minimum, side otherwise; each
 // becomes an Edge part whose scope has Y along the edge (sy = its length), Z the mean
-// of the adjacent face normals, sx = sz = 0.
+// of the adjacent face normals, sx = sz = 0. "e" and "v" are CityEngine's comp(e) and
+// comp(v): every edge with x along it (sx its length, sy = sz = 0), every vertex with a
+// scope of no size at it, z its normal (components.cpp).
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error);
 

@@ -43,6 +43,10 @@ enum EdgeClass : unsigned {
 struct Selector {
   bool edges = false;
   unsigned mask = 0;  // FaceClass or EdgeClass bits
+  // CityEngine's comp(e) and comp(v): "e" aligns an edge's scope as CityEngine does (x
+  // along it) where "edges" keeps fgsg's (y along it); "v" gives the vertices.
+  bool cityEngineAxes = false;
+  bool vertices = false;
 };
 
 bool parseSelector(const std::string& s, Selector& sel) {
@@ -52,7 +56,6 @@ bool parseSelector(const std::string& s, Selector& sel) {
     unsigned mask;
   } kSelectors[] = {
       {"faces", false, kAllFaces},  {"f", false, kAllFaces},     {"sidefaces", false, kSide},
-      {"e", true, kAllEdges},
       {"top", false, kTop},         {"bottom", false, kBottom},
       {"vertical", false, kVertical}, {"aslant", false, kAslant},
       {"front", false, kFront},     {"back", false, kBack},
@@ -62,6 +65,14 @@ bool parseSelector(const std::string& s, Selector& sel) {
       {"eaves", true, kEave},       {"ridges", true, kRidge},        {"rakes", true, kRake},
       {"hips", true, kHip},         {"valleys", true, kValley},
   };
+  if (s == "e") {
+    sel = {true, kAllEdges, true, false};
+    return true;
+  }
+  if (s == "v" || s == "vertices") {
+    sel = {false, 0, true, true};
+    return true;
+  }
   for (const auto& k : kSelectors)
     if (s == k.name) {
       sel = {k.edges, k.mask};
@@ -221,6 +232,64 @@ Part edgePart(const WorldEdge& e, const Scope& solid, double tol) {
   return part;
 }
 
+// CityEngine's comp(e) scope (op_comp): x along the edge as the first face walks it, z
+// the mean of the adjacent face normals made orthogonal to it, y = z x x; sx = the
+// edge's length, sy = sz = 0, the origin at the edge's first end.
+Part cityEngineEdgePart(const WorldEdge& e) {
+  const Vec3 x = (e.b - e.a).normalized();
+  Vec3 z = e.normalSum - e.normalSum.dot(x) * x;
+  if (z.norm() <= kMergeTol) z = x.unitOrthogonal();
+  z.normalize();
+  Part part;
+  part.scope.axes.col(0) = x;
+  part.scope.axes.col(1) = z.cross(x);
+  part.scope.axes.col(2) = z;
+  part.scope.P = e.a;
+  part.scope.S = Vec3((e.b - e.a).norm(), 0.0, 0.0);
+  part.geom = GeomRef{GeomKind::Edge, 0, 0};
+  return part;
+}
+
+// CityEngine's comp(v): each vertex once, in the order the faces first reach it; its
+// scope has no size, its origin at the vertex, z the mean of the normals of the faces
+// around it and x along the first edge that leaves it (made orthogonal to z), y = z x x.
+std::vector<Part> vertexParts(const std::vector<WorldFace>& faces, double tol) {
+  struct Vertex {
+    Vec3 p, out, normalSum = Vec3::Zero();
+  };
+  std::vector<Vertex> vertices;
+  for (const WorldFace& f : faces) {
+    const std::size_t n = f.pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3& p = f.pts[i];
+      auto it = std::find_if(vertices.begin(), vertices.end(),
+                             [&](const Vertex& v) { return (v.p - p).norm() <= tol; });
+      if (it == vertices.end()) {
+        // Its first edge: to the next corner of this face that is not the same point.
+        Vec3 out = Vec3::Zero();
+        for (std::size_t k = 1; k < n && out.norm() <= tol; ++k) out = f.pts[(i + k) % n] - p;
+        it = vertices.insert(vertices.end(), Vertex{p, out});
+      }
+      it->normalSum += f.normal;
+    }
+  }
+  std::vector<Part> out;
+  for (const Vertex& v : vertices) {
+    Vec3 z = v.normalSum.norm() > kMergeTol ? v.normalSum.normalized() : Vec3(0.0, 1.0, 0.0);
+    Vec3 x = v.out - v.out.dot(z) * z;
+    x = x.norm() > kMergeTol ? x.normalized() : z.unitOrthogonal();
+    Part part;
+    part.scope.axes.col(0) = x;
+    part.scope.axes.col(1) = z.cross(x);
+    part.scope.axes.col(2) = z;
+    part.scope.P = v.p;
+    part.scope.S = Vec3::Zero();
+    part.geom = GeomRef{GeomKind::Edge, 0, 0};
+    out.push_back(part);
+  }
+  return out;
+}
+
 // The edge's roof class (EdgeClass) with `up` the roof's up and ha, hb its ends' heights.
 unsigned roofEdgeClass(const WorldEdge& e, const std::vector<WorldFace>& faces, const Vec3& up, double ha, double hb,
                        double hmin, double tol) {
@@ -281,7 +350,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   if (!parseSelector(selector, sel)) {
     error = "Comp: unknown selector \"" + selector +
             "\" (expected faces, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges, "
-            "sideedges, topedges, bottomedges, eaves, ridges, rakes, hips or valleys)";
+            "sideedges, topedges, bottomedges, eaves, ridges, rakes, hips, valleys, e or v)";
     return false;
   }
   if (geom.kind == GeomKind::Edge) {
@@ -289,6 +358,15 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
     return false;
   }
   const std::vector<WorldFace> faces = worldFaces(scope, geom, arena);
+  const double tol = kMergeTol * (1.0 + scope.S.norm());
+  if (sel.vertices) {
+    out = vertexParts(faces, tol);
+    return true;
+  }
+  if (sel.cityEngineAxes) {
+    for (const WorldEdge& e : uniqueEdges(faces, tol)) out.push_back(cityEngineEdgePart(e));
+    return true;
+  }
 
   if (!sel.edges) {
     GeomRef unitSquare{GeomKind::Polygon, 0, 0};
@@ -300,7 +378,6 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
     return true;
   }
 
-  const double tol = kMergeTol * (1.0 + scope.S.norm());
   double hmin = std::numeric_limits<double>::infinity(), hmax = -hmin;
   for (const WorldFace& f : faces)
     for (const Vec3& p : f.pts) {
