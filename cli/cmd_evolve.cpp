@@ -3,15 +3,20 @@
 // progress line while it runs, on a terminal), prints the best L-system, and can write
 // it with its history as JSON (--json) and draw its pattern (--preview). With --lsystem
 // it skips the search and measures and draws the L-system given (the paper's Figs. 2-3).
-// See docs/evolve.md.
+// With --surface it lays the pattern on a mesh through the inverse poly-cube map (§5),
+// leaving out cells stretched beyond --max-stretch (§6.4), and --stats prints the
+// ornament's figures, the cells' stretch among them. See docs/evolve.md.
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "runtime/evolve/genetic.h"
 #include "runtime/evolve/pattern_picture.h"
+#include "runtime/evolve/polycube_map.h"
+#include "runtime/evolve/surface_ornament.h"
 #include "runtime/io/atomic_file.h"
 #include "runtime/io/png_encode.h"
 #include "runtime/io/read_input.h"
+#include "runtime/surface/load_surface.h"
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -33,11 +38,15 @@ const char* kUsage =
     "                   [--population N] [--max-generations N] [--threshold F] [--parents N]\n"
     "                   [--elite N] [--crossover P] [--mutation P] [--weights a,b,c[,d]]\n"
     "                   [--max-seconds S] [--lsystem '{...}'] [--json out.json]\n"
-    "                   [--preview out.png] [--cell-pixels N] [-q]\n";
+    "                   [--preview out.png] [--cell-pixels N] [-q]\n"
+    "                   [--surface MESH [--resolution N] [--max-stretch R] [--stats]]\n";
 
 struct EvolveCommandOptions {
-  std::string tiles, json, preview, lsystem;
+  std::string tiles, json, preview, lsystem, surface;
   ev::EvolveOptions ga;
+  int resolution = 8;                         // polycube cells along the surface's largest extent
+  double maxStretch = ev::kDefaultMaxStretch;  // 0: no limit
+  bool stats = false;
   double maxSeconds = 0;  // 0: no limit
   int cellPixels = 32;
   bool quiet = false;
@@ -105,7 +114,18 @@ EvolveCommandOptions parseOptions(const Args& args) {
   cl.text("--preview", o.preview);
   cl.whole("--cell-pixels", o.cellPixels, 4, 1024);
   cl.flag("-q,--quiet", o.quiet);
+  cl.text("--surface", o.surface);
+  cl.whole("--resolution", o.resolution, 1, ev::kMaxPolycubeResolution);
+  cl.option("--max-stretch", [&](const std::string& v) {
+    o.maxStretch = CommandLine::parseNumber("--max-stretch", v);
+    if (!(o.maxStretch == 0 || (o.maxStretch >= 1 && std::isfinite(o.maxStretch))))
+      throw UsageError{"--max-stretch expects a ratio of at least 1 (longest to shortest side of a cell), or 0 for "
+                       "no limit, got '" + v + "'"};
+  });
+  cl.flag("--stats", o.stats);
   cl.parse(args);
+  if (o.surface.empty() && o.stats)
+    throw UsageError{"--stats reports the ornament on a surface: give --surface MESH"};
   if (o.tiles.empty()) throw UsageError{"no tile file given (docs/evolve.md describes the format)"};
   if (!o.preview.empty() && lowerExtension(o.preview) != ".png")
     throw UsageError{"--preview " + o.preview + ": previews are PNG files (name it .png)"};
@@ -155,6 +175,37 @@ bool writeFile(const std::string& path, const std::string& bytes) {
   if (rt::io::writeFileAtomically(path, bytes, error)) return true;
   std::cerr << "fgsg evolve: cannot write '" << path << "': " << error << "\n";
   return false;
+}
+
+// --surface: the pattern on the mesh (no height limit: the stretch is in the surface's
+// plane), its figures on stdout with --stats and a counted warning for the cells left out.
+int ornamentSurface(const EvolveCommandOptions& opt, const ev::TileSet& tiles, const ev::LSystem2D& best) {
+  rt::surface::SurfaceMesh mesh;
+  std::string error;
+  if (!rt::surface::loadSurface(opt.surface, mesh, error)) {
+    std::cerr << "fgsg evolve: --surface " << error << "\n";
+    return 1;
+  }
+  ev::SurfaceOrnamentStats stats;
+  try {
+    const ev::PolycubeMap map(mesh, ev::PolycubeOptions{0, opt.resolution});
+    ev::surfaceOrnament(tiles, ev::expand(best, opt.ga.generation, opt.ga.maxCells), map, {}, {}, &stats,
+                        opt.maxStretch);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "fgsg evolve: --surface " << opt.surface << ": " << e.what() << "\n";
+    return 1;
+  }
+  if (stats.stretchedCells)
+    std::cerr << "fgsg evolve: warning: " << stats.stretchedCells << " of " << stats.cells
+              << " cells were left out, stretched beyond --max-stretch " << opt.maxStretch << " (at most "
+              << stats.stretch.max << ")\n";
+  if (opt.stats)
+    std::printf("surface.facelets %zu\nsurface.cells %zu\nsurface.triangles %zu\nsurface.dropped_triangles %zu\n"
+                "stretch.median %.6f\nstretch.p95 %.6f\nstretch.max %.6f\nstretch.limit %.6f\n"
+                "stretch.left_out_cells %zu\nstretch.emitted_max %.6f\n",
+                stats.facelets, stats.cells, stats.triangles, stats.droppedTriangles, stats.stretch.median,
+                stats.stretch.p95, stats.stretch.max, opt.maxStretch, stats.stretchedCells, stats.emittedStretch.max);
+  return 0;
 }
 
 }  // namespace
@@ -293,6 +344,7 @@ int evolveCommand(const Args& args) {
     if (!opt.quiet) std::printf("wrote %s (%dx%d, %d cells a side)\n", opt.preview.c_str(), pic.width, pic.height,
                                 pattern.side);
   }
+  if (!opt.surface.empty()) return ornamentSurface(opt, tiles, best);
   return 0;
 }
 

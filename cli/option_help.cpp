@@ -115,7 +115,13 @@ const char* const kEvolve =
     "  --json FILE        write the result, its terms and the history as JSON\n"
     "  --preview FILE     draw the measured pattern as PNG\n"
     "  --cell-pixels N    pixels per cell in the preview (4 to 1024, default 32)\n"
-    "  -q, --quiet        print only the L-system\n";
+    "  -q, --quiet        print only the L-system\n"
+    "  --surface MESH     lay the pattern on this mesh through a polycube (section 5)\n"
+    "  --resolution N     polycube cells along the mesh's largest extent (1 to 256, default 8)\n"
+    "  --max-stretch R    leave out cells whose longest mapped side is over R times their\n"
+    "                     shortest, with a counted warning (R >= 1, 0 for no limit, default 4)\n"
+    "  --stats            print the surface ornament's figures (cells, triangles, stretch\n"
+    "                     median, p95, max) as `name value` lines\n";
 
 const char* const kField =
     "  -o, --output FILE  the sketch: surface, streamlines and singularities (.glb, .obj, .ply)\n"
