@@ -132,6 +132,13 @@ RunOptions parseRunOptions(const Args& args) {
   return o;
 }
 
+// Seconds as a person writes them: "120", "38.4".
+std::string secondsText(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", s == std::floor(s) ? 0 : 1, s);
+  return buf;
+}
+
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -242,8 +249,9 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     if (assembled < result.instances.instances.size()) {
       rt::DeriveResult cut;
       cut.messages.push_back({false, "R004", 0, 0,
-                              "assembly stopped after " + std::to_string(opt.derive.maxSeconds) +
-                                  " s (--max-seconds): the first " + std::to_string(assembled) + " of " +
+                              "assembly stopped after " + secondsText(deriveSeconds + since(t0)) +
+                                  " s (--max-seconds " + secondsText(opt.derive.maxSeconds) +
+                                  " keeps time to write what it holds): the first " + std::to_string(assembled) + " of " +
                                   std::to_string(result.instances.instances.size()) +
                                   " instances are written"});
       progress.clear();

@@ -708,7 +708,7 @@ SynthesisResult synthesize(const Example& ex, const SynthesisOptions& options) n
     for (int64_t c = 0; c < options.size.count(); ++c) {
       if (P.timeUp()) {
         R.failure.kind = SynthesisFailure::kTimeLimit;
-        R.failure.message = "time limit reached while setting up the grid";
+        R.failure.message = "time limit (" + std::to_string(P.o.timeLimitSeconds) + " s) reached while setting up the grid";
         return R;
       }
       if (firstBit(P.base(c), P.W) < 0) {
