@@ -1,12 +1,14 @@
 // Parsing drives ANTLR one statement at a time: lex (frontend/lex.cpp), then for each
 // statement parse `statement`, build its AST (frontend/ast_builder.cpp), and on a syntax
-// error skip to the statement's ';' so the next statement is read cleanly.
+// error skip to the statement's ';' so the next statement is read cleanly. Each statement
+// is parsed in two stages (frontend/two_stage_parse.h): the errors come from the second.
 #include "frontend/parse.h"
 
 #include "frontend/ast_builder.h"
 #include "frontend/cga/cga_parse.h"
 #include "frontend/lex.h"
 #include "frontend/syntax_errors.h"
+#include "frontend/two_stage_parse.h"
 
 #include "FgsgParser.h"
 
@@ -125,6 +127,8 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
   antlr4::CommonTokenStream tokens(&source);
   tokens.fill();
 
+  FgsgParser firstStage(&tokens);
+  makeFirstStage(firstStage);
   FgsgParser parser(&tokens);
   parser.removeErrorListeners();  // no console output: everything becomes a diagnostic
   SyntaxErrorListener listener(diags);
@@ -147,14 +151,21 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
       tokens.seek(scan.endAtOrAfter(start));
       continue;
     }
+    builder.setSection(lexed.sectionAt(tokens.LT(1)->getLine()));
     // Each statement is parsed as a start rule: no invoking state, no recovery mode.
-    parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
-    strategy->reset(&parser);
-    try {
-      builder.setSection(lexed.sectionAt(tokens.LT(1)->getLine()));
-      builder.addStatement(parser.statement());
-    } catch (const StatementAbandoned&) {
-      tokens.seek(scan.endAtOrAfter(tokens.index()));
+    firstStage.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
+    firstStage.getErrorHandler()->reset(&firstStage);
+    if (FgsgParser::StatementContext* statement = tryFirstStage([&] { return firstStage.statement(); })) {
+      builder.addStatement(statement);
+    } else {
+      tokens.seek(start);
+      parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
+      strategy->reset(&parser);
+      try {
+        builder.addStatement(parser.statement());
+      } catch (const StatementAbandoned&) {
+        tokens.seek(scan.endAtOrAfter(tokens.index()));
+      }
     }
     if (tokens.index() == start) tokens.consume();  // always make progress
   }

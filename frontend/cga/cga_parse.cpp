@@ -3,6 +3,7 @@
 #include "frontend/cga/cga_parse.h"
 
 #include "frontend/cga/cga_translator.h"
+#include "frontend/two_stage_parse.h"
 
 #include "CgaLexer.h"
 #include "CgaParser.h"
@@ -154,12 +155,19 @@ bool parseCgaText(const std::string& name, const std::string& text, Program& out
   }
   if (lexical > 0) return false;
 
+  // Two stages (frontend/two_stage_parse.h): the second, which reports, only after a syntax error.
+  fgsg_grammar::CgaParser firstStage(&tokens);
+  makeFirstStage(firstStage);
   fgsg_grammar::CgaParser parser(&tokens);
   parser.removeErrorListeners();
   CgaErrorListener listener(diags);
   parser.addErrorListener(&listener);
-  cga::P::CgaFileContext* tree = parser.cgaFile();
-  if (diags.errorCount() != before) return false;
+  cga::P::CgaFileContext* tree = tryFirstStage([&] { return firstStage.cgaFile(); });
+  if (!tree) {
+    tokens.seek(0);
+    tree = parser.cgaFile();
+    if (diags.errorCount() != before) return false;
+  }
   cga::Translator(out, diags, name, startRule).run(tree);
   return diags.errorCount() == before;
 }
