@@ -40,10 +40,6 @@ const CommandInfo kCommands[] = {
     {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
-    // lpfg's and L-Py's G and g: F and f that record no polygon vertex, which fgsg's F and
-    // f do not either (only `.` does).
-    {CommandId::Forward, "G", 0, 1, BodyRule::None, "G(length)", nullptr},
-    {CommandId::Move, "g", 0, 1, BodyRule::None, "g(length)", nullptr},
     {CommandId::Marching, "Marching", 3, 3, BodyRule::AtLeastOne,
      "Marching(length, angle, cond){ Top, Extruded }", nullptr},
     {CommandId::Branch, "Branch", 1, 1, BodyRule::AtLeastOne, "Branch(n){ A, B }", nullptr},

@@ -45,8 +45,7 @@ void Analyzer::collectSymbols() {
     const Rule& r = prog_.rules[i];
     useArity(r.predecessor.name, r.predecessor.params.size(), r.predecessor.range, true);
     symbol(r.predecessor.name, r.predecessor.range).rules.push_back(i);
-    const std::string& head = r.predecessor.name;
-    const bool turtleSymbol = head == "F" || head == "f" || head == "G" || head == "g";
+    const bool turtleSymbol = r.predecessor.name == "F" || r.predecessor.name == "f";
     if (findCommand(r.predecessor.name) && !turtleSymbol)
       diags_.warning("W004", r.predecessor.range,
                      "rules for '" + r.predecessor.name +
@@ -71,7 +70,7 @@ void Analyzer::collectIgnored() {
         continue;
       }
       const bool turtleSymbol = name.size() == 1 && std::string("+-&^\\/|!$%").find(name[0]) != std::string::npos;
-      if (name == "F" || name == "f" || name == "G" || name == "g" || turtleSymbol) continue;
+      if (name == "F" || name == "f" || turtleSymbol) continue;
       diags_.warning("W006", range,
                      "'#ignore' names '" + name + "', which is no symbol of this grammar: nothing is ignored for it");
     }

@@ -18,8 +18,8 @@ std::vector<std::array<float, 3>> defaultTurtleColors() {
 }
 
 int turtleOpNamed(const std::string& name) {
-  if (name == "F" || name == "G") return int(TurtleOp::Forward);  // lpfg's G, g: as F, f
-  if (name == "f" || name == "g") return int(TurtleOp::Move);
+  if (name == "F") return int(TurtleOp::Forward);
+  if (name == "f") return int(TurtleOp::Move);
   if (name == "@Tp") return int(TurtleOp::Tropism);
   if (name == "@Ts") return int(TurtleOp::Elasticity);
   if (name == "@O") return int(TurtleOp::Sphere);

@@ -30,7 +30,7 @@ std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& plac
   const bool leavesOutput = ir::leavesOutputGeometry(m);
   for (size_t s = 0; s < m.symbols.size(); ++s) {
     const ir::Symbol& sym = m.symbols[s];
-    bool ok = !sym.rules.empty() && sym.name != "F" && sym.name != "G";  // F, G draw when no rule applies
+    bool ok = !sym.rules.empty() && sym.name != "F";  // F draws when no rule applies
     for (uint32_t ri : sym.rules) {
       const ir::Rule& r = m.rules[ri];
       if (!choosable(r)) continue;

@@ -187,7 +187,7 @@ void TurtleCommands::bend(rt::Scope& scope, const Tropism& tropism) {
 }
 
 void TurtleCommands::drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {
-  if (sym.name != "F" && sym.name != "G") return;
+  if (sym.name != "F") return;
   State st;
   st.scope = scope;
   st.width = d_.module().turtle.width;

@@ -7,10 +7,7 @@
   from the palette by the index the steps give;
 * `@o(r)`: a disc of radius r centred on the turtle across the heading (PlantGL's turtle
   draws its disc in the plane of L and U): its box's centre, its normal and its size, after
-  a pitch and a roll, from L-Py's turtle;
-* lpfg's / cpfg's `G` and `g` (move drawing / not drawing, recording no polygon vertex,
-  which fgsg's F and f never do): commands, a rewritten G that still draws, and G and g
-  in a sequential derivation: segments from the rewriter here and L-Py's turtle.
+  a pitch and a roll, from L-Py's turtle.
 Interpreter and JIT alike.
     lpfg_symbols.py FGSG REPO_ROOT
 """
@@ -125,47 +122,6 @@ def circle(fgsg, folder, engine):
     print("ok: @o centred on the turtle across its heading, radius given and default (%s)" % engine)
 
 
-def rewrite(axiom, rules, steps):
-    # A parametric D0L rewriter: rules maps a symbol to a function of its arguments.
-    s = axiom
-    for _ in range(steps):
-        s = [m for sym, args in s for m in (rules[sym](*args) if sym in rules else [(sym, args)])]
-    return s
-
-
-def move_g(fgsg, folder, engine):
-    # cpfg's manual: G moves drawing a line, g moves without; neither records a vertex.
-    as_f = lambda s: [({"G": "F", "g": "f"}.get(sym, sym), args) for sym, args in s]
-    text = ('derive parallel 2;\nturtle angle 90 segments "lines";\naxiom: A;\n'
-            "A -> G(2) + g(1) - G(1) A;\n")
-    got = run(fgsg, folder, "move_g", text, engine)
-    s = rewrite([("A", [])], {"A": lambda: [("G", [2.0]), ("+", []), ("g", [1.0]), ("-", []), ("G", [1.0]),
-                                            ("A", [])]}, 2)
-    want = draw(as_f(s), angle=90.0)[0]
-    if len(want) != 4 or len(got) != 4 or unmatched(want, got, 1e-6):
-        fail("G and g (%s): fgsg %s, reference %s" % (engine, got, want))
-    # A G with a rule is a symbol, rewritten at each step, and still draws when the turtle
-    # reads the final string, with its first parameter (as F): 2^3 segments of lengths
-    # 1, 2, 2, 4, ...
-    text = 'derive parallel 3;\nturtle segments "lines";\naxiom: G(1);\nG(l) -> G(l) g(l) G(l * 2);\n'
-    got = run(fgsg, folder, "rewritten_g", text, engine)
-    s = rewrite([("G", [1.0])], {"G": lambda l: [("G", [l]), ("g", [l]), ("G", [l * 2])]}, 3)
-    want = draw(as_f(s))[0]
-    if len(want) != 8 or len(got) != 8 or unmatched(want, got, 1e-6):
-        fail("rewritten G (%s): fgsg %s, reference %s" % (engine, got, want))
-    grammar = os.path.join(folder, "rewritten_g.fgsg")
-    warned = subprocess.run([fgsg, "check", grammar], capture_output=True, text=True)
-    if warned.returncode != 0 or "W004" in warned.stdout + warned.stderr:
-        fail("rules for G are a turtle symbol's, no W004: %s" % (warned.stdout + warned.stderr))
-    # Sequential: G and g act as they are derived, the default angle of 90 degrees.
-    text = 'turtle segments "lines";\nAxiom ~> G(2) g(1) G(1) + G;\n'
-    got = run(fgsg, folder, "sequential_g", text, engine)
-    want = draw(as_f([("G", [2.0]), ("g", [1.0]), ("G", [1.0]), ("+", []), ("G", [])]), angle=90.0)[0]
-    if len(want) != 3 or len(got) != 3 or unmatched(want, got, 1e-6):
-        fail("sequential G and g (%s): fgsg %s, reference %s" % (engine, got, want))
-    print("ok: G and g draw and move as F and f, rewritten G too, sequential too (%s)" % engine)
-
-
 def main():
     fgsg = sys.argv[1]
     with tempfile.TemporaryDirectory() as folder:
@@ -173,7 +129,6 @@ def main():
             wildcards(fgsg, folder, engine)
             colours(fgsg, folder, engine)
             circle(fgsg, folder, engine)
-            move_g(fgsg, folder, engine)
 
 
 main()
