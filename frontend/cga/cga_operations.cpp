@@ -70,9 +70,9 @@ struct Translator::Sequence {
   bool createsShapes = false;
   bool nil = false;
   bool done = false;  // an operation took the rest of the successor as its body
-  std::unique_ptr<Item> pendingInsert;
+  std::unique_ptr<Item> pendingInsert{};
   // setupProjection(0, scope.xy, w, h): the tile size a later texture() uses (null: the scope).
-  ExprPtr tileW, tileH;
+  ExprPtr tileW{}, tileH{};
   const std::vector<P::OperationContext*>* ops = nullptr;
   size_t index = 0;
   bool topLevel = true;
