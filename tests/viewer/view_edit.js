@@ -104,19 +104,21 @@ async function main() {
     page.on('pageerror', (e) => console.error('page error: ' + e.message));
     await page.goto(url);
     const get = (f) => page.evaluate(f);
-    const models = (n) => page.waitForFunction((k) => window.fgsgViewer.models >= k, n, { timeout: 60000 });
+    // Waits sized for a loaded 2-core machine or a sanitized build: regrowing the 369 K-triangle
+    // ivy once took longer than 60 s there (the test's own limit is 300 s).
+    const models = (n) => page.waitForFunction((k) => window.fgsgViewer.models >= k, n, { timeout: 150000 });
     const nextModel = async (change) => {
       const n = await get(() => window.fgsgViewer.models);
       await change();
       await models(n + 1);
       await page.waitForTimeout(300);  // a second edit's model may follow; take the last
       await page.waitForFunction(() => !document.getElementById('status').className.includes('deriving'), null,
-                                 { timeout: 60000 });
+                                 { timeout: 150000 });
       return get(() => ({ figures: window.fgsgViewer.figures, size: window.fgsgViewer.size,
                           seeds: window.fgsgViewer.seeds }));
     };
     await models(1);
-    await page.waitForFunction(() => window.fgsgViewer.surfaces >= 1, null, { timeout: 60000 });
+    await page.waitForFunction(() => window.fgsgViewer.surfaces >= 1, null, { timeout: 150000 });
     ok(await get(() => window.fgsgViewer.surfaceTriangles) > 100, 'the sphere surface reaches the page');
     const first = await get(() => ({ figures: window.fgsgViewer.figures, size: window.fgsgViewer.size }));
     ok(!fs.existsSync(seedFile), 'no seed file before a seed is placed');
