@@ -187,6 +187,11 @@ void ViewSession::checkFiles() {
   auto now = watchedFiles(data);
   std::lock_guard<std::mutex> lock(mutex_);
   if (now == seen_) return;
+  // Read again under the lock: a file the page's edit wrote after the read above (and
+  // recorded in seen_ by edited()) is no outside change; taking it for one recompiled and
+  // cleared the paint's undo history.
+  now = watchedFiles(dataFiles_);
+  if (now == seen_) return;
   // The seed file edited outside the page: its seeds from now on (a bad one: the last).
   const auto seedFile = [&](const auto& files) {
     const auto it = files.find(options_.seedFile);
