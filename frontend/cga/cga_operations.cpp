@@ -391,55 +391,29 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     push(std::move(item));
     return;
   }
-  if (name == "translate") {
-    // translate(rel|abs, scope|world, x, y, z) (op_translate): rel scope is t(); rel and abs
-    // world are fgsg's Translate. The pivot and object systems (and abs in the scope's own
-    // system) are not here yet.
-    if (!noBody() || !count(5, 5, "5 arguments (rel or abs, scope or world, x, y, z)")) return;
+  if (name == "translate" || name == "rotate") {
+    // translate|rotate(rel|abs, scope|world, x, y, z) (op_translate, op_rotate: about the
+    // scope's origin): rel scope is t() / r(); rel and abs world are fgsg's Translate /
+    // Rotate. The pivot and object systems (and abs in the scope's own system) are not here yet.
+    const bool moves = name == "translate";
+    if (!noBody() || !count(5, 5, moves ? "5 arguments (rel or abs, scope or world, x, y, z)"
+                                        : "5 arguments (rel or abs, scope or world, x, y, z angles)"))
+      return;
     const std::string mode = selectorWord(argCtx[0]), system = selectorWord(argCtx[1]);
     if (mode != "rel" && mode != "abs") {
-      error("E028", rangeOf(argCtx[0]), "translate's mode is rel or abs, not '" + argCtx[0]->getText() + "'");
+      error("E028", rangeOf(argCtx[0]), name + "'s mode is rel or abs, not '" + argCtx[0]->getText() + "'");
       return;
     }
     if (system != "scope" && system != "world" && system != "pivot" && system != "object") {
       error("E028", rangeOf(argCtx[1]),
-            "translate's coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
+            name + "'s coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
       return;
     }
     if (system == "pivot" || system == "object" || (system == "scope" && mode == "abs")) {
-      notSupported(rangeOf(argCtx[1]), "translate(" + mode + ", " + system + ", ...)");
+      notSupported(rangeOf(argCtx[1]), name + "(" + mode + ", " + system + ", ...)");
       return;
     }
-    Item item = command(system == "scope" ? "T" : "Translate", at);
-    if (system == "world") {
-      item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
-      item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
-    }
-    for (size_t k = 2; k < 5; ++k) item.args.push_back(expr(argCtx[k], env));
-    if (!allOk(item.args)) return;
-    push(std::move(item));
-    return;
-  }
-  if (name == "rotate") {
-    // rotate(rel|abs, scope|world, x, y, z) (op_rotate: about the scope's origin): rel scope
-    // is r(); rel and abs world are fgsg's Rotate. The pivot and object systems (and abs in
-    // the scope's own system) are not here yet.
-    if (!noBody() || !count(5, 5, "5 arguments (rel or abs, scope or world, x, y, z angles)")) return;
-    const std::string mode = selectorWord(argCtx[0]), system = selectorWord(argCtx[1]);
-    if (mode != "rel" && mode != "abs") {
-      error("E028", rangeOf(argCtx[0]), "rotate's mode is rel or abs, not '" + argCtx[0]->getText() + "'");
-      return;
-    }
-    if (system != "scope" && system != "world" && system != "pivot" && system != "object") {
-      error("E028", rangeOf(argCtx[1]),
-            "rotate's coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
-      return;
-    }
-    if (system == "pivot" || system == "object" || (system == "scope" && mode == "abs")) {
-      notSupported(rangeOf(argCtx[1]), "rotate(" + mode + ", " + system + ", ...)");
-      return;
-    }
-    Item item = command(system == "scope" ? "R" : "Rotate", at);
+    Item item = command(system == "scope" ? (moves ? "T" : "R") : (moves ? "Translate" : "Rotate"), at);
     if (system == "world") {
       item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
       item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
