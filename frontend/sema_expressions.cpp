@@ -246,12 +246,15 @@ ValueType Analyzer::typeOfLotQuery(const Expr& e, bool report) {
   size_t k = 0;
   while (k < res_.attrs.size() && res_.attrs[k].name != name) ++k;
   if (k == res_.attrs.size()) {
-    res_.attrs.push_back({name, value, e.range});
+    res_.attrs.push_back({name, value, e.range, {}});
   } else if (res_.attrs[k].value.type != value.type || (value.type != ValueType::Num && value.type != ValueType::Bool
                                                          ? res_.attrs[k].value.str != value.str
                                                          : res_.attrs[k].value.num != value.num)) {
-    return fail("'" + name.substr(4) + "' has another default at line " +
-                std::to_string(res_.attrs[k].range.begin.line) + ": give a lot property one default");
+    std::string message = "'";  // appended, not "'" + ...: GCC 12 gives a false -Wrestrict on the prepend
+    message += name.substr(4);
+    message += "' has another default at line " + std::to_string(res_.attrs[k].range.begin.line) +
+               ": give a lot property one default";
+    return fail(message);
   }
   if (report) res_.names[&e] = NameRef{NameRef::Attr, k, {}};
   return record(e, value.type, report);

@@ -23,8 +23,8 @@ const Type B = Type::Bool;
 struct Harness {
   Module m;
   Harness() {
-    m.symbols.push_back({"A", {N, Type::Vec3, B}, 5, {0}});
-    m.attrs.push_back({"height", N, Expr::number(12)});
+    m.symbols.push_back({"A", {N, Type::Vec3, B}, 5, {0}, {}, {}});
+    m.attrs.push_back({"height", N, Expr::number(12), {}});
     Rule r;
     r.symbol = 0;
     r.label = "A#1";
