@@ -137,7 +137,7 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
   const uint32_t outerCreator = creatorRule_, outerDepth = placingDepth_;
   creatorRule_ = chosenRule_;
   placingDepth_ = depth;
-  State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line, &at.scope};
+  State st{at.scope, at.geom, m_.turtle.width, stack_.size(), at.line, &at.scope, {}};
   Exec ex{&rng, key, depth + 1, symbol, params.data(), 0};
   f.scope = &st.scope;
   f.geom = &st.geom;
@@ -172,7 +172,7 @@ void Derivation::execRoot(uint32_t block, const ir::Block& ops, const rt::Scope&
                           uint64_t key, uint32_t depth, uint32_t index, const double* params,
                           uint32_t symbol, rt::RandomStream* rng, rt::LineCursor line) {
   rt::RandomStream own{key, 0};
-  State st{scope, geom, m_.turtle.width, stack_.size(), line, &scope};
+  State st{scope, geom, m_.turtle.width, stack_.size(), line, &scope, {}};
   Exec ex{rng ? rng : &own, key, depth, symbol, params, 0};
   const bool depthFirst = m_.mode == ir::DeriveMode::DepthFirst;
   if (depthFirst) {
@@ -262,7 +262,7 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
                          const State& outer, Exec& ex, Frame& f, const rt::Scope::Place* place) {
-  State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope};
+  State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope, {}};
   // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour and
   // the split and comp indices (those of this split, when it is one).
   inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;

@@ -458,7 +458,7 @@ TEST_CASE("a deep grammar derives on a host thread with a 256 KiB stack, as on t
     if (t) run->transforms.assign(t, t + 16 * run->instances);
     fgsg_generator_free(g);
   };
-  Run small{program}, main{program};
+  Run small{program, -1, 0, {}}, main{program, -1, 0, {}};
   onSmallStack(256 << 10, derive, &small);
   derive(&main);
   CHECK(small.status == 0);

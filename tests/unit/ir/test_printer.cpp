@@ -137,7 +137,7 @@ TEST_CASE("printer: calls, queries, vectors, constants", "[ir][printer]") {
   m.environment.push_back({"surface", "", "bunny.off", {}});
   m.environment.push_back({"field", "F1", "tensor(\"foot.tfield\")", {}});
   m.environment.push_back({"texture", "mask", "paint.png", {}});
-  m.attrs.push_back({"height", Type::Num, Expr::number(12)});
+  m.attrs.push_back({"height", Type::Num, Expr::number(12), {}});
   const Rule r = abcRule();
   auto p = [&](const Expr& e) { return printExpr(m, &r, e); };
 
@@ -196,7 +196,7 @@ TEST_CASE("printer: header fields and remaining ops", "[ir][printer]") {
   m.environment.push_back({"surface", "", "bunny.off", {}});
   m.internAsset("wall.obj");
   const uint32_t side = m.internString("sidefaces");
-  m.symbols.push_back({"F", {Type::Num}, 1, {}});
+  m.symbols.push_back({"F", {Type::Num}, 1, {}, {}, {}});
 
   Op turtle;
   turtle.kind = OpKind::Turtle;
@@ -255,8 +255,8 @@ axiom
 
 TEST_CASE("printer: context rules", "[ir][printer]") {
   Module m;
-  m.symbols.push_back({"A", {Type::Num}, 1, {0}});
-  m.symbols.push_back({"B", {Type::Num}, 1, {}});
+  m.symbols.push_back({"A", {Type::Num}, 1, {0}, {}, {}});
+  m.symbols.push_back({"B", {Type::Num}, 1, {}, {}, {}});
   Rule r;
   r.symbol = 0;
   r.label = "p1";
