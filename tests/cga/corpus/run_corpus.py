@@ -11,6 +11,7 @@ Exits 1 when any file fails; prints one line per file (PASS / FAIL with the reas
 
 NAME.expect.json (every key optional but "lots"):
   "lots":      the --lots file, relative to the corpus folder
+  "rule":      the rule file, relative to the corpus folder (default NAME.cga beside it)
   "args":      more fgsg run arguments (["--start-rule", "Street"])
   "count":     {symbol: number of leaf instances placed under it}  (0: none)
   "total":     number of instances in all
@@ -24,6 +25,8 @@ NAME.expect.json (every key optional but "lots"):
   "reports":   {"all": {key: {stat: value}}, "starts": [{key: {stat: value}}, ...]}
                stats as --report writes them: values, count, sum, average, min, max, nnz, strings
   "stderr":    [text, ...]  lines that stderr must contain (print)
+  "uv":        {image file name: [[u0, v0], [u1, v1]]}  the range of the texture coordinates
+               of the faces that use that image (the mesh is then written as OBJ + .mtl)
   "tolerance": absolute tolerance for numbers (default 1e-4)
 World axes: x east, y up, z south (north is -z), as fgsg places --lots lots.
 """
@@ -159,16 +162,48 @@ def check(expect, instances_doc, reports_doc, stderr, problems):
             problems.append("stderr lacks %r" % text)
 
 
+def uv_ranges(obj_path):
+    """{image file name: [[u0, v0], [u1, v1]]} over the faces of an OBJ that use it (map_Kd)."""
+    images, image = {}, None
+    with open(obj_path[:-4] + ".mtl", encoding="utf-8") as f:
+        for line in f:
+            words = line.split()
+            if words[:1] == ["newmtl"]:
+                image = words[1]
+            elif words[:1] == ["map_Kd"]:
+                images[image] = os.path.basename(words[-1])
+    uvs, ranges, image = [], {}, None
+    with open(obj_path, encoding="utf-8") as f:
+        for line in f:
+            words = line.split()
+            if words[:1] == ["vt"]:
+                uvs.append([float(words[1]), float(words[2])])
+            elif words[:1] == ["usemtl"]:
+                image = images.get(words[1])
+            elif words[:1] == ["f"] and image:
+                for corner in words[1:]:
+                    parts = corner.split("/")
+                    if len(parts) > 1 and parts[1]:
+                        u, v = uvs[int(parts[1]) - 1]
+                        lo, hi = ranges.setdefault(image, [[u, v], [u, v]])
+                        lo[:] = [min(lo[0], u), min(lo[1], v)]
+                        hi[:] = [max(hi[0], u), max(hi[1], v)]
+    return ranges
+
+
 def run_one(fgsg, folder, name, work):
     cga = os.path.join(folder, name + ".cga")
     if not os.path.exists(cga) and os.path.exists(os.path.join(folder, name + ".fgsg")):
         cga = os.path.join(folder, name + ".fgsg")  # the same checks for fgsg's dialect
     with open(os.path.join(folder, name + ".expect.json"), encoding="utf-8") as f:
         expect = json.load(f)
+    if "rule" in expect:  # a rule file kept elsewhere (the tutorials in examples/)
+        cga = os.path.join(folder, expect["rule"])
     outputs, problems = {}, []
     for engine in ("interp", "jit"):
         inst, rep = os.path.join(work, name + "." + engine + ".json"), os.path.join(work, name + "." + engine + ".report.json")
-        cmd = [fgsg, "run", cga, "--engine=" + engine, "-o", os.path.join(work, name + ".glb"),
+        mesh = os.path.join(work, name + "." + engine + (".obj" if "uv" in expect else ".glb"))
+        cmd = [fgsg, "run", cga, "--engine=" + engine, "-o", mesh,
                "--instances", inst, "--report", rep, "--stats"]
         if "lots" in expect:
             cmd += ["--lots", os.path.join(folder, expect["lots"])]
@@ -188,6 +223,11 @@ def run_one(fgsg, folder, name, work):
         outputs[engine] = (inst_text, rep_text)
         engine_problems = []
         check(expect, json.loads(inst_text), json.loads(rep_text), run.stderr, engine_problems)
+        if "uv" in expect:
+            have = uv_ranges(mesh)
+            for image, want in expect["uv"].items():
+                if not close(have.get(image), want, expect.get("tolerance", 1e-4)):
+                    engine_problems.append("uv %s: %s, expected %s" % (image, have.get(image), want))
         problems += ["%s: %s" % (engine, p) for p in engine_problems]
     if outputs["interp"][0] != outputs["jit"][0]:
         problems.append("the engines' instances differ")
