@@ -25,6 +25,7 @@ TUTORIALS = {
     "07": [T + "/07_floor_area_report.cga", "--lots", L + "/block.geojson"],
     "08": [T + "/08_attributes_import.cga", "--set", "floors=4", "--set", "roof_style=hip"],
     "09": [T + "/09_materials_textures.cga", "--lots", L + "/lot20x12.geojson"],
+    "10": [T + "/10_mass_modeling.cga", "--lots", L + "/mass_lots.geojson", "--camera", "azimuth=300,elevation=40"],
 }
 SIZE = (480, 360)
 
