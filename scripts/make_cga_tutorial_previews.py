@@ -27,6 +27,7 @@ TUTORIALS = {
     "09": [T + "/09_materials_textures.cga", "--lots", L + "/lot20x12.geojson"],
     "10": [T + "/10_mass_modeling.cga", "--lots", L + "/mass_lots.geojson", "--camera", "azimuth=300,elevation=40"],
     "11": [T + "/11_street.cga", "--lots", L + "/street40x12.geojson"],
+    "12": [T + "/12_zoning.cga", "--lots", L + "/block.geojson"],
 }
 SIZE = (480, 360)
 
