@@ -28,6 +28,7 @@ TUTORIALS = {
     "10": [T + "/10_mass_modeling.cga", "--lots", L + "/mass_lots.geojson", "--camera", "azimuth=300,elevation=40"],
     "11": [T + "/11_street.cga", "--lots", L + "/street40x12.geojson"],
     "12": [T + "/12_zoning.cga", "--lots", L + "/block.geojson"],
+    "13": [T + "/13_courtyard.cga", "--lots", L + "/block30x24.geojson"],
 }
 SIZE = (480, 360)
 
