@@ -1,71 +1,36 @@
 #include "cli/view_scene.h"
 
-#include "runtime/assemble.h"
-#include "runtime/io/write_mesh.h"
-
-#include <Eigen/Dense>
-
-#include <algorithm>
-#include <map>
+#include "backend/scene_starts.h"
+#include "runtime/output/gltf_writer.h"
+#include "runtime/output/scene.h"
 
 namespace fgsg::cli {
 
-namespace {
-
-// Rigid: drawn as its asset's mesh under its transform, nothing more. The others need
-// the assembler (bent along a curve, own geometry, a texture).
-bool rigid(const rt::Instance& inst) {
-  return inst.curve == UINT32_MAX && inst.geometry == UINT32_MAX && inst.texture == UINT32_MAX;
-}
-
-// A flattened axis (a quad's zero thickness) would make the shader's normal transform
-// divide by zero: it becomes a sliver along the normal of the other two instead.
-void packMatrix(const std::array<double, 16>& t, float* out) {
-  Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix4d>(t.data());
-  Eigen::Matrix3d a = m.block<3, 3>(0, 0);
-  const double largest = std::max({a.col(0).norm(), a.col(1).norm(), a.col(2).norm()});
-  if (largest > 0)
-    for (int k = 0; k < 3; ++k) {
-      if (a.col(k).norm() > 1e-6 * largest) continue;
-      const Eigen::Vector3d n = a.col((k + 1) % 3).cross(a.col((k + 2) % 3));
-      const double len = n.norm();
-      a.col(k) = len > 0 ? Eigen::Vector3d(n / len * 1e-4 * largest) : Eigen::Vector3d::Zero();
-    }
-  m.block<3, 3>(0, 0) = a;
-  for (int i = 0; i < 16; ++i) out[i] = static_cast<float>(m.data()[i]);
-}
-
-}  // namespace
-
-bool buildViewScene(const rt::InstanceList& list, const rt::AssetLibrary& assets, const std::vector<int>& meshOf,
-                    ViewScene& out, std::string& error) {
+bool buildViewScene(const ir::Module& module, const rt::DeriveOptions& options, const rt::DeriveResult& result,
+                    const rt::AssetLibrary& assets, const std::vector<int>& meshOf, ViewScene& out, std::string& error) {
   out = ViewScene{};
-  rt::InstanceList rest = list;
-  rest.instances.clear();
-  std::map<uint32_t, size_t> groupOf;  // asset -> index in out.groups
-  for (size_t i = 0; i < list.instances.size(); ++i) {
-    const rt::Instance& inst = list.instances[i];
-    if (!rigid(inst)) {
-      rest.instances.push_back(inst);
-      continue;
+  rt::output::SceneInput in;
+  in.list = &result.instances;
+  in.library = &assets;
+  in.meshOf = &meshOf;
+  in.groupBy = rt::output::GroupBy::Symbol;
+  in.instancing = rt::output::Instancing::Auto;
+  in.starts = backend::sceneStarts(module, options, result);
+  const rt::output::Scene scene = rt::output::buildScene(in);
+  for (const rt::output::StartNode& s : scene.starts)
+    for (const rt::output::GroupNode& g : s.groups) {
+      for (const rt::output::BakedPart& p : g.baked) out.triangles += p.mesh.triangleCount();
+      for (const auto* parts : {&g.instanced, &g.mirrored})
+        for (const rt::output::InstancedPart& p : *parts)
+          out.triangles += scene.meshes[p.mesh].mesh->triangleCount() * p.instances.size();
     }
-    auto [it, fresh] = groupOf.try_emplace(inst.asset, out.groups.size());
-    if (fresh) {
-      InstanceGroup g;
-      g.asset = list.assets[inst.asset];
-      if (!rt::io::encodeMesh(assets.mesh(meshOf[inst.asset]), ".glb", g.meshGlb, error)) return false;
-      out.groups.push_back(std::move(g));
-    }
-    InstanceGroup& g = out.groups[it->second];
-    g.matrices.resize(g.matrices.size() + 16);
-    packMatrix(inst.transform, g.matrices.data() + g.matrices.size() - 16);
-    g.colours.insert(g.colours.end(), inst.color.begin(), inst.color.end());
-    g.ids.push_back(static_cast<uint32_t>(i));
-    out.triangles += assets.mesh(meshOf[inst.asset]).triangleCount();
+  std::vector<rt::output::PlacedNode> placed;
+  if (!rt::output::encodeGltf(scene, true, out.glb, error, &placed)) return false;
+  for (const rt::output::PlacedNode& p : placed) {
+    out.placing.emplace_back(p.node, static_cast<uint32_t>(p.count));
+    out.ids.insert(out.ids.end(), p.instances, p.instances + p.count);
   }
-  const rt::Mesh mesh = rt::assembleInstances(rest, assets, meshOf);
-  out.triangles += mesh.triangleCount();
-  return rt::io::encodeMesh(mesh, ".glb", out.restGlb, error);
+  return true;
 }
 
 }  // namespace fgsg::cli

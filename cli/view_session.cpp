@@ -405,24 +405,20 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   std::string error;
   if (!rt::resolveAssets(result.instances, assets, meshOf, error)) return fail(options_.file + ": " + error);
   ViewScene scene;
-  if (!buildViewScene(result.instances, assets, meshOf, scene, error)) return fail(options_.file + ": " + error);
+  if (!buildViewScene(compiled_->module, derive, result, assets, meshOf, scene, error))
+    return fail(options_.file + ": " + error);
 
-  // The header lists the binary messages that follow: the assembled rest, then for each
-  // group of instances its asset's mesh, their matrices, colours and instance numbers.
+  // The header says what the binary messages that follow hold: the scene as .glb, then
+  // the instance numbers of its placing nodes, "placing" giving each node and its count.
   Json figures = Json::object();
   for (const auto& [name, value] : deriveStatFigures(result.stats, scene.triangles)) figures[name] = value;
-  Json groups = Json::array();
-  std::vector<std::string> parts = {std::move(scene.restGlb)};
-  for (InstanceGroup& g : scene.groups) {
-    groups.push_back({{"asset", g.asset}, {"count", g.ids.size()}});
-    parts.push_back(std::move(g.meshGlb));
-    parts.emplace_back(reinterpret_cast<const char*>(g.matrices.data()), g.matrices.size() * sizeof(float));
-    parts.emplace_back(reinterpret_cast<const char*>(g.colours.data()), g.colours.size() * sizeof(float));
-    parts.emplace_back(reinterpret_cast<const char*>(g.ids.data()), g.ids.size() * sizeof(uint32_t));
-  }
+  Json placing = Json::array();
+  for (const auto& [node, count] : scene.placing) placing.push_back({node, count});
+  std::vector<std::string> parts = {std::move(scene.glb)};
+  parts.emplace_back(reinterpret_cast<const char*>(scene.ids.data()), scene.ids.size() * sizeof(uint32_t));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms},
-                                  {"seed", seed}, {"groups", groups}}.dump();
+                                  {"seed", seed}, {"placing", placing}}.dump();
   d->modelJson = header;
   d->parts = std::move(parts);
   d->instances = std::move(result.instances);

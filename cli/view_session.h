@@ -7,10 +7,10 @@
 // pages keep their last good model. Messages (docs/cli.md):
 //   to the page:   {"type":"info", "file", "attrs":[{name, type, default, value}], "seed"}
 //                  {"type":"progress", "state":"deriving"}
-//                  {"type":"model", "figures":{...}, "milliseconds", "groups":[{asset, count}]},
-//                   then binary: the rest of the model as .glb, and per group its asset's
-//                   .glb, its matrices and colours (Float32) and its instances' numbers
-//                   (Uint32) in the derivation (view_scene.h)
+//                  {"type":"model", "figures":{...}, "milliseconds", "placing":[[node, count], ...]},
+//                   then binary: the scene as .glb (as fgsg run -o FILE.glb writes it),
+//                   and the instance numbers (Uint32) in the derivation that its placing
+//                   nodes hold, node after node (view_scene.h)
 //                  {"type":"picked", "instance", "symbol", "asset", "params", "colour", "centre"}
 //                  {"type":"error", "diagnostics":"file:line:col: error[...] ...\n  line\n  ^"}
 //                  {"type":"rejected", "reason"}: a message of the page's that changed nothing

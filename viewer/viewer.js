@@ -87,38 +87,48 @@ async function geometryOf(buffer) {
   return geometry;
 }
 
-// The model from its parts (cli/view_session.h): the assembled rest, then per group of
-// instances the asset's mesh, their matrices, colours and instance numbers, drawn as one
-// InstancedMesh each.
+// The model from its parts (cli/view_session.h): the glTF scene fgsg run writes (a node
+// per start shape and group; GLTFLoader makes each EXT_mesh_gpu_instancing node an
+// InstancedMesh), then the instance numbers its placing nodes hold, which picking sends.
+const placedIds = new WeakMap();  // object -> its instances' numbers in the derivation
+let lastGlb = null;  // the shown model's .glb, for the tests' digest
 async function buildModel(announced, buffers) {
-  const group = new THREE.Group();
-  const rest = await loader.parseAsync(buffers[0], '');
-  group.add(rest.scene);
-  let instanced = 0;
-  for (let g = 0; g < announced.groups.length; ++g) {
-    const [mesh, matrices, colours, ids] = buffers.slice(1 + 4 * g, 5 + 4 * g);
-    const geometry = await geometryOf(mesh);
-    if (!geometry) continue;
-    geometry.deleteAttribute('color');  // the instances' colours instead
-    const count = announced.groups[g].count;
-    const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.8, side: THREE.DoubleSide });
-    const many = new THREE.InstancedMesh(geometry, material, count);
-    many.instanceMatrix.array.set(new Float32Array(matrices));
-    many.instanceColor = new THREE.InstancedBufferAttribute(new Float32Array(colours), 3);
-    many.userData.ids = new Uint32Array(ids);
-    many.userData.asset = announced.groups[g].asset;
-    many.computeBoundingBox();
-    many.computeBoundingSphere();
-    group.add(many);
-    instanced += count;
+  const gltf = await loader.parseAsync(buffers[0], '');
+  const ids = new Uint32Array(buffers[1]);
+  const byNode = new Map();
+  let offset = 0;
+  for (const [node, count] of announced.placing) {
+    byNode.set(node, ids.subarray(offset, offset + count));
+    offset += count;
   }
-  state.instanced = instanced;
-  return group;
+  const instancedMeshes = [];
+  gltf.scene.traverse((o) => {
+    const node = (gltf.parser.associations.get(o) || {}).nodes;
+    if (byNode.has(node)) placedIds.set(o, byNode.get(node));
+    if (o.isInstancedMesh) instancedMeshes.push({ name: o.name, asset: o.userData.asset, count: o.count });
+  });
+  state.instancedMeshes = instancedMeshes;
+  state.instanced = instancedMeshes.reduce((sum, m) => sum + m.count, 0);
+  state.glbBytes = buffers[0].byteLength;
+  lastGlb = buffers[0];
+  return gltf.scene;
+}
+
+// Everything a model holds on the GPU: its geometries, materials and their textures.
+function dispose(object) {
+  object.traverse((o) => {
+    if (o.geometry) o.geometry.dispose();
+    if (o.isInstancedMesh) o.dispose();
+    for (const m of Array.isArray(o.material) ? o.material : o.material ? [o.material] : []) {
+      for (const value of Object.values(m)) if (value && value.isTexture) value.dispose();
+      m.dispose();
+    }
+  });
 }
 
 function showModel(buffer) {
   parts.push(buffer);
-  if (!header || parts.length < 1 + 4 * header.groups.length) return;
+  if (!header || parts.length < 2) return;
   const announced = header, buffers = parts;
   header = null;
   parts = [];
@@ -126,7 +136,7 @@ function showModel(buffer) {
   buildModel(announced, buffers).then((built) => {
     if (model) {
       scene.remove(model);
-      model.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+      dispose(model);
     }
     model = built;
     scene.add(model);
@@ -160,12 +170,17 @@ canvas.addEventListener('pointerup', (e) => {
   const r = canvas.getBoundingClientRect();
   const ndc = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
   raycaster.setFromCamera(ndc, camera);
-  const hit = raycaster.intersectObject(model, true).find((h) => h.instanceId !== undefined);
-  if (!hit) {
-    $('picked').textContent = 'nothing instanced here';
-    return;
+  // The nearest surface that a placing node draws (an instance of an InstancedMesh, a
+  // mirrored instance's mesh or a primitive under its node); baked geometry is no one's.
+  for (const h of raycaster.intersectObject(model, true)) {
+    for (let o = h.object; o; o = o.parent) {
+      const ids = placedIds.get(o);
+      if (!ids) continue;
+      ws.send(JSON.stringify({ type: 'pick', instance: ids[o === h.object && h.instanceId !== undefined ? h.instanceId : 0] }));
+      return;
+    }
   }
-  ws.send(JSON.stringify({ type: 'pick', instance: hit.object.userData.ids[hit.instanceId] }));
+  $('picked').textContent = 'nothing instanced here';
 });
 
 function showPicked(m) {
@@ -250,6 +265,37 @@ state.hooks = {
     });
   },
   send: (message) => sendMessage(message),  // the bench times the server's loop alone
+  // The shown model's InstancedMesh objects (name, asset, instance count), walked now.
+  instancedMeshes() {
+    const out = [];
+    if (model) model.traverse((o) => { if (o.isInstancedMesh) out.push({ name: o.name, asset: o.userData.asset, count: o.count }); });
+    return out;
+  },
+  async glbDigest() {
+    const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', lastGlb));
+    return Array.from(hash, (b) => b.toString(16).padStart(2, '0')).join('');
+  },
+  // An instance of the largest InstancedMesh that is the first thing drawn under its
+  // centre: where it is on the canvas, and the number picking should send for it.
+  visibleInstance() {
+    let largest = null;
+    if (model) model.traverse((o) => { if (o.isInstancedMesh && (!largest || o.count > largest.count)) largest = o; });
+    if (!largest) return null;
+    largest.geometry.computeBoundingBox();
+    const centre = largest.geometry.boundingBox.getCenter(new THREE.Vector3()), m = new THREE.Matrix4();
+    for (let k = 0; k < largest.count; ++k) {
+      largest.getMatrixAt(k, m);
+      const p = centre.clone().applyMatrix4(m).applyMatrix4(largest.matrixWorld);
+      const screen = state.hooks.toScreen(p.toArray());
+      const v = p.clone().project(camera);
+      if (Math.abs(v.x) > 0.9 || Math.abs(v.y) > 0.9) continue;
+      raycaster.setFromCamera(new THREE.Vector2(v.x, v.y), camera);
+      const hit = raycaster.intersectObject(model, true)[0];
+      if (hit && hit.object === largest && hit.instanceId === k)
+        return { screen, instance: placedIds.get(largest)[k], asset: largest.userData.asset };
+    }
+    return null;
+  },
   // A world point's position on the canvas, in CSS pixels from its top left corner.
   toScreen(p) {
     const v = new THREE.Vector3(...p).project(camera);

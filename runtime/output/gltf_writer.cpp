@@ -78,7 +78,7 @@ std::string base64(const std::string& bytes) {
 
 class Writer {
  public:
-  explicit Writer(const Scene& scene) : scene_(scene) {}
+  Writer(const Scene& scene, std::vector<PlacedNode>* placed) : scene_(scene), placed_(placed) {}
 
   bool write(bool binary, std::string& bytes, std::string& error);
 
@@ -120,6 +120,7 @@ class Writer {
   bool verticesFinite(std::string& error) const;
 
   const Scene& scene_;
+  std::vector<PlacedNode>* placed_;  // may be null
   std::string bin_;
   json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(), nodes_ = json::array();
   std::map<uint32_t, json> sharedAttributes_;                  // per shared mesh, its vertex accessors
@@ -282,6 +283,7 @@ int Writer::instancedNode(const InstancedPart& part) {
                     {"mesh", sharedMesh(part.mesh, part.material)},
                     {"extensions", {{kInstancing, {{"attributes", attributes}}}}},
                     {"extras", {{"asset", scene_.meshes[part.mesh].asset}, {"instances", n}}}});
+  if (placed_) placed_->push_back({int(nodes_.size() - 1), part.instances.data(), n});
   return int(nodes_.size() - 1);
 }
 
@@ -293,6 +295,7 @@ int Writer::instanceNode(const InstancedPart& part, size_t k) {
                     {"translation", t.translation},
                     {"rotation", t.rotation},
                     {"scale", t.scale}});
+  if (placed_) placed_->push_back({int(nodes_.size() - 1), part.instances.data() + k, 1});
   return int(nodes_.size() - 1);
 }
 
@@ -483,8 +486,10 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
 
 }  // namespace
 
-bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error) {
-  Writer w(scene);
+bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error,
+                std::vector<PlacedNode>* placed) {
+  if (placed) placed->clear();
+  Writer w(scene, placed);
   return w.write(binary, bytes, error);
 }
 

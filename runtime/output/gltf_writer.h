@@ -10,13 +10,29 @@
 #include "runtime/io/output_transaction.h"
 #include "runtime/output/scene.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace fgsg::rt::output {
 
+// A node of the file that places a shared mesh, and the instances it places (indices
+// into the instance list): an instanced node all of its part's, in the order of its
+// EXT_mesh_gpu_instancing attributes; a mirrored instance's node (or, under
+// Instancing::Nodes, each instance's) one. fgsg view maps a picked object back to the
+// instance that placed it with these.
+struct PlacedNode {
+  int node = 0;                       // index into the file's "nodes"
+  const uint32_t* instances = nullptr;  // into the Scene's InstancedPart::instances
+  size_t count = 0;
+};
+
 // The whole file, binary (.glb) or not (.gltf), into `bytes`. False and a message when an
 // image cannot be embedded or a vertex is not finite, or the GLB would pass 4 GiB.
-bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error);
+// `placed`, when given, receives the nodes that place shared meshes, in the file's order.
+bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error,
+                std::vector<PlacedNode>* placed = nullptr);
 
 // Encodes by the extension of `path` (.glb or .gltf, any case) into a temporary staged in
 // `outputs`.
