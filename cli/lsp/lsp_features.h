@@ -38,6 +38,14 @@ Json rename(const Analysis& analysis, const std::string& text, int line, int cha
 // textDocument/documentSymbol: the document's rules, attrs, consts and fields.
 Json documentSymbols(const Analysis& analysis);
 
+// textDocument/semanticTokens/full and /range: the document's tokens classified (rules and
+// shape symbols, attrs, consts, fields, module aliases, rule parameters, builtin commands,
+// operations and functions, queries, numbers, strings, comments, keywords), LSP's relative
+// encoding with the types and modifiers of semanticTokensLegend(). `range`: null for the
+// whole document, else an LSP Range whose lines are kept.
+Json semanticTokensLegend();
+Json semanticTokens(const Analysis& analysis, const std::string& text, const Json& range);
+
 // textDocument/formatting: the document in `fgsg fmt`'s layout (frontend/format_grammar.h),
 // as one edit of the whole text, or none when it is laid out so already; null with `error`
 // (the first problem, file:line:col) for text it cannot format: a syntax error, a .cga file.

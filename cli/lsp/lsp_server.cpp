@@ -94,7 +94,9 @@ class Server {
                                 {"documentSymbolProvider", true},
                                 {"referencesProvider", true},
                                 {"renameProvider", true},
-                                {"documentFormattingProvider", true}}},
+                                {"documentFormattingProvider", true},
+                                {"semanticTokensProvider",
+                                 Json{{"legend", semanticTokensLegend()}, {"full", true}, {"range", true}}}}},
                           {"serverInfo", Json{{"name", "fgsg"}, {"version", "0.1.0"}}}});
       return;
     }
@@ -107,7 +109,8 @@ class Server {
     const bool positional = method == "textDocument/completion" || method == "textDocument/hover" ||
                             method == "textDocument/definition" || method == "textDocument/references" ||
                             method == "textDocument/rename";
-    if (!positional && method != "textDocument/documentSymbol" && method != "textDocument/formatting")
+    const bool tokens = method == "textDocument/semanticTokens/full" || method == "textDocument/semanticTokens/range";
+    if (!positional && !tokens && method != "textDocument/documentSymbol" && method != "textDocument/formatting")
       return sendError(id, kMethodNotFound, "fgsg lsp: no method " + method);
     const std::string uri = params.at("textDocument").at("uri").get<std::string>();
     if (method == "textDocument/formatting") {  // from the text alone: no analysis needed
@@ -120,6 +123,10 @@ class Server {
     const auto analysis = documents_.analysis(uri);
     if (!analysis) return sendResult(id, nullptr);  // not open: nothing known of it
     if (method == "textDocument/documentSymbol") return sendResult(id, documentSymbols(*analysis));
+    if (tokens) {
+      const Json range = params.contains("range") ? params["range"] : Json();
+      return sendResult(id, semanticTokens(*analysis, *documents_.text(uri), range));
+    }
     const std::string& text = *documents_.text(uri);
     const int line = params.at("position").at("line").get<int>();
     const int character = params.at("position").at("character").get<int>();

@@ -228,6 +228,63 @@ async function main() {
   await assert.rejects(connection.sendRequest('textDocument/formatting', { textDocument: { uri: cgaUri }, options: formatOptions }),
                        (e) => e.code === -32803 && e.message.includes('CityEngine CGA (.cga) is not supported yet'));
 
+  // Semantic tokens (#50) of tests/lsp/inputs/tokens.fgsg and tokens.cga, decoded from LSP's
+  // relative encoding into absolute (line, UTF-16 column, length, type, modifiers); the
+  // expected lists are counted by hand from the files' text (the 🧱 inside a string takes
+  // two UTF-16 units: what follows it on line 5 moves one column further than its code points).
+  const legend = init.capabilities.semanticTokensProvider.legend;
+  assert.strictEqual(init.capabilities.semanticTokensProvider.full, true);
+  const decode = (data) => {
+    const out = [];
+    for (let i = 0, line = 0, col = 0; i < data.length; i += 5) {
+      col = data[i] === 0 ? col + data[i + 1] : data[i + 1];
+      line += data[i];
+      const mods = legend.tokenModifiers.filter((m, bit) => data[i + 4] & (1 << bit));
+      out.push([line, col, data[i + 2], legend.tokenTypes[data[i + 3]], ...mods]);
+    }
+    return out;
+  };
+  const openInput = async (name, languageId) => {
+    const p = path.join(source, 'tests/lsp/inputs', name);
+    const uri = uriOf(p);
+    connection.sendNotification('textDocument/didOpen',
+                                { textDocument: { uri, languageId, version: 1, text: fs.readFileSync(p, 'utf8') } });
+    assert.deepStrictEqual(await nextDiagnostics(uri), []);
+    return uri;
+  };
+  const tokensUri = await openInput('tokens.fgsg', 'fgsg');
+  const fgsgTokens = [
+    [0, 0, 34, 'comment'],
+    [1, 0, 6, 'keyword'], [1, 7, 7, 'string'], [1, 15, 2, 'keyword'], [1, 18, 5, 'namespace', 'declaration'],
+    [2, 0, 4, 'keyword'], [2, 5, 6, 'property', 'declaration'], [2, 14, 1, 'number'],
+    [3, 0, 5, 'keyword'], [3, 6, 1, 'variable', 'declaration', 'readonly'], [3, 10, 1, 'number'],
+    [4, 0, 5, 'keyword'], [4, 7, 1, 'function', 'defaultLibrary'], [4, 9, 2, 'number'], [4, 13, 1, 'number'],
+    [4, 16, 1, 'number'], [4, 19, 3, 'class'], [4, 23, 1, 'number'],
+    [5, 0, 3, 'class', 'declaration'], [5, 4, 1, 'parameter', 'declaration'], [5, 10, 5, 'function', 'defaultLibrary'],
+    [5, 16, 4, 'string'], [5, 22, 7, 'function', 'defaultLibrary'], [5, 30, 6, 'property'], [5, 39, 1, 'parameter'],
+    [5, 43, 8, 'method', 'defaultLibrary'], [5, 53, 5, 'namespace'], [5, 59, 6, 'class'], [5, 66, 4, 'class'],
+    [6, 0, 6, 'comment'], [7, 3, 8, 'comment'],
+    [8, 0, 4, 'class', 'declaration'], [8, 8, 1, 'function', 'defaultLibrary'], [8, 10, 2, 'number'],
+    [8, 14, 1, 'variable', 'readonly'], [8, 17, 1, 'number'], [8, 20, 1, 'function', 'defaultLibrary'], [8, 22, 6, 'string'],
+  ];
+  const full = await connection.sendRequest('textDocument/semanticTokens/full', { textDocument: { uri: tokensUri } });
+  assert.deepStrictEqual(decode(full.data), fgsgTokens);
+  // A range keeps the tokens of its lines; the first one's line is then counted from line 0.
+  const ranged = await connection.sendRequest('textDocument/semanticTokens/range',
+                                              { textDocument: { uri: tokensUri }, range: { start: { line: 4, character: 0 }, end: { line: 5, character: 10 } } });
+  assert.deepStrictEqual(decode(ranged.data), fgsgTokens.filter((t) => t[0] === 4 || t[0] === 5));
+  const cgaTokensUri = await openInput('tokens.cga', 'cga');
+  assert.deepStrictEqual(decode((await connection.sendRequest('textDocument/semanticTokens/full',
+                                                              { textDocument: { uri: cgaTokensUri } })).data), [
+    [0, 0, 7, 'keyword'], [0, 8, 8, 'string'],
+    [1, 0, 33, 'comment'],
+    [2, 0, 4, 'keyword'], [2, 5, 6, 'property', 'declaration'], [2, 14, 2, 'number'],
+    [3, 0, 10, 'decorator'],
+    [4, 0, 3, 'class', 'declaration'], [4, 8, 4, 'class'], [4, 13, 6, 'property'],
+    [5, 0, 4, 'class', 'declaration'], [5, 5, 1, 'parameter', 'declaration'], [5, 12, 7, 'function', 'defaultLibrary'],
+    [5, 20, 1, 'parameter'], [5, 24, 8, 'method', 'defaultLibrary'], [5, 34, 3, 'class'],
+  ]);
+
   await connection.sendRequest('shutdown');
   connection.sendNotification('exit');
   const { code, signal } = await exited;
