@@ -1,5 +1,6 @@
 #include "frontend/lex.h"
 #include "frontend/lsystem_not_yet.h"
+#include "frontend/query_modules.h"
 
 #include "FgsgParser.h"
 
@@ -551,6 +552,7 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   lexed.lexer->removeErrorListeners();
 
   dropLsystemSyntaxNotYetSupported(raw, diags);
+  joinQueryModules(raw);
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);
   joinQualifiedNames(tokens, importAliases);

@@ -36,8 +36,6 @@ size_t afterStatement(const std::vector<std::unique_ptr<Token>>& tokens, size_t 
   return tokens.size();
 }
 
-bool isQueryLetter(const std::string& s) { return s == "P" || s == "H" || s == "U" || s == "L" || s == "E"; }
-
 }  // namespace
 
 void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
@@ -55,18 +53,15 @@ void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& token
       i = afterStatement(tokens, i);
       continue;
     }
-    if (named && t->getType() == FgsgLexer::QUESTION && isQueryLetter(next->getText()) && i + 2 < tokens.size() &&
+    // ?P ?H ?U ?L are query modules (frontend/query_modules.h); ?E is not supported yet.
+    if (named && t->getType() == FgsgLexer::QUESTION && next->getText() == "E" && i + 2 < tokens.size() &&
         tokens[i + 2]->getType() == FgsgLexer::LPAREN && adjacent(next, tokens[i + 2].get())) {
       const size_t end = afterClosing(tokens, i + 2);
       const SourceRange at{tokenRange(t).begin, tokenRange(tokens[end - 1].get()).end};
-      const std::string name = "?" + next->getText();
       diags.error("E048", at,
-                  name == "?E" ? "the environmental query module '?E' (Mech and Prusinkiewicz 1996) is not "
-                                 "supported yet (docs/language.md, the turtle)"
-                               : "ABOP's query module '" + name +
-                                     "' (the turtle's state after interpretation, ABOP §1.10) is not supported "
-                                     "yet (docs/language.md, the turtle)");
-      // A whole left context (`?P(x, y) < A -> ...`) goes with its '<', so the rule reads on.
+                  "the environmental query module '?E' (Mech and Prusinkiewicz 1996) is not supported yet "
+                  "(docs/language.md, the turtle)");
+      // A whole left context (`?E(x) < A -> ...`) goes with its '<', so the rule reads on.
       const bool aloneBefore = kept.empty() || kept.back()->getType() == FgsgLexer::SEMI ||
                                kept.back()->getLine() != t->getLine();
       i = aloneBefore && end < tokens.size() && tokens[end]->getType() == FgsgLexer::LT ? end + 1 : end;

@@ -3,11 +3,10 @@
 // a syntax error about what follows, or nothing:
 //  * `#consider: A B;` (context matching sees only the symbols listed): the whole
 //    statement, up to its ';' or the end of its line, is dropped after the error;
-//  * the query modules `?P(x, y, z)`, `?H(...)`, `?U(...)`, `?L(...)` and the
-//    environmental query `?E(...)` (ABOP §1.10; Prusinkiewicz et al. 1994), `?` written
-//    against the letter and the letter against its '(': the module is dropped. `c ? P(1)
-//    : 2` with spaces stays a conditional expression. A query that is a rule's whole left
-//    context goes with its '<'.
+//  * the environmental query `?E(...)` (Mech and Prusinkiewicz 1996), `?` written
+//    against the `E` and the `E` against its '(': the module is dropped. A query that is
+//    a rule's whole left context goes with its '<'. (The turtle's query modules ?P ?H ?U
+//    ?L are supported: frontend/query_modules.h.)
 #pragma once
 
 #include "frontend/diagnostics.h"

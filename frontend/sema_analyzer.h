@@ -78,6 +78,7 @@ class Analyzer {
   void checkItem(const Item& item, const Where& w);
   void checkAtModule(const Item& item, const Where& w);
   void checkShapeItem(const Item& item, const Where& w);
+  void checkQueryModule(const Item& item);
 
   // Commands: arity, argument types and constants, { } bodies (sema_commands.cpp).
   void checkCommand(const Item& item, const CommandInfo& cmd, const Where& w);

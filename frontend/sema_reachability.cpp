@@ -3,6 +3,7 @@
 // no rule (W001; not in a CGA grammar, where such a leaf outputs its own geometry).
 
 #include "frontend/sema_analyzer.h"
+#include "frontend/query_modules.h"
 
 #include "frontend/builtins.h"
 #include "frontend/did_you_mean.h"
@@ -127,7 +128,8 @@ void Analyzer::checkReachability() {
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "
                      "start creates a '" + s.name + "'");
-    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si]) {
+    else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si] &&
+             !isQueryModuleName(s.name)) {  // a query module holds values; it draws nothing by design
       const std::string op = nearOperation(s);
       const std::string opHint = op.empty() ? "" : "; did you mean the operation '" + op + "'?";
       if (!(cga && res_.mode != "parallel"))

@@ -6,6 +6,7 @@
 #include "frontend/sema_analyzer.h"
 
 #include "frontend/builtins.h"
+#include "frontend/query_modules.h"
 
 #include <cmath>
 #include <set>
@@ -119,6 +120,7 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
 
 void Analyzer::checkShapeItem(const Item& item, const Where& w) {
   int idx = res_.findSymbol(item.name);
+  if (isQueryModuleName(item.name)) checkQueryModule(item);
   if (item.hasBody)
     diags_.error("E018", item.range,
                  "'" + item.name + "' is a shape symbol, not a command: it takes no { } body");
@@ -147,6 +149,30 @@ void Analyzer::checkSection(const Rule& r) {
     diags_.error("E048", (r.leftContext.empty() ? r.rightContext : r.leftContext).front().range,
                  what + " has no context in fgsg (L-Py's interpretation rules neither): write the context in a "
                         "production");
+}
+
+// A query module ?P ?H ?U ?L (frontend/query_modules.h) is filled between the steps of
+// an L-system with two or three of the turtle's coordinates. fgsg fills it from the
+// derived string, so a homomorphism, which only the last drawing reads, would give
+// values the drawing does not show: E048 rather than a silent difference from lpfg.
+void Analyzer::checkQueryModule(const Item& item) {
+  if (item.args.size() < 2 || item.args.size() > 3)
+    diags_.error("E016", item.range,
+                 "the query module '" + item.name + "' takes 2 or 3 arguments (x, y[, z]), got " +
+                     std::to_string(item.args.size()));
+  if (res_.mode != "parallel") {
+    diags_.error("E048", item.range,
+                 "the query module '" + item.name + "' needs an L-system (`derive parallel N;`): it is filled by "
+                 "the turtle between the steps of a parallel derivation");
+    return;
+  }
+  for (const Rule& r : prog_.rules)
+    if (r.section == RuleSection::Homomorphism) {
+      diags_.error("E048", item.range,
+                   "the query module '" + item.name + "' in a grammar with a 'homomorphism:' section is not "
+                   "supported yet: fgsg fills query modules from the derived string, without the homomorphism");
+      return;
+    }
 }
 
 // lpfg's and L-Py's turtle modules written with '@': those fgsg runs take their

@@ -23,7 +23,7 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
         default: seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z()); break;
       }
       seg.S = rt::Vec3(st.width, step, st.width);
-      d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
+      if (drawing_) d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       st.scope.P += step * st.scope.Y();
       if (st.tropism.elasticity != 0) bend(st.scope, st.tropism);
       break;
@@ -43,12 +43,14 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       if (n > 0) st.width = args[0];
       break;
     case TurtleOp::RollHorizontal: rollHorizontal(st.scope); break;
-    case TurtleOp::PolygonBegin: polygons_.emplace_back(); break;
+    case TurtleOp::PolygonBegin:
+      if (drawing_) polygons_.emplace_back();
+      break;
     case TurtleOp::PolygonVertex:
-      if (!polygons_.empty()) polygons_.back().push_back(st.scope.P);  // outside a polygon: nothing
+      if (drawing_ && !polygons_.empty()) polygons_.back().push_back(st.scope.P);  // outside a polygon: nothing
       break;
     case TurtleOp::PolygonEnd:
-      if (polygons_.empty()) break;  // a `}` with no `{`: nothing to fill
+      if (!drawing_ || polygons_.empty()) break;  // a `}` with no `{`: nothing to fill
       d_.placePolygon(polygons_.back(), st.scope, loc);
       polygons_.pop_back();
       break;
@@ -118,6 +120,7 @@ void TurtleCommands::rollHorizontal(rt::Scope& scope) {
 // lpfg's), centred on the turtle, in the turtle's frame; the turtle does not move. It is
 // turtle geometry, recorded under F as segments are.
 void TurtleCommands::sphere(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc) {
+  if (!drawing_) return;
   const double r = n > 0 ? args[0] : 0.5 * st.width;
   if (!(r >= 0 && std::isfinite(r)))
     throw DeriveError{loc, "R027", "the radius of @O must be a finite number from 0, not " + std::to_string(r)};
@@ -145,6 +148,7 @@ void TurtleCommands::colorIndex(State& st, double i, ir::Loc loc) const {
 // PlantGL's turtle draws its disc; the turtle does not move. Recorded under F as
 // segments are.
 void TurtleCommands::circle(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc) {
+  if (!drawing_) return;
   const double r = n > 0 ? args[0] : 0.5 * st.width;
   if (!(r >= 0 && std::isfinite(r)))
     throw DeriveError{loc, "R027", "the radius of @o must be a finite number from 0, not " + std::to_string(r)};

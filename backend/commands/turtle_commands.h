@@ -23,6 +23,19 @@ class TurtleCommands final : public CommandFamily {
     command(st, op, a, n);
   }
 
+  // While one lives, the turtle moves and turns but places nothing: segments, spheres,
+  // circles and polygons are left out (the query modules' pass, query_modules.cpp).
+  class NotDrawing {
+   public:
+    explicit NotDrawing(TurtleCommands& t) : t_(t) { t_.drawing_ = false; }
+    ~NotDrawing() { t_.drawing_ = true; }
+    NotDrawing(const NotDrawing&) = delete;
+    NotDrawing& operator=(const NotDrawing&) = delete;
+
+   private:
+    TurtleCommands& t_;
+  };
+
   // The turtle op `op` (a Turtle op) with its evaluated arguments.
   void command(State& st, const ir::Op& op, const double* args, uint32_t n) {
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::SurfaceBox)) return surfaceBox(st, op.asset, args, n);
@@ -51,6 +64,7 @@ class TurtleCommands final : public CommandFamily {
   Derivation& d_;
   ScopeCommands& scope_;
   std::vector<std::vector<rt::Vec3>> polygons_;  // open polygons, innermost last
+  bool drawing_ = true;                          // false while a NotDrawing lives
 };
 
 }  // namespace fgsg::backend

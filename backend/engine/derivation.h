@@ -275,6 +275,8 @@ class Derivation final : public QueryHost {
   bool matchLeft(const ir::Rule& r, const ModuleString& str, size_t at);
   bool matchRight(const ir::Rule& r, const ModuleString& str, size_t at);
   void interpretString(const ModuleString& str);
+  // query_modules.cpp
+  void answerQueries(ModuleString& str);
   // rule_sections.cpp
   bool rewriteSection(ir::RuleSection section, const ModuleString& str, ModuleString& out, uint32_t step,
                       bool& limitHit, std::optional<LimitReached>& stopped);

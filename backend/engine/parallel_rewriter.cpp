@@ -60,6 +60,7 @@ void Derivation::runParallel() {
   f.rng = &rng;
   appendModules(0, m_.axiom, f, rt::rootKey(opt_.seed), str);
   cutBranches(str);
+  answerQueries(str);
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
   const auto rewriteStart = std::chrono::steady_clock::now();
@@ -106,6 +107,7 @@ void Derivation::runParallel() {
     if (!limitHit && rewriteSection(ir::RuleSection::Decomposition, str, next, static_cast<uint32_t>(step), limitHit,
                                     stopped))
       str.swap(next);
+    answerQueries(str);  // ?P ?H ?U ?L for the next step's contexts and guards
     if (!limitHit && deadline_.expiredNow()) stopped = timeLimit(), limitHit = true;
   }
   stats_.rewriteSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rewriteStart).count();

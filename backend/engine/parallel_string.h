@@ -134,6 +134,7 @@ struct StringOp {
   int8_t draws = -1;        // a symbol F, f, + ...: the turtle command it is read as (ir::TurtleOp)
   bool contextSymbol = false;  // a symbol that context matching sees (not in #ignore)
   uint32_t successor = 0;   // Template: its index in StringOps::templates
+  int8_t query = -1;        // a query module ?P ?H ?U ?L: which (QueryModule, query_modules.h)
 };
 
 // A successor that is the same for every module it rewrites: a rule of its own (no
@@ -156,6 +157,7 @@ struct StringOps {
   bool allTemplates = false;  // no symbol needs General: a step can be split over threads
   bool hasCut = false;        // the grammar writes % somewhere
   bool hasContext = false;    // some rule has a left or right context
+  bool hasQuery = false;      // a query module ?P ?H ?U ?L is written somewhere
 
   const StringOp& operator[](uint32_t op) const { return ops[op]; }
 };

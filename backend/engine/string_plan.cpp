@@ -2,6 +2,8 @@
 // are, and which symbols rewrite by a fixed template.
 #include "backend/engine/parallel_string.h"
 
+#include "backend/engine/query_modules.h"
+
 #include "runtime/random.h"
 
 #include <algorithm>
@@ -106,6 +108,8 @@ StringOps planString(const ir::Module& m, const ir::ProgramLayout& layout,
         so.childIndex = children++;
         so.argCount = m.symbols[op.index].slotCount;
         so.draws = static_cast<int8_t>(ir::turtleOpNamed(m.symbols[op.index].name));
+        so.query = static_cast<int8_t>(queryModuleNamed(m.symbols[op.index].name));
+        plan.hasQuery |= so.query >= 0;
         so.contextSymbol = std::find(m.contextIgnored.begin(), m.contextIgnored.end(), op.index) ==
                            m.contextIgnored.end();
       } else if (op.kind == ir::OpKind::Instance) {
