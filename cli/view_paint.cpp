@@ -73,10 +73,8 @@ void rasterize(const Vec2 uv[3], int width, int height, Visit visit) {
 void ViewPaint::reset(const ir::Module& module, const std::string& grammarPath, const std::vector<std::string>& dataDirs,
                       std::shared_ptr<const rt::marching::MarchingSurface> surface) {
   surface_ = std::move(surface);
+  std::vector<Texture> before = std::move(textures_);
   textures_.clear();
-  undo_.clear();
-  redo_.clear();
-  strokeOpen_ = false;
   std::error_code ec;
   const fs::path grammarDir = fs::weakly_canonical(fs::absolute(grammarPath).parent_path(), ec);
   for (const ir::EnvDecl& env : module.environment) {
@@ -99,6 +97,34 @@ void ViewPaint::reset(const ir::Module& module, const std::string& grammarPath, 
     }
     textures_.push_back(std::move(t));
   }
+  keepHistory(before);
+}
+
+void ViewPaint::keepHistory(const std::vector<Texture>& before) {
+  // A recompile (the grammar edited, any file in its folder written, as `fgsg run -o` does)
+  // loads the textures again. One whose file still holds what was last painted or loaded
+  // keeps its strokes: clearing them made the page's Undo refuse after such a recompile
+  // (#49). One changed outside, resized, renamed or no longer paintable loses them.
+  std::vector<size_t> now(before.size(), SIZE_MAX);
+  for (size_t k = 0; k < before.size(); ++k)
+    for (size_t j = 0; j < textures_.size(); ++j) {
+      Texture& t = textures_[j];
+      const Texture& old = before[k];
+      if (t.why.empty() && old.why.empty() && t.name == old.name && t.file == old.file && t.grey == old.grey) {
+        t.original = old.original;  // erase still goes back to the texels before any stroke
+        now[k] = j;
+      }
+    }
+  const auto remap = [&](std::vector<Step>& steps) {
+    std::vector<Step> kept;
+    for (Step& s : steps)
+      if (now[s.texture] != SIZE_MAX) kept.push_back({now[s.texture], std::move(s.grey)});
+    steps = std::move(kept);
+  };
+  remap(undo_);
+  remap(redo_);
+  if (strokeOpen_ && now[strokeTexture_] != SIZE_MAX) strokeTexture_ = now[strokeTexture_];
+  else strokeOpen_ = false;
 }
 
 void ViewPaint::coverage(Texture& t) const {

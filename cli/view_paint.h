@@ -35,7 +35,8 @@ class ViewPaint {
   };
 
   // The textures `module` declares, looked up in `dataDirs` as a derivation does, loaded
-  // when paintable. `surface` may be null (nothing is paintable then).
+  // when paintable. `surface` may be null (nothing is paintable then). Undo and redo
+  // keep the strokes of each texture whose file is unchanged since it was last painted.
   void reset(const ir::Module& module, const std::string& grammarPath, const std::vector<std::string>& dataDirs,
              std::shared_ptr<const rt::marching::MarchingSurface> surface);
   // Applies a piece of a stroke and writes the texture's file. False with a reason and
@@ -53,6 +54,7 @@ class ViewPaint {
     std::vector<uint8_t> grey;  // the texels before (undo) or after (redo) the stroke
   };
   bool write(Texture& t, std::string& reason);
+  void keepHistory(const std::vector<Texture>& before);  // reset(): strokes of unchanged textures
   bool swap(std::vector<Step>& from, std::vector<Step>& to, std::string& writtenFile, std::string& reason);
   void coverage(Texture& t) const;
 
