@@ -12,13 +12,29 @@
 // line per grammar and engine, then per engine
 //   {"bench":"cga_pair","engine":E,"cga_lots_per_s":..,"fgsg_lots_per_s":..,"ratio":..}
 // (ratio: the .cga file's speed over the .fgsg file's; issue #43's target is 1).
-// Usage: bench_cga [--quick] [--pair [A.cga B.fgsg]]
+//
+// --scene: the structured output (#45) instead of the one assembled mesh, JIT only: per
+// run the derivation, the scene (runtime/output/: a node per lot, grouped by symbol,
+// --instancing auto, as fgsg run -o FILE.glb), its .glb encoded, and for comparison the
+// flattened mesh assembled; then one line
+//   {"bench":"cga_scene","lots":200,"derive_s":..,"scene_s":..,"encode_s":..,"flatten_s":..,
+//    "derive_cpu_s":.., ..., "lots_per_s":..,"cpu_lots_per_s":..,"cpu_lots_per_s_written":..,
+//    "cpu_lots_per_s_flattened":..,"glb_auto_bytes":..,"glb_on_bytes":..,"glb_flat_bytes":..,
+//    "auto_over_flat":..,"on_over_flat":..}
+// (lots_per_s: derived and assembled into the scene, by the wall clock; cpu_: by processor
+// time; _written: the .glb encoded too; _flattened: derived and assembled into one mesh;
+// the flattened .glb is `--instancing off --group-by none`'s).
+// Usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene]
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
 #include "backend/native/object_cache.h"
 #include "bench/bench_clock.h"
 #include "bench/bench_grammar.h"
+#include "backend/scene_starts.h"
 #include "runtime/assemble.h"
+#include "runtime/io/write_mesh.h"
+#include "runtime/output/gltf_writer.h"
+#include "runtime/output/scene.h"
 #include "runtime/io/geojson_lots.h"
 #include "runtime/io/read_input.h"
 
@@ -103,17 +119,87 @@ void runPair(const std::string& cgaPath, const std::string& fgsgPath, const rt::
                 e == 0 ? "interp" : "jit", speed[0][e], speed[1][e], speed[0][e] / speed[1][e]);
 }
 
+// The structured output's speed and size (--scene). Each phase is timed by the wall
+// clock and by the process's processor time (which another process on a shared machine
+// does not inflate); the best of `reps` runs of each.
+void runScene(const ir::Module& m, const std::function<rt::DeriveResult()>& derive, const rt::DeriveOptions& options,
+              int reps) {
+  struct Best {
+    double wall = 1e30, cpu = 1e30;
+  } derived, scened, encoded, flattened;
+  size_t autoBytes = 0, onBytes = 0, flatBytes = 0;
+  const auto fail = [](const std::string& error) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::exit(1);
+  };
+  // Runs `f`, keeping its best wall and processor times in `best`.
+  const auto timed = [](Best& best, const auto& f) {
+    const double cpu0 = bench::cpuSeconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    best.wall = std::min(best.wall, bench::secondsSince(t0));
+    best.cpu = std::min(best.cpu, bench::cpuSeconds() - cpu0);
+  };
+  for (int i = 0; i < reps; ++i) {
+    rt::DeriveResult r;
+    timed(derived, [&] { r = derive(); });
+    if (!r.ok) fail("derivation failed: " + (r.messages.empty() ? std::string("?") : r.messages[0].message));
+    rt::AssetLibrary library;
+    for (const std::string& dir : options.assetDirs) library.addSearchDir(dir);
+    std::vector<int> meshOf;
+    std::string error;
+    if (!rt::resolveAssets(r.instances, library, meshOf, error)) fail(error);
+    rt::output::SceneInput in;
+    in.list = &r.instances;
+    in.library = &library;
+    in.meshOf = &meshOf;
+    in.groupBy = rt::output::GroupBy::Symbol;
+    in.instancing = rt::output::Instancing::Auto;
+    rt::output::Scene scene;
+    timed(scened, [&] {
+      in.starts = backend::sceneStarts(m, options, r);
+      scene = rt::output::buildScene(in);
+    });
+    std::string bytes;
+    timed(encoded, [&] {
+      if (!rt::output::encodeGltf(scene, true, bytes, error)) fail(error);
+    });
+    autoBytes = bytes.size();
+    rt::Mesh mesh;
+    timed(flattened, [&] { mesh = rt::assembleInstances(r.instances, library, meshOf); });
+    if (i > 0) continue;
+    // The sizes, once: the flattened file, and every rigid repeat instanced.
+    if (!rt::io::encodeMesh(mesh, ".glb", bytes, error)) fail(error);
+    flatBytes = bytes.size();
+    in.instancing = rt::output::Instancing::On;
+    if (!rt::output::encodeGltf(rt::output::buildScene(in), true, bytes, error)) fail(error);
+    onBytes = bytes.size();
+  }
+  const double lots = double(options.lots.size());
+  std::printf("{\"bench\":\"cga_scene\",\"lots\":%zu,\"derive_s\":%.6f,\"scene_s\":%.6f,\"encode_s\":%.6f,"
+              "\"flatten_s\":%.6f,\"derive_cpu_s\":%.6f,\"scene_cpu_s\":%.6f,\"encode_cpu_s\":%.6f,"
+              "\"flatten_cpu_s\":%.6f,\"lots_per_s\":%.0f,\"cpu_lots_per_s\":%.0f,\"cpu_lots_per_s_written\":%.0f,"
+              "\"cpu_lots_per_s_flattened\":%.0f,\"glb_auto_bytes\":%zu,\"glb_on_bytes\":%zu,\"glb_flat_bytes\":%zu,"
+              "\"auto_over_flat\":%.3f,\"on_over_flat\":%.3f}\n",
+              options.lots.size(), derived.wall, scened.wall, encoded.wall, flattened.wall, derived.cpu, scened.cpu,
+              encoded.cpu, flattened.cpu, lots / (derived.wall + scened.wall), lots / (derived.cpu + scened.cpu),
+              lots / (derived.cpu + scened.cpu + encoded.cpu), lots / (derived.cpu + flattened.cpu), autoBytes, onBytes,
+              flatBytes, double(autoBytes) / double(flatBytes), double(onBytes) / double(flatBytes));
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false, pair = false;
+  bool quick = false, pair = false, sceneOnly = false;
   std::vector<std::string> pairFiles;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--pair") == 0) pair = true;
+    else if (std::strcmp(argv[i], "--scene") == 0) sceneOnly = true;
     else if (pair) pairFiles.push_back(argv[i]);
     else {
-      std::fprintf(stderr, "usage: bench_cga [--quick] [--pair [A.cga B.fgsg]]\n");
+      std::fprintf(stderr, "usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene]\n");
       return 2;
     }
   }
@@ -146,6 +232,13 @@ int main(int argc, char** argv) {
   }
   rt::AssetLibrary assets;
   const int reps = quick ? 1 : 5;
+  if (sceneOnly) {
+    backend::jit::Jit jit;
+    const auto code = jit.compileProgram(m, source, backend::native::ObjectCache(std::string()),
+                                         backend::native::Tiering::Optimized);
+    runScene(m, [&] { return backend::deriveCompiled(m, code.program(), options, assets); }, options, reps);
+    return 0;
+  }
   run("interp", options.lots.size(), reps, [&] { return backend::interpret(m, options, assets); });
   backend::jit::Jit jit;
   const auto code = jit.compileProgram(m, source, backend::native::ObjectCache(std::string()),
