@@ -149,23 +149,24 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
-          "faces", "f", "sidefaces", "vertical", "aslant", "top", "bottom", "front", "back", "left", "right",
-          "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips", "valleys",
-          "v", "vertices"};
-      static const std::set<std::string> kEdgeSelectors = {"edges", "e",     "sideedges", "topedges", "bottomedges",
-                                                           "eaves", "ridges", "rakes",    "hips",     "valleys",
-                                                           "v",     "vertices"};
+          "faces", "f", "sidefaces", "vertical", "aslant", "horizontal", "nutant", "top", "bottom", "front", "back",
+          "left", "right", "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips",
+          "valleys", "v", "vertices"};
+      // Labelled parts take faces, or edges by their roof class (checkBody): not vertices.
+      static const std::set<std::string> kEdgeSelectors = {"v", "vertices"};
       std::string sel = stringArg(0, "selector");
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
                      "unknown component selector \"" + sel +
-                         "\" (faces or f, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges or e, "
+                         "\" (faces or f, sidefaces, vertical, aslant, horizontal, nutant, top, bottom, front, back, left, "
+                         "right, edges or e, "
                          "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys; "
                          "vertices or v)");
       else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
                kEdgeSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
-                     "labelled parts take faces: write `Comp(\"f\"){ front: A | side: B }`, not \"" + sel + "\"");
+                     "labelled parts take faces or edges: write `Comp(\"f\"){ front: A | side: B }` or "
+                     "`Comp(\"e\"){ eave: A | ridge: B }`, not \"" + sel + "\"");
       break;
     }
     case CommandId::Offset: numArgs(0, false); break;
@@ -347,8 +348,15 @@ bool Analyzer::checkSplitSyntax(const Item& item, const CommandInfo& cmd) {
 
 void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   // The faces a labelled part of Comp may name (rt::cga::faceSelectorMask).
-  static const std::set<std::string> kPartFaces = {"front", "back",     "left",   "right", "top",
-                                                   "bottom", "vertical", "aslant", "side",  "all"};
+  static const std::set<std::string> kPartFaces = {"front", "back",  "left",       "right",  "top", "bottom",
+                                                   "vertical", "aslant", "horizontal", "nutant", "side", "all"};
+  // Those of a Comp of edges (rt::cga::componentSelectorMask): roof edges by their class.
+  static const std::set<std::string> kEdgeComponents = {"e",     "edges",  "sideedges", "topedges", "bottomedges",
+                                                        "eaves", "ridges", "rakes",     "hips",     "valleys"};
+  static const std::set<std::string> kPartEdges = {"all",   "eave",   "eaves",   "ridge", "ridges", "hip",
+                                                   "hips",  "valley", "valleys", "gable", "rake",   "rakes"};
+  const bool edgeComp = cmd.id == CommandId::Comp && !item.args.empty() &&
+                        item.args[0]->kind == ExprKind::String && kEdgeComponents.count(item.args[0]->text);
   const size_t parts = item.body.size();
   size_t labelled = 0;
   for (const auto& part : item.body) {
@@ -367,9 +375,14 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
       diags_.error("E018", part.selectorRange,
                    "a labelled part '" + part.selector + ":' belongs to Comp (`Comp(\"f\"){ front: A | side: B }`) "
                    "or Offset, not to '" + item.name + "'");
+    } else if (edgeComp) {
+      if (!kPartEdges.count(part.selector))
+        diags_.error("E028", part.selectorRange,
+                     "unknown edge '" + part.selector + ":' (eave, ridge, hip, valley, gable, all)");
     } else if (!kPartFaces.count(part.selector)) {
       diags_.error("E028", part.selectorRange,
-                   "unknown face '" + part.selector + ":' (front, back, left, right, top, bottom, vertical, aslant, side, all)");
+                   "unknown face '" + part.selector +
+                       ":' (front, back, left, right, top, bottom, vertical, aslant, horizontal, nutant, side, all)");
     }
   }
   if (cmd.id == CommandId::ShapeOperation && labelled != parts)

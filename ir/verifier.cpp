@@ -530,7 +530,12 @@ class Verifier {
       case OpKind::Roof:
         stringId(op.str);
         if (op.bodies.size() > 1) expectBodies(op, 1);  // the body is optional
-        numArgs(op, r, 1);
+        // The angle, then optionally the overhangs and the edge index.
+        if (op.args.empty() || op.args.size() > 4) problem(std::to_string(op.args.size()) + " arguments, expected 1 to 4");
+        for (const auto& arg : op.args) {
+          expectType(arg, Type::Num, "argument");
+          expr(arg, r);
+        }
         break;
       case OpKind::Lock:
         if (op.bodies.empty()) problem("no bodies");

@@ -7,6 +7,7 @@
 #include "runtime/cga/shape_operations.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace fgsg::backend {
@@ -91,9 +92,21 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
     case ir::OpKind::Roof: {
       rt::cga::Part part;
       std::string error;
+      // Roof(kind, angle, overhang, gable overhang, edge index): the optional ones in order.
+      rt::cga::RoofOptions options;
+      if (n > 1) options.overhang = a[1];
+      options.gableOverhang = n > 2 ? a[2] : options.overhang;
+      if (n > 3) {
+        if (!(std::isfinite(a[3]) && std::abs(a[3]) < 1e9))
+          throw DeriveError{op.loc, "R002", "Roof: the edge index is not a finite number"};
+        options.edgeIndex = static_cast<int>(std::floor(a[3]));
+        if (options.edgeIndex < 0)
+          throw DeriveError{op.loc, "R002", "Roof: the edge index " + std::to_string(options.edgeIndex) +
+                                                " is negative"};
+      }
       if (!skeletonWithin(d_, [&] {
             return rt::cga::roof(scope, geom, d_.module().strings[op.str], a[0], d_.arena(), part, error,
-                                 &d_.deadline());
+                                 &d_.deadline(), options);
           }))
         throw DeriveError{op.loc, "R002", error};
       d_.runBody(op, 0, part.scope, part.geom, st, ex, f);
@@ -145,7 +158,8 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   if (!ok) throw DeriveError{op.loc, "R002", error};
   // Labelled parts of Comp: each face goes to the first part whose label names it.
   std::vector<unsigned> labelMasks;
-  for (uint32_t label : op.partLabels) labelMasks.push_back(rt::cga::faceSelectorMask(d_.module().strings[label]));
+  for (uint32_t label : op.partLabels)
+    labelMasks.push_back(rt::cga::componentSelectorMask(d_.module().strings[op.str], d_.module().strings[label]));
   // The body each derived part runs (SIZE_MAX: none), and how many parts each body runs.
   std::vector<size_t> bodyOf(parts.size(), SIZE_MAX);
   std::vector<int32_t> perBody(op.bodies.size() + labelMasks.size() + 1, 0);
@@ -155,7 +169,8 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     size_t body = op.kind == ir::OpKind::Subdiv ? i % op.bodies.size() : 0;
     if (!labelMasks.empty()) {
       body = 0;
-      while (body < labelMasks.size() && !(labelMasks[body] & parts[i].faceClass)) ++body;
+      // ~0u (an edge comp's `all`) takes edges of no roof class too.
+      while (body < labelMasks.size() && labelMasks[body] != ~0u && !(labelMasks[body] & parts[i].faceClass)) ++body;
       if (body == labelMasks.size()) continue;  // no part takes this face
     }
     bodyOf[i] = body;

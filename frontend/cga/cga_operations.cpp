@@ -355,18 +355,50 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return;
   }
   if (name == "roofGable" || name == "roofHip" || name == "roofPyramid" || name == "roofShed") {
-    if (!noBody() || !count(1, 5, "an angle")) return;
-    if (argCtx.size() > 1) {
-      notSupported(rangeOf(argCtx[1]), name + "'s overhang and index arguments");
+    // roofGable(angle, overhangX, overhangY, even, index), roofHip(angle, overhang, even),
+    // roofShed(angle, index), roofPyramid(angle), each also as (byAngle, angle, ...): fgsg's
+    // Roof(kind, angle, overhang, gable overhang, edge index). roofGable's overhangY
+    // defaults to its overhangX (Roof's gable overhang does).
+    const bool gable = name == "roofGable", hip = name == "roofHip", shed = name == "roofShed";
+    const size_t first = !argCtx.empty() && selectorWord(argCtx[0]) == "byAngle" ? 1 : 0;
+    const size_t most = first + (gable ? 5 : hip ? 3 : shed ? 2 : 1);
+    const std::string forms = std::string(first ? "byAngle, " : "") + "an angle" +
+                              (gable ? ", overhangX, overhangY, even and index"
+                               : hip ? ", overhang and even"
+                               : shed ? " and an edge index"
+                                      : "");
+    if (!noBody()) return;
+    if (!argCtx.empty() && selectorWord(argCtx[0]) == "byHeight") {
+      notSupported(rangeOf(argCtx[0]), name + "(byHeight, ...)");
       return;
     }
-    ExprPtr angle = expr(argCtx[0], env);
-    if (!angle) return;
+    if (!count(first + 1, most, forms)) return;
+    const size_t even = first + (gable ? 3 : 2);
+    if ((gable || hip) && argCtx.size() > even && argCtx[even]->getText() != "false") {
+      notSupported(rangeOf(argCtx[even]), name + "'s even roof (non-planar faces)");
+      return;
+    }
+    if (gable && argCtx.size() > first + 4) {
+      notSupported(rangeOf(argCtx[first + 4]), "roofGable's ridge index");
+      return;
+    }
+    std::vector<ExprPtr> args;
+    for (size_t k = first; k < argCtx.size() && k < (gable ? first + 3 : hip ? first + 2 : argCtx.size()); ++k)
+      args.push_back(expr(argCtx[k], env));
+    if (!allOk(args)) return;
+    if (shed && args.size() == 2) {
+      // Roof("shed", angle, 0, 0, index): no overhangs before the edge index.
+      ExprPtr index = std::move(args[1]);
+      args.resize(1);
+      args.push_back(number(0, index->range));
+      args.push_back(number(0, index->range));
+      args.push_back(std::move(index));
+    }
     flushInsert();
-    const char* kind = name == "roofGable" ? "gable" : name == "roofHip" ? "hipped" : name == "roofPyramid" ? "pyramid" : "shed";
+    const char* kind = gable ? "gable" : hip ? "hipped" : name == "roofPyramid" ? "pyramid" : "shed";
     Item item = command("Roof", at);
     item.args.push_back(stringExpr(kind, nameAt));
-    item.args.push_back(std::move(angle));
+    for (ExprPtr& a : args) item.args.push_back(std::move(a));
     restAsBody(item, "");
     push(std::move(item));
     seq.createsShapes = true;
@@ -659,8 +691,8 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
     compEdgesOrVertices(op, kind, seq, env);
     return;
   }
-  static const char* const kSelectors[] = {"front", "back", "left", "right", "top", "bottom",
-                                           "side", "all", "vertical", "aslant"};
+  static const char* const kSelectors[] = {"front", "back",     "left",   "right",      "top",   "bottom",
+                                           "side",  "all",      "vertical", "aslant", "horizontal", "nutant"};
   if (seq.pendingInsert) {
     seq.out.items.push_back(std::move(*seq.pendingInsert));
     seq.pendingInsert.reset();
@@ -696,18 +728,41 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
 }
 
 // comp(e){ all : A } and comp(v){ all : A }: fgsg's Comp("e") / Comp("v") with A as its
-// one body (each edge or vertex a shape of its own); the only selector read is `all`.
+// one body (each edge or vertex a shape of its own). comp(e) also takes CityEngine's roof
+// edge selectors `eave ridge hip valley` and `gable` (a gable's sloped edges): labelled
+// parts, each edge going to the first that names its class.
 void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq,
                                      const Env& env) {
-  const auto parts = op->splitBody()->splitPart();
-  auto* sized = parts.size() == 1 ? dynamic_cast<P::SizedPartContext*>(parts[0]) : nullptr;
-  if (!sized || selectorWord(sized->key) != "all") {
-    notSupported(sized ? rangeOf(sized->key) : rangeOf(op->splitBody()),
-                 "comp(" + kind + ") with selectors other than one `all : ...`");
+  static const char* const kEdgeSelectors[] = {"all", "eave", "ridge", "hip", "valley", "gable"};
+  std::vector<P::SizedPartContext*> parts;
+  for (P::SplitPartContext* partCtx : op->splitBody()->splitPart()) {
+    auto* sized = dynamic_cast<P::SizedPartContext*>(partCtx);
+    if (!sized) {
+      error("E018", rangeOf(partCtx), "comp's parts are `selector : operations`");
+      return;
+    }
+    const std::string sel = selectorWord(sized->key);
+    bool known = sel == "all";
+    if (kind == "e")
+      for (const char* k : kEdgeSelectors) known |= sel == k;
+    if (!known) {
+      notSupported(rangeOf(sized->key), kind == "e" ? "the comp(e) selector '" + sized->key->getText() + "'"
+                                                    : "comp(v) with selectors other than `all : ...`");
+      return;
+    }
+    if (sized->sep->getText() == "=") {
+      notSupported(rangeOf(sized->sep),
+                   "comp(" + kind + ")'s `" + sel + " =` (the components merged into one shape)");
+      return;
+    }
+    parts.push_back(sized);
+  }
+  if (parts.empty()) {
+    error("E018", rangeOf(op->splitBody()), "comp(" + kind + ") needs its parts: comp(" + kind + "){ all : A }");
     return;
   }
-  if (sized->sep->getText() == "=") {
-    notSupported(rangeOf(sized->sep), "comp(" + kind + ")'s `all =` (the components merged into one shape)");
+  if (kind == "v" && parts.size() != 1) {
+    notSupported(rangeOf(op->splitBody()), "comp(v) with selectors other than one `all : ...`");
     return;
   }
   if (seq.pendingInsert) {
@@ -717,10 +772,18 @@ void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::str
   Item item = command("Comp", rangeOf(op));
   item.args.push_back(stringExpr(kind, rangeOf(op->expr()[0])));
   item.hasBody = true;
-  Successor part;
-  part.range = rangeOf(sized);
-  operations(sized->operation(), 0, part, env, true);
-  item.body.push_back(std::move(part));
+  // One `all` alone stays an unlabelled body (every edge or vertex).
+  const bool labelled = parts.size() > 1 || selectorWord(parts[0]->key) != "all";
+  for (P::SizedPartContext* sized : parts) {
+    Successor part;
+    part.range = rangeOf(sized);
+    if (labelled) {
+      part.selector = selectorWord(sized->key);
+      part.selectorRange = rangeOf(sized->key);
+    }
+    operations(sized->operation(), 0, part, env, true);
+    item.body.push_back(std::move(part));
+  }
   seq.out.items.push_back(std::move(item));
   seq.createsShapes = true;
 }

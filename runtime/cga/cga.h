@@ -27,13 +27,21 @@ struct Part {
   Scope scope;
   GeomRef geom;
   bool empty = false;  // a part whose geometry clipped away entirely (it is skipped)
-  unsigned faceClass = 0;  // a Comp face: which face it is (faceSelectorMask's bits)
+  // A Comp face: which face it is (faceSelectorMask's bits); a Comp edge: its roof class
+  // (componentSelectorMask's bits for an edge component).
+  unsigned faceClass = 0;
 };
 
 // The faces a Comp face selector ("front", "sidefaces", "faces" ...) or the name of a
 // labelled part (`Comp("f"){ front: A | side: B | all: C }`: also "side" and "all")
 // takes, as a mask to test against Part::faceClass; 0 for any other name.
 unsigned faceSelectorMask(const std::string& name);
+
+// The same for a labelled part of a Comp of `component`: for edges ("e", "edges" ...) the
+// roof classes `eave ridge hip valley gable` (also `eaves ridges hips valleys rake rakes`)
+// and `all` (~0u: every edge, those of no roof class too); for anything else
+// faceSelectorMask(name).
+unsigned componentSelectorMask(const std::string& component, const std::string& name);
 
 // Subdiv("X", s1, s2, ...): cuts the scope along `axis` (0 X, 1 Y, 2 Z) into one part
 // per size, in order. Relative sizes share the length left by the others in proportion
@@ -131,8 +139,21 @@ bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantB
 // the roof (sy = its height) and its geometry is a Polyhedron whose sloped faces are side
 // faces for Comp, whose ridge is a top edge and whose hips are side edges. `deadline`
 // as for offset.
+//
+// `options` (CityEngine's roofHip(angle, overhang), roofGable(angle, overhangX, overhangY),
+// roofShed(angle, index)): overhangs in metres, 0 or more, for hipped and gable roofs
+// (skeleton_roof.h's RoofOverhang: the sloped faces reach past the eaves and the gable
+// walls; the scope then spans the whole roof, below the footprint's plane too), and the
+// footprint edge a shed rises from (its outline's edge index, taken modulo the number of
+// edges; -1: the first edge).
+struct RoofOptions {
+  double overhang = 0.0;       // past the eaves, measured on the roof planes
+  double gableOverhang = 0.0;  // past the gable walls, measured horizontally
+  int edgeIndex = -1;
+};
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, double angleDeg,
-          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline = nullptr);
+          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline = nullptr,
+          const RoofOptions& options = {});
 
 // A shape's own surface as world polygons, each counter-clockwise seen from outside: a
 // flat shape (a Polygon, or a Box with no depth) is its one face, looking along the scope

@@ -27,14 +27,22 @@ enum FaceClass : unsigned {
   kRight = 32,
   kSide = kFront | kBack | kLeft | kRight,
   kAllFaces = 63,
-  // Besides its side (CityEngine's comp(f) selectors): a side face is vertical or aslant
-  // (a sloped roof face), so walls and roof slopes of one solid can go apart.
+  // Besides its side, CityEngine's comp(f) classes by the angle between the face's normal
+  // and the scope's xz plane: horizontal above 78.75 degrees (up or down), aslant from
+  // 11.25 to 78.75 (a roof slope), vertical within 11.25 of it (a wall), nutant from
+  // -11.25 to -78.75 (facing down, an overhang's underside).
   kVertical = 64,
   kAslant = 128,
+  kHorizontal = 256,
+  kNutant = 512,
 };
+// sin(11.25 degrees) and sin(78.75 degrees): CityEngine's bounds between those classes.
+constexpr double kSinVertical = 0.19509032201612825, kSinHorizontal = 0.98078528040323043;
 // An edge is top, bottom or side by its height along the scope's Y; on a roof (or any
-// solid) it is also an eave (at the bottom), a ridge (level, above it), a rake (sloped,
-// along a vertical face: a gable's edge), a hip (sloped, convex) or a valley (concave).
+// solid) it may also be an eave (level, the lowest edge of a sloped face), a ridge (level,
+// where two sloped faces meet convex), a rake (sloped, along a vertical face or a sloped
+// face's free border: a gable's edge), a hip (sloped, two sloped faces, convex) or a
+// valley (the same, concave).
 enum EdgeClass : unsigned {
   kTopEdge = 1, kBottomEdge = 2, kSideEdge = 4, kAllEdges = 7,
   kEave = 8, kRidge = 16, kRake = 32, kHip = 64, kValley = 128,
@@ -58,6 +66,7 @@ bool parseSelector(const std::string& s, Selector& sel) {
       {"faces", false, kAllFaces},  {"f", false, kAllFaces},     {"sidefaces", false, kSide},
       {"top", false, kTop},         {"bottom", false, kBottom},
       {"vertical", false, kVertical}, {"aslant", false, kAslant},
+      {"horizontal", false, kHorizontal}, {"nutant", false, kNutant},
       {"front", false, kFront},     {"back", false, kBack},
       {"left", false, kLeft},       {"right", false, kRight},
       {"edges", true, kAllEdges},   {"sideedges", true, kSideEdge},
@@ -121,9 +130,12 @@ std::vector<WorldFace> worldFaces(const Scope& scope, const GeomRef& geom,
 
 unsigned classifyFace(const Vec3& worldNormal, const Scope& scope) {
   const Vec3 n = scope.axes.transpose() * worldNormal;  // in the solid's frame
-  if (n.y() >= 1.0 - kHorizontalTol) return kTop;
-  if (n.y() <= -(1.0 - kHorizontalTol)) return kBottom;
-  const unsigned slope = std::abs(n.y()) <= kHorizontalTol ? kVertical : kAslant;
+  if (n.y() >= 1.0 - kHorizontalTol) return kTop | kHorizontal;
+  if (n.y() <= -(1.0 - kHorizontalTol)) return kBottom | kHorizontal;
+  const unsigned slope = std::abs(n.y()) > kSinHorizontal ? kHorizontal
+                         : n.y() > kSinVertical            ? kAslant
+                         : n.y() >= -kSinVertical          ? kVertical
+                                                           : kNutant;
   if (std::abs(n.z()) >= std::abs(n.x())) return slope | (n.z() > 0 ? kFront : kBack);
   return slope | (n.x() > 0 ? kRight : kLeft);
 }
@@ -290,23 +302,44 @@ std::vector<Part> vertexParts(const std::vector<WorldFace>& faces, double tol) {
   return out;
 }
 
-// The edge's roof class (EdgeClass) with `up` the roof's up and ha, hb its ends' heights.
-unsigned roofEdgeClass(const WorldEdge& e, const std::vector<WorldFace>& faces, const Vec3& up, double ha, double hb,
-                       double hmin, double tol) {
-  if (std::abs(ha - hmin) <= tol && std::abs(hb - hmin) <= tol) return kEave;
-  if (std::abs(ha - hb) <= tol) return kRidge;
-  if (e.faces[1] < 0) return 0;  // an open solid's border
-  const WorldFace& f = faces[size_t(e.faces[0])];
-  const WorldFace& g = faces[size_t(e.faces[1])];
+// The edge's roof class (EdgeClass) with `up` the roof's up, `origin` a point at height 0
+// and ha, hb its ends' heights.
+unsigned roofEdgeClass(const WorldEdge& e, const std::vector<WorldFace>& faces, const Vec3& up, const Vec3& origin,
+                       double ha, double hb, double tol) {
   constexpr double kVertical = 1e-6;  // |n . up| of a vertical face (a gable end)
-  if (std::abs(f.normal.dot(up)) < kVertical || std::abs(g.normal.dot(up)) < kVertical) return kRake;
-  // Convex (a hip) when the other face bends away below the first face's plane.
-  double farthest = 0;
-  for (const Vec3& p : g.pts) {
-    const double d = (p - e.a).dot(f.normal);
-    if (std::abs(d) > std::abs(farthest)) farthest = d;
+  auto sloped = [&](int face) {
+    const double c = face < 0 ? 0.0 : faces[size_t(face)].normal.dot(up);
+    return c > kVertical && c < 1.0 - kHorizontalTol;
+  };
+  auto vertical = [&](int face) { return face >= 0 && std::abs(faces[size_t(face)].normal.dot(up)) < kVertical; };
+  // Convex when the second face bends away below the first face's plane.
+  auto convex = [&] {
+    const WorldFace& f = faces[size_t(e.faces[0])];
+    double farthest = 0;
+    for (const Vec3& p : faces[size_t(e.faces[1])].pts) {
+      const double d = (p - e.a).dot(f.normal);
+      if (std::abs(d) > std::abs(farthest)) farthest = d;
+    }
+    return farthest < 0;
+  };
+  const bool two = e.faces[1] >= 0;
+  if (std::abs(ha - hb) <= tol) {
+    // Level: an eave where a sloped face lies above it, a ridge where two meet convex.
+    for (int face : e.faces) {
+      if (!sloped(face)) continue;
+      bool above = true;
+      for (const Vec3& p : faces[size_t(face)].pts) above &= (p - origin).dot(up) >= ha - tol;
+      if (above) return kEave;
+    }
+    if (two && sloped(e.faces[0]) && sloped(e.faces[1])) return convex() ? kRidge : kValley;
+    return 0;
   }
-  return farthest < 0 ? kHip : kValley;
+  if (std::abs(ha - hb) >= (e.b - e.a).norm() * (1.0 - kHorizontalTol)) return 0;  // upright: a wall's corner
+  // Along a gable wall, or an overhang's free border past it.
+  if (vertical(e.faces[0]) || vertical(e.faces[1])) return kRake;
+  if (!two) return sloped(e.faces[0]) ? unsigned(kRake) : 0u;
+  if (!sloped(e.faces[0]) || !sloped(e.faces[1])) return 0;
+  return convex() ? kHip : kValley;
 }
 
 }  // namespace
@@ -324,7 +357,7 @@ std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef
     if (flatAxis >= 0) {
       // A flat box: only its face looking along the positive axis it has no size in.
       if (!(f.normal.dot(scope.axes.col(flatAxis)) > 0.5)) continue;
-    } else if (geom.kind != GeomKind::Polygon && classifyFace(f.normal, scope) == kBottom) {
+    } else if (geom.kind != GeomKind::Polygon && (classifyFace(f.normal, scope) & kBottom)) {
       continue;
     }
     if (newellNormal(f.pts).dot(f.normal) < 0) std::reverse(f.pts.begin(), f.pts.end());
@@ -335,9 +368,24 @@ std::vector<std::vector<Vec3>> surfacePolygons(const Scope& scope, const GeomRef
 
 unsigned faceSelectorMask(const std::string& name) {
   if (name == "side") return kSide;
-  if (name == "all") return kAllFaces;
+  if (name == "all") return kAllFaces | kHorizontal | kNutant | kVertical | kAslant;
   Selector sel;
   return parseSelector(name, sel) && !sel.edges ? sel.mask : 0;
+}
+
+unsigned componentSelectorMask(const std::string& component, const std::string& name) {
+  Selector sel;
+  if (!parseSelector(component, sel) || !(sel.edges || sel.cityEngineAxes) || sel.vertices)
+    return faceSelectorMask(name);
+  static const struct {
+    const char* name;
+    unsigned mask;
+  } kEdgeLabels[] = {{"all", ~0u},        {"eave", kEave},     {"eaves", kEave},   {"ridge", kRidge},
+                     {"ridges", kRidge},  {"hip", kHip},       {"hips", kHip},     {"valley", kValley},
+                     {"valleys", kValley}, {"gable", kRake},   {"rake", kRake},    {"rakes", kRake}};
+  for (const auto& l : kEdgeLabels)
+    if (name == l.name) return l.mask;
+  return 0;
 }
 
 // `out` is replaced by the selected components, in the order of the solid's faces (a box:
@@ -349,7 +397,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   Selector sel;
   if (!parseSelector(selector, sel)) {
     error = "Comp: unknown selector \"" + selector +
-            "\" (expected faces, sidefaces, vertical, aslant, top, bottom, front, back, left, right, edges, "
+            "\" (expected faces, sidefaces, vertical, aslant, horizontal, nutant, top, bottom, front, back, left, right, edges, "
             "sideedges, topedges, bottomedges, eaves, ridges, rakes, hips, valleys, e or v)";
     return false;
   }
@@ -363,8 +411,15 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
     out = vertexParts(faces, tol);
     return true;
   }
+  auto edgeClass = [&](const WorldEdge& e) {
+    const double ha = (e.a - scope.P).dot(scope.Y()), hb = (e.b - scope.P).dot(scope.Y());
+    return roofEdgeClass(e, faces, scope.Y(), scope.P, ha, hb, tol);
+  };
   if (sel.cityEngineAxes) {
-    for (const WorldEdge& e : uniqueEdges(faces, tol)) out.push_back(cityEngineEdgePart(e));
+    for (const WorldEdge& e : uniqueEdges(faces, tol)) {
+      out.push_back(cityEngineEdgePart(e));
+      out.back().faceClass = edgeClass(e);  // for labelled parts (componentSelectorMask)
+    }
     return true;
   }
 
@@ -391,8 +446,11 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
       cls = kTopEdge;
     else if (std::abs(ha - hmin) <= tol && std::abs(hb - hmin) <= tol)
       cls = kBottomEdge;
-    cls |= roofEdgeClass(e, faces, scope.Y(), ha, hb, hmin, tol);
-    if (cls & sel.mask) out.push_back(edgePart(e, scope, tol));
+    cls |= edgeClass(e);
+    if (cls & sel.mask) {
+      out.push_back(edgePart(e, scope, tol));
+      out.back().faceClass = cls;
+    }
   }
   return true;
 }

@@ -118,7 +118,8 @@ std::vector<Polygon3> roofFaces(RoofKind kind, double w, double d, double h) {
 // the hips of a hipped roof and the faces of a pyramid on a non-square rectangle follow
 // from that height. A shed rises from the first edge (the rectangle's back, -Z, edge).
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
-          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline) {
+          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline,
+          const RoofOptions& options) {
   RoofKind kind;
   if (!parseKind(kindName, kind)) {
     error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid or shed)";
@@ -134,6 +135,23 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     error = "Roof: expects a footprint or a mass model, got an edge";
     return false;
   }
+  for (const double o : {options.overhang, options.gableOverhang})
+    if (!(o >= 0.0 && std::isfinite(o))) {
+      std::ostringstream m;
+      m << "Roof: the overhang " << o << " must be a number of metres, 0 or more";
+      error = m.str();
+      return false;
+    }
+  const bool overhangs = options.overhang > 0.0 || options.gableOverhang > 0.0;
+  if (overhangs && (kind == RoofKind::Pyramid || kind == RoofKind::Shed)) {
+    error = kind == RoofKind::Shed ? "Roof: a shed roof has no overhang (hipped and gable roofs do)"
+                                   : "Roof: a pyramid roof has no overhang (hipped and gable roofs do)";
+    return false;
+  }
+  if (options.edgeIndex >= 0 && kind != RoofKind::Shed) {
+    error = "Roof: only a shed roof takes the index of the edge it rises from";
+    return false;
+  }
   out = Part{};
   out.scope = geom.kind == GeomKind::Polygon ? solidFrameOnPolygon(scope) : scope;
   const double w = out.scope.S.x(), d = out.scope.S.z();
@@ -146,23 +164,37 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
   std::vector<Vec2> outer;
   std::vector<std::vector<Vec2>> holes;
   bool onPolygon = footprintRings(out.scope, geom, arena, outer, holes);
-  if (!onPolygon && kind == RoofKind::Shed) outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
+  // The rectangle's closed forms have no overhangs: an overhanging roof on it is built as
+  // on any polygon (the same roof, its faces in the skeleton's order).
+  if (!onPolygon && (kind == RoofKind::Shed || overhangs)) outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
+  if (options.edgeIndex > 0) {
+    const size_t first = size_t(options.edgeIndex) % outer.size();
+    std::rotate(outer.begin(), outer.begin() + long(first), outer.end());
+  }
   std::vector<Polygon3> faces;
   double h = 0.0;
   if (!onPolygon) {
     h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
     faces = roofFaces(kind, w, d, h);
-  } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error, nullptr, deadline)) {
+  } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error, nullptr, deadline,
+                           RoofOverhang{options.overhang, options.gableOverhang})) {
     return false;
   }
   if (!(h > 0.0)) {
     error = "Roof: the roof has no height";
     return false;
   }
-  out.scope.S.y() = h;
-  const Vec3 inv(1.0 / w, 1.0 / h, 1.0 / d);
+  // The scope spans the roof: the footprint's rectangle up to the ridge, or with overhangs
+  // the box around every face (the eaves reach out and down past the footprint).
+  Vec3 lo = Vec3::Zero(), hi(w, h, d);
+  if (overhangs)
+    for (const Polygon3& f : faces)
+      for (const Vec3& p : f) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  out.scope.P += out.scope.axes * lo;
+  out.scope.S = hi - lo;
+  const Vec3 inv = out.scope.S.cwiseInverse();
   for (Polygon3& f : faces)
-    for (Vec3& p : f) p = p.cwiseProduct(inv);
+    for (Vec3& p : f) p = (p - lo).cwiseProduct(inv);
   out.geom = arena.addPolyhedron(faces);
   return true;
 }

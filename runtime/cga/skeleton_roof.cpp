@@ -385,8 +385,9 @@ bool gableTop(const Footprint& fp, int e, double slope, Vec3& top) {
   return true;
 }
 
-// Turns the ends of wings (see the header) into vertical gables.
-void makeGables(const Footprint& fp, double slope, RoofMesh& mesh) {
+// Turns the ends of wings (see the header) into vertical gables. Returns, for each edge,
+// its gable's top (a mesh point) or -1 where the edge keeps a sloped face.
+std::vector<int> makeGables(const Footprint& fp, double slope, RoofMesh& mesh) {
   const int edges = fp.count;
   std::vector<std::vector<int>> facesAt(mesh.points.size());
   for (int e = 0; e < edges; ++e)
@@ -477,6 +478,59 @@ void makeGables(const Footprint& fp, double slope, RoofMesh& mesh) {
     removeRepeats(faces[e]);
   }
   mesh.faces.swap(faces);
+  return gable;
+}
+
+// The point p of the plan at signed distances -d1 from edge e1's line and -d2 from e2's
+// (outside the footprint by d1, d2), where the two lines cross; along the outward normal
+// when they are parallel (a straight corner).
+Vec2 outsideBoth(const Footprint& fp, int e1, double d1, int e2, double d2) {
+  const Vec2 a1 = fp.point(e1), u1 = (fp.point(fp.next(e1)) - a1).normalized();
+  const Vec2 a2 = fp.point(e2), u2 = (fp.point(fp.next(e2)) - a2).normalized();
+  // inside(e, p) = cross(u, p - a) = -d  <=>  u.x p.y - u.y p.x = cross(u, a) - d
+  const double c1 = cross(u1, a1) - d1, c2 = cross(u2, a2) - d2, det = cross(u1, u2);
+  if (std::abs(det) <= 1e-12) return fp.point(e2) + Vec2(u1.y(), -u1.x()) * d1;
+  return Vec2((c1 * u2.x() - c2 * u1.x()) / det, (c1 * u2.y() - c2 * u1.y()) / det);
+}
+
+// CityEngine's overhangs (RoofOverhang in the header): the sloped faces' footprint corners
+// and gable tops move out along the lines where the faces meet (hips, valleys, ridges),
+// extended; gable walls and the bottom keep the points they had.
+void addOverhangs(const Footprint& fp, double angleRad, const RoofOverhang& overhang, const std::vector<int>& gable,
+                  RoofMesh& mesh) {
+  const int edges = fp.count;
+  const double slope = std::tan(angleRad), out = overhang.eaves * std::cos(angleRad),
+               drop = overhang.eaves * std::sin(angleRad);
+  auto isGable = [&](int e) { return !gable.empty() && gable[e] >= 0; };
+  auto reach = [&](int e) { return isGable(e) ? overhang.gables : out; };
+  std::map<int, int> moved;  // old point -> the point the sloped faces take
+  for (int v = 0; v < edges; ++v) {
+    const int before = fp.prev(v);
+    const Vec2 p = outsideBoth(fp, before, reach(before), v, reach(v));
+    const double y = isGable(before) && isGable(v) ? 0.0 : -drop;
+    moved[v] = static_cast<int>(mesh.points.size());
+    mesh.points.push_back(toSpace(p, y));
+  }
+  for (int g = 0; g < edges && overhang.gables > 0.0; ++g) {
+    if (!isGable(g)) continue;
+    // The ridge (where the neighbours' planes meet: equal distances from their lines)
+    // meets the plane `gables` outside the gable wall.
+    const int b = fp.prev(g), a = fp.next(g);
+    const Vec2 pb = fp.point(b), ub = (fp.point(fp.next(b)) - pb).normalized();
+    const Vec2 pa = fp.point(a), ua = (fp.point(fp.next(a)) - pa).normalized();
+    const Vec2 pg = fp.point(g), ug = (fp.point(fp.next(g)) - pg).normalized();
+    const Vec2 w = ub - ua;
+    const double c1 = cross(ub, pb) - cross(ua, pa), c2 = cross(ug, pg) - overhang.gables, det = cross(w, ug);
+    if (std::abs(det) <= 1e-12) continue;
+    const Vec2 q((c1 * ug.x() - c2 * w.x()) / det, (c1 * ug.y() - c2 * w.y()) / det);
+    moved[gable[g]] = static_cast<int>(mesh.points.size());
+    mesh.points.push_back(toSpace(q, fp.inside(b, q) * slope));
+  }
+  for (int e = 0; e < edges; ++e) {
+    if (isGable(e)) continue;
+    for (int& p : mesh.faces[e])
+      if (const auto found = moved.find(p); found != moved.end()) p = found->second;
+  }
 }
 
 bool pyramidRoof(const Footprint& fp, double slope, RoofMesh& mesh, std::string& error) {
@@ -523,7 +577,8 @@ double maxHeight(const std::vector<Polygon3>& faces) {
 
 bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                   SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
-                  double& height, std::string& error, std::vector<int>* faceEdges, const Deadline* deadline) {
+                  double& height, std::string& error, std::vector<int>* faceEdges, const Deadline* deadline,
+                  const RoofOverhang& overhang) {
   if (!(angleDeg > 0.0 && angleDeg < 90.0)) {
     std::ostringstream m;
     m << "Roof: the angle " << angleDeg << " must lie strictly between 0 and 90 degrees";
@@ -572,7 +627,10 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
     const bool built = kind == SkeletonRoofKind::Pyramid ? pyramidRoof(fp, slope, mesh, error)
                                                          : hippedRoof(fp, slope, mesh, error, deadline);
     if (!built) return false;
-    if (kind == SkeletonRoofKind::Gable) makeGables(fp, slope, mesh);
+    std::vector<int> gables;
+    if (kind == SkeletonRoofKind::Gable) gables = makeGables(fp, slope, mesh);
+    if (kind != SkeletonRoofKind::Pyramid && (overhang.eaves > 0.0 || overhang.gables > 0.0))
+      addOverhangs(fp, angleDeg * kPi / 180.0, overhang, gables, mesh);
     for (int number = 0; number < fp.count; ++number) {
       Polygon3 face;
       for (int p : mesh.faces[byNumber[number]]) face.push_back(mesh.points[p]);

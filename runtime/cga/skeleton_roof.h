@@ -69,10 +69,23 @@ constexpr int kInlineSkeletonCorners = 96;
 // the kind's conditions above, CGAL failing to build the straight skeleton.
 // `deadline` (--max-seconds): rt::TimeLimitReached when it passes while the skeleton is
 // built.
+//
+// `overhang` (CityEngine's roofHip/roofGable overhangs; Hipped and Gable only, ignored by
+// the others): every sloped face reaches past its eave by `eaves` metres measured on its
+// own plane, perpendicular to the edge (its eave line moves out by eaves * cos(angle) and
+// down by eaves * sin(angle)), and past a gable wall by `gables` metres measured
+// horizontally, perpendicular to the gable's edge. Neighbouring faces keep meeting along
+// their hips, valleys and ridges, extended. Gable walls and the bottom stay on the
+// footprint, so such a roof is a sheet of sloped faces over them, no longer a closed solid.
+struct RoofOverhang {
+  double eaves = 0.0;
+  double gables = 0.0;
+};
+
 bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                   SkeletonRoofKind kind, double angleDeg, std::vector<Polygon3>& faces,
                   double& height, std::string& error, std::vector<int>* faceEdges = nullptr,
-                  const Deadline* deadline = nullptr);
+                  const Deadline* deadline = nullptr, const RoofOverhang& overhang = {});
 
 // A footprint with holes (a courtyard) as one polygon, (x, z) points counter-clockwise
 // seen from above: each hole joined to the outline by a zero-width bridge that the

@@ -133,6 +133,11 @@ TEST_CASE("Labelled parts belong to Comp, name faces, and label every part", "[s
   CHECK(has(some, "E018"));
   auto edges = analyse("Lot ~> S(4, 3, 2) Comp(\"edges\"){ top: A };");
   CHECK(has(edges, "E028"));
+  // Edges take their roof classes as labels (issue #44); faces CityEngine's angle classes.
+  CHECK(analyse("Lot ~> S(4, 3, 2) Comp(\"e\"){ eave: A | ridge: B | hip: C | valley: D | gable: E | all: F };").ok);
+  CHECK(analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ horizontal: A | nutant: B };").ok);
+  CHECK(has(analyse("Lot ~> S(4, 3, 2) Comp(\"e\"){ eave: A | front: B };"), "E028", 1, 40));
+  CHECK(has(analyse("Lot ~> S(4, 3, 2) Comp(\"f\"){ eave: A };"), "E028", 1, 30));
 }
 
 TEST_CASE("CGA split syntax: sizes on the parts and repeated patterns", "[sema]") {
