@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
+#include <tuple>
 
 namespace fgsg::cli::lsp {
 namespace {
@@ -40,6 +42,7 @@ SourceRange writtenAt(const std::string& line, int lineNumber, int fromCol, cons
 
 void collectDefinitions(Analysis& a) {
   const int documentLines = a.documentLines();
+  std::set<std::tuple<std::string, int, int>> seen;
   auto add = [&](Definition::Kind kind, const std::string& name, const SourceRange& range, const SourceLoc& from) {
     const std::string shown = frontend::symbolDisplayName(name);
     // A .cga rule's helpers (`Roof$1`) are the translator's, not the user's.
@@ -52,9 +55,9 @@ void collectDefinitions(Analysis& a) {
     const std::string written = dot == std::string::npos ? shown : shown.substr(dot + 1);
     const SourceRange nameRange = writtenAt(a.source.lines[from.line - 1], from.line, from.col, written);
     if (nameRange.begin.line == 0) return;
-    for (const auto& d : a.definitions)
-      if (d.name == shown && d.nameRange.begin.line == nameRange.begin.line && d.nameRange.begin.col == nameRange.begin.col)
-        return;
+    // Once per name and place (a .cga rule's translation repeats its head); a set, not a
+    // search of the list, which was quadratic: 2 000 rules took 3 % of a change.
+    if (!seen.insert({shown, nameRange.begin.line, nameRange.begin.col}).second) return;
     a.definitions.push_back({kind, shown, ordered(range), nameRange, range.begin.line <= documentLines});
   };
   for (const auto& rule : a.program.rules)
