@@ -214,6 +214,10 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
     out.kind = PageRequest::Kind::Paint;
     return parsePaint(j, out.paint, reason);
   }
+  if (kind == "field") {  // the field overlay (view_field.h)
+    out.kind = PageRequest::Kind::Field;
+    return onlyFields(j, {}, kind, reason);
+  }
   if (kind == "undo" || kind == "redo") {
     out.kind = kind == "undo" ? PageRequest::Kind::Undo : PageRequest::Kind::Redo;
     return onlyFields(j, {}, kind, reason);

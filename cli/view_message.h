@@ -7,6 +7,7 @@
 //   {"type":"paint", "texture":"NAME", "stroke":N, "dabs":[[x,y,z], ...], "radius":R,
 //    "strength":S, "value":G, "erase":false}                       (a brush stroke, #49)
 //   {"type":"undo"}, {"type":"redo"}                               (the last paint stroke)
+//   {"type":"field"}                                   (the field overlay, view_field.h)
 // Whether each name is an attribute of the grammar, and each value one of its kind, the
 // session checks against the grammar it has compiled.
 #pragma once
@@ -46,7 +47,7 @@ struct PagePaint {
 };
 
 struct PageRequest {
-  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo };
+  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field };
   Kind kind = Kind::Set;
   bool hasAttrs = false;  // set: the page's values replace all earlier ones
   std::vector<std::pair<std::string, std::string>> attrs;  // name, value as --set writes it

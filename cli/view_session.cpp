@@ -7,6 +7,7 @@
 #include "cli/derive_stats.h"
 #include "cli/grammar_files.h"
 #include "cli/options.h"
+#include "cli/view_field.h"
 #include "cli/view_message.h"
 #include "cli/view_scene.h"
 #include "cli/view_surface.h"
@@ -104,6 +105,7 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   std::string reason;
   if (!parsePageRequest(text, request, reason)) return reject(page, reason);
   if (request.kind == PageRequest::Kind::Pick) return pick(page, request.instance);
+  if (request.kind == PageRequest::Kind::Field) return askField(page);
   if (request.kind != PageRequest::Kind::Set) return editFiles(page, request);
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = pages_.find(page);
@@ -121,6 +123,42 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   if (request.hasSeed) p.seed = request.seed;
   p.pending = true;
   wake_.notify_all();
+}
+
+void ViewSession::askField(uint64_t page) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = pages_.find(page);
+  if (it == pages_.end()) return;
+  it->second.fieldAsked = it->second.fieldDue = true;
+  wake_.notify_all();
+}
+
+void ViewSession::sendFields(bool recompiled) {
+  if (recompiled) field_.clear();  // computed again when next asked for
+  std::vector<uint64_t> due;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto& [id, p] : pages_) {
+      if (recompiled && p.fieldAsked) p.fieldDue = true;  // the grammar changed: its field again
+      if (p.fieldDue) due.push_back(id), p.fieldDue = false;
+    }
+  }
+  if (due.empty()) return;
+  if (field_.empty()) {
+    if (!compiled_) {
+      field_ = Json{{"type", "field"}, {"error", "the grammar has not compiled"}}.dump();
+    } else {
+      try {
+        field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file));
+      } catch (const std::exception& e) {  // out of memory ...
+        field_ = Json{{"type", "field"}, {"error", e.what()}}.dump();
+      }
+    }
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (uint64_t page : due)
+    if (pages_.count(page)) server_.sendText(page, field_);
+  if (!compiled_) field_.clear();  // asked again once it compiles
 }
 
 void ViewSession::editFiles(uint64_t page, const PageRequest& request) {
@@ -211,7 +249,7 @@ void ViewSession::checkFiles() {
 
 void ViewSession::work() {
   for (;;) {
-    bool recompile = false;
+    bool recompile = false, recompiled = false;
     struct Group {
       std::map<std::string, std::string> attrs;
       uint64_t seed;
@@ -223,7 +261,7 @@ void ViewSession::work() {
       std::unique_lock<std::mutex> lock(mutex_);
       auto anyPending = [this] {
         for (const auto& [id, p] : pages_)
-          if (p.pending) return true;
+          if (p.pending || p.fieldDue) return true;
         return false;
       };
       wake_.wait(lock, [&] { return stopping_ || anyPending(); });
@@ -239,6 +277,7 @@ void ViewSession::work() {
         g.seed = p.seed;
         g.pages.push_back(id);
       }
+      if (groups.empty()) recompile_ = recompile;  // woken for a field overlay only: the next derivation compiles
     }
     for (auto& [key, g] : groups) {
       const std::string progress = Json{{"type", "progress"}, {"state", "deriving"}}.dump();
@@ -250,6 +289,7 @@ void ViewSession::work() {
         d = std::make_shared<Derived>();
         d->error = options_.file + ": " + e.what();
       }
+      if (recompile) recompiled = true;
       recompile = false;
       std::lock_guard<std::mutex> lock(mutex_);
       for (uint64_t page : g.pages) {
@@ -258,6 +298,7 @@ void ViewSession::work() {
         if (it != pages_.end() && !it->second.pending) send(page, it->second, d);
       }
     }
+    sendFields(recompiled);
   }
 }
 

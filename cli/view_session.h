@@ -17,9 +17,10 @@
 //                  {"type":"surface", "triangles", "textures":[{name, width, height, why}]},
 //                   then binary: the surface as .glb (view_surface.h), for seeds and paint
 //                  {"type":"written", "file"}: a seed file or texture the page's edit wrote
+//                  {"type":"field", ...}: the field overlay (view_field.h), asked for
 //   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
 //                  {"type":"pick", "instance":N}
-//                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}
+//                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}, {"type":"field"}
 //                                                          (checked first: view_message.h)
 // Seeds and painted textures are files, so they are the session's, not a page's: an
 // edit re-derives every page (#49).
@@ -87,6 +88,7 @@ class ViewSession {
     std::string infoSent;
     std::shared_ptr<const Derived> model;  // its last good model, for picking
     const void* surfaceSent = nullptr;
+    bool fieldAsked = false, fieldDue = false;  // the field overlay: wanted, owed (view_field.h)
   };
 
   void work();
@@ -100,6 +102,9 @@ class ViewSession {
   void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
+  void askField(uint64_t page);  // {"type":"field"}: the overlay now and after each recompile
+  // The overlay to the pages owed it, computed once per compile (worker).
+  void sendFields(bool recompiled);
   std::string infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed, const ViewSeeds& seeds) const;
   // The grammar, its folder and assets/, and the data files it names (grammarDataFiles).
   std::map<std::string, std::filesystem::file_time_type> watchedFiles(const std::vector<std::string>& data) const;
@@ -113,6 +118,7 @@ class ViewSession {
   // (a seed or paint edit); any other starts afresh (worker only).
   std::unique_ptr<backend::SurfaceReuse> surfaceReuse_;
   std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
+  std::string field_;  // the field overlay's message for compiled_; empty: not computed (worker only)
 
   std::mutex mutex_;  // guards what follows
   std::condition_variable wake_;

@@ -9,6 +9,7 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { createSeeds } from './seeds.js';
 import { createPaint } from './paint.js';
 import { createViewTools } from './view_tools.js';
+import { createFieldOverlay } from './field_overlay.js';
 
 const $ = (id) => document.getElementById(id);
 // timing: when the last change was sent, its model announced, its bytes received and
@@ -247,6 +248,7 @@ const ctx = {
 const seeds = createSeeds(ctx);
 const paint = createPaint(ctx);
 const tools = createViewTools(ctx);
+const fieldOverlay = createFieldOverlay(ctx);
 // What the browser tests read besides `state`.
 state.hooks = {
   wireframeCount: () => tools.wireframeCount(),
@@ -406,6 +408,8 @@ ws.onmessage = (event) => {
   } else if (m.type === 'written') {
     state.written.push(m.file);
     setStatus('wrote ' + m.file + ', deriving', 'deriving');
+  } else if (m.type === 'field') {
+    fieldOverlay.show(m);
   } else if (m.type === 'picked') {
     showPicked(m);
   } else if (m.type === 'model') {

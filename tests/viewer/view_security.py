@@ -397,6 +397,7 @@ def edit_attacks():
             '{"type":"seeds","seeds":"0,0,1"}',
             '{"type":"undo"}',
             '{"type":"redo","count":100}',
+            '{"type":"field","file":"/etc/passwd"}',  # the overlay names no file: an unknown field
         ]
         for text in bad:
             ws.send(text)
