@@ -29,6 +29,7 @@ TUTORIALS = {
     "11": [T + "/11_street.cga", "--lots", L + "/street40x12.geojson"],
     "12": [T + "/12_zoning.cga", "--lots", L + "/block.geojson"],
     "13": [T + "/13_courtyard.cga", "--lots", L + "/block30x24.geojson"],
+    "14": [T + "/14_roof_overhangs.cga", "--lots", L + "/lot20x12.geojson"],
 }
 SIZE = (480, 360)
 
