@@ -7,8 +7,10 @@ namespace fgsg::frontend {
 using antlr4::Token;
 using fgsg_grammar::FgsgLexer;
 
-bool isQueryModuleName(const std::string& name) {
-  return name == "?P" || name == "?H" || name == "?U" || name == "?L";
+bool isQueryModuleName(const std::string& name, bool letterOnly) {
+  if (!letterOnly && (name.size() != 2 || name[0] != '?')) return false;
+  const std::string letter = letterOnly ? name : name.substr(1);
+  return letter == "P" || letter == "H" || letter == "U" || letter == "L";
 }
 
 void joinQueryModules(std::vector<std::unique_ptr<Token>>& tokens) {
@@ -18,11 +20,13 @@ void joinQueryModules(std::vector<std::unique_ptr<Token>>& tokens) {
   for (size_t i = 0; i < tokens.size(); ++i) {
     Token* t = tokens[i].get();
     if (t->getType() == FgsgLexer::QUESTION && i + 2 < tokens.size() && tokens[i + 1]->getType() == FgsgLexer::ID &&
-        isQueryModuleName("?" + tokens[i + 1]->getText()) && tokens[i + 2]->getType() == FgsgLexer::LPAREN &&
+        isQueryModuleName(tokens[i + 1]->getText(), true) && tokens[i + 2]->getType() == FgsgLexer::LPAREN &&
         adjacent(t, tokens[i + 1].get()) && adjacent(tokens[i + 1].get(), tokens[i + 2].get())) {
       auto* joined = static_cast<antlr4::CommonToken*>(t);
       joined->setType(FgsgLexer::ID);
-      joined->setText("?" + tokens[i + 1]->getText());
+      std::string name = "?";  // appended, not "?" + ...: GCC 12 gives a false -Wrestrict on the prepend
+      name += tokens[i + 1]->getText();
+      joined->setText(name);
       joined->setStopIndex(tokens[i + 1]->getStopIndex());
       out.push_back(std::move(tokens[i]));
       ++i;

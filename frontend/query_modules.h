@@ -17,7 +17,8 @@ namespace fgsg::frontend {
 
 void joinQueryModules(std::vector<std::unique_ptr<antlr4::Token>>& tokens);
 
-// Whether `name` is a query module's (`?P`, `?H`, `?U`, `?L`).
-bool isQueryModuleName(const std::string& name);
+// Whether `name` is a query module's (`?P`, `?H`, `?U`, `?L`), or with `letterOnly` its
+// letter (`P` ...).
+bool isQueryModuleName(const std::string& name, bool letterOnly = false);
 
 }  // namespace fgsg::frontend

@@ -15,6 +15,24 @@
 
 namespace fgsg::frontend::sema_detail {
 
+namespace {
+
+// ABOP's strings of one-letter and digit modules written together (Fig. 1.31's F1F1F1):
+// two or more letter-and-digits groups.
+bool looksLikeGluedDigitModules(const std::string& name) {
+  size_t groups = 0, i = 0;
+  while (i < name.size()) {
+    if (!std::isalpha(static_cast<unsigned char>(name[i++]))) return false;
+    const size_t digits = i;
+    while (i < name.size() && std::isdigit(static_cast<unsigned char>(name[i]))) ++i;
+    if (i == digits) return false;
+    ++groups;
+  }
+  return groups >= 2;
+}
+
+}  // namespace
+
 void Analyzer::checkStart() {
   if (prog_.axioms.size() > 1)
     diags_.error("E024", prog_.axioms[1].range, "only one axiom may be declared");
@@ -131,7 +149,10 @@ void Analyzer::checkReachability() {
     else if (s.reachable && s.rules.empty() && !findCommand(s.name) && !basePiece[si] &&
              !isQueryModuleName(s.name)) {  // a query module holds values; it draws nothing by design
       const std::string op = nearOperation(s);
-      const std::string opHint = op.empty() ? "" : "; did you mean the operation '" + op + "'?";
+      std::string opHint = op.empty() ? "" : "; did you mean the operation '" + op + "'?";
+      if (op.empty() && res_.mode == "parallel" && looksLikeGluedDigitModules(s.name))
+        opHint = "; ABOP writes modules without spaces and with digit names (F1F1F1): fgsg reads '" + s.name +
+                 "' as one name; separate the modules with spaces and name digit modules with letters";
       if (!(cga && res_.mode != "parallel"))
         diags_.warning("W001", s.firstUse,
                        "'" + s.name + "' has no rule: it stays a terminal shape and places no "

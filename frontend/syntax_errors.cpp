@@ -197,16 +197,51 @@ SourceRange errorRange(Parser* parser, const Token* t) {
   return t ? tokenRange(t) : SourceRange{};
 }
 
+// ABOP's digit modules (Fig. 1.31: `0 < 0 > 1 -> 1[+F1F1]`): fgsg's names start with a
+// letter, so a whole number where a module would stand is what broke the statement — one
+// that starts with it, or one in an axiom or a successor. Returns that number, or null.
+// The number is the failing token or the one before it (`1 [` after an arrow), and not
+// a probability or an argument (after ':', inside ( ) or { }).
+const Token* digitModule(Parser* parser, const Token* first, const Token* at) {
+  if (!first) return nullptr;
+  if (first->getType() == FgsgParser::INT) return first;
+  if (!at || at->getTokenIndex() == INVALID_INDEX || at->getTokenIndex() <= first->getTokenIndex()) return nullptr;
+  antlr4::TokenStream* tokens = parser->getTokenStream();
+  const Token* number = at->getType() == FgsgParser::INT ? at : tokens->get(at->getTokenIndex() - 1);
+  if (number->getType() != FgsgParser::INT || number->getTokenIndex() <= first->getTokenIndex()) return nullptr;
+  const size_t before = tokens->get(number->getTokenIndex() - 1)->getType();
+  if (before == FgsgParser::COLON || before == FgsgParser::COMMA || before == FgsgParser::LPAREN) return nullptr;
+  bool successor = first->getType() == FgsgParser::AXIOM;
+  int depth = 0;  // inside ( ) or { } a number is an argument
+  for (size_t i = first->getTokenIndex(); i < number->getTokenIndex(); ++i) {
+    const size_t type = tokens->get(i)->getType();
+    successor |= type == FgsgParser::ARROW;
+    if (type == FgsgParser::LPAREN || type == FgsgParser::LBRACE) ++depth;
+    if (type == FgsgParser::RPAREN || type == FgsgParser::RBRACE) --depth;
+  }
+  return successor && depth <= 0 ? number : nullptr;
+}
+
 }  // namespace
 
 void SyntaxErrorStrategy::report(Parser* parser, Token* at, const std::string& message) {
+  std::string code = "E002", text = message;
+  SourceRange range = errorRange(parser, at);
+  const Token* first = probeStatementStart_ ? probeStatementStart_ : statementStart(parser);
+  if (const Token* digit = digitModule(parser, first, at)) {
+    code = "E048";
+    text = "the number '" + digit->getText() +
+           "' cannot be a module: ABOP's digit module names (Fig. 1.31's 0 and 1) are not supported, fgsg's "
+           "names start with a letter; write letters (a for 0, b for 1)";
+    range = tokenRange(digit);
+  }
   if (probeResult_) {
-    if (probeResult_->message.empty()) *probeResult_ = {Severity::Error, "E002", message, errorRange(parser, at)};
+    if (probeResult_->message.empty()) *probeResult_ = {Severity::Error, code, text, range};
     return;
   }
   if (reportedInStatement_) return;
   reportedInStatement_ = true;
-  diags_.error("E002", errorRange(parser, at), message);
+  diags_.error(code, range, text);
 }
 
 void SyntaxErrorStrategy::reset(Parser* parser) {
@@ -243,7 +278,7 @@ bool SyntaxErrorStrategy::explainAsSuccessor(Parser* parser, const antlr4::NoVia
                      (found.range.begin.line == failedAt.begin.line && found.range.begin.col >= failedAt.begin.col);
   if (found.message.empty() || !asFar) return false;
   reportedInStatement_ = true;
-  diags_.error("E002", found.range, found.message);
+  diags_.error(found.code, found.range, found.message);
   return true;
 }
 

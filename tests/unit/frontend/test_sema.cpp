@@ -522,3 +522,21 @@ TEST_CASE("Synthesize names its parts' symbol only for a polygonal example", "[s
   auto part = analyse("A ~> Comp(\"f\"){ slanted: B };\nB ~> I(\"cube\");");
   CHECK(has(part, "E028", 1, 17));
 }
+
+TEST_CASE("L-system hints: ABOP's modules written together, query modules without rules", "[sema]") {
+  const auto says = [](const Analysed& a, const std::string& code, const std::string& text) {
+    for (const auto& d : a.diags)
+      if (d.code == code && d.message.find(text) != std::string::npos) return true;
+    return false;
+  };
+  // ABOP's F1F1F1 (Fig. 1.31) is one name in fgsg: its W001 says how to write it.
+  auto glued = analyse("derive parallel 2;\naxiom: F1F1F1;");
+  CHECK(says(glued, "W001", "separate the modules with spaces"));
+  auto word = analyse("derive parallel 2;\naxiom: Floor2;");
+  CHECK(has(word, "W001"));
+  CHECK_FALSE(says(word, "W001", "separate the modules"));
+  // A query module holds the turtle's values and draws nothing: no W001 without rules.
+  auto query = analyse("derive parallel 2;\naxiom: A ?P(0, 0, 0);\nA > ?P(x, y, z) : y < 3 -> F A;");
+  CHECK(query.ok);
+  CHECK_FALSE(has(query, "W001"));
+}
