@@ -153,6 +153,8 @@ void Analyzer::checkReachability() {
       if (op.empty() && res_.mode == "parallel" && looksLikeGluedDigitModules(s.name))
         opHint = "; ABOP writes modules without spaces and with digit names (F1F1F1): fgsg reads '" + s.name +
                  "' as one name; separate the modules with spaces and name digit modules with letters";
+      if (op.empty() && res_.mode == "parallel" && s.name == "_")
+        opHint = "; L-Py's and lpfg's width symbol '_' is not a turtle command in fgsg: set the width with !(w)";
       if (!(cga && res_.mode != "parallel"))
         diags_.warning("W001", s.firstUse,
                        "'" + s.name + "' has no rule: it stays a terminal shape and places no "

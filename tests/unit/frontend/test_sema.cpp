@@ -535,6 +535,9 @@ TEST_CASE("L-system hints: ABOP's modules written together, query modules withou
   auto word = analyse("derive parallel 2;\naxiom: Floor2;");
   CHECK(has(word, "W001"));
   CHECK_FALSE(says(word, "W001", "separate the modules"));
+  // L-Py's and lpfg's '_' (width) is an ordinary name in fgsg: its W001 points at !(w).
+  auto underscore = analyse("derive parallel 2;\naxiom: F _ F;");
+  CHECK(says(underscore, "W001", "set the width with !(w)"));
   // A query module holds the turtle's values and draws nothing: no W001 without rules.
   auto query = analyse("derive parallel 2;\naxiom: A ?P(0, 0, 0);\nA > ?P(x, y, z) : y < 3 -> F A;");
   CHECK(query.ok);
