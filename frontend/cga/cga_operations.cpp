@@ -378,13 +378,10 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
       notSupported(rangeOf(argCtx[even]), name + "'s even roof (non-planar faces)");
       return;
     }
-    if (gable && argCtx.size() > first + 4) {
-      notSupported(rangeOf(argCtx[first + 4]), "roofGable's ridge index");
-      return;
-    }
     std::vector<ExprPtr> args;
     for (size_t k = first; k < argCtx.size() && k < (gable ? first + 3 : hip ? first + 2 : argCtx.size()); ++k)
       args.push_back(expr(argCtx[k], env));
+    if (gable && argCtx.size() > first + 4) args.push_back(expr(argCtx[first + 4], env));  // the ridge index
     if (!allOk(args)) return;
     if (shed && args.size() == 2) {
       // Roof("shed", angle, 0, 0, index): no overhangs before the edge index.

@@ -144,8 +144,9 @@ bool offset(const Scope& scope, const GeomRef& geom, double distance, bool wantB
 // roofShed(angle, index)): overhangs in metres, 0 or more, for hipped and gable roofs
 // (skeleton_roof.h's RoofOverhang: the sloped faces reach past the eaves and the gable
 // walls; the scope then spans the whole roof, below the footprint's plane too), and the
-// footprint edge a shed rises from (its outline's edge index, taken modulo the number of
-// edges; -1: the first edge).
+// footprint edge a shed rises from or a gable's ridge runs along (a convex quadrilateral's;
+// its outline's edge index, taken modulo the number of edges; -1: the first edge, the
+// skeleton's own ridge).
 struct RoofOptions {
   double overhang = 0.0;       // past the eaves, measured on the roof planes
   double gableOverhang = 0.0;  // past the gable walls, measured horizontally

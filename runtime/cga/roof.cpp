@@ -148,8 +148,8 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
                                    : "Roof: a pyramid roof has no overhang (hipped and gable roofs do)";
     return false;
   }
-  if (options.edgeIndex >= 0 && kind != RoofKind::Shed) {
-    error = "Roof: only a shed roof takes the index of the edge it rises from";
+  if (options.edgeIndex >= 0 && kind != RoofKind::Shed && kind != RoofKind::Gable) {
+    error = "Roof: only shed and gable roofs take an edge index (the edge a shed rises from, a gable's ridge runs along)";
     return false;
   }
   out = Part{};
@@ -166,8 +166,9 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
   bool onPolygon = footprintRings(out.scope, geom, arena, outer, holes);
   // The rectangle's closed forms have no overhangs: an overhanging roof on it is built as
   // on any polygon (the same roof, its faces in the skeleton's order).
-  if (!onPolygon && (kind == RoofKind::Shed || overhangs)) outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
-  if (options.edgeIndex > 0) {
+  if (!onPolygon && (kind == RoofKind::Shed || overhangs || options.edgeIndex >= 0))
+    outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
+  if (kind == RoofKind::Shed && options.edgeIndex > 0) {
     const size_t first = size_t(options.edgeIndex) % outer.size();
     std::rotate(outer.begin(), outer.begin() + long(first), outer.end());
   }
@@ -177,7 +178,8 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
     faces = roofFaces(kind, w, d, h);
   } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error, nullptr, deadline,
-                           RoofOverhang{options.overhang, options.gableOverhang})) {
+                           RoofOverhang{options.overhang, options.gableOverhang,
+                                        kind == RoofKind::Gable ? options.edgeIndex : -1})) {
     return false;
   }
   if (!(h > 0.0)) {

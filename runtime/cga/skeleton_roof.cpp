@@ -481,6 +481,39 @@ std::vector<int> makeGables(const Footprint& fp, double slope, RoofMesh& mesh) {
   return gable;
 }
 
+// A gable roof on a convex quadrilateral with its ridge along edge k: the planes of k and
+// the edge across meet in the ridge, which ends on the walls of the two edges between.
+// Returns the gable tops per edge as makeGables does; empty with `error` when it cannot.
+std::vector<int> indexedGable(const Footprint& fp, int k, double slope, RoofMesh& mesh, std::string& error) {
+  bool convex = fp.rings.size() == 1 && fp.count == 4;
+  for (int v = 0; v < fp.count && convex; ++v)
+    convex = CGAL::orientation(fp.plan(fp.prev(v)), fp.plan(v), fp.plan(fp.next(v))) == CGAL::LEFT_TURN;
+  if (!convex) {
+    error = "Roof: a gable roof's ridge edge needs a convex quadrilateral footprint without holes";
+    return {};
+  }
+  const int g1 = fp.next(k), across = fp.next(g1), g3 = fp.next(across);
+  Vec3 t1, t3;
+  if (!gableTop(fp, g1, slope, t1) || !gableTop(fp, g3, slope, t3)) {
+    error = "Roof: the ridge along edge " + std::to_string(fp.edgeNumber(k)) + " does not reach both gable walls";
+    return {};
+  }
+  mesh.points.clear();
+  for (int v = 0; v < fp.count; ++v) mesh.points.push_back(toSpace(fp.point(v), 0.0));
+  const int p1 = fp.count, p3 = fp.count + 1;
+  mesh.points.push_back(t1);
+  mesh.points.push_back(t3);
+  mesh.faces.assign(fp.count, {});
+  mesh.faces[k] = {k, g1, p1, p3};
+  mesh.faces[g1] = {g1, across, p1};
+  mesh.faces[across] = {across, g3, p3, p1};
+  mesh.faces[g3] = {g3, k, p3};
+  std::vector<int> gable(fp.count, -1);
+  gable[g1] = p1;
+  gable[g3] = p3;
+  return gable;
+}
+
 // The point p of the plan at signed distances -d1 from edge e1's line and -d2 from e2's
 // (outside the footprint by d1, d2), where the two lines cross; along the outward normal
 // when they are parallel (a straight corner).
@@ -624,11 +657,16 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
     }
   } else {
     RoofMesh mesh;
-    const bool built = kind == SkeletonRoofKind::Pyramid ? pyramidRoof(fp, slope, mesh, error)
-                                                         : hippedRoof(fp, slope, mesh, error, deadline);
-    if (!built) return false;
     std::vector<int> gables;
-    if (kind == SkeletonRoofKind::Gable) gables = makeGables(fp, slope, mesh);
+    if (kind == SkeletonRoofKind::Gable && overhang.ridgeEdge >= 0) {
+      gables = indexedGable(fp, byNumber[overhang.ridgeEdge % fp.count], slope, mesh, error);
+      if (gables.empty()) return false;
+    } else {
+      const bool built = kind == SkeletonRoofKind::Pyramid ? pyramidRoof(fp, slope, mesh, error)
+                                                           : hippedRoof(fp, slope, mesh, error, deadline);
+      if (!built) return false;
+      if (kind == SkeletonRoofKind::Gable) gables = makeGables(fp, slope, mesh);
+    }
     if (kind != SkeletonRoofKind::Pyramid && (overhang.eaves > 0.0 || overhang.gables > 0.0))
       addOverhangs(fp, angleDeg * kPi / 180.0, overhang, gables, mesh);
     for (int number = 0; number < fp.count; ++number) {

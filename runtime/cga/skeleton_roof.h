@@ -77,9 +77,13 @@ constexpr int kInlineSkeletonCorners = 96;
 // horizontally, perpendicular to the gable's edge. Neighbouring faces keep meeting along
 // their hips, valleys and ridges, extended. Gable walls and the bottom stay on the
 // footprint, so such a roof is a sheet of sloped faces over them, no longer a closed solid.
+// `ridgeEdge` (CityEngine's roofGable index; Gable only): the ridge runs along that edge of
+// a convex quadrilateral without holes, the edges beside it made gable walls (-1: the
+// skeleton's own choice).
 struct RoofOverhang {
   double eaves = 0.0;
   double gables = 0.0;
+  int ridgeEdge = -1;
 };
 
 bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
