@@ -540,6 +540,10 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(text));
   lexed.input->name = name;
   lexed.lexer = std::make_unique<FgsgLexer>(lexed.input.get());
+  // Each token's text converted from the stream's UTF-32 once, when it is made, not at each
+  // getText(): the steps below, tokenRange and the AST builder ask for it several times.
+  static antlr4::CommonTokenFactory copyingText(true);
+  lexed.lexer->setTokenFactory(&copyingText);
   lexed.lexer->removeErrorListeners();
   LexerErrorReporter reporter(diags);
   lexed.lexer->addErrorListener(&reporter);
