@@ -12,6 +12,7 @@
 #include "cli/view_scene.h"
 #include "cli/view_surface.h"
 #include "runtime/assemble.h"
+#include "runtime/io/stale_temps.h"
 #include "runtime/io/write_instances.h"
 
 #include <Eigen/Dense>
@@ -211,7 +212,10 @@ std::map<std::string, fs::file_time_type> ViewSession::watchedFiles(const std::v
   if (fs::exists(options_.seedFile, ec)) out[options_.seedFile] = fs::last_write_time(options_.seedFile, ec);
   for (const fs::path& dir : {grammar.parent_path(), grammar.parent_path() / "assets"}) {
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-      if (it->is_regular_file(ec)) out[it->path().string()] = fs::last_write_time(it->path(), ec);
+      // An output being written (`fgsg run -o` in this folder: its temporary, then the
+      // rename) is one change when it lands, not one per temporary.
+      if (it->is_regular_file(ec) && !rt::io::isOutputTemporary(it->path().filename().string()))
+        out[it->path().string()] = fs::last_write_time(it->path(), ec);
   }
   return out;
 }

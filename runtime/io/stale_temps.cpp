@@ -48,6 +48,13 @@ bool removeIfStale(int dirFd, const char* name) {
 
 }  // namespace
 
+bool isOutputTemporary(const std::string& fileName) {
+  const size_t infix = std::strlen(kTempInfix);
+  if (fileName.size() <= infix + kTempRandomChars) return false;  // the target's name is not empty
+  const size_t at = fileName.size() - kTempRandomChars - infix;
+  return isTempName(fileName.c_str() + at, kTempInfix);
+}
+
 bool lockTempInUse(int fd) {
   while (::flock(fd, LOCK_EX | LOCK_NB) != 0)
     if (errno != EINTR) return false;

@@ -15,6 +15,11 @@ namespace fgsg::rt::io {
 inline constexpr const char* kTempInfix = ".tmp.";
 inline constexpr size_t kTempRandomChars = 8;
 
+// Whether a file name (no folder) has the temporary pattern of some output: a name,
+// kTempInfix and kTempRandomChars letters and digits ("city.glb.tmp.a1B2c3D4"). For
+// watchers (fgsg view) that should not take a write in progress for an edit.
+bool isOutputTemporary(const std::string& fileName);
+
 // Takes the lock that marks a temporary as in use (`fd` open on it). False when the file
 // system has no locks; the temporary is then never taken for stale, as no one could
 // tell it from a live one.

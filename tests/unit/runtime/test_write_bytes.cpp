@@ -7,6 +7,7 @@
 #include "runtime/io/byte_sink.h"
 #include "runtime/io/glb_writer.h"
 #include "runtime/io/output_transaction.h"
+#include "runtime/io/stale_temps.h"
 #include "runtime/io/write_mesh.h"
 
 #include <catch2/catch.hpp>
@@ -479,4 +480,18 @@ TEST_CASE("a mesh write cut short leaves the old file and no temporary", "[write
     CHECK_THAT(error, Catch::Contains("missing/out.glb': No such file or directory"));
     CHECK_FALSE(fs::exists(dir / "missing"));
   }
+}
+
+TEST_CASE("an output's temporary name is told from other files", "[writers][outputs]") {
+  using fgsg::rt::io::isOutputTemporary;
+  // target + ".tmp." + 8 letters and digits, as createUniqueFile draws them
+  CHECK(isOutputTemporary("city.glb.tmp.a1B2c3D4"));
+  CHECK(isOutputTemporary("run.obj.tmp.00000000"));
+  CHECK(isOutputTemporary("x.tmp.abcdefgh"));
+  CHECK_FALSE(isOutputTemporary(".tmp.abcdefgh"));          // no target name
+  CHECK_FALSE(isOutputTemporary("city.glb.tmp.a1B2c3D"));   // 7 characters
+  CHECK_FALSE(isOutputTemporary("city.glb.tmp.a1B2c3D4e")); // 9 characters
+  CHECK_FALSE(isOutputTemporary("city.glb.tmp.a1B2-3D4"));  // not a letter or digit
+  CHECK_FALSE(isOutputTemporary("paint.png"));
+  CHECK_FALSE(isOutputTemporary("notes.tmp.txt"));
 }
