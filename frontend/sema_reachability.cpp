@@ -161,8 +161,10 @@ void Analyzer::checkReachability() {
                        "geometry" + opHint);
       else if (!op.empty())
         diags_.warning("W001", s.firstUse, "'" + s.name + "' has no rule: it is a leaf and outputs its own geometry" + opHint);
-      else if (const std::string near = nearName(s.name); !near.empty())
+      else if (const std::string near = s.name.back() == '.' ? "" : nearName(s.name); !near.empty())
         // A CGA leaf is meant to have no rule, unless its name is a slip for one that has.
+        // 'X.' is the translator's leaf of rule X (`X.` written, or a rule of operations
+        // only, as `Wall --> color("#f00")`): never a slip.
         diags_.warning("W001", s.firstUse,
                        "'" + s.name + "' has no rule: it is a leaf and outputs its own geometry; did you mean '" +
                            near + "'?");

@@ -217,3 +217,20 @@ TEST_CASE("a CGA file imports another, and an fgsg grammar imports a CGA file", 
   INFO(g.messages);
   CHECK(g.ok);
 }
+
+TEST_CASE("a rule of operations only is a leaf, with no W001", "[cga][dialect]") {
+  // `Wall --> color(...)` outputs Wall's own geometry (the translator's leaf 'Wall.'):
+  // CityEngine's everyday idiom, not a slip for the rule Wall.
+  const Compiled ops = compile(
+      "Lot --> extrude(3) comp(f) { side : Wall | top : Roof }\n"
+      "Wall --> color(\"#ff0000\")\n"
+      "Roof --> color(\"#00ff00\") Tile.\n");
+  REQUIRE(ops.ok);
+  CHECK(ops.messages.find("W001") == std::string::npos);
+  // A leaf one slip from a rule's name is still pointed out.
+  const Compiled slip = compile(
+      "Lot --> extrude(3) comp(f) { side : Wal. | top : Roof. }\n"
+      "Wall --> color(\"#ff0000\")\n");
+  REQUIRE(slip.ok);
+  CHECK(slip.messages.find("test.cga:1:37: warning[W001]: 'Wal' has no rule") != std::string::npos);
+}
