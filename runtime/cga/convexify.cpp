@@ -73,7 +73,13 @@ bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, do
   if (ring.size() < 4) return true;  // a triangle is convex
   std::vector<Traits::Point_2> points;
   for (const Vec2& p : ring) points.emplace_back(p.x(), p.y());
-  if (!CGAL::Polygon_2<Kernel>(points.begin(), points.end()).is_simple()) {
+  // GCC 12 warns inside CGAL's is_simple_2 (-Wmaybe-uninitialized on a temporary it
+  // builds and sets before use): a false positive in the library's code, silenced here only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+  const bool simple = CGAL::Polygon_2<Kernel>(points.begin(), points.end()).is_simple();
+#pragma GCC diagnostic pop
+  if (!simple) {
     error = "convexify: the polygon crosses itself";
     return false;
   }
