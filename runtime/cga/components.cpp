@@ -332,6 +332,14 @@ unsigned roofEdgeClass(const WorldEdge& e, const std::vector<WorldFace>& faces, 
       if (above) return kEave;
     }
     if (two && sloped(e.faces[0]) && sloped(e.faces[1])) return convex() ? kRidge : kValley;
+    // A single slope's highest edge (a shed's, against its upright back wall): a ridge
+    // too, the mono-pitch ridge that roofers cap as they cap any other.
+    for (int face : e.faces) {
+      if (!sloped(face)) continue;
+      bool below = true;
+      for (const Vec3& p : faces[size_t(face)].pts) below &= (p - origin).dot(up) <= ha + tol;
+      if (below) return kRidge;
+    }
     return 0;
   }
   if (std::abs(ha - hb) >= (e.b - e.a).norm() * (1.0 - kHorizontalTol)) return 0;  // upright: a wall's corner

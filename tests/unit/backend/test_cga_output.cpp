@@ -360,6 +360,15 @@ TEST_CASE("Comp takes a roof's eaves, ridges, rakes, hips and valleys", "[cga][o
   CHECK(count(ell, "hips") == 5);
   CHECK(count(ell, "ridges") == 2);
   CHECK(count(ell, "eaves") == 6);
+  // A shed: one slope, its low edge the eave, its high edge (against the upright back
+  // wall) the mono-pitch ridge, the side triangles' sloped edges the two rakes; the back
+  // wall's upright corners are of no class.
+  const std::string shed = "A ~> S(10, 3, 6) Roof(\"shed\", 20)";
+  CHECK(count(shed, "eaves") == 1);
+  CHECK(count(shed, "ridges") == 1);
+  CHECK(count(shed, "rakes") == 2);
+  CHECK(count(shed, "hips") == 0);
+  CHECK(count(shed, "valleys") == 0);
 }
 
 TEST_CASE("A flat roof with a parapet is an Offset band extruded: a closed ring of the band's area", "[cga][output]") {
