@@ -13,18 +13,8 @@ const path = require('path');
 const zlib = require('zlib');
 
 const [fgsg, source] = process.argv.slice(2);
-const { chromium } = require(path.join(source, 'tools/node/node_modules/playwright-core'));
-const chromiumPath = '/usr/bin/chromium';
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exitCode = 1;
-  throw new Error(message);
-}
-function ok(cond, message) {
-  if (!cond) fail(message);
-  console.log('ok   ' + message);
-}
+const { chromiumPath, fail, ok, chromiumOf } = require('./view_test_support');
+const chromium = chromiumOf(source);
 
 // An 8-bit grey PNG (filter 0 rows), and the reverse for any 8-bit grey PNG.
 function crc32(buf) {

@@ -9,18 +9,8 @@ const os = require('os');
 const path = require('path');
 
 const [fgsg, source] = process.argv.slice(2);
-const { chromium } = require(path.join(source, 'tools/node/node_modules/playwright-core'));
-const chromiumPath = '/usr/bin/chromium';
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exitCode = 1;
-  throw new Error(message);
-}
-function ok(cond, message) {
-  if (!cond) fail(message);
-  console.log('ok   ' + message);
-}
+const { chromiumPath, fail, ok, chromiumOf } = require('./view_test_support');
+const chromium = chromiumOf(source);
 
 // A tensor field designed on a 10 x 10 plane. Each singular design element is one
 // singularity where it is put, and nothing else is singular (a regular element would add

@@ -14,18 +14,8 @@ const os = require('os');
 const path = require('path');
 
 const [fgsg, source] = process.argv.slice(2);
-const { chromium } = require(path.join(source, 'tools/node/node_modules/playwright-core'));
-const chromiumPath = '/usr/bin/chromium';
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exitCode = 1;
-  throw new Error(message);
-}
-function ok(cond, message) {
-  if (!cond) fail(message);
-  console.log('ok   ' + message);
-}
+const { chromiumPath, fail, ok, chromiumOf } = require('./view_test_support');
+const chromium = chromiumOf(source);
 
 // The JSON chunk of a GLB (glTF 2.0 §4.4: a 12-byte header 'glTF', 2, length; then
 // chunks of length, type, data, the first one 'JSON').

@@ -12,14 +12,8 @@ const os = require('os');
 const path = require('path');
 
 const [fgsg, source, out] = process.argv.slice(2);
-const { chromium } = require(path.join(source, 'tools/node/node_modules/playwright-core'));
-const chromiumPath = '/usr/bin/chromium';
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exitCode = 1;
-  throw new Error(message);
-}
+const { chromiumPath, fail, chromiumOf } = require('./view_test_support');
+const chromium = chromiumOf(source);
 
 async function main() {
   if (!fs.existsSync(chromiumPath)) fail(`${chromiumPath} is missing: scripts/install-deps.sh installs Debian's chromium`);
