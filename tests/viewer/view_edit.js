@@ -13,7 +13,7 @@ const path = require('path');
 const zlib = require('zlib');
 
 const [fgsg, source] = process.argv.slice(2);
-const { chromiumPath, fail, ok, chromiumOf } = require('./view_test_support');
+const { fail, ok, chromiumOf, viewUrl, launchChromium } = require('./view_test_support');
 const chromium = chromiumOf(source);
 
 // An 8-bit grey PNG (filter 0 rows), and the reverse for any 8-bit grey PNG.
@@ -82,14 +82,8 @@ async function main() {
   const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'], env });
   let browser;
   try {
-    const url = await new Promise((resolve, reject) => {
-      let out = '';
-      server.stdout.on('data', (d) => { out += d; const m = out.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
-      server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${out}`)));
-      setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
-    });
-    browser = await chromium.launch({ executablePath: chromiumPath,
-      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'] });
+    const url = await viewUrl(server);
+    browser = await launchChromium(chromium);
     const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
     page.on('pageerror', (e) => console.error('page error: ' + e.message));
     // What the server refused or could not derive, so that a failure says why.

@@ -14,7 +14,7 @@ const os = require('os');
 const path = require('path');
 
 const [fgsg, source] = process.argv.slice(2);
-const { chromiumPath, fail, ok, chromiumOf } = require('./view_test_support');
+const { chromiumPath, fail, ok, chromiumOf, viewUrl, launchChromium } = require('./view_test_support');
 const chromium = chromiumOf(source);
 
 // The JSON chunk of a GLB (glTF 2.0 §4.4: a 12-byte header 'glTF', 2, length; then
@@ -69,20 +69,8 @@ async function main() {
   const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
   let browser;
   try {
-    const url = await new Promise((resolve, reject) => {
-      let text = '';
-      server.stdout.on('data', (d) => {
-        text += d;
-        const m = text.match(/http:\/\/[^ \n]+/);
-        if (m) resolve(m[0]);
-      });
-      server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${text}`)));
-      setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
-    });
-    browser = await chromium.launch({
-      executablePath: chromiumPath,
-      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
-    });
+    const url = await viewUrl(server);
+    browser = await launchChromium(chromium);
     const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
     page.on('pageerror', (e) => console.error('page error: ' + e.message));
     await page.goto(url);

@@ -12,7 +12,7 @@ const os = require('os');
 const path = require('path');
 
 const [fgsg, source, out] = process.argv.slice(2);
-const { chromiumPath, fail, chromiumOf } = require('./view_test_support');
+const { chromiumPath, fail, chromiumOf, viewUrl, launchChromium } = require('./view_test_support');
 const chromium = chromiumOf(source);
 
 async function main() {
@@ -25,16 +25,7 @@ async function main() {
   const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
   let browser;
   try {
-    const url = await new Promise((resolve, reject) => {
-      let text = '';
-      server.stdout.on('data', (d) => {
-        text += d;
-        const m = text.match(/http:\/\/[^ \n]+/);
-        if (m) resolve(m[0]);
-      });
-      server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${text}`)));
-      setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
-    });
+    const url = await viewUrl(server);
     // The address carries the session token; without it the page is refused (the rest of
     // the server's checks: tests/viewer/view_security.py).
     if (!/\/\?token=[0-9a-f]{48}$/.test(url)) fail(`the printed address has no token: ${url}`);
@@ -47,10 +38,7 @@ async function main() {
     });
     if (status !== 403) fail(`the page without its token answered ${status}`);
 
-    browser = await chromium.launch({
-      executablePath: chromiumPath,
-      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
-    });
+    browser = await launchChromium(chromium);
     const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
     page.on('pageerror', (e) => console.error('page error: ' + e.message));
     await page.goto(url);

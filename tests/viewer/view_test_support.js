@@ -19,4 +19,25 @@ function chromiumOf(source) {
   return require(path.join(source, 'tools/node/node_modules/playwright-core')).chromium;
 }
 
-module.exports = { chromiumPath, fail, ok, chromiumOf };
+// The URL a started `fgsg view` prints (it listens on a free port: --port 0).
+function viewUrl(server) {
+  return new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = text.match(/http:\/\/[^ \n]+/);
+      if (m) resolve(m[0]);
+    });
+    server.on('exit', (code) => reject(new Error(`fgsg view exited with ${code}: ${text}`)));
+    setTimeout(() => reject(new Error('fgsg view printed no URL in 20 s')), 20000);
+  });
+}
+// Headless chromium with software WebGL (SwiftShader), as every viewer test runs it.
+function launchChromium(chromium) {
+  return chromium.launch({
+    executablePath: chromiumPath,
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+  });
+}
+
+module.exports = { chromiumPath, fail, ok, chromiumOf, viewUrl, launchChromium };
