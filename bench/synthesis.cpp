@@ -42,8 +42,7 @@ Example boxesExample() {
   for (int m = 0; m < 4; ++m)
     for (int c = 0; c < 27; ++c) {
       Piece p;
-      p.name = "m";  // appended: GCC 12 warns falsely (-Wrestrict) on "m" + string
-      p.name += std::to_string(m) + "c" + std::to_string(c);
+      p.name = "m" + std::to_string(m) + "c" + std::to_string(c);
       p.asset = "cube";
       ex.labels.push_back(p);
     }

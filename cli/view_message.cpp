@@ -13,9 +13,7 @@ using Json = nlohmann::json;
 namespace {
 
 std::string quoted(const std::string& s) {
-  std::string out = "'";  // appended, not "'" + ...: GCC 12 warns falsely (-Wrestrict) on the prepend
-  out += s.size() > 60 ? s.substr(0, 60) + "...' (" + std::to_string(s.size()) + " bytes)" : s + "'";
-  return out;
+  return "'" + (s.size() > 60 ? s.substr(0, 60) + "...' (" + std::to_string(s.size()) + " bytes)" : s + "'");
 }
 
 // A value as --set writes it; false for anything but a short string, a finite number

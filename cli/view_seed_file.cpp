@@ -25,21 +25,11 @@ std::string defaultSeedFile(const std::string& grammarPath) {
 }
 
 std::string seedFileText(const ViewSeeds& seeds, const std::string& grammarName) {
-  // Appended piece by piece, not "..." + string: GCC 12 warns falsely (-Wrestrict) on a prepend.
-  std::string text = "# seeds of ";
-  text += grammarName + " placed in fgsg view: x y z [dx dy dz] (fgsg run --seed-points)\n";
-  const auto appendVector = [&text](const auto& v) {
-    for (int k = 0; k < 3; ++k) {
-      if (k) text += " ";
-      text += number(v[k]);
-    }
-  };
+  std::string text = "# seeds of " + grammarName + " placed in fgsg view: x y z [dx dy dz] (fgsg run --seed-points)\n";
   for (const auto& s : seeds) {
-    appendVector(s.point);
-    if (s.hasDirection) {
-      text += " ";
-      appendVector(s.direction);
-    }
+    text += number(s.point[0]) + " " + number(s.point[1]) + " " + number(s.point[2]);
+    if (s.hasDirection)
+      text += " " + number(s.direction[0]) + " " + number(s.direction[1]) + " " + number(s.direction[2]);
     text += "\n";
   }
   return text;

@@ -335,7 +335,7 @@ std::vector<std::unique_ptr<Token>> checkLexicalErrors(std::vector<std::unique_p
             adjacent(token, raw[i + 1].get()) && raw[i + 1]->getLine() == token->getLine()) {
           auto* module = static_cast<antlr4::CommonToken*>(token);
           module->setType(FgsgLexer::DOLLAR);
-          module->setText(std::string("@").append(raw[i + 1]->getText()));  // not "@" + ...: GCC 12's false -Wrestrict
+          module->setText("@" + raw[i + 1]->getText());
           module->setStopIndex(raw[i + 1]->getStopIndex());
           out.push_back(std::move(raw[i]));
           ++i;

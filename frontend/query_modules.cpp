@@ -24,9 +24,7 @@ void joinQueryModules(std::vector<std::unique_ptr<Token>>& tokens) {
         adjacent(t, tokens[i + 1].get()) && adjacent(tokens[i + 1].get(), tokens[i + 2].get())) {
       auto* joined = static_cast<antlr4::CommonToken*>(t);
       joined->setType(FgsgLexer::ID);
-      std::string name = "?";  // appended, not "?" + ...: GCC 12 gives a false -Wrestrict on the prepend
-      name += tokens[i + 1]->getText();
-      joined->setText(name);
+      joined->setText("?" + tokens[i + 1]->getText());
       joined->setStopIndex(tokens[i + 1]->getStopIndex());
       out.push_back(std::move(tokens[i]));
       ++i;

@@ -250,11 +250,8 @@ ValueType Analyzer::typeOfLotQuery(const Expr& e, bool report) {
   } else if (res_.attrs[k].value.type != value.type || (value.type != ValueType::Num && value.type != ValueType::Bool
                                                          ? res_.attrs[k].value.str != value.str
                                                          : res_.attrs[k].value.num != value.num)) {
-    std::string message = "'";  // appended, not "'" + ...: GCC 12 gives a false -Wrestrict on the prepend
-    message += name.substr(4);
-    message += "' has another default at line " + std::to_string(res_.attrs[k].range.begin.line) +
-               ": give a lot property one default";
-    return fail(message);
+    return fail("'" + name.substr(4) + "' has another default at line " +
+                std::to_string(res_.attrs[k].range.begin.line) + ": give a lot property one default");
   }
   if (report) res_.names[&e] = NameRef{NameRef::Attr, k, {}};
   return record(e, value.type, report);

@@ -1,9 +1,5 @@
 #include "ir/printer.h"
 
-// GCC 12 warns that `"literal" + std::string&&` may overlap itself (GCC bug 105329, a
-// false alarm of its inlined memcpy); which lines it flags changes with inlining.
-#pragma GCC diagnostic ignored "-Wrestrict"
-
 #include <charconv>
 #include <cmath>
 #include <iterator>

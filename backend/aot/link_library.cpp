@@ -144,8 +144,7 @@ bool linkSharedLibrary(const std::string& object, const std::string& outputPath,
   TempFile libFile;
   {
     std::string name;
-    const std::string hidden = std::string(".").append(out.filename().string()).append(".tmp-");  // not "." + ...: GCC 12's false -Wrestrict
-    const int fd = rt::io::createUniqueFile((outDir / hidden).string(), name);
+    const int fd = rt::io::createUniqueFile((outDir / ("." + out.filename().string() + ".tmp-")).string(), name);
     if (fd < 0) {
       error = "cannot write in " + outDir.string() + ": " + errnoText(errno);
       return false;

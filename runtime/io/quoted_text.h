@@ -23,9 +23,9 @@ inline size_t quoteCut(std::string_view text) {
 
 // 'text' when it is short; else 'its first kMaxQuotedChars bytes...' (N bytes).
 inline std::string quoteText(std::string_view text) {
-  std::string out = "'";  // appended, not "'" + ...: GCC 12 warns falsely (-Wrestrict) on a prepend
-  if (text.size() <= kMaxQuotedChars) return out.append(text).append("'");
-  return out.append(text.substr(0, detail::quoteCut(text))) + "...' (" + std::to_string(text.size()) + " bytes)";
+  if (text.size() <= kMaxQuotedChars) return "'" + std::string(text) + "'";
+  return "'" + std::string(text.substr(0, detail::quoteCut(text))) + "...' (" + std::to_string(text.size()) +
+         " bytes)";
 }
 
 // The same without the quotes: text, or its first bytes... (N bytes).

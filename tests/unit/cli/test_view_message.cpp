@@ -80,7 +80,7 @@ TEST_CASE("view messages: size and nesting are bounded before any parse") {
   const std::string big = R"({"type":"set","attrs":{"x":")" + std::string(70000, 'v') + R"("}})";
   CHECK(refused(big).find("message of") == 0);
   std::string many = R"({"type":"set","attrs":{)";
-  for (int i = 0; i < 300; ++i) many.append(i ? "," : "").append("\"a").append(std::to_string(i)).append("\":1");
+  for (int i = 0; i < 300; ++i) many += (i ? "," : "") + ("\"a" + std::to_string(i) + "\":1");
   CHECK_FALSE(refused(many + "}}").empty());
 }
 

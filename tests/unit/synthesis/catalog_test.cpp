@@ -97,8 +97,7 @@ Example patternExample() {
         grid.at(x, y, z) = int32_t((x + rng.below(2)) % 10 + 10 * ((y + z + rng.below(2)) % 10));
   for (int l = 0; l < 100; ++l) {
     Piece p;
-    p.name = "p";  // appended: GCC 12 warns falsely (-Wrestrict) on "p" + string
-    p.name += std::to_string(l);
+    p.name = "p" + std::to_string(l);
     p.weight = -1;
     ex.labels.push_back(p);
   }
