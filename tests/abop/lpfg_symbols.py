@@ -14,33 +14,23 @@ Interpreter and JIT alike.
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 from lpy_turtle import Turtle, draw, to_fgsg
-from lsystem_reference import unmatched
+from lsystem_reference import fgsg_obj, unmatched, write_grammar
 
 
 def run(fgsg, folder, name, text, engine, listing=False):
-    grammar = os.path.join(folder, name + ".fgsg")
-    with open(grammar, "w") as f:
-        f.write(text)
-    out = os.path.join(folder, "%s-%s.obj" % (name, engine))
-    extra = ["--instances", out + ".json"] if listing else []
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--engine=" + engine, "--quiet"] + extra, check=True)
-    if listing:
-        with open(out + ".json") as f:
-            return json.load(f)
-    vertices, lines = [], []
+    """fgsg's segments for TEXT as (x0, y0, z0, x1, y1, z1) tuples, or with LISTING its
+    `--instances` listing."""
+    grammar = write_grammar(folder, name, text)
+    if not listing:
+        return fgsg_obj(fgsg, grammar, None, folder, dims=3, engine=engine)["l"]
+    out = os.path.join(folder, "%s-%s.json" % (name, engine))
+    fgsg_obj(fgsg, grammar, None, folder, dims=3, engine=engine, extra=["--instances", out])
     with open(out) as f:
-        for line in f:
-            part = line.split()
-            if part and part[0] == "v":
-                vertices.append(tuple(float(c) for c in part[1:4]))
-            elif part and part[0] == "l":
-                lines.append(sum((vertices[int(c.split("/")[0]) - 1] for c in part[1:]), ()))
-    return lines
+        return json.load(f)
 
 
 def fail(message):

@@ -50,12 +50,27 @@ def fan_triangles(polygon_list, min_area=1e-12):
     return out
 
 
-def fgsg_obj(fgsg, grammar, n, folder, dims=2):
-    """`fgsg run GRAMMAR --set n=N` written as OBJ: its vertices (their first `dims`
-    coordinates) and, per element keyword ('f', 'l'), each element as its corners'
-    coordinates joined in one tuple."""
-    out = os.path.join(folder, "out%d.obj" % n)
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--quiet"], check=True)
+def write_grammar(folder, name, text):
+    """TEXT written as FOLDER/NAME.fgsg; its path."""
+    grammar = os.path.join(folder, name + ".fgsg")
+    with open(grammar, "w") as f:
+        f.write(text)
+    return grammar
+
+
+def fgsg_obj(fgsg, grammar, n, folder, dims=2, engine=None, extra=()):
+    """`fgsg run GRAMMAR --set n=N` written as OBJ (N None: no `--set`; ENGINE: its
+    `--engine`; EXTRA: more arguments): its vertices (their first `dims` coordinates) and,
+    per element keyword ('f', 'l'), each element as its corners' coordinates joined in one
+    tuple."""
+    name = os.path.splitext(os.path.basename(grammar))[0]
+    out = os.path.join(folder, "%s-%s-%s.obj" % (name, engine or "default", n))
+    args = [fgsg, "run", grammar, "-o", out, "--quiet"] + list(extra)
+    if n is not None:
+        args += ["--set", "n=%d" % n]
+    if engine:
+        args.append("--engine=" + engine)
+    subprocess.run(args, check=True)
     vertices, elements = [], {"f": [], "l": []}
     with open(out) as f:
         for line in f:

@@ -11,32 +11,21 @@ turns H towards -U):
 Interpreter and JIT alike (the compiled library: tests/cases/lsystem_query_modules).
     query_modules.py FGSG REPO_ROOT
 """
-import os
-import subprocess
 import sys
 import tempfile
 
+from lsystem_reference import fgsg_obj, write_grammar
+
 
 def segments(fgsg, folder, name, text, engine):
-    grammar = os.path.join(folder, name + ".fgsg")
-    with open(grammar, "w") as f:
-        f.write(text)
-    out = os.path.join(folder, "%s-%s.obj" % (name, engine))
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--engine=" + engine, "--quiet"], check=True)
-    vertices, lines = [], []
-    with open(out) as f:
-        for line in f:
-            part = line.split()
-            if part and part[0] == "v":
-                vertices.append(tuple(float(c) for c in part[1:4]))
-            elif part and part[0] == "l":
-                lines.append(tuple(vertices[int(c.split("/")[0]) - 1] for c in part[1:]))
-    return lines
+    """fgsg's segments for TEXT as (x0, y0, z0, x1, y1, z1) tuples."""
+    return fgsg_obj(fgsg, write_grammar(folder, name, text), None, folder, dims=3, engine=engine)["l"]
 
 
 def same(got, want, what, engine):
-    key = lambda seg: tuple(round(c, 6) + 0.0 for p in seg for c in p)
-    g, w = sorted(map(key, got)), sorted(map(key, want))
+    key = lambda flat: tuple(round(c, 6) + 0.0 for c in flat)
+    g = sorted(map(key, got))
+    w = sorted(key(sum(seg, ())) for seg in want)
     if len(g) != len(w) or any(abs(a - b) > 1e-9 for s, t in zip(g, w) for a, b in zip(s, t)):
         raise SystemExit("FAIL: %s (%s): segments\n  %s\nexpected\n  %s" % (what, engine, g, w))
     print("ok: %s (%s)" % (what, engine))

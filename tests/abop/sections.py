@@ -8,13 +8,11 @@ interpretation, written here from their description). fgsg's segments, vertex by
 with the interpreter and with the JIT.
     sections.py FGSG REPO_ROOT
 """
-import os
-import subprocess
 import sys
 import tempfile
 
 from lpy_turtle import draw
-from lsystem_reference import unmatched
+from lsystem_reference import fgsg_obj, unmatched, write_grammar
 
 
 def rewrite(s, rules):
@@ -49,28 +47,12 @@ def derive(axiom, n, production, decomposition=None, decomposition_depth=1, homo
     return passes(s, homomorphism, homomorphism_depth) if homomorphism else s
 
 
-def fgsg_segments(fgsg, grammar, n, folder, engine):
-    out = os.path.join(folder, "out-%s-%d.obj" % (engine, n))
-    subprocess.run([fgsg, "run", grammar, "-o", out, "--set", "n=%d" % n, "--engine=" + engine, "--quiet"],
-                   check=True)
-    vertices, lines = [], []
-    with open(out) as f:
-        for line in f:
-            part = line.split()
-            if part and part[0] == "v":
-                vertices.append(tuple(float(c) for c in part[1:4]))
-            elif part and part[0] == "l":
-                lines.append(sum((vertices[int(c.split("/")[0]) - 1] for c in part[1:]), ()))
-    return lines
-
-
 def check(fgsg, folder, name, text, n, modules, angle=90.0):
-    grammar = os.path.join(folder, name + ".fgsg")
-    with open(grammar, "w") as f:
-        f.write('attr n = 1;\nderive parallel n;\nturtle angle %g segments "lines";\n' % angle + text)
+    grammar = write_grammar(folder, name, 'attr n = 1;\nderive parallel n;\nturtle angle %g segments "lines";\n' % angle
+                            + text)
     want = draw(modules, angle=angle)[0]
     for engine in ("interp", "jit"):
-        got = fgsg_segments(fgsg, grammar, n, folder, engine)
+        got = fgsg_obj(fgsg, grammar, n, folder, dims=3, engine=engine)["l"]
         missing = unmatched(want, got, 1e-5)
         if len(want) != len(got) or missing:
             raise SystemExit("FAIL: %s n=%d (%s): fgsg has %d segments, the reference %d (%d of the reference's "
