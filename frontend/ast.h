@@ -291,6 +291,9 @@ struct Program {
   int homomorphismDepth = 1;
   // A `.cga` file: a lot is CityEngine's initial shape (scope x along its first edge, y up).
   bool cityEngineLots = false;
+  // Rules that start derivations in CityEngine though not in this run: the @StartRule when
+  // --start-rule names another. What they reach is not dead code (no W002).
+  std::vector<std::string> otherStartRules;
 };
 
 }  // namespace fgsg::frontend

@@ -135,13 +135,17 @@ void Analyzer::checkReachability() {
             for (const auto& c : item.body[0].items) baseParts.push_back(&c);
         });
   for (size_t si = 0; si < res_.symbols.size(); ++si) res_.symbols[si].reachable = reachable[si];
+  // What a start rule of another run reaches (a .cga file's @StartRule when --start-rule
+  // names another rule) is used code: no W002 for it.
+  std::vector<bool> startable(res_.symbols.size(), false);
+  for (const std::string& name : prog_.otherStartRules) reach({}, res_.findSymbol(name), startable, [](const Item&) {});
   // A terminal shape a Cells base part creates is a piece of its base mesh, not a
   // forgotten rule: the symbols reachable from the base parts get no W001.
   std::vector<bool> basePiece(res_.symbols.size(), false);
   reach(baseParts, -1, basePiece, [](const Item&) {});
   for (size_t si = 0; si < res_.symbols.size(); ++si) {
     const auto& s = res_.symbols[si];
-    if (!s.reachable && !s.rules.empty() && !(synthesizes && s.params.empty()) &&
+    if (!s.reachable && !startable[si] && !s.rules.empty() && !(synthesizes && s.params.empty()) &&
         !prog_.rules[s.rules.front()].imported)  // a module's rules this grammar does not use
       diags_.warning("W002", prog_.rules[s.rules.front()].predecessor.range,
                      "the rules for '" + s.name + "' can never apply: no derivation from the "

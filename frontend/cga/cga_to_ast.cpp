@@ -417,6 +417,8 @@ void Translator::startRule() {
           named + "the start rule '" + start + "' takes parameters: a start shape has none to give");
     return;
   }
+  if (given && !startRule_.empty() && startRule_ != start && rules_.count(startRule_))
+    program_.otherStartRules.push_back(symbolName(startRule_));
   auto lotArea = [&] {
     ExprPtr e = makeExpr(ExprKind::Member, at);
     e->object = "Lot";

@@ -48,6 +48,25 @@ done
 "$fgsg" check "$tmp/two.cga" --start-rule Other >"$tmp/check.txt" 2>&1 || { cat "$tmp/check.txt"; fail "check --start-rule Other"; }
 grep -q "two.cga: ok" "$tmp/check.txt" || { cat "$tmp/check.txt"; fail "check does not say ok"; }
 
+# Another start rule is no dead code (#43/#44): with --start-rule Other, the @StartRule Lot
+# (and what only it reaches, Mid) gets no W002 in check or run; Param, which no start rule
+# reaches, still does.
+cat >"$tmp/three.cga" <<'CGA'
+version "2023.0"
+@StartRule
+Lot --> split(x) { 5 : Mid }*
+Mid --> A
+Other --> split(x) { 10 : A }*
+Param(n) --> A
+A --> extrude(3) Mass
+CGA
+for cmd in check run; do
+  [ $cmd = run ] && extra=(-o "$tmp/three.obj") || extra=()
+  "$fgsg" $cmd "$tmp/three.cga" --start-rule Other "${extra[@]}" >"$tmp/w.txt" 2>&1 || { cat "$tmp/w.txt"; fail "$cmd --start-rule Other"; }
+  ! grep -E "W002.*'(Lot|Mid)'" "$tmp/w.txt" || fail "$cmd --start-rule Other warns W002 on the @StartRule's rules"
+  grep -qF "three.cga:6:1: warning[W002]: the rules for 'Param' can never apply" "$tmp/w.txt" ||
+    { cat "$tmp/w.txt"; fail "$cmd --start-rule Other: no W002 for Param, which nothing reaches"; }
+done
 # A rule the file lacks: E803 naming it, with the rules that could start (the @StartRule first).
 "$fgsg" run "$tmp/two.cga" --lots "$tmp/lots.geojson" --start-rule Nope -o "$tmp/x.obj" >"$tmp/nope.txt" 2>&1
 rc=$?
