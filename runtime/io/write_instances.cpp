@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <new>
 
 namespace fgsg::rt::io {
@@ -68,9 +69,24 @@ void appendParams(std::string& out, const InstanceList& list, const Instance& in
 
 }  // namespace
 
-std::string encodeInstancesJson(const InstanceList& list) {
+std::string assetNameFrom(const std::string& asset, const std::string& folder) {
+  namespace fs = std::filesystem;
+  const fs::path path(asset);
+  if (folder.empty() || !path.is_absolute()) return asset;
+  std::error_code ec;
+  // Both resolved the same way (symbolic links followed as far as the paths exist), so that
+  // /tmp and its real name do not part them.
+  const fs::path from = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+  const fs::path to = fs::weakly_canonical(path, ec);
+  const fs::path relative = to.lexically_relative(from);
+  return relative.empty() ? asset : relative.generic_string();
+}
+
+std::string encodeInstancesJson(const InstanceList& list, const std::string& folder) {
   std::string out = "{\"format\":\"fgsg-instances\",\"version\":1,\n\"assets\":";
-  appendArray(out, list.assets, appendJsonString);
+  std::vector<std::string> assets = list.assets;
+  for (std::string& a : assets) a = assetNameFrom(a, folder);
+  appendArray(out, assets, appendJsonString);
   out += ",\n\"symbols\":";
   appendArray(out, list.symbols, appendJsonString);
   out += ",\n\"instances\":[";
@@ -78,7 +94,7 @@ std::string encodeInstancesJson(const InstanceList& list) {
     const Instance& inst = list.instances[i];
     out += i == 0 ? "\n" : ",\n";
     out += "{\"asset\":";
-    appendName(out, list.assets, inst.asset);
+    appendName(out, assets, inst.asset);
     out += ",\"symbol\":";
     appendName(out, list.symbols, inst.symbol);
     out += ",\"transform\":";
@@ -108,7 +124,9 @@ bool stageInstancesJson(const InstanceList& list, const std::string& path, Outpu
   }
   std::string bytes;
   try {
-    bytes = encodeInstancesJson(list);
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::absolute(path, ec).parent_path();
+    bytes = encodeInstancesJson(list, folder.string());
   } catch (const std::bad_alloc&) {
     error = "cannot write '" + path + "': out of memory while encoding " + std::to_string(list.instances.size()) +
             " instances";

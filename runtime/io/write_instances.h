@@ -14,13 +14,21 @@
 
 namespace fgsg::rt::io {
 
-std::string encodeInstancesJson(const InstanceList& list);
+// `folder`: where the file goes. Non-empty: an asset named by an absolute path (a `.cga`
+// file's i() asset, which the front end finds beside the rule file or in an assets/ folder
+// and makes absolute) is written relative to that folder, so that a pipeline can move the
+// folder with its assets; names (`cube`, `builtin:cube`) and relative paths stay as written.
+std::string encodeInstancesJson(const InstanceList& list, const std::string& folder = "");
+
+// `asset` as the instances file in `folder` names it (see encodeInstancesJson).
+std::string assetNameFrom(const std::string& asset, const std::string& folder);
 
 // One instance's parameters as a JSON array, as the file writes them (fgsg view's picking).
 std::string instanceParamsJson(const InstanceList& list, const Instance& inst);
 
 // Checks that every transform and colour is finite (a file must not carry them as null),
-// encodes and stages the file in `outputs`; false and a message naming `path` otherwise.
+// encodes (asset paths relative to `path`'s folder) and stages the file in `outputs`; false
+// and a message naming `path` otherwise.
 bool stageInstancesJson(const InstanceList& list, const std::string& path, OutputTransaction& outputs,
                         std::string& error);
 

@@ -43,4 +43,21 @@ printf 'dialect cga;\n@StartRule\nLot --> extrude(3)\n' >"$tmp/named.txt"
 printf '@StartRule\nLot --> split(x) { 2 : A }*\nA --> i("nowhere/door.obj") X.\n' >"$tmp/asset.cga"
 "$fgsg" run "$tmp/asset.cga" -o "$tmp/asset.obj" >"$tmp/asset.txt" 2>&1 || { cat "$tmp/asset.txt"; fail "a missing asset fails"; }
 [ "$(grep -c "W801" "$tmp/asset.txt")" = 1 ] || { cat "$tmp/asset.txt"; fail "W801 not once"; }
+# --instances names an asset the rule file found (beside it, in assets/) relative to the
+# JSON file's folder, so that the folder moves with its assets (#43/#44); built-in names stay.
+mkdir -p "$tmp/proj/rules" "$tmp/proj/assets" "$tmp/proj/out" "$tmp/elsewhere"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$tmp/proj/assets/box.obj"
+printf '@StartRule\nLot --> [ i("box.obj") Box. ] i("builtin:cube") Cube.\n' >"$tmp/proj/rules/house.cga"
+for engine in interp jit; do
+  (cd "$tmp/proj" && "$fgsg" run rules/house.cga --engine $engine -q -o out/h.glb --instances out/h.json) ||
+    fail "house.cga does not run ($engine)"
+  grep -qF '"assets":["../assets/box.obj","builtin:cube",' "$tmp/proj/out/h.json" ||
+    { head -2 "$tmp/proj/out/h.json"; fail "--instances out/h.json: asset not relative to out/ ($engine)"; }
+  grep -qF '{"asset":"../assets/box.obj","symbol":"Box",' "$tmp/proj/out/h.json" ||
+    { cat "$tmp/proj/out/h.json"; fail "the instance does not name ../assets/box.obj ($engine)"; }
+  "$fgsg" run "$tmp/proj/rules/house.cga" --engine $engine -q -o "$tmp/elsewhere/h.glb" --instances "$tmp/elsewhere/h.json" ||
+    fail "house.cga does not run with absolute paths ($engine)"
+  grep -qF '"assets":["../proj/assets/box.obj",' "$tmp/elsewhere/h.json" ||
+    { head -2 "$tmp/elsewhere/h.json"; fail "--instances elsewhere/h.json: asset not relative to elsewhere/ ($engine)"; }
+done
 echo "cga dialect: ok"
