@@ -93,6 +93,10 @@ struct Item {
   // (absolute sizes that do not fill the scope leave the rest empty, those that overflow
   // are cut) instead of fgsg's "parts must fill the scope" (R002).
   bool cityEngineSizing = false;
+  // An I() that a .cga leaf follows (`i("tree.obj") Tree.`): the leaf's symbol, which the
+  // instance is recorded under (CityEngine's shape after the insert is that leaf); empty:
+  // the shape whose successor places it.
+  std::string recordAs;
 };
 
 struct Successor {

@@ -181,6 +181,10 @@ struct Op {
   // along the line (UINT32_MAX: a tube).
   uint32_t asset = 0;
   InstanceMode mode = InstanceMode::Plain;
+  // Instance: the symbol the instance is recorded under (a .cga leaf after the insert,
+  // `i("tree.obj") Tree.`), without parameters; kPlacingSymbol: the shape that places it.
+  static constexpr uint32_t kPlacingSymbol = UINT32_MAX;
+  uint32_t recordAs = kPlacingSymbol;
   bool repeat = false;  // Subdiv `{ ... }*`: its parts repeat as a pattern along the axis
   // Subdiv from a CityEngine `.cga` split: CityEngine's sizing (rt::cga::cityEngineSizes:
   // the rest left empty, overflow cut) instead of R002 when the sizes do not fill the scope.

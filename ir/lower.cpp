@@ -320,6 +320,7 @@ class Lowerer {
                   : cmd.id == CommandId::InstanceCollide ? InstanceMode::Collide
                                                          : InstanceMode::Merge;
         op.index = m_.internAsset(constString(*item.args[0]));
+        if (!item.recordAs.empty()) op.recordAs = leafSymbol(symbolDisplayName(item.recordAs));
         allArgs(1);
         break;
       case CommandId::Subdiv:
@@ -649,6 +650,16 @@ class Lowerer {
     }
     out.loc = toLoc(e.range);
     return out;
+  }
+
+  // The symbol of a leaf no successor creates (an insert's `Tree.`): found, or added
+  // without rules or parameters.
+  uint32_t leafSymbol(const std::string& name) {
+    if (const int s = m_.findSymbol(name); s >= 0) return static_cast<uint32_t>(s);
+    Symbol sym;
+    sym.name = name;
+    m_.symbols.push_back(std::move(sym));
+    return static_cast<uint32_t>(m_.symbols.size() - 1);
   }
 
   Expr attrRead(size_t attr, const frontend::Expr& e) {

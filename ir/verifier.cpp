@@ -456,6 +456,8 @@ class Verifier {
       case OpKind::Instance:
         if (op.index >= m_.assets.size()) problem("asset " + std::to_string(op.index) + " out of range");
         if (op.mode > InstanceMode::Merge) problem("bad instance mode");
+        if (op.recordAs != Op::kPlacingSymbol && op.recordAs >= m_.symbols.size())
+          problem("instance recorded as symbol " + std::to_string(op.recordAs) + ", out of range");
         numArgs(op, r, op.mode == InstanceMode::Merge ? 2 : 0);  // IM: maxDist, maxAngle
         break;
       case OpKind::Emit: emit(op, r); break;

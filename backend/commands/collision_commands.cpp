@@ -26,8 +26,10 @@ void CollisionCommands::prepare(bool grammarCollides) {
 void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   switch (op.kind) {
     case ir::OpKind::Instance: {
-      const uint32_t sym = d_.placingSymbol(ex);
-      const uint32_t count = ex.symbol == UINT32_MAX ? 0 : d_.module().symbols[sym].slotCount;
+      // A .cga leaf after the insert (`i(a) Tree.`) takes the instance, without parameters.
+      const bool leaf = op.recordAs != ir::Op::kPlacingSymbol;
+      const uint32_t sym = leaf ? op.recordAs : d_.placingSymbol(ex);
+      const uint32_t count = leaf || ex.symbol == UINT32_MAX ? 0 : d_.module().symbols[sym].slotCount;
       // Rejected: the rest of the production goes (cull), or only this instance (omit),
       // except inside a Lock set, which a collision anywhere removes whole.
       if (!placeChecked(op, st.scope, sym, ex.params, count, a) && (!d_.module().collision.omit || d_.inLock()))

@@ -107,7 +107,11 @@ void Derivation::directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, cons
   placingShape_ = {depth, preorder};
   const uint32_t outerDepth = placingDepth_;
   placingDepth_ = depth;
-  placeInstance(layout_.ops[op]->index, s, symbol, params, m_.symbols[symbol].slotCount, layout_.ops[op]->loc);
+  const ir::Op& placed = *layout_.ops[op];
+  if (placed.recordAs != ir::Op::kPlacingSymbol)  // a .cga leaf after the insert: CollisionCommands::apply
+    placeInstance(placed.index, s, placed.recordAs, nullptr, 0, placed.loc);
+  else
+    placeInstance(placed.index, s, symbol, params, m_.symbols[symbol].slotCount, placed.loc);
   placingDepth_ = outerDepth;
 }
 

@@ -148,8 +148,10 @@ void Translator::operation(P::OperationContext* op, Sequence& seq, const Env& en
     }
   };
   auto emit = [&](const std::string& name, bool leaf, std::vector<ExprPtr> args) {
-    // After an insert a leaf is the inserted asset itself: nothing more to output.
+    // After an insert a leaf is the inserted asset itself: nothing more to output, and the
+    // instance is the leaf's (`i("tree.obj") Tree.` places a Tree).
     if (seq.pendingInsert && leaf) {
+      seq.pendingInsert->recordAs = symbolName(name);
       flushInsert();
       return;
     }
