@@ -171,6 +171,9 @@ ValueType Analyzer::typeOfBinary(const Expr& e, const Where& w, bool report) {
   }
   if (unknown) return record(e, a == ValueType::Unknown ? b : a, report);
   if (a == ValueType::Num && b == ValueType::Num) return record(e, ValueType::Num, report);
+  // A string joined with a string, number or truth value (CGA's string `+`, "floor" + 3).
+  if (op == "+" && (a == ValueType::Str || b == ValueType::Str) && a != ValueType::Vec3 && b != ValueType::Vec3)
+    return record(e, ValueType::Str, report);
   if ((op == "+" || op == "-") && a == ValueType::Vec3 && b == ValueType::Vec3)
     return record(e, ValueType::Vec3, report);
   if (op == "*" && ((a == ValueType::Vec3 && b == ValueType::Num) ||

@@ -183,6 +183,7 @@ const char* operatorSpelling(ExprOp op) {
     case ExprOp::Ge: return ">=";
     case ExprOp::And: return "&&";
     case ExprOp::Or: return "||";
+    case ExprOp::Join: return "+";
     default: return "";
   }
 }

@@ -41,6 +41,9 @@ enum class ExprOp : uint8_t {
   Query,    // query: Query; args as the query takes
   MakeVec,  // (x, y, z)
   VecElem,  // args[0].x/.y/.z: index 0..2
+  // CGA's string `+`: args[0] and args[1] (Num, Bool or Str each) as text, joined (Str; a
+  // number as CityEngine prints it, backend/interp/joined_strings.h).
+  Join,
 };
 
 enum class Builtin : uint8_t {

@@ -618,7 +618,8 @@ class Lowerer {
             {"%", ExprOp::Mod}, {"^", ExprOp::Pow}, {"==", ExprOp::Eq}, {"!=", ExprOp::Ne},
             {"<", ExprOp::Lt},  {"<=", ExprOp::Le}, {">", ExprOp::Gt},  {">=", ExprOp::Ge},
             {"&&", ExprOp::And}, {"||", ExprOp::Or}};
-        out = node(kOps.at(e.text), typeOf(e), e);
+        // `+` with a string: CGA's string join ("floor" + 3), at run time.
+        out = node(e.text == "+" && typeOf(e) == Type::Str ? ExprOp::Join : kOps.at(e.text), typeOf(e), e);
         out.args.push_back(expr(*e.args[0]));
         out.args.push_back(expr(*e.args[1]));
         return out;

@@ -50,7 +50,8 @@ int precedence(const Expr& e) {
     case ExprOp::Gt:
     case ExprOp::Ge: return PrecCompare;
     case ExprOp::Add:
-    case ExprOp::Sub: return PrecAdd;
+    case ExprOp::Sub:
+    case ExprOp::Join: return PrecAdd;
     case ExprOp::Mul:
     case ExprOp::Div:
     case ExprOp::Mod: return PrecMul;

@@ -716,6 +716,12 @@ class Verifier {
         expectType(e, Type::Num, "rand");
         return;
       case ExprOp::Query: query(e); return;
+      case ExprOp::Join:
+        if (!arity(e, 2, "string +")) return;
+        for (const Expr& a : e.args)
+          if (a.type == Type::Vec3) problem("string + of a vector");
+        expectType(e, Type::Str, "string +");
+        return;
       case ExprOp::MakeVec:
         if (!arity(e, 3, "vector")) return;
         for (const Expr& a : e.args) expectType(a, Type::Num, "vector component");

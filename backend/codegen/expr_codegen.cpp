@@ -240,6 +240,12 @@ class ExprCodegen {
       }
       case ExprOp::Query: return query(e);
       case ExprOp::VecElem: return vec(e.args[0])[e.index];
+      case ExprOp::Join: {
+        llvm::Value* x = a(0);
+        llvm::Value* y = a(1);
+        return call("fgsg_rt_join", {ctx_, x, i32(static_cast<uint32_t>(e.args[0].type)), y,
+                                     i32(static_cast<uint32_t>(e.args[1].type))});
+      }
       case ExprOp::MakeVec: break;
     }
     return raiseNum(FGSG_E_INTERNAL, e.loc);

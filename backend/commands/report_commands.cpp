@@ -12,13 +12,10 @@ rt::ReportValue ReportCommands::value(const ir::Expr& e, const double* a) const 
       v.kind = rt::ReportValue::Kind::Boolean;
       v.number = *a != 0 ? 1 : 0;
       break;
-    case ir::Type::Str: {
+    case ir::Type::Str:  // the module's or a joined one ("roof.area." + kind)
       v.kind = rt::ReportValue::Kind::String;
-      const auto& strings = d_.module().strings;
-      const double id = *a;
-      if (id >= 0 && id < double(strings.size())) v.text = strings[size_t(id)];
+      v.text = d_.stringText(*a);
       break;
-    }
     default: v.number = *a; break;
   }
   return v;

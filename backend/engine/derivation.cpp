@@ -145,6 +145,9 @@ rt::DeriveResult Derivation::run() {
   if (result.ok)
     if (auto never = marching_.tally().neverStarted()) result.messages.push_back(*never);  // R030
   result.stats = stats_;
+  // Strings a `+` joined follow the module's in the instances' table (string parameters).
+  if (out_.strings.size() == m_.strings.size())
+    out_.strings.insert(out_.strings.end(), eval_.joinedStrings().joined().begin(), eval_.joinedStrings().joined().end());
   result.instances = std::move(out_);
   result.reports = reports_.takeReports();
   result.prints = reports_.takePrints();

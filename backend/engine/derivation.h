@@ -152,6 +152,11 @@ class Derivation final : public QueryHost {
   void directTimeCheck() { checkTime(); }
   void directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, const double* params, uint32_t depth,
                       uint64_t preorder);
+  double nativeJoin(double a, uint32_t ta, double b, uint32_t tb) {
+    return eval_.join(a, static_cast<ir::Type>(ta), b, static_cast<ir::Type>(tb));
+  }
+  // A string id's text (the module's, or one a string `+` joined): reports, prints.
+  const std::string& stringText(double id) const { return eval_.string(id); }
 
  private:
   // A branch of a rule that applies, with its weight.

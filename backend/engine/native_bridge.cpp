@@ -174,6 +174,13 @@ void fgsg_rt_direct_instance(FgsgContext* ctx, void* scope, uint32_t op, uint32_
   });
 }
 
+double fgsg_rt_join(FgsgContext* ctx, double a, uint32_t ta, double b, uint32_t tb) noexcept {
+  auto& call = *static_cast<NativeCall*>(ctx);
+  double id = -1;
+  call.guard([&] { id = call.engine->nativeJoin(a, ta, b, tb); });
+  return id;
+}
+
 void fgsg_rt_check_time(FgsgContext* ctx) noexcept {
   auto& call = *static_cast<NativeCall*>(ctx);
   call.guard([&] { call.engine->directTimeCheck(); });

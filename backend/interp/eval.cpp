@@ -51,6 +51,10 @@ double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
     }
     case ExprOp::Query: return query(e, f);
     case ExprOp::VecElem: return vec(e.args[0], f)[e.index];
+    case ExprOp::Join: {
+      const double x = num(e.args[0], f), y = num(e.args[1], f);
+      return joined_.join(x, e.args[0].type, y, e.args[1].type);
+    }
     case ExprOp::MakeVec: break;
   }
   throw DeriveError{e.loc, "R900", "internal: a vector was used as a number"};

@@ -4,6 +4,7 @@
 // in the scope commands.
 #pragma once
 
+#include "backend/interp/joined_strings.h"
 #include "ir/ir.h"
 #include "runtime/geometry.h"
 #include "runtime/random.h"
@@ -64,7 +65,7 @@ struct Frame {
 class Evaluator {
  public:
   Evaluator(const ir::Module& m, std::vector<double> attrSlots)
-      : m_(m), attrs_(std::move(attrSlots)) {}
+      : m_(m), attrs_(std::move(attrSlots)), joined_(m.strings) {}
 
   // Constants and parameters, most arguments in practice, are read without a call.
   double num(const ir::Expr& e, const Frame& f) const {
@@ -84,7 +85,11 @@ class Evaluator {
       out[0] = num(e, f);
     }
   }
-  const std::string& string(double id) const { return m_.strings.at(static_cast<size_t>(id)); }
+  // A string id's text: the module's, or one a string `+` joined while deriving.
+  const std::string& string(double id) const { return joined_.text(id); }
+  // CGA's string `+` (ExprOp::Join), for compiled code too (fgsg_rt_join).
+  double join(double a, ir::Type ta, double b, ir::Type tb) const { return joined_.join(a, ta, b, tb); }
+  const JoinedStrings& joinedStrings() const { return joined_; }
   // The attribute slots as compiled code reads them (three per attribute).
   const double* attrData() const { return attrs_.data(); }
   // Another set of values (a lot's, --lots) in the same slots: compiled code keeps reading
@@ -101,6 +106,7 @@ class Evaluator {
 
   const ir::Module& m_;
   std::vector<double> attrs_;  // three slots per attribute
+  mutable JoinedStrings joined_;  // evaluating is const; joining a string records it
 };
 
 // Why `name=text` cannot override an attribute of m: an unknown name, or a value that is

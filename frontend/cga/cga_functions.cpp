@@ -119,15 +119,12 @@ ExprPtr Translator::expr(P::ExprContext* ctx, const Env& env) {
   ExprPtr l = expr(b->expr(0), env), r = expr(b->expr(1), env);
   if (!l || !r) return nullptr;
   const std::string op = b->op->getText();
-  // String concatenation of two constants folds here; fgsg has no string `+` at run time.
+  // String concatenation of two constants folds here; any other string `+` joins at run
+  // time (ir::ExprOp::Join: "roof.area." + kind, "floor" + 3).
   if (op == "+" && l->kind == ExprKind::String && r->kind == ExprKind::String) {
     l->text += r->text;
     l->range = rangeOf(ctx);
     return l;
-  }
-  if (op == "+" && (l->kind == ExprKind::String || r->kind == ExprKind::String)) {
-    notSupported(rangeOf(ctx), "joining a string with a value computed at run time (`+` on strings)");
-    return nullptr;
   }
   ExprPtr e = binary(op, std::move(l), std::move(r));
   e->range = rangeOf(ctx);
