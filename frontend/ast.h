@@ -165,6 +165,9 @@ struct ValueDecl {  // const name = expr;   attr name = expr;
   std::string name;
   ExprPtr value;
   std::vector<AttrAnnotation> annotations;  // metadata for inspectors (sliders, enums ...)
+  // An imported attr set by the importer (`import m : "m.cga"` then `m.floor_height =
+  // floor_height`): its value may read the importer's attrs, and follows them.
+  bool fromImporter = false;
 };
 
 struct SurfaceDecl {  // surface "bunny.off";   surface torus(2, 0.6);

@@ -377,6 +377,7 @@ class Importer {
       for (auto& v : mod.values)
         if (v.name == name && v.isAttr) {
           v.value = std::move(d.settings[i].second);
+          v.fromImporter = true;
           found = true;
         }
       if (!found)

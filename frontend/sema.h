@@ -39,6 +39,9 @@ struct AttrInfo {
   ConstValue value;
   SourceRange range;
   std::vector<AttrAnnotation> annotations;  // from a .cga file's @Range, @Enum ...
+  // An import's attr set from the importer's attrs (`m.floor_height = floor_height`): the
+  // expression it follows at run time (`value` is its default); null for a constant.
+  const Expr* importerValue = nullptr;
 };
 
 // `tileset NAME { ... }` checked: its curves as constant points, in the order written.

@@ -98,6 +98,10 @@ class Analyzer {
   // Constant expressions (sema_constants.cpp).
   const Expr* zeroDivisor(const Expr& e) const;
   bool evalConst(const Expr& e, ConstValue& out) const;
+  // An import's attr setting over the importer's attrs (ValueDecl::fromImporter): typed,
+  // its default from the attrs' defaults in `out`; false (nothing reported) when it reads
+  // more than constants, attrs and math.
+  bool importerValue(const Expr& e, ConstValue& out);
   static std::string wholeNumberText(double v);
   static std::string formatNumber(double v);
 

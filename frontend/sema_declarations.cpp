@@ -28,6 +28,10 @@ void Analyzer::collectValues() {
       continue;
     }
     ConstValue value;
+    if (v.isAttr && v.fromImporter && !evalConst(*v.value, value) && importerValue(*v.value, value)) {
+      res_.attrs.push_back({v.name, value, v.range, v.annotations, v.value.get()});
+      continue;
+    }
     if (!evalConst(*v.value, value)) {
       // Its uses are not reported again as unknown names (E010): this is the one error.
       failedValues_.insert(v.name);
@@ -36,9 +40,12 @@ void Analyzer::collectValues() {
         continue;
       }
       diags_.error("E023", v.value->range,
-                   std::string(v.isAttr ? "the default of attr '" : "const '") + v.name +
-                       "' must be a constant expression (numbers, strings, earlier "
-                       "constants and math functions)");
+                   v.fromImporter ? "the importer's value of attr '" + v.name +
+                                        "' may use numbers, strings, constants, this file's attrs and math "
+                                        "functions"
+                                  : std::string(v.isAttr ? "the default of attr '" : "const '") + v.name +
+                                        "' must be a constant expression (numbers, strings, earlier "
+                                        "constants and math functions)");
       continue;
     }
     if (v.isAttr)
@@ -46,6 +53,35 @@ void Analyzer::collectValues() {
     else
       res_.constants[v.name] = value;
   }
+}
+
+bool Analyzer::importerValue(const Expr& e, ConstValue& out) {
+  // Only what is known before any shape exists: no queries, parameters or random numbers.
+  std::function<bool(const Expr&)> plain = [&](const Expr& x) {
+    if (x.kind == ExprKind::Member || x.kind == ExprKind::RelSize || x.kind == ExprKind::FloatSize) return false;
+    if (x.kind == ExprKind::Call && (x.text == "Rand" || x.text == "rand")) return false;
+    if (x.kind == ExprKind::Ident && !res_.constants.count(x.text) && x.text != "pi" && x.text != "PI") {
+      bool attr = false;
+      for (const AttrInfo& a : res_.attrs) attr |= a.name == x.text;
+      if (!attr) return false;
+    }
+    for (const auto& a : x.args)
+      if (!plain(*a)) return false;
+    return true;
+  };
+  if (!plain(e)) return false;
+  const ValueType type = typeOf(e, Where{}, true);
+  if (type == ValueType::Unknown) return false;
+  // The default: the expression over the attrs' defaults (as constants for a moment).
+  const std::map<std::string, ConstValue> constants = res_.constants;
+  for (const AttrInfo& a : res_.attrs) res_.constants.emplace(a.name, a.value);
+  const bool folded = evalConst(e, out);
+  res_.constants = constants;
+  if (!folded || out.type != type) {  // a string `+`: joined when the attrs are known
+    out = {};
+    out.type = type;
+  }
+  return true;
 }
 
 // A scalar field's expression is computed once per vertex, before any shape exists: it

@@ -271,6 +271,11 @@ struct Attr {
   Type type = Type::Num;
   Expr value;  // constant default; `--set` replaces it
   std::vector<AttrAnnotation> annotations;
+  // An import's attr set from the importer's attrs (`m.floor_height = floor_height`):
+  // computed from their values (--set, a lot's properties included) unless --set names
+  // this attr itself; `value` is its default.
+  bool fromImporter = false;
+  Expr importerValue;
 };
 
 enum class DeriveMode : uint8_t { BreadthFirst, DepthFirst, Parallel };

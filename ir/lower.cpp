@@ -49,6 +49,11 @@ class Lowerer {
     }
     for (const auto& a : sema_.attrs) {
       m_.attrs.push_back({a.name, toType(a.value.type), constant(a.value), {}});
+      if (a.importerValue) {  // reads only the attrs before it
+        Expr v = expr(*a.importerValue);
+        m_.attrs.back().fromImporter = true;
+        m_.attrs.back().importerValue = std::move(v);
+      }
       for (const auto& n : a.annotations) m_.attrs.back().annotations.push_back({n.name, n.args});
     }
     lowerEnvironment();  // first: queries refer to environment entries by index

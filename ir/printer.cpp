@@ -130,7 +130,8 @@ class Printer {
         for (const auto& [k, v] : n.args) args += (args.empty() ? "" : ", ") + (k.empty() ? v : k + "=" + v);
         if (!n.args.empty()) notes += "(" + args + ")";
       }
-      line(0, "attr " + a.name + ": " + typeName(a.type) + " = " + expr(nullptr, a.value) + notes);
+      line(0, "attr " + a.name + ": " + typeName(a.type) + " = " + expr(nullptr, a.value) +
+                  (a.fromImporter ? " follows " + expr(nullptr, a.importerValue) : "") + notes);
     }
     for (const Symbol& s : m_.symbols) {
       std::string text = "symbol " + s.name + "(";

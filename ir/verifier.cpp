@@ -73,6 +73,11 @@ class Verifier {
       if (a.value.type != a.type)
         problem("default value is " + str(a.value.type) + ", attribute is " + str(a.type));
       expr(a.value, nullptr);
+      if (a.fromImporter) {
+        expr(a.importerValue, nullptr);
+        if (a.importerValue.type != a.type)
+          problem("importer's value is " + str(a.importerValue.type) + ", attribute is " + str(a.type));
+      }
     }
     for (size_t i = 0; i < m_.symbols.size(); ++i) symbol(static_cast<uint32_t>(i));
     {

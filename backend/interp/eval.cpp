@@ -266,6 +266,17 @@ std::vector<double> attributeSlots(
     readAttributeValue(m, a, text, out, expected);
     if (m.attrs[a].type == ir::Type::Str) out[0] = m.internString(text);
   }
+  // An import's attr set from the importer's attrs follows their values now known, unless
+  // it is set itself; those it reads come before it.
+  for (size_t i = 0; i < m.attrs.size(); ++i) {
+    const ir::Attr& at = m.attrs[i];
+    if (!at.fromImporter ||
+        std::any_of(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == at.name; }))
+      continue;
+    const Evaluator ev(m, slots);
+    ev.store(at.importerValue, Frame{}, &slots[3 * i]);
+    if (at.type == ir::Type::Str) slots[3 * i] = m.internString(ev.string(slots[3 * i]));  // a joined one too
+  }
   return slots;
 }
 
