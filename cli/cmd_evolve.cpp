@@ -33,7 +33,7 @@ namespace {
 
 namespace ev = rt::evolve;
 
-const char* kUsage =
+const char* kEvolveUsage =
     "usage: fgsg evolve TILES.json [--k K] [--axiom-side A] [--generation G] [--p4] [--seed N]\n"
     "                   [--population N] [--max-generations N] [--threshold F] [--parents N]\n"
     "                   [--elite N] [--crossover P] [--mutation P] [--weights a,b,c[,d]]\n"
@@ -210,7 +210,7 @@ int ornamentSurface(const EvolveCommandOptions& opt, const ev::TileSet& tiles, c
 
 }  // namespace
 
-const char* evolveUsage() { return kUsage; }
+const char* evolveUsage() { return kEvolveUsage; }
 
 int evolveCommand(const Args& args) {
   EvolveCommandOptions opt;
@@ -218,10 +218,10 @@ int evolveCommand(const Args& args) {
     opt = parseOptions(args);
     if (opt.lsystem.empty()) ev::checkOptions(opt.ga);  // --lsystem runs no GA
   } catch (const UsageError& e) {
-    std::cerr << "fgsg evolve: " << e.message << "\n" << kUsage;
+    std::cerr << "fgsg evolve: " << e.message << "\n" << kEvolveUsage;
     return 2;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "fgsg evolve: " << e.what() << "\n" << kUsage;
+    std::cerr << "fgsg evolve: " << e.what() << "\n" << kEvolveUsage;
     return 2;
   }
   std::string error;

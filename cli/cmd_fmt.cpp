@@ -19,7 +19,7 @@ struct FmtOptions {
   std::vector<std::string> files;
 };
 
-const char* const kUsage = "fgsg fmt [--check] [--stdout] FILE... (or - for stdin)";
+const char* const kFmtUsage = "fgsg fmt [--check] [--stdout] FILE... (or - for stdin)";
 
 // Formats one file; returns 0 (done, or already formatted), 1 (errors, or --check finds
 // a change). Nothing is written on an error.
@@ -73,12 +73,12 @@ int fmtCommand(const Args& args) {
     else if (!onlyFiles && a == "--check") o.check = true;
     else if (!onlyFiles && a == "--stdout") o.toStdout = true;
     else if (!onlyFiles && a.size() > 1 && a[0] == '-') {
-      std::cerr << "fgsg fmt: unknown option '" << a << "' (usage: " << kUsage << ")\n";
+      std::cerr << "fgsg fmt: unknown option '" << a << "' (usage: " << kFmtUsage << ")\n";
       return 2;
     } else o.files.push_back(a);
   }
   if (o.files.empty()) {
-    std::cerr << "fgsg fmt: no grammar file given (usage: " << kUsage << ")\n";
+    std::cerr << "fgsg fmt: no grammar file given (usage: " << kFmtUsage << ")\n";
     return 2;
   }
   int stdinCount = 0;

@@ -26,7 +26,7 @@ namespace {
 
 using namespace fgsg::rt::synthesis;
 
-const char* const kUsage =
+const char* const kSynthUsage =
     "usage: fgsg synth EXAMPLE --size X Y Z [--block N] [--seed N] [--labels out.txt]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--periodic] [--mask image.png]\n"
     "                  [--order scanline|entropy] [--retries N] [--attempts N] [--closed]\n"
@@ -34,7 +34,7 @@ const char* const kUsage =
     "                  [--connect N] [--max-steps N] [--max-seconds S] [--cell SIZE] [--stats]\n";
 
 int usage(const std::string& msg) {
-  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kUsage);
+  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kSynthUsage);
   return 2;
 }
 
@@ -66,7 +66,7 @@ std::string dirOf(const std::string& path) {
 
 // Both forms: a label grid / tile set / image, and a polygonal example.
 const char* synthUsage() {
-  static const std::string both = std::string(kUsage) + continuousSynthUsage();
+  static const std::string both = std::string(kSynthUsage) + continuousSynthUsage();
   return both.c_str();
 }
 

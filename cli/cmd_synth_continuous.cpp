@@ -23,14 +23,14 @@ namespace {
 
 using namespace fgsg::rt::synthesis::continuous;
 
-const char* const kUsage =
+const char* const kSynthContinuousUsage =
     "usage: fgsg synth EXAMPLE.obj|.ply|.off|.stl|.glb --size X Y Z [--spacing S] [--seed N] [--block N]\n"
     "                  [--fill F] [--fixed-width A,B,C:N] [--plane-step A,B,C:N] [--floating] [--connect N]\n"
     "                  [--mask image.png] [--symmetry mirror-x|mirror-z] [--perturb D] [--retries N] [--passes N] [--max-seconds S]\n"
     "                  [-o out.glb|.obj|.ply] [--preview out.png] [--stats]\n";
 
-int usage(const std::string& msg) {
-  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kUsage);
+int usageError(const std::string& msg) {
+  std::fprintf(stderr, "fgsg synth: error: %s\n%s", msg.c_str(), kSynthContinuousUsage);
   return 2;
 }
 
@@ -73,7 +73,7 @@ std::string whyEmpty(const ContinuousOptions& o) {
 
 }  // namespace
 
-const char* continuousSynthUsage() { return kUsage; }
+const char* continuousSynthUsage() { return kSynthContinuousUsage; }
 
 int continuousSynthCommand(const Args& args) {
   std::string example, meshOut, previewOut, maskPath;
@@ -141,11 +141,11 @@ int continuousSynthCommand(const Args& args) {
     cl.flag("--stats", stats);
     cl.parse(args);
   } catch (const UsageError& e) {
-    return usage(e.message);
+    return usageError(e.message);
   }
-  if (example.empty()) return usage("no example file given");
-  if (!haveSize) return usage("--size X Y Z is required");
-  if (onGround && floating) return usage("--on-ground and --floating exclude each other");
+  if (example.empty()) return usageError("no example file given");
+  if (!haveSize) return usageError("--size X Y Z is required");
+  if (onGround && floating) return usageError("--on-ground and --floating exclude each other");
   o.onGround = !floating;
   if (meshOut.empty()) meshOut = defaultModelOutput(example);  // as fgsg run
 

@@ -97,7 +97,7 @@ bool isStatementKeyword(size_t type) {
   }
 }
 
-bool isArrow(size_t type) { return type == FgsgLexer::ARROW || type == FgsgLexer::ASSIGN; }
+bool isArrowToken(size_t type) { return type == FgsgLexer::ARROW || type == FgsgLexer::ASSIGN; }
 
 // Tokens after which a statement cannot have ended: the next line continues it.
 bool expectsContinuation(size_t type) {
@@ -241,7 +241,7 @@ class ImplicitSemicolons {
     }
     if (modules == 0) return false;
     const size_t next = type(j);
-    if (isArrow(next) || next == FgsgLexer::GT) return modules == 1;
+    if (isArrowToken(next) || next == FgsgLexer::GT) return modules == 1;
     if (next == FgsgLexer::LT) return true;
     if (next == FgsgLexer::COLON) return modules == 1 && arrowEndsGuard(j + 1);
     return false;
@@ -268,8 +268,8 @@ class ImplicitSemicolons {
     for (; k < t_.size(); ++k) {
       const size_t ty = type(k);
       if (ty == FgsgLexer::SEMI || ty == Token::EOF) return false;
-      if (firstOnLine(k) && (ty == FgsgLexer::ID || isArrow(ty))) return false;
-      if (isArrow(ty)) return true;
+      if (firstOnLine(k) && (ty == FgsgLexer::ID || isArrowToken(ty))) return false;
+      if (isArrowToken(ty)) return true;
     }
     return false;
   }

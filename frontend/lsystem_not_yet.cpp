@@ -11,7 +11,7 @@ using fgsg_grammar::FgsgLexer;
 
 namespace {
 
-bool adjacent(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
+bool writtenTogether(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
 
 // The index after the ')' closing the '(' at `open` (or the EOF's index).
 size_t afterClosing(const std::vector<std::unique_ptr<Token>>& tokens, size_t open) {
@@ -44,7 +44,7 @@ void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& token
   for (size_t i = 0; i < tokens.size();) {
     const Token* t = tokens[i].get();
     const Token* next = i + 1 < tokens.size() ? tokens[i + 1].get() : nullptr;
-    const bool named = next && next->getType() == FgsgLexer::ID && adjacent(t, next);
+    const bool named = next && next->getType() == FgsgLexer::ID && writtenTogether(t, next);
     if (named && t->getType() == FgsgLexer::UNKNOWN_CHAR && t->getText() == "#" && next->getText() == "consider") {
       const SourceRange at{tokenRange(t).begin, tokenRange(next).end};
       diags.error("E048", at,
@@ -55,7 +55,7 @@ void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& token
     }
     // ?P ?H ?U ?L are query modules (frontend/query_modules.h); ?E is not supported yet.
     if (named && t->getType() == FgsgLexer::QUESTION && next->getText() == "E" && i + 2 < tokens.size() &&
-        tokens[i + 2]->getType() == FgsgLexer::LPAREN && adjacent(next, tokens[i + 2].get())) {
+        tokens[i + 2]->getType() == FgsgLexer::LPAREN && writtenTogether(next, tokens[i + 2].get())) {
       const size_t end = afterClosing(tokens, i + 2);
       const SourceRange at{tokenRange(t).begin, tokenRange(tokens[end - 1].get()).end};
       diags.error("E048", at,

@@ -29,7 +29,7 @@ constexpr int kMaxErrors = 50;
 constexpr int kMaxNesting = 256;
 constexpr int kMaxRecursiveOperators = 1024;
 
-bool endsOperand(size_t type) {
+bool endsParsedOperand(size_t type) {
   switch (type) {
     case FgsgParser::ID: case FgsgParser::INT: case FgsgParser::FLOAT: case FgsgParser::RELSIZE:
     case FgsgParser::STRING: case FgsgParser::TRUE: case FgsgParser::FALSE:
@@ -79,7 +79,7 @@ class StatementScan {
         case FgsgParser::BANG: case FgsgParser::MINUS: case FgsgParser::PLUS:
           // Only a prefix operator recurses; after an operand it is binary (or a turtle
           // symbol after an item), which the parser handles in a loop.
-          if (i > start_ && !endsOperand(type(i - 1)) && ++recursive > kMaxRecursiveOperators) {
+          if (i > start_ && !endsParsedOperand(type(i - 1)) && ++recursive > kMaxRecursiveOperators) {
             return tokens_.get(i);
           }
           break;

@@ -4,7 +4,7 @@ namespace fgsg::cli::lsp {
 namespace {
 
 // LSP's SymbolKind.
-constexpr int kField = 8, kFunction = 12, kConstant = 14, kProperty = 7;
+constexpr int kSymbolField = 8, kSymbolFunction = 12, kSymbolConstant = 14, kSymbolProperty = 7;
 
 bool contains(const frontend::SourceRange& outer, const frontend::SourceRange& inner) {
   auto before = [](const frontend::SourceLoc& x, const frontend::SourceLoc& y) {
@@ -19,11 +19,11 @@ Json documentSymbols(const Analysis& a) {
   Json symbols = Json::array();
   for (const auto& d : a.definitions) {
     if (!d.inDocument) continue;
-    int kind = kFunction;
+    int kind = kSymbolFunction;
     const char* detail = "rule";
-    if (d.kind == Definition::Kind::Attr) kind = kProperty, detail = "attr";
-    if (d.kind == Definition::Kind::Const) kind = kConstant, detail = "const";
-    if (d.kind == Definition::Kind::Field) kind = kField, detail = "field";
+    if (d.kind == Definition::Kind::Attr) kind = kSymbolProperty, detail = "attr";
+    if (d.kind == Definition::Kind::Const) kind = kSymbolConstant, detail = "const";
+    if (d.kind == Definition::Kind::Field) kind = kSymbolField, detail = "field";
     // LSP wants the name's range inside the declaration's.
     const frontend::SourceRange selection = contains(d.range, d.nameRange) ? d.nameRange : d.range;
     symbols.push_back(Json{{"name", d.name},

@@ -15,7 +15,7 @@ namespace fgsg::rt::cells {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180;
+constexpr double kRadiansPerDegree = kPi / 180;
 
 double polylineLength(const std::vector<Vec3>& p) {
   double l = 0;
@@ -125,12 +125,12 @@ std::vector<int> faceVertices(const FeatureFace& f, const surface::SurfaceMesh& 
 
 bool fitPlane(FeatureFace& f, const surface::SurfaceMesh& m, const FeatureOptions& o,
               const std::vector<int>& verts, const Vec3& centroid) {
-  const double cosTol = std::cos(o.planarDegrees * kDegree) - 1e-12;
+  const double cosTol = std::cos(o.planarDegrees * kRadiansPerDegree) - 1e-12;
   for (int t : f.triangles)
     if (m.faceNormals[t].dot(f.normal) < cosTol) return false;
   const Vec3 n = f.normal;
   const Vec3 up = o.up - o.up.dot(n) * n;
-  if (up.norm() > std::sin(o.directionDegrees * kDegree) && up.norm() > 1e-9) {
+  if (up.norm() > std::sin(o.directionDegrees * kRadiansPerDegree) && up.norm() > 1e-9) {
     f.vAxis = up.normalized();  // a wall or a roof: v up the face, u horizontal
     f.uAxis = f.vAxis.cross(n);
   } else {  // a floor or a ceiling: u along world X (or Y) projected
@@ -157,7 +157,7 @@ bool fitCylinder(FeatureFace& f, const surface::SurfaceMesh& m, const FeatureOpt
   for (int t : f.triangles) M += m.faceAreas[t] * m.faceNormals[t] * m.faceNormals[t].transpose();
   Eigen::SelfAdjointEigenSolver<Mat3> eig(M);
   Vec3 axis = eig.eigenvectors().col(0).normalized();
-  const double sinTol = std::sin(o.planarDegrees * kDegree) + 1e-12;
+  const double sinTol = std::sin(o.planarDegrees * kRadiansPerDegree) + 1e-12;
   for (int t : f.triangles)
     if (std::abs(m.faceNormals[t].dot(axis)) > sinTol) return false;
   int big = 0;
@@ -221,8 +221,8 @@ void fitEdge(FeatureEdge& e, const FeatureOptions& o) {
   e.direction = EdgeDirection::Curved;
   if (fitLine(e, tol)) {
     const double c = std::abs((e.points.back() - e.points.front()).normalized().dot(o.up.normalized()));
-    e.direction = c <= std::sin(o.directionDegrees * kDegree)  ? EdgeDirection::Horizontal
-                  : c >= std::cos(o.directionDegrees * kDegree) ? EdgeDirection::Vertical
+    e.direction = c <= std::sin(o.directionDegrees * kRadiansPerDegree)  ? EdgeDirection::Horizontal
+                  : c >= std::cos(o.directionDegrees * kRadiansPerDegree) ? EdgeDirection::Vertical
                                                                 : EdgeDirection::Slanted;
   } else {
     fitArc(e, tol);

@@ -12,15 +12,15 @@ namespace fgsg::rt::cga {
 namespace {
 
 // Relative to the scope's size: corners closer than this are one vertex.
-constexpr double kMergeTol = 1e-9;
+constexpr double kQueryMergeTol = 1e-9;
 
 // Every face of the geometry in world space: what geometry.* measure.
-std::vector<Polygon3> worldFaces(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
+std::vector<Polygon3> worldPolygons(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
   std::vector<Polygon3> out;
   if (geom.kind == GeomKind::Edge) return out;
   auto toWorld = [&](const Vec3& n) { return scope.toWorld(scope.S.cwiseProduct(n)); };
   if (geom.kind == GeomKind::Box) {
-    const double tol = kMergeTol * (1.0 + scope.S.norm());
+    const double tol = kQueryMergeTol * (1.0 + scope.S.norm());
     int flatAxis = -1, flats = 0;
     for (int a = 0; a < 3; ++a)
       if (!(scope.S[a] > tol)) flatAxis = a, ++flats;
@@ -77,9 +77,9 @@ bool hasReflexCorner(const Polygon3& ring, const Vec3& normal, double tol) {
 
 GeometryFacts geometryFacts(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
   GeometryFacts facts;
-  const std::vector<Polygon3> faces = worldFaces(scope, geom, arena);
+  const std::vector<Polygon3> faces = worldPolygons(scope, geom, arena);
   const double size = 1.0 + scope.S.norm();
-  Vertices vertices(kMergeTol * size);
+  Vertices vertices(kQueryMergeTol * size);
   std::map<std::pair<int, int>, std::pair<int, double>> edges;  // (lo, hi) -> (faces, length)
   for (const Polygon3& f : faces) {
     const Vec3 newell = newellNormal(f);
@@ -111,7 +111,7 @@ GeometryFacts geometryFacts(const Scope& scope, const GeomRef& geom, const Geome
 }
 
 bool geometryIsPlanar(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, double toleranceDegrees) {
-  const std::vector<Polygon3> faces = worldFaces(scope, geom, arena);
+  const std::vector<Polygon3> faces = worldPolygons(scope, geom, arena);
   Vec3 normal = Vec3::Zero(), origin = Vec3::Zero();
   for (const Polygon3& f : faces) {
     const Vec3 n = newellNormal(f);
@@ -124,7 +124,7 @@ bool geometryIsPlanar(const Scope& scope, const GeomRef& geom, const GeometryAre
   if (normal.isZero()) return false;
   const double tol = std::max(0.0, toleranceDegrees) * 3.14159265358979323846 / 180.0;
   const double cosTol = std::cos(tol);
-  const double reach = kMergeTol * (1.0 + scope.S.norm()) + scope.S.norm() * std::sin(std::min(tol, 1.5707963267948966));
+  const double reach = kQueryMergeTol * (1.0 + scope.S.norm()) + scope.S.norm() * std::sin(std::min(tol, 1.5707963267948966));
   for (const Polygon3& f : faces) {
     const Vec3 n = newellNormal(f);
     if (n.norm() > 0 && n.normalized().dot(normal) < cosTol - 1e-12) return false;

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace fgsg::rt::cga {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 enum class RoofKind { Hipped, Gable, Pyramid, Shed };
 
@@ -175,7 +175,7 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
   std::vector<Polygon3> faces;
   double h = 0.0;
   if (!onPolygon) {
-    h = std::min(w, d) / 2 * std::tan(angleDeg * kPi / 180.0);
+    h = std::min(w, d) / 2 * std::tan(angleDeg * std::numbers::pi / 180.0);
     faces = roofFaces(kind, w, d, h);
   } else if (!skeletonRoof(outer, holes, skeletonKind(kind), angleDeg, faces, h, error, nullptr, deadline,
                            RoofOverhang{options.overhang, options.gableOverhang,

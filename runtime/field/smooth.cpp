@@ -9,13 +9,13 @@ namespace {
 // The field as plain arrays: complex values (a vector, or a tensor's deviatoric part
 // (t11 - t22) / 2 + i t12) and, for tensors, the mean eigenvalue, which does not turn.
 // Complex products are written out: std::complex's operator* checks for infinities.
-struct Values {
+struct SmoothedValues {
   std::vector<double> re, im, mean;
 };
 
 // One Jacobi sweep: out = in + step * (mean of transported neighbours - in).
 void sweep(const TangentFrames& frames, const std::vector<double>& rotRe,
-           const std::vector<double>& rotIm, const Values& in, Values& out,
+           const std::vector<double>& rotIm, const SmoothedValues& in, SmoothedValues& out,
            const SmoothOptions& o) {
   const int n = int(frames.vertexCount());
   const bool tensor = !in.mean.empty();
@@ -58,8 +58,8 @@ void smooth(TangentField& field, int iterations, const SmoothOptions& options) {
     rotRe[i] = r.real();
     rotIm[i] = r.imag();
   }
-  Values a, b;
-  for (Values* x : {&a, &b}) {
+  SmoothedValues a, b;
+  for (SmoothedValues* x : {&a, &b}) {
     x->re.resize(n);
     x->im.resize(n);
     if (tensor) x->mean.resize(n);

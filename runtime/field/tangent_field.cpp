@@ -3,6 +3,7 @@
 #include "runtime/field/singularities.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace fgsg::rt::field {
@@ -12,7 +13,6 @@ namespace {
 // A point's vector (or deviatoric tensor part) this much smaller than the largest at the
 // face's corners counts as zero: the field has no direction there.
 constexpr double kDegenerateRelative = 1e-12;
-constexpr double kPi = 3.14159265358979323846;
 
 // Half the difference of the eigenvalues: how anisotropic a symmetric tensor is.
 double deviatoric(const Mat2& t) {
@@ -39,7 +39,7 @@ PlaneEigen eigenOf(const Mat2& s, double w) {
   const double mean = 0.5 * (e.value1 + e.value2), r = 0.5 * (e.value1 - e.value2);
   PlaneEigen out;
   out.vector1 = unit(e.angle);
-  out.vector2 = unit(e.angle + kPi / 2);
+  out.vector2 = unit(e.angle + std::numbers::pi / 2);
   if (w == 0) {
     out.value1 = e.value1, out.value2 = e.value2;
     return out;
@@ -242,7 +242,7 @@ Eigen2 TangentField::eigen(const SurfacePoint& p) const {
     angle = out.value1 > 0 ? std::atan2(v.y(), v.x()) : 0.0;
   }
   out.vector1 = fp.toWorld(unit(angle));
-  out.vector2 = fp.toWorld(unit(angle + kPi / 2));
+  out.vector2 = fp.toWorld(unit(angle + std::numbers::pi / 2));
   return out;
 }
 
@@ -334,10 +334,10 @@ double TangentField::angle(const SurfacePoint& p, const Vec3& axis, Eigenvector 
   }
   double ang = std::atan2(a.x() * u.y() - a.y() * u.x(), a.dot(u));
   if (isTensor()) {
-    if (ang > kPi / 2) ang -= kPi;
-    if (ang <= -kPi / 2) ang += kPi;
+    if (ang > std::numbers::pi / 2) ang -= std::numbers::pi;
+    if (ang <= -std::numbers::pi / 2) ang += std::numbers::pi;
   }
-  return ang * 180 / kPi;
+  return ang * 180 / std::numbers::pi;
 }
 
 bool TangentField::direction(const SurfacePoint& p, Vec3& out) const {

@@ -87,7 +87,7 @@ struct LotRingError {
   std::string message;
 };
 
-[[noreturn]] void fail(const std::string& message) { throw LotRingError{message}; }
+[[noreturn]] void failRings(const std::string& message) { throw LotRingError{message}; }
 
 struct Edge {
   size_t ring, i;
@@ -132,8 +132,8 @@ void checkEdges(const std::vector<LotRing>& rings, const Namer& name, double tol
       if (segmentDistance(a, b, c, d) > tolerance) continue;
       const std::string where = name.ring(e.ring) + ": ";
       const std::string verb = crossProperly(a, b, c, d) ? " crosses " : " touches ";
-      if (e.ring == f.ring) fail(where + name.edge(re, e.i) + verb + name.edge(rf, f.i));
-      fail(where + name.edge(re, e.i) + verb + lotRingName(f.ring) + " at " + name.edge(rf, f.i));
+      if (e.ring == f.ring) failRings(where + name.edge(re, e.i) + verb + name.edge(rf, f.i));
+      failRings(where + name.edge(re, e.i) + verb + lotRingName(f.ring) + " at " + name.edge(rf, f.i));
     }
 }
 
@@ -145,7 +145,7 @@ void checkAreas(const std::vector<LotRing>& rings, const Namer& name, double tol
     Eigen::AlignedBox2d box;
     for (const Eigen::Vector2d& q : ring.xy) box.extend(q);
     if (std::abs(twiceRingArea(ring.xy)) <= 2 * tolerance * box.sizes().maxCoeff())
-      fail(name.ring(r) + ": zero area" + name.messages().view + " (all its " + name.messages().pointNoun +
+      failRings(name.ring(r) + ": zero area" + name.messages().view + " (all its " + name.messages().pointNoun +
            "s on one line, from " + name.point(ring, 0) + ")");
   }
 }
@@ -161,11 +161,11 @@ void checkHoles(const std::vector<LotRing>& rings, const Namer& name) {
   }
   for (size_t h = 1; h < rings.size(); ++h)
     if (!inside(rings[h].xy[0], rings[0].xy))
-      fail(name.ring(h) + ": lies outside the outer ring (its " + name.point(rings[h], 0) + ")");
+      failRings(name.ring(h) + ": lies outside the outer ring (its " + name.point(rings[h], 0) + ")");
   for (size_t h = 1; h < rings.size(); ++h)
     for (size_t k = 1; k < rings.size(); ++k)
       if (h != k && boxes[k].contains(boxes[h]) && inside(rings[h].xy[0], rings[k].xy))
-        fail(name.ring(h) + ": lies inside " + lotRingName(k) + " (its " + name.point(rings[h], 0) +
+        failRings(name.ring(h) + ": lies inside " + lotRingName(k) + " (its " + name.point(rings[h], 0) +
              "); holes may not overlap");
 }
 

@@ -9,7 +9,7 @@ namespace {
 Vec3 toVec3(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
 // v made orthogonal to the unit vector t and normalised; false when nothing is left.
-bool acrossUnit(const Vec3& v, const Vec3& t, Vec3& out) {
+bool acrossTangent(const Vec3& v, const Vec3& t, Vec3& out) {
   const Vec3 across = v - t * t.dot(v);
   const double len = across.norm();
   if (!(len > 1e-12 * v.norm()) || !std::isfinite(len)) return false;
@@ -50,8 +50,8 @@ CurveFrame curveFrame(const CurveSegment& curve, double x) {
     else  // a curve that is a point: any direction across its normal
       f.tangent = n0.squaredNorm() > 0 ? Vec3(n0.unitOrthogonal()) : Vec3(1, 0, 0);
   }
-  if (!acrossUnit((1 - x) * n0 + x * n1, f.tangent, f.up) && !acrossUnit(n0, f.tangent, f.up) &&
-      !acrossUnit(n1, f.tangent, f.up))
+  if (!acrossTangent((1 - x) * n0 + x * n1, f.tangent, f.up) && !acrossTangent(n0, f.tangent, f.up) &&
+      !acrossTangent(n1, f.tangent, f.up))
     f.up = f.tangent.unitOrthogonal();
   f.side = f.up.cross(f.tangent);
   return f;
