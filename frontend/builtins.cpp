@@ -68,6 +68,7 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::Report, "Report", 2, 2, BodyRule::None, "Report(\"key\", value)", nullptr},
     {CommandId::Print, "Print", 1, 1, BodyRule::None, "Print(value)", nullptr},
+    {CommandId::Label, "Label", 1, 1, BodyRule::None, "Label(\"name\")", nullptr},
     // CityEngine's footprint-shaping and scope operations (#44; frontend/shape_operations.h).
     {CommandId::ShapeOperation, "AlignScopeToAxes", 0, 1, BodyRule::None, "AlignScopeToAxes() or AlignScopeToAxes(\"y\")", nullptr},
     {CommandId::ShapeOperation, "AlignScopeToGeometry", 3, 3, BodyRule::None,

@@ -17,6 +17,7 @@ enum class CommandId {
   BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators
   EnglishBond, FlemishBond, HeaderBond, Shingles,
   Report, Print,  // CGA's report(key, value) (collected per start shape) and print(value)
+  Label,          // CGA's label("name"): the shape a labelled context shape (occlusion queries)
   ShapeOperation,  // CityEngine's footprint-shaping and scope operations (frontend/shape_operations.h)
 };
 

@@ -294,6 +294,9 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
         expect(*item.args[k], w, k == 3 && cmd.id != CommandId::RandomStones ? ValueType::Bool : ValueType::Num,
                "this argument");
       break;
+    case CommandId::Label:
+      expect(*item.args[0], w.operand(), ValueType::Str, "the label of 'Label'");
+      break;
     case CommandId::Report:
     case CommandId::Print: {
       // Report's key is a string; the value (Report's and Print's) a number, a truth value,

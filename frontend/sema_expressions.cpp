@@ -285,9 +285,28 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
     if (kShape.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
     if (e.text == "visible" && e.hasCall && e.args.size() == 1)
       return record(e, ValueType::Bool, report);
+    // CityEngine's context queries: Shape.overlaps("intra", "tower") ...
+    static const std::set<std::string> kOcclusion = {"inside", "overlaps", "touches"};
+    static const std::set<std::string> kContext = {"minimumDistance", "contextCount"};
+    if ((kOcclusion.count(e.text) || kContext.count(e.text)) && e.hasCall) {
+      const bool occlusion = kOcclusion.count(e.text) > 0;
+      if (occlusion ? e.args.size() > 2 : e.args.size() != 2)
+        return fail("'Shape." + e.text + "' takes " + (occlusion ? "at most 2 arguments" : "2 arguments") +
+                    ": " + (occlusion ? "Shape." + e.text + "(), " : "") + "Shape." + e.text +
+                    "(\"intra\" or \"inter\" or \"all\", \"label\")");
+      ConstValue target;
+      if (!e.args.empty() && (!evalConst(*e.args[0], target) || target.type != ValueType::Str ||
+                              (target.str != "intra" && target.str != "inter" && target.str != "all")))
+        return fail("the target of 'Shape." + e.text + "' is the constant \"intra\", \"inter\" or \"all\"");
+      if (e.args.size() == 2 && typeOf(*e.args[1], inner, false) != ValueType::Str)
+        return fail("the label of 'Shape." + e.text + "' is a string: Shape." + e.text + "(\"intra\", \"tower\")");
+      if (report && !e.args.empty()) res_.exprTypes[e.args[0].get()] = ValueType::Str;
+      return record(e, occlusion ? ValueType::Bool : ValueType::Num, report);
+    }
     return fail("unknown shape query 'Shape." + e.text +
                 "' (Shape.depth, Shape.index, Shape.splitIndex, Shape.splitTotal, Shape.compIndex, "
-                "Shape.compTotal, Shape.visible(\"street\"))");
+                "Shape.compTotal, Shape.visible(\"street\"), Shape.inside overlaps touches(\"intra\", \"label\"), "
+                "Shape.minimumDistance contextCount(\"intra\", \"label\"))");
   }
   if (e.object == "Geometry") {  // CGA's geometry.*(): the shape's own geometry
     static const std::set<std::string> kNumbers = {"area", "height", "nVertices", "nFaces", "boundaryLength"};

@@ -52,6 +52,11 @@ constexpr QuerySignature kQueries[] = {
     {"Geometry", "isPlanar", 1, N, Type::Bool, true},
     {"Geometry", "isConcave", 0, N, Type::Bool, true},
     {"Geometry", "boundaryLength", 0, N, N, true},
+    {"Shape", "inside", 1, Type::Str, Type::Bool, true},
+    {"Shape", "overlaps", 1, Type::Str, Type::Bool, true},
+    {"Shape", "touches", 1, Type::Str, Type::Bool, true},
+    {"Shape", "minimumDistance", 1, Type::Str, N, true},
+    {"Shape", "contextCount", 1, Type::Str, N, true},
 };
 static_assert(std::size(kQueries) == static_cast<size_t>(kLastQuery) + 1,
               "one signature per Query");

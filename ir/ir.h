@@ -69,8 +69,17 @@ enum class Query : uint8_t {
   GeometryIsPlanar,     // args[0]: the tolerance in degrees (Num); Bool
   GeometryIsConcave,    // Bool
   GeometryBoundaryLength,
+  // CityEngine's context queries (docs/cga.md, "Occlusion and context queries"): extra =
+  // the target (ContextTarget), args[0] the label (Str; "" any occluder). The occlusion
+  // queries are Bool, minimumDistance and contextCount Num.
+  ContextInside, ContextOverlaps, ContextTouches, ContextMinimumDistance, ContextCount,
 };
-inline constexpr Query kLastQuery = Query::GeometryBoundaryLength;
+inline constexpr Query kLastQuery = Query::ContextCount;
+inline bool isGeometryQuery(Query q) { return q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength; }
+inline bool isContextQuery(Query q) { return q >= Query::ContextInside && q <= Query::ContextCount; }
+// Which shapes a context query looks at: its own start shape's (CityEngine's intra), the
+// other start shapes' (inter), or both.
+enum class ContextTarget : uint8_t { Intra, Inter, All };
 
 struct Expr {
   ExprOp op = ExprOp::Const;
@@ -131,6 +140,7 @@ enum class OpKind : uint8_t {
   Print,         // args the value (Num/Bool/Str), or a vector's three components: CGA's print()
   ShapeOperation,  // str = the command (AlignScopeToAxes, Setback, ShapeL ...: frontend/shape_operations.h); args its
                    // numbers (a word argument as the number it stands for); bodies labelled (partLabels) or none
+  Label,         // args[0] the label (Str): CGA's label(), the shape a labelled context shape
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 

@@ -477,6 +477,7 @@ class Lowerer {
         op.index = item.args.size() > 4 ? m_.internString(constString(*item.args[4])) + 1 : 0;
         break;
       case CommandId::Report: op.kind = OpKind::Report; allArgs(0); break;
+      case CommandId::Label: op.kind = OpKind::Label; allArgs(0); break;
       case CommandId::ShapeOperation:
         op.kind = OpKind::ShapeOperation;
         op.str = m_.internString(cmd.name);
@@ -690,13 +691,29 @@ class Lowerer {
           {"depth", Query::ShapeDepth},           {"index", Query::ShapeIndex},
           {"visible", Query::ShapeVisible},       {"splitIndex", Query::ShapeSplitIndex},
           {"splitTotal", Query::ShapeSplitTotal}, {"compIndex", Query::ShapeCompIndex},
-          {"compTotal", Query::ShapeCompTotal}};
+          {"compTotal", Query::ShapeCompTotal},   {"inside", Query::ContextInside},
+          {"overlaps", Query::ContextOverlaps},   {"touches", Query::ContextTouches},
+          {"minimumDistance", Query::ContextMinimumDistance}, {"contextCount", Query::ContextCount}};
       static const std::map<std::string, Query> kGeometry = {
           {"area", Query::GeometryArea},         {"height", Query::GeometryHeight},
           {"nVertices", Query::GeometryVertices}, {"nFaces", Query::GeometryFaces},
           {"isPlanar", Query::GeometryIsPlanar}, {"isConcave", Query::GeometryIsConcave},
           {"boundaryLength", Query::GeometryBoundaryLength}};
       out.index = static_cast<uint32_t>((e.object == "Shape" ? kShape : kGeometry).at(e.text));
+      if (isContextQuery(static_cast<Query>(out.index))) {
+        // The target is a constant word (sema checked it); the label any string, "" for none.
+        const std::string target = e.args.empty() ? "all" : constString(*e.args[0]);
+        out.extra = static_cast<uint32_t>(target == "intra" ? ContextTarget::Intra
+                                          : target == "inter" ? ContextTarget::Inter
+                                                              : ContextTarget::All);
+        if (e.args.size() > 1) {
+          out.args.push_back(expr(*e.args[1]));
+        } else {
+          out.args.push_back(Expr::string(m_.internString("")));
+          out.args.back().loc = out.loc;
+        }
+        return out;
+      }
     } else if (e.object == "Feature") {
       out.index = static_cast<uint32_t>(Query::Feature);
       out.extra = m_.internString(e.text);

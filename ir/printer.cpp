@@ -423,6 +423,7 @@ class Printer {
       }
       case OpKind::Report: text = withArgs("report"); break;
       case OpKind::Print: text = withArgs("print"); break;
+      case OpKind::Label: text = withArgs("label"); break;
       case OpKind::ShapeOperation:
         text = withArgs("shape-operation " + stringLit(op.str));
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
@@ -553,6 +554,14 @@ class Printer {
       default: {
         const QuerySignature& sig = querySignature(q);
         s += std::string(sig.object) + "." + sig.member;
+        if (isContextQuery(q)) {  // Shape.overlaps("intra", label)
+          static const char* const kTargets[] = {"\"intra\"", "\"inter\"", "\"all\""};
+          s += "(";
+          s += e.extra <= 2 ? kTargets[e.extra] : "target?";
+          for (const Expr& a : e.args) s += ", ", writeExpr(rule, a, s);
+          s += ")";
+          return;
+        }
         if (sig.arity != 0) writeArgs(rule, e.args, s);
         return;
       }

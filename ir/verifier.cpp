@@ -46,6 +46,7 @@ const char* opName(OpKind k) {
     case OpKind::Report: return "report";
     case OpKind::Print: return "print";
     case OpKind::ShapeOperation: return "shape-operation";
+    case OpKind::Label: return "label";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -586,6 +587,12 @@ class Verifier {
         for (uint32_t label : op.partLabels) stringId(label);
         numArgs(op, r, op.args.size());
         break;
+      case OpKind::Label:
+        expectBodies(op, 0);
+        if (op.args.size() != 1) problem(std::to_string(op.args.size()) + " arguments, expected 1");
+        else expectType(op.args[0], Type::Str, "label");
+        for (const Expr& a : op.args) expr(a, r);
+        break;
       case OpKind::Report:
       case OpKind::Print: {
         expectBodies(op, 0);
@@ -793,6 +800,8 @@ class Verifier {
         problem("environment entry " + std::to_string(e.env) + " is not a " + kind);
     }
     if (q == Query::Field || q == Query::Feature) stringId(e.extra);
+    if (isContextQuery(q) && e.extra > static_cast<uint32_t>(ContextTarget::All))
+      problem("context target " + std::to_string(e.extra) + " out of range");
   }
 
   const Module& m_;

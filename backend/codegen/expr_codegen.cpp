@@ -319,9 +319,10 @@ class ExprCodegen {
       queryOut_ = b_.CreateAlloca(b_.getDoubleTy(), nullptr, "query.out");
       queryArgs_ = b_.CreateAlloca(b_.getDoubleTy(), nullptr, "query.args");
     }
-    // Only Shape.visible and Feature.label (a string id) and Geometry.isPlanar read their argument.
+    // Only Shape.visible, Feature.label and the context queries' label (a string id) and
+    // Geometry.isPlanar read their argument.
     uint32_t nargs = 0;
-    if (q == ir::Query::ShapeVisible || q == ir::Query::GeometryIsPlanar ||
+    if (q == ir::Query::ShapeVisible || q == ir::Query::GeometryIsPlanar || ir::isContextQuery(q) ||
         (q == ir::Query::Feature && !e.args.empty())) {
       b_.CreateStore(num(e.args[0]), queryArgs_);
       nargs = 1;

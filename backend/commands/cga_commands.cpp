@@ -31,6 +31,8 @@ std::vector<ir::OpKind> CgaCommands::kinds() const {
 }
 
 void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
+  // CityEngine makes a shape a comp or offset runs on an occluder (context queries).
+  if (op.kind == ir::OpKind::Comp || op.kind == ir::OpKind::Offset) d_.noteOccluder(st);
   // A `.cga` lot (a ground face) goes to offset and the roofs as fgsg's polygon (extrude
   // takes it as it is).
   const bool ground = (op.kind == ir::OpKind::Offset || op.kind == ir::OpKind::Roof) &&

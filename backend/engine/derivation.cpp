@@ -62,10 +62,10 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
   CommandFamily* const families[] = {&scope_,    &turtle_, &cga_,   &collide_,  &synthesis_,
                                      &marching_, &evolve_, &cells_, &textures_, &reports_};
   for (CommandFamily* family : families) registerFamily(*family);
-  // Emit is the core's own; an Unsupported op is refused. Every other kind needs a family.
+  // Emit and Label are the core's own; an Unsupported op is refused. Every other kind needs a family.
   for (size_t k = 0; k < familyOf_.size(); ++k) {
     const auto kind = static_cast<ir::OpKind>(k);
-    if (!familyOf_[k] && kind != ir::OpKind::Emit && kind != ir::OpKind::Unsupported)
+    if (!familyOf_[k] && kind != ir::OpKind::Emit && kind != ir::OpKind::Unsupported && kind != ir::OpKind::Label)
       throw std::logic_error("no command family applies op kind " + std::to_string(k));
   }
 }

@@ -33,6 +33,7 @@
 #include "backend/commands/synthesis_command.h"
 #include "backend/commands/texture_commands.h"
 #include "backend/commands/turtle_commands.h"
+#include "backend/engine/context_world.h"
 #include "backend/engine/instance_origins.h"
 #include "backend/engine/limit_reached.h"
 #include "backend/engine/native_call.h"
@@ -55,6 +56,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -72,6 +74,11 @@ class Derivation final : public QueryHost {
   void setLotAttributes(std::vector<std::vector<double>> slots) { lotAttrs_ = std::move(slots); }
   // Whether the last run() stopped because direct derivation could not be exact.
   bool needsExactRun() const { return inexactDirect_; }
+  // CityEngine's two derivations for context queries (context_queries.cpp): the first
+  // records what the queries look at (queries give their defaults), the second answers them.
+  void recordContext();
+  std::shared_ptr<const ContextWorld> takeContextWorld();
+  void answerContextFrom(std::shared_ptr<const ContextWorld> world);
 
   // ------------------------------------------------ what command modules use
   const ir::Module& module() const { return m_; }
@@ -136,6 +143,16 @@ class Derivation final : public QueryHost {
     return cells_.feature(member, arg, at);
   }
   double geometry(ir::Query q, const rt::Scope& scope, const rt::GeomRef& geom, double arg, ir::Loc at) override;
+  double context(ir::Query q, uint32_t target, const std::string& label, const rt::Scope& scope,
+                 const rt::GeomRef& geom, ir::Loc at) override;
+  // label("name"): the running shape becomes a labelled context shape (first derivation).
+  void label(const std::string& name, const State& st);
+  // The running shape as an occluder (a comp or offset runs on it; a leaf: `node` its own).
+  void noteOccluder(const State& st, uint64_t node);
+  void noteOccluder(const State& st) { noteOccluder(st, currentNode_); }
+  // A split or comp part becomes the running node of the shape tree; returns the outer one.
+  uint64_t enterBody(Exec& ex);
+  void leaveBody(uint64_t outer) { currentNode_ = outer; }
 
   // ------------------------------------------------ the runtime entry points of compiled
   // code (runtime/abi.def, native_bridge.cpp), for a sequential derivation (call.st set)
@@ -207,6 +224,8 @@ class Derivation final : public QueryHost {
 
   // lots.cpp
   void deriveLots(uint64_t root);
+  // context_queries.cpp: start shape `start` begins at tree node `node`.
+  void enterStart(uint32_t start, uint64_t node, const rt::Scope& scope, const rt::GeomRef& geom);
 
   // seed_plants.cpp
   struct Plant;
@@ -310,6 +329,14 @@ class Derivation final : public QueryHost {
   uint32_t paramStride_ = 0;  // the largest parameter block of any symbol
   rt::GeometryArena arena_;
   rt::OcclusionIndex occluders_;
+  // Context queries (context_queries.cpp): off unless the grammar asks them.
+  enum class ContextMode { Off, Record, Answer } contextMode_ = ContextMode::Off;
+  std::shared_ptr<ContextWorld> recorded_;        // the first derivation's
+  std::shared_ptr<const ContextWorld> world_;     // what the second answers from
+  std::unordered_map<uint64_t, uint64_t> parentOf_;  // this derivation's shape tree
+  uint64_t currentNode_ = 0;   // the shape (or split part) whose ops run
+  uint32_t currentStart_ = 0;  // the start shape being derived
+  uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)
   std::vector<std::pair<int, ShapeQueue>> buckets_;
   std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
   std::vector<Saved> stack_;

@@ -80,6 +80,7 @@ void Derivation::deriveShape(const WaitingShape& shape) {
     depthLimit(sym, shape.creator);
     return;
   }
+  currentNode_ = shape.key;  // its guards may ask context queries
   const ir::Alternative* alt = choose(sym, f, shape.node, params_.data());
   if (!alt) {
     ++stats_.terminals;
@@ -125,6 +126,12 @@ bool Derivation::deriveNow(uint32_t symbol, const double* slots, const State& at
     depthLimit(sym, creatorRule_);
     return false;
   }
+  struct RestoreNode {
+    uint64_t& node;
+    uint64_t outer;
+    ~RestoreNode() { node = outer; }
+  } restoreNode{currentNode_, currentNode_};
+  currentNode_ = key;
   const ir::Alternative* alt = choose(sym, f, node, params.data());
   if (!alt) {
     ++stats_.terminals;
@@ -181,9 +188,12 @@ void Derivation::execRoot(uint32_t block, const ir::Block& ops, const rt::Scope&
   }
   Frame f{params, ex.rng, &st.scope, depth == 0 ? 0 : depth - 1, index, this, &st.geom};
   const uint32_t outerDepth = placingDepth_;
+  const uint64_t outerNode = currentNode_;
   placingDepth_ = f.depth;
+  currentNode_ = key;
   runBlock(block, ops, st, ex, f);
   placingDepth_ = outerDepth;
+  currentNode_ = outerNode;
   stack_.resize(st.stackBase);  // a successor may leave '[' open: close it
   if (depthFirst) {
     // A stack gives back the last shape first: reverse what this successor created so
@@ -256,6 +266,7 @@ void Derivation::applyEvaluated(const ir::Op& op, State& st, Exec& ex, Frame& f,
 void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   if (op.kind == ir::OpKind::Emit) return emit(op, a, st, ex);
   if (op.kind == ir::OpKind::Unsupported) unsupported(op);
+  if (op.kind == ir::OpKind::Label) return label(m_.strings.at(static_cast<size_t>(a[0])), st);
   familyOf_[static_cast<size_t>(op.kind)]->apply(op, a, n, st, ex, f);
 }
 
@@ -267,7 +278,9 @@ void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, con
   // the split and comp indices (those of this split, when it is one).
   inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;
   inner.scope.place = place ? *place : outer.scope.place;
+  const uint64_t outerNode = enterBody(ex);
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);
+  leaveBody(outerNode);
   stack_.resize(inner.stackBase);
   f.scope = &outer.scope;
   f.geom = &outer.geom;
@@ -279,6 +292,7 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
   if (stats_.shapesCreated >= opt_.maxShapes) shapeLimit(op);
   const uint32_t index = ex.childCount++;
   ++stats_.shapesCreated;
+  if (contextMode_ != ContextMode::Off) parentOf_[rt::childKey(ex.key, index)] = currentNode_;
   const uint32_t node =
       sequentialString_ ? sequentialString_->addShape(op.index, slots, target.slotCount) : SequentialString::kNone;
   if (target.rules.empty()) {  // a terminal: nothing will ever read it again (but a context)
@@ -288,6 +302,7 @@ void Derivation::emit(const ir::Op& op, const double* slots, State& st, Exec& ex
         terminalPieces_->push_back({target.name, std::move(polygon)});
     else if (leavesOutput_)
       outputLeaf(op.index, st, slots, op.loc);
+    if (leavesOutput_ && contextMode_ == ContextMode::Record) noteOccluder(st, rt::childKey(ex.key, index));
     return;
   }
   // Compiled direct code drops terminal shapes, so a base part being recorded is walked.

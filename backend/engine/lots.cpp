@@ -32,6 +32,7 @@ void Derivation::deriveLots(uint64_t root) {
     if (m_.cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, arena_);
     const auto index = static_cast<uint32_t>(k);
     out_.startBounds.push_back(static_cast<uint32_t>(out_.instances.size()));
+    enterStart(index, rt::childKey(root, index), part.scope, part.geom);
     execRoot(0, m_.axiom, part.scope, part.geom, rt::childKey(root, index), 0, index, &noParams, UINT32_MAX);
     deriveWaitingShapes();
     if (k == 0) reserveForLots(opt_.lots.size());

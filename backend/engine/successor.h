@@ -52,6 +52,7 @@ struct Exec {
   uint32_t childCount;
   bool culled = false;    // the rest of this production is dropped (FGSG §4.4)
   bool collided = false;  // ... because something in it collided
+  uint32_t bodyCount = 0; // split and comp parts run so far (context queries' shape tree)
 };
 
 // Room for one op's evaluated arguments: on the stack unless a split has many sizes.

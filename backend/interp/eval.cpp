@@ -161,9 +161,11 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   using ir::Query;
   const auto q = static_cast<Query>(e.index);
   if (q != Query::ShapeDepth && q != Query::ShapeIndex && q != Query::Feature) requireScope(e, f);
-  if (q >= Query::GeometryArea)
+  if (ir::isGeometryQuery(q))
     return f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
                             q == Query::GeometryIsPlanar ? num(e.args[0], f) : 0.0, e.loc);
+  if (ir::isContextQuery(q))
+    return f.host->context(q, e.extra, string(num(e.args[0], f)), *f.scope, f.geom ? *f.geom : rt::GeomRef{}, e.loc);
   switch (q) {
     case Query::ScopeSx: return f.scope->S.x();
     case Query::ScopeSy: return f.scope->S.y();

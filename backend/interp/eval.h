@@ -50,6 +50,13 @@ struct QueryHost {
     (void)q, (void)scope, (void)geom, (void)arg;
     throw DeriveError{at, "R900", "internal: geometry queries are not answered here"};
   }
+  // CGA's inside/overlaps/touches (1 or 0), minimumDistance and contextCount of the shape
+  // among the context shapes of `target` (an ir::ContextTarget) with `label` ("": any).
+  virtual double context(ir::Query q, uint32_t target, const std::string& label, const rt::Scope& scope,
+                         const rt::GeomRef& geom, ir::Loc at) {
+    (void)q, (void)target, (void)label, (void)scope, (void)geom;
+    throw DeriveError{at, "R900", "internal: context queries are not answered here"};
+  }
 };
 
 struct Frame {

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <exception>
+#include <memory>
 #include <new>
 
 namespace fgsg::backend {
@@ -55,6 +56,26 @@ rt::DeriveResult escapedFailure(std::exception_ptr thrown) {
   return failed;
 }
 
+// Runs the derivation `make` builds; a grammar that asks context queries twice, as
+// CityEngine does: the first with the queries at their defaults records the labelled
+// shapes and occluders, the second answers from them (context_queries.cpp). An error in
+// the first is the result.
+template <class Make>
+rt::DeriveResult runWithContext(const ir::Module& module, Make make) {
+  if (!usesContextQueries(module)) return make()->run();
+  std::shared_ptr<const ContextWorld> world;
+  {
+    auto first = make();
+    first->recordContext();
+    rt::DeriveResult recorded = first->run();
+    if (!recorded.ok) return recorded;
+    world = first->takeContextWorld();
+  }
+  auto second = make();
+  second->answerContextFrom(std::move(world));
+  return second->run();
+}
+
 }  // namespace
 
 rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& options,
@@ -65,9 +86,11 @@ rt::DeriveResult interpret(const ir::Module& module, const rt::DeriveOptions& op
     std::vector<std::vector<double>> lotAttrs;
     rt::DeriveResult failed;
     if (!prepare(module, options, local, attrs, lotAttrs, failed)) return failed;
-    Derivation d(local, options, assets, std::move(attrs));
-    d.setLotAttributes(std::move(lotAttrs));
-    return d.run();
+    return runWithContext(local, [&] {
+      auto d = std::make_unique<Derivation>(local, options, assets, attrs);
+      d->setLotAttributes(lotAttrs);
+      return d;
+    });
   } catch (...) {
     return escapedFailure(std::current_exception());
   }
@@ -85,15 +108,19 @@ rt::DeriveResult deriveCompiled(const ir::Module& module, const FgsgProgram& pro
     // the same --max-seconds.
     rt::DeriveOptions timed = options;
     if (timed.startedAt == std::chrono::steady_clock::time_point{}) timed.startedAt = std::chrono::steady_clock::now();
-    {
+    // Context queries need every shape to pass through the engine (direct code writes
+    // none of its tree), so their grammars go the engine's own way at once.
+    if (!usesContextQueries(local)) {
       Derivation fast(local, timed, assets, attrs, &program, true);
       fast.setLotAttributes(lotAttrs);
       rt::DeriveResult result = fast.run();
       if (!fast.needsExactRun()) return result;
     }
-    Derivation exact(local, timed, assets, std::move(attrs), &program, false);
-    exact.setLotAttributes(std::move(lotAttrs));
-    return exact.run();
+    return runWithContext(local, [&] {
+      auto exact = std::make_unique<Derivation>(local, timed, assets, attrs, &program, false);
+      exact->setLotAttributes(lotAttrs);
+      return exact;
+    });
   } catch (...) {
     return escapedFailure(std::current_exception());
   }

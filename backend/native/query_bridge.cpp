@@ -12,7 +12,13 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
   const bool needsScope = q != ir::Query::ShapeDepth && q != ir::Query::ShapeIndex && q != ir::Query::Feature;
   if (needsScope && !f.scope) return FGSG_E_NO_SCOPE;
   try {
-    if (q >= ir::Query::GeometryArea) {
+    if (ir::isContextQuery(q)) {
+      if (nargs < 1) return FGSG_E_INTERNAL;
+      *out = f.host->context(q, extra, self.m_.strings.at(static_cast<size_t>(args[0])), *f.scope,
+                             f.geom ? *f.geom : rt::GeomRef{}, at);
+      return FGSG_OK;
+    }
+    if (ir::isGeometryQuery(q)) {
       if (q == ir::Query::GeometryIsPlanar && nargs < 1) return FGSG_E_INTERNAL;
       *out = f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
                               q == ir::Query::GeometryIsPlanar ? args[0] : 0.0, at);

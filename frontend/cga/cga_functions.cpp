@@ -46,8 +46,8 @@ const char* const kSameFunctions[] = {"sin", "cos",  "tan",  "asin", "acos", "at
 // CityEngine functions (and shape attributes) this dialect does not have yet.
 const char* const kKnownFunctions[] = {
     "isinf", "isnan", "bool", "float", "str", "sel", "len", "count", "find", "substring", "fileExists", "fileSearch",
-    "assetInfo", "imageInfo", "assetsSortRatio", "assetsSortSize", "imagesSortRatio", "inside", "overlaps", "touches",
-    "minimumDistance", "contextCount", "contextCompare", "occlusion", "convert", "listAdd", "listItem", "listSize",
+    "assetInfo", "imageInfo", "assetsSortRatio", "assetsSortSize", "imagesSortRatio",
+    "contextCompare", "occlusion", "convert", "listAdd", "listItem", "listSize",
     "listClean", "listLast", "listFirst", "listRandom", "listRange", "listRemove", "listIndex", "replace", "findFirst",
     "findLast", "getPrefix", "getSuffix", "getRange", "index", "size", "transpose", "splitString", "colorRamp",
     "comp", "readTextFile", "readStringTable", "readFloatTable", "readBoolTable", "fileRandom", "filesSearch"};
@@ -262,6 +262,41 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
   return nullptr;
 }
 
+// CityEngine's occlusion and context queries: fgsg's Shape.overlaps("intra", "tower") ...,
+// the target selector (a keyword here) written as its word.
+ExprPtr Translator::contextQuery(const std::string& fn, const SourceRange& at, const SourceRange& nameAt,
+                                 const std::vector<P::ExprContext*>& argCtx, const Env& env) {
+  const bool occlusion = fn == "inside" || fn == "overlaps" || fn == "touches";
+  if (occlusion ? argCtx.size() > 2 : argCtx.size() != 2) {
+    error("E016", nameAt, "'" + fn + "' takes " + (occlusion ? "at most 2 arguments" : "2 arguments") + " (" +
+                              (occlusion ? fn + "(), " + fn + "(intra), " : "") + fn +
+                              "(intra|inter|all, \"label\")), got " + std::to_string(argCtx.size()));
+    return nullptr;
+  }
+  ExprPtr e = makeExpr(ExprKind::Member, at);
+  e->object = "Shape";
+  e->text = fn;
+  e->hasCall = true;
+  if (!argCtx.empty()) {
+    const std::string target = argCtx[0]->getText();
+    if (target != "intra" && target != "inter" && target != "all") {
+      error("E016", rangeOf(argCtx[0]), "the target of '" + fn + "' is intra, inter or all, not '" + target + "'");
+      return nullptr;
+    }
+    ExprPtr word = makeExpr(ExprKind::String, rangeOf(argCtx[0]));
+    word->text = target;
+    e->args.push_back(std::move(word));
+  }
+  if (argCtx.size() == 2) {
+    Env plain = env;
+    plain.relativeAxis = -1;
+    ExprPtr label = expr(argCtx[1], plain);
+    if (!label) return nullptr;
+    e->args.push_back(std::move(label));
+  }
+  return e;
+}
+
 ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const SourceRange& nameAt,
                          const std::vector<P::ExprContext*>& argCtx, const Env& env) {
   // A user function: its body with the parameters bound to the arguments.
@@ -324,6 +359,8 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     e->args = std::move(args);
     return e;
   }
+  if (fn == "inside" || fn == "overlaps" || fn == "touches" || fn == "minimumDistance" || fn == "contextCount")
+    return contextQuery(fn, at, nameAt, argCtx, env);
   std::vector<ExprPtr> args;
   Env plain = env;
   plain.relativeAxis = -1;

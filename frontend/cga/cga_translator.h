@@ -74,6 +74,8 @@ class Translator {
   ExprPtr primary(P::PrimaryContext* ctx, const Env& env);
   // case / stochastic values become conditional expressions.
   ExprPtr value(P::ValueContext* ctx, const Env& env);
+  ExprPtr contextQuery(const std::string& fn, const SourceRange& at, const SourceRange& nameAt,
+                       const std::vector<P::ExprContext*>& argCtx, const Env& env);
   ExprPtr call(const std::string& name, const SourceRange& at, const SourceRange& nameAt,
                const std::vector<P::ExprContext*>& args, const Env& env);
   ExprPtr name(const std::string& name, const SourceRange& at, const Env& env);

@@ -1,0 +1,168 @@
+// CityEngine's context queries (inside, overlaps, touches, minimumDistance, contextCount)
+// and label(). CityEngine derives a model twice for them: first with every query giving
+// its default (false, infinity, 0), keeping the labelled shapes and occluders that
+// derivation makes, then again with the queries answered against those. fgsg does the
+// same (interpreter.cpp runs the two Derivations): this file records in the first and
+// answers in the second. Occluders are the labelled shapes, the leaves and the shapes a
+// comp or offset runs on, tested only where their geometry is closed; an intra occlusion
+// query skips the querying shape's own ancestors and descendants, as CityEngine does.
+// Tree nodes are the derivation's random keys (a shape's, a split part's), the same in
+// both derivations as long as they take the same path.
+#include "backend/engine/derivation.h"
+
+#include <cmath>
+#include <functional>
+#include <unordered_set>
+
+namespace fgsg::backend {
+namespace {
+
+// CityEngine's neighbourhood for inter occlusion: start shapes within 1 m of the
+// querying one's bounds (context queries look at every start shape).
+constexpr double kOcclusionNeighbourhood = 1.0;
+
+bool exprUsesContext(const ir::Expr& e) {
+  if (e.op == ir::ExprOp::Query && ir::isContextQuery(static_cast<ir::Query>(e.index))) return true;
+  for (const auto& a : e.args)
+    if (exprUsesContext(a)) return true;
+  return false;
+}
+
+bool blockUsesContext(const ir::Block& b) {
+  for (const auto& op : b) {
+    for (const auto& a : op.args)
+      if (exprUsesContext(a)) return true;
+    for (const auto& sz : op.sizes)
+      if (exprUsesContext(sz.value)) return true;
+    for (const auto& body : op.bodies)
+      if (blockUsesContext(body)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool usesContextQueries(const ir::Module& m) {
+  for (const auto& r : m.rules) {
+    if (r.hasGuard && exprUsesContext(r.guard)) return true;
+    for (const auto& alt : r.alternatives)
+      if (exprUsesContext(alt.probability) || blockUsesContext(alt.ops)) return true;
+  }
+  return blockUsesContext(m.axiom);
+}
+
+void Derivation::recordContext() {
+  contextMode_ = ContextMode::Record;
+  recorded_ = std::make_shared<ContextWorld>();
+}
+
+void Derivation::answerContextFrom(std::shared_ptr<const ContextWorld> world) {
+  contextMode_ = ContextMode::Answer;
+  world_ = std::move(world);
+}
+
+std::shared_ptr<const ContextWorld> Derivation::takeContextWorld() {
+  if (recorded_) recorded_->parentOf = std::move(parentOf_);
+  return std::move(recorded_);
+}
+
+void Derivation::enterStart(uint32_t start, uint64_t node, const rt::Scope& scope, const rt::GeomRef& geom) {
+  currentStart_ = start;
+  currentNode_ = node;
+  if (contextMode_ != ContextMode::Record) return;
+  const rt::cga::TriangleSoup s = rt::cga::shapeTriangles(scope, geom, arena_);
+  if (recorded_->startBounds.size() <= start) recorded_->startBounds.resize(start + 1);
+  recorded_->startBounds[start] = {s.lo, s.hi};
+}
+
+uint64_t Derivation::enterBody(Exec& ex) {
+  const uint64_t outer = currentNode_;
+  if (contextMode_ == ContextMode::Off) return outer;
+  // A split or comp part is a shape of CityEngine's tree, a child of the running one.
+  currentNode_ = rt::childKey(ex.key, 0x6000000000000000ull | ex.bodyCount++);
+  parentOf_[currentNode_] = outer;
+  return outer;
+}
+
+// CityEngine's label() "creates a labeled shape", a copy of the running one: a child of
+// it in the tree, so that the shapes the rule creates next (siblings) see it and its
+// ancestors do not.
+void Derivation::label(const std::string& name, const State& st) {
+  if (contextMode_ != ContextMode::Record) return;
+  const uint64_t node = rt::childKey(currentNode_, 0x5000000000000000ull | labelCount_++);
+  parentOf_[node] = currentNode_;
+  recorded_->shapes.push_back({currentStart_, name, node, st.scope, rt::cga::shapeTriangles(st.scope, st.geom, arena_)});
+}
+
+void Derivation::noteOccluder(const State& st, uint64_t node) {
+  if (contextMode_ != ContextMode::Record) return;
+  rt::cga::TriangleSoup soup = rt::cga::shapeTriangles(st.scope, st.geom, arena_);
+  if (!soup.closed) return;  // only closed geometry occludes
+  recorded_->shapes.push_back({currentStart_, std::string(), node, st.scope, std::move(soup)});
+}
+
+double Derivation::context(ir::Query q, uint32_t target, const std::string& label, const rt::Scope& scope,
+                           const rt::GeomRef& geom, ir::Loc) {
+  const bool occlusion = q == ir::Query::ContextInside || q == ir::Query::ContextOverlaps ||
+                         q == ir::Query::ContextTouches;
+  const double none = q == ir::Query::ContextMinimumDistance ? INFINITY : 0.0;
+  // The first derivation (and an empty label of minimumDistance or contextCount) gives
+  // CityEngine's defaults.
+  if (!world_ || (!occlusion && label.empty())) return none;
+  const auto t = static_cast<ir::ContextTarget>(target);
+  auto near = [&](uint32_t start) {
+    if (!occlusion) return true;
+    const auto& b = world_->startBounds;
+    if (start >= b.size() || currentStart_ >= b.size()) return true;
+    const double d = kOcclusionNeighbourhood;
+    return !((b[start].second.array() + d < b[currentStart_].first.array()).any() ||
+             (b[currentStart_].second.array() + d < b[start].first.array()).any());
+  };
+  auto inTarget = [&](const ContextShape& s) {
+    const bool own = s.start == currentStart_;
+    if (t == ir::ContextTarget::Intra) return own;
+    if (own) return t == ir::ContextTarget::All;
+    return near(s.start);
+  };
+  if (q == ir::Query::ContextCount) {
+    double n = 0;
+    for (const ContextShape& s : world_->shapes)
+      if (s.label == label && inTarget(s)) ++n;
+    return n;
+  }
+  if (q == ir::Query::ContextMinimumDistance) {
+    double best = INFINITY;
+    for (const ContextShape& s : world_->shapes)
+      if (s.label == label && inTarget(s)) best = std::min(best, rt::cga::scopeDistance(scope, s.scope));
+    return best;
+  }
+  // The querying shape and its ancestors (this derivation's tree) ...
+  std::unordered_set<uint64_t> ancestors;
+  for (uint64_t n = currentNode_;;) {
+    ancestors.insert(n);
+    auto up = parentOf_.find(n);
+    if (up == parentOf_.end()) break;
+    n = up->second;
+  }
+  // ... and whether an occluder descends from it (the first derivation's tree).
+  auto descends = [&](uint64_t node) {
+    for (uint64_t n = node;;) {
+      if (n == currentNode_) return true;
+      auto up = world_->parentOf.find(n);
+      if (up == world_->parentOf.end()) return false;
+      n = up->second;
+    }
+  };
+  const rt::cga::Contact test = q == ir::Query::ContextInside     ? rt::cga::Contact::Inside
+                                : q == ir::Query::ContextOverlaps ? rt::cga::Contact::Overlaps
+                                                                  : rt::cga::Contact::Touches;
+  const rt::cga::TriangleSoup me = rt::cga::shapeTriangles(scope, geom, arena_);
+  for (const ContextShape& s : world_->shapes) {
+    if (!s.geometry.closed || (!label.empty() && s.label != label) || !inTarget(s)) continue;
+    if (s.start == currentStart_ && (ancestors.count(s.node) || descends(s.node))) continue;
+    if (rt::cga::contact(test, me, s.geometry)) return 1.0;
+  }
+  return 0.0;
+}
+
+}  // namespace fgsg::backend
