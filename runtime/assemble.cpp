@@ -27,6 +27,15 @@ using Eigen::Vector3d;
 
 constexpr uint32_t kUnused = UINT32_MAX;
 
+// The instances an assembly takes: the whole list, or the listed ones (in that order).
+struct Selection {
+  size_t count = 0;
+  const uint32_t* indices = nullptr;  // null: instance k is the list's k-th
+  size_t size() const { return count; }
+  size_t index(size_t k) const { return indices ? indices[k] : k; }
+  const Instance& instance(const InstanceList& list, size_t k) const { return list.instances[index(k)]; }
+};
+
 // How one instance maps its asset into the world.
 struct Placement {
   Matrix3d A;             // linear part of the instance transform
@@ -374,12 +383,14 @@ struct OutputImages {
   std::unordered_map<const Mesh*, std::vector<int32_t>> ofMesh;
 };
 
-OutputImages outputImages(const InstanceList& list, const AssetLibrary& library, const std::vector<int>& meshOf) {
+OutputImages outputImages(const InstanceList& list, const Selection& which, const AssetLibrary& library,
+                          const std::vector<int>& meshOf) {
   OutputImages images;
   images.paths = list.textures;
   std::unordered_map<std::string, int32_t> number;
   for (size_t t = 0; t < images.paths.size(); ++t) number.emplace(images.paths[t], int32_t(t));
-  for (const Instance& inst : list.instances) {
+  for (size_t k = 0; k < which.size(); ++k) {
+    const Instance& inst = which.instance(list, k);
     const Mesh* m = assetOf(inst, list, library, meshOf);
     if (!m || !m->textured() || images.ofMesh.count(m)) continue;
     std::vector<int32_t>& own = images.ofMesh[m];
@@ -396,13 +407,13 @@ OutputImages outputImages(const InstanceList& list, const AssetLibrary& library,
 // before them (the block's instances from `begin`, at firstTriangle). A mesh with images
 // of its own draws them on its textured triangles (counted again, as they survived) and
 // the instance's Texture on the rest.
-void addTextureRuns(const InstanceList& list, const AssetLibrary& library, const std::vector<int>& meshOf,
-                    const OutputImages& images, size_t begin, const std::vector<Counts>& counts,
+void addTextureRuns(const InstanceList& list, const Selection& which, const AssetLibrary& library,
+                    const std::vector<int>& meshOf, const OutputImages& images, size_t begin, const std::vector<Counts>& counts,
                     const std::vector<size_t>& firstTriangle, Mesh& out) {
   Scratch s;
   for (size_t i = 0; i < counts.size(); ++i) {
     if (counts[i].triangles == 0) continue;
-    const Instance& inst = list.instances[begin + i];
+    const Instance& inst = which.instance(list, begin + i);
     const int32_t image = inst.texture == UINT32_MAX ? -1 : int32_t(inst.texture);
     const Mesh* m = assetOf(inst, list, library, meshOf);
     if (!m->textured()) {
@@ -438,11 +449,11 @@ void keepUsedTextures(Mesh& out) {
 }
 
 // A curve index that names no curve is the engine's bug, said before any work starts.
-void checkCurves(const InstanceList& list) {
-  for (size_t i = 0; i < list.instances.size(); ++i) {
-    const uint32_t c = list.instances[i].curve;
+void checkCurves(const InstanceList& list, const Selection& which) {
+  for (size_t k = 0; k < which.size(); ++k) {
+    const uint32_t c = which.instance(list, k).curve;
     if (c != UINT32_MAX && c >= list.curves.size())
-      throw std::out_of_range("instance " + std::to_string(i) + " follows curve " + std::to_string(c) +
+      throw std::out_of_range("instance " + std::to_string(which.index(k)) + " follows curve " + std::to_string(c) +
                               ", but the instance list has " + std::to_string(list.curves.size()) + " curves");
   }
 }
@@ -468,16 +479,21 @@ Mesh assembleInstances(const InstanceList& list, const AssetLibrary& library,
   return out;
 }
 
-void assembleInstances(const InstanceList& list, const AssetLibrary& library,
-                       const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
-                       size_t* assembled, double writeSecondsPerTriangle) {
+namespace {
+
+void assemble(const InstanceList& list, const Selection& which, const AssetLibrary& library,
+              const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline, size_t* assembled,
+              double writeSecondsPerTriangle) {
   // Block by block, in list order: each instance writes its output in parallel into a
   // slot of its own (Slots), and closeUp moves them together where something was
   // dropped, so the bytes depend neither on the scheduling nor on the blocks. A block is
   // a millisecond or so of work, so a deadline is noticed in time.
   constexpr size_t kBlockTriangles = 32768;
-  checkCurves(list);
-  const size_t n = list.instances.size();
+  // A block of less work than this runs on the calling thread: a group's few pieces in
+  // the scene's baked parts (runtime/output/scene.cpp) cost less than TBB's start.
+  constexpr size_t kSerialTriangles = 4096;
+  checkCurves(list, which);
+  const size_t n = which.size();
   // Emptied, not freed: reserve below keeps a reused mesh's memory (already faulted in).
   out.positions.clear();
   out.normals.clear();
@@ -495,7 +511,8 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   // triangle draws an image (a Texture, or a mesh's own).
   size_t maxVertices = 0, maxTriangles = 0, maxLines = 0;
   bool withTexcoords = false, withTextures = false;
-  for (const Instance& inst : list.instances) {
+  for (size_t k = 0; k < n; ++k) {
+    const Instance& inst = which.instance(list, k);
     withTextures |= inst.texture != UINT32_MAX;
     const Mesh* m = assetOf(inst, list, library, meshOf);
     if (!m) continue;
@@ -510,11 +527,18 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
   out.lines.reserve(2 * maxLines);
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
   OutputImages images;
-  if (withTextures) images = outputImages(list, library, meshOf), out.textures = images.paths;
+  if (withTextures) images = outputImages(list, which, library, meshOf), out.textures = images.paths;
+  // The traits of the assets drawn (not of every asset the list names: a scene's group
+  // draws a few of them).
   std::vector<AssetTraits> traits(meshOf.size());
-  for (size_t a = 0; a < traits.size(); ++a)
-    if (meshOf[a] >= 0) traits[a] = traitsOf(library.mesh(meshOf[a]));
+  std::vector<uint8_t> drawn(meshOf.size(), 0);
+  for (size_t k = 0; k < n; ++k) {
+    const Instance& inst = which.instance(list, k);
+    if (inst.geometry == UINT32_MAX && inst.asset < meshOf.size() && meshOf[inst.asset] >= 0 && !drawn[inst.asset])
+      drawn[inst.asset] = 1, traits[inst.asset] = traitsOf(library.mesh(meshOf[inst.asset]));
+  }
   Slots slots;
+  Scratch serialScratch;
   size_t begin = 0;
   auto timeLeft = [&] {
     if (!deadline) return true;
@@ -529,7 +553,7 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     slots.triangle.assign(1, 0);
     slots.line.assign(1, 0);
     while (end < n && (end == begin || work < kBlockTriangles)) {
-      const Mesh* m = assetOf(list.instances[end++], list, library, meshOf);
+      const Mesh* m = assetOf(which.instance(list, end++), list, library, meshOf);
       work += 1 + (m ? m->triangleCount() + m->lineCount() : 0);
       slots.vertex.push_back(slots.vertex.back() + (m ? m->vertexCount() : 0));
       slots.triangle.push_back(slots.triangle.back() + (m ? m->triangleCount() : 0));
@@ -545,17 +569,24 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     out.indices.resize(3 * slots.firstTriangle(k));
     out.lines.resize(2 * slots.firstLine(k));
     counts.assign(k, Counts{});
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
-      Scratch s;
+    const auto place = [&](const tbb::blocked_range<size_t>& r, Scratch& s) {
       for (size_t i = r.begin(); i != r.end(); ++i) {
-        const Instance& inst = list.instances[begin + i];
+        const Instance& inst = which.instance(list, begin + i);
         const Mesh* m = assetOf(inst, list, library, meshOf);
         if (!m) continue;
         const Placement p = placementOf(inst, list);
         const AssetTraits* t = inst.geometry == UINT32_MAX ? &traits[inst.asset] : nullptr;
         counts[i] = placeInstance(*m, t, inst, p, s, slots, i, out);
       }
-    });
+    };
+    if (work < kSerialTriangles) {
+      place(tbb::blocked_range<size_t>(0, k), serialScratch);
+    } else {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, k), [&](const tbb::blocked_range<size_t>& r) {
+        Scratch s;
+        place(r, s);
+      });
+    }
     firstVertex.assign(k + 1, slots.vertex0);
     firstTriangle.assign(k + 1, slots.triangle0);
     firstLine.assign(k + 1, slots.line0);
@@ -571,16 +602,33 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
     out.indices.resize(3 * firstTriangle[k]);
     out.lines.resize(2 * firstLine[k]);
     if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
-    if (withTextures) addTextureRuns(list, library, meshOf, images, begin, counts, firstTriangle, out);
+    if (withTextures) addTextureRuns(list, which, library, meshOf, images, begin, counts, firstTriangle, out);
     begin = end;
   }
   keepUsedTextures(out);
   if (assembled) *assembled = begin;
 }
 
+}  // namespace
+
+void assembleInstances(const InstanceList& list, const AssetLibrary& library,
+                       const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline,
+                       size_t* assembled, double writeSecondsPerTriangle) {
+  assemble(list, Selection{list.instances.size(), nullptr}, library, meshOf, out, deadline, assembled,
+           writeSecondsPerTriangle);
+}
+
+void assembleSelected(const InstanceList& list, const std::vector<uint32_t>& which, const AssetLibrary& library,
+                      const std::vector<int>& meshOf, Mesh& out) {
+  for (uint32_t i : which)
+    if (i >= list.instances.size())
+      throw std::out_of_range("instance " + std::to_string(i) + " of " + std::to_string(list.instances.size()));
+  assemble(list, Selection{which.size(), which.data()}, library, meshOf, out, nullptr, nullptr, 0);
+}
+
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
                       const std::vector<int>& meshOf) {
-  checkCurves(list);
+  checkCurves(list, Selection{list.instances.size(), nullptr});
   size_t total = 0;
   for (const Counts& c : countAll(list, library, meshOf)) total += c.triangles;
   return total;

@@ -49,6 +49,13 @@ void assembleInstances(const InstanceList& list, const AssetLibrary& library,
                        const std::vector<int>& meshOf, Mesh& out, const Deadline* deadline = nullptr,
                        size_t* assembled = nullptr, double writeSecondsPerTriangle = 0);
 
+// The instances `which` of `list` (indices into list.instances, in the order given)
+// assembled into `out` as assembleInstances assembles a list that holds only them (their
+// geometries, curves and the list's textures alike): the same bytes, without copying
+// them into a list of their own. An index past the list throws std::out_of_range.
+void assembleSelected(const InstanceList& list, const std::vector<uint32_t>& which, const AssetLibrary& library,
+                      const std::vector<int>& meshOf, Mesh& out);
+
 // The number of triangles assembleInstances would produce, without building the mesh.
 size_t countTriangles(const InstanceList& list, const AssetLibrary& library,
                       const std::vector<int>& meshOf);

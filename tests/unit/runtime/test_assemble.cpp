@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 using namespace fgsg::rt;
 
@@ -237,6 +238,63 @@ TEST_CASE("assembling into a reused mesh gives a fresh assembly's arrays", "[ass
     CHECK(reused->texcoords == fresh.texcoords);
     CHECK(reused->indices == fresh.indices);
   }
+}
+
+// The scene's baked parts (runtime/output/scene.cpp) assemble a group's instances in
+// place: the same arrays as the list of only those instances that it used to copy them
+// into (their own geometries renumbered), small selections (run on the calling thread)
+// and large ones alike.
+TEST_CASE("a selection assembles as a list of only its instances", "[assemble]") {
+  Scene s;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const char* assets[] = {"torus", "cube", "bark", "quad"};
+  Mesh own;  // a triangle of its own geometry, in its unit box
+  own.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  own.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  own.indices = {0, 1, 2};
+  for (int i = 0; i < 600; ++i) {
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t(r, c) = 4 * u(rng);
+    if (i % 9 == 0) t.col(0).head<3>().setZero();  // some flattened instances
+    s.add(i % 5 == 4 ? kOwnGeometryAsset : assets[i % 4], toArray(t), {0.25f, float(u(rng) * 0.5 + 0.5), 0.5f});
+    if (i % 5 == 4) {
+      own.positions[3] = float(1 + i % 3);  // geometries differ
+      s.list.geometries.push_back(own);
+      s.list.instances.back().geometry = uint32_t(s.list.geometries.size() - 1);
+    }
+  }
+  std::string error;
+  REQUIRE(resolveAssets(s.list, s.library, s.meshOf, error));
+  std::vector<std::vector<uint32_t>> selections = {{4, 2, 9, 14}, {599}, {}};
+  selections.emplace_back();
+  for (uint32_t i = 1; i < 600; i += 2) selections.back().push_back(i);  // thousands of triangles: in parallel
+  for (const std::vector<uint32_t>& which : selections) {
+    InstanceList sub;  // what the scene built before: a list of copies
+    sub.assets = s.list.assets;
+    for (uint32_t i : which) {
+      Instance inst = s.list.instances[i];
+      if (inst.geometry != UINT32_MAX) {
+        sub.geometries.push_back(s.list.geometries[inst.geometry]);
+        inst.geometry = uint32_t(sub.geometries.size() - 1);
+      }
+      sub.instances.push_back(inst);
+    }
+    const Mesh expected = assembleInstances(sub, s.library, s.meshOf);
+    Mesh selected;
+    selected.positions.assign(5, 1.0f);  // replaced, as assembleInstances replaces
+    assembleSelected(s.list, which, s.library, s.meshOf, selected);
+    CHECK(selected.positions == expected.positions);
+    CHECK(selected.normals == expected.normals);
+    CHECK(selected.colors == expected.colors);
+    CHECK(selected.texcoords == expected.texcoords);
+    CHECK(selected.indices == expected.indices);
+    CHECK(selected.triangleCount() == expected.triangleCount());
+  }
+  CHECK(assembleInstances(s.list, s.library, s.meshOf).triangleCount() > 0);
+  Mesh out;
+  CHECK_THROWS_AS(assembleSelected(s.list, {3, 600}, s.library, s.meshOf, out), std::out_of_range);
 }
 
 TEST_CASE("an unknown asset fails resolution with the library's message", "[assemble]") {
