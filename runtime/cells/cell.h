@@ -1,13 +1,17 @@
 // A cell of a cellular texture (Legakis et al. 2001): a brick, a stone, an arch brick.
-// Every cell is a box in world space: what it *claims* (the space no other cell may
-// take, written into the occupancy maps) is the whole box; what it *is* (the geometry
-// that is output) is the box shrunk by half a mortar joint on its two face-parallel
-// axes, so neighbouring cells leave a joint for the mortar (§5 "Mortar").
+// A cell is a box in world space, or a clipped cell: the prism of a convex polygon (its
+// `profile`) in the box's length-height plane, where a box would cross the face's outline
+// or a claim (a rake, a hip, an arch's extrados). What it *claims* (the space no other
+// cell may take, written into the occupancy maps) is the whole cell; what it *is* (the
+// geometry that is output) is the cell shrunk by half a mortar joint on its sides, so
+// neighbouring cells leave a joint for the mortar (§5 "Mortar").
 #pragma once
 
+#include "runtime/cells/convex_polygon.h"
 #include "runtime/scope.h"
 
 #include <array>
+#include <vector>
 
 namespace fgsg::rt::cells {
 
@@ -26,6 +30,26 @@ struct Cell {
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
   Vec3 size = Vec3::Zero();
   FeatureRef feature;
+  // A clipped cell's cross-section: convex, counter-clockwise, in (axis 0, axis 1)
+  // coordinates from `origin`, its bounding rectangle [0, size.x] x [0, size.y]; the
+  // cell is this polygon swept `size.z` along axis 2. Empty: the whole rectangle (a box).
+  Polygon2 profile;
+  bool isBox() const { return profile.empty(); }
+  // The profile, or the box's rectangle.
+  Polygon2 outline() const {
+    if (!isBox()) return profile;
+    return {Vec2(0, 0), Vec2(size.x(), 0), Vec2(size.x(), size.y()), Vec2(0, size.y())};
+  }
+  // The area of the cross-section (the cell's share of its face, joints included).
+  double area() const { return isBox() ? size.x() * size.y() : signedArea(profile); }
+  // The cell's corners: the outline at depth 0, then at depth size.z.
+  std::vector<Vec3> vertices() const {
+    std::vector<Vec3> v;
+    const Polygon2 o = outline();
+    for (double z : {0.0, size.z()})
+      for (const Vec2& q : o) v.push_back(origin + axes.col(0) * q.x() + axes.col(1) * q.y() + axes.col(2) * z);
+    return v;
+  }
   // The box's corner k (bit 0: +length, bit 1: +height, bit 2: +depth).
   Vec3 corner(int k) const {
     return origin + axes.col(0) * ((k & 1) ? size.x() : 0.0) + axes.col(1) * ((k & 2) ? size.y() : 0.0) +
@@ -39,9 +63,33 @@ struct Cell {
   Vec3 centre() const { return origin + axes * (0.5 * size); }
 };
 
+// Makes a clipped cell's origin and size its profile's bounding box (the profile moved to
+// start at (0, 0)); a box is left as it is.
+inline void fitToProfile(Cell& c) {
+  if (c.isBox()) return;
+  Vec2 lo = c.profile[0], hi = c.profile[0];
+  for (const Vec2& q : c.profile) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  for (Vec2& q : c.profile) q -= lo;
+  c.origin += c.axes.col(0) * lo.x() + c.axes.col(1) * lo.y();
+  c.size.x() = hi.x() - lo.x(), c.size.y() = hi.y() - lo.y();
+}
+
 // The cell as it is output: shrunk by joint / 2 on axes 0 and 1 (never below a tenth of
-// its size), depth kept.
+// its size), depth kept. A clipped cell's sides each move joint / 2 inwards (less where
+// that would leave under a tenth of its area).
 inline Cell shrunk(const Cell& c, double joint) {
+  if (!c.isBox()) {
+    const double area = c.area();
+    for (double by = 0.5 * joint; by > 1e-6 * joint; by *= 0.5) {
+      Polygon2 in = insetConvex(c.profile, by);
+      if (in.empty() || signedArea(in) < 0.1 * area) continue;
+      Cell s = c;
+      s.profile = std::move(in);
+      fitToProfile(s);
+      return s;
+    }
+    return c;
+  }
   Cell s = c;
   for (int k = 0; k < 2; ++k) {
     const double cut = std::min(joint, 0.9 * c.size[k]);

@@ -34,7 +34,46 @@ uint64_t cellKey(int64_t x, int64_t y, int64_t z) {
 
 }  // namespace
 
+namespace {
+
+// Two convex prisms (clipped cells or boxes): separated along some face normal of either
+// or some cross product of their edge directions, or they overlap.
+bool prismsOverlap(const Cell& a, const Cell& b, double slack) {
+  const std::vector<Vec3> va = a.vertices(), vb = b.vertices();
+  std::vector<Vec3> normals, edges;
+  for (const Cell* c : {&a, &b}) {
+    const Polygon2 o = c->outline();
+    normals.push_back(c->axes.col(2));
+    edges.push_back(c->axes.col(2));
+    for (size_t i = 0; i < o.size(); ++i) {
+      const Vec2 d = o[(i + 1) % o.size()] - o[i];
+      const Vec3 along = c->axes.col(0) * d.x() + c->axes.col(1) * d.y();
+      edges.push_back(along);
+      normals.push_back(along.cross(c->axes.col(2)));
+    }
+  }
+  auto separated = [&](const Vec3& axis) {
+    const double n = axis.norm();
+    if (n < 1e-12) return false;
+    const Vec3 u = axis / n;
+    double loA = INFINITY, hiA = -INFINITY, loB = INFINITY, hiB = -INFINITY;
+    for (const Vec3& p : va) loA = std::min(loA, p.dot(u)), hiA = std::max(hiA, p.dot(u));
+    for (const Vec3& p : vb) loB = std::min(loB, p.dot(u)), hiB = std::max(hiB, p.dot(u));
+    return hiA <= loB + slack || hiB <= loA + slack;
+  };
+  for (const Vec3& n : normals)
+    if (separated(n)) return false;
+  const size_t na = a.outline().size() + 1;  // a's edge directions come first
+  for (size_t i = 0; i < na; ++i)
+    for (size_t j = na; j < edges.size(); ++j)
+      if (separated(edges[i].cross(edges[j]))) return false;
+  return true;
+}
+
+}  // namespace
+
 bool cellsOverlap(const Cell& a, const Cell& b, double slack) {
+  if (!a.isBox() || !b.isBox()) return prismsOverlap(a, b, slack);
   // Separating axes of two boxes: their 3 + 3 face normals and the 9 edge cross products.
   const Vec3 ca = a.centre(), cb = b.centre();
   const Vec3 ha = 0.5 * a.size, hb = 0.5 * b.size;
@@ -106,7 +145,7 @@ double CellularTexture::edgeParameter(int edge, const Vec3& p) const {
 }
 
 void CellularTexture::project(const Cell& c, FeatureRef onto) {
-  const auto corners = c.corners();
+  const std::vector<Vec3> corners = c.vertices();
   if (onto.kind == FeatureKind::Edge) {
     const FeatureEdge& e = fm_.edges[onto.index];
     double lo = INFINITY, hi = -INFINITY;
@@ -129,7 +168,7 @@ void CellularTexture::project(const Cell& c, FeatureRef onto) {
 
 CellularTexture::Bounds CellularTexture::boundsOf(const Cell& c) {
   Bounds b{c.corner(0), c.corner(0)};
-  for (const Vec3& p : c.corners()) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  for (const Vec3& p : c.vertices()) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
   return b;
 }
 
@@ -178,15 +217,26 @@ void CellularTexture::index(int id) {
 bool CellularTexture::add(Cell cell, FeatureRef on, double keep) {
   if (!(cell.size.minCoeff() > 1e3 * tolerance_) || !cell.origin.allFinite() || !cell.size.allFinite()) return false;
   if (overlapsPlaced(cell)) {
-    Cell trial = cell;
-    trial.size.x() = keep * cell.size.x();
-    if (!(keep > 0) || overlapsPlaced(trial)) return false;
-    double good = trial.size.x(), bad = cell.size.x();
+    // The cell cut at `length` along axis 0 (a clipped cell: its profile cut there too).
+    auto cut = [&](double length) {
+      Cell t = cell;
+      t.size.x() = length;
+      if (!t.isBox()) {
+        t.profile = clipHalfPlane(cell.profile, Vec2(1, 0), length);
+        if (t.profile.empty()) t.size.x() = 0;
+        else fitToProfile(t);
+      }
+      return t;
+    };
+    if (!(keep > 0)) return false;
+    Cell trial = cut(keep * cell.size.x());
+    if (!(trial.size.x() > 0) || overlapsPlaced(trial)) return false;
+    double good = keep * cell.size.x(), bad = cell.size.x();
     for (int k = 0; k < 24; ++k) {
-      trial.size.x() = 0.5 * (good + bad);
-      (overlapsPlaced(trial) ? bad : good) = trial.size.x();
+      const double mid = 0.5 * (good + bad);
+      (overlapsPlaced(cut(mid)) ? bad : good) = mid;
     }
-    cell.size.x() = good;
+    cell = cut(good);
   }
   cell.feature = on;
   cells_.push_back(cell);

@@ -262,11 +262,41 @@ CoursePattern coursePattern(const BrickSize& b, bool odd) {
   return {0, {l}};
 }
 
-// Lays one free run [run.lo, run.hi] of a strip in the pattern: the closer first, then
-// the cycle, the last two cells shared evenly rather than leaving a sliver.
+// Places the cell over the parameter rectangle [u, u + len] x [v0, v1] of face f: a box
+// where all of it is free, else the exact clip of the rectangle against free space (the
+// face's outline minus the claims, where it crosses a rake, a hip or a claim's slanted
+// side) — one clipped cell where the free part is convex, one per convex piece where a
+// claim bites a notch out of it. Returns the cells placed.
+int clippedCell(CellularTexture& tex, int f, double u, double len, double v0, double v1, double depth) {
+  const FeatureFace& face = tex.features().faces[f];
+  const FaceOccupancy& map = tex.faceMap(f);
+  const double minArea = 1e3 * map.tolerance() * (v1 - v0);
+  const Polygon2 rect{Vec2(u, v0), Vec2(u + len, v0), Vec2(u + len, v1), Vec2(u, v1)};
+  const std::vector<Polygon2> pieces = map.freePieces(rect, minArea);
+  double free = 0;
+  for (const Polygon2& p : pieces) free += signedArea(p);
+  const Cell box = faceCell(face, u, len, v0, v1, depth);
+  const FeatureRef on{FeatureKind::Face, f};
+  if (free >= len * (v1 - v0) - minArea) return tex.add(box, on) ? 1 : 0;
+  if (pieces.empty()) return 0;
+  const Polygon2 whole = convexUnion(pieces, minArea * double(pieces.size()));
+  const std::vector<Polygon2> parts = whole.empty() ? pieces : std::vector<Polygon2>{whole};
+  const double stretch = box.size.x() / len;  // a cylinder's chord over its arc
+  int placed = 0;
+  for (const Polygon2& part : parts) {
+    Cell c = box;
+    for (const Vec2& q : part) c.profile.push_back(Vec2((q.x() - u) * stretch, q.y() - v0));
+    fitToProfile(c);
+    placed += tex.add(c, on) ? 1 : 0;
+  }
+  return placed;
+}
+
+// Lays one run [run.lo, run.hi] of a strip in the pattern: the closer first, then the
+// cycle, the last two cells shared evenly rather than leaving a sliver. Each cell is
+// clipped to what is free (clippedCell).
 int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v1, const CoursePattern& course,
            double depth) {
-  const FeatureFace& face = tex.features().faces[f];
   const double tol = 1e3 * tex.faceMap(f).tolerance();
   int placed = 0;
   size_t next = 0;
@@ -289,39 +319,30 @@ int layRun(CellularTexture& tex, int f, const Interval& run, double v0, double v
       else len = want;
     }
     closer = false;
-    placed += tex.add(faceCell(face, u, len, v0, v1, depth), {FeatureKind::Face, f});
+    placed += clippedCell(tex, f, u, len, v0, v1, depth);
     u += len;
   }
   return placed;
 }
 
-// Lays face f in courses of height h, cells `depth` deep, each free run of a course in
-// the pattern pattern(course number, where the run starts, whether that is on the face's
-// own outline) gives.
+// Lays face f in courses of height h, cells `depth` deep, each run of a course in the
+// pattern pattern(course number, where the run starts, whether that is on the face's own
+// outline) gives. A run is as far as the course's free space reaches (at its widest,
+// where a rake or a hip cuts across it), and its cells are clipped to that free space.
 int coursedFace(CellularTexture& tex, int f, double h, double depth, bool fromLowest,
                 const std::function<CoursePattern(int, double, bool)>& pattern) {
   const FaceOccupancy& map = tex.faceMap(f);
   const double tol = 1e3 * map.tolerance();
   int placed = 0;
   for (const Strip& st : strips(tex, f, h, fromLowest)) {
-    const std::vector<Interval> inside = map.insideRuns(st.v0, st.v1);
+    const std::vector<Interval> outline = map.insideReach(st.v0, st.v1, tol);
     auto atBoundary = [&](double u) {
-      for (const Interval& i : inside)
+      for (const Interval& i : outline)
         if (std::abs(i.lo - u) < tol || std::abs(i.hi - u) < tol) return true;
       return false;
     };
-    const std::vector<Interval> full = map.freeRuns(st.v0, st.v1, tol);
-    for (const Interval& run : full)
+    for (const Interval& run : map.reachRuns(st.v0, st.v1, tol))
       placed += layRun(tex, f, run, st.v0, st.v1, pattern(st.course, run.lo, atBoundary(run.lo)), depth);
-    // Where a claim or the outline cuts into the course (a sill off the course lines, an
-    // edge's cells a little higher than a course, a roof's hip), cells are clipped to
-    // what is free: lower cells in the slices between the heights where that changes.
-    const std::vector<double> cuts = map.breaks(st.v0, st.v1);
-    for (size_t k = 0; k < cuts.size() + 1 && !cuts.empty(); ++k) {
-      const double a = k ? cuts[k - 1] : st.v0, c = k < cuts.size() ? cuts[k] : st.v1;
-      for (const Interval& run : subtract(map.freeRuns(a, c, tol), full))
-        placed += layRun(tex, f, run, a, c, pattern(st.course, run.lo, false), depth);
-    }
   }
   return placed;
 }
@@ -430,7 +451,7 @@ double outerRingRadius(const CellularTexture& tex, int edge) {
   double outer = 0;
   for (const Cell& c : tex.cells()) {
     if (c.feature.kind != FeatureKind::Edge || c.feature.index != edge) continue;
-    for (const Vec3& p : c.corners()) {
+    for (const Vec3& p : c.vertices()) {
       const Vec3 d = p - e.centre;
       outer = std::max(outer, (d - d.dot(e.axis) * e.axis).norm());
     }

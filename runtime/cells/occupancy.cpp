@@ -116,6 +116,7 @@ FaceOccupancy::FaceOccupancy(const FeatureFace& face, const surface::SurfaceMesh
         for (auto& q : tri)
           if (q.x() < 0) q.x() += 2 * seam;
     }
+    if (cross(tri[0], tri[1], tri[2]) < 0) std::swap(tri[1], tri[2]);
     for (const Vec2& q : tri) {
       if (first) lo_ = hi_ = q, first = false;
       lo_ = lo_.cwiseMin(q), hi_ = hi_.cwiseMax(q);
@@ -209,6 +210,106 @@ std::vector<double> FaceOccupancy::breaks(double v0, double v1) const {
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end(), [&](double a, double b) { return b - a < tol; }), out.end());
   return out;
+}
+
+namespace {
+void boxOf(const Polygon2& p, Vec2& lo, Vec2& hi) {
+  lo = hi = p[0];
+  for (const Vec2& q : p) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+}
+bool boxesMeet(const Vec2& alo, const Vec2& ahi, const Vec2& blo, const Vec2& bhi) {
+  return alo.x() < bhi.x() && blo.x() < ahi.x() && alo.y() < bhi.y() && blo.y() < ahi.y();
+}
+}  // namespace
+
+std::vector<int> FaceOccupancy::claimsNear(const Vec2& lo, const Vec2& hi) const {
+  std::vector<int> out;
+  for (int b = bucketOf(lo.y()); b <= bucketOf(hi.y()); ++b)
+    for (int c : buckets_[b])
+      if (boxesMeet(lo, hi, claimLo_[c], claimHi_[c])) out.push_back(c);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<Polygon2> FaceOccupancy::insidePieces(const Polygon2& region, double minArea) const {
+  std::vector<Polygon2> out;
+  if (region.size() < 3) return out;
+  Vec2 lo, hi;
+  boxOf(region, lo, hi);
+  for (const auto& t : triangles_) {
+    const Polygon2 tri(t.begin(), t.end());
+    Vec2 tlo, thi;
+    boxOf(tri, tlo, thi);
+    if (!boxesMeet(lo, hi, tlo, thi) || cross(t[0], t[1], t[2]) <= 0) continue;
+    Polygon2 piece = intersectConvex(region, tri);
+    if (!piece.empty() && signedArea(piece) > minArea) out.push_back(std::move(piece));
+  }
+  return out;
+}
+
+std::vector<Polygon2> FaceOccupancy::freePieces(const Polygon2& region, double minArea) const {
+  std::vector<Polygon2> pieces = insidePieces(region, minArea);
+  if (pieces.empty()) return pieces;
+  Vec2 lo, hi;
+  boxOf(region, lo, hi);
+  for (int c : claimsNear(lo, hi)) {
+    std::vector<Polygon2> next;
+    for (Polygon2& p : pieces) {
+      Vec2 plo, phi;
+      boxOf(p, plo, phi);
+      if (!boxesMeet(plo, phi, claimLo_[c], claimHi_[c])) {
+        next.push_back(std::move(p));
+        continue;
+      }
+      for (Polygon2& q : subtractConvex(p, claims_[c], minArea)) next.push_back(std::move(q));
+    }
+    pieces = std::move(next);
+    if (pieces.empty()) break;
+  }
+  return pieces;
+}
+
+std::vector<Interval> FaceOccupancy::reachOf(const std::vector<Polygon2>& pieces, double minimum) const {
+  std::vector<Interval> spans;
+  for (const Polygon2& p : pieces) {
+    Vec2 plo, phi;
+    boxOf(p, plo, phi);
+    spans.push_back({plo.x(), phi.x()});
+  }
+  std::vector<Interval> out;
+  for (const Interval& i : unite(std::move(spans), tolerance_))
+    if (i.length() > minimum) out.push_back(i);
+  return out;
+}
+
+std::vector<Interval> FaceOccupancy::reachRuns(double v0, double v1, double minimum) const {
+  if (triangles_.empty() || !(v1 > v0)) return {};
+  const Polygon2 strip{Vec2(lo_.x() - 1, v0), Vec2(hi_.x() + 1, v0), Vec2(hi_.x() + 1, v1), Vec2(lo_.x() - 1, v1)};
+  return reachOf(freePieces(strip, minimum * (v1 - v0)), minimum);
+}
+
+std::vector<Interval> FaceOccupancy::insideReach(double v0, double v1, double minimum) const {
+  if (triangles_.empty() || !(v1 > v0)) return {};
+  const Polygon2 strip{Vec2(lo_.x() - 1, v0), Vec2(hi_.x() + 1, v0), Vec2(hi_.x() + 1, v1), Vec2(lo_.x() - 1, v1)};
+  return reachOf(insidePieces(strip, minimum * (v1 - v0)), minimum);
+}
+
+double FaceOccupancy::area() const {
+  double a = 0;
+  for (const auto& t : triangles_) a += std::max(0.0, 0.5 * cross(t[0], t[1], t[2]));
+  return a;
+}
+
+double FaceOccupancy::freeArea() const {
+  // Slivers of rounding (below 1e-9 of the face's size squared) are not free space.
+  const double minArea = tolerance_ * std::max((hi_ - lo_).maxCoeff(), 1e-12);
+  double a = 0;
+  for (const auto& t : triangles_) {
+    const Polygon2 tri(t.begin(), t.end());
+    for (const Polygon2& p : freePieces(tri, minArea)) a += signedArea(p);
+  }
+  return a;
 }
 
 void FaceOccupancy::claim(const std::vector<Vec2>& points) {

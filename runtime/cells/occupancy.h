@@ -10,6 +10,7 @@
 //    resolution to choose.
 #pragma once
 
+#include "runtime/cells/convex_polygon.h"
 #include "runtime/cells/feature_mesh.h"
 
 #include <vector>
@@ -56,6 +57,25 @@ class FaceOccupancy {
   // The heights strictly between v0 and v1 where a claim or the face's outline starts
   // or ends, sorted: the strip's free runs can only change there.
   std::vector<double> breaks(double v0, double v1) const;
+  // The free part of convex `region` (the face within it minus every claim) as disjoint
+  // convex pieces, exactly; pieces of area <= minArea are dropped. Clipped cells are
+  // made of these.
+  std::vector<Polygon2> freePieces(const Polygon2& region, double minArea) const;
+  // The part of convex `region` on the face, claims ignored, as convex pieces.
+  std::vector<Polygon2> insidePieces(const Polygon2& region, double minArea) const;
+  // The u intervals the free part of the strip v0 <= v <= v1 reaches (the union of its
+  // pieces' u extents): where a course's cells go when they may be clipped. Pieces of
+  // area below `minimum` times the strip's height, and intervals shorter than `minimum`,
+  // are dropped.
+  std::vector<Interval> reachRuns(double v0, double v1, double minimum) const;
+  // ... and the u intervals the face itself reaches in the strip, claims ignored.
+  std::vector<Interval> insideReach(double v0, double v1, double minimum) const;
+  // The face's area (in its parameters: metres on planar and cylindrical faces) and the
+  // part of it no claim covers. Coverage is 1 - freeArea() / area(): cells count with
+  // their share of the joints, as they claim it (docs/cells.md "Coverage").
+  double area() const;
+  double freeArea() const;
+  double coverage() const { const double a = area(); return a > 0 ? 1 - freeArea() / a : 1; }
   // Marks a convex polygon (its corners in any order: their convex hull is taken) as
   // claimed.
   void claim(const std::vector<Vec2>& points);
@@ -71,7 +91,11 @@ class FaceOccupancy {
   std::vector<Interval> insideAt(double v) const;
   int bucketOf(double v) const;
 
-  std::vector<std::array<Vec2, 3>> triangles_;
+  // The claims whose boxes meet [lo, hi] (each once).
+  std::vector<int> claimsNear(const Vec2& lo, const Vec2& hi) const;
+  std::vector<Interval> reachOf(const std::vector<Polygon2>& pieces, double minimum) const;
+
+  std::vector<std::array<Vec2, 3>> triangles_;  // counter-clockwise
   std::vector<double> vertexHeights_;      // the triangles' corners' v, sorted, distinct
   std::vector<std::vector<Vec2>> claims_;  // convex, counter-clockwise
   std::vector<Vec2> claimLo_, claimHi_;    // their boxes

@@ -1,0 +1,34 @@
+// Exact clipping of convex polygons in a face's parameter plane, for clipped cells
+// (docs/cells.md "Clipped and mitred cells"): a cell that would cross the face's outline
+// or a claim is the part of its rectangle in free space, and free space (the face's
+// triangles minus convex claims) is a set of convex pieces. Every operation here keeps
+// convexity, so claims stay convex and the occupancy map stays exact.
+// Polygons are counter-clockwise, corners not repeated.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace fgsg::rt::cells {
+
+using Vec2 = Eigen::Vector2d;
+using Polygon2 = std::vector<Vec2>;
+
+// Positive for a counter-clockwise polygon (the shoelace formula).
+double signedArea(const Polygon2& p);
+// The part of convex `p` with n . x <= c (Sutherland–Hodgman against one line).
+Polygon2 clipHalfPlane(const Polygon2& p, const Vec2& n, double c);
+// The intersection of two convex polygons (`clip` counter-clockwise).
+Polygon2 intersectConvex(const Polygon2& p, const Polygon2& clip);
+// Convex `p` minus convex `hole`: disjoint convex pieces, those of area <= minArea dropped.
+// Each piece lies outside one edge of the hole and inside the edges before it.
+std::vector<Polygon2> subtractConvex(const Polygon2& p, const Polygon2& hole, double minArea);
+// The union of convex pieces with disjoint interiors when that union is convex itself
+// (their convex hull's area is their summed area within `areaTol`); empty otherwise.
+Polygon2 convexUnion(const std::vector<Polygon2>& pieces, double areaTol);
+// Convex `p` with every side moved `by` inwards (the intersection of the moved
+// half-planes, so sides that vanish are handled); empty when nothing is left.
+Polygon2 insetConvex(const Polygon2& p, double by);
+
+}  // namespace fgsg::rt::cells
