@@ -361,6 +361,10 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
   }
   if (fn == "inside" || fn == "overlaps" || fn == "touches" || fn == "minimumDistance" || fn == "contextCount")
     return contextQuery(fn, at, nameAt, argCtx, env);
+  if (fn == "contextCompare" || fn == "occlusion") {  // before their keyword arguments read as names
+    notSupported(nameAt, "the function '" + fn + "'");
+    return nullptr;
+  }
   std::vector<ExprPtr> args;
   Env plain = env;
   plain.relativeAxis = -1;

@@ -234,3 +234,32 @@ TEST_CASE("a rule of operations only is a leaf, with no W001", "[cga][dialect]")
   REQUIRE(slip.ok);
   CHECK(slip.messages.find("test.cga:1:37: warning[W001]: 'Wal' has no rule") != std::string::npos);
 }
+
+TEST_CASE("context queries: label() and the occlusion and context queries, in both dialects", "[cga][dialect]") {
+  // The target keyword becomes its word, a missing label "" and a missing target "all".
+  const Compiled cga = compile(
+      "version \"2023.0\"\nb(x) = case x : 1 else : 0\n"
+      "Lot --> label(\"tower\") report(\"t\", b(touches(intra, \"tower\"))) "
+      "report(\"d\", minimumDistance(inter, \"tower\")) report(\"i\", b(inside())) X.\n");
+  REQUIRE(cga.ok);
+  const std::string printed = ir::printModule(cga.module);
+  CHECK(printed.find("label \"tower\"") != std::string::npos);
+  CHECK(printed.find("Shape.touches(\"intra\", \"tower\")") != std::string::npos);
+  CHECK(printed.find("Shape.minimumDistance(\"inter\", \"tower\")") != std::string::npos);
+  CHECK(printed.find("Shape.inside(\"all\", \"\")") != std::string::npos);
+  const Compiled target = compile("version \"2023.0\"\nLot --> case inside(near, \"x\") : A.\n else : B.\n");
+  CHECK(target.messages.find("test.cga:2:21: error[E016]: the target of 'inside' is intra, inter or all, not 'near'") !=
+        std::string::npos);
+  const Compiled count = compile("version \"2023.0\"\nLot --> report(\"d\", minimumDistance(intra)) X.\n");
+  CHECK(count.messages.find("error[E016]: 'minimumDistance' takes 2 arguments") != std::string::npos);
+  CHECK(compile("version \"2023.0\"\nLot --> report(\"d\", contextCompare(intra, \"x\")) X.\n").messages.find("E801") !=
+        std::string::npos);
+  // fgsg's spelling.
+  const Compiled fgsg = compile(
+      "axiom: A;\nA ~> Label(\"t\") Report(\"c\", Shape.contextCount(\"all\", \"t\")) "
+      "Report(\"o\", Shape.overlaps(\"intra\") ? 1 : 0);\n", "test.fgsg");
+  CHECK(fgsg.ok);
+  const Compiled bad = compile("axiom: A;\nA ~> Report(\"x\", Shape.overlaps(\"next\", \"t\") ? 1 : 0) Label(3);\n", "test.fgsg");
+  CHECK(bad.messages.find("test.fgsg:2:18: error[E025]: the target of 'Shape.overlaps' is the constant") != std::string::npos);
+  CHECK(bad.messages.find("test.fgsg:2:61: error[E013]: the label of 'Label' must be a string") != std::string::npos);
+}
