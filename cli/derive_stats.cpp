@@ -23,6 +23,8 @@ std::vector<std::pair<std::string, uint64_t>> deriveStatFigures(const rt::Derive
 void printDeriveStats(const rt::DeriveStats& s, size_t triangles, size_t lines) {
   for (const auto& [name, value] : deriveStatFigures(s, triangles, lines))
     std::printf("%s %llu\n", name.c_str(), (unsigned long long)value);
+  // The share of the textured faces' area their cells cover (docs/cells.md "Coverage").
+  if (s.cellsFaceArea > 0) std::printf("cells.coverage %.6f\n", s.cellsCoveredArea / s.cellsFaceArea);
 }
 
 }  // namespace fgsg::cli

@@ -83,6 +83,9 @@ struct DeriveStats {
   uint64_t lineSegments = 0;   // LineSeg segments kept
   uint64_t linesJoined = 0;    // lines ended at an intersection (merged or stopped)
   uint64_t locksRemoved = 0;   // Lock sets removed whole because one of their shapes collided
+  // Cells (docs/cells.md "Coverage"): the area of the faces a generator laid cells on,
+  // and the part of it their cells claim (joints included).
+  double cellsFaceArea = 0.0, cellsCoveredArea = 0.0;
   double deriveSeconds = 0.0;
   // Of deriveSeconds: making the surface ready — loading it, designing its fields,
   // laying it out for marching (Buron et al. Table 1's preprocessing).

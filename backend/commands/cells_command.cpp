@@ -4,6 +4,8 @@
 #include "runtime/cells/feature_param.h"
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
+#include "runtime/cga/cga.h"
+#include "runtime/cga/polygon_clip.h"
 #include "runtime/io/find_file.h"
 
 #include <algorithm>
@@ -41,6 +43,26 @@ std::string boxObj(const rt::Scope& s) {
 
 bool has(const std::vector<std::string>& labels, const std::string& l) {
   return std::find(labels.begin(), labels.end(), l) != labels.end();
+}
+
+// A clipped cell's prism in its scope's unit box (the profile over its bounding
+// rectangle, swept along Z), faces counter-clockwise from outside: a convex solid.
+rt::cga::LocalGeometry prismGeometry(const rt::cells::Cell& c) {
+  rt::cga::LocalGeometry g;
+  g.kind = rt::GeomKind::Polyhedron;
+  g.convex = true;
+  std::vector<rt::Vec3> bottom, top;
+  for (const rt::cells::Vec2& q : c.profile) {
+    const double x = c.size.x() > 0 ? q.x() / c.size.x() : 0, y = c.size.y() > 0 ? q.y() / c.size.y() : 0;
+    bottom.emplace_back(x, y, 0), top.emplace_back(x, y, 1);
+  }
+  g.faces.push_back(top);
+  g.faces.emplace_back(bottom.rbegin(), bottom.rend());
+  for (size_t i = 0; i < bottom.size(); ++i) {
+    const size_t j = (i + 1) % bottom.size();
+    g.faces.push_back({bottom[i], bottom[j], top[j], top[i]});
+  }
+  return g;
 }
 
 // Derives the bodies run while it lives on the spot (as a Lock does), with `recording`
@@ -163,7 +185,7 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
   rt::RandomStream rng{rt::childKey(ex.key, 0x5000000000000000ull | (uint64_t(op.loc.line) << 20) | op.loc.col), 0};
   // The feature tree's own terminal shapes are no base pieces of an outer Cells.
   const OnTheSpot spot(d_, nullptr);
-  active_.push_back({&tex, {}, joint, &rng});
+  active_.push_back({&tex, {}, joint, &rng, {}});
   struct Pop {  // after the push: a push that throws leaves nothing to pop
     std::vector<Active>& active;
     ~Pop() { active.pop_back(); }
@@ -172,6 +194,16 @@ void CellsCommand::texture(const ir::Op& op, const double* a, uint32_t n, State&
     if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
     active_.back().feature = ref;
     d_.runBody(op, tree, featureScope(tex, ref), rt::GeomRef{}, st, ex, f);
+  }
+  // Coverage (docs/cells.md): over the faces a generator ran on.
+  std::vector<int> laid = active_.back().facesLaid;
+  std::sort(laid.begin(), laid.end());
+  laid.erase(std::unique(laid.begin(), laid.end()), laid.end());
+  for (int face : laid) {
+    const rt::cells::FaceOccupancy& map = tex.faceMap(face);
+    const double area = map.area();
+    d_.stats().cellsFaceArea += area;
+    d_.stats().cellsCoveredArea += area - map.freeArea();
   }
   if (mortar > 0) {
     const rt::Mesh mesh = rt::cells::mortarMesh(base.mesh, mortar);
@@ -242,13 +274,37 @@ void CellsCommand::pattern(const ir::Op& op, const double* a, uint32_t n, State&
                        "): cells placed before it (on the arc's corners, or by another generator on this edge) "
                        "take all the room its ring needs");
   }
-  for (size_t k = first; k < tex.cells().size(); ++k) {
-    const rt::cells::Cell c = rt::cells::shrunk(tex.cells()[k], at.joint);
-    rt::Scope s = st.scope;
-    s.P = c.origin, s.axes = c.axes, s.S = c.size;
-    if (s.axes.determinant() < 0) s.P += s.axes.col(0) * s.S.x(), s.axes.col(0) = -s.axes.col(0);
-    if (op.bodies.empty()) d_.placeInstance(cellAsset(), s, d_.placingSymbol(ex), nullptr, 0, op.loc);
-    else d_.runBody(op, 0, s, rt::GeomRef{}, st, ex, f);
+  if (at.feature.kind == FeatureKind::Face) at.facesLaid.push_back(at.feature.index);
+  for (size_t k = first; k < tex.cells().size(); ++k) placeCell(tex.cells()[k], op, st, ex, f);
+}
+
+void CellsCommand::placeCell(const rt::cells::Cell& cell, const ir::Op& op, State& st, Exec& ex, Frame& f) {
+  rt::cells::Cell c = rt::cells::shrunk(cell, active_.back().joint);
+  if (c.axes.determinant() < 0) {  // a right-handed scope: axis 0 turned round, the profile mirrored
+    c.origin += c.axes.col(0) * c.size.x(), c.axes.col(0) = -c.axes.col(0);
+    for (rt::cells::Vec2& q : c.profile) q.x() = c.size.x() - q.x();
+    std::reverse(c.profile.begin(), c.profile.end());
+  }
+  rt::Scope s = st.scope;
+  s.P = c.origin, s.axes = c.axes, s.S = c.size;
+  // A clipped cell's shape has its prism as geometry (a CGA leaf outputs it).
+  const rt::GeomRef geom = c.isBox() ? rt::GeomRef{} : rt::cga::storeGeometry(d_.arena(), prismGeometry(c));
+  rt::InstanceList& out = d_.output();
+  const size_t before = out.instances.size();
+  if (op.bodies.empty()) d_.placeInstance(cellAsset(), s, d_.placingSymbol(ex), nullptr, 0, op.loc);
+  else d_.runBody(op, 0, s, geom, st, ex, f);
+  if (c.isBox()) return;
+  // The cube that draws a clipped cell (the cell's box with no body, or I("cube") in its
+  // rules) is drawn as the cell's prism, stretched into the cube's box as any asset is.
+  uint32_t prism = UINT32_MAX;
+  for (size_t k = before; k < out.instances.size(); ++k) {
+    rt::Instance& inst = out.instances[k];
+    if (inst.geometry != UINT32_MAX || (inst.asset != cellAsset_ && out.assets[inst.asset] != "cube")) continue;
+    if (prism == UINT32_MAX) {
+      out.geometries.push_back(rt::cga::ownGeometryMesh(s, geom, d_.arena()));
+      prism = static_cast<uint32_t>(out.geometries.size() - 1);
+    }
+    inst.geometry = prism;
   }
 }
 

@@ -43,6 +43,7 @@ class CellsCommand final : public CommandFamily {
     rt::cells::FeatureRef feature;
     double joint;
     rt::RandomStream* rng;
+    std::vector<int> facesLaid;  // faces a generator ran on: their coverage is counted
   };
   void texture(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f);
   void pattern(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f);
@@ -50,6 +51,9 @@ class CellsCommand final : public CommandFamily {
   rt::cells::LabelledMesh basePart(const ir::Op& op, State& st, Exec& ex, Frame& f);
   rt::Scope featureScope(const rt::cells::CellularTexture& tex, rt::cells::FeatureRef ref) const;
   uint32_t cellAsset();
+  // Places one output cell (shrunk) as the generator's body shape or, without a body, as
+  // the cell asset; a clipped cell's cube is drawn as its prism.
+  void placeCell(const rt::cells::Cell& cell, const ir::Op& op, State& st, Exec& ex, Frame& f);
 
   Derivation& d_;
   std::vector<Active> active_;  // Cells inside Cells nest

@@ -162,6 +162,8 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
     s.lineSegments += q.lineSegments;
     s.linesJoined += q.linesJoined;
     s.locksRemoved += q.locksRemoved;
+    s.cellsFaceArea += q.cellsFaceArea;
+    s.cellsCoveredArea += q.cellsCoveredArea;
     if (limit) throw *limit;
   }
 }
