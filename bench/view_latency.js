@@ -13,6 +13,12 @@
 // STEPS (default the example's 120) shortens each plant's main branch: a software-WebGL
 // page on a small machine holds a few million triangles, not the issue's 4.5 M.
 // usage: node bench/view_latency.js FGSG_BINARY N edits [MESH] [K] [STEPS]
+//
+// With `million` (#45): the first model of a SIDE^3 grid of instanced cubes (default 100:
+// a million, 12 M triangles), N page loads, each timed from the page's start (navigation)
+// to the model announced, its bytes received and the model in the scene, with the
+// server's part (derive, the scene, its .glb) as the page was told it.
+// usage: node bench/view_latency.js FGSG_BINARY N million [SIDE]
 'use strict';
 const { spawn } = require('child_process');
 const fs = require('fs');
@@ -114,7 +120,49 @@ async function edits() {
   }
 }
 
+async function million() {
+  const side = Number(process.argv[5] || 100);
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fgsg-view-bench-'));
+  const grammar = path.join(dir, 'cubes.fgsg');
+  fs.writeFileSync(grammar, `const n = ${side};
+Axiom ~> Layer(0);
+Layer(k) : k < n ~> [ Row(0) ] T(0, 0, 2) Layer(k + 1);
+Row(j) : j < n ~> [ Cube(0) ] T(0, 2, 0) Row(j + 1);
+Cube(i) : i < n ~> [ I("cube") ] T(2, 0, 0) Cube(i + 1);
+`);
+  const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+  const url = await new Promise((resolve) => {
+    let text = '';
+    server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
+  });
+  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
+  try {
+    const result = { bench: 'view_million', cubes: side ** 3, loads: runs, server_ms: [], announced_ms: [],
+                     received_ms: [], shown_ms: [] };
+    for (let i = 0; i < runs; ++i) {
+      const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+      await page.goto(url);
+      await page.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1, null, { timeout: 300000 });
+      const r = await page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
+                                             n: window.fgsgViewer.instanced }));
+      result.server_ms.push(Math.round(r.s));
+      result.announced_ms.push(Math.round(r.t.announced));
+      result.received_ms.push(Math.round(r.t.received));
+      result.shown_ms.push(Math.round(r.t.shown));
+      result.instanced = r.n;
+      await page.close();
+    }
+    console.log(JSON.stringify(result));
+  } finally {
+    await browser.close();
+    server.kill('SIGTERM');
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
 if (process.argv[4] === 'edits') edits();
+else if (process.argv[4] === 'million') million();
 else (async () => {
   const server = spawn(fgsg, ['view', path.join(root, 'examples/mueller_building.fgsg'), '--port', '0',
                               '--set', 'lot_width=31'], { stdio: ['ignore', 'pipe', 'inherit'] });

@@ -459,7 +459,8 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   for (const auto& [name, value] : deriveStatFigures(result.stats, scene.triangles)) figures[name] = value;
   Json placing = Json::array();
   for (const auto& [node, count] : scene.placing) placing.push_back({node, count});
-  std::vector<std::string> parts = {std::move(scene.glb)};
+  std::vector<std::string> parts;  // (an initializer list would copy the .glb)
+  parts.push_back(std::move(scene.glb));
   parts.emplace_back(reinterpret_cast<const char*>(scene.ids.data()), scene.ids.size() * sizeof(uint32_t));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms},

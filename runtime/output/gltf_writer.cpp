@@ -83,13 +83,15 @@ class Writer {
   bool write(bool binary, std::string& bytes, std::string& error);
 
  private:
-  // A buffer view over `count` values of T appended to the BIN chunk.
+  // A buffer view over `count` values of T appended to the BIN chunk (null `data`: room
+  // for them, zeroed, for the caller to fill).
   template <class T>
   int view(const T* data, size_t count, int target) {
     bin_.resize(padded4(bin_.size()), '\0');
     json v = {{"buffer", 0}, {"byteLength", count * sizeof(T)}, {"byteOffset", bin_.size()}};
     if (target) v["target"] = target;
-    bin_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+    if (data) bin_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+    else bin_.resize(bin_.size() + count * sizeof(T), '\0');
     views_.push_back(std::move(v));
     return int(views_.size() - 1);
   }
@@ -253,27 +255,28 @@ int Writer::sharedMesh(uint32_t mesh, uint32_t material) {
 
 int Writer::instancedNode(const InstancedPart& part) {
   const size_t n = part.instances.size();
-  // One view per part: translations, rotations, scales, colours, one after another.
-  std::vector<float> data;
-  data.reserve(13 * n);
+  // The colours only where they vary: else the material has the part's one colour.
+  const bool colored = scene_.materials[part.material].vertexColors;
+  // One view per part: translations, rotations, scales, colours, one after another,
+  // written in place at the BIN chunk's end (a million instances are 40 MB).
+  const int v = view(static_cast<const float*>(nullptr), (colored ? 13 : 10) * n, 0);
+  float* data = reinterpret_cast<float*>(bin_.data() + (bin_.size() - (colored ? 13 : 10) * n * sizeof(float)));
+  const auto put = [&](float x) { std::memcpy(data++, &x, sizeof x); };  // the chunk is only 4-aligned
   for (const Trs& t : part.trs)
-    for (double x : t.translation) data.push_back(float(x));
+    for (double x : t.translation) put(float(x));
   for (const Trs& t : part.trs) {
     // Rounded to floats, renormalised there so that the quaternion stays a unit one.
     std::array<float, 4> q;
     double len = 0;
     for (int k = 0; k < 4; ++k) q[k] = float(t.rotation[k]), len += double(q[k]) * q[k];
     len = std::sqrt(len);
-    for (float x : q) data.push_back(float(x / len));
+    for (float x : q) put(float(x / len));
   }
   for (const Trs& t : part.trs)
-    for (double x : t.scale) data.push_back(float(x));
-  // The colours only where they vary: else the material has the part's one colour.
-  const bool colored = scene_.materials[part.material].vertexColors;
+    for (double x : t.scale) put(float(x));
   if (colored)
     for (const auto& c : part.colors)
-      for (float x : c) data.push_back(io::clamp01(x));
-  const int v = view(data.data(), data.size(), 0);
+      for (float x : c) put(io::clamp01(x));
   json attributes = {{"TRANSLATION", accessor(v, n, kFloat, "VEC3")},
                      {"ROTATION", accessor(v, n, kFloat, "VEC4", 12 * n)},
                      {"SCALE", accessor(v, n, kFloat, "VEC3", 28 * n)}};
@@ -480,6 +483,7 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
     return true;
   }
   if (!glbPrefix(text, bin_.size(), bytes, error)) return false;
+  bytes.reserve(bytes.size() + bin_.size());
   bytes += bin_;
   return true;
 }

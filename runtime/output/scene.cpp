@@ -42,28 +42,56 @@ const Mesh* drawnMesh(const Instance& inst, const SceneInput& in) {
   return &in.library->mesh(meshOf[inst.asset]);
 }
 
-void appendQuantized(std::string& key, double value, double step) {
-  const auto q = static_cast<int64_t>(std::llround(value / step));
-  key.append(reinterpret_cast<const char*>(&q), sizeof q);
+// std::llround(x), inline where x is well within int64_t (a vertex's coordinate in steps):
+// truncated, then rounded half away from zero as llround does; x - t is exact there.
+int64_t roundHalfAway(double x) {
+  if (!(std::abs(x) < 0x1p52)) return static_cast<int64_t>(std::llround(x));
+  auto t = static_cast<int64_t>(x);
+  const double rest = x - double(t);
+  if (rest >= 0.5) ++t;
+  else if (rest <= -0.5) --t;
+  return t;
 }
 
-// The content key of an own geometry (and the whole tiles taken off its coordinates).
-std::string geometryKey(const Mesh& m, std::array<float, 2>& shift) {
-  std::string key;
-  key.reserve(8 * (m.positions.size() + m.normals.size() + m.texcoords.size()) + 4 * m.indices.size() + 16);
-  const uint64_t counts[2] = {m.vertexCount(), m.indices.size()};
-  key.append(reinterpret_cast<const char*>(counts), sizeof counts);
-  for (float x : m.positions) appendQuantized(key, x, kPositionStep);
-  for (float x : m.normals) appendQuantized(key, x, kNormalStep);
-  shift = {0, 0};
+// An own geometry's content as compared (its positions, normals and texture coordinates
+// quantized, the whole tiles taken off the coordinates; its indices), and its hash: equal
+// contents are one shared mesh.
+struct GeometryKey {
+  std::vector<int64_t> values;  // quantized positions, normals, texture coordinates
+  std::array<float, 2> shift{0, 0};
+  uint64_t hash = 0;
+};
+
+// FNV-1a over 64-bit words: a collision costs only a comparison more.
+uint64_t mixHash(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
+
+void geometryKey(const Mesh& m, GeometryKey& key) {
+  key.values.clear();
+  key.values.reserve(m.positions.size() + m.normals.size() + m.texcoords.size());
+  // The steps are powers of two: multiplying by their inverse divides exactly.
+  for (float x : m.positions) key.values.push_back(roundHalfAway(x * (1 / kPositionStep)));
+  for (float x : m.normals) key.values.push_back(roundHalfAway(x * (1 / kNormalStep)));
+  key.shift = {0, 0};
   if (m.hasTexcoords()) {
     float lo[2] = {INFINITY, INFINITY};
     for (size_t k = 0; k < m.texcoords.size(); ++k) lo[k % 2] = std::min(lo[k % 2], m.texcoords[k]);
-    shift = {std::floor(lo[0]), std::floor(lo[1])};
-    for (size_t k = 0; k < m.texcoords.size(); ++k) appendQuantized(key, m.texcoords[k] - shift[k % 2], kTexcoordStep);
+    key.shift = {std::floor(lo[0]), std::floor(lo[1])};
+    for (size_t k = 0; k < m.texcoords.size(); ++k)
+      key.values.push_back(roundHalfAway((m.texcoords[k] - key.shift[k % 2]) * (1 / kTexcoordStep)));
   }
-  key.append(reinterpret_cast<const char*>(m.indices.data()), m.indices.size() * sizeof(uint32_t));
-  return key;
+  uint64_t h = mixHash(mixHash(mixHash(0xCBF29CE484222325ull, m.vertexCount()), m.normals.size()), m.indices.size());
+  for (int64_t v : key.values) h = mixHash(h, uint64_t(v));
+  for (uint32_t i : m.indices) h = mixHash(h, i);
+  key.hash = h;
+}
+
+// Whether `m`, keyed as `key`, has the content of `other` (keyed into `scratch` here).
+bool sameGeometry(const Mesh& m, const GeometryKey& key, const Mesh& other, GeometryKey& scratch) {
+  if (m.positions.size() != other.positions.size() || m.normals.size() != other.normals.size() ||
+      m.texcoords.size() != other.texcoords.size() || m.indices != other.indices)
+    return false;
+  geometryKey(other, scratch);
+  return scratch.values == key.values;
 }
 
 // The axis along which every vertex of `m` is at 0 (a face's own geometry), or -1.
@@ -76,6 +104,35 @@ int flatAxis(const Mesh& m) {
   return -1;
 }
 
+// decomposeTrs of one transform after another, the last one's rotation and scale reused
+// when the linear part (and last row, and flat axis) is the same bit for bit: the
+// decomposition reads only those and the translation, which it copies. Instances placed
+// one after another mostly share their orientation and size (a grid, a facade's row).
+class TrsDecomposer {
+ public:
+  TrsFit operator()(const std::array<double, 16>& m, Trs& trs, int flatAxis) {
+    const bool same = valid_ && flatAxis == flatAxis_ && std::memcmp(m.data(), last_.data(), 12 * sizeof(double)) == 0 &&
+                      std::memcmp(&m[15], &last_[15], sizeof(double)) == 0 && std::isfinite(m[12]) &&
+                      std::isfinite(m[13]) && std::isfinite(m[14]);
+    if (!same) {
+      fit_ = decomposeTrs(m, trs_, flatAxis);
+      last_ = m, flatAxis_ = flatAxis, valid_ = true;
+    }
+    if (fit_ == TrsFit::Rigid || fit_ == TrsFit::Mirrored) {
+      trs.rotation = trs_.rotation, trs.scale = trs_.scale;
+      trs.translation = {m[12], m[13], m[14]};
+    }
+    return fit_;
+  }
+
+ private:
+  std::array<double, 16> last_{};
+  Trs trs_;
+  TrsFit fit_ = TrsFit::Degenerate;
+  int flatAxis_ = -1;
+  bool valid_ = false;
+};
+
 struct Builder {
   const SceneInput& in;
   const InstanceList& list;
@@ -84,6 +141,12 @@ struct Builder {
   std::vector<TrsFit> fitOf;
   std::vector<Trs> trsOf;
   std::unordered_map<std::string, uint32_t> imageIndex;
+  std::vector<uint32_t> imageOfTexture;  // per InstanceList::textures entry: its image, or kNone before first use
+  // Per instance: its group's number (groupIds), the same for instances whose groups are
+  // named alike.
+  std::vector<uint32_t> groupOf;
+  std::vector<std::string> groupNames;  // by group number
+  std::vector<uint32_t> localOf;        // buildStart's, kept between starts (all kNone)
 
   explicit Builder(const SceneInput& input) : in(input), list(*input.list) {}
 
@@ -94,16 +157,24 @@ struct Builder {
   }
 
   std::map<std::tuple<float, float, float, int32_t, bool>, uint32_t> materialIndex;
+  // The last material asked for: instances after one another mostly share theirs.
+  Material lastMaterial;
+  uint32_t lastMaterialIndex = kNone;
 
   std::unordered_map<std::string, int> materialNames;  // -> how many materials took it
 
   uint32_t material(const Material& m) {
+    if (lastMaterialIndex != kNone && m.color == lastMaterial.color && m.image == lastMaterial.image &&
+        m.vertexColors == lastMaterial.vertexColors)
+      return lastMaterialIndex;
     const auto [it, added] = materialIndex.emplace(std::make_tuple(m.color[0], m.color[1], m.color[2], m.image, m.vertexColors),
                                                    uint32_t(scene.materials.size()));
     if (added) {
       scene.materials.push_back(m);
       scene.materials.back().name = uniqueName(m);
     }
+    lastMaterial = m;
+    lastMaterialIndex = it->second;
     return it->second;
   }
 
@@ -137,25 +208,48 @@ struct Builder {
     fitOf.assign(n, TrsFit::Degenerate);
     trsOf.resize(n);
     if (in.instancing == Instancing::Off) return;
-    std::unordered_map<int, uint32_t> ofAsset;
-    std::unordered_map<std::string, uint32_t> ofGeometry;
+    // Per library mesh: its shared mesh, and the axis it is flat along (-2: not yet known).
+    std::vector<uint32_t> ofAsset;
+    std::vector<int> flatOfAsset;
+    // Own geometries by their content's hash: the first shared mesh of each hash, then
+    // the next of the same hash (kNone ends the chain).
+    std::unordered_map<uint64_t, uint32_t> ofGeometry;
+    std::vector<uint32_t> nextOfHash;  // per shared mesh
+    GeometryKey key, scratch;
+    TrsDecomposer decompose;
     for (size_t i = 0; i < n; ++i) {
       const Instance& inst = list.instances[i];
       const Mesh* m = drawnMesh(inst, in);
       if (!m || inst.curve != kNone || m->textured() || !m->lines.empty() || m->indices.empty()) continue;
       if (inst.texture != kNone && (!m->hasTexcoords() || inst.texture >= list.textures.size())) continue;
-      fitOf[i] = decomposeTrs(inst.transform, trsOf[i], flatAxis(*m));
+      const int library = inst.geometry == kNone ? (*in.meshOf)[inst.asset] : -1;
+      if (library >= 0 && size_t(library) >= ofAsset.size())
+        ofAsset.resize(size_t(library) + 1, kNone), flatOfAsset.resize(size_t(library) + 1, -2);
+      int flat;
+      if (library < 0) flat = flatAxis(*m);
+      else if ((flat = flatOfAsset[size_t(library)]) == -2) flat = flatOfAsset[size_t(library)] = flatAxis(*m);
+      fitOf[i] = decompose(inst.transform, trsOf[i], flat);
       if (fitOf[i] != TrsFit::Rigid && fitOf[i] != TrsFit::Mirrored) continue;
-      uint32_t shared;
-      if (inst.geometry == kNone) {
-        const auto [it, added] = ofAsset.emplace((*in.meshOf)[inst.asset], uint32_t(scene.meshes.size()));
-        if (added) scene.meshes.push_back({m, list.assets[inst.asset], list.assets[inst.asset], {0, 0}, 0});
-        shared = it->second;
+      uint32_t shared = kNone;
+      if (library >= 0) {
+        uint32_t& of = ofAsset[size_t(library)];
+        if (of == kNone) {
+          of = uint32_t(scene.meshes.size());
+          scene.meshes.push_back({m, list.assets[inst.asset], list.assets[inst.asset], {0, 0}, 0});
+        }
+        shared = of;
       } else {
-        std::array<float, 2> shift;
-        const auto [it, added] = ofGeometry.emplace(geometryKey(*m, shift), uint32_t(scene.meshes.size()));
-        if (added) scene.meshes.push_back({m, list.symbols[inst.symbol] + " piece", list.assets[inst.asset], shift, 0});
-        shared = it->second;
+        geometryKey(*m, key);
+        const auto [it, added] = ofGeometry.emplace(key.hash, kNone);
+        uint32_t link = it->second, *last = &it->second;
+        while (link != kNone && !sameGeometry(*m, key, *scene.meshes[link].mesh, scratch))
+          last = &nextOfHash[link], link = *last;
+        if (link == kNone) {
+          link = *last = uint32_t(scene.meshes.size());
+          scene.meshes.push_back({m, list.symbols[inst.symbol] + " piece", list.assets[inst.asset], key.shift, 0});
+          nextOfHash.resize(scene.meshes.size(), kNone);
+        }
+        shared = link;
       }
       ++scene.meshes[shared].uses;
       sharedOf[i] = shared;
@@ -166,47 +260,55 @@ struct Builder {
         sharedOf[i] = kNone;
   }
 
-  std::string groupName(size_t i) const {
-    const Instance& inst = list.instances[i];
-    switch (in.groupBy) {
-      case GroupBy::None: return "";
-      case GroupBy::Symbol: return inst.symbol < list.symbols.size() ? list.symbols[inst.symbol] : "?";
-      case GroupBy::Rule:
-      case GroupBy::Label: {
-        const uint32_t rule = i < list.origins.size() ? list.origins[i].rule : kNone;
-        return rule < in.ruleGroups.size() ? in.ruleGroups[rule] : "axiom";
-      }
+  // Each instance's group (groupOf), numbered by name in order of first use: the symbol's
+  // ("?" past the list's symbols), or its rule's group ("axiom" for none), or one "".
+  void groupInstances() {
+    const size_t n = list.instances.size();
+    groupOf.assign(n, 0);
+    if (in.groupBy == GroupBy::None) {
+      groupNames = {""};
+      return;
     }
-    return "";
+    const bool bySymbol = in.groupBy == GroupBy::Symbol;
+    const size_t keys = bySymbol ? list.symbols.size() : in.ruleGroups.size();
+    std::vector<uint32_t> ofKey(keys + 1, kNone);  // the last: "?" or "axiom"
+    std::unordered_map<std::string, uint32_t> byName;
+    for (size_t i = 0; i < n; ++i) {
+      size_t k;
+      if (bySymbol) {
+        k = std::min<size_t>(list.instances[i].symbol, keys);
+      } else {
+        const uint32_t rule = i < list.origins.size() ? list.origins[i].rule : kNone;
+        k = std::min<size_t>(rule, keys);
+      }
+      if (ofKey[k] == kNone) {
+        static const std::string fallback[2] = {"axiom", "?"};  // by rule, by symbol
+        const std::string& name = k < keys ? (bySymbol ? list.symbols[k] : in.ruleGroups[k]) : fallback[bySymbol];
+        const auto [it, added] = byName.emplace(name, uint32_t(groupNames.size()));
+        if (added) groupNames.push_back(name);
+        ofKey[k] = it->second;
+      }
+      groupOf[i] = ofKey[k];
+    }
   }
 
   Material materialOf(const Instance& inst) {
     Material m;
     m.color = inst.color;
-    if (inst.texture != kNone) m.image = int32_t(image(list.textures[inst.texture]));
+    if (inst.texture != kNone) {
+      if (imageOfTexture.size() <= inst.texture) imageOfTexture.resize(size_t(inst.texture) + 1, kNone);
+      uint32_t& img = imageOfTexture[inst.texture];
+      if (img == kNone) img = image(list.textures[inst.texture]);
+      m.image = int32_t(img);
+    }
     return m;
   }
 
   // The instances `which` assembled as the flattened output would, into world space.
   Mesh bake(const std::vector<uint32_t>& which) {
-    InstanceList sub;
-    sub.assets = list.assets;
-    sub.symbols = list.symbols;
-    sub.textures = list.textures;
-    for (uint32_t i : which) {
-      Instance inst = list.instances[i];
-      inst.firstParam = inst.paramCount = 0;
-      if (inst.geometry != kNone) {
-        sub.geometries.push_back(list.geometries.at(inst.geometry));
-        inst.geometry = uint32_t(sub.geometries.size() - 1);
-      }
-      if (inst.curve != kNone) {
-        sub.curves.push_back(list.curves.at(inst.curve));
-        inst.curve = uint32_t(sub.curves.size() - 1);
-      }
-      sub.instances.push_back(inst);
-    }
-    return assembleInstances(sub, *in.library, *in.meshOf);
+    Mesh out;
+    assembleSelected(list, which, *in.library, *in.meshOf, out);
+    return out;
   }
 
   // Whether the group's colours vary per instance (see kMaxBakedColors): then its parts
@@ -216,6 +318,7 @@ struct Builder {
     std::vector<std::array<float, 3>> colors;
     for (uint32_t i : members) {
       const auto& c = list.instances[i].color;
+      if (!colors.empty() && c == colors.back()) continue;  // runs of one colour: no search
       if (std::find(colors.begin(), colors.end(), c) != colors.end()) continue;
       if (colors.size() == kMaxBakedColors) return true;
       colors.push_back(c);
@@ -232,7 +335,14 @@ struct Builder {
     std::vector<uint32_t> baked;
     std::map<std::tuple<uint32_t, uint32_t, bool>, size_t> partOf;  // (mesh, material, mirrored)
     std::vector<std::pair<bool, InstancedPart>> parts;
-    for (uint32_t i : members) {
+    std::tuple<uint32_t, uint32_t, bool> lastKey{kNone, kNone, false};  // and its part: runs of alike instances
+    uint32_t lastPart = 0;
+    // Each member's part first (kNone: baked), counted, so that the parts' arrays are
+    // allocated once: a million cubes are 80 MB of transforms.
+    std::vector<uint32_t> partOfMember(members.size(), kNone);
+    std::vector<size_t> counts;
+    for (size_t k = 0; k < members.size(); ++k) {
+      const uint32_t i = members[k];
       if (sharedOf[i] == kNone) {
         baked.push_back(i);
         continue;
@@ -242,12 +352,28 @@ struct Builder {
       Material look = materialOf(inst);
       if (vary) look.color = {1, 1, 1}, look.vertexColors = true;
       const uint32_t mat = material(look);
-      const auto [it, added] = partOf.emplace(std::make_tuple(sharedOf[i], mat, mirrored), parts.size());
-      if (added) parts.push_back({mirrored, InstancedPart{sharedOf[i], mat, {}, {}, {}}});
-      InstancedPart& p = parts[it->second].second;
+      const auto key = std::make_tuple(sharedOf[i], mat, mirrored);
+      if (key != lastKey) {
+        const auto [it, added] = partOf.emplace(key, parts.size());
+        if (added) parts.push_back({mirrored, InstancedPart{sharedOf[i], mat, {}, {}, {}}}), counts.push_back(0);
+        lastKey = key, lastPart = uint32_t(it->second);
+      }
+      partOfMember[k] = lastPart;
+      ++counts[lastPart];
+    }
+    for (size_t k = 0; k < parts.size(); ++k) {
+      InstancedPart& p = parts[k].second;
+      p.instances.reserve(counts[k]);
+      p.trs.reserve(counts[k]);
+      p.colors.reserve(counts[k]);
+    }
+    for (size_t k = 0; k < members.size(); ++k) {
+      if (partOfMember[k] == kNone) continue;
+      const uint32_t i = members[k];
+      InstancedPart& p = parts[partOfMember[k]].second;
       p.instances.push_back(i);
       p.trs.push_back(trsOf[i]);
-      p.colors.push_back(inst.color);
+      p.colors.push_back(list.instances[i].color);
     }
     for (auto& [mirrored, p] : parts) {
       bool keep = true;
@@ -275,22 +401,32 @@ struct Builder {
   // group's colours vary one part coloured per vertex.
   void bakeParts(const std::vector<uint32_t>& baked, bool vary, GroupNode& g) {
     if (baked.empty()) return;
+    // Counted by asset number, named after: the names are unique, the order of first use kept.
+    std::vector<std::pair<uint32_t, size_t>> perAsset;
     for (uint32_t i : baked) {
-      const std::string& asset = list.assets[list.instances[i].asset];
-      auto at = std::find_if(g.bakedAssets.begin(), g.bakedAssets.end(), [&](const auto& a) { return a.first == asset; });
-      if (at == g.bakedAssets.end()) g.bakedAssets.push_back({asset, 1});
+      const uint32_t asset = list.instances[i].asset;
+      auto at = std::find_if(perAsset.begin(), perAsset.end(), [&](const auto& a) { return a.first == asset; });
+      if (at == perAsset.end()) perAsset.push_back({asset, 1});
       else ++at->second;
+    }
+    for (const auto& [asset, count] : perAsset) {
+      const std::string& name = list.assets[asset];
+      auto at = std::find_if(g.bakedAssets.begin(), g.bakedAssets.end(), [&](const auto& a) { return a.first == name; });
+      if (at == g.bakedAssets.end()) g.bakedAssets.push_back({name, count});
+      else at->second += count;
     }
     std::vector<std::array<float, 3>> colors;
     std::vector<std::vector<uint32_t>> byColor;
     if (vary)
       byColor.assign(1, baked);
     else
-      for (uint32_t i : baked) {
+      for (size_t last = 0; uint32_t i : baked) {
         const auto& c = list.instances[i].color;
-        const size_t k = std::find(colors.begin(), colors.end(), c) - colors.begin();
+        const size_t k = last < colors.size() && c == colors[last] ? last
+                                                                    : size_t(std::find(colors.begin(), colors.end(), c) - colors.begin());
         if (k == colors.size()) colors.push_back(c), byColor.emplace_back();
         byColor[k].push_back(i);
+        last = k;
       }
     const bool perVertex = vary;
     for (size_t k = 0; k < byColor.size(); ++k) {
@@ -318,16 +454,17 @@ struct Builder {
     s.info = std::move(info);
     s.index = index;
     s.instanceCount = end - begin;
-    std::vector<std::string> names;
-    std::unordered_map<std::string, size_t> groupOf;
+    // The start's groups in order of first use (localOf: group number -> the start's).
+    std::vector<uint32_t> used;
     std::vector<std::vector<uint32_t>> members;
     for (uint32_t i = begin; i < end; ++i) {
-      std::string name = groupName(i);
-      const auto [it, added] = groupOf.emplace(name, names.size());
-      if (added) names.push_back(std::move(name)), members.emplace_back();
-      members[it->second].push_back(i);
+      const uint32_t g = groupOf[i];
+      if (localOf[g] == kNone) localOf[g] = uint32_t(used.size()), used.push_back(g), members.emplace_back();
+      members[localOf[g]].push_back(i);
     }
-    for (size_t k = 0; k < names.size(); ++k) s.groups.push_back(buildGroup(names[k], members[k]));
+    for (uint32_t g : used) localOf[g] = kNone;
+    s.groups.reserve(used.size());
+    for (size_t k = 0; k < used.size(); ++k) s.groups.push_back(buildGroup(groupNames[used[k]], members[k]));
     return s;
   }
 
@@ -335,6 +472,8 @@ struct Builder {
     scene.groupBy = in.groupBy;
     scene.instancing = in.instancing;
     findShared();
+    groupInstances();
+    localOf.assign(groupNames.size(), kNone);
     const auto n = uint32_t(list.instances.size());
     std::vector<uint32_t> bounds = list.startBounds;
     if (bounds.size() < 2) bounds = {0, n};
