@@ -244,8 +244,9 @@ struct TurtleDecl {  // turtle angle 60 step 1 width 0.05;
   std::vector<std::pair<std::string, ExprPtr>> settings;
 };
 
-struct IgnoreDecl {  // #ignore: + - F;
+struct IgnoreDecl {  // #ignore: + - F;   #consider: A B;   (frontend/context_lists.h)
   SourceRange range;
+  bool consider = false;  // the modules listed are the only ones context matching sees
   std::vector<std::pair<std::string, SourceRange>> symbols;
 };
 

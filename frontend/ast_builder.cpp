@@ -1,6 +1,7 @@
 #include "frontend/ast_builder.h"
 
 #include "frontend/builtins.h"
+#include "frontend/context_lists.h"
 #include "frontend/lex.h"
 
 #include <charconv>
@@ -237,6 +238,7 @@ DeriveDecl AstBuilder::buildDeriveDecl(P::DeriveDeclContext* ctx) {
 IgnoreDecl AstBuilder::buildIgnoreDecl(P::IgnoreDeclContext* ctx) {
   IgnoreDecl d;
   d.range = rangeOf(ctx);
+  d.consider = listsConsideredModules(ctx->IGNORE()->getText());
   for (auto* s : ctx->ignoredSymbol()) d.symbols.emplace_back(s->getText(), rangeOf(s));
   return d;
 }

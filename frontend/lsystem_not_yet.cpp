@@ -25,17 +25,6 @@ size_t afterClosing(const std::vector<std::unique_ptr<Token>>& tokens, size_t op
   return tokens.size();
 }
 
-// The index after a statement starting at `from`: past its ';', or at the first token on
-// a later line.
-size_t afterStatement(const std::vector<std::unique_ptr<Token>>& tokens, size_t from) {
-  const size_t line = tokens[from]->getLine();
-  for (size_t i = from; i < tokens.size(); ++i) {
-    if (tokens[i]->getType() == Token::EOF || tokens[i]->getLine() != line) return i;
-    if (tokens[i]->getType() == FgsgLexer::SEMI) return i + 1;
-  }
-  return tokens.size();
-}
-
 }  // namespace
 
 void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& tokens, Diagnostics& diags) {
@@ -45,14 +34,6 @@ void dropLsystemSyntaxNotYetSupported(std::vector<std::unique_ptr<Token>>& token
     const Token* t = tokens[i].get();
     const Token* next = i + 1 < tokens.size() ? tokens[i + 1].get() : nullptr;
     const bool named = next && next->getType() == FgsgLexer::ID && writtenTogether(t, next);
-    if (named && t->getType() == FgsgLexer::UNKNOWN_CHAR && t->getText() == "#" && next->getText() == "consider") {
-      const SourceRange at{tokenRange(t).begin, tokenRange(next).end};
-      diags.error("E048", at,
-                  "lpfg's '#consider' (context matching sees only the symbols listed) is not supported "
-                  "yet; '#ignore: ...;' lists the symbols context matching steps over (docs/language.md)");
-      i = afterStatement(tokens, i);
-      continue;
-    }
     // ?P ?H ?U ?L are query modules (frontend/query_modules.h); ?E is not supported yet.
     if (named && t->getType() == FgsgLexer::QUESTION && next->getText() == "E" && i + 2 < tokens.size() &&
         tokens[i + 2]->getType() == FgsgLexer::LPAREN && writtenTogether(next, tokens[i + 2].get())) {

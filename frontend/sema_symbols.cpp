@@ -10,6 +10,7 @@
 #include <cctype>
 
 #include <functional>
+#include <set>
 
 namespace fgsg::frontend::sema_detail {
 
@@ -62,18 +63,40 @@ void Analyzer::collectSymbols() {
 
 // ABOP's #ignore: a name must be a symbol of the grammar, or F, f or a turtle symbol
 // (commands, which context matching always steps over); anything else is likely a typo.
+// lpfg's #consider (L-Py's consider:) lists the symbols context matching sees: every
+// other symbol is ignored. Both in one grammar: a symbol is seen when a #consider lists it
+// and no #ignore does.
 void Analyzer::collectIgnored() {
-  for (const auto& d : prog_.ignores)
+  std::set<std::string> ignored, considered;
+  bool considerOnly = false;
+  for (const auto& d : prog_.ignores) {
+    considerOnly = considerOnly || d.consider;
+    const char* keyword = d.consider ? "#consider" : "#ignore";
     for (const auto& [name, range] : d.symbols) {
       if (res_.findSymbol(name) >= 0) {
-        res_.contextIgnored.push_back(name);
+        if (d.consider)
+          considered.insert(name);
+        else if (ignored.insert(name).second)
+          res_.contextIgnored.push_back(name);  // in the order written
         continue;
       }
       const bool turtleSymbol = name.size() == 1 && std::string("+-&^\\/|!$%").find(name[0]) != std::string::npos;
-      if (name == "F" || name == "f" || turtleSymbol) continue;
+      if (name == "F" || name == "f" || turtleSymbol) {
+        if (d.consider)  // lpfg's context would see it; fgsg's never does (a command)
+          diags_.warning("W006", range,
+                         "'#consider' names '" + name + "', a turtle command without rules: context matching "
+                         "steps over commands whatever '#consider' lists");
+        continue;
+      }
       diags_.warning("W006", range,
-                     "'#ignore' names '" + name + "', which is no symbol of this grammar: nothing is ignored for it");
+                     std::string("'") + keyword + "' names '" + name +
+                         "', which is no symbol of this grammar: " +
+                         (d.consider ? "no context can see it" : "nothing is ignored for it"));
     }
+  }
+  if (considerOnly)
+    for (const SymbolInfo& s : res_.symbols)
+      if (!considered.count(s.name) && !ignored.count(s.name)) res_.contextIgnored.push_back(s.name);
 }
 
 void Analyzer::collectSuccessorSymbols(const Successor& s) {

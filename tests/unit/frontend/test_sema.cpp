@@ -497,6 +497,36 @@ TEST_CASE("rules for turtle symbols make them shape symbols, and #ignore names s
   CHECK(has(arity, "E019"));
 }
 
+TEST_CASE("#consider (lpfg) and consider: / ignore: (cpfg, L-Py) list the symbols context matching sees", "[sema][abop]") {
+  // Symbols in the order first met: b, a (rule heads and contexts), then c. F without rules
+  // is a command (stepped over anyway: W006 says #consider cannot make a context see it);
+  // Q is no symbol.
+  auto a = analyse(R"(
+    derive parallel 3;
+    #consider: a b F Q;
+    axiom: F b + a c;
+    a < b > a -> b;
+    c -> c;
+  )");
+  REQUIRE(a.ok);
+  CHECK(a.sema.contextIgnored == std::vector<std::string>{"c"});
+  CHECK(where(a, "W006") == std::vector<std::string>{"3:20", "3:22"});
+  CHECK_THAT(a.diags[0].message, Catch::Contains("'F', a turtle command"));
+  // cpfg's and L-Py's bare forms, the ';' optional; both lists: seen when considered and
+  // not ignored.
+  for (const char* lists : {"consider: a b\n", "consider: a b;\n", "ignore: c\n", "#consider: a b c;\nignore: c\n"}) {
+    INFO(lists);
+    auto bare = analyse(std::string("derive parallel 1;\n") + lists + "axiom: b a c;\na < b -> b;\nc -> c;\n");
+    REQUIRE(bare.ok);
+    CHECK(bare.sema.contextIgnored == std::vector<std::string>{"c"});
+  }
+  // `ignore` followed by a guard and an arrow is a rule for a symbol named so.
+  auto rule = analyse("derive parallel 1;\naxiom: ignore;\nignore : 1 > 0 -> ignore;\n");
+  REQUIRE(rule.ok);
+  CHECK(rule.sema.findSymbol("ignore") >= 0);
+  CHECK(rule.sema.contextIgnored.empty());
+}
+
 TEST_CASE("turtle colors: a string of #rrggbb colours", "[sema][abop]") {
   auto good = analyse("turtle colors \"#ff0000  #00FF80\";\naxiom: F ' F;");
   REQUIRE(good.ok);
