@@ -14,7 +14,7 @@ import os
 import sys
 import tempfile
 
-from lsystem_reference import check
+from lsystem_reference import check, left_context, right_context
 
 IGNORE = set("+-F")
 RULES = {  # (left, pred, right) -> successor; the book's 0 and 1 are a and b
@@ -30,61 +30,14 @@ RULES = {  # (left, pred, right) -> successor; the book's 0 and 1 are a and b
 TURNS = {"+": "-", "-": "+"}
 
 
-def left_context(s, i):
-    """The symbol ABOP's left context sees before s[i], or None."""
-    j = i - 1
-    while j >= 0:
-        c = s[j]
-        if c == "]":  # step over the whole branch
-            depth = 0
-            while j >= 0:
-                if s[j] == "]":
-                    depth += 1
-                elif s[j] == "[":
-                    depth -= 1
-                    if depth == 0:
-                        break
-                j -= 1
-            j -= 1
-        elif c == "[" or c in IGNORE:  # out of the branch into its parent; ignored symbols
-            j -= 1
-        else:
-            return c
-    return None
-
-
-def right_context(s, i):
-    """The symbol ABOP's right context sees after s[i], or None."""
-    j = i + 1
-    while j < len(s):
-        c = s[j]
-        if c == "[":  # step over the whole branch
-            depth = 0
-            while j < len(s):
-                if s[j] == "[":
-                    depth += 1
-                elif s[j] == "]":
-                    depth -= 1
-                    if depth == 0:
-                        break
-                j += 1
-            j += 1
-        elif c == "]":  # the end of this branch: no right context
-            return None
-        elif c in IGNORE:
-            j += 1
-        else:
-            return c
-    return None
-
-
 def step(s):
     out = []
     for i, c in enumerate(s):
         if c in TURNS:
             out.append(TURNS[c])
         elif c in "ab":
-            key = (left_context(s, i), c, right_context(s, i))
+            skipped = lambda m: m in IGNORE
+            key = (left_context(s, i, skipped), c, right_context(s, i, skipped))
             out.append(RULES.get(key, c))
         else:
             out.append(c)

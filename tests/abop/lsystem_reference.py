@@ -1,10 +1,61 @@
-"""An independent reference for fgsg's L-systems: ABOP's 2D turtle, and the
-comparison of its segments and polygons with those fgsg writes (`turtle segments
-"lines"`: OBJ `l` lines; polygons: `f` triangles). Shared by the ABOP checks in this
-folder."""
+"""An independent reference for fgsg's L-systems: ABOP's context matching on a string of
+one-letter modules, ABOP's 2D turtle, and the comparison of its segments and polygons
+with those fgsg writes (`turtle segments "lines"`: OBJ `l` lines; polygons: `f`
+triangles). Shared by the ABOP checks in this folder."""
 import math
 import os
 import subprocess
+
+
+def left_context(s, i, skipped):
+    """The module ABOP's left context sees before s[i], or None: whole branches ([...])
+    are stepped over, a '[' is left into the parent branch, and modules for which
+    `skipped` holds (#ignore'd ones; with lpfg's #consider, those not listed) are passed."""
+    j = i - 1
+    while j >= 0:
+        c = s[j]
+        if c == "]":  # step over the whole branch
+            depth = 0
+            while j >= 0:
+                if s[j] == "]":
+                    depth += 1
+                elif s[j] == "[":
+                    depth -= 1
+                    if depth == 0:
+                        break
+                j -= 1
+            j -= 1
+        elif c == "[" or skipped(c):  # out of the branch into its parent; skipped modules
+            j -= 1
+        else:
+            return c
+    return None
+
+
+def right_context(s, i, skipped):
+    """The module ABOP's right context sees after s[i], or None: whole branches are stepped
+    over, the ']' ending the branch of s[i] ends the search, `skipped` modules are passed."""
+    j = i + 1
+    while j < len(s):
+        c = s[j]
+        if c == "[":  # step over the whole branch
+            depth = 0
+            while j < len(s):
+                if s[j] == "[":
+                    depth += 1
+                elif s[j] == "]":
+                    depth -= 1
+                    if depth == 0:
+                        break
+                j += 1
+            j += 1
+        elif c == "]":  # the end of this branch: no right context
+            return None
+        elif skipped(c):
+            j += 1
+        else:
+            return c
+    return None
 
 
 def turtle(s, angle):
