@@ -7,6 +7,7 @@ endif
 syn keyword fgsgDeclaration attr const field texture tileset import surface
 syn keyword fgsgKeyword derive turtle collision axiom priority PRIORITY design as
 syn match fgsgKeyword "#ignore\>"
+syn match fgsgKeyword "#consider\>"
 syn keyword fgsgConstant true false epsilon NIL
 syn match fgsgConstant "ε"
 syn match fgsgSection "^\s*\%(production\|decomposition\|homomorphism\|interpretation\)\s*:\s*$"
