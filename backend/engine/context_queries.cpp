@@ -59,6 +59,13 @@ void Derivation::recordContext() {
 void Derivation::answerContextFrom(std::shared_ptr<const ContextWorld> world) {
   contextMode_ = ContextMode::Answer;
   world_ = std::move(world);
+  // Each start shape's context shapes: a query looks only at those of the lots it targets.
+  shapesByStart_.clear();
+  for (uint32_t i = 0; i < world_->shapes.size(); ++i) {
+    const uint32_t start = world_->shapes[i].start;
+    if (shapesByStart_.size() <= start) shapesByStart_.resize(start + 1);
+    shapesByStart_[start].push_back(i);
+  }
 }
 
 std::shared_ptr<const ContextWorld> Derivation::takeContextWorld() {
@@ -118,22 +125,30 @@ double Derivation::context(ir::Query q, uint32_t target, const std::string& labe
     return !((b[start].second.array() + d < b[currentStart_].first.array()).any() ||
              (b[currentStart_].second.array() + d < b[start].first.array()).any());
   };
-  auto inTarget = [&](const ContextShape& s) {
-    const bool own = s.start == currentStart_;
-    if (t == ir::ContextTarget::Intra) return own;
-    if (own) return t == ir::ContextTarget::All;
-    return near(s.start);
+  // Calls `take` on the context shapes of the targeted start shapes until it returns true.
+  auto visit = [&](auto&& take) {
+    for (uint32_t start = 0; start < shapesByStart_.size(); ++start) {
+      const bool own = start == currentStart_;
+      if ((t == ir::ContextTarget::Intra && !own) || (t == ir::ContextTarget::Inter && own) || (!own && !near(start)))
+        continue;
+      for (uint32_t i : shapesByStart_[start])
+        if (take(world_->shapes[i])) return;
+    }
   };
   if (q == ir::Query::ContextCount) {
     double n = 0;
-    for (const ContextShape& s : world_->shapes)
-      if (s.label == label && inTarget(s)) ++n;
+    visit([&](const ContextShape& s) {
+      if (s.label == label) ++n;
+      return false;
+    });
     return n;
   }
   if (q == ir::Query::ContextMinimumDistance) {
     double best = INFINITY;
-    for (const ContextShape& s : world_->shapes)
-      if (s.label == label && inTarget(s)) best = std::min(best, rt::cga::scopeDistance(scope, s.scope));
+    visit([&](const ContextShape& s) {
+      if (s.label == label) best = std::min(best, rt::cga::scopeDistance(scope, s.scope));
+      return false;
+    });
     return best;
   }
   // The querying shape and its ancestors (this derivation's tree) ...
@@ -157,12 +172,13 @@ double Derivation::context(ir::Query q, uint32_t target, const std::string& labe
                                 : q == ir::Query::ContextOverlaps ? rt::cga::Contact::Overlaps
                                                                   : rt::cga::Contact::Touches;
   const rt::cga::TriangleSoup me = rt::cga::shapeTriangles(scope, geom, arena_);
-  for (const ContextShape& s : world_->shapes) {
-    if (!s.geometry.closed || (!label.empty() && s.label != label) || !inTarget(s)) continue;
-    if (s.start == currentStart_ && (ancestors.count(s.node) || descends(s.node))) continue;
-    if (rt::cga::contact(test, me, s.geometry)) return 1.0;
-  }
-  return 0.0;
+  bool found = false;
+  visit([&](const ContextShape& s) {
+    if (!s.geometry.closed || (!label.empty() && s.label != label)) return false;
+    if (s.start == currentStart_ && (ancestors.count(s.node) || descends(s.node))) return false;
+    return found = rt::cga::contact(test, me, s.geometry);
+  });
+  return found ? 1.0 : 0.0;
 }
 
 }  // namespace fgsg::backend

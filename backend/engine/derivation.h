@@ -333,6 +333,7 @@ class Derivation final : public QueryHost {
   enum class ContextMode { Off, Record, Answer } contextMode_ = ContextMode::Off;
   std::shared_ptr<ContextWorld> recorded_;        // the first derivation's
   std::shared_ptr<const ContextWorld> world_;     // what the second answers from
+  std::vector<std::vector<uint32_t>> shapesByStart_;  // world_->shapes by start shape
   std::unordered_map<uint64_t, uint64_t> parentOf_;  // this derivation's shape tree
   uint64_t currentNode_ = 0;   // the shape (or split part) whose ops run
   uint32_t currentStart_ = 0;  // the start shape being derived
