@@ -2,6 +2,7 @@
 
 #include "cli/options.h"
 #include "backend/scene_starts.h"
+#include "runtime/io/write_instances.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/output/gltf_writer.h"
 #include "runtime/output/obj_scene_writer.h"
@@ -51,14 +52,39 @@ rt::output::Scene buildScene(const SceneFlags& flags, const SceneSource& run, Ou
   return rt::output::buildScene(in);
 }
 
-bool stageAs(const rt::output::Scene& scene, OutputLayout layout, const std::string& path,
+// Calls f on every asset name the scene's glTF file writes.
+template <class F>
+void forEachAssetName(rt::output::Scene& scene, F f) {
+  for (rt::output::SharedMesh& mesh : scene.meshes) f(mesh.asset);
+  for (rt::output::StartNode& start : scene.starts)
+    for (rt::output::GroupNode& g : start.groups)
+      for (auto& counted : g.bakedAssets) f(counted.first);
+}
+
+bool stageAs(rt::output::Scene& scene, OutputLayout layout, const std::string& path,
              rt::io::OutputTransaction& outputs, std::string& error) {
   if (layout == OutputLayout::ObjScene) {
     if (rt::output::stageObjScene(scene, path, outputs, error)) return true;
     error = path + ": " + error;
     return false;
   }
-  return rt::output::stageGltf(scene, path, outputs, error);
+  // The file names an asset found by path (extras.asset, a group's extras.baked) relative
+  // to its folder, as --instances does (io::assetNameFrom), so that the folder moves with
+  // its assets; the scene keeps the absolute path for the runtime (the next file of
+  // --split-output). Stdout: a path without a folder, as it is.
+  std::vector<std::string> found;
+  if (!path.empty()) {
+    std::error_code ec;
+    const std::string folder = std::filesystem::absolute(path, ec).parent_path().string();
+    forEachAssetName(scene, [&](std::string& name) {
+      found.push_back(name);
+      name = rt::io::assetNameFrom(name, folder);
+    });
+  }
+  const bool staged = rt::output::stageGltf(scene, path, outputs, error);
+  size_t k = 0;
+  if (!found.empty()) forEachAssetName(scene, [&](std::string& name) { name = std::move(found[k++]); });
+  return staged;
 }
 
 // A start shape's name as a file name.
@@ -110,7 +136,8 @@ bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::stri
                 rt::io::OutputTransaction& outputs, std::string& error) {
   rt::DeriveOptions unused;
   const OutputLayout layout = checkOutput(flags, path, unused);
-  return stageAs(buildScene(flags, run, layout), layout, path, outputs, error);
+  rt::output::Scene scene = buildScene(flags, run, layout);
+  return stageAs(scene, layout, path, outputs, error);
 }
 
 bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,

@@ -60,4 +60,36 @@ for engine in interp jit; do
   grep -qF '"assets":["../proj/assets/box.obj",' "$tmp/elsewhere/h.json" ||
     { head -2 "$tmp/elsewhere/h.json"; fail "--instances elsewhere/h.json: asset not relative to elsewhere/ ($engine)"; }
 done
+# The glTF scene names them the same way, relative to its own folder (extras.asset of an
+# instanced mesh, a group's extras.baked); built-in names stay (#43/#44).
+printf '@StartRule\nLot --> extrude(3) split(x) { 2 : B }* i("builtin:cube") Cube.\nB --> i("box.obj") Box.\n' >"$tmp/proj/rules/row.cga"
+# The assets the file names: "asset=N" per instanced mesh, "baked:NAME=N" per baked one.
+gltf_assets() {
+  python3 - "$1" <<'PY'
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+doc = json.loads(data[20:20 + struct.unpack_from("<I", data, 12)[0]]) if data[:4] == b"glTF" else json.loads(data)
+names = []
+for node in doc["nodes"]:
+    extras = node.get("extras", {})
+    if "asset" in extras: names.append("asset=%s:%d" % (extras["asset"], extras["instances"]))
+    names += ["baked=%s:%d" % kv for kv in extras.get("baked", {}).items()]
+print(" ".join(sorted(names)))
+PY
+}
+for engine in interp jit; do
+  (cd "$tmp/proj" && "$fgsg" run rules/row.cga --engine $engine -q --instancing on -o out/row.glb) ||
+    fail "row.cga does not run ($engine)"
+  got=$(gltf_assets "$tmp/proj/out/row.glb")
+  [ "$got" = "asset=../assets/box.obj:10 asset=builtin:cube:1" ] || fail "out/row.glb names: $got ($engine)"
+  "$fgsg" run "$tmp/proj/rules/row.cga" --engine $engine -q --instancing on -o "$tmp/elsewhere/row.gltf" ||
+    fail "row.cga does not run with absolute paths ($engine)"
+  got=$(gltf_assets "$tmp/elsewhere/row.gltf")
+  [ "$got" = "asset=../proj/assets/box.obj:10 asset=builtin:cube:1" ] || fail "elsewhere/row.gltf names: $got ($engine)"
+  # Baked (--instancing off, grouped): the group's extras.baked counts the same names.
+  "$fgsg" run "$tmp/proj/rules/row.cga" --engine $engine -q --instancing off -o "$tmp/elsewhere/baked.glb" ||
+    fail "row.cga does not run baked ($engine)"
+  got=$(gltf_assets "$tmp/elsewhere/baked.glb")
+  [ "$got" = "baked=../proj/assets/box.obj:10 baked=builtin:cube:1" ] || fail "elsewhere/baked.glb names: $got ($engine)"
+done
 echo "cga dialect: ok"
