@@ -49,17 +49,17 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
       break;
     case ir::OpKind::Center: center(st, op); break;
     case ir::OpKind::Color:
-      if (op.args.size() == 1 && op.args[0].type == ir::Type::Str) {  // color(attr): "#rrggbb" or "#rgb"
+      if (op.args.size() == 1 && op.args[0].type == ir::Type::Str) {  // color(s): "#rrggbb" or "#rgb"
         const double id = a[0];
-        if (!(id >= 0 && id < double(strings_.size())))
+        if (!strings_.holds(id))
           throw DeriveError{op.loc, "R027",
                             "Color: the colour string is not one this grammar holds (a value given by --set or a "
                             "lot property that the grammar does not write): write it as \"#rrggbb\" in the grammar"};
-        std::string text = strings_[size_t(id)];
+        std::string text = strings_.text(id);
         if (text.size() == 4 && text[0] == '#') text = std::string("#") + text[1] + text[1] + text[2] + text[2] + text[3] + text[3];
         std::array<double, 3> rgb{};
         if (!frontend::parseHexColor(text, rgb))
-          throw DeriveError{op.loc, "R027", "Color: \"" + strings_[size_t(id)] +
+          throw DeriveError{op.loc, "R027", "Color: \"" + strings_.text(id) +
                                                 "\" is no colour (a colour string is \"#rrggbb\", six hex digits)"};
         for (int k = 0; k < 3; ++k) st.scope.color[size_t(k)] = float(rgb[size_t(k)]);
         st.scope.colored = true;

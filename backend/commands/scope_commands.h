@@ -8,6 +8,7 @@
 #include "backend/commands/command_family.h"
 #include "backend/commands/surface_world.h"
 #include "backend/engine/sequential_string.h"
+#include "backend/interp/joined_strings.h"
 
 #include <memory>
 #include <string>
@@ -23,9 +24,10 @@ class ScopeCommands final : public CommandFamily {
   // `surface`: the derivation's surface (null on the plane; set once the engine has
   // built it); `stack`: the derivation's shared [ ] stack; `deadline`: its
   // --max-seconds, which traces on the surface ask.
-  // `strings`: the module's strings (a colour given as a string id).
+  // `strings`: the module's strings and those a string `+` joined (a colour given as a
+  // string id: color("#" + hex)).
   ScopeCommands(const std::shared_ptr<const SurfaceWorld>& surface, std::vector<Saved>& stack,
-                rt::Deadline& deadline, const std::vector<std::string>& strings)
+                rt::Deadline& deadline, const JoinedStrings& strings)
       : surface_(surface), stack_(stack), deadline_(deadline), strings_(strings) {}
 
   std::vector<ir::OpKind> kinds() const override;
@@ -64,7 +66,7 @@ class ScopeCommands final : public CommandFamily {
   const std::shared_ptr<const SurfaceWorld>& surface_;
   std::vector<Saved>& stack_;
   rt::Deadline& deadline_;
-  const std::vector<std::string>& strings_;
+  const JoinedStrings& strings_;
   rt::TrigMemo trig_;
   SequentialString* string_ = nullptr;
 };

@@ -40,7 +40,7 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
                        std::vector<double> attrs, const FgsgProgram* program, bool direct)
     : m_(m), opt_(o), assets_(assets), eval_(m, std::move(attrs)), paramStride_(maxSlotCount(m)),
       ruleUses_(m.rules.size(), 0), maxSlots_(maxRuleSlots(m)), program_(program), direct_(direct),
-      scope_(surface_, stack_, deadline_, m.strings), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this),
+      scope_(surface_, stack_, deadline_, eval_.joinedStrings()), turtle_(*this, scope_), cga_(*this), collide_(*this), synthesis_(*this), marching_(*this), evolve_(*this), cells_(*this),
       reports_(*this) {
   if (program_) layout_ = ir::layoutProgram(m_);
   maxDepth_ = opt_.maxDepth;

@@ -27,6 +27,8 @@ class JoinedStrings {
   double join(double a, ir::Type ta, double b, ir::Type tb);
   // The text of a string id: the module's, or a joined one; empty for an unknown id.
   const std::string& text(double id) const;
+  // Whether `id` names a string (the module's or a joined one).
+  bool holds(double id) const { return id >= 0 && id < double(module_.size() + joined_.size()); }
   // The joined strings, in id order from the module's count on (for the outputs' tables).
   const std::vector<std::string>& joined() const { return joined_; }
 
