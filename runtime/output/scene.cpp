@@ -85,13 +85,13 @@ void geometryKey(const Mesh& m, GeometryKey& key) {
   key.hash = h;
 }
 
-// Whether `m`, keyed as `key`, has the content of `other` (keyed into `scratch` here).
-bool sameGeometry(const Mesh& m, const GeometryKey& key, const Mesh& other, GeometryKey& scratch) {
+// Whether `m`, keyed as `key`, has the content of `other`, whose key's values are
+// `otherValues` (kept from when it was keyed: one quantization per geometry).
+bool sameGeometry(const Mesh& m, const GeometryKey& key, const Mesh& other, const int64_t* otherValues) {
   if (m.positions.size() != other.positions.size() || m.normals.size() != other.normals.size() ||
       m.texcoords.size() != other.texcoords.size() || m.indices != other.indices)
     return false;
-  geometryKey(other, scratch);
-  return scratch.values == key.values;
+  return std::equal(key.values.begin(), key.values.end(), otherValues);
 }
 
 // The axis along which every vertex of `m` is at 0 (a face's own geometry), or -1.
@@ -215,7 +215,11 @@ struct Builder {
     // the next of the same hash (kNone ends the chain).
     std::unordered_map<uint64_t, uint32_t> ofGeometry;
     std::vector<uint32_t> nextOfHash;  // per shared mesh
-    GeometryKey key, scratch;
+    // The shared own geometries' key values, one after another (valuesAt: per shared mesh,
+    // where its values start; the count follows from its arrays' sizes, compared first).
+    std::vector<int64_t> keyValues;
+    std::vector<size_t> valuesAt;
+    GeometryKey key;
     TrsDecomposer decompose;
     for (size_t i = 0; i < n; ++i) {
       const Instance& inst = list.instances[i];
@@ -242,12 +246,15 @@ struct Builder {
         geometryKey(*m, key);
         const auto [it, added] = ofGeometry.emplace(key.hash, kNone);
         uint32_t link = it->second, *last = &it->second;
-        while (link != kNone && !sameGeometry(*m, key, *scene.meshes[link].mesh, scratch))
+        while (link != kNone && !sameGeometry(*m, key, *scene.meshes[link].mesh, keyValues.data() + valuesAt[link]))
           last = &nextOfHash[link], link = *last;
         if (link == kNone) {
           link = *last = uint32_t(scene.meshes.size());
           scene.meshes.push_back({m, list.symbols[inst.symbol] + " piece", list.assets[inst.asset], key.shift, 0});
           nextOfHash.resize(scene.meshes.size(), kNone);
+          valuesAt.resize(scene.meshes.size(), 0);
+          valuesAt[link] = keyValues.size();
+          keyValues.insert(keyValues.end(), key.values.begin(), key.values.end());
         }
         shared = link;
       }
