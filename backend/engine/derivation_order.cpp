@@ -266,7 +266,7 @@ void Derivation::applyEvaluated(const ir::Op& op, State& st, Exec& ex, Frame& f,
 void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   if (op.kind == ir::OpKind::Emit) return emit(op, a, st, ex);
   if (op.kind == ir::OpKind::Unsupported) unsupported(op);
-  if (op.kind == ir::OpKind::Label) return label(m_.strings.at(static_cast<size_t>(a[0])), st);
+  if (op.kind == ir::OpKind::Label) return label(eval_.string(a[0]), st);  // label("L" + n) too
   familyOf_[static_cast<size_t>(op.kind)]->apply(op, a, n, st, ex, f);
 }
 

@@ -89,6 +89,19 @@ def test_instance_parameters_keep_their_types():
         r.instance_params(5)
 
 
+def test_joined_strings_read_as_instance_parameters_reports_and_scene_extras():
+    # "k" + 7 is "k7", "floor" + 3 "floor3": whole numbers print without a point (#43/#44).
+    g = fgsg.Grammar.from_text('A ~> Report("floor" + 3, 2) B("k" + 7, "red");\n'
+                               'B(s, t) ~> Report("kind", s) I("cube");\n', "joined.fgsg")
+    for engine in ("interp", "jit"):
+        r = g.generate(engine=engine)
+        assert r.instance_params(0) == ["k7", "red"]
+        reports = r.reports["all"]
+        assert reports["floor3"]["sum"] == 2 and reports["kind"]["values"] == ["k7"]
+        start = r.scene()[0]
+        assert start.extras["reports"]["kind"]["strings"] == {"k7": 1}
+
+
 def test_a_grammar_error_carries_its_location():
     with pytest.raises(fgsg.GrammarError) as e:
         fgsg.Grammar.from_text("A ~> B;\nB ~> S(1, 1;\n", "broken.fgsg")

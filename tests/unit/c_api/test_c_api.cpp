@@ -559,6 +559,32 @@ TEST_CASE("Report and Print read through fgsg_reports_json, fgsg_report and fgsg
   CHECK(std::string(fgsg_prints(nullptr)).empty());
 }
 
+TEST_CASE("strings a + joined as the library ran read in the reports and the scene's extras", "[c_api][compiled]") {
+  // "floor" + 3 is "floor3" (a whole number without a point); B's parameter "k" + 7 is
+  // "k7", reported as a value (#43/#44).
+  const fs::path grammar = scratchDir() / "joined.fgsg";
+  std::ofstream(grammar) << "Axiom ~> S(1, 1, 1) Report(\"floor\" + 3, 2) B(\"k\" + 7);\n"
+                            "B(s) ~> Report(\"kind\", s) I(\"cube\");\n";
+  Generator g(compileAndLoad(grammar));
+  REQUIRE(fgsg_generate(g) == 0);
+  REQUIRE(fgsg_report_count(g) == 2);
+  const char *key = nullptr, *text = nullptr;
+  int kind = -1;
+  REQUIRE(fgsg_report(g, 0, nullptr, &key, &kind, nullptr, nullptr) == 0);
+  CHECK(std::string(key) == "floor3");
+  CHECK(kind == 0);
+  REQUIRE(fgsg_report(g, 1, nullptr, &key, &kind, nullptr, &text) == 0);
+  CHECK(std::string(key) == "kind");
+  CHECK(kind == 2);
+  CHECK(std::string(text) == "k7");
+  CHECK(std::string(fgsg_reports_json(g)).find("\"kind\":{\"values\":[\"k7\"]") != std::string::npos);
+  // The start's node: its reports by key, the string value counted.
+  REQUIRE(fgsg_scene_node_count(g) >= 1);
+  const std::string extras = fgsg_scene_node_extras_json(g, 0);
+  CHECK(extras.find("\"floor3\":{\"average\":2,") != std::string::npos);
+  CHECK(extras.find("\"strings\":{\"k7\":1}") != std::string::npos);
+}
+
 TEST_CASE("the scene's nodes read through fgsg_scene_node_*, with each lot's attrs and reports", "[c_api][compiled]") {
   // Lot A 20 x 10 m, 12 m high; lot B 12 x 8 m without an id, 5 m high (#45).
   const fs::path lots = scratchDir() / "scene_lots.geojson";
