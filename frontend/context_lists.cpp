@@ -1,5 +1,7 @@
 #include "frontend/context_lists.h"
 
+#include "frontend/lex.h"
+
 #include "FgsgLexer.h"
 
 namespace fgsg::frontend {
@@ -8,8 +10,6 @@ using antlr4::Token;
 using fgsg_grammar::FgsgLexer;
 
 namespace {
-
-bool writtenTogether(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
 
 bool endsLine(const std::vector<std::unique_ptr<Token>>& tokens, size_t i) {
   return i + 1 >= tokens.size() || tokens[i + 1]->getType() == Token::EOF ||

@@ -34,6 +34,11 @@ struct LexedSource {
   RuleSection sectionAt(size_t line) const;
 };
 
+// Whether token `b` starts right where `a` ends, nothing between them (`#consider`, `?P(`).
+inline bool writtenTogether(const antlr4::Token* a, const antlr4::Token* b) {
+  return a->getStopIndex() + 1 == b->getStartIndex();
+}
+
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags);  // the grammar's own text
 LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags,
                     const std::vector<std::string>& importAliases = {});

@@ -11,8 +11,6 @@ using fgsg_grammar::FgsgLexer;
 
 namespace {
 
-bool writtenTogether(const Token* a, const Token* b) { return a->getStopIndex() + 1 == b->getStartIndex(); }
-
 // The index after the ')' closing the '(' at `open` (or the EOF's index).
 size_t afterClosing(const std::vector<std::unique_ptr<Token>>& tokens, size_t open) {
   int depth = 0;
