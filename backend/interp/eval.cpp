@@ -53,7 +53,12 @@ double Evaluator::numSlow(const ir::Expr& e, const Frame& f) const {
     case ExprOp::VecElem: return vec(e.args[0], f)[e.index];
     case ExprOp::Join: {
       const double x = num(e.args[0], f), y = num(e.args[1], f);
-      return joined_.join(x, e.args[0].type, y, e.args[1].type);
+      try {
+        return joined_.join(x, e.args[0].type, y, e.args[1].type);
+      } catch (DeriveError& error) {
+        if (error.loc.line == 0) error.loc = e.loc;  // the join's own place in the grammar
+        throw;
+      }
     }
     case ExprOp::MakeVec: break;
   }

@@ -1,5 +1,7 @@
 #include "backend/interp/joined_strings.h"
 
+#include "backend/interp/eval.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -32,7 +34,13 @@ std::string JoinedStrings::valueText(double v, ir::Type t) const {
 }
 
 double JoinedStrings::join(double a, ir::Type ta, double b, ir::Type tb) {
-  std::string s = valueText(a, ta) + valueText(b, tb);
+  const std::string& left = valueText(a, ta);
+  const std::string& right = valueText(b, tb);
+  if (left.size() + right.size() > kMaxJoinedText)
+    throw DeriveError{{}, "R020",
+                      "a string joined with + would be " + std::to_string(left.size() + right.size()) +
+                          " bytes, past the limit of 1 MiB: a rule that keeps joining a string ran away"};
+  std::string s = left + right;
   for (; indexedModule_ < module_.size(); ++indexedModule_)
     ids_.emplace(module_[indexedModule_], static_cast<uint32_t>(indexedModule_));
   const auto [it, fresh] = ids_.emplace(std::move(s), static_cast<uint32_t>(module_.size() + joined_.size()));

@@ -19,11 +19,16 @@ namespace fgsg::backend {
 // -0 is "0", infinities "inf" and "-inf", NaN "nan".
 std::string cityEngineNumberText(double v);
 
+// The longest text a string `+` may make: a rule that keeps joining a string to itself
+// doubles it each step and would otherwise take all memory before any limit is asked.
+constexpr size_t kMaxJoinedText = size_t(1) << 20;
+
 class JoinedStrings {
  public:
   explicit JoinedStrings(const std::vector<std::string>& moduleStrings) : module_(moduleStrings) {}
 
   // a + b, each read as its type says (Num, Bool, or Str: a string id); the id of the result.
+  // Throws DeriveError R020 (no location: the caller knows it) past kMaxJoinedText.
   double join(double a, ir::Type ta, double b, ir::Type tb);
   // The text of a string id: the module's, or a joined one; empty for an unknown id.
   const std::string& text(double id) const;
