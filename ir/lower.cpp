@@ -48,7 +48,11 @@ class Lowerer {
       m_.symbols.push_back(sym);
     }
     for (const auto& a : sema_.attrs) {
-      m_.attrs.push_back({a.name, toType(a.value.type), constant(a.value), {}});
+      Attr attr;
+      attr.name = a.name;
+      attr.type = toType(a.value.type);
+      attr.value = constant(a.value);
+      m_.attrs.push_back(std::move(attr));
       if (a.importerValue) {  // reads only the attrs before it
         Expr v = expr(*a.importerValue);
         m_.attrs.back().fromImporter = true;
@@ -405,6 +409,26 @@ class Lowerer {
         op.str = m_.internString(constString(*item.args[0]));
         allArgs(1);
         break;
+      case CommandId::Material: {
+        op.kind = OpKind::Material;
+        op.index = static_cast<uint32_t>(frontend::materialProperty(constString(*item.args[0])));
+        if (op.index >= static_cast<uint32_t>(MaterialProperty::NormalMap))
+          op.str = m_.internString(constString(*item.args[1]));
+        else
+          allArgs(1);
+        break;
+      }
+      case CommandId::UvOperation: {
+        op.kind = OpKind::Uv;
+        op.index = static_cast<uint32_t>(frontend::uvOperation(item.name));
+        const auto uv = static_cast<UvOp>(op.index);
+        if (uv == UvOp::Setup || uv == UvOp::Normalize) op.str = m_.internString(constString(*item.args[0]));
+        if (uv == UvOp::Setup || uv == UvOp::Tile)
+          for (size_t k = uv == UvOp::Setup ? 1 : 0; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
+        else if (uv != UvOp::Normalize)
+          allArgs(0);
+        break;
+      }
       case CommandId::Center:
         op.kind = OpKind::Center;
         for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));
