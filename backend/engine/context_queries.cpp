@@ -9,9 +9,9 @@
 // Tree nodes are the derivation's random keys (a shape's, a split part's), the same in
 // both derivations as long as they take the same path.
 #include "backend/engine/derivation.h"
+#include "ir/queries_asked.h"
 
 #include <cmath>
-#include <functional>
 #include <unordered_set>
 
 namespace fgsg::backend {
@@ -21,35 +21,9 @@ namespace {
 // querying one's bounds (context queries look at every start shape).
 constexpr double kOcclusionNeighbourhood = 1.0;
 
-bool exprUsesContext(const ir::Expr& e) {
-  if (e.op == ir::ExprOp::Query && ir::isContextQuery(static_cast<ir::Query>(e.index))) return true;
-  for (const auto& a : e.args)
-    if (exprUsesContext(a)) return true;
-  return false;
-}
-
-bool blockUsesContext(const ir::Block& b) {
-  for (const auto& op : b) {
-    for (const auto& a : op.args)
-      if (exprUsesContext(a)) return true;
-    for (const auto& sz : op.sizes)
-      if (exprUsesContext(sz.value)) return true;
-    for (const auto& body : op.bodies)
-      if (blockUsesContext(body)) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
-bool usesContextQueries(const ir::Module& m) {
-  for (const auto& r : m.rules) {
-    if (r.hasGuard && exprUsesContext(r.guard)) return true;
-    for (const auto& alt : r.alternatives)
-      if (exprUsesContext(alt.probability) || blockUsesContext(alt.ops)) return true;
-  }
-  return blockUsesContext(m.axiom);
-}
+bool usesContextQueries(const ir::Module& m) { return ir::anyQuery(m, ir::isContextQuery); }
 
 void Derivation::recordContext() {
   contextMode_ = ContextMode::Record;

@@ -1,35 +1,14 @@
 // What the grammar uses, found once before deriving: queries, collisions, symbols that are
 // derived where they are written (FGSG §4.4), and whether direct code may place instances.
 #include "backend/engine/derivation.h"
+#include "ir/queries_asked.h"
 
 #include <functional>
 
 namespace fgsg::backend {
 
 bool Derivation::moduleUsesQuery(ir::Query q) const {
-  std::function<bool(const ir::Expr&)> inExpr = [&](const ir::Expr& e) {
-    if (e.op == ir::ExprOp::Query && e.index == static_cast<uint32_t>(q)) return true;
-    for (const auto& a : e.args)
-      if (inExpr(a)) return true;
-    return false;
-  };
-  std::function<bool(const ir::Block&)> inBlock = [&](const ir::Block& b) {
-    for (const auto& op : b) {
-      for (const auto& a : op.args)
-        if (inExpr(a)) return true;
-      for (const auto& sz : op.sizes)
-        if (inExpr(sz.value)) return true;
-      for (const auto& body : op.bodies)
-        if (inBlock(body)) return true;
-    }
-    return false;
-  };
-  for (const auto& r : m_.rules) {
-    if (r.hasGuard && inExpr(r.guard)) return true;
-    for (const auto& alt : r.alternatives)
-      if (inExpr(alt.probability) || inBlock(alt.ops)) return true;
-  }
-  return inBlock(m_.axiom);
+  return ir::anyQuery(m_, [q](ir::Query asked) { return asked == q; });
 }
 
 // FGSG §4.4: "we derive simple rules that only place one shape in a depth-first manner
