@@ -102,9 +102,9 @@ const CommandInfo kCommands[] = {
     {CommandId::ShapeOperation, "PrimitiveQuad", 0, 2, BodyRule::None, "PrimitiveQuad() or PrimitiveQuad(width, length)", nullptr},
     {CommandId::ShapeOperation, "PrimitiveCube", 0, 3, BodyRule::None, "PrimitiveCube() or PrimitiveCube(width, height, depth)", nullptr},
     {CommandId::ShapeOperation, "PrimitiveCylinder", 0, 3, BodyRule::None,
-     "PrimitiveCylinder(sides) or PrimitiveCylinder(sides, radius, height)", nullptr},
+     "PrimitiveCylinder(), PrimitiveCylinder(sides) or PrimitiveCylinder(sides, radius, height)", nullptr},
     {CommandId::ShapeOperation, "PrimitiveSphere", 0, 3, BodyRule::None,
-     "PrimitiveSphere(latitudes, longitudes) or PrimitiveSphere(latitudes, longitudes, radius)", nullptr},
+     "PrimitiveSphere(), PrimitiveSphere(sides, divisions) or PrimitiveSphere(sides, divisions, radius)", nullptr},
     {CommandId::ShapeOperation, "PrimitiveDisk", 0, 2, BodyRule::None, "PrimitiveDisk(sides) or PrimitiveDisk(sides, radius)", nullptr},
 };
 

@@ -171,6 +171,10 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Offset: numArgs(0, false); break;
     case CommandId::ShapeOperation:
+      if (std::string forms; !shapeOperationArity(item.name, item.args.size(), forms))
+        diags_.error("E016", item.range,
+                     "'" + item.name + "' takes " + forms + ", got " + std::to_string(item.args.size()) + ": " +
+                         cmd.signature);
       // A word where the operation takes one ("largest", "y"), else a number.
       for (size_t k = 0; k < item.args.size(); ++k) {
         ConstValue v;

@@ -59,4 +59,24 @@ bool shapeOperationLabel(const std::string& command, const std::string& label, s
   return false;
 }
 
+bool shapeOperationArity(const std::string& command, size_t count, std::string& forms) {
+  // CityEngine's forms: primitiveQuad(width, length), primitiveCube(width, height, depth),
+  // primitiveCylinder(sides, radius, height), primitiveSphere(sides, divisions, radius),
+  // primitiveDisk(nVertices, radius), each also without arguments.
+  static const struct {
+    const char* command;
+    unsigned counts;  // bit n: n arguments
+    const char* forms;
+  } kForms[] = {{"PrimitiveQuad", 0b101, "0 or 2 arguments"},
+                {"PrimitiveCube", 0b1001, "0 or 3 arguments"},
+                {"PrimitiveCylinder", 0b1011, "0, 1 or 3 arguments"},
+                {"PrimitiveSphere", 0b1101, "0, 2 or 3 arguments"}};
+  for (const auto& f : kForms)
+    if (command == f.command) {
+      forms = f.forms;
+      return count < 8 && ((f.counts >> count) & 1u);
+    }
+  return true;
+}
+
 }  // namespace fgsg::frontend

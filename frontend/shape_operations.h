@@ -20,4 +20,8 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
 // Setback's edge selectors may end in '=' (CGA's `all = A`: the selected edges' setbacks merged).
 bool shapeOperationLabel(const std::string& command, const std::string& label, std::string& allowed);
 
+// Whether `command` has a form with `count` arguments (the primitives skip some counts
+// between their least and most: PrimitiveCylinder takes 0, 1 or 3); false: `forms` says which.
+bool shapeOperationArity(const std::string& command, size_t count, std::string& forms);
+
 }  // namespace fgsg::frontend

@@ -74,6 +74,10 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
                                          " arguments, got " + std::to_string(argCtx.size()));
     return true;
   }
+  if (std::string forms; !shapeOperationArity(fgsgName, argCtx.size(), forms)) {
+    error("E016", rangeOf(op->name), "'" + name + "' takes " + forms + ", got " + std::to_string(argCtx.size()));
+    return true;
+  }
   Item made = command(fgsgName, at);
   for (size_t k = 0; k < argCtx.size(); ++k) {
     // A selector word (`y`, `largest`, `scope`, `vertices`) is the command's string argument.

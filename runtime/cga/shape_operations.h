@@ -126,8 +126,10 @@ bool taper(const Scope& scope, const GeomRef& geom, double height, GeometryArena
 bool innerRectangle(const FlatPolygon& polygon, bool alongEdge, GeometryArena& arena, Part& out, std::string& error);
 
 // The primitives: the geometry replaced, in the scope (CityEngine's primitive* operations).
-// sizes < 0: fit the scope (a zero size replaced by the mean of the others, as i() does);
-// else centred on the scope's xz, standing on y = 0.
+// Without sizes: fit the scope (a zero size replaced by the mean of the others, as i()
+// does); with sizes: centred on the scope's xz, standing on y = 0. The quad and the disk
+// lie in the plane of the two other sizes when exactly one is zero, else in the xz plane.
+// args as CityEngine's: Sphere(sides around, divisions pole to pole, radius), 16 and 16.
 bool primitive(const Scope& scope, const std::string& kind, const std::vector<double>& args, GeometryArena& arena,
                Part& out, std::string& error);
 

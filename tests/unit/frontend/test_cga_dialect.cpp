@@ -185,6 +185,25 @@ TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dial
   CHECK(syntax.messages.find("E002") != std::string::npos);
 }
 
+TEST_CASE("the primitives take CityEngine's argument forms in both dialects", "[cga][dialect]") {
+  // op_primitive*: (), (sides) and (sides, radius, height) for the cylinder; (), (sides,
+  // divisions) and (sides, divisions, radius) for the sphere; (width, length) for the quad.
+  CHECK(compile("@StartRule\nLot --> primitiveCylinder() A.\n").ok);
+  CHECK(compile("@StartRule\nLot --> primitiveCylinder(8) A.\n").ok);
+  CHECK(compile("@StartRule\nLot --> primitiveSphere(8, 4, 2) A.\n").ok);
+  const Compiled cylinder = compile("@StartRule\nLot --> primitiveCylinder(8, 2) A.\n");
+  CHECK_FALSE(cylinder.ok);
+  CHECK(cylinder.messages.find("test.cga:2:9: error[E016]: 'primitiveCylinder' takes 0, 1 or 3 arguments, got 2") !=
+        std::string::npos);
+  const Compiled sphere = compile("@StartRule\nLot --> primitiveSphere(8) A.\n");
+  CHECK(sphere.messages.find("error[E016]: 'primitiveSphere' takes 0, 2 or 3 arguments, got 1") != std::string::npos);
+  const Compiled quad = compile("Lot ~> S(4, 0, 4) PrimitiveQuad(2) A;", "test.fgsg");
+  CHECK_FALSE(quad.ok);
+  CHECK(quad.messages.find("test.fgsg:1:19: error[E016]: 'PrimitiveQuad' takes 0 or 2 arguments, got 1") !=
+        std::string::npos);
+  CHECK(compile("Lot ~> S(4, 0, 4) PrimitiveDisk(8) A;", "test.fgsg").ok);
+}
+
 TEST_CASE("CityEngine operations in the fgsg dialect are errors, and CGA files get a hint", "[cga][dialect]") {
   const Compiled color = compile("Lot ~> S(1, 1, 1) color(\"#f00\") I(\"cube\");", "test.fgsg");
   CHECK_FALSE(color.ok);

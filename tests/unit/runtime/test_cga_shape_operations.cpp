@@ -1,5 +1,6 @@
 // CityEngine's scope operations and footprint shaping (issue #44; runtime/cga/
 // shape_operations.h), checked against areas, sizes and positions computed by hand.
+#include "runtime/cga/geometry_queries.h"
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/shape_operations.h"
 
@@ -318,6 +319,47 @@ TEST_CASE("primitives fill the scope or stand centred on it with the given sizes
   REQUIRE(primitive(flatScope, "PrimitiveCube", {}, arena, out, error));
   CHECK(near(out.scope.S, Vec3(4, 3, 2)));  // the zero size: the mean of 4 and 2
   CHECK_FALSE(primitive(s, "PrimitiveCylinder", {2}, arena, out, error));
+  CHECK_FALSE(primitive(s, "PrimitiveCylinder", {8, 1}, arena, out, error));  // no (sides, radius) form
+  CHECK_FALSE(primitive(s, "PrimitiveSphere", {8}, arena, out, error));
+}
+
+TEST_CASE("primitives take CityEngine's defaults, sphere parameters and planes") {
+  GeometryArena arena;
+  Part out;
+  std::string error;
+  Scope s;
+  s.S = Vec3(4, 3, 4);
+  // primitiveSphere(): 16 sides around, 16 divisions pole to pole: 16 * 16 faces,
+  // 15 latitude rings of 16 corners and the two poles.
+  REQUIRE(primitive(s, "PrimitiveSphere", {}, arena, out, error));
+  GeometryFacts facts = geometryFacts(out.scope, out.geom, arena);
+  CHECK(facts.faces == 256);
+  CHECK(facts.vertices == 15 * 16 + 2);
+  // (8 sides, 4 divisions): 32 faces, 3 rings of 8 and the poles (read the other way round: 30).
+  REQUIRE(primitive(s, "PrimitiveSphere", {8, 4}, arena, out, error));
+  facts = geometryFacts(out.scope, out.geom, arena);
+  CHECK(facts.faces == 32);
+  CHECK(facts.vertices == 26);
+  // A scope with no x size (a lot turned by rotateScope(0, 0, 90)): the quad lies in its yz
+  // plane, facing +x; 2 along y and 3 along z, centred in the 4 x 6: y 1..3, z 1.5..4.5.
+  Scope upright;
+  upright.S = Vec3(0, 4, 6);
+  REQUIRE(primitive(upright, "PrimitiveQuad", {2, 3}, arena, out, error));
+  const Polygon3 quad = worldPolygon(out, arena);
+  CHECK(0.5 * newellNormal(quad).norm() == Approx(6).margin(kTol));
+  CHECK(newellNormal(quad).normalized().x() == Approx(1).margin(kTol));
+  for (const Vec3& p : quad) {
+    CHECK(p.x() == Approx(0).margin(kTol));
+    CHECK((p.y() > 1 - kTol && p.y() < 3 + kTol && p.z() > 1.5 - kTol && p.z() < 4.5 + kTol));
+  }
+  // No z size: the disk fills the xy plane, facing +z: a square of 4 corners inscribed in
+  // the 4 x 4 has half its area, 8.
+  Scope wall;
+  wall.S = Vec3(4, 4, 0);
+  REQUIRE(primitive(wall, "PrimitiveDisk", {4}, arena, out, error));
+  const Polygon3 disk = worldPolygon(out, arena);
+  CHECK(0.5 * newellNormal(disk).norm() == Approx(8).margin(kTol));
+  CHECK(newellNormal(disk).normalized().z() == Approx(1).margin(kTol));
 }
 
 TEST_CASE("reverseNormals, deleteHoles and cleanupGeometry") {
