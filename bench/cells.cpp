@@ -8,6 +8,7 @@
 // Usage: bench_cells [--quick]
 #include "runtime/cells/base_mesh_file.h"
 #include "runtime/cells/generators.h"
+#include "tests/unit/cells/brick_building_tree.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,25 +20,13 @@ using namespace fgsg::rt::cells;
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const LabelledMesh lm = readBaseMeshObj(FGSG_SOURCE_DIR "/examples/assets/brick_building.obj");
-  const BrickSize brick{0.215, 0.075, 0.1025};
-  auto has = [](const std::vector<std::string>& l, const char* s) { return std::find(l.begin(), l.end(), s) != l.end(); };
   double best = 1e300, featureSeconds = 0;
   size_t cells = 0;
   for (int rep = 0; rep < (quick ? 2 : 10); ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
     CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm));
     const auto t1 = std::chrono::steady_clock::now();
-    const FeatureMesh& fm = tex.features();
-    for (FeatureRef f : tex.order()) {
-      if (f.kind == FeatureKind::Face) {
-        if (has(fm.faces[f.index].labels, "wall")) layBricks(tex, f, brick);
-        continue;
-      }
-      const auto& labels = f.kind == FeatureKind::Edge ? fm.edges[f.index].labels : fm.corners[f.index].labels;
-      if (!has(labels, "wall")) continue;
-      if (f.kind == FeatureKind::Edge && fm.edges[f.index].shape == EdgeShape::Arc) layArchBricks(tex, f, brick);
-      else layBricks(tex, f, brick);
-    }
+    fgsg::test::layBrickBuilding(tex);
     const auto t2 = std::chrono::steady_clock::now();
     cells = tex.cells().size();
     best = std::min(best, std::chrono::duration<double>(t2 - t1).count());

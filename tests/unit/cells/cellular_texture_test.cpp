@@ -8,6 +8,7 @@
 #include "runtime/cells/cellular_texture.h"
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
+#include "tests/unit/cells/brick_building_tree.h"
 #include "tests/unit/cells/rectilinear_mesh.h"
 
 #include <catch2/catch.hpp>
@@ -264,18 +265,7 @@ TEST_CASE("the brick building: voussoirs radial to the arch within 1°, header r
   const LabelledMesh lm = readBaseMeshObj(FGSG_SOURCE_DIR "/examples/assets/brick_building.obj");
   CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm));
   const FeatureMesh& fm = tex.features();
-  auto has = [](const std::vector<std::string>& l, const char* s) { return std::find(l.begin(), l.end(), s) != l.end(); };
-  // examples/brick_building.fgsg's tree, in C++.
-  for (FeatureRef f : tex.order()) {
-    if (f.kind == FeatureKind::Face) {
-      if (has(fm.faces[f.index].labels, "wall")) layBricks(tex, f, kBrick);
-      continue;
-    }
-    const auto& labels = f.kind == FeatureKind::Edge ? fm.edges[f.index].labels : fm.corners[f.index].labels;
-    if (!has(labels, "wall")) continue;
-    if (f.kind == FeatureKind::Edge && fm.edges[f.index].shape == EdgeShape::Arc) layArchBricks(tex, f, kBrick);
-    else layBricks(tex, f, kBrick);
-  }
+  fgsg::test::layBrickBuilding(tex, kBrick);
   int voussoirs = 0;
   for (const Cell& c : tex.cells()) {
     if (c.feature.kind != FeatureKind::Edge || fm.edges[c.feature.index].shape != EdgeShape::Arc) continue;

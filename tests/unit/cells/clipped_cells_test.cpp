@@ -10,6 +10,7 @@
 #include "runtime/cells/convex_polygon.h"
 #include "runtime/cells/feature_param.h"
 #include "runtime/cells/generators.h"
+#include "tests/unit/cells/brick_building_tree.h"
 
 #include <catch2/catch.hpp>
 
@@ -144,21 +145,11 @@ TEST_CASE("the brick building's arched door: clipped cells fill the spandrels", 
   const LabelledMesh lm = readBaseMeshObj(FGSG_SOURCE_DIR "/examples/assets/brick_building.obj");
   CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm));
   const FeatureMesh& fm = tex.features();
-  auto has = [](const std::vector<std::string>& l, const char* s) { return std::find(l.begin(), l.end(), s) != l.end(); };
-  const BrickSize brick{0.215, 0.075, 0.1025};
-  for (FeatureRef f : tex.order()) {
-    if (f.kind == FeatureKind::Face) {
-      if (has(fm.faces[f.index].labels, "wall")) layBricks(tex, f, brick);
-      continue;
-    }
-    const auto& labels = f.kind == FeatureKind::Edge ? fm.edges[f.index].labels : fm.corners[f.index].labels;
-    if (!has(labels, "wall")) continue;
-    if (f.kind == FeatureKind::Edge && fm.edges[f.index].shape == EdgeShape::Arc) layArchBricks(tex, f, brick);
-    else layBricks(tex, f, brick);
-  }
+  fgsg::test::layBrickBuilding(tex);
   int front = -1;
   for (size_t i = 0; i < fm.faces.size(); ++i)
-    if (has(fm.faces[i].labels, "wall") && fm.faces[i].normal.dot(Vec3(0, -1, 0)) > 0.99) front = int(i);
+    if (fgsg::test::hasLabel(fm.faces[i].labels, "wall") && fm.faces[i].normal.dot(Vec3(0, -1, 0)) > 0.99)
+      front = int(i);
   REQUIRE(front >= 0);
   const FeatureFace& face = fm.faces[size_t(front)];
   const Vec2 a = projectOnFace(face, Vec3(2.1, 0, 2.025)), b = projectOnFace(face, Vec3(3.9, 0, 2.925));
