@@ -43,7 +43,10 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
     return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
   if (command == "CleanupGeometry" && k == 0)
-    return pick({{"vertices", 1}, {"edges", 2}, {"faces", 4}, {"all", 7}}, word, value, allowed);
+    // op_cleanupGeometry's components as runtime/cga/shape_operations.h's steps: each merges
+    // corners (1); vertices also drops straight corners (2), faces degenerate and doubled
+    // faces (4), edges the edges between coplanar faces (8).
+    return pick({{"vertices", 3}, {"edges", 9}, {"faces", 5}, {"all", 15}}, word, value, allowed);
   return false;
 }
 

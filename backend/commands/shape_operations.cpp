@@ -156,7 +156,7 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   } else if (name == "ResetGeometry") {
     part = rt::cga::Part{st.scope, rt::GeomRef{}, false, 0};
   } else if (name == "CleanupGeometry") {
-    ok = rt::cga::cleanupGeometry(st.scope, st.geom, d.arena(), n > 0 ? static_cast<int>(a[0]) : 7, n > 1 ? a[1] : 0.0,
+    ok = rt::cga::cleanupGeometry(st.scope, st.geom, d.arena(), n > 0 ? static_cast<int>(a[0]) : 15, n > 1 ? a[1] : 0.0,
                                   part, error);
   } else if (name == "Convexify") {
     if (n > 0 && !(a[0] > 0)) throw DeriveError{op.loc, "R002", "Convexify: maxLength must be a positive number"};

@@ -35,9 +35,17 @@ bool extrude(const Scope& scope, const GeomRef& geom, double height, GeometryAre
     // A `.cga` lot already lies in its solid's frame: its face is the base as it is
     // (through fgsg's polygon frame each corner would be rounded twice, 1 - (1 - z)).
     out.scope = scope;
-    out.scope.S.y() = height;
     const GeometryArena::Face& f = arena.face(geom, 0);
     base.assign(arena.facePoints(f), arena.facePoints(f) + f.count);
+    if (newellNormal(base).y() < 0) {
+      // A lot turned over (reverseNormals) faces down, and CityEngine extrudes along the
+      // face's normal: the prism hangs below it, its scope turned half round x (y down).
+      out.scope.axes.col(1) = -scope.axes.col(1);
+      out.scope.axes.col(2) = -scope.axes.col(2);
+      out.scope.P = scope.P + scope.axes.col(2) * scope.S.z();
+      for (Vec3& p : base) p.z() = 1.0 - p.z();
+    }
+    out.scope.S.y() = height;
     Polygon3 square;  // a rectangle is a Box, as a unit-square polygon is
     for (const Vec3& p : base) square.emplace_back(p.x(), 1.0 - p.z(), 0.0);
     if (isUnitSquare(square.data(), square.size())) {

@@ -18,6 +18,13 @@ double normalised(double c, double lo, double size) {
   return std::abs(t) < kSnap ? 0.0 : std::abs(t - 1.0) < kSnap ? 1.0 : t;
 }
 
+// Whether the edge a -> b runs along the ring `outline`.
+bool groundEdgeOnOutline(const Polygon3& outline, const Vec3& a, const Vec3& b) {
+  for (size_t j = 0; j < outline.size(); ++j)
+    if (outline[j] == a && outline[(j + 1) % outline.size()] == b) return true;
+  return false;
+}
+
 }  // namespace
 
 bool isGroundFace(const GeomRef& geom, const GeometryArena& arena) {
@@ -38,9 +45,14 @@ void polygonOnGround(Scope& scope, GeomRef& geom, GeometryArena& arena, const Ve
   const Vec3 up = scope.Z();
   Vec3 x = Vec3::Zero();
   if (xAxis) x = *xAxis - xAxis->dot(up) * up;
-  for (size_t i = 0; x.norm() < 1e-12 && i < world.size(); ++i) {  // the first edge with a length
-    const Vec3 e = world[(i + 1) % world.size()] - world[i];
-    x = e - e.dot(up) * up;
+  // The first edge with a length on the outline: a lot with a courtyard is one ring whose
+  // bridges to the courtyard (and the courtyard's own edges) may come first.
+  const std::vector<Polygon3> rings = ringsOf(world);
+  for (size_t i = 0; x.norm() < 1e-12 && i < world.size(); ++i) {
+    const Vec3& a = world[i];
+    const Vec3& b = world[(i + 1) % world.size()];
+    if (rings.size() > 1 && !groundEdgeOnOutline(rings[0], a, b)) continue;
+    x = (b - a) - (b - a).dot(up) * up;
   }
   if (x.norm() < 1e-12) return;
   x.normalize();

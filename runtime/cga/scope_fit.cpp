@@ -8,8 +8,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numbers>
+#include <set>
 
 namespace fgsg::rt::cga {
 namespace {
@@ -296,66 +300,192 @@ bool reverseNormals(const Scope& scope, const GeomRef& geom, GeometryArena& aren
 
 bool deleteHoles(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error) {
   out = Part{scope, geom, false, 0};
-  if (geom.kind != GeomKind::Polygon) return true;  // boxes and solids have no holes
-  const Polygon3 pts(arena.polygon(geom), arena.polygon(geom) + geom.count);
-  const std::vector<Polygon3> rings = ringsOf(pts);
-  if (rings.size() > 1) out.geom = arena.addPolygon(rings[0]);
+  // Boxes have no holes. A polygon's or a solid's face (the `.cga` dialect's lots are
+  // one-face solids) keeps its outline; the outline holds every corner, so the scope stays.
+  if (geom.kind != GeomKind::Polygon && geom.kind != GeomKind::Polyhedron) return true;
+  LocalGeometry local = loadGeometry(arena, geom);
+  bool changed = false;
+  for (Polygon3& f : local.faces) {
+    std::vector<Polygon3> rings = ringsOf(f);
+    if (rings.size() > 1) f = std::move(rings[0]), changed = true;
+  }
+  if (changed) out.geom = storeGeometry(arena, local);
   (void)error;
   return true;
 }
+
+namespace {
+
+// cleanupGeometry's steps on world faces (a face soup; corners match by position).
+
+// Every corner moved onto the first corner met within `eps` of it (corners on a grid of
+// cells `eps` wide; a corner looks in its cell and the 26 around it).
+bool mergeCorners(std::vector<Polygon3>& faces, double eps) {
+  std::map<std::array<long long, 3>, std::vector<Vec3>> cells;
+  const double cell = std::max(eps, 1e-9);
+  bool moved = false;
+  for (Polygon3& f : faces)
+    for (Vec3& p : f) {
+      std::array<long long, 3> c;
+      for (int k = 0; k < 3; ++k) c[k] = static_cast<long long>(std::floor(p[k] / cell));
+      const Vec3* found = nullptr;
+      for (int dx = -1; dx <= 1 && !found; ++dx)
+        for (int dy = -1; dy <= 1 && !found; ++dy)
+          for (int dz = -1; dz <= 1 && !found; ++dz) {
+            const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+            if (it == cells.end()) continue;
+            for (const Vec3& q : it->second)
+              if ((q - p).norm() <= eps) {
+                found = &q;
+                break;
+              }
+          }
+      if (found) {
+        moved |= *found != p;
+        p = *found;
+      } else {
+        cells[c].push_back(p);
+      }
+    }
+  // A corner equal to the one before it is the same corner.
+  for (Polygon3& f : faces) {
+    Polygon3 kept;
+    for (const Vec3& p : f)
+      if (kept.empty() || p != kept.back()) kept.push_back(p);
+    while (kept.size() > 1 && kept.front() == kept.back()) kept.pop_back();
+    moved |= kept.size() != f.size();
+    f = std::move(kept);
+  }
+  return moved;
+}
+
+// Corners where the outline goes on straight (turns by `maxTurn` radians or less) dropped.
+bool dropStraightCorners(std::vector<Polygon3>& faces, double maxTurn) {
+  bool changed = false;
+  for (Polygon3& f : faces)
+    for (bool again = true; again && f.size() > 3;) {
+      again = false;
+      for (size_t i = 0; i < f.size() && f.size() > 3; ++i) {
+        const Vec3 in = f[i] - f[(i + f.size() - 1) % f.size()], out = f[(i + 1) % f.size()] - f[i];
+        if (!(in.norm() > 0 && out.norm() > 0) || in.dot(out) <= 0) continue;
+        if (std::atan2(in.cross(out).norm(), in.dot(out)) <= maxTurn) {
+          f.erase(f.begin() + static_cast<long>(i));
+          again = changed = true;
+          break;
+        }
+      }
+    }
+  return changed;
+}
+
+// Faces of `maxArea` m2 or less, and second copies of a face (the same corners), dropped.
+bool dropDegenerateFaces(std::vector<Polygon3>& faces, double maxArea) {
+  std::set<std::vector<std::array<double, 3>>> seen;
+  std::vector<Polygon3> kept;
+  for (Polygon3& f : faces) {
+    if (f.size() < 3 || newellNormal(f).norm() / 2 <= maxArea) continue;
+    std::vector<std::array<double, 3>> key;
+    for (const Vec3& p : f) key.push_back({p.x(), p.y(), p.z()});
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second) continue;
+    kept.push_back(std::move(f));
+  }
+  const bool changed = kept.size() != faces.size();
+  faces = std::move(kept);
+  return changed;
+}
+
+// A ring's back-and-forth spikes (a, b, a) folded away: what joining two faces along more
+// than one shared edge leaves.
+void foldSpikes(Polygon3& f) {
+  for (bool again = true; again && f.size() >= 3;) {
+    again = false;
+    for (size_t i = 0; i < f.size() && f.size() >= 3; ++i) {
+      const size_t prev = (i + f.size() - 1) % f.size(), next = (i + 1) % f.size();
+      if (f[prev] == f[next]) {
+        // drop b and one of the a's
+        const size_t hi = std::max(i, next), lo = std::min(i, next);
+        f.erase(f.begin() + static_cast<long>(hi));
+        f.erase(f.begin() + static_cast<long>(lo));
+        again = true;
+        break;
+      }
+    }
+  }
+}
+
+// Faces that share an edge (one walks it a -> b, the other b -> a) and whose normals differ by
+// `maxAngle` radians or less become one face, the shared edge removed.
+bool mergeCoplanarFaces(std::vector<Polygon3>& faces, double maxAngle) {
+  bool changed = false;
+  for (bool again = true; again;) {
+    again = false;
+    std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, std::pair<size_t, size_t>> edges;
+    auto key = [](const Vec3& a, const Vec3& b) {
+      return std::make_pair(std::array<double, 3>{a.x(), a.y(), a.z()}, std::array<double, 3>{b.x(), b.y(), b.z()});
+    };
+    for (size_t fi = 0; fi < faces.size() && !again; ++fi) {
+      const Polygon3& f = faces[fi];
+      for (size_t i = 0; i < f.size() && !again; ++i) {
+        const Vec3& a = f[i];
+        const Vec3& b = f[(i + 1) % f.size()];
+        const auto other = edges.find(key(b, a));
+        if (other != edges.end() && other->second.first != fi) {
+          const size_t gi = other->second.first, j = other->second.second;
+          const Vec3 n = newellNormal(f), m = newellNormal(faces[gi]);
+          if (n.norm() > 0 && m.norm() > 0 && std::atan2(n.cross(m).norm(), n.dot(m)) <= maxAngle) {
+            // f runs ... a b ...; g runs ... b a ...: f up to a, then g from after a round to b, then f from b on.
+            const Polygon3& g = faces[gi];
+            Polygon3 joined;
+            for (size_t k = 0; k <= i; ++k) joined.push_back(f[k]);
+            for (size_t k = 2; k < g.size(); ++k) joined.push_back(g[(j + k) % g.size()]);
+            for (size_t k = i + 1; k < f.size(); ++k) joined.push_back(f[k]);
+            foldSpikes(joined);
+            faces[std::min(fi, gi)] = std::move(joined);
+            faces.erase(faces.begin() + static_cast<long>(std::max(fi, gi)));
+            again = changed = true;
+            break;
+          }
+        }
+        edges.emplace(key(a, b), std::make_pair(fi, i));
+      }
+    }
+  }
+  return changed;
+}
+
+}  // namespace
 
 bool cleanupGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int what, double tolerance,
                      Part& out, std::string& error) {
   WorldGeometry g;
   if (!worldGeometry(scope, geom, arena, "cleanupGeometry", g, error)) return false;
-  if (!(tolerance >= 0) || !std::isfinite(tolerance)) {
-    error = "cleanupGeometry: the tolerance must be a finite number >= 0";
+  if (!(tolerance >= 0 && tolerance <= 1)) {
+    error = "cleanupGeometry: the tolerance must be a number from 0 to 1";
     return false;
   }
-  const double eps = std::max(tolerance, 1e-9);
+  // op_cleanupGeometry's scale: 1 takes corners up to 1 m apart as one, edges and normals up
+  // to 10 degrees apart as straight and coplanar, faces up to 1 m2 as without area; 0 only
+  // exact matches (here: within 1e-9), values between in proportion.
+  constexpr double kExact = 1e-9;
+  const double distance = std::max(tolerance, kExact);
+  const double angle = std::max(tolerance * 10.0 * std::numbers::pi / 180.0, kExact);
+  const double area = std::max(tolerance, kExact * kExact);
   bool changed = false;
-  std::vector<Polygon3> kept;
-  for (Polygon3 f : g.faces) {
-    if (what & 1) {  // merge corners within the tolerance of the one before
-      Polygon3 merged;
-      for (const Vec3& p : f)
-        if (merged.empty() || (p - merged.back()).norm() > eps) merged.push_back(p);
-      while (merged.size() > 1 && (merged.front() - merged.back()).norm() <= eps) merged.pop_back();
-      changed |= merged.size() != f.size();
-      f = std::move(merged);
-    }
-    if (what & 2) {  // drop corners on a straight line between their neighbours
-      for (bool again = true; again && f.size() > 3;) {
-        again = false;
-        for (size_t i = 0; i < f.size() && f.size() > 3; ++i) {
-          const Vec3& a = f[(i + f.size() - 1) % f.size()];
-          const Vec3& b = f[i];
-          const Vec3& c = f[(i + 1) % f.size()];
-          const Vec3 ac = c - a;
-          if (ac.norm() > 0 && (b - a).cross(ac).norm() / ac.norm() <= eps && (b - a).dot(ac) > 0 &&
-              (c - b).dot(ac) > 0) {
-            f.erase(f.begin() + static_cast<long>(i));
-            again = changed = true;
-            break;
-          }
-        }
-      }
-    }
-    if ((what & 4) && (f.size() < 3 || faceNormal(f).norm() / 2 <= eps * eps)) {
-      changed = true;
-      continue;
-    }
-    kept.push_back(std::move(f));
-  }
+  if (what & 1) changed |= mergeCorners(g.faces, distance);
+  if (what & 8) changed |= mergeCoplanarFaces(g.faces, angle);
+  if (what & 2) changed |= dropStraightCorners(g.faces, angle);
+  if (what & 4) changed |= dropDegenerateFaces(g.faces, area);
   if (!changed) {
     out = Part{scope, geom, false, 0};
     return true;
   }
-  if (kept.empty()) {
+  g.faces.erase(std::remove_if(g.faces.begin(), g.faces.end(), [](const Polygon3& f) { return f.size() < 3; }),
+                g.faces.end());
+  if (g.faces.empty()) {
     error = "cleanupGeometry: no face is left";
     return false;
   }
-  g.faces = std::move(kept);
   g.box = false;
   fit(scope, scope.axes, g, arena, out);
   return true;

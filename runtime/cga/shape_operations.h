@@ -40,10 +40,13 @@ bool mirrorScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
 bool mirrorGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
                     std::string& error);
 
-// reverseNormals(): every face's corners in the opposite order. deleteHoles(): a polygon's
+// reverseNormals(): every face's corners in the opposite order. deleteHoles(): each face's
 // outline alone. resetGeometry(): the geometry becomes the scope box.
-// cleanupGeometry(what, tolerance): corners closer than `tolerance` merged (what & 1), corners
-// on a straight line dropped (what & 2), faces left without area dropped (what & 4).
+// cleanupGeometry(what, tolerance), tolerance from 0 to 1 (op_cleanupGeometry: 1 m, 10 degrees,
+// 1 m2 at 1; 0 exact matches): corners that close merged (what & 1), corners where the
+// outline turns by that angle or less dropped (what & 2), faces with that area or less and
+// second copies of a face dropped (what & 4), neighbouring faces whose normals differ by
+// that angle or less joined across their shared edges (what & 8).
 bool reverseNormals(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error);
 bool deleteHoles(const Scope& scope, const GeomRef& geom, GeometryArena& arena, Part& out, std::string& error);
 bool cleanupGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int what, double tolerance,

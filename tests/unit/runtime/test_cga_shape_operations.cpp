@@ -382,6 +382,65 @@ TEST_CASE("reverseNormals, deleteHoles and cleanupGeometry") {
   CHECK(area(out, arena) == Approx(100).margin(1e-2));
 }
 
+TEST_CASE("deleteHoles on a ground face keeps its outline") {
+  // The `.cga` dialect's lots are one-face solids lying on the ground (asGroundFace).
+  GeometryArena arena;
+  Part court = lot(arena, {{0, 0}, {30, 0}, {30, 20}, {0, 20}}, {{{10, 5}, {10, 15}, {20, 15}, {20, 5}}});
+  asGroundFace(court, court.scope.X(), arena);
+  REQUIRE(court.geom.kind == GeomKind::Polyhedron);
+  CHECK(geometryFacts(court.scope, court.geom, arena).area == Approx(500).margin(kTol));
+  Part out;
+  std::string error;
+  REQUIRE(deleteHoles(court.scope, court.geom, arena, out, error));
+  REQUIRE(out.geom.kind == GeomKind::Polyhedron);
+  REQUIRE(out.geom.count == 1);
+  CHECK(arena.face(out.geom, 0).count == 4);
+  CHECK(geometryFacts(out.scope, out.geom, arena).area == Approx(600).margin(kTol));
+}
+
+TEST_CASE("cleanupGeometry's components and tolerance scale") {
+  GeometryArena arena;
+  Part out;
+  std::string error;
+  // A corner where the outline turns by 5 degrees: straight at tolerance 0.6 (6 degrees),
+  // not at 0.4 (4 degrees). The step 3 (vertices) merges corners and drops straight ones.
+  const double t = 5 * M_PI / 180;
+  const Vec2 c(5 + 5 * std::cos(t), 5 * std::sin(t));
+  const Part bent = lot(arena, {{0, 0}, {5, 0}, c, {c.x(), 10}, {0, 10}});
+  REQUIRE(cleanupGeometry(bent.scope, bent.geom, arena, 3, 0.4, out, error));
+  CHECK(out.geom.count == 5);
+  REQUIRE(cleanupGeometry(bent.scope, bent.geom, arena, 3, 0.6, out, error));
+  CHECK(out.geom.count == 4);
+  CHECK_FALSE(cleanupGeometry(bent.scope, bent.geom, arena, 3, 1.5, out, error));  // the range is 0 to 1
+  // A 20 x 10 lot with a fifth corner in its first edge, extruded 3: the wall along that
+  // edge is two coplanar faces (7 faces). edges (9) joins them (6 faces, the wall 6 corners,
+  // the middle ones still there); all (15) also drops the straight corners: a box's 6
+  // faces of 4 corners, 8 corners in all. The surface stays 2 (200 + 60 + 30) = 580 m2.
+  const Part notched = lot(arena, {{0, 0}, {10, 0}, {20, 0}, {20, 10}, {0, 10}});
+  Part mass;
+  REQUIRE(extrude(notched.scope, notched.geom, 3, arena, mass, error));
+  REQUIRE(geometryFacts(mass.scope, mass.geom, arena).faces == 7);
+  REQUIRE(cleanupGeometry(mass.scope, mass.geom, arena, 9, 0, out, error));
+  GeometryFacts facts = geometryFacts(out.scope, out.geom, arena);
+  CHECK(facts.faces == 6);
+  CHECK(facts.vertices == 10);
+  CHECK(facts.area == Approx(580).margin(1e-9));
+  CHECK(volume(out, arena) == Approx(600).margin(1e-9));
+  REQUIRE(cleanupGeometry(mass.scope, mass.geom, arena, 15, 0, out, error));
+  facts = geometryFacts(out.scope, out.geom, arena);
+  CHECK(facts.faces == 6);
+  CHECK(facts.vertices == 8);
+  CHECK(facts.area == Approx(580).margin(1e-9));
+  for (uint32_t i = 0; i < out.geom.count; ++i) CHECK(arena.face(out.geom, i).count == 4);
+  // faces (5): a second copy of a face and a sliver of 0.05 m2 go at tolerance 0.1 (0.1 m2).
+  const Polygon3 square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const Polygon3 sliver{{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}};
+  Scope unit;
+  const GeomRef soup = arena.addPolyhedron({square, square, sliver});
+  REQUIRE(cleanupGeometry(unit, soup, arena, 5, 0.1, out, error));
+  CHECK(geometryFacts(out.scope, out.geom, arena).faces == 1);
+}
+
 TEST_CASE("setbackToArea finds the distance that leaves the area asked for") {
   GeometryArena arena;
   const FlatPolygon f = flat(lot(arena, kRect20x10), arena);
