@@ -4,6 +4,7 @@
 // tests/mutations/ga.txt that survived the first mutation run (issue #51, docs/testing.md);
 // the comment above a check says which and why its value differs under it.
 #include "runtime/evolve/genetic.h"
+#include "tests/unit/evolve/ga_runs.h"
 
 #include <catch2/catch.hpp>
 
@@ -12,26 +13,19 @@
 
 using namespace fgsg::rt::evolve;
 using fgsg::rt::RandomStream;
+using namespace fgsg::rt::evolve::testing;
 
 namespace {
 
 const std::string kAB = "AB";
 
-// The options the cases below vary: 20 children of the best parents on the example tile
-// set, 2x2 rules, measured at generation 3; a threshold above the maximum fitness (1), so
-// every generation runs.
+// The options the cases below vary: 20 children of the two best parents, every child
+// crossed, no mutation, no elite; one generation.
 EvolveOptions breeding(uint64_t seed) {
-  EvolveOptions o;
-  o.population = 20;
-  o.ruleSide = 2;
-  o.generation = 3;
-  o.maxGenerations = 1;
-  o.parents = 2;
+  EvolveOptions o = untilGenerationLimit(20, 2, 1, seed);
   o.elite = 0;
   o.crossoverRate = 1;
   o.mutationRate = 0;
-  o.threshold = 2;
-  o.seed = seed;
   return o;
 }
 
@@ -74,14 +68,7 @@ TEST_CASE("the crossover rate: 1 crosses every child, 0 none", "[evolve][genetic
   // Kills "random.next() > o.crossoverRate" (the rate inverted, issue #51's survivor):
   // rate 1 then never crosses (next() < 1), so the best stays at generation 0's and the
   // rate-1 check fails; rate 0 crosses nearly always.
-  EvolveOptions o;
-  o.population = 30;
-  o.ruleSide = 2;
-  o.generation = 3;
-  o.maxGenerations = 15;
-  o.parents = 8;
-  o.threshold = 2;
-  o.seed = 11;
+  EvolveOptions o = smallOptions();
   o.mutationRate = 0;
   o.crossoverRate = 0;
   const EvolveResult copies = evolve(exampleTileSet(), o);

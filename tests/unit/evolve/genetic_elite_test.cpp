@@ -2,6 +2,7 @@
 // that keeping them holds the best fitness. Both were surviving mutations of the mutation
 // run (issue #51, docs/testing.md).
 #include "runtime/evolve/genetic.h"
+#include "tests/unit/evolve/ga_runs.h"
 
 #include <catch2/catch.hpp>
 
@@ -23,16 +24,11 @@ TEST_CASE("the elite keep the best fitness from falling between generations", "[
   // Every child is a parent with every allele mutated (no crossover, rate 1), so only the
   // one elite carries the best L-system over; the threshold (above the maximum, 1) is
   // never reached, so all six generations run.
-  EvolveOptions o;
-  o.population = 8;
-  o.parents = 4;
+  EvolveOptions o = fgsg::rt::evolve::testing::untilGenerationLimit(8, 4, 6, 3);
+  o.ruleSide = 3;  // as measured when the case was written (the default)
   o.elite = 1;
   o.crossoverRate = 0;
   o.mutationRate = 1;
-  o.maxGenerations = 6;
-  o.threshold = 2;
-  o.generation = 3;
-  o.seed = 3;
   const EvolveResult r = evolve(exampleTileSet(), o);
   REQUIRE(r.history.size() == 7);
   for (size_t g = 1; g < r.history.size(); ++g) {

@@ -2,6 +2,7 @@
 // examples, selection, reproducibility by seed and across thread counts, the p4
 // constraint (§6.1), termination and the deadline.
 #include "runtime/evolve/genetic.h"
+#include "tests/unit/evolve/ga_runs.h"
 
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
@@ -12,6 +13,7 @@
 using namespace fgsg::rt::evolve;
 using fgsg::rt::Deadline;
 using fgsg::rt::RandomStream;
+using fgsg::rt::evolve::testing::smallOptions;
 
 namespace {
 
@@ -42,18 +44,6 @@ bool cornerFourFold(const TileSet& ts, const AlleleGrid& p) {
         return false;
     }
   return true;
-}
-
-EvolveOptions smallOptions() {
-  EvolveOptions o;
-  o.population = 30;
-  o.ruleSide = 2;
-  o.generation = 3;
-  o.maxGenerations = 15;
-  o.parents = 8;
-  o.threshold = 2;  // unreachable: every generation runs
-  o.seed = 11;
-  return o;
 }
 
 }  // namespace
