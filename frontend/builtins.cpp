@@ -1,6 +1,7 @@
 #include "frontend/builtins.h"
 
 #include <cstring>
+#include <iterator>
 
 namespace fgsg::frontend {
 namespace {
@@ -37,6 +38,19 @@ const CommandInfo kCommands[] = {
     {CommandId::Color, "Color", 1, 3, BodyRule::None, "Color(r, g, b) or Color(\"#rrggbb\")", nullptr},
     {CommandId::Texture, "Texture", 1, 3, BodyRule::None,
      "Texture(\"image.png\") or Texture(\"image.png\", tileWidth, tileHeight)", nullptr},
+    {CommandId::Material, "Material", 2, 2, BodyRule::None,
+     "Material(\"roughness\" or \"metallic\" or \"opacity\" or \"color.r\" or \"color.g\" or \"color.b\", value) or "
+     "Material(\"normalmap\", \"image.png\")",
+     nullptr},
+    // CGA's uv operations on the scope's texture projection (uv set 0), in ir::UvOp's order.
+    {CommandId::UvOperation, "SetupProjection", 3, 3, BodyRule::None,
+     "SetupProjection(\"xy\" or \"xz\" or \"yz\" or \"yx\" or \"zx\" or \"zy\", tileWidth, tileHeight)", nullptr},
+    {CommandId::UvOperation, "ScaleUV", 2, 2, BodyRule::None, "ScaleUV(uFactor, vFactor)", nullptr},
+    {CommandId::UvOperation, "TranslateUV", 2, 2, BodyRule::None, "TranslateUV(uOffset, vOffset)", nullptr},
+    {CommandId::UvOperation, "RotateUV", 1, 1, BodyRule::None, "RotateUV(degrees)", nullptr},
+    {CommandId::UvOperation, "TileUV", 2, 2, BodyRule::None, "TileUV(tileWidth, tileHeight)", nullptr},
+    {CommandId::UvOperation, "NormalizeUV", 1, 1, BodyRule::None,
+     "NormalizeUV(\"uv\" or \"uvUniform\" or \"u\" or \"v\")", nullptr},
     {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
@@ -125,6 +139,26 @@ const CommandInfo* findCommand(const std::string& name) {
 }
 
 std::span<const CommandInfo> allCommands() { return kCommands; }
+
+namespace {
+const char* const kMaterialProperties[] = {"roughness", "metallic", "opacity", "color.r", "color.g", "color.b",
+                                           "normalmap", "colormap"};
+}  // namespace
+
+int materialProperty(const std::string& name) {
+  for (size_t k = 0; k < std::size(kMaterialProperties); ++k)
+    if (name == kMaterialProperties[k]) return static_cast<int>(k);
+  return -1;
+}
+
+int uvOperation(const std::string& name) {
+  static const char* const kNames[] = {"SetupProjection", "ScaleUV", "TranslateUV", "RotateUV", "TileUV", "NormalizeUV"};
+  for (size_t k = 0; k < std::size(kNames); ++k)
+    if (name == kNames[k]) return static_cast<int>(k);
+  return -1;
+}
+
+const char* materialPropertyList() { return "roughness, metallic, opacity, color.r, color.g, color.b, normalmap or colormap"; }
 
 std::span<const FunctionInfo> allFunctions() { return kFunctions; }
 

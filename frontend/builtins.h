@@ -12,6 +12,8 @@ enum class CommandId {
   Translate, Rotate, RotateX, RotateY, RotateZ, RotateNormal, Scale,
   Instance, InstanceCollide, InstanceMerge,
   Subdiv, Repeat, Comp, Extrude, Footprint, Offset, Roof, Lock, Center, Color, Texture,
+  Material,  // CGA's material attributes (roughness, metallic, opacity, colour components, normal map)
+  UvOperation,  // CGA's uv operations on the texture projection (SetupProjection, ScaleUV, ...)
   Forward, Move,  // turtle F and f written as identifiers
   Marching, Branch, Line, LineSeg, Synthesize, Evolve, Cells,
   BrickBond, HeaderRow, ArchBricks, RandomStones,  // Cells' pattern generators
@@ -42,6 +44,13 @@ struct CommandInfo {
 // The command a successor identifier names, or nullptr for a shape symbol. Accepts the
 // FGSG paper's upper-case spellings RX RY RZ.
 const CommandInfo* findCommand(const std::string& name);
+
+// Material(property, value)'s property words ("roughness", "metallic", "opacity",
+// "color.r", "color.g", "color.b", "normalmap", "colormap"), numbered as ir::MaterialProperty; -1: none.
+int materialProperty(const std::string& name);
+const char* materialPropertyList();  // for messages: "roughness, metallic, ..."
+// The uv command `name` (SetupProjection, ScaleUV, ...) numbered as ir::UvOp; -1: none.
+int uvOperation(const std::string& name);
 // Every command, in the table's order (editors complete and describe them: fgsg lsp).
 std::span<const CommandInfo> allCommands();
 

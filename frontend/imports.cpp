@@ -151,6 +151,9 @@ class FileAnchor {
                                  it.name == "Synthesize";
           if (namesFile && !it.args.empty() && it.args[0] && it.args[0]->kind == ExprKind::String)
             anchor(it.args[0]->text);
+          // Material("normalmap" or "colormap", "image.png")
+          if (it.name == "Material" && it.args.size() == 2 && it.args[1] && it.args[1]->kind == ExprKind::String)
+            anchor(it.args[1]->text);
         });
   }
 

@@ -147,6 +147,45 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       numArgs(1, false);
       break;
     }
+    case CommandId::Material: {
+      const std::string property = stringArg(0, "property");
+      if (!stringOk) break;
+      if (materialProperty(property) < 0) {
+        diags_.error("E028", item.args[0]->range,
+                     "a material property is " + std::string(materialPropertyList()) + ", not \"" + property + "\"");
+        break;
+      }
+      if (property == "normalmap" || property == "colormap") {
+        // The image is found and checked before deriving, as Texture's.
+        const std::string file = stringArg(1, "image");
+        if (stringOk && file.empty())
+          diags_.error("E017", item.args[1]->range,
+                       "'Material(\"" + property + "\", ...)' needs an image file name (\"none\": none)");
+        break;
+      }
+      numArgs(1, false);
+      break;
+    }
+    case CommandId::UvOperation: {
+      const int uv = uvOperation(item.name);
+      if (uv == 0) {  // SetupProjection("xz", w, h)
+        const std::string axes = stringArg(0, "axes");
+        static const std::set<std::string> kAxes = {"xy", "xz", "yz", "yx", "zx", "zy"};
+        if (stringOk && !kAxes.count(axes))
+          diags_.error("E028", item.args[0]->range,
+                       "SetupProjection's axes are two of the scope's: \"xy\", \"xz\", \"yz\", \"yx\", \"zx\" or "
+                       "\"zy\", not \"" + axes + "\"");
+        numArgs(1, true);
+      } else if (uv == 5) {  // NormalizeUV("uv")
+        const std::string mode = stringArg(0, "mode");
+        if (stringOk && mode != "uv" && mode != "uvUniform" && mode != "u" && mode != "v")
+          diags_.error("E028", item.args[0]->range,
+                       "NormalizeUV's mode is \"uv\", \"uvUniform\", \"u\" or \"v\", not \"" + mode + "\"");
+      } else {
+        numArgs(0, uv == 4);  // TileUV's sizes may be relative (1r) or floating (~2)
+      }
+      break;
+    }
     case CommandId::Comp: {
       static const std::set<std::string> kSelectors = {
           "faces", "f", "sidefaces", "vertical", "aslant", "horizontal", "nutant", "top", "bottom", "front", "back",

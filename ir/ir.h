@@ -141,6 +141,11 @@ enum class OpKind : uint8_t {
   ShapeOperation,  // str = the command (AlignScopeToAxes, Setback, ShapeL ...: frontend/shape_operations.h); args its
                    // numbers (a word argument as the number it stands for); bodies labelled (partLabels) or none
   Label,         // args[0] the label (Str): CGA's label(), the shape a labelled context shape
+  Material,      // index = MaterialProperty; args[0] its value (a number), or str = the image (the maps): the
+                 // material of the instances placed from this scope on (backend/commands/texture_commands.h)
+  Uv,            // index = UvOp: CGA's uv operations on the scope's texture projection (uv set 0); Setup: str =
+                 // the axes ("xz"), sizes the tile width and height; Tile: sizes; Normalize: str = the mode;
+                 // Scale / Translate: args u, v; Rotate: args[0] degrees
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 
@@ -149,6 +154,13 @@ enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomSto
                                       Shingles };
 
 enum class InstanceMode : uint8_t { Plain, Collide, Merge };
+
+// Material(property, value) (frontend::materialProperty's words, in this order); ColorMap is
+// the .cga dialect's texture() (the image of the current projection, its frame kept).
+enum class MaterialProperty : uint8_t { Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, NormalMap, ColorMap };
+
+// CGA's uv operations (frontend::uvOperation's commands, in this order).
+enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize };
 
 enum class TurtleOp : uint8_t {
   Forward,     // F(l): draw a segment and move

@@ -409,6 +409,26 @@ class Lowerer {
         op.str = m_.internString(constString(*item.args[0]));
         allArgs(1);
         break;
+      case CommandId::Material: {
+        op.kind = OpKind::Material;
+        op.index = static_cast<uint32_t>(frontend::materialProperty(constString(*item.args[0])));
+        if (op.index >= static_cast<uint32_t>(MaterialProperty::NormalMap))
+          op.str = m_.internString(constString(*item.args[1]));
+        else
+          allArgs(1);
+        break;
+      }
+      case CommandId::UvOperation: {
+        op.kind = OpKind::Uv;
+        op.index = static_cast<uint32_t>(frontend::uvOperation(item.name));
+        const auto uv = static_cast<UvOp>(op.index);
+        if (uv == UvOp::Setup || uv == UvOp::Normalize) op.str = m_.internString(constString(*item.args[0]));
+        if (uv == UvOp::Setup || uv == UvOp::Tile)
+          for (size_t k = uv == UvOp::Setup ? 1 : 0; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
+        else if (uv != UvOp::Normalize)
+          allArgs(0);
+        break;
+      }
       case CommandId::Center:
         op.kind = OpKind::Center;
         for (char c : constString(*item.args[0])) op.index |= 1u << axisIndex(std::string(1, c));

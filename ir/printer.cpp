@@ -424,6 +424,21 @@ class Printer {
       case OpKind::Report: text = withArgs("report"); break;
       case OpKind::Print: text = withArgs("print"); break;
       case OpKind::Label: text = withArgs("label"); break;
+      case OpKind::Material: {
+        static const char* const kProperties[] = {"roughness", "metallic", "opacity", "color.r",
+                                                  "color.g",   "color.b",  "normalmap", "colormap"};
+        const std::string property = op.index < 8 ? kProperties[op.index] : "property?";
+        text = op.index >= uint32_t(MaterialProperty::NormalMap) ? "material " + property + " " + stringLit(op.str)
+                                                                  : withArgs("material " + property);
+        break;
+      }
+      case OpKind::Uv: {
+        static const char* const kUvOps[] = {"setup", "scale", "translate", "rotate", "tile", "normalize"};
+        text = withArgs(std::string("uv ") + (op.index < 6 ? kUvOps[op.index] : "op?"));
+        if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) text += " " + stringLit(op.str);
+        if (!op.sizes.empty()) text += " " + sizeList(r, op.sizes);
+        break;
+      }
       case OpKind::ShapeOperation:
         text = withArgs("shape-operation " + stringLit(op.str));
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";

@@ -47,6 +47,8 @@ const char* opName(OpKind k) {
     case OpKind::Print: return "print";
     case OpKind::ShapeOperation: return "shape-operation";
     case OpKind::Label: return "label";
+    case OpKind::Material: return "material";
+    case OpKind::Uv: return "uv";
     case OpKind::Unsupported: return "unsupported";
   }
   return "op?";
@@ -531,6 +533,19 @@ class Verifier {
         stringId(op.str);
         if (!op.args.empty()) numArgs(op, r, 2);
         break;
+      case OpKind::Material:
+        expectBodies(op, 0);
+        if (op.index > uint32_t(MaterialProperty::ColorMap)) problem("material property " + std::to_string(op.index));
+        if (op.index >= uint32_t(MaterialProperty::NormalMap)) stringId(op.str), numArgs(op, r, 0);
+        else numArgs(op, r, 1);
+        break;
+      case OpKind::Uv:
+        expectBodies(op, 0);
+        if (op.index > uint32_t(UvOp::Normalize)) problem("uv operation " + std::to_string(op.index));
+        if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) stringId(op.str);
+        if ((op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Tile)) && op.sizes.size() != 2)
+          problem("uv sizes " + std::to_string(op.sizes.size()));
+        break;
       case OpKind::Center:
         if (op.index == 0 || op.index > 7) problem("axes mask " + std::to_string(op.index));
         numArgs(op, r, 0);
@@ -651,7 +666,7 @@ class Verifier {
         break;
       default: problem("bad op kind " + std::to_string(static_cast<int>(op.kind)));
     }
-    if (op.kind != OpKind::Scale && op.kind != OpKind::Subdiv && op.kind != OpKind::Repeat &&
+    if (op.kind != OpKind::Scale && op.kind != OpKind::Subdiv && op.kind != OpKind::Repeat && op.kind != OpKind::Uv &&
         !op.sizes.empty())
       problem("sizes on an op that takes none");
     sizes(op, r);

@@ -63,6 +63,16 @@ struct LinePath {
   uint32_t symbol = 0;  // index into InstanceList::symbols
 };
 
+// A material's physically based factors besides its colour (CGA's material.roughness,
+// .metallic, .opacity and .normalmap), written as glTF 2.0 PBR materials and in OBJ's
+// .mtl. The default is what every material had before: fgsg's roughness 0.8, metallic 0,
+// opaque, no normal map.
+struct Finish {
+  float roughness = 0.8f, metallic = 0.0f, opacity = 1.0f;
+  uint32_t normalMap = UINT32_MAX;  // index into InstanceList::textures; UINT32_MAX: none
+  bool operator==(const Finish&) const = default;
+};
+
 // How a parameter's slots read: a number, a boolean (0/1), a string (an index into
 // InstanceList::strings) or a vector (three slots).
 enum class ParamKind : uint8_t { Number, Boolean, String, Vector };
@@ -82,6 +92,15 @@ struct InstanceList {
   std::vector<Mesh> geometries;
   // The images of Texture commands (Instance::texture), as paths the derivation found.
   std::vector<std::string> textures;
+  // Per instance, 1 + its index in `finishes` (0: the default Finish), beside `instances`
+  // as `origins` is, and only as long as the last instance that has one: grammars without
+  // Material(...) carry nothing. finishOf(i) reads it.
+  std::vector<uint32_t> finishIndex;
+  std::vector<Finish> finishes;
+  const Finish* finishOf(size_t instance) const {
+    const uint32_t k = instance < finishIndex.size() ? finishIndex[instance] : 0;
+    return k && k <= finishes.size() ? &finishes[k - 1] : nullptr;
+  }
   std::vector<LinePath> lines;  // the grammar's lines (Line/LineSeg), in the order they started
   // Per instance when DeriveOptions::recordOrigins asked (fgsg view's picking), else empty;
   // kept beside `instances` so that the million-instance runs do not carry it.

@@ -45,6 +45,11 @@ struct Scope {
   struct Place {
     int32_t splitIndex = 0, splitTotal = 0, compIndex = 0, compTotal = 0;
   } place;
+  // Material(...) (CGA's material attributes): 1 + the index of the derivation's finish
+  // (roughness, metallic, opacity, normal map) the instances placed from this scope on
+  // take (backend/commands/texture_commands.h); 0: the default one. In the tail padding:
+  // the scope's size, which compiled code is built for, stays the same.
+  uint32_t finish = 0;
 
   Vec3 X() const { return axes.col(0); }
   Vec3 Y() const { return axes.col(1); }

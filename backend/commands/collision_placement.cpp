@@ -114,6 +114,7 @@ void CollisionPlacement::rollback(const Transaction& t, rt::LineNetwork& lines) 
   if (alongSurface_) placedFrom_.resize(t.obstacles), mergeableFrom_.resize(merges_.size());
   out_.instances.resize(t.instances);
   if (out_.origins.size() > t.instances) out_.origins.resize(t.instances);
+  if (out_.finishIndex.size() > t.instances) out_.finishIndex.resize(t.instances);
   out_.params.resize(t.params);
   lines.rollback(t.lines);
 }

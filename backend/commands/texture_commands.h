@@ -3,12 +3,20 @@
 // each leaf output below it gets texture coordinates from that projection and draws the
 // image. The image files are found and checked before anything is derived, so a missing
 // or unreadable one is reported at its Texture(). Texture("none") takes the image away.
+//
+// The same family applies CGA's material attributes (Material: roughness, metallic,
+// opacity, the colour's components, the normal and colour maps; the scope's `finish`)
+// and its uv operations (Uv: setupProjection, scaleUV, translateUV, rotateUV, tileUV,
+// normalizeUV, each a new projection made from the scope's).
 #pragma once
 
 #include "backend/commands/command_family.h"
 #include "runtime/cga/uv_projection.h"
+#include "runtime/instances.h"
 
+#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace fgsg::backend {
@@ -18,14 +26,16 @@ inline constexpr const char* kNoTexture = "none";
 
 class TextureCommands final : public CommandFamily {
  public:
-  std::vector<ir::OpKind> kinds() const override { return {ir::OpKind::Texture}; }
+  std::vector<ir::OpKind> kinds() const override { return {ir::OpKind::Texture, ir::OpKind::Material, ir::OpKind::Uv}; }
   void apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) override;
 
-  // Finds every image the module's Texture commands name in `dirs` and checks it is a PNG
-  // or JPEG; throws DeriveError (R003) at the first Texture whose image is not.
+  // Finds every image the module's Texture and Material commands name in `dirs` and checks
+  // it is a PNG or JPEG; throws DeriveError (R003) at the first command whose image is not.
   void prepare(const ir::Module& m, const std::vector<std::string>& dirs);
   // A seed plant's derivation uses its parent's images (their paths and numbering).
-  void shareFrom(const TextureCommands& parent) { paths_ = parent.paths_, textureOf_ = parent.textureOf_; }
+  void shareFrom(const TextureCommands& parent) {
+    paths_ = parent.paths_, textureOf_ = parent.textureOf_, strings_ = parent.strings_;
+  }
 
   // The images' paths, numbered as Instance::texture counts them.
   const std::vector<std::string>& paths() const { return paths_; }
@@ -33,11 +43,23 @@ class TextureCommands final : public CommandFamily {
   const rt::cga::UvProjection& projection(uint32_t scopeProjection) const {
     return projections_[scopeProjection - 1];
   }
+  // The finishes a scope's `finish` (1 + index) names, and the one for `f` (0: the default).
+  const std::vector<rt::Finish>& finishes() const { return finishes_; }
+  const rt::Finish& finish(uint32_t scopeFinish) const { return scopeFinish ? finishes_[scopeFinish - 1] : kDefault_; }
+  uint32_t internFinish(const rt::Finish& f);
 
  private:
+  void material(const ir::Op& op, const double* a, State& st);
+  void uv(const ir::Op& op, const double* a, State& st);
+  uint32_t addProjection(const rt::cga::UvProjection& p);
+
   std::vector<std::string> paths_;
   std::vector<uint32_t> textureOf_;  // per module string id: its index in paths_ (Texture's file)
+  const std::vector<std::string>* strings_ = nullptr;  // the module's (Uv's axes and modes)
   std::vector<rt::cga::UvProjection> projections_;
+  std::vector<rt::Finish> finishes_;
+  std::map<std::tuple<float, float, float, uint32_t>, uint32_t> finishIndex_;
+  static inline const rt::Finish kDefault_{};
 };
 
 }  // namespace fgsg::backend

@@ -148,6 +148,7 @@ rt::DeriveResult Derivation::run() {
   // Strings a `+` joined follow the module's in the instances' table (string parameters).
   if (out_.strings.size() == m_.strings.size())
     out_.strings.insert(out_.strings.end(), eval_.joinedStrings().joined().begin(), eval_.joinedStrings().joined().end());
+  out_.finishes = textures_.finishes();  // what InstanceList::finishIndex numbers
   result.instances = std::move(out_);
   result.reports = reports_.takeReports();
   result.prints = reports_.takePrints();

@@ -136,12 +136,16 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   // An asset with texture coordinates of its own draws the image of a Texture above it,
   // and one with images of its own keeps them; either untinted unless Color says.
   if (asset < assetHasTexcoords_.size()) {
-    const bool textured = scope.projection && assetHasTexcoords_[asset];
+    const bool textured = scope.projection && assetHasTexcoords_[asset] && textures_.projection(scope.projection).hasImage();
     if (textured) inst.texture = textures_.projection(scope.projection).texture;
     if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   if (origins_.on()) out_.origins.push_back(origins_.of(loc, placingDepth_));
+  if (scope.finish) {  // Material(...): InstanceList::finishIndex, as long as the last instance with one
+    out_.finishIndex.resize(out_.instances.size(), 0);
+    out_.finishIndex.back() = scope.finish;
+  }
   inst.firstParam = static_cast<uint32_t>(out_.params.size());
   inst.paramCount = paramCount;
   out_.params.insert(out_.params.end(), params, params + paramCount);
@@ -157,8 +161,10 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
 // unless Color tinted it.
 void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
   const uint32_t slots = m_.symbols[symbol].slotCount;
+  // (A projection without an image yet, from setupProjection, draws nothing.)
   const rt::cga::UvProjection* projection =
-      st.scope.projection ? &textures_.projection(st.scope.projection) : nullptr;
+      st.scope.projection && textures_.projection(st.scope.projection).hasImage() ? &textures_.projection(st.scope.projection)
+                                                                                  : nullptr;
   // The commonest untextured leaves share a built-in mesh over their scope: a whole box is
   // the cube, a rectangle (a facade's split piece) the quad. Other shapes build their own.
   if (!projection && st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
@@ -255,6 +261,7 @@ void Derivation::orderDirectInstances() {
   rt::MeshArray<rt::Instance> instances;
   std::vector<double> params;
   std::vector<rt::InstanceOrigin> origins;
+  std::vector<uint32_t> finishIndex;
   instances.reserve(order.size());
   params.reserve(out_.params.size());
   for (uint32_t i : order) {
@@ -264,10 +271,12 @@ void Derivation::orderDirectInstances() {
     params.insert(params.end(), out_.params.begin() + first, out_.params.begin() + first + inst.paramCount);
     instances.push_back(inst);
     if (i < out_.origins.size()) origins.push_back(out_.origins[i]);
+    if (!out_.finishIndex.empty()) finishIndex.push_back(i < out_.finishIndex.size() ? out_.finishIndex[i] : 0);
   }
   out_.instances = std::move(instances);
   out_.params = std::move(params);
   out_.origins = std::move(origins);
+  out_.finishIndex = std::move(finishIndex);
   placedBy_.clear();
 }
 

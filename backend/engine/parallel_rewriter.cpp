@@ -279,6 +279,8 @@ void Derivation::checkParallelOp(const ir::Op& op) {
     case ir::OpKind::Unsupported: unsupported(op);
     case ir::OpKind::Lock:
     case ir::OpKind::Texture:  // textures only leaves' own geometry, which sequential CGA outputs
+    case ir::OpKind::Material:
+    case ir::OpKind::Uv:
     case ir::OpKind::Line:
     case ir::OpKind::LineSeg: sequentialOnly(op);
     case ir::OpKind::Report:

@@ -89,6 +89,7 @@ Derivation::Plant Derivation::derivePlant(const rt::Scope& start, uint64_t key, 
     p.outOfMemory = true;
   }
   if (depthLimitHit_) p.depthWarning = depthWarning_;
+  out_.finishes = textures_.finishes();
   p.out = std::move(out_);
   p.stats = stats_;
   p.shapesAtInstance = std::move(shapesAtInstance_);
@@ -147,6 +148,10 @@ void Derivation::mergePlants(std::vector<Plant>& plants) {
       if (inst.curve != UINT32_MAX) inst.curve = static_cast<uint32_t>(inst.curve + curveBase);
       if (inst.geometry != UINT32_MAX) inst.geometry = static_cast<uint32_t>(inst.geometry + geometryBase);
       if (i < p.out.origins.size()) out_.origins.push_back(p.out.origins[i]);
+      if (const rt::Finish* f = p.out.finishOf(i)) {  // the plant's finish, numbered as the parent's
+        out_.finishIndex.resize(out_.instances.size() + 1, 0);
+        out_.finishIndex.back() = textures_.internFinish(*f);
+      }
       out_.instances.push_back(inst);
     }
     p.out = rt::InstanceList{};  // freed as soon as it is copied

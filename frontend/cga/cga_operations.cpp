@@ -16,7 +16,12 @@
 //   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
 //                                       it (CityEngine transforms the inserted geometry with
 //                                       the scope); a missing file is W801, the insert skipped
-//   s t r center color set(material.color.rgb, ...) texture setupProjection projectUV
+//   s t r center color set(material.color.rgb, ...)
+//   set(material.roughness|metallic|opacity|color.r|g|b|normalmap|colormap, v), texture(x)
+//                                       Material("roughness", v) ... (texture: "colormap")
+//   setupProjection(0, scope.xz, w, h) tileUV scaleUV translateUV rotateUV normalizeUV
+//                                       SetupProjection("xz", w, h), TileUV(w, h) ...;
+//                                       projectUV(0) nothing (the projection applies at output)
 //   report(k, v), print(x)              Report(k, v), Print(x) (where fgsg has them)
 //   [ ... ]  NIL  X.  .
 // A successor that creates no shape ends with its shape as a leaf (CityEngine keeps it):
@@ -71,8 +76,6 @@ struct Translator::Sequence {
   bool nil = false;
   bool done = false;  // an operation took the rest of the successor as its body
   std::unique_ptr<Item> pendingInsert{};
-  // setupProjection(0, scope.xy, w, h): the tile size a later texture() uses (null: the scope).
-  ExprPtr tileW{}, tileH{};
   const std::vector<P::OperationContext*>* ops = nullptr;
   size_t index = 0;
   bool topLevel = true;
@@ -514,8 +517,10 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
       colorItem({argCtx[1]});
       return;
     }
-    if (what == "material.colormap") {
-      texture(op, seq, env);
+    // material.roughness / metallic / opacity / color.r|g|b / normalmap / colormap: fgsg's
+    // Material(property, value) (texture() is set(material.colormap, ...)).
+    if (what.rfind("material.", 0) == 0 && materialProperty(what.substr(9)) >= 0) {
+      materialItem(op, what.substr(9), env, seq);
       return;
     }
     notSupported(rangeOf(argCtx[0]), "set(" + argCtx[0]->getText() + ", ...)");
@@ -523,32 +528,14 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
   }
   if (name == "texture") {
     if (!noBody() || !count(1, 1, "1 argument (the image)")) return;
-    texture(op, seq, env);
+    materialItem(op, "colormap", env, seq);
     return;
   }
-  if (name == "setupProjection") {
-    // setupProjection(0, scope.xy, w, h): fgsg's Texture projects onto the scope's XY plane
-    // with a tile size; `'1` (the scope's size) is its default.
-    if (!noBody() || !count(4, 8, "uvSet, scope.xy, width, height")) return;
-    if (argCtx[0]->getText() != "0" || selectorWord(argCtx[1]) != "scope.xy" || argCtx.size() > 4) {
-      notSupported(at, "setupProjection other than setupProjection(0, scope.xy, width, height)");
-      return;
-    }
-    seq.tileW.reset();
-    seq.tileH.reset();
-    if (argCtx[2]->getText() != "'1" || argCtx[3]->getText() != "'1") {
-      Env e = env;
-      e.relativeAxis = 0;
-      seq.tileW = expr(argCtx[2], e);
-      e.relativeAxis = 1;
-      seq.tileH = expr(argCtx[3], e);
-    }
+  if (name == "setupProjection" || name == "projectUV" || name == "tileUV" || name == "scaleUV" ||
+      name == "translateUV" || name == "rotateUV" || name == "normalizeUV") {
+    if (!noBody()) return;
+    uvOperation(op, env, seq);
     return;
-  }
-  if (name == "projectUV") {
-    if (!noBody() || !count(1, 1, "1 argument (the uv set)")) return;
-    if (argCtx[0]->getText() != "0") notSupported(rangeOf(argCtx[0]), "a uv set other than 0");
-    return;  // Texture projects when it is set
   }
   if (name == "print" && !findCommand("Print")) return;  // CityEngine's console: nothing to generate
   if (name == "report" || name == "label" || name == "print") {
@@ -871,18 +858,111 @@ void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& e
   seq.pendingInsert = std::make_unique<Item>(std::move(item));
 }
 
-void Translator::texture(P::CallOperationContext* op, Sequence& seq, const Env& env) {
+// set(material.X, v) and texture(x) (= set(material.colormap, x)): Material("X", v). An
+// image is found as CityEngine finds it (assetPath); "" is "none" (no image).
+void Translator::materialItem(P::CallOperationContext* op, const std::string& property, const Env& env, Sequence& seq) {
   const auto argCtx = op->expr();
   const SourceRange at = rangeOf(op);
-  ExprPtr image = expr(argCtx.back(), env);
-  if (!image) return;
-  if (image->kind == ExprKind::String && !image->text.empty() && !assetPath(image->text, at, "texture")) return;
-  if (image->kind == ExprKind::String && image->text.empty()) image->text = "none";
-  Item item = command("Texture", at);
-  item.args.push_back(std::move(image));
-  if (seq.tileW && seq.tileH) {
-    item.args.push_back(cloneExpr(*seq.tileW));
-    item.args.push_back(cloneExpr(*seq.tileH));
+  ExprPtr value = expr(argCtx.back(), env);
+  if (!value) return;
+  if (property == "normalmap" || property == "colormap") {
+    if (value->kind != ExprKind::String) {
+      notSupported(rangeOf(argCtx.back()), "an image name that is not a constant string");
+      return;
+    }
+    if (value->text.empty()) value->text = "none";
+    else if (value->text != "none" && !assetPath(value->text, at, "texture")) return;
+  }
+  Item item = command("Material", at);
+  item.args.push_back(stringExpr(property, rangeOf(argCtx[0])));
+  item.args.push_back(std::move(value));
+  seq.out.items.push_back(std::move(item));
+}
+
+// CGA's uv operations on uv set 0 (other sets are E801): setupProjection(0, scope.xz, w, h)
+// SetupProjection("xz", w, h), tileUV TileUV, scaleUV ScaleUV, translateUV TranslateUV,
+// rotateUV RotateUV, normalizeUV(0, mode, collectiveAllFaces) NormalizeUV(mode);
+// projectUV(0) does nothing: the projection applies to the leaves below it when they are
+// output. A relative size `'x` is x times the scope's size along the axis (setupProjection)
+// or the shape's extent in the projection (tileUV); `~w` a floating size.
+void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequence& seq) {
+  const std::string name = op->name->getText();
+  const auto argCtx = op->expr();
+  const SourceRange at = rangeOf(op);
+  struct Form {
+    const char* cga;
+    const char* fgsg;
+    size_t args;
+    const char* forms;
+  };
+  static const Form kForms[] = {
+      {"setupProjection", "SetupProjection", 4, "4 arguments (uvSet, scope.xy, textureWidth, textureHeight)"},
+      {"projectUV", "", 1, "1 argument (the uv set)"},
+      {"tileUV", "TileUV", 3, "3 arguments (uvSet, textureWidth, textureHeight)"},
+      {"scaleUV", "ScaleUV", 3, "3 arguments (uvSet, uFactor, vFactor)"},
+      {"translateUV", "TranslateUV", 3, "3 arguments (uvSet, uOffset, vOffset)"},
+      {"rotateUV", "RotateUV", 2, "2 arguments (uvSet, angle)"},
+      {"normalizeUV", "NormalizeUV", 3, "3 arguments (uvSet, uv|uvUniform|u|v, separatePerFace|collectiveAllFaces)"}};
+  const Form* form = nullptr;
+  for (const Form& f : kForms)
+    if (name == f.cga) form = &f;
+  if (name == "setupProjection" && (argCtx.size() == 6 || argCtx.size() == 7)) {
+    notSupported(rangeOf(argCtx[4]), "setupProjection's offsets and uwFactor");
+    return;
+  }
+  if (argCtx.size() != form->args) {
+    error("E016", rangeOf(op->name), "'" + name + "' takes " + form->forms + ", got " + std::to_string(argCtx.size()));
+    return;
+  }
+  if (argCtx[0]->getText() != "0") {
+    notSupported(rangeOf(argCtx[0]), "a uv set other than 0 (the colour map's)");
+    return;
+  }
+  if (!*form->fgsg) return;  // projectUV
+  Item item = command(form->fgsg, at);
+  size_t first = 1;
+  if (name == "setupProjection") {
+    const std::string axes = selectorWord(argCtx[1]);
+    static const char* const kAxes[] = {"scope.xy", "scope.xz", "scope.yz", "scope.yx", "scope.zx", "scope.zy"};
+    bool known = false;
+    for (const char* k : kAxes) known |= axes == k;
+    if (!known) {
+      if (axes.rfind("world.", 0) == 0) notSupported(rangeOf(argCtx[1]), "a projection in the world's axes");
+      else error("E028", rangeOf(argCtx[1]), "setupProjection's axes are scope.xy, scope.xz, scope.yz, scope.yx, scope.zx or scope.zy, not '" + argCtx[1]->getText() + "'");
+      return;
+    }
+    item.args.push_back(stringExpr(axes.substr(6), rangeOf(argCtx[1])));
+    first = 2;
+  }
+  if (name == "normalizeUV") {
+    const std::string mode = selectorWord(argCtx[1]), type = selectorWord(argCtx[2]);
+    if (mode != "uv" && mode != "uvUniform" && mode != "u" && mode != "v") {
+      error("E028", rangeOf(argCtx[1]), "normalizeUV's mode is uv, uvUniform, u or v, not '" + argCtx[1]->getText() + "'");
+      return;
+    }
+    if (type == "separatePerFace") {
+      notSupported(rangeOf(argCtx[2]), "normalizeUV per face (separatePerFace)");
+      return;
+    }
+    if (type != "collectiveAllFaces") {
+      error("E028", rangeOf(argCtx[2]), "normalizeUV's type is separatePerFace or collectiveAllFaces, not '" + argCtx[2]->getText() + "'");
+      return;
+    }
+    item.args.push_back(stringExpr(mode, rangeOf(argCtx[1])));
+    seq.out.items.push_back(std::move(item));
+    return;
+  }
+  const bool sized = name == "setupProjection" || name == "tileUV";
+  for (size_t k = first; k < argCtx.size(); ++k) {
+    Env e = env;
+    if (sized) {
+      // 'x: fgsg's relative size (the runtime knows what it is relative to).
+      e.relativeAxis = 3;
+      e.relativeIndex = name == "setupProjection" ? item.args[0]->text[k - first] - 'x' : 0;
+    }
+    ExprPtr v = expr(argCtx[k], e);
+    if (!v) return;
+    item.args.push_back(std::move(v));
   }
   seq.out.items.push_back(std::move(item));
 }

@@ -134,7 +134,8 @@ class Translator {
   void compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq, const Env& env);
   bool offsetComp(const std::vector<P::OperationContext*>& ops, size_t next, Item& offset, const Env& env);
   void insert(P::CallOperationContext* op, Sequence& seq, const Env& env);
-  void texture(P::CallOperationContext* op, Sequence& seq, const Env& env);
+  void materialItem(P::CallOperationContext* op, const std::string& property, const Env& env, Sequence& seq);
+  void uvOperation(P::CallOperationContext* op, const Env& env, Sequence& seq);
   // cga_shape_operations.cpp: true when the call is one of issue #44's footprint-shaping or
   // scope operations; `item` is then its command (empty after an error).
   bool shapeOperation(P::CallOperationContext* op, const Env& env, std::optional<Item>& item);

@@ -2,9 +2,12 @@
 
 #include "runtime/io/glb_container.h"
 #include "runtime/io/glb_writer.h"
+#include "runtime/io/float_text.h"
 #include "runtime/io/mesh_attributes.h"
 #include "runtime/output/start_extras.h"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -12,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -53,6 +57,40 @@ bool flatShaded(const Mesh& m) {
     }
   }
   return true;
+}
+
+// Per vertex the tangent a normal map needs (glTF's TANGENT: xyz along +u on the surface,
+// w the bitangent's side), from the triangles' uv gradients (`texcoords` as written: v
+// down), made perpendicular to the vertex normal; a vertex no triangle gives a gradient
+// gets any unit vector across its normal.
+std::vector<float> normalMapTangents(const float* positions, const float* normals, const float* texcoords,
+                                     size_t vertices, const std::vector<uint32_t>& indices) {
+  using V = Eigen::Vector3d;
+  std::vector<V> t(vertices, V::Zero()), b(vertices, V::Zero());
+  const auto at = [](const float* p, uint32_t k) { return V(p[3 * k], p[3 * k + 1], p[3 * k + 2]); };
+  for (size_t f = 0; f + 2 < indices.size(); f += 3) {
+    const uint32_t i0 = indices[f], i1 = indices[f + 1], i2 = indices[f + 2];
+    const V e1 = at(positions, i1) - at(positions, i0), e2 = at(positions, i2) - at(positions, i0);
+    const double du1 = texcoords[2 * i1] - texcoords[2 * i0], dv1 = texcoords[2 * i1 + 1] - texcoords[2 * i0 + 1];
+    const double du2 = texcoords[2 * i2] - texcoords[2 * i0], dv2 = texcoords[2 * i2 + 1] - texcoords[2 * i0 + 1];
+    const double r = du1 * dv2 - du2 * dv1;
+    if (!(std::abs(r) > 1e-20)) continue;
+    const V tf = (e1 * dv2 - e2 * dv1) / r, bf = (e2 * du1 - e1 * du2) / r;
+    for (uint32_t k : {i0, i1, i2}) t[k] += tf, b[k] += bf;
+  }
+  std::vector<float> out(4 * vertices);
+  for (size_t v = 0; v < vertices; ++v) {
+    V n = at(normals, uint32_t(v));
+    if (!(n.norm() > 0)) n = V::UnitZ();
+    n.normalize();
+    V x = t[v] - n * n.dot(t[v]);
+    if (!(x.norm() > 1e-12)) x = n.unitOrthogonal();
+    x.normalize();
+    const float w = n.cross(x).dot(b[v]) < 0 ? -1.0f : 1.0f;
+    for (int d = 0; d < 3; ++d) out[4 * v + d] = float(x[d]);
+    out[4 * v + 3] = w;
+  }
+  return out;
 }
 
 // A baked part's vertex attributes as written, equal vertices (in every attribute
@@ -127,6 +165,7 @@ class Writer {
   json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(), nodes_ = json::array();
   std::map<uint32_t, json> sharedAttributes_;                  // per shared mesh, its vertex accessors
   std::map<uint32_t, int> sharedIndices_;                      // ... and its indices' accessor
+  std::map<uint32_t, int> sharedTangents_;                     // ... and its tangents' (normal maps)
   std::map<std::pair<uint32_t, uint32_t>, int> sharedMeshes_;  // (shared mesh, material) -> glTF mesh
   std::map<uint32_t, int> materialOut_;  // Scene::materials index -> the file's (only those used)
   json materials_ = json::array();
@@ -248,6 +287,19 @@ int Writer::sharedMesh(uint32_t mesh, uint32_t material) {
   const auto at = sharedMeshes_.find({mesh, material});
   if (at != sharedMeshes_.end()) return at->second;
   json attributes = sharedAttributes(mesh);
+  const Material& look = scene_.materials[material];
+  const Mesh& m = *scene_.meshes[mesh].mesh;
+  if (look.image >= 0 && look.normalImage >= 0 && m.hasTexcoords() && io::hasNormals(m)) {
+    // The tangents of a normal-mapped shared mesh, once per mesh.
+    auto [it, added] = sharedTangents_.emplace(mesh, -1);
+    if (added) {
+      const std::vector<float> n = unitNormals(m), t = flippedTexcoords(m, scene_.meshes[mesh].uvShift);
+      const std::vector<uint32_t> indices(m.indices.begin(), m.indices.end());
+      const std::vector<float> tangents = normalMapTangents(m.positions.data(), n.data(), t.data(), m.vertexCount(), indices);
+      it->second = accessor(view(tangents.data(), tangents.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC4");
+    }
+    attributes["TANGENT"] = it->second;
+  }
   json primitive = {{"attributes", attributes}, {"indices", sharedIndices_[mesh]}, {"material", this->material(material)}, {"mode", kTriangles}};
   meshes_.push_back({{"name", scene_.meshes[mesh].name}, {"primitives", json::array({primitive})}});
   return sharedMeshes_[{mesh, material}] = int(meshes_.size() - 1);
@@ -311,7 +363,11 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     const Mesh& m = part.mesh;
     const Material& untextured = scene_.materials[part.materials.back()];
     const bool colored = untextured.vertexColors && io::hasColors(m);
-    const WeldedVertices w = weld(m, io::hasNormals(m) && !flatShaded(m), colored);
+    // A normal map needs normals and tangents (glTF ignores tangents without normals).
+    bool normalMapped = false;
+    for (uint32_t k : part.materials) normalMapped |= scene_.materials[k].image >= 0 && scene_.materials[k].normalImage >= 0;
+    normalMapped = normalMapped && m.hasTexcoords() && io::hasNormals(m);
+    const WeldedVertices w = weld(m, io::hasNormals(m) && (normalMapped || !flatShaded(m)), colored);
     json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
     if (!w.normals.empty())
       attributes["NORMAL"] = accessor(view(w.normals.data(), w.normals.size(), kArrayBuffer), w.count, kFloat, "VEC3");
@@ -341,6 +397,11 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     };
     for (int32_t t = 0; t < int32_t(m.textures.size()); ++t) add(t);
     add(-1);
+    if (normalMapped && !indices.empty()) {
+      const std::vector<float> tangents =
+          normalMapTangents(w.positions.data(), w.normals.data(), w.texcoords.data(), w.count, indices);
+      attributes["TANGENT"] = accessor(view(tangents.data(), tangents.size(), kArrayBuffer), w.count, kFloat, "VEC4");
+    }
     if (!indices.empty()) {
       const auto [v, type] = indexView(indices, w.count);
       const size_t size = type == kUnsignedShort ? 2 : 4;
@@ -413,15 +474,32 @@ int Writer::startNode(const StartNode& s) {
 }
 
 json Writer::materialJson(const Material& m) {
-  json pbr = {{"metallicFactor", 0.0}, {"roughnessFactor", 0.8}};
-  if (!m.vertexColors && m.color != std::array<float, 3>{1, 1, 1})
-    pbr["baseColorFactor"] = {io::clamp01(m.color[0]), io::clamp01(m.color[1]), io::clamp01(m.color[2]), 1.0f};
-  if (m.image >= 0) {
-    const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(m.image));
-    pbr["baseColorTexture"] = {{"index", at - imagesOut_.begin()}};
-    if (at == imagesOut_.end()) imagesOut_.push_back(uint32_t(m.image));
+  // The defaults (roughness 0.8, metallic 0) as the numbers every material had before.
+  // Others as their shortest decimal (0.3, not the float's 0.30000001192092896).
+  const auto factor = [](float x) {
+    if (x == 0.8f) return json(0.8);
+    char text[io::kMaxFloatText + 1];
+    *io::putShortestFloat(text, io::clamp01(x)) = '\0';
+    return json(std::strtod(text, nullptr));
+  };
+  json pbr = {{"metallicFactor", factor(m.metallic)}, {"roughnessFactor", factor(m.roughness)}};
+  const float alpha = io::clamp01(m.opacity);
+  if ((!m.vertexColors && m.color != std::array<float, 3>{1, 1, 1}) || alpha < 1) {
+    const std::array<float, 3> c = m.vertexColors ? std::array<float, 3>{1, 1, 1} : m.color;
+    pbr["baseColorFactor"] = {io::clamp01(c[0]), io::clamp01(c[1]), io::clamp01(c[2]), alpha};
   }
-  return {{"doubleSided", true}, {"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
+  const auto texture = [&](int32_t image) {
+    const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(image));
+    if (at == imagesOut_.end()) imagesOut_.push_back(uint32_t(image));
+    return json{{"index", std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(image)) - imagesOut_.begin()}};
+  };
+  if (m.image >= 0) pbr["baseColorTexture"] = texture(m.image);
+  json out = {{"doubleSided", true}, {"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
+  // CGA's material.opacity: blended where below 1. The normal map on the base colour's
+  // coordinates (TEXCOORD_0): only where there is a base colour image.
+  if (alpha < 1) out["alphaMode"] = "BLEND";
+  if (m.image >= 0 && m.normalImage >= 0) out["normalTexture"] = texture(m.normalImage);
+  return out;
 }
 
 bool Writer::verticesFinite(std::string& error) const {

@@ -211,8 +211,11 @@ std::string mtlSceneText(const Scene& scene, const std::string& mtlFolder) {
     const Material& m = scene.materials[k];
     const std::array<float, 3> kd = m.vertexColors ? std::array<float, 3>{1, 1, 1} : m.color;
     text += "\nnewmtl " + token(m.name) + "\nKd " + number(kd[0]) + " " + number(kd[1]) + " " + number(kd[2]) +
-            "\nKa 0 0 0\nKs 0 0 0\nd 1\nillum 1\nPr 0.8\nPm 0\n";
+            "\nKa 0 0 0\nKs 0 0 0\nd " + number(m.opacity) + "\nillum 1\nPr " + number(m.roughness) + "\nPm " +
+            number(m.metallic) + "\n";
     if (m.image >= 0) text += "map_Kd " + io::pathFrom(mtlFolder, scene.images[size_t(m.image)]) + "\n";
+    // The normal map (the PBR extension's `norm`), on the colour image's coordinates as in glTF.
+    if (m.image >= 0 && m.normalImage >= 0) text += "norm " + io::pathFrom(mtlFolder, scene.images[size_t(m.normalImage)]) + "\n";
   }
   return text;
 }

@@ -156,7 +156,7 @@ struct Builder {
     return it->second;
   }
 
-  std::map<std::tuple<float, float, float, int32_t, bool>, uint32_t> materialIndex;
+  std::map<std::tuple<float, float, float, int32_t, bool, float, float, float, int32_t>, uint32_t> materialIndex;
   // The last material asked for: instances after one another mostly share theirs.
   Material lastMaterial;
   uint32_t lastMaterialIndex = kNone;
@@ -165,10 +165,13 @@ struct Builder {
 
   uint32_t material(const Material& m) {
     if (lastMaterialIndex != kNone && m.color == lastMaterial.color && m.image == lastMaterial.image &&
-        m.vertexColors == lastMaterial.vertexColors)
+        m.vertexColors == lastMaterial.vertexColors && m.roughness == lastMaterial.roughness &&
+        m.metallic == lastMaterial.metallic && m.opacity == lastMaterial.opacity && m.normalImage == lastMaterial.normalImage)
       return lastMaterialIndex;
-    const auto [it, added] = materialIndex.emplace(std::make_tuple(m.color[0], m.color[1], m.color[2], m.image, m.vertexColors),
-                                                   uint32_t(scene.materials.size()));
+    const auto [it, added] =
+        materialIndex.emplace(std::make_tuple(m.color[0], m.color[1], m.color[2], m.image, m.vertexColors, m.roughness,
+                                              m.metallic, m.opacity, m.normalImage),
+                              uint32_t(scene.materials.size()));
     if (added) {
       scene.materials.push_back(m);
       scene.materials.back().name = uniqueName(m);
@@ -299,15 +302,27 @@ struct Builder {
     }
   }
 
-  Material materialOf(const Instance& inst) {
+  // The scene's image of InstanceList::textures entry `texture`.
+  int32_t imageOf(uint32_t texture) {
+    if (imageOfTexture.size() <= texture) imageOfTexture.resize(size_t(texture) + 1, kNone);
+    uint32_t& img = imageOfTexture[texture];
+    if (img == kNone) img = image(list.textures[texture]);
+    return int32_t(img);
+  }
+
+  // A material's finish: instance i's (InstanceList::finishOf), the default where none.
+  void applyFinish(Material& m, const Finish* f) {
+    if (!f) return;
+    m.roughness = f->roughness, m.metallic = f->metallic, m.opacity = f->opacity;
+    if (f->normalMap != kNone && f->normalMap < list.textures.size()) m.normalImage = imageOf(f->normalMap);
+  }
+
+  Material materialOf(uint32_t i) {
+    const Instance& inst = list.instances[i];
     Material m;
     m.color = inst.color;
-    if (inst.texture != kNone) {
-      if (imageOfTexture.size() <= inst.texture) imageOfTexture.resize(size_t(inst.texture) + 1, kNone);
-      uint32_t& img = imageOfTexture[inst.texture];
-      if (img == kNone) img = image(list.textures[inst.texture]);
-      m.image = int32_t(img);
-    }
+    if (inst.texture != kNone) m.image = imageOf(inst.texture);
+    applyFinish(m, list.finishOf(i));
     return m;
   }
 
@@ -356,7 +371,7 @@ struct Builder {
       }
       const Instance& inst = list.instances[i];
       const bool mirrored = fitOf[i] == TrsFit::Mirrored;
-      Material look = materialOf(inst);
+      Material look = materialOf(i);
       if (vary) look.color = {1, 1, 1}, look.vertexColors = true;
       const uint32_t mat = material(look);
       const auto key = std::make_tuple(sharedOf[i], mat, mirrored);
@@ -422,19 +437,19 @@ struct Builder {
       if (at == g.bakedAssets.end()) g.bakedAssets.push_back({name, count});
       else at->second += count;
     }
-    std::vector<std::array<float, 3>> colors;
+    // By colour (one where they vary) and finish (InstanceList::finishIndex, 0: default).
+    using Look = std::pair<std::array<float, 3>, uint32_t>;
+    std::vector<Look> looks;
     std::vector<std::vector<uint32_t>> byColor;
-    if (vary)
-      byColor.assign(1, baked);
-    else
-      for (size_t last = 0; uint32_t i : baked) {
-        const auto& c = list.instances[i].color;
-        const size_t k = last < colors.size() && c == colors[last] ? last
-                                                                    : size_t(std::find(colors.begin(), colors.end(), c) - colors.begin());
-        if (k == colors.size()) colors.push_back(c), byColor.emplace_back();
-        byColor[k].push_back(i);
-        last = k;
-      }
+    for (size_t last = 0; uint32_t i : baked) {
+      const Look c{vary ? std::array<float, 3>{1, 1, 1} : list.instances[i].color,
+                   i < list.finishIndex.size() ? list.finishIndex[i] : 0};
+      const size_t k = last < looks.size() && c == looks[last] ? last
+                                                                : size_t(std::find(looks.begin(), looks.end(), c) - looks.begin());
+      if (k == looks.size()) looks.push_back(c), byColor.emplace_back();
+      byColor[k].push_back(i);
+      last = k;
+    }
     const bool perVertex = vary;
     for (size_t k = 0; k < byColor.size(); ++k) {
       BakedPart part;
@@ -445,7 +460,8 @@ struct Builder {
       if (perVertex)
         base.vertexColors = true;
       else
-        base.color = colors[k];
+        base.color = looks[k].first;
+      applyFinish(base, list.finishOf(byColor[k].front()));
       for (const std::string& path : part.mesh.textures) {
         Material m = base;
         m.image = int32_t(image(path));

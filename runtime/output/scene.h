@@ -76,7 +76,7 @@ struct SharedMesh {
   size_t uses = 0;                     // instances placing it, in the whole scene
 };
 
-// A glTF PBR material (metallic 0, roughness 0.8, double-sided): base colour factor, and
+// A glTF PBR material (double-sided): base colour factor, and
 // image (index into Scene::images, -1: none; sampled with REPEAT); vertexColors: the
 // colours vary (scene.cpp, kMaxBakedColors) and are per vertex (COLOR_0) or per instance
 // (_COLOR_0), the factor white.
@@ -84,6 +84,11 @@ struct Material {
   std::array<float, 3> color{1, 1, 1};
   int32_t image = -1;
   bool vertexColors = false;
+  // CGA's material attributes (rt::Finish): roughness, metallic, opacity (< 1: alpha
+  // blended) and a normal map (index into Scene::images, -1: none; drawn with the base
+  // colour image's texture coordinates, so only where there is one).
+  float roughness = 0.8f, metallic = 0.0f, opacity = 1.0f;
+  int32_t normalImage = -1;
   // Unique in the scene, no spaces (an OBJ's `usemtl` takes it): the image's file name
   // without extension, then the colour as rrggbb or "vertex_colors" ("brick_ffffff",
   // "d8c4a2"), with _2, _3, ... after a name taken by a colour that rounds alike.

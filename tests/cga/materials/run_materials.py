@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+"""CGA's materials and uv operations (issue #44) read back from the glTF scenes fgsg writes.
+
+run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10 and
+uv_operations.cga / uv_operations.fgsg on lots/street40x12 (tests/cga/corpus/lots), each
+with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --group-by
+symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
+engines' files to be the same bytes, the Khronos validator to find no errors and no
+warnings, and the material factors, texture slots and texture coordinate ranges the
+.cga files' comments compute by hand. Exits 1 on any failure."""
+import base64
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+
+TOL = 1e-5
+
+# Per leaf symbol: (roughness, metallic, baseColorFactor or None (the symbol's own colour,
+# not checked), alphaMode or None, base colour image, normal map).
+MATERIALS = {
+    "M1": (0.3, 1.0, None, None, False, False),
+    "M2": (0.8, 0.0, "alpha 0.5", "BLEND", False, False),
+    "M3": (0.8, 0.0, [1.0, 0.4, 0.6, 1.0], None, False, False),
+    "M4": (0.8, 0.0, [1.0, 0.5, 1.0, 1.0], None, False, False),
+    "M5": (0.55, 0.0, None, None, True, True),
+}
+# Per leaf symbol: u min, u max, v min, v max.
+UV_RANGES = {
+    "U1": (0, 2, 0, 12),
+    "U2": (0, 1, 0, 2),
+    "U3": (0, 4, 0, 18),
+    "U4": (0.5, 2.5, -1, 5),
+    "U5": (-6, 0, 0, 2),
+    "U6": (0, 4, 0, 2),
+    "U7": (0, 1, 0, 1),
+    "U8": (0, 1, 0, 12),
+    "U9": (0, 1 / 3, 0, 1),
+    "U10": (0, 1, 0, 6),
+}
+# The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
+MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
+
+failures = []
+
+
+def fail(what):
+    failures.append(what)
+    print("FAIL", what)
+
+
+def leaves(doc):
+    """Node name (without CGA's trailing '.') -> the primitives in its subtree."""
+    out = {}
+
+    def visit(k, name):
+        node = doc["nodes"][k]
+        name = node.get("name", name)
+        if "mesh" in node:
+            out.setdefault(name.rstrip("."), []).extend(doc["meshes"][node["mesh"]]["primitives"])
+        for c in node.get("children", []):
+            visit(c, name)
+
+    for root in doc["scenes"][0]["nodes"]:
+        visit(root, "")
+    return out
+
+
+def accessor_floats(doc, buffer, index):
+    a = doc["accessors"][index]
+    view = doc["bufferViews"][a["bufferView"]]
+    width = {"VEC2": 2, "VEC3": 3}[a["type"]]
+    stride = view.get("byteStride", 4 * width)
+    start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+    return [struct.unpack_from("<%df" % width, buffer, start + i * stride) for i in range(a["count"])]
+
+
+def indices(doc, buffer, index):
+    a = doc["accessors"][index]
+    view = doc["bufferViews"][a["bufferView"]]
+    fmt = {5121: "B", 5123: "H", 5125: "I"}[a["componentType"]]
+    start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+    return struct.unpack_from("<%d%s" % (a["count"], fmt), buffer, start)
+
+
+def near(a, b):
+    return abs(a - b) <= TOL * max(1.0, abs(b))
+
+
+def check_materials(doc, label):
+    by_leaf = leaves(doc)
+    for leaf, (rough, metal, color, alpha_mode, image, normal) in MATERIALS.items():
+        prims = by_leaf.get(leaf)
+        if not prims:
+            fail(f"{label}: no node {leaf}")
+            continue
+        mats = {p["material"] for p in prims if "material" in p}
+        if len(mats) != 1:
+            fail(f"{label}: {leaf} has materials {sorted(mats)}, one expected")
+            continue
+        m = doc["materials"][mats.pop()]
+        pbr = m["pbrMetallicRoughness"]
+        if not near(pbr["roughnessFactor"], rough) or not near(pbr["metallicFactor"], metal):
+            fail(f"{label}: {leaf} roughness/metallic {pbr['roughnessFactor']}/{pbr['metallicFactor']}, "
+                 f"expected {rough}/{metal}")
+        factor = pbr.get("baseColorFactor", [1, 1, 1, 1])
+        if color == "alpha 0.5":
+            if not near(factor[3], 0.5):
+                fail(f"{label}: {leaf} alpha {factor[3]}, expected 0.5")
+        elif color is not None and not all(near(x, y) for x, y in zip(factor, color)):
+            fail(f"{label}: {leaf} baseColorFactor {factor}, expected {color}")
+        elif color is None and factor[3] != 1:
+            fail(f"{label}: {leaf} alpha {factor[3]}, expected 1")
+        if m.get("alphaMode") != alpha_mode:
+            fail(f"{label}: {leaf} alphaMode {m.get('alphaMode')}, expected {alpha_mode}")
+        if ("baseColorTexture" in pbr) != image or ("normalTexture" in m) != normal:
+            fail(f"{label}: {leaf} textures {sorted(k for k in pbr if k.endswith('Texture'))} "
+                 f"normal {'normalTexture' in m}, expected image {image} normal {normal}")
+        if image and normal and pbr["baseColorTexture"]["index"] == m["normalTexture"]["index"]:
+            fail(f"{label}: {leaf} draws one image as its colour and its normals")
+
+
+def check_uvs(doc, buffer, label):
+    by_leaf = leaves(doc)
+    for leaf, expected in UV_RANGES.items():
+        uvs = []
+        for p in by_leaf.get(leaf, []):
+            if "TEXCOORD_0" not in p["attributes"]:
+                continue
+            coords = accessor_floats(doc, buffer, p["attributes"]["TEXCOORD_0"])
+            # glTF's v runs down the image: fgsg's v (up) is 1 - it.
+            uvs += [(coords[i][0], 1 - coords[i][1]) for i in indices(doc, buffer, p["indices"])]
+        if not uvs:
+            fail(f"{label}: {leaf} has no texture coordinates")
+            continue
+        got = (min(u for u, v in uvs), max(u for u, v in uvs), min(v for u, v in uvs), max(v for u, v in uvs))
+        if not all(near(g, e) for g, e in zip(got, expected)):
+            fail(f"{label}: {leaf} uv range {tuple(round(g, 6) for g in got)}, expected {expected}")
+
+
+def check_mtl(path, label):
+    text = open(path).read()
+    blocks = {}
+    for block in text.split("\nnewmtl ")[1:]:
+        lines = block.splitlines()
+        blocks[lines[0]] = dict(l.split(" ", 1) for l in lines[1:] if " " in l)
+    for leaf, (d, pr, pm) in MTL.items():
+        found = [b for b in blocks.values() if b.get("d") == d and b.get("Pr") == pr and b.get("Pm") == pm]
+        if not found:
+            fail(f"{label}: no material with d {d} Pr {pr} Pm {pm} (for {leaf}) in the .mtl")
+        elif leaf == "M5" and not any("norm" in b and "map_Kd" in b for b in found):
+            fail(f"{label}: the .mtl's {leaf} material has no `norm` and `map_Kd`")
+
+
+def main():
+    fgsg, root = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    here = os.path.join(root, "tests", "cga", "materials")
+    lots = os.path.join(root, "tests", "cga", "corpus", "lots")
+    validator = os.path.join(root, "scripts", "validate-gltf.js")
+    with tempfile.TemporaryDirectory() as tmp:
+        os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
+        for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12")):
+            for ext in ("cga", "fgsg"):
+                grammar = os.path.join(tmp, f"{name}.{ext}")
+                shutil.copy(os.path.join(here, f"{name}.{ext}"), grammar)
+                outputs = {}
+                for engine in ("interp", "jit"):
+                    label = f"{name}.{ext} ({engine})"
+                    out = os.path.join(tmp, f"{name}_{ext}_{engine}.gltf")
+                    obj = os.path.join(tmp, f"{name}_{ext}_{engine}.obj")
+                    for target, extra in ((out, ["--instancing", "off"]), (obj, [])):
+                        run = subprocess.run([fgsg, "run", grammar, "--lots", os.path.join(lots, lot + ".geojson"),
+                                              "-o", target, "--group-by", "symbol", f"--engine={engine}", "-q"] + extra,
+                                             capture_output=True, text=True, timeout=120)
+                        if run.returncode != 0:
+                            fail(f"{label}: fgsg run exited {run.returncode}: {run.stderr.strip()}")
+                            break
+                    else:
+                        outputs[engine] = open(out, "rb").read() + open(obj[:-4] + ".mtl", "rb").read()
+                        v = subprocess.run(["node", validator, "--strict", out], capture_output=True, text=True)
+                        if v.returncode != 0 or ": 0 errors, 0 warnings" not in v.stdout + v.stderr:
+                            fail(f"{label}: gltf-validator: {(v.stdout + v.stderr).strip()[-2000:]}")
+                        doc = json.load(open(out))
+                        buffer = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+                        if name == "materials":
+                            check_materials(doc, label)
+                            check_mtl(obj[:-4] + ".mtl", label)
+                        else:
+                            check_uvs(doc, buffer, label)
+                if len(outputs) == 2 and outputs["interp"] != outputs["jit"]:
+                    fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
+                if not failures:
+                    print(f"PASS {name}.{ext} (interp, jit)")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
