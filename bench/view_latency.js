@@ -57,6 +57,40 @@ function whitePng(side) {
                         chunk('IEND', Buffer.alloc(0))]);
 }
 
+// `fgsg view GRAMMAR --port 0 EXTRA...` and a headless chromium (software WebGL): calls
+// use(browser, url), then closes both, whatever happens.
+async function withViewer(grammar, extra, use) {
+  const server = spawn(fgsg, ['view', grammar, '--port', '0', ...extra], { stdio: ['ignore', 'pipe', 'inherit'] });
+  try {
+    const url = await new Promise((resolve) => {
+      let text = '';
+      server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
+    });
+    const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
+      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
+    try {
+      return await use(browser, url);
+    } finally {
+      await browser.close();
+    }
+  } finally {
+    server.kill('SIGTERM');
+  }
+}
+
+// Run in the page: the first model is in the scene.
+const firstModelShown = () => window.fgsgViewer && window.fgsgViewer.models >= 1;
+
+// A new page on the viewer, once `ready` (run in the page) holds; a crash is reported
+// with `crashHint` (what to make smaller).
+async function openViewer(browser, url, ready, timeout, crashHint = '') {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+  page.on('crash', () => console.error(`the page crashed (out of memory?)${crashHint}`));
+  await page.goto(url);
+  await page.waitForFunction(ready, null, { timeout });
+  return page;
+}
+
 async function edits() {
   const mesh = path.resolve(process.argv[5] || path.join(root, 'tests/data/meshes/bunny00.off'));
   const seedCount = Number(process.argv[6] || 25);
@@ -66,56 +100,47 @@ async function edits() {
                    fs.readFileSync(path.join(root, 'examples/ivy.fgsg'), 'utf8').replace('ivy_anywhere.png', 'mask.png')
                      .replace('const mainSteps = 120;', `const mainSteps = ${steps};`));
   fs.writeFileSync(path.join(dir, 'mask.png'), whitePng(256));
-  const server = spawn(fgsg, ['view', path.join(dir, 'ivy.fgsg'), '--port', '0', '--surface', mesh, '--surface-size', '2'],
-                       { stdio: ['ignore', 'pipe', 'inherit'] });
-  const url = await new Promise((resolve) => {
-    let text = '';
-    server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
-  });
-  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
   try {
-    const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
-    page.on('crash', () => console.error('the page crashed (out of memory?): fewer seeds or STEPS'));
-    await page.goto(url);
-    await page.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1 && window.fgsgViewer.surfaces >= 1,
-                               null, { timeout: 120000 });
-    // Seeds on surface vertices spread through the mesh's order.
-    const points = await page.evaluate((k) => window.fgsgViewer.hooks.surfacePoints(k), seedCount + 2);
-    const seeds = points.slice(0, seedCount);
-    const timed = async (message) => {
-      const n = await page.evaluate(() => window.fgsgViewer.models);
-      await page.evaluate((m) => window.fgsgViewer.hooks.send(m), message);
-      await page.waitForFunction((k) => window.fgsgViewer.models > k, n, { timeout: 120000 });
-      return page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
-                                    f: window.fgsgViewer.figures }));
-    };
-    await timed({ type: 'seeds', seeds });  // the first derivation of K seeds: not counted
-    const result = { bench: 'view_edit_latency', mesh: path.basename(mesh), seeds: seedCount, main_steps: steps,
-                     edits: runs };
-    for (const kind of ['seed_drag', 'paint']) {
-      const page_ms = [], server_ms = [], received_ms = [];
-      let polygons = 0;
-      for (let i = 0; i < runs; ++i) {
-        const message = kind === 'seed_drag'
-          ? { type: 'seeds', seeds: [points[seedCount + (i % 2)], ...seeds.slice(1)] }
-          : { type: 'paint', texture: 'mask', stroke: i, dabs: [seeds[0]], radius: 0.1, strength: 1, value: i % 2 ? 1 : 0 };
-        const r = await timed(message);
-        page_ms.push(r.t.shown - r.t.sent);
-        received_ms.push(r.t.received - r.t.sent);
-        server_ms.push(r.s);
-        polygons = Math.max(polygons, r.f.triangles);
+    await withViewer(path.join(dir, 'ivy.fgsg'), ['--surface', mesh, '--surface-size', '2'], async (browser, url) => {
+      const surfaceShown = () => window.fgsgViewer && window.fgsgViewer.models >= 1 && window.fgsgViewer.surfaces >= 1;
+      const page = await openViewer(browser, url, surfaceShown, 120000, ': fewer seeds or STEPS');
+      // Seeds on surface vertices spread through the mesh's order.
+      const points = await page.evaluate((k) => window.fgsgViewer.hooks.surfacePoints(k), seedCount + 2);
+      const seeds = points.slice(0, seedCount);
+      const timed = async (message) => {
+        const n = await page.evaluate(() => window.fgsgViewer.models);
+        await page.evaluate((m) => window.fgsgViewer.hooks.send(m), message);
+        await page.waitForFunction((k) => window.fgsgViewer.models > k, n, { timeout: 120000 });
+        return page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
+                                      f: window.fgsgViewer.figures }));
+      };
+      await timed({ type: 'seeds', seeds });  // the first derivation of K seeds: not counted
+      const result = { bench: 'view_edit_latency', mesh: path.basename(mesh), seeds: seedCount, main_steps: steps,
+                       edits: runs };
+      for (const kind of ['seed_drag', 'paint']) {
+        const page_ms = [], server_ms = [], received_ms = [];
+        let polygons = 0;
+        for (let i = 0; i < runs; ++i) {
+          const message = kind === 'seed_drag'
+            ? { type: 'seeds', seeds: [points[seedCount + (i % 2)], ...seeds.slice(1)] }
+            : { type: 'paint', texture: 'mask', stroke: i, dabs: [seeds[0]], radius: 0.1, strength: 1,
+                value: i % 2 ? 1 : 0 };
+          const r = await timed(message);
+          page_ms.push(r.t.shown - r.t.sent);
+          received_ms.push(r.t.received - r.t.sent);
+          server_ms.push(r.s);
+          polygons = Math.max(polygons, r.f.triangles);
+        }
+        Object.assign(result, { [`${kind}_triangles`]: polygons,
+          [`${kind}_page_ms_median`]: +median(page_ms).toFixed(1), [`${kind}_page_ms_p95`]: +p95(page_ms).toFixed(1),
+          [`${kind}_received_ms_median`]: +median(received_ms).toFixed(1),
+          [`${kind}_server_ms_median`]: +median(server_ms).toFixed(1),
+          [`${kind}_server_ms_p95`]: +p95(server_ms).toFixed(1) });
       }
-      Object.assign(result, { [`${kind}_triangles`]: polygons,
-        [`${kind}_page_ms_median`]: +median(page_ms).toFixed(1), [`${kind}_page_ms_p95`]: +p95(page_ms).toFixed(1),
-        [`${kind}_received_ms_median`]: +median(received_ms).toFixed(1),
-        [`${kind}_server_ms_median`]: +median(server_ms).toFixed(1), [`${kind}_server_ms_p95`]: +p95(server_ms).toFixed(1) });
-    }
-    result.surfaces_sent = await page.evaluate(() => window.fgsgViewer.surfaces);  // 1: no edit recompiled
-    console.log(JSON.stringify(result));
+      result.surfaces_sent = await page.evaluate(() => window.fgsgViewer.surfaces);  // 1: no edit recompiled
+      console.log(JSON.stringify(result));
+    });
   } finally {
-    await browser.close();
-    server.kill('SIGTERM');
     fs.rmSync(dir, { recursive: true, force: true });
   }
 }
@@ -130,33 +155,24 @@ Layer(k) : k < n ~> [ Row(0) ] T(0, 0, 2) Layer(k + 1);
 Row(j) : j < n ~> [ Cube(0) ] T(0, 2, 0) Row(j + 1);
 Cube(i) : i < n ~> [ I("cube") ] T(2, 0, 0) Cube(i + 1);
 `);
-  const server = spawn(fgsg, ['view', grammar, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
-  const url = await new Promise((resolve) => {
-    let text = '';
-    server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
-  });
-  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
   try {
-    const result = { bench: 'view_million', cubes: side ** 3, loads: runs, server_ms: [], announced_ms: [],
-                     received_ms: [], shown_ms: [] };
-    for (let i = 0; i < runs; ++i) {
-      const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
-      await page.goto(url);
-      await page.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1, null, { timeout: 300000 });
-      const r = await page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
-                                             n: window.fgsgViewer.instanced }));
-      result.server_ms.push(Math.round(r.s));
-      result.announced_ms.push(Math.round(r.t.announced));
-      result.received_ms.push(Math.round(r.t.received));
-      result.shown_ms.push(Math.round(r.t.shown));
-      result.instanced = r.n;
-      await page.close();
-    }
-    console.log(JSON.stringify(result));
+    await withViewer(grammar, [], async (browser, url) => {
+      const result = { bench: 'view_million', cubes: side ** 3, loads: runs, server_ms: [], announced_ms: [],
+                       received_ms: [], shown_ms: [] };
+      for (let i = 0; i < runs; ++i) {
+        const page = await openViewer(browser, url, firstModelShown, 300000, ': a smaller SIDE');
+        const r = await page.evaluate(() => ({ t: window.fgsgViewer.timing, s: window.fgsgViewer.serverMilliseconds,
+                                               n: window.fgsgViewer.instanced }));
+        result.server_ms.push(Math.round(r.s));
+        result.announced_ms.push(Math.round(r.t.announced));
+        result.received_ms.push(Math.round(r.t.received));
+        result.shown_ms.push(Math.round(r.t.shown));
+        result.instanced = r.n;
+        await page.close();
+      }
+      console.log(JSON.stringify(result));
+    });
   } finally {
-    await browser.close();
-    server.kill('SIGTERM');
     fs.rmSync(dir, { recursive: true, force: true });
   }
 }
@@ -164,18 +180,9 @@ Cube(i) : i < n ~> [ I("cube") ] T(2, 0, 0) Cube(i + 1);
 if (process.argv[4] === 'edits') edits();
 else if (process.argv[4] === 'million') million();
 else (async () => {
-  const server = spawn(fgsg, ['view', path.join(root, 'examples/mueller_building.fgsg'), '--port', '0',
-                              '--set', 'lot_width=31'], { stdio: ['ignore', 'pipe', 'inherit'] });
-  const url = await new Promise((resolve) => {
-    let text = '';
-    server.stdout.on('data', (d) => { text += d; const m = text.match(/http:\/\/[^ \n]+/); if (m) resolve(m[0]); });
-  });
-  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
-  try {
-    const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
-    await page.goto(url);
-    await page.waitForFunction(() => window.fgsgViewer && window.fgsgViewer.models >= 1, null, { timeout: 60000 });
+  const building = path.join(root, 'examples/mueller_building.fgsg');
+  await withViewer(building, ['--set', 'lot_width=31'], async (browser, url) => {
+    const page = await openViewer(browser, url, firstModelShown, 60000);
     const page_ms = [], server_ms = [];
     let triangles = 0;
     for (let i = 0; i < runs; ++i) {
@@ -192,8 +199,5 @@ else (async () => {
     console.log(JSON.stringify({ bench: 'view_latency', triangles, changes: runs,
       page_ms_median: +median(page_ms).toFixed(1), page_ms_max: +Math.max(...page_ms).toFixed(1),
       server_ms_median: +median(server_ms).toFixed(1) }));
-  } finally {
-    await browser.close();
-    server.kill('SIGTERM');
-  }
+  });
 })();
