@@ -1,5 +1,6 @@
 // CityEngine's split sizing for the `.cga` dialect (rt::cga::cityEngineSizes): what is
 // left empty and what is cut, instead of fgsg's "parts fill the scope" (R002).
+#include "runtime/cga/axis_names.h"
 #include "runtime/cga/cga.h"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 namespace fgsg::rt::cga {
 namespace {
 
-constexpr char kAxisNames[] = "XYZ";
 // A part shorter than this (relative to the scope) is not generated: what a cut leaves
 // of it is rounding.
 constexpr double kMinPart = 1e-9;

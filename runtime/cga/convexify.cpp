@@ -22,28 +22,28 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Partition_traits_2<Kernel>;
-using Ring = std::vector<Vec2>;
+using PlanRing = std::vector<Vec2>;
 
 constexpr size_t kOptimalCorners = 32;
 
-double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
+double cornerCross(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
 // Corners on a straight line between their neighbours dropped: they are no corners to cut at.
-Ring withoutStraightCorners(const Ring& ring, double eps) {
-  Ring out;
+PlanRing withoutStraightCorners(const PlanRing& ring, double eps) {
+  PlanRing out;
   const size_t n = ring.size();
   for (size_t i = 0; i < n; ++i) {
     const Vec2& prev = ring[(i + n - 1) % n];
     const Vec2& next = ring[(i + 1) % n];
-    if (std::abs(cross(prev, ring[i], next)) > eps * (next - prev).norm()) out.push_back(ring[i]);
+    if (std::abs(cornerCross(prev, ring[i], next)) > eps * (next - prev).norm()) out.push_back(ring[i]);
   }
   return out;
 }
 
 // Where ring a runs from p to q and ring b from q to p: a's index of p (or -1).
-int sharedEdge(const Ring& a, const Ring& b, size_t& bIndex) {
+int sharedEdge(const PlanRing& a, const PlanRing& b, size_t& bIndex) {
   for (size_t i = 0; i < a.size(); ++i) {
     const Vec2& p = a[i];
     const Vec2& q = a[(i + 1) % a.size()];
@@ -54,8 +54,8 @@ int sharedEdge(const Ring& a, const Ring& b, size_t& bIndex) {
 }
 
 // a and b joined along their shared edge (a's corner i to i + 1, b's corner j to j + 1).
-Ring joined(const Ring& a, size_t i, const Ring& b, size_t j) {
-  Ring out;
+PlanRing joined(const PlanRing& a, size_t i, const PlanRing& b, size_t j) {
+  PlanRing out;
   for (size_t k = 0; k < a.size(); ++k) out.push_back(a[(i + 1 + k) % a.size()]);  // a from q round to p
   for (size_t k = 2; k < b.size(); ++k) out.push_back(b[(j + k) % b.size()]);      // b past p, before q
   return out;
@@ -68,7 +68,7 @@ bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, do
   FlatPolygon poly;
   if (!flatPolygon(scope, geom, arena, "convexify", poly, error)) return false;
   const double size = (poly.scope.S.x() + poly.scope.S.y());
-  const Ring ring = withoutStraightCorners(poly.ring, 1e-12 * size);
+  const PlanRing ring = withoutStraightCorners(poly.ring, 1e-12 * size);
   out = Part{scope, geom, false, 0};
   if (ring.size() < 4) return true;  // a triangle is convex
   std::vector<Traits::Point_2> points;
@@ -88,9 +88,9 @@ bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, do
     CGAL::optimal_convex_partition_2(points.begin(), points.end(), std::back_inserter(parts));
   else
     CGAL::approx_convex_partition_2(points.begin(), points.end(), std::back_inserter(parts));
-  std::vector<Ring> pieces;
+  std::vector<PlanRing> pieces;
   for (const Traits::Polygon_2& part : parts) {
-    Ring r;
+    PlanRing r;
     for (auto v = part.vertices_begin(); v != part.vertices_end(); ++v) r.emplace_back(v->x(), v->y());
     pieces.push_back(std::move(r));
   }
@@ -111,7 +111,7 @@ bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, do
   // One face per piece in the shape's own scope (unit-box coordinates), each facing the
   // way the polygon faces.
   std::vector<std::vector<Vec3>> faces;
-  for (const Ring& piece : pieces) {
+  for (const PlanRing& piece : pieces) {
     std::vector<Vec3> world, local;
     for (const Vec2& p : piece) world.push_back(poly.scope.toWorld(Vec3(p.x(), p.y(), 0.0)));
     if (newellNormal(world).dot(poly.scope.Z()) < 0) std::reverse(world.begin(), world.end());

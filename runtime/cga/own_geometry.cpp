@@ -7,7 +7,7 @@ namespace {
 
 // Appends one face, flat shaded: its own vertices, its Newell normal (in unit-box
 // coordinates, which the instance's cofactor matrix maps onto the world face's normal).
-void appendFace(const Vec3* face, std::size_t count, Mesh& out, std::vector<uint32_t>& tris) {
+void appendOwnFace(const Vec3* face, std::size_t count, Mesh& out, std::vector<uint32_t>& tris) {
   tris.clear();
   earClip(face, count, tris);
   if (tris.empty()) return;
@@ -61,7 +61,7 @@ Mesh ownGeometryMesh(const Scope& scope, const GeomRef& geom, const GeometryAren
   out.normals.reserve(3 * vertices);
   out.indices.reserve(3 * triangles);
   thread_local std::vector<uint32_t> tris;  // a face's triangles, reused from leaf to leaf
-  forEachFace(scope, geom, arena, [&](const Vec3* face, std::size_t count) { appendFace(face, count, out, tris); });
+  forEachFace(scope, geom, arena, [&](const Vec3* face, std::size_t count) { appendOwnFace(face, count, out, tris); });
   return out;
 }
 

@@ -1,4 +1,5 @@
 // Repeat: tiles a scope with equal tiles along one, two or three axes (CGA's repeat split).
+#include "runtime/cga/axis_names.h"
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
 
@@ -13,7 +14,6 @@ namespace {
 constexpr double kCountSlack = 1e-9;
 // A guard against a tile size that would produce an absurd number of shapes.
 constexpr double kMaxTiles = 1u << 24;
-constexpr char kAxisNames[] = "XYZ";
 
 struct Grid {
   std::array<std::size_t, 3> count{1, 1, 1};

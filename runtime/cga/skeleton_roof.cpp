@@ -13,6 +13,7 @@
 #include <exception>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
@@ -25,7 +26,6 @@ using Point2 = Kernel::Point_2;
 using Segment2 = Kernel::Segment_2;
 using CgalPolygon = CGAL::Polygon_2<Kernel>;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kWeldTol = 1e-9;  // relative to the footprint's extent
 
 // Plan coordinates are (x, -z): seen from above x runs right and -z up the page, so
@@ -35,12 +35,12 @@ Point2 toPlan(const Vec2& xz) { return Point2(xz.x(), -xz.y()); }
 Vec2 vec(const Point2& p) { return Vec2(p.x(), p.y()); }
 Vec3 toSpace(const Vec2& plan, double y) { return Vec3(plan.x(), y, -plan.y()); }
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double perpDot(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 double signedArea(const std::vector<Point2>& pts) {
   double twice = 0.0;
   for (std::size_t i = 0; i < pts.size(); ++i)
-    twice += cross(vec(pts[i]), vec(pts[(i + 1) % pts.size()]));
+    twice += perpDot(vec(pts[i]), vec(pts[(i + 1) % pts.size()]));
   return 0.5 * twice;
 }
 
@@ -74,7 +74,7 @@ struct Footprint {
   // Signed distance of p from edge e's line, positive on the footprint's side.
   double inside(int e, const Vec2& p) const {
     const Vec2 a = point(e), d = (point(next(e)) - a).normalized();
-    return cross(d, p - a);
+    return perpDot(d, p - a);
   }
 };
 
@@ -520,8 +520,8 @@ std::vector<int> indexedGable(const Footprint& fp, int k, double slope, RoofMesh
 Vec2 outsideBoth(const Footprint& fp, int e1, double d1, int e2, double d2) {
   const Vec2 a1 = fp.point(e1), u1 = (fp.point(fp.next(e1)) - a1).normalized();
   const Vec2 a2 = fp.point(e2), u2 = (fp.point(fp.next(e2)) - a2).normalized();
-  // inside(e, p) = cross(u, p - a) = -d  <=>  u.x p.y - u.y p.x = cross(u, a) - d
-  const double c1 = cross(u1, a1) - d1, c2 = cross(u2, a2) - d2, det = cross(u1, u2);
+  // inside(e, p) = perpDot(u, p - a) = -d  <=>  u.x p.y - u.y p.x = perpDot(u, a) - d
+  const double c1 = perpDot(u1, a1) - d1, c2 = perpDot(u2, a2) - d2, det = perpDot(u1, u2);
   if (std::abs(det) <= 1e-12) return fp.point(e2) + Vec2(u1.y(), -u1.x()) * d1;
   return Vec2((c1 * u2.x() - c2 * u1.x()) / det, (c1 * u2.y() - c2 * u1.y()) / det);
 }
@@ -553,7 +553,7 @@ void addOverhangs(const Footprint& fp, double angleRad, const RoofOverhang& over
     const Vec2 pa = fp.point(a), ua = (fp.point(fp.next(a)) - pa).normalized();
     const Vec2 pg = fp.point(g), ug = (fp.point(fp.next(g)) - pg).normalized();
     const Vec2 w = ub - ua;
-    const double c1 = cross(ub, pb) - cross(ua, pa), c2 = cross(ug, pg) - overhang.gables, det = cross(w, ug);
+    const double c1 = perpDot(ub, pb) - perpDot(ua, pa), c2 = perpDot(ug, pg) - overhang.gables, det = perpDot(w, ug);
     if (std::abs(det) <= 1e-12) continue;
     const Vec2 q((c1 * ug.x() - c2 * w.x()) / det, (c1 * ug.y() - c2 * w.y()) / det);
     moved[gable[g]] = static_cast<int>(mesh.points.size());
@@ -575,8 +575,8 @@ bool pyramidRoof(const Footprint& fp, double slope, RoofMesh& mesh, std::string&
   Vec2 moment = Vec2::Zero();
   for (int v = 0; v < fp.count; ++v) {
     const Vec2 a = fp.point(v), b = fp.point(fp.next(v));
-    area += 0.5 * cross(a, b);
-    moment += cross(a, b) / 6.0 * (a + b);
+    area += 0.5 * perpDot(a, b);
+    moment += perpDot(a, b) / 6.0 * (a + b);
   }
   const Vec2 centroid = moment / area;
   double reach = std::numeric_limits<double>::infinity();
@@ -625,7 +625,7 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
     error = "Roof: the holes could not be joined to the footprint's outline";
     return false;
   }
-  const double slope = std::tan(angleDeg * kPi / 180.0);
+  const double slope = std::tan(angleDeg * std::numbers::pi / 180.0);
   const std::vector<int> byNumber = edgesInOrder(fp);
   faces.clear();
   std::vector<int> edgeOfFace;
@@ -668,7 +668,7 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
       if (kind == SkeletonRoofKind::Gable) gables = makeGables(fp, slope, mesh);
     }
     if (kind != SkeletonRoofKind::Pyramid && (overhang.eaves > 0.0 || overhang.gables > 0.0))
-      addOverhangs(fp, angleDeg * kPi / 180.0, overhang, gables, mesh);
+      addOverhangs(fp, angleDeg * std::numbers::pi / 180.0, overhang, gables, mesh);
     for (int number = 0; number < fp.count; ++number) {
       Polygon3 face;
       for (int p : mesh.faces[byNumber[number]]) face.push_back(mesh.points[p]);

@@ -1,6 +1,7 @@
 // CityEngine's splitArea: a split along a scope axis whose sizes are areas. Each cut is the
 // plane across the axis that leaves the part before it with the area asked for; the areas
 // are laid out as a `.cga` split lays out lengths (cityEngineSizes), on the shape's area.
+#include "runtime/cga/axis_names.h"
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/shape_operations.h"
 
@@ -9,8 +10,6 @@
 
 namespace fgsg::rt::cga {
 namespace {
-
-constexpr char kAxisNames[] = "XYZ";
 
 // The area of the part of `face` whose coordinate along `dir` (from `origin`) is at most
 // `t`: the polygon clipped by one plane (Sutherland-Hodgman), measured by Newell's normal.

@@ -1,4 +1,5 @@
 // Subdiv: cuts a scope into consecutive slabs along one axis (CGA's split rule).
+#include "runtime/cga/axis_names.h"
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
 
@@ -11,7 +12,6 @@ namespace {
 
 // Absolute sizes alone must add up to the scope length within this relative tolerance.
 constexpr double kSumTol = 1e-9;
-constexpr char kSubdivAxisNames[] = "XYZ";
 
 // How each kind of size turns into a length: absolute as given, floating and relative
 // scaled by the factors that make the parts fill the scope.
@@ -37,7 +37,7 @@ bool resolveScales(const std::vector<SizeValue>& sizes, int axis, double length,
   for (const SizeValue& s : sizes) {
     if (!(s.value >= 0.0) || !std::isfinite(s.value)) {
       std::ostringstream m;
-      m << "Subdiv along " << kSubdivAxisNames[axis] << ": size " << s.value
+      m << "Subdiv along " << kAxisNames[axis] << ": size " << s.value
         << " must be a finite non-negative number";
       error = m.str();
       return false;
@@ -49,7 +49,7 @@ bool resolveScales(const std::vector<SizeValue>& sizes, int axis, double length,
   const double tol = kSumTol * std::max(1.0, length);
   auto exceed = [&](double fixed, const char* what) {
     std::ostringstream m;
-    m << "Subdiv along " << kSubdivAxisNames[axis] << ": " << what << " " << fixed
+    m << "Subdiv along " << kAxisNames[axis] << ": " << what << " " << fixed
       << " exceed the scope length " << length;
     error = m.str();
     return false;
@@ -67,7 +67,7 @@ bool resolveScales(const std::vector<SizeValue>& sizes, int axis, double length,
     scales.floating = std::max(rest, 0.0) / floating;
   } else if (std::abs(absolute - length) > tol) {
     std::ostringstream m;
-    m << "Subdiv along " << kSubdivAxisNames[axis] << ": absolute sizes sum to " << absolute
+    m << "Subdiv along " << kAxisNames[axis] << ": absolute sizes sum to " << absolute
       << " but the scope length is " << length
       << " (a relative size such as 1r or a floating size such as ~1 can absorb the difference)";
     error = m.str();
@@ -92,7 +92,7 @@ bool subdivide(const Scope& scope, const GeomRef& geom, int axis,
     return false;
   }
   if (sizes.empty()) {
-    error = std::string("Subdiv along ") + kSubdivAxisNames[axis] + ": no sizes given";
+    error = std::string("Subdiv along ") + kAxisNames[axis] + ": no sizes given";
     return false;
   }
   const double length = scope.S[axis];
@@ -135,7 +135,7 @@ bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axi
   for (const SizeValue& s : pattern) {
     if (!(s.value >= 0.0) || !std::isfinite(s.value)) {
       std::ostringstream m;
-      m << "Subdiv along " << kSubdivAxisNames[axis] << ": size " << s.value << " must be a finite non-negative number";
+      m << "Subdiv along " << kAxisNames[axis] << ": size " << s.value << " must be a finite non-negative number";
       error = m.str();
       return false;
     }
@@ -143,7 +143,7 @@ bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axi
     floating |= s.kind == SizeValue::Floating;
   }
   if (!(nominal > 0.0)) {
-    error = std::string("Subdiv along ") + kSubdivAxisNames[axis] + ": the repeated parts have no length";
+    error = std::string("Subdiv along ") + kAxisNames[axis] + ": the repeated parts have no length";
     return false;
   }
   const double fits = length / nominal;
@@ -151,7 +151,7 @@ bool repeatPattern(const std::vector<SizeValue>& pattern, double length, int axi
   const double count = floating ? std::max(1.0, std::round(fits)) : std::floor(fits + tol);
   if (!(count * pattern.size() <= double(1u << 24))) {
     std::ostringstream m;
-    m << "Subdiv along " << kSubdivAxisNames[axis] << ": a pattern of length " << nominal << " repeats more than "
+    m << "Subdiv along " << kAxisNames[axis] << ": a pattern of length " << nominal << " repeats more than "
       << (1u << 24) << " parts on a length of " << length;
     error = m.str();
     return false;
