@@ -1,5 +1,7 @@
 #include "runtime/field/exp_map.h"
 
+#include "runtime/field/complex_direction.h"
+
 #include <algorithm>
 #include <queue>
 
@@ -8,13 +10,6 @@ namespace fgsg::rt::field {
 namespace {
 
 using Complex = std::complex<double>;
-
-Complex toComplex(const Vec2& v) { return {v.x(), v.y()}; }
-
-Complex unitOr(const Complex& z, const Complex& fallback) {
-  const double len = std::abs(z);
-  return len > 0 ? z / len : fallback;
-}
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "runtime/field/geodesics.h"
 
+#include "runtime/field/complex_direction.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,13 +16,6 @@ using Complex = std::complex<double>;
 constexpr double kPoissonRegularisation = 1e-8;
 // A source barycentric coordinate this close to 1 puts the source on that vertex.
 constexpr double kOnVertex = 1e-9;
-
-Complex unitOr(const Complex& z, const Complex& fallback) {
-  const double len = std::abs(z);
-  return len > 0 ? z / len : fallback;
-}
-
-Complex toComplex(const Vec2& v) { return {v.x(), v.y()}; }
 
 }  // namespace
 
