@@ -1,5 +1,6 @@
 #include "runtime/assets.h"
 
+#include "runtime/io/file_extension.h"
 #include "runtime/io/openmesh_quiet.h"
 #include "runtime/io/read_mesh_file.h"
 #include "runtime/texture/color_texture.h"
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <utility>
 
@@ -27,7 +29,6 @@ namespace fs = std::filesystem;
 using V3 = Eigen::Vector3d;
 using V2 = Eigen::Vector2d;
 
-constexpr double kPi = 3.14159265358979323846;
 // An axis whose extent is below this fraction of the largest extent is flat: it is
 // snapped to 0 instead of being stretched to fill the unit box.
 constexpr double kFlatRelTolerance = 1e-6;
@@ -59,7 +60,7 @@ struct Builder {
 std::vector<std::pair<double, double>> circle(int segments) {
   std::vector<std::pair<double, double>> cs(segments);
   for (int j = 0; j < segments; ++j) {
-    const double a = 2.0 * kPi * j / segments;
+    const double a = 2.0 * std::numbers::pi * j / segments;
     cs[j] = {std::cos(a), std::sin(a)};
   }
   return cs;
@@ -136,7 +137,7 @@ void buildSphere(Builder& b, int segments, int rings) {
   const auto cs = circle(segments);
   const uint32_t north = b.vertex({0, 1, 0}, {0, 1, 0});
   for (int i = 1; i < rings; ++i) {
-    const double theta = kPi * i / rings;
+    const double theta = std::numbers::pi * i / rings;
     const double y = std::cos(theta), r = std::sin(theta);
     for (auto [c, s] : cs) b.vertex({r * c, y, r * s}, {r * c, y, r * s});
   }
@@ -299,7 +300,7 @@ void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris
     unit[f] = area[f].norm() > 0 ? area[f].normalized() : V3::Zero();
     for (int k = 0; k < 3; ++k) facesOf[tris[3 * f + k]].push_back(uint32_t(f));
   }
-  const double cosCrease = std::cos(kCreaseAngleDegrees * kPi / 180.0);
+  const double cosCrease = std::cos(kCreaseAngleDegrees * std::numbers::pi / 180.0);
   std::vector<std::vector<uint32_t>> copies(pos.size());  // output vertices per input vertex
   for (size_t f = 0; f < faceCount; ++f) {
     for (int k = 0; k < 3; ++k) {
@@ -322,12 +323,6 @@ void creaseNormals(const std::vector<V3>& pos, const std::vector<uint32_t>& tris
       out.idx.push_back(index);
     }
   }
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
 }
 
 // Where a triangle of a loaded asset came from: the file's polygon (the TriMesh fans
@@ -372,7 +367,7 @@ bool attachMaterialImages(const std::string& path, const io::MeshFileContent& fi
 }
 
 bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
-  const std::string ext = lowerExtension(path);
+  const std::string ext = io::lowerExtension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
     error = "asset file '" + path + "' has an unsupported format '" + ext +
             "' (supported: .obj .ply .off .stl)";

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace fgsg::rt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The search grid's smallest reach: a merge distance of 0 still finds an instance at the
 // very same place.
 constexpr double kSmallestReach = 1e-9;
@@ -49,7 +49,7 @@ Mat4 transformOf(const Pose& p) {
 }
 
 double angleDegrees(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
-  return a.angularDistance(b) * 180.0 / kPi;
+  return a.angularDistance(b) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace

@@ -8,12 +8,14 @@ namespace fgsg::rt::evolve {
 
 namespace {
 
-constexpr double kTolerance = 1e-9;
+constexpr double kSamePointTolerance = 1e-9;
 
-bool near(Point2 a, Point2 b) { return std::abs(a.x - b.x) <= kTolerance && std::abs(a.y - b.y) <= kTolerance; }
+bool nearPoint(Point2 a, Point2 b) {
+  return std::abs(a.x - b.x) <= kSamePointTolerance && std::abs(a.y - b.y) <= kSamePointTolerance;
+}
 
 bool sameSet(const std::array<Point2, 2>& p, const std::array<Point2, 2>& q) {
-  return (near(p[0], q[0]) && near(p[1], q[1])) || (near(p[0], q[1]) && near(p[1], q[0]));
+  return (nearPoint(p[0], q[0]) && nearPoint(p[1], q[1])) || (nearPoint(p[0], q[1]) && nearPoint(p[1], q[0]));
 }
 
 // Half of the 8 neighbour directions (dr, dc); the other half are their opposites.
@@ -105,7 +107,7 @@ PatternMeasure::PatternMeasure(const TileSet& tiles) : symbols_(tiles.symbolCoun
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
         const Point2 q{ends[size_t(b)][size_t(j)].x + dc, ends[size_t(b)][size_t(j)].y - dr};
-        if (near(ends[size_t(a)][size_t(i)], q)) mask |= uint8_t(1u << i);
+        if (nearPoint(ends[size_t(a)][size_t(i)], q)) mask |= uint8_t(1u << i);
       }
     return mask;
   };

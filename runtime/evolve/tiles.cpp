@@ -27,7 +27,7 @@ std::string fmt(Point2 p) { return "(" + fmt(p.x) + ", " + fmt(p.y) + ")"; }
 
 char defaultLetter(int i) { return i < 26 ? char('A' + i) : char('a' + (i - 26)); }
 
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isAsciiLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
 [[noreturn]] void fail(std::string_view source, const std::string& where, const std::string& what) {
   throw TileFileError(std::string(source) + ": " + (where.empty() ? "" : where + ": ") + what);
@@ -199,7 +199,7 @@ void validateTileSet(const TileSet& ts, std::string_view source) {
   for (size_t i = 0; i < ts.tiles.size(); ++i) {
     const Tile& t = ts.tiles[i];
     const std::string where = "symbols[" + std::to_string(i) + "]";
-    if (!isLetter(t.letter)) fail(source, where, std::string("a symbol is a letter A-Z or a-z, not '") + t.letter + "'");
+    if (!isAsciiLetter(t.letter)) fail(source, where, std::string("a symbol is a letter A-Z or a-z, not '") + t.letter + "'");
     for (size_t j = 0; j < i; ++j)
       if (ts.tiles[j].letter == t.letter) fail(source, where, std::string("letter '") + t.letter + "' is used twice");
     if (t.locus < 0 || size_t(t.locus) >= ts.loci.size()) fail(source, where, "no locus " + std::to_string(t.locus));

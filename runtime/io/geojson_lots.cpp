@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <iomanip>
+#include <numbers>
 #include <sstream>
 
 namespace fgsg::rt {
@@ -19,7 +20,6 @@ namespace {
 // Ordered, so that a lot's properties keep the order of the file.
 using Json = nlohmann::ordered_json;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kEarthRadius = 6371008.8;  // mean radius of the WGS84 ellipsoid, metres
 
 struct GeoJsonError {
@@ -293,8 +293,8 @@ void project(std::vector<Pending>& pending, bool degrees) {
     for (const LotRing& ring : p.rings)
       for (const Eigen::Vector3d& q : ring.file) lo = lo.cwiseMin(q.head<2>()), hi = hi.cwiseMax(q.head<2>());
   const Eigen::Vector2d centre = 0.5 * (lo + hi);
-  const double toMetres = kEarthRadius * kPi / 180;
-  const Eigen::Vector2d scale(toMetres * std::cos(centre.y() * kPi / 180), toMetres);
+  const double toMetres = kEarthRadius * std::numbers::pi / 180;
+  const Eigen::Vector2d scale(toMetres * std::cos(centre.y() * std::numbers::pi / 180), toMetres);
   for (Pending& p : pending)
     for (LotRing& ring : p.rings) {
       ring.xy.reserve(ring.file.size());

@@ -2,6 +2,7 @@
 // checked as lot rings.
 #include "runtime/io/mesh_lots.h"
 
+#include "runtime/io/file_extension.h"
 #include "runtime/io/lot_rings.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/read_mesh_file.h"
@@ -21,12 +22,6 @@
 namespace fgsg::rt {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // OpenMesh's OBJ reader mends faces without a word: it drops a vertex a face names twice
 // (`f 1 2 3 1 4` becomes the square 1 2 3 4), then a face left with fewer than three
@@ -96,13 +91,13 @@ double asWritten(double v) {
 }
 
 // As the ring checks write a corner, and the GeoJSON reader its limits.
-std::string fmt(const Eigen::Vector3d& p) {
+std::string lotText(const Eigen::Vector3d& p) {
   std::ostringstream s;
   s << std::setprecision(12) << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
   return s.str();
 }
 
-std::string fmt(double v) {
+std::string lotText(double v) {
   std::ostringstream s;
   s << std::setprecision(12) << v;
   return s.str();
@@ -128,11 +123,11 @@ bool facesToLots(const std::string& path, const io::MeshFileContent& mesh, std::
       const Eigen::Vector3d q(asWritten(v[0]), asWritten(v[1]), asWritten(v[2]));
       const std::string where = messages.place + ", corner " + std::to_string(k) + ": ";
       if (!q.allFinite()) {
-        error = where + fmt(q) + " is not a finite position";
+        error = where + lotText(q) + " is not a finite position";
         return false;
       }
       if (std::abs(q.x()) > kMaxLotMetres || std::abs(q.z()) > kMaxLotMetres) {
-        error = where + fmt(q) + " is more than " + fmt(kMaxLotMetres) + " m from the origin";
+        error = where + lotText(q) + " is more than " + lotText(kMaxLotMetres) + " m from the origin";
         return false;
       }
       // North is -z; 0 - z, not -z, so that z = 0 gives y = +0.
@@ -159,7 +154,7 @@ bool facesToLots(const std::string& path, const io::MeshFileContent& mesh, std::
 }  // namespace
 
 bool isMeshLotsPath(const std::string& path) {
-  const std::string ext = lowerExtension(path);
+  const std::string ext = io::lowerExtension(path);
   return ext == ".obj" || ext == ".ply" || ext == ".off";
 }
 
@@ -167,14 +162,14 @@ bool readMeshLots(const std::string& path, std::vector<Lot>& lots, std::string& 
   lots.clear();
   if (!isMeshLotsPath(path)) {
     error = path + ": lots are read from .obj, .ply or .off meshes, not from " +
-            (lowerExtension(path).empty() ? std::string("a file without an extension")
-                                          : "'" + lowerExtension(path) + "' files");
+            (io::lowerExtension(path).empty() ? std::string("a file without an extension")
+                                              : "'" + io::lowerExtension(path) + "' files");
     return false;
   }
   try {
     io::MeshFileContent mesh;
     if (!io::readMeshFile(path, mesh, error)) return false;
-    if (lowerExtension(path) == ".obj") {
+    if (io::lowerExtension(path) == ".obj") {
       std::string bytes;
       size_t faces = 0;
       if (!io::readInputFile(path, "a mesh file", bytes, error) ||

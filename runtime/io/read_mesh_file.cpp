@@ -1,6 +1,7 @@
 #include "runtime/io/read_mesh_file.h"
 
 #include "runtime/io/check_ply.h"
+#include "runtime/io/file_extension.h"
 #include "runtime/io/openmesh_quiet.h"
 #include "runtime/io/quoted_text.h"
 #include "runtime/io/read_input.h"
@@ -108,13 +109,6 @@ class RawImporter : public OpenMesh::IO::ImporterT<RawMesh> {
   std::vector<std::array<double, 2>> faceUV_;
   size_t facesWithUV_ = 0;  // the leading faces, all with coordinates
 };
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // OpenMesh's OBJ reader asserts (aborting the process) on a face corner that names no
 // vertex, such as `f /1 /2 /3`: every corner must start with a vertex index.

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace fgsg::rt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Centripetal parameterisation: knot intervals are the square roots of the chord lengths.
 constexpr double kAlpha = 0.5;
@@ -109,8 +108,8 @@ Mesh sweepTube(const std::vector<Vec3>& points, double radius, int sides, int sa
 
   std::vector<double> cosines(sides), sines(sides);
   for (int k = 0; k < sides; ++k) {
-    cosines[k] = std::cos(2 * kPi * k / sides);
-    sines[k] = std::sin(2 * kPi * k / sides);
+    cosines[k] = std::cos(2 * std::numbers::pi * k / sides);
+    sines[k] = std::sin(2 * std::numbers::pi * k / sides);
   }
   auto ringOffset = [&](size_t i, int k) {
     const Vec3 b = tangent[i].cross(normal[i]);  // (N, B, T) right-handed

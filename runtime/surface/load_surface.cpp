@@ -1,5 +1,6 @@
 #include "runtime/surface/load_surface.h"
 
+#include "runtime/io/file_extension.h"
 #include "runtime/io/read_input.h"
 #include "runtime/io/read_mesh_file.h"
 #include "runtime/surface/read_textured_mesh.h"
@@ -19,18 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 // Reads vertices and fan-triangulated polygons (and texture coordinates, where the file
 // has them); false with a message when the file cannot be read at all. `polygonal` tells
 // whether any polygon had more than three corners.
 bool readRaw(const std::string& path, SurfaceMesh& mesh, bool& polygonal, uint64_t memoryLimit, std::string& error) {
-  const std::string ext = lowerExtension(path);
+  const std::string ext = io::lowerExtension(path);
   static const char* const kFormats[] = {".obj", ".ply", ".off", ".stl", ".gltf", ".glb", ".fbx", ".dae"};
   if (std::find(std::begin(kFormats), std::end(kFormats), ext) == std::end(kFormats)) {
     error = path + ": unknown surface format '" + (ext.empty() ? std::string("(none)") : ext) +

@@ -552,7 +552,7 @@ class Solver {
   std::vector<uint8_t> mark_;     // only for connectivity
 };
 
-void describe(SynthesisFailure& f, const Problem& P) {
+void describeFailure(SynthesisFailure& f, const Problem& P) {
   std::string what;
   switch (f.kind) {
     case SynthesisFailure::kContradiction: what = "contradiction at cell " + cellText(f.cell) + " (no label fits there)"; break;
@@ -596,7 +596,7 @@ void run(Problem& P, SynthesisResult& R) {
       const bool ok = S.runBlock(all, false, order, f);
       finish(S);
       if (ok) { R.ok = R.consistent = true; return; }
-      describe(f, P);
+      describeFailure(f, P);
       R.failure = f;
       if (f.kind != SynthesisFailure::kContradiction) return;
     }
@@ -607,7 +607,7 @@ void run(Problem& P, SynthesisResult& R) {
   Solver<NW> S(P, R.labels, R.stats, o.seed);
   SynthesisFailure f;
   if (!S.runBlock(all, true, Order::kScanline, f)) {
-    describe(f, P);
+    describeFailure(f, P);
     if (f.kind == SynthesisFailure::kContradiction) {
       f.kind = SynthesisFailure::kNoInitialModel;
       f.message = "no trivial initial model (empty space) satisfies the constraints: " + f.message;
@@ -663,7 +663,7 @@ void run(Problem& P, SynthesisResult& R) {
             bf.block = blockIndex;
             bf.blockOrigin = {qx, qy, qz};
             bf.blockSize = {ex_ - qx, ey - qy, ez - qz};
-            describe(bf, P);
+            describeFailure(bf, P);
             R.failure = bf;
             if (R.blockFailures.size() < 16) R.blockFailures.push_back(bf);
             if (bf.kind != SynthesisFailure::kContradiction) { finish(S); return; }  // a limit: stop, model stays consistent
