@@ -16,13 +16,13 @@ namespace {
 constexpr size_t kMaxContextChars = 40;
 constexpr size_t kMaxTokenChars = 24;
 
-bool isUtf8Continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 // Keeps the last `maxChars` characters, cutting on a character boundary.
 std::string lastChars(const std::string& s, size_t maxChars) {
   size_t chars = 0;
   for (size_t i = s.size(); i-- > 0;) {
-    if (!isUtf8Continuation(s[i]) && ++chars == maxChars) return "..." + s.substr(i);
+    if (!isContinuationByte(s[i]) && ++chars == maxChars) return "..." + s.substr(i);
   }
   return s;
 }
@@ -30,7 +30,7 @@ std::string lastChars(const std::string& s, size_t maxChars) {
 std::string firstChars(const std::string& s, size_t maxChars) {
   size_t chars = 0;
   for (size_t i = 0; i < s.size(); ++i) {
-    if (!isUtf8Continuation(s[i]) && chars++ == maxChars) return s.substr(0, i) + "...";
+    if (!isContinuationByte(s[i]) && chars++ == maxChars) return s.substr(0, i) + "...";
   }
   return s;
 }

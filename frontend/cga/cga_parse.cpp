@@ -15,7 +15,7 @@ namespace fgsg::frontend {
 
 namespace {
 
-constexpr int kMaxErrors = 50;
+constexpr int kMaxCgaErrors = 50;
 
 // The `scatter` whose `( ... ) {` body the offending token lies in, else null: scatter's
 // body has no selector, so the grammar fails there, and the error should say why.
@@ -41,14 +41,14 @@ antlr4::Token* scatterOfBody(antlr4::Recognizer* recognizer, antlr4::Token* offe
   return name->getText() == "scatter" ? name : nullptr;
 }
 
-// ANTLR's recognition errors as E002, at most kMaxErrors; its messages name tokens as the
+// ANTLR's recognition errors as E002, at most kMaxCgaErrors; its messages name tokens as the
 // grammar spells them, which for CGA's small grammar reads well enough.
 class CgaErrorListener : public antlr4::BaseErrorListener {
  public:
   explicit CgaErrorListener(Diagnostics& diags) : diags_(diags) {}
   void syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* offending, size_t line, size_t col,
                    const std::string& msg, std::exception_ptr) override {
-    if (++count_ > kMaxErrors) return;
+    if (++count_ > kMaxCgaErrors) return;
     if (antlr4::Token* name = scatterOfBody(recognizer, offending)) {
       diags_.error("E801", cga::rangeOf(name),
                    "scatter(...){ Leaf }: its body has no selector, which the .cga grammar does not read yet "
@@ -68,7 +68,7 @@ class CgaErrorListener : public antlr4::BaseErrorListener {
   int count_ = 0;
 };
 
-bool validUtf8(const std::string& s) {
+bool isValidUtf8(const std::string& s) {
   const auto* p = reinterpret_cast<const unsigned char*>(s.data());
   for (size_t i = 0, n = s.size(); i < n;) {
     const unsigned c = p[i];
@@ -132,7 +132,7 @@ bool parseCgaText(const std::string& name, const std::string& text, Program& out
                   const std::string& startRule) {
   out.fileName = name;
   const int before = diags.errorCount();
-  if (!validUtf8(text)) {
+  if (!isValidUtf8(text)) {
     diags.error("E001", SourceRange{{1, 1}, {1, 1}}, "the file is not valid UTF-8 text");
     return false;
   }
