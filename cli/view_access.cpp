@@ -13,7 +13,7 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::string trim(const std::string& s) {
+std::string trimBlanks(const std::string& s) {
   const size_t a = s.find_first_not_of(" \t");
   if (a == std::string::npos) return "";
   return s.substr(a, s.find_last_not_of(" \t") - a + 1);
@@ -59,16 +59,16 @@ ViewAccess::ViewAccess(const std::string& host, uint16_t port, std::string token
 }
 
 bool ViewAccess::hostAllowed(const std::string& hostHeader) const {
-  const std::string h = lower(trim(hostHeader));
+  const std::string h = lower(trimBlanks(hostHeader));
   if (h.empty() || h.size() > 255) return false;
   if (anyHost_) return true;
   return std::find(hosts_.begin(), hosts_.end(), h) != hosts_.end();
 }
 
 bool ViewAccess::originAllowed(const std::string& originHeader, const std::string& hostHeader) const {
-  const std::string origin = lower(trim(originHeader));
+  const std::string origin = lower(trimBlanks(originHeader));
   if (origin.empty()) return true;
-  return hostAllowed(hostHeader) && origin == "http://" + lower(trim(hostHeader));
+  return hostAllowed(hostHeader) && origin == "http://" + lower(trimBlanks(hostHeader));
 }
 
 bool ViewAccess::sameToken(const std::string& candidate) const {
@@ -96,12 +96,12 @@ bool ViewAccess::tokenPresented(const std::string& resource, const std::string& 
   const std::string name = cookieName() + "=";
   for (size_t at = 0; at < cookieHeader.size();) {
     const size_t end = std::min(cookieHeader.find(';', at), cookieHeader.size());
-    const std::string pair = trim(cookieHeader.substr(at, end - at));
+    const std::string pair = trimBlanks(cookieHeader.substr(at, end - at));
     if (pair.rfind(name, 0) == 0 && sameToken(pair.substr(name.size()))) return true;
     at = end + 1;
   }
-  const std::string auth = trim(authorizationHeader);
-  return auth.size() > 6 && lower(auth.substr(0, 6)) == "token " && sameToken(trim(auth.substr(6)));
+  const std::string auth = trimBlanks(authorizationHeader);
+  return auth.size() > 6 && lower(auth.substr(0, 6)) == "token " && sameToken(trimBlanks(auth.substr(6)));
 }
 
 std::string ViewAccess::cookieName() const { return "fgsg-view-token-" + std::to_string(port_); }

@@ -23,7 +23,7 @@ using rt::marching::MarchPoint;
 constexpr double kMaxBranches = 1000;
 
 // The direction `turn` degrees counter-clockwise (seen from outside) from d in the image.
-rt::marching::Vec2 turned(const rt::marching::Vec2& d, double degrees) {
+rt::marching::Vec2 turnedDirection(const rt::marching::Vec2& d, double degrees) {
   const double r = degrees * 3.14159265358979323846 / 180.0;
   const double c = std::cos(r), s = std::sin(r);
   return {c * d.x() - s * d.y(), s * d.x() + c * d.y()};
@@ -202,7 +202,7 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
   }
   bool landed = false;  // some direction reached a destination (where the condition failed)
   MarchPoint from = s.place({st.scope.face, st.scope.bary}, st.scope.X());
-  const rt::marching::Vec2 ahead = turned(from.dir, angle);
+  const rt::marching::Vec2 ahead = turnedDirection(from.dir, angle);
   const int sides = std::max(0, options.marchCandidates);
   // p per side, the farthest 90 p / (p + 0.5) degrees out: 8 give ±20, ±40, ±60, ±80.
   const int perSide = (sides + 1) / 2;
@@ -210,7 +210,7 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
   for (int k = 0; k <= sides; ++k) {
     // 0, +1, -1, +2, -2 ... steps of `spacing` degrees: all strictly inside ±90°.
     const int step = (k + 1) / 2;
-    from.dir = turned(ahead, (k % 2 ? 1 : -1) * step * spacing);
+    from.dir = turnedDirection(ahead, (k % 2 ? 1 : -1) * step * spacing);
     MarchPoint to;
     if (!s.march(from, length, unit, to)) continue;  // the surface's edge came first
     landed = true;

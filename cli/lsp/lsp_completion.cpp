@@ -12,7 +12,7 @@ namespace fgsg::cli::lsp {
 namespace {
 
 // LSP's CompletionItemKind.
-constexpr int kFunction = 3, kField = 5, kClass = 7, kProperty = 10, kConstant = 21;
+constexpr int kItemFunction = 3, kItemField = 5, kItemClass = 7, kItemProperty = 10, kItemConstant = 21;
 
 bool startsLike(const std::string& name, const std::string& prefix) {
   if (prefix.size() > name.size()) return false;
@@ -48,17 +48,17 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
   };
   for (const auto& d : a.definitions) {
     switch (d.kind) {
-      case Definition::Kind::Rule: add(d.name, kClass, "rule"); break;
-      case Definition::Kind::Attr: add(d.name, kProperty, "attr"); break;
-      case Definition::Kind::Const: add(d.name, kConstant, "const"); break;
-      case Definition::Kind::Field: add(d.name, kField, "field"); break;
+      case Definition::Kind::Rule: add(d.name, kItemClass, "rule"); break;
+      case Definition::Kind::Attr: add(d.name, kItemProperty, "attr"); break;
+      case Definition::Kind::Const: add(d.name, kItemConstant, "const"); break;
+      case Definition::Kind::Field: add(d.name, kItemField, "field"); break;
     }
   }
   // fgsg's commands are not CGA's operations (split, extrude ...): a .cga file gets its
   // own names and the math functions both dialects share.
   if (!frontend::isCgaSource(a.path, text))
-    for (const auto& c : frontend::allCommands()) add(c.name, kFunction, c.signature);
-  for (const auto& f : frontend::allFunctions()) add(f.name, kFunction, functionSignature(f));
+    for (const auto& c : frontend::allCommands()) add(c.name, kItemFunction, c.signature);
+  for (const auto& f : frontend::allFunctions()) add(f.name, kItemFunction, functionSignature(f));
   return Json{{"isIncomplete", false}, {"items", std::move(items)}};
 }
 
