@@ -21,6 +21,7 @@
 #include "runtime/io/write_reports.h"
 #include "runtime/memory_budget.h"
 #include "runtime/io/write_mesh.h"
+#include "runtime/output/time_budget.h"
 #include "runtime/render/preview.h"
 
 #include <algorithm>
@@ -240,33 +241,48 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
-  rt::Mesh mesh;
-  progress.phase("assembling");
-  try {
-    size_t assembled = 0;
-    mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled,
-                                 writeSecondsPerTriangle(opt.output));
-    if (assembled < result.instances.instances.size()) {
-      rt::DeriveResult cut;
-      cut.messages.push_back({false, "R004", 0, 0,
-                              "assembly stopped after " + secondsText(deriveSeconds + since(t0)) +
-                                  " s (--max-seconds " + secondsText(opt.derive.maxSeconds) +
-                                  " keeps time to write what it holds): the first " + std::to_string(assembled) + " of " +
-                                  std::to_string(result.instances.instances.size()) +
-                                  " instances are written"});
-      progress.clear();
-      reportMessages(cut, compiled->source);
-      result.instances.instances.resize(assembled);  // --instances lists what the mesh holds
-    }
-  } catch (const std::bad_alloc&) {
-    rt::DeriveResult failed;
-    failed.messages.push_back({true, "R020", 0, 0,
-                               "out of memory assembling " + std::to_string(result.instances.instances.size()) +
-                                   " instances into one mesh; nothing was written (--max-memory stops the "
-                                   "derivation earlier, keeping what fits)"});
+  // The assembly cut short by --max-seconds keeps the first `kept` instances: said with
+  // R004, and --instances, --lines, --report and the scene list only those.
+  const auto keepAssembled = [&](size_t kept) {
+    if (kept >= result.instances.instances.size()) return;
+    rt::DeriveResult cut;
+    cut.messages.push_back({false, "R004", 0, 0,
+                            "assembly stopped after " + secondsText(deriveSeconds + since(t0)) +
+                                " s (--max-seconds " + secondsText(opt.derive.maxSeconds) +
+                                " keeps time to write what it holds): the first " + std::to_string(kept) + " of " +
+                                std::to_string(result.instances.instances.size()) + " instances are written"});
     progress.clear();
-    reportMessages(failed, compiled->source);
-    return 1;
+    reportMessages(cut, compiled->source);
+    result.instances.instances.resize(kept);
+  };
+  // The one flattened mesh, for a flattened -o (.obj, .ply, .glb with --instancing off
+  // --group-by none), the preview and --stats (its triangles and line segments). A run
+  // that writes only scenes assembles none (for a million cubes, nearly half of the
+  // run): its instances are kept within --max-seconds by what they draw, as the assembly
+  // would keep them (runtime/output/time_budget.h).
+  const bool flattened =
+      (!opt.output.empty() && !writesScene(opt.scene, opt.output)) || !opt.preview.empty() || opt.stats;
+  rt::Mesh mesh;
+  if (!flattened) {
+    keepAssembled(rt::output::instancesWithinTime(result.instances, assets, meshOf, assemblyDeadline,
+                                                  writeSecondsPerTriangle(opt.output)));
+  } else {
+    progress.phase("assembling");
+    try {
+      size_t assembled = 0;
+      mesh = rt::assembleInstances(result.instances, assets, meshOf, &assemblyDeadline, &assembled,
+                                   writeSecondsPerTriangle(opt.output));
+      keepAssembled(assembled);
+    } catch (const std::bad_alloc&) {
+      rt::DeriveResult failed;
+      failed.messages.push_back({true, "R020", 0, 0,
+                                 "out of memory assembling " + std::to_string(result.instances.instances.size()) +
+                                     " instances into one mesh; nothing was written (--max-memory stops the "
+                                     "derivation earlier, keeping what fits)"});
+      progress.clear();
+      reportMessages(failed, compiled->source);
+      return 1;
+    }
   }
   const double assembleSeconds = since(t0);
 
@@ -276,10 +292,14 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   rt::io::OutputTransaction outputs;
   t0 = std::chrono::steady_clock::now();
   const SceneSource source{compiled->module, opt.derive, result, assets, meshOf};
+  SceneDrawn drawn;  // what the scene draws, where no flattened mesh says it
   const bool staged =
-      (opt.output.empty() || (writesScene(opt.scene, opt.output) ? stageScene(opt.scene, source, opt.output, outputs, error)
-                                                                  : rt::io::stageMesh(mesh, opt.output, outputs, error))) &&
-      (opt.scene.splitOutput.empty() || stageSplitOutput(opt.scene, source, opt.output, outputs, error));
+      (opt.output.empty() ||
+       (writesScene(opt.scene, opt.output) ? stageScene(opt.scene, source, opt.output, outputs, error, &drawn)
+                                           : rt::io::stageMesh(mesh, opt.output, outputs, error))) &&
+      (opt.scene.splitOutput.empty() ||
+       stageSplitOutput(opt.scene, source, opt.output, outputs, error, opt.output.empty() ? &drawn : nullptr));
+  if (flattened) drawn = {mesh.triangleCount(), mesh.lineCount()};
   if (!staged ||
       (!opt.instances.empty() && !rt::io::stageInstancesJson(result.instances, opt.instances, outputs, error)) ||
       (!opt.lines.empty() && !rt::io::stageLinesJson(result.instances, opt.lines, outputs, error)) ||
@@ -321,8 +341,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
   if (!opt.quiet)
     std::cerr << "wrote " << (opt.output.empty() ? opt.scene.splitOutput + "/" : opt.output) << " ("
               << result.instances.instances.size()
-              << " instances, " << mesh.triangleCount() << " triangles"
-              << (mesh.lineCount() ? ", " + std::to_string(mesh.lineCount()) + " line segments" : std::string()) << ")"
+              << " instances, " << drawn.triangles << " triangles"
+              << (drawn.lines ? ", " + std::to_string(drawn.lines) + " line segments" : std::string()) << ")"
               << (opt.preview.empty() ? "" : ", preview " + opt.preview) << "\n";
   if (opt.stats) {
     const auto& s = result.stats;

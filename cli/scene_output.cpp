@@ -87,6 +87,21 @@ bool stageAs(rt::output::Scene& scene, OutputLayout layout, const std::string& p
   return staged;
 }
 
+// What `scene` draws (SceneDrawn): baked parts as assembled, instanced and mirrored
+// parts their shared mesh once per instance (shared meshes have no line segments).
+SceneDrawn sceneDrawnCounts(const rt::output::Scene& scene) {
+  SceneDrawn drawn;
+  for (const rt::output::StartNode& start : scene.starts)
+    for (const rt::output::GroupNode& g : start.groups) {
+      for (const rt::output::BakedPart& p : g.baked)
+        drawn.triangles += p.mesh.triangleCount(), drawn.lines += p.mesh.lineCount();
+      for (const auto* parts : {&g.instanced, &g.mirrored})
+        for (const rt::output::InstancedPart& p : *parts)
+          drawn.triangles += scene.meshes[p.mesh].mesh->triangleCount() * p.trs.size();
+    }
+  return drawn;
+}
+
 // A start shape's name as a file name.
 std::string fileStem(const std::string& name) {
   std::string stem;
@@ -133,15 +148,16 @@ bool writesScene(const SceneFlags& flags, const std::string& path) {
 }
 
 bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::string& path,
-                rt::io::OutputTransaction& outputs, std::string& error) {
+                rt::io::OutputTransaction& outputs, std::string& error, SceneDrawn* drawn) {
   rt::DeriveOptions unused;
   const OutputLayout layout = checkOutput(flags, path, unused);
   rt::output::Scene scene = buildScene(flags, run, layout);
+  if (drawn) *drawn = sceneDrawnCounts(scene);
   return stageAs(scene, layout, path, outputs, error);
 }
 
 bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,
-                      rt::io::OutputTransaction& outputs, std::string& error) {
+                      rt::io::OutputTransaction& outputs, std::string& error, SceneDrawn* drawn) {
   namespace fs = std::filesystem;
   rt::DeriveOptions unused;
   OutputLayout layout = checkOutput(flags, path, unused);
@@ -156,6 +172,7 @@ bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std
   fs::create_directories(dir, ec);
   if (ec) return error = "--split-output " + flags.splitOutput + ": " + ec.message(), false;
   rt::output::Scene scene = buildScene(split, run, layout);
+  if (drawn) *drawn = sceneDrawnCounts(scene);
   // Each start shape alone in a scene sharing the whole one's meshes and materials (the
   // writers take only what it uses).
   rt::output::Scene one;

@@ -38,18 +38,26 @@ struct SceneSource {
   const std::vector<int>& meshOf;
 };
 
+// What a scene draws, for fgsg run's `wrote` line when no flattened mesh was assembled:
+// its triangles (a shared mesh's in full for each instance, as the file draws them) and
+// line segments.
+struct SceneDrawn {
+  size_t triangles = 0, lines = 0;
+};
+
 // Builds the scene of the run and stages it as `path` (.glb / .gltf / .obj with its .mtl)
-// in `outputs`. False and a message (an image that cannot be embedded, a vertex not
-// finite).
+// in `outputs`, and says what it draws in `drawn` (when given). False and a message (an
+// image that cannot be embedded, a vertex not finite).
 bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::string& path,
-                rt::io::OutputTransaction& outputs, std::string& error);
+                rt::io::OutputTransaction& outputs, std::string& error, SceneDrawn* drawn = nullptr);
 
 // --split-output DIR: a file per start shape in DIR (created if missing), named after it
 // (`lot-17.glb`; characters other than letters, digits, '-', '_' and '.' made '_', and
 // `_N` after a name taken), in the format of `path` (.glb when it is empty or flattened
 // .glb: the per-start scenes), and DIR/manifest.json listing them; all staged in
-// `outputs`, so that they replace what was there together.
+// `outputs`, so that they replace what was there together. `drawn` as stageScene's, for
+// all the files together.
 bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,
-                      rt::io::OutputTransaction& outputs, std::string& error);
+                      rt::io::OutputTransaction& outputs, std::string& error, SceneDrawn* drawn = nullptr);
 
 }  // namespace fgsg::cli

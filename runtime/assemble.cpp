@@ -486,9 +486,8 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
               double writeSecondsPerTriangle) {
   // Block by block, in list order: each instance writes its output in parallel into a
   // slot of its own (Slots), and closeUp moves them together where something was
-  // dropped, so the bytes depend neither on the scheduling nor on the blocks. A block is
-  // a millisecond or so of work, so a deadline is noticed in time.
-  constexpr size_t kBlockTriangles = 32768;
+  // dropped, so the bytes depend neither on the scheduling nor on the blocks (of
+  // kAssemblyBlockTriangles: a deadline is noticed in time).
   // A block of less work than this runs on the calling thread: a group's few pieces in
   // the scene's baked parts (runtime/output/scene.cpp) cost less than TBB's start.
   constexpr size_t kSerialTriangles = 4096;
@@ -552,7 +551,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
     slots.vertex.assign(1, 0);
     slots.triangle.assign(1, 0);
     slots.line.assign(1, 0);
-    while (end < n && (end == begin || work < kBlockTriangles)) {
+    while (end < n && (end == begin || work < kAssemblyBlockTriangles)) {
       const Mesh* m = assetOf(which.instance(list, end++), list, library, meshOf);
       work += 1 + (m ? m->triangleCount() + m->lineCount() : 0);
       slots.vertex.push_back(slots.vertex.back() + (m ? m->vertexCount() : 0));

@@ -17,6 +17,12 @@ namespace fgsg::rt {
 // zero scale flattened).
 constexpr double kMinTriangleArea = 1e-12;
 
+// With a deadline, instances are assembled in blocks of about this many triangles (and
+// line segments, and one per instance): a millisecond or so of work, so that the
+// deadline is noticed in time. A scene-only run cuts its list by the same blocks
+// (runtime/output/time_budget.h).
+constexpr size_t kAssemblyBlockTriangles = 32768;
+
 // Resolves every name in `list.assets` in `library` (loading files on first use) and
 // fills `meshOf[i]` with the library index of `list.assets[i]`. False and a message in
 // `error` for the first name that cannot be resolved.

@@ -1,11 +1,13 @@
 // Assembling instances into one world-space mesh: transforms, cofactor normals,
 // degenerate triangles, colours, and thread-count independence.
 #include "runtime/assemble.h"
+#include "runtime/output/time_budget.h"
 
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <tbb/task_arena.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -303,4 +305,36 @@ TEST_CASE("an unknown asset fails resolution with the library's message", "[asse
   std::string error;
   CHECK_FALSE(resolveAssets(s.list, s.library, s.meshOf, error));
   CHECK_THAT(error, Catch::Contains("no_such_asset.obj"));
+}
+
+namespace {
+// A clock that stands still where the test puts it: the time left is what it says.
+Deadline::Clock::time_point budgetClockNow;
+Deadline::Clock::time_point readBudgetClock() { return budgetClockNow; }
+}  // namespace
+
+TEST_CASE("a scene-only run keeps the instances the assembly would keep in time", "[assemble]") {
+  // 20 000 unit cubes (12 triangles, no line segments). A block takes instances while
+  // its work (1 + 12 a cube) is under 32 768: 13 x 2 520 = 32 760, so 2 521 cubes, 30 252
+  // triangles. With 1 s left and 1e-5 s a triangle, a block starts while 1e-5 x the
+  // triangles before it is under 1 s: before blocks 0..3 (0, 30 252, 60 504, 90 756
+  // triangles), not before block 4 (121 008): 4 x 2 521 = 10 084 cubes kept.
+  Scene s;
+  for (int i = 0; i < 20000; ++i) s.add("cube", scaleTranslate({1, 1, 1}, {2.0 * i, 0, 0}));
+  std::string error;
+  REQUIRE(resolveAssets(s.list, s.library, s.meshOf, error));
+  const Deadline::Clock::time_point start{};
+  budgetClockNow = start + std::chrono::seconds(1);
+  const Deadline deadline(start, 2.0, &readBudgetClock);
+  CHECK(output::instancesWithinTime(s.list, s.library, s.meshOf, deadline, 1e-5) == 10084);
+  // The flattened assembly under the same clock keeps the same cubes.
+  size_t assembled = 0;
+  const Mesh mesh = assembleInstances(s.list, s.library, s.meshOf, &deadline, &assembled, 1e-5);
+  CHECK(assembled == 10084);
+  CHECK(mesh.triangleCount() == 12 * 10084);
+  // No rate: only the deadline, not passed, so all; passed: none; no limit: all.
+  CHECK(output::instancesWithinTime(s.list, s.library, s.meshOf, deadline, 0) == 20000);
+  budgetClockNow = start + std::chrono::seconds(2);
+  CHECK(output::instancesWithinTime(s.list, s.library, s.meshOf, deadline, 1e-5) == 0);
+  CHECK(output::instancesWithinTime(s.list, s.library, s.meshOf, Deadline(), 1e-5) == 20000);
 }
