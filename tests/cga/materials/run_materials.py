@@ -7,7 +7,8 @@ with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --grou
 symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
 engines' files to be the same bytes, the Khronos validator to find no errors and no
 warnings, and the material factors, texture slots and texture coordinate ranges the
-.cga files' comments compute by hand. Exits 1 on any failure."""
+.cga files' comments compute by hand; then the located errors of ERRORS. Exits 1 on any
+failure."""
 import base64
 import json
 import os
@@ -43,6 +44,17 @@ UV_RANGES = {
 }
 # The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
 MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
+
+# Located errors, both engines: (file name, source, the diagnostic's start).
+ERRORS = [
+    ("e1.cga", 'version "2023.0"\n@StartRule\nLot --> tileUV(1, 2, 2) X.\n', "e1.cga:3:16: error[E801]"),
+    ("e2.cga", 'version "2023.0"\n@StartRule\nLot --> normalizeUV(0, uv, separatePerFace) X.\n',
+     "e2.cga:3:28: error[E801]"),
+    ("e3.cga", 'version "2023.0"\n@StartRule\nLot --> setupProjection(0, scope.xw, 1, 1) X.\n',
+     "e3.cga:3:28: error[E028]"),
+    ("e4.fgsg", 'axiom: Lot;\nLot ~> Material("shininess", 1) X;\n', "e4.fgsg:2:17: error[E028]"),
+    ("e5.fgsg", 'axiom: Lot;\nLot ~> SetupProjection("xy", 0, 1) X;\n', "e5.fgsg:2:8: error[R027]"),
+]
 
 failures = []
 
@@ -194,6 +206,17 @@ def main():
                     fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
                 if not failures:
                     print(f"PASS {name}.{ext} (interp, jit)")
+        for file, source, expected in ERRORS:
+            path = os.path.join(tmp, file)
+            open(path, "w").write(source)
+            for engine in ("interp", "jit"):
+                run = subprocess.run([fgsg, "run", path, "--lots", os.path.join(lots, "rect20x10.geojson"), "-o",
+                                      os.path.join(tmp, "error.glb"), f"--engine={engine}"],
+                                     capture_output=True, text=True, timeout=120)
+                if run.returncode != 1 or expected not in run.stderr:
+                    fail(f"{file} ({engine}): exit {run.returncode}, expected {expected}: {run.stderr.strip()}")
+        if not failures:
+            print(f"PASS {len(ERRORS)} located errors (interp, jit)")
     sys.exit(1 if failures else 0)
 
 
