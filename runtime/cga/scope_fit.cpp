@@ -194,7 +194,20 @@ bool alignScopeToAxes(const Scope& scope, const GeomRef& geom, GeometryArena& ar
   WorldGeometry g;
   if (!worldGeometry(scope, geom, arena, "alignScopeToAxes", g, error)) return false;
   Mat3 axes = Mat3::Identity();
-  if (axis >= 0 && axis < 3) axes = rotationOnto(scope.axes.col(axis), Vec3::Unit(axis)) * scope.axes;
+  if (axis >= 0 && axis < 3) {
+    // op_alignScopeToAxes: that axis becomes the world's; the second is the scope's z (for
+    // x) or x (for y and z) projected onto the plane across it; the third completes the frame.
+    const Vec3 along = Vec3::Unit(axis);
+    const int second = axis == 0 ? 2 : 0, third = 3 - axis - second;
+    const Vec3 projected = scope.axes.col(second) - scope.axes.col(second).dot(along) * along;
+    if (projected.norm() > 1e-9) {
+      axes.col(axis) = along;
+      axes.col(second) = projected.normalized();
+      axes.col(third) = axes.col((third + 1) % 3).cross(axes.col((third + 2) % 3));
+    } else {  // that axis lies along the world's: the least turn
+      axes = rotationOnto(scope.axes.col(axis), along) * scope.axes;
+    }
+  }
   fit(scope, keepPolygonFrame(axes, g), g, arena, out);
   return true;
 }

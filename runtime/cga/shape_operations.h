@@ -20,8 +20,9 @@ namespace fgsg::rt::cga {
 bool rotateScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const Vec3& degrees, Part& out,
                  std::string& error);
 
-// alignScopeToAxes() (axis 7): the world's axes; alignScopeToAxes(x|y|z) (axis 0..2): the
-// scope turned by the least rotation that lays that axis on the world's.
+// alignScopeToAxes() (axis 7): the world's axes; alignScopeToAxes(x|y|z) (axis 0..2): that
+// axis the world's, the scope's z (for x) or x (for y, z) projected onto the plane across
+// it (op_alignScopeToAxes), the third axis completing the frame.
 bool alignScopeToAxes(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int axis, Part& out,
                       std::string& error);
 
