@@ -171,10 +171,11 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (uv == 0) {  // SetupProjection("xz", w, h)
         const std::string axes = stringArg(0, "axes");
         static const std::set<std::string> kAxes = {"xy", "xz", "yz", "yx", "zx", "zy"};
-        if (stringOk && !kAxes.count(axes))
+        const bool world = axes.rfind("world.", 0) == 0;
+        if (stringOk && !kAxes.count(world ? axes.substr(6) : axes))
           diags_.error("E028", item.args[0]->range,
                        "SetupProjection's axes are two of the scope's: \"xy\", \"xz\", \"yz\", \"yx\", \"zx\" or "
-                       "\"zy\", not \"" + axes + "\"");
+                       "\"zy\" (or the world's: \"world.xz\" ...), not \"" + axes + "\"");
         numArgs(1, true);
       } else if (uv == 5) {  // NormalizeUV("uv")
         const std::string mode = stringArg(0, "mode");

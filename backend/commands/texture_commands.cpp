@@ -143,16 +143,22 @@ void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
   const auto kind = static_cast<ir::UvOp>(op.index);
   const rt::Scope& s = st.scope;
   if (kind == ir::UvOp::Setup) {
-    // The scope's origin, its two axes the words name (u, v), their cross product third.
-    const std::string& axes = (*strings_)[op.str];
+    // The scope's origin and the two of its axes the words name (u, v), or the world's
+    // ("world.xz"); their cross product third. Relative and floating sizes measure the
+    // scope's box along u and v (for the scope's axes: its sizes).
+    const std::string& words = (*strings_)[op.str];
+    const bool world = words.rfind("world.", 0) == 0;
+    const std::string axes = world ? words.substr(6) : words;
     const int iu = axes[0] - 'x', iv = axes[1] - 'x';
+    const rt::Mat3 frame = world ? rt::Mat3::Identity() : s.axes;
     rt::cga::UvProjection p;
-    p.origin = s.P;
-    p.axes.col(0) = s.axes.col(iu);
-    p.axes.col(1) = s.axes.col(iv);
-    p.axes.col(2) = s.axes.col(iu).cross(s.axes.col(iv));
-    p.tileWidth = uvSize(op, 0, a[0], s.S[iu]);
-    p.tileHeight = uvSize(op, 1, a[1], s.S[iv]);
+    p.origin = world ? rt::Vec3::Zero() : s.P;
+    p.axes.col(0) = frame.col(iu);
+    p.axes.col(1) = frame.col(iv);
+    p.axes.col(2) = frame.col(iu).cross(frame.col(iv));
+    const std::array<double, 4> extent = rt::cga::uvRangeOfScope(p, s);  // tile sizes 1: metres
+    p.tileWidth = uvSize(op, 0, a[0], world ? extent[1] - extent[0] : s.S[iu]);
+    p.tileHeight = uvSize(op, 1, a[1], world ? extent[3] - extent[2] : s.S[iv]);
     if (p.tileWidth == 0 || p.tileHeight == 0)
       throw DeriveError{op.loc, "R027", op.name + ": a tile size of 0 (CGA's texture sizes may be negative, which mirrors, but not 0)"};
     p.planar = true;

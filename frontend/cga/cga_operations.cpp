@@ -923,15 +923,17 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
   size_t first = 1;
   if (name == "setupProjection") {
     const std::string axes = selectorWord(argCtx[1]);
-    static const char* const kAxes[] = {"scope.xy", "scope.xz", "scope.yz", "scope.yx", "scope.zx", "scope.zy"};
-    bool known = false;
-    for (const char* k : kAxes) known |= axes == k;
-    if (!known) {
-      if (axes.rfind("world.", 0) == 0) notSupported(rangeOf(argCtx[1]), "a projection in the world's axes");
-      else error("E028", rangeOf(argCtx[1]), "setupProjection's axes are scope.xy, scope.xz, scope.yz, scope.yx, scope.zx or scope.zy, not '" + argCtx[1]->getText() + "'");
+    static const char* const kAxes[] = {"xy", "xz", "yz", "yx", "zx", "zy"};
+    const bool world = axes.rfind("world.", 0) == 0;
+    bool known = axes.rfind("scope.", 0) == 0 || world;
+    bool pair = false;
+    for (const char* k : kAxes) pair |= known && axes.substr(6) == k;
+    if (!pair) {
+      error("E028", rangeOf(argCtx[1]), "setupProjection's axes are scope.xy, scope.xz, scope.yz, scope.yx, scope.zx, scope.zy "
+                                        "or world.xy ... world.zy, not '" + argCtx[1]->getText() + "'");
       return;
     }
-    item.args.push_back(stringExpr(axes.substr(6), rangeOf(argCtx[1])));
+    item.args.push_back(stringExpr(world ? axes : axes.substr(6), rangeOf(argCtx[1])));
     first = 2;
   }
   if (name == "normalizeUV") {
@@ -958,7 +960,7 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
     if (sized) {
       // 'x: fgsg's relative size (the runtime knows what it is relative to).
       e.relativeAxis = 3;
-      e.relativeIndex = name == "setupProjection" ? item.args[0]->text[k - first] - 'x' : 0;
+      e.relativeIndex = name == "setupProjection" ? item.args[0]->text[item.args[0]->text.size() - 2 + (k - first)] - 'x' : 0;
     }
     ExprPtr v = expr(argCtx[k], e);
     if (!v) return;

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """CGA's materials and uv operations (issue #44) read back from the glTF scenes fgsg writes.
 
-run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10 and
-uv_operations.cga / uv_operations.fgsg on lots/street40x12 (tests/cga/corpus/lots), each
+run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10,
+uv_operations.cga / uv_operations.fgsg on lots/street40x12 and uv_world.cga /
+uv_world.fgsg on lots/square10 (tests/cga/corpus/lots), each
 with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --group-by
 symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
 engines' files to be the same bytes, the Khronos validator to find no errors and no
@@ -41,6 +42,8 @@ UV_RANGES = {
     "U8": (0, 1, 0, 12),
     "U9": (0, 1 / 3, 0, 1),
     "U10": (0, 1, 0, 6),
+    "W1": (0, 1, -5, 0),
+    "W2": (2, 4, -4, 0),
 }
 # The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
 MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
@@ -135,9 +138,11 @@ def check_materials(doc, label):
             fail(f"{label}: {leaf} draws one image as its colour and its normals")
 
 
-def check_uvs(doc, buffer, label):
+def check_uvs(doc, buffer, label, prefix):
     by_leaf = leaves(doc)
     for leaf, expected in UV_RANGES.items():
+        if not leaf.startswith(prefix):
+            continue
         uvs = []
         for p in by_leaf.get(leaf, []):
             if "TEXCOORD_0" not in p["attributes"]:
@@ -174,7 +179,7 @@ def main():
     validator = os.path.join(root, "scripts", "validate-gltf.js")
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
-        for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12")):
+        for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12"), ("uv_world", "square10")):
             for ext in ("cga", "fgsg"):
                 grammar = os.path.join(tmp, f"{name}.{ext}")
                 shutil.copy(os.path.join(here, f"{name}.{ext}"), grammar)
@@ -201,7 +206,7 @@ def main():
                             check_materials(doc, label)
                             check_mtl(obj[:-4] + ".mtl", label)
                         else:
-                            check_uvs(doc, buffer, label)
+                            check_uvs(doc, buffer, label, "U" if name == "uv_operations" else "W")
                 if len(outputs) == 2 and outputs["interp"] != outputs["jit"]:
                     fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
                 if not failures:
