@@ -241,6 +241,17 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     std::cerr << "fgsg run: " << error << "\n";
     return 1;
   }
+  // Material(...)'s finishes (roughness, metallic, opacity, normal maps) are written by
+  // the scene outputs alone: a flattened file keeps colours and images, and says so.
+  if (!result.instances.finishes.empty() && !opt.output.empty() && !writesScene(opt.scene, opt.output)) {
+    rt::DeriveResult dropped;
+    dropped.messages.push_back({false, "R031", 0, 0,
+                                "the materials' roughness, metallic, opacity and normal maps are not in the flattened " +
+                                    opt.output + " (its colours and images are): a glTF scene (.glb, .gltf) or a "
+                                    "grouped OBJ (--group-by symbol) has them"});
+    progress.clear();
+    reportMessages(dropped, compiled->source);
+  }
   // The assembly cut short by --max-seconds keeps the first `kept` instances: said with
   // R004, and --instances, --lines, --report and the scene list only those.
   const auto keepAssembled = [&](size_t kept) {

@@ -211,6 +211,13 @@ def main():
                     fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
                 if not failures:
                     print(f"PASS {name}.{ext} (interp, jit)")
+        # A flattened file has no place for the finishes: R031 says so (a warning, exit 0).
+        for engine in ("interp", "jit"):
+            run = subprocess.run([fgsg, "run", os.path.join(tmp, "materials.cga"), "--lots",
+                                  os.path.join(lots, "rect20x10.geojson"), "-o", os.path.join(tmp, "flat.obj"),
+                                  f"--engine={engine}"], capture_output=True, text=True, timeout=120)
+            if run.returncode != 0 or "materials.cga: warning[R031]" not in run.stderr:
+                fail(f"flattened materials.cga ({engine}): exit {run.returncode}, no R031: {run.stderr.strip()}")
         for file, source, expected in ERRORS:
             path = os.path.join(tmp, file)
             open(path, "w").write(source)
