@@ -51,7 +51,7 @@ bool planePart(const FlatPolygon& poly, const std::vector<Vec2>& outline, const 
 }  // namespace
 
 bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const char* what, FlatPolygon& out,
-                 std::string& error) {
+                 std::string& error, bool takeHoles) {
   Scope planar = scope;
   GeomRef polygon = geom;
   out.groundFace = lyingOnGround(geom, arena);
@@ -80,15 +80,21 @@ bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
   }
   const Polygon3 pts(arena.polygon(polygon), arena.polygon(polygon) + polygon.count);
   const std::vector<Polygon3> rings = ringsOf(pts);
-  if (rings.size() > 1) {
+  if (rings.size() > 1 && !takeHoles) {
     error = std::string(what) + ": the polygon has holes (a courtyard), which it does not take: deleteHoles first";
     return false;
   }
   out.scope = planar;
   out.ring.clear();
-  for (const Vec3& u : rings[0]) out.ring.emplace_back(u.x() * planar.S.x(), u.y() * planar.S.y());
-  out.ring = distinct(out.ring, 1e-12 * planar.S.maxCoeff());
-  if (twiceRingArea(out.ring) < 0) std::reverse(out.ring.begin(), out.ring.end());
+  out.holes.clear();
+  for (size_t r = 0; r < rings.size(); ++r) {
+    std::vector<Vec2> ring;
+    for (const Vec3& u : rings[r]) ring.emplace_back(u.x() * planar.S.x(), u.y() * planar.S.y());
+    ring = distinct(ring, 1e-12 * planar.S.maxCoeff());
+    if ((twiceRingArea(ring) < 0) == (r == 0)) std::reverse(ring.begin(), ring.end());
+    if (r == 0) out.ring = std::move(ring);
+    else out.holes.push_back(std::move(ring));
+  }
   return true;
 }
 

@@ -68,9 +68,11 @@ struct FlatPolygon {
   std::vector<Vec2> ring;
   bool groundFace = false;  // it was a ground face: its parts become ground faces (x along xAxis)
   Vec3 xAxis = Vec3::UnitX();
+  std::vector<std::vector<Vec2>> holes;  // its courtyards, clockwise (only with takeHoles)
 };
+// A polygon with holes is an error unless takeHoles (then they are out.holes).
 bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const char* what, FlatPolygon& out,
-                 std::string& error);
+                 std::string& error, bool takeHoles = false);
 
 // Which selectors take each edge (the edge from corner i to i + 1): its outward normal
 // classified into the scope's quadrants (front: -Y, the side of a lot's first edge; back
@@ -113,7 +115,8 @@ bool splitAreaSizes(const Scope& scope, const GeomRef& geom, const GeometryArena
 
 // convexify(maxLength): a concave polygon cut along diagonals into convex pieces, one face
 // each, the shape keeping its scope (maxLength infinite: every cut; else only cuts shorter
-// than it). A convex polygon is left as it is. Fails for a polygon that crosses itself.
+// than it). A convex polygon is left as it is; one with holes is cut around them
+// (convexify.cpp). Fails for a polygon that crosses itself.
 bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, double maxLength, Part& out,
                std::string& error);
 

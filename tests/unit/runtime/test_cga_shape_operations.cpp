@@ -484,6 +484,25 @@ TEST_CASE("splitAreaSizes cuts where the part before the cut has the area asked 
                              error));
 }
 
+TEST_CASE("convexify cuts a ring around a courtyard into four trapezoids") {
+  // A 10 x 10 square around a 4 x 4 courtyard (3..7): at least four convex pieces; the cuts
+  // from the courtyard's corners to the outline's give four trapezoids of (10 + 4) / 2 * 3 = 21.
+  GeometryArena arena;
+  const Part court = lot(arena, {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{3, 3}, {3, 7}, {7, 7}, {7, 3}}});
+  Part out;
+  std::string error;
+  REQUIRE(convexify(court.scope, court.geom, arena, INFINITY, out, error));
+  REQUIRE(out.geom.kind == GeomKind::Polyhedron);
+  REQUIRE(out.geom.count == 4);
+  for (uint32_t i = 0; i < 4; ++i) {
+    const GeometryArena::Face& f = arena.face(out.geom, i);
+    Polygon3 world;
+    for (uint32_t k = 0; k < f.count; ++k) world.push_back(out.scope.toWorld(out.scope.S.cwiseProduct(arena.facePoints(f)[k])));
+    CHECK(world.size() == 4);
+    CHECK(0.5 * newellNormal(world).norm() == Approx(21).margin(1e-9));
+  }
+}
+
 TEST_CASE("convexify cuts an L from its reflex corner, and not where maxLength forbids") {
   GeometryArena arena;
   const Part l = lot(arena, {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}});
