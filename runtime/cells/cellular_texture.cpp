@@ -148,9 +148,20 @@ void CellularTexture::project(const Cell& c, FeatureRef onto) {
   const std::vector<Vec3> corners = c.vertices();
   if (onto.kind == FeatureKind::Edge) {
     const FeatureEdge& e = fm_.edges[onto.index];
+    // A leaning vertical edge's courses are level, and so are its cells' tops and bottoms
+    // in their face (generators.cpp verticalCourses): a cell claims the stretch of it
+    // between the lowest and the highest point of its outline on the face (depth 0), not
+    // its orthogonal projection, which a level-topped cell's far corners overshoot into
+    // the courses above and below, nor its outer side's, which a leaning face's normal
+    // tilts.
+    const double rise = e.shape == EdgeShape::Line && e.direction == EdgeDirection::Vertical
+                            ? (e.points.back() - e.points.front()).dot(up_) / e.length
+                            : 1;
+    const bool leaning = std::abs(rise) < 1 - 1e-12;
     double lo = INFINITY, hi = -INFINITY;
-    for (const Vec3& p : corners) {
-      const double s = edgeParameter(onto.index, p);
+    for (size_t k = 0; k < (leaning ? corners.size() / 2 : corners.size()); ++k) {
+      const Vec3& p = corners[k];  // vertices(): the outline at depth 0 first
+      const double s = leaning ? (p - e.points.front()).dot(up_) / rise : edgeParameter(onto.index, p);
       lo = std::min(lo, s), hi = std::max(hi, s);
     }
     edgeMaps_[onto.index].add(std::max(lo, 0.0), std::min(hi, e.length));

@@ -54,22 +54,48 @@ int sideFace(const FeatureEdge& e, const EdgeSides& sd, int i) {
   return left ? e.leftFace : e.rightFace;
 }
 
-// How far a cell may reach into planar face `f` from p along `away` (in its plane, along
-// its u axis) within the strip of v between the projections of p0 and p1: to the end of
-// the free run that starts at p. Infinite where the face is not planar or `away` is not
-// along u; 0 where the face is claimed right at p.
-double reachInto(const CellularTexture& tex, int f, const Vec3& p0, const Vec3& p1, const Vec3& away) {
+// How far (at most `most`) a cell of a vertical edge's layer may reach into planar face
+// `f`, measured along `away` (in the face's plane, perpendicular to the edge) from the
+// edge's segment [base, top]: the largest A such that the level-topped band
+// {base..top + a * w, 0 <= a <= A} (w: level, in the face, w . away = 1; for a leaning
+// edge not the face's u axis) is all free. Infinite where the face is not planar; 0 where
+// it is claimed right at the edge. The band's free part is exact convex pieces
+// (FaceOccupancy::freePieces), so the answer is one of their corners' distances from the
+// edge: the largest such that the band up to it is covered.
+double reachInto(const CellularTexture& tex, int f, const Vec3& base, const Vec3& top, const Vec3& away,
+                 const Vec3& w, double most) {
   const FeatureFace& face = tex.features().faces[f];
   if (face.kind != FaceKind::Planar) return INFINITY;
-  const double along = away.dot(face.uAxis);
-  if (std::abs(along) < 0.99) return INFINITY;
-  const Vec2 a = projectOnFace(face, p0), b = projectOnFace(face, p1);
   const FaceOccupancy& map = tex.faceMap(f);
+  const Vec2 b = projectOnFace(face, base), t = projectOnFace(face, top);
+  const Vec2 along(away.dot(face.uAxis), away.dot(face.vAxis)), level(w.dot(face.uAxis), w.dot(face.vAxis));
+  auto band = [&](double a) {
+    Polygon2 q{b, b + a * level, t + a * level, t};
+    if (signedArea(q) < 0) std::swap(q[1], q[3]);
+    return q;
+  };
   const double tol = 1e3 * map.tolerance();
-  for (const Interval& run : map.freeRuns(std::min(a.y(), b.y()), std::max(a.y(), b.y())))
-    if (along > 0 ? std::abs(run.lo - a.x()) < tol : std::abs(run.hi - a.x()) < tol)
-      return along > 0 ? run.hi - a.x() : a.x() - run.lo;
-  return 0;
+  const double minArea = tol * (t - b).norm();
+  const std::vector<Polygon2> pieces = map.freePieces(band(most), minArea);
+  std::vector<double> ends{most};  // candidate reaches: the pieces' corners' distances
+  for (const Polygon2& p : pieces)
+    for (const Vec2& q : p)
+      if (const double a = (q - b).dot(along); a > tol) ends.push_back(a);
+  std::sort(ends.begin(), ends.end());
+  const double slack = minArea * double(pieces.size() + 1);
+  auto freeUpTo = [&](double a) {  // the band up to a lies in the pieces
+    double covered = 0;
+    for (const Polygon2& p : pieces) covered += signedArea(clipHalfPlane(p, along, along.dot(b) + a));
+    return covered >= signedArea(band(a)) - slack;
+  };
+  // The band up to a is free up to some reach and not beyond: the last candidate that is.
+  size_t lo = 0, hi = ends.size();  // ends[< lo] free, ends[>= hi] not
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    if (freeUpTo(ends[mid])) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo > 0 ? ends[lo - 1] : 0;
 }
 
 bool isVertical(const CellularTexture& tex, const FeatureEdge& e) {
@@ -145,11 +171,29 @@ int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std:
         const Region r = regionAlong(sd, i, d);
         if (!r.ok) continue;
         const Vec3 base = atHeight(tex, edge, g0), top = atHeight(tex, edge, g1);
-        const double reach = reachInto(tex, sideFace(edge, sd, i), base, top, sd.away[i]);
-        const double far = std::min(r.lo + length(k), std::max(r.hi, reach));
-        placed += tex.add(makeCell(base + sd.away[i] * r.lo, sd.away[i], sd.tangent, sd.normal[i],
-                                   Vec3(far - r.lo, g1 - g0, d)),
-                          {FeatureKind::Edge, e});
+        const Vec3& away = sd.away[i];
+        // A leaning edge's cells meet the faces' level courses: in their face they are
+        // parallelograms with level tops and bottoms, `tall` along the edge; `slope` is
+        // how far the bottom drops along the edge per unit along `away`, `level` the
+        // level direction in the face with level . away = 1.
+        const double rise = sd.tangent.dot(tex.up()), slope = away.dot(tex.up()) / rise;
+        const double tall = std::abs(rise - 1) < 1e-12 ? g1 - g0 : (g1 - g0) / rise;
+        const Vec3 level = away - slope * sd.tangent;
+        const double most = r.lo + length(k);
+        const double reach = reachInto(tex, sideFace(edge, sd, i), base, top, away, level, most);
+        const double far = std::min(most, std::max(r.hi, reach));
+        Cell c = makeCell(base + away * r.lo, away, sd.tangent, sd.normal[i], Vec3(far - r.lo, tall, d));
+        if (std::abs(slope) * (far - r.lo) > tol) {
+          // Over the edge, in the other face's layer, the course's bounds are square to
+          // the edge instead (that face's cells are swept along its tilted normal): the
+          // part of the parallelogram there is cut by the square line it crosses, which
+          // keeps the cell convex.
+          const Polygon2 band{Vec2(0, -slope * r.lo), Vec2(far - r.lo, -slope * far),
+                              Vec2(far - r.lo, -slope * far + tall), Vec2(0, -slope * r.lo + tall)};
+          c.profile = slope > 0 ? clipHalfPlane(band, Vec2(0, 1), tall) : clipHalfPlane(band, Vec2(0, -1), 0);
+          fitToProfile(c);
+        }
+        placed += tex.add(c, {FeatureKind::Edge, e});
       }
     }
     z = z1;

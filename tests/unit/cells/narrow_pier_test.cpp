@@ -4,9 +4,7 @@
 // stored. Kills the mutation "const bool left = (i == 0);" of tests/mutations/cells.txt
 // (generators.cpp's sideFace ignoring EdgeSides::swapped), which survived the first
 // mutation run (issue #51, docs/testing.md).
-#include "runtime/cells/cellular_texture.h"
-#include "runtime/cells/generators.h"
-#include "tests/unit/cells/rectilinear_mesh.h"
+#include "tests/unit/cells/narrow_pier.h"
 
 #include <catch2/catch.hpp>
 
@@ -16,12 +14,12 @@ using namespace fgsg::rt;
 using namespace fgsg::rt::cells;
 
 TEST_CASE("bricks on a pier narrower than a brick end where its narrow faces end", "[cells]") {
-  // The pier: x in [0, 1], y in [0, 0.15], z in [0, 0.75] (10 courses of 0.075), standing
-  // on the ground. Bricks 0.4 long and 0.1 deep: longer than the narrow faces (0.15) with
-  // the corner's depth.
-  const auto m = fgsg::test::rectilinearMesh({{{0, 1}, {0, 0.15}, {0, 0.75}}}, {{0, 0, 0}}, true);
+  // The pier (narrow_pier.h): x in [0, 1], y in [0, 0.15], z in [0, 0.75] (10 courses of
+  // 0.075), standing on the ground. Bricks 0.4 long and 0.1 deep: longer than the narrow
+  // faces (0.15) with the corner's depth.
+  const auto m = fgsg::test::narrowPierMesh();
   CellularTexture tex(m, buildFeatureMesh(m));
-  for (FeatureRef f : tex.order()) layBricks(tex, f, {0.4, 0.075, 0.1});
+  fgsg::test::layPierBricks(tex);
   const FeatureMesh& fm = tex.features();
 
   // Of the four vertical edges, some are stored pointing down: sidesAt walks them upwards
