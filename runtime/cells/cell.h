@@ -45,10 +45,19 @@ struct Cell {
   // The cell's corners: the outline at depth 0, then at depth size.z.
   std::vector<Vec3> vertices() const {
     std::vector<Vec3> v;
-    const Polygon2 o = outline();
-    for (double z : {0.0, size.z()})
-      for (const Vec2& q : o) v.push_back(origin + axes.col(0) * q.x() + axes.col(1) * q.y() + axes.col(2) * z);
+    v.reserve(2 * (isBox() ? 4 : profile.size()));
+    forEachVertex([&](const Vec3& p) { v.push_back(p); });
     return v;
+  }
+  // Calls visit(corner) for vertices() in their order, without allocating (the overlap
+  // check's bounds).
+  template <class Visit>
+  void forEachVertex(Visit&& visit) const {
+    const Vec2 rectangle[4] = {Vec2(0, 0), Vec2(size.x(), 0), Vec2(size.x(), size.y()), Vec2(0, size.y())};
+    const Vec2* o = isBox() ? rectangle : profile.data();
+    const size_t n = isBox() ? 4 : profile.size();
+    for (double z : {0.0, size.z()})
+      for (size_t k = 0; k < n; ++k) visit(Vec3(origin + axes.col(0) * o[k].x() + axes.col(1) * o[k].y() + axes.col(2) * z));
   }
   // The box's corner k (bit 0: +length, bit 1: +height, bit 2: +depth).
   Vec3 corner(int k) const {

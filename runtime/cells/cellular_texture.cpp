@@ -145,8 +145,8 @@ double CellularTexture::edgeParameter(int edge, const Vec3& p) const {
 }
 
 void CellularTexture::project(const Cell& c, FeatureRef onto) {
-  const std::vector<Vec3> corners = c.vertices();
   if (onto.kind == FeatureKind::Edge) {
+    const std::vector<Vec3> corners = c.vertices();
     const FeatureEdge& e = fm_.edges[onto.index];
     // A leaning vertical edge's courses are level, and so are its cells' tops and bottoms
     // in their face (generators.cpp verticalCourses): a cell claims the stretch of it
@@ -169,17 +169,20 @@ void CellularTexture::project(const Cell& c, FeatureRef onto) {
     const FeatureFace& f = fm_.faces[onto.index];
     if (f.kind == FaceKind::Freeform) return;
     double top = -INFINITY;
-    for (const Vec3& p : corners) top = std::max(top, heightAbove(f, p));
-    if (top <= tolerance_) return;  // behind the face: not in its layer of cells
     std::vector<Vec2> uv;
-    for (const Vec3& p : corners) uv.push_back(projectOnFace(f, p));
-    faceMaps_[onto.index].claim(uv);
+    uv.reserve(2 * (c.isBox() ? 4 : c.profile.size()));
+    c.forEachVertex([&](const Vec3& p) {
+      top = std::max(top, heightAbove(f, p));
+      uv.push_back(projectOnFace(f, p));
+    });
+    if (top <= tolerance_) return;  // behind the face: not in its layer of cells
+    faceMaps_[onto.index].claim(std::move(uv));
   }
 }
 
 CellularTexture::Bounds CellularTexture::boundsOf(const Cell& c) {
   Bounds b{c.corner(0), c.corner(0)};
-  for (const Vec3& p : c.vertices()) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  c.forEachVertex([&](const Vec3& p) { b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p); });
   return b;
 }
 
@@ -250,17 +253,18 @@ bool CellularTexture::add(Cell cell, FeatureRef on, double keep) {
     cell = cut(good);
   }
   cell.feature = on;
-  cells_.push_back(cell);
+  cells_.push_back(std::move(cell));
   index(int(cells_.size()) - 1);
-  project(cell, on);
+  const Cell& placed = cells_.back();
+  project(placed, on);
   if (on.kind == FeatureKind::Corner) {
     const FeatureCorner& c = fm_.corners[on.index];
-    for (int e : c.edges) project(cell, {FeatureKind::Edge, e});
-    for (int f : c.faces) project(cell, {FeatureKind::Face, f});
+    for (int e : c.edges) project(placed, {FeatureKind::Edge, e});
+    for (int f : c.faces) project(placed, {FeatureKind::Face, f});
   } else if (on.kind == FeatureKind::Edge) {
     const FeatureEdge& e = fm_.edges[on.index];
     for (int f : {e.leftFace, e.rightFace})
-      if (f >= 0) project(cell, {FeatureKind::Face, f});
+      if (f >= 0) project(placed, {FeatureKind::Face, f});
   }
   return true;
 }

@@ -17,21 +17,31 @@ double signedArea(const Polygon2& p) {
   return 0.5 * a;
 }
 
-Polygon2 clipHalfPlane(const Polygon2& p, const Vec2& n, double c) {
-  Polygon2 out;
+void clipHalfPlaneInto(const Polygon2& p, const Vec2& n, double c, Polygon2& out) {
+  out.clear();
+  if (p.empty()) return;
+  // Corners that coincide (a vertex on the line) are one corner: a point equal to the
+  // last one kept is not kept again.
+  auto keep = [&](const Vec2& q) {
+    if (out.empty() || q != out.back()) out.push_back(q);
+  };
+  double da = n.dot(p[0]) - c;
   for (size_t i = 0; i < p.size(); ++i) {
     const Vec2 &a = p[i], &b = p[(i + 1) % p.size()];
-    const double da = n.dot(a) - c, db = n.dot(b) - c;
-    if (da <= 0) out.push_back(a);
-    if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + (b - a) * (da / (da - db)));
+    const double db = n.dot(b) - c;
+    if (da <= 0) keep(a);
+    if ((da < 0 && db > 0) || (da > 0 && db < 0)) keep(a + (b - a) * (da / (da - db)));
+    da = db;
   }
-  // Corners that coincide (a vertex on the line) are one corner.
-  Polygon2 kept;
-  for (const Vec2& q : out)
-    if (kept.empty() || q != kept.back()) kept.push_back(q);
-  while (kept.size() > 1 && kept.front() == kept.back()) kept.pop_back();
-  if (kept.size() < 3) kept.clear();
-  return kept;
+  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  if (out.size() < 3) out.clear();
+}
+
+Polygon2 clipHalfPlane(const Polygon2& p, const Vec2& n, double c) {
+  Polygon2 out;
+  out.reserve(p.size() + 1);
+  clipHalfPlaneInto(p, n, c, out);
+  return out;
 }
 
 namespace {
@@ -44,20 +54,64 @@ void sideLine(const Polygon2& p, size_t i, Vec2& n, double& c) {
 }  // namespace
 
 Polygon2 intersectConvex(const Polygon2& p, const Polygon2& clip) {
-  Polygon2 out = p;
+  Polygon2 out = p, next;
+  out.reserve(p.size() + clip.size()), next.reserve(p.size() + clip.size());
   for (size_t i = 0; i < clip.size() && !out.empty(); ++i) {
     Vec2 n;
     double c;
     sideLine(clip, i, n, c);
     if (n.squaredNorm() == 0) continue;
-    out = clipHalfPlane(out, n, c);
+    clipHalfPlaneInto(out, n, c, next);
+    out.swap(next);
   }
   return out;
 }
 
+namespace {
+// The first side of `hole` that `p` does not lie wholly inside, and whether `p` lies wholly
+// outside it; hole.size() when `p` lies inside every side.
+size_t firstSideNotHolding(const Polygon2& p, const Polygon2& hole, bool& whollyOutside) {
+  for (size_t i = 0; i < hole.size(); ++i) {
+    Vec2 n;
+    double c;
+    sideLine(hole, i, n, c);
+    if (n.squaredNorm() == 0) continue;
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Vec2& q : p) {
+      const double d = n.dot(q) - c;  // the clip's own arithmetic
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+    if (hi <= 0) continue;
+    whollyOutside = lo >= 0;
+    return i;
+  }
+  return hole.size();
+}
+}  // namespace
+
+bool holeMisses(const Polygon2& p, const Polygon2& hole) {
+  bool outside = false;
+  return firstSideNotHolding(p, hole, outside) < hole.size() && outside;
+}
+
 std::vector<Polygon2> subtractConvex(const Polygon2& p, const Polygon2& hole, double minArea) {
   std::vector<Polygon2> out;
-  Polygon2 rest = p;
+  // Most holes only touch `p` (a neighbouring cell's claim). A side that `p` lies wholly
+  // inside cuts nothing off; at the first side it does not, lying wholly outside it means
+  // the loop below makes all of `p` its first piece and leaves of `rest` only a line (no
+  // area: every later piece is dropped); lying inside every side, every piece is a line.
+  bool whollyOutside = false;
+  const size_t first = firstSideNotHolding(p, hole, whollyOutside);
+  if (first == hole.size()) return out;
+  if (whollyOutside) {
+    Vec2 n;
+    double c;
+    sideLine(hole, first, n, c);
+    Polygon2 piece = clipHalfPlane(p, -n, -c);
+    if (!piece.empty() && signedArea(piece) > minArea) out.push_back(std::move(piece));
+    return out;
+  }
+  Polygon2 rest = p, inside;
   for (size_t i = 0; i < hole.size() && !rest.empty(); ++i) {
     Vec2 n;
     double c;
@@ -65,7 +119,8 @@ std::vector<Polygon2> subtractConvex(const Polygon2& p, const Polygon2& hole, do
     if (n.squaredNorm() == 0) continue;
     Polygon2 outside = clipHalfPlane(rest, -n, -c);
     if (!outside.empty() && signedArea(outside) > minArea) out.push_back(std::move(outside));
-    rest = clipHalfPlane(rest, n, c);
+    clipHalfPlaneInto(rest, n, c, inside);
+    rest.swap(inside);
   }
   return out;  // what is left of `rest` lies inside the hole
 }

@@ -19,11 +19,18 @@ using Polygon2 = std::vector<Vec2>;
 double signedArea(const Polygon2& p);
 // The part of convex `p` with n . x <= c (Sutherland–Hodgman against one line).
 Polygon2 clipHalfPlane(const Polygon2& p, const Vec2& n, double c);
+// The same, written into `out` (cleared first; not `p`), so hot loops reuse its storage.
+void clipHalfPlaneInto(const Polygon2& p, const Vec2& n, double c, Polygon2& out);
 // The intersection of two convex polygons (`clip` counter-clockwise).
 Polygon2 intersectConvex(const Polygon2& p, const Polygon2& clip);
 // Convex `p` minus convex `hole`: disjoint convex pieces, those of area <= minArea dropped.
 // Each piece lies outside one edge of the hole and inside the edges before it.
 std::vector<Polygon2> subtractConvex(const Polygon2& p, const Polygon2& hole, double minArea);
+// Whether `hole` leaves `p` whole in subtractConvex: at the first side of the hole that
+// `p` does not lie wholly inside, it lies wholly outside (touching the side allowed).
+// Then subtractConvex gives `p` itself where `p` has no repeated corners (a clip's
+// output) and more than minArea, without allocating.
+bool holeMisses(const Polygon2& p, const Polygon2& hole);
 // The union of convex pieces with disjoint interiors when that union is convex itself
 // (their convex hull's area is their summed area within `areaTol`); empty otherwise.
 Polygon2 convexUnion(const std::vector<Polygon2>& pieces, double areaTol);

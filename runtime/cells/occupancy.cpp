@@ -123,6 +123,16 @@ FaceOccupancy::FaceOccupancy(const FeatureFace& face, const surface::SurfaceMesh
     }
     triangles_.push_back(tri);
     for (const Vec2& q : tri) vertexHeights_.push_back(q.y());
+    TriangleSides sides;
+    sides.lo = sides.hi = tri[0];
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 &a = tri[k], &b = tri[(k + 1) % 3];
+      sides.n[k] = Vec2(b.y() - a.y(), a.x() - b.x());  // outward, as intersectConvex's sides
+      sides.c[k] = sides.n[k].dot(a);
+      sides.lo = sides.lo.cwiseMin(a), sides.hi = sides.hi.cwiseMax(a);
+    }
+    sides.proper = cross(tri[0], tri[1], tri[2]) > 0;
+    triangleSides_.push_back(sides);
   }
   std::sort(vertexHeights_.begin(), vertexHeights_.end());
   vertexHeights_.erase(std::unique(vertexHeights_.begin(), vertexHeights_.end()), vertexHeights_.end());
@@ -237,13 +247,31 @@ std::vector<Polygon2> FaceOccupancy::insidePieces(const Polygon2& region, double
   if (region.size() < 3) return out;
   Vec2 lo, hi;
   boxOf(region, lo, hi);
-  for (const auto& t : triangles_) {
-    const Polygon2 tri(t.begin(), t.end());
-    Vec2 tlo, thi;
-    boxOf(tri, tlo, thi);
-    if (!boxesMeet(lo, hi, tlo, thi) || cross(t[0], t[1], t[2]) <= 0) continue;
-    Polygon2 piece = intersectConvex(region, tri);
-    if (!piece.empty() && signedArea(piece) > minArea) out.push_back(std::move(piece));
+  // intersectConvex(region, triangle) for every triangle the region's box meets, the
+  // clips written into two reused buffers.
+  Polygon2 piece, next;
+  for (const TriangleSides& t : triangleSides_) {
+    if (!boxesMeet(lo, hi, t.lo, t.hi) || !t.proper) continue;
+    // Wholly (strictly) outside one side: clipping against it keeps no corner and
+    // crosses nothing (after an earlier side's clip, at most a rounding sliver, far below
+    // every caller's minArea, which is positive).
+    bool outside = false;
+    for (int k = 0; k < 3 && !outside; ++k) {
+      outside = true;
+      for (const Vec2& q : region)
+        if (!(t.n[k].dot(q) - t.c[k] > 0)) {
+          outside = false;
+          break;
+        }
+    }
+    if (outside) continue;
+    piece.assign(region.begin(), region.end());
+    for (int k = 0; k < 3 && !piece.empty(); ++k) {
+      if (t.n[k].squaredNorm() == 0) continue;
+      clipHalfPlaneInto(piece, t.n[k], t.c[k], next);
+      piece.swap(next);
+    }
+    if (!piece.empty() && signedArea(piece) > minArea) out.push_back(piece);
   }
   return out;
 }
@@ -253,18 +281,21 @@ std::vector<Polygon2> FaceOccupancy::freePieces(const Polygon2& region, double m
   if (pieces.empty()) return pieces;
   Vec2 lo, hi;
   boxOf(region, lo, hi);
+  std::vector<Polygon2> next;
   for (int c : claimsNear(lo, hi)) {
-    std::vector<Polygon2> next;
+    next.clear();
     for (Polygon2& p : pieces) {
       Vec2 plo, phi;
       boxOf(p, plo, phi);
-      if (!boxesMeet(plo, phi, claimLo_[c], claimHi_[c])) {
+      // Pieces are clips' outputs of more than minArea: a claim that misses one (most
+      // only touch it) leaves it as it is.
+      if (!boxesMeet(plo, phi, claimLo_[c], claimHi_[c]) || holeMisses(p, claims_[c])) {
         next.push_back(std::move(p));
         continue;
       }
       for (Polygon2& q : subtractConvex(p, claims_[c], minArea)) next.push_back(std::move(q));
     }
-    pieces = std::move(next);
+    pieces.swap(next);
     if (pieces.empty()) break;
   }
   return pieces;
@@ -312,8 +343,8 @@ double FaceOccupancy::freeArea() const {
   return a;
 }
 
-void FaceOccupancy::claim(const std::vector<Vec2>& points) {
-  std::vector<Vec2> hull = convexHull(points);
+void FaceOccupancy::claim(std::vector<Vec2> points) {
+  std::vector<Vec2> hull = convexHull(std::move(points));
   if (hull.size() < 3) return;
   Vec2 lo = hull[0], hi = hull[0];
   for (const Vec2& q : hull) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);

@@ -78,7 +78,7 @@ class FaceOccupancy {
   double coverage() const { const double a = area(); return a > 0 ? 1 - freeArea() / a : 1; }
   // Marks a convex polygon (its corners in any order: their convex hull is taken) as
   // claimed.
-  void claim(const std::vector<Vec2>& points);
+  void claim(std::vector<Vec2> points);
 
   bool empty() const { return triangles_.empty(); }
   Vec2 lo() const { return lo_; }
@@ -96,6 +96,15 @@ class FaceOccupancy {
   std::vector<Interval> reachOf(const std::vector<Polygon2>& pieces, double minimum) const;
 
   std::vector<std::array<Vec2, 3>> triangles_;  // counter-clockwise
+  // Each triangle's sides as the half-planes n . x <= c of its inside, and its box, so
+  // that insidePieces clips against them without rebuilding them for every query.
+  struct TriangleSides {
+    std::array<Vec2, 3> n;
+    std::array<double, 3> c;
+    Vec2 lo, hi;
+    bool proper;  // positive area (a degenerate triangle holds nothing)
+  };
+  std::vector<TriangleSides> triangleSides_;
   std::vector<double> vertexHeights_;      // the triangles' corners' v, sorted, distinct
   std::vector<std::vector<Vec2>> claims_;  // convex, counter-clockwise
   std::vector<Vec2> claimLo_, claimHi_;    // their boxes

@@ -52,6 +52,29 @@ int overlappingPairs(const std::vector<Cell>& cells) {
 
 }  // namespace
 
+TEST_CASE("convex clipping: a hole that only touches leaves the polygon whole, exactly", "[cells][clip]") {
+  // The free-piece fast path (#46): a neighbour's claim sharing the side x = 1 with the
+  // unit square. Its sides in order: y >= 0, x <= 2 and y <= 1 hold the whole square
+  // (the first two strictly, y <= 1 touching), and the fourth, x >= 1, has the square
+  // wholly on its outer side, touching along x = 1: the square stays one piece, its
+  // corners unchanged.
+  const Polygon2 square = rectangle(0, 0, 1, 1);
+  CHECK(holeMisses(square, rectangle(1, 0, 2, 1)));
+  const std::vector<Polygon2> whole = subtractConvex(square, rectangle(1, 0, 2, 1), 1e-12);
+  REQUIRE(whole.size() == 1);
+  CHECK(whole[0] == square);
+  // The hole's first side, y >= 0.5, crosses the square: not missed.
+  CHECK_FALSE(holeMisses(square, rectangle(0.5, 0.5, 1.5, 1.5)));
+  // A hole around the square holds it on every side: nothing is left.
+  CHECK_FALSE(holeMisses(square, rectangle(-1, -1, 2, 2)));
+  CHECK(subtractConvex(square, rectangle(-1, -1, 2, 2), 1e-12).empty());
+  // Clipping into a reused buffer: x + y <= 1 keeps (0, 0), (1, 0) and (0, 1), whatever
+  // the buffer held.
+  Polygon2 out{Vec2(7, 7)};
+  clipHalfPlaneInto(square, Vec2(1, 1), 1, out);
+  CHECK(out == Polygon2{Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)});
+}
+
 TEST_CASE("convex clipping: intersections, differences, unions and insets worked by hand", "[cells][clip]") {
   const Polygon2 square = rectangle(0, 0, 1, 1);
   CHECK(signedArea(square) == Approx(1));
