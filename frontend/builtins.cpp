@@ -19,7 +19,10 @@ const CommandInfo kCommands[] = {
     {CommandId::Scale, "S", 3, 3, BodyRule::None, "S(sx, sy, sz)", nullptr},
     // The same command for grammars whose shapes are named S (FGSG Fig. 11's glyphs).
     {CommandId::Scale, "Size", 3, 3, BodyRule::None, "Size(sx, sy, sz)", nullptr},
-    {CommandId::Instance, "I", 1, 1, BodyRule::None, "I(\"asset\")", nullptr},
+    {CommandId::Instance, "I", 1, 3, BodyRule::None,
+     "I(\"asset\") or I(\"asset\", \"yUp\" or \"zUp\", \"alignSizeAndPosition\" or \"keepSizeAndPosition\" or "
+     "\"keepSizeAlignPosition\")",
+     nullptr},
     {CommandId::InstanceCollide, "IC", 1, 1, BodyRule::None, "IC(\"asset\")", nullptr},
     {CommandId::InstanceMerge, "IM", 3, 3, BodyRule::None, "IM(\"asset\", maxDist, maxAngle)",
      nullptr},

@@ -70,6 +70,18 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
   switch (cmd.id) {
     case CommandId::Scale: numArgs(0, true); break;
     case CommandId::Instance:
+      stringArg(0, "asset");
+      // CityEngine's i(asset, upAxisOfGeometry, insertMode), as words.
+      for (size_t k = 1; k < item.args.size(); ++k) {
+        const std::string word = stringArg(k, k == 1 ? "up axis" : "insert mode");
+        const bool known = k == 1 ? word == "yUp" || word == "zUp"
+                                  : word == "alignSizeAndPosition" || word == "keepSizeAndPosition" ||
+                                        word == "keepSizeAlignPosition";
+        if (stringOk && !known)
+          diags_.error("E028", item.args[k]->range, "'" + word + "' is not " +
+                                                        (k == 1 ? "an up axis" : "an insert mode") + ": " + cmd.signature);
+      }
+      break;
     case CommandId::InstanceCollide: stringArg(0, "asset"); break;
     case CommandId::InstanceMerge:
       stringArg(0, "asset");

@@ -155,6 +155,11 @@ enum class CellGenerator : uint8_t { BrickBond, HeaderRow, ArchBricks, RandomSto
 
 enum class InstanceMode : uint8_t { Plain, Collide, Merge };
 
+// How I() fits its asset (CityEngine's i() insertMode): stretched onto the scope, or at its own
+// size, either where its file puts it in the scope's frame (the scope becomes the asset's box)
+// or centred on the scope's x and z with its box on y = 0.
+enum class InsertFit : uint8_t { AlignSizeAndPosition, KeepSizeAndPosition, KeepSizeAlignPosition };
+
 // Material(property, value) (frontend::materialProperty's words, in this order); ColorMap is
 // the .cga dialect's texture() (the image of the current projection, its frame kept).
 enum class MaterialProperty : uint8_t { Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, NormalMap, ColorMap };
@@ -206,6 +211,10 @@ struct Op {
   // along the line (UINT32_MAX: a tube).
   uint32_t asset = 0;
   InstanceMode mode = InstanceMode::Plain;
+  // Instance: CityEngine's i(asset, upAxisOfGeometry, insertMode): zUp turns the asset -90
+  // degrees about X before it is fitted (runtime/insert_fit.h).
+  InsertFit insertFit = InsertFit::AlignSizeAndPosition;
+  bool zUp = false;
   // Instance: the symbol the instance is recorded under (a .cga leaf after the insert,
   // `i("tree.obj") Tree.`), without parameters; kPlacingSymbol: the shape that places it.
   static constexpr uint32_t kPlacingSymbol = UINT32_MAX;

@@ -330,6 +330,16 @@ class Lowerer {
                                                          : InstanceMode::Merge;
         op.index = m_.internAsset(constString(*item.args[0]));
         if (!item.recordAs.empty()) op.recordAs = leafSymbol(symbolDisplayName(item.recordAs));
+        if (cmd.id == CommandId::Instance) {  // I("asset"[, "yUp" | "zUp"[, insert mode]]), checked by sema
+          if (item.args.size() > 1) op.zUp = constString(*item.args[1]) == "zUp";
+          if (item.args.size() > 2) {
+            const std::string fit = constString(*item.args[2]);
+            op.insertFit = fit == "keepSizeAndPosition"     ? InsertFit::KeepSizeAndPosition
+                           : fit == "keepSizeAlignPosition" ? InsertFit::KeepSizeAlignPosition
+                                                            : InsertFit::AlignSizeAndPosition;
+          }
+          break;
+        }
         allArgs(1);
         break;
       case CommandId::Subdiv:

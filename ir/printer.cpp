@@ -362,6 +362,9 @@ class Printer {
                (op.index < m_.assets.size() ? quoted(m_.assets[op.index])
                                             : "asset#" + std::to_string(op.index)) +
                " " + (mode < 3 ? kModes[mode] : "mode#" + std::to_string(mode));
+        if (op.zUp) text += " zUp";
+        if (op.insertFit == InsertFit::KeepSizeAndPosition) text += " keepSizeAndPosition";
+        if (op.insertFit == InsertFit::KeepSizeAlignPosition) text += " keepSizeAlignPosition";
         if (op.recordAs != Op::kPlacingSymbol) text += " as " + symbolName(op.recordAs);
         text = withArgs(text);
         break;

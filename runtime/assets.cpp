@@ -366,7 +366,8 @@ bool attachMaterialImages(const std::string& path, const io::MeshFileContent& fi
   return true;
 }
 
-bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
+// `sourceBox` receives the file's bounding box (lo, then hi), which the unit box forgets.
+bool loadMeshFile(const std::string& path, Mesh& out, std::string& error, std::array<double, 6>& sourceBox) {
   const std::string ext = io::lowerExtension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
     error = "asset file '" + path + "' has an unsupported format '" + ext +
@@ -422,6 +423,7 @@ bool loadMeshFile(const std::string& path, Mesh& out, std::string& error) {
     error = "asset file '" + path + "' is degenerate: all its vertices coincide";
     return false;
   }
+  sourceBox = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
   std::vector<uint32_t> tris;
   tris.reserve(3 * om.n_faces());
   std::vector<V2> cornerUV;
@@ -494,6 +496,7 @@ bool makeBuiltinPrimitive(const std::string& name, Mesh& out) {
 int AssetLibrary::resolve(const std::string& name, std::string& error) {
   if (auto it = byName_.find(name); it != byName_.end()) return it->second;
   Mesh mesh;
+  std::array<double, 6> box{0, 0, 0, 1, 1, 1};  // a built-in's own box: the unit box
   if (!makeBuiltinPrimitive(name, mesh)) {
     std::vector<std::string> searched;
     std::string found;
@@ -518,8 +521,10 @@ int AssetLibrary::resolve(const std::string& name, std::string& error) {
               joinNames(builtinPrimitiveNames()) + ", tube3 ... tube64) and no such file in " + joinNames(searched);
       return -1;
     }
-    if (!loadMeshFile(found, mesh, error)) return -1;
+    if (!loadMeshFile(found, mesh, error, box)) return -1;
   }
+  sourceBoxes_.resize(meshes_.size(), {0, 0, 0, 1, 1, 1});  // generated meshes before it
+  sourceBoxes_.push_back(box);
   meshes_.push_back(std::move(mesh));
   return byName_[name] = int(meshes_.size() - 1);
 }

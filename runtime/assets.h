@@ -34,6 +34,11 @@ class AssetLibrary {
   // unknown name or an unreadable file gives -1 and a message in `error`.
   int resolve(const std::string& name, std::string& error);
   const Mesh& mesh(int index) const { return meshes_[index]; }
+  // The bounding box (lo x y z, hi x y z) an asset file gave before it was normalised (a
+  // built-in's, and generated geometry's: the unit box): CityEngine's insert modes keep it.
+  std::array<double, 6> sourceBox(int index) const {
+    return size_t(index) < sourceBoxes_.size() ? sourceBoxes_[size_t(index)] : std::array<double, 6>{0, 0, 0, 1, 1, 1};
+  }
 
   // Registers geometry the derivation built itself (a swept line) under `name`: it is
   // normalised into the unit box like every asset, and `unitBoxToWorld` (column-major
@@ -43,6 +48,7 @@ class AssetLibrary {
  private:
   std::vector<std::string> searchDirs_;
   std::vector<Mesh> meshes_;
+  std::vector<std::array<double, 6>> sourceBoxes_;  // per mesh, see sourceBox
   std::unordered_map<std::string, int> byName_;
 };
 

@@ -1,6 +1,7 @@
 #include "backend/commands/collision_commands.h"
 
 #include "backend/engine/derivation.h"
+#include "runtime/insert_fit.h"
 
 #include <cmath>
 #include <string>
@@ -34,6 +35,8 @@ void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, Sta
       // except inside a Lock set, which a collision anywhere removes whole.
       if (!placeChecked(op, st.scope, sym, ex.params, count, a) && (!d_.module().collision.omit || d_.inLock()))
         ex.culled = ex.collided = true;
+      // An asset that keeps its size sets the scope to its box, as CityEngine's i() does.
+      if (op.insertFit != ir::InsertFit::AlignSizeAndPosition) st.scope = d_.insertFitted(op, st.scope);
       break;
     }
     case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
@@ -44,16 +47,19 @@ void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, Sta
 
 // I, IC and IM. False when a collision rejected the instance: the caller culls the
 // rest of its production.
-bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& scope, uint32_t symbol, const double* params,
+bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& written, uint32_t symbol, const double* params,
                                      uint32_t paramCount, const double* args) {
+  rt::Scope kept;  // the scope the asset fills, when it keeps its size (no copy otherwise)
+  const rt::Scope& scope =
+      op.insertFit == ir::InsertFit::AlignSizeAndPosition ? written : (kept = d_.insertFitted(op, written));
   if (!placement_) {
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
     return true;
   }
   rt::DeriveStats& stats = d_.stats();
-  const rt::Mat4 t = scope.unitBoxToWorld();
+  const rt::Mat4 t = rt::insertTransform(scope, op.zUp);
   if (!t.allFinite())  // placeInstance words the error
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
   if (op.mode == ir::InstanceMode::Merge) {
     const double maxDist = args[0], maxAngle = args[1];
     if (!(maxDist >= 0) || !(maxAngle >= 0) || !std::isfinite(maxDist) || !std::isfinite(maxAngle))
@@ -65,7 +71,7 @@ bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& scope, u
       ++stats.merges;
       return true;
     }
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
     placement_->placedMergeable(op.index, t, scope);
     return true;
   }
@@ -76,7 +82,7 @@ bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& scope, u
       return false;
     }
   }
-  d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc);
+  d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
   return true;
 }
 

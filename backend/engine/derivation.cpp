@@ -268,6 +268,7 @@ void Derivation::resolveAssets() {
   assetHasTexcoords_.assign(m_.assets.size(), 0);
   assetHasImages_.assign(m_.assets.size(), 0);
   assetFlatAxes_.assign(m_.assets.size(), 0);
+  assetSourceBox_.assign(m_.assets.size(), {0, 0, 0, 1, 1, 1});
   for (size_t i = 0; i < m_.assets.size(); ++i) {
     std::string error;
     const int mesh = assets_.resolve(m_.assets[i], error);
@@ -275,6 +276,7 @@ void Derivation::resolveAssets() {
     assetHasTexcoords_[i] = assets_.mesh(mesh).hasTexcoords();
     assetHasImages_[i] = assets_.mesh(mesh).textured();
     assetFlatAxes_[i] = flatAxes(assets_.mesh(mesh));
+    assetSourceBox_[i] = assets_.sourceBox(mesh);
   }
 }
 

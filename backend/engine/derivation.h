@@ -102,7 +102,10 @@ class Derivation final : public QueryHost {
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
   // or reaches past float range); I("none") adds nothing.
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
-                     uint32_t paramCount, ir::Loc loc);
+                     uint32_t paramCount, ir::Loc loc, bool zUp = false);
+  // The scope an Instance op's asset fills, as its insert mode says (runtime/insert_fit.h);
+  // placeInstance(..., op.zUp) then turns a zUp asset inside it.
+  rt::Scope insertFitted(const ir::Op& op, const rt::Scope& scope) const;
   // An ABOP polygon (`{ . }`): its world-space vertices fanned into triangles from the
   // first, output as geometry of its own in the turtle's colour (a leaf green unless
   // Color says), under the symbol "polygon".
@@ -362,6 +365,7 @@ class Derivation final : public QueryHost {
   // Per grammar asset: it has texture coordinates, so a Texture above its I() draws on it.
   std::vector<uint8_t> assetHasTexcoords_;
   std::vector<uint8_t> assetFlatAxes_;  // per asset: 1 X, 2 Y, 4 Z for an axis it has no extent along
+  std::vector<std::array<double, 6>> assetSourceBox_;  // per asset: its file's box (AssetLibrary::sourceBox)
   std::vector<uint8_t> assetHasImages_;  // ... and images of its own (an OBJ's materials), drawn untinted
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).

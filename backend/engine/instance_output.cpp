@@ -7,6 +7,7 @@
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/uv_projection.h"
 #include "runtime/float_range.h"
+#include "runtime/insert_fit.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -122,10 +123,19 @@ void Derivation::checkInstanceReach(const rt::Mat4& t, uint32_t symbol, ir::Loc 
   }
 }
 
+rt::Scope Derivation::insertFitted(const ir::Op& op, const rt::Scope& scope) const {
+  if (op.insertFit == ir::InsertFit::AlignSizeAndPosition) return scope;
+  const std::array<double, 6> box =
+      op.index < assetSourceBox_.size() ? assetSourceBox_[op.index] : std::array<double, 6>{0, 0, 0, 1, 1, 1};
+  // ir::InsertFit and rt::InsertFitMode list the modes in the same order.
+  return rt::insertedScope(scope, rt::Vec3(box[0], box[1], box[2]), rt::Vec3(box[3], box[4], box[5]), op.zUp,
+                           static_cast<rt::InsertFitMode>(op.insertFit));
+}
+
 void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
-                               const double* params, uint32_t paramCount, ir::Loc loc) {
+                               const double* params, uint32_t paramCount, ir::Loc loc, bool zUp) {
   if (asset == noneAsset_) return;
-  const rt::Mat4 t = scope.unitBoxToWorld();
+  const rt::Mat4 t = rt::insertTransform(scope, zUp);
   if (!rt::unitBoxClearlyFitsFloat(t)) checkInstanceReach(t, symbol, loc);
   // Written in place: a million-segment L-system places an instance per segment.
   rt::Instance& inst = out_.instances.emplace_back();

@@ -108,10 +108,13 @@ void Derivation::directInstance(rt::Scope& s, uint32_t op, uint32_t symbol, cons
   const uint32_t outerDepth = placingDepth_;
   placingDepth_ = depth;
   const ir::Op& placed = *layout_.ops[op];
+  // CityEngine's insert mode: a kept size sets the scope to the asset's box.
+  if (placed.insertFit != ir::InsertFit::AlignSizeAndPosition) s = insertFitted(placed, s);
+  const rt::Scope& fitted = s;
   if (placed.recordAs != ir::Op::kPlacingSymbol)  // a .cga leaf after the insert: CollisionCommands::apply
-    placeInstance(placed.index, s, placed.recordAs, nullptr, 0, placed.loc);
+    placeInstance(placed.index, fitted, placed.recordAs, nullptr, 0, placed.loc, placed.zUp);
   else
-    placeInstance(placed.index, s, symbol, params, m_.symbols[symbol].slotCount, placed.loc);
+    placeInstance(placed.index, fitted, symbol, params, m_.symbols[symbol].slotCount, placed.loc, placed.zUp);
   placingDepth_ = outerDepth;
 }
 

@@ -475,7 +475,9 @@ void Derivation::interpretString(const ModuleString& str) {
         turtle_.command(st, op, a, so.argCount);
         break;
       case ir::OpKind::Instance:
-        placeInstance(op.index, st.scope, so.owner == UINT32_MAX ? axiomSymbol_ : so.owner, a, so.argCount, op.loc);
+        placeInstance(op.index, insertFitted(op, st.scope), so.owner == UINT32_MAX ? axiomSymbol_ : so.owner, a,
+                      so.argCount, op.loc, op.zUp);
+        if (op.insertFit != ir::InsertFit::AlignSizeAndPosition) st.scope = insertFitted(op, st.scope);  // as CollisionCommands::apply
         break;
       default: scope_.command(st, op, a); break;
     }

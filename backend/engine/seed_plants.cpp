@@ -56,6 +56,7 @@ void Derivation::adoptParent(const Derivation& parent) {
   textures_.shareFrom(parent.textures_);
   assetHasTexcoords_ = parent.assetHasTexcoords_;
   assetFlatAxes_ = parent.assetFlatAxes_;
+  assetSourceBox_ = parent.assetSourceBox_;
   assetHasImages_ = parent.assetHasImages_;
   deadline_ = parent.deadline_;  // the same end, with a countdown of its own
   memoryBudget_ = parent.memoryBudget_;

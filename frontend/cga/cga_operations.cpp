@@ -13,7 +13,7 @@
 //   translate(rel|abs, world, x, y, z)  Translate("rel" or "abs", "world", x, y, z)
 //   rotate(rel, scope, x, y, z)         R(x, y, z)
 //   rotate(rel|abs, world, x, y, z)     Rotate("rel" or "abs", "world", x, y, z)
-//   i("asset"), builtin:cube/unitQuad   I(...), moved after the scope operations that follow
+//   i("asset"[, upAxis[, insertMode]])  I(...) (also builtin:cube/unitQuad), moved after the scope operations that follow
 //                                       it (CityEngine transforms the inserted geometry with
 //                                       the scope); a missing file is W801, the insert skipped
 //   s t r center color set(material.color.rgb, ...)
@@ -410,6 +410,14 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
   if (name == "i") {
     if (!noBody()) return;
     insert(op, seq, env);
+    return;
+  }
+  // The insert waits for the scope operations after it, which for an asset that keeps its
+  // size would act before the asset sets the scope (CityEngine's order): only moves commute.
+  if (seq.pendingInsert && seq.pendingInsert->args.size() > 2 &&
+      seq.pendingInsert->args[2]->text != "alignSizeAndPosition" &&
+      (name == "s" || name == "r" || name == "rotate" || name == "center")) {
+    notSupported(nameAt, name + "() after an i() that keeps the asset's size");
     return;
   }
   if (name == "s" || name == "t") {
@@ -829,13 +837,31 @@ bool Translator::assetPath(std::string& path, const SourceRange& at, const char*
   return false;
 }
 
+// i(asset[, yUp|zUp[, alignSizeAndPosition|keepSizeAndPosition|keepSizeAlignPosition]]):
+// I("asset", "zUp", "keepSizeAndPosition") (runtime/insert_fit.h fits it).
 void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& env) {
   const auto argCtx = op->expr();
   const SourceRange at = rangeOf(op);
-  if (argCtx.size() != 1) {
-    if (argCtx.size() > 1) notSupported(rangeOf(argCtx[1]), "i()'s up axis and insert mode");
+  if (argCtx.empty() || argCtx.size() > 3) {
+    if (argCtx.size() > 3) notSupported(rangeOf(argCtx[3]), "i()'s cleanup mode");
     else error("E016", rangeOf(op->name), "i takes the asset to insert");
     return;
+  }
+  std::vector<ExprPtr> words;
+  for (size_t k = 1; k < argCtx.size(); ++k) {
+    const std::string word = selectorWord(argCtx[k]);
+    const bool known = k == 1 ? word == "yUp" || word == "zUp"
+                              : word == "alignSizeAndPosition" || word == "keepSizeAndPosition" ||
+                                    word == "keepSizeAlignPosition";
+    if (!known) {
+      error("E028", rangeOf(argCtx[k]),
+            "i()'s " + std::string(k == 1 ? "up axis is yUp or zUp" :
+                                            "insert mode is alignSizeAndPosition, keepSizeAndPosition or "
+                                            "keepSizeAlignPosition") +
+                ", not '" + argCtx[k]->getText() + "'");
+      return;
+    }
+    words.push_back(stringExpr(word, rangeOf(argCtx[k])));
   }
   ExprPtr asset = expr(argCtx[0], env);
   if (!asset) return;
@@ -854,6 +880,7 @@ void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& e
   }
   Item item = command("I", at);
   item.args.push_back(std::move(asset));
+  for (ExprPtr& w : words) item.args.push_back(std::move(w));
   if (seq.pendingInsert) seq.out.items.push_back(std::move(*seq.pendingInsert));
   seq.pendingInsert = std::make_unique<Item>(std::move(item));
 }

@@ -168,3 +168,51 @@ TEST_CASE("an insert takes the scope operations written after it", "[cga][dialec
   CHECK(a.x() == Approx(1));
   CHECK((b - a).norm() == Approx(std::sqrt(11.0)));
 }
+
+// CityEngine's i(asset, upAxisOfGeometry, insertMode), in the fgsg dialect as I("asset", "zUp",
+// "keepSizeAndPosition"). examples/assets/stepped_column.obj spans x, y -0.75 .. 0.75 and z
+// 0 .. 3 (a column standing along z); zUp turns it -90 degrees about X, (x, y, z) -> (x, z, -y),
+// to x -0.75 .. 0.75, y 0 .. 3, z -0.75 .. 0.75, size 1.5 x 3 x 1.5. Its unit box's corner
+// (0, 0, 0) is the file's (-0.75, -0.75, 0), turned (-0.75, 0, 0.75); (0, 0, 1), the file's
+// (-0.75, -0.75, 3) on the column's top, turned (-0.75, 3, 0.75).
+TEST_CASE("an insert keeps the asset's size and position, turned up from z", "[cga][insert]") {
+  using test::deriveText;
+  using test::unitPoint;
+  // The scope at (1, 0, 2): the turned column where its file puts it, read from there.
+  const auto keep = deriveText("axiom: T(1, 0, 2) S(4, 4, 4) I(\"stepped_column.obj\", \"zUp\", \"keepSizeAndPosition\");\n");
+  REQUIRE(keep.ok);
+  REQUIRE(keep.instances.instances.size() == 1);
+  const rt::Instance& k = keep.instances.instances[0];
+  CHECK((unitPoint(k, 0, 0, 0) - Eigen::Vector3d(0.25, 0, 2.75)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(k, 0, 0, 1) - Eigen::Vector3d(0.25, 3, 2.75)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(k, 1, 1, 1) - Eigen::Vector3d(1.75, 3, 1.25)).norm() == Approx(0).margin(1e-12));
+
+  // Fitted (alignSizeAndPosition) to a 1 x 6 x 2 scope, zUp: the top (unit z = 1) at y = 6,
+  // the file's -y side (unit y = 0) at the scope's far z, 2.
+  const auto fit = deriveText("axiom: S(1, 6, 2) I(\"stepped_column.obj\", \"zUp\");\n");
+  REQUIRE(fit.ok);
+  const rt::Instance& f = fit.instances.instances.at(0);
+  CHECK((unitPoint(f, 0, 0, 0) - Eigen::Vector3d(0, 0, 2)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(f, 0, 0, 1) - Eigen::Vector3d(0, 6, 2)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(f, 0, 1, 0) - Eigen::Vector3d(0, 0, 0)).norm() == Approx(0).margin(1e-12));
+}
+
+TEST_CASE("an insert keeps the asset's size, centred on the scope's x and z", "[cga][insert]") {
+  using test::deriveText;
+  using test::unitPoint;
+  // yUp: 1.5 x 1.5 x 3 in a 4 x 2 x 6 scope: at ((4 - 1.5) / 2, 0, (6 - 3) / 2) = (1.25, 0, 1.5).
+  const auto r = deriveText("axiom: S(4, 2, 6) I(\"stepped_column.obj\", \"yUp\", \"keepSizeAlignPosition\");\n");
+  REQUIRE(r.ok);
+  const rt::Instance& c = r.instances.instances.at(0);
+  CHECK((unitPoint(c, 0, 0, 0) - Eigen::Vector3d(1.25, 0, 1.5)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(c, 1, 1, 1) - Eigen::Vector3d(2.75, 1.5, 4.5)).norm() == Approx(0).margin(1e-12));
+  // The scope becomes the asset's box (CityEngine's i()): a cube after it fills the file's
+  // box, -0.75 .. 0.75 x -0.75 .. 0.75 x 0 .. 3.
+  const auto s = deriveText("axiom: I(\"stepped_column.obj\", \"yUp\", \"keepSizeAndPosition\") I(\"cube\");\n");
+  REQUIRE(s.ok);
+  const rt::Instance& cube = s.instances.instances.at(1);
+  CHECK((unitPoint(cube, 0, 0, 0) - Eigen::Vector3d(-0.75, -0.75, 0)).norm() == Approx(0).margin(1e-12));
+  CHECK((unitPoint(cube, 1, 1, 1) - Eigen::Vector3d(0.75, 0.75, 3)).norm() == Approx(0).margin(1e-12));
+  // An unknown word is located, not ignored.
+  CHECK_THROWS_WITH(deriveText("axiom: I(\"cube\", \"xUp\");\n"), Catch::Matchers::Contains("E028"));
+}
