@@ -369,7 +369,6 @@ struct Builder {
         baked.push_back(i);
         continue;
       }
-      const Instance& inst = list.instances[i];
       const bool mirrored = fitOf[i] == TrsFit::Mirrored;
       Material look = materialOf(i);
       if (vary) look.color = {1, 1, 1}, look.vertexColors = true;

@@ -24,7 +24,7 @@ struct Harness {
   Module m;
   Harness() {
     m.symbols.push_back({"A", {N, Type::Vec3, B}, 5, {0}, {}, {}});
-    m.attrs.push_back({"height", N, Expr::number(12), {}});
+    m.attrs.push_back({"height", N, Expr::number(12), {}, false, {}});
     Rule r;
     r.symbol = 0;
     r.label = "A#1";

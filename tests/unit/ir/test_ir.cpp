@@ -51,7 +51,7 @@ Op emitOp(uint32_t symbol, std::vector<Expr> args) {
 Module sampleModule() {
   Module m;
   m.sourceName = "fig4.fgsg";
-  m.attrs.push_back({"height", Type::Num, Expr::number(12), {}});
+  m.attrs.push_back({"height", Type::Num, Expr::number(12), {}, false, {}});
   m.internAsset("torus");
   m.symbols.push_back({"Axiom", {}, 0, {0}, {}, {}});
   m.symbols.push_back({"A", {Type::Num, Type::Num}, 2, {1}, {}, {}});

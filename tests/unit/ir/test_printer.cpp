@@ -137,7 +137,7 @@ TEST_CASE("printer: calls, queries, vectors, constants", "[ir][printer]") {
   m.environment.push_back({"surface", "", "bunny.off", {}});
   m.environment.push_back({"field", "F1", "tensor(\"foot.tfield\")", {}});
   m.environment.push_back({"texture", "mask", "paint.png", {}});
-  m.attrs.push_back({"height", Type::Num, Expr::number(12), {}});
+  m.attrs.push_back({"height", Type::Num, Expr::number(12), {}, false, {}});
   const Rule r = abcRule();
   auto p = [&](const Expr& e) { return printExpr(m, &r, e); };
 
