@@ -460,6 +460,16 @@ void checkCurves(const InstanceList& list, const Selection& which) {
 
 }  // namespace
 
+bool assemblyBlockMayStart(const Deadline& deadline, double writeSecondsPerTriangle, size_t trianglesTaken) {
+  if (deadline.passed()) return false;
+  return !(writeSecondsPerTriangle > 0) || deadline.remainingSeconds() > writeSecondsPerTriangle * double(trianglesTaken);
+}
+
+const Mesh* instanceMesh(const Instance& inst, const InstanceList& list, const AssetLibrary& library,
+                         const std::vector<int>& meshOf) {
+  return assetOf(inst, list, library, meshOf);
+}
+
 bool resolveAssets(const InstanceList& list, AssetLibrary& library, std::vector<int>& meshOf,
                    std::string& error) {
   meshOf.assign(list.assets.size(), -1);
@@ -540,10 +550,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
   Scratch serialScratch;
   size_t begin = 0;
   auto timeLeft = [&] {
-    if (!deadline) return true;
-    if (deadline->passed()) return false;
-    return !(writeSecondsPerTriangle > 0) ||
-           deadline->remainingSeconds() > writeSecondsPerTriangle * double(out.triangleCount());
+    return !deadline || assemblyBlockMayStart(*deadline, writeSecondsPerTriangle, out.triangleCount());
   };
   while (begin < n && timeLeft()) {
     // The block, and each instance's slot: room for its whole asset.

@@ -23,6 +23,16 @@ constexpr double kMinTriangleArea = 1e-12;
 // (runtime/output/time_budget.h).
 constexpr size_t kAssemblyBlockTriangles = 32768;
 
+// Whether the next block may start: the deadline has not passed and writing the
+// `trianglesTaken` so far (at `writeSecondsPerTriangle`, 0: not counted) fits in the time
+// left. The assembly and a scene-only run's cut (runtime/output/time_budget.h) both ask it.
+bool assemblyBlockMayStart(const Deadline& deadline, double writeSecondsPerTriangle, size_t trianglesTaken);
+
+// The mesh an instance draws (its own geometry, or its asset), or nullptr when the
+// binding is missing.
+const Mesh* instanceMesh(const Instance& inst, const InstanceList& list, const AssetLibrary& library,
+                         const std::vector<int>& meshOf);
+
 // Resolves every name in `list.assets` in `library` (loading files on first use) and
 // fills `meshOf[i]` with the library index of `list.assets[i]`. False and a message in
 // `error` for the first name that cannot be resolved.
