@@ -271,9 +271,9 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::Roof: {
       std::string kind = stringArg(0, "roof kind");
-      if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid" && kind != "shed")
+      if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid" && kind != "shed" && kind != "ridge")
         diags_.error("E028", item.args[0]->range,
-                     "unknown roof kind \"" + kind + "\" (hipped, gable, pyramid or shed)");
+                     "unknown roof kind \"" + kind + "\" (hipped, gable, pyramid, shed or ridge)");
       numArgs(1, false);
       break;
     }

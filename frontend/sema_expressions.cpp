@@ -317,8 +317,18 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
         return fail("Geometry.isPlanar takes a tolerance in degrees: Geometry.isPlanar(1)");
       return record(e, ValueType::Bool, report);
     }
+    if (e.text == "angle" && e.hasCall && e.args.size() == 1) {  // CGA's geometry.angle(maxSlope)
+      ConstValue selector;
+      if (!evalConst(*e.args[0], selector) || selector.type != ValueType::Str ||
+          (selector.str != "maxSlope" && selector.str != "azimuth" && selector.str != "zenith"))
+        return fail("Geometry.angle takes the constant \"maxSlope\", \"azimuth\" or \"zenith\": "
+                    "Geometry.angle(\"maxSlope\")");
+      if (report) res_.exprTypes[e.args[0].get()] = ValueType::Str;
+      return record(e, ValueType::Num, report);
+    }
     return fail("unknown geometry query 'Geometry." + e.text +
-                "' (Geometry.area height nVertices nFaces boundaryLength isConcave, Geometry.isPlanar(degrees))");
+                "' (Geometry.area height nVertices nFaces boundaryLength isConcave, Geometry.isPlanar(degrees), "
+                "Geometry.angle(\"maxSlope\" or \"azimuth\" or \"zenith\"))");
   }
   if (e.object == "Feature") {
     bool number = false, takesString = false;

@@ -57,6 +57,7 @@ constexpr QuerySignature kQueries[] = {
     {"Shape", "touches", 1, Type::Str, Type::Bool, true},
     {"Shape", "minimumDistance", 1, Type::Str, N, true},
     {"Shape", "contextCount", 1, Type::Str, N, true},
+    {"Geometry", "angle", 0, N, N, true},  // the selector in extra
 };
 static_assert(std::size(kQueries) == static_cast<size_t>(kLastQuery) + 1,
               "one signature per Query");

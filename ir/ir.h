@@ -73,9 +73,14 @@ enum class Query : uint8_t {
   // the target (ContextTarget), args[0] the label (Str; "" any occluder). The occlusion
   // queries are Bool, minimumDistance and contextCount Num.
   ContextInside, ContextOverlaps, ContextTouches, ContextMinimumDistance, ContextCount,
+  // CGA's geometry.angle(maxSlope | azimuth | zenith): extra = the selector
+  // (rt::cga::GeometryAngleKind: 0, 1, 2), in degrees.
+  GeometryAngle,
 };
-inline constexpr Query kLastQuery = Query::ContextCount;
-inline bool isGeometryQuery(Query q) { return q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength; }
+inline constexpr Query kLastQuery = Query::GeometryAngle;
+inline bool isGeometryQuery(Query q) {
+  return (q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength) || q == Query::GeometryAngle;
+}
 inline bool isContextQuery(Query q) { return q >= Query::ContextInside && q <= Query::ContextCount; }
 // Which shapes a context query looks at: its own start shape's (CityEngine's intra), the
 // other start shapes' (inter), or both.

@@ -732,8 +732,14 @@ class Lowerer {
           {"area", Query::GeometryArea},         {"height", Query::GeometryHeight},
           {"nVertices", Query::GeometryVertices}, {"nFaces", Query::GeometryFaces},
           {"isPlanar", Query::GeometryIsPlanar}, {"isConcave", Query::GeometryIsConcave},
-          {"boundaryLength", Query::GeometryBoundaryLength}};
+          {"boundaryLength", Query::GeometryBoundaryLength}, {"angle", Query::GeometryAngle}};
       out.index = static_cast<uint32_t>((e.object == "Shape" ? kShape : kGeometry).at(e.text));
+      if (static_cast<Query>(out.index) == Query::GeometryAngle) {
+        // The selector is a constant word (sema checked it), fixed here as a number.
+        const std::string selector = constString(*e.args[0]);
+        out.extra = selector == "azimuth" ? 1u : selector == "zenith" ? 2u : 0u;
+        return out;
+      }
       if (isContextQuery(static_cast<Query>(out.index))) {
         // The target is a constant word (sema checked it); the label any string, "" for none.
         const std::string target = e.args.empty() ? "all" : constString(*e.args[0]);

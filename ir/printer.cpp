@@ -572,6 +572,11 @@ class Printer {
       default: {
         const QuerySignature& sig = querySignature(q);
         s += std::string(sig.object) + "." + sig.member;
+        if (q == Query::GeometryAngle) {  // Geometry.angle("maxSlope")
+          static const char* const kAngles[] = {"(\"maxSlope\")", "(\"azimuth\")", "(\"zenith\")"};
+          s += e.extra <= 2 ? kAngles[e.extra] : "(angle?)";
+          return;
+        }
         if (isContextQuery(q)) {  // Shape.overlaps("intra", label)
           static const char* const kTargets[] = {"\"intra\"", "\"inter\"", "\"all\""};
           s += "(";

@@ -817,6 +817,8 @@ class Verifier {
     if (q == Query::Field || q == Query::Feature) stringId(e.extra);
     if (isContextQuery(q) && e.extra > static_cast<uint32_t>(ContextTarget::All))
       problem("context target " + std::to_string(e.extra) + " out of range");
+    if (q == Query::GeometryAngle && e.extra > 2)
+      problem("geometry angle selector " + std::to_string(e.extra) + " out of range");
   }
 
   const Module& m_;

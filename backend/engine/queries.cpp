@@ -45,6 +45,8 @@ double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomR
       throw DeriveError{at, "R011", "Geometry.isPlanar: the tolerance must be an angle of 0 degrees or more"};
     return rt::cga::geometryIsPlanar(scope, geom, arena_, arg) ? 1.0 : 0.0;
   }
+  if (q == ir::Query::GeometryAngle)  // arg: the selector, the query's extra
+    return rt::cga::geometryAngle(scope, geom, arena_, static_cast<rt::cga::GeometryAngleKind>(static_cast<int>(arg)));
   const rt::cga::GeometryFacts g = rt::cga::geometryFacts(scope, geom, arena_);
   switch (q) {
     case ir::Query::GeometryArea: return g.area;

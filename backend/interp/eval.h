@@ -45,7 +45,7 @@ struct QueryHost {
   // 1 / 0 for a truth value.
   virtual double feature(const std::string& member, const std::string& arg, ir::Loc at) = 0;
   // Geometry.area ... (CGA's geometry.*()) of the shape's own geometry; `arg`: isPlanar's
-  // tolerance in degrees.
+  // tolerance in degrees, angle's selector (the query's extra).
   virtual double geometry(ir::Query q, const rt::Scope& scope, const rt::GeomRef& geom, double arg, ir::Loc at) {
     (void)q, (void)scope, (void)geom, (void)arg;
     throw DeriveError{at, "R900", "internal: geometry queries are not answered here"};

@@ -327,30 +327,45 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
   }
   if (fn.rfind("geometry.", 0) == 0) {
     // geometry.area() ...: fgsg's Geometry.area queries; the surface selectors
-    // (geometry.area(top)) are not here yet.
+    // (geometry.area(top)) are not here yet. geometry.angle(maxSlope): Geometry.angle("maxSlope").
     static const std::set<std::string> kGeometry = {"area", "height", "nVertices", "nFaces", "isConcave",
-                                                    "boundaryLength", "isPlanar"};
+                                                    "boundaryLength", "isPlanar", "angle"};
     const std::string member = fn.substr(9);
     if (!kGeometry.count(member)) {
       notSupported(nameAt, "the function '" + fn + "'");
       return nullptr;
     }
-    const size_t want = member == "isPlanar" ? 1 : 0;
+    const size_t want = member == "isPlanar" || member == "angle" ? 1 : 0;
     if (argCtx.size() != want) {
       if (want == 0 && argCtx.size() == 1) {
         notSupported(at, "'" + fn + "' with a selector of faces");
         return nullptr;
       }
-      error("E016", nameAt, "'" + fn + "' takes " + (want ? "1 argument (the tolerance in degrees)" : "no arguments") +
-                                ", got " + std::to_string(argCtx.size()));
+      error("E016", nameAt,
+            "'" + fn + "' takes " +
+                (member == "angle" ? "1 argument (maxSlope, azimuth or zenith)"
+                 : want            ? "1 argument (the tolerance in degrees)"
+                                   : "no arguments") +
+                ", got " + std::to_string(argCtx.size()));
       return nullptr;
     }
     std::vector<ExprPtr> args;
-    for (auto* a : argCtx) {
-      Env plain = env;
-      plain.relativeAxis = -1;
-      args.push_back(expr(a, plain));
-      if (!args.back()) return nullptr;
+    if (member == "angle") {
+      const std::string word = selectorWord(argCtx[0]);
+      if (word != "maxSlope" && word != "azimuth" && word != "zenith") {
+        error("E028", rangeOf(argCtx[0]),
+              "geometry.angle's selector is maxSlope, azimuth or zenith, not '" + argCtx[0]->getText() + "'");
+        return nullptr;
+      }
+      args.push_back(makeExpr(ExprKind::String, rangeOf(argCtx[0])));
+      args.back()->text = word;
+    } else {
+      for (auto* a : argCtx) {
+        Env plain = env;
+        plain.relativeAxis = -1;
+        args.push_back(expr(a, plain));
+        if (!args.back()) return nullptr;
+      }
     }
     ExprPtr e = makeExpr(ExprKind::Member, at);
     e->object = "Geometry";

@@ -9,6 +9,7 @@
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
+//   roofRidge(byAngle, angle)           Roof("ridge", angle){ rest of the successor }
 //   translate(rel, scope, x, y, z)      T(x, y, z)
 //   translate(rel|abs, world, x, y, z)  Translate("rel" or "abs", "world", x, y, z)
 //   rotate(rel, scope, x, y, z)         R(x, y, z)
@@ -354,6 +355,32 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     // Without a selector CityEngine keeps both as one shape; here they are two shapes.
     if (part.empty() || part == "inside") restAsBody(item, "inside");
     if (part.empty() || part == "border") restAsBody(item, "border");
+    push(std::move(item));
+    seq.createsShapes = true;
+    seq.done = true;
+    return;
+  }
+  if (name == "roofRidge") {
+    // roofRidge(byAngle, angle) (op_roofRidge: its only form besides byHeight): fgsg's
+    // Roof("ridge", angle), the ridge along the scope's x.
+    if (!noBody() || !count(2, 2, "byAngle or byHeight and a value")) return;
+    const std::string valueType = selectorWord(argCtx[0]);
+    if (valueType == "byHeight") {
+      notSupported(rangeOf(argCtx[0]), "roofRidge(byHeight, ...)");
+      return;
+    }
+    if (valueType != "byAngle") {
+      error("E028", rangeOf(argCtx[0]),
+            "roofRidge's value type is byAngle or byHeight, not '" + argCtx[0]->getText() + "'");
+      return;
+    }
+    ExprPtr angle = expr(argCtx[1], env);
+    if (!angle) return;
+    flushInsert();
+    Item item = command("Roof", at);
+    item.args.push_back(stringExpr("ridge", nameAt));
+    item.args.push_back(std::move(angle));
+    restAsBody(item, "");
     push(std::move(item));
     seq.createsShapes = true;
     seq.done = true;

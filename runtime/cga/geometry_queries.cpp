@@ -134,4 +134,29 @@ bool geometryIsPlanar(const Scope& scope, const GeomRef& geom, const GeometryAre
   return true;
 }
 
+double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, GeometryAngleKind kind) {
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  constexpr double kAngleTieDegrees = 1e-9;
+  double steepest = -1.0;  // degrees
+  Vec3 facing = Vec3::Zero();
+  for (const Polygon3& f : worldPolygons(scope, geom, arena)) {
+    const Vec3 n = newellNormal(f);
+    if (!(n.norm() > 0)) continue;
+    // atan2 keeps the angle exact near level and upright faces, where acos loses digits.
+    const double slope = std::atan2(std::hypot(n.x(), n.z()), std::abs(n.y())) * kDegrees;
+    if (slope > steepest + kAngleTieDegrees) steepest = slope, facing = n;  // rounding: the first of equals
+  }
+  const double maxSlope = std::max(steepest, 0.0);
+  switch (kind) {
+    case GeometryAngleKind::MaxSlope: return maxSlope;
+    case GeometryAngleKind::Zenith: return 90.0 - maxSlope;
+    case GeometryAngleKind::Azimuth: break;
+  }
+  if (!(steepest > kAngleTieDegrees)) return 0.0;  // level: no direction
+  // North is -z, east +x: clockwise seen from above.
+  double azimuth = std::atan2(facing.x(), -facing.z()) * kDegrees;
+  if (azimuth < 0.0) azimuth += 360.0;
+  return azimuth >= 360.0 - kAngleTieDegrees ? 0.0 : azimuth;  // a hair west of north is north
+}
+
 }  // namespace fgsg::rt::cga

@@ -1,5 +1,6 @@
 // CityEngine's geometry functions (geometry.area(), height(), nVertices(), nFaces(),
-// isPlanar(tol), isConcave(), boundaryLength()) on a shape's own geometry: a box (its six
+// isPlanar(tol), isConcave(), boundaryLength(), angle(maxSlope | azimuth | zenith)) on a
+// shape's own geometry: a box (its six
 // faces; a flat box its one face), a polygon or a solid. World units (metres).
 #pragma once
 
@@ -23,5 +24,17 @@ GeometryFacts geometryFacts(const Scope& scope, const GeomRef& geom, const Geome
 // first's and every corner on its plane (within the same angle seen over the geometry's
 // size). No faces (an edge): false.
 bool geometryIsPlanar(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, double toleranceDegrees);
+
+// geometry.angle's selectors, in the order fgsg's IR numbers them.
+enum class GeometryAngleKind { MaxSlope = 0, Azimuth = 1, Zenith = 2 };
+
+// geometry.angle(kind) in degrees, from the faces' world normals (faces without area
+// ignored). A face's slope is the angle between its plane and the world's xz plane, 0 to
+// 90 whichever way it looks. MaxSlope: the steepest face's; Zenith: 90 - MaxSlope;
+// Azimuth: the direction the steepest face (the first of equals) looks, its normal laid
+// on the xz plane, clockwise from north (-z): east (+x) 90, south 180, west 270, in
+// [0, 360); 0 where that face is level. No faces (an edge): 0 for MaxSlope and Azimuth,
+// 90 for Zenith.
+double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, GeometryAngleKind kind);
 
 }  // namespace fgsg::rt::cga

@@ -1,4 +1,4 @@
-// Roof: a hipped, gable, pyramid or shed roof solid on a rectangle or on any footprint.
+// Roof: a hipped, gable, pyramid, shed or ridge roof solid on a rectangle or on any footprint.
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/skeleton_roof.h"
@@ -12,7 +12,7 @@ namespace fgsg::rt::cga {
 namespace {
 
 
-enum class RoofKind { Hipped, Gable, Pyramid, Shed };
+enum class RoofKind { Hipped, Gable, Pyramid, Shed, Ridge };
 
 bool parseKind(const std::string& s, RoofKind& kind) {
   if (s == "hipped")
@@ -23,6 +23,8 @@ bool parseKind(const std::string& s, RoofKind& kind) {
     kind = RoofKind::Pyramid;
   else if (s == "shed")
     kind = RoofKind::Shed;
+  else if (s == "ridge")
+    kind = RoofKind::Ridge;
   else
     return false;
   return true;
@@ -33,6 +35,7 @@ SkeletonRoofKind skeletonKind(RoofKind kind) {
     case RoofKind::Hipped: return SkeletonRoofKind::Hipped;
     case RoofKind::Gable: return SkeletonRoofKind::Gable;
     case RoofKind::Pyramid: return SkeletonRoofKind::Pyramid;
+    case RoofKind::Ridge: return SkeletonRoofKind::Ridge;
     case RoofKind::Shed: break;
   }
   return SkeletonRoofKind::Shed;
@@ -114,15 +117,17 @@ std::vector<Polygon3> roofFaces(RoofKind kind, double w, double d, double h) {
 // corners, with the roof rising along its normal (solidFrameOnPolygon), and a solid its
 // bottom face: those are roofed by the straight skeleton (skeleton_roof.h), so every
 // sloped face of a hipped roof tilts by `angleDeg`. On the rectangle the slopes over the
-// longer sides are at `angleDeg`, so h = (shorter side / 2) * tan(angle) for every kind;
+// longer sides are at `angleDeg`, so h = (shorter side / 2) * tan(angle) for these kinds;
 // the hips of a hipped roof and the faces of a pyramid on a non-square rectangle follow
-// from that height. A shed rises from the first edge (the rectangle's back, -Z, edge).
+// from that height. A shed rises from the first edge (the rectangle's back, -Z, edge). A
+// ridge roof's ridge runs along the scope's x whichever side is longer (CityEngine's
+// roofRidge: "parallel to the scope's x-axis"), h = (d / 2) * tan(angle) on the rectangle.
 bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
           GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline,
           const RoofOptions& options) {
   RoofKind kind;
   if (!parseKind(kindName, kind)) {
-    error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid or shed)";
+    error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid, shed or ridge)";
     return false;
   }
   if (!(angleDeg > 0.0 && angleDeg < 90.0)) {
@@ -143,9 +148,8 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
       return false;
     }
   const bool overhangs = options.overhang > 0.0 || options.gableOverhang > 0.0;
-  if (overhangs && (kind == RoofKind::Pyramid || kind == RoofKind::Shed)) {
-    error = kind == RoofKind::Shed ? "Roof: a shed roof has no overhang (hipped and gable roofs do)"
-                                   : "Roof: a pyramid roof has no overhang (hipped and gable roofs do)";
+  if (overhangs && kind != RoofKind::Hipped && kind != RoofKind::Gable) {
+    error = "Roof: a " + kindName + " roof has no overhang (hipped and gable roofs do)";
     return false;
   }
   if (options.edgeIndex >= 0 && kind != RoofKind::Shed && kind != RoofKind::Gable) {
@@ -166,7 +170,7 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
   bool onPolygon = footprintRings(out.scope, geom, arena, outer, holes);
   // The rectangle's closed forms have no overhangs: an overhanging roof on it is built as
   // on any polygon (the same roof, its faces in the skeleton's order).
-  if (!onPolygon && (kind == RoofKind::Shed || overhangs || options.edgeIndex >= 0))
+  if (!onPolygon && (kind == RoofKind::Shed || kind == RoofKind::Ridge || overhangs || options.edgeIndex >= 0))
     outer = {{0, 0}, {w, 0}, {w, d}, {0, d}}, onPolygon = true;
   if (kind == RoofKind::Shed && options.edgeIndex > 0) {
     const size_t first = size_t(options.edgeIndex) % outer.size();

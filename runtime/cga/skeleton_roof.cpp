@@ -1,5 +1,5 @@
 // Roofs on any footprint polygon: the straight skeleton lifted into hipped and gable roofs,
-// and pyramid and shed roofs, each closed by the footprint as the bottom face.
+// and pyramid, shed and ridge roofs, each closed by the footprint as the bottom face.
 #include "runtime/cga/skeleton_roof.h"
 
 #include "runtime/abandonable.h"
@@ -593,6 +593,80 @@ bool pyramidRoof(const Footprint& fp, double slope, RoofMesh& mesh, std::string&
   return true;
 }
 
+// roofRidge: one ridge along x (plan y = -z constant) over the middle of the footprint's
+// extent across it, the two slopes rising from the lines through its nearest and farthest
+// points. A point's height above the ground on the slope over its side of the ridge.
+struct RidgeRoofPlanes {
+  double lo = 0.0, hi = 0.0, mid = 0.0, slope = 0.0, tol = 0.0;
+  double height(const Vec2& p) const {
+    const double run = p.y() >= mid ? hi - p.y() : p.y() - lo;
+    return run <= tol ? 0.0 : run * slope;
+  }
+  // Where the segment p-q crosses the ridge line, computed from its endpoints in a fixed
+  // order so that the two faces sharing the segment get the same point.
+  Vec2 crossing(Vec2 p, Vec2 q) const {
+    if (q.y() < p.y()) std::swap(p, q);
+    const double t = (mid - p.y()) / (q.y() - p.y());
+    return Vec2(p.x() + t * (q.x() - p.x()), mid);
+  }
+  bool crosses(const Vec2& p, const Vec2& q) const {
+    return (p.y() < mid && q.y() > mid) || (p.y() > mid && q.y() < mid);
+  }
+  // A footprint point within the weld tolerance of the ridge line lies on it.
+  Vec2 snapped(const Vec2& p) const { return std::abs(p.y() - mid) <= tol ? Vec2(p.x(), mid) : p; }
+};
+
+// The part of the footprint polygon `ring` (plan points, bridges allowed) on one side of
+// the ridge, lifted onto that side's slope (Sutherland-Hodgman: a concave footprint that
+// the ridge cuts into several pieces, or a courtyard it crosses, stays one polygon, its
+// pieces joined by zero-width bridges along the ridge). Every edge on the ridge line is
+// cut at each point of the footprint's outline there, so the two slopes and the bridges
+// meet edge to edge. Empty when that side has no area.
+Polygon3 ridgeRoofSlope(const std::vector<Vec2>& ring, const RidgeRoofPlanes& planes, bool farSide) {
+  auto keeps = [&](const Vec2& p) { return farSide ? p.y() >= planes.mid : p.y() <= planes.mid; };
+  std::vector<Vec2> clipped, onRidge;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2& p = ring[i];
+    const Vec2& q = ring[(i + 1) % ring.size()];
+    if (keeps(p)) clipped.push_back(p);
+    if (planes.crosses(p, q)) clipped.push_back(planes.crossing(p, q));
+  }
+  for (const Vec2& p : clipped)
+    if (p.y() == planes.mid) onRidge.push_back(p);
+  std::vector<Vec2> kept;
+  for (std::size_t i = 0; i < clipped.size(); ++i) {
+    const Vec2& p = clipped[i];
+    const Vec2& q = clipped[(i + 1) % clipped.size()];
+    kept.push_back(p);
+    if (p.y() != planes.mid || q.y() != planes.mid) continue;
+    std::vector<Vec2> between;
+    for (const Vec2& r : onRidge)
+      if ((r.x() - p.x()) * (q.x() - r.x()) > 0) between.push_back(r);
+    std::sort(between.begin(), between.end(), [&](const Vec2& a, const Vec2& b) {
+      return (a.x() - p.x()) * (q.x() - p.x()) < (b.x() - p.x()) * (q.x() - p.x());
+    });
+    kept.insert(kept.end(), between.begin(), between.end());
+  }
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  while (kept.size() > 1 && kept.front() == kept.back()) kept.pop_back();
+  // A footprint edge lying on the ridge line leaves a needle out along it on the side it
+  // does not bound (there and straight back): cut it off.
+  for (std::size_t i = 0; kept.size() >= 3 && i < kept.size();) {
+    const std::size_t n = kept.size(), before = (i + n - 1) % n, after = (i + 1) % n;
+    if (kept[before] != kept[after]) {
+      ++i;
+      continue;
+    }
+    kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(std::max(i, after)));
+    kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(std::min(i, after)));
+    i = 0;
+  }
+  Polygon3 slope;
+  for (const Vec2& p : kept) slope.push_back(toSpace(p, planes.height(p)));
+  if (slope.size() < 3 || newellNormal(slope).norm() <= planes.tol * planes.tol) return {};
+  return slope;
+}
+
 std::vector<int> edgesInOrder(const Footprint& fp) {
   std::vector<int> byNumber(fp.count);
   for (int e = 0; e < fp.count; ++e) byNumber[fp.edgeNumber(e)] = e;
@@ -652,6 +726,41 @@ bool skeletonRoof(const std::vector<Vec2>& outer, const std::vector<std::vector<
       if (h[b] > 0.0) side.push_back(toSpace(fp.point(b), h[b]));
       if (h[a] > 0.0) side.push_back(toSpace(fp.point(a), h[a]));
       if (side.size() < 3) continue;  // an edge on edge 0's line has no side
+      faces.push_back(std::move(side));
+      edgeOfFace.push_back(number);
+    }
+  } else if (kind == SkeletonRoofKind::Ridge) {
+    RidgeRoofPlanes planes;
+    planes.slope = slope;
+    planes.tol = fp.tol;
+    planes.lo = std::numeric_limits<double>::infinity();
+    planes.hi = -planes.lo;
+    for (const Point2& p : fp.rings[0].pts) {
+      planes.lo = std::min(planes.lo, p.y());
+      planes.hi = std::max(planes.hi, p.y());
+    }
+    planes.mid = 0.5 * (planes.lo + planes.hi);
+    std::vector<Vec2> ring;
+    for (int v : bottom) ring.push_back(planes.snapped(fp.point(v)));
+    for (const bool farSide : {false, true}) {
+      Polygon3 slopeFace = ridgeRoofSlope(ring, planes, farSide);
+      if (slopeFace.empty()) continue;
+      faces.push_back(std::move(slopeFace));
+      edgeOfFace.push_back(-2);
+    }
+    // An upright side on every edge up to the slopes, through the ridge where the edge
+    // crosses it; edges along the eave lines have no height and no side.
+    for (int number = 0; number < fp.count; ++number) {
+      const int a = byNumber[number], b = fp.next(a);
+      const Vec2 pa = planes.snapped(fp.point(a)), pb = planes.snapped(fp.point(b));
+      Polygon3 side = {toSpace(pa, 0.0), toSpace(pb, 0.0)};
+      if (planes.height(pb) > 0.0) side.push_back(toSpace(pb, planes.height(pb)));
+      if (planes.crosses(pa, pb)) {
+        const Vec2 c = planes.crossing(pa, pb);
+        side.push_back(toSpace(c, planes.height(c)));
+      }
+      if (planes.height(pa) > 0.0) side.push_back(toSpace(pa, planes.height(pa)));
+      if (side.size() < 3) continue;
       faces.push_back(std::move(side));
       edgeOfFace.push_back(number);
     }

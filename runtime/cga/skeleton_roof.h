@@ -1,6 +1,6 @@
 // Roofs on any simple footprint polygon, holes allowed: hipped and gable roofs from the
-// straight skeleton (CGAL's Straight_skeleton_2), pyramid and shed roofs from the
-// footprint's edges. The result is a closed solid, its faces as plain 3D polygons.
+// straight skeleton (CGAL's Straight_skeleton_2), pyramid, shed and ridge roofs from the
+// footprint's edges and extent. The result is a closed solid, its faces as plain 3D polygons.
 #pragma once
 
 #include <string>
@@ -18,7 +18,8 @@ using Vec2 = Eigen::Vector2d;
 // Hipped: every footprint edge gets a face sloping up at the angle (the straight skeleton
 // lifted by offset time * tan(angle)). Gable: hipped, with the ends of wings made vertical.
 // Pyramid: one triangle per edge up to a single apex. Shed: one plane rising from edge 0.
-enum class SkeletonRoofKind { Hipped, Gable, Pyramid, Shed };
+// Ridge (CityEngine's roofRidge): one ridge along x, two planes.
+enum class SkeletonRoofKind { Hipped, Gable, Pyramid, Shed, Ridge };
 
 // CGAL's straight skeleton takes time as the cube of the corners and cannot be
 // interrupted: up to this many corners (a few milliseconds at worst) it runs on the
@@ -40,7 +41,11 @@ constexpr int kInlineSkeletonCorners = 96;
 // the sides of edges with no height (those lying on edge 0's line). With holes, the bottom
 // (and a shed's top) is one polygon whose holes are joined to the outer ring by zero-width
 // bridges: each bridge is an edge that the polygon runs along once in each direction.
-// `faceEdges`, when given, receives the footprint edge of each face (-1 for the bottom).
+// Ridge gives its two sloped faces first (the one over the greater z first),
+// then one vertical side face for each edge with height, as a shed leaves out those on its
+// eave lines.
+// `faceEdges`, when given, receives the footprint edge of each face (-1 for the bottom,
+// -2 for a ridge roof's slopes).
 // `height` receives the roof's greatest height.
 //
 // Kinds on general footprints:
@@ -62,6 +67,14 @@ constexpr int kInlineSkeletonCorners = 96;
 //   every edge's half-plane (the footprint is not star-shaped around it).
 // * Shed: height = distance from edge 0's line * tan(angle). Holes are supported. Fails
 //   when part of the footprint lies on the outer side of edge 0's line.
+// * Ridge: the ridge is the line z = (zmin + zmax) / 2 across the footprint's extent in z
+//   (the middle of its outer ring's); a point's height is tan(angle) times its distance
+//   in z from zmin on the near side of the ridge, from zmax on the far side, so both
+//   slopes tilt by exactly `angleDeg` and the ridge stands (zmax - zmin) / 2 * tan(angle)
+//   high. Each slope is the footprint's part on its side; a concave footprint that the
+//   ridge cuts into several pieces on one side gives one slope polygon whose pieces are
+//   joined by zero-width bridges along the ridge. Edges crossing the ridge get a side
+//   face with a corner on it (the gable triangle of a rectangle). Holes are supported.
 //
 // Errors (false, `error` starting with "Roof: "): the angle not strictly between 0 and 90
 // degrees, non-finite coordinates, a ring with fewer than 3 distinct points or no area, a

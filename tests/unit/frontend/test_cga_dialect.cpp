@@ -150,6 +150,46 @@ TEST_CASE("functions are inlined, and recursion is a located error", "[cga][dial
   CHECK(r.messages.find("test.cga:2:8: error[E802]: 'f' calls itself (through g)") != std::string::npos);
 }
 
+TEST_CASE("roofRidge(byAngle, angle) is fgsg's ridge roof; its other forms are located errors", "[cga][dialect]") {
+  const Compiled c = compile("@StartRule\nLot --> extrude(3) comp(f) { top : roofRidge(byAngle, 30) Roof }\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  CHECK(ir::printModule(c.module).find("roof \"ridge\"") != std::string::npos);
+  const Compiled height = compile("@StartRule\nLot --> roofRidge(byHeight, 3) A\n");
+  CHECK(height.messages.find("test.cga:2:19: error[E801]: roofRidge(byHeight, ...)") != std::string::npos);
+  const Compiled bare = compile("@StartRule\nLot --> roofRidge(30) A\n");
+  CHECK(bare.messages.find("test.cga:2:9: error[E016]: 'roofRidge' takes byAngle or byHeight and a value, got 1") !=
+        std::string::npos);
+  const Compiled word = compile("@StartRule\nLot --> roofRidge(bySlope, 30) A\n");
+  CHECK(word.messages.find("test.cga:2:19: error[E028]: roofRidge's value type is byAngle or byHeight, "
+                           "not 'bySlope'") != std::string::npos);
+  const Compiled kind = compile("axiom: Lot;\nLot ~> Roof(\"ridged\", 30){ R };\n", "test.fgsg");
+  CHECK(kind.messages.find("error[E028]: unknown roof kind \"ridged\" (hipped, gable, pyramid, shed or ridge)") !=
+        std::string::npos);
+}
+
+TEST_CASE("geometry.angle(maxSlope | azimuth | zenith) is fgsg's Geometry.angle; other selectors are errors",
+          "[cga][dialect]") {
+  const Compiled c = compile("@StartRule\nLot --> report(\"a\", geometry.angle(maxSlope) + geometry.angle(azimuth) + "
+                             "geometry.angle(zenith)) X.\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  const std::string printed = ir::printModule(c.module);
+  CHECK(printed.find("Geometry.angle(\"maxSlope\")") != std::string::npos);
+  CHECK(printed.find("Geometry.angle(\"azimuth\")") != std::string::npos);
+  CHECK(printed.find("Geometry.angle(\"zenith\")") != std::string::npos);
+  const Compiled word = compile("@StartRule\nLot --> s(geometry.angle(minSlope), 1, 1) X.\n");
+  CHECK(word.messages.find("test.cga:2:26: error[E028]: geometry.angle's selector is maxSlope, azimuth or zenith, "
+                           "not 'minSlope'") != std::string::npos);
+  const Compiled none = compile("@StartRule\nLot --> s(geometry.angle(), 1, 1) X.\n");
+  CHECK(none.messages.find("test.cga:2:11: error[E016]: 'geometry.angle' takes 1 argument (maxSlope, azimuth or "
+                           "zenith), got 0") != std::string::npos);
+  const Compiled fgsg = compile("axiom: Lot;\nLot ~> S(Geometry.angle(\"steepest\"), 1, 1) X;\n", "test.fgsg");
+  CHECK(fgsg.messages.find("test.fgsg:2:10: error[E025]: Geometry.angle takes the constant \"maxSlope\", "
+                           "\"azimuth\" or \"zenith\"") != std::string::npos);
+  CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.angle(\"zenith\"), 1, 1) X;\n", "test.fgsg").ok);
+}
+
 TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dialect]") {
   const Compiled trim = compile("@StartRule\nLot --> extrude(10)\n   trim()\n");
   CHECK_FALSE(trim.ok);
@@ -157,8 +197,8 @@ TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dial
         std::string::npos);
   const Compiled unknown = compile("@StartRule\nLot --> frobnicate(3)\n");
   CHECK(unknown.messages.find("test.cga:2:9: error[E800]: unknown operation 'frobnicate'") != std::string::npos);
-  const Compiled fn = compile("@StartRule\nLot --> s(geometry.angle(maxSlope), 1, 1) X.\n");
-  CHECK(fn.messages.find("test.cga:2:11: error[E801]: the function 'geometry.angle'") != std::string::npos);
+  const Compiled fn = compile("@StartRule\nLot --> s(geometry.groups(), 1, 1) X.\n");
+  CHECK(fn.messages.find("test.cga:2:11: error[E801]: the function 'geometry.groups'") != std::string::npos);
   const Compiled faces = compile("@StartRule\nLot --> s(geometry.area(top), 1, 1) X.\n");
   CHECK(faces.messages.find("E801") != std::string::npos);
   CHECK(faces.messages.find("with a selector of faces") != std::string::npos);

@@ -1,6 +1,7 @@
 // CGA shape operations: splits, repeats, component splits, extrusion, roofs, clipping
 // and triangulation, checked with exact or toleranced values.
 #include "runtime/cga/cga.h"
+#include "runtime/cga/geometry_queries.h"
 #include "runtime/cga/polygon_clip.h"
 
 #include <catch2/catch.hpp>
@@ -410,6 +411,21 @@ TEST_CASE("cga: gable, pyramid and deep roofs", "[cga]") {
     REQUIRE(components(r.scope, r.geom, "sideedges", arena, parts, err));
     CHECK(parts.size() == 4);
   }
+  SECTION("ridge: along the scope's x on a deep footprint, overhangs and edge indices refused") {
+    // 12 x 20 (x by z), 45 degrees: the ridge runs along x over z = 10, 10 m high, where a
+    // gable's would run along z, 6 m high.
+    REQUIRE(roof(box(12, 0, 20), GeomRef{}, "ridge", 45, arena, r, err));
+    CHECK(r.scope.S.y() == Approx(10));
+    CHECK(worldVolume(r, arena) == Approx(12 * 20 * 10 / 2.0));
+    REQUIRE(components(r.scope, r.geom, "topedges", arena, parts, err));
+    REQUIRE(parts.size() == 1);
+    CHECK(near(parts[0].scope.Y().cwiseAbs(), Vec3(1, 0, 0)));
+    CHECK(parts[0].scope.S.y() == Approx(12));
+    CHECK_FALSE(roof(box(12, 0, 20), GeomRef{}, "ridge", 45, arena, r, err, nullptr, RoofOptions{1.0, 1.0, -1}));
+    CHECK(err == "Roof: a ridge roof has no overhang (hipped and gable roofs do)");
+    CHECK_FALSE(roof(box(12, 0, 20), GeomRef{}, "ridge", 45, arena, r, err, nullptr, RoofOptions{0.0, 0.0, 1}));
+    CHECK(err.find("only shed and gable roofs take an edge index") != std::string::npos);
+  }
   SECTION("pyramid and square hipped roofs have an apex") {
     REQUIRE(roof(box(10, 0, 10), GeomRef{}, "pyramid", 45, arena, r, err));
     CHECK(worldVolume(r, arena) == Approx(100 * 5 / 3.0));
@@ -424,8 +440,37 @@ TEST_CASE("cga: gable, pyramid and deep roofs", "[cga]") {
     CHECK(err == "Roof: the angle 90 must lie strictly between 0 and 90 degrees");
     CHECK_FALSE(roof(box(10, 0, 10), GeomRef{}, "hipped", 0, arena, r, err));
     CHECK_FALSE(roof(box(10, 0, 10), GeomRef{}, "mansard", 30, arena, r, err));
-    CHECK(err == "Roof: unknown kind \"mansard\" (expected hipped, gable, pyramid or shed)");
+    CHECK(err == "Roof: unknown kind \"mansard\" (expected hipped, gable, pyramid, shed or ridge)");
   }
+}
+
+TEST_CASE("cga: geometry.angle of roof faces, boxes and footprints", "[cga]") {
+  GeometryArena arena;
+  std::vector<Part> parts;
+  std::string err;
+  Part r;
+  // A 30 degree gable roof on a 10 x 6 footprint (x by z): the slopes tilt by 30, the gable
+  // walls stand upright; the faces look south (+z, 180), east (+x, 90), north (0), west (270).
+  REQUIRE(roof(box(10, 0, 6), GeomRef{}, "gable", 30, arena, r, err));
+  REQUIRE(components(r.scope, r.geom, "sidefaces", arena, parts, err));
+  REQUIRE(parts.size() == 4);
+  const double slopes[] = {30, 90, 30, 90}, azimuths[] = {180, 90, 0, 270};
+  for (size_t i = 0; i < 4; ++i) {
+    INFO("face " << i);
+    auto angle = [&](GeometryAngleKind kind) { return geometryAngle(parts[i].scope, parts[i].geom, arena, kind); };
+    CHECK(std::abs(angle(GeometryAngleKind::MaxSlope) - slopes[i]) <= 1e-9);
+    CHECK(std::abs(angle(GeometryAngleKind::Zenith) - (90 - slopes[i])) <= 1e-9);
+    CHECK(std::abs(angle(GeometryAngleKind::Azimuth) - azimuths[i]) <= 1e-9);
+  }
+  // The whole roof: its steepest faces are the walls, the first of them (east) gives the azimuth.
+  CHECK(geometryAngle(r.scope, r.geom, arena, GeometryAngleKind::MaxSlope) == Approx(90).margin(1e-9));
+  CHECK(geometryAngle(r.scope, r.geom, arena, GeometryAngleKind::Azimuth) == Approx(90).margin(1e-9));
+  // A box: upright, its front face (+z) first; a footprint: level, no direction.
+  CHECK(geometryAngle(box(2, 3, 4), GeomRef{}, arena, GeometryAngleKind::MaxSlope) == Approx(90).margin(1e-12));
+  CHECK(geometryAngle(box(2, 3, 4), GeomRef{}, arena, GeometryAngleKind::Azimuth) == Approx(180).margin(1e-12));
+  CHECK(geometryAngle(box(2, 0, 4), GeomRef{}, arena, GeometryAngleKind::MaxSlope) == 0);
+  CHECK(geometryAngle(box(2, 0, 4), GeomRef{}, arena, GeometryAngleKind::Azimuth) == 0);
+  CHECK(geometryAngle(box(2, 0, 4), GeomRef{}, arena, GeometryAngleKind::Zenith) == Approx(90).margin(1e-12));
 }
 
 TEST_CASE("cga: Repeat XY on a triangle marks tiles outside it empty", "[cga]") {

@@ -292,6 +292,94 @@ TEST_CASE("shed roof on a courtyard footprint is closed", "[cga][roof]") {
   CHECK(isClosedManifold(r.faces));
 }
 
+// Ridge roofs (CityEngine's roofRidge): the ridge along x over the middle of the footprint's
+// z extent, heights t * (distance in z from the nearer eave line), t = tan(angle).
+TEST_CASE("ridge roof on a rectangle runs along x whichever side is longer", "[cga][roof]") {
+  const double a = 30, t = slopeOf(a);
+  for (const auto& [w, d] : {std::pair{10.0, 6.0}, std::pair{6.0, 10.0}}) {
+    const Roof r = build(rectangle(w, d), {}, SkeletonRoofKind::Ridge, a);
+    // Two slopes, the gable triangles of edges 0 (x = 0) and 2 (x = w), the bottom; edges
+    // 1 and 3 lie on the eave lines z = d and z = 0.
+    REQUIRE(r.faces.size() == 5);
+    CHECK(r.faceEdges == std::vector<int>{-2, -2, 0, 2, -1});
+    CHECK(r.height == Approx(d / 2 * t).epsilon(1e-12));
+    CHECK(volume(r.faces) == Approx(w * d * (d / 2 * t) / 2).epsilon(1e-12));
+    CHECK(tiltsBy(r.faces[0], a));
+    CHECK(tiltsBy(r.faces[1], a));
+    CHECK(unitNormal(r.faces[0]).z() > 0);  // the first slope faces +z, over the greater z
+    CHECK(newellNormal(r.faces[0]).norm() / 2 == Approx(w * d / 2 / std::cos(a * kPi / 180)).epsilon(1e-12));
+    for (int i = 2; i <= 3; ++i) {
+      CHECK(isVertical(r.faces[i]));
+      CHECK(r.faces[i].size() == 3);
+      CHECK(newellNormal(r.faces[i]).norm() / 2 == Approx(d * (d / 2 * t) / 2).epsilon(1e-12));
+    }
+    CHECK(contains(r.faces[0], Vec3(0, d / 2 * t, d / 2)));
+    CHECK(contains(r.faces[0], Vec3(w, d / 2 * t, d / 2)));
+    checkBottom(r);
+    CHECK(isClosedManifold(r.faces));
+  }
+}
+
+TEST_CASE("ridge roof on an L has one ridge and upright sides where the slopes stand over the outline",
+          "[cga][roof]") {
+  // kLShape spans z 0 .. 10: the ridge at z = 5, 5 t high. Volume: the integral of
+  // t min(z, 10 - z) over the L, whose width is 10 for z < 4 and 4 above:
+  // t (10 * 8 + 4 * 4.5 + 4 * 12.5) = 148 t.
+  const double a = 30, t = slopeOf(a);
+  const Roof r = build(kLShape, {}, SkeletonRoofKind::Ridge, a);
+  REQUIRE(r.faces.size() == 7);
+  // Edges 0 (z = 0) and 4 (z = 10) are on the eave lines; 1 (x = 10, z 0..4) a triangle,
+  // 2 (z = 4) a 6 x 4t rectangle, 3 (x = 4, z 4..10) and 5 (x = 0) cross the ridge.
+  CHECK(r.faceEdges == std::vector<int>{-2, -2, 1, 2, 3, 5, -1});
+  CHECK(r.height == Approx(5 * t).epsilon(1e-12));
+  CHECK(volume(r.faces) == Approx(148 * t).epsilon(1e-12));
+  const double sideAreas[] = {8 * t, 24 * t, 17 * t, 25 * t};
+  for (int i = 0; i < 4; ++i) {
+    CHECK(isVertical(r.faces[2 + i]));
+    CHECK(newellNormal(r.faces[2 + i]).norm() / 2 == Approx(sideAreas[i]).epsilon(1e-12));
+  }
+  CHECK(r.faces[4].size() == 4);  // edge 3: its end at z = 10 has no height
+  const double c = std::cos(a * kPi / 180);
+  CHECK(newellNormal(r.faces[0]).norm() / 2 == Approx(20 / c).epsilon(1e-12));  // z 5..10: 4 x 5
+  CHECK(newellNormal(r.faces[1]).norm() / 2 == Approx(44 / c).epsilon(1e-12));  // z 0..5: 10 x 4 + 4 x 1
+  checkSlopedFacesTilt(r, a);
+  checkBottom(r);
+  CHECK(isClosedManifold(r.faces));
+  // An L whose inner edge (20, 9)-(9, 9) lies on the ridge line z = 9: under it an upright
+  // 11 x 9t rectangle, no needle of the north slope along it. Volume t (20 + 9) * 40.5.
+  const Roof onRidge = build({{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}, {}, SkeletonRoofKind::Ridge, a);
+  REQUIRE(onRidge.faces.size() == 7);
+  CHECK(onRidge.faceEdges == std::vector<int>{-2, -2, 1, 2, 3, 5, -1});
+  CHECK(volume(onRidge.faces) == Approx(29 * 40.5 * t).epsilon(1e-12));
+  CHECK(onRidge.faces[0].size() == 4);  // the north slope: 9 x 9
+  CHECK(newellNormal(onRidge.faces[0]).norm() / 2 == Approx(81 / c).epsilon(1e-12));
+  CHECK(newellNormal(onRidge.faces[3]).norm() / 2 == Approx(99 * t).epsilon(1e-12));
+  checkSlopedFacesTilt(onRidge, a);
+  CHECK(isClosedManifold(onRidge.faces));
+}
+
+TEST_CASE("ridge roof on a courtyard footprint and on a U", "[cga][roof]") {
+  const double a = 25, t = slopeOf(a);
+  // The ring's volume: t (10 * 25 - 4 * 16) = 186 t; the hole's four edges all have sides.
+  const Roof ring = build(rectangle(10, 10), {{{3, 3}, {7, 3}, {7, 7}, {3, 7}}}, SkeletonRoofKind::Ridge, a);
+  REQUIRE(ring.faces.size() == 9);
+  CHECK(volume(ring.faces) == Approx(186 * t).epsilon(1e-12));
+  CHECK(ring.height == Approx(5 * t).epsilon(1e-12));
+  checkSlopedFacesTilt(ring, a);
+  checkBottom(ring);
+  CHECK(isClosedManifold(ring.faces));
+  // A U open towards z = 10: the ridge (z = 5) cuts its two legs apart, one slope polygon
+  // joined by a bridge along the ridge. t (10 * 2 + 4 * 10.5 + 4 * 12.5) = 112 t.
+  const std::vector<Vec2> u = {{0, 0}, {10, 0}, {10, 10}, {8, 10}, {8, 2}, {2, 2}, {2, 10}, {0, 10}};
+  const Roof open = build(u, {}, SkeletonRoofKind::Ridge, a);
+  REQUIRE(open.faces.size() == 8);
+  CHECK(open.faceEdges == std::vector<int>{-2, -2, 1, 3, 4, 5, 7, -1});
+  CHECK(volume(open.faces) == Approx(112 * t).epsilon(1e-12));
+  checkSlopedFacesTilt(open, a);
+  checkBottom(open);
+  CHECK(isClosedManifold(open.faces));
+}
+
 TEST_CASE("hipped roof on an L has valleys and the formula volume", "[cga][roof]") {
   const double a = 30, t = slopeOf(a);
   const Roof r = build(kLShape, {}, SkeletonRoofKind::Hipped, a);
