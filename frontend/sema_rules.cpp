@@ -9,6 +9,7 @@
 #include "frontend/query_modules.h"
 
 #include <cmath>
+#include <cstring>
 #include <set>
 
 namespace fgsg::frontend::sema_detail {
@@ -121,6 +122,10 @@ void Analyzer::checkItem(const Item& item, const Where& w) {
 void Analyzer::checkShapeItem(const Item& item, const Where& w) {
   int idx = res_.findSymbol(item.name);
   if (isQueryModuleName(item.name)) checkQueryModule(item);
+  if (item.name == "SetContour" && res_.mode == "parallel")  // L-Py's, with a PlantGL curve
+    diags_.error("E048", item.range,
+                 "L-Py's SetContour(curve) is not supported: fgsg's generalized cylinders (@Gs, @Gc, @Ge) "
+                 "sweep a circle of `turtle sides` sides (docs/language.md, the turtle)");
   if (item.hasBody)
     diags_.error("E018", item.range,
                  "'" + item.name + "' is a shape symbol, not a command: it takes no { } body");
@@ -190,6 +195,9 @@ void Analyzer::checkAtModule(const Item& item, const Where& w) {
       {"@o", 0, 1, "@o(r): a circle of radius r across the heading (default half the width)"},
       {"@M", 3, 3, "@M(x, y, z): move to the point"},
       {"@R", 6, 6, "@R(hx, hy, hz, ux, uy, uz): set the heading and up vectors"},
+      {"@Gs", 0, 0, "@Gs: start a generalized cylinder"},
+      {"@Gc", 0, 1, "@Gc(n): a control point of the generalized cylinder, n strips from the last"},
+      {"@Ge", 0, 1, "@Ge(n): end the generalized cylinder, n strips from the last control point"},
   };
   for (const AtModule& m : kSupported) {
     if (item.name != m.name) continue;
@@ -201,9 +209,15 @@ void Analyzer::checkAtModule(const Item& item, const Where& w) {
     for (const auto& a : item.args) expect(*a, w, ValueType::Num, "a turtle argument");
     return;
   }
+  // lpfg writes modules together (`@GsF(2)`); fgsg reads a name to its end.
+  std::string together;
+  for (const AtModule& m : kSupported)
+    if (item.name.size() > std::strlen(m.name) && item.name.compare(0, std::strlen(m.name), m.name) == 0)
+      together = "; to write '" + std::string(m.name) + "' and then '" + item.name.substr(std::strlen(m.name)) +
+                 "', separate them with a space";
   diags_.error("E048", item.range,
                "the turtle module '" + item.name + "' (lpfg, L-Py) is not supported yet; supported: @Tp, @Ts, "
-               "@O, @o, @M and @R (docs/language.md, the turtle)");
+               "@O, @o, @M, @R, @Gs, @Gc and @Ge (docs/language.md, the turtle)" + together);
 }
 
 }  // namespace fgsg::frontend::sema_detail

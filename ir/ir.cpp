@@ -26,6 +26,9 @@ int turtleOpNamed(const std::string& name) {
   if (name == "@o") return int(TurtleOp::Circle);
   if (name == "@M") return int(TurtleOp::MoveTo);
   if (name == "@R") return int(TurtleOp::SetHeading);
+  if (name == "@Gs") return int(TurtleOp::CylinderStart);
+  if (name == "@Gc") return int(TurtleOp::CylinderPoint);
+  if (name == "@Ge") return int(TurtleOp::CylinderEnd);
   if (name.size() != 1) return -1;
   switch (name[0]) {
     case '+': return int(TurtleOp::Left);

@@ -198,6 +198,9 @@ enum class TurtleOp : uint8_t {
   SetHeading,      // @R(hx, hy, hz, ux, uy, uz): the turtle's heading and (squared to it) up
   ColorPrevious,   // lpfg's `,`: the previous colour of `turtle colors` (`,(n)`: colour n)
   Circle,          // @o(r): a disc (Op::asset) of radius r, default half the width, across the heading
+  CylinderStart,   // @Gs: lpfg's generalized cylinder starts at the turtle (its first control point)
+  CylinderPoint,   // @Gc(n): lpfg's next control point, n strips from the last; with none open, L-Py's start
+  CylinderEnd,     // @Ge(n): the last control point; the tube is drawn (backend/commands/generalized_cylinder.h)
 };
 
 // The turtle command a symbol's name stands for ("F", "+", "!" ...), or -1: how the

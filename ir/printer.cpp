@@ -371,7 +371,9 @@ class Printer {
       }
       case OpKind::Emit: text = "emit " + symbolName(op.index) + "(" + list(r, op.args) + ")"; break;
       case OpKind::Turtle: {
-        static const char* const kTurtle[] = {"F", "f", "+", "-", "&", "^", "\\", "/", "|", "!", "$", "%", "{", ".", "}", "'", "~", "@Tp", "@Ts", "@O", "@M", "@R"};
+        static const char* const kTurtle[] = {"F", "f", "+", "-", "&", "^", "\\", "/", "|", "!", "$", "%", "{", ".",
+                                              "}", "'", "~", "@Tp", "@Ts", "@O", "@M", "@R", ",", "@o", "@Gs", "@Gc",
+                                              "@Ge"};
         text = std::string("turtle ") +
                (op.index < std::size(kTurtle) ? kTurtle[op.index]
                                               : "turtle#" + std::to_string(op.index));

@@ -470,7 +470,7 @@ class Verifier {
         break;
       case OpKind::Emit: emit(op, r); break;
       case OpKind::Turtle:
-        if (op.index > static_cast<uint32_t>(TurtleOp::Circle))
+        if (op.index > static_cast<uint32_t>(TurtleOp::CylinderEnd))
           problem("turtle op " + std::to_string(op.index) + " out of range");
         if (op.index == static_cast<uint32_t>(TurtleOp::Tropism) || op.index == static_cast<uint32_t>(TurtleOp::MoveTo))
           numArgs(op, r, 3);  // @Tp(x, y, z), @M(x, y, z)

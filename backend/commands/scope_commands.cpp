@@ -44,6 +44,7 @@ void ScopeCommands::command(State& st, const ir::Op& op, const double* a) {
       st.geom = stack_.back().geom;
       st.width = stack_.back().width;
       st.tropism = stack_.back().tropism;
+      st.cylinder = stack_.back().cylinder;
       st.line = stack_.back().line;
       stack_.pop_back();
       break;

@@ -54,7 +54,8 @@ class ScopeCommands final : public CommandFamily {
   void cosSin(double degrees, double* out) { trig_.cosSin(degrees, out[0], out[1]); }
 
   void push(const State& st) {
-    stack_.push_back({st.scope, st.geom, st.width, st.line, string_ ? string_->addOpen() : UINT32_MAX, st.tropism});
+    stack_.push_back({st.scope, st.geom, st.width, st.line, string_ ? string_->addOpen() : UINT32_MAX, st.tropism,
+                      st.cylinder});
   }
 
   // A sequential derivation with contexts keeps its brackets in its string.

@@ -2,6 +2,7 @@
 
 #include "backend/engine/derivation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fgsg::backend {
@@ -13,19 +14,24 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
   const double step = n > 0 ? args[0] : m.turtle.step;
   switch (op) {
     case TurtleOp::Forward: {
+      // Inside a generalized cylinder the tube is the drawing: no segment of its own.
+      OpenCylinder* tube = st.cylinder < 0 ? nullptr : openCylinder(st);
       // A segment is a cylinder (or tube) of the turtle's width along the heading (scope
       // Y), centred on the path; a ribbon is the flat quad in the turtle's X-Y plane; a
       // line lies on the box's Y edge, the path itself.
-      rt::Scope seg = st.scope;
-      switch (m.turtle.segments) {
-        case ir::TurtleSegments::Ribbons: seg.P -= 0.5 * st.width * st.scope.X(); break;
-        case ir::TurtleSegments::Lines: break;
-        default: seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z()); break;
+      if (drawing_ && !tube) {
+        rt::Scope seg = st.scope;
+        switch (m.turtle.segments) {
+          case ir::TurtleSegments::Ribbons: seg.P -= 0.5 * st.width * st.scope.X(); break;
+          case ir::TurtleSegments::Lines: break;
+          default: seg.P -= 0.5 * st.width * (st.scope.X() + st.scope.Z()); break;
+        }
+        seg.S = rt::Vec3(st.width, step, st.width);
+        d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       }
-      seg.S = rt::Vec3(st.width, step, st.width);
-      if (drawing_) d_.placeInstance(d_.segmentAsset(), seg, d_.segmentSymbol(), nullptr, 0, loc);
       st.scope.P += step * st.scope.Y();
       if (st.tropism.elasticity != 0) bend(st.scope, st.tropism);
+      if (tube && tube->lpy) tube->points.push_back(controlPoint(st, nullptr, 0, loc));  // L-Py: each F a point
       break;
     }
     case TurtleOp::Move: st.scope.P += step * st.scope.Y(); break;
@@ -61,6 +67,9 @@ void TurtleCommands::command(State& st, ir::TurtleOp op, const double* args, uin
       colorIndex(st, n > 0 ? args[0] : std::max(double(st.scope.colorIndex) - 1, 0.0), loc);
       break;
     case TurtleOp::Circle: break;  // only reached through the Op (its asset)
+    case TurtleOp::CylinderStart:
+    case TurtleOp::CylinderPoint:
+    case TurtleOp::CylinderEnd: cylinderCommand(st, op, args, n, loc); break;
     case TurtleOp::SurfaceBox: surfaceBox(st, 0, args, n); break;  // only reached through the Op
     case TurtleOp::Tropism: {
       const rt::Vec3 t(args[0], args[1], args[2]);
@@ -188,6 +197,98 @@ void TurtleCommands::bend(rt::Scope& scope, const Tropism& tropism) {
   scope.axes.col(1) = h;
   scope.axes.col(0) = x;
   scope.axes.col(2) = x.cross(h);
+}
+
+// lpfg's generalized cylinders (cpfg tutorial ch. 4): @Gs starts one at the turtle, @Gc(n)
+// adds a control point with n strips (default 1) from the last, @Ge(n) adds the last and
+// draws the tube (generalized_cylinder.h). L-Py writes @Gc to start one and @Ge to end it,
+// each F in between a control point: an @Gc with no cylinder open starts one so. A
+// cylinder belongs to the branch that started it: in a branch inside it F draws segments
+// and @Gc starts a cylinder of the branch's own. The query modules' pass draws nothing.
+void TurtleCommands::cylinderCommand(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc) {
+  if (!drawing_) return;
+  OpenCylinder* tube = openCylinder(st);
+  const auto start = [&](bool lpy) {
+    cylinders_.push_back({{controlPoint(st, nullptr, 0, loc)}, st.scope.Z(), d_.scopeStackSize(), lpy, true, loc});
+    st.cylinder = int32_t(cylinders_.size() - 1);
+  };
+  switch (op) {
+    case ir::TurtleOp::CylinderStart:
+      if (tube)
+        throw DeriveError{loc, "R027", "@Gs while the generalized cylinder started at line " +
+                                           std::to_string(tube->start.line) + ":" + std::to_string(tube->start.col) +
+                                           " is open: end it with @Ge first"};
+      start(false);
+      break;
+    case ir::TurtleOp::CylinderPoint:
+      if (tube) {
+        tube->points.push_back(controlPoint(st, args, n, loc));
+      } else if (n == 0) {
+        start(true);
+      } else {
+        throw DeriveError{loc, "R027", "@Gc(n) is lpfg's control point: it needs a generalized cylinder started by "
+                                       "@Gs in this branch (L-Py's @Gc, without an argument, starts one)"};
+      }
+      break;
+    default: {  // @Ge
+      if (!tube)
+        throw DeriveError{loc, "R027", "@Ge without a generalized cylinder started in this branch (by @Gs, or "
+                                       "L-Py's @Gc)"};
+      tube->points.push_back(controlPoint(st, args, n, loc));
+      const CylinderSweep sweep = sweepGeneralizedCylinder(tube->points, tube->up, d_.module().turtle.sides);
+      tube->open = false;
+      std::vector<CylinderControlPoint>().swap(tube->points);
+      st.cylinder = -1;
+      if (sweep.vertices.empty()) break;  // every control point in one place: nothing to draw
+      rt::Mesh mesh;
+      mesh.positions.resize(3 * sweep.vertices.size());
+      for (size_t v = 0; v < sweep.vertices.size(); ++v)
+        for (int d = 0; d < 3; ++d) mesh.positions[3 * v + size_t(d)] = float(sweep.vertices[v][d]);
+      mesh.indices.resize(sweep.triangles.size());
+      std::copy(sweep.triangles.begin(), sweep.triangles.end(), mesh.indices.begin());
+      d_.placeTurtleMesh(std::move(mesh), st.scope, d_.segmentSymbol(), loc);
+      break;
+    }
+  }
+}
+
+TurtleCommands::OpenCylinder* TurtleCommands::openCylinder(const State& st) {
+  if (st.cylinder < 0 || size_t(st.cylinder) >= cylinders_.size()) return nullptr;
+  OpenCylinder& c = cylinders_[size_t(st.cylinder)];
+  return c.open && c.depth == d_.scopeStackSize() ? &c : nullptr;
+}
+
+// The turtle's position and heading, half its width as the radius, and the strips `n`
+// asks for (default 1).
+CylinderControlPoint TurtleCommands::controlPoint(const State& st, const double* args, uint32_t n, ir::Loc loc) const {
+  const double strips = n > 0 ? args[0] : 1.0;
+  if (!(strips >= 1 && strips <= 10000 && strips == std::floor(strips)))
+    throw DeriveError{loc, "R027", "the strips of a generalized cylinder's piece must be a whole number from 1 to "
+                                   "10000, not " + std::to_string(strips)};
+  if (!(st.width >= 0 && std::isfinite(st.width)))
+    throw DeriveError{loc, "R027", "the width at a generalized cylinder's control point must be a finite number "
+                                   "from 0, not " + std::to_string(st.width)};
+  return {st.scope.P, st.scope.Y(), 0.5 * st.width, uint32_t(strips)};
+}
+
+// A cylinder never ended is not drawn: one R032 per module that started such cylinders.
+void TurtleCommands::endCylinders(std::vector<rt::DeriveMessage>& messages) {
+  std::vector<std::pair<ir::Loc, size_t>> unended;
+  for (const OpenCylinder& c : cylinders_) {
+    if (!c.open) continue;
+    auto same = [&](const auto& u) { return u.first.line == c.start.line && u.first.col == c.start.col; };
+    auto it = std::find_if(unended.begin(), unended.end(), same);
+    if (it == unended.end())
+      unended.push_back({c.start, 1});
+    else
+      ++it->second;
+  }
+  for (const auto& [loc, count] : unended)
+    messages.push_back({false, "R032", loc.line, loc.col,
+                        std::to_string(count) + " generalized cylinder" + (count == 1 ? "" : "s") +
+                            " started here never ended with @Ge in the branch that started " +
+                            (count == 1 ? "it" : "them") + ": not drawn"});
+  cylinders_.clear();
 }
 
 void TurtleCommands::drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params) {

@@ -6,7 +6,9 @@
 #pragma once
 
 #include "backend/commands/command_family.h"
+#include "backend/commands/generalized_cylinder.h"
 #include "backend/commands/scope_commands.h"
+#include "runtime/derivation.h"
 
 #include <vector>
 
@@ -41,6 +43,8 @@ class TurtleCommands final : public CommandFamily {
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::SurfaceBox)) return surfaceBox(st, op.asset, args, n);
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::Sphere)) return sphere(st, op.asset, args, n, op.loc);
     if (op.index == static_cast<uint32_t>(ir::TurtleOp::Circle)) return circle(st, op.asset, args, n, op.loc);
+    if (op.index >= static_cast<uint32_t>(ir::TurtleOp::CylinderStart))
+      return cylinderCommand(st, static_cast<ir::TurtleOp>(op.index), args, n, op.loc);
     command(st, static_cast<ir::TurtleOp>(op.index), args, n, op.loc);
   }
 
@@ -52,6 +56,9 @@ class TurtleCommands final : public CommandFamily {
   // the turtle step.
   void drawSymbol(const ir::Symbol& sym, const rt::Scope& scope, const double* params);
 
+  // R032 for each generalized cylinder started and never ended (not drawn); forgets them.
+  void endCylinders(std::vector<rt::DeriveMessage>& messages);
+
  private:
   static void rollHorizontal(rt::Scope& scope);
   static void bend(rt::Scope& scope, const Tropism& tropism);
@@ -60,11 +67,25 @@ class TurtleCommands final : public CommandFamily {
   void circle(const State& st, uint32_t asset, const double* args, uint32_t n, ir::Loc loc);
   void colorIndex(State& st, double i, ir::Loc loc) const;
   static void setHeading(State& st, const double* args, ir::Loc loc);
+  // lpfg's @Gs, @Gc(n), @Ge(n) and L-Py's @Gc, @Ge (generalized_cylinder.h).
+  struct OpenCylinder {
+    std::vector<CylinderControlPoint> points;
+    rt::Vec3 up;          // the turtle's U at the start: where the rings' first vertex lies
+    size_t depth = 0;     // the [ ] depth it was started at: a branch inside does not continue it
+    bool lpy = false;     // started by L-Py's @Gc: each F adds a control point
+    bool open = true;
+    ir::Loc start;
+  };
+  void cylinderCommand(State& st, ir::TurtleOp op, const double* args, uint32_t n, ir::Loc loc);
+  // The cylinder open in this branch (not in an enclosing one), or nullptr.
+  OpenCylinder* openCylinder(const State& st);
+  CylinderControlPoint controlPoint(const State& st, const double* args, uint32_t n, ir::Loc loc) const;
 
   Derivation& d_;
   ScopeCommands& scope_;
   std::vector<std::vector<rt::Vec3>> polygons_;  // open polygons, innermost last
   bool drawing_ = true;                          // false while a NotDrawing lives
+  std::vector<OpenCylinder> cylinders_;          // State::cylinder indexes them
 };
 
 }  // namespace fgsg::backend

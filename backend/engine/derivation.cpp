@@ -142,6 +142,7 @@ rt::DeriveResult Derivation::run() {
   // Lines and the surface are appended after the rules' instances: placed by no rule.
   if (origins_.on()) out_.origins.resize(out_.instances.size());
   overlapWarnings(result.messages);
+  turtle_.endCylinders(result.messages);  // R032
   if (result.ok)
     if (auto never = marching_.tally().neverStarted()) result.messages.push_back(*never);  // R030
   result.stats = stats_;

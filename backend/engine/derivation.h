@@ -110,6 +110,9 @@ class Derivation final : public QueryHost {
   // first, output as geometry of its own in the turtle's colour (a leaf green unless
   // Color says), under the symbol "polygon".
   void placePolygon(const std::vector<rt::Vec3>& vertices, const rt::Scope& turtle, ir::Loc loc);
+  // Turtle geometry built in world coordinates (a polygon, a generalized cylinder) as an
+  // instance of its own mesh, in the turtle's colour, under `symbol`.
+  void placeTurtleMesh(rt::Mesh mesh, const rt::Scope& turtle, uint32_t symbol, ir::Loc loc);
   // Registers a mesh the derivation built itself (an ornament, the mortar, a cell's box)
   // as an output asset named `name`: its index in the output's asset table. `builtIn`,
   // when given, receives the world box it was built in (placing the asset there puts it

@@ -56,7 +56,10 @@ void Derivation::initOutput() {
   const bool polygons = moduleUses([](const ir::Op& op) {
     return op.kind == ir::OpKind::Turtle && op.index == static_cast<uint32_t>(ir::TurtleOp::PolygonEnd);
   });
-  if (leavesOutput_ || polygons) {
+  const bool cylinders = moduleUses([](const ir::Op& op) {  // @Ge: generalized cylinders (turtle_commands.cpp)
+    return op.kind == ir::OpKind::Turtle && op.index == static_cast<uint32_t>(ir::TurtleOp::CylinderEnd);
+  });
+  if (leavesOutput_ || polygons || cylinders) {
     ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back(rt::kOwnGeometryAsset);
   }
@@ -207,6 +210,10 @@ void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::S
   mesh.indices.resize(3 * (vertices.size() - 2));
   for (uint32_t t = 0; t + 2 < vertices.size(); ++t)
     mesh.indices[3 * t] = 0, mesh.indices[3 * t + 1] = t + 1, mesh.indices[3 * t + 2] = t + 2;
+  placeTurtleMesh(std::move(mesh), turtle, polygonSymbol_, loc);
+}
+
+void Derivation::placeTurtleMesh(rt::Mesh mesh, const rt::Scope& turtle, uint32_t symbol, ir::Loc loc) {
   mesh.computeNormals();
   // World coordinates: the instance's box is the unit box itself.
   rt::Scope box;
@@ -214,7 +221,7 @@ void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::S
   box.color = turtle.color;
   out_.geometries.push_back(std::move(mesh));  // first, as in outputLeaf
   const size_t before = out_.instances.size();
-  placeInstance(ownGeometryAsset_, box, polygonSymbol_, nullptr, 0, loc);
+  placeInstance(ownGeometryAsset_, box, symbol, nullptr, 0, loc);
   if (out_.instances.size() == before) return out_.geometries.pop_back();
   out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
 }

@@ -30,6 +30,7 @@ struct Saved {
   rt::LineCursor line;
   uint32_t bracket = UINT32_MAX;  // its '[' in the sequential string (grammars with contexts)
   Tropism tropism;
+  int32_t cylinder = -1;
 };
 struct State {
   rt::Scope scope;
@@ -39,6 +40,7 @@ struct State {
   rt::LineCursor line;  // the line LineSeg extends (a ']' returns to the '[' point)
   const rt::Scope* origin = nullptr;  // the scope the successor or body started with (Center)
   Tropism tropism;
+  int32_t cylinder = -1;  // the generalized cylinder open here (`@Gs`), TurtleCommands' index; -1: none
 };
 
 // What one running successor knows: its random stream, key and parameters, the
