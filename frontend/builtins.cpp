@@ -105,6 +105,10 @@ const CommandInfo kCommands[] = {
      "ShapeO(frontWidth, rightWidth, backWidth, leftWidth){ shape: A | remainder: B }", nullptr},
     {CommandId::ShapeOperation, "InnerRectangle", 0, 1, BodyRule::Optional,
      "InnerRectangle(\"scope\" or \"edge\") or InnerRectangle(\"scope\"){ shape: A }", nullptr},
+    {CommandId::ShapeOperation, "Scatter", 3, 6, BodyRule::One,
+     "Scatter(\"surface\" or \"volume\" or \"scope\", n, \"uniform\"){ A } or "
+     "Scatter(domain, n, \"gaussian\", \"center\" or \"front\" ..., stddev, \"absolute\" or \"relative\"){ A }",
+     nullptr},
     {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
     {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
     {CommandId::ShapeOperation, "Translate", 5, 5, BodyRule::None,

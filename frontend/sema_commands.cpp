@@ -444,7 +444,7 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
                        ":' (front, back, left, right, top, bottom, vertical, aslant, horizontal, nutant, side, all)");
     }
   }
-  if (cmd.id == CommandId::ShapeOperation && labelled != parts)
+  if (cmd.id == CommandId::ShapeOperation && labelled != parts && !shapeOperationPlainBody(item.name))
     diags_.error("E018", item.range, "label every part of '" + item.name + "': " + std::string(cmd.signature));
   if (cmd.id == CommandId::Offset && labelled != parts)
     diags_.error("E018", item.range, "label every part of 'Offset': " + std::string(cmd.signature));

@@ -42,6 +42,13 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
   if ((command == "Translate" || command == "Rotate") && k == 1)
     return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
+  // Scatter's words as runtime/cga/scatter.h's ScatterDomain and ScatterMean.
+  if (command == "Scatter" && k == 0) return pick({{"surface", 0}, {"volume", 1}, {"scope", 2}}, word, value, allowed);
+  if (command == "Scatter" && k == 2) return pick({{"uniform", 0}, {"gaussian", 1}}, word, value, allowed);
+  if (command == "Scatter" && k == 3)
+    return pick({{"center", 0}, {"front", 1}, {"back", 2}, {"left", 3}, {"right", 4}, {"top", 5}, {"bottom", 6}}, word,
+                value, allowed);
+  if (command == "Scatter" && k == 5) return pick({{"absolute", 0}, {"relative", 1}}, word, value, allowed);
   if (command == "CleanupGeometry" && k == 0)
     // op_cleanupGeometry's components as runtime/cga/shape_operations.h's steps: each merges
     // corners (1); vertices also drops straight corners (2), faces degenerate and doubled
@@ -61,6 +68,8 @@ bool shapeOperationLabel(const std::string& command, const std::string& label, s
   if (command == "InnerRectangle") return labelIn({"shape"}, label, allowed);
   return false;
 }
+
+bool shapeOperationPlainBody(const std::string& command) { return command == "Scatter"; }
 
 bool shapeOperationArity(const std::string& command, size_t count, std::string& forms) {
   // CityEngine's forms: primitiveQuad(width, length), primitiveCube(width, height, depth),

@@ -62,12 +62,16 @@ ruleBody
 
 operation
   : NIL                                                   # nilOperation
-  | name=( ID | QID ) '(' ( expr ( ',' expr )* )? ')' splitBody?  # callOperation
+  | name=( ID | QID ) '(' ( expr ( ',' expr )* )? ')' ( splitBody | operationBlock )?  # callOperation
   | leaf=LEAF                                             # leafOperation
   | name=( ID | QID )                                     # shapeOperation
   | '.'                                                   # dotOperation
   | '[' operation* ']'                                    # pushPopOperation
   ;
+
+// `scatter(surface, 20, uniform) { s(1, 4, 1) Tree }`: operations on each new shape, no
+// selector. A `{` whose first part reads `key :` or `key =` is a splitBody instead.
+operationBlock : '{' operation* '}' ;
 
 // `{ 3 : A | ~1 : B }*` for split, `{ top : A | side = B }` for comp. A part may itself be
 // a repeated group: `{ 2 : A | { ~3 : B | 1 : C }* | 2 : D }`.

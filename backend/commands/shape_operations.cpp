@@ -1,5 +1,6 @@
 #include "backend/commands/shape_operations.h"
 
+#include "backend/commands/scatter_command.h"
 #include "backend/engine/derivation.h"
 #include "runtime/cga/shape_operations.h"
 
@@ -125,6 +126,10 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   if (name == "EdgeDistance") {  // SetbackPerEdge's distance for the edge it runs on
     if (!edgeDistanceSink) throw DeriveError{op.loc, "R002", "EdgeDistance outside SetbackPerEdge"};
     *edgeDistanceSink = a[0];
+    return;
+  }
+  if (name == "Scatter") {
+    applyScatter(d, op, a, n, st, ex, f);
     return;
   }
   if (name.rfind("Setback", 0) == 0 || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {

@@ -24,6 +24,7 @@
 //                                       SetupProjection("xz", w, h), TileUV(w, h) ...;
 //                                       projectUV(0) nothing (the projection applies at output)
 //   report(k, v), print(x)              Report(k, v), Print(x) (where fgsg has them)
+//   scatter(domain, n, distribution...) { operations }   Scatter(...){ operations } (cga_scatter.cpp)
 //   [ ... ]  NIL  X.  .
 // A successor that creates no shape ends with its shape as a leaf (CityEngine keeps it):
 // the leaf symbol is the rule's name followed by '.'. Any other CityEngine operation is
@@ -270,6 +271,21 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     item.hasBody = true;
     item.body.push_back(std::move(part));
   };
+
+  // `{ operations }` without selectors belongs to scatter (cga_scatter.cpp) alone.
+  if (name == "scatter" && !rules_.count(name) && !imported) {
+    std::optional<Item> scattered = scatter(op, env);
+    if (!scattered) return;
+    flushInsert();
+    push(std::move(*scattered));
+    seq.createsShapes = true;
+    return;
+  }
+  if (op->operationBlock()) {
+    error("E018", rangeOf(op->operationBlock()),
+          "'" + name + "' takes no { operations } body (scatter does; a split or comp's parts are `selector : operations`)");
+    return;
+  }
 
   // A parametric rule (or an imported one): a shape with these arguments.
   if (rules_.count(name) || imported) {

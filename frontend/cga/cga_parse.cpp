@@ -17,44 +17,14 @@ namespace {
 
 constexpr int kMaxCgaErrors = 50;
 
-// The `scatter` whose `( ... ) {` body the offending token lies in, else null: scatter's
-// body has no selector, so the grammar fails there, and the error should say why.
-antlr4::Token* scatterOfBody(antlr4::Recognizer* recognizer, antlr4::Token* offending) {
-  auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
-  if (!parser || !offending) return nullptr;
-  antlr4::TokenStream* tokens = parser->getTokenStream();
-  // Back to the unclosed '{', then over the balanced '( ... )' before it to a name.
-  long i = long(offending->getTokenIndex()) - 1;
-  for (int depth = 0; i >= 0; --i) {
-    const std::string t = tokens->get(size_t(i))->getText();
-    if (t == "}") ++depth;
-    else if (t == "{" && depth-- == 0) break;
-  }
-  if (--i < 0 || tokens->get(size_t(i))->getText() != ")") return nullptr;
-  for (int depth = 0; i >= 0; --i) {
-    const std::string t = tokens->get(size_t(i))->getText();
-    if (t == ")") ++depth;
-    else if (t == "(" && --depth == 0) break;
-  }
-  if (--i < 0) return nullptr;
-  antlr4::Token* name = tokens->get(size_t(i));
-  return name->getText() == "scatter" ? name : nullptr;
-}
-
 // ANTLR's recognition errors as E002, at most kMaxCgaErrors; its messages name tokens as the
 // grammar spells them, which for CGA's small grammar reads well enough.
 class CgaErrorListener : public antlr4::BaseErrorListener {
  public:
   explicit CgaErrorListener(Diagnostics& diags) : diags_(diags) {}
-  void syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* offending, size_t line, size_t col,
+  void syntaxError(antlr4::Recognizer*, antlr4::Token* offending, size_t line, size_t col,
                    const std::string& msg, std::exception_ptr) override {
     if (++count_ > kMaxCgaErrors) return;
-    if (antlr4::Token* name = scatterOfBody(recognizer, offending)) {
-      diags_.error("E801", cga::rangeOf(name),
-                   "scatter(...){ Leaf }: its body has no selector, which the .cga grammar does not read yet "
-                   "(CityEngine CGA; not supported yet)");
-      return;
-    }
     SourceRange at{{int(line), int(col) + 1}, {int(line), int(col) + 1}};
     if (offending && offending->getType() != antlr4::Token::EOF) at = cga::rangeOf(offending);
     std::string m = msg;

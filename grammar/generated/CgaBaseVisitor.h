@@ -121,6 +121,10 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitOperationBlock(CgaParser::OperationBlockContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitSplitBody(CgaParser::SplitBodyContext *ctx) override {
     return visitChildren(ctx);
   }

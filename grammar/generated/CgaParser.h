@@ -30,8 +30,8 @@ public:
     RuleImportDecl = 4, RuleStyleDecl = 5, RuleAnnotated = 6, RuleAnnotation = 7, 
     RuleAnnotationArg = 8, RuleAttrDecl = 9, RuleConstDecl = 10, RuleFunctionDecl = 11, 
     RuleRuleDecl = 12, RuleParams = 13, RuleValue = 14, RuleRuleBody = 15, 
-    RuleOperation = 16, RuleSplitBody = 17, RuleSplitPart = 18, RuleExpr = 19, 
-    RulePrimary = 20, RuleNumber = 21
+    RuleOperation = 16, RuleOperationBlock = 17, RuleSplitBody = 18, RuleSplitPart = 19, 
+    RuleExpr = 20, RulePrimary = 21, RuleNumber = 22
   };
 
   CgaParser(antlr4::TokenStream *input);
@@ -61,6 +61,7 @@ public:
   class ValueContext;
   class RuleBodyContext;
   class OperationContext;
+  class OperationBlockContext;
   class SplitBodyContext;
   class SplitPartContext;
   class ExprContext;
@@ -446,6 +447,7 @@ public:
     std::vector<ExprContext *> expr();
     ExprContext* expr(size_t i);
     SplitBodyContext *splitBody();
+    OperationBlockContext *operationBlock();
     std::vector<antlr4::tree::TerminalNode *> COMMA();
     antlr4::tree::TerminalNode* COMMA(size_t i);
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
@@ -487,6 +489,21 @@ public:
   };
 
   OperationContext* operation();
+
+  class  OperationBlockContext : public antlr4::ParserRuleContext {
+  public:
+    OperationBlockContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *LBRACE();
+    antlr4::tree::TerminalNode *RBRACE();
+    std::vector<OperationContext *> operation();
+    OperationContext* operation(size_t i);
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  OperationBlockContext* operationBlock();
 
   class  SplitBodyContext : public antlr4::ParserRuleContext {
   public:

@@ -72,6 +72,8 @@ public:
 
     virtual antlrcpp::Any visitPushPopOperation(CgaParser::PushPopOperationContext *context) = 0;
 
+    virtual antlrcpp::Any visitOperationBlock(CgaParser::OperationBlockContext *context) = 0;
+
     virtual antlrcpp::Any visitSplitBody(CgaParser::SplitBodyContext *context) = 0;
 
     virtual antlrcpp::Any visitSizedPart(CgaParser::SizedPartContext *context) = 0;
