@@ -30,6 +30,7 @@ TUTORIALS = {
     "12": [T + "/12_zoning.cga", "--lots", L + "/block.geojson"],
     "13": [T + "/13_courtyard.cga", "--lots", L + "/block30x24.geojson"],
     "14": [T + "/14_roof_overhangs.cga", "--lots", L + "/lot20x12.geojson"],
+    "15": [T + "/15_scatter_trees.cga", "--lots", L + "/block.geojson"],
 }
 SIZE = (480, 360)
 
