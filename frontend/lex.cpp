@@ -1,6 +1,5 @@
 #include "frontend/lex.h"
 #include "frontend/context_lists.h"
-#include "frontend/lsystem_not_yet.h"
 #include "frontend/query_modules.h"
 
 #include "FgsgParser.h"
@@ -557,7 +556,6 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   lexed.lexer->removeErrorListeners();
 
   readContextListDeclarations(raw);  // before the `#` of `#consider` is a lexical error
-  dropLsystemSyntaxNotYetSupported(raw, diags);
   joinQueryModules(raw);
   LexicalErrors errors(diags);
   std::vector<std::unique_ptr<Token>> tokens = checkLexicalErrors(std::move(raw), errors);

@@ -10,7 +10,7 @@ using fgsg_grammar::FgsgLexer;
 bool isQueryModuleName(const std::string& name, bool letterOnly) {
   if (!letterOnly && (name.size() != 2 || name[0] != '?')) return false;
   const std::string letter = letterOnly ? name : name.substr(1);
-  return letter == "P" || letter == "H" || letter == "U" || letter == "L";
+  return letter == "P" || letter == "H" || letter == "U" || letter == "L" || letter == "E";
 }
 
 void joinQueryModules(std::vector<std::unique_ptr<Token>>& tokens) {

@@ -160,11 +160,31 @@ void Analyzer::checkSection(const Rule& r) {
 // an L-system with two or three of the turtle's coordinates. fgsg fills it from the
 // derived string, so a homomorphism, which only the last drawing reads, would give
 // values the drawing does not show: E048 rather than a silent difference from lpfg.
+// The environmental query ?E is filled with the grammar's first field where the turtle
+// stands: it needs one (E066), and takes one argument for a scalar field (its value), two
+// or three for the others (their vector's x, y[, z]).
 void Analyzer::checkQueryModule(const Item& item) {
-  if (item.args.size() < 2 || item.args.size() > 3)
+  const size_t n = item.args.size();
+  if (item.name == "?E" && prog_.fields.empty()) {
+    diags_.error("E066", item.range,
+                 "the environmental query '?E' reads the grammar's first field where the turtle stands, and "
+                 "this grammar declares no field: declare a surface and a field, e.g. `surface plane(10, 10);` "
+                 "`field F = design vector { regular at (0, 0, 0) direction (1, 0, 0); };`");
+  } else if (item.name == "?E" && prog_.fields.front().function == "scalar") {
+    if (n != 1)
+      diags_.error("E016", item.range,
+                   "'?E' reads the grammar's first field, the scalar field '" + prog_.fields.front().name +
+                       "': it takes 1 argument (its value), got " + std::to_string(n));
+  } else if (item.name == "?E") {
+    if (n < 2 || n > 3)
+      diags_.error("E016", item.range,
+                   "'?E' reads the grammar's first field, '" + prog_.fields.front().name +
+                       "': it takes 2 or 3 arguments (x, y[, z] of the field's vector), got " + std::to_string(n));
+  } else if (n < 2 || n > 3) {
     diags_.error("E016", item.range,
                  "the query module '" + item.name + "' takes 2 or 3 arguments (x, y[, z]), got " +
-                     std::to_string(item.args.size()));
+                     std::to_string(n));
+  }
   if (res_.mode != "parallel") {
     diags_.error("E048", item.range,
                  "the query module '" + item.name + "' needs an L-system (`derive parallel N;`): it is filled by "

@@ -502,6 +502,27 @@ rt::Vec3 SurfaceWorld::fieldVector(const rt::Scope& s, uint32_t env, const std::
   notAnswered(at, impl_->fields[impl_->fieldOfEnv[env]].name, member, "not a vector-valued field member");
 }
 
+void SurfaceWorld::environmentQuery(const Vec3& point, double* out, uint32_t n, ir::Loc at) const {
+  const Impl& w = *impl_;
+  if (w.fields.empty())
+    throw DeriveError{at, "R016", "the environmental query ?E reads the first field: declare one (`field F = ...;`)"};
+  const Impl::Field& first = w.fields.front();
+  const SurfacePoint p = w.locator->closestPoint(point);
+  if (first.scalar) {
+    if (n > 0) out[0] = first.scalar->at(w.mesh, p);
+    return;
+  }
+  const rt::field::TangentField& f = *first.values;
+  Vec3 v;
+  if (f.isTensor()) {
+    const rt::field::Eigen2 e = f.eigen(p);
+    v = e.value1 * e.vector1;
+  } else {
+    v = f.vector(p);
+  }
+  for (uint32_t k = 0; k < std::min<uint32_t>(n, 3); ++k) out[k] = v[k];
+}
+
 namespace {
 
 // Fast marching's update of corner c from corners a and b of one triangle, whose

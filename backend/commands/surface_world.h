@@ -60,6 +60,12 @@ class SurfaceWorld {
   rt::Vec3 fieldVector(const rt::Scope& s, uint32_t env, const std::string& member,
                        ir::Loc at) const;
 
+  // An L-system's environmental query ?E (docs/language.md, the turtle): the first
+  // declared field at the surface point closest to `point` — a scalar field's value in
+  // out[0]; another field's world vector (a tensor's major eigenvector scaled by its
+  // eigenvalue, as F.vector) in out[0..n). Without a field: R016 at `at`.
+  void environmentQuery(const rt::Vec3& point, double* out, uint32_t n, ir::Loc at) const;
+
   // The distance along the surface between the scopes' surface points (`collision
   // geodesic R`), by fast marching over the triangles (Kimmel & Sethian) from the first
   // point's face to the second's; points in one face are measured straight. Stops at

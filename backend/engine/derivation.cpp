@@ -230,21 +230,25 @@ void Derivation::checkEnvironment() {
                       "collision tests need a sequential derivation: a collision culls the rest "
                       "of one production, and an L-system rewrites every module at once"};
   if (m_.surface.present || !opt_.surfaceOverride.empty()) {
-    if (m_.mode == ir::DeriveMode::Parallel)
+    // An L-system's turtle draws in space; its surface and fields are only the
+    // environment its ?E queries read (query_modules.cpp), so it needs one.
+    const bool lsystem = m_.mode == ir::DeriveMode::Parallel;
+    if (lsystem && m_.findSymbol("?E") < 0)
       throw DeriveError{m_.surface.loc, "R009",
-                        "a surface needs a sequential derivation: L-system turtles draw on the "
-                        "plane"};
+                        "a surface needs a sequential derivation: L-system turtles draw in space, "
+                        "and read a surface's fields only through the environmental query ?E"};
+    std::shared_ptr<const SurfaceWorld>& world = lsystem ? environment_ : surface_;
     const auto start = Clock::now();
     SurfaceReuse* reuse = SurfaceReuseScope::current();  // fgsg view: the last derivation's
     if (reuse) {
       std::lock_guard<std::mutex> lock(reuse->mutex);
-      surface_ = reuse->world;
+      world = reuse->world;
     }
-    if (!surface_) {
-      surface_ = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+    if (!world) {
+      world = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
       if (reuse) {
         std::lock_guard<std::mutex> lock(reuse->mutex);
-        reuse->world = surface_;
+        reuse->world = world;
       }
     }
     stats_.surfaceSeconds += std::chrono::duration<double>(Clock::now() - start).count();

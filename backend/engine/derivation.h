@@ -376,6 +376,9 @@ class Derivation final : public QueryHost {
   uint32_t ownGeometryAsset_ = UINT32_MAX, leafCubeAsset_ = UINT32_MAX, leafQuadAsset_ = UINT32_MAX;
   bool usesOcclusion_ = false;
   std::shared_ptr<const SurfaceWorld> surface_;  // null: the grammar grows on the plane; shared by seed plants
+  // An L-system's surface and fields, read only by its environmental queries ?E
+  // (query_modules.cpp): its turtle draws in space, not on the surface.
+  std::shared_ptr<const SurfaceWorld> environment_;
   std::vector<std::vector<double>> lotAttrs_;  // --lots: each lot's attribute slots
   std::vector<uint8_t> eager_;  // per symbol: derived where it is written (findEagerSymbols)
   uint32_t lockDepth_ = 0;      // inside a Lock every shape is derived where it is written

@@ -1,7 +1,8 @@
 // The turtle's answers to the query modules of a parallel derivation's string
 // (query_modules.h): the turtle reads the string as interpretString does, drawing
 // nothing, and writes its position or one of its axes into each query module's
-// arguments — x, y and, for three arguments, z, in the world's axes.
+// arguments — x, y and, for three arguments, z, in the world's axes; ?E's, the first
+// field's value where the turtle stands.
 #include "backend/engine/derivation.h"
 #include "backend/engine/query_modules.h"
 
@@ -20,7 +21,11 @@ void Derivation::answerQueries(ModuleString& str) {
     double* a = str.args.data() + mod.firstArg;
     switch (so.kind) {
       case ir::OpKind::Emit:
-        if (so.query >= 0) {
+        if (so.query == static_cast<int8_t>(QueryModule::Environment)) {
+          if (!environment_)  // the front end asks for a field (E066); defensive
+            throw DeriveError{so.op->loc, "R016", "the environmental query ?E needs a surface with a field"};
+          environment_->environmentQuery(st.scope.P, a, so.argCount, so.op->loc);
+        } else if (so.query >= 0) {
           rt::Vec3 v = st.scope.P;
           switch (static_cast<QueryModule>(so.query)) {
             case QueryModule::Heading: v = st.scope.Y(); break;
