@@ -326,9 +326,20 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
       if (report) res_.exprTypes[e.args[0].get()] = ValueType::Str;
       return record(e, ValueType::Num, report);
     }
+    if ((e.text == "du" || e.text == "dv") && e.hasCall && e.args.size() == 2) {  // CGA's geometry.du(0, uvSpace)
+      ConstValue set, space;
+      if (!evalConst(*e.args[0], set) || set.type != ValueType::Num || set.num != 0)
+        return fail("Geometry." + e.text + " reads uv set 0 only (the one fgsg's projections make): Geometry." +
+                    e.text + "(0, \"uvSpace\")");
+      if (!evalConst(*e.args[1], space) || space.type != ValueType::Str || space.str != "uvSpace")
+        return fail("Geometry." + e.text + " measures in \"uvSpace\" (\"unitSpace\" is not supported yet): Geometry." +
+                    e.text + "(0, \"uvSpace\")");
+      if (report) res_.exprTypes[e.args[1].get()] = ValueType::Str;
+      return record(e, ValueType::Num, report);
+    }
     return fail("unknown geometry query 'Geometry." + e.text +
                 "' (Geometry.area height nVertices nFaces boundaryLength isConcave, Geometry.isPlanar(degrees), "
-                "Geometry.angle(\"maxSlope\" or \"azimuth\" or \"zenith\"))");
+                "Geometry.angle(\"maxSlope\" or \"azimuth\" or \"zenith\"), Geometry.du dv(0, \"uvSpace\"))");
   }
   if (e.object == "Feature") {
     bool number = false, takesString = false;

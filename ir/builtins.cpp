@@ -58,6 +58,8 @@ constexpr QuerySignature kQueries[] = {
     {"Shape", "minimumDistance", 1, Type::Str, N, true},
     {"Shape", "contextCount", 1, Type::Str, N, true},
     {"Geometry", "angle", 0, N, N, true},  // the selector in extra
+    {"Geometry", "du", 0, N, N, true},     // uv set 0, uvSpace: checked by the compiler
+    {"Geometry", "dv", 0, N, N, true},
 };
 static_assert(std::size(kQueries) == static_cast<size_t>(kLastQuery) + 1,
               "one signature per Query");

@@ -76,10 +76,14 @@ enum class Query : uint8_t {
   // CGA's geometry.angle(maxSlope | azimuth | zenith): extra = the selector
   // (rt::cga::GeometryAngleKind: 0, 1, 2), in degrees.
   GeometryAngle,
+  // CGA's geometry.du(0, uvSpace) and dv: the spread of the texture coordinates of the
+  // scope's projection over the geometry (uv set 0 only: the compiler checks it).
+  GeometryDu, GeometryDv,
 };
-inline constexpr Query kLastQuery = Query::GeometryAngle;
+inline constexpr Query kLastQuery = Query::GeometryDv;
 inline bool isGeometryQuery(Query q) {
-  return (q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength) || q == Query::GeometryAngle;
+  return (q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength) ||
+         (q >= Query::GeometryAngle && q <= Query::GeometryDv);
 }
 inline bool isContextQuery(Query q) { return q >= Query::ContextInside && q <= Query::ContextCount; }
 // Which shapes a context query looks at: its own start shape's (CityEngine's intra), the

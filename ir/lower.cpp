@@ -732,7 +732,8 @@ class Lowerer {
           {"area", Query::GeometryArea},         {"height", Query::GeometryHeight},
           {"nVertices", Query::GeometryVertices}, {"nFaces", Query::GeometryFaces},
           {"isPlanar", Query::GeometryIsPlanar}, {"isConcave", Query::GeometryIsConcave},
-          {"boundaryLength", Query::GeometryBoundaryLength}, {"angle", Query::GeometryAngle}};
+          {"boundaryLength", Query::GeometryBoundaryLength}, {"angle", Query::GeometryAngle},
+          {"du", Query::GeometryDu}, {"dv", Query::GeometryDv}};
       out.index = static_cast<uint32_t>((e.object == "Shape" ? kShape : kGeometry).at(e.text));
       if (static_cast<Query>(out.index) == Query::GeometryAngle) {
         // The selector is a constant word (sema checked it), fixed here as a number.
@@ -740,6 +741,9 @@ class Lowerer {
         out.extra = selector == "azimuth" ? 1u : selector == "zenith" ? 2u : 0u;
         return out;
       }
+      // Geometry.du(0, "uvSpace"): the only uv set and space (sema checked them).
+      if (static_cast<Query>(out.index) == Query::GeometryDu || static_cast<Query>(out.index) == Query::GeometryDv)
+        return out;
       if (isContextQuery(static_cast<Query>(out.index))) {
         // The target is a constant word (sema checked it); the label any string, "" for none.
         const std::string target = e.args.empty() ? "all" : constString(*e.args[0]);

@@ -3,6 +3,7 @@
 #include "backend/engine/derivation.h"
 #include "runtime/cga/geometry_queries.h"
 
+#include <array>
 #include <cmath>
 
 namespace fgsg::backend {
@@ -44,6 +45,13 @@ double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomR
     if (!std::isfinite(arg) || arg < 0)
       throw DeriveError{at, "R011", "Geometry.isPlanar: the tolerance must be an angle of 0 degrees or more"};
     return rt::cga::geometryIsPlanar(scope, geom, arena_, arg) ? 1.0 : 0.0;
+  }
+  if (q == ir::Query::GeometryDu || q == ir::Query::GeometryDv) {
+    // Without a projection (setupProjection, texture) the geometry has no texture coordinates.
+    if (scope.projection == 0) return 0.0;
+    const std::array<double, 2> spread =
+        rt::cga::geometryUvSpread(scope, geom, arena_, textures_.projection(scope.projection));
+    return spread[q == ir::Query::GeometryDu ? 0 : 1];
   }
   if (q == ir::Query::GeometryAngle)  // arg: the selector, the query's extra
     return rt::cga::geometryAngle(scope, geom, arena_, static_cast<rt::cga::GeometryAngleKind>(static_cast<int>(arg)));

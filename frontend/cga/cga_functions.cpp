@@ -327,15 +327,17 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
   }
   if (fn.rfind("geometry.", 0) == 0) {
     // geometry.area() ...: fgsg's Geometry.area queries; the surface selectors
-    // (geometry.area(top)) are not here yet. geometry.angle(maxSlope): Geometry.angle("maxSlope").
+    // (geometry.area(top)) are not here yet. geometry.angle(maxSlope): Geometry.angle("maxSlope");
+    // geometry.du(0, uvSpace): Geometry.du(0, "uvSpace") (other uv sets and unitSpace not yet).
     static const std::set<std::string> kGeometry = {"area", "height", "nVertices", "nFaces", "isConcave",
-                                                    "boundaryLength", "isPlanar", "angle"};
+                                                    "boundaryLength", "isPlanar", "angle", "du", "dv"};
     const std::string member = fn.substr(9);
     if (!kGeometry.count(member)) {
       notSupported(nameAt, "the function '" + fn + "'");
       return nullptr;
     }
-    const size_t want = member == "isPlanar" || member == "angle" ? 1 : 0;
+    const bool spread = member == "du" || member == "dv";
+    const size_t want = spread ? 2 : member == "isPlanar" || member == "angle" ? 1 : 0;
     if (argCtx.size() != want) {
       if (want == 0 && argCtx.size() == 1) {
         notSupported(at, "'" + fn + "' with a selector of faces");
@@ -344,6 +346,7 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
       error("E016", nameAt,
             "'" + fn + "' takes " +
                 (member == "angle" ? "1 argument (maxSlope, azimuth or zenith)"
+                 : spread          ? "2 arguments (the uv set and uvSpace or unitSpace)"
                  : want            ? "1 argument (the tolerance in degrees)"
                                    : "no arguments") +
                 ", got " + std::to_string(argCtx.size()));
@@ -359,6 +362,25 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
       }
       args.push_back(makeExpr(ExprKind::String, rangeOf(argCtx[0])));
       args.back()->text = word;
+    } else if (spread) {
+      if (argCtx[0]->getText() != "0") {
+        notSupported(rangeOf(argCtx[0]), "uv set " + argCtx[0]->getText() + " (fgsg's projections make uv set 0)");
+        return nullptr;
+      }
+      const std::string space = selectorWord(argCtx[1]);
+      if (space == "unitSpace") {
+        notSupported(rangeOf(argCtx[1]), "'" + fn + "' in unitSpace");
+        return nullptr;
+      }
+      if (space != "uvSpace") {
+        error("E028", rangeOf(argCtx[1]),
+              fn + "'s surface parameterization is uvSpace or unitSpace, not '" + argCtx[1]->getText() + "'");
+        return nullptr;
+      }
+      args.push_back(makeExpr(ExprKind::Number, rangeOf(argCtx[0])));
+      args.back()->number = 0;
+      args.push_back(makeExpr(ExprKind::String, rangeOf(argCtx[1])));
+      args.back()->text = space;
     } else {
       for (auto* a : argCtx) {
         Env plain = env;
@@ -370,7 +392,7 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     ExprPtr e = makeExpr(ExprKind::Member, at);
     e->object = "Geometry";
     e->text = member;
-    e->hasCall = want == 1;
+    e->hasCall = want >= 1;
     e->args = std::move(args);
     return e;
   }

@@ -159,4 +159,18 @@ double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryAren
   return azimuth >= 360.0 - kAngleTieDegrees ? 0.0 : azimuth;  // a hair west of north is north
 }
 
+std::array<double, 2> geometryUvSpread(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
+                                       const UvProjection& projection) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const Polygon3& f : worldPolygons(scope, geom, arena)) {
+    const Vec3 facing = newellNormal(f);
+    for (const Vec3& p : f) {
+      const std::array<double, 2> uv = projectPoint(projection, p, facing);
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], uv[k]), hi[k] = std::max(hi[k], uv[k]);
+    }
+  }
+  if (!(hi[0] >= lo[0])) return {0.0, 0.0};
+  return {hi[0] - lo[0], hi[1] - lo[1]};
+}
+
 }  // namespace fgsg::rt::cga

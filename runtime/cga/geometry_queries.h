@@ -1,11 +1,14 @@
 // CityEngine's geometry functions (geometry.area(), height(), nVertices(), nFaces(),
-// isPlanar(tol), isConcave(), boundaryLength(), angle(maxSlope | azimuth | zenith)) on a
-// shape's own geometry: a box (its six
+// isPlanar(tol), isConcave(), boundaryLength(), angle(maxSlope | azimuth | zenith),
+// du / dv(0, uvSpace)) on a shape's own geometry: a box (its six
 // faces; a flat box its one face), a polygon or a solid. World units (metres).
 #pragma once
 
+#include "runtime/cga/uv_projection.h"
 #include "runtime/geometry.h"
 #include "runtime/scope.h"
+
+#include <array>
 
 namespace fgsg::rt::cga {
 
@@ -36,5 +39,11 @@ enum class GeometryAngleKind { MaxSlope = 0, Azimuth = 1, Zenith = 2 };
 // [0, 360); 0 where that face is level. No faces (an edge): 0 for MaxSlope and Azimuth,
 // 90 for Zenith.
 double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryArena& arena, GeometryAngleKind kind);
+
+// geometry.du(0, uvSpace) and dv: how far the texture coordinates that `projection` gives
+// the geometry (every face's corners, each face projected as projectTexcoords projects it)
+// spread along u and along v: {max u - min u, max v - min v}. No faces: {0, 0}.
+std::array<double, 2> geometryUvSpread(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
+                                       const UvProjection& projection);
 
 }  // namespace fgsg::rt::cga

@@ -473,6 +473,30 @@ TEST_CASE("cga: geometry.angle of roof faces, boxes and footprints", "[cga]") {
   CHECK(geometryAngle(box(2, 0, 4), GeomRef{}, arena, GeometryAngleKind::Zenith) == Approx(90).margin(1e-12));
 }
 
+TEST_CASE("cga: geometry.du and dv spread the projection's texture coordinates", "[cga]") {
+  GeometryArena arena;
+  // A 10 x 4 facade (no depth) under a 2 m x 1 m projection set up in its own scope: u runs
+  // 0 .. 5, v 0 .. 4; scaled by (2, 0.5) after it: 10 and 2.
+  const Scope facade = box(10, 4, 0);
+  UvProjection projection = projectionAt(facade, 2, 1, UvProjection::kNoImage);
+  auto spread = geometryUvSpread(facade, GeomRef{}, arena, projection);
+  CHECK(spread[0] == Approx(5).margin(1e-12));
+  CHECK(spread[1] == Approx(4).margin(1e-12));
+  projection.uvTransform = {2, 0, 0, 0, 0.5, 0};
+  spread = geometryUvSpread(facade, GeomRef{}, arena, projection);
+  CHECK(spread[0] == Approx(10).margin(1e-12));
+  CHECK(spread[1] == Approx(2).margin(1e-12));
+  // A 2.5 m piece of the facade (x 5 .. 7.5) measured in the facade's projection: 1.25 x 4.
+  Scope piece = facade;
+  piece.P = Vec3(5, 0, 0);
+  piece.S = Vec3(2.5, 4, 0);
+  spread = geometryUvSpread(piece, GeomRef{}, arena, projectionAt(facade, 2, 1, UvProjection::kNoImage));
+  CHECK(spread[0] == Approx(1.25).margin(1e-12));
+  CHECK(spread[1] == Approx(4).margin(1e-12));
+  // An edge has no faces.
+  CHECK(geometryUvSpread(facade, GeomRef{GeomKind::Edge, 0, 0}, arena, projection)[0] == 0);
+}
+
 TEST_CASE("cga: Repeat XY on a triangle marks tiles outside it empty", "[cga]") {
   GeometryArena arena;
   std::vector<Part> parts;
