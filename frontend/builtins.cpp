@@ -54,6 +54,8 @@ const CommandInfo kCommands[] = {
     {CommandId::UvOperation, "TileUV", 2, 2, BodyRule::None, "TileUV(tileWidth, tileHeight)", nullptr},
     {CommandId::UvOperation, "NormalizeUV", 1, 1, BodyRule::None,
      "NormalizeUV(\"uv\" or \"uvUniform\" or \"u\" or \"v\")", nullptr},
+    {CommandId::UvOperation, "DeleteUV", 0, 0, BodyRule::None, "DeleteUV()", nullptr},
+    {CommandId::UvOperation, "ProjectUV", 0, 0, BodyRule::None, "ProjectUV()", nullptr},
     {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
@@ -159,7 +161,8 @@ int materialProperty(const std::string& name) {
 }
 
 int uvOperation(const std::string& name) {
-  static const char* const kNames[] = {"SetupProjection", "ScaleUV", "TranslateUV", "RotateUV", "TileUV", "NormalizeUV"};
+  static const char* const kNames[] = {"SetupProjection", "ScaleUV",     "TranslateUV", "RotateUV",
+                                       "TileUV",          "NormalizeUV", "DeleteUV",    "ProjectUV"};
   for (size_t k = 0; k < std::size(kNames); ++k)
     if (name == kNames[k]) return static_cast<int>(k);
   return -1;

@@ -154,7 +154,7 @@ enum class OpKind : uint8_t {
                  // material of the instances placed from this scope on (backend/commands/texture_commands.h)
   Uv,            // index = UvOp: CGA's uv operations on the scope's texture projection (uv set 0); Setup: str =
                  // the axes ("xz"), sizes the tile width and height; Tile: sizes; Normalize: str = the mode;
-                 // Scale / Translate: args u, v; Rotate: args[0] degrees
+                 // Scale / Translate: args u, v; Rotate: args[0] degrees; Delete / Project: no arguments
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 
@@ -174,7 +174,7 @@ enum class InsertFit : uint8_t { AlignSizeAndPosition, KeepSizeAndPosition, Keep
 enum class MaterialProperty : uint8_t { Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, NormalMap, ColorMap };
 
 // CGA's uv operations (frontend::uvOperation's commands, in this order).
-enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize };
+enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize, Delete, Project };
 
 enum class TurtleOp : uint8_t {
   Forward,     // F(l): draw a segment and move

@@ -438,8 +438,8 @@ class Printer {
         break;
       }
       case OpKind::Uv: {
-        static const char* const kUvOps[] = {"setup", "scale", "translate", "rotate", "tile", "normalize"};
-        text = withArgs(std::string("uv ") + (op.index < 6 ? kUvOps[op.index] : "op?"));
+        static const char* const kUvOps[] = {"setup", "scale", "translate", "rotate", "tile", "normalize", "delete", "project"};
+        text = withArgs(std::string("uv ") + (op.index < std::size(kUvOps) ? kUvOps[op.index] : "op?"));
         if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) text += " " + stringLit(op.str);
         if (!op.sizes.empty()) text += " " + sizeList(r, op.sizes);
         break;

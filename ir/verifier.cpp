@@ -541,7 +541,7 @@ class Verifier {
         break;
       case OpKind::Uv:
         expectBodies(op, 0);
-        if (op.index > uint32_t(UvOp::Normalize)) problem("uv operation " + std::to_string(op.index));
+        if (op.index > uint32_t(UvOp::Project)) problem("uv operation " + std::to_string(op.index));
         if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) stringId(op.str);
         if ((op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Tile)) && op.sizes.size() != 2)
           problem("uv sizes " + std::to_string(op.sizes.size()));

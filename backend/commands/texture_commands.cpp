@@ -108,6 +108,7 @@ void TextureCommands::material(const ir::Op& op, const double* a, State& st) {
     const uint32_t image = textureOf_.at(op.str);
     if (st.scope.projection) {
       rt::cga::UvProjection p = projection(st.scope.projection);
+      if (!p.setup) p.setup = st.scope.projection;
       p.texture = image == kUnresolved ? rt::cga::UvProjection::kNoImage : image;
       st.scope.projection = addProjection(p);
     } else if (image != kUnresolved) {
@@ -137,8 +138,9 @@ void TextureCommands::material(const ir::Op& op, const double* a, State& st) {
 }
 
 // CGA's uv operations, on uv set 0: the scope's projection (and so its leaves' texture
-// coordinates) replaced by one made from it. Without a projection only setupProjection
-// does something, as CityEngine's operations need projected coordinates.
+// coordinates) replaced by one made from it. Without a projection, or after deleteUV, only
+// setupProjection (and projectUV after deleteUV) does something, as CityEngine's operations
+// need projected coordinates.
 void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
   const auto kind = static_cast<ir::UvOp>(op.index);
   const rt::Scope& s = st.scope;
@@ -168,6 +170,18 @@ void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
   }
   if (!s.projection) return;
   rt::cga::UvProjection p = projection(s.projection);
+  if (kind == ir::UvOp::Project) {
+    // fgsg projects at output: only coordinates deleteUV removed need projecting again,
+    // from the setup (with the image the shape has now).
+    if (p.coordinates) return;
+    rt::cga::UvProjection again = projection(p.setup);
+    again.texture = p.texture;
+    again.setup = p.setup;
+    st.scope.projection = addProjection(again);
+    return;
+  }
+  if (!p.coordinates) return;
+  if (!p.setup) p.setup = s.projection;
   std::array<double, 6> m{1, 0, 0, 0, 1, 0};
   switch (kind) {
     case ir::UvOp::Scale:
@@ -211,6 +225,7 @@ void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
       p.uvTransform = composeUv(m, p.uvTransform);
       break;
     }
+    case ir::UvOp::Delete: p.coordinates = false; break;
     default: break;
   }
   st.scope.projection = addProjection(p);

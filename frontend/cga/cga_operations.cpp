@@ -47,7 +47,7 @@ namespace {
 // names, and those it does not translate are E800 "not supported yet".
 const char* const kCityEngineOperations[] = {
     "alignScopeToAxes", "alignScopeToGeometry", "alignScopeToGeometryBBox", "center", "cleanupGeometry", "color",
-    "comp", "convexify", "deleteHoles", "deleteUV", "envelope", "extrude", "footprint", "i", "innerRect",
+    "comp", "convexify", "copyUV", "deleteHoles", "deleteUV", "envelope", "extrude", "footprint", "i", "innerRect",
     "innerRectangle", "insertAlongUV", "label", "mirror", "mirrorScope", "modify", "normalizeUV", "offset", "print",
     "primitiveCube", "primitiveCylinder", "primitiveDisk", "primitiveQuad", "primitiveSphere", "projectUV", "r",
     "rectify", "reduceGeometry", "report", "resetGeometry", "resetMaterial", "reverseNormals", "roofGable",
@@ -583,7 +583,8 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return;
   }
   if (name == "setupProjection" || name == "projectUV" || name == "tileUV" || name == "scaleUV" ||
-      name == "translateUV" || name == "rotateUV" || name == "normalizeUV") {
+      name == "translateUV" || name == "rotateUV" || name == "normalizeUV" || name == "deleteUV" ||
+      name == "copyUV") {
     if (!noBody()) return;
     uvOperation(op, env, seq);
     return;
@@ -952,8 +953,8 @@ void Translator::materialItem(P::CallOperationContext* op, const std::string& pr
 // CGA's uv operations on uv set 0 (other sets are E801): setupProjection(0, scope.xz, w, h)
 // SetupProjection("xz", w, h), tileUV TileUV, scaleUV ScaleUV, translateUV TranslateUV,
 // rotateUV RotateUV, normalizeUV(0, mode, collectiveAllFaces) NormalizeUV(mode);
-// projectUV(0) does nothing: the projection applies to the leaves below it when they are
-// output. A relative size `'x` is x times the scope's size along the axis (setupProjection)
+// projectUV(0) ProjectUV (which only matters after deleteUV: the projection applies to the
+// leaves below it when they are output), deleteUV(0) DeleteUV; copyUV(0, 0) does nothing. A relative size `'x` is x times the scope's size along the axis (setupProjection)
 // or the shape's extent in the projection (tileUV); `~w` a floating size.
 void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequence& seq) {
   const std::string name = op->name->getText();
@@ -967,7 +968,9 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
   };
   static const Form kForms[] = {
       {"setupProjection", "SetupProjection", 4, "4 arguments (uvSet, scope.xy, textureWidth, textureHeight)"},
-      {"projectUV", "", 1, "1 argument (the uv set)"},
+      {"projectUV", "ProjectUV", 1, "1 argument (the uv set)"},
+      {"deleteUV", "DeleteUV", 1, "1 argument (the uv set)"},
+      {"copyUV", "", 2, "2 arguments (uvSetSource, uvSetDest)"},
       {"tileUV", "TileUV", 3, "3 arguments (uvSet, textureWidth, textureHeight)"},
       {"scaleUV", "ScaleUV", 3, "3 arguments (uvSet, uFactor, vFactor)"},
       {"translateUV", "TranslateUV", 3, "3 arguments (uvSet, uOffset, vOffset)"},
@@ -984,11 +987,12 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
     error("E016", rangeOf(op->name), "'" + name + "' takes " + form->forms + ", got " + std::to_string(argCtx.size()));
     return;
   }
-  if (argCtx[0]->getText() != "0") {
-    notSupported(rangeOf(argCtx[0]), "a uv set other than 0 (the colour map's)");
-    return;
-  }
-  if (!*form->fgsg) return;  // projectUV
+  for (size_t k = 0; k < (name == "copyUV" ? 2u : 1u); ++k)
+    if (argCtx[k]->getText() != "0") {
+      notSupported(rangeOf(argCtx[k]), "uv set " + argCtx[k]->getText() + " (fgsg has uv set 0 only, the colour map's)");
+      return;
+    }
+  if (!*form->fgsg) return;  // copyUV(0, 0): the set onto itself
   Item item = command(form->fgsg, at);
   size_t first = 1;
   if (name == "setupProjection") {

@@ -27,8 +27,17 @@ struct UvProjection {
   // The uv operations after the projection (scaleUV, translateUV, rotateUV, normalizeUV):
   // (u, v) -> (a u + b v + c, d u + e v + f), as {a, b, c, d, e, f}.
   std::array<double, 6> uvTransform{1, 0, 0, 0, 1, 0};
+  // CGA's deleteUV(0): false, the faces carry no texture coordinates (nor draw the image)
+  // until projectUV(0) projects them again from the setup; the uv operations do nothing.
+  bool coordinates = true;
+  // The projection as its setupProjection or texture made it (1 + its index), which
+  // projectUV(0) after deleteUV(0) projects again: later uv operations were on the
+  // coordinates deleteUV removed. 0: this one is that setup.
+  uint32_t setup = 0;
   static constexpr uint32_t kNoImage = UINT32_MAX;
   bool hasImage() const { return texture != kNoImage; }
+  // Whether the leaves below it get texture coordinates and its image.
+  bool draws() const { return hasImage() && coordinates; }
 };
 
 // The projection `Texture` sets up in `scope`: its frame, and the tile sizes given (or,

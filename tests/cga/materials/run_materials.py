@@ -2,7 +2,8 @@
 """CGA's materials and uv operations (issue #44) read back from the glTF scenes fgsg writes.
 
 run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10,
-uv_operations.cga / uv_operations.fgsg on lots/street40x12 and uv_world.cga /
+uv_operations.cga / uv_operations.fgsg and uv_delete.cga / uv_delete.fgsg on
+lots/street40x12 and uv_world.cga /
 uv_world.fgsg on lots/square10 (tests/cga/corpus/lots), each
 with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --group-by
 symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
@@ -44,7 +45,13 @@ UV_RANGES = {
     "U10": (0, 1, 0, 6),
     "W1": (0, 1, -5, 0),
     "W2": (2, 4, -4, 0),
+    "D2": (0, 2, 0, 6),
+    "D3": (0, 2, 0, 6),
+    "D4": (0, 4, 0, 18),
+    "D6": (0, 2, 0, 6),
 }
+# Leaves whose coordinates deleteUV removed: no TEXCOORD_0, no image, no `vt` in the OBJ.
+NO_UV = ("D1", "D5")
 # The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
 MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
 
@@ -57,6 +64,11 @@ ERRORS = [
      "e3.cga:3:28: error[E028]"),
     ("e4.fgsg", 'axiom: Lot;\nLot ~> Material("shininess", 1) X;\n', "e4.fgsg:2:17: error[E028]"),
     ("e5.fgsg", 'axiom: Lot;\nLot ~> SetupProjection("xy", 0, 1) X;\n', "e5.fgsg:2:8: error[R027]"),
+    ("e6.cga", 'version "2023.0"\n@StartRule\nLot --> deleteUV(1) X.\n', "e6.cga:3:18: error[E801]: uv set 1"),
+    ("e7.cga", 'version "2023.0"\n@StartRule\nLot --> copyUV(0, 2) X.\n', "e7.cga:3:19: error[E801]: uv set 2"),
+    ("e8.cga", 'version "2023.0"\n@StartRule\nLot --> copyUV(0) X.\n', "e8.cga:3:9: error[E016]"),
+    ("e9.cga", 'version "2023.0"\n@StartRule\nLot --> deleteUV() X.\n', "e9.cga:3:9: error[E016]"),
+    ("e10.fgsg", 'axiom: Lot;\nLot ~> DeleteUV(0) X;\n', "e10.fgsg:2:8: error[E016]"),
 ]
 
 failures = []
@@ -158,6 +170,33 @@ def check_uvs(doc, buffer, label, prefix):
             fail(f"{label}: {leaf} uv range {tuple(round(g, 6) for g in got)}, expected {expected}")
 
 
+def check_no_uvs(doc, obj_path, label):
+    """The NO_UV leaves have no texture coordinates nor image in the glTF, no `vt` in the
+    OBJ; the others of uv_delete do."""
+    by_leaf = leaves(doc)
+    for leaf in NO_UV:
+        prims = by_leaf.get(leaf)
+        if not prims:
+            fail(f"{label}: no node {leaf}")
+        for p in prims or []:
+            textured = "baseColorTexture" in doc["materials"][p["material"]]["pbrMetallicRoughness"]
+            if "TEXCOORD_0" in p["attributes"] or textured:
+                fail(f"{label}: {leaf} has texture coordinates or an image after deleteUV")
+    vt = {}
+    group = None
+    for line in open(obj_path):
+        if line.startswith("g "):
+            group = line[2:].strip().rstrip(".")
+            vt.setdefault(group, 0)
+        elif line.startswith("vt ") and group is not None:
+            vt[group] += 1
+    for leaf in ("D1", "D2", "D3", "D4", "D5", "D6"):
+        if leaf not in vt:
+            fail(f"{label}: no group {leaf} in the OBJ")
+        elif (vt[leaf] == 0) != (leaf in NO_UV):
+            fail(f"{label}: the OBJ's group {leaf} has {vt[leaf]} vt lines")
+
+
 def check_mtl(path, label):
     text = open(path).read()
     blocks = {}
@@ -179,7 +218,8 @@ def main():
     validator = os.path.join(root, "scripts", "validate-gltf.js")
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
-        for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12"), ("uv_world", "square10")):
+        for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12"), ("uv_delete", "street40x12"),
+                          ("uv_world", "square10")):
             for ext in ("cga", "fgsg"):
                 grammar = os.path.join(tmp, f"{name}.{ext}")
                 shutil.copy(os.path.join(here, f"{name}.{ext}"), grammar)
@@ -206,7 +246,9 @@ def main():
                             check_materials(doc, label)
                             check_mtl(obj[:-4] + ".mtl", label)
                         else:
-                            check_uvs(doc, buffer, label, "U" if name == "uv_operations" else "W")
+                            check_uvs(doc, buffer, label, {"uv_operations": "U", "uv_delete": "D"}.get(name, "W"))
+                        if name == "uv_delete":
+                            check_no_uvs(doc, obj, label)
                 if len(outputs) == 2 and outputs["interp"] != outputs["jit"]:
                     fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
                 if not failures:
