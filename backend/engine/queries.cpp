@@ -47,8 +47,9 @@ double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomR
     return rt::cga::geometryIsPlanar(scope, geom, arena_, arg) ? 1.0 : 0.0;
   }
   if (q == ir::Query::GeometryDu || q == ir::Query::GeometryDv) {
-    // Without a projection (setupProjection, texture) the geometry has no texture coordinates.
-    if (scope.projection == 0) return 0.0;
+    // Without a projection (setupProjection, texture), or after deleteUV, the geometry has
+    // no texture coordinates.
+    if (scope.projection == 0 || !textures_.projection(scope.projection).coordinates) return 0.0;
     const std::array<double, 2> spread =
         rt::cga::geometryUvSpread(scope, geom, arena_, textures_.projection(scope.projection));
     return spread[q == ir::Query::GeometryDu ? 0 : 1];
