@@ -3,6 +3,7 @@
 #include "frontend/builtins.h"
 #include "frontend/context_lists.h"
 #include "frontend/lex.h"
+#include "runtime/cga/edge_index_label.h"
 
 #include <charconv>
 #include <cmath>
@@ -407,6 +408,27 @@ void AstBuilder::sizesFromParts(Item& item) {
   }
 }
 
+// CGA's index selectors of a setback, `Setback(2){ 0: Front | -1: West | remainder: R }`:
+// a part whose label is a whole number (the parser reads it as a size) selects that edge,
+// labelled as runtime/cga/shape_operations.h's edgeIndexLabel. Other sizes stay for the
+// analyzer to judge.
+void AstBuilder::edgeIndexesFromParts(Item& item) {
+  if (item.name != "Setback" && item.name != "SetbackPerEdge" && item.name != "SetbackToArea") return;
+  for (Successor& part : item.body) {
+    if (!part.size || !part.selector.empty()) continue;
+    const Expr* number = part.size.get();
+    double sign = 1;
+    if (number->kind == ExprKind::Unary && number->text == "-" && number->args.size() == 1)
+      sign = -1, number = number->args[0].get();
+    if (number->kind != ExprKind::Number || number->number != std::floor(number->number) ||
+        !(std::abs(number->number) < 1e9))
+      continue;
+    part.selector = rt::cga::edgeIndexLabel(static_cast<long long>(sign * number->number));
+    part.selectorRange = part.size->range;
+    part.size.reset();
+  }
+}
+
 void AstBuilder::appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out) {
   if (auto* item = ctx->item()) {
     appendItem(item, out);
@@ -527,6 +549,7 @@ Item AstBuilder::buildCallItem(P::CallItemContext* ctx) {
     item.repeatPattern = body->repeat != nullptr;
     for (auto* part : body->bodyPart()) item.body.push_back(buildBodyPart(part));
     sizesFromParts(item);
+    edgeIndexesFromParts(item);
   }
   return item;
 }

@@ -47,6 +47,7 @@ class AstBuilder {
   Successor buildSuccessor(P::SuccessorContext* ctx);
   Successor buildBodyPart(P::BodyPartContext* ctx);
   void sizesFromParts(Item& item);
+  void edgeIndexesFromParts(Item& item);
   void cornersAsPairs(Item& item);
   void appendSequenceItem(P::SequenceItemContext* ctx, std::vector<Item>& out);
   void appendItem(P::ItemContext* ctx, std::vector<Item>& out);

@@ -1,5 +1,7 @@
 #include "frontend/shape_operations.h"
 
+#include "runtime/cga/edge_index_label.h"
+
 #include <cstring>
 #include <initializer_list>
 #include <utility>
@@ -59,10 +61,16 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
 
 bool shapeOperationLabel(const std::string& command, const std::string& label, std::string& allowed) {
   allowed.clear();
-  if (command == "Setback" || command == "SetbackToArea" || command == "SetbackPerEdge")
-    return labelIn({"front", "back", "left", "right", "side", "all", "remainder", "streetFront", "streetBack",
-                    "streetLeft", "streetRight", "streetSide", "north", "south", "east", "west"},
-                   label, allowed);
+  if (command == "Setback" || command == "SetbackToArea" || command == "SetbackPerEdge") {
+    long long index = 0;
+    if (rt::cga::edgeIndexOfLabel(label, index)) return true;  // `2:`, an edge by its index
+    if (labelIn({"front", "back", "left", "right", "side", "all", "remainder", "streetFront", "streetBack",
+                 "streetLeft", "streetRight", "streetSide", "north", "south", "east", "west"},
+                label, allowed))
+      return true;
+    allowed += ", or an edge's index: `0:`, `-1:`";
+    return false;
+  }
   if (command == "ShapeL" || command == "ShapeU" || command == "ShapeO")
     return labelIn({"shape", "remainder"}, label, allowed);
   if (command == "InnerRectangle") return labelIn({"shape"}, label, allowed);

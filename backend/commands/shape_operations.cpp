@@ -2,6 +2,7 @@
 
 #include "backend/commands/scatter_command.h"
 #include "backend/engine/derivation.h"
+#include "runtime/cga/edge_index_label.h"
 #include "runtime/cga/shape_operations.h"
 
 #include <cmath>
@@ -73,12 +74,17 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
         name == "SetbackPerEdge" ? distancesPerEdge(d, op, polygon, st, ex, f) : std::vector<double>(edges, a[0]);
     for (size_t k = 0; k < labels.size(); ++k) merged[k] = !labels[k].empty() && labels[k].back() == '=';
     for (size_t i = 0; i < edges; ++i)
-      for (size_t k = 0; k < labels.size(); ++k)
-        if (bare(labels[k]) != "remainder" && (rt::cga::edgeSelectorMask(labels[k]) & classes[i])) {
+      for (size_t k = 0; k < labels.size(); ++k) {
+        long long index = 0;
+        const bool selects = rt::cga::edgeIndexOfLabel(labels[k], index)
+                                 ? rt::cga::edgeIndexSelects(index, i, edges)
+                                 : (rt::cga::edgeSelectorMask(labels[k]) & classes[i]) != 0;
+        if (bare(labels[k]) != "remainder" && selects) {
           distance[i] = perEdge[i];
           group[i] = static_cast<int>(k);
           break;
         }
+      }
   } else {
     // shapeL(front, left), shapeU(front, right, left), shapeO(front, right, back, left): the
     // wings along those edges, one merged `shape`.

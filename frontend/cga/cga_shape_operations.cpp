@@ -8,7 +8,8 @@
 //                                             RotateScope  MirrorScope  Mirror (true/false as 1/0)
 //   setback(d){ front : A | street.front = B | remainder : C }
 //                                             Setback(d){ front: A | streetFront=: B | remainder: C }
-//                                             (object.x as x, world.north as north; `=` merged)
+//                                             (object.x as x, world.north as north; `=` merged;
+//                                             an edge index `0 : A`, `-1 : B` as `0: A`, `-1: B`)
 //   setbackToArea(area){ ... }  setbackPerEdge(distance){ ... }
 //                                             SetbackToArea  SetbackPerEdge (distance evaluated per edge)
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
@@ -18,6 +19,7 @@
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_translator.h"
 #include "frontend/shape_operations.h"
+#include "runtime/cga/edge_index_label.h"
 
 #include <map>
 
@@ -124,6 +126,13 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
     const std::string sel = selectorWord(sized->key);
     const bool edges = fgsgName.rfind("Setback", 0) == 0;
     std::string label = edges ? setbackLabel(sel) : (sel == "shape" || sel == "remainder") ? sel : "";
+    // An index selector, `{ 0 : A | -1 : B }`: a whole number written out (op_setback's
+    // index, wrapping around modulo the edge count at derivation).
+    const std::string written = sized->key->getText();
+    const size_t sign = !written.empty() && written[0] == '-' ? 1 : 0;
+    if (edges && label.empty() && written.size() > sign && written.size() < 10 + sign &&
+        written.find_first_not_of("0123456789", sign) == std::string::npos)
+      label = rt::cga::edgeIndexLabel(std::stoll(written));
     if (label.empty() || (fgsgName == "InnerRectangle" && label == "remainder")) {
       notSupported(rangeOf(sized->key), "the selector '" + sized->key->getText() + "' of " + name);
       continue;

@@ -84,6 +84,7 @@ enum EdgeSelector : unsigned {
 };
 std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon);
 // The selector bits a setback label takes ("front", "side", "streetFront", "all" ...; 0: none).
+// Index selectors ("#2"): runtime/cga/edge_index_label.h.
 unsigned edgeSelectorMask(const std::string& label);
 
 // setback: edge i set back by distance[i] (0: not set back) and given to group[i] (-1: none).

@@ -214,6 +214,18 @@ TEST_CASE("geometry.du/dv(0, uvSpace) are fgsg's Geometry.du/dv; other uv sets a
   CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.dv(0, \"uvSpace\"), 1, 1) X;\n", "test.fgsg").ok);
 }
 
+TEST_CASE("setback's index selectors are whole numbers in both dialects", "[cga][dialect]") {
+  const Compiled c = compile("@StartRule\nLot --> setbackPerEdge(1) { 0 : A | -1 = B | remainder : C }\n");
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  const Compiled fraction = compile("@StartRule\nLot --> setback(1) { 1.5 : A | remainder : C }\n");
+  CHECK(fraction.messages.find("test.cga:2:22: error[E801]: the selector '1.5' of setback") != std::string::npos);
+  CHECK(compile("axiom: Lot;\nLot ~> Setback(1){ 2: A | -1: B | remainder: C };\n", "test.fgsg").ok);
+  const Compiled size = compile("axiom: Lot;\nLot ~> Setback(1){ 1.5: A | remainder: C };\n", "test.fgsg");
+  CHECK(size.messages.find("test.fgsg:2:20: error[E018]: a size label `4:` belongs to a part of Subdiv") !=
+        std::string::npos);
+}
+
 TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dialect]") {
   const Compiled trim = compile("@StartRule\nLot --> extrude(10)\n   trim()\n");
   CHECK_FALSE(trim.ok);
