@@ -53,9 +53,25 @@ int64_t roundHalfAway(double x) {
   return t;
 }
 
-// An own geometry's content as compared (its positions, normals and texture coordinates
-// quantized, the whole tiles taken off the coordinates; its indices), and its hash: equal
-// contents are one shared mesh.
+// An own geometry's content as compared: its positions, normals and texture coordinates
+// quantized (the steps are powers of two: multiplying by their inverse divides exactly),
+// the whole tiles taken off the coordinates; its indices. Equal contents are one shared
+// mesh.
+int64_t quantizedPosition(float x) { return roundHalfAway(x * (1 / kPositionStep)); }
+int64_t quantizedNormal(float x) { return roundHalfAway(x * (1 / kNormalStep)); }
+int64_t quantizedTexcoord(float x, float tileShift) { return roundHalfAway((x - tileShift) * (1 / kTexcoordStep)); }
+
+// The whole tiles below a geometry's texture coordinates (u, v), taken off them.
+std::array<float, 2> tileShift(const Mesh& m) {
+  if (!m.hasTexcoords()) return {0, 0};
+  float lo[2] = {INFINITY, INFINITY};
+  for (size_t k = 0; k < m.texcoords.size(); ++k) lo[k % 2] = std::min(lo[k % 2], m.texcoords[k]);
+  return {std::floor(lo[0]), std::floor(lo[1])};
+}
+
+bool sameBits(const float* a, const float* b, size_t n) { return n == 0 || std::memcmp(a, b, n * sizeof(float)) == 0; }
+
+// An own geometry's quantized content and its hash.
 struct GeometryKey {
   std::vector<int64_t> values;  // quantized positions, normals, texture coordinates
   std::array<float, 2> shift{0, 0};
@@ -65,34 +81,127 @@ struct GeometryKey {
 // FNV-1a over 64-bit words: a collision costs only a comparison more.
 uint64_t mixHash(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
 
-void geometryKey(const Mesh& m, GeometryKey& key) {
-  key.values.clear();
-  key.values.reserve(m.positions.size() + m.normals.size() + m.texcoords.size());
-  // The steps are powers of two: multiplying by their inverse divides exactly.
-  for (float x : m.positions) key.values.push_back(roundHalfAway(x * (1 / kPositionStep)));
-  for (float x : m.normals) key.values.push_back(roundHalfAway(x * (1 / kNormalStep)));
-  key.shift = {0, 0};
-  if (m.hasTexcoords()) {
-    float lo[2] = {INFINITY, INFINITY};
-    for (size_t k = 0; k < m.texcoords.size(); ++k) lo[k % 2] = std::min(lo[k % 2], m.texcoords[k]);
-    key.shift = {std::floor(lo[0]), std::floor(lo[1])};
-    for (size_t k = 0; k < m.texcoords.size(); ++k)
-      key.values.push_back(roundHalfAway((m.texcoords[k] - key.shift[k % 2]) * (1 / kTexcoordStep)));
+// Keys own geometries one after another. The pieces of a facade are mostly one unit quad
+// that differs only in its texture coordinates, so the last geometry's quantized
+// positions and normals (and their part of the hash) are reused where this one's are the
+// same bits: only the coordinates and indices are quantized and hashed anew.
+class GeometryKeyer {
+ public:
+  void operator()(const Mesh& m, GeometryKey& key) {
+    const bool same = shapeValid_ && m.positions.size() == positionCount_ &&
+                      m.normals.size() + m.positions.size() == shapeBits_.size() &&
+                      sameBits(m.positions.data(), shapeBits_.data(), m.positions.size()) &&
+                      sameBits(m.normals.data(), shapeBits_.data() + positionCount_, m.normals.size());
+    if (!same) keyShape(m);
+    key.values.clear();
+    key.values.reserve(shapeValues_.size() + m.texcoords.size());
+    key.values.insert(key.values.end(), shapeValues_.begin(), shapeValues_.end());
+    uint64_t h = mixHash(shapeHash_, m.texcoords.size());
+    key.shift = tileShift(m);
+    if (m.hasTexcoords())
+      for (size_t k = 0; k < m.texcoords.size(); ++k) {
+        const int64_t v = quantizedTexcoord(m.texcoords[k], key.shift[k % 2]);
+        key.values.push_back(v);
+        h = mixHash(h, uint64_t(v));
+      }
+    h = mixHash(h, m.indices.size());
+    for (uint32_t i : m.indices) h = mixHash(h, i);
+    key.hash = h;
   }
-  uint64_t h = mixHash(mixHash(mixHash(0xCBF29CE484222325ull, m.vertexCount()), m.normals.size()), m.indices.size());
-  for (int64_t v : key.values) h = mixHash(h, uint64_t(v));
-  for (uint32_t i : m.indices) h = mixHash(h, i);
-  key.hash = h;
-}
 
-// Whether `m`, keyed as `key`, has the content of `other`, whose key's values are
-// `otherValues` (kept from when it was keyed: one quantization per geometry).
-bool sameGeometry(const Mesh& m, const GeometryKey& key, const Mesh& other, const int64_t* otherValues) {
+ private:
+  void keyShape(const Mesh& m) {
+    positionCount_ = m.positions.size();
+    shapeBits_.assign(m.positions.begin(), m.positions.end());
+    shapeBits_.insert(shapeBits_.end(), m.normals.begin(), m.normals.end());
+    shapeValues_.clear();
+    for (float x : m.positions) shapeValues_.push_back(quantizedPosition(x));
+    for (float x : m.normals) shapeValues_.push_back(quantizedNormal(x));
+    uint64_t h = mixHash(mixHash(0xCBF29CE484222325ull, m.positions.size()), m.normals.size());
+    for (int64_t v : shapeValues_) h = mixHash(h, uint64_t(v));
+    shapeHash_ = h;
+    shapeValid_ = true;
+  }
+
+  std::vector<float> shapeBits_;      // the last shape's positions, then its normals
+  size_t positionCount_ = 0;
+  std::vector<int64_t> shapeValues_;  // ... quantized
+  uint64_t shapeHash_ = 0;
+  bool shapeValid_ = false;
+};
+
+// Whether `m`, keyed as `key`, has the content of `other`. Only a geometry that hashes
+// alike is compared, mostly an equal one: its values are quantized here rather than
+// kept for every geometry keyed (tens of megabytes for a city's walls), and its
+// positions and normals not at all where they are `m`'s bits.
+bool sameGeometry(const Mesh& m, const GeometryKey& key, const Mesh& other) {
   if (m.positions.size() != other.positions.size() || m.normals.size() != other.normals.size() ||
       m.texcoords.size() != other.texcoords.size() || m.indices != other.indices)
     return false;
-  return std::equal(key.values.begin(), key.values.end(), otherValues);
+  const int64_t* value = key.values.data();
+  if (sameBits(m.positions.data(), other.positions.data(), m.positions.size())) {
+    value += m.positions.size();
+  } else {
+    for (float x : other.positions)
+      if (quantizedPosition(x) != *value++) return false;
+  }
+  if (sameBits(m.normals.data(), other.normals.data(), m.normals.size())) {
+    value += m.normals.size();
+  } else {
+    for (float x : other.normals)
+      if (quantizedNormal(x) != *value++) return false;
+  }
+  if (!other.hasTexcoords()) return true;
+  const std::array<float, 2> shift = tileShift(other);
+  for (size_t k = 0; k < other.texcoords.size(); ++k)
+    if (quantizedTexcoord(other.texcoords[k], shift[k % 2]) != *value++) return false;
+  return true;
 }
+
+// The shared meshes of own geometries by their contents' hashes: open addressing with
+// linear probing, so that looking one up allocates nothing; geometries that only hash
+// alike lie one after another along the probe, each compared in full.
+class OwnGeometryTable {
+ public:
+  // The shared mesh whose content `same(mesh)` says is the key's, found among those of
+  // `hash`; else `added`, recorded under `hash`.
+  template <class Same>
+  uint32_t findOrAdd(uint64_t hash, uint32_t added, const Same& same) {
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    const size_t mask = slots_.size() - 1;
+    const auto tag = uint32_t(hash >> 32);
+    for (size_t at = slotOf(hash) & mask;; at = (at + 1) & mask) {
+      Slot& s = slots_[at];
+      if (s.mesh == kNone) {
+        s = {uint32_t(hash), tag, added};
+        ++used_;
+        return added;
+      }
+      if (s.tag == tag && s.low == uint32_t(hash) && same(s.mesh)) return s.mesh;
+    }
+  }
+
+ private:
+  struct Slot {
+    uint32_t low = 0, tag = 0;  // the hash's halves
+    uint32_t mesh = kNone;
+  };
+  static size_t slotOf(uint64_t hash) { return size_t(hash ^ (hash >> 29) ^ (hash >> 47)); }
+  static uint64_t hashOf(const Slot& s) { return uint64_t(s.tag) << 32 | s.low; }
+  void grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(std::max<size_t>(1024, 2 * old.size()), Slot{});
+    const size_t mask = slots_.size() - 1;
+    for (const Slot& s : old) {
+      if (s.mesh == kNone) continue;
+      size_t at = slotOf(hashOf(s)) & mask;
+      while (slots_[at].mesh != kNone) at = (at + 1) & mask;
+      slots_[at] = s;
+    }
+  }
+  std::vector<Slot> slots_;
+  size_t used_ = 0;
+};
 
 // The axis along which every vertex of `m` is at 0 (a face's own geometry), or -1.
 int flatAxis(const Mesh& m) {
@@ -139,7 +248,10 @@ struct Builder {
   Scene scene;
   std::vector<uint32_t> sharedOf;  // per instance: Scene::meshes index, or kNone (baked)
   std::vector<TrsFit> fitOf;
+  // The transforms of the instances with a mesh to share (trsAt: per instance, its index
+  // there), written as they are found: not a default Trs first for every instance.
   std::vector<Trs> trsOf;
+  std::vector<uint32_t> trsAt;
   std::unordered_map<std::string, uint32_t> imageIndex;
   std::vector<uint32_t> imageOfTexture;  // per InstanceList::textures entry: its image, or kNone before first use
   // Per instance: its group's number (groupIds), the same for instances whose groups are
@@ -203,26 +315,36 @@ struct Builder {
     return again;
   }
 
+  // A mesh that instances may share, as the instances are read: a library asset, or an
+  // own geometry (the first of equal ones), which becomes a shared mesh only if another
+  // leaf repeats it (most of a city's walls do not: building their meshes would cost
+  // more than finding them).
+  struct MeshCandidate {
+    const Mesh* mesh = nullptr;
+    uint32_t asset = 0, symbol = 0;  // the first instance's
+    bool own = false;
+    std::array<float, 2> uvShift{0, 0};
+    size_t uses = 0;
+  };
+
   // Which instances can share a mesh, and which mesh: rigidly placed, not bent, drawing
   // neither line segments nor images of their own.
   void findShared() {
     const size_t n = list.instances.size();
     sharedOf.assign(n, kNone);
     fitOf.assign(n, TrsFit::Degenerate);
-    trsOf.resize(n);
     if (in.instancing == Instancing::Off) return;
-    // Per library mesh: its shared mesh, and the axis it is flat along (-2: not yet known).
+    trsAt.assign(n, kNone);
+    trsOf.reserve(n);
+    std::vector<MeshCandidate> candidates;  // sharedOf's numbers until the end
+    candidates.reserve(in.meshOf->size() + list.geometries.size());
+    // Per library mesh: its candidate, and the axis it is flat along (-2: not yet known).
     std::vector<uint32_t> ofAsset;
     std::vector<int> flatOfAsset;
-    // Own geometries by their content's hash: the first shared mesh of each hash, then
-    // the next of the same hash (kNone ends the chain).
-    std::unordered_map<uint64_t, uint32_t> ofGeometry;
-    std::vector<uint32_t> nextOfHash;  // per shared mesh
-    // The shared own geometries' key values, one after another (valuesAt: per shared mesh,
-    // where its values start; the count follows from its arrays' sizes, compared first).
-    std::vector<int64_t> keyValues;
-    std::vector<size_t> valuesAt;
+    // Own geometries by their content's hash.
+    OwnGeometryTable ofGeometry;
     GeometryKey key;
+    GeometryKeyer keyOf;
     TrsDecomposer decompose;
     for (size_t i = 0; i < n; ++i) {
       const Instance& inst = list.instances[i];
@@ -235,39 +357,39 @@ struct Builder {
       int flat;
       if (library < 0) flat = flatAxis(*m);
       else if ((flat = flatOfAsset[size_t(library)]) == -2) flat = flatOfAsset[size_t(library)] = flatAxis(*m);
-      fitOf[i] = decompose(inst.transform, trsOf[i], flat);
+      Trs trs;
+      fitOf[i] = decompose(inst.transform, trs, flat);
       if (fitOf[i] != TrsFit::Rigid && fitOf[i] != TrsFit::Mirrored) continue;
-      uint32_t shared = kNone;
+      const auto added = uint32_t(candidates.size());
+      uint32_t shared;
       if (library >= 0) {
         uint32_t& of = ofAsset[size_t(library)];
-        if (of == kNone) {
-          of = uint32_t(scene.meshes.size());
-          scene.meshes.push_back({m, list.assets[inst.asset], list.assets[inst.asset], {0, 0}, 0});
-        }
+        if (of == kNone) of = added;
         shared = of;
       } else {
-        geometryKey(*m, key);
-        const auto [it, added] = ofGeometry.emplace(key.hash, kNone);
-        uint32_t link = it->second, *last = &it->second;
-        while (link != kNone && !sameGeometry(*m, key, *scene.meshes[link].mesh, keyValues.data() + valuesAt[link]))
-          last = &nextOfHash[link], link = *last;
-        if (link == kNone) {
-          link = *last = uint32_t(scene.meshes.size());
-          scene.meshes.push_back({m, list.symbols[inst.symbol] + " piece", list.assets[inst.asset], key.shift, 0});
-          nextOfHash.resize(scene.meshes.size(), kNone);
-          valuesAt.resize(scene.meshes.size(), 0);
-          valuesAt[link] = keyValues.size();
-          keyValues.insert(keyValues.end(), key.values.begin(), key.values.end());
-        }
-        shared = link;
+        keyOf(*m, key);
+        shared = ofGeometry.findOrAdd(key.hash, added,
+                                      [&](uint32_t other) { return sameGeometry(*m, key, *candidates[other].mesh); });
       }
-      ++scene.meshes[shared].uses;
+      if (shared == added)
+        candidates.push_back({m, inst.asset, inst.symbol, library < 0, library < 0 ? key.shift : std::array<float, 2>{0, 0}, 0});
+      ++candidates[shared].uses;
       sharedOf[i] = shared;
+      trsAt[i] = uint32_t(trsOf.size());
+      trsOf.push_back(trs);
     }
-    // A shape's own geometry that no other leaf repeats is no asset: it is baked.
-    for (size_t i = 0; i < n; ++i)
-      if (sharedOf[i] != kNone && list.instances[i].geometry != kNone && scene.meshes[sharedOf[i]].uses < 2)
-        sharedOf[i] = kNone;
+    // The shared meshes in order of first use: every asset, and each own geometry that
+    // another leaf repeats (one no other repeats is no asset: it is baked).
+    std::vector<uint32_t> meshOfCandidate(candidates.size(), kNone);
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      const MeshCandidate& c = candidates[k];
+      if (c.own && c.uses < 2) continue;
+      meshOfCandidate[k] = uint32_t(scene.meshes.size());
+      const std::string& asset = list.assets[c.asset];
+      scene.meshes.push_back({c.mesh, c.own ? list.symbols[c.symbol] + " piece" : asset, asset, c.uvShift, c.uses});
+    }
+    for (uint32_t& shared : sharedOf)
+      if (shared != kNone) shared = meshOfCandidate[shared];
   }
 
   // Each instance's group (groupOf), numbered by name in order of first use: the symbol's
@@ -365,10 +487,7 @@ struct Builder {
     std::vector<size_t> counts;
     for (size_t k = 0; k < members.size(); ++k) {
       const uint32_t i = members[k];
-      if (sharedOf[i] == kNone) {
-        baked.push_back(i);
-        continue;
-      }
+      if (sharedOf[i] == kNone) continue;
       const bool mirrored = fitOf[i] == TrsFit::Mirrored;
       Material look = materialOf(i);
       if (vary) look.color = {1, 1, 1}, look.vertexColors = true;
@@ -382,37 +501,42 @@ struct Builder {
       partOfMember[k] = lastPart;
       ++counts[lastPart];
     }
+    // Which parts stay instanced (by their counts alone), so that only those get arrays:
+    // a city's facades have thousands of small parts that --instancing auto bakes.
+    std::vector<uint8_t> keep(parts.size(), 1);
     for (size_t k = 0; k < parts.size(); ++k) {
-      InstancedPart& p = parts[k].second;
-      p.instances.reserve(counts[k]);
-      p.trs.reserve(counts[k]);
-      p.colors.reserve(counts[k]);
-    }
-    for (size_t k = 0; k < members.size(); ++k) {
-      if (partOfMember[k] == kNone) continue;
-      const uint32_t i = members[k];
-      InstancedPart& p = parts[partOfMember[k]].second;
-      p.instances.push_back(i);
-      p.trs.push_back(trsOf[i]);
-      p.colors.push_back(list.instances[i].color);
-    }
-    for (auto& [mirrored, p] : parts) {
-      bool keep = true;
+      const auto& [mirrored, p] = parts[k];
       if (in.instancing == Instancing::Auto) {
         // Counting the shared mesh's own bytes in full, as if this part alone wrote it.
         const Mesh& m = *scene.meshes[p.mesh].mesh;
         const size_t meshBytes = m.vertexCount() * (m.hasTexcoords() ? 32 : 24) + m.indices.size() * 4;
-        keep = !mirrored && p.instances.size() * kInstanceBytes + kInstancedNodeBytes + meshBytes + kSharedMeshBytes <
-                                p.instances.size() * meshBytes;
+        keep[k] = !mirrored && counts[k] * kInstanceBytes + kInstancedNodeBytes + meshBytes + kSharedMeshBytes <
+                                   counts[k] * meshBytes;
       }
-      if (!keep) {
-        baked.insert(baked.end(), p.instances.begin(), p.instances.end());
+      if (!keep[k]) continue;
+      parts[k].second.instances.reserve(counts[k]);
+      parts[k].second.trs.reserve(counts[k]);
+      parts[k].second.colors.reserve(counts[k]);
+    }
+    // The members of baked parts join the baked ones, in placement order (members are).
+    for (size_t k = 0; k < members.size(); ++k) {
+      const uint32_t i = members[k];
+      if (partOfMember[k] == kNone || !keep[partOfMember[k]]) {
+        baked.push_back(i);
         continue;
       }
+      InstancedPart& p = parts[partOfMember[k]].second;
+      p.instances.push_back(i);
+      p.trs.push_back(trsOf[trsAt[i]]);
+      p.colors.push_back(list.instances[i].color);
+    }
+    for (size_t k = 0; k < parts.size(); ++k) {
+      if (!keep[k]) continue;
+      auto& [mirrored, p] = parts[k];
       (mirrored ? scene.mirroredCount : scene.instancedCount) += p.instances.size();
       (mirrored ? g.mirrored : g.instanced).push_back(std::move(p));
     }
-    std::sort(baked.begin(), baked.end());  // in placement order, as flattened
+    if (!std::is_sorted(baked.begin(), baked.end())) std::sort(baked.begin(), baked.end());  // as flattened
     scene.bakedCount += baked.size();
     bakeParts(baked, vary, g);
     return g;
