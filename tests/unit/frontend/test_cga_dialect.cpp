@@ -150,7 +150,7 @@ TEST_CASE("functions are inlined, and recursion is a located error", "[cga][dial
   CHECK(r.messages.find("test.cga:2:8: error[E802]: 'f' calls itself (through g)") != std::string::npos);
 }
 
-TEST_CASE("roofRidge(byAngle, angle) is fgsg's ridge roof; its other forms are located errors", "[cga][dialect]") {
+TEST_CASE("roofRidge(byAngle, angle) is fgsg's ridge roof, its other forms located errors", "[cga][dialect]") {
   const Compiled c = compile("@StartRule\nLot --> extrude(3) comp(f) { top : roofRidge(byAngle, 30) Roof }\n");
   INFO(c.messages);
   REQUIRE(c.ok);
@@ -168,7 +168,7 @@ TEST_CASE("roofRidge(byAngle, angle) is fgsg's ridge roof; its other forms are l
         std::string::npos);
 }
 
-TEST_CASE("geometry.angle(maxSlope | azimuth | zenith) is fgsg's Geometry.angle; other selectors are errors",
+TEST_CASE("geometry.angle(maxSlope | azimuth | zenith) is fgsg's Geometry.angle, other selectors errors",
           "[cga][dialect]") {
   const Compiled c = compile("@StartRule\nLot --> report(\"a\", geometry.angle(maxSlope) + geometry.angle(azimuth) + "
                              "geometry.angle(zenith)) X.\n");
@@ -190,7 +190,7 @@ TEST_CASE("geometry.angle(maxSlope | azimuth | zenith) is fgsg's Geometry.angle;
   CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.angle(\"zenith\"), 1, 1) X;\n", "test.fgsg").ok);
 }
 
-TEST_CASE("geometry.du/dv(0, uvSpace) are fgsg's Geometry.du/dv; other uv sets and unitSpace are located errors",
+TEST_CASE("geometry.du/dv(0, uvSpace) are fgsg's Geometry.du/dv, other uv sets and unitSpace located errors",
           "[cga][dialect]") {
   const Compiled c = compile("@StartRule\nLot --> report(\"u\", geometry.du(0, uvSpace) + geometry.dv(0, uvSpace)) X.\n");
   INFO(c.messages);

@@ -54,7 +54,7 @@ Scene sharingScene(const InstanceList& list) {
 
 }  // namespace
 
-TEST_CASE("own geometries equal to rounding and whole tiles share a mesh; the rest is baked", "[output]") {
+TEST_CASE("own geometries equal to rounding and whole tiles share a mesh, the rest is baked", "[output]") {
   Mesh nudged = sharingQuad(0.25f, 0.5f);
   nudged.positions[3] = 1 + 0x1p-23f;   // 2^-23 off: the same on the 2^-20 grid
   nudged.normals[2] = 1 - 0x1p-20f;     // the same on the 2^-16 grid
