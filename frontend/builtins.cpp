@@ -36,7 +36,7 @@ const CommandInfo kCommands[] = {
     {CommandId::Extrude, "Extrude", 1, 1, BodyRule::None, "Extrude(height)", nullptr},
     {CommandId::Footprint, "Footprint", 6, -1, BodyRule::None, "Footprint(x1, z1, x2, z2, x3, z3, ...) or Footprint(outline..., \"hole\", x1, z1, ...)", nullptr},
     {CommandId::Offset, "Offset", 1, 1, BodyRule::AtLeastOne, "Offset(distance){ inside: A | border: B }", nullptr},
-    {CommandId::Roof, "Roof", 2, 5, BodyRule::One, "Roof(\"hipped\", angle[, overhang[, gableOverhang[, edge]]]){ roof }", nullptr},
+    {CommandId::Roof, "Roof", 2, 6, BodyRule::One, "Roof(\"hipped\"[, \"byHeight\"], angle or height[, overhang[, gableOverhang[, edge]]]){ roof }", nullptr},
     {CommandId::Center, "Center", 1, 1, BodyRule::None, "Center(\"xyz\")", nullptr},
     {CommandId::Color, "Color", 1, 3, BodyRule::None, "Color(r, g, b) or Color(\"#rrggbb\")", nullptr},
     {CommandId::Texture, "Texture", 1, 3, BodyRule::None,

@@ -274,7 +274,23 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       if (stringOk && kind != "hipped" && kind != "gable" && kind != "pyramid" && kind != "shed" && kind != "ridge")
         diags_.error("E028", item.args[0]->range,
                      "unknown roof kind \"" + kind + "\" (hipped, gable, pyramid, shed or ridge)");
-      numArgs(1, false);
+      // Roof(kind, "byHeight" | "byAngle", value, ...): CityEngine's valueType as a word
+      // before the value; without it the value is the angle (at most 5 arguments).
+      ConstValue word;
+      if (n > 1 && evalConst(*item.args[1], word) && word.type == ValueType::Str) {
+        res_.exprTypes[item.args[1].get()] = ValueType::Str;
+        if (word.str != "byHeight" && word.str != "byAngle")
+          diags_.error("E028", item.args[1]->range,
+                       "Roof's value type is \"byAngle\" or \"byHeight\", not \"" + word.str + "\"");
+        else if (n < 3)
+          diags_.error("E016", item.range, "'Roof' with \"" + word.str + "\" takes the value after it: " + cmd.signature);
+        numArgs(2, false);
+      } else {
+        if (n > 5)
+          diags_.error("E016", item.range,
+                       "'Roof' takes 2 to 5 arguments, got " + std::to_string(n) + ": " + cmd.signature);
+        numArgs(1, false);
+      }
       break;
     }
     case CommandId::Marching:

@@ -130,7 +130,8 @@ enum class OpKind : uint8_t {
   Extrude,       // args[0] height
   Footprint,     // args x1 z1 x2 z2 ...: the shape becomes this polygon in its scope's XZ plane; holes from ringStarts
   Offset,        // args[0] distance; bodies labelled `inside` / `border` (partLabels)
-  Roof,          // str = kind ("hipped", "gable", "pyramid"); args[0] angle; bodies[0]
+  Roof,          // str = kind ("hipped", "gable", "pyramid", "shed", "ridge"); index: kRoofByAngle
+                 // or kRoofByHeight; args[0] the angle or height, then overhangs, edge; bodies[0]
   Lock,          // bodies: derived as one unit; a collision anywhere removes the whole set
   Line,          // Line(width, merge): args[0] width, args[1] merge (Bool); starts a line here
   LineSeg,       // LineSeg(length?): optional args[0] moves along X first; extends the line
@@ -213,6 +214,11 @@ int turtleOpNamed(const std::string& name);
 
 struct Op;
 using Block = std::vector<Op>;
+
+// Roof's op.index: args[0] is the slope in degrees, or the roof's height (Roof(kind,
+// "byHeight", h), CityEngine's roofHip(byHeight, h) ...).
+inline constexpr uint32_t kRoofByAngle = 0;
+inline constexpr uint32_t kRoofByHeight = 1;
 
 struct Op {
   OpKind kind = OpKind::Push;

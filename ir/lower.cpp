@@ -390,7 +390,14 @@ class Lowerer {
       case CommandId::Roof:
         op.kind = OpKind::Roof;
         op.str = m_.internString(constString(*item.args[0]));
-        allArgs(1);
+        // Roof(kind, "byHeight" | "byAngle", value, ...): the word picks what value is.
+        if (item.args.size() > 1 && sema_.exprTypes.count(item.args[1].get()) &&
+            sema_.exprTypes.at(item.args[1].get()) == frontend::ValueType::Str) {
+          op.index = constString(*item.args[1]) == "byHeight" ? kRoofByHeight : kRoofByAngle;
+          allArgs(2);
+        } else {
+          allArgs(1);
+        }
         break;
       case CommandId::Lock: op.kind = OpKind::Lock; break;
       case CommandId::Color:

@@ -402,7 +402,9 @@ class Printer {
         text = withArgs("offset");
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
         break;
-      case OpKind::Roof: text = withArgs("roof " + stringLit(op.str)); break;
+      case OpKind::Roof:
+        text = withArgs("roof " + stringLit(op.str) + (op.index == kRoofByHeight ? " byHeight" : ""));
+        break;
       case OpKind::Lock: text = "lock"; break;
       case OpKind::Line:
         text = withArgs("line");

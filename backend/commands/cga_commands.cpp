@@ -94,7 +94,8 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
     case ir::OpKind::Roof: {
       rt::cga::Part part;
       std::string error;
-      // Roof(kind, angle, overhang, gable overhang, edge index): the optional ones in order.
+      // Roof(kind, angle, overhang, gable overhang, edge index): the optional ones in order;
+      // Roof(kind, "byHeight", height, ...) (op.index 1) has the height in the angle's place.
       rt::cga::RoofOptions options;
       if (n > 1) options.overhang = a[1];
       options.gableOverhang = n > 2 ? a[2] : options.overhang;
@@ -107,8 +108,10 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
                                                 " is negative"};
       }
       if (!skeletonWithin(d_, [&] {
-            return rt::cga::roof(scope, geom, d_.module().strings[op.str], a[0], d_.arena(), part, error,
-                                 &d_.deadline(), options);
+            const std::string& kind = d_.module().strings[op.str];
+            return op.index == ir::kRoofByHeight
+                       ? rt::cga::roofByHeight(scope, geom, kind, a[0], d_.arena(), part, error, &d_.deadline(), options)
+                       : rt::cga::roof(scope, geom, kind, a[0], d_.arena(), part, error, &d_.deadline(), options);
           }))
         throw DeriveError{op.loc, "R002", error};
       d_.runBody(op, 0, part.scope, part.geom, st, ex, f);

@@ -10,6 +10,7 @@
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
 //   roofRidge(byAngle, angle)           Roof("ridge", angle){ rest of the successor }
+//   roofHip(byHeight, h, ...) ...       Roof(kind, "byHeight", h, ...){ rest of the successor }
 //   translate(rel, scope, x, y, z)      T(x, y, z)
 //   translate(rel|abs, world, x, y, z)  Translate("rel" or "abs", "world", x, y, z)
 //   rotate(rel, scope, x, y, z)         R(x, y, z)
@@ -377,15 +378,12 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return;
   }
   if (name == "roofRidge") {
-    // roofRidge(byAngle, angle) (op_roofRidge: its only form besides byHeight): fgsg's
-    // Roof("ridge", angle), the ridge along the scope's x.
+    // roofRidge(byAngle, angle), roofRidge(byHeight, height) (op_roofRidge's two forms):
+    // fgsg's Roof("ridge", angle), Roof("ridge", "byHeight", height), the ridge along the
+    // scope's x.
     if (!noBody() || !count(2, 2, "byAngle or byHeight and a value")) return;
     const std::string valueType = selectorWord(argCtx[0]);
-    if (valueType == "byHeight") {
-      notSupported(rangeOf(argCtx[0]), "roofRidge(byHeight, ...)");
-      return;
-    }
-    if (valueType != "byAngle") {
+    if (valueType != "byAngle" && valueType != "byHeight") {
       error("E028", rangeOf(argCtx[0]),
             "roofRidge's value type is byAngle or byHeight, not '" + argCtx[0]->getText() + "'");
       return;
@@ -395,6 +393,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     flushInsert();
     Item item = command("Roof", at);
     item.args.push_back(stringExpr("ridge", nameAt));
+    if (valueType == "byHeight") item.args.push_back(stringExpr("byHeight", rangeOf(argCtx[0])));
     item.args.push_back(std::move(angle));
     restAsBody(item, "");
     push(std::move(item));
@@ -404,22 +403,21 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
   }
   if (name == "roofGable" || name == "roofHip" || name == "roofPyramid" || name == "roofShed") {
     // roofGable(angle, overhangX, overhangY, even, index), roofHip(angle, overhang, even),
-    // roofShed(angle, index), roofPyramid(angle), each also as (byAngle, angle, ...): fgsg's
-    // Roof(kind, angle, overhang, gable overhang, edge index). roofGable's overhangY
-    // defaults to its overhangX (Roof's gable overhang does).
+    // roofShed(angle, index), roofPyramid(angle), each also as (byAngle, angle, ...) and
+    // (byHeight, height, ...): fgsg's Roof(kind[, "byHeight"], value, overhang, gable
+    // overhang, edge index). roofGable's overhangY defaults to its overhangX (Roof's gable
+    // overhang does).
     const bool gable = name == "roofGable", hip = name == "roofHip", shed = name == "roofShed";
-    const size_t first = !argCtx.empty() && selectorWord(argCtx[0]) == "byAngle" ? 1 : 0;
+    const std::string valueType = argCtx.empty() ? "" : selectorWord(argCtx[0]);
+    const bool byHeight = valueType == "byHeight";
+    const size_t first = valueType == "byAngle" || byHeight ? 1 : 0;
     const size_t most = first + (gable ? 5 : hip ? 3 : shed ? 2 : 1);
-    const std::string forms = std::string(first ? "byAngle, " : "") + "an angle" +
+    const std::string forms = std::string(first ? valueType + ", " : "") + (byHeight ? "a height" : "an angle") +
                               (gable ? ", overhangX, overhangY, even and index"
                                : hip ? ", overhang and even"
                                : shed ? " and an edge index"
                                       : "");
     if (!noBody()) return;
-    if (!argCtx.empty() && selectorWord(argCtx[0]) == "byHeight") {
-      notSupported(rangeOf(argCtx[0]), name + "(byHeight, ...)");
-      return;
-    }
     if (!count(first + 1, most, forms)) return;
     const size_t even = first + (gable ? 3 : 2);
     if ((gable || hip) && argCtx.size() > even && argCtx[even]->getText() != "false") {
@@ -443,6 +441,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     const char* kind = gable ? "gable" : hip ? "hipped" : name == "roofPyramid" ? "pyramid" : "shed";
     Item item = command("Roof", at);
     item.args.push_back(stringExpr(kind, nameAt));
+    if (byHeight) item.args.push_back(stringExpr("byHeight", rangeOf(argCtx[0])));
     for (ExprPtr& a : args) item.args.push_back(std::move(a));
     restAsBody(item, "");
     push(std::move(item));

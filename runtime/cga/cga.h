@@ -156,6 +156,17 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kind, doub
           GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline = nullptr,
           const RoofOptions& options = {});
 
+// CityEngine's roofs by height (roofHip(byHeight, h) ...): the roof(kind, angle) whose
+// highest point stands `height` above the footprint, angle = atan(height / t_max) with t_max
+// the largest horizontal distance the kind's planes rise over (the straight skeleton's
+// largest offset for hipped and gable roofs, a shed's depth from its edge, a ridge roof's
+// half depth, a pyramid's apex distance). Overhangs do not change the slope or the ridge:
+// their eaves hang below the footprint's plane. Errors as roof()'s, and `height` not a
+// number more than 0.
+bool roofByHeight(const Scope& scope, const GeomRef& geom, const std::string& kind, double height,
+                  GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline = nullptr,
+                  const RoofOptions& options = {});
+
 // A shape's own surface as world polygons, each counter-clockwise seen from outside: a
 // flat shape (a Polygon, or a Box with no depth) is its one face, looking along the scope
 // axis it has no size in (a facade piece along Z, a footprint up Y); a solid (a Box or a

@@ -122,9 +122,13 @@ std::vector<Polygon3> roofFaces(RoofKind kind, double w, double d, double h) {
 // from that height. A shed rises from the first edge (the rectangle's back, -Z, edge). A
 // ridge roof's ridge runs along the scope's x whichever side is longer (CityEngine's
 // roofRidge: "parallel to the scope's x-axis"), h = (d / 2) * tan(angle) on the rectangle.
-bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
-          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline,
-          const RoofOptions& options) {
+namespace {
+
+// The roof's faces in the roof scope's units (y up from the footprint), `out.scope` the
+// footprint's frame and `h` the roof's height: everything roof() does but the arena.
+bool buildRoofFaces(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
+                    const GeometryArena& arena, Part& out, std::vector<Polygon3>& faces, double& h,
+                    std::string& error, const Deadline* deadline, const RoofOptions& options) {
   RoofKind kind;
   if (!parseKind(kindName, kind)) {
     error = "Roof: unknown kind \"" + kindName + "\" (expected hipped, gable, pyramid, shed or ridge)";
@@ -176,8 +180,8 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     const size_t first = size_t(options.edgeIndex) % outer.size();
     std::rotate(outer.begin(), outer.begin() + long(first), outer.end());
   }
-  std::vector<Polygon3> faces;
-  double h = 0.0;
+  faces.clear();
+  h = 0.0;
   if (!onPolygon) {
     h = std::min(w, d) / 2 * std::tan(angleDeg * std::numbers::pi / 180.0);
     faces = roofFaces(kind, w, d, h);
@@ -190,6 +194,20 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     error = "Roof: the roof has no height";
     return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, double angleDeg,
+          GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline,
+          const RoofOptions& options) {
+  std::vector<Polygon3> faces;
+  double h = 0.0;
+  if (!buildRoofFaces(scope, geom, kindName, angleDeg, arena, out, faces, h, error, deadline, options))
+    return false;
+  const double w = out.scope.S.x(), d = out.scope.S.z();
+  const bool overhangs = options.overhang > 0.0 || options.gableOverhang > 0.0;
   // The scope spans the roof: the footprint's rectangle up to the ridge, or with overhangs
   // the box around every face (the eaves reach out and down past the footprint).
   Vec3 lo = Vec3::Zero(), hi(w, h, d);
@@ -203,6 +221,43 @@ bool roof(const Scope& scope, const GeomRef& geom, const std::string& kindName, 
     for (Vec3& p : f) p = (p - lo).cwiseProduct(inv);
   out.geom = arena.addPolyhedron(faces);
   return true;
+}
+
+// Every height of a roof built at an angle is a horizontal distance times tan(angle): the
+// straight skeleton's offset times, a shed's distance from its edge, a ridge roof's half
+// depth, a pyramid's apex distance (gable tops move along ridges, which scale alike). So
+// the roof built at 45 degrees (tan = 1) without overhangs stands exactly t_max high, the
+// largest such distance, and atan(height / t_max) is the one angle whose roof stands
+// `height` high: the angle form with that angle, overhangs and all. Overhangs hang below
+// the footprint's plane and leave the ridge where it is: `height` is measured from the
+// footprint (the eave line on the walls), not from the overhanging eaves.
+bool roofByHeight(const Scope& scope, const GeomRef& geom, const std::string& kindName, double height,
+                  GeometryArena& arena, Part& out, std::string& error, const Deadline* deadline,
+                  const RoofOptions& options) {
+  if (!(height > 0.0 && std::isfinite(height))) {
+    std::ostringstream m;
+    m << "Roof: the height " << height << " must be a number of metres more than 0";
+    error = m.str();
+    return false;
+  }
+  RoofOptions plain = options;
+  plain.overhang = plain.gableOverhang = 0.0;
+  Part probe;
+  std::vector<Polygon3> faces;
+  double height45 = 0.0;
+  if (!buildRoofFaces(scope, geom, kindName, 45.0, arena, probe, faces, height45, error, deadline, plain))
+    return false;
+  // The roof divided by the tan(45 degrees) it was built with (1 - 1 ulp in doubles).
+  const double tMax = height45 / std::tan(45.0 * std::numbers::pi / 180.0);
+  const double angleDeg = std::atan(height / tMax) * 180.0 / std::numbers::pi;
+  if (!(angleDeg < 90.0)) {
+    std::ostringstream m;
+    m << "Roof: the height " << height << " is too great for a footprint whose roof planes meet " << tMax
+      << " from its edges";
+    error = m.str();
+    return false;
+  }
+  return roof(scope, geom, kindName, angleDeg, arena, out, error, deadline, options);
 }
 
 }  // namespace fgsg::rt::cga
