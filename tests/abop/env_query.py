@@ -22,23 +22,9 @@ import os
 import sys
 import tempfile
 
-from lsystem_reference import fgsg_obj, write_grammar
+from lsystem_reference import same_segments, segments_3d
 
 PLANE = "surface plane(8, 8, 8);\n"  # vertices at the whole numbers from -4 to 4
-
-
-def segments(fgsg, folder, name, text, engine):
-    """fgsg's segments for TEXT as (x0, y0, z0, x1, y1, z1) tuples."""
-    return fgsg_obj(fgsg, write_grammar(folder, name, text), None, folder, dims=3, engine=engine)["l"]
-
-
-def same(got, want, what, engine):
-    key = lambda flat: tuple(round(c, 6) + 0.0 for c in flat)
-    g = sorted(map(key, got))
-    w = sorted(key(sum(seg, ())) for seg in want)
-    if len(g) != len(w) or any(abs(a - b) > 1e-6 for s, t in zip(g, w) for a, b in zip(s, t)):
-        raise SystemExit("FAIL: %s (%s): segments\n  %s\nexpected\n  %s" % (what, engine, g, w))
-    print("ok: %s (%s)" % (what, engine))
 
 
 def within(names, values, tolerances):
@@ -55,7 +41,7 @@ def vector_read(fgsg, folder, engine, name, field, moves, want, tolerance, what,
             "axiom: %s ?E(0, 0, 0) A;\n" % moves +
             "?E(x, y, z) < A : %s -> @M(x, y, z) @R(0, 1, 0, 0, 0, 1) F(1);\n" %
             within("xyz", want, tolerance))
-    got = segments(fgsg, folder, name, text, engine)
+    got = segments_3d(fgsg, folder, name, text, engine)
     # The guard's segment: from the value along +Y (the OBJ keeps 8 digits).
     near = lambda s: all(abs(s[k] - want[k]) < tolerance[k] + 1e-6 for k in range(3)) and \
         abs(s[3] - s[0]) < 1e-6 and abs(s[4] - s[1] - 1) < 1e-6 and abs(s[5] - s[2]) < 1e-6
@@ -92,7 +78,7 @@ def scalar_field(fgsg, folder, engine):
                 "field S = scalar(0.5 * x + 2 * y + 3);\n"
                 "axiom: %s ?E(0) A;\n" % moves +
                 "?E(s) < A : abs(s - %r) < 1e-9 -> @M(s, 0, 5) F(1);\n" % want)
-        got = segments(fgsg, folder, "scalar" + name, text, engine)
+        got = segments_3d(fgsg, folder, "scalar" + name, text, engine)
         if not any(abs(s[0] - want) < 1e-6 and abs(s[2] - 5) < 1e-9 for s in got):
             raise SystemExit("FAIL: ?E(s) of S = 0.5x + 2y + 3 after %s (%s): want %r; segments %s"
                              % (moves, engine, want, got))
@@ -142,7 +128,8 @@ def guard_stops_growth(fgsg, folder, engine):
     # after steps 1-3: A grows at steps 1-4; after step 4 the tip is at y = 4, S = 9, and
     # A stops: 4 segments up to (0, 4, 0) of the 10 steps' 10.
     want = [((0, k, 0), (0, k + 1, 0)) for k in range(4)]
-    same(segments(fgsg, folder, "guard", text, engine), want, "a guard on ?E stops growth at 4 segments", engine)
+    same_segments(segments_3d(fgsg, folder, "guard", text, engine), want, "a guard on ?E stops growth at 4 segments", engine,
+                  tolerance=1e-6)
 
 
 def main():

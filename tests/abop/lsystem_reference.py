@@ -134,6 +134,22 @@ def fgsg_obj(fgsg, grammar, n, folder, dims=2, engine=None, extra=()):
     return elements
 
 
+def segments_3d(fgsg, folder, name, text, engine):
+    """fgsg's segments for grammar TEXT (written as FOLDER/NAME.fgsg) as (x0, y0, z0, x1, y1, z1) tuples."""
+    return fgsg_obj(fgsg, write_grammar(folder, name, text), None, folder, dims=3, engine=engine)["l"]
+
+
+def same_segments(got, want, what, engine, tolerance=1e-9):
+    """Exits with FAIL unless the segments GOT (flat tuples) are WANT (pairs of points), in
+    any order, each coordinate within TOLERANCE after rounding both to 6 decimals; prints ok."""
+    key = lambda flat: tuple(round(c, 6) + 0.0 for c in flat)
+    g = sorted(map(key, got))
+    w = sorted(key(sum(seg, ())) for seg in want)
+    if len(g) != len(w) or any(abs(a - b) > tolerance for s, t in zip(g, w) for a, b in zip(s, t)):
+        raise SystemExit("FAIL: %s (%s): segments\n  %s\nexpected\n  %s" % (what, engine, g, w))
+    print("ok: %s (%s)" % (what, engine))
+
+
 def unmatched(want, got, tolerance=1e-3):
     """The segments (or triangles) of `want` with no one of `got` within `tolerance` (each used once);
     fgsg writes 32-bit floats, so coordinates agree to about 1e-6 of the plant's size."""

@@ -14,21 +14,7 @@ Interpreter and JIT alike (the compiled library: tests/cases/lsystem_query_modul
 import sys
 import tempfile
 
-from lsystem_reference import fgsg_obj, write_grammar
-
-
-def segments(fgsg, folder, name, text, engine):
-    """fgsg's segments for TEXT as (x0, y0, z0, x1, y1, z1) tuples."""
-    return fgsg_obj(fgsg, write_grammar(folder, name, text), None, folder, dims=3, engine=engine)["l"]
-
-
-def same(got, want, what, engine):
-    key = lambda flat: tuple(round(c, 6) + 0.0 for c in flat)
-    g = sorted(map(key, got))
-    w = sorted(key(sum(seg, ())) for seg in want)
-    if len(g) != len(w) or any(abs(a - b) > 1e-9 for s, t in zip(g, w) for a, b in zip(s, t)):
-        raise SystemExit("FAIL: %s (%s): segments\n  %s\nexpected\n  %s" % (what, engine, g, w))
-    print("ok: %s (%s)" % (what, engine))
+from lsystem_reference import same_segments, segments_3d
 
 
 def four_queries(fgsg, folder, engine):
@@ -45,7 +31,7 @@ def four_queries(fgsg, folder, engine):
     axiom = [((0, 0, 0), (0, 1, 0)), ((0, 1, 0), (-2, 1, 0)), ((-2, 1, 0), (-2, 1, -3))]
     starts = [(-2, 1, -3), (0, 0, -1), (-1, 0, 0), (0, -1, 0)]
     want = axiom + [(p, (p[0], p[1], p[2] - 1)) for p in starts]
-    same(segments(fgsg, folder, "four", text, engine), want, "?P ?H ?U ?L after F +(90) F &(90) F", engine)
+    same_segments(segments_3d(fgsg, folder, "four", text, engine), want, "?P ?H ?U ?L after F +(90) F &(90) F", engine)
 
 
 def in_branches(fgsg, folder, engine):
@@ -56,7 +42,7 @@ def in_branches(fgsg, folder, engine):
     # main axis, restored by ']' to (0, 1, 0) heading +Y, ends at (0, 2, 0).
     want = [((0, 0, 0), (0, 1, 0)), ((0, 1, 0), (-2, 1, 0)), ((0, 1, 0), (0, 2, 0)),
             ((-2, 1, 0), (-2.5, 1, 0)), ((0, 2, 0), (0, 2.5, 0))]
-    same(segments(fgsg, folder, "branches", text, engine), want, "?P(x, y) in and after a branch", engine)
+    same_segments(segments_3d(fgsg, folder, "branches", text, engine), want, "?P(x, y) in and after a branch", engine)
 
 
 def guard_stops_growth(fgsg, folder, engine):
@@ -66,8 +52,8 @@ def guard_stops_growth(fgsg, folder, engine):
     # 1, 2, 3 after steps 1-3: A grows at steps 1-4; at step 5 y = 4 and A stops, so 4
     # segments up to (0, 4, 0) of the 10 steps' 10.
     want = [((0, k, 0), (0, k + 1, 0)) for k in range(4)]
-    same(segments(fgsg, folder, "guard", text, engine), want, "a guard on ?P's y stops growth at 4 segments",
-         engine)
+    same_segments(segments_3d(fgsg, folder, "guard", text, engine), want, "a guard on ?P's y stops growth at 4 segments",
+                  engine)
 
 
 def main():
