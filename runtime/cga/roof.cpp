@@ -250,7 +250,7 @@ bool roofByHeight(const Scope& scope, const GeomRef& geom, const std::string& ki
   // The roof divided by the tan(45 degrees) it was built with (1 - 1 ulp in doubles).
   const double tMax = height45 / std::tan(45.0 * std::numbers::pi / 180.0);
   const double angleDeg = std::atan(height / tMax) * 180.0 / std::numbers::pi;
-  if (!(angleDeg < 90.0)) {
+  if (angleDeg >= 90.0) {  // atan of a ratio too great for doubles
     std::ostringstream m;
     m << "Roof: the height " << height << " is too great for a footprint whose roof planes meet " << tMax
       << " from its edges";

@@ -125,6 +125,9 @@ TEST_CASE("roofs by height: errors", "[roof]") {
     CHECK_FALSE(roofByHeight(byHeightBox(10, 6), GeomRef{}, "hipped", h, arena, r, err));
     CHECK(err.find("must be a number of metres more than 0") != std::string::npos);
   }
+  // So high that atan(h / 3) rounds to 90 degrees: no roof plane is that steep.
+  CHECK_FALSE(roofByHeight(byHeightBox(10, 6), GeomRef{}, "hipped", 1e300, arena, r, err));
+  CHECK(err.find("is too great for a footprint whose roof planes meet 3 from its edges") != std::string::npos);
   CHECK_FALSE(roofByHeight(byHeightBox(0, 6), GeomRef{}, "gable", 2, arena, r, err));
   CHECK(err == "Roof: the footprint 0 x 6 has no area");
   CHECK_FALSE(roofByHeight(byHeightBox(10, 6), GeomRef{}, "mansard", 2, arena, r, err));
