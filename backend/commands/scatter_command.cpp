@@ -45,7 +45,13 @@ void applyScatter(Derivation& d, const ir::Op& op, const double* a, uint32_t n, 
   rt::Scope point;
   for (uint64_t i = 0, total = static_cast<uint64_t>(points); i < total; ++i) {
     if (d.deadline().expired()) throw d.timeLimit();  // --max-seconds, also between bodies that draw little
-    if (!sampler.next(stream, point, error)) throw DeriveError{op.loc, "R002", error};
+    bool drawn = false;
+    try {
+      drawn = sampler.next(stream, point, error, &d.deadline());
+    } catch (const rt::TimeLimitReached&) {  // within one point's draws
+      throw d.timeLimit();
+    }
+    if (!drawn) throw DeriveError{op.loc, "R002", error};
     d.runBody(op, 0, point, rt::GeomRef{}, st, ex, f);
     if (ex.culled) return;
   }

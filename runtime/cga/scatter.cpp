@@ -245,7 +245,7 @@ Scope ScatterSampler::pointScope(const Vec3& local, const Vec3* normal) const {
   return s;
 }
 
-bool ScatterSampler::next(RandomStream& rng, Scope& point, std::string& error) {
+bool ScatterSampler::next(RandomStream& rng, Scope& point, std::string& error, Deadline* deadline) {
   if (domain_ == ScatterDomain::Scope || solidIsBox_) {
     Vec3 local;
     for (int k = 0; k < 3; ++k) local[k] = drawAxis(rng, k, lo_[k], hi_[k]);
@@ -257,6 +257,7 @@ bool ScatterSampler::next(RandomStream& rng, Scope& point, std::string& error) {
     return false;
   }
   for (uint32_t draw = 0; draw < kMaxDraws; ++draw) {
+    if (deadline) deadline->check();  // a decrement; the clock now and then
     if (domain_ == ScatterDomain::Volume) {
       Vec3 local;
       for (int k = 0; k < 3; ++k) local[k] = drawAxis(rng, k, lo_[k], hi_[k]);

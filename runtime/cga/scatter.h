@@ -24,6 +24,7 @@
 // same points in every engine.
 #pragma once
 
+#include "runtime/deadline.h"
 #include "runtime/geometry.h"
 #include "runtime/random.h"
 #include "runtime/scope.h"
@@ -57,8 +58,10 @@ class ScatterSampler {
   // Whether there is anywhere to put a point (a surface without area has none).
   bool empty() const { return domain_ == ScatterDomain::Surface && triangles_.empty(); }
   // The next point's scope (size zero). False with `error` when a gaussian or a solid
-  // rejects draw after draw (kMaxDraws for one point).
-  bool next(RandomStream& rng, Scope& point, std::string& error);
+  // rejects draw after draw (kMaxDraws for one point). Asks `deadline` at every draw
+  // (throwing TimeLimitReached): a draw inside a solid tests every triangle, so a thin
+  // solid of many triangles could otherwise run its kMaxDraws far past --max-seconds.
+  bool next(RandomStream& rng, Scope& point, std::string& error, Deadline* deadline = nullptr);
 
   static constexpr uint32_t kMaxDraws = 1'000'000;
 

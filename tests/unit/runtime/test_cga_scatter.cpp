@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -149,6 +150,27 @@ TEST_CASE("scatter(volume, n, uniform) inside an extruded L, shared by the volum
   }
   INFO("points in the 9 x 9 arm: " << upperArm << " of " << n);
   CHECK(binomialPlausible(upperArm, n, 81.0 / 261.0));
+}
+
+TEST_CASE("scatter: a deadline that has passed stops the draws of one point", "[scatter]") {
+  // The solid's draws each test every triangle: --max-seconds must reach inside them.
+  GeometryArena arena;
+  Part lot, solid;
+  std::string error;
+  REQUIRE(footprint(Scope{}, {{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}, {}, arena, lot, error));
+  REQUIRE(extrude(lot.scope, lot.geom, 4, arena, solid, error));
+  for (ScatterDomain domain : {ScatterDomain::Volume, ScatterDomain::Surface}) {
+    ScatterSpec spec;
+    spec.domain = domain;
+    ScatterSampler sampler;
+    REQUIRE(sampler.prepare(solid.scope, solid.geom, arena, spec, error));
+    RandomStream rng{7, 0};
+    Scope point;
+    Deadline open = Deadline::after(3600);
+    CHECK(sampler.next(rng, point, error, &open));
+    Deadline passed(Deadline::Clock::now() - std::chrono::seconds(10), 1.0);
+    CHECK_THROWS_AS(sampler.next(rng, point, error, &passed), TimeLimitReached);
+  }
 }
 
 TEST_CASE("scatter(volume) on a shape that is no closed solid falls back to its surface", "[scatter]") {
