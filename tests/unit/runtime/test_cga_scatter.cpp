@@ -32,6 +32,15 @@ std::vector<Scope> scatterAll(const Scope& scope, const GeomRef& geom, const Geo
   return out;
 }
 
+// The L: a 20 x 9 wing and a 9 x 9 one above it (z 9..18), extruded 4 m.
+Part extrudedL(GeometryArena& arena) {
+  Part lot, solid;
+  std::string error;
+  REQUIRE(footprint(Scope{}, {{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}, {}, arena, lot, error));
+  REQUIRE(extrude(lot.scope, lot.geom, 4, arena, solid, error));
+  return solid;
+}
+
 // The point in the parent scope's frame (metres along its axes from its origin).
 Vec3 localOf(const Scope& parent, const Scope& point) { return parent.axes.transpose() * (point.P - parent.P); }
 
@@ -125,12 +134,9 @@ TEST_CASE("scatter(surface, n, uniform): area-weighted, 2/3 of the points on a f
 }
 
 TEST_CASE("scatter(volume, n, uniform) inside an extruded L, shared by the volumes of its arms", "[scatter]") {
-  // The L: a 20 x 9 wing and a 9 x 9 one above it (z 9..18), extruded 4 m.
   GeometryArena arena;
-  Part lot, solid;
   std::string error;
-  REQUIRE(footprint(Scope{}, {{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}, {}, arena, lot, error));
-  REQUIRE(extrude(lot.scope, lot.geom, 4, arena, solid, error));
+  const Part solid = extrudedL(arena);  // 20 x 9 and 9 x 9 (z 9..18), 4 m high
   ScatterSpec spec;
   spec.domain = ScatterDomain::Volume;
   ScatterSampler sampler;
@@ -155,10 +161,8 @@ TEST_CASE("scatter(volume, n, uniform) inside an extruded L, shared by the volum
 TEST_CASE("scatter: a deadline that has passed stops the draws of one point", "[scatter]") {
   // The solid's draws each test every triangle: --max-seconds must reach inside them.
   GeometryArena arena;
-  Part lot, solid;
   std::string error;
-  REQUIRE(footprint(Scope{}, {{0, 0}, {20, 0}, {20, 9}, {9, 9}, {9, 18}, {0, 18}}, {}, arena, lot, error));
-  REQUIRE(extrude(lot.scope, lot.geom, 4, arena, solid, error));
+  const Part solid = extrudedL(arena);
   for (ScatterDomain domain : {ScatterDomain::Volume, ScatterDomain::Surface}) {
     ScatterSpec spec;
     spec.domain = domain;
