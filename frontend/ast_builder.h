@@ -16,6 +16,8 @@ class AstBuilder {
   void addStatement(fgsg_grammar::FgsgParser::StatementContext* ctx);
   // The lpfg / L-Py section (`decomposition:` ...) the next statement's rule belongs to.
   void setSection(RuleSection section) { section_ = section; }
+  // The `priority N:` in force for the next rule (part of what its AST depends on).
+  int priority() const { return priority_; }
 
  private:
   using P = fgsg_grammar::FgsgParser;

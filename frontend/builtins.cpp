@@ -2,6 +2,8 @@
 
 #include <cstring>
 #include <iterator>
+#include <string_view>
+#include <unordered_map>
 
 namespace fgsg::frontend {
 namespace {
@@ -142,9 +144,15 @@ const FunctionInfo kFunctions[] = {
 }  // namespace
 
 const CommandInfo* findCommand(const std::string& name) {
-  for (const auto& c : kCommands)
-    if (name == c.name) return &c;
-  return nullptr;
+  // Asked for every item by sema, lowering and the verifier: a search of the table was
+  // 9 % of fgsg lsp's time on a change. The first entry of a name wins, as in the table.
+  static const std::unordered_map<std::string_view, const CommandInfo*> byName = [] {
+    std::unordered_map<std::string_view, const CommandInfo*> m;
+    for (const auto& c : kCommands) m.emplace(c.name, &c);
+    return m;
+  }();
+  const auto it = byName.find(name);
+  return it == byName.end() ? nullptr : it->second;
 }
 
 std::span<const CommandInfo> allCommands() { return kCommands; }

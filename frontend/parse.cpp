@@ -7,6 +7,7 @@
 #include "frontend/ast_builder.h"
 #include "frontend/cga/cga_parse.h"
 #include "frontend/lex.h"
+#include "frontend/statement_reuse.h"
 #include "frontend/syntax_errors.h"
 #include "frontend/two_stage_parse.h"
 
@@ -97,6 +98,41 @@ class StatementScan {
   size_t start_;
 };
 
+// Everything the parse and the AST of tokens [start, end) depend on: each token's type,
+// text, line, column and offsets from the first (tokens written together), the type of
+// the token after (the parser's lookahead), the lpfg section and the priority in force.
+std::string reusableStatementKey(antlr4::CommonTokenStream& tokens, size_t start, size_t end, RuleSection section,
+                                 int priority) {
+  std::string key = std::to_string(static_cast<int>(section)) + ' ' + std::to_string(priority);
+  const size_t base = tokens.get(start)->getStartIndex();
+  auto number = [&](size_t n) {
+    key += std::to_string(n);
+    key += ',';
+  };
+  for (size_t i = start; i < end; ++i) {
+    const Token* t = tokens.get(i);
+    key += '\n';
+    number(t->getType());
+    number(t->getLine());
+    number(t->getCharPositionInLine());
+    number(t->getStartIndex() - base);
+    number(t->getStopIndex() - base);
+    key += t->getText();
+  }
+  key += '\n';
+  number(end < tokens.size() ? tokens.get(end)->getType() : Token::EOF);
+  return key;
+}
+
+size_t programStatementCount(const Program& p) {
+  return p.imports.size() + p.values.size() + p.rules.size() + p.surfaces.size() + p.fields.size() +
+         p.textures.size() + p.tilesets.size() + p.derives.size() + p.turtles.size() + p.ignores.size() +
+         p.collisions.size() + p.axioms.size();
+}
+
+bool parseTextReusingStatements(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
+                                const std::vector<std::string>& importAliases, StatementReuse* reuse);
+
 }  // namespace
 
 bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
@@ -113,10 +149,22 @@ bool parseProgram(const SourceFile& file, Program& out, Diagnostics& diags) {
   return parseText(file.name, file.mainText(), out, diags, file.importAliases);
 }
 
+bool parseProgramReusing(const SourceFile& file, Program& out, Diagnostics& diags, StatementReuse& reuse) {
+  if (isCgaSource(file.name, file.mainText()) || !file.startRule.empty()) return parseProgram(file, out, diags);
+  return parseTextReusingStatements(file.name, file.mainText(), out, diags, file.importAliases, &reuse);
+}
+
 bool parseText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
                const std::vector<std::string>& importAliases) {
   // A module written in CityEngine's CGA (`import "facade.cga" as facade;`).
   if (isCgaSource(name, text)) return parseCgaText(name, text, out, diags);
+  return parseTextReusingStatements(name, text, out, diags, importAliases, nullptr);
+}
+
+namespace {
+
+bool parseTextReusingStatements(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
+                                const std::vector<std::string>& importAliases, StatementReuse* reuse) {
   out.fileName = name;
   const int errorsBefore = diags.errorCount();
 
@@ -151,12 +199,31 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
       tokens.seek(scan.endAtOrAfter(start));
       continue;
     }
-    builder.setSection(lexed.sectionAt(tokens.LT(1)->getLine()));
+    const RuleSection section = lexed.sectionAt(tokens.LT(1)->getLine());
+    builder.setSection(section);
+    std::string key;
+    size_t scannedEnd = 0;
+    if (reuse) {
+      scannedEnd = scan.endAtOrAfter(start);
+      key = reusableStatementKey(tokens, start, scannedEnd, section, builder.priority());
+      if (reuse->reuse(key, out)) {
+        tokens.seek(scannedEnd);
+        continue;
+      }
+    }
     // Each statement is parsed as a start rule: no invoking state, no recovery mode.
     firstStage.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
     firstStage.getErrorHandler()->reset(&firstStage);
     if (FgsgParser::StatementContext* statement = tryFirstStage([&] { return firstStage.statement(); })) {
+      const size_t statementsBefore = programStatementCount(out), diagnosticsBefore = diags.all().size();
+      const size_t rulesBefore = out.rules.size(), valuesBefore = out.values.size();
       builder.addStatement(statement);
+      // Recorded only when it was one rule or value, parsed up to the scanned end, with no
+      // diagnostic: anything else is parsed again next time.
+      const bool one = programStatementCount(out) == statementsBefore + 1;
+      const bool isRule = out.rules.size() == rulesBefore + 1, isValue = out.values.size() == valuesBefore + 1;
+      if (reuse && one && (isRule || isValue) && tokens.index() == scannedEnd && diags.all().size() == diagnosticsBefore)
+        reuse->record(key, isRule, out);
     } else {
       tokens.seek(start);
       parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);
@@ -174,5 +241,7 @@ bool parseText(const std::string& name, const std::string& text, Program& out, D
       diags.note(SourceRange{{line, 1}, {line, 1}}, "this looks like CityEngine CGA: name the file .cga");
   return diags.errorCount() == errorsBefore;
 }
+
+}  // namespace
 
 }  // namespace fgsg::frontend

@@ -1,4 +1,5 @@
 #include "ir/pipeline.h"
+#include "ir/pipeline_reusing.h"
 
 #include "frontend/imports.h"
 #include "frontend/parse.h"
@@ -18,15 +19,36 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The passes after parsing the grammar's own text, for both entries below.
+bool compileParsedWithImports(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+                              CompileTimes* times, frontend::Program& program, bool parsed,
+                              std::chrono::steady_clock::time_point t0);
+
 }  // namespace
 
 bool compileSource(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
                    CompileTimes* times, frontend::Program* keep) {
-  auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   frontend::Program local;
   frontend::Program& program = keep ? *keep : local;
   program.fileName = file.name;
-  bool parsed = frontend::parseProgram(file, program, diags);
+  const bool parsed = frontend::parseProgram(file, program, diags);
+  return compileParsedWithImports(file, out, diags, times, program, parsed, t0);
+}
+
+bool compileSourceReusing(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+                          frontend::Program& keep, frontend::StatementReuse& reuse) {
+  const auto t0 = std::chrono::steady_clock::now();
+  keep.fileName = file.name;
+  const bool parsed = frontend::parseProgramReusing(file, keep, diags, reuse);
+  return compileParsedWithImports(file, out, diags, nullptr, keep, parsed, t0);
+}
+
+namespace {
+
+bool compileParsedWithImports(frontend::SourceFile& file, Module& out, frontend::Diagnostics& diags,
+                              CompileTimes* times, frontend::Program& program, bool parsed,
+                              std::chrono::steady_clock::time_point t0) {
   // Its modules: their texts join `file`'s, which then keys the JIT's cache on them too.
   parsed = frontend::resolveImports(file, program, diags) && parsed;
   if (times) times->parseSeconds = secondsSince(t0);
@@ -51,6 +73,8 @@ bool compileSource(frontend::SourceFile& file, Module& out, frontend::Diagnostic
   if (times) times->lowerSeconds = secondsSince(t0);
   return true;
 }
+
+}  // namespace
 
 bool readSourceFile(const std::string& path, frontend::SourceFile& out, std::string& error) {
   std::string text;

@@ -2,7 +2,7 @@
 
 #include "cli/check_data_files.h"
 #include "cli/lsp/lsp_text.h"
-#include "ir/pipeline.h"
+#include "ir/pipeline_reusing.h"
 
 #include <algorithm>
 #include <cctype>
@@ -108,7 +108,8 @@ std::vector<const Definition*> Analysis::find(const std::string& name) const {
   return out;
 }
 
-std::shared_ptr<const Analysis> analyze(const std::string& path, const std::string& text) {
+std::shared_ptr<Analysis> analyze(const std::string& path, const std::string& text,
+                                  std::shared_ptr<Analysis> previous) {
   auto a = std::make_shared<Analysis>();
   a->path = path;
   // What `fgsg check` reports (cli/cmd_check.cpp): the compile's diagnostics, then, when it
@@ -117,7 +118,11 @@ std::shared_ptr<const Analysis> analyze(const std::string& path, const std::stri
   a->source = frontend::SourceFile::make(path, text);
   frontend::Diagnostics diags(&a->source);
   ir::Module module;
-  if (ir::compileSource(a->source, module, diags, nullptr, &a->program)) checkDataFiles(module, path, diags);
+  frontend::StatementReuse reuse;
+  if (previous && previous.use_count() == 1 && previous->path == path)
+    reuse.offer(previous->program, std::move(previous->statements));
+  if (ir::compileSourceReusing(a->source, module, diags, a->program, reuse)) checkDataFiles(module, path, diags);
+  a->statements = reuse.takeRecorded();
   a->diagnostics = diags.all();
   collectDefinitions(*a);
   return a;

@@ -5,6 +5,7 @@
 
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
+#include "frontend/statement_reuse.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,6 +33,9 @@ struct Analysis {
   std::vector<frontend::Diagnostic> diagnostics;
   frontend::Program program;    // its modules' declarations merged in
   std::vector<Definition> definitions;  // the document's first, in order, then the modules'
+  // Where each statement of `program` that the next analysis may take over is (statement
+  // reuse: frontend/statement_reuse.h).
+  frontend::ReusableStatementIndex statements;
 
   // The last line of the document itself in `source`.
   int documentLines() const;
@@ -50,8 +54,12 @@ struct Analysis {
   std::vector<const Definition*> find(const std::string& name) const;
 };
 
-// Compiles `text` as the grammar at `path` (imports are looked for beside it).
-std::shared_ptr<const Analysis> analyze(const std::string& path, const std::string& text);
+// Compiles `text` as the grammar at `path` (imports are looked for beside it). `previous`,
+// the analysis of the document's text before an edit, gives the statements that did not
+// change (their parsed AST is moved out of it: it is spent); ignored when anyone else
+// still holds it.
+std::shared_ptr<Analysis> analyze(const std::string& path, const std::string& text,
+                                  std::shared_ptr<Analysis> previous = nullptr);
 
 // The name under (or, with `prefixOnly`, ending at) byte `at` of `line`: letters, digits,
 // '_' and the '.' of a qualified name (facade.Window).

@@ -2,6 +2,8 @@
 
 #include "cli/lsp/lsp_text.h"
 
+#include <utility>
+
 namespace fgsg::cli::lsp {
 
 void DocumentStore::open(const std::string& uri, std::string text, int version) {
@@ -27,6 +29,7 @@ bool DocumentStore::change(const std::string& uri, const Json& change, int versi
     doc.text = replacement;
   }
   doc.version = version;
+  if (doc.analysis) doc.previous = std::move(doc.analysis);
   doc.analysis = nullptr;
   return true;
 }
@@ -41,7 +44,8 @@ const std::string* DocumentStore::text(const std::string& uri) const {
 std::shared_ptr<const Analysis> DocumentStore::analysis(const std::string& uri) {
   auto it = documents_.find(uri);
   if (it == documents_.end()) return nullptr;
-  if (!it->second.analysis) it->second.analysis = analyze(it->second.path, it->second.text);
+  Document& doc = it->second;
+  if (!doc.analysis) doc.analysis = analyze(doc.path, doc.text, std::exchange(doc.previous, nullptr));
   return it->second.analysis;
 }
 

@@ -28,7 +28,10 @@ class DocumentStore {
     std::string path;
     std::string text;
     int version = 0;
-    std::shared_ptr<const Analysis> analysis;  // of `text`; null: not yet or stale
+    std::shared_ptr<Analysis> analysis;  // of `text`; null: not yet or stale
+    // The last analysis before the text changed: the next one takes over its unchanged
+    // statements (statement reuse), then drops it.
+    std::shared_ptr<Analysis> previous;
   };
   std::map<std::string, Document> documents_;
 };
