@@ -140,6 +140,9 @@ async function main() {
   assert.deepStrictEqual(await edit('attr renamed back', change('attr widht', 'attr width')), []);
   // Lines inserted before every statement: each one's tokens move down.
   await edit('line inserted', change('import', 'attr extra = 1;\n\nimport'));
+  assert.deepStrictEqual(codes(await edit('attr renamed below the inserted lines', change('attr width', 'attr widht'))),
+                         ['E010@9:26', 'E010@10:17']);
+  assert.deepStrictEqual(await edit('renamed back', change('attr widht', 'attr width')), []);
   assert.deepStrictEqual(codes(await edit('error after the inserted lines', change('Extrude(height)', 'Extrude(heigth)'))),
                          ['E010@7:15']);
   assert.deepStrictEqual(codes(await edit('inserted lines deleted', change('attr extra = 1;\n\n', ''))), ['E010@5:15']);

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "frontend/parse.h"
+#include "frontend/statement_reuse.h"
 
 #include <sstream>
 #include <string>
@@ -810,4 +811,69 @@ TEST_CASE("a number literal beyond a double is E002 where it stands, not a silen
   REQUIRE(q.program.values.size() == 2);
   CHECK(dump(q.program.values[0].value) == "0");
   CHECK(q.program.values[1].value->number == 1.7976931348623157e308);
+}
+
+// ============================================================= statement reuse
+
+namespace {
+
+// What a parse gives that later passes read: each rule and value with its place, priority
+// and section, and the diagnostics as printed.
+std::string programWithPlaces(const Program& p, const std::string& printed) {
+  std::ostringstream out;
+  auto place = [&](const SourceRange& r) {
+    out << '@' << r.begin.line << ':' << r.begin.col << '-' << r.end.line << ':' << r.end.col;
+  };
+  for (const Rule& r : p.rules) {
+    out << dump(r) << " priority " << r.priority << " section " << static_cast<int>(r.section);
+    place(r.range);
+    place(r.predecessor.range);
+    out << '\n';
+  }
+  for (const ValueDecl& v : p.values) {
+    out << (v.isAttr ? "attr " : "const ") << v.name << " = " << dump(v.value);
+    place(v.range);
+    place(v.value->range);
+    out << '\n';
+  }
+  return out.str() + printed;
+}
+
+}  // namespace
+
+TEST_CASE("statement reuse gives the AST of a fresh parse, edit after edit", "[parse][reuse]") {
+  const std::vector<std::string> texts = {
+      "attr a = 1;\nA ~> B(a);\npriority 2:\nC ~> D;\nE ~> F; G ~> H;\n",
+      "attr a = 1;\nA ~> B(a + 1);\npriority 2:\nC ~> D;\nE ~> F; G ~> H;\n",  // one rule changed
+      "attr a = 1;\nA ~> B(a + 1);\npriority 5:\nC ~> D;\nE ~> F; G ~> H;\n",  // the priority only
+      "// new\n\nattr a = 1;\nA ~> B(a + 1);\npriority 5:\nC ~> D;\nE ~> F; G ~> H;\n",  // lines moved
+      "// new\n\nattr a = 1;\nA ~> B(a + 1);\npriority 5:\nC ~> D;\nE ~> FF; G ~> H;\n",  // columns moved
+      "// new\n\nattr a = 1;\nA ~> B(a + 1;\npriority 5:\nC ~> D;\nE ~> FF; G ~> H;\n",  // a syntax error
+      "// new\n\nattr a = 1;\nA ~> B(a + 1;\npriority 5:\nC ~> D;\nE ~> FF; G ~> H;\n",  // the same again
+      "// new\n\nattr a = 2;\nA ~> B(a + 1);\npriority 5:\nC ~> D;\nE ~> FF; G ~> H;\n",
+      "attr a = 1;\nA ~> B(a);\npriority 2:\nC ~> D;\nE ~> F; G ~> H;\n",  // back to the first
+  };
+  // The statements taken over at each step: those whose tokens, places and priority did
+  // not change and that parsed without error the time before.
+  const std::vector<size_t> reusedCounts = {0, 4, 2, 0, 3, 4, 4, 3, 0};
+  Program previous;
+  ReusableStatementIndex recorded;
+  for (size_t k = 0; k < texts.size(); ++k) {
+    INFO("text " << k << ":\n" << texts[k]);
+    SourceFile file = SourceFile::make("test.fgsg", texts[k]);
+    Diagnostics freshDiags(&file), reusedDiags(&file);
+    Program fresh, reused;
+    const bool freshOk = parseProgram(file, fresh, freshDiags);
+    StatementReuse reuse;
+    reuse.offer(previous, std::move(recorded));
+    const bool reusedOk = parseProgramReusing(file, reused, reusedDiags, reuse);
+    CHECK(reusedOk == freshOk);
+    std::ostringstream freshPrinted, reusedPrinted;
+    freshDiags.print(freshPrinted);
+    reusedDiags.print(reusedPrinted);
+    CHECK(programWithPlaces(reused, reusedPrinted.str()) == programWithPlaces(fresh, freshPrinted.str()));
+    CHECK(reuse.reusedCount() == reusedCounts[k]);
+    recorded = reuse.takeRecorded();
+    previous = std::move(reused);
+  }
 }
