@@ -630,6 +630,23 @@ TEST_CASE("cga: Extrude", "[cga]") {
   SECTION("errors") {
     CHECK_FALSE(extrude(box(2, 0, 2), GeomRef{}, -1, arena, solid, err));
     CHECK(err == "Extrude: the height -1 must be positive");
+    // Zero is no solid either (a mutation run found nothing asking, #51).
+    CHECK_FALSE(extrude(box(2, 0, 2), GeomRef{}, 0, arena, solid, err));
+    CHECK(err == "Extrude: the height 0 must be positive");
+  }
+}
+
+TEST_CASE("cga: offset distances that are not positive are errors", "[cga]") {
+  // CGA's inward offset(-d) arrives here as d > 0; zero would give a band of no width
+  // (a mutation run found nothing asking, #51).
+  GeometryArena arena;
+  std::vector<Part> inside, border;
+  std::string err;
+  for (double d : {0.0, -1.0}) {
+    CHECK_FALSE(offset(box(4, 0, 3), GeomRef{}, d, true, arena, inside, border, err, nullptr));
+    CHECK(err == "Offset: the distance " + std::string(d == 0 ? "0" : "-1") + " must be positive");
+    CHECK(inside.empty());
+    CHECK(border.empty());
   }
 }
 

@@ -114,6 +114,9 @@ TEST_CASE("centre distance collides below the radius only", "[collision]") {
   world.add(a.cube, box({0, 0, 0}, {0.1, 0.1, 0.1}));
   CHECK(world.collides(a.cube, box({0.99, 0, 0}, {0.1, 0.1, 0.1})));
   CHECK_FALSE(world.collides(a.cube, box({1.01, 0, 0}, {0.1, 0.1, 0.1})));
+  // Exactly at the radius is not closer than it (the grid's lookup includes it; the
+  // test itself must not: a mutation run found nothing asking, #51).
+  CHECK_FALSE(world.collides(a.cube, box({1.0, 0, 0}, {0.1, 0.1, 0.1})));
   CHECK(world.collides(a.cube, box({-0.6, 0.6, 0.3}, {5, 5, 5})));  // sizes do not matter
 }
 
