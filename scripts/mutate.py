@@ -10,6 +10,10 @@ records the mutation as
   stillborn  the mutated source did not build (counted as killed, reported apart: it says
              nothing about the tests)
   survived   every test passed: nothing notices the change
+  equivalent survived, and its list line says why no test can notice it (its reason
+             starts with 'equivalent:', e.g. a check another check makes redundant); left
+             out of the kill rate, listed apart. Killed all the same, it counts as killed
+             and the report says the mark is wrong.
 
 and restores the file byte for byte before the next one. It never touches the checkout
 it was started from, nor its build/: other people edit and build there while a run takes
@@ -68,6 +72,10 @@ class Mutation:
 
     def where(self):
         return f"{self.list_file}:{self.list_line}"
+
+    def marked_equivalent(self):
+        # Its list says no test can tell it from the original (and why).
+        return self.why.lower().startswith("equivalent:")
 
 
 @dataclass
@@ -458,6 +466,10 @@ def run_area(area, ws, commands, keep_going, log):
             else:
                 outcome, detail = commands.test(area)
                 status = {"passed": "survived", "failed": "killed", "timeout": "timeout"}[outcome]
+                if status == "survived" and mutation.marked_equivalent():
+                    status = "equivalent"
+                elif status != "survived" and mutation.marked_equivalent():
+                    log(f"  note: {mutation.where()} is marked equivalent but was {status}: the mark is wrong")
         except KeyboardInterrupt:
             ws.interrupted_in = mutation.path
             raise
@@ -483,7 +495,7 @@ def result_entry(mutation, line, status, seconds, error):
 
 def tally(results):
     counts = {key: sum(1 for r in results if r["status"] == key)
-              for key in ("killed", "timeout", "stillborn", "survived", "invalid")}
+              for key in ("killed", "timeout", "stillborn", "survived", "equivalent", "invalid")}
     valid = sum(counts[k] for k in ("killed", "timeout", "stillborn", "survived"))
     detected = counts["killed"] + counts["timeout"] + counts["stillborn"]
     counts["kill_rate"] = round(100.0 * detected / valid, 1) if valid else None
@@ -493,20 +505,27 @@ def tally(results):
 def summary_text(report):
     lines = [f"mutation run of {report['commit']} ({report['jobs']} jobs)", ""]
     lines.append(f"{'area':24} {'killed':>6} {'timeout':>7} {'stillborn':>9} {'survived':>8} "
-                 f"{'invalid':>7} {'rate':>6} {'time':>8}")
+                 f"{'equivalent':>10} {'invalid':>7} {'rate':>6} {'time':>8}")
     for area in report["areas"]:
         if area.get("error"):
             lines.append(f"{area['area']:24} error: {area['error'].splitlines()[0]}")
             continue
         rate = "-" if area["kill_rate"] is None else f"{area['kill_rate']:.1f}%"
         lines.append(f"{area['area']:24} {area['killed']:>6} {area['timeout']:>7} "
-                     f"{area['stillborn']:>9} {area['survived']:>8} {area['invalid']:>7} "
+                     f"{area['stillborn']:>9} {area['survived']:>8} {area['equivalent']:>10} {area['invalid']:>7} "
                      f"{rate:>6} {area['seconds'] / 60:>6.1f} m")
     survivors = [(a["area"], r) for a in report["areas"] for r in a.get("results", [])
                  if r["status"] == "survived"]
     if survivors:
         lines += ["", "survivors (nothing notices these changes):"]
         for area, r in survivors:
+            lines.append(f"  {area}: {r['file']}:{r['line']}  {r['original']!r} -> "
+                         f"{r['replacement']!r}  ({r['why']})")
+    equivalents = [(a["area"], r) for a in report["areas"] for r in a.get("results", [])
+                   if r["status"] == "equivalent"]
+    if equivalents:
+        lines += ["", "equivalent (survived; left out of the rate, their lists say why):"]
+        for area, r in equivalents:
             lines.append(f"  {area}: {r['file']}:{r['line']}  {r['original']!r} -> "
                          f"{r['replacement']!r}  ({r['why']})")
     return "\n".join(lines) + "\n"

@@ -111,6 +111,27 @@ class MutateHarness(unittest.TestCase):
         with open(os.path.join(self.repo, "calc.py")) as f:
             self.assertEqual(f.read(), CALC)
 
+    def test_a_survivor_marked_equivalent_is_left_out_of_the_rate(self):
+        # The untested change marked equivalent: out of the rate; the tested one marked
+        # equivalent: killed all the same, and the mark called wrong.
+        marked = LIST.replace("the untested function changed: survives",
+                              "equivalent: nothing calls limit() in this fixture")
+        marked = marked.replace("the tested function changed: killed", "Equivalent: a wrong mark")
+        self.write("lists/demo.txt", marked)
+        report = os.path.join(self.tmp.name, "report.json")
+        result = self.run_mutate("--area", "demo", "--report", report)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        with open(report) as f:
+            area = json.load(f)["areas"][0]
+        self.assertEqual([r["status"] for r in area["results"]],
+                         ["killed", "equivalent", "stillborn", "timeout"])
+        self.assertEqual((area["survived"], area["equivalent"]), (0, 1))
+        self.assertEqual(area["kill_rate"], 100.0)  # 3 of the 3 that can be told apart
+        self.assertIn("demo.txt:5 is marked equivalent but was killed: the mark is wrong", result.stdout)
+        with open(os.path.splitext(report)[0] + ".txt") as f:
+            self.assertIn("equivalent (survived; left out of the rate", f.read())
+        self.assert_pristine()
+
     def test_a_fragment_found_zero_or_several_times_is_an_error(self):
         self.write("lists/demo.txt", LIST.replace("if x > 10:", "if x > 11:"))
         result = self.run_mutate("--area", "demo")
