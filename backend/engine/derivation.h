@@ -291,7 +291,8 @@ class Derivation final : public QueryHost {
 
   // parallel_rewriter.cpp
   void runParallel();
-  bool rewriteTemplatesConcurrently(const ModuleString& str, ModuleString& next);
+  bool rewriteTemplates(const ModuleString& str, ModuleString& next);
+  bool rewriteTemplatesOnThisThread(const ModuleString& str, ModuleString& next);
   void appendTemplate(const SuccessorTemplate& t, uint64_t key, ModuleString& out);
   void cutBranches(ModuleString& str);
   void copyModule(const ModuleString& str, size_t i, ModuleString& out);

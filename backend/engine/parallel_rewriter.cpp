@@ -16,8 +16,11 @@
 namespace fgsg::backend {
 namespace {
 
-// Strings shorter than this are rewritten on one thread; longer ones in chunks of this
-// size, concurrently.
+// Template steps of strings this long or longer are rewritten in chunks of kChunk
+// modules, concurrently; shorter ones in one pass on this thread, without TBB: on a
+// machine whose cores are shared, a worker descheduled in the middle of its chunk holds up
+// the whole step for a scheduler tick (4 ms), longer than such a step takes alone.
+constexpr size_t kConcurrentFrom = size_t(1) << 18;
 constexpr size_t kChunk = size_t(1) << 15;
 
 // Writes template t's modules at w (keys made from the rewritten module's `key`) and its
@@ -68,7 +71,7 @@ void Derivation::runParallel() {
   for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
     reserveForGrowth(next, str, growth, steps_ - 1 - step, opt_.maxShapes);
-    if (!rewriteTemplatesConcurrently(str, next)) {
+    if (!rewriteTemplates(str, next)) {
       next.clear();
       if (plan_.hasContext) linkBrackets(str);
       for (size_t i = 0; i < str.size(); ++i) {
@@ -133,13 +136,14 @@ void Derivation::appendTemplate(const SuccessorTemplate& t, uint64_t key, Module
   writeTemplate(t, key, out.modules.extend(t.ops.size()), out.args.extend(t.args.size()), base);
 }
 
-// A step of a grammar whose every rewriting symbol has a template, over chunks of the
-// string on all cores: the sizes each chunk writes are counted first, so every chunk
-// writes its part of `next` in place, and the result is the one-thread result. Returns
-// false (nothing written) where the one-thread loop must do the step: a short string,
-// or a limit reached during it.
-bool Derivation::rewriteTemplatesConcurrently(const ModuleString& str, ModuleString& next) {
-  if (!plan_.allTemplates || str.size() < 2 * kChunk) return false;
+// A step of a grammar whose every rewriting symbol has a template. A long string is
+// rewritten over chunks on all cores: the sizes each chunk writes are counted first, so
+// every chunk writes its part of `next` in place, and the result is the one-thread
+// result. Returns false (nothing written) where the general loop must do the step: a
+// limit reached during it.
+bool Derivation::rewriteTemplates(const ModuleString& str, ModuleString& next) {
+  if (!plan_.allTemplates) return false;
+  if (str.size() < kConcurrentFrom) return rewriteTemplatesOnThisThread(str, next);
   const size_t chunks = (str.size() + kChunk - 1) / kChunk;
   const size_t templates = plan_.templates.size();
   // Per chunk: modules and arguments written, then per template its uses.
@@ -192,6 +196,35 @@ bool Derivation::rewriteTemplatesConcurrently(const ModuleString& str, ModuleStr
       stats_.rewrites += uses;
       ruleUses_[plan_.templates[t].rule] += uses;
     }
+  return true;
+}
+
+// The same step in one pass, as the general loop does it but without its per-module
+// checks: the limits are asked once, before, and a string reaching --max-shapes is
+// dropped for the general loop to redo, stopping where it stops.
+bool Derivation::rewriteTemplatesOnThisThread(const ModuleString& str, ModuleString& next) {
+  if (limitsReached()) return false;
+  std::vector<uint64_t> uses(plan_.templates.size(), 0);
+  for (size_t i = 0; i < str.size(); ++i) {
+    const StringModule& mod = str.modules[i];
+    const StringOp& so = plan_[mod.op];
+    if (so.rewrite == Rewrite::Template) {
+      const SuccessorTemplate& t = plan_.templates[so.successor];
+      const uint32_t base = static_cast<uint32_t>(next.args.size());
+      writeTemplate(t, mod.key, next.modules.extend(t.ops.size()), next.args.extend(t.args.size()), base);
+      ++uses[so.successor];
+    } else {
+      copyModule(str, i, next);
+    }
+    if (next.size() >= opt_.maxShapes || next.args.size() >= UINT32_MAX) {
+      next.clear();
+      return false;
+    }
+  }
+  for (size_t t = 0; t < uses.size(); ++t) {
+    stats_.rewrites += uses[t];
+    ruleUses_[plan_.templates[t].rule] += uses[t];
+  }
   return true;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "ir/ir.h"
+#include "backend/engine/string_storage_pool.h"
 #include "ir/program_layout.h"
 #include "runtime/mesh_array.h"
 
@@ -30,7 +31,7 @@ static_assert(sizeof(StringModule) == 16);
 // writer fills a resized array in place. Its storage is rt::MeshArray's: from 4 MiB on,
 // asked for transparent huge pages, because the kernel's fault per fresh 4 KiB page was
 // most of a large step's time (a 25 MB string: 6 000 faults, each a trap to the
-// hypervisor on a VM).
+// hypervisor on a VM); large blocks are kept for the next derivation (StringStoragePool).
 template <typename T>
 class StringBuffer {
  public:
@@ -88,14 +89,15 @@ class StringBuffer {
     reallocate(cap);
   }
   void reallocate(size_t cap) {
-    T* bigger = static_cast<T*>(rt::allocateMeshStorage(cap * sizeof(T)));
+    size_t granted = 0;
+    T* bigger = static_cast<T*>(StringStoragePool::instance().take(cap * sizeof(T), granted));
     if (size_) std::memcpy(bigger, data_, size_ * sizeof(T));
     release();
     data_ = bigger;
-    capacity_ = cap;
+    capacity_ = granted / sizeof(T);
   }
   void release() noexcept {
-    if (data_) rt::freeMeshStorage(data_, capacity_ * sizeof(T));
+    if (data_) StringStoragePool::instance().giveBack(data_, capacity_ * sizeof(T));
     data_ = nullptr;
   }
 

@@ -1,8 +1,11 @@
 // A long string whose every rule is a fixed successor is rewritten in chunks on all
-// cores (backend/engine/parallel_rewriter.cpp: rewriteTemplatesConcurrently, from
-// 2 x 32 768 modules). The chunks' result must be the one-thread loop's, on any number of
-// threads. scripts/tsan.sh runs this under ThreadSanitizer (issue 52).
+// cores (backend/engine/parallel_rewriter.cpp: rewriteTemplates, from 2^18 modules), a
+// shorter one in one pass on the calling thread. Both must give the general one-thread
+// loop's result, on any number of threads. scripts/tsan.sh runs this under
+// ThreadSanitizer (issue 52).
 #include "derive_helpers.h"
+
+#include "backend/engine/string_storage_pool.h"
 
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
@@ -13,10 +16,10 @@ using fgsg::test::deriveText;
 namespace {
 
 // 3^n A's after n steps, each with kept, parameterized F's and bracketed turns beside it:
-// 3^n + 9 (3^n - 1) / 2 modules, 108 252 before the last of 10 steps, which is rewritten
-// in 4 chunks.
+// 3^n + 9 (3^n - 1) / 2 modules, 324 765 before the last of 11 steps, which is rewritten
+// in 10 chunks (the steps before it on the calling thread).
 const char* kTemplates = R"(
-  derive parallel 10;
+  derive parallel 11;
   turtle angle 25 width 0.01;
   axiom: A;
   A -> F(0.5) [ + A ] [ - F(0.25) A ] F(0.75) A;
@@ -36,8 +39,8 @@ rt::DeriveResult onThreads(int threads, const std::string& grammar) {
 TEST_CASE("A long string rewritten in chunks on many threads is the one-thread rewrite", "[lsystem][parallel]") {
   const rt::DeriveResult loop = onThreads(1, oneThreadLoop());
   REQUIRE(loop.ok);
-  REQUIRE(loop.stats.stringLength == 324765);
-  REQUIRE(loop.instances.instances.size() == 88572);  // 3 F's per rewrite
+  REQUIRE(loop.stats.stringLength == 974304);
+  REQUIRE(loop.instances.instances.size() == 265719);  // 3 F's per rewrite, (3^11 - 1) / 2 rewrites
   for (int threads : {1, 2, 4}) {
     INFO(threads << " threads");
     const rt::DeriveResult chunks = onThreads(threads, kTemplates);
@@ -50,4 +53,60 @@ TEST_CASE("A long string rewritten in chunks on many threads is the one-thread r
       differ += chunks.instances.instances[i].transform != loop.instances.instances[i].transform;
     CHECK(differ == 0);
   }
+}
+
+// Large string buffers are kept for the next derivation: a block given back is handed out
+// again for any request it holds, the smallest that fits first; small blocks and blocks
+// past the 128 MiB cap are not kept.
+TEST_CASE("String storage is kept between derivations, two large blocks within 128 MiB", "[lsystem][parallel]") {
+  constexpr size_t MiB = size_t(1) << 20;
+  backend::StringStoragePool pool;
+  size_t granted = 0;
+  void* small = pool.take(MiB, granted);
+  CHECK(granted == MiB);
+  pool.giveBack(small, MiB);
+  void* a = pool.take(8 * MiB, granted);
+  void* b = pool.take(20 * MiB, granted);
+  CHECK(granted == 20 * MiB);
+  pool.giveBack(a, 8 * MiB);
+  pool.giveBack(b, 20 * MiB);
+  void* again = pool.take(5 * MiB, granted);  // the smaller kept block fits
+  CHECK(again == a);
+  CHECK(granted == 8 * MiB);
+  void* big = pool.take(10 * MiB, granted);
+  CHECK(big == b);
+  CHECK(granted == 20 * MiB);
+  void* fresh = pool.take(10 * MiB, granted);  // none kept now
+  CHECK(fresh != a);
+  CHECK(fresh != b);
+  CHECK(granted == 10 * MiB);
+  pool.giveBack(again, 8 * MiB);
+  pool.giveBack(big, 20 * MiB);
+  pool.giveBack(fresh, 10 * MiB);  // replaces the 8 MiB block, the smaller one
+  CHECK(pool.take(9 * MiB, granted) == fresh);
+  CHECK(granted == 10 * MiB);
+  pool.giveBack(fresh, 10 * MiB);
+  void* huge = pool.take(120 * MiB, granted);  // 20 + 120 MiB would pass the cap
+  pool.giveBack(huge, 120 * MiB);
+  void* notKept = pool.take(100 * MiB, granted);
+  CHECK(granted == 100 * MiB);  // not the 120 MiB block
+  pool.giveBack(notKept, 100 * MiB);
+}
+
+// A derivation run again after another (reusing its storage, not cleared) gives the
+// same string and drawing.
+TEST_CASE("A template L-system derived again on kept string storage is the same", "[lsystem][parallel]") {
+  const rt::DeriveResult first = deriveText(kTemplates);
+  const rt::DeriveResult other = deriveText(oneThreadLoop());
+  const rt::DeriveResult again = deriveText(kTemplates);
+  REQUIRE(first.ok);
+  REQUIRE(again.ok);
+  CHECK(again.stats.stringLength == 974304);
+  CHECK(again.stats.rewrites == first.stats.rewrites);
+  REQUIRE(again.instances.instances.size() == first.instances.instances.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < first.instances.instances.size(); ++i)
+    differ += again.instances.instances[i].transform != first.instances.instances[i].transform ||
+              again.instances.instances[i].transform != other.instances.instances[i].transform;
+  CHECK(differ == 0);
 }
