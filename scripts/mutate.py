@@ -318,9 +318,10 @@ def write_atomically(path, data):
 
 # ---------------------------------------------------------------- build and tests
 
-# Ignored test inputs that some tests read when present (scripts/fetch-test-meshes.sh);
-# the worktree links to the checkout's copy instead of fetching them again.
-SHARED_IGNORED_DATA = ["tests/data/meshes"]
+# Ignored test inputs and tools that tests need (scripts/fetch-test-meshes.sh, the glTF
+# validator of scripts/install-node-packages.sh); the worktree links to the checkout's copy
+# instead of installing them again.
+SHARED_IGNORED_DATA = ["tests/data/meshes", "tools/node"]
 
 
 class Commands:

@@ -128,7 +128,7 @@ void requireValidGltf(const fs::path& file) {
   const fs::path root = FGSG_SOURCE_DIR;
   const fs::path validator = root / "tools/node/node_modules/gltf-validator";
   if (!fs::exists(validator))
-    FAIL("the glTF validator is not installed: run scripts/install-gltf-validator.sh (it installs "
+    FAIL("the glTF validator is not installed: run scripts/install-node-packages.sh (it installs "
          "gltf-validator into tools/node/)");
   const fs::path report = file.string() + ".report.txt";
   const std::string cmd = "node '" + (root / "scripts/validate-gltf.js").string() + "' --strict '" +
