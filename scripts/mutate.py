@@ -344,6 +344,7 @@ class Commands:
             source = os.path.join(self.ws.repo, relative)
             link = os.path.join(self.ws.worktree, relative)
             if os.path.isdir(source) and not os.path.lexists(link):
+                os.makedirs(os.path.dirname(link), exist_ok=True)  # tools/ is ignored, not in the worktree
                 os.symlink(source, link)
         if os.path.exists(os.path.join(self.ws.build, "build.ninja")):
             return
