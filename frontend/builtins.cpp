@@ -47,17 +47,19 @@ const CommandInfo kCommands[] = {
      "Material(\"roughness\" or \"metallic\" or \"opacity\" or \"color.r\" or \"color.g\" or \"color.b\", value) or "
      "Material(\"normalmap\", \"image.png\")",
      nullptr},
-    // CGA's uv operations on the scope's texture projection (uv set 0), in ir::UvOp's order.
-    {CommandId::UvOperation, "SetupProjection", 3, 3, BodyRule::None,
-     "SetupProjection(\"xy\" or \"xz\" or \"yz\" or \"yx\" or \"zx\" or \"zy\", tileWidth, tileHeight)", nullptr},
-    {CommandId::UvOperation, "ScaleUV", 2, 2, BodyRule::None, "ScaleUV(uFactor, vFactor)", nullptr},
-    {CommandId::UvOperation, "TranslateUV", 2, 2, BodyRule::None, "TranslateUV(uOffset, vOffset)", nullptr},
-    {CommandId::UvOperation, "RotateUV", 1, 1, BodyRule::None, "RotateUV(degrees)", nullptr},
-    {CommandId::UvOperation, "TileUV", 2, 2, BodyRule::None, "TileUV(tileWidth, tileHeight)", nullptr},
-    {CommandId::UvOperation, "NormalizeUV", 1, 1, BodyRule::None,
-     "NormalizeUV(\"uv\" or \"uvUniform\" or \"u\" or \"v\")", nullptr},
-    {CommandId::UvOperation, "DeleteUV", 0, 0, BodyRule::None, "DeleteUV()", nullptr},
-    {CommandId::UvOperation, "ProjectUV", 0, 0, BodyRule::None, "ProjectUV()", nullptr},
+    // CGA's uv operations on the scope's texture projection, in ir::UvOp's order; the last
+    // argument may name the uv set (0..9, CityEngine's texture layers; without it 0).
+    {CommandId::UvOperation, "SetupProjection", 3, 4, BodyRule::None,
+     "SetupProjection(\"xy\" or \"xz\" or \"yz\" or \"yx\" or \"zx\" or \"zy\", tileWidth, tileHeight, uvSet?)", nullptr},
+    {CommandId::UvOperation, "ScaleUV", 2, 3, BodyRule::None, "ScaleUV(uFactor, vFactor, uvSet?)", nullptr},
+    {CommandId::UvOperation, "TranslateUV", 2, 3, BodyRule::None, "TranslateUV(uOffset, vOffset, uvSet?)", nullptr},
+    {CommandId::UvOperation, "RotateUV", 1, 2, BodyRule::None, "RotateUV(degrees, uvSet?)", nullptr},
+    {CommandId::UvOperation, "TileUV", 2, 3, BodyRule::None, "TileUV(tileWidth, tileHeight, uvSet?)", nullptr},
+    {CommandId::UvOperation, "NormalizeUV", 1, 2, BodyRule::None,
+     "NormalizeUV(\"uv\" or \"uvUniform\" or \"u\" or \"v\", uvSet?)", nullptr},
+    {CommandId::UvOperation, "DeleteUV", 0, 1, BodyRule::None, "DeleteUV(uvSet?)", nullptr},
+    {CommandId::UvOperation, "ProjectUV", 0, 1, BodyRule::None, "ProjectUV(uvSet?)", nullptr},
+    {CommandId::UvOperation, "CopyUV", 2, 2, BodyRule::None, "CopyUV(sourceUvSet, destinationUvSet)", nullptr},
     {CommandId::Lock, "Lock", 0, 0, BodyRule::AtLeastOne, "Lock{ A | B | ... }", nullptr},
     {CommandId::Forward, "F", 0, 1, BodyRule::None, "F(length)", nullptr},
     {CommandId::Move, "f", 0, 1, BodyRule::None, "f(length)", nullptr},
@@ -169,8 +171,8 @@ int materialProperty(const std::string& name) {
 }
 
 int uvOperation(const std::string& name) {
-  static const char* const kNames[] = {"SetupProjection", "ScaleUV",     "TranslateUV", "RotateUV",
-                                       "TileUV",          "NormalizeUV", "DeleteUV",    "ProjectUV"};
+  static const char* const kNames[] = {"SetupProjection", "ScaleUV",  "TranslateUV", "RotateUV", "TileUV",
+                                       "NormalizeUV",     "DeleteUV", "ProjectUV",   "CopyUV"};
   for (size_t k = 0; k < std::size(kNames); ++k)
     if (name == kNames[k]) return static_cast<int>(k);
   return -1;

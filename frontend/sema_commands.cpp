@@ -9,6 +9,7 @@
 #include "frontend/shape_operations.h"
 #include "runtime/synthesis/continuous/example_file.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -180,6 +181,24 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
     }
     case CommandId::UvOperation: {
       const int uv = uvOperation(item.name);
+      // The arguments past the operation's own name uv sets: CopyUV's two, the others' optional last.
+      static const int kOwnArgs[] = {3, 2, 2, 1, 2, 1, 0, 0, 0};
+      const int own = kOwnArgs[uv];
+      for (int k = own; k < n; ++k) {
+        // Written as a number: the set is known when the grammar is compiled (ir::Op::uvSet).
+        const Expr& set = *item.args[k];
+        const bool number = set.kind == ExprKind::Number;
+        if (!number || !(set.number >= 0 && set.number <= 9) || set.number != std::floor(set.number)) {
+          diags_.error("E028", set.range,
+                       "a uv set is a whole number from 0 to 9 (CityEngine's texture layers), written as one" +
+                           (number ? ", not " + formatNumber(set.number) : std::string()) + ": " + cmd.signature);
+          return;
+        }
+        res_.exprTypes[item.args[k].get()] = ValueType::Num;
+      }
+      const auto ownNumArgs = [&](int from, bool sizes) {
+        for (int k = from; k < std::min(n, own); ++k) expect(*item.args[k], w.operand(sizes), ValueType::Num, "this argument");
+      };
       if (uv == 0) {  // SetupProjection("xz", w, h)
         const std::string axes = stringArg(0, "axes");
         static const std::set<std::string> kAxes = {"xy", "xz", "yz", "yx", "zx", "zy"};
@@ -188,14 +207,14 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
           diags_.error("E028", item.args[0]->range,
                        "SetupProjection's axes are two of the scope's: \"xy\", \"xz\", \"yz\", \"yx\", \"zx\" or "
                        "\"zy\" (or the world's: \"world.xz\" ...), not \"" + axes + "\"");
-        numArgs(1, true);
+        ownNumArgs(1, true);
       } else if (uv == 5) {  // NormalizeUV("uv")
         const std::string mode = stringArg(0, "mode");
         if (stringOk && mode != "uv" && mode != "uvUniform" && mode != "u" && mode != "v")
           diags_.error("E028", item.args[0]->range,
                        "NormalizeUV's mode is \"uv\", \"uvUniform\", \"u\" or \"v\", not \"" + mode + "\"");
       } else {
-        numArgs(0, uv == 4);  // TileUV's sizes may be relative (1r) or floating (~2)
+        ownNumArgs(0, uv == 4);  // TileUV's sizes may be relative (1r) or floating (~2)
       }
       break;
     }

@@ -153,9 +153,10 @@ enum class OpKind : uint8_t {
   Label,         // args[0] the label (Str): CGA's label(), the shape a labelled context shape
   Material,      // index = MaterialProperty; args[0] its value (a number), or str = the image (the maps): the
                  // material of the instances placed from this scope on (backend/commands/texture_commands.h)
-  Uv,            // index = UvOp: CGA's uv operations on the scope's texture projection (uv set 0); Setup: str =
+  Uv,            // index = UvOp: CGA's uv operations on the scope's projection of uv set `uvSet`; Setup: str =
                  // the axes ("xz"), sizes the tile width and height; Tile: sizes; Normalize: str = the mode;
-                 // Scale / Translate: args u, v; Rotate: args[0] degrees; Delete / Project: no arguments
+                 // Scale / Translate: args u, v; Rotate: args[0] degrees; Delete / Project: no arguments;
+                 // Copy: args[0] the source set (a constant 0..9)
   Unsupported,   // a construct whose runtime arrives later: `name`, its issue in `why`
 };
 
@@ -175,7 +176,9 @@ enum class InsertFit : uint8_t { AlignSizeAndPosition, KeepSizeAndPosition, Keep
 enum class MaterialProperty : uint8_t { Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, NormalMap, ColorMap };
 
 // CGA's uv operations (frontend::uvOperation's commands, in this order).
-enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize, Delete, Project };
+enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize, Delete, Project, Copy };
+// CityEngine's uv sets 0..9 (0 the colour map's, 5 the normal map's).
+inline constexpr uint32_t kUvSets = 10;
 
 enum class TurtleOp : uint8_t {
   Forward,     // F(l): draw a segment and move
@@ -233,6 +236,8 @@ struct Op {
   // degrees about X before it is fitted (runtime/insert_fit.h).
   InsertFit insertFit = InsertFit::AlignSizeAndPosition;
   bool zUp = false;
+  // Uv: CGA's uv set (texture layer, 0..9) the operation acts on; Copy: the set copied into.
+  uint8_t uvSet = 0;
   // Instance: the symbol the instance is recorded under (a .cga leaf after the insert,
   // `i("tree.obj") Tree.`), without parameters; kPlacingSymbol: the shape that places it.
   static constexpr uint32_t kPlacingSymbol = UINT32_MAX;

@@ -439,11 +439,16 @@ class Lowerer {
         op.kind = OpKind::Uv;
         op.index = static_cast<uint32_t>(frontend::uvOperation(item.name));
         const auto uv = static_cast<UvOp>(op.index);
+        // The uv set, a number 0..9 (sema checks it): the optional argument after the
+        // operation's own, CopyUV's second (its first, the source, stays an argument).
+        static const size_t kOwnArgs[] = {3, 2, 2, 1, 2, 1, 0, 0, 1};
+        const size_t own = std::min(item.args.size(), kOwnArgs[op.index]);
+        if (item.args.size() > own) op.uvSet = static_cast<uint8_t>(item.args.back()->number);
         if (uv == UvOp::Setup || uv == UvOp::Normalize) op.str = m_.internString(constString(*item.args[0]));
         if (uv == UvOp::Setup || uv == UvOp::Tile)
-          for (size_t k = uv == UvOp::Setup ? 1 : 0; k < item.args.size(); ++k) op.sizes.push_back(size(*item.args[k]));
+          for (size_t k = uv == UvOp::Setup ? 1 : 0; k < own; ++k) op.sizes.push_back(size(*item.args[k]));
         else if (uv != UvOp::Normalize)
-          allArgs(0);
+          for (size_t k = 0; k < own; ++k) op.args.push_back(expr(*item.args[k]));
         break;
       }
       case CommandId::Center:

@@ -440,8 +440,11 @@ class Printer {
         break;
       }
       case OpKind::Uv: {
-        static const char* const kUvOps[] = {"setup", "scale", "translate", "rotate", "tile", "normalize", "delete", "project"};
-        text = withArgs(std::string("uv ") + (op.index < std::size(kUvOps) ? kUvOps[op.index] : "op?"));
+        static const char* const kUvOps[] = {"setup",     "scale",  "translate", "rotate", "tile",
+                                             "normalize", "delete", "project",   "copy"};
+        // The set only where it is not 0: the text of grammars on set 0 stays as it was.
+        text = withArgs(std::string("uv ") + (op.index < std::size(kUvOps) ? kUvOps[op.index] : "op?") +
+                        (op.uvSet ? " set " + std::to_string(op.uvSet) : std::string()));
         if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) text += " " + stringLit(op.str);
         if (!op.sizes.empty()) text += " " + sizeList(r, op.sizes);
         break;

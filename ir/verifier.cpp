@@ -541,7 +541,9 @@ class Verifier {
         break;
       case OpKind::Uv:
         expectBodies(op, 0);
-        if (op.index > uint32_t(UvOp::Project)) problem("uv operation " + std::to_string(op.index));
+        if (op.index > uint32_t(UvOp::Copy)) problem("uv operation " + std::to_string(op.index));
+        if (op.uvSet >= kUvSets) problem("uv set " + std::to_string(op.uvSet));
+        if (op.index == uint32_t(UvOp::Copy)) numArgs(op, r, 1);
         if (op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Normalize)) stringId(op.str);
         if ((op.index == uint32_t(UvOp::Setup) || op.index == uint32_t(UvOp::Tile)) && op.sizes.size() != 2)
           problem("uv sizes " + std::to_string(op.sizes.size()));

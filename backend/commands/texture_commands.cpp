@@ -83,11 +83,20 @@ uint32_t TextureCommands::addProjection(const rt::cga::UvProjection& p) {
   return static_cast<uint32_t>(projections_.size());
 }
 
+uint32_t TextureCommands::withProjection(uint32_t scopeProjection, uint32_t set, uint32_t projection) {
+  UvLayout layout{};
+  if (scopeProjection) layout = layouts_[scopeProjection - 1];
+  layout[set] = projection;
+  if (std::all_of(layout.begin(), layout.end(), [](uint32_t p) { return p == 0; })) return 0;
+  layouts_.push_back(layout);
+  return static_cast<uint32_t>(layouts_.size());
+}
+
 void TextureCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec&, Frame&) {
   if (op.kind == ir::OpKind::Material) return material(op, a, st);
   if (op.kind == ir::OpKind::Uv) return uv(op, a, st);
   if (textureOf_.at(op.str) == kUnresolved) {  // Texture("none")
-    st.scope.projection = 0;
+    st.scope.projection = withProjection(st.scope.projection, 0, 0);
     return;
   }
   const double width = n >= 2 ? a[0] : 0, height = n >= 2 ? a[1] : 0;
@@ -95,7 +104,8 @@ void TextureCommands::apply(const ir::Op& op, const double* a, uint32_t n, State
     if (!std::isfinite(size) || size < 0 || (n >= 2 && size == 0))
       throw DeriveError{op.loc, "R027",
                         "Texture: a tile size must be a positive number of metres, not " + std::to_string(size)};
-  st.scope.projection = addProjection(rt::cga::projectionAt(st.scope, width, height, textureOf_.at(op.str)));
+  st.scope.projection =
+      withProjection(st.scope.projection, 0, addProjection(rt::cga::projectionAt(st.scope, width, height, textureOf_.at(op.str))));
 }
 
 // CGA's material attributes. Numbers are clamped to 0..1 as Color's are; a colour
@@ -105,14 +115,14 @@ void TextureCommands::material(const ir::Op& op, const double* a, State& st) {
   using P = ir::MaterialProperty;
   if (property == P::ColorMap) {
     // texture(): the image of the scope's projection, its frame kept; none yet: one over the scope.
-    const uint32_t image = textureOf_.at(op.str);
-    if (st.scope.projection) {
-      rt::cga::UvProjection p = projection(st.scope.projection);
-      if (!p.setup) p.setup = st.scope.projection;
+    const uint32_t image = textureOf_.at(op.str), current = projectionIndex(st.scope.projection, 0);
+    if (current) {
+      rt::cga::UvProjection p = projections_[current - 1];
+      if (!p.setup) p.setup = current;
       p.texture = image == kUnresolved ? rt::cga::UvProjection::kNoImage : image;
-      st.scope.projection = addProjection(p);
+      st.scope.projection = withProjection(st.scope.projection, 0, addProjection(p));
     } else if (image != kUnresolved) {
-      st.scope.projection = addProjection(rt::cga::projectionAt(st.scope, 0, 0, image));
+      st.scope.projection = withProjection(st.scope.projection, 0, addProjection(rt::cga::projectionAt(st.scope, 0, 0, image)));
     }
     return;
   }
@@ -137,13 +147,31 @@ void TextureCommands::material(const ir::Op& op, const double* a, State& st) {
   st.scope.finish = internFinish(f);
 }
 
-// CGA's uv operations, on uv set 0: the scope's projection (and so its leaves' texture
-// coordinates) replaced by one made from it. Without a projection, or after deleteUV, only
-// setupProjection (and projectUV after deleteUV) does something, as CityEngine's operations
-// need projected coordinates.
+// CGA's uv operations, on the op's uv set: the scope's projection of that set (and so, for
+// set 0, its leaves' texture coordinates) replaced by one made from it. Without a
+// projection, or after deleteUV, only setupProjection (and projectUV after deleteUV) does
+// something, as CityEngine's operations need projected coordinates. The image a
+// projection carries is set 0's (the colour map's): a set's own stays with it.
 void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
   const auto kind = static_cast<ir::UvOp>(op.index);
   const rt::Scope& s = st.scope;
+  const uint32_t set = op.uvSet, current = projectionIndex(s.projection, set);
+  const auto replace = [&](const rt::cga::UvProjection& p) {
+    st.scope.projection = withProjection(s.projection, set, addProjection(p));
+  };
+  if (kind == ir::UvOp::Copy) {
+    // copyUV(source, set): the set's coordinates become the source's (none: none), its image kept.
+    const double source = finiteArg(a[0], op, "the source uv set");
+    const uint32_t from = projectionIndex(s.projection, uint32_t(source));
+    if (from == current) return;
+    if (!from) {
+      st.scope.projection = withProjection(s.projection, set, 0);
+      return;
+    }
+    rt::cga::UvProjection p = projections_[from - 1];
+    p.texture = current ? projections_[current - 1].texture : rt::cga::UvProjection::kNoImage;
+    return replace(p);
+  }
   if (kind == ir::UvOp::Setup) {
     // The scope's origin and the two of its axes the words name (u, v), or the world's
     // ("world.xz"); their cross product third. Relative and floating sizes measure the
@@ -164,24 +192,22 @@ void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
     if (p.tileWidth == 0 || p.tileHeight == 0)
       throw DeriveError{op.loc, "R027", op.name + ": a tile size of 0 (CGA's texture sizes may be negative, which mirrors, but not 0)"};
     p.planar = true;
-    p.texture = s.projection ? projection(s.projection).texture : rt::cga::UvProjection::kNoImage;
-    st.scope.projection = addProjection(p);
-    return;
+    p.texture = current ? projections_[current - 1].texture : rt::cga::UvProjection::kNoImage;
+    return replace(p);
   }
-  if (!s.projection) return;
-  rt::cga::UvProjection p = projection(s.projection);
+  if (!current) return;
+  rt::cga::UvProjection p = projections_[current - 1];
   if (kind == ir::UvOp::Project) {
     // fgsg projects at output: only coordinates deleteUV removed need projecting again,
     // from the setup (with the image the shape has now).
     if (p.coordinates) return;
-    rt::cga::UvProjection again = projection(p.setup);
+    rt::cga::UvProjection again = projections_[p.setup - 1];
     again.texture = p.texture;
     again.setup = p.setup;
-    st.scope.projection = addProjection(again);
-    return;
+    return replace(again);
   }
   if (!p.coordinates) return;
-  if (!p.setup) p.setup = s.projection;
+  if (!p.setup) p.setup = current;
   std::array<double, 6> m{1, 0, 0, 0, 1, 0};
   switch (kind) {
     case ir::UvOp::Scale:
@@ -228,7 +254,7 @@ void TextureCommands::uv(const ir::Op& op, const double* a, State& st) {
     case ir::UvOp::Delete: p.coordinates = false; break;
     default: break;
   }
-  st.scope.projection = addProjection(p);
+  replace(p);
 }
 
 }  // namespace fgsg::backend

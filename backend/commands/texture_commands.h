@@ -7,13 +7,15 @@
 // The same family applies CGA's material attributes (Material: roughness, metallic,
 // opacity, the colour's components, the normal and colour maps; the scope's `finish`)
 // and its uv operations (Uv: setupProjection, scaleUV, translateUV, rotateUV, tileUV,
-// normalizeUV, each a new projection made from the scope's).
+// normalizeUV, each a new projection made from the scope's) on CityEngine's uv sets 0..9:
+// the shapes carry a projection per set; the leaves are textured by set 0's.
 #pragma once
 
 #include "backend/commands/command_family.h"
 #include "runtime/cga/uv_projection.h"
 #include "runtime/instances.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <tuple>
@@ -39,9 +41,10 @@ class TextureCommands final : public CommandFamily {
 
   // The images' paths, numbered as Instance::texture counts them.
   const std::vector<std::string>& paths() const { return paths_; }
-  // The projection a scope's `projection` (non-zero) names.
-  const rt::cga::UvProjection& projection(uint32_t scopeProjection) const {
-    return projections_[scopeProjection - 1];
+  // The projection of uv set `set` (0..9) a scope's `projection` names; null: the set has none.
+  const rt::cga::UvProjection* projection(uint32_t scopeProjection, uint32_t set = 0) const {
+    const uint32_t p = projectionIndex(scopeProjection, set);
+    return p ? &projections_[p - 1] : nullptr;
   }
   // The finishes a scope's `finish` (1 + index) names, and the one for `f` (0: the default).
   const std::vector<rt::Finish>& finishes() const { return finishes_; }
@@ -52,11 +55,20 @@ class TextureCommands final : public CommandFamily {
   void material(const ir::Op& op, const double* a, State& st);
   void uv(const ir::Op& op, const double* a, State& st);
   uint32_t addProjection(const rt::cga::UvProjection& p);
+  // A scope's `projection` is 1 + the index of its uv sets' layout (0: no set has one);
+  // a layout holds, per uv set, 1 + the index of its projection (0: none).
+  using UvLayout = std::array<uint32_t, ir::kUvSets>;
+  uint32_t projectionIndex(uint32_t scopeProjection, uint32_t set) const {
+    return scopeProjection ? layouts_[scopeProjection - 1][set] : 0;
+  }
+  // The scope's `projection` with set `set`'s projection (1 + index; 0: none) replaced.
+  uint32_t withProjection(uint32_t scopeProjection, uint32_t set, uint32_t projection);
 
   std::vector<std::string> paths_;
   std::vector<uint32_t> textureOf_;  // per module string id: its index in paths_ (Texture's file)
   const std::vector<std::string>* strings_ = nullptr;  // the module's (Uv's axes and modes)
   std::vector<rt::cga::UvProjection> projections_;
+  std::vector<UvLayout> layouts_;
   std::vector<rt::Finish> finishes_;
   std::map<std::tuple<float, float, float, uint32_t>, uint32_t> finishIndex_;
   static inline const rt::Finish kDefault_{};

@@ -149,8 +149,9 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   // An asset with texture coordinates of its own draws the image of a Texture above it,
   // and one with images of its own keeps them; either untinted unless Color says.
   if (asset < assetHasTexcoords_.size()) {
-    const bool textured = scope.projection && assetHasTexcoords_[asset] && textures_.projection(scope.projection).draws();
-    if (textured) inst.texture = textures_.projection(scope.projection).texture;
+    const rt::cga::UvProjection* projection = textures_.projection(scope.projection);
+    const bool textured = projection && assetHasTexcoords_[asset] && projection->draws();
+    if (textured) inst.texture = projection->texture;
     if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
@@ -175,9 +176,8 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
 void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
   const uint32_t slots = m_.symbols[symbol].slotCount;
   // (A projection without an image yet, from setupProjection, or after deleteUV draws nothing.)
-  const rt::cga::UvProjection* projection =
-      st.scope.projection && textures_.projection(st.scope.projection).draws() ? &textures_.projection(st.scope.projection)
-                                                                               : nullptr;
+  const rt::cga::UvProjection* projection = textures_.projection(st.scope.projection);
+  if (projection && !projection->draws()) projection = nullptr;
   // The commonest untextured leaves share a built-in mesh over their scope: a whole box is
   // the cube, a rectangle (a facade's split piece) the quad. Other shapes build their own.
   if (!projection && st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)

@@ -49,9 +49,9 @@ double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomR
   if (q == ir::Query::GeometryDu || q == ir::Query::GeometryDv) {
     // Without a projection (setupProjection, texture), or after deleteUV, the geometry has
     // no texture coordinates.
-    if (scope.projection == 0 || !textures_.projection(scope.projection).coordinates) return 0.0;
-    const std::array<double, 2> spread =
-        rt::cga::geometryUvSpread(scope, geom, arena_, textures_.projection(scope.projection));
+    const rt::cga::UvProjection* projection = textures_.projection(scope.projection);
+    if (!projection || !projection->coordinates) return 0.0;
+    const std::array<double, 2> spread = rt::cga::geometryUvSpread(scope, geom, arena_, *projection);
     return spread[q == ir::Query::GeometryDu ? 0 : 1];
   }
   if (q == ir::Query::GeometryAngle)  // arg: the selector, the query's extra

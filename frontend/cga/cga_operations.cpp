@@ -36,6 +36,7 @@
 #include "frontend/did_you_mean.h"
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 namespace fgsg::frontend::cga {
@@ -949,11 +950,12 @@ void Translator::materialItem(P::CallOperationContext* op, const std::string& pr
   seq.out.items.push_back(std::move(item));
 }
 
-// CGA's uv operations on uv set 0 (other sets are E801): setupProjection(0, scope.xz, w, h)
+// CGA's uv operations on uv sets 0..9: setupProjection(0, scope.xz, w, h)
 // SetupProjection("xz", w, h), tileUV TileUV, scaleUV ScaleUV, translateUV TranslateUV,
 // rotateUV RotateUV, normalizeUV(0, mode, collectiveAllFaces) NormalizeUV(mode);
 // projectUV(0) ProjectUV (which only matters after deleteUV: the projection applies to the
-// leaves below it when they are output), deleteUV(0) DeleteUV; copyUV(0, 0) does nothing. A relative size `'x` is x times the scope's size along the axis (setupProjection)
+// leaves below it when they are output), deleteUV(0) DeleteUV; copyUV(s, d) CopyUV(s, d)
+// (nothing where s = d). A set other than 0 is the fgsg command's last argument. A relative size `'x` is x times the scope's size along the axis (setupProjection)
 // or the shape's extent in the projection (tileUV); `~w` a floating size.
 void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequence& seq) {
   const std::string name = op->name->getText();
@@ -969,7 +971,7 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
       {"setupProjection", "SetupProjection", 4, "4 arguments (uvSet, scope.xy, textureWidth, textureHeight)"},
       {"projectUV", "ProjectUV", 1, "1 argument (the uv set)"},
       {"deleteUV", "DeleteUV", 1, "1 argument (the uv set)"},
-      {"copyUV", "", 2, "2 arguments (uvSetSource, uvSetDest)"},
+      {"copyUV", "CopyUV", 2, "2 arguments (uvSetSource, uvSetDest)"},
       {"tileUV", "TileUV", 3, "3 arguments (uvSet, textureWidth, textureHeight)"},
       {"scaleUV", "ScaleUV", 3, "3 arguments (uvSet, uFactor, vFactor)"},
       {"translateUV", "TranslateUV", 3, "3 arguments (uvSet, uOffset, vOffset)"},
@@ -986,12 +988,27 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
     error("E016", rangeOf(op->name), "'" + name + "' takes " + form->forms + ", got " + std::to_string(argCtx.size()));
     return;
   }
-  for (size_t k = 0; k < (name == "copyUV" ? 2u : 1u); ++k)
-    if (argCtx[k]->getText() != "0") {
-      notSupported(rangeOf(argCtx[k]), "uv set " + argCtx[k]->getText() + " (fgsg has uv set 0 only, the colour map's)");
+  ExprPtr sets[2];
+  for (size_t k = 0; k < (name == "copyUV" ? 2u : 1u); ++k) {
+    sets[k] = expr(argCtx[k], env);
+    if (!sets[k]) return;
+    const double n = sets[k]->number;
+    if (sets[k]->kind != ExprKind::Number || !(n >= 0 && n <= 9) || n != std::floor(n)) {
+      error("E028", rangeOf(argCtx[k]), "a uv set is a whole number from 0 to 9 (CityEngine's texture layers), not '" +
+                                            argCtx[k]->getText() + "'");
       return;
     }
-  if (!*form->fgsg) return;  // copyUV(0, 0): the set onto itself
+  }
+  if (name == "copyUV") {
+    if (sets[0]->number == sets[1]->number) return;  // the set onto itself
+    Item item = command("CopyUV", at);
+    item.args.push_back(std::move(sets[0]));
+    item.args.push_back(std::move(sets[1]));
+    seq.out.items.push_back(std::move(item));
+    return;
+  }
+  // Set 0 as the command's default: a grammar on set 0 lowers as it did before sets.
+  ExprPtr set = sets[0]->number != 0 ? std::move(sets[0]) : nullptr;
   Item item = command(form->fgsg, at);
   size_t first = 1;
   if (name == "setupProjection") {
@@ -1024,6 +1041,7 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
       return;
     }
     item.args.push_back(stringExpr(mode, rangeOf(argCtx[1])));
+    if (set) item.args.push_back(std::move(set));
     seq.out.items.push_back(std::move(item));
     return;
   }
@@ -1039,6 +1057,7 @@ void Translator::uvOperation(P::CallOperationContext* op, const Env& env, Sequen
     if (!v) return;
     item.args.push_back(std::move(v));
   }
+  if (set) item.args.push_back(std::move(set));
   seq.out.items.push_back(std::move(item));
 }
 

@@ -2,8 +2,8 @@
 """CGA's materials and uv operations (issue #44) read back from the glTF scenes fgsg writes.
 
 run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10,
-uv_operations.cga / uv_operations.fgsg and uv_delete.cga / uv_delete.fgsg on
-lots/street40x12 and uv_world.cga /
+uv_operations.cga / uv_operations.fgsg, uv_delete.cga / uv_delete.fgsg and uv_sets.cga /
+uv_sets.fgsg on lots/street40x12 and uv_world.cga /
 uv_world.fgsg on lots/square10 (tests/cga/corpus/lots), each
 with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --group-by
 symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
@@ -49,26 +49,47 @@ UV_RANGES = {
     "D3": (0, 2, 0, 6),
     "D4": (0, 4, 0, 18),
     "D6": (0, 2, 0, 6),
+    "S1": (0, 2, 0, 12),
+    "S2": (0, 2, 0, 6),
+    "S3": (0, 4, 0, 18),
+    "S4": (0.5, 2.5, -1, 5),
+    "S5": (0, 2, 0, 6),
+    "S6": (0, 4, 0, 12),
+    "S8": (0, 4, 0, 4),
+    "S9": (0, 1, 0, 6),
+    "S10": (0, 2, 0, 6),
 }
 # Leaves whose coordinates deleteUV removed: no TEXCOORD_0, no image, no `vt` in the OBJ.
 NO_UV = ("D1", "D5")
+# uv_sets' leaf whose set 0 an empty set was copied over: no TEXCOORD_0, no image.
+NO_UV_SETS = ("S7",)
 # The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
 MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
 
 # Located errors, both engines: (file name, source, the diagnostic's start).
 ERRORS = [
-    ("e1.cga", 'version "2023.0"\n@StartRule\nLot --> tileUV(1, 2, 2) X.\n', "e1.cga:3:16: error[E801]"),
+    ("e1.cga", 'version "2023.0"\n@StartRule\nLot --> report("d", geometry.du(1, uvSpace)) X.\n',
+     "e1.cga:3:33: error[E801]: uv set 1"),
     ("e2.cga", 'version "2023.0"\n@StartRule\nLot --> normalizeUV(0, uv, separatePerFace) X.\n',
      "e2.cga:3:28: error[E801]"),
     ("e3.cga", 'version "2023.0"\n@StartRule\nLot --> setupProjection(0, scope.xw, 1, 1) X.\n',
      "e3.cga:3:28: error[E028]"),
     ("e4.fgsg", 'axiom: Lot;\nLot ~> Material("shininess", 1) X;\n', "e4.fgsg:2:17: error[E028]"),
     ("e5.fgsg", 'axiom: Lot;\nLot ~> SetupProjection("xy", 0, 1) X;\n', "e5.fgsg:2:8: error[R027]"),
-    ("e6.cga", 'version "2023.0"\n@StartRule\nLot --> deleteUV(1) X.\n', "e6.cga:3:18: error[E801]: uv set 1"),
-    ("e7.cga", 'version "2023.0"\n@StartRule\nLot --> copyUV(0, 2) X.\n', "e7.cga:3:19: error[E801]: uv set 2"),
+    ("e6.cga", 'version "2023.0"\n@StartRule\nLot --> deleteUV(10) X.\n',
+     "e6.cga:3:18: error[E028]: a uv set is a whole number from 0 to 9"),
+    ("e7.cga", 'version "2023.0"\n@StartRule\nLot --> copyUV(0, -1) X.\n',
+     "e7.cga:3:19: error[E028]: a uv set is a whole number from 0 to 9"),
     ("e8.cga", 'version "2023.0"\n@StartRule\nLot --> copyUV(0) X.\n', "e8.cga:3:9: error[E016]"),
     ("e9.cga", 'version "2023.0"\n@StartRule\nLot --> deleteUV() X.\n', "e9.cga:3:9: error[E016]"),
-    ("e10.fgsg", 'axiom: Lot;\nLot ~> DeleteUV(0) X;\n', "e10.fgsg:2:8: error[E016]"),
+    ("e10.fgsg", 'axiom: Lot;\nLot ~> DeleteUV(0, 1) X;\n', "e10.fgsg:2:8: error[E016]"),
+    ("e11.fgsg", 'axiom: Lot;\nLot ~> ScaleUV(1, 1, 12) X;\n',
+     "e11.fgsg:2:22: error[E028]: a uv set is a whole number from 0 to 9 (CityEngine's texture layers), written as one, "
+     "not 12"),
+    ("e12.cga", 'version "2023.0"\n@StartRule\nLot --> setupProjection(1.5, scope.xz, 1, 1) X.\n',
+     "e12.cga:3:25: error[E028]: a uv set is a whole number from 0 to 9"),
+    ("e13.fgsg", 'axiom: Lot;\nLot ~> CopyUV(0, 10) X;\n', "e13.fgsg:2:18: error[E028]"),
+    ("e14.fgsg", 'axiom: Lot;\nLot ~> RotateUV(90, Rand(0, 1)) X;\n', "e14.fgsg:2:21: error[E028]"),
 ]
 
 failures = []
@@ -197,6 +218,18 @@ def check_no_uvs(doc, obj_path, label):
             fail(f"{label}: the OBJ's group {leaf} has {vt[leaf]} vt lines")
 
 
+def check_no_uvs_sets(doc, label):
+    by_leaf = leaves(doc)
+    for leaf in NO_UV_SETS:
+        prims = by_leaf.get(leaf)
+        if not prims:
+            fail(f"{label}: no node {leaf}")
+        for p in prims or []:
+            textured = "baseColorTexture" in doc["materials"][p["material"]]["pbrMetallicRoughness"]
+            if "TEXCOORD_0" in p["attributes"] or textured:
+                fail(f"{label}: {leaf} has texture coordinates or an image after an empty set was copied over set 0")
+
+
 def check_mtl(path, label):
     text = open(path).read()
     blocks = {}
@@ -219,7 +252,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
         for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12"), ("uv_delete", "street40x12"),
-                          ("uv_world", "square10")):
+                          ("uv_sets", "street40x12"), ("uv_world", "square10")):
             for ext in ("cga", "fgsg"):
                 grammar = os.path.join(tmp, f"{name}.{ext}")
                 shutil.copy(os.path.join(here, f"{name}.{ext}"), grammar)
@@ -246,9 +279,12 @@ def main():
                             check_materials(doc, label)
                             check_mtl(obj[:-4] + ".mtl", label)
                         else:
-                            check_uvs(doc, buffer, label, {"uv_operations": "U", "uv_delete": "D"}.get(name, "W"))
+                            check_uvs(doc, buffer, label,
+                                      {"uv_operations": "U", "uv_delete": "D", "uv_sets": "S"}.get(name, "W"))
                         if name == "uv_delete":
                             check_no_uvs(doc, obj, label)
+                        if name == "uv_sets":
+                            check_no_uvs_sets(doc, label)
                 if len(outputs) == 2 and outputs["interp"] != outputs["jit"]:
                     fail(f"{name}.{ext}: the interpreter's and the JIT's files differ")
                 if not failures:
