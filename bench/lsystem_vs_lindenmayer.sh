@@ -9,10 +9,17 @@
 #         `bench_lsystem --warm` process (the grammar compiled by the JIT once, each
 #         repetition a whole derivation, its `time.rewrite` / `time.derive`);
 #   cold  a whole process each, its start-up included, wall clock: `node` deriving once
-#         against `fgsg run` (code cache filled by one run before the rounds; fgsg also
-#         writes its .glb, lindenmayer writes nothing: fgsg's goes to /dev/shm where there
-#         is one, because on a disk fgsg's fsync of its output, 0.1-0.2 s on this VM, would
-#         be most of what is measured).
+#         against `fgsg run` (code cache filled by one run before the rounds). Each makes
+#         the same product: for F -> FFF the string (fgsg writes an empty .glb); for the
+#         plant its segments in a file — fgsg a .glb, lindenmayer their end points as
+#         32-bit floats (its string has no mesh format) — both in /dev/shm where there is
+#         one, because on a disk fgsg's fsync of its output, 0.1-0.2 s on this VM, would
+#         be most of what is measured.
+# Same work: before the rounds the script checks that the two derive the same thing —
+# equal module counts (fgsg's modules, lindenmayer's string length: for F -> FFF that is
+# the whole string, 3^13 copies of one symbol) and, for the plant, the same 38 342
+# segments in the same order, end points equal to 1e-9 (fgsg's `--instances`, which also
+# fixes the string's F + - [ ] up to the X's that draw nothing) — and stops if not.
 #
 #   bench/lsystem_vs_lindenmayer.sh [FGSG] [ROUNDS]   (defaults: build/bin/fgsg, 5;
 #                                                      bench_lsystem beside FGSG)
@@ -37,9 +44,12 @@ if [ ! -d "$scratch/node_modules/lindenmayer" ]; then
 fi
 
 cat > "$scratch/side_by_side.js" <<'JS'
-// node side_by_side.js fff|plant N REPS: prints the fastest seconds as JSON.
+// node side_by_side.js fff|plant N REPS [SEGMENTS_FILE]: prints the fastest seconds as
+// JSON; with SEGMENTS_FILE the plant's segments are also written there (x0 y0 0 x1 y1 0
+// as 32-bit floats per segment), inside the time.
 const LSystem = require('lindenmayer');
-const [, , workload, steps, repsText] = process.argv;
+const fs = require('fs');
+const [, , workload, steps, repsText, segmentsFile] = process.argv;
 const n = parseInt(steps, 10), reps = parseInt(repsText, 10);
 const whole = [], rewrite = [];
 let length = 0, segments = 0;
@@ -65,11 +75,49 @@ for (let r = 0; r < reps; r++) {
   const t1 = process.hrtime.bigint();
   ls.final();
   segments = out.length / 4;
+  if (segmentsFile) {
+    const points = new Float32Array(segments * 6);
+    for (let i = 0; i < segments; i++)
+      points.set([out[4 * i], out[4 * i + 1], 0, out[4 * i + 2], out[4 * i + 3], 0], 6 * i);
+    fs.writeFileSync(segmentsFile, points);
+  }
   rewrite.push(Number(t1 - t0) / 1e9);
   whole.push(Number(process.hrtime.bigint() - t0) / 1e9);
 }
 const fastest = (v) => Math.min(...v);
 console.log(JSON.stringify({length, segments, rewrite_s: fastest(rewrite), whole_s: fastest(whole)}));
+JS
+
+cat > "$scratch/same_work.js" <<'JS'
+// node same_work.js INSTANCES_JSON: lindenmayer's Fig. 1.24d n=9 segments (as
+// side_by_side.js draws them) against fgsg's instances (a line's unit box: start at the
+// transform's translation, end one Y column further). Prints the comparison; exit 1 if
+// the segments differ in number, order or end points (beyond 1e-9).
+const LSystem = require('lindenmayer');
+const fs = require('fs');
+const fgsg = JSON.parse(fs.readFileSync(process.argv[2], 'utf8')).instances;
+const out = [], stack = [], turn = 20 * Math.PI / 180;
+let x = 0, y = 0, a = Math.PI / 2;
+const ls = new LSystem({
+  axiom: 'X', productions: {X: 'F[+X]F[-X]+X', F: 'FF'},
+  finals: {
+    F: () => { const nx = x + Math.cos(a), ny = y + Math.sin(a); out.push([x, y, nx, ny]); x = nx; y = ny; },
+    '+': () => { a += turn; }, '-': () => { a -= turn; },
+    '[': () => { stack.push([x, y, a]); }, ']': () => { [x, y, a] = stack.pop(); },
+  }});
+const string = ls.iterate(9);
+ls.final();
+let worst = 0;
+if (fgsg.length === out.length)
+  fgsg.forEach((inst, i) => {
+    const t = inst.transform, s = out[i];
+    const theirs = [t[12], t[13], t[12] + t[4], t[13] + t[5]];
+    worst = Math.max(worst, Math.abs(t[14]), Math.abs(t[14] + t[6]), ...theirs.map((v, k) => Math.abs(v - s[k])));
+  });
+const same = fgsg.length === out.length && worst <= 1e-9;
+console.log(`plant: lindenmayer ${string.length} modules, ${out.length} segments; fgsg ${fgsg.length} segments; ` +
+            `largest end point difference ${worst.toExponential(1)}: ${same ? 'same' : 'DIFFERENT'}`);
+process.exit(same ? 0 : 1);
 JS
 
 cat > "$scratch/fff13.fgsg" <<'FGSG'
@@ -103,6 +151,23 @@ trap 'rm -rf "$tmp" "$out"' EXIT
 export FGSG_CACHE_DIR=$tmp/cache
 "$fgsg" run "$scratch/fff13.fgsg" -o "$out/fff.glb" -q
 "$fgsg" run "$scratch/plant9.fgsg" -o "$out/plant.glb" -q
+# Same work (not timed): module counts, and the plant's segments one by one.
+js_fff=$(cd "$scratch" && node side_by_side.js fff 13 1)
+fg_fff=$("$bench" --warm "$scratch/fff13.fgsg" 1)
+js_plant=$(cd "$scratch" && node side_by_side.js plant 9 1)
+fg_plant=$("$bench" --warm "$scratch/plant9.fgsg" 1)
+for pair in "fff $(field "$js_fff" length) $(field "$fg_fff" modules)" \
+  "plant $(field "$js_plant" length) $(field "$fg_plant" modules)"; do
+  set -- $pair
+  echo "same work: $1: lindenmayer's string $2 modules, fgsg's $3"
+  [ "$2" = "$3" ] || { echo "the two tools derive strings of different lengths" >&2; exit 1; }
+done
+"$fgsg" run "$scratch/plant9.fgsg" -o "$out/plant.glb" -q --instances "$out/plant.json"
+(cd "$scratch" && node same_work.js "$out/plant.json") || exit 1
+rm -f "$out/plant.json"
+echo "warm: in process, 6 derivations each, the first one also the warm-up (V8's JIT;"
+echo "      fgsg's grammar JIT-compiled once before them), the fastest of the 6 reported;"
+echo "cold: a whole process each, wall clock, each writing its product (see the header)."
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 # Columns: warm fff rewrite, warm plant rewrite, warm plant whole, cold fff, cold plant;
 # each lindenmayer's seconds / fgsg's seconds = ratio.
@@ -113,7 +178,7 @@ for r in $(seq 1 "$rounds"); do
   fg_plant=$("$bench" --warm "$scratch/plant9.fgsg" 6)
   jc_fff=$(cd "$scratch" && wall node side_by_side.js fff 13 1)
   fc_fff=$(wall "$fgsg" run "$scratch/fff13.fgsg" -o "$out/fff.glb" -q)
-  jc_plant=$(cd "$scratch" && wall node side_by_side.js plant 9 1)
+  jc_plant=$(cd "$scratch" && wall node side_by_side.js plant 9 1 "$out/plant.bin")
   fc_plant=$(wall "$fgsg" run "$scratch/plant9.fgsg" -o "$out/plant.glb" -q)
   set -- "$(field "$js_fff" rewrite_s)" "$(field "$fg_fff" rewrite_s)" \
     "$(field "$js_plant" rewrite_s)" "$(field "$fg_plant" rewrite_s)" \
