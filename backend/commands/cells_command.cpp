@@ -46,11 +46,25 @@ bool has(const std::vector<std::string>& labels, const std::string& l) {
 }
 
 // A clipped cell's prism in its scope's unit box (the profile over its bounding
-// rectangle, swept along Z), faces counter-clockwise from outside: a convex solid.
+// rectangle, swept along Z), faces counter-clockwise from outside: a convex solid. A
+// mitred cell's is its solid (the prism less its mitres) in the same box.
 rt::cga::LocalGeometry prismGeometry(const rt::cells::Cell& c) {
   rt::cga::LocalGeometry g;
   g.kind = rt::GeomKind::Polyhedron;
   g.convex = true;
+  if (!c.cuts.empty()) {
+    const Eigen::Matrix3d toBox = c.axes.inverse();
+    for (const std::vector<rt::Vec3>& face : c.solid()) {
+      std::vector<rt::Vec3> local;
+      for (const rt::Vec3& p : face) {
+        const rt::Vec3 q = toBox * (p - c.origin);
+        local.emplace_back(c.size.x() > 0 ? q.x() / c.size.x() : 0, c.size.y() > 0 ? q.y() / c.size.y() : 0,
+                           c.size.z() > 0 ? q.z() / c.size.z() : 0);
+      }
+      g.faces.push_back(std::move(local));
+    }
+    return g;
+  }
   std::vector<rt::Vec3> bottom, top;
   for (const rt::cells::Vec2& q : c.profile) {
     const double x = c.size.x() > 0 ? q.x() / c.size.x() : 0, y = c.size.y() > 0 ? q.y() / c.size.y() : 0;

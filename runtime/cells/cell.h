@@ -10,6 +10,7 @@
 #include "runtime/cells/convex_polygon.h"
 #include "runtime/scope.h"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -23,6 +24,15 @@ struct FeatureRef {
   int index = -1;
 };
 
+// A mitre (docs/cells.md "Mitred cells"): the world half-space normal . x <= offset that
+// a cell keeps where its face meets another face at a concave edge (a valley) and the two
+// faces' layers of cells overlap: the plane halves their dihedral angle through the edge,
+// so the cells of both faces meet on it at a diagonal. `normal` is unit.
+struct MitreCut {
+  Vec3 normal = Vec3::UnitX();
+  double offset = 0;
+};
+
 struct Cell {
   Vec3 origin = Vec3::Zero();  // the box corner at (0, 0, 0)
   // Unit columns: axis 0 the cell's length (along the course), axis 1 its height,
@@ -34,6 +44,9 @@ struct Cell {
   // coordinates from `origin`, its bounding rectangle [0, size.x] x [0, size.y]; the
   // cell is this polygon swept `size.z` along axis 2. Empty: the whole rectangle (a box).
   Polygon2 profile;
+  // Mitres: the cell is its prism less the far side of each (a mitred cell always has a
+  // profile, so it is never a box).
+  std::vector<MitreCut> cuts;
   bool isBox() const { return profile.empty(); }
   // The profile, or the box's rectangle.
   Polygon2 outline() const {
@@ -58,6 +71,23 @@ struct Cell {
     const size_t n = isBox() ? 4 : profile.size();
     for (double z : {0.0, size.z()})
       for (size_t k = 0; k < n; ++k) visit(Vec3(origin + axes.col(0) * o[k].x() + axes.col(1) * o[k].y() + axes.col(2) * z));
+  }
+  // The cell's solid as convex faces, counter-clockwise from outside: the prism of its
+  // outline, less the far side of each mitre. (vertices() and forEachVertex() are the
+  // prism's corners: bounds and claims on the cell's own face.)
+  SolidFaces solid() const {
+    std::vector<Vec3> bottom, top;
+    forEachVertex([&](const Vec3& p) { (bottom.size() < (isBox() ? 4 : profile.size()) ? bottom : top).push_back(p); });
+    SolidFaces f{top, std::vector<Vec3>(bottom.rbegin(), bottom.rend())};
+    for (size_t i = 0; i < bottom.size(); ++i) {
+      const size_t j = (i + 1) % bottom.size();
+      f.push_back({bottom[i], bottom[j], top[j], top[i]});
+    }
+    if (axes.determinant() < 0)
+      for (std::vector<Vec3>& face : f) std::reverse(face.begin(), face.end());
+    const double tol = 1e-9 * std::max(1.0, size.maxCoeff());
+    for (const MitreCut& m : cuts) f = clipSolid(f, m.normal, m.offset, tol);
+    return f;
   }
   // The box's corner k (bit 0: +length, bit 1: +height, bit 2: +depth).
   Vec3 corner(int k) const {
@@ -85,7 +115,7 @@ inline void fitToProfile(Cell& c) {
 
 // The cell as it is output: shrunk by joint / 2 on axes 0 and 1 (never below a tenth of
 // its size), depth kept. A clipped cell's sides each move joint / 2 inwards (less where
-// that would leave under a tenth of its area).
+// that would leave under a tenth of its area), and so does each mitre.
 inline Cell shrunk(const Cell& c, double joint) {
   if (!c.isBox()) {
     const double area = c.area();
@@ -95,6 +125,7 @@ inline Cell shrunk(const Cell& c, double joint) {
       Cell s = c;
       s.profile = std::move(in);
       fitToProfile(s);
+      for (MitreCut& m : s.cuts) m.offset -= by;  // the joint along the mitre too
       return s;
     }
     return c;

@@ -36,22 +36,45 @@ uint64_t cellKey(int64_t x, int64_t y, int64_t z) {
 
 namespace {
 
-// Two convex prisms (clipped cells or boxes): separated along some face normal of either
-// or some cross product of their edge directions, or they overlap.
-bool prismsOverlap(const Cell& a, const Cell& b, double slack) {
-  const std::vector<Vec3> va = a.vertices(), vb = b.vertices();
-  std::vector<Vec3> normals, edges;
-  for (const Cell* c : {&a, &b}) {
-    const Polygon2 o = c->outline();
-    normals.push_back(c->axes.col(2));
-    edges.push_back(c->axes.col(2));
+// What the separating-axis test needs of a convex cell: its corners, its faces' normals
+// and its edges' directions. A prism's come from its outline; a mitred cell's from its
+// solid's faces (cell.h Cell::solid).
+struct CellSeparatingFeatures {
+  std::vector<Vec3> vertices, normals, edges;
+};
+CellSeparatingFeatures cellSeparatingFeatures(const Cell& c) {
+  CellSeparatingFeatures s;
+  if (c.cuts.empty()) {
+    s.vertices = c.vertices();
+    const Polygon2 o = c.outline();
+    s.normals.push_back(c.axes.col(2));
+    s.edges.push_back(c.axes.col(2));
     for (size_t i = 0; i < o.size(); ++i) {
       const Vec2 d = o[(i + 1) % o.size()] - o[i];
-      const Vec3 along = c->axes.col(0) * d.x() + c->axes.col(1) * d.y();
-      edges.push_back(along);
-      normals.push_back(along.cross(c->axes.col(2)));
+      const Vec3 along = c.axes.col(0) * d.x() + c.axes.col(1) * d.y();
+      s.edges.push_back(along);
+      s.normals.push_back(along.cross(c.axes.col(2)));
     }
+    return s;
   }
+  for (const std::vector<Vec3>& f : c.solid()) {
+    Vec3 newell = Vec3::Zero();
+    for (size_t i = 0; i < f.size(); ++i) {
+      const Vec3 &a = f[i], &b = f[(i + 1) % f.size()];
+      newell += a.cross(b);
+      s.edges.push_back(b - a);
+      s.vertices.push_back(a);
+    }
+    s.normals.push_back(newell);
+  }
+  return s;
+}
+
+// Two convex cells (boxes, clipped or mitred cells): separated along some face normal of
+// either or some cross product of their edge directions, or they overlap.
+bool prismsOverlap(const Cell& a, const Cell& b, double slack) {
+  const CellSeparatingFeatures fa = cellSeparatingFeatures(a), fb = cellSeparatingFeatures(b);
+  const std::vector<Vec3>&va = fa.vertices, &vb = fb.vertices;
   auto separated = [&](const Vec3& axis) {
     const double n = axis.norm();
     if (n < 1e-12) return false;
@@ -61,12 +84,12 @@ bool prismsOverlap(const Cell& a, const Cell& b, double slack) {
     for (const Vec3& p : vb) loB = std::min(loB, p.dot(u)), hiB = std::max(hiB, p.dot(u));
     return hiA <= loB + slack || hiB <= loA + slack;
   };
-  for (const Vec3& n : normals)
-    if (separated(n)) return false;
-  const size_t na = a.outline().size() + 1;  // a's edge directions come first
-  for (size_t i = 0; i < na; ++i)
-    for (size_t j = na; j < edges.size(); ++j)
-      if (separated(edges[i].cross(edges[j]))) return false;
+  for (const CellSeparatingFeatures* f : {&fa, &fb})
+    for (const Vec3& n : f->normals)
+      if (separated(n)) return false;
+  for (const Vec3& ea : fa.edges)
+    for (const Vec3& eb : fb.edges)
+      if (separated(ea.cross(eb))) return false;
   return true;
 }
 

@@ -148,4 +148,42 @@ Polygon2 insetConvex(const Polygon2& p, double by) {
   return out;
 }
 
+SolidFaces clipSolid(const SolidFaces& s, const Eigen::Vector3d& n, double c, double tol) {
+  using V3 = Eigen::Vector3d;
+  SolidFaces out;
+  std::vector<V3> cap;  // the corners the plane leaves: the new face's
+  for (const std::vector<V3>& f : s) {
+    std::vector<V3> kept;
+    for (size_t i = 0; i < f.size(); ++i) {
+      const V3 &a = f[i], &b = f[(i + 1) % f.size()];
+      const double da = n.dot(a) - c, db = n.dot(b) - c;
+      if (da <= tol) kept.push_back(a);
+      if (std::abs(da) <= tol) cap.push_back(a);
+      if ((da < -tol && db > tol) || (da > tol && db < -tol)) {
+        const V3 q = a + (b - a) * (da / (da - db));
+        kept.push_back(q), cap.push_back(q);
+      }
+    }
+    if (kept.size() >= 3) out.push_back(std::move(kept));
+  }
+  if (out.empty()) return out;
+  // The cap: its corners without repeats, counter-clockwise about n (outward: the solid
+  // keeps n . x <= c).
+  std::vector<V3> corners;
+  for (const V3& q : cap)
+    if (std::none_of(corners.begin(), corners.end(), [&](const V3& k) { return (k - q).norm() <= tol; }))
+      corners.push_back(q);
+  if (corners.size() >= 3) {
+    V3 mid = V3::Zero();
+    for (const V3& q : corners) mid += q;
+    mid /= double(corners.size());
+    const V3 e1 = (std::abs(n.x()) < 0.9 ? V3::UnitX() : V3::UnitY()).cross(n).normalized(), e2 = n.cross(e1);
+    std::sort(corners.begin(), corners.end(), [&](const V3& a, const V3& b) {
+      return std::atan2((a - mid).dot(e2), (a - mid).dot(e1)) < std::atan2((b - mid).dot(e2), (b - mid).dot(e1));
+    });
+    out.push_back(std::move(corners));
+  }
+  return out;
+}
+
 }  // namespace fgsg::rt::cells

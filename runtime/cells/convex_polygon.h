@@ -14,6 +14,9 @@ namespace fgsg::rt::cells {
 
 using Vec2 = Eigen::Vector2d;
 using Polygon2 = std::vector<Vec2>;
+// A convex solid as its faces: convex polygons in space, counter-clockwise seen from
+// outside (a mitred cell, cell.h).
+using SolidFaces = std::vector<std::vector<Eigen::Vector3d>>;
 
 // Positive for a counter-clockwise polygon (the shoelace formula).
 double signedArea(const Polygon2& p);
@@ -37,5 +40,9 @@ Polygon2 convexUnion(const std::vector<Polygon2>& pieces, double areaTol);
 // Convex `p` with every side moved `by` inwards (the intersection of the moved
 // half-planes, so sides that vanish are handled); empty when nothing is left.
 Polygon2 insetConvex(const Polygon2& p, double by);
+// The part of convex solid `s` with n . x <= c (n unit): each face clipped, and the cut
+// closed by a new face on the plane; empty when nothing is left. `tol`: a distance below
+// which a corner counts as on the plane.
+SolidFaces clipSolid(const SolidFaces& s, const Eigen::Vector3d& n, double c, double tol);
 
 }  // namespace fgsg::rt::cells

@@ -306,11 +306,48 @@ CoursePattern coursePattern(const BrickSize& b, bool odd) {
   return {0, {l}};
 }
 
+// Mitres (docs/cells.md "Mitred cells"): where planar face f meets another planar face at
+// a concave straight edge (a valley, an inside corner), the two faces' layers of cells
+// overlap over the edge. A cell of f reaching into that overlap keeps the part nearer
+// f's plane than the other face's: the plane through the edge halving the dihedral
+// angle, so the cells of both faces meet on it at a diagonal, where the overlap guard
+// would otherwise shorten or drop the later face's cells and leave the valley bare. The
+// plane goes on past the edge's ends and through the solid behind the other face: a
+// cell is cut only where it stands in front of the other face (its foot nowhere behind
+// that face's plane) and crosses the plane beside the edge.
+void mitreAtValleys(const CellularTexture& tex, int f, Cell& c) {
+  const FeatureMesh& fm = tex.features();
+  const FeatureFace& face = fm.faces[f];
+  if (face.kind != FaceKind::Planar) return;
+  const double tol = 1e3 * tex.tolerance();
+  const size_t footCorners = c.isBox() ? 4 : c.profile.size();  // forEachVertex: the foot first
+  for (int ei : face.edges) {
+    const FeatureEdge& e = fm.edges[ei];
+    if (e.fold != EdgeFold::Concave || e.shape != EdgeShape::Line || e.rightFace < 0 || e.length <= 0) continue;
+    const int g = e.leftFace == f ? e.rightFace : e.leftFace;
+    if (g == f || fm.faces[g].kind != FaceKind::Planar) continue;
+    const Vec3 ng = fm.faces[g].normal, apart = face.normal - ng;
+    if (apart.norm() < kCoplanarSine) continue;
+    const Vec3 m = apart.normalized(), p0 = e.points.front(), along = (e.points.back() - p0) / e.length;
+    const double offset = m.dot(p0);
+    bool crosses = false, behind = false;
+    size_t k = 0;
+    c.forEachVertex([&](const Vec3& p) {
+      if (k++ < footCorners && (p - p0).dot(ng) < -tol) behind = true;
+      const double s = (p - p0).dot(along);
+      if (m.dot(p) > offset + tol && s > -tol && s < e.length + tol) crosses = true;
+    });
+    if (behind || !crosses) continue;
+    if (c.isBox()) c.profile = c.outline();
+    c.cuts.push_back({m, offset});
+  }
+}
+
 // Places the cell over the parameter rectangle [u, u + len] x [v0, v1] of face f: a box
 // where all of it is free, else the exact clip of the rectangle against free space (the
 // face's outline minus the claims, where it crosses a rake, a hip or a claim's slanted
 // side) — one clipped cell where the free part is convex, one per convex piece where a
-// claim bites a notch out of it. Returns the cells placed.
+// claim bites a notch out of it — each mitred over a valley. Returns the cells placed.
 int clippedCell(CellularTexture& tex, int f, double u, double len, double v0, double v1, double depth) {
   const FeatureFace& face = tex.features().faces[f];
   const FaceOccupancy& map = tex.faceMap(f);
@@ -321,7 +358,11 @@ int clippedCell(CellularTexture& tex, int f, double u, double len, double v0, do
   for (const Polygon2& p : pieces) free += signedArea(p);
   const Cell box = faceCell(face, u, len, v0, v1, depth);
   const FeatureRef on{FeatureKind::Face, f};
-  if (free >= len * (v1 - v0) - minArea) return tex.add(box, on) ? 1 : 0;
+  if (free >= len * (v1 - v0) - minArea) {
+    Cell whole = box;
+    mitreAtValleys(tex, f, whole);
+    return tex.add(std::move(whole), on) ? 1 : 0;
+  }
   if (pieces.empty()) return 0;
   const Polygon2 whole = convexUnion(pieces, minArea * double(pieces.size()));
   const std::vector<Polygon2> parts = whole.empty() ? pieces : std::vector<Polygon2>{whole};
@@ -331,6 +372,7 @@ int clippedCell(CellularTexture& tex, int f, double u, double len, double v0, do
     Cell c = box;
     for (const Vec2& q : part) c.profile.push_back(Vec2((q.x() - u) * stretch, q.y() - v0));
     fitToProfile(c);
+    mitreAtValleys(tex, f, c);
     placed += tex.add(c, on) ? 1 : 0;
   }
   return placed;
