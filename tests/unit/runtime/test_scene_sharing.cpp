@@ -27,7 +27,7 @@ Mesh sharingQuad(float u, float v, float normalZ = 1) {
 }
 
 // One instance per geometry, in order, each scaled by 2 and moved along x.
-InstanceList sharingList(std::vector<Mesh> geometries) {
+InstanceList sharingList(MeshArray<Mesh> geometries) {
   InstanceList list;
   list.assets = {kOwnGeometryAsset};
   list.symbols = {"Wall"};
@@ -104,7 +104,7 @@ TEST_CASE("own geometries are found again among more than the lookup first holds
   // 1500 different pictures (2^-10 of a tile apart), then each again, one tile along, in
   // the opposite order; then a 1501st once.
   const size_t kinds = 1500;
-  std::vector<Mesh> geometries;
+  MeshArray<Mesh> geometries;
   for (size_t k = 0; k < kinds; ++k) geometries.push_back(sharingQuad(float(k) * 0x1p-11f, 0));
   for (size_t k = kinds; k-- > 0;) geometries.push_back(sharingQuad(1 + float(k) * 0x1p-11f, 0));
   geometries.push_back(sharingQuad(0.75f + 0x1p-12f, 0));
