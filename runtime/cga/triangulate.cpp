@@ -48,6 +48,20 @@ void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris) {
     }
     return kNone;
   };
+  idx.resize(count);
+  std::iota(idx.begin(), idx.end(), 0u);
+  // A quad whose first corner is an ear with no vertex inside (a facade piece: most of a
+  // city's leaves): the loop below would clip that ear and stop at the last triangle, so
+  // the same two triangles are written without its bookkeeping. A triangle needs none.
+  if (count == 4 && cross(q[3], q[0], q[1]) > eps && blockerOf(idx, 3, 0, 1) == kNone) {
+    tris.insert(tris.end(), {3u, 0u, 1u});
+    if (cross(q[1], q[2], q[3]) > eps) tris.insert(tris.end(), {1u, 2u, 3u});
+    return;
+  }
+  if (count == 3) {
+    if (cross(q[0], q[1], q[2]) > eps) tris.insert(tris.end(), {0u, 1u, 2u});
+    return;
+  }
   // Each pass clips the first ear from the start of the list. A corner that was no ear
   // stays none while its neighbours and the vertex found inside its triangle remain
   // (vertices only go), so that vertex is remembered and the corner passed over at the
@@ -59,9 +73,6 @@ void earClip(const Vec3* pts, std::size_t count, std::vector<uint32_t>& tris) {
   blockedA.assign(count, kNone);
   blockedC.assign(count, kNone);
   alive.assign(count, 1);
-
-  idx.resize(count);
-  std::iota(idx.begin(), idx.end(), 0u);
   auto drop = [&](std::size_t k) {
     alive[idx[k]] = 0;
     idx.erase(idx.begin() + k);
