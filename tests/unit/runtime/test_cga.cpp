@@ -444,6 +444,53 @@ TEST_CASE("cga: gable, pyramid and deep roofs", "[cga]") {
   }
 }
 
+TEST_CASE("cga: roofs on a box have exact corners, square gables along x, no repeated hip corner", "[cga]") {
+  GeometryArena arena;
+  std::string err;
+  Part r;
+  // Every face's corners in world units, in the order the roof lists them.
+  auto roofCornersInMetres = [&](const Part& p) {
+    std::vector<Polygon3> faces;
+    for (uint32_t i = 0; i < p.geom.count; ++i) {
+      const GeometryArena::Face& f = arena.face(p.geom, i);
+      Polygon3 world;
+      for (uint32_t k = 0; k < f.count; ++k)
+        world.push_back(p.scope.toWorld(p.scope.S.cwiseProduct(arena.facePoints(f)[k])));
+      faces.push_back(world);
+    }
+    return faces;
+  };
+  auto checkFaces = [&](const std::vector<Polygon3>& got, const std::vector<Polygon3>& want) {
+    REQUIRE(got.size() == want.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+      INFO("face " << i);
+      REQUIRE(got[i].size() == want[i].size());
+      for (size_t k = 0; k < want[i].size(); ++k) CHECK(near(got[i][k], want[i][k], 1e-12));
+    }
+  };
+  // Faces: front (+z), right (+x), back (-z), left (-x), bottom; each eave, then the ridge
+  // ends its corners rise to, one end only where both rise to the same point.
+  const Vec3 c0(0, 0, 0), c1(10, 0, 0), c2(10, 0, 10), c3(0, 0, 10);
+  SECTION("a gable roof on a square: the ridge along x (the tie goes to x, as on polygons)") {
+    REQUIRE(roof(box(10, 0, 10), GeomRef{}, "gable", 45, arena, r, err));
+    const Vec3 west(0, 5, 5), east(10, 5, 5);
+    checkFaces(roofCornersInMetres(r),
+               {{c3, c2, east, west}, {c2, c1, east}, {c1, c0, west, east}, {c0, c3, west}, {c0, c1, c2, c3}});
+  }
+  SECTION("a hipped roof on a square is a pyramid of four triangles") {
+    REQUIRE(roof(box(10, 0, 10), GeomRef{}, "hipped", 45, arena, r, err));
+    const Vec3 apex(5, 5, 5);
+    checkFaces(roofCornersInMetres(r),
+               {{c3, c2, apex}, {c2, c1, apex}, {c1, c0, apex}, {c0, c3, apex}, {c0, c1, c2, c3}});
+  }
+  SECTION("a hipped roof on 20 x 12: hips end at triangles, the ridge 8 long") {
+    REQUIRE(roof(box(20, 0, 12), GeomRef{}, "hipped", 45, arena, r, err));
+    const Vec3 b0(0, 0, 0), b1(20, 0, 0), b2(20, 0, 12), b3(0, 0, 12), west(6, 6, 6), east(14, 6, 6);
+    checkFaces(roofCornersInMetres(r),
+               {{b3, b2, east, west}, {b2, b1, east}, {b1, b0, west, east}, {b0, b3, west}, {b0, b1, b2, b3}});
+  }
+}
+
 TEST_CASE("cga: geometry.angle of roof faces, boxes and footprints", "[cga]") {
   GeometryArena arena;
   std::vector<Part> parts;
@@ -736,6 +783,32 @@ TEST_CASE("cga: Mueller's building grammar on a rectangular footprint", "[cga]")
         repeat(segments[2].scope, segments[2].geom, 2, {brickLength - overlap}, arena, tiles, err));
     CHECK(tiles.size() > 10);
   }
+}
+
+// Which triangles a quad or a triangle gives, index for index (the .glb's bytes follow
+// them): a convex quad clips its first corner; a quad whose first corner is reflex, or
+// whose first ear holds the opposite vertex, is cut along the other diagonal.
+TEST_CASE("cga: ear clipping quads and triangles, the exact triangles", "[cga]") {
+  std::vector<uint32_t> tris;
+  const auto clip = [&](const Polygon3& p) {
+    tris.clear();
+    earClip(p, tris);
+    return tris;
+  };
+  using Tris = std::vector<uint32_t>;
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  // A dart, its reflex corner at (1, 1): first (vertex 3), then first (vertex 0).
+  CHECK(clip({Vec3(0, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0), Vec3(0.5, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  CHECK(clip({Vec3(0.5, 1, 0), Vec3(0, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0)}) == Tris{0, 1, 2, 0, 2, 3});
+  // Vertex 2 lies inside the ear at vertex 0 (the triangle 3 0 1).
+  CHECK(clip({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0.5, 0), Vec3(1, 2, 0)}) == Tris{0, 1, 2, 0, 2, 3});
+  // Upright (a facade piece, in XY of a box's face turned to +Z) and clockwise seen from +Z.
+  CHECK(clip({Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 1), Vec3(0, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(1, 0, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  // A quad with a collinear corner first: that corner goes, one triangle stays.
+  CHECK(clip({Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 0)}) == Tris{1, 2, 3});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}) == Tris{0, 1, 2});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)}).empty());  // no area
 }
 
 TEST_CASE("cga: ear clipping a 2 000-corner comb covers it, in well under a second", "[cga]") {

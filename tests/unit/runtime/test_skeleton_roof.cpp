@@ -235,6 +235,43 @@ TEST_CASE("gable roof on a rhombus gables one opposite pair", "[cga][roof]") {
   CHECK(isClosedManifold(r.faces));
 }
 
+TEST_CASE("gable roof on a tangential trapezoid gables the pair with the longer ridge", "[cga][roof]") {
+  // Bases 8 (z = 0) and 2 (z = 4), legs 5: 8 + 2 = 5 + 5, so a circle of radius 2 about
+  // (4, 2) touches all four sides and their four triangles meet there. The legs' gable tops
+  // lie on the level ridge z = 2 between the parallel bases, at x = 6.5 and 1.5, 2 tan(a)
+  // high: a ridge 5 long. The bases' tops lie on the symmetry line x = 4, 16 / 5 and 4 / 5
+  // from the legs' lines, so 3.2 tan(a) and 0.8 tan(a) high: a ridge sqrt(16 + (2.4 tan a)^2)
+  // long, 4.23 at 30 degrees. The legs (edges 1 and 3) become the gables.
+  const double a = 30, s = slopeOf(a);
+  const Roof r = build({{0, 0}, {8, 0}, {5, 4}, {3, 4}}, {}, SkeletonRoofKind::Gable, a);
+  REQUIRE(r.faces.size() == 5);
+  CHECK(r.height == Approx(2 * s).epsilon(1e-12));
+  const Vec3 right(6.5, 2 * s, 2), left(1.5, 2 * s, 2);
+  CHECK(isVertical(r.faces[1]));
+  CHECK(isVertical(r.faces[3]));
+  CHECK(countVertical(r) == 2);
+  REQUIRE(r.faces[1].size() == 3);
+  REQUIRE(r.faces[3].size() == 3);
+  CHECK(contains(r.faces[1], Vec3(8, 0, 0)));
+  CHECK(contains(r.faces[1], Vec3(5, 0, 4)));
+  CHECK(contains(r.faces[1], right));
+  CHECK(contains(r.faces[3], Vec3(3, 0, 4)));
+  CHECK(contains(r.faces[3], Vec3(0, 0, 0)));
+  CHECK(contains(r.faces[3], left));
+  for (int e : {0, 2}) {
+    INFO("face " << e);
+    REQUIRE(r.faces[e].size() == 4);
+    CHECK(contains(r.faces[e], right));
+    CHECK(contains(r.faces[e], left));
+  }
+  CHECK(contains(r.faces[0], Vec3(0, 0, 0)));
+  CHECK(contains(r.faces[0], Vec3(8, 0, 0)));
+  CHECK(contains(r.faces[2], Vec3(5, 0, 4)));
+  CHECK(contains(r.faces[2], Vec3(3, 0, 4)));
+  checkSlopedFacesTilt(r, a);
+  CHECK(isClosedManifold(r.faces));
+}
+
 TEST_CASE("gable roof on a trapezoid keeps its faces planar", "[cga][roof]") {
   // The long sides converge towards x = 0, so the ridge falls towards that gable.
   const Roof r = build({{0, 1}, {0, 3}, {12, 4}, {12, 0}}, {}, SkeletonRoofKind::Gable, 30);
