@@ -136,3 +136,36 @@ TEST_CASE("an image position locates the exact surface point under it", "[marchi
   CHECK_FALSE(s->locate(Vec2(-1, 3), Vec2(1, 0), untouched));
   CHECK(untouched.at.face == -1);
 }
+
+TEST_CASE("a march heading out of a cube corner spins round it and stops after 4097 still pieces",
+          "[marching][march][cube]") {
+  // The corner (0.5, 0.5, 0.5) has three right angles round it. From the top side's two
+  // triangles there (chart 0), heading out of the corner towards (1, 0.9) in x and y
+  // (into no face, along no edge), the march turns round the corner and jumps between
+  // its sides without moving; the 4097th piece in a row without progress (more than 4096)
+  // ends it where it began, long before 2^22 faces.
+  const auto s = prepared(chartedCube(8, 1024));
+  const auto& mesh = s->mesh();
+  const Vec3 corner(0.5, 0.5, 0.5);
+  int starts = 0;
+  for (int f = 0; f < int(mesh.faceCount()); ++f)
+    for (int k = 0; k < 3; ++k) {
+      if (s->atlas().faceChart[f] != 0 || (mesh.vertices[mesh.faces[f][k]] - corner).norm() > 0) continue;
+      surface::SurfacePoint at;
+      at.face = f;
+      at.bary = Vec3::Zero();
+      at.bary[k] = 1;
+      const MarchPoint from = s->place(at, Vec3(1, 0.9, 0));
+      for (LengthUnit unit : {LengthUnit::Surface, LengthUnit::Image}) {
+        INFO("face " << f << (unit == LengthUnit::Surface ? ", surface length" : ", image length"));
+        MarchPoint to;
+        MarchTrace trace;
+        CHECK_FALSE(s->march(from, unit == LengthUnit::Surface ? 0.1 : 3.0, unit, to, &trace));
+        CHECK(trace.end == MarchEnd::NoProgress);
+        CHECK(trace.pieces == 4097);
+        CHECK((s->position(to) - corner).norm() <= 1e-15);
+        ++starts;
+      }
+    }
+  CHECK(starts == 2 * 2);  // the top side's two triangles at the corner, both units
+}

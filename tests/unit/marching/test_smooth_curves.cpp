@@ -213,3 +213,22 @@ TEST_CASE("a segment naming a missing node is refused", "[smooth]") {
   CHECK_THROWS_WITH(smoothSegments(g.nodes, g.segments),
                     "smoothSegments: segment 1 joins nodes 1 and 5, but there are 2 nodes");
 }
+
+TEST_CASE("a seed growing three ways starts a perpendicular branch on the first one's side", "[smooth]") {
+  // Three segments leave the seed (no growth passes through it) in its tangent plane: +x,
+  // +y, -y. Sides start from the first segment's half-plane, a perpendicular one counted
+  // on its side: (+1, +1, +1), sum (1, 0, 0). Single flips while the sum grows: +y flips
+  // (its dot with the rest, (1, -1, 0), is -1), sum (1, -2, 0); then no flip lengthens it.
+  // t = (1, -2, 0) / sqrt 5; the projections |t . away| are 1, 2, 2 over sqrt 5 (each
+  // segment 1 long), their mean sqrt 5 / 3, so h = sqrt 5 / 9 and the inner control points
+  // are side * h * t = side * (1, -2, 0) / 9.
+  const Vec3 up(0, 0, 1);
+  const std::vector<MarchNode> nodes = {
+      {Vec3(0, 0, 0), up}, {Vec3(1, 0, 0), up}, {Vec3(0, 1, 0), up}, {Vec3(0, -1, 0), up}};
+  const std::vector<MarchSegment> segments = {{0, 1}, {0, 2}, {0, 3}};
+  const std::vector<CurveSegment> curves = smoothSegments(nodes, segments);
+  REQUIRE(curves.size() == 3);
+  CHECK((control(curves[0], 1) - Vec3(1, -2, 0) / 9).norm() < 1e-15);
+  CHECK((control(curves[1], 1) - Vec3(-1, 2, 0) / 9).norm() < 1e-15);
+  CHECK((control(curves[2], 1) - Vec3(1, -2, 0) / 9).norm() < 1e-15);
+}
