@@ -117,6 +117,12 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
     {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
+    {CommandId::ShapeOperation, "Envelope", 4, 10, BodyRule::None,
+     "Envelope(\"normal\" or \"world.up\", maxHeight, frontBaseHeight, frontAngle[, backBaseHeight, backAngle[, "
+     "sideBaseHeight, sideAngle or rightBaseHeight, rightAngle, leftBaseHeight, leftAngle]])",
+     nullptr},
+    {CommandId::ShapeOperation, "EnvelopePerEdge", 2, -1, BodyRule::None,
+     "EnvelopePerEdge(\"normal\" or \"world.up\", maxHeight, baseHeight0, angle0, baseHeight1, angle1, ...)", nullptr},
     {CommandId::ShapeOperation, "Translate", 5, 5, BodyRule::None,
      "Translate(\"rel\" or \"abs\", \"scope\" or \"world\", x, y, z)", nullptr},
     {CommandId::ShapeOperation, "Rotate", 5, 5, BodyRule::None,

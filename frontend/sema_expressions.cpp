@@ -285,6 +285,27 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
     if (kShape.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
     if (e.text == "visible" && e.hasCall && e.args.size() == 1)
       return record(e, ValueType::Bool, report);
+    // CityEngine's contextCompare: Shape.contextCompare("inter", "lot", "world.highest").
+    if (e.text == "contextCompare" && e.hasCall) {
+      static const std::set<std::string> kComparisons = {
+          "world.northernmost", "world.southernmost", "world.easternmost", "world.westernmost",
+          "world.highest",      "world.lowest",       "area.largest",      "area.smallest"};
+      const std::string form =
+          "Shape.contextCompare(\"intra\" or \"inter\" or \"all\", \"label\", \"world.highest\" or \"area.largest\" ...)";
+      if (e.args.size() != 3) return fail("'Shape.contextCompare' takes 3 arguments: " + form);
+      ConstValue target, comparison;
+      if (!evalConst(*e.args[0], target) || target.type != ValueType::Str ||
+          (target.str != "intra" && target.str != "inter" && target.str != "all"))
+        return fail("the target of 'Shape.contextCompare' is the constant \"intra\", \"inter\" or \"all\": " + form);
+      if (typeOf(*e.args[1], inner, false) != ValueType::Str)
+        return fail("the label of 'Shape.contextCompare' is a string: " + form);
+      if (!evalConst(*e.args[2], comparison) || comparison.type != ValueType::Str || !kComparisons.count(comparison.str))
+        return fail("the comparison of 'Shape.contextCompare' is the constant \"world.northernmost\", "
+                    "\"world.southernmost\", \"world.easternmost\", \"world.westernmost\", \"world.highest\", "
+                    "\"world.lowest\", \"area.largest\" or \"area.smallest\"");
+      if (report) res_.exprTypes[e.args[0].get()] = res_.exprTypes[e.args[2].get()] = ValueType::Str;
+      return record(e, ValueType::Num, report);
+    }
     // CityEngine's context queries: Shape.overlaps("intra", "tower") ...
     static const std::set<std::string> kOcclusion = {"inside", "overlaps", "touches"};
     static const std::set<std::string> kContext = {"minimumDistance", "contextCount"};

@@ -44,6 +44,8 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
   if ((command == "Translate" || command == "Rotate") && k == 1)
     return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
+  if ((command == "Envelope" || command == "EnvelopePerEdge") && k == 0)
+    return pick({{"normal", 0}, {"world.up", 1}}, word, value, allowed);
   // Scatter's words as runtime/cga/scatter.h's ScatterDomain and ScatterMean.
   if (command == "Scatter" && k == 0) return pick({{"surface", 0}, {"volume", 1}, {"scope", 2}}, word, value, allowed);
   if (command == "Scatter" && k == 2) return pick({{"uniform", 0}, {"gaussian", 1}}, word, value, allowed);
@@ -91,6 +93,16 @@ bool shapeOperationArity(const std::string& command, size_t count, std::string& 
                 {"PrimitiveCube", 0b1001, "0 or 3 arguments"},
                 {"PrimitiveCylinder", 0b1011, "0, 1 or 3 arguments"},
                 {"PrimitiveSphere", 0b1101, "0, 2 or 3 arguments"}};
+  // envelope's forms: front; front and back; front, back and side; front, back, right and
+  // left (each a base height and an angle); per edge: any number of such pairs.
+  if (command == "Envelope") {
+    forms = "4, 6, 8 or 10 arguments";
+    return count == 4 || count == 6 || count == 8 || count == 10;
+  }
+  if (command == "EnvelopePerEdge") {
+    forms = "a direction, maxHeight and pairs of a base height and an angle";
+    return count >= 2 && count % 2 == 0;
+  }
   for (const auto& f : kForms)
     if (command == f.command) {
       forms = f.forms;

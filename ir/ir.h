@@ -79,16 +79,27 @@ enum class Query : uint8_t {
   // CGA's geometry.du(0, uvSpace) and dv: the spread of the texture coordinates of the
   // scope's projection over the geometry (uv set 0 only: the compiler checks it).
   GeometryDu, GeometryDv,
+  // CGA's contextCompare(target, label, comparison): the shape's rank among the labelled
+  // shapes; extra = the target (ContextTarget) | the comparison (ContextComparison) << 2,
+  // args[0] the label (Str).
+  ContextCompare,
 };
-inline constexpr Query kLastQuery = Query::GeometryDv;
+inline constexpr Query kLastQuery = Query::ContextCompare;
 inline bool isGeometryQuery(Query q) {
   return (q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength) ||
          (q >= Query::GeometryAngle && q <= Query::GeometryDv);
 }
-inline bool isContextQuery(Query q) { return q >= Query::ContextInside && q <= Query::ContextCount; }
+inline bool isContextQuery(Query q) {
+  return (q >= Query::ContextInside && q <= Query::ContextCount) || q == Query::ContextCompare;
+}
 // Which shapes a context query looks at: its own start shape's (CityEngine's intra), the
 // other start shapes' (inter), or both.
 enum class ContextTarget : uint8_t { Intra, Inter, All };
+// contextCompare's comparisons in CityEngine's order: world.northernmost, southernmost,
+// easternmost, westernmost, highest, lowest, area.largest, area.smallest.
+enum class ContextComparison : uint8_t {
+  Northernmost, Southernmost, Easternmost, Westernmost, Highest, Lowest, LargestArea, SmallestArea
+};
 
 struct Expr {
   ExprOp op = ExprOp::Const;

@@ -739,7 +739,8 @@ class Lowerer {
           {"splitTotal", Query::ShapeSplitTotal}, {"compIndex", Query::ShapeCompIndex},
           {"compTotal", Query::ShapeCompTotal},   {"inside", Query::ContextInside},
           {"overlaps", Query::ContextOverlaps},   {"touches", Query::ContextTouches},
-          {"minimumDistance", Query::ContextMinimumDistance}, {"contextCount", Query::ContextCount}};
+          {"minimumDistance", Query::ContextMinimumDistance}, {"contextCount", Query::ContextCount},
+          {"contextCompare", Query::ContextCompare}};
       static const std::map<std::string, Query> kGeometry = {
           {"area", Query::GeometryArea},         {"height", Query::GeometryHeight},
           {"nVertices", Query::GeometryVertices}, {"nFaces", Query::GeometryFaces},
@@ -762,6 +763,15 @@ class Lowerer {
         out.extra = static_cast<uint32_t>(target == "intra" ? ContextTarget::Intra
                                           : target == "inter" ? ContextTarget::Inter
                                                               : ContextTarget::All);
+        if (static_cast<Query>(out.index) == Query::ContextCompare) {
+          // The comparison is a constant word too (sema checked it): its index in extra.
+          static const char* const kComparisons[] = {"world.northernmost", "world.southernmost", "world.easternmost",
+                                                     "world.westernmost",  "world.highest",      "world.lowest",
+                                                     "area.largest",       "area.smallest"};
+          const std::string comparison = constString(*e.args[2]);
+          for (uint32_t c = 0; c < std::size(kComparisons); ++c)
+            if (comparison == kComparisons[c]) out.extra |= c << 2;
+        }
         if (e.args.size() > 1) {
           out.args.push_back(expr(*e.args[1]));
         } else {

@@ -587,8 +587,9 @@ class Printer {
         if (isContextQuery(q)) {  // Shape.overlaps("intra", label)
           static const char* const kTargets[] = {"\"intra\"", "\"inter\"", "\"all\""};
           s += "(";
-          s += e.extra <= 2 ? kTargets[e.extra] : "target?";
+          s += (e.extra & 3) <= 2 ? kTargets[e.extra & 3] : "target?";
           for (const Expr& a : e.args) s += ", ", writeExpr(rule, a, s);
+          if (q == Query::ContextCompare) s += ", comparison " + std::to_string(e.extra >> 2);
           s += ")";
           return;
         }

@@ -817,7 +817,9 @@ class Verifier {
         problem("environment entry " + std::to_string(e.env) + " is not a " + kind);
     }
     if (q == Query::Field || q == Query::Feature) stringId(e.extra);
-    if (isContextQuery(q) && e.extra > static_cast<uint32_t>(ContextTarget::All))
+    if (isContextQuery(q) && ((e.extra & 3) > static_cast<uint32_t>(ContextTarget::All) ||
+                              (q != Query::ContextCompare && e.extra > 3) ||
+                              (e.extra >> 2) > static_cast<uint32_t>(ContextComparison::SmallestArea)))
       problem("context target " + std::to_string(e.extra) + " out of range");
     if (q == Query::GeometryAngle && e.extra > 2)
       problem("geometry angle selector " + std::to_string(e.extra) + " out of range");

@@ -200,6 +200,19 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
     }
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
+  } else if (name == "Envelope" || name == "EnvelopePerEdge") {
+    // Envelope(direction, maxHeight, front base height, front angle, ...): pairs by street
+    // side; EnvelopePerEdge(direction, maxHeight, base 0, angle 0, base 1, angle 1, ...): one
+    // pair per edge in edge order, edges past the pairs (0, 90), pairs past the edges unused.
+    rt::cga::FlatPolygon polygon;
+    ok = rt::cga::flatPolygon(st.scope, st.geom, d.arena(), "envelope", polygon, error);
+    if (ok) {
+      std::vector<rt::cga::EnvelopeEdge> edges(polygon.ring.size());
+      if (name == "Envelope") edges = rt::cga::envelopeEdgesBySide(rt::cga::edgeSelectors(polygon), a + 2, n - 2);
+      for (size_t i = 0; name == "EnvelopePerEdge" && i < edges.size() && 3 + 2 * i < n; ++i)
+        edges[i] = {a[2 + 2 * i], a[3 + 2 * i]};
+      ok = rt::cga::envelope(st.scope, st.geom, polygon, a[0] != 0, a[1], edges, d.arena(), part, error);
+    }
   } else if (name == "InnerRectangle") {
     rt::cga::FlatPolygon polygon;
     ok = rt::cga::flatPolygon(st.scope, st.geom, d.arena(), "InnerRectangle", polygon, error) &&

@@ -1,4 +1,5 @@
-// CityEngine's context queries (inside, overlaps, touches, minimumDistance, contextCount)
+// CityEngine's context queries (inside, overlaps, touches, minimumDistance, contextCount,
+// contextCompare)
 // and label(). CityEngine derives a model twice for them: first with every query giving
 // its default (false, infinity, 0), keeping the labelled shapes and occluders that
 // derivation makes, then again with the queries answered against those. fgsg does the
@@ -20,6 +21,28 @@ namespace {
 // CityEngine's neighbourhood for inter occlusion: start shapes within 1 m of the
 // querying one's bounds (context queries look at every start shape).
 constexpr double kOcclusionNeighbourhood = 1.0;
+
+// contextCompare: values this close (metres, square metres) are equal and share a rank.
+constexpr double kContextCompareTie = 1e-9;
+
+// contextCompare's value of a shape's geometry, larger ranking first (north is -z).
+double contextCompareKey(ir::ContextComparison c, const rt::cga::TriangleSoup& g) {
+  switch (c) {
+    case ir::ContextComparison::Northernmost: return -g.lo.z();
+    case ir::ContextComparison::Southernmost: return g.hi.z();
+    case ir::ContextComparison::Easternmost: return g.hi.x();
+    case ir::ContextComparison::Westernmost: return -g.lo.x();
+    case ir::ContextComparison::Highest: return g.hi.y();
+    case ir::ContextComparison::Lowest: return -g.lo.y();
+    case ir::ContextComparison::LargestArea:
+    case ir::ContextComparison::SmallestArea: {
+      double area = 0.0;
+      for (const auto& t : g.triangles) area += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
+      return c == ir::ContextComparison::LargestArea ? area : -area;
+    }
+  }
+  return 0.0;
+}
 
 }  // namespace
 
@@ -90,7 +113,7 @@ double Derivation::context(ir::Query q, uint32_t target, const std::string& labe
   // The first derivation (and an empty label of minimumDistance or contextCount) gives
   // CityEngine's defaults.
   if (!world_ || (!occlusion && label.empty())) return none;
-  const auto t = static_cast<ir::ContextTarget>(target);
+  const auto t = static_cast<ir::ContextTarget>(target & 3);  // contextCompare's comparison above
   auto near = [&](uint32_t start) {
     if (!occlusion) return true;
     const auto& b = world_->startBounds;
@@ -116,6 +139,18 @@ double Derivation::context(ir::Query q, uint32_t target, const std::string& labe
       return false;
     });
     return n;
+  }
+  if (q == ir::Query::ContextCompare) {
+    // The rank: how many labelled shapes come strictly before this shape's geometry (0-based;
+    // equal values share the lowest rank, as CityEngine's reference says).
+    const auto c = static_cast<ir::ContextComparison>(target >> 2);
+    const double mine = contextCompareKey(c, rt::cga::shapeTriangles(scope, geom, arena_));
+    double rank = 0;
+    visit([&](const ContextShape& s) {
+      if (s.label == label && contextCompareKey(c, s.geometry) > mine + kContextCompareTie) ++rank;
+      return false;
+    });
+    return rank;
   }
   if (q == ir::Query::ContextMinimumDistance) {
     double best = INFINITY;

@@ -267,7 +267,12 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
 ExprPtr Translator::contextQuery(const std::string& fn, const SourceRange& at, const SourceRange& nameAt,
                                  const std::vector<P::ExprContext*>& argCtx, const Env& env) {
   const bool occlusion = fn == "inside" || fn == "overlaps" || fn == "touches";
-  if (occlusion ? argCtx.size() > 2 : argCtx.size() != 2) {
+  if (fn == "contextCompare" && argCtx.size() != 3) {
+    error("E016", nameAt, "'contextCompare' takes 3 arguments (contextCompare(intra|inter|all, \"label\", "
+                          "world.highest|...|area.smallest)), got " + std::to_string(argCtx.size()));
+    return nullptr;
+  }
+  if (fn != "contextCompare" && (occlusion ? argCtx.size() > 2 : argCtx.size() != 2)) {
     error("E016", nameAt, "'" + fn + "' takes " + (occlusion ? "at most 2 arguments" : "2 arguments") + " (" +
                               (occlusion ? fn + "(), " + fn + "(intra), " : "") + fn +
                               "(intra|inter|all, \"label\")), got " + std::to_string(argCtx.size()));
@@ -287,12 +292,27 @@ ExprPtr Translator::contextQuery(const std::string& fn, const SourceRange& at, c
     word->text = target;
     e->args.push_back(std::move(word));
   }
-  if (argCtx.size() == 2) {
+  if (argCtx.size() >= 2) {
     Env plain = env;
     plain.relativeAxis = -1;
     ExprPtr label = expr(argCtx[1], plain);
     if (!label) return nullptr;
     e->args.push_back(std::move(label));
+  }
+  if (argCtx.size() == 3) {  // contextCompare's comparison selector, as its word
+    const std::string comparison = argCtx[2]->getText();
+    static const char* const kComparisons[] = {"world.northernmost", "world.southernmost", "world.easternmost",
+                                               "world.westernmost",  "world.highest",      "world.lowest",
+                                               "area.largest",       "area.smallest"};
+    if (std::find(std::begin(kComparisons), std::end(kComparisons), comparison) == std::end(kComparisons)) {
+      error("E016", rangeOf(argCtx[2]),
+            "the comparison of 'contextCompare' is world.northernmost, world.southernmost, world.easternmost, "
+            "world.westernmost, world.highest, world.lowest, area.largest or area.smallest, not '" + comparison + "'");
+      return nullptr;
+    }
+    ExprPtr word = makeExpr(ExprKind::String, rangeOf(argCtx[2]));
+    word->text = comparison;
+    e->args.push_back(std::move(word));
   }
   return e;
 }
@@ -396,9 +416,10 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     e->args = std::move(args);
     return e;
   }
-  if (fn == "inside" || fn == "overlaps" || fn == "touches" || fn == "minimumDistance" || fn == "contextCount")
+  if (fn == "inside" || fn == "overlaps" || fn == "touches" || fn == "minimumDistance" || fn == "contextCount" ||
+      fn == "contextCompare")
     return contextQuery(fn, at, nameAt, argCtx, env);
-  if (fn == "contextCompare" || fn == "occlusion") {  // before their keyword arguments read as names
+  if (fn == "occlusion") {  // before its keyword arguments read as names
     notSupported(nameAt, "the function '" + fn + "'");
     return nullptr;
   }

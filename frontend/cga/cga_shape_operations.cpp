@@ -15,13 +15,20 @@
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
 //   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance) convexify(maxLength)
 //   taper(height)
+//   envelope(normal|world.up, maxHeight, frontBase, frontAngle, ...)
+//                                             Envelope("normal", maxHeight, frontBase, frontAngle, ...)
+//   envelope(normal|world.up, maxHeight, [b0, b1, ...], [a0, a1, ...])
+//                                             EnvelopePerEdge("normal", maxHeight, b0, a0, b1, a1, ...)
 //   primitiveQuad/Cube/Cylinder/Sphere/Disk(...)
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_translator.h"
 #include "frontend/shape_operations.h"
 #include "runtime/cga/edge_index_label.h"
 
+#include <algorithm>
 #include <map>
+#include <optional>
+#include <tuple>
 
 namespace fgsg::frontend::cga {
 
@@ -35,6 +42,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"mirror", "Mirror"},                     {"setback", "Setback"},
       {"setbackToArea", "SetbackToArea"},       {"setbackPerEdge", "SetbackPerEdge"},
       {"convexify", "Convexify"},               {"taper", "Taper"},
+      {"envelope", "Envelope"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},
@@ -60,6 +68,14 @@ std::string setbackLabel(const std::string& sel) {
   return it == labels.end() ? "" : it->second;
 }
 
+// An array written out, `[1, 2, 3]`: its elements; nullopt for anything else.
+std::optional<std::vector<P::ExprContext*>> envelopeArrayLiteral(P::ExprContext* e) {
+  auto* primary = dynamic_cast<P::PrimaryExprContext*>(e);
+  auto* array = primary ? dynamic_cast<P::ArrayPrimaryContext*>(primary->primary()) : nullptr;
+  if (!array) return std::nullopt;
+  return array->expr();
+}
+
 }  // namespace
 
 bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std::optional<Item>& item) {
@@ -80,6 +96,17 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
     error("E016", rangeOf(op->name), "'" + name + "' takes " + forms + ", got " + std::to_string(argCtx.size()));
     return true;
   }
+  if (fgsgName == "Envelope") {  // op_envelope's direction is one of two selectors
+    double code = 0;
+    std::string allowed;
+    if (!shapeOperationWord(fgsgName, 0, selectorWord(argCtx[0]), code, allowed)) {
+      error("E028", rangeOf(argCtx[0]), "envelope's direction is normal or world.up, not '" + argCtx[0]->getText() + "'");
+      return true;
+    }
+  }
+  if (fgsgName == "Envelope" && argCtx.size() == 4 &&
+      (envelopeArrayLiteral(argCtx[2]) || envelopeArrayLiteral(argCtx[3])))
+    return envelopePerEdge(op, env, item);
   Item made = command(fgsgName, at);
   for (size_t k = 0; k < argCtx.size(); ++k) {
     // A selector word (`y`, `largest`, `scope`, `vertices`) is the command's string argument.
@@ -144,6 +171,53 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
     part.selectorRange = rangeOf(sized->key);
     operations(sized->operation(), 0, part, env, true);
     made.body.push_back(std::move(part));
+  }
+  item = std::move(made);
+  return true;
+}
+
+// envelope(direction, maxHeight, baseHeights, angles) with both arrays written out:
+// EnvelopePerEdge(direction, maxHeight, b0, a0, b1, a1, ...), the shorter array filled with
+// op_envelope's defaults (base height 0, angle 90) to the longer one's length.
+bool Translator::envelopePerEdge(P::CallOperationContext* op, const Env& env, std::optional<Item>& item) {
+  const auto argCtx = op->expr();
+  const auto bases = envelopeArrayLiteral(argCtx[2]), angles = envelopeArrayLiteral(argCtx[3]);
+  if (!bases || !angles) {
+    notSupported(rangeOf(bases ? argCtx[3] : argCtx[2]),
+                 "envelope's base heights and angles other than two arrays written out ([h0, h1], [a0, a1])");
+    return true;
+  }
+  Item made = command("EnvelopePerEdge", rangeOf(op));
+  const std::string word = selectorWord(argCtx[0]);
+  double code = 0;
+  std::string allowed;
+  if (!word.empty() && shapeOperationWord("EnvelopePerEdge", 0, word, code, allowed)) {
+    ExprPtr s = makeExpr(ExprKind::String, rangeOf(argCtx[0]));
+    s->text = word;
+    made.args.push_back(std::move(s));
+  } else {
+    ExprPtr e = expr(argCtx[0], env);
+    if (!e) return true;
+    made.args.push_back(std::move(e));
+  }
+  ExprPtr maxHeight = expr(argCtx[1], env);
+  if (!maxHeight) return true;
+  made.args.push_back(std::move(maxHeight));
+  for (size_t i = 0; i < std::max(bases->size(), angles->size()); ++i)
+    for (const auto& [array, fallback, whole] : {std::tuple{&*bases, 0.0, argCtx[2]}, std::tuple{&*angles, 90.0, argCtx[3]}}) {
+      ExprPtr e;
+      if (i < array->size()) {
+        e = expr((*array)[i], env);
+        if (!e) return true;
+      } else {
+        e = makeExpr(ExprKind::Number, rangeOf(whole));
+        e->number = fallback;
+      }
+      made.args.push_back(std::move(e));
+    }
+  if (op->splitBody()) {
+    error("E018", rangeOf(op->splitBody()), "'envelope' takes no { } body");
+    return true;
   }
   item = std::move(made);
   return true;

@@ -139,6 +139,7 @@ class Translator {
   // cga_shape_operations.cpp: true when the call is one of issue #44's footprint-shaping or
   // scope operations; `item` is then its command (empty after an error).
   bool shapeOperation(P::CallOperationContext* op, const Env& env, std::optional<Item>& item);
+  bool envelopePerEdge(P::CallOperationContext* op, const Env& env, std::optional<Item>& item);
   // cga_scatter.cpp: scatter(domain, n, distribution[, mean, stddev]) { operations } as
   // fgsg's Scatter command with the operations as its body (empty after an error).
   std::optional<Item> scatter(P::CallOperationContext* op, const Env& env);

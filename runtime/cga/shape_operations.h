@@ -127,6 +127,29 @@ bool convexify(const Scope& scope, const GeomRef& geom, GeometryArena& arena, do
 bool taper(const Scope& scope, const GeomRef& geom, double height, GeometryArena& arena, Part& out,
            std::string& error);
 
+// envelope(direction, maxHeight, ...) (op_envelope): over a convex polygon (a lot, a
+// Footprint, a face), the solid below every edge's plane and below maxHeight. Edge i's plane
+// stands on the edge at edges[i].baseHeight and rises inward at edges[i].angleDeg from the
+// polygon's plane (0 flat, 90 a wall up to maxHeight: no plane). Along the polygon's normal,
+// or the world's up (worldUp: the polygon must face up). Faces: one wall per edge that has
+// height (edge order), one top face per plane where it is the lowest (sloped planes in edge
+// order, then the flat cap at maxHeight), the bottom; a closed solid. The scope is
+// extrude's (x kept, y the normal) to the envelope's greatest height. Fails for a concave
+// polygon, a base height below 0, an angle outside [0, 90], maxHeight not above 0, or no
+// height at all.
+struct EnvelopeEdge {
+  double baseHeight = 0.0;
+  double angleDeg = 90.0;
+};
+bool envelope(const Scope& scope, const GeomRef& geom, const FlatPolygon& polygon, bool worldUp, double maxHeight,
+              const std::vector<EnvelopeEdge>& edges, GeometryArena& arena, Part& out, std::string& error);
+// envelope's side forms: `values` holds `count` numbers, pairs (base height, angle) for
+// street.front, then street.back, then street.side (one pair) or street.right and
+// street.left (two pairs), given to the edges edgeSelectors classes that way; an edge no
+// pair names keeps (0, 90), as op_envelope's defaults.
+std::vector<EnvelopeEdge> envelopeEdgesBySide(const std::vector<unsigned>& classes, const double* values,
+                                              size_t count);
+
 // innerRectangle(scope | edge): the largest rectangle inside the polygon with sides along
 // the scope's x and y (alongEdge: along the edge that gives the largest), its scope fitted
 // to it (x along its sides). Exact where the polygon's sides run along the rectangle's
