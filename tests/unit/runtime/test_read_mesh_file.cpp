@@ -69,6 +69,9 @@ TEST_CASE("OFF: comments, keyword variants, extra columns", "[read_mesh_file]") 
   // Homogeneous coordinates divide by w; nOFF names its dimension.
   m = read("h.off", "4OFF\n3 1 0\n0 0 0 2\n2 0 0 2\n0 4 0 2\n3 0 1 2\n");
   CHECK(m.vertices[2] == std::array<double, 3>{0, 2, 0});
+  // Every coordinate, z included, is divided by w: (2 4 6) / 2.
+  m = read("hz.off", "4OFF\n3 1 0\n2 4 6 2\n0 0 0 1\n1 0 0 1\n3 0 1 2\n");
+  CHECK(m.vertices[0] == std::array<double, 3>{1, 2, 3});
   m = read("n.off", "nOFF\n4\n3 1 0\n0 0 0 9\n1 0 0 9\n0 1 0 9\n3 0 1 2\n");
   CHECK(m.vertices[1] == std::array<double, 3>{1, 0, 0});
 }
@@ -85,6 +88,11 @@ TEST_CASE("OFF: forged and broken files fail at once with the line", "[read_mesh
         ":2: the face count '99999999999999999999' is not a whole number");
   CHECK(errorOf("c.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n") ==
         ":6: face 0 has -3 corners (a face needs at least 3)");
+  CHECK(errorOf("two.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n# long enough\n") ==
+        ":6: face 0 has 2 corners (a face needs at least 3)");
+  // nOFF's dimension is at least 3; dimension 2 would read x y only (the file fits it).
+  CHECK(errorOf("n2.off", "nOFF\n2\n3 1 0\n0 0\n1 0\n0 1\n3 0 1 2\n") ==
+        ":2: nOFF needs a dimension between 3 and 16 after the keyword");
   CHECK(errorOf("l.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n") ==
         ":6: face 0 lists 2000000000 corners, but the line holds only 3 numbers after the count");
   CHECK(errorOf("i.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") ==
@@ -146,11 +154,17 @@ TEST_CASE("PLY: counts are checked against the bytes before OpenMesh reads",
           for (int32_t x : {n, a, b, c}) s.append(reinterpret_cast<const char*>(&x), 4);
           return s;
         }()) == ": face 0 refers to vertex 7, but there are only 3 vertices");
+  // One past the last vertex: OpenMesh hands it over unchecked.
+  CHECK(errorOf("n.ply", plyHeader("ascii", "uchar int", 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") ==
+        ": face 0 refers to vertex 3, but there are only 3 vertices");
 }
 
 TEST_CASE("OBJ: an index out of range is named as the file spells it", "[read_mesh_file]") {
   CHECK(errorOf("i.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") ==
         ": face 0 refers to vertex 9, but there are only 3 vertices (counting from 1)");
+  // One past the last vertex: OpenMesh hands it over unchecked.
+  CHECK(errorOf("n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n") ==
+        ": face 0 refers to vertex 4, but there are only 3 vertices (counting from 1)");
   const auto m = read("ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n");
   CHECK(m.corners == std::vector<int>{0, 1, 2});
 }
