@@ -785,6 +785,32 @@ TEST_CASE("cga: Mueller's building grammar on a rectangular footprint", "[cga]")
   }
 }
 
+// Which triangles a quad or a triangle gives, index for index (the .glb's bytes follow
+// them): a convex quad clips its first corner; a quad whose first corner is reflex, or
+// whose first ear holds the opposite vertex, is cut along the other diagonal.
+TEST_CASE("cga: ear clipping quads and triangles gives the exact triangles", "[cga]") {
+  std::vector<uint32_t> tris;
+  const auto clip = [&](const Polygon3& p) {
+    tris.clear();
+    earClip(p, tris);
+    return tris;
+  };
+  using Tris = std::vector<uint32_t>;
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  // A dart whose reflex corner (0.5, 1) is its last vertex, then the same dart with it first.
+  CHECK(clip({Vec3(0, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0), Vec3(0.5, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  CHECK(clip({Vec3(0.5, 1, 0), Vec3(0, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0)}) == Tris{0, 1, 2, 0, 2, 3});
+  // Vertex 2 lies inside the ear at vertex 0 (the triangle 3 0 1).
+  CHECK(clip({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0.5, 0), Vec3(1, 2, 0)}) == Tris{0, 1, 2, 0, 2, 3});
+  // Upright (in the YZ plane) and clockwise seen from +Z: each clipped about its own normal.
+  CHECK(clip({Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 1), Vec3(0, 1, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(1, 0, 0)}) == Tris{3, 0, 1, 1, 2, 3});
+  // A quad with a collinear corner first: that corner goes, one triangle stays.
+  CHECK(clip({Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 0)}) == Tris{1, 2, 3});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}) == Tris{0, 1, 2});
+  CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)}).empty());  // no area
+}
+
 TEST_CASE("cga: ear clipping a 2 000-corner comb covers it, in well under a second", "[cga]") {
   // Issue 42: a comb-shaped lot's flat roof (500 teeth) took most of a minute to clip.
   Polygon3 comb = {Vec3(0, 0, 0), Vec3(1000, 0, 0)};
