@@ -5,7 +5,9 @@
 // changed back and forth, and every fifth edit a misspelt attr that gives an E010 and its
 // fix - each timed from didChange written to its publishDiagnostics read. Prints one JSON
 // line: lines, edits, median, p90, p95 and max in ms, and the errors seen (N / 5 expected).
-// usage: node bench/lsp_latency.js [FGSG_BINARY] [N] [LINES]
+// MODE `newline` instead presses Enter at the start of the middle line and deletes that line
+// break again, edit after edit (every line below moves; no errors expected).
+// usage: node bench/lsp_latency.js [FGSG_BINARY] [N] [LINES] [MODE]
 'use strict';
 const { spawn } = require('child_process');
 const path = require('path');
@@ -14,6 +16,7 @@ const root = path.resolve(__dirname, '..');
 const fgsg = process.argv[2] || path.join(root, 'build/bin/fgsg');
 const edits = Number(process.argv[3] || 40);
 const lineCount = Number(process.argv[4] || 2000);
+const mode = process.argv[5] || 'replace';
 const rpc = require('module').createRequire(path.join(root, 'tools/node/package.json'))('vscode-jsonrpc/node');
 
 // The grammar: 40 attrs, the axiom, then rules R0 ... chained, each line one rule.
@@ -62,26 +65,27 @@ async function main() {
   const times = [];
   let errors = 0;
   for (let k = 0; k < edits; ++k) {
-    const misspell = k % 5 === 4;
+    const misspell = mode === 'replace' && k % 5 === 4;
     const at = name.index;
     const replacement = misspell ? 'wx' : `w${(k % 2) * 1}`;  // w0 / w1 are attrs; wx is none
+    const change = mode === 'newline'
+      ? (k % 2 === 0 ? { range: { start: { line: middle, character: 0 }, end: { line: middle, character: 0 } }, text: '\n' }
+                     : { range: { start: { line: middle, character: 0 }, end: { line: middle + 1, character: 0 } }, text: '' })
+      : { range: { start: { line: middle, character: at }, end: { line: middle, character: at + name[0].length } },
+          text: replacement };
     next = published();
     const start = process.hrtime.bigint();
-    connection.sendNotification('textDocument/didChange', {
-      textDocument: { uri, version: k + 2 },
-      contentChanges: [{ range: { start: { line: middle, character: at }, end: { line: middle, character: at + name[0].length } },
-                         text: replacement }],
-    });
+    connection.sendNotification('textDocument/didChange', { textDocument: { uri, version: k + 2 }, contentChanges: [change] });
     const p = await next;
     times.push(Number(process.hrtime.bigint() - start) / 1e6);
     errors += p.diagnostics.filter((d) => d.code === 'E010').length;
-    name[0] = replacement;
+    if (mode !== 'newline') name[0] = replacement;
   }
   await connection.sendRequest('shutdown');
   connection.sendNotification('exit');
   connection.dispose();
   const ms = (x) => Math.round(x * 10) / 10;
-  console.log(JSON.stringify({ bench: 'lsp_latency', lines: lines.length - 1, edits, median_ms: ms(quantile(times, 0.5)),
+  console.log(JSON.stringify({ bench: 'lsp_latency', mode, lines: lines.length - 1, edits, median_ms: ms(quantile(times, 0.5)),
                                p90_ms: ms(quantile(times, 0.9)), p95_ms: ms(quantile(times, 0.95)), max_ms: ms(Math.max(...times)), errors }));
 }
 

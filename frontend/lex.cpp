@@ -1,5 +1,6 @@
 #include "frontend/lex.h"
 #include "frontend/context_lists.h"
+#include "frontend/incremental_lex.h"
 #include "frontend/query_modules.h"
 
 #include "FgsgParser.h"
@@ -535,9 +536,12 @@ LexedSource lexSource(const SourceFile& file, Diagnostics& diags) {
 }
 
 LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags,
-                    const std::vector<std::string>& importAliases) {
+                    const std::vector<std::string>& importAliases, IncrementalLexCache* cache) {
   LexedSource lexed;
-  lexed.input = std::make_unique<antlr4::ANTLRInputStream>(validUtf8(text));
+  const std::string valid = validUtf8(text);
+  auto input = std::make_unique<LookaheadTrackingStream>(valid);
+  LookaheadTrackingStream& stream = *input;
+  lexed.input = std::move(input);
   lexed.input->name = name;
   lexed.lexer = std::make_unique<FgsgLexer>(lexed.input.get());
   // Each token's text converted from the stream's UTF-32 once, when it is made, not at each
@@ -549,9 +553,15 @@ LexedSource lexText(const std::string& name, const std::string& text, Diagnostic
   lexed.lexer->addErrorListener(&reporter);
 
   std::vector<std::unique_ptr<Token>> raw;
-  for (;;) {
-    raw.push_back(lexed.lexer->nextToken());
-    if (raw.back()->getType() == Token::EOF) break;
+  if (cache) {
+    const int errorsBefore = diags.errorCount();
+    raw = cache->lex(*lexed.lexer, stream, valid);
+    if (diags.errorCount() != errorsBefore) cache->clear();  // to be reported again next time
+  } else {
+    for (;;) {
+      raw.push_back(lexed.lexer->nextToken());
+      if (raw.back()->getType() == Token::EOF) break;
+    }
   }
   lexed.lexer->removeErrorListeners();
 

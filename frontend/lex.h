@@ -40,8 +40,11 @@ inline bool writtenTogether(const antlr4::Token* a, const antlr4::Token* b) {
 }
 
 LexedSource lexSource(const SourceFile& file, Diagnostics& diags);  // the grammar's own text
+// With `cache` (frontend/incremental_lex.h), only the region an edit changed since the
+// cache's text is lexed again.
+class IncrementalLexCache;
 LexedSource lexText(const std::string& name, const std::string& text, Diagnostics& diags,
-                    const std::vector<std::string>& importAliases = {});
+                    const std::vector<std::string>& importAliases = {}, IncrementalLexCache* cache = nullptr);
 
 // An implicit ';' has no source text of its own; it sits on the last character of the
 // token before it.

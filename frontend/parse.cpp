@@ -168,7 +168,7 @@ bool parseTextReusingStatements(const std::string& name, const std::string& text
   out.fileName = name;
   const int errorsBefore = diags.errorCount();
 
-  LexedSource lexed = lexText(name, text, diags, importAliases);
+  LexedSource lexed = lexText(name, text, diags, importAliases, reuse ? &reuse->tokens() : nullptr);
   out.decompositionDepth = lexed.decompositionDepth;
   out.homomorphismDepth = lexed.homomorphismDepth;
   antlr4::ListTokenSource source(std::move(lexed.tokens));

@@ -11,10 +11,13 @@
 #include "frontend/ast.h"
 #include "frontend/diagnostics.h"
 
+#include <memory>
 #include <string>
 #include <unordered_map>
 
 namespace fgsg::frontend {
+
+class IncrementalLexCache;  // frontend/incremental_lex.h
 
 // Where one recorded statement's AST is in the Program it was parsed into.
 struct ReusableStatementSlot {
@@ -33,6 +36,12 @@ class StatementReuse {
   }
   // The index of the statements the last parse put in its Program.
   ReusableStatementIndex takeRecorded() { return std::move(recorded_); }
+
+  // The raw tokens of the previous text (incremental lexing, frontend/incremental_lex.h):
+  // offered with the statements, taken back after the parse for the next one.
+  void offerTokens(std::shared_ptr<IncrementalLexCache> tokens) { tokens_ = std::move(tokens); }
+  std::shared_ptr<IncrementalLexCache> takeTokens() { return std::move(tokens_); }
+  IncrementalLexCache& tokens();  // for the parser; an empty cache when none was offered
 
   // How many statements the last parse took over instead of parsing (tests, the bench).
   size_t reusedCount() const { return reused_; }
@@ -66,6 +75,7 @@ class StatementReuse {
   ReusableStatementIndex offered_;
   ReusableStatementIndex recorded_;
   size_t reused_ = 0;
+  std::shared_ptr<IncrementalLexCache> tokens_;
 };
 
 // parseProgram (frontend/parse.h) with statements taken over from `reuse`'s previous parse

@@ -119,10 +119,13 @@ std::shared_ptr<Analysis> analyze(const std::string& path, const std::string& te
   frontend::Diagnostics diags(&a->source);
   ir::Module module;
   frontend::StatementReuse reuse;
-  if (previous && previous.use_count() == 1 && previous->path == path)
+  if (previous && previous.use_count() == 1 && previous->path == path) {
     reuse.offer(previous->program, std::move(previous->statements));
+    reuse.offerTokens(std::move(previous->tokens));
+  }
   if (ir::compileSourceReusing(a->source, module, diags, a->program, reuse)) checkDataFiles(module, path, diags);
   a->statements = reuse.takeRecorded();
+  a->tokens = reuse.takeTokens();
   a->diagnostics = diags.all();
   collectDefinitions(*a);
   return a;

@@ -36,6 +36,8 @@ struct Analysis {
   // Where each statement of `program` that the next analysis may take over is (statement
   // reuse: frontend/statement_reuse.h).
   frontend::ReusableStatementIndex statements;
+  // Its raw tokens, which the next analysis lexes again only around the edit.
+  std::shared_ptr<frontend::IncrementalLexCache> tokens;
 
   // The last line of the document itself in `source`.
   int documentLines() const;

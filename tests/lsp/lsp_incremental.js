@@ -6,7 +6,8 @@
 // declared (used by statements that did not change), lines inserted and deleted before
 // other statements, a column shift on a line of two statements, a dropped ';', a block
 // comment opened and closed, a `priority`, a duplicate attr, several changes in one
-// message, a whole-text change, a .cga document.
+// message, a whole-text change, a .cga document; and for incremental lexing, edits inside
+// a multi-line comment and a string, Enter at several places, two tokens merged, undone.
 // usage: node lsp_incremental.js FGSG SOURCE_DIR
 'use strict';
 const { spawn, spawnSync } = require('child_process');
@@ -183,6 +184,24 @@ async function main() {
   assert.deepStrictEqual(codes(await compare('whole text', await incremental.next(uri))), ['E010@5:15']);
   await edit('two changes', change('hieght', 'height'), change('Bay ~> Floor;', 'Bay ~>\n  Floor;'));
   assert.deepStrictEqual(await edit('joined again', change('Bay ~>\n  Floor;', 'Bay ~> Floor;')), []);
+  // Incremental lexing (frontend/incremental_lex.h): a multi-line block comment and a string
+  // edited inside, left open and closed, Enter at several places, tokens merged, all undone.
+  await edit('multi-line comment', change('Bay ~> Floor;', '/* a\n  comment */\nBay ~> Floor;'));
+  await edit('edit inside the comment', change('a\n  comment', 'a\n  long\n comment'));
+  await edit('comment left open', change('comment */', 'comment *'));
+  await edit('comment closed', change('comment *\n', 'comment */\n'));
+  await edit('comment removed', change('/* a\n  long\n comment */\n', ''));
+  await edit('Enter inside a string', change('Repeat("Y"', 'Repeat("\nY"'));
+  await edit('string joined', change('Repeat("\nY"', 'Repeat("Y"'));
+  await edit('Enter at the start of a line', change('Floor ~> T', '\nFloor ~> T'));
+  await edit('Enter in a rule', change('S(1r, 1r, 0.2) Wall;', 'S(1r, 1r, 0.2)\n  Wall;'));
+  await edit('Enter splitting a name', change('Facade ~> Subdiv', 'Fa\ncade ~> Subdiv'));
+  await edit('name joined', change('Fa\ncade', 'Facade'));
+  await edit('operator deleted', change('depth * 2', 'depth 2'));
+  assert.deepStrictEqual(codes(await edit('two tokens merged', change('depth 2', 'depth2'))), ['E010@8:38']);
+  await edit('undo: merged', change('depth2', 'depth * 2'));
+  await edit('undo: Enter in a rule', change('S(1r, 1r, 0.2)\n  Wall;', 'S(1r, 1r, 0.2) Wall;'));
+  assert.deepStrictEqual(await edit('undo: Enter at the start', change('\n\nFloor ~> T', '\nFloor ~> T')), []);
   assert.strictEqual(text, original);
   assert.ok(errorsSeen >= 10, `errors seen: ${errorsSeen}`);
 
