@@ -98,13 +98,14 @@ class StatementScan {
   size_t start_;
 };
 
-// Everything the parse and the AST of tokens [start, end) depend on: each token's type,
-// text, line, column and offsets from the first (tokens written together), the type of
+// Everything the parse and the AST of tokens [start, end) depend on, but for the lines the
+// AST is moved by: each token's type, text, line from the first's, column and offsets from
+// the first (tokens written together), the type of
 // the token after (the parser's lookahead), the lpfg section and the priority in force.
 std::string reusableStatementKey(antlr4::CommonTokenStream& tokens, size_t start, size_t end, RuleSection section,
                                  int priority) {
   std::string key = std::to_string(static_cast<int>(section)) + ' ' + std::to_string(priority);
-  const size_t base = tokens.get(start)->getStartIndex();
+  const size_t base = tokens.get(start)->getStartIndex(), firstLine = tokens.get(start)->getLine();
   auto number = [&](size_t n) {
     key += std::to_string(n);
     key += ',';
@@ -113,7 +114,7 @@ std::string reusableStatementKey(antlr4::CommonTokenStream& tokens, size_t start
     const Token* t = tokens.get(i);
     key += '\n';
     number(t->getType());
-    number(t->getLine());
+    number(t->getLine() - firstLine);
     number(t->getCharPositionInLine());
     number(t->getStartIndex() - base);
     number(t->getStopIndex() - base);
@@ -206,7 +207,7 @@ bool parseTextReusingStatements(const std::string& name, const std::string& text
     if (reuse) {
       scannedEnd = scan.endAtOrAfter(start);
       key = reusableStatementKey(tokens, start, scannedEnd, section, builder.priority());
-      if (reuse->reuse(key, out)) {
+      if (reuse->reuse(key, out, static_cast<int>(tokens.get(start)->getLine()))) {
         tokens.seek(scannedEnd);
         continue;
       }
@@ -223,7 +224,7 @@ bool parseTextReusingStatements(const std::string& name, const std::string& text
       const bool one = programStatementCount(out) == statementsBefore + 1;
       const bool isRule = out.rules.size() == rulesBefore + 1, isValue = out.values.size() == valuesBefore + 1;
       if (reuse && one && (isRule || isValue) && tokens.index() == scannedEnd && diags.all().size() == diagnosticsBefore)
-        reuse->record(key, isRule, out);
+        reuse->record(key, isRule, out, static_cast<int>(tokens.get(start)->getLine()));
     } else {
       tokens.seek(start);
       parser.setState(antlr4::atn::ATNState::INVALID_STATE_NUMBER);

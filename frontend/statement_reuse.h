@@ -1,14 +1,16 @@
 // Statement reuse for re-parsing an edited grammar (fgsg lsp, #50): a parse records, for
 // each rule and attr/const statement it parsed cleanly, a key made of the statement's
-// tokens (type, text, line, column, offsets), its lpfg section and the `priority` in force,
-// and where its AST went in the Program. The next parse, given that Program, moves the AST
+// tokens (type, text, line from the statement's first, column, offsets), its lpfg section
+// and the `priority` in force, and where its AST went in the Program and on which line. The next parse, given that Program, moves the AST
 // of a statement whose key comes again instead of parsing it: the same tokens in the same
-// places and context give the same AST, so the result is the one a fresh parse would give.
+// places and context give the same AST, moved by as many lines as the statement moved
+// (frontend/ast_line_shift.h), so the result is the one a fresh parse would give.
 // A statement that had a syntax error or any diagnostic is never recorded, so its errors are
 // always reported anew.
 #pragma once
 
 #include "frontend/ast.h"
+#include "frontend/ast_line_shift.h"
 #include "frontend/diagnostics.h"
 
 #include <memory>
@@ -23,6 +25,7 @@ class IncrementalLexCache;  // frontend/incremental_lex.h
 struct ReusableStatementSlot {
   bool isRule = false;  // in `rules`, else in `values`
   size_t index = 0;
+  int firstLine = 0;  // the line of the statement's first token
 };
 using ReusableStatementIndex = std::unordered_map<std::string, ReusableStatementSlot>;
 
@@ -46,9 +49,9 @@ class StatementReuse {
   // How many statements the last parse took over instead of parsing (tests, the bench).
   size_t reusedCount() const { return reused_; }
 
-  // For the parser (frontend/parse.cpp): moves the AST recorded under `key` into `out` and
-  // records it there; false when there is none.
-  bool reuse(const std::string& key, Program& out) {
+  // For the parser (frontend/parse.cpp): moves the AST recorded under `key` into `out`,
+  // to the statement's `firstLine` now, and records it there; false when there is none.
+  bool reuse(const std::string& key, Program& out, int firstLine) {
     if (!previous_) return false;
     const auto it = offered_.find(key);
     if (it == offered_.end()) return false;
@@ -57,17 +60,20 @@ class StatementReuse {
     if (slot.isRule) {
       if (slot.index >= previous_->rules.size()) return false;
       out.rules.push_back(std::move(previous_->rules[slot.index]));
+      shiftLines(out.rules.back(), firstLine - slot.firstLine);
     } else {
       if (slot.index >= previous_->values.size()) return false;
       out.values.push_back(std::move(previous_->values[slot.index]));
+      shiftLines(out.values.back(), firstLine - slot.firstLine);
     }
-    record(key, slot.isRule, out);
+    record(key, slot.isRule, out, firstLine);
     ++reused_;
     return true;
   }
-  // For the parser: the statement just parsed into `out` (its last rule or value) has `key`.
-  void record(const std::string& key, bool isRule, const Program& out) {
-    recorded_[key] = ReusableStatementSlot{isRule, (isRule ? out.rules.size() : out.values.size()) - 1};
+  // For the parser: the statement just parsed into `out` (its last rule or value), whose
+  // first token is on `firstLine`, has `key`.
+  void record(const std::string& key, bool isRule, const Program& out, int firstLine) {
+    recorded_[key] = ReusableStatementSlot{isRule, (isRule ? out.rules.size() : out.values.size()) - 1, firstLine};
   }
 
  private:
