@@ -396,7 +396,8 @@ def run_bounded(command, timeout, **options):
     """subprocess.run whose timeout (or Ctrl-C) ends the command's whole process group:
     a test's children would otherwise keep its output pipe open and the wait forever."""
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               text=True, start_new_session=True, **options)
+                               text=True, encoding="utf-8", errors="replace",  # a test may print any byte
+                               start_new_session=True, **options)
     try:
         output, _ = process.communicate(timeout=timeout)
     except BaseException:

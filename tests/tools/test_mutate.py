@@ -132,6 +132,19 @@ class MutateHarness(unittest.TestCase):
             self.assertIn("equivalent (survived; left out of the rate", f.read())
         self.assert_pristine()
 
+    def test_a_test_printing_bytes_that_are_not_utf8_is_still_classified(self):
+        # A failing test's log held a stray 0x80 and the run ended in a UnicodeDecodeError.
+        noisy = ("python3 -c 'import sys, calc; sys.stdout.buffer.write(bytes([0x80, 0xff, 10])); "
+                 "sys.stdout.flush(); assert calc.add(2, 3) == 5'")
+        report = os.path.join(self.tmp.name, "report.json")
+        result = self.run_mutate("--area", "demo", "--report", report, test=noisy)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        with open(report) as f:
+            area = json.load(f)["areas"][0]
+        self.assertEqual([r["status"] for r in area["results"]],
+                         ["killed", "survived", "stillborn", "timeout"])
+        self.assert_pristine()
+
     def test_a_fragment_found_zero_or_several_times_is_an_error(self):
         self.write("lists/demo.txt", LIST.replace("if x > 10:", "if x > 11:"))
         result = self.run_mutate("--area", "demo")

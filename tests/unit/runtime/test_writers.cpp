@@ -547,6 +547,30 @@ TEST_CASE("GLB carries texture coordinates as TEXCOORD_0 with v flipped and vali
   requireValidGltf(dir / "uv.glb");
 }
 
+TEST_CASE("GLB textures repeat and filter linearly with mipmaps", "[writers][gltf][texcoords]") {
+  // A facade tiles its bricks: coordinates past 1 must wrap (REPEAT, 10497), not stretch
+  // the edge texels (CLAMP_TO_EDGE, 33071, which the validator accepts as well).
+  const fs::path dir = scratchDir("glb_sampler");
+  Mesh m = texturedMesh();
+  m.textures = {(fs::path(FGSG_SOURCE_DIR) / "examples/textures/brick.png").string()};
+  m.addTextureRun(0, 0);
+  std::string error;
+  REQUIRE(io::writeMesh(m, (dir / "tiled.glb").string(), error));
+  const Glb g = parseGlb(readFile(dir / "tiled.glb"));
+  REQUIRE(g.json["samplers"].size() == 1);
+  const auto& sampler = g.json["samplers"][0];
+  CHECK(sampler["wrapS"] == 10497);
+  CHECK(sampler["wrapT"] == 10497);
+  CHECK(sampler["magFilter"] == 9729);  // LINEAR
+  CHECK(sampler["minFilter"] == 9987);  // LINEAR_MIPMAP_LINEAR
+  REQUIRE(g.json["textures"].size() == 1);
+  CHECK(g.json["textures"][0]["sampler"] == 0);
+  CHECK(g.json["textures"][0]["source"] == 0);
+  const int material = g.json["meshes"][0]["primitives"][0]["material"].get<int>();
+  CHECK(g.json["materials"][material]["pbrMetallicRoughness"]["baseColorTexture"]["index"] == 0);
+  requireValidGltf(dir / "tiled.glb");
+}
+
 TEST_CASE("OBJ writes vt lines and v/vt/vn corners", "[writers][texcoords]") {
   const fs::path dir = scratchDir("obj_uv");
   const Mesh m = texturedMesh();
