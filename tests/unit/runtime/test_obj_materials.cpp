@@ -133,6 +133,20 @@ TEST_CASE("a textured OBJ groups its faces by material and names a .mtl with the
                                    "f 5/5/5 6/6/6 7/7/7", "f 5/5/5 7/7/7 8/8/8"});
   }
 
+  SECTION("an empty run writes no usemtl, and segments after plain faces need none") {
+    // Run 0 (texture 0) ends where it starts; the segments follow plain faces, which
+    // already use fgsg_plain. Both were survivors of the mutation run (#51): a stray
+    // 'usemtl fgsg_texture_0' with no face, a second 'usemtl fgsg_plain' before 'l'.
+    Mesh runs = mesh;
+    runs.textureRuns = {{0, 0}, {0, 1}, {2, -1}};
+    runs.lines = {0, 4};
+    REQUIRE(io::writeMesh(runs, (dir / "out" / "runs.obj").string(), error));
+    CHECK(structureLines(readFile(dir / "out" / "runs.obj")) ==
+          std::vector<std::string>{"# fgsg", "mtllib runs.mtl", "usemtl fgsg_texture_1",
+                                   "f 1/1/1 2/2/2 3/3/3", "f 1/1/1 3/3/3 4/4/4", "usemtl fgsg_plain",
+                                   "f 5/5/5 6/6/6 7/7/7", "f 5/5/5 7/7/7 8/8/8", "l 1 5"});
+  }
+
   SECTION("other formats get no .mtl") {
     REQUIRE(io::writeMesh(mesh, (dir / "mesh.ply").string(), error));
     CHECK(filesIn(dir) == std::vector<std::string>{"images", "mesh.ply", "out"});
