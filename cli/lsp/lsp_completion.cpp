@@ -1,5 +1,6 @@
 #include "cli/lsp/lsp_features.h"
 
+#include "cli/lsp/lsp_import_paths.h"
 #include "cli/lsp/lsp_text.h"
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_parse.h"
@@ -32,8 +33,16 @@ std::string functionSignature(const frontend::FunctionInfo& f) {
 
 Json completion(const Analysis& a, const std::string& text, int line, int character) {
   const std::string lineText = lineAt(text, line);
-  const std::string prefix = nameAt(lineText, byteAtUtf16(lineText, character), true);
+  const size_t cursor = byteAtUtf16(lineText, character);
+  // Inside an import's path: the modules it may name, and nothing else.
+  if (const auto typed = importPathBeforeCursor(lineText.substr(0, cursor)))
+    return Json{{"isIncomplete", false}, {"items", importPathItems(a.path, *typed, line, character)}};
+  const std::string prefix = nameAt(lineText, cursor, true);
   Json items = Json::array();
+  // '"' and '/' trigger completion for import paths; elsewhere (a string, a division) they
+  // start no name.
+  if (prefix.empty() && cursor > 0 && (lineText[cursor - 1] == '"' || lineText[cursor - 1] == '/'))
+    return Json{{"isIncomplete", false}, {"items", std::move(items)}};
   std::set<std::string> seen;
   // Each item replaces the whole name being written, its alias included: an editor's own
   // idea of a word stops at the '.', and would write `parts.parts.Window`.
@@ -54,11 +63,15 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
       case Definition::Kind::Field: add(d.name, kItemField, "field"); break;
     }
   }
-  // fgsg's commands are not CGA's operations (split, extrude ...): a .cga file gets its
-  // own names and the math functions both dialects share.
-  if (!frontend::isCgaSource(a.path, text))
+  // fgsg's commands and functions are not CGA's (split, extrude, rand, p ...): a .cga file
+  // gets CityEngine's names the dialect knows (frontend/cga's tables).
+  if (frontend::isCgaSource(a.path, text)) {
+    for (const auto& op : frontend::cityEngineOperationNames()) add(op, kItemFunction, "CityEngine operation");
+    for (const auto& [name, signature] : frontend::cityEngineFunctionSignatures()) add(name, kItemFunction, signature);
+  } else {
     for (const auto& c : frontend::allCommands()) add(c.name, kItemFunction, c.signature);
-  for (const auto& f : frontend::allFunctions()) add(f.name, kItemFunction, functionSignature(f));
+    for (const auto& f : frontend::allFunctions()) add(f.name, kItemFunction, functionSignature(f));
+  }
   return Json{{"isIncomplete", false}, {"items", std::move(items)}};
 }
 

@@ -14,8 +14,9 @@ namespace fgsg::cli::lsp {
 Json diagnosticsParams(const Analysis& analysis, const std::string& uri);
 
 // textDocument/completion: the builtin commands and functions (frontend/builtins.h's
-// tables; not in a .cga file, whose operations are CityEngine's) and the grammar's rules,
-// attrs, consts and fields that start like the name being written at (line, character).
+// tables; in a .cga file CityEngine's operations and functions instead) and the grammar's
+// rules, attrs, consts and fields that start like the name being written at (line,
+// character); inside an import's path, the modules it may name (lsp_import_paths.h).
 Json completion(const Analysis& analysis, const std::string& text, int line, int character);
 
 // textDocument/hover: a builtin's signature, or a declaration's line.

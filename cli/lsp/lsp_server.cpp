@@ -88,7 +88,7 @@ class Server {
       initialized_ = true;
       sendResult(id, Json{{"capabilities",
                            Json{{"textDocumentSync", Json{{"openClose", true}, {"change", 2}}},  // incremental
-                                {"completionProvider", Json{{"triggerCharacters", Json::array({"."})}}},
+                                {"completionProvider", Json{{"triggerCharacters", Json::array({".", "\"", "/"})}}},
                                 {"hoverProvider", true},
                                 {"definitionProvider", true},
                                 {"documentSymbolProvider", true},

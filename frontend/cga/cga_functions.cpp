@@ -52,7 +52,34 @@ const char* const kKnownFunctions[] = {
     "findLast", "getPrefix", "getSuffix", "getRange", "index", "size", "transpose", "splitString", "colorRamp",
     "comp", "readTextFile", "readStringTable", "readFloatTable", "readBoolTable", "fileRandom", "filesSearch"};
 
+// CityEngine functions with a translation of their own (Translator::call), as they are written.
+const char* const kTranslatedFunctions[][2] = {
+    {"rand", "rand(), rand(max), rand(min, max)"},
+    {"p", "p(probability)"},
+    {"rint", "rint(x)"},
+    {"ln", "ln(x)"},
+    {"log10", "log10(x)"},
+    {"inside", "inside(intra|inter|all, \"label\")"},
+    {"overlaps", "overlaps(intra|inter|all, \"label\")"},
+    {"touches", "touches(intra|inter|all, \"label\")"},
+    {"minimumDistance", "minimumDistance(intra|inter|all, \"label\")"},
+    {"contextCount", "contextCount(intra|inter|all, \"label\")"},
+    {"contextCompare", "contextCompare(intra|inter|all, \"label\", world.highest|...)"}};
+
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> cityEngineFunctions() {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& f : kTranslatedFunctions) out.emplace_back(f[0], f[1]);
+  for (const char* same : kSameFunctions) {
+    const FunctionInfo* info = findFunction(same);
+    std::string signature = std::string(same) + "(";
+    for (int i = 0; info && i < info->maxArgs; ++i) signature += (i ? ", " : "") + std::string(1, static_cast<char>('a' + i));
+    out.emplace_back(same, signature + ")");
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
 
 bool Translator::isRandom(const Expr& e) {
   if (e.kind == ExprKind::Call && (e.text == "Rand" || e.text == "rand")) return true;

@@ -38,6 +38,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 namespace fgsg::frontend::cga {
 
@@ -72,6 +73,11 @@ bool isCityEngineOperation(const std::string& name) {
   for (const char* op : kCityEngineOperations)
     if (name == op) return true;
   return false;
+}
+
+std::vector<std::string> cityEngineOperations() {
+  std::set<std::string> names(std::begin(kCityEngineOperations), std::end(kCityEngineOperations));
+  return {names.begin(), names.end()};
 }
 
 struct Translator::Sequence {

@@ -6,6 +6,8 @@
 #include "frontend/diagnostics.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fgsg::frontend {
 
@@ -24,5 +26,11 @@ bool parseCgaText(const std::string& name, const std::string& text, Program& out
 // A CityEngine operation name (`taper`, `rotateScope`, `color` ...): the fgsg dialect
 // refuses one used as a shape symbol with arguments.
 bool isCityEngineOperationName(const std::string& name);
+
+// For an editor's completion in a .cga file: CityEngine's operations this dialect knows
+// (sorted; those not translated yet are E800 where used), and the CityEngine functions it
+// translates, each with its argument forms.
+std::vector<std::string> cityEngineOperationNames();
+std::vector<std::pair<std::string, std::string>> cityEngineFunctionSignatures();
 
 }  // namespace fgsg::frontend

@@ -42,6 +42,11 @@ std::string symbolName(const std::string& name);
 
 // A CityEngine operation this dialect knows the name of (supported or not).
 bool isCityEngineOperation(const std::string& name);
+// Those names, sorted, each once (an editor's completion).
+std::vector<std::string> cityEngineOperations();
+// The CityEngine functions this dialect translates, with their argument forms
+// (`rand(min, max)`): the ones Translator::call accepts besides the file's own.
+std::vector<std::pair<std::string, std::string>> cityEngineFunctions();
 
 // A user function (or a const: CityEngine's are functions without parameters).
 struct Function {

@@ -21,7 +21,12 @@ setTimeout(() => { console.error('FAIL: no answer within 60 s'); process.exit(1)
 
 async function main() {
   const work = fs.mkdtempSync(path.join(os.tmpdir(), 'fgsg-lsp-'));
-  const server = spawn(fgsg, ['lsp', '--stdio'], { stdio: ['pipe', 'pipe', 'inherit'] });
+  // The standard library and FGSG_PATH named, so that import paths complete to known files.
+  const extra = path.join(work, 'extra');
+  fs.mkdirSync(extra);
+  fs.writeFileSync(path.join(extra, 'shared.fgsg'), 'Shared ~> I("cube");\n');
+  const env = { ...process.env, FGSG_STDLIB: path.join(source, 'stdlib'), FGSG_PATH: extra };
+  const server = spawn(fgsg, ['lsp', '--stdio'], { stdio: ['pipe', 'pipe', 'inherit'], env });
   const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));
   const connection = rpc.createMessageConnection(new rpc.StreamMessageReader(server.stdout),
                                                  new rpc.StreamMessageWriter(server.stdin));
@@ -191,10 +196,69 @@ async function main() {
     textDocument: { uri: cgaUri, languageId: 'cga', version: 1, text: fs.readFileSync(cgaPath, 'utf8') },
   });
   assert.deepStrictEqual(await nextDiagnostics(cgaUri), []);
-  // Its completion offers its own names, not fgsg's commands (CGA's are lower-case).
+  // Its completion offers its own names, then CityEngine's operations and functions
+  // (lower-case), not fgsg's commands.
   const cgaList = await connection.sendRequest('textDocument/completion',
                                                { textDocument: { uri: cgaUri }, position: { line: 39, character: 1 } });
-  assert.deepStrictEqual(cgaList.items.map((i) => i.label), ['Tower', 'Tile', 'tan']);
+  assert.deepStrictEqual(cgaList.items.map((i) => [i.label, i.detail]), [
+    ['Tower', 'rule'], ['Tile', 'rule'], ['t', 'CityEngine operation'], ['taper', 'CityEngine operation'],
+    ['text', 'CityEngine operation'], ['texture', 'CityEngine operation'], ['tileUV', 'CityEngine operation'],
+    ['translate', 'CityEngine operation'], ['translateUV', 'CityEngine operation'], ['trim', 'CityEngine operation'],
+    ['tan', 'tan(a)'], ['touches', 'touches(intra|inter|all, "label")']]);
+  // CityEngine's operations and functions that the dialect knows, none of fgsg's.
+  const mods = path.join(work, 'mods');
+  fs.mkdirSync(path.join(mods, 'parts'), { recursive: true });
+  const cityText = 'import w : "wa\nLot -->\n    extr\n    comp\n    Sub\n    ra\n    rou\n';
+  const cityUri = uriOf(path.join(mods, 'city.cga'));
+  connection.sendNotification('textDocument/didOpen',
+                              { textDocument: { uri: cityUri, languageId: 'cga', version: 1, text: cityText } });
+  await nextDiagnostics(cityUri);
+  const labelsAt = async (uri, line, character) => (await connection.sendRequest('textDocument/completion',
+    { textDocument: { uri }, position: { line, character } })).items.map((i) => i.label);
+  assert.deepStrictEqual(await labelsAt(cityUri, 2, 8), ['extrude']);
+  assert.deepStrictEqual(await labelsAt(cityUri, 3, 8), ['comp']);
+  assert.deepStrictEqual(await labelsAt(cityUri, 4, 7), []);
+  assert.deepStrictEqual(await labelsAt(cityUri, 5, 6), ['rand']);
+  assert.deepStrictEqual(await labelsAt(cityUri, 6, 7), []);
+
+  // Import paths (#50): inside `import "`, the modules beside the document (not itself, not
+  // other files), its folders, FGSG_PATH's modules and the standard library's, as an import
+  // writes them; filtered by what is written, which each item replaces.
+  fs.writeFileSync(path.join(mods, 'walls.fgsg'), 'Wall ~> I("cube");\n');
+  fs.writeFileSync(path.join(mods, 'lib.cga'), 'Lib --> extrude(1)\n');
+  fs.writeFileSync(path.join(mods, 'notes.txt'), 'not a grammar\n');
+  fs.writeFileSync(path.join(mods, 'parts', 'door.fgsg'), 'Door ~> I("cube");\n');
+  const mainText = 'import "\nimport "std/cga/\nimport "pa\nimport "parts/\nimport "s\nCall("\n';
+  const mainPath = path.join(mods, 'main.fgsg');
+  fs.writeFileSync(mainPath, mainText);
+  const mainUri = uriOf(mainPath);
+  connection.sendNotification('textDocument/didOpen',
+                              { textDocument: { uri: mainUri, languageId: 'fgsg', version: 1, text: mainText } });
+  await nextDiagnostics(mainUri);
+  const standard = [];  // the standard library's modules, as `import "std/..."` names them
+  for (const folder of fs.readdirSync(path.join(source, 'stdlib'))) {
+    if (!fs.statSync(path.join(source, 'stdlib', folder)).isDirectory()) continue;
+    for (const f of fs.readdirSync(path.join(source, 'stdlib', folder)))
+      if (f.endsWith('.fgsg')) standard.push(`std/${folder}/${f.slice(0, -5)}`);
+  }
+  assert.ok(standard.includes('std/cga/facade') && standard.includes('std/cga/roof'));
+  const all = await connection.sendRequest('textDocument/completion',
+                                           { textDocument: { uri: mainUri }, position: { line: 0, character: 8 } });
+  assert.deepStrictEqual(all.items.map((i) => i.label), ['lib.cga', 'parts/', 'shared', ...standard.sort(), 'walls']);
+  const walls = all.items.find((i) => i.label === 'walls');
+  assert.deepStrictEqual([walls.kind, walls.detail, walls.textEdit], [9, path.join(mods, 'walls.fgsg'),
+    { range: { start: { line: 0, character: 8 }, end: { line: 0, character: 8 } }, newText: 'walls' }]);
+  const cgaLibrary = await connection.sendRequest('textDocument/completion',
+                                                  { textDocument: { uri: mainUri }, position: { line: 1, character: 16 } });
+  assert.deepStrictEqual(cgaLibrary.items.map((i) => [i.label, i.textEdit.range.start.character]),
+                         [['std/cga/facade', 8], ['std/cga/roof', 8]]);
+  assert.deepStrictEqual(await labelsAt(mainUri, 2, 10), ['parts/']);
+  assert.deepStrictEqual(await labelsAt(mainUri, 3, 14), ['parts/door']);
+  assert.deepStrictEqual(await labelsAt(mainUri, 4, 9), ['shared', ...standard]);
+  assert.deepStrictEqual(await labelsAt(mainUri, 5, 6), []);  // a string that is no import's
+  // The .cga dialect's `import name : "..."`.
+  assert.deepStrictEqual(await labelsAt(cityUri, 0, 14), ['walls']);
+  assert.ok(init.capabilities.completionProvider.triggerCharacters.includes('"'));
   const cgaSymbols = await connection.sendRequest('textDocument/documentSymbol', { textDocument: { uri: cgaUri } });
   assert.deepStrictEqual(cgaSymbols.map((s) => s.name), [
     'height', 'floor_height', 'brick_share', 'setback_distance', 'Lot', 'Footprint', 'Tower', 'Building', 'Roof',
