@@ -24,8 +24,10 @@ for engine in interp jit; do
   within 4 0 "$stopped" -- "$fgsg" run "$inputs/limits_long_traces.fgsg" --engine "$engine" --max-seconds 1 \
     -o "$tmp/traces.obj" --stats
   [ -s "$tmp/traces.obj" ] || fail "the kept result of the traces was not written ($engine)"
-  # The derivation itself stops within 10 % of the limit (plus a scheduling slice).
-  awk '$1 == "time.derive" { exit !($2 >= 1.0 && $2 < 1.15) }' "$tmp/out" ||
+  # The derivation ran to the limit (not short of it) and `within 4` bounds the whole run;
+  # how close to the limit it stops is a timing figure, measured by bench/limits_overshoot.sh
+  # (a wall-clock window here would fail on a loaded machine, #51).
+  awk '$1 == "time.derive" { exit !($2 >= 1.0) }' "$tmp/out" ||
     fail "time.derive $(awk '$1 == "time.derive" { print $2 }' "$tmp/out") for --max-seconds 1 ($engine)"
   within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_runaway_bare.fgsg" --engine "$engine" --max-seconds 1 \
     --max-depth 1000 --max-shapes 1000000000 -o "$tmp/runaway.glb"
