@@ -517,20 +517,15 @@ def summary_text(report):
         lines.append(f"{area['area']:24} {area['killed']:>6} {area['timeout']:>7} "
                      f"{area['stillborn']:>9} {area['survived']:>8} {area['equivalent']:>10} {area['invalid']:>7} "
                      f"{rate:>6} {area['seconds'] / 60:>6.1f} m")
-    survivors = [(a["area"], r) for a in report["areas"] for r in a.get("results", [])
-                 if r["status"] == "survived"]
-    if survivors:
-        lines += ["", "survivors (nothing notices these changes):"]
-        for area, r in survivors:
-            lines.append(f"  {area}: {r['file']}:{r['line']}  {r['original']!r} -> "
-                         f"{r['replacement']!r}  ({r['why']})")
-    equivalents = [(a["area"], r) for a in report["areas"] for r in a.get("results", [])
-                   if r["status"] == "equivalent"]
-    if equivalents:
-        lines += ["", "equivalent (survived; left out of the rate, their lists say why):"]
-        for area, r in equivalents:
-            lines.append(f"  {area}: {r['file']}:{r['line']}  {r['original']!r} -> "
-                         f"{r['replacement']!r}  ({r['why']})")
+    for status, title in (("survived", "survivors (nothing notices these changes):"),
+                          ("equivalent", "equivalent (survived; left out of the rate, their lists say why):")):
+        listed = [(a["area"], r) for a in report["areas"] for r in a.get("results", [])
+                  if r["status"] == status]
+        if listed:
+            lines += ["", title]
+            for area, r in listed:
+                lines.append(f"  {area}: {r['file']}:{r['line']}  {r['original']!r} -> "
+                             f"{r['replacement']!r}  ({r['why']})")
     return "\n".join(lines) + "\n"
 
 

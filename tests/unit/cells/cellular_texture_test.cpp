@@ -9,6 +9,7 @@
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
 #include "tests/unit/cells/brick_building_tree.h"
+#include "tests/unit/cells/hipped_house.h"
 #include "tests/unit/cells/rectilinear_mesh.h"
 
 #include <catch2/catch.hpp>
@@ -424,16 +425,7 @@ TEST_CASE("bonds: English, Flemish and header courses, closers at the free ends"
 TEST_CASE("shingles: rows from the eaves, staggered, ridge tiles on the hips, no overlaps", "[cells][shingles]") {
   // A 7 x 4 house, 3 high, under a hipped roof (apex 1.25 above the eaves), as a grammar's
   // Comp pieces would give it; only the roof is tiled.
-  const double top = 4.25;
-  const std::vector<LabelledPolygon> pieces{
-      {"wall", {Vec3(0, 0, 4), Vec3(7, 0, 4), Vec3(7, 3, 4), Vec3(0, 3, 4)}},
-      {"wall", {Vec3(7, 0, 4), Vec3(7, 0, 0), Vec3(7, 3, 0), Vec3(7, 3, 4)}},
-      {"wall", {Vec3(7, 0, 0), Vec3(0, 0, 0), Vec3(0, 3, 0), Vec3(7, 3, 0)}},
-      {"wall", {Vec3(0, 0, 0), Vec3(0, 0, 4), Vec3(0, 3, 4), Vec3(0, 3, 0)}},
-      {"roof", {Vec3(0, 3, 4), Vec3(7, 3, 4), Vec3(5, top, 2), Vec3(2, top, 2)}},
-      {"roof", {Vec3(7, 3, 4), Vec3(7, 3, 0), Vec3(5, top, 2)}},
-      {"roof", {Vec3(7, 3, 0), Vec3(0, 3, 0), Vec3(2, top, 2), Vec3(5, top, 2)}},
-      {"roof", {Vec3(0, 3, 0), Vec3(0, 3, 4), Vec3(2, top, 2)}}};
+  const std::vector<LabelledPolygon> pieces = fgsg::test::hippedHousePieces();
   const LabelledMesh lm = labelledMeshFromPolygons(pieces);
   FeatureOptions options;
   options.up = Vec3::UnitY();

@@ -12,6 +12,7 @@
 #include "runtime/cells/feature_param.h"
 #include "runtime/cells/generators.h"
 #include "tests/unit/cells/brick_building_tree.h"
+#include "tests/unit/cells/hipped_house.h"
 
 #include <catch2/catch.hpp>
 #include <fcl/narrowphase/collision.h>
@@ -181,18 +182,9 @@ TEST_CASE("coverage sampled apart from the generator: a gable end's rakes", "[ce
 }
 
 TEST_CASE("coverage sampled apart from the generator: a hipped roof's tiles", "[cells][coverage]") {
-  // cellular_texture_test.cpp's 7 x 4 house under a hipped roof (y up); tiles on the roof's
+  // The 7 x 4 house under a hipped roof (hipped_house.h, y up); tiles on the roof's
   // faces only, no ridge tiles: each face's rows clipped to its hips.
-  const double top = 4.25;
-  const std::vector<LabelledPolygon> pieces{
-      {"wall", {Vec3(0, 0, 4), Vec3(7, 0, 4), Vec3(7, 3, 4), Vec3(0, 3, 4)}},
-      {"wall", {Vec3(7, 0, 4), Vec3(7, 0, 0), Vec3(7, 3, 0), Vec3(7, 3, 4)}},
-      {"wall", {Vec3(7, 0, 0), Vec3(0, 0, 0), Vec3(0, 3, 0), Vec3(7, 3, 0)}},
-      {"wall", {Vec3(0, 0, 0), Vec3(0, 0, 4), Vec3(0, 3, 4), Vec3(0, 3, 0)}},
-      {"roof", {Vec3(0, 3, 4), Vec3(7, 3, 4), Vec3(5, top, 2), Vec3(2, top, 2)}},
-      {"roof", {Vec3(7, 3, 4), Vec3(7, 3, 0), Vec3(5, top, 2)}},
-      {"roof", {Vec3(7, 3, 0), Vec3(0, 3, 0), Vec3(2, top, 2), Vec3(5, top, 2)}},
-      {"roof", {Vec3(0, 3, 0), Vec3(0, 3, 4), Vec3(2, top, 2)}}};
+  const std::vector<LabelledPolygon> pieces = fgsg::test::hippedHousePieces();
   const LabelledMesh lm = labelledMeshFromPolygons(pieces);
   FeatureOptions options;
   options.up = Vec3::UnitY();
