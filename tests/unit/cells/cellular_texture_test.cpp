@@ -9,7 +9,7 @@
 #include "runtime/cells/generators.h"
 #include "runtime/cells/mortar.h"
 #include "tests/unit/cells/brick_building_tree.h"
-#include "tests/unit/cells/hipped_house.h"
+#include "tests/unit/cells/house_pieces.h"
 #include "tests/unit/cells/rectilinear_mesh.h"
 
 #include <catch2/catch.hpp>

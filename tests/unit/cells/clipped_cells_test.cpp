@@ -11,12 +11,12 @@
 #include "runtime/cells/feature_param.h"
 #include "runtime/cells/generators.h"
 #include "tests/unit/cells/brick_building_tree.h"
+#include "tests/unit/cells/house_pieces.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 using namespace fgsg::rt;
 using namespace fgsg::rt::cells;
@@ -106,11 +106,8 @@ TEST_CASE("a gable wall: clipped cells fill the rakes (coverage 0.987 with boxes
   // The gable wall of a house 6 m wide, 3 m to the eaves, rakes at 30°: apex at 3 + 3 tan 30°
   // = 3 + √3. Bricks 0.2 x 0.1, courses from the wall's foot. Area (by hand): the 6 x 3
   // rectangle and the gable's triangle, 6 √3 / 2: 18 + 3 √3 = 23.196152.
-  const double r3 = std::sqrt(3.0), apex = 3 + r3;
-  std::ostringstream obj;
-  obj.precision(17);
-  obj << "g wall\nv 0 0 0\nv 6 0 0\nv 6 3 0\nv 3 " << apex << " 0\nv 0 3 0\nf 1 2 3 4 5\n";
-  const LabelledMesh lm = parseBaseMeshObj(obj.str(), "gable");
+  const double r3 = std::sqrt(3.0);
+  const LabelledMesh lm = fgsg::test::gableWallMesh();
   FeatureOptions options;
   options.up = Vec3::UnitY();
   CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm, options), Vec3::UnitY());

@@ -12,7 +12,7 @@
 #include "runtime/cells/feature_param.h"
 #include "runtime/cells/generators.h"
 #include "tests/unit/cells/brick_building_tree.h"
-#include "tests/unit/cells/hipped_house.h"
+#include "tests/unit/cells/house_pieces.h"
 
 #include <catch2/catch.hpp>
 #include <fcl/narrowphase/collision.h>
@@ -20,7 +20,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 using namespace fgsg::rt;
 using namespace fgsg::rt::cells;
@@ -164,11 +163,8 @@ TEST_CASE("coverage sampled apart from the generator: a gable end's rakes", "[ce
   // The gable wall of a house 6 m wide, 3 m to the eaves, rakes at 30 degrees; bricks
   // 0.2 x 0.1 (clipped_cells_test.cpp's wall). Boxes only left a wedge (sqrt 3 / 2) h^2 per
   // rake per course: 0.987229 worked by hand.
-  const double r3 = std::sqrt(3.0), apex = 3 + r3;
-  std::ostringstream obj;
-  obj.precision(17);
-  obj << "g wall\nv 0 0 0\nv 6 0 0\nv 6 3 0\nv 3 " << apex << " 0\nv 0 3 0\nf 1 2 3 4 5\n";
-  const LabelledMesh lm = parseBaseMeshObj(obj.str(), "gable");
+  const double r3 = std::sqrt(3.0);
+  const LabelledMesh lm = fgsg::test::gableWallMesh();
   FeatureOptions options;
   options.up = Vec3::UnitY();
   CellularTexture tex(lm.mesh, buildLabelledFeatureMesh(lm, options), Vec3::UnitY());
@@ -182,7 +178,7 @@ TEST_CASE("coverage sampled apart from the generator: a gable end's rakes", "[ce
 }
 
 TEST_CASE("coverage sampled apart from the generator: a hipped roof's tiles", "[cells][coverage]") {
-  // The 7 x 4 house under a hipped roof (hipped_house.h, y up); tiles on the roof's
+  // The 7 x 4 house under a hipped roof (house_pieces.h, y up); tiles on the roof's
   // faces only, no ridge tiles: each face's rows clipped to its hips.
   const std::vector<LabelledPolygon> pieces = fgsg::test::hippedHousePieces();
   const LabelledMesh lm = labelledMeshFromPolygons(pieces);
