@@ -194,15 +194,7 @@ def check_uvs(doc, buffer, label, prefix):
 def check_no_uvs(doc, obj_path, label):
     """The NO_UV leaves have no texture coordinates nor image in the glTF, no `vt` in the
     OBJ; the others of uv_delete do."""
-    by_leaf = leaves(doc)
-    for leaf in NO_UV:
-        prims = by_leaf.get(leaf)
-        if not prims:
-            fail(f"{label}: no node {leaf}")
-        for p in prims or []:
-            textured = "baseColorTexture" in doc["materials"][p["material"]]["pbrMetallicRoughness"]
-            if "TEXCOORD_0" in p["attributes"] or textured:
-                fail(f"{label}: {leaf} has texture coordinates or an image after deleteUV")
+    check_untextured_leaves(doc, NO_UV, label, "deleteUV")
     vt = {}
     group = None
     for line in open(obj_path):
@@ -218,16 +210,21 @@ def check_no_uvs(doc, obj_path, label):
             fail(f"{label}: the OBJ's group {leaf} has {vt[leaf]} vt lines")
 
 
-def check_no_uvs_sets(doc, label):
+def check_untextured_leaves(doc, names, label, after):
+    """Each leaf named exists in the glTF and has neither texture coordinates nor an image."""
     by_leaf = leaves(doc)
-    for leaf in NO_UV_SETS:
+    for leaf in names:
         prims = by_leaf.get(leaf)
         if not prims:
             fail(f"{label}: no node {leaf}")
         for p in prims or []:
             textured = "baseColorTexture" in doc["materials"][p["material"]]["pbrMetallicRoughness"]
             if "TEXCOORD_0" in p["attributes"] or textured:
-                fail(f"{label}: {leaf} has texture coordinates or an image after an empty set was copied over set 0")
+                fail(f"{label}: {leaf} has texture coordinates or an image after {after}")
+
+
+def check_no_uvs_sets(doc, label):
+    check_untextured_leaves(doc, NO_UV_SETS, label, "an empty set was copied over set 0")
 
 
 def check_mtl(path, label):
