@@ -194,10 +194,36 @@ const FunctionInfo* findFunction(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+const char* const kFeatureTruths[] = {"corner", "edge",    "face",     "horizontal", "vertical", "curved", "arc",
+                                      "convex", "concave", "boundary", "bottom",     "top",      "side"};
+const char* const kFeatureNumbers[] = {"index", "valence", "length", "area"};
+const char* const kFieldVectors[] = {"vector",    "vector1",   "vector2",    "gradient",   "gradient2",
+                                     "curl",      "curl1",     "curl2",      "jacobianX",  "jacobianY",
+                                     "jacobianX2", "jacobianY2", "rgb"};
+const char* const kFieldScalars[] = {"value",       "value1",      "value2",      "length",   "length1",  "length2",
+                                     "Xangle",      "Xangle1",     "Xangle2",     "Yangle1",  "div",      "div1",
+                                     "div2",        "streamcurv1", "streamcurv2", "tensorXX", "tensorXY", "tensorYX",
+                                     "tensorYY",    "rotation",    "eigenangle",  "mincurv",  "maxcurv",  "meancurv",
+                                     "gausscurv",   "intensity"};
+}  // namespace
+
+std::vector<std::string> featureMemberNames() {
+  std::vector<std::string> out(std::begin(kFeatureTruths), std::end(kFeatureTruths));
+  out.insert(out.end(), std::begin(kFeatureNumbers), std::end(kFeatureNumbers));
+  out.push_back("label");
+  return out;
+}
+
+std::vector<std::string> fieldMemberNames() {
+  std::vector<std::string> out(std::begin(kFieldVectors), std::end(kFieldVectors));
+  out.insert(out.end(), std::begin(kFieldScalars), std::end(kFieldScalars));
+  return out;
+}
+
 bool isFeatureMember(const std::string& m, bool& isNumber, bool& takesString) {
-  static const char* kTruths[] = {"corner", "edge",    "face",   "horizontal", "vertical", "curved", "arc",
-                                  "convex", "concave", "boundary", "bottom",   "top",      "side"};
-  static const char* kNumbers[] = {"index", "valence", "length", "area"};
+  const auto& kTruths = kFeatureTruths;
+  const auto& kNumbers = kFeatureNumbers;
   isNumber = takesString = false;
   if (m == "label") return takesString = true, true;
   for (const char* t : kTruths)
@@ -208,14 +234,8 @@ bool isFeatureMember(const std::string& m, bool& isNumber, bool& takesString) {
 }
 
 bool isFieldMember(const std::string& m, bool& isVector) {
-  static const char* kVectors[] = {"vector",    "vector1",   "vector2",    "gradient",  "gradient2",
-                                   "curl",      "curl1",     "curl2",      "jacobianX", "jacobianY",
-                                   "jacobianX2", "jacobianY2", "rgb"};
-  static const char* kScalars[] = {"value",       "value1",      "value2",   "length",   "length1",  "length2",
-                                   "Xangle",      "Xangle1",     "Xangle2",  "Yangle1",  "div",      "div1",
-                                   "div2",        "streamcurv1", "streamcurv2", "tensorXX", "tensorXY", "tensorYX",
-                                   "tensorYY",    "rotation",    "eigenangle", "mincurv", "maxcurv",  "meancurv",
-                                   "gausscurv",   "intensity"};
+  const auto& kVectors = kFieldVectors;
+  const auto& kScalars = kFieldScalars;
   for (const char* v : kVectors)
     if (m == v) return isVector = true, true;
   for (const char* s : kScalars)

@@ -5,6 +5,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 namespace fgsg::frontend {
 
@@ -68,8 +69,11 @@ std::span<const FunctionInfo> allFunctions();
 // with whether the value is a number (else a truth value) and whether it takes the one
 // string argument.
 bool isFeatureMember(const std::string& member, bool& isNumber, bool& takesString);
+// Those members, each once (their docs: frontend/builtin_docs.cpp).
+std::vector<std::string> featureMemberNames();
 
 // The members a field answers (F1.vector1 ...), with whether the value is a vector.
 bool isFieldMember(const std::string& member, bool& isVector);
+std::vector<std::string> fieldMemberNames();
 
 }  // namespace fgsg::frontend

@@ -66,6 +66,10 @@ const char* const kTranslatedFunctions[][2] = {
     {"contextCount", "contextCount(intra|inter|all, \"label\")"},
     {"contextCompare", "contextCompare(intra|inter|all, \"label\", world.highest|...)"}};
 
+// geometry.area() ...: fgsg's Geometry queries (Translator::call).
+const char* const kCityEngineGeometryMembers[] = {"area",           "height",   "nVertices", "nFaces", "isConcave",
+                                                  "boundaryLength", "isPlanar", "angle",     "du",     "dv"};
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> cityEngineFunctions() {
@@ -79,6 +83,10 @@ std::vector<std::pair<std::string, std::string>> cityEngineFunctions() {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::vector<std::string> cityEngineGeometryFunctions() {
+  return {std::begin(kCityEngineGeometryMembers), std::end(kCityEngineGeometryMembers)};
 }
 
 bool Translator::isRandom(const Expr& e) {
@@ -376,10 +384,9 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     // geometry.area() ...: fgsg's Geometry.area queries; the surface selectors
     // (geometry.area(top)) are not here yet. geometry.angle(maxSlope): Geometry.angle("maxSlope");
     // geometry.du(0, uvSpace): Geometry.du(0, "uvSpace") (other uv sets and unitSpace not yet).
-    static const std::set<std::string> kGeometry = {"area", "height", "nVertices", "nFaces", "isConcave",
-                                                    "boundaryLength", "isPlanar", "angle", "du", "dv"};
     const std::string member = fn.substr(9);
-    if (!kGeometry.count(member)) {
+    if (std::find(std::begin(kCityEngineGeometryMembers), std::end(kCityEngineGeometryMembers), member) ==
+        std::end(kCityEngineGeometryMembers)) {
       notSupported(nameAt, "the function '" + fn + "'");
       return nullptr;
     }

@@ -99,6 +99,7 @@ int cgaLookingLine(const std::string& text) {
 bool isCityEngineOperationName(const std::string& name) { return cga::isCityEngineOperation(name); }
 std::vector<std::string> cityEngineOperationNames() { return cga::cityEngineOperations(); }
 std::vector<std::pair<std::string, std::string>> cityEngineFunctionSignatures() { return cga::cityEngineFunctions(); }
+std::vector<std::string> cityEngineGeometryFunctionNames() { return cga::cityEngineGeometryFunctions(); }
 
 bool parseCgaText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
                   const std::string& startRule) {

@@ -32,5 +32,7 @@ bool isCityEngineOperationName(const std::string& name);
 // translates, each with its argument forms.
 std::vector<std::string> cityEngineOperationNames();
 std::vector<std::pair<std::string, std::string>> cityEngineFunctionSignatures();
+// The members of CityEngine's geometry object it translates (`area` for geometry.area() ...).
+std::vector<std::string> cityEngineGeometryFunctionNames();
 
 }  // namespace fgsg::frontend

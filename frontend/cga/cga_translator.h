@@ -47,6 +47,8 @@ std::vector<std::string> cityEngineOperations();
 // The CityEngine functions this dialect translates, with their argument forms
 // (`rand(min, max)`): the ones Translator::call accepts besides the file's own.
 std::vector<std::pair<std::string, std::string>> cityEngineFunctions();
+// The members of CityEngine's geometry object Translator::call translates (geometry.area() ...).
+std::vector<std::string> cityEngineGeometryFunctions();
 
 // A user function (or a const: CityEngine's are functions without parameters).
 struct Function {
