@@ -24,6 +24,9 @@ int fieldCommand(const Args& args);    // fgsg field FILE (a grammar's field: st
 int viewCommand(const Args& args);     // fgsg view FILE (a live viewer in the browser)
 int lspCommand(const Args& args);      // fgsg lsp (a language server on stdin/stdout)
 int fmtCommand(const Args& args);      // fgsg fmt FILE... (canonical layout, in place)
+// fgsg builtin-reference (hidden): the markdown of docs/language.md's "Builtin reference",
+// generated from frontend/builtin_docs.cpp's table.
+int builtinReferenceCommand(const Args& args);
 int batchCommand(const Args& args);    // fgsg batch JOBS.json (python -m fgsg.batch: jobs on Dask)
 
 // The usage lines of the commands with their own (fgsg synth --help, fgsg evolve --help).

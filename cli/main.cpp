@@ -133,6 +133,8 @@ int main(int argc, char** argv) {
     if (cmd == "batch") return fgsg::cli::batchCommand(args);
     if (cmd == "lsp") return fgsg::cli::lspCommand(args);
     if (cmd == "fmt") return fgsg::cli::fmtCommand(args);
+    // Hidden (not in --help): prints docs/language.md's generated "Builtin reference".
+    if (cmd == "builtin-reference") return fgsg::cli::builtinReferenceCommand(args);
   } catch (const std::bad_alloc&) {
     std::cerr << "fgsg " << cmd << ": out of memory; nothing was written\n";
     return 1;

@@ -1,7 +1,9 @@
 #include "cli/lsp/lsp_features.h"
 
+#include "cli/lsp/lsp_builtin_help.h"
 #include "cli/lsp/lsp_import_paths.h"
 #include "cli/lsp/lsp_text.h"
+#include "frontend/builtin_docs.h"
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_parse.h"
 
@@ -48,13 +50,24 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
   // idea of a word stops at the '.', and would write `parts.parts.Window`.
   const Json replaced{{"start", {{"line", line}, {"character", std::max(character - static_cast<int>(prefix.size()), 0)}}},
                       {"end", {{"line", line}, {"character", character}}}};
-  auto add = [&](const std::string& label, int kind, const std::string& detail) {
-    if (!startsLike(label, prefix) || !seen.insert(label).second) return;
+  // Each item added, or nullptr when it does not start like the name or is there already.
+  auto add = [&](const std::string& label, int kind, const std::string& detail) -> Json* {
+    if (!startsLike(label, prefix) || !seen.insert(label).second) return nullptr;
     items.push_back(Json{{"label", label},
                          {"kind", kind},
                          {"detail", detail},
                          {"textEdit", Json{{"range", replaced}, {"newText", label}}}});
+    return &items.back();
   };
+  // A builtin's markdown (lsp_builtin_help.h) shown beside its item; made for the items
+  // offered only.
+  auto document = [](Json* item, const auto& help) {
+    if (!item) return;
+    if (const std::string text = help(); !text.empty())
+      (*item)["documentation"] = Json{{"kind", "markdown"}, {"value", text}};
+  };
+  // An object's members (scope.sx, geometry.area(), Scope.sx, F1.vector1 ...) once its '.' is written.
+  const bool afterDot = prefix.find('.') != std::string::npos;
   for (const auto& d : a.definitions) {
     switch (d.kind) {
       case Definition::Kind::Rule: add(d.name, kItemClass, "rule"); break;
@@ -63,14 +76,41 @@ Json completion(const Analysis& a, const std::string& text, int line, int charac
       case Definition::Kind::Field: add(d.name, kItemField, "field"); break;
     }
   }
+  using frontend::BuiltinDocKind;
   // fgsg's commands and functions are not CGA's (split, extrude, rand, p ...): a .cga file
   // gets CityEngine's names the dialect knows (frontend/cga's tables).
   if (frontend::isCgaSource(a.path, text)) {
-    for (const auto& op : frontend::cityEngineOperationNames()) add(op, kItemFunction, "CityEngine operation");
-    for (const auto& [name, signature] : frontend::cityEngineFunctionSignatures()) add(name, kItemFunction, signature);
+    for (const auto& op : frontend::cityEngineOperationNames())
+      document(add(op, kItemFunction, "CityEngine operation"), [&] { return cgaBuiltinHelp(op); });
+    for (const auto& function : frontend::cityEngineFunctionSignatures())
+      document(add(function.first, kItemFunction, function.second), [&] { return cgaBuiltinHelp(function.first); });
+    if (afterDot) {
+      for (const auto& member : frontend::cityEngineGeometryFunctionNames()) {
+        const std::string label = "geometry." + member;
+        const auto* d = frontend::findBuiltinDoc(BuiltinDocKind::CgaFunction, label);
+        document(add(label, kItemFunction, d ? d->signature : label + "()"), [&] { return cgaBuiltinHelp(label); });
+      }
+      for (const auto& d : frontend::builtinDocs())
+        if (d.kind == BuiltinDocKind::CgaAttribute)
+          document(add(d.name, kItemProperty, d.signature), [&] { return cgaBuiltinHelp(d.name); });
+    }
   } else {
-    for (const auto& c : frontend::allCommands()) add(c.name, kItemFunction, c.signature);
-    for (const auto& f : frontend::allFunctions()) add(f.name, kItemFunction, functionSignature(f));
+    for (const auto& c : frontend::allCommands())
+      document(add(c.name, kItemFunction, c.signature), [&] { return fgsgBuiltinHelp(a, c.name); });
+    for (const auto& f : frontend::allFunctions())
+      document(add(f.name, kItemFunction, functionSignature(f)), [&] { return fgsgBuiltinHelp(a, f.name); });
+    if (afterDot) {
+      for (const auto& d : frontend::builtinDocs())
+        if (d.kind == BuiltinDocKind::Query)
+          document(add(d.name, kItemProperty, d.signature), [&] { return fgsgBuiltinHelp(a, d.name); });
+      for (const auto& field : a.definitions)
+        if (field.kind == Definition::Kind::Field)
+          for (const auto& d : frontend::builtinDocs())
+            if (d.kind == BuiltinDocKind::FieldMember) {
+              const std::string label = field.name + "." + d.name;
+              document(add(label, kItemProperty, "field query"), [&] { return fgsgBuiltinHelp(a, label); });
+            }
+    }
   }
   return Json{{"isIncomplete", false}, {"items", std::move(items)}};
 }

@@ -16,10 +16,13 @@ Json diagnosticsParams(const Analysis& analysis, const std::string& uri);
 // textDocument/completion: the builtin commands and functions (frontend/builtins.h's
 // tables; in a .cga file CityEngine's operations and functions instead) and the grammar's
 // rules, attrs, consts and fields that start like the name being written at (line,
-// character); inside an import's path, the modules it may name (lsp_import_paths.h).
+// character), builtins with their docs; after a '.', the queries (Scope.sx, a field's
+// members; .cga: geometry.area, scope.sx ...); inside an import's path, the modules it may
+// name (lsp_import_paths.h).
 Json completion(const Analysis& analysis, const std::string& text, int line, int character);
 
-// textDocument/hover: a builtin's signature, or a declaration's line.
+// textDocument/hover: a builtin's signature and doc (lsp_builtin_help.h: the table
+// docs/language.md's builtin reference is generated from), or a declaration's line.
 Json hover(const Analysis& analysis, const std::string& text, int line, int character);
 
 // textDocument/definition: where the rule, attr, const or field under the cursor is

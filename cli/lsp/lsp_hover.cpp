@@ -1,7 +1,8 @@
 #include "cli/lsp/lsp_features.h"
 
+#include "cli/lsp/lsp_builtin_help.h"
 #include "cli/lsp/lsp_text.h"
-#include "frontend/builtins.h"
+#include "frontend/cga/cga_parse.h"
 
 namespace fgsg::cli::lsp {
 namespace {
@@ -25,14 +26,10 @@ Json hover(const Analysis& a, const std::string& text, int line, int character) 
     const Analysis::Place place = a.placeOf(wholeLine);
     return markdownCode(declared, place.inDocument ? "" : "\n\n" + place.path + ":" + std::to_string(place.line + 1));
   }
-  if (const auto* c = frontend::findCommand(name))
-    return markdownCode(c->signature, c->laterIssue ? std::string("\n\n(its runtime comes with ") + c->laterIssue + ")" : "");
-  if (const auto* f = frontend::findFunction(name)) {
-    std::string args;
-    for (int i = 0; i < f->maxArgs; ++i) args += (i ? ", " : "") + std::string(1, static_cast<char>('a' + i));
-    return markdownCode(std::string(f->name) + "(" + args + ")", "");
-  }
-  return nullptr;
+  // A builtin: its signature and its doc from frontend/builtin_docs.cpp's table.
+  const std::string help = frontend::isCgaSource(a.path, text) ? cgaBuiltinHelp(name) : fgsgBuiltinHelp(a, name);
+  if (help.empty()) return nullptr;
+  return Json{{"contents", Json{{"kind", "markdown"}, {"value", help}}}};
 }
 
 }  // namespace fgsg::cli::lsp

@@ -96,10 +96,11 @@ async function main() {
                                       { textDocument: { uri: errUri }, position: { line: 2, character: 31 } });
   assert.deepStrictEqual(list.items.map((i) => [i.label, i.kind]), [['height', 10]]);
 
-  // Hover: a builtin's signature, an attr's declaration.
+  // Hover: a builtin's signature and doc (tests/lsp/lsp_builtin_docs.js has more), an attr's declaration.
   let hover = await connection.sendRequest('textDocument/hover',
                                            { textDocument: { uri: errUri }, position: { line: 2, character: 26 } });
-  assert.strictEqual(hover.contents.value, '```\nExtrude(height)\n```');
+  assert.strictEqual(hover.contents.value, '```\nExtrude(height)\n```\n\n' +
+                     'Extrudes a polygon (or a flat box) along its normal by height metres into a solid with a Y-up scope.');
   hover = await connection.sendRequest('textDocument/hover',
                                        { textDocument: { uri: errUri }, position: { line: 2, character: 30 } });
   assert.strictEqual(hover.contents.value, '```\nattr height = 6;\n```');
