@@ -29,10 +29,33 @@ struct Rounding {
   double operator()(double v) const { return std::isfinite(v) ? std::round(v * scale) / scale : 0.0; }
 };
 
+// The design elements of `spec` where they are put, with their strength and decay.
+Json overlayDesignElements(const ir::FieldSpec& spec, const rt::surface::SurfaceMesh& mesh, const Rounding& rounded) {
+  Json out = Json::array();
+  for (const ir::FieldDesignSpec& item : spec.design) {
+    if (item.kind == "smooth") continue;
+    Json element{{"kind", item.kind}, {"position", nullptr}, {"strength", 1.0}, {"decay", 1.0}};
+    for (const auto& [key, values] : item.words) {
+      if (key == "at" && values.size() == 3) {
+        element["position"] = {rounded(values[0]), rounded(values[1]), rounded(values[2])};
+      } else if (key == "vertex" && values.size() == 1 && values[0] >= 0 && values[0] < mesh.vertexCount()) {
+        const rt::Vec3 p = mesh.vertices[static_cast<size_t>(values[0])];
+        element["position"] = {rounded(p.x()), rounded(p.y()), rounded(p.z())};
+        element["vertex"] = values[0];
+      } else if ((key == "strength" || key == "decay") && values.size() == 1) {
+        element[key] = values[0];
+      }
+    }
+    out.push_back(std::move(element));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
-                             const std::vector<std::string>& dataDirs) {
+                             const std::vector<std::string>& dataDirs, std::string* fieldName,
+                             FieldEditBounds* bounds) {
   if (!module.surface.present && options.surfaceOverride.empty())
     return error("the grammar declares no surface (fields live on one)").dump();
   std::unique_ptr<backend::SurfaceWorld> world;
@@ -72,10 +95,15 @@ std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& 
                              {"index", s.indexTimesTwo / 2.0},
                              {"position", {rounded(s.position.x()), rounded(s.position.y()), rounded(s.position.z())}}});
   }
-  return Json{{"type", "field"},           {"name", name},
-              {"tensor", field->isTensor()}, {"lines", lines},
-              {"singularities", singularities}, {"truncated", truncated}}
-      .dump();
+  Json overlay{{"type", "field"},           {"name", name},
+               {"tensor", field->isTensor()}, {"lines", lines},
+               {"singularities", singularities}, {"truncated", truncated}};
+  for (const ir::FieldSpec& spec : module.fields)
+    if (spec.name == name && spec.source == "design") overlay["elements"] = overlayDesignElements(spec, mesh, rounded);
+  if (fieldName) *fieldName = name;
+  if (bounds)
+    for (int k = 0; k < 3; ++k) bounds->min[k] = mesh.boundsMin[k], bounds->max[k] = mesh.boundsMax[k];
+  return overlay.dump();
 }
 
 }  // namespace fgsg::cli

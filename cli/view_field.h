@@ -4,10 +4,15 @@
 // toggle, bounded whatever the surface:
 //   {"type":"field", "name":"F", "tensor":true, "lines":[[x,y,z, x,y,z, ...], ...],
 //    "singularities":[{"kind":"wedge", "index":0.5, "position":[x,y,z]}, ...],
+//    "elements":[{"kind":"wedge", "position":[x,y,z], "strength":1, "decay":1}, ...],
 //    "truncated":false}                    (the grammar's first field, major lines)
+// "elements" (a design field only) lists its design elements in the order the grammar
+// writes them, each where it is put (`at vertex N`: that vertex), the page's handles for
+// editing them (view_field_edit.h).
 //   {"type":"field", "error":"why there is none"}   (no surface, no field, a bad design)
 #pragma once
 
+#include "cli/view_field_edit.h"
 #include "ir/ir.h"
 #include "runtime/derivation.h"
 
@@ -22,7 +27,10 @@ namespace fgsg::cli {
 constexpr size_t kMaxFieldOverlayPoints = 60000;
 constexpr size_t kMaxFieldOverlaySingularities = 1000;
 
+// `name` and `bounds` (when not null) get the field's name and the surface's box, which
+// edits of its elements are checked against; they are left alone when there is an error.
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
-                             const std::vector<std::string>& dataDirs);
+                             const std::vector<std::string>& dataDirs, std::string* name = nullptr,
+                             FieldEditBounds* bounds = nullptr);
 
 }  // namespace fgsg::cli

@@ -137,6 +137,84 @@ bool parsePaint(const Json& j, PagePaint& out, std::string& reason) {
   return true;
 }
 
+// A point [x,y,z] of finite numbers within kMaxPageCoordinate.
+bool pagePoint(const Json& v, double (&out)[3]) {
+  bool ok = v.is_array() && v.size() == 3;
+  for (size_t k = 0; ok && k < 3; ++k) ok = coordinate(v[k], out[k]);
+  return ok;
+}
+
+constexpr const char* kPageElementKinds[] = {"regular", "wedge", "trisector", "node", "centre", "saddle"};
+
+// {"type":"fieldElement", "op":..., ...}: each operation takes its own words and no other.
+bool parseFieldElement(const Json& j, PageFieldElement& out, std::string& reason) {
+  const auto op = j.find("op");
+  const std::string name = op != j.end() && op->is_string() ? op->get<std::string>() : "";
+  if (name == "add") {
+    out.op = PageFieldElement::Op::Add;
+    if (!onlyFields(j, {"op", "kind", "position", "direction", "strength"}, "fieldElement add", reason)) return false;
+  } else if (name == "move") {
+    out.op = PageFieldElement::Op::Move;
+    if (!onlyFields(j, {"op", "index", "position"}, "fieldElement move", reason)) return false;
+  } else if (name == "delete") {
+    out.op = PageFieldElement::Op::Delete;
+    if (!onlyFields(j, {"op", "index"}, "fieldElement delete", reason)) return false;
+  } else if (name == "strength") {
+    out.op = PageFieldElement::Op::Strength;
+    if (!onlyFields(j, {"op", "index", "strength"}, "fieldElement strength", reason)) return false;
+  } else {
+    reason = "fieldElement: \"op\" must be \"add\", \"move\", \"delete\" or \"strength\"";
+    return false;
+  }
+  if (out.op != PageFieldElement::Op::Add) {
+    const auto index = j.find("index");
+    if (index == j.end() || !index->is_number_unsigned() || index->get<uint64_t>() >= kMaxPageElementIndex) {
+      reason = "fieldElement " + name + ": \"index\" must be a whole number from 0 to " +
+               std::to_string(kMaxPageElementIndex - 1);
+      return false;
+    }
+    out.index = static_cast<uint32_t>(index->get<uint64_t>());
+  } else {
+    const auto kind = j.find("kind");
+    bool known = false;
+    if (kind != j.end() && kind->is_string())
+      for (const char* k : kPageElementKinds) known = known || kind->get<std::string>() == k;
+    if (!known) {
+      reason = "fieldElement add: \"kind\" must be regular, wedge, trisector, node, centre or saddle";
+      return false;
+    }
+    out.kind = kind->get<std::string>();
+  }
+  if (out.op == PageFieldElement::Op::Add || out.op == PageFieldElement::Op::Move) {
+    const auto position = j.find("position");
+    if (position == j.end() || !pagePoint(*position, out.position)) {
+      reason = "fieldElement " + name + ": \"position\" must be [x,y,z] of finite numbers";
+      return false;
+    }
+  }
+  if (const auto direction = j.find("direction"); direction != j.end()) {
+    if (out.kind != "regular") {
+      reason = "fieldElement add: only a regular element takes a \"direction\"";
+      return false;
+    }
+    if (!pagePoint(*direction, out.direction) || !(std::hypot(out.direction[0], out.direction[1], out.direction[2]) > 0)) {
+      reason = "fieldElement add: \"direction\" must be [dx,dy,dz] of finite numbers, not all 0";
+      return false;
+    }
+    out.hasDirection = true;
+  }
+  const auto strength = j.find("strength");
+  if (strength != j.end() || out.op == PageFieldElement::Op::Strength) {
+    if (strength == j.end() || !strength->is_number() || !std::isfinite(out.strength = strength->get<double>()) ||
+        std::abs(out.strength) > kMaxPageElementStrength) {
+      reason = "fieldElement " + name + ": \"strength\" must be a number from -1000 to 1000";
+      return false;
+    }
+    out.hasStrength = true;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool jsonNestingWithin(const std::string& text, int limit) {
@@ -215,6 +293,10 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
   if (kind == "field") {  // the field overlay (view_field.h)
     out.kind = PageRequest::Kind::Field;
     return onlyFields(j, {}, kind, reason);
+  }
+  if (kind == "fieldElement") {  // a design element edited (view_field_edit.h)
+    out.kind = PageRequest::Kind::FieldElement;
+    return parseFieldElement(j, out.element, reason);
   }
   if (kind == "undo" || kind == "redo") {
     out.kind = kind == "undo" ? PageRequest::Kind::Undo : PageRequest::Kind::Redo;

@@ -8,6 +8,11 @@
 //    "strength":S, "value":G, "erase":false}                       (a brush stroke, #49)
 //   {"type":"undo"}, {"type":"redo"}                               (the last paint stroke)
 //   {"type":"field"}                                   (the field overlay, view_field.h)
+//   {"type":"fieldElement", "op":"add", "kind":"wedge", "position":[x,y,z],
+//    "direction":[dx,dy,dz] (regular only), "strength":S}     (a design element added, #49)
+//   {"type":"fieldElement", "op":"move", "index":N, "position":[x,y,z]}
+//   {"type":"fieldElement", "op":"strength", "index":N, "strength":S}
+//   {"type":"fieldElement", "op":"delete", "index":N}         (view_field_edit.h)
 // Whether each name is an attribute of the grammar, and each value one of its kind, the
 // session checks against the grammar it has compiled.
 #pragma once
@@ -29,6 +34,8 @@ constexpr size_t kMaxPageValueBytes = 4096;
 constexpr size_t kMaxPageSeeds = 1024;   // a seed file the page edits by hand
 constexpr size_t kMaxPageDabs = 256;     // brush positions in one paint message
 constexpr double kMaxPageCoordinate = 1e9;  // |x|, beyond any surface's size
+constexpr double kMaxPageElementStrength = 1000;  // |strength| of a field design element
+constexpr uint32_t kMaxPageElementIndex = 1000000;  // beyond any design block's elements
 
 struct PageSeed {
   double point[3] = {0, 0, 0};
@@ -46,8 +53,23 @@ struct PagePaint {
   bool erase = false;
 };
 
+// One edit of the design elements of the grammar's first field (view_field_edit.h). Which
+// words each operation takes is checked here; the index and the position against the
+// grammar and its surface by the session.
+struct PageFieldElement {
+  enum class Op { Add, Move, Delete, Strength };
+  Op op = Op::Add;
+  uint32_t index = 0;        // move, delete, strength: the element's place among the design's elements
+  std::string kind;          // add: regular wedge trisector node centre saddle
+  double position[3] = {0, 0, 0};  // add, move
+  bool hasDirection = false;       // add, a regular element only: its direction
+  double direction[3] = {1, 0, 0};
+  bool hasStrength = false;        // add (optional), strength
+  double strength = 1;
+};
+
 struct PageRequest {
-  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field };
+  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field, FieldElement };
   Kind kind = Kind::Set;
   bool hasAttrs = false;  // set: the page's values replace all earlier ones
   std::vector<std::pair<std::string, std::string>> attrs;  // name, value as --set writes it
@@ -56,6 +78,7 @@ struct PageRequest {
   uint32_t instance = 0;  // pick
   std::vector<PageSeed> seeds;  // seeds
   PagePaint paint;              // paint
+  PageFieldElement element;     // fieldElement
 };
 
 // False with a short reason (no text of the message quoted beyond 60 bytes).

@@ -12,6 +12,7 @@
 #include "cli/view_scene.h"
 #include "cli/view_surface.h"
 #include "runtime/assemble.h"
+#include "runtime/io/atomic_file.h"
 #include "runtime/io/stale_temps.h"
 #include "runtime/io/write_instances.h"
 
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -145,18 +147,22 @@ void ViewSession::sendFields(bool recompiled) {
     }
   }
   if (due.empty()) return;
-  if (field_.empty()) {
+  std::string name;
+  FieldEditBounds bounds;
+  const bool fresh = field_.empty();
+  if (fresh) {
     if (!compiled_) {
       field_ = Json{{"type", "field"}, {"error", "the grammar has not compiled"}}.dump();
     } else {
       try {
-        field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file));
+        field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file), &name, &bounds);
       } catch (const std::exception& e) {  // out of memory ...
         field_ = Json{{"type", "field"}, {"error", e.what()}}.dump();
       }
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);
+  if (fresh) fieldName_ = name, fieldBounds_ = bounds;  // what element edits refer to
   for (uint64_t page : due)
     if (pages_.count(page)) server_.sendText(page, field_);
   if (!compiled_) field_.clear();  // asked again once it compiles
@@ -183,10 +189,47 @@ void ViewSession::editFiles(uint64_t page, const PageRequest& request) {
     case PageRequest::Kind::Paint: done = paint_.paint(request.paint, file, reason); break;
     case PageRequest::Kind::Undo: done = paint_.undo(file, reason); break;
     case PageRequest::Kind::Redo: done = paint_.redo(file, reason); break;
+    case PageRequest::Kind::FieldElement:
+      done = editFieldElement(request.element, reason);
+      file = fs::absolute(options_.file).string();
+      break;
     default: break;
   }
   if (!done) return reject(page, reason);
   edited(page, file);
+  if (request.kind == PageRequest::Kind::FieldElement) recompile_ = true;  // the grammar itself changed
+}
+
+bool ViewSession::editFieldElement(const PageFieldElement& edit, std::string& reason) {
+  if (fieldName_.empty()) {
+    reason = "fieldElement: no field overlay shown yet (ask for it: {\"type\":\"field\"})";
+    return false;
+  }
+  // The grammar is written in place of itself: never through a link to somewhere else.
+  std::error_code ec;
+  if (fs::is_symlink(fs::symlink_status(options_.file, ec))) {
+    reason = "fieldElement: " + fs::path(options_.file).filename().string() +
+             " is a symbolic link; fgsg view writes only the grammar's own file";
+    return false;
+  }
+  std::ifstream in(options_.file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) {
+    reason = "fieldElement: cannot read " + options_.file;
+    return false;
+  }
+  const std::string text = bytes.str();
+  std::string error, rewritten;
+  if (!editFieldDesignText(options_.file, text, fieldName_, edit, fieldBounds_, rewritten, reason)) {
+    reason = "fieldElement: " + reason;
+    return false;
+  }
+  if (!rt::io::writeFileAtomically(options_.file, rewritten, error)) {
+    reason = "fieldElement: " + error;
+    return false;
+  }
+  return true;
 }
 
 void ViewSession::edited(uint64_t page, const std::string& file) {

@@ -21,6 +21,8 @@
 //   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
 //                  {"type":"pick", "instance":N}
 //                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}, {"type":"field"}
+//                  {"type":"fieldElement", ...}: a design element of the first field edited in
+//                   the grammar's text (view_field_edit.h), then compiled again
 //                                                          (checked first: view_message.h)
 // Seeds and painted textures are files, so they are the session's, not a page's: an
 // edit re-derives every page (#49).
@@ -28,6 +30,7 @@
 
 #include "backend/engine.h"
 #include "backend/engine/surface_reuse.h"
+#include "cli/view_field_edit.h"
 #include "cli/view_paint.h"
 #include "cli/view_seed_file.h"
 #include "cli/view_server.h"
@@ -98,7 +101,9 @@ class ViewSession {
   // A seed file or texture written for a page: seen (no second derivation), every page
   // derived again, the page told. Under mutex_.
   void edited(uint64_t page, const std::string& file);
-  void editFiles(uint64_t page, const PageRequest& request);  // seeds, paint, undo, redo
+  void editFiles(uint64_t page, const PageRequest& request);  // seeds, paint, undo, redo, fieldElement
+  // A design element's edit written into the grammar (view_field_edit.h). Under mutex_.
+  bool editFieldElement(const PageFieldElement& edit, std::string& reason);
   void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
@@ -133,6 +138,8 @@ class ViewSession {
   ViewSeeds seeds_;                      // the seed file's, as the page last set them
   ViewPaint paint_;                      // the textures the page paints
   std::shared_ptr<const std::pair<std::string, std::string>> surface_;  // the last compile's
+  std::string fieldName_;        // the field the last overlay showed ("": none yet)
+  FieldEditBounds fieldBounds_;  // its surface's box, for element edits
 
   std::thread worker_;
 };

@@ -433,7 +433,132 @@ def edit_attacks():
         shutil.rmtree(work, ignore_errors=True)
 
 
+def field_element_attacks():
+    """8. Design elements edited from the page (#49, item 3) rewrite the grammar itself, so
+    every malformed, out-of-range or out-of-place fieldElement message must be refused with
+    a reason and leave the grammar (and every other file) byte for byte as it was; a good one
+    changes only its element's words; a grammar that is a symbolic link is never written."""
+    work = tempfile.mkdtemp(prefix="fgsg-view-field-security-")
+    folder, outside = os.path.join(work, "grammar"), os.path.join(work, "outside")
+    os.makedirs(folder)
+    os.makedirs(outside)
+    text = ("surface plane(10, 10, 24);\n"
+            "field F = design tensor {\n  wedge at (-2, 0, 0) decay 1;\n  trisector at (2, 0, 0) decay 1;\n};\n"
+            "Axiom ~> I(\"cube\");\n")
+    grammar = os.path.join(folder, "g.fgsg")
+    with open(grammar, "w") as f:
+        f.write(text)
+    with open(os.path.join(outside, "real.fgsg"), "w") as f:
+        f.write(text)
+    os.symlink(os.path.join(outside, "real.fgsg"), os.path.join(folder, "linked.fgsg"))
+
+    def contents():
+        out = {}
+        for d in (folder, outside):
+            for name in sorted(os.listdir(d)):
+                with open(os.path.join(d, name), "rb") as f:
+                    out[os.path.join(d, name)] = f.read()
+        return out
+
+    env = dict(os.environ, FGSG_CACHE_DIR=os.path.join(work, "cache"))
+
+    def serve(path):
+        server = subprocess.Popen([fgsg, "view", path, "--port", "0"], stdout=subprocess.PIPE,
+                                  stderr=subprocess.PIPE, env=env, text=True)
+        m = re.search(r"http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]{48})", server.stdout.readline())
+        check(m is not None, "the design server prints its address")
+        port, token = int(m.group(1)), m.group(2).encode()
+        return server, WebSocket(port, b"/?token=" + token, origin=b"http://127.0.0.1:%d" % port)
+
+    def stop(server):
+        server.terminate()
+        try:
+            server.wait(20)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+    good_move = '{"type":"fieldElement","op":"move","index":0,"position":[-1,1,0]}'
+    server = None
+    try:
+        server, ws = serve(grammar)
+        check(ws.next_text("model", 120) is not None, "the page gets its model")
+        before = contents()
+        ws.send(good_move)
+        reply = ws.next_text("rejected", 30)
+        check(reply is not None and "no field overlay" in reply.get("reason", ""),
+              "an edit before the overlay is refused: %s" % (reply and reply.get("reason")))
+        ws.send('{"type":"field"}')
+        overlay = ws.next_text("field", 120)
+        check(overlay is not None and len(overlay.get("elements", [])) == 2, "the overlay lists the two elements")
+        bad = [
+            '{"type":"fieldElement"}',
+            '{"type":"fieldElement","op":"rename","index":0}',
+            '{"type":"fieldElement","op":["move"],"index":0,"position":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"vortex","position":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge;\\nAxiom ~> I(\\"x\\")","position":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"Wedge","position":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,"0"]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,1e300]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[500,0,0]}',  # far off the 10 x 10 plane
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"index":0}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"direction":[1,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"regular","position":[0,0,0],"direction":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"strength":1e6}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"strength":"2"}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"file":"/etc/passwd"}',
+            '{"type":"fieldElement","op":"move","index":2,"position":[0,0,0]}',  # two elements
+            '{"type":"fieldElement","op":"move","index":-1,"position":[0,0,0]}',
+            '{"type":"fieldElement","op":"move","index":0.5,"position":[0,0,0]}',
+            '{"type":"fieldElement","op":"move","index":99999999999,"position":[0,0,0]}',
+            '{"type":"fieldElement","op":"move","index":0}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[[[0]]]}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"text":"field G = tensor(\\"/etc/passwd\\");"}',
+            '{"type":"fieldElement","op":"strength","index":0}',
+            '{"type":"fieldElement","op":"strength","index":0,"strength":-1001}',
+            '{"type":"fieldElement","op":"delete","index":5}',
+            '{"type":"fieldElement","op":"delete","index":0,"position":[0,0,0]}',
+            '{"type":"fieldElement","op":"add","kind":"%s","position":[0,0,0]}' % ("w" * 70000),
+        ]
+        for message in bad:
+            ws.send(message)
+            reply = ws.next_text("rejected", 30)
+            check(reply is not None and reply.get("reason"), "element edit rejected: %s... (%s)" %
+                  (message[:70], reply and reply.get("reason", "")[:90]))
+        check(contents() == before, "the refused element edits changed no file (the grammar byte for byte)")
+        ws.send(good_move)
+        written = ws.next_text("written", 30)
+        check(written is not None and written["file"] == "g.fgsg", "a good move writes g.fgsg")
+        with open(grammar) as f:
+            check(f.read() == text.replace("wedge at (-2, 0, 0)", "wedge at (-1, 1, 0)"),
+                  "only the wedge's `at` words changed")
+        after = contents()
+        check(all(after[p] == before[p] for p in before if p != grammar), "no other file changed")
+        ws.close()
+        check(server.poll() is None, "the design server is alive after the attacks")
+        stop(server)
+
+        # A grammar reached through a symbolic link: shown, never written.
+        server, ws = serve(os.path.join(folder, "linked.fgsg"))
+        check(ws.next_text("model", 120) is not None, "the linked grammar's page gets its model")
+        ws.send('{"type":"field"}')
+        check(ws.next_text("field", 120) is not None, "and its overlay")
+        ws.send(good_move)
+        reply = ws.next_text("rejected", 30)
+        check(reply is not None and "symbolic link" in reply.get("reason", ""),
+              "an edit of a linked grammar is refused: %s" % (reply and reply.get("reason")))
+        with open(os.path.join(outside, "real.fgsg")) as f:
+            check(f.read() == text and os.path.islink(os.path.join(folder, "linked.fgsg")),
+                  "the link and its target are as they were")
+        ws.close()
+    finally:
+        if server:
+            stop(server)
+        shutil.rmtree(work, ignore_errors=True)
+
+
 edit_attacks()
+field_element_attacks()
 
 if failures:
     print("FAIL: %d checks failed" % len(failures))
