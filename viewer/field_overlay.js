@@ -25,7 +25,7 @@ export function createFieldOverlay(ctx) {
     }
   }
 
-  $('field-overlay').addEventListener('click', () => {
+  function toggle() {
     group.visible = !group.visible;
     $('field-overlay').classList.toggle('on', group.visible);
     state.field.shown = group.visible;
@@ -34,9 +34,12 @@ export function createFieldOverlay(ctx) {
       ctx.send({ type: 'field' });
     }
     ctx.requestRender();
-  });
+  }
+  $('field-overlay').addEventListener('click', toggle);
 
   return {
+    // The Design mode (field_design.js) edits what the overlay shows.
+    showIfHidden() { if (!group.visible) toggle(); },
     // The server's {"type":"field"} message.
     show(m) {
       clear();

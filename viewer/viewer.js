@@ -10,6 +10,7 @@ import { createSeeds } from './seeds.js';
 import { createPaint } from './paint.js';
 import { createViewTools } from './view_tools.js';
 import { createFieldOverlay } from './field_overlay.js';
+import { createFieldDesign } from './field_design.js';
 
 const $ = (id) => document.getElementById(id);
 // timing: when the last change was sent, its model announced, its bytes received and
@@ -249,6 +250,7 @@ const seeds = createSeeds(ctx);
 const paint = createPaint(ctx);
 const tools = createViewTools(ctx);
 const fieldOverlay = createFieldOverlay(ctx);
+const fieldDesign = createFieldDesign(ctx, fieldOverlay);
 // What the browser tests read besides `state`.
 state.hooks = {
   wireframeCount: () => tools.wireframeCount(),
@@ -305,12 +307,13 @@ state.hooks = {
   },
 };
 
-// Pick, Seeds or Paint: what a click or drag on the surface does.
+// Pick, Seeds, Paint or Design: what a click or drag on the surface does.
 for (const button of document.querySelectorAll('[data-mode]'))
   button.addEventListener('click', () => {
     state.mode = button.dataset.mode;
     for (const b of document.querySelectorAll('[data-mode]')) b.classList.toggle('on', b === button);
     for (const box of document.querySelectorAll('[data-for-mode]')) box.hidden = box.dataset.forMode !== state.mode;
+    fieldDesign.modeChanged();
   });
 
 // A number attribute gets a slider around its default and a field for exact values.
@@ -410,6 +413,7 @@ ws.onmessage = (event) => {
     setStatus('wrote ' + m.file + ', deriving', 'deriving');
   } else if (m.type === 'field') {
     fieldOverlay.show(m);
+    fieldDesign.update(m);
   } else if (m.type === 'picked') {
     showPicked(m);
   } else if (m.type === 'model') {
@@ -418,6 +422,7 @@ ws.onmessage = (event) => {
     state.timing.announced = performance.now();
   } else if (m.type === 'rejected') {  // a message of ours the server refused: nothing changed
     state.rejected = (state.rejected || 0) + 1;
+    fieldDesign.rejected();
     setStatus('refused: ' + m.reason, 'error');
   } else if (m.type === 'error') {
     state.errors += 1;
