@@ -42,7 +42,7 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
   if ((command == "Translate" || command == "Rotate") && k == 0)
     return pick({{"rel", 0}, {"abs", 1}}, word, value, allowed);
   if ((command == "Translate" || command == "Rotate") && k == 1)
-    return pick({{"scope", 0}, {"world", 3}}, word, value, allowed);
+    return pick({{"scope", 0}, {"pivot", 1}, {"object", 2}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
   if ((command == "Envelope" || command == "EnvelopePerEdge") && k == 0)
     return pick({{"normal", 0}, {"world.up", 1}}, word, value, allowed);

@@ -13,6 +13,14 @@ namespace fgsg::backend {
 namespace {
 
 std::string bare(std::string label) {
+// A turn by `degrees` about the x, y or z axis (translate/rotate's frames).
+rt::Mat3 scopeTurnAbout(int axis, double degrees) {
+  return rt::Mat3(Eigen::AngleAxisd(degrees * M_PI / 180.0, rt::Vec3::Unit(axis)).toRotationMatrix());
+}
+rt::Mat3 scopeTurnX(double degrees) { return scopeTurnAbout(0, degrees); }
+rt::Mat3 scopeTurnY(double degrees) { return scopeTurnAbout(1, degrees); }
+rt::Mat3 scopeTurnZ(double degrees) { return scopeTurnAbout(2, degrees); }
+
   if (!label.empty() && label.back() == '=') label.pop_back();
   return label;
 }
@@ -172,31 +180,43 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   } else if (name == "Convexify") {
     if (n > 0 && !(a[0] > 0)) throw DeriveError{op.loc, "R002", "Convexify: maxLength must be a positive number"};
     ok = rt::cga::convexify(st.scope, st.geom, d.arena(), n > 0 ? a[0] : INFINITY, part, error);
-  } else if (name == "Translate") {
-    // Translate(rel|abs, scope|world, x, y, z): CityEngine's translate in the scope's or the
-    // world's axes; abs sets the origin (the world's only: a scope has no place of its own).
-    const bool absolute = a[0] != 0, world = a[1] != 0;
-    const rt::Vec3 v(a[2], a[3], a[4]);
-    if (!world && absolute)
-      throw DeriveError{op.loc, "R002", "Translate: \"abs\" takes the world's coordinates, not the scope's"};
+  } else if (name == "Translate" || name == "Rotate") {
+    // translate / rotate(rel|abs, system, x, y, z) (CityEngine's op_translate and
+    // op_rotate, docs/cga.md): the scope (its geometry with it) moved or turned about its
+    // origin in the axes of the scope (0), the pivot (1: fgsg keeps no pivot of its own,
+    // so the object's), the object (2: the start shape's frame) or the world (3).
+    const bool absolute = a[0] != 0;
+    const int system = static_cast<int>(a[1]);
     part = rt::cga::Part{st.scope, st.geom, false, 0};
-    part.scope.P = world ? (absolute ? v : st.scope.P + v) : st.scope.P + st.scope.axes * v;
-  } else if (name == "Rotate") {
-    // Rotate(rel|abs, scope|world, ax, ay, az): CityEngine's rotate about the scope's
-    // origin, the geometry turning with it: in the scope's own axes (x, then y, then z, as
-    // R), about the world's axes (x, then y, then z), or to the world's axes so turned (abs).
-    const bool absolute = a[0] != 0, world = a[1] != 0;
-    if (!world && absolute)
-      throw DeriveError{op.loc, "R002", "Rotate: \"abs\" takes the world's angles, not the scope's"};
-    auto turn = [&](int axis, double degrees) {
-      return rt::Mat3(Eigen::AngleAxisd(degrees * M_PI / 180.0, rt::Vec3::Unit(axis)).toRotationMatrix());
-    };
-    part = rt::cga::Part{st.scope, st.geom, false, 0};
-    if (world) {  // about the fixed world axes, x first
-      const rt::Mat3 r = turn(2, a[4]) * turn(1, a[3]) * turn(0, a[2]);
-      part.scope.axes = absolute ? r : rt::Mat3(r * st.scope.axes);
-    } else {  // about the scope's own axes as they turn, x first
-      part.scope.axes = st.scope.axes * turn(0, a[2]) * turn(1, a[3]) * turn(2, a[4]);
+    if (system == 0) {
+      // In the scope's own system the scope stands at the origin with no turn, so setting
+      // a place or angles there (abs) is moving or turning by them (rel).
+      if (name == "Translate") {
+        part.scope.P = st.scope.P + st.scope.axes * rt::Vec3(a[2], a[3], a[4]);
+      } else {
+        part.scope.axes = st.scope.axes * scopeTurnX(a[2]) * scopeTurnY(a[3]) * scopeTurnZ(a[4]);
+      }
+    } else {
+      // About the system's fixed axes, x first: Rz·Ry·Rx in its axes. The world's are
+      // the identity, left out (the same bits as before the other systems came).
+      const bool world = system == 3;
+      if (world && name == "Translate") {
+        const rt::Vec3 v(a[2], a[3], a[4]);
+        part.scope.P = absolute ? v : rt::Vec3(st.scope.P + v);
+      } else if (name == "Translate") {
+        const rt::Scope& frame = d.objectFrame();
+        const rt::Vec3 v = frame.axes * rt::Vec3(a[2], a[3], a[4]);
+        part.scope.P = absolute ? rt::Vec3(frame.P + v) : rt::Vec3(st.scope.P + v);
+      } else {
+        const rt::Mat3 turn = scopeTurnZ(a[4]) * scopeTurnY(a[3]) * scopeTurnX(a[2]);
+        if (world) {
+          part.scope.axes = absolute ? turn : rt::Mat3(turn * st.scope.axes);
+        } else {
+          const rt::Scope& frame = d.objectFrame();
+          const rt::Mat3 r = frame.axes * turn;
+          part.scope.axes = absolute ? r : rt::Mat3(r * (frame.axes.transpose() * st.scope.axes));
+        }
+      }
     }
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);

@@ -102,6 +102,10 @@ class Derivation final : public QueryHost {
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
   // or reaches past float range); I("none") adds nothing.
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
+  // CityEngine's object coordinate system of the start shape being derived (the P and
+  // axes of the scope returned; translate's and rotate's `object` and `pivot`): a lot's
+  // first corner and edge (lots.cpp), else the world's frame. Worked out on first use.
+  const rt::Scope& objectFrame();
                      uint32_t paramCount, ir::Loc loc, bool zUp = false);
   // The scope an Instance op's asset fills, as its insert mode says (runtime/insert_fit.h);
   // placeInstance(..., op.zUp) then turns a zUp asset inside it.
@@ -348,6 +352,12 @@ class Derivation final : public QueryHost {
   std::vector<std::pair<int, ShapeQueue>> buckets_;
   std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
   std::vector<Saved> stack_;
+  // The start shape objectFrame() is worked out from (a lot's polygon; none: the world),
+  // and the frame once worked out.
+  rt::Scope objectStartScope_;
+  rt::GeomRef objectStartGeom_;
+  bool objectFrameKnown_ = false;
+  rt::Scope objectFrame_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
   std::vector<std::pair<uint32_t, uint32_t>> overlaps_;  // (taken, also applying) rules, each pair once

@@ -28,6 +28,9 @@ void Derivation::deriveLots(uint64_t root) {
     std::string error;
     if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena_, part, error))
       throw DeriveError{{}, "R028", rt::lotName(opt_.lotsName, lot) + ": " + error};
+    objectStartScope_ = part.scope;  // the lot's polygon: objectFrame() when asked
+    objectStartGeom_ = part.geom;
+    objectFrameKnown_ = false;
     // A `.cga` grammar starts on CityEngine's initial shape: x along the first edge, y up.
     if (m_.cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, arena_);
     const auto index = static_cast<uint32_t>(k);
@@ -37,6 +40,14 @@ void Derivation::deriveLots(uint64_t root) {
     deriveWaitingShapes();
     if (k == 0) reserveForLots(opt_.lots.size());
   }
+}
+
+const rt::Scope& Derivation::objectFrame() {
+  if (!objectFrameKnown_) {
+    objectFrame_ = rt::cga::initialShapeFrame(objectStartScope_, objectStartGeom_, arena_);
+    objectFrameKnown_ = true;
+  }
+  return objectFrame_;
 }
 
 // After the first lot, room for as many again per lot (and a tenth more): the output

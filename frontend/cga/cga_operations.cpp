@@ -483,12 +483,12 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     return;
   }
   if (name == "translate" || name == "rotate") {
-    // translate|rotate(rel|abs, scope|world, x, y, z) (op_translate, op_rotate: about the
-    // scope's origin): rel scope is t() / r(); rel and abs world are fgsg's Translate /
-    // Rotate. The pivot and object systems (and abs in the scope's own system) are not here yet.
+    // translate|rotate(rel|abs, scope|pivot|object|world, x, y, z) (op_translate,
+    // op_rotate: about the scope's origin): fgsg's Translate / Rotate, which take every
+    // mode and system (backend/commands/shape_operations.cpp; docs/cga.md), or T / R.
     const bool moves = name == "translate";
-    if (!noBody() || !count(5, 5, moves ? "5 arguments (rel or abs, scope or world, x, y, z)"
-                                        : "5 arguments (rel or abs, scope or world, x, y, z angles)"))
+    if (!noBody() || !count(5, 5, moves ? "5 arguments (rel or abs, scope, pivot, object or world, x, y, z)"
+                                        : "5 arguments (rel or abs, scope, pivot, object or world, x, y, z angles)"))
       return;
     const std::string mode = selectorWord(argCtx[0]), system = selectorWord(argCtx[1]);
     if (mode != "rel" && mode != "abs") {
@@ -500,12 +500,10 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
             name + "'s coordinate system is scope, pivot, object or world, not '" + argCtx[1]->getText() + "'");
       return;
     }
-    if (system == "pivot" || system == "object" || (system == "scope" && mode == "abs")) {
-      notSupported(rangeOf(argCtx[1]), name + "(" + mode + ", " + system + ", ...)");
-      return;
-    }
+    // In the scope's own system abs is rel (the scope stands at its origin, unturned):
+    // both are t() / r().
     Item item = command(system == "scope" ? (moves ? "T" : "R") : (moves ? "Translate" : "Rotate"), at);
-    if (system == "world") {
+    if (system != "scope") {
       item.args.push_back(stringExpr(mode, rangeOf(argCtx[0])));
       item.args.push_back(stringExpr(system, rangeOf(argCtx[1])));
     }

@@ -25,6 +25,21 @@ bool groundEdgeOnOutline(const Polygon3& outline, const Vec3& a, const Vec3& b) 
   return false;
 }
 
+// The first edge with a length on the outline (a lot with a courtyard is one ring whose
+// bridges to the courtyard, and the courtyard's own edges, may come first): its index,
+// and in `along` its direction across `up` (not normalised). -1: none.
+long groundFirstOutlineEdge(const std::vector<Vec3>& world, const Vec3& up, Vec3& along) {
+  const std::vector<Polygon3> rings = ringsOf(world);
+  for (size_t i = 0; i < world.size(); ++i) {
+    const Vec3& a = world[i];
+    const Vec3& b = world[(i + 1) % world.size()];
+    if (rings.size() > 1 && !groundEdgeOnOutline(rings[0], a, b)) continue;
+    along = (b - a) - (b - a).dot(up) * up;
+    if (along.norm() >= 1e-12) return static_cast<long>(i);
+  }
+  return -1;
+}
+
 }  // namespace
 
 bool isGroundFace(const GeomRef& geom, const GeometryArena& arena) {
@@ -45,15 +60,7 @@ void polygonOnGround(Scope& scope, GeomRef& geom, GeometryArena& arena, const Ve
   const Vec3 up = scope.Z();
   Vec3 x = Vec3::Zero();
   if (xAxis) x = *xAxis - xAxis->dot(up) * up;
-  // The first edge with a length on the outline: a lot with a courtyard is one ring whose
-  // bridges to the courtyard (and the courtyard's own edges) may come first.
-  const std::vector<Polygon3> rings = ringsOf(world);
-  for (size_t i = 0; x.norm() < 1e-12 && i < world.size(); ++i) {
-    const Vec3& a = world[i];
-    const Vec3& b = world[(i + 1) % world.size()];
-    if (rings.size() > 1 && !groundEdgeOnOutline(rings[0], a, b)) continue;
-    x = (b - a) - (b - a).dot(up) * up;
-  }
+  if (x.norm() < 1e-12) groundFirstOutlineEdge(world, up, x);
   if (x.norm() < 1e-12) return;
   x.normalize();
   const Vec3 z = x.cross(up);
@@ -97,6 +104,26 @@ void groundToPolygon(Scope& scope, GeomRef& geom, GeometryArena& arena) {
   out.S = Vec3(scope.S.x(), scope.S.z(), 0.0);
   scope = out;
   geom = arena.addPolygon(poly);
+}
+
+Scope initialShapeFrame(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
+  Scope frame;
+  frame.P = scope.P;
+  frame.axes = scope.axes;
+  if (geom.kind != GeomKind::Polygon || geom.count < 3) return frame;
+  std::vector<Vec3> world;
+  world.reserve(geom.count);
+  for (uint32_t i = 0; i < geom.count; ++i) world.push_back(scope.toWorld(scope.S.cwiseProduct(arena.polygon(geom)[i])));
+  const Vec3 up = scope.Z();
+  Vec3 x;
+  const long edge = groundFirstOutlineEdge(world, up, x);
+  if (edge < 0) return frame;
+  x.normalize();
+  frame.P = world[static_cast<size_t>(edge)];
+  frame.axes.col(0) = x;
+  frame.axes.col(1) = up;
+  frame.axes.col(2) = x.cross(up);
+  return frame;
 }
 
 }  // namespace fgsg::rt::cga

@@ -18,6 +18,12 @@ bool isGroundFace(const GeomRef& geom, const GeometryArena& arena);
 // first edge; z = x × y. The scope's other state (colour, texture, place) is kept.
 void polygonOnGround(Scope& scope, GeomRef& geom, GeometryArena& arena, const Vec3* xAxis = nullptr);
 
+// CityEngine's object coordinate system of an initial shape given as fgsg's polygon (a
+// lot before polygonOnGround): origin at the first corner of the outline's first edge,
+// x along that edge, y the polygon's normal, z = x × y, as the P and axes of a Scope (S,
+// the rest, unused). Other geometry, or none: the scope's own P and axes.
+Scope initialShapeFrame(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
+
 // A ground face as fgsg's polygon (solidFrameOnPolygon's inverse: x kept, z up).
 void groundToPolygon(Scope& scope, GeomRef& geom, GeometryArena& arena);
 
