@@ -12,7 +12,6 @@
 namespace fgsg::backend {
 namespace {
 
-std::string bare(std::string label) {
 // A turn by `degrees` about the x, y or z axis (translate/rotate's frames).
 rt::Mat3 scopeTurnAbout(int axis, double degrees) {
   return rt::Mat3(Eigen::AngleAxisd(degrees * M_PI / 180.0, rt::Vec3::Unit(axis)).toRotationMatrix());
@@ -21,6 +20,7 @@ rt::Mat3 scopeTurnX(double degrees) { return scopeTurnAbout(0, degrees); }
 rt::Mat3 scopeTurnY(double degrees) { return scopeTurnAbout(1, degrees); }
 rt::Mat3 scopeTurnZ(double degrees) { return scopeTurnAbout(2, degrees); }
 
+std::string bare(std::string label) {
   if (!label.empty() && label.back() == '=') label.pop_back();
   return label;
 }

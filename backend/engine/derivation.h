@@ -98,14 +98,14 @@ class Derivation final : public QueryHost {
   uint32_t segmentAsset() const { return segmentAsset_; }
   uint32_t segmentSymbol() const { return segmentSymbol_; }
   uint8_t assetFlatAxes(uint32_t asset) const { return asset < assetFlatAxes_.size() ? assetFlatAxes_[asset] : 0; }
-
-  // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
-  // or reaches past float range); I("none") adds nothing.
-  void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
   // CityEngine's object coordinate system of the start shape being derived (the P and
   // axes of the scope returned; translate's and rotate's `object` and `pivot`): a lot's
   // first corner and edge (lots.cpp), else the world's frame. Worked out on first use.
   const rt::Scope& objectFrame();
+
+  // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
+  // or reaches past float range); I("none") adds nothing.
+  void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
                      uint32_t paramCount, ir::Loc loc, bool zUp = false);
   // The scope an Instance op's asset fills, as its insert mode says (runtime/insert_fit.h);
   // placeInstance(..., op.zUp) then turns a zUp asset inside it.
@@ -348,16 +348,16 @@ class Derivation final : public QueryHost {
   std::unordered_map<uint64_t, uint64_t> parentOf_;  // this derivation's shape tree
   uint64_t currentNode_ = 0;   // the shape (or split part) whose ops run
   uint32_t currentStart_ = 0;  // the start shape being derived
-  uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)
-  std::vector<std::pair<int, ShapeQueue>> buckets_;
-  std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
-  std::vector<Saved> stack_;
   // The start shape objectFrame() is worked out from (a lot's polygon; none: the world),
   // and the frame once worked out.
   rt::Scope objectStartScope_;
   rt::GeomRef objectStartGeom_;
   bool objectFrameKnown_ = false;
   rt::Scope objectFrame_;
+  uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)
+  std::vector<std::pair<int, ShapeQueue>> buckets_;
+  std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor
+  std::vector<Saved> stack_;
   std::vector<double> params_;
   std::vector<Candidate> candidates_;
   std::vector<std::pair<uint32_t, uint32_t>> overlaps_;  // (taken, also applying) rules, each pair once
