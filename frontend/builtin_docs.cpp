@@ -1,6 +1,7 @@
 #include "frontend/builtin_docs.h"
 
 #include "frontend/builtins.h"
+#include "frontend/sema_environment.h"
 
 #include <sstream>
 
@@ -10,7 +11,8 @@ namespace {
 constexpr BuiltinDocKind kDocCommand = BuiltinDocKind::Command, kDocFunction = BuiltinDocKind::Function,
                          kDocQuery = BuiltinDocKind::Query, kDocFieldMember = BuiltinDocKind::FieldMember,
                          kDocCgaOperation = BuiltinDocKind::CgaOperation, kDocCgaFunction = BuiltinDocKind::CgaFunction,
-                         kDocCgaAttribute = BuiltinDocKind::CgaAttribute;
+                         kDocCgaAttribute = BuiltinDocKind::CgaAttribute, kDocSurface = BuiltinDocKind::Surface,
+                         kDocFieldSource = BuiltinDocKind::FieldSource;
 
 // Angles are in degrees and lengths in the scope's units (metres) throughout. A command's
 // signature is its CommandInfo's (nullptr here); test_builtin_docs.cpp checks that every
@@ -222,6 +224,22 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocFieldMember, "gausscurv", "F.gausscurv", "The Gaussian curvature (1/m²) of a curvature field's surface.", nullptr},
     {kDocFieldMember, "intensity", "F.intensity", "An image field's brightness (0..1) under the scope, bilinear.", nullptr},
 
+    // ---------------------------------------------------------------- surfaces (signatures: sema_environment.cpp's)
+    {kDocSurface, "torus", nullptr, "A torus around the Z axis: radius R, tube radius r (R > r > 0); an optional last argument gives the segments around the tube (default 32).", nullptr},
+    {kDocSurface, "sphere", nullptr, "A sphere of radius r about the origin; an optional last argument gives its icosahedron subdivisions (default 4: 5120 faces).", nullptr},
+    {kDocSurface, "plane", nullptr, "A flat w × h rectangle in the XY plane, centred at the origin, normal +Z; an optional last argument gives the segments along its longer side (default 32).", nullptr},
+    {kDocSurface, "genus2", nullptr, "A closed double torus in the XY plane; an optional argument gives its Catmull-Clark levels (default 3).", nullptr},
+    {kDocSurface, "cylinder", nullptr, "An open cylinder of radius r around the Z axis, h high; an optional last argument gives the segments around it (default 48).", nullptr},
+    {kDocSurface, "tori3", nullptr, "FGSG Fig. 17's genus-7 surface: the union of three tori (radius R, tube r, R > 2r) about the Z, X and Y axes.", nullptr},
+
+    // ---------------------------------------------------------------- field sources
+    {kDocFieldSource, "tensor", "tensor(\"foot.tfield\")", "A tensor field loaded from a file, relative to the grammar's folder (`design tensor { ... }` designs one instead).", nullptr},
+    {kDocFieldSource, "vector", "vector(\"flow.vfield\")", "A vector field loaded from a file, relative to the grammar's folder (`design vector { ... }` designs one instead).", nullptr},
+    {kDocFieldSource, "scalar", "scalar(\"heights.sfield\") or scalar(\"map.png\") or scalar(expression of x, y, z)", "A scalar field: a number per vertex from a file, a picture's brightness under each vertex, or an expression of the vertex's position.", nullptr},
+    {kDocFieldSource, "design", "design tensor { wedge at vertex 0; ... } or design vector { node at (x, y, z); ... }", "A field designed from elements (regular, wedge, trisector, node, centre, saddle) with their decay and strength, optionally smoothed (`smooth 300;`).", nullptr},
+    {kDocFieldSource, "curvature", "curvature", "The curvature tensor of the surface (its queries mincurv, maxcurv, meancurv, gausscurv).", nullptr},
+    {kDocFieldSource, "image", "image(\"cat.png\")", "A tensor field from a picture laid over the surface seen from above: its major direction runs along the picture's outlines; `.intensity` and `.rgb` read the picture.", nullptr},
+
     // ---------------------------------------------------------------- .cga operations
     {kDocCgaOperation, "split", "split(x|y|z) { size : Op | ... }*", "CityEngine's split: cuts the shape along the axis into parts of the sizes (absolute, 'relative, ~floating).", "Subdiv"},
     {kDocCgaOperation, "splitArea", "splitArea(x|y|z) { area : Op | ... }", "CityEngine's splitArea: cuts a flat shape into parts of the given areas (m²).", "SplitArea"},
@@ -348,6 +366,10 @@ const BuiltinDoc* findBuiltinDoc(BuiltinDocKind kind, const std::string& name) {
 
 std::string builtinDocSignature(const BuiltinDoc& d) {
   if (d.signature) return d.signature;
+  if (d.kind == BuiltinDocKind::Surface) {
+    const SurfaceGeneratorInfo* g = findSurfaceGenerator(d.name);
+    return g ? g->signature : d.name;
+  }
   const CommandInfo* c = findCommand(d.name);
   return c ? c->signature : d.name;
 }
@@ -361,6 +383,8 @@ std::string builtinReferenceMarkdown() {
   builtinDocSection(out, kDocFunction, "Functions", "function", false);
   builtinDocSection(out, kDocQuery, "Queries", "query", false);
   builtinDocSection(out, kDocFieldMember, "Field queries (`F` a declared field)", "query", false);
+  builtinDocSection(out, kDocSurface, "Surfaces (`surface NAME(...);`)", "surface", false);
+  builtinDocSection(out, kDocFieldSource, "Field sources (`field F = ...;`)", "source", false);
   builtinDocSection(out, kDocCgaOperation, "`.cga` operations", "CityEngine operation", true);
   builtinDocSection(out, kDocCgaFunction, "`.cga` functions", "CityEngine function", true);
   builtinDocSection(out, kDocCgaAttribute, "`.cga` shape attributes", "CityEngine attribute", true);

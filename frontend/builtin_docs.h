@@ -16,6 +16,8 @@ enum class BuiltinDocKind {
   Function,      // an expression's function: sin, Rand, clamp ...
   Query,         // an object's member: Scope.sx, Shape.splitIndex, Geometry.area, Feature.edge, Lot.area
   FieldMember,   // a declared field's member, keyed without the field: "vector1" (F1.vector1)
+  Surface,       // a procedural surface of `surface NAME(...);`: torus, sphere, plane ...
+  FieldSource,   // what `field F = ...;` is made from: tensor("file"), curvature, design ...
   CgaOperation,  // .cga: split, extrude, comp, setback ...
   CgaFunction,   // .cga: rand, p, rint, geometry.area ...
   CgaAttribute,  // .cga: scope.sx, split.index, comp.total ...
@@ -24,7 +26,7 @@ enum class BuiltinDocKind {
 struct BuiltinDoc {
   BuiltinDocKind kind;
   const char* name;       // as written in a grammar (a field member without its field)
-  const char* signature;  // nullptr for a command: CommandInfo::signature is its
+  const char* signature;  // nullptr for a command and a surface: CommandInfo's or SurfaceGeneratorInfo's
   const char* doc;        // one or two sentences: what it does, units, defaults
   const char* fgsgName;   // a .cga name's fgsg command, function or query; else nullptr
 };
@@ -32,7 +34,8 @@ struct BuiltinDoc {
 std::span<const BuiltinDoc> builtinDocs();
 // The entry of that kind and name, or nullptr.
 const BuiltinDoc* findBuiltinDoc(BuiltinDocKind kind, const std::string& name);
-// How the name is called: the entry's signature, a command's from its CommandInfo.
+// How the name is called: the entry's signature, a command's from its CommandInfo, a
+// surface's from its SurfaceGeneratorInfo (frontend/sema_environment.h).
 std::string builtinDocSignature(const BuiltinDoc& doc);
 // docs/language.md's "Builtin reference" section, between its markers.
 std::string builtinReferenceMarkdown();

@@ -15,9 +15,10 @@ std::string builtinHelpMarkdown(const std::string& signature, const std::string&
   return "```\n" + signature + "\n```\n\n" + doc;
 }
 
-// An fgsg builtin by its name alone: a command, a function or a query.
+// An fgsg builtin by its name alone: a command, a function, a query, a surface or a field source.
 const BuiltinDoc* fgsgBuiltinDocNamed(const std::string& name) {
-  for (BuiltinDocKind kind : {BuiltinDocKind::Command, BuiltinDocKind::Function, BuiltinDocKind::Query})
+  for (BuiltinDocKind kind : {BuiltinDocKind::Command, BuiltinDocKind::Function, BuiltinDocKind::Query,
+                              BuiltinDocKind::Surface, BuiltinDocKind::FieldSource})
     if (const BuiltinDoc* d = findBuiltinDoc(kind, name)) return d;
   return nullptr;
 }

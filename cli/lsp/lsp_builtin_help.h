@@ -10,7 +10,8 @@
 namespace fgsg::cli::lsp {
 
 // In a .fgsg document: a command, function, query (Scope.sx, Shape.*, Geometry.*,
-// Feature.*, Lot.*) or a member of a field the grammar declares (F1.vector1); "" for none.
+// Feature.*, Lot.*), surface (torus ...), field source (curvature ...) or a member of a
+// field the grammar declares (F1.vector1); "" for none.
 std::string fgsgBuiltinHelp(const Analysis& analysis, const std::string& name);
 
 // In a .cga document: a CityEngine operation, function or shape attribute, with the fgsg

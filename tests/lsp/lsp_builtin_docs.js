@@ -1,5 +1,5 @@
 // fgsg lsp's builtin docs (#50), through a real LSP client (vscode-jsonrpc): hover on a
-// command, a function, queries and a field's member in a .fgsg document, and on a
+// command, a function, queries, a surface, a field source and a field's member in a .fgsg document, and on a
 // CityEngine operation, function and attributes in a .cga document, shows the signature
 // and the doc of the one table (frontend/builtin_docs.cpp) that docs/language.md's
 // "Builtin reference" is generated from: each hover is checked against that reference's
@@ -91,6 +91,9 @@ async function main() {
   assert.strictEqual(await hoverOn(grammar, 4, 'sqrt'), block('sqrt(x)', row('sqrt(x)').doc));
   assert.strictEqual(await hoverOn(grammar, 4, 'Shape.splitIndex'), block('Shape.splitIndex', row('Shape.splitIndex').doc));
   assert.strictEqual(await hoverOn(grammar, 4, 'Geometry.area'), block('Geometry.area', row('Geometry.area').doc));
+  // The environment's builtins: a surface generator, a field source.
+  assert.strictEqual(await hoverOn(grammar, 0, 'plane'), block('plane(w, h)', row('plane(w, h)').doc));
+  assert.strictEqual(await hoverOn(grammar, 1, 'curvature'), block('curvature', row('curvature').doc));
   // A field's member: named with the grammar's field, the doc of the reference's F.mincurv.
   assert.strictEqual(await hoverOn(grammar, 4, 'mincurv'), block('F1.mincurv', row('F.mincurv').doc));
   // The grammar's own names still show their declaration.

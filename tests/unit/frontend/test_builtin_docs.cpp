@@ -5,6 +5,7 @@
 #include "frontend/builtin_docs.h"
 #include "frontend/builtins.h"
 #include "frontend/cga/cga_parse.h"
+#include "frontend/sema_environment.h"
 #include "ir/builtins.h"
 #include "ir/ir.h"
 #include "sema_helpers.h"
@@ -153,4 +154,28 @@ TEST_CASE("builtin docs: the reference markdown has a row per entry", "[builtin_
   size_t rows = 0;
   for (size_t at = md.find("\n| `"); at != std::string::npos; at = md.find("\n| `", at + 1)) ++rows;
   CHECK(rows == builtinDocs().size());
+}
+
+TEST_CASE("builtin docs: every surface generator and field source has one", "[builtin_docs]") {
+  // sema lists the known ones in its errors (E033, E035): the table must name the same.
+  std::set<std::string> documented;
+  for (const auto& name : docNamesOf(BuiltinDocKind::Surface)) {
+    INFO(name);
+    REQUIRE(findSurfaceGenerator(name) != nullptr);
+    CHECK(builtinDocSignature(*findBuiltinDoc(BuiltinDocKind::Surface, name)) == findSurfaceGenerator(name)->signature);
+    documented.insert(findSurfaceGenerator(name)->signature);
+  }
+  const auto unknownSurface = declarations("surface nosuch(1);");
+  INFO(unknownSurface.printed);
+  for (const char* g : {"torus(R, r)", "sphere(r)", "plane(w, h)", "genus2()", "cylinder(r, h)", "tori3(R, r)"}) {
+    CHECK(unknownSurface.printed.find(g) != std::string::npos);
+    CHECK(documented.count(g) == 1);
+  }
+  CHECK(documented.size() == 6);
+  const auto unknownSource = declarations("surface plane(10, 10);\nfield F = nosuch(1);");
+  INFO(unknownSource.printed);
+  for (const auto& source : docNamesOf(BuiltinDocKind::FieldSource))
+    CHECK(unknownSource.printed.find(source) != std::string::npos);
+  CHECK(docNamesOf(BuiltinDocKind::FieldSource) ==
+        std::set<std::string>{"tensor", "vector", "scalar", "design", "curvature", "image"});
 }
