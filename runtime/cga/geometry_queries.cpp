@@ -159,6 +159,10 @@ double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryAren
   return azimuth >= 360.0 - kAngleTieDegrees ? 0.0 : azimuth;  // a hair west of north is north
 }
 
+std::vector<std::vector<Vec3>> geometryWorldFaces(const Scope& scope, const GeomRef& geom, const GeometryArena& arena) {
+  return worldPolygons(scope, geom, arena);
+}
+
 std::array<double, 2> geometryUvSpread(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
                                        const UvProjection& projection) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};

@@ -9,6 +9,7 @@
 #include "runtime/scope.h"
 
 #include <array>
+#include <vector>
 
 namespace fgsg::rt::cga {
 
@@ -45,5 +46,10 @@ double geometryAngle(const Scope& scope, const GeomRef& geom, const GeometryAren
 // spread along u and along v: {max u - min u, max v - min v}. No faces: {0, 0}.
 std::array<double, 2> geometryUvSpread(const Scope& scope, const GeomRef& geom, const GeometryArena& arena,
                                        const UvProjection& projection);
+
+// Every face of the geometry in world space, as the queries above measure it (a box's six,
+// a flat box's one, a polygon's one, a solid's all; an edge none), each counter-clockwise
+// about its outward normal. insertAlongUV lays its asset on them.
+std::vector<std::vector<Vec3>> geometryWorldFaces(const Scope& scope, const GeomRef& geom, const GeometryArena& arena);
 
 }  // namespace fgsg::rt::cga
