@@ -117,6 +117,10 @@ const CommandInfo kCommands[] = {
      nullptr},
     {CommandId::ShapeOperation, "Convexify", 0, 1, BodyRule::None, "Convexify() or Convexify(maxLength)", nullptr},
     {CommandId::ShapeOperation, "Taper", 1, 1, BodyRule::None, "Taper(height)", nullptr},
+    {CommandId::ShapeOperation, "InsertAlongUV", 3, 5, BodyRule::None,
+     "InsertAlongUV(uvSet, \"asset.obj\", height[, \"scope.y\" or \"vertex.normal\"[, \"alignPosition\" or "
+     "\"keepPosition\"]])",
+     nullptr},
     {CommandId::ShapeOperation, "Envelope", 4, 10, BodyRule::None,
      "Envelope(\"normal\" or \"world.up\", maxHeight, frontBaseHeight, frontAngle[, backBaseHeight, backAngle[, "
      "sideBaseHeight, sideAngle or rightBaseHeight, rightAngle, leftBaseHeight, leftAngle]])",

@@ -246,6 +246,19 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
         diags_.error("E016", item.range,
                      "'" + item.name + "' takes " + forms + ", got " + std::to_string(item.args.size()) + ": " +
                          cmd.signature);
+      if (item.name == "InsertAlongUV" && item.args.size() >= 2) {
+        // The uv set is known when the grammar is compiled, as the uv operations' is; the
+        // asset is a file found before deriving, so its name is a constant string.
+        const Expr& set = *item.args[0];
+        const bool number = set.kind == ExprKind::Number;
+        if (!number || !(set.number >= 0 && set.number <= 9) || set.number != std::floor(set.number))
+          diags_.error("E028", set.range,
+                       "a uv set is a whole number from 0 to 9 (CityEngine's texture layers), written as one" +
+                           (number ? ", not " + formatNumber(set.number) : std::string()) + ": " + cmd.signature);
+        if (ConstValue asset; !(evalConst(*item.args[1], asset) && asset.type == ValueType::Str))
+          diags_.error("E028", item.args[1]->range,
+                       "InsertAlongUV's asset is a file name written as a string: " + std::string(cmd.signature));
+      }
       // A word where the operation takes one ("largest", "y"), else a number.
       for (size_t k = 0; k < item.args.size(); ++k) {
         ConstValue v;

@@ -44,6 +44,12 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
   if ((command == "Translate" || command == "Rotate") && k == 1)
     return pick({{"scope", 0}, {"pivot", 1}, {"object", 2}, {"world", 3}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
+  // InsertAlongUV's asset is any file name (the lowering makes it the op's asset), then
+  // the height's direction and alignment as runtime/cga/insert_along_uv.h's options.
+  if (command == "InsertAlongUV" && k == 1) return value = 0, true;
+  if (command == "InsertAlongUV" && k == 3) return pick({{"scope.y", 0}, {"vertex.normal", 1}}, word, value, allowed);
+  if (command == "InsertAlongUV" && k == 4)
+    return pick({{"alignPosition", 0}, {"keepPosition", 1}}, word, value, allowed);
   if ((command == "Envelope" || command == "EnvelopePerEdge") && k == 0)
     return pick({{"normal", 0}, {"world.up", 1}}, word, value, allowed);
   // Scatter's words as runtime/cga/scatter.h's ScatterDomain and ScatterMean.

@@ -532,6 +532,8 @@ class Lowerer {
           std::string allowed;
           if (item.args[k]->kind == ExprKind::String || !constString(*item.args[k]).empty()) {
             frontend::shapeOperationWord(cmd.name, k, constString(*item.args[k]), code, allowed);
+            // InsertAlongUV's asset: the op's asset, found with the others before deriving.
+            if (cmd.name == std::string("InsertAlongUV") && k == 1) op.asset = m_.internAsset(constString(*item.args[k]));
             Expr e = Expr::number(code);
             e.loc = op.loc;
             op.args.push_back(std::move(e));

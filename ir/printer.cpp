@@ -451,6 +451,8 @@ class Printer {
       }
       case OpKind::ShapeOperation:
         text = withArgs("shape-operation " + stringLit(op.str));
+        if (m_.strings[op.str] == "InsertAlongUV" && op.asset < m_.assets.size())
+          text += " asset " + quoted(m_.assets[op.asset]);  // its argument 1 (a placeholder 0)
         for (uint32_t label : op.partLabels) text += " " + m_.strings[label] + ":";
         break;
       case OpKind::Unsupported: text = "unsupported " + quoted(op.name) + " " + quoted(op.why); break;

@@ -1,5 +1,6 @@
 #include "backend/commands/shape_operations.h"
 
+#include "backend/commands/insert_along_uv_command.h"
 #include "backend/commands/scatter_command.h"
 #include "backend/engine/derivation.h"
 #include "runtime/cga/edge_index_label.h"
@@ -144,6 +145,10 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   }
   if (name == "Scatter") {
     applyScatter(d, op, a, n, st, ex, f);
+    return;
+  }
+  if (name == "InsertAlongUV") {
+    applyInsertAlongUv(d, op, a, n, st);
     return;
   }
   if (name.rfind("Setback", 0) == 0 || name == "ShapeL" || name == "ShapeU" || name == "ShapeO") {

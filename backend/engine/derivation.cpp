@@ -3,6 +3,7 @@
 // how run() ends: a limit keeps what was derived (R004), running out of memory keeps
 // nothing (R020), a DeriveError is the located error.
 #include "backend/engine/derivation.h"
+#include "backend/commands/insert_along_uv_command.h"
 #include "backend/engine/surface_reuse.h"
 
 #include "runtime/memory_budget.h"
@@ -262,7 +263,8 @@ void Derivation::resolveAssets() {
   std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
     for (const auto& op : b) {
       if (op.kind == ir::OpKind::Instance && firstUse[op.index].line == 0) firstUse[op.index] = op.loc;
-      if (op.kind == ir::OpKind::Line && op.asset < firstUse.size() && firstUse[op.asset].line == 0)
+      if ((op.kind == ir::OpKind::Line || isInsertAlongUv(m_, op)) && op.asset < firstUse.size() &&
+          firstUse[op.asset].line == 0)
         firstUse[op.asset] = op.loc;
       for (const auto& body : op.bodies) visit(body);
     }

@@ -87,6 +87,10 @@ class Derivation final : public QueryHost {
   rt::InstanceList& output() { return out_; }
   rt::DeriveStats& stats() { return stats_; }
   rt::GeometryArena& arena() { return arena_; }
+  // The projection of uv set `set` a scope's `projection` names; null: the set has none.
+  const rt::cga::UvProjection* uvProjection(uint32_t scopeProjection, uint32_t set) const {
+    return textures_.projection(scopeProjection, set);
+  }
   rt::OcclusionIndex& occluders() { return occluders_; }
   const std::shared_ptr<const SurfaceWorld>& surface() const { return surface_; }
   size_t scopeStackSize() const { return stack_.size(); }

@@ -863,7 +863,7 @@ bool Translator::offsetComp(const std::vector<P::OperationContext*>& ops, size_t
 // An asset or image named by a .cga file, found as CityEngine finds it: beside the rule
 // file, in its assets/ folder, or in the project (the folders above it, whose assets/
 // holds CityEngine's). Found: the path becomes absolute. Missing: W801 once per path.
-bool Translator::assetPath(std::string& path, const SourceRange& at, const char* what) {
+bool Translator::assetPath(std::string& path, const SourceRange& at, const char* what, bool warnMissing) {
   std::error_code ec;
   if (fs::path(path).is_absolute()) {
     if (fs::is_regular_file(path, ec)) return true;
@@ -878,7 +878,7 @@ bool Translator::assetPath(std::string& path, const SourceRange& at, const char*
       if (dir == dir.parent_path()) break;
     }
   }
-  if (warnedAssets_.insert(path).second)
+  if (warnMissing && warnedAssets_.insert(path).second)
     warning("W801", at, std::string("the ") + what + " '" + path +
                             "' is not found (beside the rule file, in its assets/ folder or the project's): "
                             "skipped, as CityEngine does");

@@ -15,6 +15,8 @@
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
 //   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance) convexify(maxLength)
 //   taper(height)
+//   insertAlongUV(uvSet, asset, height[, scope.y|vertex.normal[, alignPosition|keepPosition]])
+//                                             InsertAlongUV(uvSet, "asset", height, ...) (asset found as i() finds it)
 //   envelope(normal|world.up, maxHeight, frontBase, frontAngle, ...)
 //                                             Envelope("normal", maxHeight, frontBase, frontAngle, ...)
 //   envelope(normal|world.up, maxHeight, [b0, b1, ...], [a0, a1, ...])
@@ -42,7 +44,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"mirror", "Mirror"},                     {"setback", "Setback"},
       {"setbackToArea", "SetbackToArea"},       {"setbackPerEdge", "SetbackPerEdge"},
       {"convexify", "Convexify"},               {"taper", "Taper"},
-      {"envelope", "Envelope"},
+      {"envelope", "Envelope"},                 {"insertAlongUV", "InsertAlongUV"},
       {"shapeL", "ShapeL"},                     {"shapeU", "ShapeU"},
       {"shapeO", "ShapeO"},                     {"innerRectangle", "InnerRectangle"},
       {"innerRect", "InnerRectangle"},          {"deleteHoles", "DeleteHoles"},
@@ -107,8 +109,29 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
   if (fgsgName == "Envelope" && argCtx.size() == 4 &&
       (envelopeArrayLiteral(argCtx[2]) || envelopeArrayLiteral(argCtx[3])))
     return envelopePerEdge(op, env, item);
+  if (fgsgName == "InsertAlongUV")  // op_insertAlongUV's selectors (arguments 4 and 5)
+    for (size_t k = 3; k < argCtx.size(); ++k) {
+      double code = 0;
+      std::string allowed;
+      if (!shapeOperationWord(fgsgName, k, selectorWord(argCtx[k]), code, allowed)) {
+        error("E028", rangeOf(argCtx[k]), std::string("insertAlongUV's ") +
+                                              (k == 3 ? "heightDirection" : "heightAlignment") + " is " + allowed +
+                                              ", not '" + argCtx[k]->getText() + "'");
+        return true;
+      }
+    }
   Item made = command(fgsgName, at);
   for (size_t k = 0; k < argCtx.size(); ++k) {
+    if (fgsgName == "InsertAlongUV" && k == 1) {
+      // The asset, found as i() finds it (a built-in keeps its name); one not found stays
+      // as written, and the derivation reports it at the operation (R003).
+      ExprPtr asset = expr(argCtx[k], env);
+      if (!asset) return true;
+      if (asset->kind == ExprKind::String && asset->text.rfind("builtin:", 0) != 0)
+        assetPath(asset->text, rangeOf(argCtx[k]), "asset", false);
+      made.args.push_back(std::move(asset));
+      continue;
+    }
     // A selector word (`y`, `largest`, `scope`, `vertices`) is the command's string argument.
     std::string word = selectorWord(argCtx[k]);
     if (word == "yUp" || word == "zUp") word = word.substr(0, 1);

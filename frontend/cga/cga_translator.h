@@ -150,7 +150,8 @@ class Translator {
   // cga_scatter.cpp: scatter(domain, n, distribution[, mean, stddev]) { operations } as
   // fgsg's Scatter command with the operations as its body (empty after an error).
   std::optional<Item> scatter(P::CallOperationContext* op, const Env& env);
-  bool assetPath(std::string& path, const SourceRange& at, const char* what);
+  // warnMissing false: a file not found gives no W801 (insertAlongUV's R003 says it).
+  bool assetPath(std::string& path, const SourceRange& at, const char* what, bool warnMissing = true);
   std::string selectorWord(P::ExprContext* e) const;
   Item command(const std::string& fgsgName, const SourceRange& at);
 
