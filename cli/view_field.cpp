@@ -55,12 +55,12 @@ Json overlayDesignElements(const ir::FieldSpec& spec, const rt::surface::Surface
 
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
                              const std::vector<std::string>& dataDirs, std::string* fieldName,
-                             FieldEditBounds* bounds) {
+                             FieldEditBounds* bounds, std::shared_ptr<const backend::SurfaceWorld> built) {
   if (!module.surface.present && options.surfaceOverride.empty())
     return error("the grammar declares no surface (fields live on one)").dump();
-  std::unique_ptr<backend::SurfaceWorld> world;
+  std::shared_ptr<const backend::SurfaceWorld> world = std::move(built);
   try {
-    world = std::make_unique<backend::SurfaceWorld>(module, options, dataDirs);
+    if (!world) world = std::make_shared<backend::SurfaceWorld>(module, options, dataDirs);
   } catch (const backend::DeriveError& e) {
     return error("line " + std::to_string(e.loc.line) + ": " + e.message).dump();
   }

@@ -17,8 +17,13 @@
 #include "runtime/derivation.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace fgsg::backend {
+class SurfaceWorld;
+}
 
 namespace fgsg::cli {
 
@@ -29,8 +34,11 @@ constexpr size_t kMaxFieldOverlaySingularities = 1000;
 
 // `name` and `bounds` (when not null) get the field's name and the surface's box, which
 // edits of its elements are checked against; they are left alone when there is an error.
+// `built`: the surface and fields a derivation of `module` with `options` built already
+// (fgsg view's SurfaceReuse), not built a second time; null: built here.
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
                              const std::vector<std::string>& dataDirs, std::string* name = nullptr,
-                             FieldEditBounds* bounds = nullptr);
+                             FieldEditBounds* bounds = nullptr,
+                             std::shared_ptr<const backend::SurfaceWorld> built = nullptr);
 
 }  // namespace fgsg::cli

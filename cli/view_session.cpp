@@ -154,8 +154,16 @@ void ViewSession::sendFields(bool recompiled) {
     if (!compiled_) {
       field_ = Json{{"type", "field"}, {"error", "the grammar has not compiled"}}.dump();
     } else {
+      // The surface and fields the last derivation built, when it derived what the overlay
+      // shows (the grammar's own values and the start seed): not built a second time.
+      std::shared_ptr<const backend::SurfaceWorld> built;
+      if (surfaceReuse_ && surfaceReuseKey_.first.empty() && surfaceReuseKey_.second == options_.derive.seed) {
+        std::lock_guard<std::mutex> lock(surfaceReuse_->mutex);
+        built = surfaceReuse_->world;
+      }
       try {
-        field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file), &name, &bounds);
+        field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file), &name, &bounds,
+                                  std::move(built));
       } catch (const std::exception& e) {  // out of memory ...
         field_ = Json{{"type", "field"}, {"error", e.what()}}.dump();
       }
