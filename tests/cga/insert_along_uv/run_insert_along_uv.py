@@ -10,6 +10,9 @@ street's dimensions (the comments at the top of the rule files), not from fgsg's
                       x 2, the 20 corners (comp(v): x 0 2.5 5 7.5 10, y 0 0.5, z -2 0) to 1e-9,
                       and the written mesh's volume 10 m3 (faces looking out; float output)
   straight_fgsg.fgsg  fgsg's InsertAlongUV on a flat box S(10, 0, 2): the same, z 0 2
+  normals.cga         the scope's y tilted 30 degrees: sheared boxes (area 4 (12 + 2.5 cos 30),
+                      volume 10 cos 30); vertex.normal and keepPosition: the boxes of
+                      straight.cga cut along the lot's diagonal (area 58, volume 10)
   library             with RUN_LIBRARY: the grammar compiled to a shared library (fgsg
                       compile) writes the same mesh as both engines
   errors              located errors (file:line:col) in both dialects and engines
@@ -17,6 +20,7 @@ street's dimensions (the comments at the top of the rule files), not from fgsg's
     run_insert_along_uv.py FGSG [RUN_LIBRARY]
 """
 import json
+import math
 import os
 import subprocess
 import sys
@@ -96,6 +100,23 @@ def check_straight(fgsg, work, rule, zs):
     assert abs(volume - 10.0) <= 1e-4, "%s: the written mesh's volume is %r, expected 10 (faces looking out)" % (
         rule, volume)
     return "%s: 4 boxes, area 58, 48 faces, the 20 corners to 1e-9, volume %.6f, interp == jit" % (rule, volume)
+
+
+def check_normals(fgsg, work):
+    a = run(fgsg, "normals.cga", work, "interp")
+    b = run(fgsg, "normals.cga", work, "jit")
+    assert a[0] == b[0] and a[1] == b[1], "normals.cga: the engines' instances or reports differ"
+    reports = json.loads(a[1])
+    cos30 = math.cos(math.radians(30))
+    wants = {"tilted.area": 4 * (12 + 2.5 * cos30), "rail.area": 58.0}
+    for key, want in wants.items():
+        got = report_sum(reports, key)
+        assert abs(got - want) <= TOL, "normals.cga: %s is %r, expected %r" % (key, got, want)
+    for group, want in (("TiltedMesh", 10 * cos30), ("RailMesh", 10.0)):
+        volume = obj_group_volume(a[2], group)
+        assert abs(volume - want) <= 1e-4, "normals.cga: %s's volume is %r, expected %r" % (group, volume, want)
+    return "normals.cga: scope.y tilted 30 degrees: area 4 (12 + 2.5 cos 30), volume 10 cos 30; vertex.normal " \
+           "and keepPosition: area 58, volume 10; interp == jit"
 
 
 def check_library(fgsg, work, run_library):
@@ -182,7 +203,7 @@ def main():
         return 2
     fgsg = os.path.abspath(sys.argv[1])
     checks = [lambda f, w: check_straight(f, w, "straight.cga", (-2, 0)),
-              lambda f, w: check_straight(f, w, "straight_fgsg.fgsg", (0, 2)), check_errors]
+              lambda f, w: check_straight(f, w, "straight_fgsg.fgsg", (0, 2)), check_normals, check_errors]
     if len(sys.argv) == 3:
         run_library = os.path.abspath(sys.argv[2])
         checks.append(lambda f, w: check_library(f, w, run_library))
