@@ -71,6 +71,7 @@ RunOptions parseRunOptions(const Args& args) {
   cl.text("--report", o.report);
   cl.whole("--max-shapes", o.derive.maxShapes);
   cl.whole("--max-depth", o.derive.maxDepth);
+  stepFlag(cl, o.derive);
   cl.option("--max-seconds", [&](const std::string& v) {
     o.derive.maxSeconds = CommandLine::parseNumber("--max-seconds", v);
     if (!(o.derive.maxSeconds > 0)) throw UsageError{"--max-seconds must be positive"};
@@ -199,6 +200,15 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
               << " needs a surface: " << opt.file
               << " declares none (it grows on the plane) and --surface is not given\n";
     return 2;
+  }
+
+  {
+    std::string error, warning;
+    if (!checkStepFlag(compiled->module, opt.file, opt.derive, error, warning)) {
+      std::cerr << "fgsg run: " << error << "\n";
+      return 2;
+    }
+    if (!warning.empty() && !opt.quiet) std::cerr << "fgsg run: warning: " << warning << "\n";
   }
 
   rt::AssetLibrary assets;

@@ -1,5 +1,7 @@
 #include "cli/derive_flags.h"
 
+#include "backend/interp/eval.h"
+
 namespace fgsg::cli {
 
 void engineFlag(CommandLine& cl, backend::Engine& engine) {
@@ -35,6 +37,34 @@ void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive) {
     if (!(derive.surfaceSize > 0)) throw UsageError{"--surface-size must be a positive number"};
   });
   cl.flag("--repair-surface", derive.repairSurface);
+}
+
+void stepFlag(CommandLine& cl, rt::DeriveOptions& derive) {
+  cl.whole("--step", derive.parallelStep, 0, 2147483647);
+}
+
+bool checkStepFlag(const ir::Module& m, const std::string& file, rt::DeriveOptions& derive, std::string& error,
+                   std::string& warning) {
+  if (derive.parallelStep < 0) return true;
+  const std::string step = "--step " + std::to_string(derive.parallelStep);
+  int length = -1;
+  try {
+    length = backend::parallelDerivationLength(m, derive.attrOverrides);
+  } catch (const backend::DeriveError&) {
+    return true;  // --set values that do not fit: the derivation says so (R010), located
+  }
+  if (length < 0) {
+    error = step + ": " + file +
+            " is no L-system: its derivation is sequential (derive breadthfirst or depthfirst), which has no "
+            "steps; --step counts the steps of `derive parallel N;`";
+    return false;
+  }
+  if (derive.parallelStep > length) {
+    warning = step + " is past " + file + "'s derivation length " + std::to_string(length) + ": step " +
+              std::to_string(length) + ", its last, is derived (as lpfg's animate mode stops there)";
+    derive.parallelStep = length;
+  }
+  return true;
 }
 
 void sceneFlags(CommandLine& cl, SceneFlags& scene) {

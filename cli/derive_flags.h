@@ -19,6 +19,15 @@ void startRuleFlag(CommandLine& cl, std::string& startRule);
 // --surface MESH, --surface-size S, --repair-surface: the surface grown on.
 void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive);
 
+// --step N: an L-system (`derive parallel`) rewritten N steps, 0 its axiom, instead of
+// its whole length (rt::DeriveOptions::parallelStep).
+void stepFlag(CommandLine& cl, rt::DeriveOptions& derive);
+// --step against the compiled grammar `file`: false with `error` for a grammar that is no
+// L-system. A step past the derivation length is the
+// length, as lpfg's animate mode stops there: `warning` then says so.
+bool checkStepFlag(const ir::Module& m, const std::string& file, rt::DeriveOptions& derive, std::string& error,
+                   std::string& warning);
+
 // --instancing auto|on|off, --group-by symbol|rule|label|none, --split-output DIR: the
 // output's layout (runtime/output/scene.h, cli/scene_output.h). A glTF output is a scene
 // by default (auto / symbol); `--instancing off --group-by none` gives the one flattened

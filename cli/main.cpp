@@ -16,7 +16,7 @@ const char* kHelp = R"(fgsg - field-guided shape grammars: grow geometry from .f
 usage:
   fgsg run FILE [-o out.glb|.obj|.ply] [--seed N] [--set name=value]...
                 [--preview out.png] [--instances out.json] [--lines lines.json] [--max-shapes N]
-                [--max-depth N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
+                [--max-depth N] [--step N] [--max-seconds S] [--max-memory SIZE] [--collide-all]
                 [--stats] [--quiet] [--surface mesh.off] [--surface-size S] [--repair-surface] [--start x,y,z]
                 [--engine jit|interp] [--seed-points FILE|x,y,z;...] [--march-candidates N]
                 [--lots lots.geojson] [--start-rule NAME] [--report reports.json]

@@ -43,6 +43,8 @@ const char* const kRun =
     "  --split-output DIR a file per start shape in DIR, with DIR/manifest.json\n"
     "  --max-shapes N     stop after N shapes (default 20000000), keeping what was derived\n"
     "  --max-depth N      shapes at depth N or more stay terminal (default 100000)\n"
+    "  --step N           an L-system (derive parallel): its derivation after N steps (0: the\n"
+    "                     axiom) instead of its length; past the length, the length (a warning)\n"
     "  --max-seconds S    stop deriving after S seconds (default 120), keeping what was\n"
     "                     derived; field design, tracing and synthesis are bounded too\n"
     "  --max-memory SIZE  stop deriving when it holds SIZE (512M, 2G; default half the\n"

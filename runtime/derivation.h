@@ -17,6 +17,10 @@ struct DeriveOptions {
   uint64_t seed = 1;
   uint64_t maxShapes = 20'000'000;  // shapes created in all
   uint32_t maxDepth = 100'000;      // derivation depth of one shape
+  // --step N: an L-system (`derive parallel`) is rewritten N steps instead of its length,
+  // at most its length (backend::parallelDerivationLength; lpfg's animate mode stops
+  // there too); -1: its whole length. Sequential derivations ignore it.
+  int32_t parallelStep = -1;
   double maxSeconds = 120.0;  // wall clock, from `startedAt` (runtime/deadline.h)
   // When the --max-seconds clock started; the default: when the derivation starts. A
   // derivation run twice (the JIT's direct derivation, then the engine's order) shares it.

@@ -482,6 +482,10 @@ FGSG_API int fgsg_set_option(fgsg_generator* g, const char* name, const char* va
       if (!parseUnsigned(v, m) || m > std::numeric_limits<uint32_t>::max())
         return bad("a whole number from 0 to 4294967295");
       o.maxDepth = static_cast<uint32_t>(m);
+    } else if (n == "step") {  // fgsg run --step: past the derivation's length, the length
+      uint64_t m;
+      if (!parseUnsigned(v, m) || m > 2147483647) return bad("a whole number from 0 to 2147483647");
+      o.parallelStep = static_cast<int32_t>(m);
     } else if (n == "max-seconds") {
       double s;
       if (!parseNumber(v, s) || !(s > 0)) return bad("a positive number of seconds");

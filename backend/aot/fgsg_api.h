@@ -91,6 +91,8 @@ FGSG_API int fgsg_set_surface(fgsg_generator* g, const char* mesh_path);
  *   "surface-size"                    a positive number
  *   "start"                           "x,y,z"
  *   "max-shapes", "max-depth"         a whole number >= 0
+ *   "step"                            an L-system derived this many steps (0 to
+ *                                     2147483647; past its length, the length)
  *   "max-seconds"                     a positive number
  *   "asset-dir"                       adds a folder to search for assets and data files
  *                                     (after the grammar's folder and its assets/)

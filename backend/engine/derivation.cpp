@@ -56,6 +56,8 @@ Derivation::Derivation(const ir::Module& m, const rt::DeriveOptions& o, rt::Asse
       else depthBound = int(count);
     }
   }
+  // --step N: the derivation up to step N of its length (the CLI warns past the length).
+  if (m_.mode == ir::DeriveMode::Parallel && opt_.parallelStep >= 0) steps_ = std::min(steps_, int(opt_.parallelStep));
   if (m_.mode != ir::DeriveMode::Parallel && depthBound >= 0 && static_cast<uint32_t>(depthBound) <= maxDepth_) {
     maxDepth_ = static_cast<uint32_t>(depthBound);
     depthBoundIsGrammars_ = true;

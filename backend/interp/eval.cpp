@@ -258,6 +258,15 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
   return "";
 }
 
+int parallelDerivationLength(const ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  if (m.mode != ir::DeriveMode::Parallel) return -1;
+  if (m.countAttr < 0) return m.steps;
+  ir::Module values = m;  // attributeSlots interns string values in the module it reads
+  const double count = attributeSlots(values, overrides)[3 * size_t(m.countAttr)];
+  // As Derivation reads it: a value out of range (an import's attr) leaves the grammar's N.
+  return count >= 0 && count <= 2147483647.0 ? int(count) : m.steps;
+}
+
 std::vector<double> attributeSlots(
     ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides) {
   std::vector<double> slots(3 * m.attrs.size(), 0.0);

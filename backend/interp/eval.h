@@ -126,6 +126,11 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
 std::vector<double> attributeSlots(
     ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides);
 
+// How many steps an L-system (`derive parallel N;`) rewrites with these `--set` values:
+// N, or its attr's value (`derive parallel n;`); -1 for a sequential grammar. What
+// `--step` is checked against. Throws DeriveError as attributeSlots does.
+int parallelDerivationLength(const ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides);
+
 // The attribute values for each lot of `options.lots`: attributeSlots with, after --set,
 // every attr named like one of the lot's properties set to its value, and an attr
 // `lot_area` set to the lot's area. Throws DeriveError (R010) naming the lot for a value

@@ -5,7 +5,7 @@
  *
  *   usage: run_library LIBRARY [--name NAME] -o OUT [--seed N] [--set name=value]...
  *            [--surface FILE] [--surface-size S] [--start x,y,z] [--repair-surface]
- *            [--collide-all] [--max-shapes N] [--max-depth N] [--max-seconds S]
+ *            [--collide-all] [--max-shapes N] [--max-depth N] [--step N] [--max-seconds S]
  *            [--asset-dir DIR] [--lots FILE] [--quiet]
  *
  * Exit codes: 0 success, 1 failure (the message on stderr), 2 bad usage or a value
@@ -147,6 +147,7 @@ int main(int argc, char** argv) {
       FAIL_IF(fgsg_set_surface(g, value));
     } else if (strcmp(flag, "--surface-size") == 0 || strcmp(flag, "--start") == 0 ||
                strcmp(flag, "--max-shapes") == 0 || strcmp(flag, "--max-depth") == 0 ||
+               strcmp(flag, "--step") == 0 ||
                strcmp(flag, "--max-seconds") == 0 || strcmp(flag, "--asset-dir") == 0 ||
                strcmp(flag, "--seed-points") == 0 || strcmp(flag, "--seed-density") == 0 ||
                strcmp(flag, "--seed-count") == 0 || strcmp(flag, "--march-candidates") == 0 ||
