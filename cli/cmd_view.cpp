@@ -27,13 +27,18 @@ namespace {
 
 const char* kViewHelp = R"(usage: fgsg view FILE [--port N] [--host ADDRESS] [--no-token] [--seed N]
                  [--set name=value]... [--surface mesh.off] [--engine jit|interp]
-                 [--start-rule NAME] [--seed-points FILE]
+                 [--start-rule NAME] [--seed-points FILE] [--steps] [--step N]
 
 Serves a page at http://ADDRESS:N/?token=... (default 127.0.0.1, port 8765; --port 0
 picks a free one) that shows FILE's model and re-derives it live: when FILE or a file in
 its folder or its assets/ folder is saved, when an attribute is changed in the page's
 inspector, and when the seed is stepped. Each open page has its own values and seed.
 Errors show in the page; the last good model stays. Ctrl-C stops the server.
+
+With --steps, an L-system (`derive parallel N;`) gets a slider from 0 (its axiom) to N
+and a play button: the page shows its derivation after that many steps (--step N: where
+it starts; without --steps, the page shows step N), each step derived when asked and
+kept for the next time it is asked.
 
 On a surface the page also edits what a run reads from files: the seeds of on-mesh
 marching (click the surface, drag, set a heading), written to FILE of --seed-points
@@ -72,6 +77,8 @@ ViewCommandOptions parseViewOptions(const Args& args) {
   setFlag(cl, o.view.derive);
   startRuleFlag(cl, o.view.startRule);
   cl.text("--seed-points", o.view.seedFile);
+  cl.flag("--steps", o.view.steps);
+  stepFlag(cl, o.view.derive);
   cl.parse(args);
   if (o.view.file.empty()) throw UsageError{"no grammar file given: fgsg view FILE [options]"};
   // fgsg view writes its seeds to a file: an inline list ("x,y,z") has nowhere to go.

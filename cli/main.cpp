@@ -41,6 +41,7 @@ usage:
                  [--surface mesh.off]
                            show FILE's field: streamlines and singularities (listed)
   fgsg view FILE [--port N] [--host ADDRESS] [--seed N] [--set name=value]... [--surface mesh.off]
+                 [--steps] [--step N]
                            a live viewer in the browser: re-derives when FILE is saved or
                            an attribute is changed in the page (fgsg view --help)
   fgsg batch JOBS.json [--scheduler tcp://host:port] [--workers N]

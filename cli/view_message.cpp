@@ -316,6 +316,13 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
       }
       out.hasSeed = true;
       out.seed = value.get<uint64_t>();
+    } else if (key == "step") {
+      if (!value.is_number_unsigned() || value.get<uint64_t>() > kMaxPageStep) {
+        reason = "set: \"step\" must be a whole number from 0 to " + std::to_string(kMaxPageStep);
+        return false;
+      }
+      out.hasStep = true;
+      out.step = static_cast<uint32_t>(value.get<uint64_t>());
     } else if (key == "attrs") {
       if (!value.is_object() || value.size() > kMaxPageAttrs) {
         reason = "set: \"attrs\" must be an object of at most " + std::to_string(kMaxPageAttrs) + " names";

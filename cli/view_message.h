@@ -1,7 +1,8 @@
 // The messages a page may send to `fgsg view` (cli/view_session.h), checked before they
 // change anything: a size cap, a nesting cap before any recursive parse, then a strict
 // schema. A message that fails gets a {"type":"rejected"} reply and is otherwise ignored.
-//   {"type":"set", "attrs":{"name": "text" | number | boolean, ...}, "seed": N}
+//   {"type":"set", "attrs":{"name": "text" | number | boolean, ...}, "seed": N, "step": N}
+//                                  ("step": an L-system's derivation step, fgsg view --steps)
 //   {"type":"pick", "instance": N}
 //   {"type":"seeds", "seeds":[[x,y,z] | [x,y,z,dx,dy,dz], ...]}   (the whole list, #49)
 //   {"type":"paint", "texture":"NAME", "stroke":N, "dabs":[[x,y,z], ...], "radius":R,
@@ -34,6 +35,7 @@ constexpr size_t kMaxPageValueBytes = 4096;
 constexpr size_t kMaxPageSeeds = 1024;   // a seed file the page edits by hand
 constexpr size_t kMaxPageDabs = 256;     // brush positions in one paint message
 constexpr double kMaxPageCoordinate = 1e9;  // |x|, beyond any surface's size
+constexpr uint32_t kMaxPageStep = 2147483647;  // `derive parallel N;`'s largest N
 constexpr double kMaxPageElementStrength = 1000;  // |strength| of a field design element
 constexpr uint32_t kMaxPageElementIndex = 1000000;  // beyond any design block's elements
 
@@ -75,6 +77,8 @@ struct PageRequest {
   std::vector<std::pair<std::string, std::string>> attrs;  // name, value as --set writes it
   bool hasSeed = false;
   uint64_t seed = 0;
+  bool hasStep = false;  // set: the derivation step to show (the session checks its length)
+  uint32_t step = 0;
   uint32_t instance = 0;  // pick
   std::vector<PageSeed> seeds;  // seeds
   PagePaint paint;              // paint

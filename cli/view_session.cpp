@@ -69,6 +69,8 @@ ViewSession::ViewSession(ViewOptions options, ViewServer& server)
   startSeed_ = options_.derive.seed;
   for (const auto& [name, value] : options_.derive.attrOverrides) startAttrs_[name] = value;
   options_.derive.attrOverrides.clear();
+  startStep_ = options_.derive.parallelStep;  // --step: each page's own from here
+  options_.derive.parallelStep = -1;
   std::string error;
   if (!readSeedFile(options_.seedFile, seeds_, error)) std::cerr << "fgsg view: " << error << "\n";
   seen_ = watchedFiles({});
@@ -90,6 +92,7 @@ void ViewSession::pageOpened(uint64_t page) {
   Page& p = pages_[page];
   p.attrs = startAttrs_;
   p.seed = startSeed_;
+  p.step = startStep_;
   p.pending = true;
   wake_.notify_all();
 }
@@ -121,11 +124,40 @@ void ViewSession::message(uint64_t page, const std::string& text) {
     if (!problem.empty()) return reject(page, problem);
   }
   Page& p = it->second;
+  const std::map<std::string, std::string> attrs =
+      request.hasAttrs ? std::map<std::string, std::string>(request.attrs.begin(), request.attrs.end()) : p.attrs;
+  if (request.hasStep) {
+    const std::string problem = stepProblem(request.step, attrs);
+    if (!problem.empty()) return reject(page, problem);
+  }
   // The page sends every value its user has set; the others take the starting values.
-  if (request.hasAttrs) p.attrs = std::map<std::string, std::string>(request.attrs.begin(), request.attrs.end());
+  p.attrs = attrs;
   if (request.hasSeed) p.seed = request.seed;
+  if (request.hasStep) p.step = static_cast<int32_t>(request.step);
   p.pending = true;
   wake_.notify_all();
+}
+
+std::string ViewSession::stepProblem(uint32_t step, const std::map<std::string, std::string>& attrs) const {
+  const std::string what = "set: step " + std::to_string(step);
+  if (!options_.steps) return what + ": fgsg view was started without --steps";
+  if (!compiledOnce_) return what + ": the grammar has not compiled yet";
+  std::vector<std::pair<std::string, std::string>> values;  // those the grammar has, as derive() takes them
+  for (const auto& [name, value] : attrs)
+    if (attrShape_.findAttr(name) >= 0) values.emplace_back(name, value);
+  int length = -1;
+  try {
+    length = backend::parallelDerivationLength(attrShape_, values);
+  } catch (const backend::DeriveError& e) {
+    return what + ": " + e.message;
+  } catch (const std::exception& e) {
+    return what + ": " + e.what();
+  }
+  if (length < 0) return what + ": " + options_.file + " is no L-system (derive parallel N;): its derivation has no steps";
+  if (step > static_cast<uint32_t>(length))
+    return what + " is past the derivation's length " + std::to_string(length) + " (steps 0 to " +
+           std::to_string(length) + ")";
+  return "";
 }
 
 void ViewSession::askField(uint64_t page) {
@@ -250,6 +282,7 @@ void ViewSession::edited(uint64_t page, const std::string& file) {
   for (const auto& [name, time] : now)
     if (name == file || fs::equivalent(name, file, ec)) seen_[name] = time;
   for (auto& [id, p] : pages_) p.pending = true;
+  ++stepsEpoch_;  // the steps derived before read the file as it was
   server_.sendText(page, Json{{"type", "written"}, {"file", fs::path(file).filename().string()}}.dump());
   wake_.notify_all();
 }
@@ -298,6 +331,7 @@ void ViewSession::checkFiles() {
   }
   seen_ = std::move(now);
   recompile_ = true;
+  ++stepsEpoch_;
   for (auto& [id, p] : pages_) p.pending = true;  // each page again, with its own values
   wake_.notify_all();
 }
@@ -308,10 +342,13 @@ void ViewSession::work() {
     struct Group {
       std::map<std::string, std::string> attrs;
       uint64_t seed;
+      int32_t step;
       std::vector<uint64_t> pages;
     };
     ViewSeeds seeds;
-    std::map<std::pair<uint64_t, std::map<std::string, std::string>>, Group> groups;  // by seed and values
+    uint64_t epoch = 0;
+    // By seed, values and step.
+    std::map<std::tuple<uint64_t, std::map<std::string, std::string>, int32_t>, Group> groups;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       auto anyPending = [this] {
@@ -324,22 +361,29 @@ void ViewSession::work() {
       recompile = recompile_;
       recompile_ = false;
       seeds = seeds_;
+      epoch = stepsEpoch_;
       for (auto& [id, p] : pages_) {
         if (!p.pending) continue;
         p.pending = false;
-        Group& g = groups[{p.seed, p.attrs}];
+        Group& g = groups[{p.seed, p.attrs, p.step}];
         g.attrs = p.attrs;
         g.seed = p.seed;
+        g.step = p.step;
         g.pages.push_back(id);
       }
       if (groups.empty()) recompile_ = recompile;  // woken for a field overlay only: the next derivation compiles
+    }
+    if (!groups.empty() && (recompile || epoch != stepCacheEpoch_)) {  // the steps kept are of another grammar
+      stepCache_.clear();
+      stepCacheBytes_ = 0;
+      stepCacheEpoch_ = epoch;
     }
     for (auto& [key, g] : groups) {
       const std::string progress = Json{{"type", "progress"}, {"state", "deriving"}}.dump();
       for (uint64_t page : g.pages) server_.sendText(page, progress);
       std::shared_ptr<Derived> d;
       try {
-        d = derive(recompile, g.attrs, g.seed, seeds);
+        d = derive(recompile, g.attrs, g.seed, seeds, g.step);
       } catch (const std::exception& e) {  // the JIT's plugin missing, out of memory ...
         d = std::make_shared<Derived>();
         d->error = options_.file + ": " + e.what();
@@ -423,7 +467,7 @@ void ViewSession::prepareSurface(const std::vector<std::string>& dataDirs) {
 }
 
 std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const std::map<std::string, std::string>& attrs,
-                                                          uint64_t seed, const ViewSeeds& seeds) {
+                                                          uint64_t seed, const ViewSeeds& seeds, int32_t step) {
   std::unique_ptr<backend::native::CodeLoader>& loader = loader_;
   const auto start = std::chrono::steady_clock::now();
   auto d = std::make_shared<Derived>();
@@ -451,6 +495,8 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     attrShape_.attrs = compiled_->module.attrs;
     attrShape_.countAttr = compiled_->module.countAttr;
     attrShape_.mode = compiled_->module.mode;
+    attrShape_.steps = compiled_->module.steps;      // and the derivation's length (stepProblem)
+    attrShape_.strings = compiled_->module.strings;  // an import's attrs may read them
     compiledOnce_ = true;
     if (data != dataFiles_) {
       std::error_code ec;
@@ -477,6 +523,25 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     if (!problem.empty()) return fail(options_.file + ": " + name + " = " + value + ": " + problem);
     derive.attrOverrides.push_back({name, value});
   }
+  // An L-system's step (--step, the page's slider): the derivation up to it, kept with
+  // --steps for when the slider comes back to it.
+  int length = -1;
+  if (step >= 0 || options_.steps) {
+    try {
+      length = backend::parallelDerivationLength(compiled_->module, derive.attrOverrides);
+    } catch (const backend::DeriveError& e) {
+      return fail(options_.file + ": " + e.message);
+    }
+  }
+  if (step >= 0 && length < 0)
+    return fail(options_.file + ": --step " + std::to_string(step) +
+                ": the grammar is no L-system (derive parallel N;): its derivation has no steps");
+  const int32_t shownStep = length < 0 ? -1 : step < 0 ? length : std::min(step, int32_t(length));
+  derive.parallelStep = shownStep;
+  const auto cacheKey = std::make_tuple(seed, attrs, shownStep);
+  const bool cached = options_.steps && length >= 0;
+  if (cached)
+    if (const auto it = stepCache_.find(cacheKey); it != stepCache_.end()) return it->second;
   rt::AssetLibrary assets;
   for (const std::string& dir : grammarDataDirs(options_.file)) {
     assets.addSearchDir(dir);
@@ -514,15 +579,22 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   parts.push_back(std::move(scene.glb));
   parts.emplace_back(reinterpret_cast<const char*>(scene.ids.data()), scene.ids.size() * sizeof(uint32_t));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const std::string header = Json{{"type", "model"}, {"figures", figures}, {"milliseconds", ms},
-                                  {"seed", seed}, {"placing", placing}}.dump();
-  d->modelJson = header;
+  Json header{{"type", "model"}, {"figures", figures}, {"milliseconds", ms}, {"seed", seed}, {"placing", placing}};
+  if (options_.steps && length >= 0) header["steps"] = {{"step", shownStep}, {"length", length}};
+  d->modelJson = header.dump();
   d->parts = std::move(parts);
   d->instances = std::move(result.instances);
   for (const ir::Rule& r : compiled_->module.rules) {  // "Tree#2 (line 9)", "15: flatbrick (line 68)"
     const std::string& symbol = compiled_->module.symbols[r.symbol].name;
     const bool own = r.label.rfind(symbol + "#", 0) == 0;
     d->rules.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
+  }
+  if (cached) {
+    size_t bytes = d->modelJson.size();
+    for (const std::string& part : d->parts) bytes += part.size();
+    if (stepCacheBytes_ + bytes > kMaxStepCacheBytes) stepCache_.clear(), stepCacheBytes_ = 0;  // full: afresh
+    stepCache_[cacheKey] = d;
+    stepCacheBytes_ += bytes;
   }
   return d;
 }

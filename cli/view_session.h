@@ -7,7 +7,8 @@
 // pages keep their last good model. Messages (docs/cli.md):
 //   to the page:   {"type":"info", "file", "attrs":[{name, type, default, value}], "seed"}
 //                  {"type":"progress", "state":"deriving"}
-//                  {"type":"model", "figures":{...}, "milliseconds", "placing":[[node, count], ...]},
+//                  {"type":"model", "figures":{...}, "milliseconds", "placing":[[node, count], ...],
+//                   "steps":{"step", "length"} (with --steps, for an L-system)},
 //                   then binary: the scene as .glb (as fgsg run -o FILE.glb writes it),
 //                   and the instance numbers (Uint32) in the derivation that its placing
 //                   nodes hold, node after node (view_scene.h)
@@ -18,7 +19,8 @@
 //                   then binary: the surface as .glb (view_surface.h), for seeds and paint
 //                  {"type":"written", "file"}: a seed file or texture the page's edit wrote
 //                  {"type":"field", ...}: the field overlay (view_field.h), asked for
-//   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N}
+//   from the page: {"type":"set", "attrs":{"name":"value", ...}, "seed":N, "step":N}
+//                   ("step" with --steps only, 0 to the derivation's length)
 //                  {"type":"pick", "instance":N}
 //                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}, {"type":"field"}
 //                  {"type":"fieldElement", ...}: a design element of the first field edited in
@@ -44,6 +46,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <tuple>
 
 namespace fgsg::backend::native {
 class CodeLoader;
@@ -59,6 +62,7 @@ struct ViewOptions {
   rt::DeriveOptions derive;  // --surface, --set (the first values), --seed ...
   backend::Engine engine = backend::Engine::Jit;
   std::string seedFile;  // absolute: where the page's seeds are written (view_seed_file.h)
+  bool steps = false;    // --steps: the page steps through an L-system's derivation
 };
 
 class ViewSession {
@@ -87,6 +91,7 @@ class ViewSession {
   struct Page {
     std::map<std::string, std::string> attrs;  // the page's values, by attribute name
     uint64_t seed = 1;
+    int32_t step = -1;  // the L-system's derivation step shown; -1: its whole length
     bool pending = true;
     std::string infoSent;
     std::shared_ptr<const Derived> model;  // its last good model, for picking
@@ -96,7 +101,10 @@ class ViewSession {
 
   void work();
   std::shared_ptr<Derived> derive(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed,
-                                  const ViewSeeds& seeds);
+                                  const ViewSeeds& seeds, int32_t step);
+  // {"type":"set", "step":N}: why the page cannot be shown step N with these values
+  // (not --steps, no L-system, past its length); empty when it can. Under mutex_.
+  std::string stepProblem(uint32_t step, const std::map<std::string, std::string>& attrs) const;
   void prepareSurface(const std::vector<std::string>& dataDirs);  // after a compile (worker)
   // A seed file or texture written for a page: seen (no second derivation), every page
   // derived again, the page told. Under mutex_.
@@ -124,12 +132,20 @@ class ViewSession {
   std::unique_ptr<backend::SurfaceReuse> surfaceReuse_;
   std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
   std::string field_;  // the field overlay's message for compiled_; empty: not computed (worker only)
+  // --steps: the steps derived for these values, seed and step, kept until the grammar or
+  // a file it reads changes (stepsEpoch_) or they hold kMaxStepCacheBytes (worker only).
+  static constexpr size_t kMaxStepCacheBytes = size_t(256) << 20;
+  std::map<std::tuple<uint64_t, std::map<std::string, std::string>, int32_t>, std::shared_ptr<Derived>> stepCache_;
+  size_t stepCacheBytes_ = 0;
+  uint64_t stepCacheEpoch_ = 0;
 
   std::mutex mutex_;  // guards what follows
   std::condition_variable wake_;
   bool recompile_ = true, stopping_ = false;
   std::map<std::string, std::string> startAttrs_;  // --set: where a new page starts
   uint64_t startSeed_ = 1;
+  int32_t startStep_ = -1;  // --step: where a new page starts
+  uint64_t stepsEpoch_ = 0;  // counts the edits that change what a derivation reads
   std::map<uint64_t, Page> pages_;
   bool compiledOnce_ = false;
   ir::Module attrShape_;  // the compiled grammar's attributes, to check pages' values

@@ -10,6 +10,7 @@ import { createSeeds } from './seeds.js';
 import { createPaint } from './paint.js';
 import { createViewTools } from './view_tools.js';
 import { createFieldOverlay } from './field_overlay.js';
+import { createDerivationSteps } from './derivation_steps.js';
 import { createFieldDesign } from './field_design.js';
 
 const $ = (id) => document.getElementById(id);
@@ -150,6 +151,7 @@ function showModel(buffer) {
     tools.refresh();
     requestRender();
     state.timing.shown = performance.now();
+    steps.shown(announced ? announced.steps : undefined);
     state.serverMilliseconds = announced ? announced.milliseconds : 0;
     state.models += 1;
     state.size = new THREE.Box3().setFromObject(model).getSize(new THREE.Vector3()).toArray();
@@ -250,6 +252,7 @@ const seeds = createSeeds(ctx);
 const paint = createPaint(ctx);
 const tools = createViewTools(ctx);
 const fieldOverlay = createFieldOverlay(ctx);
+const steps = createDerivationSteps(ctx);  // with --steps: an L-system's slider
 const fieldDesign = createFieldDesign(ctx, fieldOverlay);
 // What the browser tests read besides `state`.
 state.hooks = {
@@ -274,6 +277,20 @@ state.hooks = {
     const out = [];
     if (model) model.traverse((o) => { if (o.isInstancedMesh) out.push({ name: o.name, asset: o.userData.asset, count: o.count }); });
     return out;
+  },
+  // What the shown model draws, walked now: triangles, line segments (a turtle's
+  // `segments "lines"`) and the vertices of both, each instance counted.
+  drawnCounts() {
+    const counts = { triangles: 0, segments: 0, vertices: 0 };
+    if (model) model.traverse((o) => {
+      if (!o.geometry || !(o.isMesh || o.isLineSegments)) return;
+      const copies = o.isInstancedMesh ? o.count : 1;
+      const g = o.geometry, corners = g.index ? g.index.count : g.attributes.position.count;
+      counts.vertices += copies * g.attributes.position.count;
+      if (o.isLineSegments) counts.segments += copies * corners / 2;
+      else counts.triangles += copies * corners / 3;
+    });
+    return counts;
   },
   async glbDigest() {
     const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', lastGlb));
@@ -422,6 +439,8 @@ ws.onmessage = (event) => {
     state.timing.announced = performance.now();
   } else if (m.type === 'rejected') {  // a message of ours the server refused: nothing changed
     state.rejected = (state.rejected || 0) + 1;
+    state.lastRejected = m.reason;
+    steps.refused();
     fieldDesign.rejected();
     setStatus('refused: ' + m.reason, 'error');
   } else if (m.type === 'error') {

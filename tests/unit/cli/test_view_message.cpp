@@ -36,6 +36,26 @@ TEST_CASE("view messages: set and pick as the page sends them") {
   CHECK(r.instance == 12);
 }
 
+TEST_CASE("view messages: a derivation step, a whole number up to the largest derive parallel N (#48)") {
+  PageRequest r;
+  std::string reason;
+  REQUIRE(parsePageRequest(R"({"type":"set","step":0})", r, reason));
+  CHECK(r.hasStep);
+  CHECK(r.step == 0);
+  CHECK_FALSE(r.hasAttrs);
+  CHECK_FALSE(r.hasSeed);
+  REQUIRE(parsePageRequest(R"({"type":"set","attrs":{"n":"2"},"step":2147483647})", r, reason));
+  CHECK(r.step == 2147483647u);
+  REQUIRE(parsePageRequest(R"({"type":"set","seed":4})", r, reason));
+  CHECK_FALSE(r.hasStep);  // the page's step stays
+  const std::string whole = "set: \"step\" must be a whole number from 0 to 2147483647";
+  CHECK(refused(R"({"type":"set","step":-1})") == whole);
+  CHECK(refused(R"({"type":"set","step":1.5})") == whole);
+  CHECK(refused(R"({"type":"set","step":"3"})") == whole);
+  CHECK(refused(R"({"type":"set","step":2147483648})") == whole);
+  CHECK(refused(R"({"type":"set","step":null})") == whole);
+}
+
 TEST_CASE("view messages: garbage, wrong kinds and unknown fields are refused with a reason") {
   CHECK(refused("") == "not a JSON object");
   CHECK(refused("\x01\x02garbage") == "not a JSON object");
