@@ -204,6 +204,49 @@ TEST_CASE("insertAlongUV: a unit cube bent over a crease whose uvs run along the
   }
 }
 
+TEST_CASE("insertAlongUV: a unit cube bent around an annulus sector in three quads", "[cga][insert_along_uv]") {
+  // The ring between radii 4 and 6 from 0 to 90 degrees on the ground, as three quads of 30
+  // degrees; u counts the quads (0..3) around, v runs 0 inside to 1 outside. A quad is a
+  // trapezoid and its uvs a unit square, not an affine image of it: it is cut into two
+  // triangles. Each copy of the cube fills one quad, 0.5 high: quad area
+  // 1/2 sin 30 (6^2 - 4^2) = 5, volume 3 x 5 x 0.5 = 7.5. Surface: tops and bottoms 2 x 15,
+  // the ends of each copy (radial, 2 x 0.5) 6 x 1, the inner and outer walls along the
+  // chords 3 x 0.5 (2 x 4 sin 15 + 2 x 6 sin 15): 36 + 30 sin 15 m2.
+  const double pi = std::acos(-1.0);
+  auto ring = [&](double r, int k) { return Vec3(r * std::cos(k * pi / 6), 0, r * std::sin(k * pi / 6)); };
+  std::vector<AlongUvFace> faces;
+  for (int k = 0; k < 3; ++k) {
+    AlongUvFace f;  // counter-clockwise seen from above (+y): inner k, inner k + 1, outer k + 1, outer k
+    f.corners = {ring(4, k), ring(4, k + 1), ring(6, k + 1), ring(6, k)};
+    f.uvs = {{double(k), 0}, {double(k + 1), 0}, {double(k + 1), 1}, {double(k), 1}};
+    REQUIRE(newellNormal(f.corners).y() > 0);
+    faces.push_back(f);
+  }
+  AlongUvOptions options;
+  options.height = 0.5;
+  std::vector<std::vector<Vec3>> out;
+  std::string error;
+  REQUIRE(insertAlongUvFaces(faces, alongUvCube(), kUnitSourceBox, options, out, error));
+  CHECK(std::abs(alongUvVolume(out) - 7.5) <= kAlongUvTol);
+  CHECK(std::abs(alongUvArea(out) - (36.0 + 30.0 * std::sin(pi / 12))) <= kAlongUvTol);
+  std::vector<Vec3> corners;
+  for (int k = 0; k <= 3; ++k)
+    for (double r : {4.0, 6.0})
+      for (double y : {0.0, 0.5}) corners.push_back(ring(r, k) + Vec3(0, y, 0));
+  // Every corner lies on a box: at a quad's corner, or on a quad's diagonal (the cut).
+  alongUvCornersAre(
+      out,
+      [&](const Vec3& p) {
+        if (!alongUvIn(p.y(), {0, 0.5}) && !std::any_of(corners.begin(), corners.end(), [&](const Vec3& c) {
+              return std::abs(p.x() - c.x()) <= kAlongUvTol && std::abs(p.z() - c.z()) <= kAlongUvTol;
+            }))
+          return false;
+        const double r = std::hypot(p.x(), p.z());
+        return alongUvWithin(r, 4 * std::cos(pi / 12), 6) && alongUvWithin(p.x(), 0, 6) && alongUvWithin(p.z(), 0, 6);
+      },
+      corners);
+}
+
 TEST_CASE("insertAlongUV: uvs past the asset's v range and part tiles cut it", "[cga][insert_along_uv]") {
   // x 0..3.5 with u = 0.5 + x / 2 (0.5..2.25), z 0..1.5 with v = 0.25 + z / 2 (0.25..1):
   // the asset fills all of it (v 0..1 covers v 0.25..1; the copies at u 0, 1 and 2 are cut
