@@ -7,6 +7,7 @@
 #include "frontend/builtins.h"
 #include "frontend/did_you_mean.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -347,10 +348,11 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
       if (report) res_.exprTypes[e.args[0].get()] = ValueType::Str;
       return record(e, ValueType::Num, report);
     }
-    if ((e.text == "du" || e.text == "dv") && e.hasCall && e.args.size() == 2) {  // CGA's geometry.du(0, uvSpace)
+    if ((e.text == "du" || e.text == "dv") && e.hasCall && e.args.size() == 2) {  // CGA's geometry.du(k, uvSpace)
       ConstValue set, space;
-      if (!evalConst(*e.args[0], set) || set.type != ValueType::Num || set.num != 0)
-        return fail("Geometry." + e.text + " reads uv set 0 only (the one fgsg's projections make): Geometry." +
+      if (!evalConst(*e.args[0], set) || set.type != ValueType::Num || !(set.num >= 0 && set.num <= 9) ||
+          set.num != std::floor(set.num))
+        return fail("Geometry." + e.text + " reads a uv set, a constant whole number from 0 to 9: Geometry." +
                     e.text + "(0, \"uvSpace\")");
       if (!evalConst(*e.args[1], space) || space.type != ValueType::Str || space.str != "uvSpace")
         return fail("Geometry." + e.text + " measures in \"uvSpace\" (\"unitSpace\" is not supported yet): Geometry." +

@@ -76,8 +76,8 @@ enum class Query : uint8_t {
   // CGA's geometry.angle(maxSlope | azimuth | zenith): extra = the selector
   // (rt::cga::GeometryAngleKind: 0, 1, 2), in degrees.
   GeometryAngle,
-  // CGA's geometry.du(0, uvSpace) and dv: the spread of the texture coordinates of the
-  // scope's projection over the geometry (uv set 0 only: the compiler checks it).
+  // CGA's geometry.du(k, uvSpace) and dv: the spread of the texture coordinates of the
+  // scope's projection of uv set k = extra (0..9) over the geometry.
   GeometryDu, GeometryDv,
   // CGA's contextCompare(target, label, comparison): the shape's rank among the labelled
   // shapes; extra = the target (ContextTarget) | the comparison (ContextComparison) << 2,

@@ -608,6 +608,14 @@ class Lowerer {
     return {};
   }
 
+  // A constant number sema checked (Geometry.du's uv set): written, or a constant's value.
+  double constNumber(const frontend::Expr& e) const {
+    if (e.kind == ExprKind::Number) return e.number;
+    auto it = sema_.names.find(&e);
+    if (it != sema_.names.end()) return it->second.value.num;
+    return 0;
+  }
+
   Size size(const frontend::Expr& e) {
     Size s;
     if (e.kind == ExprKind::RelSize) {
@@ -756,9 +764,11 @@ class Lowerer {
         out.extra = selector == "azimuth" ? 1u : selector == "zenith" ? 2u : 0u;
         return out;
       }
-      // Geometry.du(0, "uvSpace"): the only uv set and space (sema checked them).
-      if (static_cast<Query>(out.index) == Query::GeometryDu || static_cast<Query>(out.index) == Query::GeometryDv)
+      // Geometry.du(k, "uvSpace"): the uv set k (a constant 0..9, sema checked it) in extra.
+      if (static_cast<Query>(out.index) == Query::GeometryDu || static_cast<Query>(out.index) == Query::GeometryDv) {
+        out.extra = static_cast<uint32_t>(constNumber(*e.args[0]));
         return out;
+      }
       if (isContextQuery(static_cast<Query>(out.index))) {
         // The target is a constant word (sema checked it); the label any string, "" for none.
         const std::string target = e.args.empty() ? "all" : constString(*e.args[0]);

@@ -586,6 +586,10 @@ class Printer {
           s += e.extra <= 2 ? kAngles[e.extra] : "(angle?)";
           return;
         }
+        if ((q == Query::GeometryDu || q == Query::GeometryDv) && e.extra) {  // Geometry.du(3, "uvSpace")
+          s += "(" + std::to_string(e.extra) + ", \"uvSpace\")";
+          return;
+        }
         if (isContextQuery(q)) {  // Shape.overlaps("intra", label)
           static const char* const kTargets[] = {"\"intra\"", "\"inter\"", "\"all\""};
           s += "(";

@@ -823,6 +823,8 @@ class Verifier {
       problem("context target " + std::to_string(e.extra) + " out of range");
     if (q == Query::GeometryAngle && e.extra > 2)
       problem("geometry angle selector " + std::to_string(e.extra) + " out of range");
+    if ((q == Query::GeometryDu || q == Query::GeometryDv) && e.extra >= kUvSets)
+      problem("geometry du/dv uv set " + std::to_string(e.extra) + " out of range");
   }
 
   const Module& m_;

@@ -315,6 +315,12 @@ Counts placeInstance(const Mesh& asset, const AssetTraits* traits, const Instanc
     if (texcoord)
       for (int d = 0; d < 2; ++d) texcoord[2 * v + d] = assetTexcoord ? assetTexcoord[2 * v + d] : 0.0f;
   });
+  // CGA's uv sets 1..9 likewise, (0, 0) where the instance's mesh lacks the set.
+  for (MeshUvSet& set : out.uvSets) {
+    float* to = set.coords.data() + 2 * vertex0;
+    const MeshArray<float>* from = asset.uvSet(set.set);
+    for (size_t k = 0; k < 2 * nv; ++k) to[k] = from ? (*from)[k] : 0.0f;
+  }
   const Counts c = survivors(asset, traits, s);
   // An asset vertex's number in the instance's output (kUnused: dropped). Renumbering
   // only ever moves a vertex back, so moving them in order overwrites none still to move.
@@ -328,6 +334,10 @@ Counts placeInstance(const Mesh& asset, const AssetTraits* traits, const Instanc
       std::copy_n(normal + 3 * v, 3, normal + 3 * o);
       std::copy_n(color + 3 * v, 3, color + 3 * o);
       if (texcoord) std::copy_n(texcoord + 2 * v, 2, texcoord + 2 * o);
+      for (MeshUvSet& set : out.uvSets) {
+        float* t = set.coords.data() + 2 * vertex0;
+        std::copy_n(t + 2 * v, 2, t + 2 * o);
+      }
     }
   const uint32_t base = uint32_t(vertex0);
   uint32_t* index = out.indices.data() + 3 * slots.firstTriangle(slot);
@@ -367,6 +377,7 @@ void closeUp(const Slots& slots, const std::vector<Counts>& counts, const std::v
     move(out.normals, 3);
     move(out.colors, 3);
     if (!out.texcoords.empty()) move(out.texcoords, 2);
+    for (MeshUvSet& set : out.uvSets) move(set.coords, 2);
     const uint32_t back = uint32_t(fromVertex - firstVertex[i]);
     for (size_t k = 0; k < 3 * size_t(c.triangles); ++k)
       out.indices[3 * firstTriangle[i] + k] = out.indices[3 * fromTriangle + k] - back;
@@ -512,6 +523,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
   out.lines.clear();
   out.textures.clear();
   out.textureRuns.clear();
+  out.uvSets.clear();
   std::vector<Counts> counts;
   std::vector<size_t> firstVertex, firstTriangle, firstLine;
   // Room for every asset vertex and triangle (all but degenerate ones are kept), so the
@@ -520,6 +532,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
   // triangle draws an image (a Texture, or a mesh's own).
   size_t maxVertices = 0, maxTriangles = 0, maxLines = 0;
   bool withTexcoords = false, withTextures = false;
+  uint32_t uvSetsDrawn = 0;  // bit k: some drawn mesh has CGA's uv set k (1..9)
   for (size_t k = 0; k < n; ++k) {
     const Instance& inst = which.instance(list, k);
     withTextures |= inst.texture != UINT32_MAX;
@@ -528,6 +541,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
     maxVertices += m->vertexCount(), maxTriangles += m->triangleCount(), maxLines += m->lineCount();
     withTexcoords |= m->hasTexcoords();
     withTextures |= m->textured();
+    for (const MeshUvSet& set : m->uvSets) uvSetsDrawn |= 1u << set.set;
   }
   out.positions.reserve(3 * maxVertices);
   out.normals.reserve(3 * maxVertices);
@@ -535,6 +549,11 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
   out.indices.reserve(3 * maxTriangles);
   out.lines.reserve(2 * maxLines);
   if (withTexcoords) out.texcoords.reserve(2 * maxVertices);
+  for (uint32_t set = 1; set < 32; ++set)
+    if (uvSetsDrawn & (1u << set)) {
+      out.uvSets.push_back({set, {}});
+      out.uvSets.back().coords.reserve(2 * maxVertices);
+    }
   OutputImages images;
   if (withTextures) images = outputImages(list, which, library, meshOf), out.textures = images.paths;
   // The traits of the assets drawn (not of every asset the list names: a scene's group
@@ -572,6 +591,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
     out.normals.resize(3 * slots.firstVertex(k));
     out.colors.resize(3 * slots.firstVertex(k));
     if (withTexcoords) out.texcoords.resize(2 * slots.firstVertex(k));
+    for (MeshUvSet& set : out.uvSets) set.coords.resize(2 * slots.firstVertex(k));
     out.indices.resize(3 * slots.firstTriangle(k));
     out.lines.resize(2 * slots.firstLine(k));
     counts.assign(k, Counts{});
@@ -608,6 +628,7 @@ void assemble(const InstanceList& list, const Selection& which, const AssetLibra
     out.indices.resize(3 * firstTriangle[k]);
     out.lines.resize(2 * firstLine[k]);
     if (withTexcoords) out.texcoords.resize(2 * firstVertex[k]);
+    for (MeshUvSet& set : out.uvSets) set.coords.resize(2 * firstVertex[k]);
     if (withTextures) addTextureRuns(list, which, library, meshOf, images, begin, counts, firstTriangle, out);
     begin = end;
   }

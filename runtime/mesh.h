@@ -22,6 +22,14 @@ struct TextureRun {
   int32_t texture = -1;
 };
 
+// One of CGA's uv sets 1..9 (CityEngine's texture layers: 1 bumpmap ... 5 normalmap ...)
+// that a leaf's geometry carries besides set 0 (Mesh::texcoords): u v per vertex (v up).
+// A set the leaf never had projected is absent, not zeros.
+struct MeshUvSet {
+  uint32_t set = 1;
+  MeshArray<float> coords;
+};
+
 struct Mesh {
   // MeshArray (runtime/mesh_array.h): resize leaves new elements uninitialised.
   MeshArray<float> positions;    // x y z per vertex
@@ -35,6 +43,9 @@ struct Mesh {
   // triangle is textured. Assembled meshes list only images some run uses.
   std::vector<std::string> textures;
   std::vector<TextureRun> textureRuns;
+  // CGA's uv sets 1..9 the mesh has, ascending by set; empty for all but such leaves (and
+  // the meshes assembled from them). Only the glTF scene writer writes them (TEXCOORD_n).
+  std::vector<MeshUvSet> uvSets;
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return indices.size() / 3; }
@@ -42,6 +53,12 @@ struct Mesh {
   bool empty() const { return indices.empty() && lines.empty(); }
   bool hasTexcoords() const { return !texcoords.empty() && texcoords.size() == 2 * vertexCount(); }
   bool textured() const { return !textureRuns.empty(); }
+  // Set `set`'s coordinates (1..9), or null when the mesh does not have that set.
+  const MeshArray<float>* uvSet(uint32_t set) const {
+    for (const MeshUvSet& s : uvSets)
+      if (s.set == set) return s.coords.size() == 2 * vertexCount() ? &s.coords : nullptr;
+    return nullptr;
+  }
   // Triangles from `firstTriangle` on draw `texture`: a new run, unless the last one draws it.
   void addTextureRun(size_t firstTriangle, int32_t texture) {
     if (textureRuns.empty() || textureRuns.back().texture != texture)

@@ -10,6 +10,7 @@
 #include "runtime/insert_fit.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -178,16 +179,29 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
   // (A projection without an image yet, from setupProjection, or after deleteUV draws nothing.)
   const rt::cga::UvProjection* projection = textures_.projection(st.scope.projection);
   if (projection && !projection->draws()) projection = nullptr;
+  // Uv sets 1..9 with coordinates (projected, not deleted) go out as they are, image or not.
+  std::array<const rt::cga::UvProjection*, ir::kUvSets> otherSets{};
+  bool hasOtherSets = false;
+  for (uint32_t set = 1; set < ir::kUvSets; ++set) {
+    const rt::cga::UvProjection* p = textures_.projection(st.scope.projection, set);
+    if (p && p->coordinates) otherSets[set] = p, hasOtherSets = true;
+  }
   // The commonest untextured leaves share a built-in mesh over their scope: a whole box is
   // the cube, a rectangle (a facade's split piece) the quad. Other shapes build their own.
-  if (!projection && st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
+  const bool plain = !projection && !hasOtherSets;
+  if (plain && st.geom.kind == rt::GeomKind::Box && st.scope.S.minCoeff() > 0)
     return placeInstance(leafCubeAsset_, st.scope, symbol, params, slots, loc);
-  if (!projection && st.geom.kind == rt::GeomKind::Polygon &&
+  if (plain && st.geom.kind == rt::GeomKind::Polygon &&
       rt::cga::isUnitSquare(arena_.polygon(st.geom), st.geom.count))
     return placeInstance(leafQuadAsset_, st.scope, symbol, params, slots, loc);
   rt::Mesh mesh = rt::cga::ownGeometryMesh(st.scope, st.geom, arena_);
   if (mesh.indices.empty()) return;  // an edge, a point
   if (projection) rt::cga::projectTexcoords(mesh, st.scope, *projection);
+  for (uint32_t set = 1; set < ir::kUvSets; ++set)
+    if (otherSets[set]) {
+      mesh.uvSets.push_back({set, {}});
+      rt::cga::projectTexcoordsInto(mesh, st.scope, *otherSets[set], mesh.uvSets.back().coords);
+    }
   // The mesh goes first: a collision world reads it as it records the instance.
   out_.geometries.push_back(std::move(mesh));
   const size_t before = out_.instances.size();

@@ -48,8 +48,8 @@ double Derivation::geometry(ir::Query q, const rt::Scope& scope, const rt::GeomR
   }
   if (q == ir::Query::GeometryDu || q == ir::Query::GeometryDv) {
     // Without a projection (setupProjection, texture), or after deleteUV, the geometry has
-    // no texture coordinates.
-    const rt::cga::UvProjection* projection = textures_.projection(scope.projection);
+    // no texture coordinates in that uv set (arg: the set, the query's extra).
+    const rt::cga::UvProjection* projection = textures_.projection(scope.projection, uint32_t(arg));
     if (!projection || !projection->coordinates) return 0.0;
     const std::array<double, 2> spread = rt::cga::geometryUvSpread(scope, geom, arena_, *projection);
     return spread[q == ir::Query::GeometryDu ? 0 : 1];

@@ -169,8 +169,9 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
   if (ir::isGeometryQuery(q))
     return f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
                             q == Query::GeometryIsPlanar ? num(e.args[0], f)
-                            : q == Query::GeometryAngle  ? double(e.extra)
-                                                         : 0.0,
+                            : q == Query::GeometryAngle || q == Query::GeometryDu || q == Query::GeometryDv
+                                ? double(e.extra)
+                                : 0.0,
                             e.loc);
   if (ir::isContextQuery(q))
     return f.host->context(q, e.extra, string(num(e.args[0], f)), *f.scope, f.geom ? *f.geom : rt::GeomRef{}, e.loc);

@@ -22,8 +22,9 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
       if (q == ir::Query::GeometryIsPlanar && nargs < 1) return FGSG_E_INTERNAL;
       *out = f.host->geometry(q, *f.scope, f.geom ? *f.geom : rt::GeomRef{},
                               q == ir::Query::GeometryIsPlanar ? args[0]
-                              : q == ir::Query::GeometryAngle  ? double(extra)
-                                                               : 0.0,
+                              : q == ir::Query::GeometryAngle || q == ir::Query::GeometryDu || q == ir::Query::GeometryDv
+                                  ? double(extra)
+                                  : 0.0,
                               at);
       return FGSG_OK;
     }

@@ -383,7 +383,7 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
   if (fn.rfind("geometry.", 0) == 0) {
     // geometry.area() ...: fgsg's Geometry.area queries; the surface selectors
     // (geometry.area(top)) are not here yet. geometry.angle(maxSlope): Geometry.angle("maxSlope");
-    // geometry.du(0, uvSpace): Geometry.du(0, "uvSpace") (other uv sets and unitSpace not yet).
+    // geometry.du(k, uvSpace): Geometry.du(k, "uvSpace"), k a uv set 0..9 (unitSpace not yet).
     const std::string member = fn.substr(9);
     if (std::find(std::begin(kCityEngineGeometryMembers), std::end(kCityEngineGeometryMembers), member) ==
         std::end(kCityEngineGeometryMembers)) {
@@ -417,8 +417,11 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
       args.push_back(makeExpr(ExprKind::String, rangeOf(argCtx[0])));
       args.back()->text = word;
     } else if (spread) {
-      if (argCtx[0]->getText() != "0") {
-        notSupported(rangeOf(argCtx[0]), "uv set " + argCtx[0]->getText() + " (fgsg's projections make uv set 0)");
+      // The uv set is written as a number, as the uv operations' (cga_operations.cpp).
+      const std::string setText = argCtx[0]->getText();
+      if (setText.size() != 1 || setText[0] < '0' || setText[0] > '9') {
+        error("E028", rangeOf(argCtx[0]),
+              "a uv set is a whole number from 0 to 9 (CityEngine's texture layers), not '" + setText + "'");
         return nullptr;
       }
       const std::string space = selectorWord(argCtx[1]);
@@ -432,7 +435,7 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
         return nullptr;
       }
       args.push_back(makeExpr(ExprKind::Number, rangeOf(argCtx[0])));
-      args.back()->number = 0;
+      args.back()->number = setText[0] - '0';
       args.push_back(makeExpr(ExprKind::String, rangeOf(argCtx[1])));
       args.back()->text = space;
     } else {

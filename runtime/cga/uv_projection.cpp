@@ -44,8 +44,13 @@ std::array<double, 2> projectPoint(const UvProjection& projection, const Vec3& w
 }
 
 void projectTexcoords(Mesh& mesh, const Scope& scope, const UvProjection& projection) {
+  projectTexcoordsInto(mesh, scope, projection, mesh.texcoords);
+}
+
+void projectTexcoordsInto(const Mesh& mesh, const Scope& scope, const UvProjection& projection,
+                          MeshArray<float>& into) {
   const size_t n = mesh.vertexCount();
-  mesh.texcoords.resize(2 * n);
+  into.resize(2 * n);
   const Vec3& S = scope.S;
   // A unit-box normal maps to the world by the cofactor of axes * diag(S) (defined for a
   // flat scope too): axes * (Sy Sz nx, Sx Sz ny, Sx Sy nz), up to a positive factor.
@@ -55,8 +60,8 @@ void projectTexcoords(Mesh& mesh, const Scope& scope, const UvProjection& projec
     const Vec3 n0(mesh.normals[3 * v], mesh.normals[3 * v + 1], mesh.normals[3 * v + 2]);
     const Vec3 world = scope.P + scope.axes * S.cwiseProduct(q);
     const std::array<double, 2> uv = projectPoint(projection, world, scope.axes * normalScale.cwiseProduct(n0));
-    mesh.texcoords[2 * v] = float(uv[0]);
-    mesh.texcoords[2 * v + 1] = float(uv[1]);
+    into[2 * v] = float(uv[0]);
+    into[2 * v + 1] = float(uv[1]);
   }
 }
 

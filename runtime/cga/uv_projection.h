@@ -49,6 +49,9 @@ UvProjection projectionAt(const Scope& scope, double tileWidth, double tileHeigh
 // is projected onto the frame plane its face looks along most, turned so the image reads
 // the right way round from the face's front.
 void projectTexcoords(Mesh& mesh, const Scope& scope, const UvProjection& projection);
+// The same coordinates into `into` (another uv set than set 0's Mesh::texcoords).
+void projectTexcoordsInto(const Mesh& mesh, const Scope& scope, const UvProjection& projection,
+                          MeshArray<float>& into);
 
 // The (u, v) of the world point `world` on a face whose normal (world space) is `facing`
 // under `projection`, its uv transform applied: what projectTexcoords gives a vertex.

@@ -34,6 +34,8 @@ using nlohmann::json;
 using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
 constexpr int kUnsignedShort = 5123;
+// CityEngine's texture layers: uv set 5 is the normal map's.
+constexpr uint32_t kNormalMapUvSet = 5;
 // A triangle's vertex normals closer to its face's normal than this (the cosine of their
 // angle) are flat: glTF readers compute the same normals where a primitive has none.
 constexpr double kFlatCosine = 1 - 1e-5;
@@ -97,6 +99,7 @@ std::vector<float> normalMapTangents(const float* positions, const float* normal
 // written, bit for bit) made one: the pieces of a facade meet at shared corners.
 struct WeldedVertices {
   std::vector<float> positions, normals, texcoords, colors;
+  std::vector<std::vector<float>> uvSets;  // per Mesh::uvSets entry (CGA's sets 1..9), v down
   std::vector<uint32_t> of;  // per vertex of the mesh, its welded vertex
   size_t count = 0;
 };
@@ -156,7 +159,8 @@ class Writer {
   int bakedMesh(const GroupNode& g, const std::string& name, bool& wrote);
   int groupNode(const GroupNode& g, json node);
   int startNode(const StartNode& s);
-  json materialJson(const Material& m);
+  json materialJson(const Material& m, uint32_t normalSet);
+  void uvSetAttributes(const Mesh& m, const WeldedVertices& w, json& attributes);
   bool verticesFinite(std::string& error) const;
 
   const Scene& scene_;
@@ -167,14 +171,18 @@ class Writer {
   std::map<uint32_t, int> sharedIndices_;                      // ... and its indices' accessor
   std::map<uint32_t, int> sharedTangents_;                     // ... and its tangents' (normal maps)
   std::map<std::pair<uint32_t, uint32_t>, int> sharedMeshes_;  // (shared mesh, material) -> glTF mesh
-  std::map<uint32_t, int> materialOut_;  // Scene::materials index -> the file's (only those used)
+  // (Scene::materials index, the normal map's uv set) -> the file's material (only those used)
+  std::map<std::pair<uint32_t, uint32_t>, int> materialOut_;
   json materials_ = json::array();
   std::vector<uint32_t> imagesOut_;       // Scene::images of the file's textures, in order (only those used)
   bool instancing_ = false;
 
-  int material(uint32_t k) {
-    const auto [it, added] = materialOut_.emplace(k, int(materials_.size()));
-    if (added) materials_.push_back(materialJson(scene_.materials[k]));
+  // `normalSet`: the uv set (TEXCOORD_n) the primitive samples a normal map with.
+  int material(uint32_t k, uint32_t normalSet = 0) {
+    const Material& m = scene_.materials[k];
+    if (m.image < 0 || m.normalImage < 0) normalSet = 0;
+    const auto [it, added] = materialOut_.emplace(std::make_pair(k, normalSet), int(materials_.size()));
+    if (added) materials_.push_back(materialJson(m, normalSet));
     return it->second;
   }
 };
@@ -213,6 +221,13 @@ std::vector<float> Writer::flippedTexcoords(const Mesh& m, std::array<float, 2> 
   return t;
 }
 
+// A uv set 1..9 as written: v flipped, no tiles taken off (each set's own frame).
+std::vector<float> flippedUvSet(const MeshArray<float>& coords) {
+  std::vector<float> t(coords.size());
+  for (size_t k = 0; k < t.size(); ++k) t[k] = k % 2 ? 1.0f - coords[k] : coords[k];
+  return t;
+}
+
 int Writer::normals(const Mesh& m) {
   const std::vector<float> n = unitNormals(m);
   return accessor(view(n.data(), n.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC3");
@@ -232,17 +247,22 @@ WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) co
     colors.assign(m.colors.begin(), m.colors.end());
     for (float& x : colors) x = io::clamp01(x);
   }
+  std::vector<std::vector<float>> uvSets;
+  for (const MeshUvSet& set : m.uvSets) uvSets.push_back(flippedUvSet(set.coords));
   // Each vertex's attributes side by side, compared as bytes.
-  const size_t stride = 3 + (withNormals ? 3 : 0) + (texcoords.empty() ? 0 : 2) + (withColors ? 3 : 0);
+  const size_t stride =
+      3 + (withNormals ? 3 : 0) + (texcoords.empty() ? 0 : 2) + (withColors ? 3 : 0) + 2 * uvSets.size();
   std::vector<float> records(stride * n);
   for (size_t v = 0; v < n; ++v) {
     float* r = &records[stride * v];
     r = std::copy_n(&m.positions[3 * v], 3, r);
     if (withNormals) r = std::copy_n(&normals[3 * v], 3, r);
     if (!texcoords.empty()) r = std::copy_n(&texcoords[2 * v], 2, r);
-    if (withColors) std::copy_n(&colors[3 * v], 3, r);
+    if (withColors) r = std::copy_n(&colors[3 * v], 3, r);
+    for (const std::vector<float>& set : uvSets) r = std::copy_n(&set[2 * v], 2, r);
   }
   WeldedVertices w;
+  w.uvSets.resize(uvSets.size());
   w.of.resize(n);
   std::unordered_map<std::string_view, uint32_t> first;
   first.reserve(n);
@@ -256,6 +276,7 @@ WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) co
     if (withNormals) w.normals.insert(w.normals.end(), &normals[3 * v], &normals[3 * v] + 3);
     if (!texcoords.empty()) w.texcoords.insert(w.texcoords.end(), &texcoords[2 * v], &texcoords[2 * v] + 2);
     if (withColors) w.colors.insert(w.colors.end(), &colors[3 * v], &colors[3 * v] + 3);
+    for (size_t k = 0; k < uvSets.size(); ++k) w.uvSets[k].insert(w.uvSets[k].end(), &uvSets[k][2 * v], &uvSets[k][2 * v] + 2);
   }
   return w;
 }
@@ -364,9 +385,11 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     const Material& untextured = scene_.materials[part.materials.back()];
     const bool colored = untextured.vertexColors && io::hasColors(m);
     // A normal map needs normals and tangents (glTF ignores tangents without normals).
+    // CityEngine samples the normal map with uv set 5, or set 0 where the shape has no set 5.
+    const uint32_t normalSet = m.uvSet(kNormalMapUvSet) ? kNormalMapUvSet : 0;
     bool normalMapped = false;
     for (uint32_t k : part.materials) normalMapped |= scene_.materials[k].image >= 0 && scene_.materials[k].normalImage >= 0;
-    normalMapped = normalMapped && m.hasTexcoords() && io::hasNormals(m);
+    normalMapped = normalMapped && (normalSet || m.hasTexcoords()) && io::hasNormals(m);
     const WeldedVertices w = weld(m, io::hasNormals(m) && (normalMapped || !flatShaded(m)), colored);
     json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
     if (!w.normals.empty())
@@ -374,6 +397,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     if (!w.texcoords.empty())
       attributes["TEXCOORD_0"] =
           accessor(view(w.texcoords.data(), w.texcoords.size(), kArrayBuffer), w.count, kFloat, "VEC2");
+    uvSetAttributes(m, w, attributes);
     if (colored)
       attributes["COLOR_0"] = accessor(view(w.colors.data(), w.colors.size(), kArrayBuffer), w.count, kFloat, "VEC3");
     // The triangles grouped by image, as runs say; untextured ones (-1) last.
@@ -398,8 +422,10 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     for (int32_t t = 0; t < int32_t(m.textures.size()); ++t) add(t);
     add(-1);
     if (normalMapped && !indices.empty()) {
-      const std::vector<float> tangents =
-          normalMapTangents(w.positions.data(), w.normals.data(), w.texcoords.data(), w.count, indices);
+      const float* normalUv = w.texcoords.data();
+      for (size_t k = 0; k < m.uvSets.size(); ++k)
+        if (m.uvSets[k].set == normalSet) normalUv = w.uvSets[k].data();
+      const std::vector<float> tangents = normalMapTangents(w.positions.data(), w.normals.data(), normalUv, w.count, indices);
       attributes["TANGENT"] = accessor(view(tangents.data(), tangents.size(), kArrayBuffer), w.count, kFloat, "VEC4");
     }
     if (!indices.empty()) {
@@ -409,7 +435,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       for (const auto& [material, count] : groups) {
         primitives.push_back({{"attributes", attributes},
                               {"indices", accessor(v, count, type, "SCALAR", size * first)},
-                              {"material", this->material(material)},
+                              {"material", this->material(material, normalSet)},
                               {"mode", kTriangles}});
         first += count;
       }
@@ -473,7 +499,7 @@ int Writer::startNode(const StartNode& s) {
   return int(nodes_.size() - 1);
 }
 
-json Writer::materialJson(const Material& m) {
+json Writer::materialJson(const Material& m, uint32_t normalSet) {
   // The defaults (roughness 0.8, metallic 0) as the numbers every material had before.
   // Others as their shortest decimal (0.3, not the float's 0.30000001192092896).
   const auto factor = [](float x) {
@@ -494,12 +520,37 @@ json Writer::materialJson(const Material& m) {
     return json{{"index", std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(image)) - imagesOut_.begin()}};
   };
   if (m.image >= 0) pbr["baseColorTexture"] = texture(m.image);
-  json out = {{"doubleSided", true}, {"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
-  // CGA's material.opacity: blended where below 1. The normal map on the base colour's
-  // coordinates (TEXCOORD_0): only where there is a base colour image.
+  // The same material with its normal map on another uv set is another one, named apart.
+  const std::string name = normalSet ? m.name + "_uv" + std::to_string(normalSet) : m.name;
+  json out = {{"doubleSided", true}, {"name", name}, {"pbrMetallicRoughness", std::move(pbr)}};
+  // CGA's material.opacity: blended where below 1. The normal map only where there is a
+  // base colour image, on uv set 5's coordinates (TEXCOORD_5) where the primitive has them,
+  // else on the base colour's (TEXCOORD_0).
   if (alpha < 1) out["alphaMode"] = "BLEND";
-  if (m.image >= 0 && m.normalImage >= 0) out["normalTexture"] = texture(m.normalImage);
+  if (m.image >= 0 && m.normalImage >= 0) {
+    out["normalTexture"] = texture(m.normalImage);
+    if (normalSet) out["normalTexture"]["texCoord"] = normalSet;
+  }
   return out;
+}
+
+// CGA's uv sets 1..9 as TEXCOORD_1..9 (TEXCOORD_n is always set n). glTF numbers a
+// primitive's TEXCOORD_n from 0 without gaps, so the sets below the highest one the part
+// has that it lacks (set 0 included) are written as zeros, one accessor shared by them.
+void Writer::uvSetAttributes(const Mesh& m, const WeldedVertices& w, json& attributes) {
+  if (m.uvSets.empty()) return;
+  int zeros = -1;
+  const auto zeroAccessor = [&] {
+    if (zeros < 0) zeros = accessor(view(static_cast<const float*>(nullptr), 2 * w.count, kArrayBuffer), w.count, kFloat, "VEC2");
+    return zeros;
+  };
+  if (w.texcoords.empty()) attributes["TEXCOORD_0"] = zeroAccessor();
+  uint32_t next = 1;
+  for (size_t k = 0; k < m.uvSets.size(); ++k) {
+    for (; next < m.uvSets[k].set; ++next) attributes["TEXCOORD_" + std::to_string(next)] = zeroAccessor();
+    attributes["TEXCOORD_" + std::to_string(next++)] =
+        accessor(view(w.uvSets[k].data(), w.uvSets[k].size(), kArrayBuffer), w.count, kFloat, "VEC2");
+  }
 }
 
 bool Writer::verticesFinite(std::string& error) const {

@@ -328,7 +328,7 @@ struct Builder {
   };
 
   // Which instances can share a mesh, and which mesh: rigidly placed, not bent, drawing
-  // neither line segments nor images of their own.
+  // neither line segments nor images of their own, without uv sets 1..9.
   void findShared() {
     const size_t n = list.instances.size();
     sharedOf.assign(n, kNone);
@@ -350,6 +350,8 @@ struct Builder {
       const Instance& inst = list.instances[i];
       const Mesh* m = drawnMesh(inst, in);
       if (!m || inst.curve != kNone || m->textured() || !m->lines.empty() || m->indices.empty()) continue;
+      // A leaf with CGA's uv sets 1..9 is baked: the shared meshes' keys know set 0 only.
+      if (!m->uvSets.empty()) continue;
       if (inst.texture != kNone && (!m->hasTexcoords() || inst.texture >= list.textures.size())) continue;
       const int library = inst.geometry == kNone ? (*in.meshOf)[inst.asset] : -1;
       if (library >= 0 && size_t(library) >= ofAsset.size())

@@ -3,7 +3,7 @@
 
 run_materials.py FGSG ROOT: runs materials.cga / materials.fgsg on lots/rect20x10,
 uv_operations.cga / uv_operations.fgsg, uv_delete.cga / uv_delete.fgsg and uv_sets.cga /
-uv_sets.fgsg on lots/street40x12 and uv_world.cga /
+uv_sets.fgsg, uv_layers.cga / uv_layers.fgsg on lots/street40x12 and uv_world.cga /
 uv_world.fgsg on lots/square10 (tests/cga/corpus/lots), each
 with --engine=interp and --engine=jit, as a .gltf scene (--instancing off --group-by
 symbol: every leaf baked into its symbol's node) and as a grouped OBJ; requires the two
@@ -63,13 +63,28 @@ UV_RANGES = {
 NO_UV = ("D1", "D5")
 # uv_sets' leaf whose set 0 an empty set was copied over: no TEXCOORD_0, no image.
 NO_UV_SETS = ("S7",)
+# uv_layers (uv sets 1..9 written as TEXCOORD_n): per leaf, per TEXCOORD_n its (u min, u max,
+# v min, v max) or ZEROS (a set the leaf lacks below its highest one), and the normal map's
+# texCoord (None: no normal map; 0: glTF's default, no texCoord written).
+ZEROS = "zeros"
+UV_LAYERS = {
+    "L1": ({0: (0, 4, 0, 6), 1: (0, 8, 0, 3)}, None),
+    "L2": ({0: ZEROS, 1: ZEROS, 2: ZEROS, 3: (0, 8, 0, 4)}, None),
+    "L3": ({0: (0, 2, 0, 3), 1: ZEROS, 2: ZEROS, 3: ZEROS, 4: ZEROS, 5: (0, 8, 0, 12)}, 5),
+    "L4": ({0: (0, 2, 0, 3)}, 0),
+    "L5": ({}, None),
+}
+# uv_layers' geometry.du/dv(k, uvSpace) reports, by hand (uv_layers.cga's comment).
+UV_LAYER_REPORTS = {"L1.du1": 8, "L1.dv1": 3, "L2.du3": 8, "L2.dv3": 4, "L2.du0": 0, "L5.du2": 0}
 # The .mtl of the grouped OBJ: per material of these leaves, d, Pr, Pm and whether `norm`.
 MTL = {"M1": ("1", "0.3", "1"), "M2": ("0.5", "0.8", "0"), "M5": ("1", "0.55", "0")}
 
 # Located errors, both engines: (file name, source, the diagnostic's start).
 ERRORS = [
-    ("e1.cga", 'version "2023.0"\n@StartRule\nLot --> report("d", geometry.du(1, uvSpace)) X.\n',
-     "e1.cga:3:33: error[E801]: uv set 1"),
+    ("e1.cga", 'version "2023.0"\n@StartRule\nLot --> report("d", geometry.du(10, uvSpace)) X.\n',
+     "e1.cga:3:33: error[E028]: a uv set is a whole number from 0 to 9"),
+    ("e15.cga", 'version "2023.0"\n@StartRule\nLot --> report("d", geometry.dv(1, unitSpace)) X.\n',
+     "e15.cga:3:36: error[E801]"),
     ("e2.cga", 'version "2023.0"\n@StartRule\nLot --> normalizeUV(0, uv, separatePerFace) X.\n',
      "e2.cga:3:28: error[E801]"),
     ("e3.cga", 'version "2023.0"\n@StartRule\nLot --> setupProjection(0, scope.xw, 1, 1) X.\n',
@@ -227,6 +242,54 @@ def check_no_uvs_sets(doc, label):
     check_untextured_leaves(doc, NO_UV_SETS, label, "an empty set was copied over set 0")
 
 
+def check_uv_layers(doc, buffer, label):
+    """Each uv_layers leaf's TEXCOORD_n: exactly the expected ones, each set's range (fgsg's v
+    up is 1 - glTF's), the zero-filled ones all 0 as written; L1's set 1 per vertex from its
+    set 0 (u1 = 2 u0, v1 = v0 / 2); the normal map's texCoord; the du/dv reports."""
+    by_leaf = leaves(doc)
+    for leaf, (sets, normal) in UV_LAYERS.items():
+        prims = by_leaf.get(leaf)
+        if not prims:
+            fail(f"{label}: no node {leaf}")
+            continue
+        for p in prims:
+            names = sorted(k for k in p["attributes"] if k.startswith("TEXCOORD_"))
+            want = sorted(f"TEXCOORD_{n}" for n in sets)
+            if names != want:
+                fail(f"{label}: {leaf} has {names}, expected {want}")
+                continue
+            corners = indices(doc, buffer, p["indices"])
+            coords = {n: accessor_floats(doc, buffer, p["attributes"][f"TEXCOORD_{n}"]) for n in sets}
+            for n, expected in sets.items():
+                if expected == ZEROS:
+                    if any(x != 0 for i in corners for x in coords[n][i]):
+                        fail(f"{label}: {leaf}'s TEXCOORD_{n} (a set it lacks) is not all zeros")
+                    continue
+                uvs = [(coords[n][i][0], 1 - coords[n][i][1]) for i in corners]
+                got = (min(u for u, v in uvs), max(u for u, v in uvs), min(v for u, v in uvs), max(v for u, v in uvs))
+                if not all(near(g, e) for g, e in zip(got, expected)):
+                    fail(f"{label}: {leaf} set {n} uv range {tuple(round(g, 6) for g in got)}, expected {expected}")
+            if leaf == "L1":
+                for i in corners:
+                    (u0, v0), (u1, v1) = coords[0][i], coords[1][i]
+                    if not (near(u1, 2 * u0) and near(1 - v1, (1 - v0) / 2)):
+                        fail(f"{label}: L1 vertex {i}: set 1 {(u1, 1 - v1)} is not (2 u0, v0 / 2) of set 0 {(u0, 1 - v0)}")
+                        break
+            m = doc["materials"][p["material"]]
+            got_normal = None if "normalTexture" not in m else m["normalTexture"].get("texCoord", 0)
+            if got_normal != normal:
+                fail(f"{label}: {leaf}'s normal map texCoord {got_normal}, expected {normal}")
+            if normal == 0 and "texCoord" in m["normalTexture"]:
+                fail(f"{label}: {leaf}'s normal map on set 0 writes texCoord (glTF's default)")
+    reports = {}
+    for node in doc["nodes"]:
+        for key, collection in node.get("extras", {}).get("reports", {}).items():
+            reports.setdefault(key, []).extend(collection["values"])
+    for key, expected in UV_LAYER_REPORTS.items():
+        if reports.get(key) is None or len(reports[key]) != 1 or not near(reports[key][0], expected):
+            fail(f"{label}: report {key} {reports.get(key)}, expected [{expected}]")
+
+
 def check_mtl(path, label):
     text = open(path).read()
     blocks = {}
@@ -249,7 +312,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
         for name, lot in (("materials", "rect20x10"), ("uv_operations", "street40x12"), ("uv_delete", "street40x12"),
-                          ("uv_sets", "street40x12"), ("uv_world", "square10")):
+                          ("uv_sets", "street40x12"), ("uv_layers", "street40x12"), ("uv_world", "square10")):
             for ext in ("cga", "fgsg"):
                 grammar = os.path.join(tmp, f"{name}.{ext}")
                 shutil.copy(os.path.join(here, f"{name}.{ext}"), grammar)
@@ -275,6 +338,8 @@ def main():
                         if name == "materials":
                             check_materials(doc, label)
                             check_mtl(obj[:-4] + ".mtl", label)
+                        elif name == "uv_layers":
+                            check_uv_layers(doc, buffer, label)
                         else:
                             check_uvs(doc, buffer, label,
                                       {"uv_operations": "U", "uv_delete": "D", "uv_sets": "S"}.get(name, "W"))

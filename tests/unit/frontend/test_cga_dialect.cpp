@@ -225,16 +225,17 @@ TEST_CASE("geometry.angle(maxSlope | azimuth | zenith) is fgsg's Geometry.angle,
   CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.angle(\"zenith\"), 1, 1) X;\n", "test.fgsg").ok);
 }
 
-TEST_CASE("geometry.du/dv(0, uvSpace) are fgsg's Geometry.du/dv, other uv sets and unitSpace located errors",
+TEST_CASE("geometry.du/dv(k, uvSpace) are fgsg's Geometry.du/dv of uv set k, other sets and unitSpace located errors",
           "[cga][dialect]") {
-  const Compiled c = compile("@StartRule\nLot --> report(\"u\", geometry.du(0, uvSpace) + geometry.dv(0, uvSpace)) X.\n");
+  const Compiled c = compile("@StartRule\nLot --> report(\"u\", geometry.du(0, uvSpace) + geometry.dv(3, uvSpace)) X.\n");
   INFO(c.messages);
   REQUIRE(c.ok);
+  // Set 0 prints as before (the same IR); another set names itself.
   const std::string printed = ir::printModule(c.module);
-  CHECK(printed.find("Geometry.du") != std::string::npos);
-  CHECK(printed.find("Geometry.dv") != std::string::npos);
-  const Compiled set = compile("@StartRule\nLot --> s(geometry.du(1, uvSpace), 1, 1) X.\n");
-  CHECK(set.messages.find("test.cga:2:23: error[E801]: uv set 1") != std::string::npos);
+  CHECK(printed.find("Geometry.du +") != std::string::npos);
+  CHECK(printed.find("Geometry.dv(3, \"uvSpace\")") != std::string::npos);
+  const Compiled set = compile("@StartRule\nLot --> s(geometry.du(10, uvSpace), 1, 1) X.\n");
+  CHECK(set.messages.find("test.cga:2:23: error[E028]: a uv set is a whole number from 0 to 9") != std::string::npos);
   const Compiled unit = compile("@StartRule\nLot --> s(geometry.dv(0, unitSpace), 1, 1) X.\n");
   CHECK(unit.messages.find("test.cga:2:26: error[E801]: 'geometry.dv' in unitSpace") != std::string::npos);
   const Compiled word = compile("@StartRule\nLot --> s(geometry.du(0, uv), 1, 1) X.\n");
@@ -242,11 +243,14 @@ TEST_CASE("geometry.du/dv(0, uvSpace) are fgsg's Geometry.du/dv, other uv sets a
                            "unitSpace, not 'uv'") != std::string::npos);
   const Compiled none = compile("@StartRule\nLot --> s(geometry.du(), 1, 1) X.\n");
   CHECK(none.messages.find("test.cga:2:11: error[E016]: 'geometry.du' takes 2 arguments") != std::string::npos);
-  const Compiled fgsg = compile("axiom: Lot;\nLot ~> S(Geometry.du(1, \"uvSpace\"), 1, 1) X;\n", "test.fgsg");
-  CHECK(fgsg.messages.find("test.fgsg:2:10: error[E025]: Geometry.du reads uv set 0 only") != std::string::npos);
+  const Compiled fgsg = compile("axiom: Lot;\nLot ~> S(Geometry.du(10, \"uvSpace\"), 1, 1) X;\n", "test.fgsg");
+  CHECK(fgsg.messages.find("test.fgsg:2:10: error[E025]: Geometry.du reads a uv set, a constant whole number from 0 "
+                           "to 9") != std::string::npos);
+  const Compiled half = compile("axiom: Lot;\nLot ~> S(Geometry.du(1.5, \"uvSpace\"), 1, 1) X;\n", "test.fgsg");
+  CHECK(half.messages.find("test.fgsg:2:10: error[E025]") != std::string::npos);
   const Compiled space = compile("axiom: Lot;\nLot ~> S(Geometry.dv(0, \"unitSpace\"), 1, 1) X;\n", "test.fgsg");
   CHECK(space.messages.find("error[E025]: Geometry.dv measures in \"uvSpace\"") != std::string::npos);
-  CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.dv(0, \"uvSpace\"), 1, 1) X;\n", "test.fgsg").ok);
+  CHECK(compile("axiom: Lot;\nLot ~> S(Geometry.dv(9, \"uvSpace\"), 1, 1) X;\n", "test.fgsg").ok);
 }
 
 TEST_CASE("setback's index selectors are whole numbers in both dialects", "[cga][dialect]") {
