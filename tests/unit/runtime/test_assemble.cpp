@@ -140,6 +140,52 @@ TEST_CASE("instances after one that lost triangles close up behind it", "[assemb
   checkFlatNormals(m);
 }
 
+TEST_CASE("CGA's uv sets 1 to 9 move with their vertices and are 0 0 where an instance lacks them",
+          "[assemble]") {
+  // A library cube without sets, then the cube as own geometries carrying set 3 (u = the
+  // vertex's number, v = 100 + it): flattened (only top and bottom survive, renumbered),
+  // then whole with set 5 too. The sets come out ascending, each per output vertex.
+  Scene s;
+  s.add("cube", scaleTranslate({1, 1, 1}, {0, 0, 0}));
+  std::string error;
+  REQUIRE(resolveAssets(s.list, s.library, s.meshOf, error));
+  Mesh own = s.library.mesh(s.meshOf[0]);
+  const size_t n = own.vertexCount();
+  own.uvSets.push_back({3, {}});
+  for (size_t v = 0; v < n; ++v) own.uvSets[0].coords.insert(own.uvSets[0].coords.end(), {float(v), 100.0f + v});
+  Mesh both = own;
+  both.uvSets.push_back({5, {}});
+  for (size_t v = 0; v < n; ++v) both.uvSets[1].coords.insert(both.uvSets[1].coords.end(), {-1.0f, -2.0f});
+  for (const Mesh* g : {&own, &both}) {
+    s.list.geometries.push_back(*g);
+    s.add(kOwnGeometryAsset, g == &own ? scaleTranslate({2, 3, 0}, {1, 1, 5}) : scaleTranslate({1, 1, 1}, {4, 0, 0}));
+    s.list.instances.back().geometry = uint32_t(s.list.geometries.size() - 1);
+  }
+  const Mesh m = s.assemble();
+  REQUIRE(m.vertexCount() == n + 8 + n);
+  REQUIRE(m.uvSets.size() == 2);
+  CHECK(m.uvSets[0].set == 3);
+  CHECK(m.uvSets[1].set == 5);
+  const auto uv = [&](size_t k, size_t v) { return std::array<float, 2>{m.uvSets[k].coords[2 * v], m.uvSets[k].coords[2 * v + 1]}; };
+  for (size_t v = 0; v < n; ++v) {  // the library cube: no sets
+    CHECK(uv(0, v) == std::array<float, 2>{0, 0});
+    CHECK(uv(1, v) == std::array<float, 2>{0, 0});
+  }
+  for (size_t v = n; v < n + 8; ++v) {  // the flattened one: each survivor keeps its own set 3
+    const std::array<float, 2> c = uv(0, v);
+    REQUIRE(c[0] >= 0);
+    REQUIRE(size_t(c[0]) < n);
+    CHECK(c[1] == 100.0f + c[0]);
+    const Eigen::Vector3d unit = vec(own.positions, size_t(c[0]));
+    CHECK(vec(m.positions, v) == Eigen::Vector3d(1 + 2 * unit.x(), 1 + 3 * unit.y(), 5));
+    CHECK(uv(1, v) == std::array<float, 2>{0, 0});
+  }
+  for (size_t v = 0; v < n; ++v) {  // the whole one: both sets as given
+    CHECK(uv(0, n + 8 + v) == std::array<float, 2>{float(v), 100.0f + v});
+    CHECK(uv(1, n + 8 + v) == std::array<float, 2>{-1, -2});
+  }
+}
+
 TEST_CASE("a quad scaled flat in X vanishes entirely", "[assemble]") {
   Scene s;
   s.add("quad", scaleTranslate({0, 1, 1}, {0, 0, 0}));
