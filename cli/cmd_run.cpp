@@ -262,6 +262,19 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     progress.clear();
     reportMessages(dropped, compiled->source);
   }
+  // CGA's uv sets 1..9 are the glTF scene's TEXCOORD_1..9 alone: an OBJ holds one set (vt)
+  // and the flattened files keep set 0 too, and say so.
+  rt::DeriveOptions layoutOnly;
+  if (!opt.output.empty() && checkOutput(opt.scene, opt.output, layoutOnly) != OutputLayout::GltfScene &&
+      std::any_of(result.instances.geometries.begin(), result.instances.geometries.end(),
+                  [](const rt::Mesh& g) { return !g.uvSets.empty(); })) {
+    rt::DeriveResult dropped;
+    dropped.messages.push_back({false, "R033", 0, 0,
+                                "the uv sets 1 to 9 are not in " + opt.output +
+                                    " (it keeps uv set 0): a glTF scene (.glb, .gltf) has them as TEXCOORD_1 to 9"});
+    progress.clear();
+    reportMessages(dropped, compiled->source);
+  }
   // The assembly cut short by --max-seconds keeps the first `kept` instances: said with
   // R004, and --instances, --lines, --report and the scene list only those.
   const auto keepAssembled = [&](size_t kept) {

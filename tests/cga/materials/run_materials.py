@@ -358,6 +358,18 @@ def main():
                                   f"--engine={engine}"], capture_output=True, text=True, timeout=120)
             if run.returncode != 0 or "materials.cga: warning[R031]" not in run.stderr:
                 fail(f"flattened materials.cga ({engine}): exit {run.returncode}, no R031: {run.stderr.strip()}")
+        # uv sets 1..9 are in the glTF scene alone: an OBJ, grouped or not, and a flattened glb
+        # keep set 0 and say so with R033 (a warning, exit 0); the glTF scene says nothing.
+        for target, extra, warned in (("flat.obj", [], True), ("grouped.obj", ["--group-by", "symbol"], True),
+                                      ("flat.glb", ["--instancing", "off", "--group-by", "none"], True),
+                                      ("scene.glb", [], False)):
+            for engine in ("interp", "jit"):
+                run = subprocess.run([fgsg, "run", os.path.join(tmp, "uv_layers.cga"), "--lots",
+                                      os.path.join(lots, "street40x12.geojson"), "-o", os.path.join(tmp, target),
+                                      f"--engine={engine}"] + extra, capture_output=True, text=True, timeout=120)
+                if run.returncode != 0 or ("uv_layers.cga: warning[R033]" in run.stderr) != warned:
+                    fail(f"uv_layers.cga -o {target} ({engine}): exit {run.returncode}, R033 expected {warned}: "
+                         f"{run.stderr.strip()}")
         for file, source, expected in ERRORS:
             path = os.path.join(tmp, file)
             open(path, "w").write(source)
