@@ -33,10 +33,18 @@ void applyInsertAlongUv(Derivation& d, const ir::Op& op, const double* a, uint32
   options.vertexNormals = n > 3 && a[3] == 1;
   options.keepPosition = n > 4 && a[4] == 1;
   options.up = st.scope.Y();
+  options.deadline = &d.deadline();
   rt::cga::Part part;
-  if (!rt::cga::insertAlongUv(st.scope, st.geom, d.arena(), *projection, d.assets().mesh(mesh),
-                              d.assets().sourceBox(mesh), options, part, error))
-    throw DeriveError{op.loc, "R002", error};
+  bool inserted = false;
+  try {
+    inserted = rt::cga::insertAlongUv(st.scope, st.geom, d.arena(), *projection, d.assets().mesh(mesh),
+                                      d.assets().sourceBox(mesh), options, part, error);
+  } catch (const rt::TimeLimitReached&) {  // --max-seconds inside one shape's insertion: R004 here
+    LimitReached limit = d.timeLimit();
+    limit.loc = op.loc;
+    throw limit;
+  }
+  if (!inserted) throw DeriveError{op.loc, "R002", error};
   st.scope = part.scope;
   st.geom = part.geom;
 }

@@ -3,7 +3,9 @@
 // affine image of it stays whole; others, and all faces when heights follow the vertex
 // normals, are cut into triangles). Every copy of the asset along u has each triangle
 // clipped to every cell it crosses (Sutherland-Hodgman in uv, the height carried
-// linearly), and each piece is mapped through its cell.
+// linearly), and each piece is mapped through its cell. A uniform grid over the cells' uv
+// boxes gives each triangle (and each wall test, each overlap test) only the cells near
+// it: a shape of many faces is not scanned whole for every piece of the asset.
 #include "runtime/cga/insert_along_uv.h"
 
 #include "runtime/cga/geometry_queries.h"
@@ -11,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 
@@ -114,12 +117,14 @@ double alongUvPolygonArea(const std::vector<AlongUvVertex>& p) {
 
 // Each corner's normal: the area-weighted normals of the faces meeting there (corners
 // closer than `tol` are one), as CityEngine computes vertex normals from merged vertices.
-std::vector<std::vector<Vec3>> alongUvVertexNormals(const std::vector<AlongUvFace>& faces, double tol) {
+std::vector<std::vector<Vec3>> alongUvVertexNormals(const std::vector<AlongUvFace>& faces, double tol,
+                                                    Deadline* deadline) {
   std::vector<Vec3> points, sums;
   std::vector<std::vector<size_t>> index(faces.size());
   for (size_t f = 0; f < faces.size(); ++f) {
     const Vec3 n = newellNormal(faces[f].corners);  // length: twice the area
     for (const Vec3& c : faces[f].corners) {
+      if (deadline) deadline->check();  // each corner is compared with all those before it
       size_t k = 0;
       while (k < points.size() && (points[k] - c).norm() > tol) ++k;
       if (k == points.size()) points.push_back(c), sums.push_back(Vec3::Zero());
@@ -204,6 +209,71 @@ double alongUvOverlap(const AlongUvCell& a, const AlongUvCell& b) {
   return std::abs(alongUvPolygonArea(alongUvClip(std::move(poly), b.uv)));
 }
 
+// A uniform grid over the cells' uv boxes: each bucket lists the cells whose boxes reach
+// into it. Buckets come from one monotonic map of u and of v (clamped at the grid's ends),
+// so a box that overlaps another box, or holds a point, shares a bucket with it.
+class AlongUvGrid {
+ public:
+  explicit AlongUvGrid(const std::vector<AlongUvCell>& cells) {
+    for (int k = 0; k < 2; ++k) lo_[k] = INFINITY;
+    double hi[2] = {-INFINITY, -INFINITY};
+    for (const AlongUvCell& c : cells)
+      for (int k = 0; k < 2; ++k) lo_[k] = std::min(lo_[k], c.lo[k]), hi[k] = std::max(hi[k], c.hi[k]);
+    // About one bucket per cell, shaped like the uv box; coarser while long cells would
+    // be listed in too many buckets (memory stays linear in the cells).
+    const double span[2] = {hi[0] - lo_[0], hi[1] - lo_[1]};
+    const double count = double(cells.size());
+    const double aspect = span[0] > 0 && span[1] > 0 && std::isfinite(span[0] / span[1]) ? span[0] / span[1] : 1.0;
+    n_[0] = int(std::clamp(std::round(std::sqrt(count * aspect)), 1.0, count));
+    n_[1] = int(std::clamp(std::round(count / n_[0]), 1.0, count));
+    for (;;) {
+      for (int k = 0; k < 2; ++k) scale_[k] = span[k] > 0 && std::isfinite(span[k]) ? n_[k] / span[k] : 0.0;
+      double listed = 0.0;
+      for (const AlongUvCell& c : cells)
+        listed += double(bucket(0, c.hi[0]) - bucket(0, c.lo[0]) + 1) * double(bucket(1, c.hi[1]) - bucket(1, c.lo[1]) + 1);
+      if (listed <= 16.0 * count + 64.0 || (n_[0] == 1 && n_[1] == 1)) break;
+      n_[0] = std::max(1, n_[0] / 2), n_[1] = std::max(1, n_[1] / 2);
+    }
+    buckets_.resize(size_t(n_[0]) * size_t(n_[1]));
+    for (size_t i = 0; i < cells.size(); ++i)
+      for (int y = bucket(1, cells[i].lo[1]); y <= bucket(1, cells[i].hi[1]); ++y)
+        for (int x = bucket(0, cells[i].lo[0]); x <= bucket(0, cells[i].hi[0]); ++x)
+          buckets_[size_t(y) * size_t(n_[0]) + size_t(x)].push_back(i);
+    seen_.assign(cells.size(), 0);
+  }
+
+  // The cells listed in the buckets that the box lo..hi reaches, each once, ascending.
+  const std::vector<size_t>& near(const double lo[2], const double hi[2]) {
+    ++stamp_;
+    found_.clear();
+    for (int y = bucket(1, lo[1]); y <= bucket(1, hi[1]); ++y)
+      for (int x = bucket(0, lo[0]); x <= bucket(0, hi[0]); ++x)
+        for (size_t i : buckets_[size_t(y) * size_t(n_[0]) + size_t(x)])
+          if (seen_[i] != stamp_) seen_[i] = stamp_, found_.push_back(i);
+    std::sort(found_.begin(), found_.end());
+    return found_;
+  }
+
+  // The cells whose boxes may hold the point p.
+  const std::vector<size_t>& at(const AlongUvPoint& p) const {
+    return buckets_[size_t(bucket(1, p.y())) * size_t(n_[0]) + size_t(bucket(0, p.x()))];
+  }
+
+ private:
+  int bucket(int axis, double x) const {
+    const double t = (x - lo_[axis]) * scale_[axis];
+    if (!(t >= 0.0)) return 0;  // below the grid, or not a number
+    return t >= double(n_[axis]) ? n_[axis] - 1 : int(t);
+  }
+
+  double lo_[2] = {0, 0}, scale_[2] = {0, 0};
+  int n_[2] = {1, 1};
+  std::vector<std::vector<size_t>> buckets_;
+  std::vector<uint64_t> seen_;
+  uint64_t stamp_ = 0;
+  std::vector<size_t> found_;
+};
+
 // The height direction at uv point p of the cell.
 Vec3 alongUvDirection(const AlongUvCell& cell, const AlongUvPoint& p, const Vec3& up) {
   if (!cell.interpolates) return up;
@@ -236,11 +306,13 @@ bool insertAlongUvFaces(const std::vector<AlongUvFace>& faces, const Mesh& asset
     for (const Vec3& c : f.corners) lo3 = lo3.cwiseMin(c), hi3 = hi3.cwiseMax(c);
   if (lo3.x() <= hi3.x()) extent = 1.0 + (hi3 - lo3).norm();
   const std::vector<std::vector<Vec3>> normals =
-      options.vertexNormals ? alongUvVertexNormals(faces, 1e-9 * extent) : std::vector<std::vector<Vec3>>();
+      options.vertexNormals ? alongUvVertexNormals(faces, 1e-9 * extent, options.deadline) : std::vector<std::vector<Vec3>>();
   std::vector<AlongUvCell> cells;
-  for (size_t f = 0; f < faces.size(); ++f)
+  for (size_t f = 0; f < faces.size(); ++f) {
+    if (options.deadline) options.deadline->check();
     alongUvCells(faces[f], f, options.vertexNormals ? normals[f] : std::vector<Vec3>(), options.vertexNormals,
                  extent, cells);
+  }
   if (cells.empty()) {
     error = "insertAlongUV: the shape has no face with uvs of any area (no faces, or every face seen edge-on by the "
             "uv set's projection)";
@@ -250,9 +322,18 @@ bool insertAlongUvFaces(const std::vector<AlongUvFace>& faces, const Mesh& asset
   std::vector<size_t> order(cells.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cells[a].lo[0] < cells[b].lo[0]; });
-  for (size_t i = 0; i < order.size(); ++i)
-    for (size_t j = i + 1; j < order.size() && cells[order[j]].lo[0] < cells[order[i]].hi[0]; ++j) {
-      const AlongUvCell& a = cells[order[i]];
+  std::vector<size_t> rank(cells.size());
+  for (size_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
+  AlongUvGrid grid(cells);
+  std::vector<size_t> later;  // the cells after one in `order` that its box may overlap
+  for (size_t i = 0; i < order.size(); ++i) {
+    const AlongUvCell& a = cells[order[i]];
+    later.clear();
+    for (size_t j : grid.near(a.lo, a.hi))
+      if (rank[j] > i && cells[j].lo[0] < a.hi[0]) later.push_back(rank[j]);
+    std::sort(later.begin(), later.end());  // the pairs in the order of a sweep along u
+    for (size_t j : later) {
+      if (options.deadline) options.deadline->check();
       const AlongUvCell& b = cells[order[j]];
       if (a.face == b.face) continue;
       const double areaA = std::abs(alongUvSignedArea(a.uv)), areaB = std::abs(alongUvSignedArea(b.uv));
@@ -264,6 +345,7 @@ bool insertAlongUvFaces(const std::vector<AlongUvFace>& faces, const Mesh& asset
         return false;
       }
     }
+  }
   double uMin = INFINITY, uMax = -INFINITY, vMin = INFINITY, vMax = -INFINITY;
   for (AlongUvCell& c : cells) {
     uMin = std::min(uMin, c.lo[0]), uMax = std::max(uMax, c.hi[0]);
@@ -325,7 +407,9 @@ bool insertAlongUvFaces(const std::vector<AlongUvFace>& faces, const Mesh& asset
       for (const AlongUvVertex& v : tri)
         for (int k = 0; k < 2; ++k) tlo[k] = std::min(tlo[k], v.uv[k]), thi[k] = std::max(thi[k], v.uv[k]);
       const double triArea = std::abs(alongUvPolygonArea(tri));
-      for (const AlongUvCell& cell : cells) {
+      for (size_t c : grid.near(tlo, thi)) {
+        if (options.deadline) options.deadline->check();
+        const AlongUvCell& cell = cells[c];
         if (thi[0] < cell.lo[0] || tlo[0] > cell.hi[0] || thi[1] < cell.lo[1] || tlo[1] > cell.hi[1]) continue;
         std::vector<AlongUvVertex> piece = alongUvClip(tri, cell.uv);
         if (piece.size() < 3) continue;
@@ -338,7 +422,7 @@ bool insertAlongUvFaces(const std::vector<AlongUvFace>& faces, const Mesh& asset
           bool mine = alongUvInside(cell, ahead);
           if (!mine) {
             bool elsewhere = false;
-            for (const AlongUvCell& other : cells) elsewhere = elsewhere || alongUvInside(other, ahead);
+            for (size_t other : grid.at(ahead)) elsewhere = elsewhere || alongUvInside(cells[other], ahead);
             mine = !elsewhere && alongUvInside(cell, centre - eps * across);
           }
           if (!mine) continue;

@@ -15,6 +15,7 @@
 
 #include "runtime/cga/cga.h"
 #include "runtime/cga/uv_projection.h"
+#include "runtime/deadline.h"
 #include "runtime/mesh.h"
 
 #include <array>
@@ -37,6 +38,10 @@ struct AlongUvOptions {
   // At most this many output faces (the shape's u range times the asset's triangles):
   // more is an error, not an endless loop on a shape whose uvs run to 1e9.
   size_t maxFaces = 4'000'000;
+  // --max-seconds, asked for every piece of the asset cut by a cell and every pair of
+  // cells compared (throwing TimeLimitReached): a shape of many faces times millions of
+  // asset triangles could otherwise run far past the limit. None: no limit.
+  Deadline* deadline = nullptr;
 };
 
 // The asset `asset` (unit-cube positions; `sourceBox` its file's box before normalising:

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -299,5 +300,61 @@ TEST_CASE("insertAlongUV: the cases it refuses", "[cga][insert_along_uv]") {
     CHECK_FALSE(insertAlongUvFaces({alongUvGroundQuad(0, 10, 2, 0, 0.1, 0, 2)}, alongUvCube(), kUnitSourceBox, options,
                                    out, error));
     CHECK(error.find("more than 100 faces") != std::string::npos);
+  }
+}
+
+TEST_CASE("insertAlongUV: a deadline that has passed stops the insertion", "[cga][insert_along_uv]") {
+  // --max-seconds must reach inside one shape's insertion (the engines turn it into R004).
+  AlongUvOptions options;
+  options.height = 0.5;
+  std::vector<std::vector<Vec3>> out;
+  std::string error;
+  Deadline open = Deadline::after(3600);
+  options.deadline = &open;
+  CHECK(insertAlongUvFaces({alongUvGroundQuad(0, 10, 2, 0, 2.5, 0, 2)}, alongUvCube(), kUnitSourceBox, options, out,
+                           error));
+  Deadline passed(Deadline::Clock::now() - std::chrono::seconds(10), 1.0);
+  options.deadline = &passed;
+  CHECK_THROWS_AS(insertAlongUvFaces({alongUvGroundQuad(0, 10, 2, 0, 2.5, 0, 2)}, alongUvCube(), kUnitSourceBox,
+                                     options, out, error),
+                  TimeLimitReached);
+}
+
+TEST_CASE("insertAlongUV: the 10 x 2 quad cut into 300 x 300 faces gives the same boxes", "[cga][insert_along_uv]") {
+  // The quad of the first case as 90 000 faces, u = x / 2.5 (i / 75 at column i) and
+  // v = z / 2 (j / 300 at row j): the four boxes 2.5 x 0.5 x 2 again, cut along the faces'
+  // edges, 10 m3 and 58 m2. The boxes' ends at u = 1, 2, 3 lie on the faces' edges: each
+  // goes to one face only (twice would add 1 m2 each). Faces found through the grid over
+  // their uvs, not by scanning all 90 000 for each piece.
+  constexpr int kCuts = 300;
+  std::vector<AlongUvFace> faces;
+  for (int i = 0; i < kCuts; ++i)
+    for (int j = 0; j < kCuts; ++j) {
+      const double u0 = i / 75.0, u1 = (i + 1) / 75.0, v0 = j / 300.0, v1 = (j + 1) / 300.0;
+      AlongUvFace f;
+      f.uvs = {{u0, v0}, {u0, v1}, {u1, v1}, {u1, v0}};
+      for (const auto& uv : f.uvs) f.corners.emplace_back(2.5 * uv[0], 0.0, 2.0 * uv[1]);
+      faces.push_back(std::move(f));
+    }
+  AlongUvOptions options;
+  options.height = 0.5;
+  std::vector<std::vector<Vec3>> out;
+  std::string error;
+  REQUIRE(insertAlongUvFaces(faces, alongUvCube(), kUnitSourceBox, options, out, error));
+  CHECK(std::abs(alongUvVolume(out) - 10.0) <= kAlongUvTol);
+  CHECK(std::abs(alongUvArea(out) - 58.0) <= kAlongUvTol);
+  // Every corner on a box's face (the walls' pieces have corners at any height).
+  alongUvCornersAre(
+      out,
+      [](const Vec3& p) {
+        return alongUvWithin(p.x(), 0, 10) && alongUvWithin(p.y(), 0, 0.5) && alongUvWithin(p.z(), 0, 2) &&
+               (alongUvIn(p.x(), {0, 2.5, 5, 7.5, 10}) || alongUvIn(p.y(), {0, 0.5}) || alongUvIn(p.z(), {0, 2}));
+      },
+      alongUvGrid({0, 2.5, 5, 7.5, 10}, {0, 0.5}, {0, 2}));
+
+  SECTION("one more face over the uvs of face 45 150 (column 150, row 150) overlaps it") {
+    faces.push_back(faces[150 * kCuts + 150]);
+    CHECK_FALSE(insertAlongUvFaces(faces, alongUvCube(), kUnitSourceBox, options, out, error));
+    CHECK(error.find("the uvs of faces 45150 and 90000 overlap") != std::string::npos);
   }
 }
