@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace fgsg::rt::cga {
 namespace {
@@ -115,19 +116,78 @@ double alongUvPolygonArea(const std::vector<AlongUvVertex>& p) {
   return alongUvSignedArea(pts);
 }
 
+// The distinct corners so far, in buckets of side 2 tol: a corner within tol of another
+// lies in its bucket or a neighbouring one. Corners without a bucket (not finite, or too
+// far out for one) are asked every time, as a scan of all corners would.
+class AlongUvCornerIndex {
+ public:
+  explicit AlongUvCornerIndex(double tol) : tol_(tol) {}
+
+  // The first of `points` (all added here) closer than tol to c, or points.size().
+  size_t find(const std::vector<Vec3>& points, const Vec3& c) const {
+    std::array<int64_t, 3> key;
+    if (!bucket(c, key)) {
+      size_t k = 0;
+      while (k < points.size() && (points[k] - c).norm() > tol_) ++k;
+      return k;
+    }
+    size_t best = points.size();
+    for (size_t k : loose_)
+      if (k < best && !((points[k] - c).norm() > tol_)) best = k;
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy)
+        for (int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = buckets_.find({key[0] + dx, key[1] + dy, key[2] + dz});
+          if (it == buckets_.end()) continue;
+          for (size_t k : it->second)
+            if (k < best && !((points[k] - c).norm() > tol_)) best = k;
+        }
+    return best;
+  }
+
+  void add(size_t k, const Vec3& c) {
+    std::array<int64_t, 3> key;
+    if (bucket(c, key)) buckets_[key].push_back(k);
+    else loose_.push_back(k);
+  }
+
+ private:
+  struct KeyHash {
+    size_t operator()(const std::array<int64_t, 3>& k) const {
+      uint64_t h = 1469598103934665603ull;
+      for (int64_t x : k) h = (h ^ uint64_t(x)) * 1099511628211ull;
+      return size_t(h);
+    }
+  };
+
+  bool bucket(const Vec3& c, std::array<int64_t, 3>& key) const {
+    if (!(tol_ > 0.0)) return false;
+    for (int a = 0; a < 3; ++a) {
+      const double t = std::floor(c[a] / (2.0 * tol_));
+      if (!(std::abs(t) < 1e15)) return false;  // not finite, or too far out for a bucket
+      key[size_t(a)] = int64_t(t);
+    }
+    return true;
+  }
+
+  double tol_;
+  std::unordered_map<std::array<int64_t, 3>, std::vector<size_t>, KeyHash> buckets_;
+  std::vector<size_t> loose_;
+};
+
 // Each corner's normal: the area-weighted normals of the faces meeting there (corners
 // closer than `tol` are one), as CityEngine computes vertex normals from merged vertices.
 std::vector<std::vector<Vec3>> alongUvVertexNormals(const std::vector<AlongUvFace>& faces, double tol,
                                                     Deadline* deadline) {
   std::vector<Vec3> points, sums;
+  AlongUvCornerIndex distinct(tol);
   std::vector<std::vector<size_t>> index(faces.size());
   for (size_t f = 0; f < faces.size(); ++f) {
     const Vec3 n = newellNormal(faces[f].corners);  // length: twice the area
     for (const Vec3& c : faces[f].corners) {
-      if (deadline) deadline->check();  // each corner is compared with all those before it
-      size_t k = 0;
-      while (k < points.size() && (points[k] - c).norm() > tol) ++k;
-      if (k == points.size()) points.push_back(c), sums.push_back(Vec3::Zero());
+      if (deadline) deadline->check();
+      const size_t k = distinct.find(points, c);
+      if (k == points.size()) distinct.add(k, c), points.push_back(c), sums.push_back(Vec3::Zero());
       sums[k] += n;
       index[f].push_back(k);
     }

@@ -320,6 +320,25 @@ TEST_CASE("insertAlongUV: a deadline that has passed stops the insertion", "[cga
                   TimeLimitReached);
 }
 
+namespace {
+
+// The 10 x 2 quad of the first case (u = x / 2.5, v = z / 2) as cuts x cuts faces, face
+// i cuts + j at column i and row j.
+std::vector<AlongUvFace> alongUvCutQuad(int cuts) {
+  std::vector<AlongUvFace> faces;
+  for (int i = 0; i < cuts; ++i)
+    for (int j = 0; j < cuts; ++j) {
+      const double u0 = 4.0 * i / cuts, u1 = 4.0 * (i + 1) / cuts, v0 = double(j) / cuts, v1 = double(j + 1) / cuts;
+      AlongUvFace f;
+      f.uvs = {{u0, v0}, {u0, v1}, {u1, v1}, {u1, v0}};
+      for (const auto& uv : f.uvs) f.corners.emplace_back(2.5 * uv[0], 0.0, 2.0 * uv[1]);
+      faces.push_back(std::move(f));
+    }
+  return faces;
+}
+
+}  // namespace
+
 TEST_CASE("insertAlongUV: the 10 x 2 quad cut into 300 x 300 faces gives the same boxes", "[cga][insert_along_uv]") {
   // The quad of the first case as 90 000 faces, u = x / 2.5 (i / 75 at column i) and
   // v = z / 2 (j / 300 at row j): the four boxes 2.5 x 0.5 x 2 again, cut along the faces'
@@ -327,15 +346,7 @@ TEST_CASE("insertAlongUV: the 10 x 2 quad cut into 300 x 300 faces gives the sam
   // goes to one face only (twice would add 1 m2 each). Faces found through the grid over
   // their uvs, not by scanning all 90 000 for each piece.
   constexpr int kCuts = 300;
-  std::vector<AlongUvFace> faces;
-  for (int i = 0; i < kCuts; ++i)
-    for (int j = 0; j < kCuts; ++j) {
-      const double u0 = i / 75.0, u1 = (i + 1) / 75.0, v0 = j / 300.0, v1 = (j + 1) / 300.0;
-      AlongUvFace f;
-      f.uvs = {{u0, v0}, {u0, v1}, {u1, v1}, {u1, v0}};
-      for (const auto& uv : f.uvs) f.corners.emplace_back(2.5 * uv[0], 0.0, 2.0 * uv[1]);
-      faces.push_back(std::move(f));
-    }
+  std::vector<AlongUvFace> faces = alongUvCutQuad(kCuts);
   AlongUvOptions options;
   options.height = 0.5;
   std::vector<std::vector<Vec3>> out;
@@ -357,4 +368,54 @@ TEST_CASE("insertAlongUV: the 10 x 2 quad cut into 300 x 300 faces gives the sam
     CHECK_FALSE(insertAlongUvFaces(faces, alongUvCube(), kUnitSourceBox, options, out, error));
     CHECK(error.find("the uvs of faces 45150 and 90000 overlap") != std::string::npos);
   }
+}
+
+TEST_CASE("insertAlongUV: vertex normals over the 10 x 2 quad cut into 100 x 100 faces", "[cga][insert_along_uv]") {
+  // 40 000 corners merged into 10 201 distinct ones (through buckets, not by comparing each
+  // with all before it): all normals are the quad's, so the boxes are those of the first case,
+  // 10 m3 and 58 m2, their corners on the boxes' faces.
+  AlongUvOptions options;
+  options.height = 0.5;
+  options.vertexNormals = true;
+  std::vector<std::vector<Vec3>> out;
+  std::string error;
+  REQUIRE(insertAlongUvFaces(alongUvCutQuad(100), alongUvCube(), kUnitSourceBox, options, out, error));
+  CHECK(std::abs(alongUvVolume(out) - 10.0) <= kAlongUvTol);
+  CHECK(std::abs(alongUvArea(out) - 58.0) <= kAlongUvTol);
+  for (const auto& f : out)
+    for (const Vec3& p : f) {
+      INFO("corner " << p.transpose());
+      CHECK((alongUvWithin(p.x(), 0, 10) && alongUvWithin(p.y(), 0, 0.5) && alongUvWithin(p.z(), 0, 2)));
+    }
+}
+
+TEST_CASE("insertAlongUV: vertex normals merge the corners of many faces along a ridge", "[cga][insert_along_uv]") {
+  // A gable 10 m long (z), its slopes at 45 degrees from x -1 (y 0) up to the ridge at x 0
+  // (y 1) and down to x 1, each cut into 40 x 50 faces; u = z / 2.5, v = (x + 1) / 2. The
+  // ridge's corners are shared by both slopes: their normal is the mean of the slopes',
+  // straight up, so the cube's top (h 0.5) crosses the ridge at y 1.5, its highest point.
+  // Corners not merged would keep each slope's normal there: y 1 + 0.5 / sqrt 2.
+  std::vector<AlongUvFace> faces;
+  auto surface = [](double x, double z) { return Vec3(x, 1.0 - std::abs(x), z); };
+  for (int side = 0; side < 2; ++side)
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 50; ++j) {
+        const double z0 = 0.25 * i, z1 = 0.25 * (i + 1), x0 = side - 1 + j / 50.0, x1 = side - 1 + (j + 1) / 50.0;
+        AlongUvFace f;
+        f.corners = {surface(x0, z0), surface(x0, z1), surface(x1, z1), surface(x1, z0)};
+        for (const Vec3& c : f.corners) f.uvs.push_back({c.z() / 2.5, (c.x() + 1.0) / 2.0});
+        faces.push_back(std::move(f));
+      }
+  AlongUvOptions options;
+  options.height = 0.5;
+  options.vertexNormals = true;
+  std::vector<std::vector<Vec3>> out;
+  std::string error;
+  REQUIRE(insertAlongUvFaces(faces, alongUvCube(), kUnitSourceBox, options, out, error));
+  double top = -INFINITY;
+  bool ridgeTop = false;
+  for (const auto& f : out)
+    for (const Vec3& p : f) top = std::max(top, p.y()), ridgeTop = ridgeTop || alongUvNear(p, Vec3(0, 1.5, 2.5));
+  CHECK(std::abs(top - 1.5) <= kAlongUvTol);
+  CHECK(ridgeTop);
 }
