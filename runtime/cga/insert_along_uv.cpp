@@ -10,6 +10,7 @@
 
 #include "runtime/cga/geometry_queries.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/shape_operations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -539,30 +540,8 @@ bool insertAlongUv(const Scope& scope, const GeomRef& geom, GeometryArena& arena
   std::vector<std::vector<Vec3>> world;
   if (!insertAlongUvFaces(faces, asset, sourceBox, options, world, error)) return false;
   // A solid of those faces in the shape's axes, its scope fitted around it.
-  const Mat3 inverse = scope.axes.transpose();
-  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
-  for (const auto& f : world)
-    for (const Vec3& p : f) lo = lo.cwiseMin(inverse * p), hi = hi.cwiseMax(inverse * p);
   out = Part{};
-  out.scope = scope;  // keeps the colour, the projection, the place
-  out.scope.P = scope.axes * lo;
-  out.scope.S = hi - lo;
-  const double size = out.scope.S.maxCoeff();
-  for (int k = 0; k < 3; ++k)
-    if (out.scope.S[k] <= 1e-9 * size) out.scope.S[k] = 0.0;
-  const bool mirrored = scope.axes.determinant() < 0;
-  std::vector<Polygon3> local;
-  for (const auto& f : world) {
-    Polygon3 u;
-    for (const Vec3& p : f) {
-      const Vec3 l = inverse * p - lo;
-      Vec3 n;
-      for (int k = 0; k < 3; ++k) n[k] = out.scope.S[k] > 0 ? l[k] / out.scope.S[k] : 0.0;
-      u.push_back(n);
-    }
-    if (mirrored) std::reverse(u.begin(), u.end());
-    local.push_back(std::move(u));
-  }
+  const std::vector<Polygon3> local = fitScopeAroundWorldFaces(scope, scope.axes, world, out.scope);
   out.geom = arena.addPolyhedron(local);
   return true;
 }

@@ -104,37 +104,11 @@ bool signedPermutationOf(const Mat3& a, const Mat3& b) {
 
 // The shape with scope axes `axes` fitted around the geometry.
 void fit(const Scope& base, const Mat3& axes, const WorldGeometry& g, GeometryArena& arena, Part& out) {
-  const Mat3 inverse = axes.transpose();  // orthonormal (mirrored too)
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Polygon3& f : g.faces)
-    for (const Vec3& p : f) {
-      const Vec3 l = inverse * p;
-      lo = lo.cwiseMin(l), hi = hi.cwiseMax(l);
-    }
   out = Part{};
-  out.scope = base;  // keeps what is not geometry: the colour, the projection
-  out.scope.axes = axes;
-  out.scope.P = axes * lo;
-  out.scope.S = hi - lo;
-  const double extent = out.scope.S.maxCoeff();
-  for (int k = 0; k < 3; ++k)
-    if (out.scope.S[k] <= 1e-9 * extent) out.scope.S[k] = 0.0;
+  std::vector<Polygon3> faces = fitScopeAroundWorldFaces(base, axes, g.faces, out.scope);
   if (g.box && signedPermutationOf(axes, base.axes)) {
     out.geom = GeomRef{};  // still the scope box
     return;
-  }
-  const bool mirrored = axes.determinant() < 0;
-  std::vector<Polygon3> faces;
-  for (const Polygon3& f : g.faces) {
-    Polygon3 u;
-    for (const Vec3& p : f) {
-      const Vec3 l = inverse * p - lo;
-      Vec3 n;
-      for (int k = 0; k < 3; ++k) n[k] = out.scope.S[k] > 0 ? l[k] / out.scope.S[k] : 0.0;
-      u.push_back(n);
-    }
-    if (mirrored) std::reverse(u.begin(), u.end());  // counter-clockwise in the mirrored frame
-    faces.push_back(std::move(u));
   }
   // A one-face solid that lies in the new scope's XY plane is fgsg's polygon again.
   bool inPlane = g.kind == GeomKind::Polyhedron && faces.size() == 1 && !(out.scope.S.z() > 0);
@@ -154,6 +128,39 @@ Mat3 keepPolygonFrame(const Mat3& axes, const WorldGeometry& g) {
 }
 
 }  // namespace
+
+std::vector<Polygon3> fitScopeAroundWorldFaces(const Scope& base, const Mat3& axes,
+                                               const std::vector<Polygon3>& worldFaces, Scope& out) {
+  const Mat3 inverse = axes.transpose();  // orthonormal (mirrored too)
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Polygon3& f : worldFaces)
+    for (const Vec3& p : f) {
+      const Vec3 l = inverse * p;
+      lo = lo.cwiseMin(l), hi = hi.cwiseMax(l);
+    }
+  out = base;
+  out.axes = axes;
+  out.P = axes * lo;
+  out.S = hi - lo;
+  const double extent = out.S.maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    if (out.S[k] <= 1e-9 * extent) out.S[k] = 0.0;
+  const bool mirrored = axes.determinant() < 0;
+  std::vector<Polygon3> faces;
+  faces.reserve(worldFaces.size());
+  for (const Polygon3& f : worldFaces) {
+    Polygon3 u;
+    for (const Vec3& p : f) {
+      const Vec3 l = inverse * p - lo;
+      Vec3 n;
+      for (int k = 0; k < 3; ++k) n[k] = out.S[k] > 0 ? l[k] / out.S[k] : 0.0;
+      u.push_back(n);
+    }
+    if (mirrored) std::reverse(u.begin(), u.end());  // counter-clockwise in the mirrored frame
+    faces.push_back(std::move(u));
+  }
+  return faces;
+}
 
 bool lyingOnGround(const GeomRef& geom, const GeometryArena& arena) {
   if (geom.kind != GeomKind::Polyhedron || geom.count != 1) return false;

@@ -53,6 +53,13 @@ bool deleteHoles(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
 bool cleanupGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int what, double tolerance,
                      Part& out, std::string& error);
 
+// The scope `base` with axes `axes` (orthonormal, mirrored too) fitted around faces given in
+// world points (their bounding box in those axes; a side thinner than 1e-9 of the largest
+// is 0), and the faces in its unit box, counter-clockwise in a mirrored frame too. What is
+// not geometry (the colour, the projection) is kept from `base`.
+std::vector<Polygon3> fitScopeAroundWorldFaces(const Scope& base, const Mat3& axes,
+                                               const std::vector<Polygon3>& worldFaces, Scope& out);
+
 // CityEngine's initial shape in the `.cga` dialect is a ground face: a one-face
 // Polyhedron lying in its scope's XZ plane (y = 0, y its normal). The footprint
 // operations take it as they take fgsg's polygon and give their parts back as ground faces.
