@@ -51,11 +51,13 @@ export ASAN_OPTIONS="detect_leaks=1:verify_asan_link_order=0:allocator_may_retur
 export LSAN_OPTIONS="suppressions=$root/scripts/sanitize.supp:print_suppressions=0:use_tls=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$build"
-# A hang still ends: a test without its own limit stops after 600 s. A failing test runs
+# A hang still ends: a test without its own limit stops after 1 200 s (the "20000 random
+# traces on each real mesh" case takes 353 s of CPU when sanitized: past 600 s at -j2
+# under load twice, 2026-12-06 and 12-07). A failing test runs
 # once more (--repeat until-pass:2), its first output still shown: LeakSanitizer's tracer
 # crashed at exit under load before use_tls=0; a real report fails both runs. Tracer
 # crashes are counted at the end, so that one shows.
-ctest_args=(-j "$jobs" --output-on-failure --timeout 600 --repeat until-pass:2)
+ctest_args=(-j "$jobs" --output-on-failure --timeout 1200 --repeat until-pass:2)
 tracer_crashes() {
   echo "sanitize: LeakSanitizer tracer crashes retried: $(grep -c 'Tracer caught signal' "$build/sanitize-ctest.log" || true)"
 }
