@@ -140,12 +140,12 @@ struct Grammar {
 
   // `attrs`: (name, value as text) pairs, their Python types already checked against the
   // attributes' kinds by the package (python/fgsg/__init__.py); `seed` a whole number from
-  // 0 to 2^64 - 1 (checked there too).
+  // 0 to 2^64 - 1 (checked there too); `step` fgsg run's --step (0 to 2^31 - 1, checked there).
   std::shared_ptr<Result> generate(uint64_t seed, const std::vector<std::pair<std::string, std::string>>& attrs,
                                    const std::optional<std::string>& surface,
                                    std::optional<uint64_t> maxShapes, const std::string& engineName,
                                    const std::optional<std::string>& lots, std::optional<uint32_t> maxDepth,
-                                   std::optional<double> maxSeconds) {
+                                   std::optional<double> maxSeconds, std::optional<int32_t> step) {
     const auto engine = backend::parseEngine(engineName);
     if (!engine) throw py::value_error("engine must be 'jit' or 'interp', got '" + engineName + "'");
     rt::DeriveOptions options;
@@ -162,6 +162,7 @@ struct Grammar {
     }
     checkAttrs(attrs);
     options.attrOverrides = attrs;
+    options.parallelStep = step.value_or(-1);
     auto result = std::make_shared<Result>();
     std::string error;
     frontend::Diagnostics diags(&source);
@@ -223,6 +224,14 @@ struct Grammar {
       diags.error("R010", at, a < 0 ? key + ": " + problem : key + " = " + text + ": " + problem);
       throw CompileError{diagnosticList(diags, source.name)};
     }
+  }
+
+  // How many steps this L-system derives with these attribute values (N of `derive parallel
+  // N;`, or its attr's value), -1 for a grammar that is no L-system: what the package
+  // checks step= against. A bad attribute value is a GrammarError (R010), as in generate.
+  int derivationLength(const std::vector<std::pair<std::string, std::string>>& attrs) const {
+    checkAttrs(attrs);
+    return backend::parallelDerivationLength(module, attrs);
   }
 
   // name -> (kind, default): "num" (a float), "bool", "str" or "vec3" (3 floats).
@@ -396,7 +405,9 @@ PYBIND11_MODULE(_fgsg, m) {
       .def_static("from_file", &Grammar::fromFile, py::arg("path"), py::arg("start_rule") = "")
       .def_static("from_library", &Grammar::fromLibrary, py::arg("path"), py::arg("name"))
       .def("generate", &Grammar::generate, py::arg("seed"), py::arg("attrs"), py::arg("surface"),
-           py::arg("max_shapes"), py::arg("engine"), py::arg("lots"), py::arg("max_depth"), py::arg("max_seconds"))
+           py::arg("max_shapes"), py::arg("engine"), py::arg("lots"), py::arg("max_depth"), py::arg("max_seconds"),
+           py::arg("step"))
+      .def("derivation_length", &Grammar::derivationLength, py::arg("attrs"))
       .def_property_readonly("attrs", &Grammar::attrs)
       .def_property_readonly("attr_annotations", &Grammar::attrAnnotations)
       .def_property_readonly("name", [](const Grammar& g) { return g.source.name; })

@@ -18,6 +18,7 @@ import math
 import numbers
 import os
 import sys
+import warnings
 from typing import NamedTuple
 
 # The JIT (lib/libfgsg_llvm.so) resolves fgsg's own functions from the process: the
@@ -227,6 +228,7 @@ class Annotation(NamedTuple):
 
 
 _SEED_MAX = 2**64 - 1
+_STEP_MAX = 2**31 - 1  # fgsg run --step's range
 
 
 def _start_rule(value):
@@ -355,18 +357,24 @@ class Grammar:
         return f"<fgsg.Grammar {self.name!r} ({kind}, {len(self._native.attrs)} attrs)>"
 
     def generate(self, seed=1, attrs=None, surface=None, max_shapes=None, engine="jit", lots=None,
-                 max_depth=None, max_seconds=None):
+                 max_depth=None, max_seconds=None, step=None):
         """Derives the grammar: `seed` (an int from 0 to 2**64 - 1), attribute values by
         name (a number for a num attribute, a bool, a str, 3 numbers for a vec3), a surface
         mesh file replacing the grammar's, a shape limit, the engine ("jit", or "interp":
         the reference interpreter; the results are equal), and lots: a GeoJSON or
         OBJ/PLY/OFF file of footprints, derived once per lot (fgsg run --lots). The limits
         are fgsg run's --max-shapes, --max-depth and --max-seconds (None: their defaults);
-        a derivation that meets one keeps what it derived.
+        a derivation that meets one keeps what it derived. `step` (fgsg run --step): an
+        L-system (`derive parallel N;`) derived that many steps (an int from 0, its axiom,
+        to 2**31 - 1) instead of its length; past the length, the length with a
+        UserWarning; None: the whole length.
 
-        A value of the wrong type is a TypeError, a seed or limit out of range a ValueError;
-        an attribute the grammar does not declare is a GrammarError (R010)."""
+        A value of the wrong type is a TypeError, a seed, limit or step out of range a
+        ValueError (so is a step for a grammar that is no L-system); an attribute the
+        grammar does not declare is a GrammarError (R010)."""
         seed = _whole("seed", seed)
+        if step is not None:
+            step = _whole("step", step, _STEP_MAX)
         if max_shapes is not None:
             max_shapes = _whole("max_shapes", max_shapes)
         if max_depth is not None:
@@ -385,6 +393,21 @@ class Grammar:
             texts.append((key, _attr_text(key, value, declared.get(key))))
         if not isinstance(engine, str):
             raise TypeError(f"engine must be a str ('jit' or 'interp'), not {type(engine).__name__}")
+        if step is not None:
+            self._check_step(step, texts)
         return Result(_raising(self._native.generate, seed, texts,
                                None if surface is None else os.fspath(surface), max_shapes, engine,
-                               None if lots is None else os.fspath(lots), max_depth, max_seconds))
+                               None if lots is None else os.fspath(lots), max_depth, max_seconds, step))
+
+    def _check_step(self, step, texts):
+        """step= against the derivation's length with these attribute values (as fgsg run
+        --step): a ValueError for a grammar that is no L-system, a UserWarning past the
+        length (the length is derived: lpfg's animate mode stops there too)."""
+        length = _raising(self._native.derivation_length, texts)
+        if length < 0:
+            raise ValueError(f"step={step}: {self.name} is no L-system: its derivation is sequential "
+                             "(derive breadthfirst or depthfirst), which has no steps; step counts the "
+                             "steps of `derive parallel N;`")
+        if step > length:
+            warnings.warn(f"step={step} is past {self.name}'s derivation length {length}: step {length}, "
+                          "its last, is derived (as lpfg's animate mode stops there)", UserWarning, stacklevel=3)

@@ -89,4 +89,5 @@ class Grammar:
                  attrs: Optional[Mapping[str, Union[int, float, bool, str, Sequence[float]]]] = ...,
                  surface: Optional[Union[str, os.PathLike[str]]] = ..., max_shapes: Optional[int] = ...,
                  engine: str = ..., lots: Optional[Union[str, os.PathLike[str]]] = ...,
-                 max_depth: Optional[int] = ..., max_seconds: Optional[float] = ...) -> Result: ...
+                 max_depth: Optional[int] = ..., max_seconds: Optional[float] = ...,
+                 step: Optional[int] = ...) -> Result: ...
