@@ -4,7 +4,8 @@
 JOBS.json is a list of jobs (or {"jobs": [...]}); each job is an object
     {"grammar": "city.fgsg", "output": "out/lot-17.glb",        # required
      "seed": 17, "attrs": {"lot_width": 24}, "surface": "tile.off", "id": "lot-17",
-     "lots": "block-3.geojson"}                                   # footprints: fgsg run --lots
+     "lots": "block-3.geojson",                                   # footprints: fgsg run --lots
+     "step": 2}                                                   # an L-system's step: fgsg run --step
 ("library": "libcity.so" instead of "grammar": a grammar built by `fgsg compile`, whose
 compiled code runs; "name" if the file is not libNAME.so)
 with paths relative to the JOBS file's folder. The jobs are mapped over a dask.distributed
@@ -73,6 +74,7 @@ def load_jobs(path):
         if not isinstance(job.get("output"), str) or not job["output"]:
             raise ValueError(f"{path}: job {i} needs \"output\" (a path)")
         j = dict(job)
+        _check_step(path, i, j)
         j.setdefault("id", str(i))
         j.setdefault("seed", 1)
         j.setdefault("attrs", {})
@@ -95,6 +97,24 @@ def load_jobs(path):
                              "give each job its own output")
         seen[key] = j
     return out
+
+
+_STEP_MAX = 2**31 - 1  # fgsg run --step's range
+
+
+def _check_step(path, i, job):
+    """A job's "step" (fgsg run --step: an L-system derived that many steps) must be a
+    whole number from 0 to 2**31 - 1; null is the same as none (the whole derivation)."""
+    if "step" not in job:
+        return
+    step = job["step"]
+    if step is None:
+        del job["step"]  # hashed as a job without one: its output is the same
+        return
+    if isinstance(step, bool) or not isinstance(step, int) or not 0 <= step <= _STEP_MAX:
+        name = f"job {i}" + (f" ({job['id']!r})" if isinstance(job.get("id"), str) else "")
+        raise ValueError(f"{path}: {name}: \"step\" must be a whole number from 0 to {_STEP_MAX} "
+                         f"(the L-system's derivation step, as fgsg run --step), not {json.dumps(step)[:60]}")
 
 
 # Bump when what job_inputs hashes changes: every recorded output is then made again.
@@ -131,7 +151,7 @@ def _describe_file(path, grammar=False):
 def job_inputs(job):
     """A hash (hex sha256) of what a job's output is made from: the contents of its grammar
     (with the modules it imports) or library, surface and lots files, and its seed,
-    attributes and every other field but "id" and "output". A resumed batch skips a job
+    attributes, step and every other field but "id" and "output". A resumed batch skips a job
     only when its output was made from the same inputs. Assets a grammar loads are not
     hashed: --force after changing one."""
     described = {"inputs_version": _INPUTS_VERSION}
@@ -140,6 +160,10 @@ def job_inputs(job):
             continue
         if key in _FILE_FIELDS and isinstance(value, str) and value:
             described[key] = {"sha256": _describe_file(value, grammar=key == "grammar")}
+        elif key == "step":
+            # Not the bare value: a "step" written before the batch took it was ignored,
+            # and a job recorded with it so must run again.
+            described[key] = {"derivation_step": value}
         else:
             described[key] = value
     text = json.dumps(described, sort_keys=True, separators=(",", ":"), default=repr)
@@ -258,7 +282,7 @@ def run_job(job, version=None):
         grammar = (_grammar(path, True, job.get("name", ""), version) if job.get("library")
                    else _grammar(path, version=version))
         result = grammar.generate(seed=job["seed"], attrs=job["attrs"], surface=job.get("surface"),
-                                  lots=job.get("lots"))
+                                  lots=job.get("lots"), step=job.get("step"))
         os.makedirs(os.path.dirname(job["output"]) or ".", exist_ok=True)
         result.write(job["output"])
         outcome.update(ok=True, triangles=result.stats["triangles"], instances=result.stats["instances"])
@@ -486,7 +510,7 @@ class IgnoreSigint:
 def main(argv=None):
     parser = argparse.ArgumentParser(prog=os.environ.get("FGSG_BATCH_PROG", "python -m fgsg.batch"),
                                      description="Runs fgsg jobs on Dask (docs/scale.md).")
-    parser.add_argument("jobs", help="JOBS.json: a list of {grammar, output, seed, attrs, surface, id}")
+    parser.add_argument("jobs", help="JOBS.json: a list of {grammar, output, seed, attrs, surface, step, id}")
     parser.add_argument("--scheduler", help="a running dask scheduler, tcp://host:port (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 2,
                         help="LocalCluster worker processes (default: the cores)")
