@@ -94,6 +94,26 @@ std::vector<Vec3> alongUvGrid(const std::vector<double>& xs, const std::vector<d
   return out;
 }
 
+// Every corner lies on a face of the grid's boxes (within the grid, on one of its planes:
+// where the input's cuts cross the boxes' faces there are more corners than the grid's),
+// and every corner of the grid is one.
+void alongUvCornersOnGridFaces(const std::vector<std::vector<Vec3>>& faces, const std::vector<double>& xs,
+                               const std::vector<double>& ys, const std::vector<double>& zs) {
+  const auto on = [](double x, const std::vector<double>& values) {
+    return std::any_of(values.begin(), values.end(), [&](double v) { return std::abs(x - v) <= kAlongUvTol; });
+  };
+  const auto within = [](double x, const std::vector<double>& values) {
+    return alongUvWithin(x, values.front(), values.back());
+  };
+  alongUvCornersAre(
+      faces,
+      [&](const Vec3& p) {
+        return within(p.x(), xs) && within(p.y(), ys) && within(p.z(), zs) &&
+               (on(p.x(), xs) || on(p.y(), ys) || on(p.z(), zs));
+      },
+      alongUvGrid(xs, ys, zs));
+}
+
 }  // namespace
 
 TEST_CASE("insertAlongUV: a unit cube along a straight 10 x 2 quad tiled every 2.5 m", "[cga][insert_along_uv]") {
@@ -119,13 +139,7 @@ TEST_CASE("insertAlongUV: a unit cube along a straight 10 x 2 quad tiled every 2
     CHECK(std::abs(alongUvArea(out) - 58.0) <= kAlongUvTol);
     // The quad is cut into two triangles along a diagonal, which cuts the boxes' faces where
     // it crosses them: more corners, each on a box's face.
-    alongUvCornersAre(
-        out,
-        [](const Vec3& p) {
-          return alongUvWithin(p.x(), 0, 10) && alongUvWithin(p.y(), 0, 0.5) && alongUvWithin(p.z(), 0, 2) &&
-                 (alongUvIn(p.x(), {0, 2.5, 5, 7.5, 10}) || alongUvIn(p.y(), {0, 0.5}) || alongUvIn(p.z(), {0, 2}));
-        },
-        corners);
+    alongUvCornersOnGridFaces(out, {0, 2.5, 5, 7.5, 10}, {0, 0.5}, {0, 2});
   }
   SECTION("a negative height hangs the boxes below the quad, their faces still looking out") {
     options.height = -0.5;
@@ -259,13 +273,7 @@ TEST_CASE("insertAlongUV: uvs past the asset's v range and part tiles cut it", "
   REQUIRE(insertAlongUvFaces({alongUvGroundQuad(0, 3.5, 1.5, 0.5, 2, 0.25, 2)}, alongUvCube(), kUnitSourceBox,
                              options, out, error));
   // Corners on the boxes' faces (the cuts at x = 3.5 cross their diagonals: more corners).
-  alongUvCornersAre(
-      out,
-      [](const Vec3& p) {
-        return alongUvWithin(p.x(), 0, 3.5) && alongUvWithin(p.y(), 0, 0.5) && alongUvWithin(p.z(), 0, 1.5) &&
-               (alongUvIn(p.x(), {0, 1, 3, 3.5}) || alongUvIn(p.y(), {0, 0.5}) || alongUvIn(p.z(), {0, 1.5}));
-      },
-      alongUvGrid({0, 1, 3, 3.5}, {0, 0.5}, {0, 1.5}));
+  alongUvCornersOnGridFaces(out, {0, 1, 3, 3.5}, {0, 0.5}, {0, 1.5});
   // Cut open where the uvs end: the top alone covers the quad, 3.5 x 1.5.
   double top = 0.0;
   for (const auto& f : out)
@@ -355,13 +363,7 @@ TEST_CASE("insertAlongUV: the 10 x 2 quad cut into 300 x 300 faces gives the sam
   CHECK(std::abs(alongUvVolume(out) - 10.0) <= kAlongUvTol);
   CHECK(std::abs(alongUvArea(out) - 58.0) <= kAlongUvTol);
   // Every corner on a box's face (the walls' pieces have corners at any height).
-  alongUvCornersAre(
-      out,
-      [](const Vec3& p) {
-        return alongUvWithin(p.x(), 0, 10) && alongUvWithin(p.y(), 0, 0.5) && alongUvWithin(p.z(), 0, 2) &&
-               (alongUvIn(p.x(), {0, 2.5, 5, 7.5, 10}) || alongUvIn(p.y(), {0, 0.5}) || alongUvIn(p.z(), {0, 2}));
-      },
-      alongUvGrid({0, 2.5, 5, 7.5, 10}, {0, 0.5}, {0, 2}));
+  alongUvCornersOnGridFaces(out, {0, 2.5, 5, 7.5, 10}, {0, 0.5}, {0, 2});
 
   SECTION("one more face over the uvs of face 45 150 (column 150, row 150) overlaps it") {
     faces.push_back(faces[150 * kCuts + 150]);
