@@ -29,7 +29,7 @@ namespace fgsg::cli {
 namespace {
 
 const char* kCommandList =
-    ":derive [N]  :seed N  :set name=value  :lots [FILE]  :load FILE  :save FILE  :export FILE  "
+    ":derive [N]  :seed N  :step N|off  :set name=value  :lots [FILE]  :load FILE  :save FILE  :export FILE  "
     ":stats  :ir RULE  :rules  :reset  :help  :quit";
 
 const char* kReplHelp = R"(Type declarations and rules to add them to the session grammar: a rule for a
@@ -39,6 +39,9 @@ unbalanced brackets or ending in `~>`, `->`, `=`, `,`, an operator or `\` contin
 next line (an empty line ends it).
   :derive [N]       derive from the axiom (N: --max-depth) and print the statistics
   :seed N           the random seed of later derivations (default 1)
+  :step N           an L-system's later derivations stop after step N (0: the axiom),
+                    like fgsg run --step; past its length, the length (a warning)
+  :step off         back to the whole derivation (:step alone says which is in force)
   :set name=value   override an attribute, like fgsg run --set
   :lots [FILE]      derive once per lot of a GeoJSON or mesh file, like fgsg run --lots
                     (no FILE: back to one derivation)
@@ -189,6 +192,23 @@ class Repl {
       uint64_t seed = 0;
       if (!parseUnsigned(arg, seed)) return fail(":seed takes a whole number from 0 to 18446744073709551615, got '" + arg + "'");
       session_.setSeed(seed);
+      return true;
+    }
+    if (name == ":step") {
+      if (arg.empty()) {
+        const int32_t step = session_.step();
+        std::cout << (step < 0 ? std::string("step off: the whole derivation") : "step " + std::to_string(step))
+                  << "\n";
+        return true;
+      }
+      if (arg == "off") {
+        session_.setStep(-1);
+        return true;
+      }
+      uint64_t step = 0;
+      if (!parseUnsigned(arg, step) || step > 2147483647)
+        return fail(":step takes a whole number from 0 to 2147483647 or off, got '" + arg + "'");
+      session_.setStep(static_cast<int32_t>(step));
       return true;
     }
     if (name == ":set") {

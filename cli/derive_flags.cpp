@@ -44,9 +44,9 @@ void stepFlag(CommandLine& cl, rt::DeriveOptions& derive) {
 }
 
 bool checkStepFlag(const ir::Module& m, const std::string& file, rt::DeriveOptions& derive, std::string& error,
-                   std::string& warning) {
+                   std::string& warning, const std::string& flag) {
   if (derive.parallelStep < 0) return true;
-  const std::string step = "--step " + std::to_string(derive.parallelStep);
+  const std::string step = flag + " " + std::to_string(derive.parallelStep);
   int length = -1;
   try {
     length = backend::parallelDerivationLength(m, derive.attrOverrides);
@@ -56,7 +56,7 @@ bool checkStepFlag(const ir::Module& m, const std::string& file, rt::DeriveOptio
   if (length < 0) {
     error = step + ": " + file +
             " is no L-system: its derivation is sequential (derive breadthfirst or depthfirst), which has no "
-            "steps; --step counts the steps of `derive parallel N;`";
+            "steps; " + flag + " counts the steps of `derive parallel N;`";
     return false;
   }
   if (derive.parallelStep > length) {

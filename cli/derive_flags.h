@@ -24,9 +24,10 @@ void surfaceFlags(CommandLine& cl, rt::DeriveOptions& derive);
 void stepFlag(CommandLine& cl, rt::DeriveOptions& derive);
 // --step against the compiled grammar `file`: false with `error` for a grammar that is no
 // L-system. A step past the derivation length is the
-// length, as lpfg's animate mode stops there: `warning` then says so.
+// length, as lpfg's animate mode stops there: `warning` then says so. `flag` names the
+// setting in both (the REPL's `:step`).
 bool checkStepFlag(const ir::Module& m, const std::string& file, rt::DeriveOptions& derive, std::string& error,
-                   std::string& warning);
+                   std::string& warning, const std::string& flag = "--step");
 
 // --instancing auto|on|off, --group-by symbol|rule|label|none, --split-output DIR: the
 // output's layout (runtime/output/scene.h, cli/scene_output.h). A glTF output is a scene

@@ -7,6 +7,7 @@
 #include "backend/interp/eval.h"
 #include "backend/interp/interpreter.h"
 #include "backend/native/code_loader.h"
+#include "cli/derive_flags.h"
 #include "cli/repl_statements.h"
 #include "frontend/parse.h"
 #include "ir/printer.h"
@@ -157,6 +158,15 @@ bool Session::derive(uint32_t maxDepth, rt::DeriveResult& result, size_t& triang
   opt.lots = lots_;
   opt.lotsName = lotsName_;
   if (maxDepth > 0) opt.maxDepth = maxDepth;
+  opt.parallelStep = step_;
+  {
+    std::string error, warning;
+    if (!checkStepFlag(*module_, "the session grammar", opt, error, warning, ":step")) {
+      err << "error: " << error << " (:step off to derive it)\n";
+      return false;
+    }
+    if (!warning.empty()) err << "warning: " << warning << "\n";
+  }
   rt::AssetLibrary assets;
   for (const char* dir : {".", "assets"}) {
     assets.addSearchDir(dir);
@@ -229,6 +239,7 @@ void Session::reset() {
   assembled_ = Assembled{};
   priority_ = 0;
   seed_ = 1;
+  step_ = -1;
   overrides_.clear();
   lots_.clear();
   lotsName_.clear();

@@ -61,6 +61,10 @@ class Session {
 
   bool setAttribute(const std::string& name, const std::string& value, std::string& error);
   void setSeed(uint64_t seed) { seed_ = seed; }
+  // :step N: later derivations of an L-system stop after step N (fgsg run --step); -1
+  // (:step off): its whole length.
+  void setStep(int32_t step) { step_ = step; }
+  int32_t step() const { return step_; }
   // :lots FILE: the axiom derives once per lot of a GeoJSON file (as fgsg run --lots);
   // an empty path goes back to one derivation. False with the file's problem in `error`.
   bool setLots(const std::string& path, std::string& error);
@@ -91,6 +95,7 @@ class Session {
   Assembled assembled_;                 // and the text it was compiled from
   int priority_ = 0;                    // the `priority N:` in force for the next rule
   uint64_t seed_ = 1;
+  int32_t step_ = -1;  // rt::DeriveOptions::parallelStep
   backend::Engine engine_ = backend::Engine::Jit;
   // One code loader (and JIT) for the session, made at the first :derive: its optimising
   // compiles for the cache run while the user types.
