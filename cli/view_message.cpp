@@ -155,7 +155,7 @@ bool parseFieldElement(const Json& j, PageFieldElement& out, std::string& reason
     if (!onlyFields(j, {"op", "kind", "position", "direction", "strength"}, "fieldElement add", reason)) return false;
   } else if (name == "move") {
     out.op = PageFieldElement::Op::Move;
-    if (!onlyFields(j, {"op", "index", "position"}, "fieldElement move", reason)) return false;
+    if (!onlyFields(j, {"op", "index", "position", "drag"}, "fieldElement move", reason)) return false;
   } else if (name == "delete") {
     out.op = PageFieldElement::Op::Delete;
     if (!onlyFields(j, {"op", "index"}, "fieldElement delete", reason)) return false;
@@ -211,6 +211,28 @@ bool parseFieldElement(const Json& j, PageFieldElement& out, std::string& reason
       return false;
     }
     out.hasStrength = true;
+  }
+  if (const auto drag = j.find("drag"); drag != j.end()) {
+    if (!drag->is_number_unsigned() || drag->get<uint64_t>() == 0 || drag->get<uint64_t>() > kMaxPageDrag) {
+      reason = "fieldElement move: \"drag\" must be a whole number from 1 to " + std::to_string(kMaxPageDrag);
+      return false;
+    }
+    out.drag = drag->get<uint64_t>();
+  }
+  return true;
+}
+
+// {"type":"undo"|"redo", "history":"paint"|"field"}: the paint strokes' (the default) or
+// the field design edits'.
+bool parseUndoRedo(const Json& j, const std::string& kind, PageRequest& out, std::string& reason) {
+  out.kind = kind == "undo" ? PageRequest::Kind::Undo : PageRequest::Kind::Redo;
+  if (!onlyFields(j, {"history"}, kind, reason)) return false;
+  const auto history = j.find("history");
+  if (history == j.end()) return true;
+  if (*history == "field") out.history = PageRequest::History::Field;
+  else if (*history != "paint") {
+    reason = kind + ": \"history\" must be \"paint\" or \"field\"";
+    return false;
   }
   return true;
 }
@@ -298,10 +320,7 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
     out.kind = PageRequest::Kind::FieldElement;
     return parseFieldElement(j, out.element, reason);
   }
-  if (kind == "undo" || kind == "redo") {
-    out.kind = kind == "undo" ? PageRequest::Kind::Undo : PageRequest::Kind::Redo;
-    return onlyFields(j, {}, kind, reason);
-  }
+  if (kind == "undo" || kind == "redo") return parseUndoRedo(j, kind, out, reason);
   if (kind != "set") {
     reason = "unknown message type " + quoted(kind);
     return false;

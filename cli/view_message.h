@@ -8,10 +8,13 @@
 //   {"type":"paint", "texture":"NAME", "stroke":N, "dabs":[[x,y,z], ...], "radius":R,
 //    "strength":S, "value":G, "erase":false}                       (a brush stroke, #49)
 //   {"type":"undo"}, {"type":"redo"}                               (the last paint stroke)
+//   {"type":"undo", "history":"field"}, {"type":"redo", "history":"field"}
+//                                    (the last field design edit, view_field_history.h)
 //   {"type":"field"}                                   (the field overlay, view_field.h)
 //   {"type":"fieldElement", "op":"add", "kind":"wedge", "position":[x,y,z],
 //    "direction":[dx,dy,dz] (regular only), "strength":S}     (a design element added, #49)
-//   {"type":"fieldElement", "op":"move", "index":N, "position":[x,y,z]}
+//   {"type":"fieldElement", "op":"move", "index":N, "position":[x,y,z], "drag":D}
+//                                    (the moves of one drag share D: one undo step)
 //   {"type":"fieldElement", "op":"strength", "index":N, "strength":S}
 //   {"type":"fieldElement", "op":"delete", "index":N}         (view_field_edit.h)
 // Whether each name is an attribute of the grammar, and each value one of its kind, the
@@ -38,6 +41,7 @@ constexpr double kMaxPageCoordinate = 1e9;  // |x|, beyond any surface's size
 constexpr uint32_t kMaxPageStep = 2147483647;  // `derive parallel N;`'s largest N
 constexpr double kMaxPageElementStrength = 1000;  // |strength| of a field design element
 constexpr uint32_t kMaxPageElementIndex = 1000000;  // beyond any design block's elements
+constexpr uint64_t kMaxPageDrag = (uint64_t(1) << 53) - 1;  // a drag's number: a JavaScript safe integer
 
 struct PageSeed {
   double point[3] = {0, 0, 0};
@@ -68,11 +72,14 @@ struct PageFieldElement {
   double direction[3] = {1, 0, 0};
   bool hasStrength = false;        // add (optional), strength
   double strength = 1;
+  uint64_t drag = 0;               // move (optional, 1 to kMaxPageDrag): the moves of one drag
 };
 
 struct PageRequest {
   enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field, FieldElement };
   Kind kind = Kind::Set;
+  enum class History { Paint, Field };
+  History history = History::Paint;  // undo, redo: whose last edit
   bool hasAttrs = false;  // set: the page's values replace all earlier ones
   std::vector<std::pair<std::string, std::string>> attrs;  // name, value as --set writes it
   bool hasSeed = false;

@@ -227,39 +227,36 @@ void ViewSession::editFiles(uint64_t page, const PageRequest& request) {
       break;
     }
     case PageRequest::Kind::Paint: done = paint_.paint(request.paint, file, reason); break;
-    case PageRequest::Kind::Undo: done = paint_.undo(file, reason); break;
-    case PageRequest::Kind::Redo: done = paint_.redo(file, reason); break;
+    case PageRequest::Kind::Undo:
+    case PageRequest::Kind::Redo: {
+      const bool undo = request.kind == PageRequest::Kind::Undo;
+      if (request.history == PageRequest::History::Paint) {
+        done = undo ? paint_.undo(file, reason) : paint_.redo(file, reason);
+        break;
+      }
+      done = undo ? fieldHistory_.undo(options_.file, reason) : fieldHistory_.redo(options_.file, reason);
+      file = fs::absolute(options_.file).string();
+      break;
+    }
     case PageRequest::Kind::FieldElement:
-      done = editFieldElement(request.element, reason);
+      done = editFieldElement(page, request.element, reason);
       file = fs::absolute(options_.file).string();
       break;
     default: break;
   }
   if (!done) return reject(page, reason);
   edited(page, file);
-  if (request.kind == PageRequest::Kind::FieldElement) recompile_ = true;  // the grammar itself changed
+  if (request.kind == PageRequest::Kind::FieldElement || request.history == PageRequest::History::Field)
+    recompile_ = true;  // the grammar itself changed
 }
 
-bool ViewSession::editFieldElement(const PageFieldElement& edit, std::string& reason) {
+bool ViewSession::editFieldElement(uint64_t page, const PageFieldElement& edit, std::string& reason) {
   if (fieldName_.empty()) {
     reason = "fieldElement: no field overlay shown yet (ask for it: {\"type\":\"field\"})";
     return false;
   }
-  // The grammar is written in place of itself: never through a link to somewhere else.
-  std::error_code ec;
-  if (fs::is_symlink(fs::symlink_status(options_.file, ec))) {
-    reason = "fieldElement: " + fs::path(options_.file).filename().string() +
-             " is a symbolic link; fgsg view writes only the grammar's own file";
-    return false;
-  }
-  std::ifstream in(options_.file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) {
-    reason = "fieldElement: cannot read " + options_.file;
-    return false;
-  }
-  const std::string text = bytes.str();
+  std::string text;
+  if (!readGrammarToEdit(options_.file, "fieldElement", text, reason)) return false;
   std::string error, rewritten;
   if (!editFieldDesignText(options_.file, text, fieldName_, edit, fieldBounds_, rewritten, reason)) {
     reason = "fieldElement: " + reason;
@@ -269,6 +266,7 @@ bool ViewSession::editFieldElement(const PageFieldElement& edit, std::string& re
     reason = "fieldElement: " + error;
     return false;
   }
+  fieldHistory_.record(text, rewritten, page, edit.drag);
   return true;
 }
 

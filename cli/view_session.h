@@ -23,6 +23,7 @@
 //                   ("step" with --steps only, 0 to the derivation's length)
 //                  {"type":"pick", "instance":N}
 //                  {"type":"seeds", ...}, {"type":"paint", ...}, {"type":"undo"|"redo"}, {"type":"field"}
+//                  {"type":"undo"|"redo", "history":"field"}: the last design element edit
 //                  {"type":"fieldElement", ...}: a design element of the first field edited in
 //                   the grammar's text (view_field_edit.h), then compiled again
 //                                                          (checked first: view_message.h)
@@ -33,6 +34,7 @@
 #include "backend/engine.h"
 #include "backend/engine/surface_reuse.h"
 #include "cli/view_field_edit.h"
+#include "cli/view_field_history.h"
 #include "cli/view_paint.h"
 #include "cli/view_seed_file.h"
 #include "cli/view_server.h"
@@ -110,8 +112,9 @@ class ViewSession {
   // derived again, the page told. Under mutex_.
   void edited(uint64_t page, const std::string& file);
   void editFiles(uint64_t page, const PageRequest& request);  // seeds, paint, undo, redo, fieldElement
-  // A design element's edit written into the grammar (view_field_edit.h). Under mutex_.
-  bool editFieldElement(const PageFieldElement& edit, std::string& reason);
+  // A design element's edit written into the grammar (view_field_edit.h), kept for undo
+  // (view_field_history.h). Under mutex_.
+  bool editFieldElement(uint64_t page, const PageFieldElement& edit, std::string& reason);
   void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
@@ -156,6 +159,7 @@ class ViewSession {
   std::shared_ptr<const std::pair<std::string, std::string>> surface_;  // the last compile's
   std::string fieldName_;        // the field the last overlay showed ("": none yet)
   FieldEditBounds fieldBounds_;  // its surface's box, for element edits
+  ViewFieldHistory fieldHistory_;  // the element edits' undo and redo
 
   std::thread worker_;
 };

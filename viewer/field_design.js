@@ -5,7 +5,10 @@
 // its strength. Each edit is one {"type":"fieldElement"} message; the server rewrites that
 // element's text in the grammar (cli/view_field_edit.h), compiles again and sends the new
 // overlay and model. While a drag lasts, a move goes out whenever the last one's overlay
-// has come back, so the streamlines follow the handle.
+// has come back, so the streamlines follow the handle; its moves carry the drag's number,
+// so that the server keeps them as one step. Undo and Redo (or Ctrl+Z, Ctrl+Shift+Z or
+// Ctrl+Y in this mode, viewer.js) ask the server to write back the grammar's text before
+// (after) the last edit ({"type":"undo", "history":"field"}, cli/view_field_history.h).
 import * as THREE from 'three';
 
 const kindColour = { regular: 0x9be37a, wedge: 0xff9d3c, trisector: 0x4aa8ff, node: 0xf06cf0, centre: 0xfff06a,
@@ -19,10 +22,11 @@ export function createFieldDesign(ctx, overlay) {
   scene.add(handles);
   let elements = [];   // the overlay's, as the grammar now has them
   let selected = -1;
-  let drag = null;     // {index, position, sent, moved}
+  let drag = null;     // {index, position, sent, moved, id}
+  let drags = 0;       // numbers the drags: the moves of one are one undo step
   let inFlight = false;  // an edit whose overlay has not come back yet
   let down = null;
-  state.design = { elements: [], selected: -1, edits: 0, overlays: 0, timing: [] };
+  state.design = { elements: [], selected: -1, edits: 0, overlays: 0, undos: 0, redos: 0, timing: [] };
 
   function draw() {
     for (const m of [...handles.children]) {
@@ -71,7 +75,7 @@ export function createFieldDesign(ctx, overlay) {
     const i = handleAt(e);
     if (i < 0) return;
     selected = i;
-    drag = { index: i, position: elements[i].position, sent: elements[i].position, moved: false };
+    drag = { index: i, position: elements[i].position, sent: elements[i].position, moved: false, id: ++drags };
     controls.enabled = false;  // the drag moves the element, not the camera
     canvas.setPointerCapture(e.pointerId);
     draw();
@@ -84,7 +88,7 @@ export function createFieldDesign(ctx, overlay) {
     drag.moved = true;
     if (!inFlight) {
       drag.sent = drag.position;
-      edit({ op: 'move', index: drag.index, position: drag.position });
+      edit({ op: 'move', index: drag.index, position: drag.position, drag: drag.id });
     }
     draw();
   });
@@ -93,10 +97,10 @@ export function createFieldDesign(ctx, overlay) {
     const click = down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) <= 4;
     down = null;
     if (drag) {
-      const { index, position, sent, moved } = drag;
+      const { index, position, sent, moved, id } = drag;
       drag = null;
       controls.enabled = true;
-      if (moved && position.some((v, k) => v !== sent[k])) edit({ op: 'move', index, position });
+      if (moved && position.some((v, k) => v !== sent[k])) edit({ op: 'move', index, position, drag: id });
       draw();
       return;
     }
@@ -121,6 +125,18 @@ export function createFieldDesign(ctx, overlay) {
         !(e.target instanceof HTMLInputElement)) remove();
   });
   $('design-delete').addEventListener('click', remove);
+  // The element an undo brings back or takes away may not be the selected one's index.
+  function step(type) {
+    if (drag) return;  // the drag's own moves are still going out
+    state.design[type === 'undo' ? 'undos' : 'redos'] += 1;
+    selected = -1;
+    ctx.send({ type, history: 'field' });
+    draw();
+  }
+  const undo = () => step('undo');
+  const redo = () => step('redo');
+  $('design-undo').addEventListener('click', undo);
+  $('design-redo').addEventListener('click', redo);
   $('design-strength').addEventListener('change', () => {
     const strength = Number($('design-strength').value);
     if (selected < 0 || selected >= elements.length || !Number.isFinite(strength)) return;
@@ -128,6 +144,8 @@ export function createFieldDesign(ctx, overlay) {
   });
 
   return {
+    undo,
+    redo,
     // The Design mode shows the overlay (asked for once) and the handles.
     modeChanged() {
       if (state.mode === 'design') overlay.showIfHidden();
@@ -144,7 +162,7 @@ export function createFieldDesign(ctx, overlay) {
       if (drag && drag.index >= elements.length) drag = null;
       if (drag && drag.moved && drag.position.some((v, k) => v !== drag.sent[k])) {  // the drag went on meanwhile
         drag.sent = drag.position;
-        edit({ op: 'move', index: drag.index, position: drag.position });
+        edit({ op: 'move', index: drag.index, position: drag.position, drag: drag.id });
       }
       draw();
     },

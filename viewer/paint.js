@@ -1,8 +1,8 @@
 // Painting the grammar's textures on the surface (#49): in the Paint mode a drag on the
 // surface is a brush stroke. Its dabs (surface points) go to the server in pieces
 // ({"type":"paint"}), which paints the texels within the radius in the texture's own UV
-// space, writes the PNG and derives again; Undo and Redo (or Ctrl+Z, Ctrl+Shift+Z) step
-// through whole strokes.
+// space, writes the PNG and derives again; Undo and Redo (or Ctrl+Z, Ctrl+Shift+Z or
+// Ctrl+Y outside the Design mode) step through whole strokes.
 import * as THREE from 'three';
 
 const round = (v) => Number(v.toFixed(6));
@@ -88,17 +88,15 @@ export function createPaint(ctx) {
     controls.enabled = true;
   });
 
+  // The server keeps the strokes (cli/view_paint.h); the keys are viewer.js's, by mode.
   const undo = () => ctx.send({ type: 'undo' });
   const redo = () => ctx.send({ type: 'redo' });
   $('paint-undo').addEventListener('click', undo);
   $('paint-redo').addEventListener('click', redo);
-  window.addEventListener('keydown', (e) => {
-    if (e.target instanceof HTMLInputElement || !(e.ctrlKey || e.metaKey) || e.key.toLowerCase() !== 'z') return;
-    e.preventDefault();
-    (e.shiftKey ? redo : undo)();
-  });
 
   return {
+    undo,
+    redo,
     // The surface's textures (its "surface" message): the paintable ones to choose from.
     textures(list) {
       const select = $('paint-texture');

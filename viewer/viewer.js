@@ -254,6 +254,16 @@ const tools = createViewTools(ctx);
 const fieldOverlay = createFieldOverlay(ctx);
 const steps = createDerivationSteps(ctx);  // with --steps: an L-system's slider
 const fieldDesign = createFieldDesign(ctx, fieldOverlay);
+// Undo and redo: one history per kind of edit, kept by the server ({"type":"undo"}):
+// the Design mode's keys step through the field's element edits, the other modes' through
+// paint strokes (each panel has its own buttons).
+window.addEventListener('keydown', (e) => {
+  const key = e.key.toLowerCase();
+  if (e.target instanceof HTMLInputElement || !(e.ctrlKey || e.metaKey) || (key !== 'z' && key !== 'y')) return;
+  e.preventDefault();
+  const history = state.mode === 'design' ? fieldDesign : paint;
+  (key === 'y' || e.shiftKey ? history.redo : history.undo)();
+});
 // What the browser tests read besides `state`.
 state.hooks = {
   wireframeCount: () => tools.wireframeCount(),

@@ -3,10 +3,14 @@
 // moves it, the strength box and the Delete key change and remove it. After each edit the
 // grammar file holds exactly the expected text (only that element's words changed), the
 // overlay's singularities are where the elements are and the same as `fgsg field
-// --singularities` finds in the written file.
+// --singularities` finds in the written file. Then four undos (Ctrl+Z and the Undo button)
+// give back the text before each edit byte for byte (the drag's moves being one step) and
+// the overlay's singularities before it, and four redos (Ctrl+Shift+Z, Ctrl+Y, the Redo
+// button) the text and singularities after each.
 // usage: node view_field_design.js FGSG_BINARY SOURCE_DIR
 'use strict';
 const { spawn, execFileSync } = require('child_process');
+const crypto = require('crypto');
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
@@ -41,9 +45,11 @@ async function main() {
     const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
     page.on('pageerror', (e) => console.error('page error: ' + e.message));
     const sent = [];  // the fieldElement messages the page sent
+    const steps = [];  // its undo and redo messages
     page.on('websocket', (ws) => {
       ws.on('framesent', (f) => {
         if (typeof f.payload === 'string' && f.payload.includes('"fieldElement"')) sent.push(JSON.parse(f.payload));
+        if (typeof f.payload === 'string' && /"type":"(undo|redo)"/.test(f.payload)) steps.push(JSON.parse(f.payload));
       });
       ws.on('framereceived', (f) => {
         if (typeof f.payload === 'string' && /"type":"(rejected|error)"/.test(f.payload))
@@ -81,6 +87,14 @@ async function main() {
          'the same as fgsg field --singularities lists for the written file');
     };
     const text = () => fs.readFileSync(grammar, 'utf8');
+    // The file's bytes and the overlay after each edit, for undo and redo to give back.
+    const digest = () => crypto.createHash('sha256').update(fs.readFileSync(grammar)).digest('hex');
+    const states = [];
+    const record = async () => states.push({
+      text: text(), digest: digest(), elements: JSON.stringify(await get(() => window.fgsgViewer.design.elements)),
+      singularities: await get(() => window.fgsgViewer.field.singularities),
+    });
+    await record();
 
     // 1. A click on the surface adds a wedge there.
     await page.selectOption('#design-kind', 'wedge');
@@ -95,6 +109,7 @@ async function main() {
     let wedge = (await get(() => window.fgsgViewer.design.elements))[1];
     ok(wedge.kind === 'wedge' && wedge.position.join() === rounded(added).join(), 'the overlay lists the wedge there');
     await singular([['trisector', [2, 0]], ['wedge', added]]);
+    await record();
 
     // 2. Dragging its handle moves it: moves go out while the drag lasts, the last where it ended.
     const [fx, fy] = await screen(wedge.position);
@@ -118,12 +133,15 @@ async function main() {
     const last = moves[moves.length - 1].position;
     ok(moves.length >= 1 && moves.every((m) => m.index === 1) && Math.hypot(last[0] + 3, last[1] - 2) < 0.05,
        `${moves.length} move messages, the last to ${last}`);
+    ok(Number.isInteger(moves[0].drag) && moves[0].drag > 0 && moves.every((m) => m.drag === moves[0].drag),
+       `the moves carry the drag's number (${moves[0].drag}): one undo step`);
     await wait((p) => {
       const e = window.fgsgViewer.design.elements[1];
       return e && e.position.every((v, k) => Math.abs(v - p[k]) < 1e-9);
     }, rounded(last));
     ok(text() === grammarText(` wedge at ${at(last)};`), 'the wedge\'s `at` now says ' + at(last));
     await singular([['trisector', [2, 0]], ['wedge', last]]);
+    await record();
 
     // 3. The strength box.
     ok((await get(() => window.fgsgViewer.design.selected)) === 1, 'the dragged wedge is selected');
@@ -132,6 +150,7 @@ async function main() {
     await wait(() => window.fgsgViewer.design.elements[1].strength === 2.5);
     ok(text() === grammarText(` wedge at ${at(last)} strength 2.5;`), 'strength 2.5 written after the wedge\'s words');
     await singular([['trisector', [2, 0]], ['wedge', last]]);
+    await record();
 
     // 4. Delete: the file as it was.
     await page.evaluate(() => document.activeElement.blur());  // Delete in the strength box edits the box
@@ -139,6 +158,37 @@ async function main() {
     await wait(() => window.fgsgViewer.design.elements.length === 1);
     ok(text() === grammarText(''), 'Delete gives back the file as it was, byte for byte');
     await singular([['trisector', [2, 0]]]);
+    await record();
+
+    // 5. Undo x4, redo x4: each gives back the state before (after) its edit — the file's
+    // bytes (its digest), the overlay's elements and its singularities to 1e-4.
+    const edits = ['add', 'drag', 'strength', 'delete'];
+    const sameSingularities = (shown, want) => shown.length === want.length && shown.every((s, k) =>
+      s.kind === want[k].kind && s.position.every((v, i) => Math.abs(v - want[k].position[i]) < 1e-4));
+    const stepTo = async (how, state, what) => {
+      const overlays = await get(() => window.fgsgViewer.design.overlays);
+      await how();
+      await wait(([n, elements]) => window.fgsgViewer.design.overlays > n &&
+        JSON.stringify(window.fgsgViewer.design.elements) === elements, [overlays, state.elements]);
+      ok(digest() === state.digest && text() === state.text, `${what}: the grammar's bytes as they were (sha256 ${
+        state.digest.slice(0, 12)})`);
+      const shown = await get(() => window.fgsgViewer.field.singularities);
+      ok(sameSingularities(shown, state.singularities), `${what}: the overlay's singularities as they were (${
+        shown.map((s) => s.kind + ' ' + s.position.map((v) => v.toFixed(4))).join('; ')})`);
+    };
+    const key = (combo) => () => page.keyboard.press(combo);
+    const button = (id) => () => page.click(id);
+    const undoWith = [key('Control+z'), button('#design-undo'), key('Control+z'), button('#design-undo')];
+    for (let k = 4; k >= 1; --k) await stepTo(undoWith[4 - k], states[k - 1], `undo of the ${edits[k - 1]}`);
+    const redoWith = [key('Control+Shift+z'), key('Control+y'), button('#design-redo'), key('Control+Shift+z')];
+    for (let k = 1; k <= 4; ++k) await stepTo(redoWith[k - 1], states[k], `redo of the ${edits[k - 1]}`);
+    ok(steps.length === 8 && steps.every((m, k) => m.type === (k < 4 ? 'undo' : 'redo') && m.history === 'field'),
+       'the keys and buttons sent {"type":"undo"|"redo","history":"field"}');
+    const refusedBefore = (await get(() => window.fgsgViewer.rejected)) || 0;
+    await page.keyboard.press('Control+y');
+    await wait((n) => window.fgsgViewer.rejected === n + 1, refusedBefore);
+    ok((await get(() => window.fgsgViewer.lastRejected)) === 'redo: no field edit to redo' && digest() === states[4].digest,
+       'a redo past the last edit is refused and writes nothing');
 
     // The last element cannot go (a design needs one): refused, the file unchanged.
     await page.evaluate(() => { window.fgsgViewer.rejected = 0; });

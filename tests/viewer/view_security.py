@@ -437,7 +437,9 @@ def field_element_attacks():
     """8. Design elements edited from the page (#49, item 3) rewrite the grammar itself, so
     every malformed, out-of-range or out-of-place fieldElement message must be refused with
     a reason and leave the grammar (and every other file) byte for byte as it was; a good one
-    changes only its element's words; a grammar that is a symbolic link is never written."""
+    changes only its element's words; a grammar that is a symbolic link is never written.
+    Undo and redo of element edits ({"type":"undo","history":"field"}) take no other field,
+    give back the exact text, and never overwrite a grammar saved outside since."""
     work = tempfile.mkdtemp(prefix="fgsg-view-field-security-")
     folder, outside = os.path.join(work, "grammar"), os.path.join(work, "outside")
     os.makedirs(folder)
@@ -519,6 +521,22 @@ def field_element_attacks():
             '{"type":"fieldElement","op":"delete","index":5}',
             '{"type":"fieldElement","op":"delete","index":0,"position":[0,0,0]}',
             '{"type":"fieldElement","op":"add","kind":"%s","position":[0,0,0]}' % ("w" * 70000),
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":0}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":-1}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":"1"}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":1.5}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":9007199254740992}',
+            '{"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":[1]}',
+            '{"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"drag":1}',
+            '{"type":"undo","history":"field"}',  # nothing to undo yet
+            '{"type":"redo","history":"field"}',
+            '{"type":"undo","history":"grammar"}',
+            '{"type":"undo","history":"../g.fgsg"}',
+            '{"type":"undo","history":["field"]}',
+            '{"type":"undo","history":{"field":1}}',
+            '{"type":"undo","history":"field","file":"/etc/passwd"}',
+            '{"type":"redo","history":"field","text":"Axiom ~> I(\\"x\\");"}',
+            '{"type":"undo","history":"field","count":100}',
         ]
         for message in bad:
             ws.send(message)
@@ -534,6 +552,27 @@ def field_element_attacks():
                   "only the wedge's `at` words changed")
         after = contents()
         check(all(after[p] == before[p] for p in before if p != grammar), "no other file changed")
+        moved = text.replace("wedge at (-2, 0, 0)", "wedge at (-1, 1, 0)")
+        ws.send('{"type":"undo","history":"field"}')
+        written = ws.next_text("written", 30)
+        check(written is not None and written["file"] == "g.fgsg" and contents()[grammar] == text.encode(),
+              "undo writes the grammar back byte for byte")
+        ws.send('{"type":"redo","history":"field"}')
+        written = ws.next_text("written", 30)
+        check(written is not None and contents()[grammar] == moved.encode(), "redo writes the move again")
+        # Saved from an editor meanwhile: an undo must not overwrite it.
+        saved = moved + "// saved outside the viewer\n"
+        with open(grammar, "w") as f:
+            f.write(saved)
+        ws.send('{"type":"undo","history":"field"}')
+        reply = ws.next_text("rejected", 30)
+        check(reply is not None and "changed outside the viewer" in reply.get("reason", ""),
+              "undo after an outside save is refused: %s" % (reply and reply.get("reason")))
+        ws.send('{"type":"redo","history":"field"}')
+        reply = ws.next_text("rejected", 30)
+        check(reply is not None and "no field edit to redo" in reply.get("reason", ""),
+              "and the history is gone: %s" % (reply and reply.get("reason")))
+        check(contents()[grammar] == saved.encode(), "the grammar saved outside stays byte for byte")
         ws.close()
         check(server.poll() is None, "the design server is alive after the attacks")
         stop(server)

@@ -155,3 +155,38 @@ TEST_CASE("view messages: bad seeds and strokes are refused with a reason (#49)"
   CHECK(refused(dabs + "]}").find("dabs") != std::string::npos);
   CHECK(refused(R"({"type":"undo","steps":3})").find("unknown field") != std::string::npos);
 }
+
+TEST_CASE("view messages: field edits undone and redone, a drag's moves numbered (#49)") {
+  PageRequest r;
+  std::string reason;
+  REQUIRE(parsePageRequest(R"({"type":"undo"})", r, reason));
+  CHECK(r.history == PageRequest::History::Paint);  // as before: the paint strokes'
+  REQUIRE(parsePageRequest(R"({"type":"undo","history":"field"})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Undo);
+  CHECK(r.history == PageRequest::History::Field);
+  REQUIRE(parsePageRequest(R"({"type":"redo","history":"paint"})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Redo);
+  CHECK(r.history == PageRequest::History::Paint);
+  REQUIRE(parsePageRequest(R"({"type":"fieldElement","op":"move","index":1,"position":[0,1,0],"drag":7})", r, reason));
+  CHECK(r.element.drag == 7);
+  REQUIRE(parsePageRequest(R"({"type":"fieldElement","op":"move","index":1,"position":[0,1,0]})", r, reason));
+  CHECK(r.element.drag == 0);
+  REQUIRE(parsePageRequest(R"({"type":"fieldElement","op":"move","index":1,"position":[0,1,0],"drag":9007199254740991})",
+                           r, reason));
+  CHECK(r.element.drag == 9007199254740991ull);
+
+  CHECK(refused(R"({"type":"undo","history":"grammar"})").find("\"paint\" or \"field\"") != std::string::npos);
+  CHECK(refused(R"({"type":"undo","history":["field"]})").find("\"paint\" or \"field\"") != std::string::npos);
+  CHECK(refused(R"({"type":"redo","history":"field","count":2})").find("unknown field") != std::string::npos);
+  CHECK(refused(R"({"type":"undo","history":"field","file":"g.fgsg"})").find("unknown field") != std::string::npos);
+  const std::string move = R"({"type":"fieldElement","op":"move","index":0,"position":[0,0,0],"drag":)";
+  CHECK(refused(move + "0}").find("\"drag\"") != std::string::npos);
+  CHECK(refused(move + "-1}").find("\"drag\"") != std::string::npos);
+  CHECK(refused(move + "1.5}").find("\"drag\"") != std::string::npos);
+  CHECK(refused(move + "\"1\"}").find("\"drag\"") != std::string::npos);
+  CHECK(refused(move + "9007199254740992}").find("\"drag\"") != std::string::npos);
+  CHECK(refused(R"({"type":"fieldElement","op":"add","kind":"wedge","position":[0,0,0],"drag":1})")
+            .find("unknown field") != std::string::npos);
+  CHECK(refused(R"({"type":"fieldElement","op":"strength","index":0,"strength":2,"drag":1})")
+            .find("unknown field") != std::string::npos);
+}
