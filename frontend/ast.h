@@ -279,6 +279,20 @@ struct AxiomDecl {  // axiom: S(20,0,12) footprint;
   Successor successor;
 };
 
+// A `.cga` file's function or const (CityEngine's functions; the file itself inlines them
+// where used): the body with its k-th parameter written as the Ident "#k" (no CGA name
+// can hold a '#'), so that an importer's `alias.name(args)` takes a copy in its place
+// (frontend/imports.cpp). A body that does not translate keeps its first error instead,
+// reported where an importer calls it.
+struct FunctionDecl {
+  SourceRange range;  // the name in its declaration
+  std::string name;
+  size_t params = 0;
+  ExprPtr body;  // null: `errorCode`, `error` at `errorAt`
+  std::string errorCode, error;
+  SourceRange errorAt;
+};
+
 struct Program {
   std::string fileName;
   std::vector<ImportDecl> imports;
@@ -293,6 +307,7 @@ struct Program {
   std::vector<IgnoreDecl> ignores;
   std::vector<CollisionDecl> collisions;
   std::vector<AxiomDecl> axioms;
+  std::vector<FunctionDecl> functions;  // a .cga file's, for its importers
   // lpfg's and L-Py's `maximum depth: N` of the decomposition and homomorphism sections
   // (default 1, as L-Py's): how many times their rules are applied in a row.
   int decompositionDepth = 1;

@@ -1,6 +1,7 @@
 #include "frontend/imports.h"
 
 #include "frontend/builtins.h"
+#include "frontend/imported_functions.h"
 #include "frontend/parse.h"
 #include "runtime/io/read_input.h"
 
@@ -84,6 +85,7 @@ class Qualifier {
         for (auto& v : item.values) expr(v, nullptr);
     }
     for (auto& r : m_.rules) rule(r);
+    for (auto& f : m_.functions) expr(f.body, nullptr);  // its parameters are "#k": no clash
   }
 
  private:
@@ -348,6 +350,7 @@ class Importer {
       dropProgramWide(mod);
       FileAnchor(mKey).run(mod);
       if (!d.alias.empty()) Qualifier(mod, d.alias).run();
+      inlineImportedFunctions(program, d.alias, mod, d.path, diags_);
       for (auto& r : mod.rules) r.imported = true;
       applySettings(d, mod);
       const Origin from{"'" + d.path + "' (imported at line " + std::to_string(file_.locate(d.range.begin.line).second) + ")",

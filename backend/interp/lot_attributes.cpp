@@ -1,8 +1,12 @@
 // Each lot's attribute values (--lots): its properties set the attrs named like them, so a
 // grammar reads a lot's height or usage as it reads any attr, and Lot.area / Lot.prop(...)
-// (the attrs "lot:area", "lot:NAME" the analyzer adds for them).
+// (the attrs "lot:area", "lot:NAME" the analyzer adds for them). A `.cga` grammar's
+// initialShape.name and initialShape.origin.* are such attrs too ("lot:initialShape.name"
+// ...), set here from the lot itself (docs/cga.md, "initialShape").
 #include "backend/interp/eval.h"
 
+#include "runtime/cga/cga.h"
+#include "runtime/cga/ground_face.h"
 #include "runtime/derivation.h"
 #include "runtime/planar.h"
 
@@ -16,6 +20,46 @@ std::string numberText(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
+}
+
+// CityEngine's initialShape.name for a lot: its "name" property (a string), else the
+// feature's id, else where it is in the file ("feature 3", a mesh's "face 3").
+std::string initialShapeNameOf(const rt::Lot& lot) {
+  for (const auto& [key, value] : lot.strings)
+    if (key == "name") return value;
+  if (!lot.id.empty()) return lot.id;
+  return (lot.isFace ? "face " : "feature ") + std::to_string(lot.feature);
+}
+
+// initialShape.origin.p{x,y,z} and .o{x,y,z}: the lot's object frame (the derivation's
+// own, rt::cga::initialShapeFrame: origin at the first corner of the outline's first edge,
+// x along it, y up) in world coordinates, its turn as Euler angles in degrees: a lot lies
+// on the ground, so only o.y, counter-clockwise from east seen from above.
+void addInitialShapeOrigin(const ir::Module& m, const rt::Lot& lot,
+                           std::vector<std::pair<std::string, std::string>>& overrides) {
+  static const char* const kMembers[] = {"px", "py", "pz", "ox", "oy", "oz"};
+  bool asked = false;
+  for (const char* k : kMembers) asked = asked || m.findAttr(std::string("lot:initialShape.origin.") + k) >= 0;
+  if (!asked) return;
+  auto onGround = [](const std::vector<Eigen::Vector2d>& ring) {  // as Derivation::deriveLots
+    std::vector<Eigen::Vector2d> xz;
+    for (const Eigen::Vector2d& p : ring) xz.emplace_back(p.x(), -p.y());
+    return xz;
+  };
+  std::vector<std::vector<Eigen::Vector2d>> holes;
+  for (const auto& hole : lot.holes) holes.push_back(onGround(hole));
+  rt::GeometryArena arena;
+  rt::cga::Part part;
+  std::string error;
+  if (!rt::cga::footprint(rt::Scope{}, onGround(lot.outer), holes, arena, part, error)) return;  // deriving says it
+  const rt::Scope frame = rt::cga::initialShapeFrame(part.scope, part.geom, arena);
+  const rt::Vec3 x = frame.axes.col(0);
+  const double turn = std::atan2(-x.z(), x.x()) * 180.0 / M_PI;
+  const double values[] = {frame.P.x(), frame.P.y(), frame.P.z(), 0.0, turn, 0.0};
+  for (size_t k = 0; k < 6; ++k) {
+    const std::string name = std::string("lot:initialShape.origin.") + kMembers[k];
+    if (m.findAttr(name) >= 0) overrides.push_back({name, numberText(values[k] == 0.0 ? 0.0 : values[k])});
+  }
 }
 
 }  // namespace
@@ -38,6 +82,8 @@ std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::Deri
       if (m.findAttr("lot_area") >= 0) overrides.push_back({"lot_area", numberText(area)});
       if (m.findAttr("lot:area") >= 0) overrides.push_back({"lot:area", numberText(area)});
     }
+    if (m.findAttr("lot:initialShape.name") >= 0) overrides.push_back({"lot:initialShape.name", initialShapeNameOf(lot)});
+    addInitialShapeOrigin(m, lot, overrides);
     try {
       slots.push_back(attributeSlots(m, overrides));
     } catch (const DeriveError& e) {

@@ -279,7 +279,8 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
       e->text = text;
       return e;
     }
-    static const char* const kAttributes[] = {"split", "comp", "initialShape", "seedian", "geometry", "material",
+    if (object == "initialShape") return initialShapeAttribute(member, at);
+    static const char* const kAttributes[] = {"split", "comp", "seedian", "geometry", "material",
                                               "pivot", "trim", "world", "object", "street", "uv"};
     for (const char* a : kAttributes)
       if (object == a) {
@@ -295,6 +296,40 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
   }
   error("E010", at, "unknown name '" + text + "' (not a parameter of this rule, an attr, a const or a function)");
   return nullptr;
+}
+
+// initialShape.name / .startRule / .origin.p{x,y,z} / .origin.o{x,y,z}. The start rule is
+// this file's (a constant: every lot starts with it); the others are the lot's, which
+// `--lots` sets per lot as the attrs of Lot.prop("initialShape.name", ...) and so on
+// (backend/interp/lot_attributes.cpp); their defaults are the square lot's without
+// --lots: no name, the origin at its first corner (0, 0, 0), its first edge east (o = 0).
+ExprPtr Translator::initialShapeAttribute(const std::string& member, const SourceRange& at) {
+  if (member == "startRule") {
+    ExprPtr e = makeExpr(ExprKind::String, at);
+    e->text = startRuleOverride_.empty() ? declaredStartRule_ : startRuleOverride_;
+    if (e->text.empty() && rules_.count("Lot")) e->text = "Lot";  // startRule()'s choice
+    return e;
+  }
+  static const char* const kLotMembers[] = {"name",      "origin.px", "origin.py", "origin.pz",
+                                            "origin.ox", "origin.oy", "origin.oz"};
+  if (std::find(std::begin(kLotMembers), std::end(kLotMembers), member) == std::end(kLotMembers)) {
+    error("E010", at,
+          "unknown attribute 'initialShape." + member +
+              "' (initialShape.name, .startRule, .origin.px|py|pz, .origin.ox|oy|oz)");
+    return nullptr;
+  }
+  ExprPtr e = makeExpr(ExprKind::Member, at);
+  e->object = "Lot";
+  e->text = "prop";
+  e->hasCall = true;
+  e->args.push_back(makeExpr(ExprKind::String, at));
+  e->args.back()->text = "initialShape." + member;
+  if (member == "name") {
+    e->args.push_back(makeExpr(ExprKind::String, at));
+  } else {
+    e->args.push_back(number(0, at));
+  }
+  return e;
 }
 
 // CityEngine's occlusion and context queries: fgsg's Shape.overlaps("intra", "tower") ...,
@@ -505,8 +540,11 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     }
   const size_t dot = fn.find('.');
   if (dot != std::string::npos && importAliases_.count(fn.substr(0, dot))) {
-    notSupported(nameAt, "calling an imported function ('" + fn + "')");
-    return nullptr;
+    // An imported function: a call that the import replaces by the function's body
+    // (frontend/imported_functions.cpp), which also checks that it exists and its arguments.
+    ExprPtr e = callExpr(fn, std::move(args), at);
+    e->range.begin = nameAt.begin;
+    return e;
   }
   if (dot != std::string::npos) {
     notSupported(nameAt, "the function '" + fn + "'");

@@ -121,6 +121,45 @@ void Translator::run(P::CgaFileContext* file) {
     }
   }
   startRule();
+  exportFunctions();
+}
+
+// Each function and const with its parameters as the Idents "#0", "#1" ... (ast.h:
+// FunctionDecl), for an importer's `alias.f(x)`. Translated quietly: a function no one
+// calls may hold an error, which an importer's call of it reports (frontend/imports.cpp).
+void Translator::exportFunctions() {
+  Diagnostics* const loud = diags_;
+  for (const auto& [fnName, def] : functions_) {
+    Diagnostics quiet(nullptr);
+    diags_ = &quiet;
+    std::vector<ExprPtr> params;
+    Env env;
+    for (size_t k = 0; k < def.params.size(); ++k) {
+      params.push_back(makeExpr(ExprKind::Ident, def.range));
+      params.back()->text = "#" + std::to_string(k);
+      env.bound[def.params[k]] = params.back().get();
+    }
+    FunctionDecl f;
+    f.range = def.range;
+    f.name = fnName;
+    f.params = def.params.size();
+    currentParams_ = nullptr;
+    inlining_ = {fnName};
+    f.body = value(def.body, env);
+    inlining_.clear();
+    if (quiet.hasErrors()) {
+      f.body.reset();
+      for (const Diagnostic& d : quiet.all())
+        if (d.severity == Severity::Error) {
+          f.errorCode = d.code;
+          f.error = d.message;
+          f.errorAt = d.range;
+          break;
+        }
+    }
+    program_.functions.push_back(std::move(f));
+  }
+  diags_ = loud;
 }
 
 // Names first, so that a rule may use a function, attr or rule declared after it.
@@ -151,6 +190,8 @@ void Translator::collect(P::CgaFileContext* file) {
         error("E019", rangeOf(r->name), "'" + name + "' has rules with " + std::to_string(rules_[name]) + " and " +
                                             std::to_string(n) + " parameters");
       rules_[name] = n;
+      for (auto* note : a->annotation())  // initialShape.startRule may be read before it
+        if (note->name->getText() == "StartRule" && declaredStartRule_.empty()) declaredStartRule_ = name;
     }
   }
 }

@@ -72,7 +72,7 @@ struct Env {
 class Translator {
  public:
   Translator(Program& program, Diagnostics& diags, const std::string& fileName, std::string startRule)
-      : program_(program), diags_(diags), fileName_(fileName), startRuleOverride_(std::move(startRule)) {}
+      : program_(program), diags_(&diags), fileName_(fileName), startRuleOverride_(std::move(startRule)) {}
 
   void run(P::CgaFileContext* file);
 
@@ -86,6 +86,7 @@ class Translator {
   ExprPtr call(const std::string& name, const SourceRange& at, const SourceRange& nameAt,
                const std::vector<P::ExprContext*>& args, const Env& env);
   ExprPtr name(const std::string& name, const SourceRange& at, const Env& env);
+  ExprPtr initialShapeAttribute(const std::string& member, const SourceRange& at);
   // Whether `e` draws random numbers (Rand).
   static bool isRandom(const Expr& e);
 
@@ -100,13 +101,13 @@ class Translator {
                                           const std::string& declName);
 
   void error(const std::string& code, const SourceRange& at, const std::string& message) {
-    diags_.error(code, at, message);
+    diags_->error(code, at, message);
   }
   void warning(const std::string& code, const SourceRange& at, const std::string& message) {
-    diags_.warning(code, at, message);
+    diags_->warning(code, at, message);
   }
   void notSupported(const SourceRange& at, const std::string& what) {
-    diags_.error("E801", at, what + " (CityEngine CGA; not supported yet)");
+    diags_->error("E801", at, what + " (CityEngine CGA; not supported yet)");
   }
 
  private:
@@ -130,6 +131,7 @@ class Translator {
   void startRule();
   void importDecl(P::ImportDeclContext* ctx);
   void importSetting(P::FunctionDeclContext* ctx);
+  void exportFunctions();
 
   // cga_operations.cpp
   struct Sequence;
@@ -163,7 +165,7 @@ class Translator {
  private:
   friend struct SequenceAccess;
   Program& program_;
-  Diagnostics& diags_;
+  Diagnostics* diags_;  // exportFunctions() points it at a quiet list for a while
   std::string fileName_;
   std::string startRuleOverride_;
   std::map<std::string, Function> functions_;
@@ -172,6 +174,7 @@ class Translator {
   std::set<std::string> importAliases_;
   std::vector<std::string> inlining_;  // functions being inlined (recursion check)
   std::string startRule_;              // @StartRule
+  std::string declaredStartRule_;      // the first @StartRule, known from collect() on
   SourceRange startRange_;
   int auxCount_ = 0;
   std::set<std::string> warnedAssets_;

@@ -1,0 +1,94 @@
+// The `.cga` dialect's calls of an imported file's functions (`F.windowWidth(3)`,
+// `F.floorCount`) and its initialShape attributes: what compiles, and the located errors
+// of misuse. The values both engines compute are the corpus's (tests/cga/corpus/150_*, 151_*).
+#include "ir/ir.h"
+#include "ir/pipeline.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+using namespace fgsg;
+
+namespace {
+
+struct ImportedFunctionsCompiled {
+  bool ok = false;
+  std::string messages;
+};
+
+ImportedFunctionsCompiled compileImporting(const std::string& text) {
+  const std::string dir = "/tmp/fgsg_cga_imported_functions_test";
+  std::system(("mkdir -p " + dir).c_str());
+  FILE* f = std::fopen((dir + "/lib.cga").c_str(), "w");
+  std::fputs(
+      "attr floorHeight = 3\n"
+      "const margin = 1\n"
+      "windowWidth(n) = n * 0.5 + margin\n"
+      "height = 2 * floorHeight\n"
+      "broken(x) = x + nosuch\n",
+      f);
+  std::fclose(f);
+  ImportedFunctionsCompiled c;
+  frontend::SourceFile file = frontend::SourceFile::make(dir + "/main.cga", text);
+  frontend::Diagnostics diags(&file);
+  ir::Module module;
+  c.ok = ir::compileSource(file, module, diags);
+  std::ostringstream out;
+  diags.print(out);
+  c.messages = out.str();
+  return c;
+}
+
+bool says(const ImportedFunctionsCompiled& c, const std::string& text) {
+  return c.messages.find(text) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("cga imported functions: calls compile, misuse is located at the call", "[cga][dialect]") {
+  const std::string head = "import F : \"lib.cga\"\nF.floorHeight = 4\n@StartRule\nLot --> ";
+  const auto ok = compileImporting(head + "extrude(F.height) s(F.windowWidth(2), '1, '1) X.\n");
+  INFO(ok.messages);
+  CHECK(ok.ok);
+  // A function of the importer that calls an imported one.
+  CHECK(compileImporting("import F : \"lib.cga\"\ntwice(k) = 2 * F.windowWidth(k)\n@StartRule\nLot --> "
+                         "extrude(twice(1)) X.\n")
+            .ok);
+
+  const auto unknown = compileImporting(head + "extrude(F.windowWith(2)) X.\n");
+  CHECK_FALSE(unknown.ok);
+  CHECK(says(unknown, "main.cga:4:17: error[E062]: the module 'lib.cga' has no function 'windowWith'; did you "
+                      "mean 'F.windowWidth'?"));
+  const auto arity = compileImporting(head + "extrude(F.windowWidth(1, 2)) X.\n");
+  CHECK_FALSE(arity.ok);
+  CHECK(says(arity, "main.cga:4:17: error[E016]: 'F.windowWidth' takes 1 argument, got 2"));
+  const auto bare = compileImporting(head + "extrude(F.windowWidth) X.\n");
+  CHECK_FALSE(bare.ok);
+  CHECK(says(bare, "main.cga:4:17: error[E016]: 'F.windowWidth' takes 1 argument, got 0 (write F.windowWidth(...))"));
+  const auto extra = compileImporting(head + "extrude(F.height(1)) X.\n");
+  CHECK(says(extra, "main.cga:4:17: error[E016]: 'F.height' takes 0 arguments, got 1"));
+  // A body with an error says it where it is written, once, and where it is called.
+  const auto broken = compileImporting(head + "extrude(F.broken(1) + F.broken(2)) X.\n");
+  CHECK_FALSE(broken.ok);
+  CHECK(says(broken, "lib.cga:5:17: error[E010]: unknown name 'nosuch'"));
+  CHECK(says(broken, "main.cga:4:17: note: 'F.broken' is called here"));
+  const size_t first = broken.messages.find("error[E010]");
+  CHECK(broken.messages.find("error[E010]", first + 1) == std::string::npos);  // said once
+  // A function the library does not use is not an error of the library's own.
+  CHECK(compileImporting(head + "X.\n").ok);
+}
+
+TEST_CASE("cga initialShape attributes: known members compile, others are located errors", "[cga][dialect]") {
+  const auto ok = compileImporting(
+      "@StartRule\nLot --> report(initialShape.name + initialShape.startRule, initialShape.origin.px + "
+      "initialShape.origin.oy) X.\n");
+  INFO(ok.messages);
+  CHECK(ok.ok);
+  const auto bad = compileImporting("@StartRule\nLot --> report(\"k\", initialShape.origin.qx) X.\n");
+  CHECK_FALSE(bad.ok);
+  CHECK(says(bad, "main.cga:2:21: error[E010]: unknown attribute 'initialShape.origin.qx' (initialShape.name, "
+                  ".startRule, .origin.px|py|pz, .origin.ox|oy|oz)"));
+}
