@@ -131,6 +131,8 @@ const CommandInfo kCommands[] = {
      "Translate(\"rel\" or \"abs\", \"scope\", \"pivot\", \"object\" or \"world\", x, y, z)", nullptr},
     {CommandId::ShapeOperation, "Rotate", 5, 5, BodyRule::None,
      "Rotate(\"rel\" or \"abs\", \"scope\", \"pivot\", \"object\" or \"world\", ax, ay, az)", nullptr},
+    {CommandId::ShapeOperation, "SetPivot", 2, 2, BodyRule::None,
+     "SetPivot(\"xyz\" or \"yzx\" or \"zxy\", cornerIndex)", nullptr},
     {CommandId::ShapeOperation, "DeleteHoles", 0, 0, BodyRule::None, "DeleteHoles()", nullptr},
     {CommandId::ShapeOperation, "ReverseNormals", 0, 0, BodyRule::None, "ReverseNormals()", nullptr},
     {CommandId::ShapeOperation, "ResetGeometry", 0, 0, BodyRule::None, "ResetGeometry()", nullptr},

@@ -43,6 +43,8 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
     return pick({{"rel", 0}, {"abs", 1}}, word, value, allowed);
   if ((command == "Translate" || command == "Rotate") && k == 1)
     return pick({{"scope", 0}, {"pivot", 1}, {"object", 2}, {"world", 3}}, word, value, allowed);
+  // setPivot's axisMap: runtime/cga/shape_operations.h's order codes.
+  if (command == "SetPivot" && k == 0) return pick({{"xyz", 0}, {"yzx", 1}, {"zxy", 2}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
   // InsertAlongUV's asset is any file name (the lowering makes it the op's asset), then
   // the height's direction and alignment as runtime/cga/insert_along_uv.h's options.

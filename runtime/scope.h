@@ -35,6 +35,10 @@ struct Scope {
   // Color(r, g, b): the colour of the instances placed from this scope on, inherited by
   // the shapes it creates; `colored` false: each instance takes its symbol's colour.
   bool colored = false;
+  // CityEngine's pivot (setPivot): 1 + the index of the derivation's pivot frame this shape
+  // and the shapes it creates have; 0: the start shape's object system. In the padding
+  // after `colored`: the scope's size, which compiled code is built for, stays the same.
+  uint16_t pivot = 0;
   std::array<float, 3> color{0.8f, 0.8f, 0.8f};
   int32_t colorIndex = 0;  // ABOP's `'`: the turtle's colour index (0: Color or the symbols' colours)
   // Texture(...): 1 + the index of the derivation's texture projection the leaves output
@@ -68,6 +72,7 @@ struct Scope {
 
 // Compiled code reads and writes P and axes in place (backend/codegen/direct_codegen.cpp).
 static_assert(sizeof(Vec3) == 24 && sizeof(Mat3) == 72, "Eigen's fixed-size types hold their doubles");
+static_assert(sizeof(Scope) == 208, "rt::Scope's size: compiled libraries check it (runtime/abi.h scopeSize)");
 
 // T(x, y, z) on the plane: the origin moves by x X + y Y + z Z. Written out operation by
 // operation, so compiled code repeats it bit for bit (the build turns off floating-point

@@ -7,6 +7,7 @@
 #include "runtime/cga/shape_operations.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -188,8 +189,8 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
   } else if (name == "Translate" || name == "Rotate") {
     // translate / rotate(rel|abs, system, x, y, z) (CityEngine's op_translate and
     // op_rotate, docs/cga.md): the scope (its geometry with it) moved or turned about its
-    // origin in the axes of the scope (0), the pivot (1: fgsg keeps no pivot of its own,
-    // so the object's), the object (2: the start shape's frame) or the world (3).
+    // origin in the axes of the scope (0), the pivot (1: setPivot's frame, else the
+    // object's), the object (2: the start shape's frame) or the world (3).
     const bool absolute = a[0] != 0;
     const int system = static_cast<int>(a[1]);
     part = rt::cga::Part{st.scope, st.geom, false, 0};
@@ -209,7 +210,7 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
         const rt::Vec3 v(a[2], a[3], a[4]);
         part.scope.P = absolute ? v : rt::Vec3(st.scope.P + v);
       } else if (name == "Translate") {
-        const rt::Scope& frame = d.objectFrame();
+        const rt::Scope& frame = system == 1 ? d.pivotFrame(st.scope) : d.objectFrame();
         const rt::Vec3 v = frame.axes * rt::Vec3(a[2], a[3], a[4]);
         part.scope.P = absolute ? rt::Vec3(frame.P + v) : rt::Vec3(st.scope.P + v);
       } else {
@@ -217,12 +218,26 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
         if (world) {
           part.scope.axes = absolute ? turn : rt::Mat3(turn * st.scope.axes);
         } else {
-          const rt::Scope& frame = d.objectFrame();
+          const rt::Scope& frame = system == 1 ? d.pivotFrame(st.scope) : d.objectFrame();
           const rt::Mat3 r = frame.axes * turn;
           part.scope.axes = absolute ? r : rt::Mat3(r * (frame.axes.transpose() * st.scope.axes));
         }
       }
     }
+  } else if (name == "SetPivot") {
+    // setPivot(axisMap, cornerIndex) (op_setPivot): the pivot at a corner of the scope,
+    // kept for this shape and the shapes it creates; the scope becomes its frame.
+    const double corner = a[1];
+    if (!(corner == std::floor(corner) && corner >= 0 && corner <= 7)) {
+      std::ostringstream message;
+      message << "setPivot in rule '" << (ex.symbol < d.module().symbols.size() ? d.module().symbols[ex.symbol].name : "axiom")
+              << "': the corner index " << corner << " is not a whole number from 0 to 7";
+      throw DeriveError{op.loc, "R002", message.str()};
+    }
+    rt::Scope pivot;
+    ok = rt::cga::setPivot(st.scope, st.geom, d.arena(), static_cast<int>(a[0]), static_cast<int>(corner), part, pivot,
+                           error);
+    if (ok) part.scope.pivot = d.addPivot(pivot, op.loc);
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
   } else if (name == "Envelope" || name == "EnvelopePerEdge") {

@@ -106,6 +106,12 @@ class Derivation final : public QueryHost {
   // axes of the scope returned; translate's and rotate's `object` and `pivot`): a lot's
   // first corner and edge (lots.cpp), else the world's frame. Worked out on first use.
   const rt::Scope& objectFrame();
+  // CityEngine's pivot of a shape with this scope (translate's and rotate's `pivot`): the
+  // frame setPivot gave it or the shape it came from (scope.pivot), else objectFrame().
+  const rt::Scope& pivotFrame(const rt::Scope& scope);
+  // Keeps a frame setPivot made for the start shape being derived: the scope.pivot that
+  // names it (R002 at `at` past 65 535 of them, the most a scope can name).
+  uint16_t addPivot(const rt::Scope& frame, ir::Loc at);
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
   // or reaches past float range); I("none") adds nothing.
@@ -358,6 +364,7 @@ class Derivation final : public QueryHost {
   rt::GeomRef objectStartGeom_;
   bool objectFrameKnown_ = false;
   rt::Scope objectFrame_;
+  std::vector<rt::Scope> pivots_;  // setPivot's frames of the start shape being derived
   uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)
   std::vector<std::pair<int, ShapeQueue>> buckets_;
   std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor

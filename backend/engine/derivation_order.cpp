@@ -274,9 +274,10 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
                          const State& outer, Exec& ex, Frame& f, const rt::Scope::Place* place) {
   State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope, {}};
-  // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour and
-  // the split and comp indices (those of this split, when it is one).
+  // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour, the
+  // pivot (setPivot's) and the split and comp indices (those of this split, when it is one).
   inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;
+  inner.scope.pivot = outer.scope.pivot;
   inner.scope.place = place ? *place : outer.scope.place;
   const uint64_t outerNode = enterBody(ex);
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);

@@ -51,7 +51,8 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"reverseNormals", "ReverseNormals"},     {"resetGeometry", "ResetGeometry"},
       {"cleanupGeometry", "CleanupGeometry"},   {"primitiveQuad", "PrimitiveQuad"},
       {"primitiveCube", "PrimitiveCube"},       {"primitiveCylinder", "PrimitiveCylinder"},
-      {"primitiveSphere", "PrimitiveSphere"},   {"primitiveDisk", "PrimitiveDisk"}};
+      {"primitiveSphere", "PrimitiveSphere"},   {"primitiveDisk", "PrimitiveDisk"},
+      {"setPivot", "SetPivot"}};
   return names;
 }
 
@@ -103,6 +104,14 @@ bool Translator::shapeOperation(P::CallOperationContext* op, const Env& env, std
     std::string allowed;
     if (!shapeOperationWord(fgsgName, 0, selectorWord(argCtx[0]), code, allowed)) {
       error("E028", rangeOf(argCtx[0]), "envelope's direction is normal or world.up, not '" + argCtx[0]->getText() + "'");
+      return true;
+    }
+  }
+  if (fgsgName == "SetPivot") {  // op_setPivot's axisMap is one of three selectors
+    double code = 0;
+    std::string allowed;
+    if (!shapeOperationWord(fgsgName, 0, selectorWord(argCtx[0]), code, allowed)) {
+      error("E028", rangeOf(argCtx[0]), "setPivot's axisMap is xyz, yzx or zxy, not '" + argCtx[0]->getText() + "'");
       return true;
     }
   }

@@ -41,6 +41,15 @@ bool mirrorScope(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
 bool mirrorGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const bool flip[3], Part& out,
                     std::string& error);
 
+// setPivot(axisMap, corner) (op_setPivot; set_pivot.cpp): the pivot at scope corner `corner`
+// (0..3 around the bottom from the origin along x first, 4..7 above them), its axes the
+// scope's in the order axisMap names (0 xyz, 1 yzx: x along the scope's z, y along x;
+// 2 zxy: x along y, y along z) at corner 0, elsewhere turned to point into the scope (y
+// along the same line, right-handed). `out` is the shape with the pivot's frame as scope
+// around the same box, its geometry where it was; `pivot` the frame (P and axes).
+bool setPivot(const Scope& scope, const GeomRef& geom, GeometryArena& arena, int axisMap, int corner, Part& out,
+              Scope& pivot, std::string& error);
+
 // reverseNormals(): every face's corners in the opposite order. deleteHoles(): each face's
 // outline alone. resetGeometry(): the geometry becomes the scope box.
 // cleanupGeometry(what, tolerance), tolerance from 0 to 1 (op_cleanupGeometry: 1 m, 10 degrees,
