@@ -44,7 +44,7 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCommand, "Center", nullptr, "Moves the scope along the selected axes so that its centre lines up with the successor's starting scope's centre.", nullptr},
     {kDocCommand, "Color", nullptr, "Sets the colour of the instances placed from this scope on: r, g, b in 0..1 or \"#rrggbb\".", nullptr},
     {kDocCommand, "Texture", nullptr, "Textures the leaves from this scope on with the image, projected in this scope's frame; tile sizes in metres (none: one image over the scope); \"none\" removes it.", nullptr},
-    {kDocCommand, "Material", nullptr, "Sets a glTF material property of the instances placed from this scope on: roughness (default 0.8), metallic (default 0), opacity, a colour component (0..1), or a normal or colour map image.", nullptr},
+    {kDocCommand, "Material", nullptr, "Sets a glTF material property of the instances placed from this scope on: roughness (default 0.8), metallic (default 0), opacity, a colour or emissive colour component (0..1), or a texture layer's image (colormap, normalmap, emissivemap, occlusionmap, roughnessmap, metallicmap, bumpmap, specularmap, opacitymap, dirtmap), each on its own uv set.", nullptr},
     {kDocCommand, "SetupProjection", nullptr, "CGA's setupProjection: projects every face onto the two scope axes' plane, tiles of tileWidth × tileHeight metres (uv set 0 unless given).", nullptr},
     {kDocCommand, "ScaleUV", nullptr, "Scales the texture coordinates (u, v) of the current projection by the factors.", nullptr},
     {kDocCommand, "TranslateUV", nullptr, "Moves the texture coordinates (u, v) of the current projection by the offsets.", nullptr},

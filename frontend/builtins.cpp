@@ -44,8 +44,10 @@ const CommandInfo kCommands[] = {
     {CommandId::Texture, "Texture", 1, 3, BodyRule::None,
      "Texture(\"image.png\") or Texture(\"image.png\", tileWidth, tileHeight)", nullptr},
     {CommandId::Material, "Material", 2, 2, BodyRule::None,
-     "Material(\"roughness\" or \"metallic\" or \"opacity\" or \"color.r\" or \"color.g\" or \"color.b\", value) or "
-     "Material(\"normalmap\", \"image.png\")",
+     "Material(\"roughness\" or \"metallic\" or \"opacity\" or \"color.r\" or \"color.g\" or \"color.b\" or "
+     "\"emissive.r\" or \"emissive.g\" or \"emissive.b\", value) or Material(\"normalmap\" or \"colormap\" or "
+     "\"bumpmap\" or \"dirtmap\" or \"specularmap\" or \"opacitymap\" or \"emissivemap\" or \"occlusionmap\" or "
+     "\"roughnessmap\" or \"metallicmap\", \"image.png\")",
      nullptr},
     // CGA's uv operations on the scope's texture projection, in ir::UvOp's order; the last
     // argument may name the uv set (0..9, CityEngine's texture layers; without it 0).
@@ -172,8 +174,12 @@ const CommandInfo* findCommand(const std::string& name) {
 std::span<const CommandInfo> allCommands() { return kCommands; }
 
 namespace {
-const char* const kMaterialProperties[] = {"roughness", "metallic", "opacity", "color.r", "color.g", "color.b",
-                                           "normalmap", "colormap"};
+// In ir::MaterialProperty's order: the numbers, then the images from "normalmap" on.
+const char* const kMaterialProperties[] = {
+    "roughness",  "metallic",   "opacity",   "color.r",  "color.g", "color.b",     "emissive.r",
+    "emissive.g", "emissive.b", "normalmap", "colormap", "bumpmap", "dirtmap",     "specularmap",
+    "opacitymap", "emissivemap", "occlusionmap", "roughnessmap", "metallicmap"};
+constexpr int kFirstMaterialImage = 9;  // "normalmap"
 }  // namespace
 
 int materialProperty(const std::string& name) {
@@ -181,6 +187,12 @@ int materialProperty(const std::string& name) {
     if (name == kMaterialProperties[k]) return static_cast<int>(k);
   return -1;
 }
+
+const char* materialPropertyName(int property) {
+  return property >= 0 && property < int(std::size(kMaterialProperties)) ? kMaterialProperties[property] : nullptr;
+}
+
+bool materialPropertyIsImage(int property) { return property >= kFirstMaterialImage; }
 
 int uvOperation(const std::string& name) {
   static const char* const kNames[] = {"SetupProjection", "ScaleUV",  "TranslateUV", "RotateUV", "TileUV",
@@ -190,7 +202,10 @@ int uvOperation(const std::string& name) {
   return -1;
 }
 
-const char* materialPropertyList() { return "roughness, metallic, opacity, color.r, color.g, color.b, normalmap or colormap"; }
+const char* materialPropertyList() {
+  return "roughness, metallic, opacity, color.r, color.g, color.b, emissive.r, emissive.g, emissive.b, normalmap, "
+         "colormap, bumpmap, dirtmap, specularmap, opacitymap, emissivemap, occlusionmap, roughnessmap or metallicmap";
+}
 
 std::span<const FunctionInfo> allFunctions() { return kFunctions; }
 

@@ -46,9 +46,13 @@ struct CommandInfo {
 // FGSG paper's upper-case spellings RX RY RZ.
 const CommandInfo* findCommand(const std::string& name);
 
-// Material(property, value)'s property words ("roughness", "metallic", "opacity",
-// "color.r", "color.g", "color.b", "normalmap", "colormap"), numbered as ir::MaterialProperty; -1: none.
+// Material(property, value)'s property words ("roughness", "metallic", "opacity", "color.r",
+// "color.g", "color.b", "emissive.r", "emissive.g", "emissive.b", then the images "normalmap",
+// "colormap", "bumpmap", "dirtmap", "specularmap", "opacitymap", "emissivemap", "occlusionmap",
+// "roughnessmap", "metallicmap"), numbered as ir::MaterialProperty; -1: none.
 int materialProperty(const std::string& name);
+const char* materialPropertyName(int property);  // nullptr: no such number
+bool materialPropertyIsImage(int property);       // an image file (the maps), not a number
 const char* materialPropertyList();  // for messages: "roughness, metallic, ..."
 // The uv command `name` (SetupProjection, ScaleUV, ...) numbered as ir::UvOp; -1: none.
 int uvOperation(const std::string& name);

@@ -168,7 +168,7 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                      "a material property is " + std::string(materialPropertyList()) + ", not \"" + property + "\"");
         break;
       }
-      if (property == "normalmap" || property == "colormap") {
+      if (materialPropertyIsImage(materialProperty(property))) {
         // The image is found and checked before deriving, as Texture's.
         const std::string file = stringArg(1, "image");
         if (stringOk && file.empty())

@@ -182,9 +182,34 @@ enum class InstanceMode : uint8_t { Plain, Collide, Merge };
 // or centred on the scope's x and z with its box on y = 0.
 enum class InsertFit : uint8_t { AlignSizeAndPosition, KeepSizeAndPosition, KeepSizeAlignPosition };
 
-// Material(property, value) (frontend::materialProperty's words, in this order); ColorMap is
-// the .cga dialect's texture() (the image of the current projection, its frame kept).
-enum class MaterialProperty : uint8_t { Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, NormalMap, ColorMap };
+// Material(property, value) (frontend::materialProperty's words, in this order): the numbers
+// first, then the images from NormalMap on. ColorMap is the .cga dialect's texture() (the
+// image of the current projection, its frame kept); the maps after it are CityEngine's other
+// texture layers.
+enum class MaterialProperty : uint8_t {
+  Roughness, Metallic, Opacity, ColorR, ColorG, ColorB, EmissiveR, EmissiveG, EmissiveB,
+  NormalMap, ColorMap, BumpMap, DirtMap, SpecularMap, OpacityMap, EmissiveMap, OcclusionMap, RoughnessMap, MetallicMap
+};
+inline constexpr uint32_t kMaterialProperties = uint32_t(MaterialProperty::MetallicMap) + 1;
+// Whether the property names an image (op.str) rather than a number (args[0]).
+inline constexpr bool materialPropertyIsImage(uint32_t property) { return property >= uint32_t(MaterialProperty::NormalMap); }
+// CityEngine's texture layer of an image property: its uv set (0 colormap, 1 bumpmap, 2 dirtmap,
+// 3 specularmap, 4 opacitymap, 5 normalmap, 6 emissivemap, 7 occlusionmap, 8 roughnessmap,
+// 9 metallicmap).
+inline constexpr uint32_t materialLayerOf(MaterialProperty p) {
+  switch (p) {
+    case MaterialProperty::ColorMap: return 0;
+    case MaterialProperty::BumpMap: return 1;
+    case MaterialProperty::DirtMap: return 2;
+    case MaterialProperty::SpecularMap: return 3;
+    case MaterialProperty::OpacityMap: return 4;
+    case MaterialProperty::NormalMap: return 5;
+    case MaterialProperty::EmissiveMap: return 6;
+    case MaterialProperty::OcclusionMap: return 7;
+    case MaterialProperty::RoughnessMap: return 8;
+    default: return 9;  // MetallicMap
+  }
+}
 
 // CGA's uv operations (frontend::uvOperation's commands, in this order).
 enum class UvOp : uint8_t { Setup, Scale, Translate, Rotate, Tile, Normalize, Delete, Project, Copy };

@@ -429,7 +429,7 @@ class Lowerer {
       case CommandId::Material: {
         op.kind = OpKind::Material;
         op.index = static_cast<uint32_t>(frontend::materialProperty(constString(*item.args[0])));
-        if (op.index >= static_cast<uint32_t>(MaterialProperty::NormalMap))
+        if (materialPropertyIsImage(op.index))
           op.str = m_.internString(constString(*item.args[1]));
         else
           allArgs(1);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "frontend/builtins.h"
 #include "ir/builtins.h"
 
 namespace fgsg::ir {
@@ -432,11 +433,10 @@ class Printer {
       case OpKind::Print: text = withArgs("print"); break;
       case OpKind::Label: text = withArgs("label"); break;
       case OpKind::Material: {
-        static const char* const kProperties[] = {"roughness", "metallic", "opacity", "color.r",
-                                                  "color.g",   "color.b",  "normalmap", "colormap"};
-        const std::string property = op.index < 8 ? kProperties[op.index] : "property?";
-        text = op.index >= uint32_t(MaterialProperty::NormalMap) ? "material " + property + " " + stringLit(op.str)
-                                                                  : withArgs("material " + property);
+        const char* word = frontend::materialPropertyName(int(op.index));
+        const std::string property = word ? word : "property?";
+        text = materialPropertyIsImage(op.index) ? "material " + property + " " + stringLit(op.str)
+                                                 : withArgs("material " + property);
         break;
       }
       case OpKind::Uv: {

@@ -535,8 +535,8 @@ class Verifier {
         break;
       case OpKind::Material:
         expectBodies(op, 0);
-        if (op.index > uint32_t(MaterialProperty::ColorMap)) problem("material property " + std::to_string(op.index));
-        if (op.index >= uint32_t(MaterialProperty::NormalMap)) stringId(op.str), numArgs(op, r, 0);
+        if (op.index >= kMaterialProperties) problem("material property " + std::to_string(op.index));
+        if (materialPropertyIsImage(op.index)) stringId(op.str), numArgs(op, r, 0);
         else numArgs(op, r, 1);
         break;
       case OpKind::Uv:

@@ -6,6 +6,7 @@
 #include "runtime/mesh.h"
 
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -64,13 +65,22 @@ struct LinePath {
 };
 
 // A material's physically based factors besides its colour (CGA's material.roughness,
-// .metallic, .opacity and .normalmap), written as glTF 2.0 PBR materials and in OBJ's
-// .mtl. The default is what every material had before: fgsg's roughness 0.8, metallic 0,
-// opaque, no normal map.
+// .metallic, .opacity, .emissive and the texture layers but the colour map), written as glTF
+// 2.0 PBR materials and in OBJ's .mtl. The default is what every material had before: fgsg's
+// roughness 0.8, metallic 0, opaque, not emissive, no maps.
 struct Finish {
+  // CityEngine's texture layers by their uv set: 1 bumpmap, 2 dirtmap, 3 specularmap,
+  // 4 opacitymap, 5 normalmap, 6 emissivemap, 7 occlusionmap, 8 roughnessmap, 9 metallicmap
+  // (0, the colour map, is the projection's image: Instance::texture).
+  static constexpr uint32_t kBumpMap = 1, kDirtMap = 2, kSpecularMap = 3, kOpacityMap = 4, kNormalMap = 5,
+                            kEmissiveMap = 6, kOcclusionMap = 7, kRoughnessMap = 8, kMetallicMap = 9, kLayers = 10;
   float roughness = 0.8f, metallic = 0.0f, opacity = 1.0f;
-  uint32_t normalMap = UINT32_MAX;  // index into InstanceList::textures; UINT32_MAX: none
+  std::array<float, 3> emissive{0, 0, 0};  // CityEngine's default black
+  // Per layer, an index into InstanceList::textures; UINT32_MAX: none.
+  std::array<uint32_t, kLayers> maps{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX,
+                                     UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
   bool operator==(const Finish&) const = default;
+  auto operator<=>(const Finish&) const = default;
 };
 
 // How a parameter's slots read: a number, a boolean (0/1), a string (an index into

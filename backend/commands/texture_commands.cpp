@@ -14,10 +14,9 @@ namespace {
 
 constexpr uint32_t kUnresolved = std::numeric_limits<uint32_t>::max();
 
-// Whether `op` names an image file in op.str: Texture, Material's normal and colour maps.
+// Whether `op` names an image file in op.str: Texture, Material's maps.
 bool namesImage(const ir::Op& op) {
-  return op.kind == ir::OpKind::Texture ||
-         (op.kind == ir::OpKind::Material && op.index >= uint32_t(ir::MaterialProperty::NormalMap));
+  return op.kind == ir::OpKind::Texture || (op.kind == ir::OpKind::Material && ir::materialPropertyIsImage(op.index));
 }
 
 // R027 unless x is a number.
@@ -72,8 +71,7 @@ void TextureCommands::prepare(const ir::Module& m, const std::vector<std::string
 
 uint32_t TextureCommands::internFinish(const rt::Finish& f) {
   if (f == kDefault_) return 0;
-  const auto [it, added] = finishIndex_.emplace(std::make_tuple(f.roughness, f.metallic, f.opacity, f.normalMap),
-                                                uint32_t(finishes_.size() + 1));
+  const auto [it, added] = finishIndex_.emplace(f, uint32_t(finishes_.size() + 1));
   if (added) finishes_.push_back(f);
   return it->second;
 }
@@ -127,15 +125,19 @@ void TextureCommands::material(const ir::Op& op, const double* a, State& st) {
     return;
   }
   rt::Finish f = finish(st.scope.finish);
-  if (property == P::NormalMap) {
+  if (ir::materialPropertyIsImage(op.index)) {
+    // Another texture layer (bumpmap ... metallicmap): its image, "none" none.
     const uint32_t image = textureOf_.at(op.str);
-    f.normalMap = image == kUnresolved ? UINT32_MAX : image;
+    f.maps[ir::materialLayerOf(property)] = image == kUnresolved ? UINT32_MAX : image;
   } else {
     const float value = float(std::clamp(finiteArg(a[0], op, "the value"), 0.0, 1.0));
     switch (property) {
       case P::Roughness: f.roughness = value; break;
       case P::Metallic: f.metallic = value; break;
       case P::Opacity: f.opacity = value; break;
+      case P::EmissiveR:
+      case P::EmissiveG:
+      case P::EmissiveB: f.emissive[size_t(op.index) - size_t(P::EmissiveR)] = value; break;
       default: {
         if (!st.scope.colored) st.scope.color = {1.0f, 1.0f, 1.0f};
         st.scope.color[size_t(op.index) - size_t(P::ColorR)] = value;

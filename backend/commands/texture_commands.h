@@ -5,7 +5,8 @@
 // or unreadable one is reported at its Texture(). Texture("none") takes the image away.
 //
 // The same family applies CGA's material attributes (Material: roughness, metallic,
-// opacity, the colour's components, the normal and colour maps; the scope's `finish`)
+// opacity, the colour's and emissive colour's components, the texture layers' images; the
+// scope's `finish`)
 // and its uv operations (Uv: setupProjection, scaleUV, translateUV, rotateUV, tileUV,
 // normalizeUV, each a new projection made from the scope's) on CityEngine's uv sets 0..9:
 // the shapes carry a projection per set; the leaves are textured by set 0's.
@@ -70,7 +71,7 @@ class TextureCommands final : public CommandFamily {
   std::vector<rt::cga::UvProjection> projections_;
   std::vector<UvLayout> layouts_;
   std::vector<rt::Finish> finishes_;
-  std::map<std::tuple<float, float, float, uint32_t>, uint32_t> finishIndex_;
+  std::map<rt::Finish, uint32_t> finishIndex_;
   static inline const rt::Finish kDefault_{};
 };
 

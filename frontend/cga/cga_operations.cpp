@@ -19,7 +19,7 @@
 //                                       it (CityEngine transforms the inserted geometry with
 //                                       the scope); a missing file is W801, the insert skipped
 //   s t r center color set(material.color.rgb, ...)
-//   set(material.roughness|metallic|opacity|color.r|g|b|normalmap|colormap, v), texture(x)
+//   set(material.roughness|metallic|opacity|color.r|g|b|emissive.r|g|b|colormap|...|metallicmap, v), texture(x)
 //                                       Material("roughness", v) ... (texture: "colormap")
 //   setupProjection(0, scope.xz, w, h) tileUV scaleUV translateUV rotateUV normalizeUV
 //                                       SetupProjection("xz", w, h), TileUV(w, h) ...;
@@ -572,8 +572,9 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
       colorItem({argCtx[1]});
       return;
     }
-    // material.roughness / metallic / opacity / color.r|g|b / normalmap / colormap: fgsg's
-    // Material(property, value) (texture() is set(material.colormap, ...)).
+    // material.roughness / metallic / opacity / color.r|g|b / emissive.r|g|b and the maps
+    // (colormap ... metallicmap): fgsg's Material(property, value) (texture() is
+    // set(material.colormap, ...)).
     if (what.rfind("material.", 0) == 0 && materialProperty(what.substr(9)) >= 0) {
       materialItem(op, what.substr(9), env, seq);
       return;
@@ -940,7 +941,7 @@ void Translator::materialItem(P::CallOperationContext* op, const std::string& pr
   const SourceRange at = rangeOf(op);
   ExprPtr value = expr(argCtx.back(), env);
   if (!value) return;
-  if (property == "normalmap" || property == "colormap") {
+  if (materialPropertyIsImage(materialProperty(property))) {
     if (value->kind != ExprKind::String) {
       notSupported(rangeOf(argCtx.back()), "an image name that is not a constant string");
       return;

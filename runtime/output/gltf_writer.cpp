@@ -4,6 +4,7 @@
 #include "runtime/io/glb_writer.h"
 #include "runtime/io/float_text.h"
 #include "runtime/io/mesh_attributes.h"
+#include "runtime/output/metallic_roughness_image.h"
 #include "runtime/output/start_extras.h"
 
 #include <Eigen/Core>
@@ -35,7 +36,7 @@ using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
 constexpr int kUnsignedShort = 5123;
 // CityEngine's texture layers: uv set 5 is the normal map's.
-constexpr uint32_t kNormalMapUvSet = 5;
+constexpr uint32_t kNormalMapUvSet = Finish::kNormalMap;
 // A triangle's vertex normals closer to its face's normal than this (the cosine of their
 // angle) are flat: glTF readers compute the same normals where a primitive has none.
 constexpr double kFlatCosine = 1 - 1e-5;
@@ -159,7 +160,7 @@ class Writer {
   int bakedMesh(const GroupNode& g, const std::string& name, bool& wrote);
   int groupNode(const GroupNode& g, json node);
   int startNode(const StartNode& s);
-  json materialJson(const Material& m, uint32_t normalSet);
+  json materialJson(const Material& m, uint32_t ownSets);
   void uvSetAttributes(const Mesh& m, const WeldedVertices& w, json& attributes);
   bool verticesFinite(std::string& error) const;
 
@@ -171,18 +172,29 @@ class Writer {
   std::map<uint32_t, int> sharedIndices_;                      // ... and its indices' accessor
   std::map<uint32_t, int> sharedTangents_;                     // ... and its tangents' (normal maps)
   std::map<std::pair<uint32_t, uint32_t>, int> sharedMeshes_;  // (shared mesh, material) -> glTF mesh
-  // (Scene::materials index, the normal map's uv set) -> the file's material (only those used)
+  // (Scene::materials index, the layers sampled with their own uv set) -> the file's material
+  // (only those used)
   std::map<std::pair<uint32_t, uint32_t>, int> materialOut_;
   json materials_ = json::array();
-  std::vector<uint32_t> imagesOut_;       // Scene::images of the file's textures, in order (only those used)
+  // An image the file embeds: one of Scene::images, or the metallic-roughness texture packed
+  // from a roughness and a metallic map (metallic_roughness_image.h; -1: none).
+  struct ImageOut {
+    int32_t file = -1, roughness = -1, metallic = -1;
+    bool operator==(const ImageOut&) const = default;
+  };
+  std::vector<ImageOut> imagesOut_;  // the file's textures' images, in order (only those used)
   bool instancing_ = false;
 
-  // `normalSet`: the uv set (TEXCOORD_n) the primitive samples a normal map with.
-  int material(uint32_t k, uint32_t normalSet = 0) {
+  // `sets`: the uv sets 1..9 the primitive has (bit n: TEXCOORD_n is set n's). Each texture
+  // layer of the material samples its own set where the primitive has it (the normal map
+  // only beside a colour map, as before the other layers came).
+  int material(uint32_t k, uint32_t sets = 0) {
     const Material& m = scene_.materials[k];
-    if (m.image < 0 || m.normalImage < 0) normalSet = 0;
-    const auto [it, added] = materialOut_.emplace(std::make_pair(k, normalSet), int(materials_.size()));
-    if (added) materials_.push_back(materialJson(m, normalSet));
+    uint32_t own = 0;
+    for (uint32_t layer = 1; layer < Finish::kLayers; ++layer)
+      if ((sets >> layer & 1) && m.maps[layer] >= 0 && (layer != kNormalMapUvSet || m.image >= 0)) own |= 1u << layer;
+    const auto [it, added] = materialOut_.emplace(std::make_pair(k, own), int(materials_.size()));
+    if (added) materials_.push_back(materialJson(m, own));
     return it->second;
   }
 };
@@ -310,7 +322,7 @@ int Writer::sharedMesh(uint32_t mesh, uint32_t material) {
   json attributes = sharedAttributes(mesh);
   const Material& look = scene_.materials[material];
   const Mesh& m = *scene_.meshes[mesh].mesh;
-  if (look.image >= 0 && look.normalImage >= 0 && m.hasTexcoords() && io::hasNormals(m)) {
+  if (look.image >= 0 && look.normalImage() >= 0 && m.hasTexcoords() && io::hasNormals(m)) {
     // The tangents of a normal-mapped shared mesh, once per mesh.
     auto [it, added] = sharedTangents_.emplace(mesh, -1);
     if (added) {
@@ -387,8 +399,10 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     // A normal map needs normals and tangents (glTF ignores tangents without normals).
     // CityEngine samples the normal map with uv set 5, or set 0 where the shape has no set 5.
     const uint32_t normalSet = m.uvSet(kNormalMapUvSet) ? kNormalMapUvSet : 0;
+    uint32_t sets = 0;  // the uv sets 1..9 the part has, for its materials' layers
+    for (const MeshUvSet& u : m.uvSets) sets |= 1u << u.set;
     bool normalMapped = false;
-    for (uint32_t k : part.materials) normalMapped |= scene_.materials[k].image >= 0 && scene_.materials[k].normalImage >= 0;
+    for (uint32_t k : part.materials) normalMapped |= scene_.materials[k].image >= 0 && scene_.materials[k].normalImage() >= 0;
     normalMapped = normalMapped && (normalSet || m.hasTexcoords()) && io::hasNormals(m);
     const WeldedVertices w = weld(m, io::hasNormals(m) && (normalMapped || !flatShaded(m)), colored);
     json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
@@ -435,7 +449,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       for (const auto& [material, count] : groups) {
         primitives.push_back({{"attributes", attributes},
                               {"indices", accessor(v, count, type, "SCALAR", size * first)},
-                              {"material", this->material(material, normalSet)},
+                              {"material", this->material(material, sets)},
                               {"mode", kTriangles}});
         first += count;
       }
@@ -499,7 +513,7 @@ int Writer::startNode(const StartNode& s) {
   return int(nodes_.size() - 1);
 }
 
-json Writer::materialJson(const Material& m, uint32_t normalSet) {
+json Writer::materialJson(const Material& m, uint32_t ownSets) {
   // The defaults (roughness 0.8, metallic 0) as the numbers every material had before.
   // Others as their shortest decimal (0.3, not the float's 0.30000001192092896).
   const auto factor = [](float x) {
@@ -514,23 +528,54 @@ json Writer::materialJson(const Material& m, uint32_t normalSet) {
     const std::array<float, 3> c = m.vertexColors ? std::array<float, 3>{1, 1, 1} : m.color;
     pbr["baseColorFactor"] = {io::clamp01(c[0]), io::clamp01(c[1]), io::clamp01(c[2]), alpha};
   }
-  const auto texture = [&](int32_t image) {
-    const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(image));
-    if (at == imagesOut_.end()) imagesOut_.push_back(uint32_t(image));
-    return json{{"index", std::find(imagesOut_.begin(), imagesOut_.end(), uint32_t(image)) - imagesOut_.begin()}};
+  const auto texture = [&](ImageOut image) {
+    const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), image);
+    if (at == imagesOut_.end()) imagesOut_.push_back(image);
+    return json{{"index", std::find(imagesOut_.begin(), imagesOut_.end(), image) - imagesOut_.begin()}};
   };
-  if (m.image >= 0) pbr["baseColorTexture"] = texture(m.image);
-  // The same material with its normal map on another uv set is another one, named apart.
-  const std::string name = normalSet ? m.name + "_uv" + std::to_string(normalSet) : m.name;
+  // The uv set a texture layer samples: its own where the primitive has it, else the base
+  // colour image's (set 0, glTF's default: no texCoord written); -1 where there is neither.
+  const auto setOf = [&](uint32_t layer) { return (ownSets >> layer & 1) ? int(layer) : m.image >= 0 ? 0 : -1; };
+  const auto layerTexture = [&](ImageOut image, int set) {
+    json t = texture(image);
+    if (set > 0) t["texCoord"] = set;
+    return t;
+  };
+  if (m.image >= 0) pbr["baseColorTexture"] = texture({m.image});
+  // CityEngine's roughness and metallic maps, packed into one image (green, blue) sampled
+  // with the roughness map's set, else the metallic map's.
+  const int32_t roughnessMap = m.maps[Finish::kRoughnessMap], metallicMap = m.maps[Finish::kMetallicMap];
+  const int packedSet = roughnessMap >= 0 && setOf(Finish::kRoughnessMap) >= 0 ? setOf(Finish::kRoughnessMap)
+                        : metallicMap >= 0                                     ? setOf(Finish::kMetallicMap)
+                                                                               : -1;
+  if (packedSet >= 0) pbr["metallicRoughnessTexture"] = layerTexture({-1, roughnessMap, metallicMap}, packedSet);
+  // The same material with a layer on its own uv set is another one, named apart
+  // ("_uv5": the normal map on set 5).
+  std::string name = m.name;
+  if (ownSets) {
+    name += "_uv";
+    for (uint32_t layer = 1; layer < Finish::kLayers; ++layer)
+      if (ownSets >> layer & 1) name += char('0' + layer);
+  }
   json out = {{"doubleSided", true}, {"name", name}, {"pbrMetallicRoughness", std::move(pbr)}};
   // CGA's material.opacity: blended where below 1. The normal map only where there is a
   // base colour image, on uv set 5's coordinates (TEXCOORD_5) where the primitive has them,
   // else on the base colour's (TEXCOORD_0).
   if (alpha < 1) out["alphaMode"] = "BLEND";
-  if (m.image >= 0 && m.normalImage >= 0) {
-    out["normalTexture"] = texture(m.normalImage);
-    if (normalSet) out["normalTexture"]["texCoord"] = normalSet;
-  }
+  if (m.image >= 0 && m.normalImage() >= 0) out["normalTexture"] = layerTexture({m.normalImage()}, setOf(kNormalMapUvSet));
+  // The occlusion map (glTF reads its red channel, as CityEngine does).
+  const int32_t occlusionMap = m.maps[Finish::kOcclusionMap];
+  if (occlusionMap >= 0 && setOf(Finish::kOcclusionMap) >= 0)
+    out["occlusionTexture"] = layerTexture({occlusionMap}, setOf(Finish::kOcclusionMap));
+  // The emissive colour, and the emissive map times it; a map with the colour left black
+  // (CityEngine's default) shows as it is (factor white) rather than not at all.
+  const int32_t emissiveMap = m.maps[Finish::kEmissiveMap];
+  const bool emissiveMapped = emissiveMap >= 0 && setOf(Finish::kEmissiveMap) >= 0;
+  if (emissiveMapped) out["emissiveTexture"] = layerTexture({emissiveMap}, setOf(Finish::kEmissiveMap));
+  if (m.emissive != std::array<float, 3>{0, 0, 0})
+    out["emissiveFactor"] = {factor(m.emissive[0]), factor(m.emissive[1]), factor(m.emissive[2])};
+  else if (emissiveMapped)
+    out["emissiveFactor"] = {1.0, 1.0, 1.0};
   return out;
 }
 
@@ -575,11 +620,23 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
   for (const StartNode& s : scene_.starts) roots.push_back(startNode(s));
   // The images after the geometry, each whole.
   if (!imagesOut_.empty()) {
-    Mesh holder;  // io::readImages reads a mesh's images
-    for (uint32_t k : imagesOut_) holder.textures.push_back(scene_.images[k]);
-    holder.textureRuns.push_back({0, 0});
     std::vector<io::EmbeddedImage> images;
-    if (!io::readImages(holder, images, error)) return false;
+    for (const ImageOut& out : imagesOut_) {
+      if (out.file >= 0) {
+        Mesh holder;  // io::readImages reads a mesh's images
+        holder.textures.push_back(scene_.images[size_t(out.file)]);
+        holder.textureRuns.push_back({0, 0});
+        std::vector<io::EmbeddedImage> one;
+        if (!io::readImages(holder, one, error)) return false;
+        images.push_back(std::move(one.front()));
+      } else {
+        const auto path = [&](int32_t k) { return k >= 0 ? &scene_.images[size_t(k)] : nullptr; };
+        io::EmbeddedImage packed;
+        packed.mimeType = "image/png";
+        if (!packMetallicRoughness(path(out.roughness), path(out.metallic), packed.bytes, error)) return false;
+        images.push_back(std::move(packed));
+      }
+    }
     json jsonImages = json::array(), textures = json::array();
     for (size_t t = 0; t < images.size(); ++t) {
       jsonImages.push_back({{"bufferView", view(images[t].bytes.data(), images[t].bytes.size(), 0)},

@@ -215,7 +215,18 @@ std::string mtlSceneText(const Scene& scene, const std::string& mtlFolder) {
             number(m.metallic) + "\n";
     if (m.image >= 0) text += "map_Kd " + io::pathFrom(mtlFolder, scene.images[size_t(m.image)]) + "\n";
     // The normal map (the PBR extension's `norm`), on the colour image's coordinates as in glTF.
-    if (m.image >= 0 && m.normalImage >= 0) text += "norm " + io::pathFrom(mtlFolder, scene.images[size_t(m.normalImage)]) + "\n";
+    if (m.image >= 0 && m.normalImage() >= 0) text += "norm " + io::pathFrom(mtlFolder, scene.images[size_t(m.normalImage())]) + "\n";
+    // CityEngine's emissive colour, and its other layers by their usual .mtl statements,
+    // on the colour image's coordinates too (the OBJ's one vt set is uv set 0). The dirt
+    // and occlusion maps have none (cmd_run warns, R034).
+    if (m.emissive != std::array<float, 3>{0, 0, 0})
+      text += "Ke " + number(m.emissive[0]) + " " + number(m.emissive[1]) + " " + number(m.emissive[2]) + "\n";
+    static const std::pair<uint32_t, const char*> kMtlMaps[] = {
+        {Finish::kBumpMap, "map_bump"},    {Finish::kSpecularMap, "map_Ks"},  {Finish::kOpacityMap, "map_d"},
+        {Finish::kEmissiveMap, "map_Ke"}, {Finish::kRoughnessMap, "map_Pr"}, {Finish::kMetallicMap, "map_Pm"}};
+    for (const auto& [layer, statement] : kMtlMaps)
+      if (m.image >= 0 && m.maps[layer] >= 0)
+        text += std::string(statement) + " " + io::pathFrom(mtlFolder, scene.images[size_t(m.maps[layer])]) + "\n";
   }
   return text;
 }

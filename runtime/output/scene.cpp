@@ -268,7 +268,9 @@ struct Builder {
     return it->second;
   }
 
-  std::map<std::tuple<float, float, float, int32_t, bool, float, float, float, int32_t>, uint32_t> materialIndex;
+  using MaterialKey = std::tuple<std::array<float, 3>, int32_t, bool, float, float, float, std::array<float, 3>,
+                                 std::array<int32_t, Finish::kLayers>>;
+  std::map<MaterialKey, uint32_t> materialIndex;
   // The last material asked for: instances after one another mostly share theirs.
   Material lastMaterial;
   uint32_t lastMaterialIndex = kNone;
@@ -278,12 +280,12 @@ struct Builder {
   uint32_t material(const Material& m) {
     if (lastMaterialIndex != kNone && m.color == lastMaterial.color && m.image == lastMaterial.image &&
         m.vertexColors == lastMaterial.vertexColors && m.roughness == lastMaterial.roughness &&
-        m.metallic == lastMaterial.metallic && m.opacity == lastMaterial.opacity && m.normalImage == lastMaterial.normalImage)
+        m.metallic == lastMaterial.metallic && m.opacity == lastMaterial.opacity && m.emissive == lastMaterial.emissive &&
+        m.maps == lastMaterial.maps)
       return lastMaterialIndex;
-    const auto [it, added] =
-        materialIndex.emplace(std::make_tuple(m.color[0], m.color[1], m.color[2], m.image, m.vertexColors, m.roughness,
-                                              m.metallic, m.opacity, m.normalImage),
-                              uint32_t(scene.materials.size()));
+    const auto [it, added] = materialIndex.emplace(
+        MaterialKey{m.color, m.image, m.vertexColors, m.roughness, m.metallic, m.opacity, m.emissive, m.maps},
+        uint32_t(scene.materials.size()));
     if (added) {
       scene.materials.push_back(m);
       scene.materials.back().name = uniqueName(m);
@@ -437,8 +439,9 @@ struct Builder {
   // A material's finish: instance i's (InstanceList::finishOf), the default where none.
   void applyFinish(Material& m, const Finish* f) {
     if (!f) return;
-    m.roughness = f->roughness, m.metallic = f->metallic, m.opacity = f->opacity;
-    if (f->normalMap != kNone && f->normalMap < list.textures.size()) m.normalImage = imageOf(f->normalMap);
+    m.roughness = f->roughness, m.metallic = f->metallic, m.opacity = f->opacity, m.emissive = f->emissive;
+    for (uint32_t layer = 1; layer < Finish::kLayers; ++layer)
+      if (f->maps[layer] != kNone && f->maps[layer] < list.textures.size()) m.maps[layer] = imageOf(f->maps[layer]);
   }
 
   Material materialOf(uint32_t i) {

@@ -85,10 +85,14 @@ struct Material {
   int32_t image = -1;
   bool vertexColors = false;
   // CGA's material attributes (rt::Finish): roughness, metallic, opacity (< 1: alpha
-  // blended) and a normal map (index into Scene::images, -1: none; drawn with the base
-  // colour image's texture coordinates, so only where there is one).
+  // blended), the emissive colour, and the texture layers but the colour map, by their uv
+  // set (Finish::kBumpMap ... kMetallicMap; index into Scene::images, -1: none). Each is
+  // drawn with its own uv set where the shape has it, else with the base colour image's
+  // coordinates, so only where there is one of the two.
   float roughness = 0.8f, metallic = 0.0f, opacity = 1.0f;
-  int32_t normalImage = -1;
+  std::array<float, 3> emissive{0, 0, 0};
+  std::array<int32_t, Finish::kLayers> maps{-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+  int32_t normalImage() const { return maps[Finish::kNormalMap]; }
   // Unique in the scene, no spaces (an OBJ's `usemtl` takes it): the image's file name
   // without extension, then the colour as rrggbb or "vertex_colors" ("brick_ffffff",
   // "d8c4a2"), with _2, _3, ... after a name taken by a colour that rounds alike.
