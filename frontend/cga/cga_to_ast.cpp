@@ -100,8 +100,12 @@ constexpr double kDefaultLotSide = 20.0;
 
 void Translator::run(P::CgaFileContext* file) {
   program_.cityEngineLots = true;
+  // `--start-rule Winter$Lot`: the rule Lot in the style Winter (cga_styles.cpp).
+  if (const size_t mark = startRuleOverride_.find('$'); mark != std::string::npos && mark > 0) {
+    chosenStyle_ = startRuleOverride_.substr(0, mark);
+    startRuleOverride_ = startRuleOverride_.substr(mark + 1);
+  }
   collect(file);
-  bool sawStyle = false;
   for (P::DeclarationContext* d : file->declaration()) {
     if (auto* v = d->versionDecl()) {
       (void)v;  // any version: the dialect is CityEngine's current CGA
@@ -111,15 +115,13 @@ void Translator::run(P::CgaFileContext* file) {
     } else if (auto* imp = d->importDecl()) {
       importDecl(imp);
     } else if (auto* style = d->styleDecl()) {
-      // `style Default` names the file's own declarations' style: nothing to do. A second
-      // style (`style Winter extends Default`) would override attrs: not here yet.
-      if (style->EXTENDS() || sawStyle)
-        notSupported(rangeOf(style), style->EXTENDS() ? "'style ... extends'" : "a second 'style'");
-      sawStyle = true;
+      styleDecl(style);
     } else if (auto* a = d->annotated()) {
-      declaration(a);
+      if (currentStyle_ == "Default") declaration(a);
+      else styleDeclaration(a);
     }
   }
+  applyStyle();
   startRule();
   exportFunctions();
 }
@@ -164,10 +166,12 @@ void Translator::exportFunctions() {
 
 // Names first, so that a rule may use a function, attr or rule declared after it.
 void Translator::collect(P::CgaFileContext* file) {
+  bool inStyle = false;  // after `style Name` (not Default): that style's (cga_styles.cpp)
   for (P::DeclarationContext* d : file->declaration()) {
     if (auto* imp = d->importDecl(); imp && imp->alias) importAliases_.insert(imp->alias->getText());
+    if (auto* style = d->styleDecl()) inStyle = style->name->getText() != "Default";
     auto* a = d->annotated();
-    if (!a) continue;
+    if (!a || inStyle) continue;
     if (auto* f = a->functionDecl()) {
       if (f->name->getText().find('.') != std::string::npos) continue;  // an import's attr, set (declaration)
       Function fn{f->name->getText(), {}, f->value(), rangeOf(f->name)};

@@ -133,6 +133,11 @@ class Translator {
   void importSetting(P::FunctionDeclContext* ctx);
   void exportFunctions();
 
+  // cga_styles.cpp
+  void styleDecl(P::StyleDeclContext* ctx);
+  void styleDeclaration(P::AnnotatedContext* ctx);
+  void applyStyle();
+
   // cga_operations.cpp
   struct Sequence;
   void operation(P::OperationContext* op, Sequence& seq, const Env& env);
@@ -175,6 +180,14 @@ class Translator {
   std::vector<std::string> inlining_;  // functions being inlined (recursion check)
   std::string startRule_;              // @StartRule
   std::string declaredStartRule_;      // the first @StartRule, known from collect() on
+  struct Style {
+    std::string base;  // "Default" when it extends no other
+    SourceRange range;
+    std::map<std::string, ExprPtr> attrs;  // its own redefinitions
+  };
+  std::map<std::string, Style> styles_;  // all but Default
+  std::string currentStyle_ = "Default";  // the style the declarations being read belong to
+  std::string chosenStyle_ = "Default";   // `--start-rule Style$Rule`'s
   SourceRange startRange_;
   int auxCount_ = 0;
   std::set<std::string> warnedAssets_;

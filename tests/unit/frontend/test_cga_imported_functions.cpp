@@ -1,6 +1,7 @@
 // The `.cga` dialect's calls of an imported file's functions (`F.windowWidth(3)`,
-// `F.floorCount`) and its initialShape attributes: what compiles, and the located errors
-// of misuse. The values both engines compute are the corpus's (tests/cga/corpus/150_*, 151_*).
+// `F.floorCount`), its initialShape attributes and its styles: what compiles, and the
+// located errors of misuse. The values both engines compute are the corpus's
+// (tests/cga/corpus/150_*, 151_*, 152_*).
 #include "ir/ir.h"
 #include "ir/pipeline.h"
 
@@ -19,7 +20,7 @@ struct ImportedFunctionsCompiled {
   std::string messages;
 };
 
-ImportedFunctionsCompiled compileImporting(const std::string& text) {
+ImportedFunctionsCompiled compileImporting(const std::string& text, const std::string& startRule = "") {
   const std::string dir = "/tmp/fgsg_cga_imported_functions_test";
   std::system(("mkdir -p " + dir).c_str());
   FILE* f = std::fopen((dir + "/lib.cga").c_str(), "w");
@@ -33,6 +34,7 @@ ImportedFunctionsCompiled compileImporting(const std::string& text) {
   std::fclose(f);
   ImportedFunctionsCompiled c;
   frontend::SourceFile file = frontend::SourceFile::make(dir + "/main.cga", text);
+  file.startRule = startRule;
   frontend::Diagnostics diags(&file);
   ir::Module module;
   c.ok = ir::compileSource(file, module, diags);
@@ -91,4 +93,23 @@ TEST_CASE("cga initialShape attributes: known members compile, others are locate
   CHECK_FALSE(bad.ok);
   CHECK(says(bad, "main.cga:2:21: error[E010]: unknown attribute 'initialShape.origin.qx' (initialShape.name, "
                   ".startRule, .origin.px|py|pz, .origin.ox|oy|oz)"));
+}
+
+TEST_CASE("cga styles: a style redefines attrs, chosen as Style$Rule, misuse is located", "[cga][dialect]") {
+  const std::string styles =
+      "attr h = 10\n@StartRule\nLot --> extrude(h) X.\nstyle Tall\nattr h = 20\nstyle Taller extends Tall\n";
+  CHECK(compileImporting(styles).ok);
+  CHECK(compileImporting(styles, "Taller$Lot").ok);
+  CHECK(compileImporting(styles, "Default$Lot").ok);
+  const auto unknownStyle = compileImporting(styles, "Short$Lot");
+  CHECK_FALSE(unknownStyle.ok);
+  CHECK(says(unknownStyle, "main.cga:1:1: error[E803]: --start-rule Short$Lot: this file has no style 'Short' (its "
+                           "styles: Default, Tall, Taller)"));
+  const auto base = compileImporting(styles + "style Wide extends Tal\n");
+  CHECK(says(base, "main.cga:7:20: error[E803]: the style 'Wide' extends 'Tal', which is not a style declared before "
+                   "it; did you mean 'Tall'?"));
+  const auto fresh = compileImporting(styles + "attr w = 3\n");
+  CHECK(says(fresh, "main.cga:7:6: error[E801]: a new attr in a style ('w' is not an attr of the Default style)"));
+  const auto twice = compileImporting(styles + "style Tall\n");
+  CHECK(says(twice, "main.cga:7:7: error[E803]: the style 'Tall' is declared twice"));
 }
