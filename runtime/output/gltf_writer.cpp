@@ -4,6 +4,7 @@
 #include "runtime/io/glb_writer.h"
 #include "runtime/io/float_text.h"
 #include "runtime/io/mesh_attributes.h"
+#include "runtime/output/base_color_opacity_image.h"
 #include "runtime/output/metallic_roughness_image.h"
 #include "runtime/output/start_extras.h"
 
@@ -176,10 +177,12 @@ class Writer {
   // (only those used)
   std::map<std::pair<uint32_t, uint32_t>, int> materialOut_;
   json materials_ = json::array();
-  // An image the file embeds: one of Scene::images, or the metallic-roughness texture packed
-  // from a roughness and a metallic map (metallic_roughness_image.h; -1: none).
+  // An image the file embeds: one of Scene::images (`file`); the base colour texture made
+  // from a colour map and an opacity map (base_color_opacity_image.h: `opacity` set); or the
+  // metallic-roughness texture packed from a roughness and a metallic map
+  // (metallic_roughness_image.h). Scene::images indices, -1: none.
   struct ImageOut {
-    int32_t file = -1, roughness = -1, metallic = -1;
+    int32_t file = -1, roughness = -1, metallic = -1, color = -1, opacity = -1;
     bool operator==(const ImageOut&) const = default;
   };
   std::vector<ImageOut> imagesOut_;  // the file's textures' images, in order (only those used)
@@ -541,7 +544,15 @@ json Writer::materialJson(const Material& m, uint32_t ownSets) {
     if (set > 0) t["texCoord"] = set;
     return t;
   };
-  if (m.image >= 0) pbr["baseColorTexture"] = texture({m.image});
+  // CityEngine's opacity map as the base colour texture's alpha (glTF has no texture of its
+  // own for it): beside the colour map, on its coordinates; without one, a white image on
+  // the opacity map's own set.
+  const int32_t opacityMap = m.maps[Finish::kOpacityMap];
+  if (m.image >= 0 && opacityMap >= 0) pbr["baseColorTexture"] = texture({-1, -1, -1, m.image, opacityMap});
+  else if (m.image >= 0) pbr["baseColorTexture"] = texture({m.image});
+  else if (opacityMap >= 0 && setOf(Finish::kOpacityMap) > 0)
+    pbr["baseColorTexture"] = layerTexture({-1, -1, -1, -1, opacityMap}, setOf(Finish::kOpacityMap));
+  const bool opacityMapped = pbr.contains("baseColorTexture") && opacityMap >= 0;
   // CityEngine's roughness and metallic maps, packed into one image (green, blue) sampled
   // with the roughness map's set, else the metallic map's.
   const int32_t roughnessMap = m.maps[Finish::kRoughnessMap], metallicMap = m.maps[Finish::kMetallicMap];
@@ -561,7 +572,7 @@ json Writer::materialJson(const Material& m, uint32_t ownSets) {
   // CGA's material.opacity: blended where below 1. The normal map only where there is a
   // base colour image, on uv set 5's coordinates (TEXCOORD_5) where the primitive has them,
   // else on the base colour's (TEXCOORD_0).
-  if (alpha < 1) out["alphaMode"] = "BLEND";
+  if (alpha < 1 || opacityMapped) out["alphaMode"] = "BLEND";
   if (m.image >= 0 && m.normalImage() >= 0) out["normalTexture"] = layerTexture({m.normalImage()}, setOf(kNormalMapUvSet));
   // The occlusion map (glTF reads its red channel, as CityEngine does).
   const int32_t occlusionMap = m.maps[Finish::kOcclusionMap];
@@ -633,7 +644,9 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
         const auto path = [&](int32_t k) { return k >= 0 ? &scene_.images[size_t(k)] : nullptr; };
         io::EmbeddedImage packed;
         packed.mimeType = "image/png";
-        if (!packMetallicRoughness(path(out.roughness), path(out.metallic), packed.bytes, error)) return false;
+        if (out.opacity >= 0 ? !packBaseColorOpacity(path(out.color), *path(out.opacity), packed.bytes, error)
+                             : !packMetallicRoughness(path(out.roughness), path(out.metallic), packed.bytes, error))
+          return false;
         images.push_back(std::move(packed));
       }
     }

@@ -72,6 +72,7 @@ def decode_png(data):
 
 
 ROUGH = [[10, 60], [110, 160]]  # 2 x 2 grey
+AO = [[200, 100], [50, 25]]  # 2 x 2 grey
 METAL_BLUE = [[20 + 10 * x + 50 * y for x in range(4)] for y in range(4)]  # 4 x 4, red and green 0
 
 
@@ -81,7 +82,7 @@ def draw_maps(folder):
         "rough.png": png(2, 2, 1, ROUGH),
         "metal.png": png(4, 4, 3, [sum(([0, 0, b] for b in row), []) for row in METAL_BLUE]),
         "glow.png": png(2, 2, 3, [[255, 200, 0] * 2] * 2),
-        "ao.png": png(2, 2, 1, [[200, 100], [50, 25]]),
+        "ao.png": png(2, 2, 1, AO),
         "bump.png": png(2, 2, 1, [[0, 255], [255, 0]]),
     }
     for name, data in images.items():
@@ -164,12 +165,33 @@ def check_gltf(doc, buffer, images, label):
     prims = by_leaf["P2"]
     if any(k not in p["attributes"] for p in prims for k in ("TEXCOORD_6", "TEXCOORD_8")):
         fail(f"{label}: P2 lacks TEXCOORD_6 or TEXCOORD_8")
-    # P3: no colour map: occlusion on its own set 7, the emissive map dropped.
+    # P3: no colour map: occlusion on its own set 7, the emissive map dropped, the opacity map
+    # a white base colour texture with its alpha, on set 4.
     m = mats["P3"]
     if slot(m, "occlusionTexture") is None or slot(m, "occlusionTexture")[1] != 7 or "emissiveTexture" in m \
-            or "emissiveFactor" in m or "baseColorTexture" in m["pbrMetallicRoughness"]:
-        fail(f"{label}: P3's material {m}: expected occlusionTexture on set 7 alone")
-    # P4 and P5: no layer textures; P4's maps have no glTF slot.
+            or "emissiveFactor" in m or m.get("alphaMode") != "BLEND":
+        fail(f"{label}: P3's material {m}: expected occlusionTexture on set 7, no emissive, alphaMode BLEND")
+    s = slot(m, "baseColorTexture")
+    if s is None or s[1] != 4:
+        fail(f"{label}: P3's baseColorTexture {s}, expected the opacity map on texCoord 4")
+    else:
+        w, h, c, rows = decode_png(image_of(s[0]))
+        got = [tuple(rows[y][c * x:c * x + c]) for y in range(h) for x in range(w)]
+        if (w, h, c) != (2, 2, 4) or got != [(255, 255, 255, AO[y][x]) for y in range(2) for x in range(2)]:
+            fail(f"{label}: P3's base colour image {w} x {h} x {c} {got}")
+    # P4: the opacity map in the base colour image's alpha, brick.png's colours kept.
+    m = mats["P4"]
+    s = slot(m, "baseColorTexture")
+    if s is None or s[1] != 0 or m.get("alphaMode") != "BLEND":
+        fail(f"{label}: P4's baseColorTexture {s} alphaMode {m.get('alphaMode')}, expected set 0, BLEND")
+    else:
+        w, h, c, rows = decode_png(image_of(s[0]))
+        bw, bh, bc, brick = decode_png(images["brick"])
+        expected = [brick[y][bc * x:bc * x + 3] + [AO[y * 2 // bh][x * 2 // bw]] for y in range(bh) for x in range(bw)]
+        got = [rows[y][c * x:c * x + c] for y in range(h) for x in range(w)]
+        if (w, h, c) != (bw, bh, 4) or got != expected:
+            fail(f"{label}: P4's base colour image {w} x {h} x {c} is not brick.png with ao.png's alpha")
+    # P4 and P5: no other layer textures; P4's bump, dirt and specular maps have no glTF slot.
     for leaf in ("P4", "P5"):
         m = mats[leaf]
         extra = [k for k in ("occlusionTexture", "emissiveTexture", "normalTexture", "emissiveFactor") if k in m]
@@ -179,6 +201,8 @@ def check_gltf(doc, buffer, images, label):
     if not mats["P5"]["name"].startswith("brick_ffffff") or set(mats["P5"]) != {"doubleSided", "name", "pbrMetallicRoughness"} \
             or set(mats["P5"]["pbrMetallicRoughness"]) != {"baseColorTexture", "metallicFactor", "roughnessFactor"}:
         fail(f"{label}: P5's material {mats['P5']}, expected the plain brick material")
+    elif image_of(slot(mats["P5"], "baseColorTexture")[0]) != images["brick"]:
+        fail(f"{label}: P5's base colour image is not brick.png as it is")
 
 
 def check_mtl(path, label):
@@ -217,6 +241,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(os.path.join(root, "examples", "textures"), os.path.join(tmp, "textures"))
         images = draw_maps(os.path.join(tmp, "maps"))
+        images["brick"] = open(os.path.join(root, "examples", "textures", "brick.png"), "rb").read()
         for ext in ("cga", "fgsg"):
             grammar = os.path.join(tmp, f"layers.{ext}")
             shutil.copy(os.path.join(here, f"layers.{ext}"), grammar)
@@ -234,11 +259,11 @@ def main():
                     continue
                 r034 = {t: [l for l in r.stderr.splitlines() if "warning[R034]" in l] for t, r in runs.items()}
                 gltf_warning = r034[out] == [l for l in r034[out] if "warning[R034]: material.bumpmap, material.dirtmap, "
-                                             "material.specularmap, material.opacitymap not in" in l] != []
+                                             "material.specularmap not in" in l] != []
                 obj_warning = r034[obj] == [l for l in r034[obj] if "warning[R034]: material.dirtmap, "
                                             "material.occlusionmap not in" in l] != []
                 if not gltf_warning or not obj_warning:
-                    fail(f"{label}: R034 expected for the glTF's bump ... opacity maps and the OBJ's dirt map: "
+                    fail(f"{label}: R034 expected for the glTF's bump, dirt, specular maps and the OBJ's dirt map: "
                          f"{runs[out].stderr.strip()} / {runs[obj].stderr.strip()}")
                 outputs[engine] = open(out, "rb").read() + open(obj[:-4] + ".mtl", "rb").read()
                 v = subprocess.run(["node", validator, "--strict", out], capture_output=True, text=True)
