@@ -162,6 +162,7 @@ A --> [ Here ]
       [ translate(rel, pivot, 1, 2, 3) MovedRel ]
       [ rotate(rel, pivot, 90, 0, 0) TurnedRel ]
       [ translate(abs, object, 1, 2, 3) ObjectAbs ]
+      [ comp(f) { top : rotate(abs, pivot, 0, 0, 0) translate(abs, pivot, 0, 0, 0) TopAtPivot } ]
       split(x) { 4 : B | ~1 : C }
 C --> [ translate(abs, pivot, 1, 2, 3) ChildAbs ]
       [ translate(rel, pivot, 1, 2, 3) ChildRel ]
@@ -186,6 +187,15 @@ C --> [ translate(abs, pivot, 1, 2, 3) ChildAbs ]
   // The object system is still the lot's: (10, 0, -20) + 1 (0.6, 0, -0.8) + 2 (0, 1, 0) +
   // 3 (0.8, 0, 0.6) = (13, 2, -19).
   checkPivotLeaf(leaves, "ObjectAbs", PivotV(13, 2, -19), X1, Y1, Z1, S1, pivotLotCorners(PivotV(0, 2, 5)));
+  // A comp face keeps the pivot too: turned to the pivot's axes and moved to its origin.
+  {
+    REQUIRE(leaves.count("TopAtPivot") == 1);
+    const PivotLeaf& top = leaves.at("TopAtPivot");
+    INFO("TopAtPivot P " << top.P.transpose() << " X " << top.X.transpose() << " Y " << top.Y.transpose());
+    CHECK(pivotNear(top.P, P1));
+    CHECK(pivotNear(top.X, X1));
+    CHECK(pivotNear(top.Y, Y1));
+  }
   // C: the part of the split from 4 m along X' on: origin (13, 0, -24) + 4 X' =
   // (9.8, 0, -26.4), size 6 x 5 x 2. It keeps the pivot: abs puts its origin at the pivot's
   // (1, 2, 3), (11, 3, -23), not at C's own origin moved.
