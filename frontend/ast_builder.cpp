@@ -408,12 +408,13 @@ void AstBuilder::sizesFromParts(Item& item) {
   }
 }
 
-// CGA's index selectors of a setback, `Setback(2){ 0: Front | -1: West | remainder: R }`:
-// a part whose label is a whole number (the parser reads it as a size) selects that edge,
-// labelled as runtime/cga/shape_operations.h's edgeIndexLabel. Other sizes stay for the
-// analyzer to judge.
+// CGA's index selectors of a setback, `Setback(2){ 0: Front | -1: West | remainder: R }`,
+// and of a comp, `Comp("e"){ 2: Edge }`: a part whose label is a whole number (the parser
+// reads it as a size) selects that edge (component), labelled as
+// runtime/cga/edge_index_label.h's edgeIndexLabel. Other sizes stay for the analyzer to judge.
 void AstBuilder::edgeIndexesFromParts(Item& item) {
-  if (item.name != "Setback" && item.name != "SetbackPerEdge" && item.name != "SetbackToArea") return;
+  if (item.name != "Setback" && item.name != "SetbackPerEdge" && item.name != "SetbackToArea" && item.name != "Comp")
+    return;
   for (Successor& part : item.body) {
     if (!part.size || !part.selector.empty()) continue;
     const Expr* number = part.size.get();

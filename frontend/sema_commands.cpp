@@ -7,6 +7,7 @@
 
 #include "frontend/builtins.h"
 #include "frontend/shape_operations.h"
+#include "runtime/cga/edge_index_label.h"
 #include "runtime/synthesis/continuous/example_file.h"
 
 #include <cmath>
@@ -223,8 +224,6 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
           "faces", "f", "sidefaces", "vertical", "aslant", "horizontal", "nutant", "top", "bottom", "front", "back",
           "left", "right", "edges", "e", "sideedges", "topedges", "bottomedges", "eaves", "ridges", "rakes", "hips",
           "valleys", "v", "vertices"};
-      // Labelled parts take faces, or edges by their roof class (checkBody): not vertices.
-      static const std::set<std::string> kEdgeSelectors = {"v", "vertices"};
       std::string sel = stringArg(0, "selector");
       if (stringOk && !kSelectors.count(sel))
         diags_.error("E028", item.args[0]->range,
@@ -233,11 +232,6 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
                          "right, edges or e, "
                          "sideedges, topedges, bottomedges; on roofs eaves, ridges, rakes, hips, valleys; "
                          "vertices or v)");
-      else if (stringOk && !item.body.empty() && !item.body[0].selector.empty() &&
-               kEdgeSelectors.count(sel))
-        diags_.error("E028", item.args[0]->range,
-                     "labelled parts take faces or edges: write `Comp(\"f\"){ front: A | side: B }` or "
-                     "`Comp(\"e\"){ eave: A | ridge: B }`, not \"" + sel + "\"");
       break;
     }
     case CommandId::Offset: numArgs(0, false); break;
@@ -454,16 +448,22 @@ bool Analyzer::checkSplitSyntax(const Item& item, const CommandInfo& cmd) {
 }
 
 void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
-  // The faces a labelled part of Comp may name (rt::cga::faceSelectorMask).
-  static const std::set<std::string> kPartFaces = {"front", "back",  "left",       "right",  "top", "bottom",
-                                                   "vertical", "aslant", "horizontal", "nutant", "side", "all"};
-  // Those of a Comp of edges (rt::cga::componentSelectorMask): roof edges by their class.
-  static const std::set<std::string> kEdgeComponents = {"e",     "edges",  "sideedges", "topedges", "bottomedges",
+  // The faces a labelled part of Comp may name (rt::cga::componentSelectorMask), and with
+  // them the edges and vertices of CityEngine's Comp("e") / Comp("v"); an index `2:` too.
+  static const std::set<std::string> kPartFaces = {
+      "front",       "back",       "left",       "right",       "top",        "bottom",      "vertical",
+      "aslant",      "horizontal", "nutant",     "side",        "all",        "border",      "inside",
+      "worldUp",     "worldDown",  "worldNorth", "worldSouth",  "worldEast",  "worldWest",   "worldSide",
+      "objectTop",   "objectBottom", "objectFront", "objectBack", "objectLeft", "objectRight", "objectSide"};
+  // Those of fgsg's Comp of edges: roof edges by their class (Comp("e") takes them too).
+  static const std::set<std::string> kEdgeComponents = {"edges",  "sideedges", "topedges", "bottomedges",
                                                         "eaves", "ridges", "rakes",     "hips",     "valleys"};
   static const std::set<std::string> kPartEdges = {"all",   "eave",   "eaves",   "ridge", "ridges", "hip",
                                                    "hips",  "valley", "valleys", "gable", "rake",   "rakes"};
-  const bool edgeComp = cmd.id == CommandId::Comp && !item.args.empty() &&
-                        item.args[0]->kind == ExprKind::String && kEdgeComponents.count(item.args[0]->text);
+  const std::string component =
+      cmd.id == CommandId::Comp && !item.args.empty() && item.args[0]->kind == ExprKind::String ? item.args[0]->text
+                                                                                                : "";
+  const bool edgeComp = kEdgeComponents.count(component) > 0;
   const size_t parts = item.body.size();
   size_t labelled = 0;
   for (const auto& part : item.body) {
@@ -486,10 +486,15 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
       if (!kPartEdges.count(part.selector))
         diags_.error("E028", part.selectorRange,
                      "unknown edge '" + part.selector + ":' (eave, ridge, hip, valley, gable, all)");
-    } else if (!kPartFaces.count(part.selector)) {
+    } else if (long long index = 0; rt::cga::edgeIndexOfLabel(part.selector, index)) {
+      // an index selector: the component at that place (wrapping around), any component
+    } else if (!kPartFaces.count(part.selector) && !(component == "e" && kPartEdges.count(part.selector))) {
+      const char* what = component == "e" ? "edge" : component == "v" || component == "vertices" ? "vertex" : "face";
       diags_.error("E028", part.selectorRange,
-                   "unknown face '" + part.selector +
-                       ":' (front, back, left, right, top, bottom, vertical, aslant, horizontal, nutant, side, all)");
+                   std::string("unknown ") + what + " '" + part.selector +
+                       ":' (front, back, left, right, top, bottom, vertical, aslant, horizontal, nutant, side, all, "
+                       "border, inside, worldUp ... worldSide, objectTop ... objectSide, an index" +
+                       (component == "e" ? ", eave, ridge, hip, valley, gable)" : ")"));
     }
   }
   if (cmd.id == CommandId::ShapeOperation && labelled != parts && !shapeOperationPlainBody(item.name))

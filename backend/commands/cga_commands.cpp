@@ -3,10 +3,12 @@
 #include "backend/commands/shape_operations.h"
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
+#include "runtime/cga/edge_index_label.h"
 #include "runtime/cga/ground_face.h"
 #include "runtime/cga/shape_operations.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 
@@ -157,14 +159,24 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   } else if (op.kind == ir::OpKind::Repeat) {
     std::vector<double> sizes(a, a + op.sizes.size());
     ok = rt::cga::repeat(st.scope, st.geom, op.index, sizes, d_.arena(), parts, error);
-  } else {
-    ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error);
   }
-  if (!ok) throw DeriveError{op.loc, "R002", error};
-  // Labelled parts of Comp: each face goes to the first part whose label names it.
+  // Labelled parts of Comp: each component goes to the first part whose label names it (a
+  // class of componentSelectorMask's, or an index selector `2:` by its place among them all).
   std::vector<unsigned> labelMasks;
-  for (uint32_t label : op.partLabels)
-    labelMasks.push_back(rt::cga::componentSelectorMask(d_.module().strings[op.str], d_.module().strings[label]));
+  std::vector<long long> labelIndex;  // an index selector's index; LLONG_MIN: none
+  unsigned wantedClasses = 0;
+  for (uint32_t label : op.partLabels) {
+    const std::string& name = d_.module().strings[label];
+    long long index = LLONG_MIN;
+    if (!rt::cga::edgeIndexOfLabel(name, index)) index = LLONG_MIN;
+    labelIndex.push_back(index);
+    labelMasks.push_back(rt::cga::componentSelectorMask(d_.module().strings[op.str], name));
+    if (labelMasks.back() != ~0u) wantedClasses |= labelMasks.back();  // `all` needs no class
+  }
+  if (op.kind == ir::OpKind::Comp)
+    ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error,
+                             d_.objectFrame().axes, wantedClasses);
+  if (!ok) throw DeriveError{op.loc, "R002", error};
   // The body each derived part runs (SIZE_MAX: none), and how many parts each body runs.
   std::vector<size_t> bodyOf(parts.size(), SIZE_MAX);
   std::vector<int32_t> perBody(op.bodies.size() + labelMasks.size() + 1, 0);
@@ -174,8 +186,13 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     size_t body = op.kind == ir::OpKind::Subdiv ? i % op.bodies.size() : 0;
     if (!labelMasks.empty()) {
       body = 0;
-      // ~0u (an edge comp's `all`) takes edges of no roof class too.
-      while (body < labelMasks.size() && labelMasks[body] != ~0u && !(labelMasks[body] & parts[i].faceClass)) ++body;
+      // ~0u (an edge comp's `all`) takes edges of no roof class too; an index wraps around
+      // the components' count as setback's does.
+      auto takes = [&](size_t k) {
+        return labelMasks[k] == ~0u || (labelMasks[k] & parts[i].faceClass) ||
+               (labelIndex[k] != LLONG_MIN && rt::cga::edgeIndexSelects(labelIndex[k], i, parts.size()));
+      };
+      while (body < labelMasks.size() && !takes(body)) ++body;
       if (body == labelMasks.size()) continue;  // no part takes this face
     }
     bodyOf[i] = body;

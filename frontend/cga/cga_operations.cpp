@@ -6,6 +6,8 @@
 //                                       cut; a nested repeat takes what the others leave)
 //   splitArea(x|y|z [, adjust|noAdjust]){ areas : ops }[*]   SplitArea: the same, in areas
 //   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
+//   comp(e|v){ vertical : A | world.up : B | border : C | 2 : D }
+//                                       Comp("e"){ vertical: A | worldUp: B | border: C | #2: D }
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
@@ -34,6 +36,7 @@
 
 #include "frontend/builtins.h"
 #include "frontend/did_you_mean.h"
+#include "runtime/cga/edge_index_label.h"
 
 #include <cctype>
 #include <cmath>
@@ -118,6 +121,39 @@ ExprPtr scopeSize(int axis, const SourceRange& at) {
 std::string fullColor(const std::string& c) {
   if (c.size() == 4 && c[0] == '#') return std::string("#") + c[1] + c[1] + c[2] + c[2] + c[3] + c[3];
   return c;
+}
+
+// A `.cga` comp selector as the label of fgsg's Comp part (runtime/cga/components.cpp's
+// componentSelectorMask): the sides, slopes, `side`, `all`, `border` and `inside` as
+// written, world.up as worldUp, object.front as objectFront, comp(e)'s roof edges, an index
+// selector `2` / `-1` (a whole number written out) as "#2" / "#-1"; "" where comp(kind)
+// has no such selector (street.*, a computed or fractional index ...).
+std::string cgaCompSelectorLabel(const std::string& kind, const std::string& word, const std::string& written) {
+  static const char* const kAnyComponent[] = {"all",      "front",  "back",       "left",   "right",  "top",   "bottom",
+                                              "side",     "vertical", "aslant",   "horizontal", "nutant", "border",
+                                              "inside"};
+  static const char* const kRoofEdges[] = {"eave", "ridge", "hip", "valley", "gable"};
+  static const char* const kFrameSides[] = {"world.up",      "world.down",   "world.north",  "world.south",
+                                            "world.east",    "world.west",   "world.side",   "object.top",
+                                            "object.bottom", "object.front", "object.back",  "object.left",
+                                            "object.right",  "object.side"};
+  for (const char* k : kAnyComponent)
+    if (word == k) return word;
+  if (kind == "e")
+    for (const char* k : kRoofEdges)
+      if (word == k) return word;
+  for (const char* k : kFrameSides)
+    if (word == k) {
+      const size_t dot = word.find('.');
+      std::string label = word.substr(0, dot) + word.substr(dot + 1);
+      label[dot] = static_cast<char>(std::toupper(static_cast<unsigned char>(label[dot])));
+      return label;
+    }
+  const size_t sign = !written.empty() && written[0] == '-' ? 1 : 0;
+  if (word.empty() && written.size() > sign && written.size() < 10 + sign &&
+      written.find_first_not_of("0123456789", sign) == std::string::npos)
+    return rt::cga::edgeIndexLabel(std::stoll(written));
+  return "";
 }
 
 }  // namespace
@@ -734,8 +770,6 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
     compEdgesOrVertices(op, kind, seq, env);
     return;
   }
-  static const char* const kSelectors[] = {"front", "back",     "left",   "right",      "top",   "bottom",
-                                           "side",  "all",      "vertical", "aslant", "horizontal", "nutant"};
   if (seq.pendingInsert) {
     seq.out.items.push_back(std::move(*seq.pendingInsert));
     seq.pendingInsert.reset();
@@ -749,16 +783,15 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
       error("E018", rangeOf(partCtx), "comp's parts are `selector : operations`");
       continue;
     }
-    const std::string sel = selectorWord(sized->key);
-    bool known = false;
-    for (const char* k : kSelectors) known |= sel == k;
-    if (!known) {
+    const std::string sel = cgaCompSelectorLabel(kind, selectorWord(sized->key), sized->key->getText());
+    if (sel.empty()) {
       notSupported(rangeOf(sized->key), "the comp selector '" + sized->key->getText() + "'");
       continue;
     }
     if (sized->sep->getText() == "=")
       warning("W800", rangeOf(sized->sep),
-              "comp's `" + sel + " =` (the faces merged into one shape) gives each face a shape of its own here");
+              "comp's `" + sized->key->getText() +
+                  " =` (the faces merged into one shape) gives each face a shape of its own here");
     Successor part;
     part.range = rangeOf(partCtx);
     part.selector = sel;
@@ -770,42 +803,36 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
   seq.createsShapes = true;
 }
 
-// comp(e){ all : A } and comp(v){ all : A }: fgsg's Comp("e") / Comp("v") with A as its
-// one body (each edge or vertex a shape of its own). comp(e) also takes CityEngine's roof
-// edge selectors `eave ridge hip valley` and `gable` (a gable's sloped edges): labelled
-// parts, each edge going to the first that names its class.
+// comp(e){ ... } and comp(v){ ... }: fgsg's Comp("e") / Comp("v"), each edge or vertex a
+// shape of its own going to the first part whose selector takes it (cgaCompSelectorLabel:
+// the sides and slopes of its normal, border / inside, world.* / object.*, its index;
+// comp(e) also CityEngine's roof edges `eave ridge hip valley gable`). One `all` alone is
+// an unlabelled body.
 void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq,
                                      const Env& env) {
-  static const char* const kEdgeSelectors[] = {"all", "eave", "ridge", "hip", "valley", "gable"};
   std::vector<P::SizedPartContext*> parts;
+  std::vector<std::string> labels;
   for (P::SplitPartContext* partCtx : op->splitBody()->splitPart()) {
     auto* sized = dynamic_cast<P::SizedPartContext*>(partCtx);
     if (!sized) {
       error("E018", rangeOf(partCtx), "comp's parts are `selector : operations`");
       return;
     }
-    const std::string sel = selectorWord(sized->key);
-    bool known = sel == "all";
-    if (kind == "e")
-      for (const char* k : kEdgeSelectors) known |= sel == k;
-    if (!known) {
-      notSupported(rangeOf(sized->key), kind == "e" ? "the comp(e) selector '" + sized->key->getText() + "'"
-                                                    : "comp(v) with selectors other than `all : ...`");
+    const std::string label = cgaCompSelectorLabel(kind, selectorWord(sized->key), sized->key->getText());
+    if (label.empty()) {
+      notSupported(rangeOf(sized->key), "the comp(" + kind + ") selector '" + sized->key->getText() + "'");
       return;
     }
     if (sized->sep->getText() == "=") {
-      notSupported(rangeOf(sized->sep),
-                   "comp(" + kind + ")'s `" + sel + " =` (the components merged into one shape)");
+      notSupported(rangeOf(sized->sep), "comp(" + kind + ")'s `" + sized->key->getText() +
+                                            " =` (the components merged into one shape)");
       return;
     }
     parts.push_back(sized);
+    labels.push_back(label);
   }
   if (parts.empty()) {
     error("E018", rangeOf(op->splitBody()), "comp(" + kind + ") needs its parts: comp(" + kind + "){ all : A }");
-    return;
-  }
-  if (kind == "v" && parts.size() != 1) {
-    notSupported(rangeOf(op->splitBody()), "comp(v) with selectors other than one `all : ...`");
     return;
   }
   if (seq.pendingInsert) {
@@ -816,12 +843,13 @@ void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::str
   item.args.push_back(stringExpr(kind, rangeOf(op->expr()[0])));
   item.hasBody = true;
   // One `all` alone stays an unlabelled body (every edge or vertex).
-  const bool labelled = parts.size() > 1 || selectorWord(parts[0]->key) != "all";
-  for (P::SizedPartContext* sized : parts) {
+  const bool labelled = parts.size() > 1 || labels[0] != "all";
+  for (size_t k = 0; k < parts.size(); ++k) {
+    P::SizedPartContext* sized = parts[k];
     Successor part;
     part.range = rangeOf(sized);
     if (labelled) {
-      part.selector = selectorWord(sized->key);
+      part.selector = labels[k];
       part.selectorRange = rangeOf(sized->key);
     }
     operations(sized->operation(), 0, part, env, true);

@@ -37,10 +37,14 @@ struct Part {
 // takes, as a mask to test against Part::faceClass; 0 for any other name.
 unsigned faceSelectorMask(const std::string& name);
 
-// The same for a labelled part of a Comp of `component`: for edges ("e", "edges" ...) the
+// The same for a labelled part of a Comp of `component`: for fgsg's edges ("edges" ...) the
 // roof classes `eave ridge hip valley gable` (also `eaves ridges hips valleys rake rakes`)
-// and `all` (~0u: every edge, those of no roof class too); for anything else
-// faceSelectorMask(name).
+// and `all` (~0u: every edge, those of no roof class too). CityEngine's comp(e) and comp(v)
+// ("e", "v") also take the scope's sides and slopes (`front ... bottom`, `vertical aslant
+// horizontal nutant` by the mean of the faces' normals; `side` all but horizontal), and
+// every component `border`, `inside` and the world's and the object's sides (`worldUp
+// worldDown worldNorth worldSouth worldEast worldWest worldSide`, `objectTop ... objectSide`);
+// faces anything else as faceSelectorMask(name). 0 for any other name.
 unsigned componentSelectorMask(const std::string& component, const std::string& name);
 
 // Subdiv("X", s1, s2, ...): cuts the scope along `axis` (0 X, 1 Y, 2 Z) into one part
@@ -98,9 +102,13 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
 // becomes an Edge part whose scope has Y along the edge (sy = its length), Z the mean
 // of the adjacent face normals, sx = sz = 0. "e" and "v" are CityEngine's comp(e) and
 // comp(v): every edge with x along it (sx its length, sy = sz = 0), every vertex with a
-// scope of no size at it, z its normal (components.cpp).
+// scope of no size at it, z its normal (components.cpp). Each part's faceClass holds the
+// classes componentSelectorMask tests, the world.* / object.* ones in the world's axes
+// and `objectAxes` (the start shape's); border / inside only where `wantedClasses` (the
+// labels' masks together) asks for them, as finding them takes a pass over every edge.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
-                GeometryArena& arena, std::vector<Part>& out, std::string& error);
+                GeometryArena& arena, std::vector<Part>& out, std::string& error,
+                const Mat3& objectAxes = Mat3::Identity(), unsigned wantedClasses = ~0u);
 
 // Extrude(h): a Polygon becomes a prism of height h along the scope's Z; a flat Box with
 // sy == 0 (a CGA footprint on the XZ plane) grows to height h along Y. The result's

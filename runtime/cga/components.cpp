@@ -48,6 +48,20 @@ enum EdgeClass : unsigned {
   kEave = 8, kRidge = 16, kRake = 32, kHip = 64, kValley = 128,
 };
 
+// What CityEngine's selectors say of a component (Part::faceClass of comp(e) and comp(v),
+// and of comp(f)'s faces past their FaceClass bits): bits 0..9 the FaceClass of its normal
+// in the scope's axes, then border / inside, the roof edge classes (EdgeClass shifted past
+// those), and the directions of its normal in the world's axes (x east, y up, z south) and
+// the object's (the start shape's), each as FaceClass's six sides.
+enum ComponentClass : unsigned {
+  kCompBorder = 1u << 10,
+  kCompInside = 1u << 11,
+  kCompRoofShift = 9,  // kEave (8) << 9 is bit 12 ... kValley (128) << 9 bit 16
+  kCompWorldShift = 17,
+  kCompObjectShift = 23,
+  kCompSideBits = 63,  // FaceClass's top bottom front back left right
+};
+
 struct Selector {
   bool edges = false;
   unsigned mask = 0;  // FaceClass or EdgeClass bits
@@ -138,6 +152,39 @@ unsigned classifyFace(const Vec3& worldNormal, const Scope& scope) {
                                                            : kNutant;
   if (std::abs(n.z()) >= std::abs(n.x())) return slope | (n.z() > 0 ? kFront : kBack);
   return slope | (n.x() > 0 ? kRight : kLeft);
+}
+
+// An edge's or a vertex's FaceClass bits by its normal `n` (the mean of its faces',
+// unnormalised) in the frame `axes`: its slope as a face's, and the quadrant its largest
+// component points into (op_comp: "classifying their directions into the corresponding
+// quadrants"). A tie (a box's top edge leans 45 degrees between top and front, its top
+// corner between three sides) goes to top / bottom, then front / back. No normal (the
+// faces cancel): no class.
+unsigned compClassifyByQuadrant(const Vec3& worldNormal, const Mat3& axes) {
+  if (!(worldNormal.norm() > kMergeTol)) return 0;
+  const Vec3 n = (axes.transpose() * worldNormal).normalized();
+  constexpr double kTie = 1e-9;
+  const unsigned slope = std::abs(n.y()) > kSinHorizontal ? kHorizontal
+                         : n.y() > kSinVertical            ? kAslant
+                         : n.y() >= -kSinVertical          ? kVertical
+                                                           : kNutant;
+  const double ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
+  if (ay >= std::max(ax, az) - kTie) return slope | (n.y() > 0 ? kTop : kBottom);
+  if (az >= ax - kTie) return slope | (n.z() > 0 ? kFront : kBack);
+  return slope | (n.x() > 0 ? kRight : kLeft);
+}
+
+// The world.* and object.* bits of a component whose normal is `worldNormal`: its sides
+// (compClassifyByQuadrant's for an edge or a vertex, `quadrant`; classifyFace's for a face) in
+// the world's axes and in the object's.
+unsigned compWorldAndObjectClass(const Vec3& worldNormal, const Mat3& objectAxes, bool quadrant) {
+  auto sides = [&](const Mat3& axes) {
+    if (quadrant) return compClassifyByQuadrant(worldNormal, axes) & kCompSideBits;
+    Scope frame;
+    frame.axes = axes;
+    return classifyFace(worldNormal, frame) & kCompSideBits;
+  };
+  return (sides(Mat3::Identity()) << kCompWorldShift) | (sides(objectAxes) << kCompObjectShift);
 }
 
 // The face's scope: Z its normal, X horizontal along the face (Y x Z of the solid, the
@@ -265,7 +312,7 @@ Part cityEngineEdgePart(const WorldEdge& e) {
 // CityEngine's comp(v): each vertex once, in the order the faces first reach it; its
 // scope has no size, its origin at the vertex, z the mean of the normals of the faces
 // around it and x along the first edge that leaves it (made orthogonal to z), y = z x x.
-std::vector<Part> vertexParts(const std::vector<WorldFace>& faces, double tol) {
+std::vector<Part> vertexParts(const std::vector<WorldFace>& faces, double tol, std::vector<Vec3>& normalSums) {
   struct Vertex {
     Vec3 p, out, normalSum = Vec3::Zero();
   };
@@ -286,7 +333,9 @@ std::vector<Part> vertexParts(const std::vector<WorldFace>& faces, double tol) {
     }
   }
   std::vector<Part> out;
+  normalSums.clear();
   for (const Vertex& v : vertices) {
+    normalSums.push_back(v.normalSum);
     Vec3 z = v.normalSum.norm() > kMergeTol ? v.normalSum.normalized() : Vec3(0.0, 1.0, 0.0);
     Vec3 x = v.out - v.out.dot(z) * z;
     x = x.norm() > kMergeTol ? x.normalized() : z.unitOrthogonal();
@@ -381,10 +430,36 @@ unsigned faceSelectorMask(const std::string& name) {
   return parseSelector(name, sel) && !sel.edges ? sel.mask : 0;
 }
 
+namespace {
+
+// The world.* / object.* selectors (fgsg's names; `.cga`'s world.up is worldUp), border and
+// inside: the bits they take of any component.
+unsigned compFrameSelectorMask(const std::string& name) {
+  static const struct {
+    const char* name;
+    unsigned mask;
+  } kFrameLabels[] = {
+      {"worldUp", kTop << kCompWorldShift},           {"worldDown", kBottom << kCompWorldShift},
+      {"worldSouth", kFront << kCompWorldShift},      {"worldNorth", kBack << kCompWorldShift},
+      {"worldEast", kRight << kCompWorldShift},       {"worldWest", kLeft << kCompWorldShift},
+      {"worldSide", kSide << kCompWorldShift},        {"objectTop", kTop << kCompObjectShift},
+      {"objectBottom", kBottom << kCompObjectShift},  {"objectFront", kFront << kCompObjectShift},
+      {"objectBack", kBack << kCompObjectShift},      {"objectLeft", kLeft << kCompObjectShift},
+      {"objectRight", kRight << kCompObjectShift},    {"objectSide", kSide << kCompObjectShift},
+      {"border", kCompBorder},                        {"inside", kCompInside}};
+  for (const auto& l : kFrameLabels)
+    if (name == l.name) return l.mask;
+  return 0;
+}
+
+}  // namespace
+
 unsigned componentSelectorMask(const std::string& component, const std::string& name) {
   Selector sel;
-  if (!parseSelector(component, sel) || !(sel.edges || sel.cityEngineAxes) || sel.vertices)
-    return faceSelectorMask(name);
+  if (!parseSelector(component, sel)) return 0;
+  const bool fgsgEdges = sel.edges && !sel.cityEngineAxes;  // Comp("edges"): fgsg's edge classes
+  if (const unsigned frame = compFrameSelectorMask(name); frame && !fgsgEdges) return frame;
+  if (!(sel.edges || sel.cityEngineAxes)) return faceSelectorMask(name);
   static const struct {
     const char* name;
     unsigned mask;
@@ -392,15 +467,20 @@ unsigned componentSelectorMask(const std::string& component, const std::string& 
                      {"ridges", kRidge},  {"hip", kHip},       {"hips", kHip},     {"valley", kValley},
                      {"valleys", kValley}, {"gable", kRake},   {"rake", kRake},    {"rakes", kRake}};
   for (const auto& l : kEdgeLabels)
-    if (name == l.name) return l.mask;
-  return 0;
+    if (name == l.name) return sel.cityEngineAxes ? l.mask == ~0u ? ~0u : l.mask << kCompRoofShift : l.mask;
+  if (!sel.cityEngineAxes) return 0;  // fgsg's Comp("edges"): the roof classes only
+  // comp(e) and comp(v): the scope's sides and slopes as comp(f)'s; `side` all but the
+  // horizontal ones (op_comp: "Selects all but the horizontal components").
+  if (name == "side") return kVertical | kAslant | kNutant;
+  return faceSelectorMask(name);
 }
 
 // `out` is replaced by the selected components, in the order of the solid's faces (a box:
 // front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
 // is a solid with one face: its own; its edges are its boundary.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
-                GeometryArena& arena, std::vector<Part>& out, std::string& error) {
+                GeometryArena& arena, std::vector<Part>& out, std::string& error, const Mat3& objectAxes,
+                unsigned wantedClasses) {
   out.clear();
   Selector sel;
   if (!parseSelector(selector, sel)) {
@@ -415,28 +495,50 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   }
   const std::vector<WorldFace> faces = worldFaces(scope, geom, arena);
   const double tol = kMergeTol * (1.0 + scope.S.norm());
-  if (sel.vertices) {
-    out = vertexParts(faces, tol);
-    return true;
-  }
+  const bool wantsBorder = (wantedClasses & (kCompBorder | kCompInside)) != 0;
   auto edgeClass = [&](const WorldEdge& e) {
     const double ha = (e.a - scope.P).dot(scope.Y()), hb = (e.b - scope.P).dot(scope.Y());
     return roofEdgeClass(e, faces, scope.Y(), scope.P, ha, hb, tol);
   };
+  // An edge or a vertex: classed by the mean of its faces' normals; border when it is (or
+  // ends) an edge of one face only (op_comp), inside otherwise.
+  auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border) {
+    return compClassifyByQuadrant(normalSum, scope.axes) | (border ? kCompBorder : kCompInside) |
+           compWorldAndObjectClass(normalSum, objectAxes, true);
+  };
+  if (sel.vertices) {
+    std::vector<Vec3> normalSums;
+    out = vertexParts(faces, tol, normalSums);
+    std::vector<WorldEdge> edges;
+    if (wantsBorder) edges = uniqueEdges(faces, tol);
+    for (size_t i = 0; i < out.size(); ++i) {
+      bool border = false;
+      for (const WorldEdge& e : edges)
+        border |= e.faces[1] < 0 && ((e.a - out[i].scope.P).norm() <= tol || (e.b - out[i].scope.P).norm() <= tol);
+      out[i].faceClass = edgeOrVertexClass(normalSums[i], border);
+    }
+    return true;
+  }
   if (sel.cityEngineAxes) {
     for (const WorldEdge& e : uniqueEdges(faces, tol)) {
       out.push_back(cityEngineEdgePart(e));
-      out.back().faceClass = edgeClass(e);  // for labelled parts (componentSelectorMask)
+      out.back().faceClass = edgeOrVertexClass(e.normalSum, e.faces[1] < 0) | (edgeClass(e) << kCompRoofShift);
     }
     return true;
   }
 
   if (!sel.edges) {
+    // A face is border when one of its edges is no other face's; a box is closed.
+    std::vector<char> borderFace(faces.size(), 0);
+    if (wantsBorder && geom.kind != GeomKind::Box)
+      for (const WorldEdge& e : uniqueEdges(faces, tol))
+        if (e.faces[1] < 0 && e.faces[0] >= 0) borderFace[size_t(e.faces[0])] = 1;
     GeomRef unitSquare{GeomKind::Polygon, 0, 0};
-    for (const WorldFace& f : faces)
-      if (const unsigned cls = classifyFace(f.normal, scope); cls & sel.mask) {
-        out.push_back(facePart(f, scope, arena, unitSquare));
-        out.back().faceClass = cls;
+    for (size_t i = 0; i < faces.size(); ++i)
+      if (const unsigned cls = classifyFace(faces[i].normal, scope); cls & sel.mask) {
+        out.push_back(facePart(faces[i], scope, arena, unitSquare));
+        out.back().faceClass = cls | (borderFace[i] ? kCompBorder : kCompInside) |
+                               compWorldAndObjectClass(faces[i].normal, objectAxes, false);
       }
     return true;
   }
