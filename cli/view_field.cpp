@@ -1,5 +1,6 @@
 #include "cli/view_field.h"
 
+#include "backend/commands/surface_geometry.h"
 #include "backend/commands/surface_world.h"
 #include "runtime/field/field_sketch.h"
 #include "runtime/surface/surface_mesh.h"
@@ -55,15 +56,21 @@ Json overlayDesignElements(const ir::FieldSpec& spec, const rt::surface::Surface
 
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
                              const std::vector<std::string>& dataDirs, std::string* fieldName,
-                             FieldEditBounds* bounds, std::shared_ptr<const backend::SurfaceWorld> built) {
+                             FieldEditBounds* bounds, std::shared_ptr<const backend::SurfaceWorld>* shown,
+                             backend::SurfaceGeometryCache* geometries) {
+  std::shared_ptr<const backend::SurfaceWorld> world = shown ? std::move(*shown) : nullptr;
+  if (shown) shown->reset();
   if (!module.surface.present && options.surfaceOverride.empty())
     return error("the grammar declares no surface (fields live on one)").dump();
-  std::shared_ptr<const backend::SurfaceWorld> world = std::move(built);
   try {
-    if (!world) world = std::make_shared<backend::SurfaceWorld>(module, options, dataDirs);
+    if (!world)
+      world = geometries ? std::make_shared<backend::SurfaceWorld>(
+                               module, options, dataDirs, geometries->obtain(module.surface, options, dataDirs))
+                         : std::make_shared<backend::SurfaceWorld>(module, options, dataDirs);
   } catch (const backend::DeriveError& e) {
     return error("line " + std::to_string(e.loc.line) + ": " + e.message).dump();
   }
+  if (shown) *shown = world;
   const auto fields = world->fields();
   if (fields.empty()) return error("the grammar declares no field").dump();
   const auto& [name, field] = fields.front();

@@ -22,8 +22,9 @@
 #include <vector>
 
 namespace fgsg::backend {
+class SurfaceGeometryCache;
 class SurfaceWorld;
-}
+}  // namespace fgsg::backend
 
 namespace fgsg::cli {
 
@@ -34,11 +35,14 @@ constexpr size_t kMaxFieldOverlaySingularities = 1000;
 
 // `name` and `bounds` (when not null) get the field's name and the surface's box, which
 // edits of its elements are checked against; they are left alone when there is an error.
-// `built`: the surface and fields a derivation of `module` with `options` built already
-// (fgsg view's SurfaceReuse), not built a second time; null: built here.
+// `world`, when not null: on entry the surface and fields a derivation of `module` with
+// `options` built already (fgsg view's SurfaceReuse), not built a second time (null: built
+// here, on a mesh from `geometries` when that has it); on return the world the overlay
+// shows (null after an error), for the derivation that follows.
 std::string fieldOverlayJson(const ir::Module& module, const rt::DeriveOptions& options,
                              const std::vector<std::string>& dataDirs, std::string* name = nullptr,
                              FieldEditBounds* bounds = nullptr,
-                             std::shared_ptr<const backend::SurfaceWorld> built = nullptr);
+                             std::shared_ptr<const backend::SurfaceWorld>* world = nullptr,
+                             backend::SurfaceGeometryCache* geometries = nullptr);
 
 }  // namespace fgsg::cli

@@ -188,14 +188,14 @@ void ViewSession::sendFields(bool recompiled) {
     } else {
       // The surface and fields the last derivation built, when it derived what the overlay
       // shows (the grammar's own values and the start seed): not built a second time.
-      std::shared_ptr<const backend::SurfaceWorld> built;
+      std::shared_ptr<const backend::SurfaceWorld> world;
       if (surfaceReuse_ && surfaceReuseKey_.first.empty() && surfaceReuseKey_.second == options_.derive.seed) {
         std::lock_guard<std::mutex> lock(surfaceReuse_->mutex);
-        built = surfaceReuse_->world;
+        world = surfaceReuse_->world;
       }
       try {
         field_ = fieldOverlayJson(compiled_->module, options_.derive, grammarDataDirs(options_.file), &name, &bounds,
-                                  std::move(built));
+                                  &world, &surfaceGeometries_);
       } catch (const std::exception& e) {  // out of memory ...
         field_ = Json{{"type", "field"}, {"error", e.what()}}.dump();
       }
@@ -449,7 +449,11 @@ void ViewSession::prepareSurface(const std::vector<std::string>& dataDirs) {
   rt::DeriveOptions options = options_.derive;
   options.assetDirs = dataDirs;
   // A surface that cannot be built fails the derivation too, which says why.
-  const bool built = buildViewSurface(compiled_->module, options, dataDirs, surface, error);
+  // The same mesh as the last compile's: its surface as it was (not laid out, encoded nor
+  // sent to the pages again).
+  const bool built =
+      buildViewSurface(compiled_->module, options, dataDirs, surface, error, &surfaceGeometries_, &viewSurface_);
+  viewSurface_ = built ? surface : ViewSurface{};
   Json textures = Json::array();
   std::lock_guard<std::mutex> lock(mutex_);
   paint_.reset(compiled_->module, options_.file, dataDirs, built ? surface.marching : nullptr);
@@ -460,8 +464,9 @@ void ViewSession::prepareSurface(const std::vector<std::string>& dataDirs) {
     surface_.reset();
     return;
   }
-  surface_ = std::make_shared<std::pair<std::string, std::string>>(
-      Json{{"type", "surface"}, {"triangles", surface.triangles}, {"textures", textures}}.dump(), std::move(surface.glb));
+  std::string header = Json{{"type", "surface"}, {"triangles", surface.triangles}, {"textures", textures}}.dump();
+  if (surface_ && surface_->first == header && surface_->second == surface.glb) return;  // the pages have it
+  surface_ = std::make_shared<std::pair<std::string, std::string>>(std::move(header), std::move(surface.glb));
 }
 
 std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const std::map<std::string, std::string>& attrs,
@@ -548,6 +553,7 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   if (!loader) loader = std::make_unique<backend::native::CodeLoader>();
   if (recompile || !surfaceReuse_ || surfaceReuseKey_ != std::make_pair(attrs, seed)) {
     surfaceReuse_ = std::make_unique<backend::SurfaceReuse>();
+    surfaceReuse_->geometries = &surfaceGeometries_;
     surfaceReuseKey_ = {attrs, seed};
   }
   const backend::SurfaceReuseScope reuseSurface(*surfaceReuse_);

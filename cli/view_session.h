@@ -32,12 +32,14 @@
 #pragma once
 
 #include "backend/engine.h"
+#include "backend/commands/surface_geometry.h"
 #include "backend/engine/surface_reuse.h"
 #include "cli/view_field_edit.h"
 #include "cli/view_field_history.h"
 #include "cli/view_paint.h"
 #include "cli/view_seed_file.h"
 #include "cli/view_server.h"
+#include "cli/view_surface.h"
 #include "ir/ir.h"
 #include "runtime/derivation.h"
 
@@ -133,6 +135,11 @@ class ViewSession {
   // The surface of the last derivation, kept for the next with the same values and seed
   // (a seed or paint edit); any other starts afresh (worker only).
   std::unique_ptr<backend::SurfaceReuse> surfaceReuse_;
+  // Meshes with their frames and factorisations, kept across recompiles (#49): a field
+  // edit redesigns the field on them (surface_geometry.h). The last compile's surface for
+  // the page, taken again while the geometry stays (worker thread only).
+  backend::SurfaceGeometryCache surfaceGeometries_;
+  ViewSurface viewSurface_;
   std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
   std::string field_;  // the field overlay's message for compiled_; empty: not computed (worker only)
   // --steps: the steps derived for these values, seed and step, kept until the grammar or

@@ -1,24 +1,38 @@
 #include "cli/view_surface.h"
 
-#include "backend/commands/surface_world.h"
+#include "backend/commands/surface_geometry.h"
+#include "backend/interp/eval.h"
+#include "runtime/surface/surface_mesh.h"
 #include "runtime/io/write_mesh.h"
 
 namespace fgsg::cli {
 
 bool buildViewSurface(const ir::Module& module, const rt::DeriveOptions& options,
-                      const std::vector<std::string>& searchDirs, ViewSurface& out, std::string& error) {
+                      const std::vector<std::string>& searchDirs, ViewSurface& out, std::string& error,
+                      backend::SurfaceGeometryCache* geometries, const ViewSurface* previous) {
   out = ViewSurface{};
   if (!module.surface.present && options.surfaceOverride.empty()) return true;
-  std::unique_ptr<backend::SurfaceWorld> world;
+  // Only the mesh is shown: the fields are not built.
+  std::shared_ptr<const backend::SurfaceGeometry> geometry;
   try {
-    world = std::make_unique<backend::SurfaceWorld>(module, options, searchDirs);
+    geometry = geometries ? geometries->obtain(module.surface, options, searchDirs)
+                          : backend::SurfaceGeometry::build(module.surface, options, searchDirs);
   } catch (const backend::DeriveError& e) {
     error = e.message;
     return false;
   }
-  const rt::surface::SurfaceMesh& mesh = world->mesh();
+  const rt::surface::SurfaceMesh& mesh = geometry->mesh();
   bool textured = false;
   for (const ir::EnvDecl& env : module.environment) textured = textured || env.kind == "texture";
+  if (previous && previous->geometry == geometry && previous->textured == textured &&
+      previous->atlasResolution == options.atlasResolution && previous->atlasCacheDir == options.atlasCacheDir) {
+    out = *previous;
+    return true;
+  }
+  out.geometry = geometry;
+  out.textured = textured;
+  out.atlasResolution = options.atlasResolution;
+  out.atlasCacheDir = options.atlasCacheDir;
   if (textured) {
     rt::marching::MarchingOptions layout;
     layout.resolution = options.atlasResolution;

@@ -1,8 +1,9 @@
 #include "backend/commands/surface_world.h"
 
+#include "backend/commands/surface_geometry.h"
+
 #include "backend/interp/eval.h"
 
-#include "runtime/abandonable.h"
 #include "runtime/field/curvature.h"
 #include "runtime/field/design.h"
 #include "runtime/field/eigen_basis_direction.h"
@@ -14,9 +15,7 @@
 #include "runtime/field/tangent_frames.h"
 #include "runtime/field/trace.h"
 #include "runtime/io/find_file.h"
-#include "runtime/surface/load_surface.h"
 #include "runtime/surface/locate.h"
-#include "runtime/surface/procedural.h"
 
 #include <algorithm>
 #include <cctype>
@@ -52,6 +51,9 @@ Vec3 tangent(const Vec3& v, const Vec3& n, const Vec3& fallback) {
 }  // namespace
 
 struct SurfaceWorld::Impl {
+  explicit Impl(std::shared_ptr<const SurfaceGeometry> built)
+      : geometry(std::move(built)), mesh(geometry->mesh()), locator(&geometry->locator()) {}
+
   rt::Deadline* deadline = nullptr;  // --max-seconds: field design and smoothing ask it
   struct Field {
     std::string name;
@@ -61,8 +63,11 @@ struct SurfaceWorld::Impl {
     std::unique_ptr<rt::field::ScalarField> scalar;  // `scalar(...)`: values is its gradient field
   };
 
-  SurfaceMesh mesh;
-  std::unique_ptr<rt::surface::SurfaceLocator> locator;
+  // The mesh, its locator and frames: shared with other worlds on the same surface (fgsg
+  // view keeps them across recompiles, surface_geometry.h).
+  std::shared_ptr<const SurfaceGeometry> geometry;
+  const SurfaceMesh& mesh;
+  const rt::surface::SurfaceLocator* locator;
   std::shared_ptr<const rt::field::TangentFrames> frames;
   std::vector<Field> fields;        // in declaration order; the first guides T
   std::vector<int> fieldOfEnv;      // Module::environment index -> fields index (-1: none)
@@ -92,39 +97,14 @@ struct SurfaceWorld::Impl {
 
 SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
                            const std::vector<std::string>& searchDirs, rt::Deadline* deadline)
-    : impl_(std::make_unique<Impl>()) {
+    : SurfaceWorld(m, options, searchDirs, SurfaceGeometry::build(m.surface, options, searchDirs, deadline),
+                   deadline) {}
+
+SurfaceWorld::SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
+                           const std::vector<std::string>& searchDirs, std::shared_ptr<const SurfaceGeometry> geometry,
+                           rt::Deadline* deadline)
+    : impl_(std::make_unique<Impl>(std::move(geometry))) {
   impl_->deadline = deadline;
-  const ir::SurfaceSpec& spec = m.surface;
-  std::string error;
-  rt::surface::SurfaceLoadOptions load;
-  load.repair = options.repairSurface;
-  load.maxMemoryBytes = options.maxMemoryBytes;
-  bool ok = false;
-  if (!options.surfaceOverride.empty()) {
-    ok = rt::surface::loadSurface(options.surfaceOverride, impl_->mesh, error, load);
-  } else if (!spec.path.empty()) {
-    ok = rt::surface::loadSurface(rt::io::findFile(spec.path, searchDirs), impl_->mesh, error,
-                                  load);
-  } else {
-    // Some generators run CGAL's booleans and remeshing (three tori: seconds), which read
-    // no deadline: on a worker that --max-seconds abandons (R004, runtime/abandonable.h).
-    struct Made {
-      bool ok;
-      SurfaceMesh mesh;
-      std::string error;
-    };
-    Made made = rt::runAbandonable(deadline, false, [generator = spec.generator, args = spec.args] {
-      Made out{false, {}, {}};
-      out.ok = rt::surface::makeProceduralSurface(generator, args, out.mesh, out.error);
-      return out;
-    });
-    ok = made.ok;
-    impl_->mesh = std::move(made.mesh);
-    error = std::move(made.error);
-  }
-  if (!ok) throw DeriveError{spec.loc, "R015", error};
-  if (options.surfaceSize > 0) rt::surface::fitToSize(impl_->mesh, options.surfaceSize);
-  impl_->locator = std::make_unique<rt::surface::SurfaceLocator>(impl_->mesh);
   buildFields(m, options, searchDirs);
   impl_->start = options.hasStart ? Vec3(options.start[0], options.start[1], options.start[2])
                                   : Vec3(0.5 * (impl_->mesh.boundsMin + impl_->mesh.boundsMax));
@@ -184,8 +164,8 @@ void SurfaceWorld::buildFields(const ir::Module& m, const rt::DeriveOptions& opt
                                const std::vector<std::string>& searchDirs) {
   Impl& w = *impl_;
   namespace field = rt::field;
-  w.frames = std::make_shared<const field::TangentFrames>(w.mesh);
-  std::unique_ptr<field::FieldDesigner> designer;  // factorised once, on first use
+  w.frames = w.geometry->frames();
+  std::unique_ptr<field::FieldDesigner> designer;  // on the geometry's factorisation, made on first use
   for (const ir::FieldSpec& spec : m.fields) try {
     const field::FieldType type =
         spec.kind == "vector" ? field::FieldType::Vector : field::FieldType::Tensor;
@@ -226,7 +206,7 @@ void SurfaceWorld::buildFields(const ir::Module& m, const rt::DeriveOptions& opt
       f.values = std::make_unique<field::TangentField>(field::curvatureTensor(w.frames));
       f.curvature = true;
     } else {
-      if (!designer) designer = std::make_unique<field::FieldDesigner>(w.frames);
+      if (!designer) designer = std::make_unique<field::FieldDesigner>(w.geometry->heatGeodesics());
       if (!designer->ok())
         throw DeriveError{spec.loc, "R015",
                           "field " + spec.name + ": geodesic distances cannot be computed on this "

@@ -25,6 +25,8 @@ struct SurfaceMesh;
 
 namespace fgsg::backend {
 
+class SurfaceGeometry;
+
 class SurfaceWorld {
  public:
   // Builds the module's surface (or --surface's) and its fields. Files are looked up in
@@ -34,6 +36,10 @@ class SurfaceWorld {
   // from several threads (the plants of independent seeds grow concurrently).
   SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options,
                const std::vector<std::string>& searchDirs, rt::Deadline* deadline = nullptr);
+  // The same on a geometry built already (fgsg view's SurfaceGeometryCache): only the
+  // fields are built.
+  SurfaceWorld(const ir::Module& m, const rt::DeriveOptions& options, const std::vector<std::string>& searchDirs,
+               std::shared_ptr<const SurfaceGeometry> geometry, rt::Deadline* deadline = nullptr);
   ~SurfaceWorld();
 
   // Where the axiom starts: on the surface point closest to --start (default: to the

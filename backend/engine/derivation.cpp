@@ -4,6 +4,7 @@
 // nothing (R020), a DeriveError is the located error.
 #include "backend/engine/derivation.h"
 #include "backend/commands/insert_along_uv_command.h"
+#include "backend/commands/surface_geometry.h"
 #include "backend/engine/surface_reuse.h"
 
 #include "runtime/memory_budget.h"
@@ -248,7 +249,11 @@ void Derivation::checkEnvironment() {
       world = reuse->world;
     }
     if (!world) {
-      world = std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
+      world = reuse && reuse->geometries
+                  ? std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs,
+                                                   reuse->geometries->obtain(m_.surface, opt_, opt_.assetDirs, &deadline_),
+                                                   &deadline_)
+                  : std::make_shared<SurfaceWorld>(m_, opt_, opt_.assetDirs, &deadline_);
       if (reuse) {
         std::lock_guard<std::mutex> lock(reuse->mutex);
         reuse->world = world;

@@ -17,11 +17,15 @@ class MarchingSurface;
 namespace fgsg::backend {
 
 class SurfaceWorld;
+class SurfaceGeometryCache;
 
 struct SurfaceReuse {
   std::mutex mutex;
   std::shared_ptr<const SurfaceWorld> world;
   std::shared_ptr<const rt::marching::MarchingSurface> marching;
+  // Outlives this reuse (fgsg view keeps it across recompiles): a world built afresh takes
+  // its mesh, frames and factorisation from here when they are the same (surface_geometry.h).
+  SurfaceGeometryCache* geometries = nullptr;
 };
 
 class SurfaceReuseScope {
