@@ -275,9 +275,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
     progress.clear();
     reportMessages(dropped, compiled->source);
   }
-  // CityEngine's texture layers each scene output has no place for (the glTF scene: bump,
-  // dirt and specular maps; the grouped OBJ's .mtl: dirt and occlusion maps), named once
-  // with R034.
+  // CityEngine's texture layers each scene output has no place for (the glTF scene: bump
+  // and dirt maps; the grouped OBJ's .mtl: dirt and occlusion maps), named once with R034.
   if (!result.instances.finishes.empty() && !opt.output.empty() && writesScene(opt.scene, opt.output)) {
     const bool gltf = checkOutput(opt.scene, opt.output, layoutOnly) == OutputLayout::GltfScene;
     static const std::pair<uint32_t, const char*> kLayerNames[] = {
@@ -286,7 +285,8 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
         {rt::Finish::kOcclusionMap, "occlusionmap"}};
     std::string dropped;
     for (const auto& [layer, word] : kLayerNames) {
-      const bool kept = gltf ? layer == rt::Finish::kOcclusionMap || layer == rt::Finish::kOpacityMap
+      const bool kept = gltf ? layer == rt::Finish::kOcclusionMap || layer == rt::Finish::kOpacityMap ||
+                                   layer == rt::Finish::kSpecularMap
                              : layer != rt::Finish::kDirtMap && layer != rt::Finish::kOcclusionMap;
       const bool used = std::any_of(result.instances.finishes.begin(), result.instances.finishes.end(),
                                     [&](const rt::Finish& f) { return f.maps[layer] != UINT32_MAX; });
@@ -297,8 +297,7 @@ int run(const Args& args, backend::native::CodeLoader& loader) {
       warned.messages.push_back(
           {false, "R034", 0, 0,
            dropped + (gltf ? " not in " + opt.output +
-                                 ": glTF 2.0 has no texture for bump, dirt or specular maps (a grouped OBJ's .mtl has "
-                                 "map_bump and map_Ks)"
+                                 ": glTF 2.0 has no texture for bump or dirt maps (a grouped OBJ's .mtl has map_bump)"
                            : " not in " + opt.output + "'s .mtl: it has no statement for dirt or occlusion maps (a glTF "
                                                        "scene has occlusionTexture)")});
       progress.clear();

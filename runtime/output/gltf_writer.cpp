@@ -35,6 +35,8 @@ using nlohmann::json;
 
 using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
+// CityEngine's specular map: KHR_materials_specular's specularColorTexture.
+constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr int kUnsignedShort = 5123;
 // CityEngine's texture layers: uv set 5 is the normal map's.
 constexpr uint32_t kNormalMapUvSet = Finish::kNormalMap;
@@ -187,6 +189,7 @@ class Writer {
   };
   std::vector<ImageOut> imagesOut_;  // the file's textures' images, in order (only those used)
   bool instancing_ = false;
+  bool specular_ = false;  // a material has KHR_materials_specular
 
   // `sets`: the uv sets 1..9 the primitive has (bit n: TEXCOORD_n is set n's). Each texture
   // layer of the material samples its own set where the primitive has it (the normal map
@@ -587,6 +590,13 @@ json Writer::materialJson(const Material& m, uint32_t ownSets) {
     out["emissiveFactor"] = {factor(m.emissive[0]), factor(m.emissive[1]), factor(m.emissive[2])};
   else if (emissiveMapped)
     out["emissiveFactor"] = {1.0, 1.0, 1.0};
+  // The specular map (a colour): KHR_materials_specular's specular colour texture, times
+  // its default factors (1).
+  const int32_t specularMap = m.maps[Finish::kSpecularMap];
+  if (specularMap >= 0 && setOf(Finish::kSpecularMap) >= 0) {
+    out["extensions"][kSpecular] = {{"specularColorTexture", layerTexture({specularMap}, setOf(Finish::kSpecularMap))}};
+    specular_ = true;
+  }
   return out;
 }
 
@@ -674,7 +684,10 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
   json scene = {{"name", "fgsg"}};
   if (!roots.empty()) scene["nodes"] = std::move(roots);
   j["scenes"] = json::array({std::move(scene)});
-  if (instancing_) j["extensionsUsed"] = json::array({kInstancing});
+  json used = json::array();
+  if (instancing_) used.push_back(kInstancing);
+  if (specular_) used.push_back(kSpecular);
+  if (!used.empty()) j["extensionsUsed"] = std::move(used);
   std::string text = j.dump();
   if (!binary) {
     bytes = std::move(text);

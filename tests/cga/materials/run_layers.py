@@ -191,7 +191,13 @@ def check_gltf(doc, buffer, images, label):
         got = [rows[y][c * x:c * x + c] for y in range(h) for x in range(w)]
         if (w, h, c) != (bw, bh, 4) or got != expected:
             fail(f"{label}: P4's base colour image {w} x {h} x {c} is not brick.png with ao.png's alpha")
-    # P4 and P5: no other layer textures; P4's bump, dirt and specular maps have no glTF slot.
+    # P4's specular map: KHR_materials_specular's specularColorTexture, on set 0.
+    specular = mats["P4"].get("extensions", {}).get("KHR_materials_specular", {}).get("specularColorTexture")
+    if specular is None or "texCoord" in specular or image_of(specular["index"]) != images["bump.png"] \
+            or "KHR_materials_specular" not in doc.get("extensionsUsed", []):
+        fail(f"{label}: P4's specular map {specular}, extensionsUsed {doc.get('extensionsUsed')}: expected bump.png "
+             "as KHR_materials_specular's specularColorTexture on set 0")
+    # P4 and P5: no other layer textures; P4's bump and dirt maps have no glTF slot.
     for leaf in ("P4", "P5"):
         m = mats[leaf]
         extra = [k for k in ("occlusionTexture", "emissiveTexture", "normalTexture", "emissiveFactor") if k in m]
@@ -258,12 +264,12 @@ def main():
                     fail(f"{label}: fgsg run: {[r.stderr.strip() for r in runs.values()]}")
                     continue
                 r034 = {t: [l for l in r.stderr.splitlines() if "warning[R034]" in l] for t, r in runs.items()}
-                gltf_warning = r034[out] == [l for l in r034[out] if "warning[R034]: material.bumpmap, material.dirtmap, "
-                                             "material.specularmap not in" in l] != []
+                gltf_warning = r034[out] == [l for l in r034[out]
+                                             if "warning[R034]: material.bumpmap, material.dirtmap not in" in l] != []
                 obj_warning = r034[obj] == [l for l in r034[obj] if "warning[R034]: material.dirtmap, "
                                             "material.occlusionmap not in" in l] != []
                 if not gltf_warning or not obj_warning:
-                    fail(f"{label}: R034 expected for the glTF's bump, dirt, specular maps and the OBJ's dirt map: "
+                    fail(f"{label}: R034 expected for the glTF's bump and dirt maps and the OBJ's dirt map: "
                          f"{runs[out].stderr.strip()} / {runs[obj].stderr.strip()}")
                 outputs[engine] = open(out, "rb").read() + open(obj[:-4] + ".mtl", "rb").read()
                 v = subprocess.run(["node", validator, "--strict", out], capture_output=True, text=True)
