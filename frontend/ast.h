@@ -272,6 +272,13 @@ struct ImportDecl {
   std::string alias;  // empty: the module's names come unqualified
   std::vector<std::pair<std::string, ExprPtr>> settings;  // the module's attrs, set here
   std::vector<SourceRange> settingRanges;
+  // CityEngine's import (a `.cga` importer): this file's attrs pass their values to the
+  // module's attrs of the same names (frontend/imports.cpp), but for those named in the
+  // import's list (`import m : "m.cga" (a, b)`), or all of them (`()`: protectAll).
+  bool propagateAttrs = false;
+  bool protectAll = false;
+  std::vector<std::string> protectedAttrs;
+  std::vector<SourceRange> protectedRanges;
 };
 
 struct AxiomDecl {  // axiom: S(20,0,12) footprint;

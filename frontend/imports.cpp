@@ -353,6 +353,7 @@ class Importer {
       inlineImportedFunctions(program, d.alias, mod, d.path, diags_);
       for (auto& r : mod.rules) r.imported = true;
       applySettings(d, mod);
+      propagateAttrs(d, mod, program);
       const Origin from{"'" + d.path + "' (imported at line " + std::to_string(file_.locate(d.range.begin.line).second) + ")",
                         d.range};
       merge(mod, program, declared, ruled, from);
@@ -388,6 +389,36 @@ class Importer {
         }
       if (!found)
         diags_.error("E062", d.settingRanges[i], "the module '" + d.path + "' has no attr '" + d.settings[i].first + "'");
+    }
+  }
+
+  // CityEngine's import (a `.cga` importer): each of the importer's own attrs gives its
+  // value to the module's attr of the same name, unless the import's list keeps that one
+  // (`(a, b)`, or `()` all) or the importer sets it (`(a = ...)`, `m.a = ...`).
+  void propagateAttrs(const ImportDecl& d, Program& mod, const Program& importer) {
+    const std::string prefix = d.alias.empty() ? "" : d.alias + ".";
+    std::set<std::string> kept;
+    for (size_t i = 0; i < d.protectedAttrs.size(); ++i) {
+      bool found = false;
+      for (const ValueDecl& v : mod.values) found = found || (v.isAttr && v.name == prefix + d.protectedAttrs[i]);
+      if (!found)
+        diags_.error("E062", d.protectedRanges[i], "the module '" + d.path + "' has no attr '" + d.protectedAttrs[i] + "'");
+      kept.insert(d.protectedAttrs[i]);
+    }
+    if (!d.propagateAttrs || d.protectAll || d.alias.empty()) return;
+    std::set<std::string> own;  // the importer's own attrs (those of its imports have a '.')
+    for (const ValueDecl& v : importer.values)
+      if (v.isAttr && v.name.find('.') == std::string::npos) own.insert(v.name);
+    for (ValueDecl& v : mod.values) {
+      if (!v.isAttr || v.fromImporter || v.name.compare(0, prefix.size(), prefix) != 0) continue;
+      const std::string name = v.name.substr(prefix.size());
+      if (!own.count(name) || kept.count(name)) continue;
+      ExprPtr e = std::make_unique<Expr>();
+      e->kind = ExprKind::Ident;
+      e->range = d.range;
+      e->text = name;
+      v.value = std::move(e);
+      v.fromImporter = true;
     }
   }
 

@@ -25,9 +25,11 @@ versionDecl : VERSION STRING ;
 // `dialect cga;` at the top of a file that is not named .cga.
 dialectDecl : DIALECT ID ';'? ;
 
-// `import facade : "facade.cga"` or `import "facade.cga"`; CityEngine's parameter list
-// after the path is recognised so that it can be refused with a located message.
-importDecl : IMPORT ( alias=ID ':' )? path=STRING ( '(' ( expr ( ',' expr )* )? ')' )? ;
+// `import facade : "facade.cga"` or `import "facade.cga"`, with CityEngine's list of the
+// imported file's attrs after the path: `(a, b)` keeps them from this file's attrs of the
+// same names, `(a = expr)` sets one, `()` keeps them all.
+importDecl : IMPORT ( alias=ID ':' )? path=STRING ( '(' ( importArg ( ',' importArg )* )? ')' )? ;
+importArg  : ( key=ID '=' )? expr ;
 
 styleDecl : STYLE name=ID ( EXTENDS base=ID )? ;
 

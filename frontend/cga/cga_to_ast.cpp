@@ -200,13 +200,37 @@ void Translator::collect(P::CgaFileContext* file) {
   }
 }
 
+// CityEngine's import: this file's attrs reach the imported file's attrs of the same
+// names, but for those its list names: `(a, b)` keeps a and b the imported file's own,
+// `(a = expr)` sets a from here (expr read in this file), `()` keeps all of them.
 void Translator::importDecl(P::ImportDeclContext* ctx) {
-  if (ctx->LPAREN()) notSupported(rangeOf(ctx), "an import's list of attributes");
   ImportDecl d;
   d.range = rangeOf(ctx);
   d.pathRange = rangeOf(ctx->path);
   d.path = stringValue(ctx->path->getText());
   if (ctx->alias) d.alias = ctx->alias->getText();
+  d.propagateAttrs = true;
+  d.protectAll = ctx->LPAREN() && ctx->importArg().empty();
+  for (P::ImportArgContext* arg : ctx->importArg()) {
+    if (arg->key) {
+      currentParams_ = nullptr;
+      ExprPtr v = expr(arg->expr(), Env{});
+      if (!v) continue;
+      d.settings.emplace_back(arg->key->getText(), std::move(v));
+      d.settingRanges.push_back(rangeOf(arg->key));
+      continue;
+    }
+    auto* prim = dynamic_cast<P::PrimaryExprContext*>(arg->expr());
+    auto* name = prim ? dynamic_cast<P::NamePrimaryContext*>(prim->primary()) : nullptr;
+    if (!name || name->name->getType() != P::ID) {
+      error("E002", rangeOf(arg),
+            "an import's list names the imported file's attrs to keep (`(height, width)`) or sets them "
+            "(`(height = 10)`), not '" + arg->getText() + "'");
+      continue;
+    }
+    d.protectedAttrs.push_back(name->name->getText());
+    d.protectedRanges.push_back(rangeOf(arg));
+  }
   program_.imports.push_back(std::move(d));
 }
 

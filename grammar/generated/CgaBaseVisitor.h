@@ -37,6 +37,10 @@ public:
     return visitChildren(ctx);
   }
 
+  virtual antlrcpp::Any visitImportArg(CgaParser::ImportArgContext *ctx) override {
+    return visitChildren(ctx);
+  }
+
   virtual antlrcpp::Any visitStyleDecl(CgaParser::StyleDeclContext *ctx) override {
     return visitChildren(ctx);
   }

@@ -27,11 +27,11 @@ public:
 
   enum {
     RuleCgaFile = 0, RuleDeclaration = 1, RuleVersionDecl = 2, RuleDialectDecl = 3, 
-    RuleImportDecl = 4, RuleStyleDecl = 5, RuleAnnotated = 6, RuleAnnotation = 7, 
-    RuleAnnotationArg = 8, RuleAttrDecl = 9, RuleConstDecl = 10, RuleFunctionDecl = 11, 
-    RuleRuleDecl = 12, RuleParams = 13, RuleValue = 14, RuleRuleBody = 15, 
-    RuleOperation = 16, RuleOperationBlock = 17, RuleSplitBody = 18, RuleSplitPart = 19, 
-    RuleExpr = 20, RulePrimary = 21, RuleNumber = 22
+    RuleImportDecl = 4, RuleImportArg = 5, RuleStyleDecl = 6, RuleAnnotated = 7, 
+    RuleAnnotation = 8, RuleAnnotationArg = 9, RuleAttrDecl = 10, RuleConstDecl = 11, 
+    RuleFunctionDecl = 12, RuleRuleDecl = 13, RuleParams = 14, RuleValue = 15, 
+    RuleRuleBody = 16, RuleOperation = 17, RuleOperationBlock = 18, RuleSplitBody = 19, 
+    RuleSplitPart = 20, RuleExpr = 21, RulePrimary = 22, RuleNumber = 23
   };
 
   CgaParser(antlr4::TokenStream *input);
@@ -49,6 +49,7 @@ public:
   class VersionDeclContext;
   class DialectDeclContext;
   class ImportDeclContext;
+  class ImportArgContext;
   class StyleDeclContext;
   class AnnotatedContext;
   class AnnotationContext;
@@ -137,8 +138,8 @@ public:
     antlr4::tree::TerminalNode *LPAREN();
     antlr4::tree::TerminalNode *RPAREN();
     antlr4::tree::TerminalNode *ID();
-    std::vector<ExprContext *> expr();
-    ExprContext* expr(size_t i);
+    std::vector<ImportArgContext *> importArg();
+    ImportArgContext* importArg(size_t i);
     std::vector<antlr4::tree::TerminalNode *> COMMA();
     antlr4::tree::TerminalNode* COMMA(size_t i);
 
@@ -147,6 +148,21 @@ public:
   };
 
   ImportDeclContext* importDecl();
+
+  class  ImportArgContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *key = nullptr;;
+    ImportArgContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    ExprContext *expr();
+    antlr4::tree::TerminalNode *ASSIGN();
+    antlr4::tree::TerminalNode *ID();
+
+    virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
+   
+  };
+
+  ImportArgContext* importArg();
 
   class  StyleDeclContext : public antlr4::ParserRuleContext {
   public:

@@ -30,6 +30,8 @@ public:
 
     virtual antlrcpp::Any visitImportDecl(CgaParser::ImportDeclContext *context) = 0;
 
+    virtual antlrcpp::Any visitImportArg(CgaParser::ImportArgContext *context) = 0;
+
     virtual antlrcpp::Any visitStyleDecl(CgaParser::StyleDeclContext *context) = 0;
 
     virtual antlrcpp::Any visitAnnotated(CgaParser::AnnotatedContext *context) = 0;

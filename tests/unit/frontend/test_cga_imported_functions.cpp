@@ -113,3 +113,15 @@ TEST_CASE("cga styles: a style redefines attrs, chosen as Style$Rule, misuse is 
   const auto twice = compileImporting(styles + "style Tall\n");
   CHECK(says(twice, "main.cga:7:7: error[E803]: the style 'Tall' is declared twice"));
 }
+
+TEST_CASE("cga import attribute lists: kept and set attrs, misuse is located", "[cga][dialect]") {
+  CHECK(compileImporting("import F : \"lib.cga\" (floorHeight)\nattr floorHeight = 7\n@StartRule\nLot --> X.\n").ok);
+  CHECK(compileImporting("import F : \"lib.cga\" (floorHeight = 2 * h)\nattr h = 7\n@StartRule\nLot --> X.\n").ok);
+  CHECK(compileImporting("import F : \"lib.cga\" ()\n@StartRule\nLot --> X.\n").ok);
+  const auto unknown = compileImporting("import F : \"lib.cga\" (nope)\n@StartRule\nLot --> X.\n");
+  CHECK_FALSE(unknown.ok);
+  CHECK(says(unknown, "main.cga:1:23: error[E062]: the module 'lib.cga' has no attr 'nope'"));
+  const auto number = compileImporting("import F : \"lib.cga\" (3)\n@StartRule\nLot --> X.\n");
+  CHECK_FALSE(number.ok);
+  CHECK(says(number, "main.cga:1:23: error[E002]: an import's list names the imported file's attrs to keep"));
+}
