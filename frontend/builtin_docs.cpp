@@ -57,7 +57,7 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCommand, "Lock", nullptr, "Derives the parts and all they create as one unit: a collision anywhere in it removes all of it.", nullptr},
     {kDocCommand, "F", nullptr, "Turtle: draws a segment of length (default: `turtle step`) along the heading (scope Y) and moves there.", nullptr},
     {kDocCommand, "f", nullptr, "Turtle: moves length (default: `turtle step`) along the heading without drawing.", nullptr},
-    {kDocCommand, "Marching", nullptr, "Marches length surface units along the surface, angle degrees off the scope's X, where cond holds at the destination (other directions tried); then derives Top there and Extruded on the segment.", nullptr},
+    {kDocCommand, "Marching", nullptr, "Marches length surface units along the surface, angle degrees off the scope's X, where cond holds at the destination (other directions tried); then derives Top there and Extruded on the segment, whose terminals are bent C1 (the default), C0 or not at all (\"none\").", nullptr},
     {kDocCommand, "Branch", nullptr, "Makes n branches from the scope's point (n a whole number 0..1000): the first n - 1 derive A, the last B.", nullptr},
     {kDocCommand, "Line", nullptr, "Starts a line at the scope's origin, output as a tube width thick (default 0.05) or an asset bent along it; merge (default true) clips crossing segments.", nullptr},
     {kDocCommand, "LineSeg", nullptr, "Extends the current line to the scope's origin, after moving the scope length along its X axis when given.", nullptr},

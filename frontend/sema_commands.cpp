@@ -323,6 +323,12 @@ void Analyzer::checkCommand(const Item& item, const CommandInfo& cmd, const Wher
       expect(*item.args[0], w, ValueType::Num, "the marching length");
       expect(*item.args[1], w, ValueType::Num, "the marching angle");
       expect(*item.args[2], w, ValueType::Bool, "the marching condition");
+      if (n > 3) {  // the terminals' smoothness (Buron et al. §6)
+        const std::string smoothness = stringArg(3, "smoothness");
+        if (stringOk && smoothness != "C1" && smoothness != "C0" && smoothness != "none")
+          diags_.error("E028", item.args[3]->range,
+                       "the smoothness of 'Marching' is \"C1\", \"C0\" or \"none\", not \"" + smoothness + "\"");
+      }
       break;
     case CommandId::Synthesize: {
       // A mesh example is continuous synthesis; its fifth argument names the symbol of

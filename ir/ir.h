@@ -259,6 +259,12 @@ using Block = std::vector<Op>;
 inline constexpr uint32_t kRoofByAngle = 0;
 inline constexpr uint32_t kRoofByHeight = 1;
 
+// Marching's op.index: the smoothness of the terminals on its segments, its optional
+// fourth argument (Buron et al. §6; rt::marching::TerminalSmoothness in this order).
+inline constexpr uint32_t kMarchC1 = 0;             // "C1", the default
+inline constexpr uint32_t kMarchC0 = 1;             // "C0"
+inline constexpr uint32_t kMarchDiscontinuous = 2;  // "none"
+
 struct Op {
   OpKind kind = OpKind::Push;
   Loc loc;

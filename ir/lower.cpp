@@ -474,6 +474,10 @@ class Lowerer {
         op.kind = OpKind::Marching;
         op.args.push_back(expr(*item.args[0]));
         op.args.push_back(expr(*item.args[1]));
+        if (item.args.size() > 3) {  // the terminals' smoothness, a word sema checked
+          const std::string smoothness = constString(*item.args[3]);
+          op.index = smoothness == "C0" ? kMarchC0 : smoothness == "none" ? kMarchDiscontinuous : kMarchC1;
+        }
         if (op.bodies.size() < 2) op.bodies.emplace_back();  // no Extruded part written
         Op test;
         test.kind = OpKind::MarchCondition;

@@ -419,7 +419,9 @@ class Printer {
       case OpKind::Evolve:
         text = withArgs("evolve " + (op.index ? "tileset " + m_.strings[op.str] : stringLit(op.str)));
         break;
-      case OpKind::Marching: text = withArgs("marching"); break;
+      case OpKind::Marching:
+        text = withArgs(op.index == kMarchC0 ? "marching C0" : op.index == kMarchDiscontinuous ? "marching none" : "marching");
+        break;
       case OpKind::MarchCondition: text = withArgs("march-condition"); break;
       case OpKind::Branch: text = withArgs("branch"); break;
       case OpKind::Cells: text = withArgs(op.index ? "cells " + stringLit(op.str) : std::string("cells")); break;

@@ -19,6 +19,11 @@ using rt::Vec3;
 using rt::marching::MarchingSurface;
 using rt::marching::MarchPoint;
 
+static_assert(static_cast<uint32_t>(rt::marching::TerminalSmoothness::C1) == ir::kMarchC1 &&
+                  static_cast<uint32_t>(rt::marching::TerminalSmoothness::C0) == ir::kMarchC0 &&
+                  static_cast<uint32_t>(rt::marching::TerminalSmoothness::Discontinuous) == ir::kMarchDiscontinuous,
+              "Marching's op.index is a TerminalSmoothness");
+
 // Branch(n) makes at most this many branches: beyond, a grammar has a bug, not a plant.
 constexpr double kMaxBranches = 1000;
 
@@ -173,11 +178,12 @@ int32_t MarchingCommands::nodeAt(const rt::Scope& scope) {
   return static_cast<int32_t>(nodes_.size() - 1);
 }
 
-// Marching(length, angle, cond){ Top, Extruded } (§5): the scope's X, turned by `angle`
-// about the normal, is the marching direction; the first direction whose destination
-// satisfies `cond` wins — straight ahead first, then marchCandidates others spread over
-// the half circle ahead, nearest first, alternating sides (§8). Without one the march
-// stops here and nothing is derived.
+// Marching(length, angle, cond[, smoothness]){ Top, Extruded } (§5): the scope's X,
+// turned by `angle` about the normal, is the marching direction; the first direction
+// whose destination satisfies `cond` wins — straight ahead first, then marchCandidates
+// others spread over the half circle ahead, nearest first, alternating sides (§8).
+// Without one the march stops here and nothing is derived. The segment keeps the op's
+// smoothness (op.index, ir::kMarchC1 ...) for its terminals' curve (§6).
 void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec& ex, Frame& f) {
   const double length = a[0], angle = a[1];
   if (!(std::isfinite(length) && length > 0))
@@ -229,8 +235,11 @@ void MarchingCommands::march(const ir::Op& op, const double* a, State& st, Exec&
     nodes_.push_back({top.P, top.Z()});
     top.marchNode = static_cast<int32_t>(nodes_.size() - 1);
     top.marchSegment = -1;
-    segments_.push_back({static_cast<uint32_t>(start), static_cast<uint32_t>(top.marchNode)});
-    rt::Scope extruded = chord(st.scope, top, static_cast<int32_t>(segments_.size() - 1));
+    const auto smoothness = static_cast<rt::marching::TerminalSmoothness>(op.index);
+    segments_.push_back({static_cast<uint32_t>(start), static_cast<uint32_t>(top.marchNode), smoothness});
+    // A discontinuous march's terminals name no curve: they stay rigid (march_graph.h).
+    const bool bent = smoothness != rt::marching::TerminalSmoothness::Discontinuous;
+    rt::Scope extruded = chord(st.scope, top, bent ? static_cast<int32_t>(segments_.size() - 1) : -1);
     extruded.marchNode = start;
     d_.runBody(op, 0, top, st.geom, st, ex, f);
     if (ex.culled) return;

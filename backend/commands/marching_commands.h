@@ -1,4 +1,4 @@
-// On-mesh marching (Buron et al. 2015): `Marching(length, angle, cond){ Top, Extruded }`
+// On-mesh marching (Buron et al. 2015): `Marching(length, angle, cond[, smoothness]){ Top, Extruded }`
 // walks the scope along the surface through its indirection geometry image (§5), tries
 // other directions on the half circle ahead when `cond` fails at the destination (§8),
 // and derives Top at the destination before Extruded on the segment (§6's depth-first

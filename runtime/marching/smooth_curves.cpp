@@ -100,6 +100,14 @@ std::vector<CurveSegment> smoothSegments(const std::vector<MarchNode>& nodes,
     }
     const double length = (b - a).norm();
     if (!(length > 0) || !std::isfinite(length)) continue;
+    if (seg.smoothness != TerminalSmoothness::C1) {
+      // A curve of its own, sharing no node's tangent (smooth_curves.h).
+      const bool c0 = seg.smoothness == TerminalSmoothness::C0;
+      const Vec3 inner1 = a + (c0 ? tangential(normal[seg.from], b - a) : Vec3(b - a)) / 3.0;
+      const Vec3 inner2 = b - (c0 ? tangential(normal[seg.to], b - a) : Vec3(b - a)) / 3.0;
+      for (int d = 0; d < 3; ++d) c.control[1][d] = inner1[d], c.control[2][d] = inner2[d];
+      continue;
+    }
     const Vec3 dir = (b - a) / length;
     endsAt[seg.from].push_back({uint32_t(s), true, dir, length});
     endsAt[seg.to].push_back({uint32_t(s), false, -dir, length});

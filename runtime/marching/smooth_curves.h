@@ -28,7 +28,18 @@
 //    control points then stay within a third of its length from their ends.
 //
 // Segments of zero length (both ends at one point) are left out of every node's
-// tangent and handle; their curve is that point. Normals are normalised (a zero normal
+// tangent and handle; their curve is that point.
+//
+// Only C1 segments (MarchSegment::smoothness) share the nodes' tangents; the others are
+// left out of them too and get a curve of their own (the paper's lesser smoothness
+// settings, §6: "reducing the smoothness constraints is straightforward"):
+//  * C0: each inner control point is its end plus a third of the chord b - a projected
+//    onto that end's tangent plane, b1 = a + (I - na na^T)(b - a) / 3 and
+//    b2 = b - (I - nb nb^T)(b - a) / 3 — the paper's b1 = p + 1/3 t t^T (q - p) with t the
+//    segment's own direction: tangent to the surface, meeting its neighbours at the
+//    nodes with a kink where the march turns;
+//  * Discontinuous: the straight chord, b1 = a + (b - a) / 3, b2 = b - (b - a) / 3 (its
+//    terminals are not bent: the march leaves them rigid). Normals are normalised (a zero normal
 // leaves directions unprojected).
 #pragma once
 

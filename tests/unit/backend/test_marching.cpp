@@ -3,6 +3,7 @@
 // painted masks, branches, seeds, smooth terminals and the errors.
 #include "derive_helpers.h"
 #include "../runtime/scratch_files.h"
+#include "runtime/marching/curve_frame.h"
 #include "runtime/marching/marching_surface.h"
 #include "runtime/surface/procedural.h"
 #include "runtime/texture/paint_mask.h"
@@ -316,4 +317,92 @@ TEST_CASE("A march that can never start is a warning that says why", "[marching]
                           "Marching(0.5, 0, true){ I(\"cube\") }");
   REQUIRE(moved.ok);
   CHECK(moved.messages.empty());
+}
+
+// Marching's fourth argument on a flat plane (normal +Z): three steps of 0.2, each turned
+// 30° from the last, so step k (from 0) heads (cos 30(k+1)°, sin 30(k+1)°, 0) from march
+// point p_k to p_k+1 (p_0 the plane's centre, the origin).
+namespace {
+
+struct SmoothnessWalk {
+  rt::DeriveResult r;
+  std::vector<Eigen::Vector3d> points;       // p_0 .. p_3
+  std::vector<const rt::Instance*> pieces;   // the terminals on the three segments
+};
+
+SmoothnessWalk walkWithSmoothness(const std::string& smoothness) {
+  SmoothnessWalk w;
+  w.r = deriveText(R"(
+    surface plane(4, 4, 32);
+    start = S(1, 0.02, 0.02) Walk(0)
+    Walk(n) : n < 3 ~> Marching(0.2, 30, true)" + smoothness + R"(){ Mark Walk(n + 1), I("cube") }
+    Mark ~> I("sphere")
+  )");
+  REQUIRE(w.r.ok);
+  w.points.push_back(Eigen::Vector3d::Zero());
+  for (const rt::Instance* mark : instancesOf(w.r, "sphere")) w.points.push_back(unitPoint(*mark, 0, 0, 0));
+  w.pieces = instancesOf(w.r, "cube");
+  REQUIRE(w.points.size() == 4);
+  REQUIRE(w.pieces.size() == 3);
+  return w;
+}
+
+Eigen::Vector3d smoothnessHeading(int step) {
+  const double a = 30.0 * (step + 1) * M_PI / 180.0;
+  return {std::cos(a), std::sin(a), 0};
+}
+
+Eigen::Vector3d smoothnessCurvePoint(const rt::CurveSegment& c, double x) { return rt::marching::bezierPoint(c, x); }
+Eigen::Vector3d smoothnessCurveDerivative(const rt::CurveSegment& c, double x) { return rt::marching::bezierDerivative(c, x); }
+double smoothnessAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+}  // namespace
+
+TEST_CASE("Marching with smoothness none leaves rigid pieces along the chords", "[marching][smoothness]") {
+  const SmoothnessWalk w = walkWithSmoothness(R"(, "none")");
+  for (int k = 0; k < 3; ++k) {
+    INFO("step " << k);
+    CHECK((w.points[size_t(k) + 1] - w.points[size_t(k)] - 0.2 * smoothnessHeading(k)).norm() < 1e-9);
+    const rt::Instance& piece = *w.pieces[size_t(k)];
+    CHECK(piece.curve == UINT32_MAX);  // not bent
+    CHECK((unitPoint(piece, 0, 0.5, 0) - w.points[size_t(k)]).norm() < 1e-9);
+    CHECK((unitPoint(piece, 1, 0.5, 0) - w.points[size_t(k) + 1]).norm() < 1e-9);
+    CHECK(((unitPoint(piece, 1, 0.5, 0) - unitPoint(piece, 0, 0.5, 0)).normalized() - smoothnessHeading(k)).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("Marching with smoothness C0 bends pieces along curves that meet but kink", "[marching][smoothness]") {
+  const SmoothnessWalk w = walkWithSmoothness(R"(, "C0")");
+  for (int k = 0; k < 3; ++k) {
+    INFO("step " << k);
+    const rt::Instance& piece = *w.pieces[size_t(k)];
+    REQUIRE(piece.curve < w.r.instances.curves.size());
+    const rt::CurveSegment& c = w.r.instances.curves[piece.curve];
+    CHECK((smoothnessCurvePoint(c, 0) - w.points[size_t(k)]).norm() < 1e-9);
+    CHECK((smoothnessCurvePoint(c, 1) - w.points[size_t(k) + 1]).norm() < 1e-9);
+    // Both end tangents are the chord's direction.
+    CHECK((smoothnessCurveDerivative(c, 0).normalized() - smoothnessHeading(k)).norm() < 1e-9);
+    CHECK((smoothnessCurveDerivative(c, 1).normalized() - smoothnessHeading(k)).norm() < 1e-9);
+    if (k == 0) continue;
+    const rt::CurveSegment& before = w.r.instances.curves[w.pieces[size_t(k) - 1]->curve];
+    CHECK((smoothnessCurvePoint(before, 1) - smoothnessCurvePoint(c, 0)).norm() < 1e-9);  // no gap at the joint
+    CHECK(smoothnessAngle(smoothnessCurveDerivative(before, 1), smoothnessCurveDerivative(c, 0)) == Approx(M_PI / 6).margin(1e-9));
+  }
+}
+
+TEST_CASE("Marching with smoothness C1, the default, shares the tangent at every joint", "[marching][smoothness]") {
+  for (const char* smoothness : {"", R"(, "C1")"}) {
+    const SmoothnessWalk w = walkWithSmoothness(smoothness);
+    for (int k = 1; k < 3; ++k) {
+      INFO("joint " << k << " with '" << smoothness << "'");
+      const rt::CurveSegment& before = w.r.instances.curves[w.pieces[size_t(k) - 1]->curve];
+      const rt::CurveSegment& c = w.r.instances.curves[w.pieces[size_t(k)]->curve];
+      CHECK((smoothnessCurvePoint(before, 1) - smoothnessCurvePoint(c, 0)).norm() < 1e-9);
+      CHECK(smoothnessAngle(smoothnessCurveDerivative(before, 1), smoothnessCurveDerivative(c, 0)) == Approx(0).margin(1e-9));
+      // The tangent there bisects the two headings.
+      CHECK((smoothnessCurveDerivative(c, 0).normalized() - (smoothnessHeading(k - 1) + smoothnessHeading(k)).normalized()).norm() < 1e-9);
+    }
+  }
 }

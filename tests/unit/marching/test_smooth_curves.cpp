@@ -232,3 +232,67 @@ TEST_CASE("a seed growing three ways starts a perpendicular branch on the first 
   CHECK((control(curves[1], 1) - Vec3(-1, 2, 0) / 9).norm() < 1e-15);
   CHECK((control(curves[2], 1) - Vec3(1, -2, 0) / 9).norm() < 1e-15);
 }
+
+// The Marching rule's smoothness parameter (march_graph.h TerminalSmoothness), on a plane
+// with normal +Z: p0 = 0, p1 = (1, 0, 0), p2 = p1 + (cos 30°, sin 30°, 0) — two unit steps,
+// the second turned by 30°. Expectations by hand (smooth_curves.h's formulas).
+TEST_CASE("C0 curves meet at the joint with each segment's own chord tangent, C1 ones share it", "[smooth]") {
+  const double turn = M_PI / 6;
+  const Vec3 d0(1, 0, 0), d1(std::cos(turn), std::sin(turn), 0);
+  auto walk = [&](TerminalSmoothness first, TerminalSmoothness second) {
+    Graph g;
+    g.add(Vec3::Zero(), Vec3::UnitZ());
+    g.add(d0, Vec3::UnitZ());
+    g.add(d0 + d1, Vec3::UnitZ());
+    g.segments.push_back({0, 1, first});
+    g.segments.push_back({1, 2, second});
+    return smoothSegments(g.nodes, g.segments);
+  };
+  // The angle between two vectors, exact near 0 (atan2 of |a x b| and a . b).
+  auto angle = [](const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); };
+
+  const auto c0 = walk(TerminalSmoothness::C0, TerminalSmoothness::C0);
+  // b1 = a + (b - a) / 3, b2 = b - (b - a) / 3 on a plane: the chord at thirds.
+  CHECK((control(c0[0], 1) - d0 / 3).norm() < 1e-14);
+  CHECK((control(c0[0], 2) - 2 * d0 / 3).norm() < 1e-14);
+  CHECK((control(c0[1], 1) - (d0 + d1 / 3)).norm() < 1e-14);
+  CHECK((control(c0[1], 2) - (d0 + 2 * d1 / 3)).norm() < 1e-14);
+  CHECK((bezierPoint(c0[0], 1.0) - bezierPoint(c0[1], 0.0)).norm() < 1e-9);  // position-continuous
+  CHECK((bezierDerivative(c0[0], 1.0) - d0).norm() < 1e-12);                  // B' = 3 (c3 - c2) = d0
+  CHECK((bezierDerivative(c0[1], 0.0) - d1).norm() < 1e-12);
+  CHECK(angle(bezierDerivative(c0[0], 1.0), bezierDerivative(c0[1], 0.0)) == Approx(turn).margin(1e-9));
+
+  const auto c1 = walk(TerminalSmoothness::C1, TerminalSmoothness::C1);
+  // The joint's tangent bisects the turn, (cos 15°, sin 15°, 0), with the handle a third
+  // of the mean projection cos 15°: both derivatives there are cos 15° (cos 15°, sin 15°, 0).
+  const Vec3 bisector(std::cos(turn / 2), std::sin(turn / 2), 0);
+  const Vec3 derivative = std::cos(turn / 2) * bisector;
+  CHECK((bezierDerivative(c1[0], 1.0) - derivative).norm() < 1e-12);
+  CHECK((bezierDerivative(c1[1], 0.0) - derivative).norm() < 1e-12);
+  CHECK(angle(bezierDerivative(c1[0], 1.0), bezierDerivative(c1[1], 0.0)) == Approx(0).margin(1e-9));
+  CHECK((control(c1[0], 1) - d0 / 3).norm() < 1e-14);  // the free ends: the segment's own direction
+
+  // A C1 segment after a C0 one shares the joint with no other C1 segment: its own
+  // direction, a third of its length.
+  const auto mixed = walk(TerminalSmoothness::C0, TerminalSmoothness::C1);
+  CHECK((control(mixed[0], 2) - 2 * d0 / 3).norm() < 1e-14);
+  CHECK((control(mixed[1], 1) - (d0 + d1 / 3)).norm() < 1e-12);
+}
+
+TEST_CASE("C0 curves are tangent to the surface at their ends, discontinuous ones are the chord", "[smooth]") {
+  // One unit segment along X whose start normal leans 30° towards +X:
+  // n0 = (sin 30°, 0, cos 30°). C0: b1 = a + (I - n0 n0^T)(1, 0, 0) / 3
+  // = (cos² 30°, 0, -sin 30° cos 30°) / 3 = (0.25, 0, -0.1443375672974064...).
+  const double lean = M_PI / 6;
+  Graph g;
+  g.add(Vec3::Zero(), Vec3(std::sin(lean), 0, std::cos(lean)));
+  g.add(Vec3(1, 0, 0), Vec3::UnitZ());
+  g.segments.push_back({0, 1, TerminalSmoothness::C0});
+  g.segments.push_back({0, 1, TerminalSmoothness::Discontinuous});
+  const auto curves = smoothSegments(g.nodes, g.segments);
+  CHECK((control(curves[0], 1) - Vec3(0.25, 0, -std::sqrt(3.0) / 12)).norm() < 1e-14);
+  CHECK((control(curves[0], 2) - Vec3(2.0 / 3, 0, 0)).norm() < 1e-14);  // n1 = Z: the chord is tangent
+  CHECK(std::abs((control(curves[0], 1) - control(curves[0], 0)).dot(normal0(curves[0]))) < 1e-14);
+  CHECK((control(curves[1], 1) - Vec3(1.0 / 3, 0, 0)).norm() < 1e-14);
+  CHECK((control(curves[1], 2) - Vec3(2.0 / 3, 0, 0)).norm() < 1e-14);
+}
