@@ -52,6 +52,16 @@ void applyTileSetSettings(const ir::TileSetSpec& spec, ev::EvolveOptions& o) {
   if (!eliteGiven) o.elite = std::min(o.elite, o.population - 1);
 }
 
+EvolveVariation evolveVariation(const ir::TileSetSpec& spec) {
+  EvolveVariation v;
+  for (const auto& [name, values] : spec.settings) {
+    if (name == "faces")
+      for (const double d : values) v.faces.push_back(int(d));
+    else if (name == "colours") v.colourLevel = int(values[0]);
+  }
+  return v;
+}
+
 bool declaredTileSet(const ir::TileSetSpec& spec, ev::TileSet& out, std::string& message, ir::Loc& at) {
   const std::string source = "tileset '" + spec.name + "'";
   std::optional<std::vector<int>> turns;

@@ -8,6 +8,7 @@
 #include "runtime/evolve/tiles.h"
 
 #include <string>
+#include <vector>
 
 namespace fgsg::backend {
 
@@ -19,5 +20,15 @@ bool declaredTileSet(const ir::TileSetSpec& spec, rt::evolve::TileSet& out, std:
 // crossover, mutation, parents, elite) put into `options`; the others are left as they are,
 // except that parents and elite not given are capped at the population.
 void applyTileSetSettings(const ir::TileSetSpec& spec, rt::evolve::EvolveOptions& options);
+
+// Chan & Hui §6.4's variation a tileset asks of Evolve: `faces "+z";` the face-let
+// directions its pattern goes on (0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z; empty: every one),
+// `colours L;` the L-system generation whose cells carry the colours of the colour symmetry
+// (runtime/evolve/colour_symmetry.h; -1: no colours).
+struct EvolveVariation {
+  std::vector<int> faces;
+  int colourLevel = -1;
+};
+EvolveVariation evolveVariation(const ir::TileSetSpec& spec);
 
 }  // namespace fgsg::backend

@@ -49,6 +49,7 @@ class Analyzer {
   bool tileCurve(const TilesetItem& item, TileCurveInfo& out);
   bool gaSettingItem(const TilesetItem& item, const GaSetting& setting, const std::string& tileset,
                      TilesetInfo& out);
+  bool facesItem(const TilesetItem& item, const std::string& tileset, TilesetInfo& out);
   bool tilesetDeclared(const std::string& name) const;
 
   // Collision (sema_collision.cpp): `collision [all] [mesh | centre R | geodesic R];`.

@@ -26,7 +26,7 @@ namespace {
 
 constexpr const char* kItemKinds =
     "locus, section, orientations, symbols, or a GA setting: population, max_generations, threshold, weights, "
-    "crossover, mutation, parents, elite";
+    "crossover, mutation, parents, elite; or a variation (Chan & Hui §6.4): faces, colours";
 
 constexpr GaSetting kGaSettings[] = {
     {"population", 1, 1, 2, 100000, true, "population 100;"},
@@ -37,7 +37,13 @@ constexpr GaSetting kGaSettings[] = {
     {"mutation", 1, 1, 0, 1, false, "mutation 0.1;"},
     {"parents", 1, 1, 1, 100000, true, "parents 20;"},
     {"elite", 1, 1, 0, 100000, true, "elite 2;"},
+    // Not the GA's: the L-system generation whose cells carry the colour symmetry's colours.
+    {"colours", 1, 1, 0, 12, true, "colours 1;"},
 };
+
+// `faces "+z -z";`: the face-let directions, as the setting's numbers 0 +x, 1 -x, 2 +y,
+// 3 -y, 4 +z, 5 -z (backend/declared_tiles.h).
+constexpr const char* kFaceDirections[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 const GaSetting* gaSetting(const std::string& name) {
   for (const GaSetting& s : kGaSettings)
@@ -140,6 +146,55 @@ bool Analyzer::gaSettingItem(const TilesetItem& item, const GaSetting& setting, 
   return true;
 }
 
+// `faces "+z";`, `faces "+x -x +y -y";`: one constant string of directions (spaces or
+// commas between), each at most once.
+bool Analyzer::facesItem(const TilesetItem& item, const std::string& tileset, TilesetInfo& out) {
+  constexpr const char* form = "`faces \"+z -z\";` (directions +x -x +y -y +z -z)";
+  for (const auto& [name, values] : out.settings)
+    if (name == item.kind) {
+      diags_.error("E041", item.kindRange, "'faces' is given twice in tileset '" + tileset + "'");
+      return false;
+    }
+  ConstValue v;
+  const Expr* value = item.values.size() == 1 ? item.values[0].get() : nullptr;
+  if (!item.name.empty() || !value || !evalConst(*value, v) || v.type != ValueType::Str) {
+    diags_.error("E041", value ? value->range : item.range, "'faces' is one constant string: " + std::string(form));
+    return false;
+  }
+  std::vector<double> codes;
+  std::string word;
+  auto take = [&]() {
+    if (word.empty()) return true;
+    const auto* at = std::find(std::begin(kFaceDirections), std::end(kFaceDirections), word);
+    if (at == std::end(kFaceDirections)) {
+      diags_.error("E041", value->range, "'faces': unknown direction '" + word + "': " + form);
+      return false;
+    }
+    const double code = double(at - std::begin(kFaceDirections));
+    if (std::find(codes.begin(), codes.end(), code) != codes.end()) {
+      diags_.error("E041", value->range, "'faces': direction '" + word + "' is listed twice");
+      return false;
+    }
+    codes.push_back(code);
+    word.clear();
+    return true;
+  };
+  for (const char c : v.str) {
+    if (c == ' ' || c == ',' || c == '\t') {
+      if (!take()) return false;
+    } else {
+      word += c;
+    }
+  }
+  if (!take()) return false;
+  if (codes.empty()) {
+    diags_.error("E041", value->range, "'faces' names no direction: " + std::string(form));
+    return false;
+  }
+  out.settings.emplace_back(item.kind, std::move(codes));
+  return true;
+}
+
 void Analyzer::collectTilesets() {
   std::set<std::string> taken(res_.fields.begin(), res_.fields.end());
   taken.insert(res_.textures.begin(), res_.textures.end());
@@ -168,6 +223,10 @@ void Analyzer::collectTilesets() {
           continue;
         }
         (item.kind == "locus" ? info.loci : info.sections).push_back(std::move(curve));
+        continue;
+      }
+      if (item.kind == "faces") {
+        if (!facesItem(item, d.name, info)) ok = false;
         continue;
       }
       if (const GaSetting* setting = gaSetting(item.kind)) {

@@ -179,13 +179,14 @@ class Verifier {
         }
       for (int o : t.orientations)
         if (o != 0 && o != 90 && o != 180 && o != 270) problem("orientation " + std::to_string(o));
-      static const char* kSettings[] = {"population", "max_generations", "threshold", "weights",
-                                        "crossover",  "mutation",        "parents",   "elite"};
+      // The GA's settings, then Chan & Hui §6.4's variation (faces: up to 6 directions).
+      static const char* kSettings[] = {"population", "max_generations", "threshold", "weights", "crossover",
+                                        "mutation",   "parents",         "elite",     "faces",   "colours"};
       for (const auto& [name, values] : t.settings) {
         if (std::find_if(std::begin(kSettings), std::end(kSettings), [&](const char* k) { return name == k; }) ==
             std::end(kSettings))
           problem("unknown GA setting '" + name + "'");
-        if (values.empty() || values.size() > 4) problem("setting '" + name + "' with " + std::to_string(values.size()) + " values");
+        if (values.empty() || values.size() > (name == "faces" ? 6u : 4u)) problem("setting '" + name + "' with " + std::to_string(values.size()) + " values");
         finite(values, "setting value");
       }
     }
@@ -646,7 +647,6 @@ class Verifier {
         // Top, Extruded, and the condition block: one MarchCondition op.
         expectBodies(op, 3);
         numArgs(op, r, 2);
-        if (op.index > kMarchDiscontinuous) problem("smoothness " + std::to_string(op.index) + " out of range");
         if (op.bodies.size() == 3 &&
             (op.bodies[2].size() != 1 || op.bodies[2][0].kind != OpKind::MarchCondition))
           problem("the condition body is not one march-condition op");

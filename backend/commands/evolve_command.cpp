@@ -4,6 +4,8 @@
 #include "backend/declared_tiles.h"
 #include "backend/engine/derivation.h"
 #include "runtime/abandonable.h"
+#include "runtime/evolve/colour_symmetry.h"
+#include "runtime/evolve/fitness.h"
 #include "runtime/evolve/genetic.h"
 #include "runtime/evolve/lsystem2d.h"
 #include "runtime/evolve/offset_surface.h"
@@ -65,11 +67,21 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
   if (side > kMaxSide)
     throw DeriveError{op.loc, "R025", "Evolve: a pattern of k^generation = " + std::to_string(int64_t(side)) +
                                           " cells a side is past the " + std::to_string(kMaxSide) + " allowed"};
+  const EvolveVariation variation = op.index ? evolveVariation(m.tileSets[op.index - 1]) : EvolveVariation{};
+  if (variation.colourLevel > o.generation)
+    throw DeriveError{op.loc, "R025", "Evolve: the tileset's colours come from generation " +
+                                          std::to_string(variation.colourLevel) + ", past the pattern's generation " +
+                                          std::to_string(o.generation)};
   rt::evolve::AlleleGrid grid;
+  rt::evolve::ColourClasses colours;
   try {
     rt::evolve::checkOptions(o);
     const rt::evolve::EvolveResult result = rt::evolve::evolve(tiles, o);
     grid = rt::evolve::expand(result.best, o.generation);
+    if (variation.colourLevel >= 0) {
+      const int block = int(std::lround(std::pow(double(o.ruleSide), o.generation - variation.colourLevel)));
+      colours = rt::evolve::colourClasses(rt::evolve::PatternMeasure(tiles), grid, block);
+    }
   } catch (const std::invalid_argument& e) {
     throw DeriveError{op.loc, "R025", std::string("Evolve: ") + e.what()};
   }
@@ -77,7 +89,7 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
     const int resolution = n > 3 ? wholeArg(a[3], 1, rt::evolve::kMaxPolycubeResolution, "the polycube resolution",
                                             op.loc)
                                  : kDefaultPolycubeResolution;
-    ornamentSurface(op, file, tiles, grid, resolution, ex);
+    ornamentSurface(op, file, tiles, grid, resolution, variation, colours, ex);
     return;
   }
 
@@ -91,6 +103,10 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
       rt::Scope cell = s;
       cell.P = s.P + s.axes.col(0) * (c * w) + s.axes.col(1) * ((cells - 1 - r) * h);
       cell.S = rt::Vec3(w, h, w);  // tile units are the cell's width, up too
+      if (!colours.ofCell.empty()) {  // §6.4's colour symmetry: the cell's class's colour
+        cell.colored = true;
+        cell.color = rt::evolve::classColour(colours.ofCell[size_t(r) * size_t(cells) + size_t(c)]);
+      }
       const rt::evolve::Tile& tile = tiles.tiles[allele.symbol];
       const int sym = m.findSymbolFrom(d_.placingSymbol(ex), tiles.loci[tile.locus].name);
       if (sym >= 0 && !m.symbols[sym].rules.empty() && m.symbols[sym].slotCount == 0) {
@@ -109,7 +125,9 @@ void EvolveCommand::apply(const ir::Op& op, const double* a, uint32_t n, State& 
 // carried onto it and no higher than the offset surface allows (§6.3); one generated asset
 // in world space. The polycube (per resolution) and the offset surface are built once.
 void EvolveCommand::ornamentSurface(const ir::Op& op, const std::string& file, const rt::evolve::TileSet& tiles,
-                                    const rt::evolve::AlleleGrid& grid, int resolution, Exec& ex) {
+                                    const rt::evolve::AlleleGrid& grid, int resolution,
+                                    const EvolveVariation& variation, const rt::evolve::ColourClasses& colours,
+                                    Exec& ex) {
   const rt::surface::SurfaceMesh& mesh = d_.surface()->mesh();
   try {
     auto& map = polycubes_[resolution];
@@ -131,15 +149,37 @@ void EvolveCommand::ornamentSurface(const ir::Op& op, const std::string& file, c
     }
     if (d_.deadline().expiredNow()) throw rt::TimeLimitReached{d_.deadline().seconds()};
     const rt::evolve::OffsetSurface& room = *offset_;
+    std::vector<char> shown;
+    if (!variation.faces.empty()) shown = rt::evolve::faceletsFacing(*map, variation.faces);
+    const bool parted = !variation.faces.empty() || !colours.ofCell.empty();
+    std::vector<uint32_t> triangleCell;
     const rt::Mesh ornament = rt::evolve::surfaceOrnament(
         tiles, grid, *map,
         [&](const rt::evolve::MappedPoint& p) {
           return rt::evolve::heightAt(room, mesh, rt::surface::SurfacePoint{p.face, p.bary});
-        });
-    const std::string name = "<surface ornament " + file + " " + std::to_string(++surfaceOrnaments_) + ">";
-    rt::Scope box;  // the world box the ornament was built in
-    const uint32_t asset = d_.addGeneratedAsset(name, ornament, &box);
-    d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+        },
+        {}, nullptr, 0, parted && !shown.empty() ? &shown : nullptr, parted ? &triangleCell : nullptr);
+    const std::string base = "<surface ornament " + file + " " + std::to_string(++surfaceOrnaments_);
+    const std::string name = base + ">";
+    if (!parted) {
+      rt::Scope box;  // the world box the ornament was built in
+      const uint32_t asset = d_.addGeneratedAsset(name, ornament, &box);
+      d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+      return;
+    }
+    // Selected face-lets and/or colour classes (§6.4): a part per class, in its colour.
+    const int classes = colours.ofCell.empty() ? 1 : colours.classCount;
+    const std::vector<int> cellClass =
+        colours.ofCell.empty() ? std::vector<int>(grid.cells.size(), 0) : colours.ofCell;
+    const std::vector<rt::Mesh> parts = rt::evolve::partOrnament(ornament, triangleCell, cellClass, classes);
+    for (size_t c = 0; c < parts.size(); ++c) {
+      if (parts[c].indices.empty()) continue;
+      rt::Scope box;
+      const uint32_t asset =
+          d_.addGeneratedAsset(colours.ofCell.empty() ? name : base + " colour " + std::to_string(c) + ">", parts[c], &box);
+      if (!colours.ofCell.empty()) box.colored = true, box.color = rt::evolve::classColour(int(c));
+      d_.placeInstance(asset, box, d_.placingSymbol(ex), nullptr, 0, op.loc);
+    }
   } catch (const std::invalid_argument& e) {
     throw DeriveError{op.loc, "R025", std::string("Evolve on the surface: ") + e.what()};
   }

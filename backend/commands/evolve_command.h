@@ -10,6 +10,8 @@
 #pragma once
 
 #include "backend/commands/command_family.h"
+#include "backend/declared_tiles.h"
+#include "runtime/evolve/colour_symmetry.h"
 #include "runtime/evolve/lsystem2d.h"
 #include "runtime/evolve/offset_surface.h"
 #include "runtime/evolve/polycube_map.h"
@@ -43,7 +45,8 @@ class EvolveCommand final : public CommandFamily {
   };
   const Ornament& ornament(const std::string& file, const rt::evolve::TileSet& tiles, rt::evolve::Allele allele);
   void ornamentSurface(const ir::Op& op, const std::string& file, const rt::evolve::TileSet& tiles,
-                       const rt::evolve::AlleleGrid& grid, int resolution, Exec& ex);
+                       const rt::evolve::AlleleGrid& grid, int resolution, const EvolveVariation& variation,
+                       const rt::evolve::ColourClasses& colours, Exec& ex);
 
   Derivation& d_;
   std::map<std::string, rt::evolve::TileSet> tiles_;

@@ -22,7 +22,8 @@ constexpr double kMaxEdgeInCells = 2.0;
 
 rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const PolycubeMap& map,
                          const std::function<double(const MappedPoint&)>& maxHeight, const OrnamentOptions& options,
-                         SurfaceOrnamentStats* stats, double maxStretch) {
+                         SurfaceOrnamentStats* stats, double maxStretch, const std::vector<char>* shownFacelets,
+                         std::vector<uint32_t>* triangleCell) {
   const int n = pattern.side;
   if (!(maxStretch == 0 || (maxStretch >= 1 && std::isfinite(maxStretch))))
     throw std::invalid_argument("surfaceOrnament: the stretch limit must be 0 (none) or a ratio of at least 1, got " +
@@ -52,6 +53,9 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
     indices += 6 * (g->t.size() - 1) * (g->r.size() - 1);
   }
   const std::vector<Facelet>& facelets = map.facelets();
+  if (shownFacelets && shownFacelets->size() != facelets.size())
+    throw std::invalid_argument("surfaceOrnament: " + std::to_string(shownFacelets->size()) +
+                                " face-let flags for " + std::to_string(facelets.size()) + " face-lets");
   const size_t triangles = facelets.size() * indices / 3;
   if (triangles > kMaxSurfaceOrnamentTriangles)
     throw std::invalid_argument("surfaceOrnament: " + std::to_string(triangles) + " triangles (" +
@@ -65,11 +69,13 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
   std::vector<double> lowest(facelets.size(), 1.0);
   const size_t perFacelet = pattern.cells.size();
   std::vector<double> stretch(facelets.size() * perFacelet);
-  std::vector<size_t> stretchedTriangles(facelets.size(), 0);
+  std::vector<size_t> stretchedTriangles(facelets.size(), 0), hiddenTriangles(facelets.size(), 0);
+  std::vector<uint32_t> cellOfTriangle(triangleCell ? mesh.indices.size() / 3 : 0);
   tbb::parallel_for(size_t(0), facelets.size(), [&](size_t f) {
     const double w = facelets[f].u.norm() / n;  // a cell's width on this face-let
     const size_t vBase = f * vertices, iBase = f * indices;
     faceletStretch(map, f, n, stretch.data() + f * perFacelet);
+    const bool hidden = shownFacelets && !(*shownFacelets)[f];
     for (int row = 0; row < n; ++row)
       for (int col = 0; col < n; ++col) {
         const size_t c = size_t(row) * size_t(n) + size_t(col);
@@ -107,11 +113,15 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
           return d2 > longest * longest;
         };
         if (tooStretched) stretchedTriangles[f] += 2 * (nt - 1) * (nr - 1);
+        else if (hidden) hiddenTriangles[f] += 2 * (nt - 1) * (nr - 1);
+        if (triangleCell)
+          std::fill_n(cellOfTriangle.begin() + std::ptrdiff_t(k / 3), 2 * (nt - 1) * (nr - 1), uint32_t(c));
         for (size_t i = 0; i + 1 < nt; ++i)
           for (size_t j = 0; j + 1 < nr; ++j) {
             const auto a = uint32_t(first + i * nr + j), b = a + 1, c = uint32_t(a + nr), d = c + 1;
             for (const std::array<uint32_t, 3> t : {std::array{a, b, c}, std::array{b, d, c}}) {
-              const bool drop = tooStretched || jumps(t[0], t[1]) || jumps(t[1], t[2]) || jumps(t[2], t[0]);
+              const bool drop =
+                  tooStretched || hidden || jumps(t[0], t[1]) || jumps(t[1], t[2]) || jumps(t[2], t[0]);
               for (const uint32_t v : t) mesh.indices[k++] = drop ? t[0] : v;
             }
           }
@@ -120,10 +130,13 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
   // Keep the triangles that were not marked, in order.
   size_t kept = 0;
   for (size_t t = 0; t < mesh.indices.size(); t += 3)
-    if (mesh.indices[t] != mesh.indices[t + 1] || mesh.indices[t] != mesh.indices[t + 2])
+    if (mesh.indices[t] != mesh.indices[t + 1] || mesh.indices[t] != mesh.indices[t + 2]) {
+      if (triangleCell) triangleCell->push_back(cellOfTriangle[t / 3]);
       for (size_t c = 0; c < 3; ++c) mesh.indices[kept++] = mesh.indices[t + c];
+    }
   size_t leftOut = 0;
   for (const size_t t : stretchedTriangles) leftOut += t;
+  for (const size_t t : hiddenTriangles) leftOut += t;
   const size_t dropped = (mesh.indices.size() - kept) / 3 - leftOut;
   mesh.indices.resize(kept);
   mesh.computeNormals();
@@ -141,6 +154,47 @@ rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const 
     stats->stretch = summarizeStretch(std::move(stretch));
   }
   return mesh;
+}
+
+std::vector<char> faceletsFacing(const PolycubeMap& map, const std::vector<int>& directions) {
+  std::vector<char> shown;
+  shown.reserve(map.facelets().size());
+  for (const Facelet& f : map.facelets()) {
+    const int direction = 2 * f.axis + (f.sign > 0 ? 0 : 1);
+    shown.push_back(std::find(directions.begin(), directions.end(), direction) != directions.end() ? 1 : 0);
+  }
+  return shown;
+}
+
+std::vector<rt::Mesh> partOrnament(const rt::Mesh& mesh, const std::vector<uint32_t>& triangleCell,
+                                   const std::vector<int>& cellClass, int classCount) {
+  if (triangleCell.size() != mesh.triangleCount())
+    throw std::invalid_argument("partOrnament: a cell for each of the mesh's triangles is needed");
+  std::vector<rt::Mesh> parts(size_t(std::max(classCount, 0)));
+  // Per part, the new number of each vertex it uses (UINT32_MAX: not yet).
+  std::vector<std::vector<uint32_t>> renumber(parts.size());
+  const bool withNormals = mesh.normals.size() == mesh.positions.size(), withUv = mesh.hasTexcoords();
+  for (size_t t = 0; t < triangleCell.size(); ++t) {
+    const int cls = triangleCell[t] < cellClass.size() ? cellClass[triangleCell[t]] : -1;
+    if (cls < 0 || cls >= classCount)
+      throw std::invalid_argument("partOrnament: triangle " + std::to_string(t) + " has no class");
+    rt::Mesh& part = parts[size_t(cls)];
+    std::vector<uint32_t>& number = renumber[size_t(cls)];
+    if (number.empty()) number.assign(mesh.vertexCount(), UINT32_MAX);
+    for (size_t k = 0; k < 3; ++k) {
+      const uint32_t v = mesh.indices[3 * t + k];
+      if (number[v] == UINT32_MAX) {
+        number[v] = uint32_t(part.vertexCount());
+        for (size_t d = 0; d < 3; ++d) part.positions.push_back(mesh.positions[3 * size_t(v) + d]);
+        if (withNormals)
+          for (size_t d = 0; d < 3; ++d) part.normals.push_back(mesh.normals[3 * size_t(v) + d]);
+        if (withUv)
+          for (size_t d = 0; d < 2; ++d) part.texcoords.push_back(mesh.texcoords[2 * size_t(v) + d]);
+      }
+      part.indices.push_back(number[v]);
+    }
+  }
+  return parts;
 }
 
 }  // namespace fgsg::rt::evolve

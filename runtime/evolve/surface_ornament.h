@@ -40,7 +40,9 @@
 #include "runtime/evolve/tiles.h"
 #include "runtime/mesh.h"
 
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace fgsg::rt::evolve {
 
@@ -66,9 +68,25 @@ constexpr size_t kMaxSurfaceOrnamentTriangles = size_t(1) << 25;
 // Throws std::invalid_argument for an empty pattern, symbols the tile set lacks, bad
 // ornament options, a maxStretch neither 0 nor at least 1, or more than
 // kMaxSurfaceOrnamentTriangles triangles.
+// `shownFacelets` (§6.4, different L-systems on selected face-lets): when given, one flag
+// per face-let of the map; the others get no ornament (their triangles are left out, their
+// vertices stay). `triangleCell`, when given, receives the pattern cell (row-major) of
+// every triangle of the result.
 rt::Mesh surfaceOrnament(const TileSet& tiles, const AlleleGrid& pattern, const PolycubeMap& map,
                          const std::function<double(const MappedPoint&)>& maxHeight,
                          const OrnamentOptions& options = {}, SurfaceOrnamentStats* stats = nullptr,
-                         double maxStretch = 0);
+                         double maxStretch = 0, const std::vector<char>* shownFacelets = nullptr,
+                         std::vector<uint32_t>* triangleCell = nullptr);
+
+// The face-lets whose outward normal is one of `directions` (0 +x, 1 -x, 2 +y, 3 -y, 4 +z,
+// 5 -z): one flag per face-let of the map, for surfaceOrnament's shownFacelets.
+std::vector<char> faceletsFacing(const PolycubeMap& map, const std::vector<int>& directions);
+
+// The mesh's triangles parted by their cell's class (`cellClass[triangleCell[t]]`, classes
+// 0 .. classCount - 1): one mesh per class with only the vertices its triangles use, in
+// order, normals and texture coordinates kept. (Colour symmetry, colour_symmetry.h: a class
+// a colour.)
+std::vector<rt::Mesh> partOrnament(const rt::Mesh& mesh, const std::vector<uint32_t>& triangleCell,
+                                   const std::vector<int>& cellClass, int classCount);
 
 }  // namespace fgsg::rt::evolve
