@@ -647,6 +647,7 @@ class Verifier {
         // Top, Extruded, and the condition block: one MarchCondition op.
         expectBodies(op, 3);
         numArgs(op, r, 2);
+        if (op.index > kMarchDiscontinuous) problem("smoothness " + std::to_string(op.index) + " out of range");
         if (op.bodies.size() == 3 &&
             (op.bodies[2].size() != 1 || op.bodies[2][0].kind != OpKind::MarchCondition))
           problem("the condition body is not one march-condition op");
