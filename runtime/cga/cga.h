@@ -104,8 +104,9 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
 // comp(v): every edge with x along it (sx its length, sy = sz = 0), every vertex with a
 // scope of no size at it, z its normal (components.cpp). Each part's faceClass holds the
 // classes componentSelectorMask tests, the world.* / object.* ones in the world's axes
-// and `objectAxes` (the start shape's); border / inside only where `wantedClasses` (the
-// labels' masks together) asks for them, as finding them takes a pass over every edge.
+// and `objectAxes` (the start shape's). Those and border / inside only where
+// `wantedClasses` (the labels' masks together) asks for them: border takes a pass over
+// every edge, and comp(f) runs on every lot.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error,
                 const Mat3& objectAxes = Mat3::Identity(), unsigned wantedClasses = ~0u);

@@ -496,6 +496,11 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   const std::vector<WorldFace> faces = worldFaces(scope, geom, arena);
   const double tol = kMergeTol * (1.0 + scope.S.norm());
   const bool wantsBorder = (wantedClasses & (kCompBorder | kCompInside)) != 0;
+  // The world.* / object.* bits only where a label asks for them (comp(f) runs on every lot).
+  const bool wantsFrames = (wantedClasses >> kCompWorldShift) != 0;
+  auto frameClass = [&](const Vec3& normal, bool quadrant) {
+    return wantsFrames ? compWorldAndObjectClass(normal, objectAxes, quadrant) : 0u;
+  };
   auto edgeClass = [&](const WorldEdge& e) {
     const double ha = (e.a - scope.P).dot(scope.Y()), hb = (e.b - scope.P).dot(scope.Y());
     return roofEdgeClass(e, faces, scope.Y(), scope.P, ha, hb, tol);
@@ -504,7 +509,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   // ends) an edge of one face only (op_comp), inside otherwise.
   auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border) {
     return compClassifyByQuadrant(normalSum, scope.axes) | (border ? kCompBorder : kCompInside) |
-           compWorldAndObjectClass(normalSum, objectAxes, true);
+           frameClass(normalSum, true);
   };
   if (sel.vertices) {
     std::vector<Vec3> normalSums;
@@ -538,7 +543,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
       if (const unsigned cls = classifyFace(faces[i].normal, scope); cls & sel.mask) {
         out.push_back(facePart(faces[i], scope, arena, unitSquare));
         out.back().faceClass = cls | (borderFace[i] ? kCompBorder : kCompInside) |
-                               compWorldAndObjectClass(faces[i].normal, objectAxes, false);
+                               frameClass(faces[i].normal, false);
       }
     return true;
   }
