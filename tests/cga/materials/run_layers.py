@@ -19,6 +19,8 @@ import sys
 import tempfile
 import zlib
 
+from gltf_scene import leaves
+
 failures = []
 
 
@@ -88,23 +90,6 @@ def draw_maps(folder):
     for name, data in images.items():
         open(os.path.join(folder, name), "wb").write(data)
     return images
-
-
-def leaves(doc):
-    """Node name (without CGA's trailing '.') -> the primitives in its subtree."""
-    out = {}
-
-    def visit(k, name):
-        node = doc["nodes"][k]
-        name = node.get("name", name)
-        if "mesh" in node:
-            out.setdefault(name.rstrip("."), []).extend(doc["meshes"][node["mesh"]]["primitives"])
-        for c in node.get("children", []):
-            visit(c, name)
-
-    for root in doc["scenes"][0]["nodes"]:
-        visit(root, "")
-    return out
 
 
 def image_bytes(doc, buffer, texture):

@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from gltf_scene import leaves
+
 TOL = 1e-5
 
 # Per leaf symbol: (roughness, metallic, baseColorFactor or None (the symbol's own colour,
@@ -113,23 +115,6 @@ failures = []
 def fail(what):
     failures.append(what)
     print("FAIL", what)
-
-
-def leaves(doc):
-    """Node name (without CGA's trailing '.') -> the primitives in its subtree."""
-    out = {}
-
-    def visit(k, name):
-        node = doc["nodes"][k]
-        name = node.get("name", name)
-        if "mesh" in node:
-            out.setdefault(name.rstrip("."), []).extend(doc["meshes"][node["mesh"]]["primitives"])
-        for c in node.get("children", []):
-            visit(c, name)
-
-    for root in doc["scenes"][0]["nodes"]:
-        visit(root, "")
-    return out
 
 
 def accessor_floats(doc, buffer, index):
