@@ -76,17 +76,31 @@ class ImportedFunctionInliner {
       }
       return;
     }
+    if (copied_ > kMaxInlinedNodes) return;  // said once, at the call that went past it
     ExprPtr body = copyWithArguments(*f.body, e->args);
+    if (copied_ > kMaxInlinedNodes) {
+      diags_.error("E002", e->range,
+                   "'" + e->text + "' expands to more than " + std::to_string(kMaxInlinedNodes) +
+                       " expression nodes (a call's arguments are copied into the function's body at each use, "
+                       "so nested calls multiply); compute the inner value once, in a const or attr");
+      return;
+    }
     body->range = e->range;
     e = std::move(body);
   }
 
-  // The body with each parameter "#k" replaced by a copy of argument k.
-  static ExprPtr copyWithArguments(const Expr& from, const std::vector<ExprPtr>& args) {
+  // Inlining copies each argument once per use of its parameter: calls nested n deep in a
+  // body that uses its parameter twice are 2^n nodes. Past this many the file is refused.
+  static constexpr size_t kMaxInlinedNodes = 1'000'000;
+
+  // The body with each parameter "#k" replaced by a copy of argument k (counted in copied_;
+  // past the limit the copy stops short and the caller refuses it).
+  ExprPtr copyWithArguments(const Expr& from, const std::vector<ExprPtr>& args) {
     if (from.kind == ExprKind::Ident && from.text.size() > 1 && from.text[0] == '#') {
       const size_t k = std::stoul(from.text.substr(1));
       if (k < args.size()) return copyWithArguments(*args[k], {});
     }
+    ++copied_;
     auto c = std::make_unique<Expr>();
     c->kind = from.kind;
     c->range = from.range;
@@ -95,7 +109,8 @@ class ImportedFunctionInliner {
     c->text = from.text;
     c->object = from.object;
     c->hasCall = from.hasCall;
-    for (const ExprPtr& a : from.args) c->args.push_back(a ? copyWithArguments(*a, args) : nullptr);
+    for (const ExprPtr& a : from.args)
+      c->args.push_back(a && copied_ <= kMaxInlinedNodes ? copyWithArguments(*a, args) : nullptr);
     return c;
   }
 
@@ -104,6 +119,7 @@ class ImportedFunctionInliner {
   std::map<std::string, const FunctionDecl*> functions_;
   std::set<std::string> values_;
   std::set<std::string> reported_;  // bodies whose error is said once
+  size_t copied_ = 0;                // expression nodes inlined so far, in the whole importer
 };
 
 }  // namespace

@@ -29,7 +29,8 @@ ImportedFunctionsCompiled compileImporting(const std::string& text, const std::s
       "const margin = 1\n"
       "windowWidth(n) = n * 0.5 + margin\n"
       "height = 2 * floorHeight\n"
-      "broken(x) = x + nosuch\n",
+      "broken(x) = x + nosuch\n"
+      "sumTwice(x) = x + x\n",
       f);
   std::fclose(f);
   ImportedFunctionsCompiled c;
@@ -124,4 +125,22 @@ TEST_CASE("cga import attribute lists: kept and set attrs, misuse is located", "
   const auto number = compileImporting("import F : \"lib.cga\" (3)\n@StartRule\nLot --> X.\n");
   CHECK_FALSE(number.ok);
   CHECK(says(number, "main.cga:1:23: error[E002]: an import's list names the imported file's attrs to keep"));
+}
+
+TEST_CASE("cga imported functions: nested calls that would copy past a million nodes are refused", "[cga][dialect]") {
+  // sumTwice uses its parameter twice: n nested calls copy 2^n arguments into the body.
+  const auto nested = [](int n) {
+    std::string e = "1";
+    for (int i = 0; i < n; ++i) e = "F.sumTwice(" + e + ")";
+    return "import F : \"lib.cga\"\n@StartRule\nLot --> extrude(" + e + ") X.\n";
+  };
+  const auto ten = compileImporting(nested(10));
+  INFO(ten.messages);
+  CHECK(ten.ok);
+  // 2^30 nodes: refused at once, located at the call that went past the limit, not a hang.
+  const auto thirty = compileImporting(nested(30));
+  INFO(thirty.messages);
+  CHECK_FALSE(thirty.ok);
+  CHECK(says(thirty, "error[E002]"));
+  CHECK(says(thirty, "expands to more than 1000000 expression nodes"));
 }
