@@ -1,5 +1,6 @@
 #include "frontend/imported_functions.h"
 
+#include "frontend/ast_copy.h"
 #include "frontend/did_you_mean.h"
 
 #include <map>
@@ -101,14 +102,7 @@ class ImportedFunctionInliner {
       if (k < args.size()) return copyWithArguments(*args[k], {});
     }
     ++copied_;
-    auto c = std::make_unique<Expr>();
-    c->kind = from.kind;
-    c->range = from.range;
-    c->number = from.number;
-    c->boolean = from.boolean;
-    c->text = from.text;
-    c->object = from.object;
-    c->hasCall = from.hasCall;
+    ExprPtr c = copyExprNode(from);
     for (const ExprPtr& a : from.args)
       c->args.push_back(a && copied_ <= kMaxInlinedNodes ? copyWithArguments(*a, args) : nullptr);
     return c;

@@ -36,19 +36,6 @@ ExprPtr makeExpr(ExprKind kind, const SourceRange& at) {
   return e;
 }
 
-ExprPtr cloneExpr(const Expr& e) {
-  auto c = std::make_unique<Expr>();
-  c->kind = e.kind;
-  c->range = e.range;
-  c->number = e.number;
-  c->boolean = e.boolean;
-  c->text = e.text;
-  c->object = e.object;
-  c->hasCall = e.hasCall;
-  for (const auto& a : e.args) c->args.push_back(a ? cloneExpr(*a) : nullptr);
-  return c;
-}
-
 ExprPtr number(double v, const SourceRange& at) {
   ExprPtr e = makeExpr(ExprKind::Number, at);
   e->number = v;

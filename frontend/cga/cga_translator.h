@@ -8,6 +8,7 @@
 #pragma once
 
 #include "frontend/ast.h"
+#include "frontend/ast_copy.h"
 #include "frontend/diagnostics.h"
 
 #include "CgaParser.h"
@@ -25,7 +26,6 @@ using P = fgsg_grammar::CgaParser;
 SourceRange rangeOf(const antlr4::ParserRuleContext* ctx);
 SourceRange rangeOf(const antlr4::Token* token);
 ExprPtr makeExpr(ExprKind kind, const SourceRange& at);
-ExprPtr cloneExpr(const Expr& e);
 ExprPtr number(double v, const SourceRange& at);
 ExprPtr binary(const std::string& op, ExprPtr a, ExprPtr b);
 ExprPtr unaryNot(ExprPtr a);
