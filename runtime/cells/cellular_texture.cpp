@@ -194,10 +194,20 @@ void CellularTexture::project(const Cell& c, FeatureRef onto) {
     double top = -INFINITY;
     std::vector<Vec2> uv;
     uv.reserve(2 * (c.isBox() ? 4 : c.profile.size()));
-    c.forEachVertex([&](const Vec3& p) {
+    auto visit = [&](const Vec3& p) {
       top = std::max(top, heightAbove(f, p));
       uv.push_back(projectOnFace(f, p));
-    });
+    };
+    if (c.cuts.empty() || f.kind != FaceKind::Planar) {
+      c.forEachVertex(visit);
+    } else {
+      // A mitred cell (an outward mitre's, reaching round a corner into this face's
+      // layer) claims the shadow of its part in front of the face: not its prism's,
+      // which its mitre cuts off, nor that of its part behind the face's plane, which
+      // lies over its own face past the edge.
+      for (const std::vector<Vec3>& side : clipSolid(c.solid(), -f.normal, -f.normal.dot(f.origin), tolerance_))
+        for (const Vec3& p : side) visit(p);
+    }
     if (top <= tolerance_) return;  // behind the face: not in its layer of cells
     faceMaps_[onto.index].claim(std::move(uv));
   }

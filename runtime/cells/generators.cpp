@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -145,9 +146,49 @@ Vec3 atHeight(const CellularTexture& tex, const FeatureEdge& e, double z) {
   return a + (b - a) * ((z - za) / (zb - za));
 }
 
+// Outward mitres (docs/cells.md "Corners that are not square"): at a convex straight edge
+// whose two planar faces meet at other than a right angle (a hexagonal tower, a wedge),
+// boxes cannot turn the corner — one face's box either leaves a gap in the other's layer
+// or stands out of it. Instead every course gets a brick on each face, both running to
+// the plane through the edge that halves the dihedral angle: each is its face's layer
+// from that plane on, the plane's cut keeping the side of the face's own interior, so
+// the two meet on the plane with no gap and no overlap. Plumb edges only (a leaning
+// edge's level courses are parallelograms, verticalCourses' general case).
+struct OutwardMitre {
+  bool ok = false;
+  MitreCut cut[2];  // the side each face keeps, through the edge
+  double start[2] = {0, 0};  // where each face's cell starts along its `away`: the mitre's
+                             // farthest point in the layer (where both outer faces meet)
+};
+// Normals closer than this to square keep the corner bond of boxes.
+constexpr double kSquareCos = 1e-6;
+OutwardMitre outwardMitreAt(const CellularTexture& tex, const FeatureEdge& edge, const EdgeSides& sd, double d) {
+  OutwardMitre m;
+  const FeatureMesh& fm = tex.features();
+  if (edge.fold != EdgeFold::Convex || edge.shape != EdgeShape::Line || !sd.twoSided) return m;
+  if (fm.faces[edge.leftFace].kind != FaceKind::Planar || fm.faces[edge.rightFace].kind != FaceKind::Planar) return m;
+  if (std::abs(sd.normal[0].dot(sd.normal[1])) <= kSquareCos) return m;
+  if ((sd.normal[0] - sd.normal[1]).norm() < kCoplanarSine) return m;
+  for (int i = 0; i < 2; ++i)
+    if (std::abs(sd.away[i].dot(tex.up())) > 1e-9) return m;  // leaning
+  for (int i = 0; i < 2; ++i) {
+    const int o = 1 - i;
+    Vec3 n = (sd.normal[i] - sd.normal[o]).normalized();
+    if (n.dot(sd.away[i]) > 0) n = -n;
+    m.cut[i] = {n, n.dot(sd.point)};
+    // Both outer faces (n_i . p = n_o . p = d) meet at x away_i + d n_i: n_o . (x away_i + d n_i) = d.
+    const double na = sd.normal[o].dot(sd.away[i]);
+    if (std::abs(na) < kCoplanarSine) return OutwardMitre{};
+    m.start[i] = std::min(0.0, d * (1 - sd.normal[o].dot(sd.normal[i])) / na);
+  }
+  m.ok = true;
+  return m;
+}
+
 // Cells up a vertical edge, in layers [z, z + height(k)) from course base upwards, each
 // along the left or right face in turn: length(k) long from where the two faces' layers
-// meet, depth d, cut at the end of the face's free run.
+// meet, depth d, cut at the end of the face's free run. Where the faces do not meet
+// square, each layer gets a mitred cell on both faces instead (OutwardMitre).
 int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std::function<double(int)>& height,
                     const std::function<double(int)>& length, double firstLine) {
   const FeatureEdge& edge = tex.features().edges[e];
@@ -156,6 +197,7 @@ int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std:
   const double zlo = std::min(za, zb), zhi = std::max(za, zb);
   auto sAt = [&](double z) { return (z - za) / (zb - za) * edge.length; };
   const double tol = 1e3 * tex.tolerance();
+  const OutwardMitre mitre = outwardMitreAt(tex, edge, sd, d);
   int placed = 0;
   double z = firstLine;
   for (int k = 0; z < zhi - tol; ++k) {
@@ -168,6 +210,22 @@ int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std:
         double g0 = za + (zb - za) * gap.lo / edge.length, g1 = za + (zb - za) * gap.hi / edge.length;
         if (g0 > g1) std::swap(g0, g1);
         const int i = (k + (flip ? 1 : 0)) & 1;
+        if (mitre.ok) {
+          // Both faces, the course's face a whole length(k) from the edge, the other half
+          // of it, so the faces' joints change sides from course to course.
+          const Vec3 base = atHeight(tex, edge, g0), top = atHeight(tex, edge, g1);
+          for (int side : {i, 1 - i}) {
+            const Vec3& away = sd.away[side];
+            const double most = side == i ? length(k) : 0.5 * length(k);
+            const double far = std::min(most, reachInto(tex, sideFace(edge, sd, side), base, top, away, away, most));
+            Cell c = makeCell(base + away * mitre.start[side], away, sd.tangent, sd.normal[side],
+                              Vec3(far - mitre.start[side], g1 - g0, d));
+            c.profile = c.outline();
+            c.cuts.push_back(mitre.cut[side]);
+            placed += tex.add(c, {FeatureKind::Edge, e});
+          }
+          continue;
+        }
         const Region r = regionAlong(sd, i, d);
         if (!r.ok) continue;
         const Vec3 base = atHeight(tex, edge, g0), top = atHeight(tex, edge, g1);
@@ -201,6 +259,62 @@ int verticalCourses(CellularTexture& tex, int e, double d, bool flip, const std:
   return placed;
 }
 
+// An outward mitre at a corner for the cells of straight edge e that end there: where e
+// (faces F and G) meets another convex straight edge e2 of face F (faces F and H), laid
+// the same way (not vertical), at a corner of three edges, and G and H meet at other than
+// a right angle (a hexagonal tower's top rim: F the cap, G and H two walls), both edges'
+// rows of cells reach past the corner, and they meet on the plane through the corner
+// halving the angle between G and H (the third edge's own mitre, OutwardMitre). Where two
+// such partners meet e (a hipped roof's apex) there is no one plane: nothing. `into`: e's
+// direction from the corner. Returns the cut that e's cells keep, or nothing.
+std::optional<MitreCut> cornerMitre(const CellularTexture& tex, int e, int cornerVertex, const Vec3& into) {
+  const FeatureMesh& fm = tex.features();
+  const FeatureEdge& edge = fm.edges[e];
+  const auto it = std::find_if(fm.corners.begin(), fm.corners.end(),
+                               [&](const FeatureCorner& c) { return c.vertex == cornerVertex; });
+  if (it == fm.corners.end() || it->valence != 3 || edge.fold != EdgeFold::Convex || edge.shape != EdgeShape::Line)
+    return {};
+  const Vec3 at = tex.mesh().vertices[cornerVertex];
+  std::optional<MitreCut> found;
+  for (int e2 : it->edges) {
+    const FeatureEdge& other = fm.edges[e2];
+    if (e2 == e || other.fold != EdgeFold::Convex || other.shape != EdgeShape::Line || other.rightFace < 0 ||
+        isVertical(tex, other))
+      continue;
+    for (int shared : {edge.leftFace, edge.rightFace}) {
+      if (shared != other.leftFace && shared != other.rightFace) continue;
+      const int g = shared == edge.leftFace ? edge.rightFace : edge.leftFace;
+      const int h = shared == other.leftFace ? other.rightFace : other.leftFace;
+      if (g == h || fm.faces[g].kind != FaceKind::Planar || fm.faces[h].kind != FaceKind::Planar) continue;
+      const Vec3 ng = fm.faces[g].normal, nh = fm.faces[h].normal;
+      if (std::abs(ng.dot(nh)) <= kSquareCos || (ng - nh).norm() < kCoplanarSine) continue;
+      Vec3 m = (ng - nh).normalized();
+      if (m.dot(into) > 0) m = -m;
+      if (m.dot(into) > -kCoplanarSine) continue;  // the plane runs along e
+      if (found) return {};
+      found = MitreCut{m, m.dot(at)};
+    }
+  }
+  return found;
+}
+
+// Cell c (a box or a rectangle's prism) of an edge's row, its length axis along the edge
+// from the corner (atStart) or towards it, grown past its corner end to the corner's mitre
+// plane and cut there.
+void mitreAtCorner(Cell& c, const MitreCut& cut, bool atStart) {
+  const Vec3 x = c.axes.col(0);
+  const double slope = cut.normal.dot(atStart ? x : Vec3(-x));  // < 0: the kept side is along the row
+  double grow = 0;
+  for (int k = 0; k < 8; ++k) {
+    if (((k & 1) != 0) == atStart) continue;  // the corner end's four corners
+    grow = std::max(grow, (c.corner(k).dot(cut.normal) - cut.offset) / slope);
+  }
+  if (atStart) c.origin -= x * grow;
+  c.size.x() += grow;
+  c.profile = {Vec2(0, 0), Vec2(c.size.x(), 0), Vec2(c.size.x(), c.size.y()), Vec2(0, c.size.y())};
+  c.cuts.push_back(cut);
+}
+
 // Cells along a non-vertical edge filling the region both layers share, piece lengths
 // from `next(remaining)` (the last piece takes what is left). The cells' height axis is
 // across the edge on the more upright face; where the region reaches into that face (a
@@ -222,8 +336,13 @@ int alongEdge(CellularTexture& tex, int e, double d, double course, const std::f
         const Vec3 x = (pb - pa).normalized();
         const Vec3 y = (sd.away[i] - sd.away[i].dot(x) * x).normalized();
         const Vec3 z = x.cross(y).dot(sd.normal[i]) >= 0 ? x.cross(y) : Vec3(-x.cross(y));
-        placed += tex.add(makeCell(pa + y * r.lo, x, y, z, Vec3((pb - pa).norm(), r.hi - r.lo, d)),
-                          {FeatureKind::Edge, e});
+        Cell c = makeCell(pa + y * r.lo, x, y, z, Vec3((pb - pa).norm(), r.hi - r.lo, d));
+        // At a corner whose walls are not square the row runs on to the mitre there.
+        if (s <= tol && !edge.closed)
+          if (const auto cut = cornerMitre(tex, e, edge.vertices.front(), x)) mitreAtCorner(c, *cut, true);
+        if (s + piece >= edge.length - tol && !edge.closed)
+          if (const auto cut = cornerMitre(tex, e, edge.vertices.back(), -x)) mitreAtCorner(c, *cut, false);
+        placed += tex.add(c, {FeatureKind::Edge, e});
       }
       s += piece;
     }
