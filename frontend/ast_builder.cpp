@@ -369,6 +369,7 @@ Successor AstBuilder::buildBodyPart(P::BodyPartContext* ctx) {
   s.epsilon = ctx->EPSILON() != nullptr;
   if (ctx->selector) {
     s.selector = text(ctx->selector);
+    if (ctx->merged) s.selector += "=";  // `all=: A`: the label of a merged part, as a .cga `=`
     s.selectorRange = rangeOf(ctx->selector);
   }
   if (ctx->size) s.size = buildExpr(ctx->size);

@@ -147,6 +147,7 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocQuery, "Shape.splitTotal", "Shape.splitTotal", "CGA's split.total: how many parts the shape's last Subdiv or Repeat derived.", nullptr},
     {kDocQuery, "Shape.compIndex", "Shape.compIndex", "CGA's comp.index: the face's place among the faces its Comp part took.", nullptr},
     {kDocQuery, "Shape.compTotal", "Shape.compTotal", "CGA's comp.total: how many faces its Comp part took.", nullptr},
+    {kDocQuery, "Shape.compSel", "Shape.compSel", "CGA's comp.sel: the name of the selector that chose the shape in the last Comp above it (\"front\", \"world.up\", \"street.front\", \"2\"); \"\" outside any.", nullptr},
     {kDocQuery, "Shape.visible", "Shape.visible(\"street\")", "True when the scope's Z is within 60° of world +Z, where the street lies.", nullptr},
     {kDocQuery, "Shape.inside", "Shape.inside(\"intra\", \"label\")", "CGA's occlusion query: the shape lies inside the labelled occluders of its own start shape (\"intra\"), the others' (\"inter\") or both (\"all\").", nullptr},
     {kDocQuery, "Shape.overlaps", "Shape.overlaps(\"intra\", \"label\")", "CGA's occlusion query: the shape overlaps a labelled occluder (\"intra\", \"inter\" or \"all\").", nullptr},
@@ -338,6 +339,7 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCgaAttribute, "split.total", "split.total", "How many parts its split made.", "Shape.splitTotal"},
     {kDocCgaAttribute, "comp.index", "comp.index", "The component's index among its comp's parts.", "Shape.compIndex"},
     {kDocCgaAttribute, "comp.total", "comp.total", "How many components its comp made.", "Shape.compTotal"},
+    {kDocCgaAttribute, "comp.sel", "comp.sel", "The selector that chose the component, as written (\"side\", \"world.up\", \"street.front\", \"2\").", "Shape.compSel"},
 };
 
 // A table cell: '|' would end it.

@@ -460,7 +460,8 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
       "front",       "back",       "left",       "right",       "top",        "bottom",      "vertical",
       "aslant",      "horizontal", "nutant",     "side",        "all",        "border",      "inside",
       "worldUp",     "worldDown",  "worldNorth", "worldSouth",  "worldEast",  "worldWest",   "worldSide",
-      "objectTop",   "objectBottom", "objectFront", "objectBack", "objectLeft", "objectRight", "objectSide"};
+      "objectTop",   "objectBottom", "objectFront", "objectBack", "objectLeft", "objectRight", "objectSide",
+      "streetFront", "streetBack", "streetLeft", "streetRight", "streetSide"};
   // Those of fgsg's Comp of edges: roof edges by their class (Comp("e") takes them too).
   static const std::set<std::string> kEdgeComponents = {"edges",  "sideedges", "topedges", "bottomedges",
                                                         "eaves", "ridges", "rakes",     "hips",     "valleys"};
@@ -475,6 +476,20 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   for (const auto& part : item.body) {
     if (part.selector.empty()) continue;
     ++labelled;
+    // A merged part (`all=: A`): Comp("e") / Comp("v") make one shape of what it takes.
+    if (cmd.id == CommandId::Comp && part.selector.size() > 1 && part.selector.back() == '=') {
+      if (component != "e" && component != "v" && component != "vertices")
+        diags_.error("E028", part.selectorRange,
+                     "a merged part '" + part.selector + ":' (one shape of all it takes) belongs to Comp(\"e\") "
+                     "or Comp(\"v\"); Comp(\"" + component + "\") gives each component a shape: '" +
+                         part.selector.substr(0, part.selector.size() - 1) + ":'");
+      const std::string bare = part.selector.substr(0, part.selector.size() - 1);
+      long long index = 0;
+      if (!kPartFaces.count(bare) && !(component == "e" && kPartEdges.count(bare)) &&
+          !rt::cga::edgeIndexOfLabel(bare, index))
+        diags_.error("E028", part.selectorRange, "unknown part '" + part.selector + ":' of Comp(\"" + component + "\")");
+      continue;
+    }
     if (cmd.id == CommandId::ShapeOperation) {
       std::string allowed;
       if (!shapeOperationLabel(item.name, part.selector, allowed))
@@ -499,7 +514,7 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
       diags_.error("E028", part.selectorRange,
                    std::string("unknown ") + what + " '" + part.selector +
                        ":' (front, back, left, right, top, bottom, vertical, aslant, horizontal, nutant, side, all, "
-                       "border, inside, worldUp ... worldSide, objectTop ... objectSide, an index" +
+                       "border, inside, worldUp ... worldSide, objectTop ... objectSide, streetFront ... streetSide, an index" +
                        (component == "e" ? ", eave, ridge, hip, valley, gable)" : ")"));
     }
   }

@@ -284,6 +284,7 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
     static const std::set<std::string> kShape = {"depth", "index", "splitIndex", "splitTotal", "compIndex",
                                                  "compTotal"};
     if (kShape.count(e.text) && !e.hasCall) return record(e, ValueType::Num, report);
+    if (e.text == "compSel" && !e.hasCall) return record(e, ValueType::Str, report);  // CGA's comp.sel
     if (e.text == "visible" && e.hasCall && e.args.size() == 1)
       return record(e, ValueType::Bool, report);
     // CityEngine's contextCompare: Shape.contextCompare("inter", "lot", "world.highest").
@@ -327,7 +328,7 @@ ValueType Analyzer::typeOfMember(const Expr& e, const Where& w, bool report) {
     }
     return fail("unknown shape query 'Shape." + e.text +
                 "' (Shape.depth, Shape.index, Shape.splitIndex, Shape.splitTotal, Shape.compIndex, "
-                "Shape.compTotal, Shape.visible(\"street\"), Shape.inside overlaps touches(\"intra\", \"label\"), "
+                "Shape.compTotal, Shape.compSel, Shape.visible(\"street\"), Shape.inside overlaps touches(\"intra\", \"label\"), "
                 "Shape.minimumDistance contextCount(\"intra\", \"label\"))");
   }
   if (e.object == "Geometry") {  // CGA's geometry.*(): the shape's own geometry

@@ -163,9 +163,10 @@ callArgs : '(' ( expr ( ',' expr )* )? ')' ;
 // CGA's repeat split: `Subdiv("X"){ ~1: Wall | 1.4: Window }*` repeats the parts.
 body : '{' bodyPart ( ( '|' | ',' ) bodyPart )* '}' repeat='*'? ;
 
-// A part may name the components it takes, `Comp("f"){ front: A | side: B }`, or give
+// A part may name the components it takes, `Comp("f"){ front: A | side: B }`, merged into
+// one shape with `=:` (CGA's `=`: `Comp("e"){ all=: A }`, `Setback(2){ all=: A }`), or give
 // its size, CGA's split syntax `Subdiv("Y"){ 4: Ground | ~3: Floor }`.
-bodyPart : ( selector=ID ':' | size=expr ':' )? ( EPSILON | item+ ) ;
+bodyPart : ( selector=ID merged='='? ':' | size=expr ':' )? ( EPSILON | item+ ) ;
 
 // ------------------------------------------------------------- expressions
 

@@ -61,6 +61,7 @@ constexpr QuerySignature kQueries[] = {
     {"Geometry", "du", 0, N, N, true},     // uv set 0, uvSpace: checked by the compiler
     {"Geometry", "dv", 0, N, N, true},
     {"Shape", "contextCompare", 1, Type::Str, N, true},  // target and comparison in extra
+    {"Shape", "compSel", 0, N, Type::Str, true},         // "" (no comp) in extra
 };
 static_assert(std::size(kQueries) == static_cast<size_t>(kLastQuery) + 1,
               "one signature per Query");

@@ -83,8 +83,11 @@ enum class Query : uint8_t {
   // shapes; extra = the target (ContextTarget) | the comparison (ContextComparison) << 2,
   // args[0] the label (Str).
   ContextCompare,
+  // CGA's comp.sel: the name of the selector that chose the shape in the last comp above
+  // it (Str): Module::compSelectors[place.compSel - 1], "" for none.
+  ShapeCompSel,
 };
-inline constexpr Query kLastQuery = Query::ContextCompare;
+inline constexpr Query kLastQuery = Query::ShapeCompSel;
 inline bool isGeometryQuery(Query q) {
   return (q >= Query::GeometryArea && q <= Query::GeometryBoundaryLength) ||
          (q >= Query::GeometryAngle && q <= Query::GeometryDv);
@@ -510,6 +513,10 @@ struct Module {
   std::vector<FieldSpec> fields;
   std::vector<TileSetSpec> tileSets;
   std::vector<EnvDecl> environment;
+  // The Comp parts' labels (string ids), each once, in the order the lowering met them,
+  // and beside each the name comp.sel gives it (rt::cga::compSelectorName, interned): a
+  // shape's Place::compSel is 1 + its index here (at most 255 of them; past that, "").
+  std::vector<uint32_t> compSelectorLabels, compSelectors;
 
   uint32_t internString(const std::string& s);
   uint32_t internAsset(const std::string& s);

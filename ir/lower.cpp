@@ -3,6 +3,7 @@
 
 #include "frontend/builtins.h"
 #include "frontend/shape_operations.h"
+#include "runtime/cga/comp_selector_name.h"
 
 #include <algorithm>
 #include <map>
@@ -373,6 +374,13 @@ class Lowerer {
         op.str = m_.internString(constString(*item.args[0]));
         for (const auto& part : item.body)
           if (!part.selector.empty()) op.partLabels.push_back(m_.internString(part.selector));
+        // comp.sel's names (ir::Module::compSelectors); an unlabelled comp's is `all`.
+        for (uint32_t label : op.partLabels.empty() ? std::vector<uint32_t>{m_.internString("all")} : op.partLabels)
+          if (std::find(m_.compSelectorLabels.begin(), m_.compSelectorLabels.end(), label) ==
+              m_.compSelectorLabels.end()) {
+            m_.compSelectorLabels.push_back(label);
+            m_.compSelectors.push_back(m_.internString(rt::cga::compSelectorName(m_.strings[label])));
+          }
         break;
       case CommandId::Extrude: op.kind = OpKind::Extrude; allArgs(0); break;
       case CommandId::Footprint:
@@ -751,7 +759,8 @@ class Lowerer {
           {"depth", Query::ShapeDepth},           {"index", Query::ShapeIndex},
           {"visible", Query::ShapeVisible},       {"splitIndex", Query::ShapeSplitIndex},
           {"splitTotal", Query::ShapeSplitTotal}, {"compIndex", Query::ShapeCompIndex},
-          {"compTotal", Query::ShapeCompTotal},   {"inside", Query::ContextInside},
+          {"compTotal", Query::ShapeCompTotal},   {"compSel", Query::ShapeCompSel},
+          {"inside", Query::ContextInside},
           {"overlaps", Query::ContextOverlaps},   {"touches", Query::ContextTouches},
           {"minimumDistance", Query::ContextMinimumDistance}, {"contextCount", Query::ContextCount},
           {"contextCompare", Query::ContextCompare}};
@@ -762,6 +771,8 @@ class Lowerer {
           {"boundaryLength", Query::GeometryBoundaryLength}, {"angle", Query::GeometryAngle},
           {"du", Query::GeometryDu}, {"dv", Query::GeometryDv}};
       out.index = static_cast<uint32_t>((e.object == "Shape" ? kShape : kGeometry).at(e.text));
+      // comp.sel outside any comp: the string "" (its id in extra).
+      if (static_cast<Query>(out.index) == Query::ShapeCompSel) out.extra = m_.internString("");
       if (static_cast<Query>(out.index) == Query::GeometryAngle) {
         // The selector is a constant word (sema checked it), fixed here as a number.
         const std::string selector = constString(*e.args[0]);

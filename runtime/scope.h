@@ -46,8 +46,13 @@ struct Scope {
   uint32_t projection = 0;
   // CGA's split.index / split.total and comp.index / comp.total: this shape's place among
   // the parts of the last split (and comp) above it, inherited by the shapes it creates.
+  // comp.sel: 1 + the index of the selector that chose it among the derivation's comp
+  // selectors (ir::Module::compSelectors); 0: none (""). Beside comp.total in its word
+  // (a selector takes fewer than 2^24 components) so that the scope keeps its size.
   struct Place {
-    int32_t splitIndex = 0, splitTotal = 0, compIndex = 0, compTotal = 0;
+    int32_t splitIndex = 0, splitTotal = 0, compIndex = 0;
+    uint32_t compTotal : 24 = 0;
+    uint32_t compSel : 8 = 0;
   } place;
   // Material(...) (CGA's material attributes): 1 + the index of the derivation's finish
   // (roughness, metallic, opacity, normal map) the instances placed from this scope on

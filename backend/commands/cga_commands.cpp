@@ -3,6 +3,7 @@
 #include "backend/commands/shape_operations.h"
 #include "backend/engine/derivation.h"
 #include "runtime/cga/cga.h"
+#include "runtime/cga/comp_selector_name.h"
 #include "runtime/cga/edge_index_label.h"
 #include "runtime/cga/ground_face.h"
 #include "runtime/cga/shape_operations.h"
@@ -162,9 +163,9 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
   }
   // Labelled parts of Comp: each component goes to the first part whose label names it (a
   // class of componentSelectorMask's, or an index selector `2:` by its place among them all).
-  std::vector<unsigned> labelMasks;
+  std::vector<uint64_t> labelMasks;
   std::vector<long long> labelIndex;  // an index selector's index; LLONG_MIN: none
-  unsigned wantedClasses = 0;
+  uint64_t wantedClasses = 0;
   for (uint32_t label : op.partLabels) {
     const std::string& name = d_.module().strings[label];
     long long index = LLONG_MIN;
@@ -173,6 +174,16 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     labelMasks.push_back(rt::cga::componentSelectorMask(d_.module().strings[op.str], name));
     if (labelMasks.back() != ~0u) wantedClasses |= labelMasks.back();  // `all` needs no class
   }
+  // comp.sel: each part's place among the module's comp selectors (ir::Module).
+  std::vector<uint32_t> labelSel(op.partLabels.size(), 0);
+  const std::vector<uint32_t>& selectors = d_.module().compSelectorLabels;
+  for (size_t k = 0; k < op.partLabels.size(); ++k)
+    for (size_t s = 0; s < selectors.size() && s < 255; ++s)
+      if (selectors[s] == op.partLabels[k]) labelSel[k] = uint32_t(s + 1);
+  // An unlabelled comp (`.cga`'s one `all :`) chose its components by `all`.
+  if (op.kind == ir::OpKind::Comp && op.partLabels.empty())
+    for (size_t s = 0; s < selectors.size() && s < 255 && labelSel.empty(); ++s)
+      if (d_.module().strings[selectors[s]] == "all") labelSel.push_back(uint32_t(s + 1));
   if (op.kind == ir::OpKind::Comp)
     ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error,
                              d_.objectFrame().axes, wantedClasses);
@@ -199,6 +210,22 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     ++perBody[body];
     ++derived;
   }
+  // A merged part (`all =`, fgsg `all=:`) of comp(e) / comp(v): its components are one shape,
+  // run where its first one comes (rt::cga::mergedComponents).
+  if (op.kind == ir::OpKind::Comp)
+    for (size_t k = 0; k < labelMasks.size(); ++k) {
+      if (!rt::cga::compLabelMerged(d_.module().strings[op.partLabels[k]]) || perBody[k] == 0) continue;
+      std::vector<rt::cga::Part> taken;
+      size_t first = SIZE_MAX;
+      for (size_t i = 0; i < parts.size(); ++i)
+        if (bodyOf[i] == k) {
+          taken.push_back(parts[i]);
+          if (first == SIZE_MAX) first = i;
+          else bodyOf[i] = SIZE_MAX;
+        }
+      parts[first] = rt::cga::mergedComponents(taken);
+      perBody[k] = 1;
+    }
   // CGA's split.index / split.total count the parts a split derives; comp.index /
   // comp.total the faces of the part's selector (CityEngine's per-selector count).
   std::vector<int32_t> seen(perBody.size(), 0);
@@ -207,7 +234,8 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     if (bodyOf[i] == SIZE_MAX) continue;
     rt::Scope::Place place = st.scope.place;
     if (op.kind == ir::OpKind::Comp)
-      place.compIndex = seen[bodyOf[i]]++, place.compTotal = perBody[bodyOf[i]];
+      place.compIndex = seen[bodyOf[i]]++, place.compTotal = uint32_t(perBody[bodyOf[i]]),
+      place.compSel = bodyOf[i] < labelSel.size() ? labelSel[bodyOf[i]] : 0;
     else
       place.splitIndex = index++, place.splitTotal = derived;
     d_.runBody(op, bodyOf[i], parts[i].scope, parts[i].geom, st, ex, f, &place);

@@ -195,6 +195,7 @@ double Evaluator::query(const ir::Expr& e, const Frame& f) const {
     case Query::ShapeSplitTotal: return f.scope->place.splitTotal;
     case Query::ShapeCompIndex: return f.scope->place.compIndex;
     case Query::ShapeCompTotal: return f.scope->place.compTotal;
+    case Query::ShapeCompSel: return compSelector(m_, f.scope->place, e.extra);
     default: break;  // the geometry queries, above
   }
   throw DeriveError{e.loc, "R900", "internal: unknown query"};

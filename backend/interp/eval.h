@@ -59,6 +59,12 @@ struct QueryHost {
   }
 };
 
+// CGA's comp.sel of a shape at `place` (Query::ShapeCompSel): the string id of the name of
+// the selector that chose it (ir::Module::compSelectors), else `noneId` (the string "").
+inline double compSelector(const ir::Module& m, const rt::Scope::Place& place, uint32_t noneId) {
+  return place.compSel > 0 && place.compSel <= m.compSelectors.size() ? m.compSelectors[place.compSel - 1] : noneId;
+}
+
 struct Frame {
   const double* params = nullptr;  // the rule's parameter block
   rt::RandomStream* rng = nullptr;

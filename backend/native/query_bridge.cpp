@@ -57,6 +57,7 @@ int32_t QueryBridge::answer(void* user, uint32_t kind, uint32_t env, uint32_t ex
       case ir::Query::ShapeSplitTotal: *out = f.scope->place.splitTotal; return FGSG_OK;
       case ir::Query::ShapeCompIndex: *out = f.scope->place.compIndex; return FGSG_OK;
       case ir::Query::ShapeCompTotal: *out = f.scope->place.compTotal; return FGSG_OK;
+      case ir::Query::ShapeCompSel: *out = compSelector(self.m_, f.scope->place, extra); return FGSG_OK;
       default: break;  // the geometry queries, above
     }
     return FGSG_E_INTERNAL;

@@ -268,6 +268,12 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
       notSupported(at, "the shape attribute '" + text + "'");
       return nullptr;
     }
+    if (object == "comp" && member == "sel") {
+      ExprPtr e = makeExpr(ExprKind::Member, at);  // Shape.compSel: the selector's name
+      e->object = "Shape";
+      e->text = "compSel";
+      return e;
+    }
     if ((object == "split" || object == "comp") && (member == "index" || member == "total")) {
       ExprPtr e = makeExpr(ExprKind::Member, at);  // Shape.splitIndex ...
       e->object = "Shape";

@@ -6,8 +6,8 @@
 //                                       cut; a nested repeat takes what the others leave)
 //   splitArea(x|y|z [, adjust|noAdjust]){ areas : ops }[*]   SplitArea: the same, in areas
 //   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
-//   comp(e|v){ vertical : A | world.up : B | border : C | 2 : D }
-//                                       Comp("e"){ vertical: A | worldUp: B | border: C | #2: D }
+//   comp(e|v){ vertical : A | world.up : B | border : C | 2 : D | street.front = E }
+//                                       Comp("e"){ vertical: A | worldUp: B | border: C | #2: D | streetFront=: E }
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
 //   offset(-d) comp(f){ inside : A | border : B }   Offset(d){ inside: A | border: B }
 //   roofGable/Hip/Pyramid/Shed(angle)   Roof(kind, angle){ rest of the successor }
@@ -125,9 +125,9 @@ std::string fullColor(const std::string& c) {
 
 // A `.cga` comp selector as the label of fgsg's Comp part (runtime/cga/components.cpp's
 // componentSelectorMask): the sides, slopes, `side`, `all`, `border` and `inside` as
-// written, world.up as worldUp, object.front as objectFront, comp(e)'s roof edges, an index
-// selector `2` / `-1` (a whole number written out) as "#2" / "#-1"; "" where comp(kind)
-// has no such selector (street.*, a computed or fractional index ...).
+// written, world.up as worldUp, object.front as objectFront, street.side as streetSide,
+// comp(e)'s roof edges, an index selector `2` / `-1` (a whole number written out) as "#2" /
+// "#-1"; "" where comp(kind) has no such selector (a computed or fractional index ...).
 std::string cgaCompSelectorLabel(const std::string& kind, const std::string& word, const std::string& written) {
   static const char* const kAnyComponent[] = {"all",      "front",  "back",       "left",   "right",  "top",   "bottom",
                                               "side",     "vertical", "aslant",   "horizontal", "nutant", "border",
@@ -136,7 +136,8 @@ std::string cgaCompSelectorLabel(const std::string& kind, const std::string& wor
   static const char* const kFrameSides[] = {"world.up",      "world.down",   "world.north",  "world.south",
                                             "world.east",    "world.west",   "world.side",   "object.top",
                                             "object.bottom", "object.front", "object.back",  "object.left",
-                                            "object.right",  "object.side"};
+                                            "object.right",  "object.side",  "street.front", "street.back",
+                                            "street.left",   "street.right", "street.side"};
   for (const char* k : kAnyComponent)
     if (word == k) return word;
   if (kind == "e")
@@ -806,8 +807,8 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
 // comp(e){ ... } and comp(v){ ... }: fgsg's Comp("e") / Comp("v"), each edge or vertex a
 // shape of its own going to the first part whose selector takes it (cgaCompSelectorLabel:
 // the sides and slopes of its normal, border / inside, world.* / object.*, its index;
-// comp(e) also CityEngine's roof edges `eave ridge hip valley gable`). One `all` alone is
-// an unlabelled body.
+// comp(e) also CityEngine's roof edges `eave ridge hip valley gable`; street.*); with `=`
+// all it takes are one shape. One `all :` alone is an unlabelled body.
 void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::string& kind, Sequence& seq,
                                      const Env& env) {
   std::vector<P::SizedPartContext*> parts;
@@ -823,13 +824,9 @@ void Translator::compEdgesOrVertices(P::CallOperationContext* op, const std::str
       notSupported(rangeOf(sized->key), "the comp(" + kind + ") selector '" + sized->key->getText() + "'");
       return;
     }
-    if (sized->sep->getText() == "=") {
-      notSupported(rangeOf(sized->sep), "comp(" + kind + ")'s `" + sized->key->getText() +
-                                            " =` (the components merged into one shape)");
-      return;
-    }
     parts.push_back(sized);
-    labels.push_back(label);
+    // `=`: the components it takes merged into one shape (fgsg's label "all=").
+    labels.push_back(sized->sep->getText() == "=" ? label + "=" : label);
   }
   if (parts.empty()) {
     error("E018", rangeOf(op->splitBody()), "comp(" + kind + ") needs its parts: comp(" + kind + "){ all : A }");

@@ -844,6 +844,7 @@ public:
   class  BodyPartContext : public antlr4::ParserRuleContext {
   public:
     antlr4::Token *selector = nullptr;;
+    antlr4::Token *merged = nullptr;;
     FgsgParser::ExprContext *size = nullptr;;
     BodyPartContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
@@ -853,6 +854,7 @@ public:
     ExprContext *expr();
     std::vector<ItemContext *> item();
     ItemContext* item(size_t i);
+    antlr4::tree::TerminalNode *ASSIGN();
 
     virtual antlrcpp::Any accept(antlr4::tree::ParseTreeVisitor *visitor) override;
    

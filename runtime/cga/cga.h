@@ -28,8 +28,8 @@ struct Part {
   GeomRef geom;
   bool empty = false;  // a part whose geometry clipped away entirely (it is skipped)
   // A Comp face: which face it is (faceSelectorMask's bits); a Comp edge: its roof class
-  // (componentSelectorMask's bits for an edge component).
-  unsigned faceClass = 0;
+  // (componentSelectorMask's bits for an edge component; 64 bits: street.* lie past bit 31).
+  uint64_t faceClass = 0;
 };
 
 // The faces a Comp face selector ("front", "sidefaces", "faces" ...) or the name of a
@@ -44,8 +44,11 @@ unsigned faceSelectorMask(const std::string& name);
 // horizontal nutant` by the mean of the faces' normals; `side` all but horizontal), and
 // every component `border`, `inside` and the world's and the object's sides (`worldUp
 // worldDown worldNorth worldSouth worldEast worldWest worldSide`, `objectTop ... objectSide`);
-// faces anything else as faceSelectorMask(name). 0 for any other name.
-unsigned componentSelectorMask(const std::string& component, const std::string& name);
+// faces anything else as faceSelectorMask(name). CityEngine's street.* (`streetFront
+// streetBack streetLeft streetRight streetSide`) for all three: the quadrant of the
+// component's level outward direction in the object system (components.cpp). A merged
+// part's label ("all=") takes what its name takes. 0 for any other name.
+uint64_t componentSelectorMask(const std::string& component, const std::string& name);
 
 // Subdiv("X", s1, s2, ...): cuts the scope along `axis` (0 X, 1 Y, 2 Z) into one part
 // per size, in order. Relative sizes share the length left by the others in proportion
@@ -109,7 +112,12 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
 // every edge, and comp(f) runs on every lot.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error,
-                const Mat3& objectAxes = Mat3::Identity(), unsigned wantedClasses = ~0u);
+                const Mat3& objectAxes = Mat3::Identity(), uint64_t wantedClasses = ~uint64_t{0});
+
+// comp(e)'s and comp(v)'s merged part (`all = A`): the edges or vertices `parts` (at least
+// one) as one shape, an Edge part with the first one's axes and its scope fitted to them all
+// (the box around their ends in those axes).
+Part mergedComponents(const std::vector<Part>& parts);
 
 // Extrude(h): a Polygon becomes a prism of height h along the scope's Z; a flat Box with
 // sy == 0 (a CGA footprint on the XZ plane) grows to height h along Y. The result's

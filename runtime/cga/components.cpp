@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace fgsg::rt::cga {
@@ -61,6 +62,9 @@ enum ComponentClass : unsigned {
   kCompObjectShift = 23,
   kCompSideBits = 63,  // FaceClass's top bottom front back left right
 };
+// street.front back left right: FaceClass's side bits past bit 31 (Part::faceClass is 64 bits).
+constexpr unsigned kCompStreetShift = 29;
+constexpr uint64_t kCompStreetBits = uint64_t(kSide) << kCompStreetShift;
 
 struct Selector {
   bool edges = false;
@@ -185,6 +189,20 @@ unsigned compWorldAndObjectClass(const Vec3& worldNormal, const Mat3& objectAxes
     return classifyFace(worldNormal, frame) & kCompSideBits;
   };
   return (sides(Mat3::Identity()) << kCompWorldShift) | (sides(objectAxes) << kCompObjectShift);
+}
+
+// The street.* bits of a component whose outward direction is `direction` (its normal;
+// an edge's or a vertex's on a flat shape's border leans out along the shape's plane):
+// the quadrant of its part level in the object system, whose front is the start lot's
+// first edge (setback's street.front; CityEngine falls back to object.* without a street
+// width); a tie goes to front / back. Within 11.25 degrees of straight up or down: none.
+uint64_t compStreetClass(const Vec3& direction, const Mat3& objectAxes) {
+  if (!(direction.norm() > kMergeTol)) return 0;
+  const Vec3 n = (objectAxes.transpose() * direction).normalized();
+  if (std::abs(n.y()) > kSinHorizontal) return 0;
+  const unsigned side = std::abs(n.z()) >= std::abs(n.x()) - 1e-9 ? (n.z() > 0 ? kFront : kBack)
+                                                                  : (n.x() > 0 ? kRight : kLeft);
+  return uint64_t(side) << kCompStreetShift;
 }
 
 // The face's scope: Z its normal, X horizontal along the face (Y x Z of the solid, the
@@ -434,11 +452,14 @@ namespace {
 
 // The world.* / object.* selectors (fgsg's names; `.cga`'s world.up is worldUp), border and
 // inside: the bits they take of any component.
-unsigned compFrameSelectorMask(const std::string& name) {
+uint64_t compFrameSelectorMask(const std::string& name) {
   static const struct {
     const char* name;
-    unsigned mask;
+    uint64_t mask;
   } kFrameLabels[] = {
+      {"streetFront", uint64_t(kFront) << kCompStreetShift}, {"streetBack", uint64_t(kBack) << kCompStreetShift},
+      {"streetLeft", uint64_t(kLeft) << kCompStreetShift},   {"streetRight", uint64_t(kRight) << kCompStreetShift},
+      {"streetSide", uint64_t(kLeft | kRight) << kCompStreetShift},
       {"worldUp", kTop << kCompWorldShift},           {"worldDown", kBottom << kCompWorldShift},
       {"worldSouth", kFront << kCompWorldShift},      {"worldNorth", kBack << kCompWorldShift},
       {"worldEast", kRight << kCompWorldShift},       {"worldWest", kLeft << kCompWorldShift},
@@ -454,11 +475,13 @@ unsigned compFrameSelectorMask(const std::string& name) {
 
 }  // namespace
 
-unsigned componentSelectorMask(const std::string& component, const std::string& name) {
+uint64_t componentSelectorMask(const std::string& component, const std::string& label) {
   Selector sel;
   if (!parseSelector(component, sel)) return 0;
+  std::string name = label;  // a merged part's ("all=") takes what the part takes
+  if (!name.empty() && name.back() == '=') name.pop_back();
   const bool fgsgEdges = sel.edges && !sel.cityEngineAxes;  // Comp("edges"): fgsg's edge classes
-  if (const unsigned frame = compFrameSelectorMask(name); frame && !fgsgEdges) return frame;
+  if (const uint64_t frame = compFrameSelectorMask(name); frame && !fgsgEdges) return frame;
   if (!(sel.edges || sel.cityEngineAxes)) return faceSelectorMask(name);
   static const struct {
     const char* name;
@@ -475,12 +498,28 @@ unsigned componentSelectorMask(const std::string& component, const std::string& 
   return faceSelectorMask(name);
 }
 
+Part mergedComponents(const std::vector<Part>& parts) {
+  Part merged = parts.front();
+  const Mat3& axes = merged.scope.axes;
+  const Vec3 origin = merged.scope.P;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Part& p : parts)
+    for (const Vec3& end : {p.scope.P, p.scope.toWorld(p.scope.S.cwiseProduct(Vec3::UnitX()))}) {
+      const Vec3 local = axes.transpose() * (end - origin);
+      lo = lo.cwiseMin(local), hi = hi.cwiseMax(local);
+    }
+  merged.scope.P = merged.scope.toWorld(lo);
+  merged.scope.S = hi - lo;
+  merged.geom = GeomRef{GeomKind::Edge, 0, 0};
+  return merged;
+}
+
 // `out` is replaced by the selected components, in the order of the solid's faces (a box:
 // front, right, back, left, top, bottom) or of first appearance of its edges. A polygon
 // is a solid with one face: its own; its edges are its boundary.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error, const Mat3& objectAxes,
-                unsigned wantedClasses) {
+                uint64_t wantedClasses) {
   out.clear();
   Selector sel;
   if (!parseSelector(selector, sel)) {
@@ -497,7 +536,8 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   const double tol = kMergeTol * (1.0 + scope.S.norm());
   const bool wantsBorder = (wantedClasses & (kCompBorder | kCompInside)) != 0;
   // The world.* / object.* bits only where a label asks for them (comp(f) runs on every lot).
-  const bool wantsFrames = (wantedClasses >> kCompWorldShift) != 0;
+  const bool wantsFrames = ((wantedClasses & ~kCompStreetBits) >> kCompWorldShift) != 0;
+  const bool wantsStreet = (wantedClasses & kCompStreetBits) != 0;
   auto frameClass = [&](const Vec3& normal, bool quadrant) {
     return wantsFrames ? compWorldAndObjectClass(normal, objectAxes, quadrant) : 0u;
   };
@@ -507,27 +547,39 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   };
   // An edge or a vertex: classed by the mean of its faces' normals; border when it is (or
   // ends) an edge of one face only (op_comp), inside otherwise.
-  auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border) {
+  // `outward`: the unit directions out of the shape along its border edges' faces at the
+  // component (street.* only).
+  auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border, const Vec3& outward) {
     return compClassifyByQuadrant(normalSum, scope.axes) | (border ? kCompBorder : kCompInside) |
-           frameClass(normalSum, true);
+           frameClass(normalSum, true) |
+           (wantsStreet ? compStreetClass(normalSum.normalized() + outward, objectAxes) : uint64_t{0});
+  };
+  // A border edge's outward direction in its face's plane (the face walks it counter-clockwise).
+  auto borderOutward = [&](const WorldEdge& e) -> Vec3 {
+    if (e.faces[1] >= 0 || e.faces[0] < 0) return Vec3::Zero();
+    const Vec3 out = (e.b - e.a).cross(faces[size_t(e.faces[0])].normal);
+    return out.norm() > kMergeTol ? Vec3(out.normalized()) : Vec3::Zero();
   };
   if (sel.vertices) {
     std::vector<Vec3> normalSums;
     out = vertexParts(faces, tol, normalSums);
     std::vector<WorldEdge> edges;
-    if (wantsBorder) edges = uniqueEdges(faces, tol);
+    if (wantsBorder || wantsStreet) edges = uniqueEdges(faces, tol);
     for (size_t i = 0; i < out.size(); ++i) {
       bool border = false;
+      Vec3 outward = Vec3::Zero();
       for (const WorldEdge& e : edges)
-        border |= e.faces[1] < 0 && ((e.a - out[i].scope.P).norm() <= tol || (e.b - out[i].scope.P).norm() <= tol);
-      out[i].faceClass = edgeOrVertexClass(normalSums[i], border);
+        if (e.faces[1] < 0 && ((e.a - out[i].scope.P).norm() <= tol || (e.b - out[i].scope.P).norm() <= tol))
+          border = true, outward += borderOutward(e);
+      out[i].faceClass = edgeOrVertexClass(normalSums[i], border, outward);
     }
     return true;
   }
   if (sel.cityEngineAxes) {
     for (const WorldEdge& e : uniqueEdges(faces, tol)) {
       out.push_back(cityEngineEdgePart(e));
-      out.back().faceClass = edgeOrVertexClass(e.normalSum, e.faces[1] < 0) | (edgeClass(e) << kCompRoofShift);
+      out.back().faceClass = edgeOrVertexClass(e.normalSum, e.faces[1] < 0, borderOutward(e)) |
+                             (edgeClass(e) << kCompRoofShift);
     }
     return true;
   }
@@ -543,7 +595,8 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
       if (const unsigned cls = classifyFace(faces[i].normal, scope); cls & sel.mask) {
         out.push_back(facePart(faces[i], scope, arena, unitSquare));
         out.back().faceClass = cls | (borderFace[i] ? kCompBorder : kCompInside) |
-                               frameClass(faces[i].normal, false);
+                               frameClass(faces[i].normal, false) |
+                               (wantsStreet ? compStreetClass(faces[i].normal, objectAxes) : uint64_t{0});
       }
     return true;
   }

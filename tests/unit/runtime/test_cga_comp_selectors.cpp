@@ -17,7 +17,7 @@ namespace {
 
 // The components of `component` that the selector `name` takes (componentSelectorMask).
 std::vector<Part> compSelected(const std::vector<Part>& parts, const std::string& component, const std::string& name) {
-  const unsigned mask = componentSelectorMask(component, name);
+  const uint64_t mask = componentSelectorMask(component, name);
   std::vector<Part> out;
   for (const Part& p : parts)
     if (mask == ~0u || (mask & p.faceClass)) out.push_back(p);
@@ -143,6 +143,98 @@ TEST_CASE("cga: comp(f) world and object selectors on a turned scope", "[cga][co
   CHECK(compSelected(parts, "f", "worldSide").size() == 4);
   CHECK(compSelected(parts, "f", "objectSide").size() == 4);
   CHECK(compSelected(parts, "f", "inside").size() == 6);  // a box is closed
-  CHECK(componentSelectorMask("f", "street.front") == 0);
+  CHECK(componentSelectorMask("f", "street.front") == 0);  // fgsg's label is streetFront
   CHECK(componentSelectorMask("edges", "border") == 0);  // fgsg's own edges: roof classes only
+}
+
+// street.*: the quadrant of a component's level outward direction in the object system
+// (front: the start lot's first edge). A 4 x 2 Footprint lying as a lot does, corners
+// (0, 0, 0) (4, 0, 0) (4, 0, -2) (0, 0, -2), normal up; its object system is the world's
+// (x along edge 0, y up, z = x x y = +z): edge 0 leans out to +z, front; edge 1 (+x)
+// right; edge 2 back; edge 3 left.
+TEST_CASE("cga: comp(e) and comp(v) street selectors on a 4 x 2 lot", "[cga][comp]") {
+  GeometryArena arena;
+  Part lot;
+  std::string err;
+  REQUIRE(footprint(Scope{}, {{0, 0}, {4, 0}, {4, -2}, {0, -2}}, {}, arena, lot, err));
+  const Mat3 object = Mat3::Identity();
+  std::vector<Part> parts;
+  REQUIRE(components(lot.scope, lot.geom, "e", arena, parts, err, object));
+  REQUIRE(parts.size() == 4);
+  const std::vector<Part> front = compSelected(parts, "e", "streetFront");
+  REQUIRE(front.size() == 1);
+  CHECK(front[0].scope.S.x() == Approx(4));
+  CHECK(front[0].scope.P.z() == Approx(0).margin(1e-12));
+  const std::vector<Part> back = compSelected(parts, "e", "streetBack");
+  REQUIRE(back.size() == 1);
+  CHECK(back[0].scope.P.z() == Approx(-2));
+  const std::vector<Part> right = compSelected(parts, "e", "streetRight");
+  REQUIRE(right.size() == 1);
+  CHECK(right[0].scope.P.x() == Approx(4));
+  CHECK(right[0].scope.S.x() == Approx(2));
+  const std::vector<Part> left = compSelected(parts, "e", "streetLeft");
+  REQUIRE(left.size() == 1);
+  CHECK(left[0].scope.P.x() == Approx(0).margin(1e-12));
+  CHECK(compLengths(compSelected(parts, "e", "streetSide")) == std::vector<double>{2, 2});
+  // Corners lean out along both their edges: (0, 0, 0) west and south, a tie that goes to front.
+  REQUIRE(components(lot.scope, lot.geom, "v", arena, parts, err, object));
+  std::vector<std::array<double, 2>> corners;
+  for (const Part& v : compSelected(parts, "v", "streetFront")) corners.push_back({v.scope.P.x(), v.scope.P.z()});
+  std::sort(corners.begin(), corners.end());
+  CHECK(corners == std::vector<std::array<double, 2>>{{0, 0}, {4, 0}});
+  CHECK(compSelected(parts, "v", "streetBack").size() == 2);
+  CHECK(compSelected(parts, "v", "streetSide").empty());
+  // The lot's own face looks up: no street class.
+  REQUIRE(components(lot.scope, lot.geom, "f", arena, parts, err, object));
+  CHECK(compSelected(parts, "f", "streetFront").empty());
+}
+
+// comp(f)'s street.*: the walls by their normals in the object system (the box's scope
+// turned as in the world/object test: object z, the street's front, is world -x).
+TEST_CASE("cga: comp(f) street selectors follow the object system", "[cga][comp]") {
+  GeometryArena arena;
+  std::vector<Part> parts;
+  std::string err;
+  Scope s;
+  s.S = Vec3(4, 3, 2);
+  Mat3 object = Mat3::Identity();
+  object.col(0) = Vec3(0, 0, 1);
+  object.col(2) = Vec3(-1, 0, 0);
+  REQUIRE(components(s, GeomRef{}, "f", arena, parts, err, object));
+  const std::vector<Part> front = compSelected(parts, "f", "streetFront");
+  REQUIRE(front.size() == 1);
+  CHECK((front[0].scope.Z() - Vec3(-1, 0, 0)).norm() < 1e-12);
+  const std::vector<Part> right = compSelected(parts, "f", "streetRight");
+  REQUIRE(right.size() == 1);
+  CHECK((right[0].scope.Z() - Vec3(0, 0, 1)).norm() < 1e-12);
+  CHECK(compSelected(parts, "f", "streetSide").size() == 2);  // world +z and -z
+  CHECK(compSelected(parts, "f", "streetBack").size() == 1);
+  // The street bits are found only where a label asks for them (wantedClasses).
+  REQUIRE(components(s, GeomRef{}, "f", arena, parts, err, object, componentSelectorMask("f", "top")));
+  CHECK(compSelected(parts, "f", "streetFront").empty());
+}
+
+// `all =`: the components a merged part takes as one shape, the first one's axes fitted to
+// them all. The 4 x 2 lot's edges: the first runs (0,0,0)-(4,0,0), x (1,0,0), z its normal
+// (0,1,0), y = z x x = (0,0,-1): the box around all four ends is 4 x 2 at the origin.
+TEST_CASE("cga: mergedComponents fits the first component's axes to them all", "[cga][comp]") {
+  GeometryArena arena;
+  Part lot;
+  std::string err;
+  REQUIRE(footprint(Scope{}, {{0, 0}, {4, 0}, {4, -2}, {0, -2}}, {}, arena, lot, err));
+  std::vector<Part> parts;
+  REQUIRE(components(lot.scope, lot.geom, "e", arena, parts, err));
+  Part merged = mergedComponents(parts);
+  CHECK((merged.scope.P - Vec3(0, 0, 0)).norm() < 1e-12);
+  CHECK((merged.scope.S - Vec3(4, 2, 0)).norm() < 1e-12);
+  CHECK((merged.scope.X() - Vec3(1, 0, 0)).norm() < 1e-12);
+  CHECK(merged.geom.kind == GeomKind::Edge);
+  // Edges 1 and 3 (x = 4 and x = 0, 2 m each): edge 1's x runs (0, 0, -1), y = z x x = (-1, 0, 0).
+  merged = mergedComponents({parts[1], parts[3]});
+  CHECK((merged.scope.P - Vec3(4, 0, 0)).norm() < 1e-12);
+  CHECK((merged.scope.S - Vec3(2, 4, 0)).norm() < 1e-12);
+  REQUIRE(components(lot.scope, lot.geom, "v", arena, parts, err));
+  REQUIRE(parts.size() == 4);
+  merged = mergedComponents(parts);
+  CHECK((merged.scope.S - Vec3(4, 2, 0)).norm() < 1e-12);
 }
