@@ -279,6 +279,10 @@ struct ImportDecl {
   bool protectAll = false;
   std::vector<std::string> protectedAttrs;
   std::vector<SourceRange> protectedRanges;
+  // CityEngine's styles list (`import m (Wide, Tall) : "m.cga"`): only those styles of the
+  // module come here; empty: all of them.
+  std::vector<std::string> styles;
+  std::vector<SourceRange> styleRanges;
 };
 
 struct AxiomDecl {  // axiom: S(20,0,12) footprint;
@@ -324,6 +328,11 @@ struct Program {
   // Rules that start derivations in CityEngine though not in this run: the @StartRule when
   // --start-rule names another. What they reach is not dead code (no W002).
   std::vector<std::string> otherStartRules;
+  // A `.cga` file's style (`--start-rule Style$Rule`; empty: Default), which its imports
+  // are read in too, and the styles it has: Default, its own and those its imports bring
+  // (frontend/imports.cpp checks the chosen one against them once they are in).
+  std::string cgaStyle;
+  std::vector<std::string> cgaStyles;
 };
 
 }  // namespace fgsg::frontend

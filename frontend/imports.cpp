@@ -1,6 +1,8 @@
 #include "frontend/imports.h"
 
 #include "frontend/builtins.h"
+#include "frontend/cga/cga_parse.h"
+#include "frontend/did_you_mean.h"
 #include "frontend/imported_functions.h"
 #include "frontend/parse.h"
 #include "runtime/io/read_input.h"
@@ -189,6 +191,7 @@ class Importer {
     stack_.push_back(fs::weakly_canonical(file_.name, ec).string());  // the grammar itself
     sites_.push_back({});
     importAll(program, "", 0);
+    checkChosenStyle(program);
     return diags_.errorCount() == before;
   }
 
@@ -340,13 +343,19 @@ class Importer {
       // Blank lines before its text put its tokens on its own lines of the whole.
       const std::string text = std::string(size_t(m->firstLine - 1), '\n') + m->text;
       const std::string moduleName = m->name;
-      if (!parseText(moduleName, text, mod, diags_)) continue;
+      // A `.cga` module is read in the importer's style (CityEngine's styles across imports).
+      const std::string style = moduleStyle(d, program.cgaStyle);
+      const bool parsed = !style.empty() && isCgaSource(moduleName, text)
+                              ? parseCgaText(moduleName, text, mod, diags_, style + "$", true)
+                              : parseText(moduleName, text, mod, diags_);
+      if (!parsed) continue;
       imported_ += ownItems(mod);
       stack_.push_back(mKey);
       sites_.push_back(d.pathRange);
       importAll(mod, mKey, depth + 1);
       stack_.pop_back();
       sites_.pop_back();
+      offerStyles(d, mod, program);
       dropProgramWide(mod);
       FileAnchor(mKey).run(mod);
       if (!d.alias.empty()) Qualifier(mod, d.alias).run();
@@ -358,6 +367,50 @@ class Importer {
                         d.range};
       merge(mod, program, declared, ruled, from);
     }
+  }
+
+  // The style a `.cga` module is read in ("": Default): the importer's, unless the import's
+  // styles list leaves it out; then the list's first (CityEngine: `import m (Wide) : ...`
+  // gives this file m's Wide in place of m's Default).
+  static std::string moduleStyle(const ImportDecl& d, const std::string& importerStyle) {
+    if (d.styles.empty()) return importerStyle;
+    const std::string chosen = importerStyle.empty() ? "Default" : importerStyle;
+    const std::string style = std::find(d.styles.begin(), d.styles.end(), chosen) != d.styles.end() ? chosen : d.styles[0];
+    return style == "Default" ? "" : style;
+  }
+
+  // The styles an import brings to its importer: all of the module's, or those its list
+  // names, each of which the module must have.
+  void offerStyles(const ImportDecl& d, const Program& mod, Program& importer) {
+    std::vector<std::string> has = mod.cgaStyles;
+    if (has.empty()) has.push_back("Default");  // an fgsg module: its one style
+    for (size_t i = 0; i < d.styles.size(); ++i) {
+      if (std::find(has.begin(), has.end(), d.styles[i]) != has.end()) continue;
+      std::string list;
+      for (const std::string& n : has) list += (list.empty() ? "" : ", ") + n;
+      const std::string near = closestName(d.styles[i], has);
+      diags_.error("E803", d.styleRanges[i],
+                   "the module '" + d.path + "' has no style '" + d.styles[i] + "' (its styles: " + list + ")" +
+                       (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
+    }
+    for (const std::string& st : d.styles.empty() ? has : d.styles)
+      if (std::find(has.begin(), has.end(), st) != has.end() &&
+          std::find(importer.cgaStyles.begin(), importer.cgaStyles.end(), st) == importer.cgaStyles.end())
+        importer.cgaStyles.push_back(st);
+  }
+
+  // `--start-rule Style$Rule` on a `.cga` grammar whose own styles lack Style: one of its
+  // imports must bring it (frontend/cga/cga_styles.cpp leaves that to here).
+  void checkChosenStyle(const Program& program) {
+    const std::string& style = program.cgaStyle;
+    if (style.empty() || std::find(program.cgaStyles.begin(), program.cgaStyles.end(), style) != program.cgaStyles.end())
+      return;
+    std::string list;
+    for (const std::string& n : program.cgaStyles) list += (list.empty() ? "" : ", ") + n;
+    const std::string near = closestName(style, program.cgaStyles);
+    diags_.error("E803", SourceRange{{1, 1}, {1, 1}},
+                 "--start-rule " + style + "$...: neither this file nor its imports have a style '" + style +
+                     "' (their styles: " + list + ")" + (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
   }
 
   // A module's start and what belongs to a whole program are the importer's.

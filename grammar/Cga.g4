@@ -27,8 +27,11 @@ dialectDecl : DIALECT ID ';'? ;
 
 // `import facade : "facade.cga"` or `import "facade.cga"`, with CityEngine's list of the
 // imported file's attrs after the path: `(a, b)` keeps them from this file's attrs of the
-// same names, `(a = expr)` sets one, `()` keeps them all.
-importDecl : IMPORT ( alias=ID ':' )? path=STRING ( '(' ( importArg ( ',' importArg )* )? ')' )? ;
+// same names, `(a = expr)` sets one, `()` keeps them all; CityEngine's list of the imported
+// file's styles after the alias, `import facade (Wide, Tall) : "facade.cga"`, limits which
+// of its styles this file gets.
+importDecl : IMPORT ( alias=ID ( '(' styles+=ID ( ',' styles+=ID )* ')' )? ':' )? path=STRING
+             ( '(' ( importArg ( ',' importArg )* )? ')' )? ;
 importArg  : ( key=ID '=' )? expr ;
 
 styleDecl : STYLE name=ID ( EXTENDS base=ID )? ;

@@ -102,7 +102,7 @@ std::vector<std::pair<std::string, std::string>> cityEngineFunctionSignatures() 
 std::vector<std::string> cityEngineGeometryFunctionNames() { return cga::cityEngineGeometryFunctions(); }
 
 bool parseCgaText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
-                  const std::string& startRule) {
+                  const std::string& startRule, bool styleFromImporter) {
   out.fileName = name;
   const int before = diags.errorCount();
   if (!isValidUtf8(text)) {
@@ -141,7 +141,7 @@ bool parseCgaText(const std::string& name, const std::string& text, Program& out
     tree = parser.cgaFile();
     if (diags.errorCount() != before) return false;
   }
-  cga::Translator(out, diags, name, startRule).run(tree);
+  cga::Translator(out, diags, name, startRule, styleFromImporter).run(tree);
   return diags.errorCount() == before;
 }
 

@@ -19,9 +19,11 @@ bool isCgaSource(const std::string& name, const std::string& text);
 int cgaLookingLine(const std::string& text);
 
 // Parses and translates CGA text into `out`. `startRule` overrides the file's @StartRule
-// (empty: keep it). False when an error was reported.
+// (empty: keep it); `Style$Rule` or `Style$` chooses a style. `styleFromImporter`: the file
+// is an import read in its importer's style, which it need not have. False when an error
+// was reported.
 bool parseCgaText(const std::string& name, const std::string& text, Program& out, Diagnostics& diags,
-                  const std::string& startRule = "");
+                  const std::string& startRule = "", bool styleFromImporter = false);
 
 // A CityEngine operation name (`taper`, `rotateScope`, `color` ...): the fgsg dialect
 // refuses one used as a shape symbol with arguments.

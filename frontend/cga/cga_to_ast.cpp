@@ -92,6 +92,7 @@ void Translator::run(P::CgaFileContext* file) {
     chosenStyle_ = startRuleOverride_.substr(0, mark);
     startRuleOverride_ = startRuleOverride_.substr(mark + 1);
   }
+  readStyles(file);
   collect(file);
   for (P::DeclarationContext* d : file->declaration()) {
     if (auto* v = d->versionDecl()) {
@@ -101,14 +102,10 @@ void Translator::run(P::CgaFileContext* file) {
         error("E002", rangeOf(dialect), "this file is read as CityEngine CGA: `dialect cga;` is the only dialect here");
     } else if (auto* imp = d->importDecl()) {
       importDecl(imp);
-    } else if (auto* style = d->styleDecl()) {
-      styleDecl(style);
-    } else if (auto* a = d->annotated()) {
-      if (currentStyle_ == "Default") declaration(a);
-      else styleDeclaration(a);
+    } else if (auto* a = d->annotated(); a && keeps(a)) {  // the chosen style's (cga_styles.cpp)
+      declaration(a);
     }
   }
-  applyStyle();
   startRule();
   exportFunctions();
 }
@@ -153,12 +150,17 @@ void Translator::exportFunctions() {
 
 // Names first, so that a rule may use a function, attr or rule declared after it.
 void Translator::collect(P::CgaFileContext* file) {
-  bool inStyle = false;  // after `style Name` (not Default): that style's (cga_styles.cpp)
   for (P::DeclarationContext* d : file->declaration()) {
     if (auto* imp = d->importDecl(); imp && imp->alias) importAliases_.insert(imp->alias->getText());
-    if (auto* style = d->styleDecl()) inStyle = style->name->getText() != "Default";
     auto* a = d->annotated();
-    if (!a || inStyle) continue;
+    // A rule a style redefines stays the @StartRule when the redefinition has no annotation.
+    if (auto* r = a ? a->ruleDecl() : nullptr; r && !keeps(a) && declaredStartRule_.empty())
+      for (auto* note : a->annotation())
+        if (note->name->getText() == "StartRule" && owner_[a] == "Default") {
+          declaredStartRule_ = r->name->getText();
+          startRange_ = rangeOf(r->name);
+        }
+    if (!a || !keeps(a)) continue;  // another style's, or redefined in the chosen one (cga_styles.cpp)
     if (auto* f = a->functionDecl()) {
       if (f->name->getText().find('.') != std::string::npos) continue;  // an import's attr, set (declaration)
       Function fn{f->name->getText(), {}, f->value(), rangeOf(f->name)};
@@ -197,7 +199,13 @@ void Translator::importDecl(P::ImportDeclContext* ctx) {
   d.path = stringValue(ctx->path->getText());
   if (ctx->alias) d.alias = ctx->alias->getText();
   d.propagateAttrs = true;
-  d.protectAll = ctx->LPAREN() && ctx->importArg().empty();
+  bool attrList = false;  // `(...)` after the path (the styles list comes before the `:`)
+  for (auto* paren : ctx->LPAREN()) attrList = attrList || paren->getSymbol()->getTokenIndex() > ctx->path->getTokenIndex();
+  d.protectAll = attrList && ctx->importArg().empty();
+  for (antlr4::Token* style : ctx->styles) {  // checked against the file's styles (frontend/imports.cpp)
+    d.styles.push_back(style->getText());
+    d.styleRanges.push_back(rangeOf(style));
+  }
   for (P::ImportArgContext* arg : ctx->importArg()) {
     if (arg->key) {
       currentParams_ = nullptr;
@@ -270,7 +278,7 @@ void Translator::declaration(P::AnnotatedContext* ctx) {
     v.isAttr = true;
     v.name = name;
     currentParams_ = nullptr;
-    v.value = value(a->value(), Env{});
+    v.value = value(styledAttrValue(a), Env{});  // a style may redefine it (cga_styles.cpp)
     v.annotations = std::move(notes);
     if (v.value) program_.values.push_back(std::move(v));
   } else if (auto* r = ctx->ruleDecl()) {
@@ -441,6 +449,8 @@ void Translator::caseChain(P::CaseBodyContext* body, size_t from, const RuleHead
 // side at the origin, derived by the @StartRule (or --start-rule's rule). A rule `Axiom`
 // chooses between the two by Lot.area (0 without lots); an importer drops it.
 void Translator::startRule() {
+  // A rule redefined in the chosen style without the annotation is still the @StartRule.
+  if (startRule_.empty() && rules_.count(declaredStartRule_)) startRule_ = declaredStartRule_;
   std::string start = startRuleOverride_.empty() ? startRule_ : startRuleOverride_;
   SourceRange at = startRange_;
   if (start.empty()) {

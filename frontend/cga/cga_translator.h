@@ -71,8 +71,15 @@ struct Env {
 
 class Translator {
  public:
-  Translator(Program& program, Diagnostics& diags, const std::string& fileName, std::string startRule)
-      : program_(program), diags_(&diags), fileName_(fileName), startRuleOverride_(std::move(startRule)) {}
+  // `styleFromImporter`: the file is an import read in its importer's style
+  // (`Style$`), which it may lack (its own declarations are then the Default style's).
+  Translator(Program& program, Diagnostics& diags, const std::string& fileName, std::string startRule,
+             bool styleFromImporter = false)
+      : program_(program),
+        diags_(&diags),
+        fileName_(fileName),
+        startRuleOverride_(std::move(startRule)),
+        styleFromImporter_(styleFromImporter) {}
 
   void run(P::CgaFileContext* file);
 
@@ -134,9 +141,11 @@ class Translator {
   void exportFunctions();
 
   // cga_styles.cpp
-  void styleDecl(P::StyleDeclContext* ctx);
-  void styleDeclaration(P::AnnotatedContext* ctx);
-  void applyStyle();
+  void readStyles(P::CgaFileContext* file);
+  // Whether a declaration is translated in the chosen style (not another style's, not
+  // redefined by a nearer style).
+  bool keeps(P::AnnotatedContext* ctx) const;
+  P::ValueContext* styledAttrValue(P::AttrDeclContext* ctx) const;
 
   // cga_operations.cpp
   struct Sequence;
@@ -183,11 +192,15 @@ class Translator {
   struct Style {
     std::string base;  // "Default" when it extends no other
     SourceRange range;
-    std::map<std::string, ExprPtr> attrs;  // its own redefinitions
+    SourceRange baseRange;
   };
   std::map<std::string, Style> styles_;  // all but Default
-  std::string currentStyle_ = "Default";  // the style the declarations being read belong to
-  std::string chosenStyle_ = "Default";   // `--start-rule Style$Rule`'s
+  std::string chosenStyle_ = "Default";  // `--start-rule Style$Rule`'s
+  bool styleFromImporter_ = false;
+  std::vector<std::string> chain_;                          // the chosen style, its base ... Default
+  std::map<P::AnnotatedContext*, std::string> owner_;       // declaration -> its style
+  std::set<P::AnnotatedContext*> kept_;                     // those translated (keeps)
+  std::map<std::string, P::AttrDeclContext*> attrValueFromStyle_;  // Default attr -> nearer value
   SourceRange startRange_;
   int auxCount_ = 0;
   std::set<std::string> warnedAssets_;

@@ -129,15 +129,20 @@ public:
   class  ImportDeclContext : public antlr4::ParserRuleContext {
   public:
     antlr4::Token *alias = nullptr;;
+    antlr4::Token *idToken = nullptr;;
+    std::vector<antlr4::Token *> styles;;
     antlr4::Token *path = nullptr;;
     ImportDeclContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *IMPORT();
     antlr4::tree::TerminalNode *STRING();
     antlr4::tree::TerminalNode *COLON();
-    antlr4::tree::TerminalNode *LPAREN();
-    antlr4::tree::TerminalNode *RPAREN();
-    antlr4::tree::TerminalNode *ID();
+    std::vector<antlr4::tree::TerminalNode *> LPAREN();
+    antlr4::tree::TerminalNode* LPAREN(size_t i);
+    std::vector<antlr4::tree::TerminalNode *> RPAREN();
+    antlr4::tree::TerminalNode* RPAREN(size_t i);
+    std::vector<antlr4::tree::TerminalNode *> ID();
+    antlr4::tree::TerminalNode* ID(size_t i);
     std::vector<ImportArgContext *> importArg();
     ImportArgContext* importArg(size_t i);
     std::vector<antlr4::tree::TerminalNode *> COMMA();

@@ -67,3 +67,22 @@ def test_start_rule():
         fgsg.Grammar.from_text('axiom: A;\nA -> I("cube");\n', "g.fgsg", start_rule="A")
     with pytest.raises(TypeError):
         fgsg.Grammar.from_text(TWO_RULES, "two.cga", start_rule=3)
+
+
+STYLED = '''@StartRule
+Lot --> split(x) { 5 : A }*
+A --> extrude(3) Mass
+style Wide
+Lot --> split(x) { 10 : A }*
+'''
+
+
+def test_start_rule_chooses_a_style():
+    """start_rule="Style$Rule": the rule in that style, as CityEngine's rule packages write it
+    (the style Wide redefines Lot: two 10 m parts of the default 20 m lot instead of four)."""
+    assert fgsg.Grammar.from_text(STYLED, "styled.cga").generate(seed=1).stats["instances"] == 4
+    wide = fgsg.Grammar.from_text(STYLED, "styled.cga", start_rule="Wide$Lot").generate(seed=1)
+    assert wide.stats["instances"] == 2
+    with pytest.raises(fgsg.GrammarError, match=r"this file has no style 'Wid' \(its styles: Default, Wide\); "
+                                                r"did you mean 'Wide'\?"):
+        fgsg.Grammar.from_text(STYLED, "styled.cga", start_rule="Wid$Lot")

@@ -1,0 +1,118 @@
+// The `.cga` dialect's styles beyond attrs: rules, consts, functions and new attrs in a
+// style, an import's styles list, and the located errors of misuse (file:line:col, the
+// line and a caret). What both engines compute is the corpus's
+// (tests/cga/corpus/155_style_rules*, 156_import_styles*, 157_import_all_styles*).
+#include "ir/ir.h"
+#include "ir/pipeline.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+using namespace fgsg;
+
+namespace {
+
+struct StyledCompile {
+  bool ok = false;
+  std::string messages;
+  bool says(const std::string& text) const { return messages.find(text) != std::string::npos; }
+};
+
+// main.cga (`text`) beside lib.cga, a library with the styles Red and Tall (extends Red).
+StyledCompile compileStyled(const std::string& text, const std::string& startRule = "") {
+  const std::string dir = "/tmp/fgsg_cga_styles_test";
+  std::system(("mkdir -p " + dir).c_str());
+  FILE* f = std::fopen((dir + "/lib.cga").c_str(), "w");
+  std::fputs(
+      "const tile = 2\n"
+      "Mass --> extrude(5) T.\n"
+      "style Red\n"
+      "const tile = 4\n"
+      "style Tall extends Red\n"
+      "Mass --> extrude(8) T.\n",
+      f);
+  std::fclose(f);
+  StyledCompile c;
+  frontend::SourceFile file = frontend::SourceFile::make(dir + "/main.cga", text);
+  file.startRule = startRule;
+  frontend::Diagnostics diags(&file);
+  ir::Module module;
+  c.ok = ir::compileSource(file, module, diags);
+  std::ostringstream out;
+  diags.print(out);
+  c.messages = out.str();
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("cga styles: rules, consts, functions and new attrs in a style compile in every style", "[cga][dialect]") {
+  const std::string text =
+      "attr h = 10\n"
+      "const n = 2\n"
+      "w(k) = k * 2\n"
+      "@StartRule\n"
+      "Lot --> extrude(h) split(x) { ~w(n) : Tile }*\n"
+      "Tile --> A.\n"
+      "style Glass\n"
+      "attr roof = 3\n"
+      "const n = 4\n"
+      "Tile --> extrude(roof) B.\n"
+      "style Wide extends Glass\n"
+      "w(k) = k * 5\n";
+  for (const char* start : {"", "Default$Lot", "Glass$Lot", "Wide$Lot"}) {
+    INFO(start);
+    const StyledCompile c = compileStyled(text, start);
+    CHECK(c.ok);
+    CHECK(c.messages.empty());
+  }
+  // A style's own rule, attr or function is not the Default style's: used there, it is unknown.
+  const StyledCompile own = compileStyled("@StartRule\nLot --> extrude(roof) X.\nstyle Glass\nattr roof = 3\n");
+  CHECK_FALSE(own.ok);
+  CHECK(own.says("main.cga:2:17: error"));
+  CHECK(compileStyled("@StartRule\nLot --> extrude(roof) X.\nstyle Glass\nattr roof = 3\n", "Glass$Lot").ok);
+  // The @StartRule stays with a rule a style redefines without the annotation.
+  CHECK(compileStyled("@StartRule\nStart --> X.\nstyle Glass\nStart --> Y.\n", "Glass$").ok);
+}
+
+TEST_CASE("cga styles: cycles, unknown and twice-declared styles are located errors", "[cga][dialect]") {
+  const StyledCompile cycle = compileStyled("@StartRule\nLot --> X.\nstyle A extends B\nstyle B extends A\n");
+  CHECK_FALSE(cycle.ok);
+  CHECK(cycle.says("main.cga:3:17: error[E803]: style cycle: A extends B extends A; a style's bases end at Default\n"
+                   "style A extends B\n"
+                   "                ^\n"));
+  const StyledCompile self = compileStyled("@StartRule\nLot --> X.\nstyle A extends A\n");
+  CHECK(self.says("main.cga:3:17: error[E803]: style cycle: A extends A; a style's bases end at Default"));
+  // A base may come after the style that extends it.
+  CHECK(compileStyled("@StartRule\nLot --> X.\nstyle A extends B\nstyle B\nLot --> Y.\n", "A$Lot").ok);
+  const StyledCompile twice = compileStyled("@StartRule\nLot --> X.\nstyle A\nstyle A\n");
+  CHECK(twice.says("main.cga:4:7: error[E803]: the style 'A' is declared twice\nstyle A\n      ^\n"));
+  CHECK(twice.says("main.cga:3:7: note: 'A' is first declared here"));
+  const StyledCompile unknown = compileStyled("@StartRule\nLot --> X.\nstyle Glass\n", "Glas$Lot");
+  CHECK(unknown.says("main.cga:1:1: error[E803]: --start-rule Glas$Lot: this file has no style 'Glas' (its styles: "
+                     "Default, Glass); did you mean 'Glass'?"));
+  CHECK(compileStyled("@StartRule\nLot --> X.\nstyle Default extends Glass\n").says(
+      "main.cga:3:1: error[E803]: the Default style extends no other style"));
+}
+
+TEST_CASE("cga import styles lists: the module's styles come here, misuse is located", "[cga][dialect]") {
+  CHECK(compileStyled("import lib (Red, Tall) : \"lib.cga\"\n@StartRule\nLot --> lib.Mass\n").ok);
+  // Tall is a style of this file through its import, with or without a list naming it.
+  CHECK(compileStyled("import lib (Red, Tall) : \"lib.cga\"\n@StartRule\nLot --> lib.Mass\n", "Tall$Lot").ok);
+  CHECK(compileStyled("import lib : \"lib.cga\"\n@StartRule\nLot --> lib.Mass\n", "Tall$Lot").ok);
+  // With an attr list after the path as well.
+  CHECK(compileStyled("import lib (Red) : \"lib.cga\" ()\n@StartRule\nLot --> lib.Mass\n").ok);
+  const StyledCompile left = compileStyled("import lib (Red) : \"lib.cga\"\n@StartRule\nLot --> lib.Mass\n", "Tall$Lot");
+  CHECK_FALSE(left.ok);
+  CHECK(left.says("main.cga:1:1: error[E803]: --start-rule Tall$...: neither this file nor its imports have a style "
+                  "'Tall' (their styles: Default, Red)"));
+  const StyledCompile missing = compileStyled("import lib (Red, Tal) : \"lib.cga\"\n@StartRule\nLot --> lib.Mass\n");
+  CHECK_FALSE(missing.ok);
+  CHECK(missing.says("main.cga:1:18: error[E803]: the module 'lib.cga' has no style 'Tal' (its styles: Default, Red, "
+                     "Tall); did you mean 'Tall'?\n"
+                     "import lib (Red, Tal) : \"lib.cga\"\n"
+                     "                 ^~~\n"));
+}
