@@ -292,17 +292,20 @@ TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dial
   CHECK(compile("@StartRule\nLot --> roofGable(30, 1, 1, false, 2) A.\n").ok);
   const Compiled many = compile("@StartRule\nLot --> roofHip(30, 1, false, 3)\n");
   CHECK(many.messages.find("error[E016]: 'roofHip' takes an angle, overhang and even, got 4") != std::string::npos);
-  // comp's selectors of issue #44 (border, inside, world.*, object.*, an index) run; the
-  // street selectors, a fractional index and comp(e)'s and comp(v)'s `=` are E801 where written.
+  // comp's selectors of issue #44 (border, inside, world.*, object.*, street.*, an index,
+  // comp(e)'s and comp(v)'s `=`) run; a fractional index is E801 where written, a merged
+  // part of fgsg's Comp("f") E028.
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(e) { border : A. | world.up : B. | 2 : C. | -1 : D. }\n").ok);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(v) { top : A. | object.side : B. | inside : C. }\n").ok);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(f) { world.north : A. | 0 : B. | border : C. }\n").ok);
-  const Compiled selector = compile("@StartRule\nLot --> extrude(3) comp(f) { street.front : A }\n");
-  CHECK(selector.messages.find("test.cga:2:30: error[E801]: the comp selector 'street.front'") != std::string::npos);
+  CHECK(compile("@StartRule\nLot --> extrude(3) comp(f) { street.front : A. | street.side : B. }\n").ok);
+  CHECK(compile("@StartRule\nLot --> comp(e) { street.back = A. | street.left : B. | all = C. }\n").ok);
+  CHECK(compile("Lot ~> Comp(\"e\"){ streetSide=: A | all: B };", "test.fgsg").ok);
+  const Compiled facesMerged = compile("Lot ~> Comp(\"f\"){ side=: A };", "test.fgsg");
+  CHECK(facesMerged.messages.find("test.fgsg:1:19: error[E028]: a merged part 'side=:'") != std::string::npos);
   const Compiled edges = compile("@StartRule\nLot --> extrude(3) comp(e) { 1.5 : A }\n");
   CHECK(edges.messages.find("test.cga:2:30: error[E801]: the comp(e) selector '1.5'") != std::string::npos);
-  const Compiled merged = compile("@StartRule\nLot --> extrude(3) comp(v) { top = A }\n");
-  CHECK(merged.messages.find("test.cga:2:34: error[E801]: comp(v)'s `top =`") != std::string::npos);
+  CHECK(compile("@StartRule\nLot --> extrude(3) comp(v) { top = A. }\n").ok);
   const Compiled vertexLabel = compile("Lot ~> Comp(\"v\"){ eave: A };", "test.fgsg");
   CHECK(vertexLabel.messages.find("test.fgsg:1:19: error[E028]: unknown vertex 'eave:'") != std::string::npos);
   CHECK(compile("Lot ~> Comp(\"v\"){ worldUp: A | 3: B | border: C };", "test.fgsg").ok);
