@@ -199,6 +199,14 @@ void ViewSession::sendFields(bool recompiled) {
       } catch (const std::exception& e) {  // out of memory ...
         field_ = Json{{"type", "field"}, {"error", e.what()}}.dump();
       }
+      // Built here (the overlay went first): the derivation with the same values and seed
+      // takes it rather than designing the fields again.
+      if (world && !surfaceReuse_) {
+        surfaceReuse_ = std::make_unique<backend::SurfaceReuse>();
+        surfaceReuse_->geometries = &surfaceGeometries_;
+        surfaceReuse_->world = std::move(world);
+        surfaceReuseKey_ = {{}, options_.derive.seed};
+      }
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);
@@ -336,7 +344,7 @@ void ViewSession::checkFiles() {
 
 void ViewSession::work() {
   for (;;) {
-    bool recompile = false, recompiled = false;
+    bool recompile = false, recompiled = false, fieldShown = false;
     struct Group {
       std::map<std::string, std::string> attrs;
       uint64_t seed;
@@ -370,11 +378,23 @@ void ViewSession::work() {
         g.pages.push_back(id);
       }
       if (groups.empty()) recompile_ = recompile;  // woken for a field overlay only: the next derivation compiles
+      for (const auto& [id, p] : pages_) fieldShown = fieldShown || p.fieldAsked;
     }
     if (!groups.empty() && (recompile || epoch != stepCacheEpoch_)) {  // the steps kept are of another grammar
       stepCache_.clear();
       stepCacheBytes_ = 0;
       stepCacheEpoch_ = epoch;
+    }
+    // A grammar edit while a page shows the field (a design element dragged, #49): the
+    // overlay first — compiled, the field designed, traced and sent — then the model,
+    // derived on the surface and fields the overlay built, so the page's new streamlines
+    // do not wait for the derivation.
+    const bool overlayFirst = recompile && !groups.empty() && fieldShown;
+    if (overlayFirst) {
+      compile();
+      surfaceReuse_.reset();  // a new grammar: its surface and fields afresh (sendFields)
+      recompile = false;
+      sendFields(true);
     }
     for (auto& [key, g] : groups) {
       const std::string progress = Json{{"type", "progress"}, {"state", "deriving"}}.dump();
@@ -395,7 +415,7 @@ void ViewSession::work() {
         if (it != pages_.end() && !it->second.pending) send(page, it->second, d);
       }
     }
-    sendFields(recompiled);
+    sendFields(recompiled);  // the pages that asked meanwhile
   }
 }
 
@@ -469,6 +489,39 @@ void ViewSession::prepareSurface(const std::vector<std::string>& dataDirs) {
   surface_ = std::make_shared<std::pair<std::string, std::string>>(std::move(header), std::move(surface.glb));
 }
 
+void ViewSession::compile() {
+  std::ostringstream diagnostics;
+  auto fresh = compileFile(options_.file, diagnostics, false, options_.startRule);
+  if (!fresh) {
+    compileError_ = diagnostics.str();
+    return;
+  }
+  compileError_.clear();
+  compiled_ = std::move(fresh);
+  loader_.reset();  // a new grammar: its own code
+  // Watch what this version reads too (its modules, a mesh, a texture, a field file beyond
+  // the folder).
+  std::vector<std::string> extra;
+  if (!options_.derive.surfaceOverride.empty()) extra.push_back(options_.derive.surfaceOverride);
+  for (const auto& m : compiled_->source.modules) extra.push_back(m.key);  // its imported modules
+  std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
+  prepareSurface(grammarDataDirs(options_.file));
+  std::lock_guard<std::mutex> lock(mutex_);
+  // What the pages' values are checked against (message()).
+  attrShape_ = ir::Module{};
+  attrShape_.attrs = compiled_->module.attrs;
+  attrShape_.countAttr = compiled_->module.countAttr;
+  attrShape_.mode = compiled_->module.mode;
+  attrShape_.steps = compiled_->module.steps;      // and the derivation's length (stepProblem)
+  attrShape_.strings = compiled_->module.strings;  // an import's attrs may read them
+  compiledOnce_ = true;
+  if (data != dataFiles_) {
+    std::error_code ec;
+    for (const std::string& f : data) seen_.emplace(f, fs::last_write_time(f, ec));
+    dataFiles_ = std::move(data);
+  }
+}
+
 std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const std::map<std::string, std::string>& attrs,
                                                           uint64_t seed, const ViewSeeds& seeds, int32_t step) {
   std::unique_ptr<backend::native::CodeLoader>& loader = loader_;
@@ -478,35 +531,7 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     d->error = diagnostics;
     return d;
   };
-  if (recompile || !compiled_) {
-    std::ostringstream diagnostics;
-    auto fresh = compileFile(options_.file, diagnostics, false, options_.startRule);
-    if (!fresh) return fail(compileError_ = diagnostics.str());
-    compileError_.clear();
-    compiled_ = std::move(fresh);
-    loader.reset();  // a new grammar: its own code
-    // Watch what this version reads too (its modules, a mesh, a texture, a field file beyond
-    // the folder).
-    std::vector<std::string> extra;
-    if (!options_.derive.surfaceOverride.empty()) extra.push_back(options_.derive.surfaceOverride);
-    for (const auto& m : compiled_->source.modules) extra.push_back(m.key);  // its imported modules
-    std::vector<std::string> data = grammarDataFiles(compiled_->module, options_.file, extra);
-    prepareSurface(grammarDataDirs(options_.file));
-    std::lock_guard<std::mutex> lock(mutex_);
-    // What the pages' values are checked against (message()).
-    attrShape_ = ir::Module{};
-    attrShape_.attrs = compiled_->module.attrs;
-    attrShape_.countAttr = compiled_->module.countAttr;
-    attrShape_.mode = compiled_->module.mode;
-    attrShape_.steps = compiled_->module.steps;      // and the derivation's length (stepProblem)
-    attrShape_.strings = compiled_->module.strings;  // an import's attrs may read them
-    compiledOnce_ = true;
-    if (data != dataFiles_) {
-      std::error_code ec;
-      for (const std::string& f : data) seen_.emplace(f, fs::last_write_time(f, ec));
-      dataFiles_ = std::move(data);
-    }
-  }
+  if (recompile || !compiled_) compile();
   // The file as it is now does not compile: not the last version that did.
   if (!compileError_.empty()) return fail(compileError_);
   // The page's values for attributes this grammar has; a value that does not fit its

@@ -104,6 +104,8 @@ class ViewSession {
   };
 
   void work();
+  // Compiles the grammar file: compiled_ and its surface, or compileError_ (worker).
+  void compile();
   std::shared_ptr<Derived> derive(bool recompile, const std::map<std::string, std::string>& attrs, uint64_t seed,
                                   const ViewSeeds& seeds, int32_t step);
   // {"type":"set", "step":N}: why the page cannot be shown step N with these values

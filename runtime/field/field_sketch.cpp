@@ -2,6 +2,8 @@
 
 #include "runtime/field/trace.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -73,14 +75,17 @@ FieldSketch sketchField(const SurfaceMesh& mesh, const TangentField& field, cons
   // Seeds at the centres of faces spread evenly through the face list.
   const size_t faces = mesh.faceCount();
   const size_t seeds = std::min(faces, size_t(std::max(options.seeds, 0)));
-  for (size_t k = 0; k < seeds; ++k) {
+  // The seeds' lines are independent: traced concurrently (fgsg view redraws them after
+  // each design edit, #49), kept in seed order.
+  std::vector<std::vector<Vec3>> major(seeds), minor(seeds);
+  tbb::parallel_for(size_t(0), seeds, [&](size_t k) {
     const surface::SurfacePoint seed{int(k * faces / seeds), Vec3(1.0 / 3, 1.0 / 3, 1.0 / 3)};
-    std::vector<Vec3> line = traceBothWays(mesh, field, seed, 0.0, length, step);
-    if (line.size() >= 2) sketch.majorLines.push_back(std::move(line));
-    if (options.minor && field.isTensor()) {
-      std::vector<Vec3> minor = traceBothWays(mesh, field, seed, M_PI / 2, length, step);
-      if (minor.size() >= 2) sketch.minorLines.push_back(std::move(minor));
-    }
+    major[k] = traceBothWays(mesh, field, seed, 0.0, length, step);
+    if (options.minor && field.isTensor()) minor[k] = traceBothWays(mesh, field, seed, M_PI / 2, length, step);
+  });
+  for (size_t k = 0; k < seeds; ++k) {
+    if (major[k].size() >= 2) sketch.majorLines.push_back(std::move(major[k]));
+    if (minor[k].size() >= 2) sketch.minorLines.push_back(std::move(minor[k]));
   }
   // A singularity on an edge is found in both faces: listed once.
   const double same = 1e-2 * mesh.meanEdgeLength;

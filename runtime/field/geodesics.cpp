@@ -168,6 +168,32 @@ std::vector<double> HeatGeodesics::distance(const SurfacePoint& source) const {
 }
 
 PolarMap HeatGeodesics::polarMap(const SurfacePoint& source, const Vec3& reference) const {
+  // Kept by the exact source and reference: a map taken again is the one solved.
+  const auto same = [&](const PolarMemo& m) {
+    return m.face == source.face && m.bary == source.bary && m.reference == reference;
+  };
+  {
+    std::lock_guard<std::mutex> lock(polarMemoMutex_);
+    const auto it = std::find_if(polarMemo_.begin(), polarMemo_.end(), same);
+    if (it != polarMemo_.end()) {
+      PolarMemo found = *it;
+      polarMemo_.erase(it);
+      polarMemo_.push_back(found);  // the newest now
+      return *found.map;
+    }
+  }
+  auto map = std::make_shared<const PolarMap>(solvePolarMap(source, reference));
+  const size_t bytes = map->distance.size() * (sizeof(double) + 3 * sizeof(Rot2));
+  const size_t kept = kPolarMemoBytes / std::max<size_t>(bytes, 1);
+  std::lock_guard<std::mutex> lock(polarMemoMutex_);
+  if (kept > 0 && std::none_of(polarMemo_.begin(), polarMemo_.end(), same)) {
+    if (polarMemo_.size() >= kept) polarMemo_.erase(polarMemo_.begin());
+    polarMemo_.push_back({source.face, source.bary, reference, map});
+  }
+  return *map;
+}
+
+PolarMap HeatGeodesics::solvePolarMap(const SurfacePoint& source, const Vec3& reference) const {
   const SurfaceMesh& mesh = frames_->mesh();
   const TangentFrames& F = *frames_;
   const int nv = int(mesh.vertexCount());

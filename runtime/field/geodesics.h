@@ -30,6 +30,7 @@
 
 #include <complex>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,19 @@ class HeatGeodesics {
   std::vector<double> distance(const SurfacePoint& source) const;
   // Polar coordinates around the source; the reference direction (world, projected onto
   // the source face's plane; the face frame's e1 if that leaves nothing) is theta = 0.
+  // The last maps asked for are kept (at most kPolarMemoBytes, the newest): fgsg view
+  // designs a field again on the same geodesics after each edit of an element (#49), and
+  // the elements that did not change are not solved again.
   PolarMap polarMap(const SurfacePoint& source, const Vec3& reference) const;
 
  private:
+  static constexpr size_t kPolarMemoBytes = size_t(64) << 20;
+  struct PolarMemo {
+    int face;
+    Vec3 bary, reference;
+    std::shared_ptr<const PolarMap> map;
+  };
+  PolarMap solvePolarMap(const SurfacePoint& source, const Vec3& reference) const;
   // The distance; `neumannHeat` receives the heat flow with zero flux across a boundary.
   std::vector<double> solveDistance(const SurfacePoint& source,
                                     Eigen::VectorXd* neumannHeat) const;
@@ -84,6 +95,8 @@ class HeatGeodesics {
   // which only a direct solve keeps.
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> heat_, heatDirichlet_, poisson_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>> vectorHeat_;
+  mutable std::mutex polarMemoMutex_;
+  mutable std::vector<PolarMemo> polarMemo_;  // oldest first
 };
 
 }  // namespace fgsg::rt::field
