@@ -97,6 +97,8 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCommand, "Rotate", nullptr, "CityEngine's rotate: turns the scope and its geometry by (ax, ay, az) degrees (\"rel\") or to those angles (\"abs\"), about the named coordinate system's axes.", nullptr},
     {kDocCommand, "SetPivot", nullptr, "CityEngine's setPivot: puts the shape's pivot (the system of Translate and Rotate's \"pivot\", kept by the shapes it creates) at scope corner 0..7 with the scope's axes in the order named, pointing into the scope; the scope becomes that frame.", nullptr},
     {kDocCommand, "DeleteHoles", nullptr, "Drops every face's holes.", nullptr},
+    {kDocCommand, "ApplyTrimPlanes", nullptr, "Cuts the shape's geometry by its trim planes (those Comp(\"f\") gave its faces at their shared edges), keeping the face's side.", nullptr},
+    {kDocCommand, "SetTrim", nullptr, "Turns the shape's horizontal or vertical trim planes on (1) or off (0); vertical ones are on, horizontal ones off by default.", nullptr},
     {kDocCommand, "ReverseNormals", nullptr, "Turns every face over.", nullptr},
     {kDocCommand, "ResetGeometry", nullptr, "Makes the geometry the scope box again.", nullptr},
     {kDocCommand, "CleanupGeometry", nullptr, "Merges corners within tolerance metres and drops or joins degenerate faces (\"all\", the default, \"vertices\", \"edges\" or \"faces\").", nullptr},
@@ -296,6 +298,7 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCgaOperation, "innerRectangle", "innerRectangle(scope|edge) { shape : Op }", "The largest rectangle inside the polygon.", "InnerRectangle"},
     {kDocCgaOperation, "innerRect", "innerRect()", "CityEngine's older name of innerRectangle.", "InnerRectangle"},
     {kDocCgaOperation, "deleteHoles", "deleteHoles()", "Drops every face's holes.", "DeleteHoles"},
+    {kDocCgaOperation, "trim", "trim()", "Cuts the shape's geometry by the trim planes comp(f) gave it; the primitives are trimmed as they are made.", "ApplyTrimPlanes"},
     {kDocCgaOperation, "reverseNormals", "reverseNormals()", "Turns every face over.", "ReverseNormals"},
     {kDocCgaOperation, "resetGeometry", "resetGeometry()", "Makes the geometry the scope box again.", "ResetGeometry"},
     {kDocCgaOperation, "cleanupGeometry", "cleanupGeometry(all|vertices|edges|faces, tolerance)", "Merges close corners and drops degenerate faces.", "CleanupGeometry"},
@@ -339,6 +342,8 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCgaAttribute, "split.total", "split.total", "How many parts its split made.", "Shape.splitTotal"},
     {kDocCgaAttribute, "comp.index", "comp.index", "The component's index among its comp's parts.", "Shape.compIndex"},
     {kDocCgaAttribute, "comp.total", "comp.total", "How many components its comp made.", "Shape.compTotal"},
+    {kDocCgaAttribute, "trim.horizontal", "set(trim.horizontal, true)", "Turns the shape's horizontal trim planes on (off by default); set only.", "SetTrim"},
+    {kDocCgaAttribute, "trim.vertical", "set(trim.vertical, false)", "Turns the shape's vertical trim planes off (on by default); set only.", "SetTrim"},
     {kDocCgaAttribute, "comp.sel", "comp.sel", "The selector that chose the component, as written (\"side\", \"world.up\", \"street.front\", \"2\").", "Shape.compSel"},
 };
 

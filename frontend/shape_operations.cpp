@@ -45,6 +45,8 @@ bool shapeOperationWord(const std::string& command, size_t k, const std::string&
     return pick({{"scope", 0}, {"pivot", 1}, {"object", 2}, {"world", 3}}, word, value, allowed);
   // setPivot's axisMap: runtime/cga/shape_operations.h's order codes.
   if (command == "SetPivot" && k == 0) return pick({{"xyz", 0}, {"yzx", 1}, {"zxy", 2}}, word, value, allowed);
+  // The trim attribute's two classes (backend SetTrim: 0 horizontal, 1 vertical).
+  if (command == "SetTrim" && k == 0) return pick({{"horizontal", 0}, {"vertical", 1}}, word, value, allowed);
   if (command == "InnerRectangle" && k == 0) return pick({{"scope", 0}, {"edge", 1}}, word, value, allowed);
   // InsertAlongUV's asset is any file name (the lowering makes it the op's asset), then
   // the height's direction and alignment as runtime/cga/insert_along_uv.h's options.

@@ -35,8 +35,13 @@ struct Scope {
   // Color(r, g, b): the colour of the instances placed from this scope on, inherited by
   // the shapes it creates; `colored` false: each instance takes its symbol's colour.
   bool colored = false;
-  // CityEngine's pivot (setPivot): 1 + the index of the derivation's pivot frame this shape
-  // and the shapes it creates have; 0: the start shape's object system. In the padding
+  // CityEngine's trim attribute (attr_trim), bits of what differs from its defaults: 1
+  // vertical trim planes off (set(trim.vertical, false)), 2 horizontal ones on. In the
+  // padding after `colored`.
+  uint8_t trim = 0;
+  // CityEngine's pivot (setPivot) and trim planes (comp(f)): 1 + the index of the
+  // derivation's shape frame (backend/engine/shape_frames.h) this shape and the shapes it
+  // creates have; 0: the start shape's object system, no trim planes. In the padding
   // after `colored`: the scope's size, which compiled code is built for, stays the same.
   uint16_t pivot = 0;
   std::array<float, 3> color{0.8f, 0.8f, 0.8f};

@@ -7,6 +7,7 @@
 #include "runtime/cga/edge_index_label.h"
 #include "runtime/cga/ground_face.h"
 #include "runtime/cga/shape_operations.h"
+#include "runtime/cga/trim_planes.h"
 
 #include <algorithm>
 #include <climits>
@@ -188,6 +189,10 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
     ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error,
                              d_.objectFrame().axes, wantedClasses);
   if (!ok) throw DeriveError{op.loc, "R002", error};
+  // comp(f)'s trim planes (attr_trim), each face's from the faces it shares edges with.
+  std::vector<std::vector<rt::cga::TrimPlane>> trimPlanes;
+  if (op.kind == ir::OpKind::Comp && d_.makesTrimPlanes())
+    trimPlanes = rt::cga::compTrimPlanes(st.scope, st.geom, d_.arena(), parts, d_.pivotFrame(st.scope).Y());
   // The body each derived part runs (SIZE_MAX: none), and how many parts each body runs.
   std::vector<size_t> bodyOf(parts.size(), SIZE_MAX);
   std::vector<int32_t> perBody(op.bodies.size() + labelMasks.size() + 1, 0);
@@ -238,7 +243,10 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
       place.compSel = bodyOf[i] < labelSel.size() ? labelSel[bodyOf[i]] : 0;
     else
       place.splitIndex = index++, place.splitTotal = derived;
-    d_.runBody(op, bodyOf[i], parts[i].scope, parts[i].geom, st, ex, f, &place);
+    uint16_t frame = st.scope.pivot;
+    if (i < trimPlanes.size() && !trimPlanes[i].empty())
+      frame = d_.shapeFrames().withTrimPlanes(frame, trimPlanes[i], op.loc);
+    d_.runBody(op, bodyOf[i], parts[i].scope, parts[i].geom, st, ex, f, &place, &frame);
     if (ex.culled) return;
   }
 }

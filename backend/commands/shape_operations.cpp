@@ -5,6 +5,7 @@
 #include "backend/engine/derivation.h"
 #include "runtime/cga/edge_index_label.h"
 #include "runtime/cga/shape_operations.h"
+#include "runtime/cga/trim_planes.h"
 
 #include <cmath>
 #include <sstream>
@@ -134,6 +135,17 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
       }
 }
 
+// trim() (op_trim): the shape's geometry cut by its trim planes, those the trim attribute
+// turns on (vertical ones unless set off, horizontal ones only when set on).
+bool trimByShapePlanes(Derivation& d, const rt::Scope& scope, const rt::GeomRef& geom, rt::cga::Part& out,
+                       std::string& error) {
+  std::vector<rt::cga::TrimPlane> planes;
+  for (const rt::cga::TrimPlane& p : d.shapeFrames().trimPlanes(scope.pivot))
+    if (p.horizontal ? (scope.trim & 2) != 0 : (scope.trim & 1) == 0) planes.push_back(p);
+  bool emptied = false;
+  return rt::cga::trimGeometry(scope, geom, d.arena(), planes, out, emptied, error);
+}
+
 }  // namespace
 
 void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex,
@@ -237,7 +249,7 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
     rt::Scope pivot;
     ok = rt::cga::setPivot(st.scope, st.geom, d.arena(), static_cast<int>(a[0]), static_cast<int>(corner), part, pivot,
                            error);
-    if (ok) part.scope.pivot = d.addPivot(pivot, op.loc);
+    if (ok) part.scope.pivot = d.shapeFrames().withPivot(st.scope.pivot, pivot, op.loc);
   } else if (name == "Taper") {
     ok = rt::cga::taper(st.scope, st.geom, a[0], d.arena(), part, error);
   } else if (name == "Envelope" || name == "EnvelopePerEdge") {
@@ -262,7 +274,19 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
       return;
     }
   } else if (name.rfind("Primitive", 0) == 0) {
-    ok = rt::cga::primitive(st.scope, name, std::vector<double>(a, a + n), d.arena(), part, error);
+    // A primitive is trimmed as it is made (op_trim: "automatically performed").
+    ok = rt::cga::primitive(st.scope, name, std::vector<double>(a, a + n), d.arena(), part, error) &&
+         trimByShapePlanes(d, part.scope, part.geom, part, error);
+  } else if (name == "ApplyTrimPlanes") {
+    ok = trimByShapePlanes(d, st.scope, st.geom, part, error);
+  } else if (name == "SetTrim") {
+    // SetTrim(0 horizontal | 1 vertical, on): the bits of rt::Scope::trim, 0 the defaults.
+    if (a[0] != 0 && a[0] != 1)
+      throw DeriveError{op.loc, "R002", "SetTrim: the trim planes are \"horizontal\" (0) or \"vertical\" (1)"};
+    const uint8_t bit = a[0] == 0 ? 2 : 1;
+    const bool setBit = a[0] == 0 ? a[1] != 0 : a[1] == 0;
+    part = rt::cga::Part{st.scope, st.geom, false, 0};
+    part.scope.trim = static_cast<uint8_t>(setBit ? (st.scope.trim | bit) : (st.scope.trim & ~bit));
   } else {
     throw DeriveError{op.loc, "R002", "unknown shape operation '" + name + "'"};
   }

@@ -39,6 +39,7 @@
 #include "backend/engine/native_call.h"
 #include "backend/engine/parallel_string.h"
 #include "backend/engine/sequential_string.h"
+#include "backend/engine/shape_frames.h"
 #include "backend/engine/shape_store.h"
 #include "backend/engine/successor.h"
 #include "backend/interp/eval.h"
@@ -109,9 +110,11 @@ class Derivation final : public QueryHost {
   // CityEngine's pivot of a shape with this scope (translate's and rotate's `pivot`): the
   // frame setPivot gave it or the shape it came from (scope.pivot), else objectFrame().
   const rt::Scope& pivotFrame(const rt::Scope& scope);
-  // Keeps a frame setPivot made for the start shape being derived: the scope.pivot that
-  // names it (R002 at `at` past 65 535 of them, the most a scope can name).
-  uint16_t addPivot(const rt::Scope& frame, ir::Loc at);
+  // CityEngine's pivots and trim planes of the start shape being derived (shape_frames.h).
+  ShapeFrames& shapeFrames() { return frames_; }
+  // Whether comp(f) gives its faces trim planes: only a grammar that can apply them
+  // (trim(), the primitives) pays for them.
+  bool makesTrimPlanes() const { return makesTrimPlanes_; }
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
   // or reaches past float range); I("none") adds nothing.
@@ -138,9 +141,10 @@ class Derivation final : public QueryHost {
   // the solvers' pieces (Synthesize, Evolve) become shapes.
   void emitShape(uint32_t symbol, const rt::Scope& scope, Exec& ex, ir::Loc at, const rt::GeomRef& geom = {});
   // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope; the part
-  // takes `place` (CGA's split/comp index and total), else the outer shape's.
+  // takes `place` (CGA's split/comp index and total) and `frame` (its shape frame: comp(f)'s
+  // trim planes), else the outer shape's.
   void runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom, const State& outer,
-               Exec& ex, Frame& f, const rt::Scope::Place* place = nullptr);
+               Exec& ex, Frame& f, const rt::Scope::Place* place = nullptr, const uint16_t* frame = nullptr);
   // Inside a Lock every shape is derived where it is written.
   void enterLock() { ++lockDepth_; }
   void leaveLock() { --lockDepth_; }
@@ -364,7 +368,8 @@ class Derivation final : public QueryHost {
   rt::GeomRef objectStartGeom_;
   bool objectFrameKnown_ = false;
   rt::Scope objectFrame_;
-  std::vector<rt::Scope> pivots_;  // setPivot's frames of the start shape being derived
+  ShapeFrames frames_;  // setPivot's pivots and comp(f)'s trim planes of the start shape being derived
+  bool makesTrimPlanes_ = false;
   uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)
   std::vector<std::pair<int, ShapeQueue>> buckets_;
   std::vector<std::pair<int, size_t>> marks_;  // depth-first: queue sizes before a successor

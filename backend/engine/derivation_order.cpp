@@ -272,12 +272,15 @@ void Derivation::applyOp(const ir::Op& op, const double* a, uint32_t n, State& s
 
 // Runs body k of op (a split part, a roof, a Lock alternative) on its own scope.
 void Derivation::runBody(const ir::Op& op, size_t k, const rt::Scope& scope, const rt::GeomRef& geom,
-                         const State& outer, Exec& ex, Frame& f, const rt::Scope::Place* place) {
+                         const State& outer, Exec& ex, Frame& f, const rt::Scope::Place* place,
+                         const uint16_t* frame) {
   State inner{scope, geom, outer.width, stack_.size(), outer.line, &scope, {}};
   // A part's scope is made anew (a Comp face, a feature's frame): it keeps the colour, the
-  // pivot (setPivot's) and the split and comp indices (those of this split, when it is one).
+  // pivot and trim planes (`frame`, else the outer shape's), the trim attribute and the split
+  // and comp indices (those of this split, when it is one).
   inner.scope.colored = outer.scope.colored, inner.scope.color = outer.scope.color;
-  inner.scope.pivot = outer.scope.pivot;
+  inner.scope.pivot = frame ? *frame : outer.scope.pivot;
+  inner.scope.trim = outer.scope.trim;
   inner.scope.place = place ? *place : outer.scope.place;
   const uint64_t outerNode = enterBody(ex);
   runBlock(program_ ? layout_.bodyBlock(op, k) : 0, op.bodies[k], inner, ex, f);

@@ -87,6 +87,11 @@ void Derivation::initOutput() {
     return op.kind == ir::OpKind::Lock || (op.kind == ir::OpKind::Instance && op.mode != ir::InstanceMode::Plain);
   }));
   findEagerSymbols();
+  makesTrimPlanes_ = moduleUses([this](const ir::Op& op) {
+    if (op.kind != ir::OpKind::ShapeOperation) return false;
+    const std::string& name = m_.strings[op.str];
+    return name == "ApplyTrimPlanes" || name.rfind("Primitive", 0) == 0;
+  });
   noneId_ = stringId("none");
   partId_ = stringId("part");
   fullId_ = stringId("full");

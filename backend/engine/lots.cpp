@@ -31,7 +31,7 @@ void Derivation::deriveLots(uint64_t root) {
     objectStartScope_ = part.scope;  // the lot's polygon: objectFrame() when asked
     objectStartGeom_ = part.geom;
     objectFrameKnown_ = false;
-    pivots_.clear();  // a lot is derived to the end before the next: its pivots go with it
+    frames_.clear();  // a lot is derived to the end before the next: its pivots go with it
     // A `.cga` grammar starts on CityEngine's initial shape: x along the first edge, y up.
     if (m_.cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, arena_);
     const auto index = static_cast<uint32_t>(k);
@@ -52,14 +52,8 @@ const rt::Scope& Derivation::objectFrame() {
 }
 
 const rt::Scope& Derivation::pivotFrame(const rt::Scope& scope) {
-  return scope.pivot == 0 ? objectFrame() : pivots_[scope.pivot - 1];
-}
-
-uint16_t Derivation::addPivot(const rt::Scope& frame, ir::Loc at) {
-  if (pivots_.size() >= UINT16_MAX)
-    throw DeriveError{at, "R002", "setPivot: more than 65535 pivots set for one start shape"};
-  pivots_.push_back(frame);
-  return static_cast<uint16_t>(pivots_.size());
+  const rt::Scope* pivot = frames_.pivot(scope.pivot);
+  return pivot ? *pivot : objectFrame();
 }
 
 // After the first lot, room for as many again per lot (and a tenth more): the output

@@ -22,6 +22,7 @@
 //                                       the scope); a missing file is W801, the insert skipped
 //   s t r center color set(material.color.rgb, ...)
 //   set(material.roughness|metallic|opacity|color.r|g|b|emissive.r|g|b|colormap|...|metallicmap, v), texture(x)
+//   set(trim.horizontal|vertical, b)  SetTrim("horizontal"|"vertical", b)   trim()  ApplyTrimPlanes()
 //                                       Material("roughness", v) ... (texture: "colormap")
 //   setupProjection(0, scope.xz, w, h) tileUV scaleUV translateUV rotateUV normalizeUV
 //                                       SetupProjection("xz", w, h), TileUV(w, h) ...;
@@ -614,6 +615,17 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     // set(material.colormap, ...)).
     if (what.rfind("material.", 0) == 0 && materialProperty(what.substr(9)) >= 0) {
       materialItem(op, what.substr(9), env, seq);
+      return;
+    }
+    // The trim attribute (attr_trim): fgsg's SetTrim("horizontal" | "vertical", on).
+    if (what == "trim.horizontal" || what == "trim.vertical") {
+      ExprPtr on = expr(argCtx[1], env);
+      if (!on) return;
+      if (on->kind == ExprKind::Bool) on->kind = ExprKind::Number, on->number = on->boolean ? 1 : 0;
+      Item item = command("SetTrim", rangeOf(op));
+      item.args.push_back(stringExpr(what.substr(5), rangeOf(argCtx[0])));
+      item.args.push_back(std::move(on));
+      seq.out.items.push_back(std::move(item));
       return;
     }
     notSupported(rangeOf(argCtx[0]), "set(" + argCtx[0]->getText() + ", ...)");

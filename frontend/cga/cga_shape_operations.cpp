@@ -14,6 +14,7 @@
 //                                             SetbackToArea  SetbackPerEdge (distance evaluated per edge)
 //   shapeL/U/O(...){ shape : A | remainder : B }, innerRectangle(scope|edge){ shape : A }
 //   deleteHoles() reverseNormals() resetGeometry() cleanupGeometry(what, tolerance) convexify(maxLength)
+//   trim()                                    ApplyTrimPlanes()  (set(trim.horizontal|vertical, b): SetTrim, cga_operations.cpp)
 //   taper(height)
 //   insertAlongUV(uvSet, asset, height[, scope.y|vertex.normal[, alignPosition|keepPosition]])
 //                                             InsertAlongUV(uvSet, "asset", height, ...) (asset found as i() finds it)
@@ -52,7 +53,7 @@ const std::map<std::string, std::string>& shapeOperationNames() {
       {"cleanupGeometry", "CleanupGeometry"},   {"primitiveQuad", "PrimitiveQuad"},
       {"primitiveCube", "PrimitiveCube"},       {"primitiveCylinder", "PrimitiveCylinder"},
       {"primitiveSphere", "PrimitiveSphere"},   {"primitiveDisk", "PrimitiveDisk"},
-      {"setPivot", "SetPivot"}};
+      {"setPivot", "SetPivot"},                 {"trim", "ApplyTrimPlanes"}};
   return names;
 }
 

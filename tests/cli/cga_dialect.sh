@@ -19,10 +19,10 @@ cd "$root" || fail "no root $root"
 "$root/tests/engine_equivalence.sh" "$fgsg" "$runlib" "$root" examples/cga/building.cga || fail "engines differ"
 
 # An operation the dialect does not run yet: E800 at its name.
-printf '@StartRule\nLot --> extrude(10)\n    trim()\n' >"$tmp/taper.cga"
-"$fgsg" check "$tmp/taper.cga" >"$tmp/taper.txt" 2>&1 && fail "trim passes check"
-grep -q "taper.cga:3:5: error\[E800\]: unknown operation 'trim' (CityEngine CGA; not supported yet)" "$tmp/taper.txt" ||
-  { cat "$tmp/taper.txt"; fail "no located E800 for trim"; }
+printf '@StartRule\nLot --> extrude(10)\n    reduceGeometry()\n' >"$tmp/taper.cga"
+"$fgsg" check "$tmp/taper.cga" >"$tmp/taper.txt" 2>&1 && fail "reduceGeometry passes check"
+grep -q "taper.cga:3:5: error\[E800\]: unknown operation 'reduceGeometry' (CityEngine CGA; not supported yet)" "$tmp/taper.txt" ||
+  { cat "$tmp/taper.txt"; fail "no located E800 for reduceGeometry"; }
 # scatter's body has no selector (issue #44: it runs, tests/cga/scatter); such a body after
 # another operation is E018 at its `{`.
 printf '@StartRule\nLot --> extrude(10)\n  scatter(surface, 5, uniform) { Tree }\n' >"$tmp/scatter.cga"

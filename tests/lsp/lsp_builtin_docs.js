@@ -145,9 +145,9 @@ async function main() {
   // sin is fgsg's own sin: its doc, with the dialect's signature.
   assert.strictEqual(await hoverOn(cga, 3, 'sin'), block('sin(a)', row('sin(degrees)').doc));
   // An operation the dialect knows but does not translate says so.
-  const trim = await open('trim.cga', 'Lot --> trim()\n');
-  assert.strictEqual(await hoverOn(trim, 0, 'trim'),
-                     block('trim(...)', 'A CityEngine operation fgsg does not translate yet (E800 where it is used).'));
+  const reduce = await open('reduce.cga', 'Lot --> reduceGeometry()\n');
+  assert.strictEqual(await hoverOn(reduce, 0, 'reduceGeometry'),
+                     block('reduceGeometry(...)', 'A CityEngine operation fgsg does not translate yet (E800 where it is used).'));
 
   // `geometry.` completes to the geometry functions the dialect translates.
   const typing = await open('typing.cga', 'Lot --> print(geometry.\nA --> print(geometry.n');

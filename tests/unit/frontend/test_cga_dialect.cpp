@@ -266,9 +266,10 @@ TEST_CASE("setback's index selectors are whole numbers in both dialects", "[cga]
 }
 
 TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dialect]") {
-  const Compiled trim = compile("@StartRule\nLot --> extrude(10)\n   trim()\n");
-  CHECK_FALSE(trim.ok);
-  CHECK(trim.messages.find("test.cga:3:4: error[E800]: unknown operation 'trim' (CityEngine CGA; not supported yet)") !=
+  const Compiled reduce = compile("@StartRule\nLot --> extrude(10)\n   reduceGeometry()\n");
+  CHECK_FALSE(reduce.ok);
+  CHECK(reduce.messages.find(
+            "test.cga:3:4: error[E800]: unknown operation 'reduceGeometry' (CityEngine CGA; not supported yet)") !=
         std::string::npos);
   const Compiled unknown = compile("@StartRule\nLot --> frobnicate(3)\n");
   CHECK(unknown.messages.find("test.cga:2:9: error[E800]: unknown operation 'frobnicate'") != std::string::npos);
@@ -410,4 +411,27 @@ TEST_CASE("context queries: label() and the occlusion and context queries, in bo
   const Compiled bad = compile("axiom: A;\nA ~> Report(\"x\", Shape.overlaps(\"next\", \"t\") ? 1 : 0) Label(3);\n", "test.fgsg");
   CHECK(bad.messages.find("test.fgsg:2:18: error[E025]: the target of 'Shape.overlaps' is the constant") != std::string::npos);
   CHECK(bad.messages.find("test.fgsg:2:61: error[E013]: the label of 'Label' must be a string") != std::string::npos);
+}
+
+TEST_CASE("trim() and the trim attribute translate, and their misuse is located", "[cga][dialect][trim]") {
+  const Compiled ok = compile(
+      "@StartRule\nLot --> extrude(10) comp(f) { side : Wall }\n"
+      "Wall --> set(trim.horizontal, true) set(trim.vertical, false) s(1, 1, 1) primitiveCube() trim() X.\n");
+  INFO(ok.messages);
+  REQUIRE(ok.ok);
+  const std::string printed = ir::printModule(ok.module);
+  CHECK(printed.find("shape-operation \"SetTrim\" 0, 1") != std::string::npos);  // horizontal on
+  CHECK(printed.find("shape-operation \"SetTrim\" 1, 0") != std::string::npos);  // vertical off
+  CHECK(printed.find("shape-operation \"ApplyTrimPlanes\"\n") != std::string::npos);
+  CHECK(compile("@StartRule\nLot --> trim(1)\n").messages.find("test.cga:2:9: error[E016]: 'trim' takes 0 arguments, got 1") !=
+        std::string::npos);
+  CHECK(compile("@StartRule\nLot --> set(trim.diagonal, true) X.\n")
+            .messages.find("test.cga:2:13: error[E801]: set(trim.diagonal, ...)") != std::string::npos);
+  CHECK(compile("@StartRule\nLot --> s(trim.vertical, 1, 1) X.\n")
+            .messages.find("test.cga:2:11: error[E801]: the shape attribute 'trim.vertical'") != std::string::npos);
+  CHECK(compile("axiom: Lot;\nLot ~> SetTrim(\"diagonal\", 1) X;\n", "test.fgsg")
+            .messages.find("test.fgsg:2:16: error[E028]: 'SetTrim' takes horizontal, vertical here, not \"diagonal\"") !=
+        std::string::npos);
+  CHECK(compile("axiom: Lot;\nLot ~> ApplyTrimPlanes(1) X;\n", "test.fgsg")
+            .messages.find("test.fgsg:2:8: error[E016]: 'ApplyTrimPlanes' takes 0 arguments, got 1") != std::string::npos);
 }
