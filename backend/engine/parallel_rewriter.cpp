@@ -31,6 +31,151 @@ void writeTemplate(const SuccessorTemplate& t, uint64_t key, StringModule* w, do
   if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
 }
 
+// One step of a grammar whose every rewriting symbol has a template, in two passes over
+// chunks of kChunk modules: count what each chunk writes, so that the next string is sized
+// once, exactly, and every chunk writes its own part of it in place (concurrently where
+// the string is long), then write. Both passes read one flat table by op id (what a module
+// of that op becomes) instead of the plan's StringOp and SuccessorTemplate vectors, and
+// keep their running counts and pointers in registers: this step is most of the rewriting
+// time of a large template L-system, and its floor is the memory bandwidth.
+class TemplateStep {
+ public:
+  // Makes the table and counts (pass 1).
+  TemplateStep(const StringOps& plan, const ModuleString& str, bool concurrent)
+      : plan_(plan), str_(str), concurrent_(concurrent), templates_(plan.templates.size()),
+        chunks_((str.size() + kChunk - 1) / kChunk) {
+    perOp_.resize(plan.ops.size());
+    for (size_t op = 0; op < plan.ops.size(); ++op) {
+      const StringOp& so = plan.ops[op];
+      PerOp& p = perOp_[op];
+      p.args = so.argCount;
+      if (so.rewrite != Rewrite::Template) continue;
+      const SuccessorTemplate& t = plan.templates[so.successor];
+      p.modules = static_cast<uint32_t>(t.ops.size());
+      p.args = static_cast<uint32_t>(t.args.size());
+      p.successor = so.successor;
+      p.first = static_cast<uint32_t>(entries_.size());
+      p.argData = t.args.data();
+      for (size_t k = 0; k < t.ops.size(); ++k)
+        entries_.push_back({t.ops[k], t.firstArg[k], t.keySalt[k], t.keyMask[k]});
+    }
+    counts_.assign(chunks_ * (2 + templates_), 0);
+    count();
+  }
+
+  uint64_t modules() const { return moduleAt_[chunks_]; }
+  uint64_t args() const { return argAt_[chunks_]; }
+  // Pass 2: `next` (empty) sized to what pass 1 counted, and written.
+  void fill(ModuleString& next) const {
+    next.modules.resizeForOverwrite(modules());
+    next.args.resizeForOverwrite(args());
+    StringModule* out = next.modules.data();
+    double* outArgs = next.args.data();
+    forEachChunk([&](size_t c) {
+      const size_t begin = c * kChunk, end = std::min(str_.size(), begin + kChunk);
+      fillChunk(str_.modules.data() + begin, end - begin, out + moduleAt_[c], outArgs + argAt_[c],
+                static_cast<uint32_t>(argAt_[c]));
+    });
+  }
+  // The step's rewrites, in all and per rule.
+  void addUses(uint64_t& rewrites, std::vector<uint64_t>& ruleUses) const {
+    for (size_t t = 0; t < templates_; ++t) {
+      uint64_t uses = 0;
+      for (size_t c = 0; c < chunks_; ++c) uses += counts_[c * (2 + templates_) + 2 + t];
+      rewrites += uses;
+      ruleUses[plan_.templates[t].rule] += uses;
+    }
+  }
+
+ private:
+  struct Entry {  // one module of a template
+    uint32_t op, firstArg;
+    uint64_t salt, mask;
+  };
+  struct PerOp {  // what a module of one op becomes
+    uint32_t modules = 1, args = 0;
+    uint32_t first = UINT32_MAX;       // its template's first entry; UINT32_MAX: the module is kept
+    uint32_t successor = UINT32_MAX;   // its template's index in StringOps::templates
+    const double* argData = nullptr;   // its template's arguments
+  };
+
+  // Pass 1: per chunk, the modules and arguments it writes and its uses of each template.
+  void count() {
+    forEachChunk([&](size_t c) {
+      const size_t begin = c * kChunk, end = std::min(str_.size(), begin + kChunk);
+      // Per op, its modules in the chunk: four tables, a module counted in the one of its
+      // position mod 4, so that a run of one op is not one chain of increments of a single
+      // counter (each waiting for the last).
+      const size_t opCount = perOp_.size();
+      std::vector<uint32_t> tally(4 * opCount, 0);
+      uint32_t* t0 = tally.data();
+      uint32_t* t1 = t0 + opCount;
+      uint32_t* t2 = t1 + opCount;
+      uint32_t* t3 = t2 + opCount;
+      const StringModule* m = str_.modules.data();
+      size_t i = begin;
+      for (; i + 4 <= end; i += 4) ++t0[m[i].op], ++t1[m[i + 1].op], ++t2[m[i + 2].op], ++t3[m[i + 3].op];
+      for (; i < end; ++i) ++t0[m[i].op];
+      uint64_t* n = &counts_[c * (2 + templates_)];
+      for (size_t op = 0; op < opCount; ++op) {
+        const uint64_t k = uint64_t(t0[op]) + t1[op] + t2[op] + t3[op];
+        if (!k) continue;
+        const PerOp& p = perOp_[op];
+        n[0] += k * p.modules;
+        n[1] += k * p.args;
+        if (p.successor != UINT32_MAX) n[2 + p.successor] += k;
+      }
+    });
+    moduleAt_.assign(chunks_ + 1, 0);
+    argAt_.assign(chunks_ + 1, 0);
+    for (size_t c = 0; c < chunks_; ++c) {
+      moduleAt_[c + 1] = moduleAt_[c] + counts_[c * (2 + templates_)];
+      argAt_[c + 1] = argAt_[c] + counts_[c * (2 + templates_) + 1];
+    }
+  }
+  template <class Body>
+  void forEachChunk(const Body& body) const {
+    if (concurrent_)
+      tbb::parallel_for(size_t(0), chunks_, body);
+    else
+      for (size_t c = 0; c < chunks_; ++c) body(c);
+  }
+
+  // Writes the successors of `n` modules at w and their arguments at a, argument number
+  // `base` of the next string.
+  void fillChunk(const StringModule* in, size_t n, StringModule* __restrict w, double* __restrict a,
+                 uint32_t base) const {
+    const PerOp* perOp = perOp_.data();
+    const Entry* entries = entries_.data();
+    const double* inArgs = str_.args.data();
+    for (size_t i = 0; i < n; ++i) {
+      const StringModule mod = in[i];
+      const PerOp p = perOp[mod.op];
+      if (p.first != UINT32_MAX) {
+        const Entry* e = entries + p.first;
+        for (uint32_t k = 0; k < p.modules; ++k)
+          w[k] = StringModule{e[k].op, base + e[k].firstArg, rt::keyWithSalt(mod.key, e[k].salt) & e[k].mask};
+        if (p.args) std::memcpy(a, p.argData, p.args * sizeof(double));
+      } else {
+        w[0] = StringModule{mod.op, base, mod.key};
+        if (p.args) std::memcpy(a, inArgs + mod.firstArg, p.args * sizeof(double));
+      }
+      w += p.modules;
+      a += p.args;
+      base += p.args;
+    }
+  }
+
+  const StringOps& plan_;
+  const ModuleString& str_;
+  const bool concurrent_;
+  const size_t templates_, chunks_;
+  std::vector<PerOp> perOp_;
+  std::vector<Entry> entries_;
+  std::vector<uint64_t> counts_;  // per chunk: modules and arguments written, then per template its uses
+  std::vector<uint64_t> moduleAt_, argAt_;  // per chunk: where it writes in the next string
+};
+
 // Before a step writes `next` from `str`: room, in one allocation, for the longest string
 // `next` will hold — this step's and every other one after it, `stepsAfter` being left
 // after this one — predicted from the last step's growth and at most `maxModules`. So a
@@ -136,95 +281,26 @@ void Derivation::appendTemplate(const SuccessorTemplate& t, uint64_t key, Module
   writeTemplate(t, key, out.modules.extend(t.ops.size()), out.args.extend(t.args.size()), base);
 }
 
-// A step of a grammar whose every rewriting symbol has a template. A long string is
-// rewritten over chunks on all cores: the sizes each chunk writes are counted first, so
-// every chunk writes its part of `next` in place, and the result is the one-thread
-// result. Returns false (nothing written) where the general loop must do the step: a
-// limit reached during it.
+// A step of a grammar whose every rewriting symbol has a template (TemplateStep): a long
+// string is rewritten over chunks on all cores, the result being the one-thread result.
+// The limits are asked once, before writing: a step that would reach --max-shapes is left
+// (nothing written, false returned) for the general loop to redo, stopping where it stops.
 bool Derivation::rewriteTemplates(const ModuleString& str, ModuleString& next) {
   if (!plan_.allTemplates) return false;
   if (str.size() < kConcurrentFrom) return rewriteTemplatesOnThisThread(str, next);
-  const size_t chunks = (str.size() + kChunk - 1) / kChunk;
-  const size_t templates = plan_.templates.size();
-  // Per chunk: modules and arguments written, then per template its uses.
-  std::vector<uint64_t> counts(chunks * (2 + templates), 0);
-  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-    uint64_t* n = &counts[c * (2 + templates)];
-    const size_t end = std::min(str.size(), (c + 1) * kChunk);
-    for (size_t i = c * kChunk; i < end; ++i) {
-      const StringOp& so = plan_[str.modules[i].op];
-      if (so.rewrite == Rewrite::Template) {
-        const SuccessorTemplate& t = plan_.templates[so.successor];
-        n[0] += t.ops.size(), n[1] += t.args.size(), ++n[2 + so.successor];
-      } else {
-        n[0] += 1, n[1] += so.argCount;
-      }
-    }
-  });
-  std::vector<uint64_t> moduleAt(chunks + 1, 0), argAt(chunks + 1, 0);
-  for (size_t c = 0; c < chunks; ++c) {
-    moduleAt[c + 1] = moduleAt[c] + counts[c * (2 + templates)];
-    argAt[c + 1] = argAt[c] + counts[c * (2 + templates) + 1];
-  }
-  // The one-thread loop stops at these limits mid-step, and knows how.
-  if (moduleAt[chunks] >= opt_.maxShapes || argAt[chunks] >= UINT32_MAX || limitsReached()) return false;
-  next.modules.resizeForOverwrite(moduleAt[chunks]);
-  next.args.resizeForOverwrite(argAt[chunks]);
-  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-    StringModule* w = next.modules.data() + moduleAt[c];
-    double* a = next.args.data() + argAt[c];
-    const size_t end = std::min(str.size(), (c + 1) * kChunk);
-    for (size_t i = c * kChunk; i < end; ++i) {
-      const StringModule& mod = str.modules[i];
-      const StringOp& so = plan_[mod.op];
-      const uint32_t base = static_cast<uint32_t>(a - next.args.data());
-      if (so.rewrite == Rewrite::Template) {
-        const SuccessorTemplate& t = plan_.templates[so.successor];
-        writeTemplate(t, mod.key, w, a, base);
-        w += t.ops.size();
-        a += t.args.size();
-      } else {
-        *w++ = {mod.op, base, mod.key};
-        if (so.argCount) std::memcpy(a, str.args.data() + mod.firstArg, so.argCount * sizeof(double));
-        a += so.argCount;
-      }
-    }
-  });
-  for (size_t c = 0; c < chunks; ++c)
-    for (size_t t = 0; t < templates; ++t) {
-      const uint64_t uses = counts[c * (2 + templates) + 2 + t];
-      stats_.rewrites += uses;
-      ruleUses_[plan_.templates[t].rule] += uses;
-    }
+  TemplateStep step(plan_, str, true);
+  if (step.modules() >= opt_.maxShapes || step.args() >= UINT32_MAX || limitsReached()) return false;
+  step.fill(next);
+  step.addUses(stats_.rewrites, ruleUses_);
   return true;
 }
 
-// The same step in one pass, as the general loop does it but without its per-module
-// checks: the limits are asked once, before, and a string reaching --max-shapes is
-// dropped for the general loop to redo, stopping where it stops.
+// The same step of a shorter string, without TBB.
 bool Derivation::rewriteTemplatesOnThisThread(const ModuleString& str, ModuleString& next) {
-  if (limitsReached()) return false;
-  std::vector<uint64_t> uses(plan_.templates.size(), 0);
-  for (size_t i = 0; i < str.size(); ++i) {
-    const StringModule& mod = str.modules[i];
-    const StringOp& so = plan_[mod.op];
-    if (so.rewrite == Rewrite::Template) {
-      const SuccessorTemplate& t = plan_.templates[so.successor];
-      const uint32_t base = static_cast<uint32_t>(next.args.size());
-      writeTemplate(t, mod.key, next.modules.extend(t.ops.size()), next.args.extend(t.args.size()), base);
-      ++uses[so.successor];
-    } else {
-      copyModule(str, i, next);
-    }
-    if (next.size() >= opt_.maxShapes || next.args.size() >= UINT32_MAX) {
-      next.clear();
-      return false;
-    }
-  }
-  for (size_t t = 0; t < uses.size(); ++t) {
-    stats_.rewrites += uses[t];
-    ruleUses_[plan_.templates[t].rule] += uses[t];
-  }
+  TemplateStep step(plan_, str, false);
+  if (step.modules() >= opt_.maxShapes || step.args() >= UINT32_MAX || limitsReached()) return false;
+  step.fill(next);
+  step.addUses(stats_.rewrites, ruleUses_);
   return true;
 }
 
