@@ -1,14 +1,16 @@
 // A long string whose every rule is a fixed successor is rewritten in chunks on all
 // cores (backend/engine/parallel_rewriter.cpp: rewriteTemplates, from 2^18 modules), a
-// shorter one in one pass on the calling thread. Both must give the general one-thread
-// loop's result, on any number of threads. scripts/tsan.sh runs this under
-// ThreadSanitizer (issue 52).
+// shorter one on the calling thread, both counted first and then written (TemplateStep).
+// Both must give the general one-thread loop's result, on any number of threads.
+// scripts/tsan.sh runs this under ThreadSanitizer (issue 52).
 #include "derive_helpers.h"
 
 #include "backend/engine/string_storage_pool.h"
 
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
+
+#include <cmath>
 
 using namespace fgsg;
 using fgsg::test::deriveText;
@@ -109,4 +111,41 @@ TEST_CASE("A template L-system derived again on kept string storage is the same"
     differ += again.instances.instances[i].transform != first.instances.instances[i].transform ||
               again.instances.instances[i].transform != other.instances.instances[i].transform;
   CHECK(differ == 0);
+}
+
+// The template step (TemplateStep: counted, then written chunk by chunk) makes the modules'
+// random keys as the general loop does: a stochastic homomorphism draws each B's segment
+// length from its key, so any key written differently moves the drawing. Expected values
+// by hand: (3^11 - 1) / 2 = 88 573 rewrites of A, three B's each, one segment per B, half
+// of them (to 1 %: 265 719 fair draws) 2 long.
+TEST_CASE("Template steps give the general loop's random keys, as a stochastic homomorphism shows", "[lsystem][parallel]") {
+  const std::string rules = R"(
+    derive parallel 11;
+    turtle angle 25 width 0.01;
+    axiom: A;
+    A -> B [ + A ] [ - B A ] B A;
+  )";
+  const std::string homomorphism = "homomorphism:\nB -> F(1) : 0.5\n  -> F(2) : 0.5;\n";
+  const rt::DeriveResult loop = onThreads(1, rules + "  Q(x) : x > 0 -> Q(x - 1);\n" + homomorphism);
+  REQUIRE(loop.ok);
+  REQUIRE(loop.instances.instances.size() == 265719);
+  size_t twoLong = 0;
+  for (const rt::Instance& inst : loop.instances.instances) {
+    const double length = Eigen::Vector3d(inst.transform[4], inst.transform[5], inst.transform[6]).norm();
+    REQUIRE((std::abs(length - 1) < 1e-9 || std::abs(length - 2) < 1e-9));
+    twoLong += length > 1.5;
+  }
+  CHECK(std::abs(double(twoLong) / 265719 - 0.5) < 0.01);
+  for (int threads : {1, 2}) {
+    INFO(threads << " threads");
+    const rt::DeriveResult steps = onThreads(threads, rules + homomorphism);
+    REQUIRE(steps.ok);
+    CHECK(steps.stats.stringLength == loop.stats.stringLength);
+    CHECK(steps.stats.rewrites == loop.stats.rewrites);
+    REQUIRE(steps.instances.instances.size() == loop.instances.instances.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < loop.instances.instances.size(); ++i)
+      differ += steps.instances.instances[i].transform != loop.instances.instances[i].transform;
+    CHECK(differ == 0);
+  }
 }
