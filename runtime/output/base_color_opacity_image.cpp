@@ -1,9 +1,6 @@
 #include "runtime/output/base_color_opacity_image.h"
 
-#include "runtime/io/png_encode.h"
-#include "runtime/io/read_image.h"
-#include "runtime/io/read_input.h"
-#include "runtime/texture/color_texture.h"
+#include "runtime/output/packed_texture_image.h"
 
 #include <cmath>
 #include <cstdint>
@@ -11,21 +8,11 @@
 
 namespace fgsg::rt::output {
 
-namespace {
-
-bool decodeBaseColorOpacitySource(const std::string& path, io::Image& image, std::string& error) {
-  std::string bytes;
-  const io::ImageLimits limits{texture::kMaxColorTexturePixels, int64_t(1) << 31, "pixels", "textures"};
-  return io::readInputFile(path, "a texture image", bytes, error) && io::decodeImage(path, bytes, limits, image, error);
-}
-
-}  // namespace
-
 bool packBaseColorOpacity(const std::string* colorPath, const std::string& opacityPath, std::string& png,
                           std::string& error) {
   io::Image color, opacity;
-  if ((colorPath && !decodeBaseColorOpacitySource(*colorPath, color, error)) ||
-      !decodeBaseColorOpacitySource(opacityPath, opacity, error))
+  if ((colorPath && !decodeTextureLayer(*colorPath, color, error)) ||
+      !decodeTextureLayer(opacityPath, opacity, error))
     return false;
   const int width = colorPath ? color.width : opacity.width, height = colorPath ? color.height : opacity.height;
   const size_t oc = size_t(opacity.channels), cc = size_t(color.channels);
@@ -46,13 +33,7 @@ bool packBaseColorOpacity(const std::string* colorPath, const std::string& opaci
         p[3] = uint8_t(std::lround(luminance));
       }
     }
-  png.clear();
-  if (!io::encodePng(width, height, 4, rgba.data(), png)) {
-    error = "the base colour image with the opacity map (" + std::to_string(width) + " x " + std::to_string(height) +
-            ") could not be encoded as a PNG";
-    return false;
-  }
-  return true;
+  return encodePackedTexture(width, height, 4, rgba.data(), "the base colour image with the opacity map", png, error);
 }
 
 }  // namespace fgsg::rt::output

@@ -1,9 +1,6 @@
 #include "runtime/output/metallic_roughness_image.h"
 
-#include "runtime/io/png_encode.h"
-#include "runtime/io/read_image.h"
-#include "runtime/io/read_input.h"
-#include "runtime/texture/color_texture.h"
+#include "runtime/output/packed_texture_image.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -21,11 +18,7 @@ struct MetallicRoughnessSource {
 
   bool load(const std::string* path, size_t colorChannel, std::string& error) {
     if (!path) return true;
-    std::string bytes;
-    const io::ImageLimits limits{texture::kMaxColorTexturePixels, int64_t(1) << 31, "pixels", "textures"};
-    if (!io::readInputFile(*path, "a texture image", bytes, error) ||
-        !io::decodeImage(*path, bytes, limits, image, error))
-      return false;
+    if (!decodeTextureLayer(*path, image, error)) return false;
     channel = image.channels >= 3 ? colorChannel : 0;
     present = true;
     return true;
@@ -54,13 +47,7 @@ bool packMetallicRoughness(const std::string* roughnessPath, const std::string* 
       p[1] = roughness.at(x, y, width, height);
       p[2] = metallic.at(x, y, width, height);
     }
-  png.clear();
-  if (!io::encodePng(width, height, 3, rgb.data(), png)) {
-    error = "the packed metallic-roughness image (" + std::to_string(width) + " x " + std::to_string(height) +
-            ") could not be encoded as a PNG";
-    return false;
-  }
-  return true;
+  return encodePackedTexture(width, height, 3, rgb.data(), "the packed metallic-roughness image", png, error);
 }
 
 }  // namespace fgsg::rt::output

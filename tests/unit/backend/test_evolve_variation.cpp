@@ -4,6 +4,7 @@
 // pattern each Evolve evolved is read back from the same grammar on a flat scope (the GA's
 // seed depends on where Evolve is written, so the lines are kept), laid on the same box
 // through the library, and compared vertex by vertex with what the grammar produced.
+#include "../box_surface.h"
 #include "derive_helpers.h"
 
 #include "runtime/evolve/colour_symmetry.h"
@@ -22,27 +23,16 @@ namespace ev = fgsg::rt::evolve;
 namespace {
 
 // The cube 8 x 8 x 8 (its own polycube at resolution 8), as an OFF file and as a mesh.
-const int kVariationBoxQuads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-
 std::string variationBoxFile() {
   const std::string path = (std::filesystem::temp_directory_path() / "fgsg_evolve_variation_box.off").string();
   std::ofstream out(path);
   out << "OFF\n8 12 0\n";
   for (int i = 0; i < 8; ++i) out << (i & 1 ? 8 : 0) << ' ' << (i & 2 ? 8 : 0) << ' ' << (i & 4 ? 8 : 0) << '\n';
-  for (const auto& q : kVariationBoxQuads) out << "3 " << q[0] << ' ' << q[1] << ' ' << q[2] << "\n3 " << q[0] << ' ' << q[2] << ' ' << q[3] << '\n';
+  for (const auto& q : test::kBoxSideQuads) out << "3 " << q[0] << ' ' << q[1] << ' ' << q[2] << "\n3 " << q[0] << ' ' << q[2] << ' ' << q[3] << '\n';
   return path;
 }
 
-rt::surface::SurfaceMesh variationBoxMesh() {
-  rt::surface::SurfaceMesh m;
-  for (int i = 0; i < 8; ++i) m.vertices.push_back(rt::Vec3(i & 1 ? 8 : 0, i & 2 ? 8 : 0, i & 4 ? 8 : 0));
-  for (const auto& q : kVariationBoxQuads) {
-    m.faces.push_back({q[0], q[1], q[2]});
-    m.faces.push_back({q[0], q[2], q[3]});
-  }
-  m.buildTopology();
-  return m;
-}
+rt::surface::SurfaceMesh variationBoxMesh() { return test::boxSurface(rt::Vec3::Zero(), rt::Vec3(8, 8, 8)); }
 
 const std::string kVariationTiles =
     "  locus arc = cubic((0.5, 0), (0.5, 0.276), (0.724, 0.5), (1, 0.5));\n"

@@ -2,6 +2,7 @@
 // shownFacelets and faceletsFacing) and the ornament parted by colour class
 // (partOrnament), on a cube that is its own polycube: 8 x 8 x 8 at resolution 8, 64
 // face-lets a side, every face-let point on the surface.
+#include "../box_surface.h"
 #include "runtime/evolve/surface_ornament.h"
 
 #include "runtime/evolve/colour_symmetry.h"
@@ -16,19 +17,8 @@ using fgsg::rt::surface::SurfaceMesh;
 
 namespace {
 
-// An axis-aligned box from the origin to hi, two triangles per side, counter-clockwise
-// from outside.
-SurfaceMesh variationBox(const Vec3& hi) {
-  SurfaceMesh m;
-  for (int i = 0; i < 8; ++i) m.vertices.push_back(Vec3(i & 1 ? hi.x() : 0, i & 2 ? hi.y() : 0, i & 4 ? hi.z() : 0));
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.faces.push_back({q[0], q[1], q[2]});
-    m.faces.push_back({q[0], q[2], q[3]});
-  }
-  m.buildTopology();
-  return m;
-}
+// The box from the origin to hi (box_surface.h).
+SurfaceMesh variationBox(const Vec3& hi) { return fgsg::test::boxSurface(Vec3::Zero(), hi); }
 
 // The triangles of one cell's ornament for `allele` (ornament.h's grid, two per quad).
 size_t cellTriangles(const TileSet& tiles, Allele allele) {

@@ -2,6 +2,7 @@
 // surface (runtime/evolve/ornament_stretch.h, Chan & Hui 2013 §6.4), against values
 // worked out by hand on boxes, and the stretch bound of surfaceOrnament: with it no
 // emitted cell is stretched beyond it, without it a thin box's cells are.
+#include "../box_surface.h"
 #include "runtime/evolve/ornament_stretch.h"
 
 #include "runtime/evolve/surface_ornament.h"
@@ -19,19 +20,8 @@ using fgsg::rt::surface::SurfaceMesh;
 
 namespace {
 
-// An axis-aligned box from the origin to hi, two triangles per side, counter-clockwise
-// from outside.
-SurfaceMesh box(const Vec3& hi) {
-  SurfaceMesh m;
-  for (int i = 0; i < 8; ++i) m.vertices.push_back(Vec3(i & 1 ? hi.x() : 0, i & 2 ? hi.y() : 0, i & 4 ? hi.z() : 0));
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.faces.push_back({q[0], q[1], q[2]});
-    m.faces.push_back({q[0], q[2], q[3]});
-  }
-  m.buildTopology();
-  return m;
-}
+// The box from the origin to hi (box_surface.h).
+SurfaceMesh box(const Vec3& hi) { return fgsg::test::boxSurface(Vec3::Zero(), hi); }
 
 size_t countAbove(const std::vector<double>& r, double limit) {
   return size_t(std::count_if(r.begin(), r.end(), [&](double x) { return x > limit; }));

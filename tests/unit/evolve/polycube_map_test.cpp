@@ -2,6 +2,7 @@
 // around a cube, every face-let point carried onto the surface by a ray (no fallback),
 // seamless across face-let edges and vertices, covering the surface, with unit normals and
 // tangents in the tangent plane; bad input refused with a clear message.
+#include "../box_surface.h"
 #include "runtime/evolve/polycube_map.h"
 
 #include "runtime/surface/load_surface.h"
@@ -26,20 +27,7 @@ using fgsg::rt::surface::SurfaceMesh;
 
 namespace {
 
-// An axis-aligned box from lo to hi, two triangles per side, counter-clockwise from outside.
-SurfaceMesh box(const Vec3& lo, const Vec3& hi) {
-  SurfaceMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.push_back(Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
-  // Each side as a quad (corner indices) counter-clockwise seen from outside.
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    m.faces.push_back({q[0], q[1], q[2]});
-    m.faces.push_back({q[0], q[2], q[3]});
-  }
-  m.buildTopology();
-  return m;
-}
+SurfaceMesh box(const Vec3& lo, const Vec3& hi) { return fgsg::test::boxSurface(lo, hi); }
 
 // Distance from p to triangle (a, b, c): to the plane when p projects inside, else to the
 // nearest edge.

@@ -4,103 +4,23 @@
 // shapes it creates. Both dialects, the interpreter and the JIT bit for bit, against
 // values worked out by hand (in the comments) on a lot turned by 53.13 degrees (cos 0.6,
 // sin 0.8) and moved away from the origin, so that the pivot, object and world differ.
-#include "backend/interp/interpreter.h"
-#include "backend/jit/jit.h"
-#include "backend/native/object_cache.h"
-#include "frontend/diagnostics.h"
-#include "ir/pipeline.h"
+#include "turned_lot_leaves.h"
 
 #include <catch2/catch.hpp>
 
-#include <Eigen/Core>
-
-#include <cstring>
 #include <map>
 #include <sstream>
 #include <string>
-#include <vector>
 
 namespace {
 
 using namespace fgsg;
 using PivotV = Eigen::Vector3d;
 
-// The lot in the lots' plane (x east, y north): first corner (10, 20), first edge 5 m along
-// (0.6, 0.8), 10 m deep to its left. In the world (x east, y up, z south) its corners are
-// (10, 0, -20), (13, 0, -24), (5, 0, -30), (2, 0, -26); the `.cga` lot's scope starts at
-// (2, 0, -26) with x (0.6, 0, -0.8), y up, z (0.8, 0, 0.6), extruded to 5 x 2 x 10.
-rt::Lot pivotTestLot() {
-  rt::Lot lot;
-  lot.outer = {{10, 20}, {13, 24}, {5, 30}, {2, 26}};
-  lot.id = "turned";
-  return lot;
-}
-
-struct PivotLeaf {
-  PivotV P, X, Y, Z, S;
-  std::vector<PivotV> corners;  // the geometry's vertices in the world (the unit cube for a box)
-};
-
-ir::Module compilePivotGrammar(const std::string& text, const std::string& name) {
-  auto file = frontend::SourceFile::make(name, text);
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    std::ostringstream out;
-    diags.print(out);
-    FAIL("the test grammar does not compile:\n" << out.str());
-  }
-  return m;
-}
-
-std::map<std::string, PivotLeaf> pivotLeavesOf(const rt::DeriveResult& r) {
-  std::map<std::string, PivotLeaf> out;
-  for (const rt::Instance& inst : r.instances.instances) {
-    const Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix4d>(inst.transform.data());
-    PivotLeaf leaf;
-    leaf.P = m.block<3, 1>(0, 3);
-    leaf.S = PivotV(m.col(0).head<3>().norm(), m.col(1).head<3>().norm(), m.col(2).head<3>().norm());
-    leaf.X = m.col(0).head<3>() / leaf.S.x();
-    leaf.Y = m.col(1).head<3>() / leaf.S.y();
-    leaf.Z = m.col(2).head<3>() / leaf.S.z();
-    if (inst.geometry != UINT32_MAX) {
-      const rt::Mesh& mesh = r.instances.geometries[inst.geometry];
-      for (size_t i = 0; i < mesh.vertexCount(); ++i)
-        leaf.corners.push_back(
-            (m * Eigen::Vector4d(mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2], 1.0))
-                .head<3>());
-    } else {
-      for (int k = 0; k < 8; ++k)
-        leaf.corners.push_back((m * Eigen::Vector4d(k & 1, (k >> 1) & 1, k >> 2, 1.0)).head<3>());
-    }
-    out[r.instances.symbols[inst.symbol]] = leaf;
-  }
-  return out;
-}
-
-// Derives `text` with both engines (on the turned lot, or without lots: the axiom's unit
-// box at the origin), which must place the same leaves bit for bit.
-std::map<std::string, PivotLeaf> derivePivotBothEngines(const std::string& text, const std::string& name,
-                                                         bool onLot = true) {
-  const ir::Module m = compilePivotGrammar(text, name);
-  rt::DeriveOptions options;
-  if (onLot) {
-    options.lots = {pivotTestLot()};
-    options.lotsName = "lots.geojson";
-  }
-  rt::AssetLibrary assets;
-  const rt::DeriveResult interp = backend::interpret(m, options, assets);
-  backend::jit::Jit jit;
-  const auto code = jit.compileProgram(m, text, backend::native::ObjectCache{std::string()});
-  const rt::DeriveResult jitted = backend::deriveCompiled(m, code.program(), options, assets);
-  REQUIRE(interp.ok);
-  REQUIRE(jitted.ok);
-  REQUIRE(interp.instances.instances.size() == jitted.instances.instances.size());
-  for (size_t i = 0; i < interp.instances.instances.size(); ++i)
-    CHECK(std::memcmp(interp.instances.instances[i].transform.data(), jitted.instances.instances[i].transform.data(),
-                      sizeof(double) * 16) == 0);
-  return pivotLeavesOf(interp);
-}
+// The turned lot (turned_lot_leaves.h): the `.cga` lot's scope starts at (2, 0, -26) with
+// x (0.6, 0, -0.8), y up, z (0.8, 0, 0.6), extruded to 5 x 2 x 10.
+using PivotLeaf = turned_lot::Leaf;
+using turned_lot::deriveBothEngines;
 
 bool pivotNear(const PivotV& a, const PivotV& b, double tolerance = 1e-12) {
   return (a - b).cwiseAbs().maxCoeff() <= tolerance;
@@ -156,7 +76,7 @@ std::vector<PivotV> pivotBoxCorners(const PivotV& P, const PivotV& X, const Pivo
 }  // namespace
 
 TEST_CASE("cga setPivot puts the pivot at a scope corner and translate and rotate use it", "[cga][setPivot]") {
-  const auto leaves = derivePivotBothEngines(R"(@StartRule
+  const auto leaves = deriveBothEngines(R"(@StartRule
 Lot --> extrude(2) setPivot(yzx, 2) A
 A --> [ Here ]
       [ translate(rel, pivot, 1, 2, 3) MovedRel ]
@@ -211,7 +131,7 @@ C --> [ translate(abs, pivot, 1, 2, 3) ChildAbs ]
 
 TEST_CASE("fgsg SetPivot on a box: each axis order and a corner that swaps x and z", "[cga][setPivot]") {
   // Without lots the axiom is the unit box at the origin (the object system is the world's).
-  const auto leaves = derivePivotBothEngines(R"(
+  const auto leaves = deriveBothEngines(R"(
 Start ~> [ S(4, 3, 2) SetPivot("xyz", 1) Corner1 ]
          [ S(4, 3, 2) T(1, 2, 3) R(0, 90, 0) SetPivot("zxy", 5) Turned ]
          [ S(4, 3, 2) T(1, 2, 3) R(0, 90, 0) SetPivot("zxy", 5) Translate("rel", "pivot", 1, 2, 3) Moved ]
@@ -268,7 +188,7 @@ TEST_CASE("setPivot's bad axis order is a located error and a bad corner a run-t
   // A corner index known only while deriving: R002 at the operation, in both engines.
   for (const bool compiled : {false, true}) {
     const std::string text = "@StartRule\nLot --> extrude(2) Mass(8)\nMass(k) --> setPivot(xyz, k) A\n";
-    const ir::Module m = compilePivotGrammar(text, "test.cga");
+    const ir::Module m = turned_lot::compile(text, "test.cga");
     rt::DeriveOptions options;
     rt::AssetLibrary assets;
     rt::DeriveResult r;

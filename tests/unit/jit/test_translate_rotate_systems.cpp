@@ -4,104 +4,29 @@
 // origin, axes and size, and its geometry's corners, against values worked out by hand on
 // a lot that is turned and moved in the world, so that the scope, object (= pivot) and
 // world systems all differ.
-#include "backend/interp/interpreter.h"
-#include "backend/jit/jit.h"
-#include "backend/native/object_cache.h"
-#include "frontend/diagnostics.h"
-#include "ir/pipeline.h"
+#include "turned_lot_leaves.h"
 
 #include <catch2/catch.hpp>
 
-#include <Eigen/Core>
-
-#include <cstring>
 #include <map>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace {
 
 using namespace fgsg;
 using V = Eigen::Vector3d;
 
-// The lot, in the lots' plane (x east, y north; the world is x east, y up, z south): its
-// first corner at (10, 20), its first edge 5 m along (0.6, 0.8), 10 m deep to the left.
-// In the world: the object system has its origin at O = (10, 0, -20), x along
-// (0.6, 0, -0.8), y up, z = x × y = (0.8, 0, 0.6); the lot lies at object z in [-10, 0],
-// so its scope starts at the fourth corner, (2, 0, -26), with the object's axes.
-rt::Lot turnedLotForSystems() {
-  rt::Lot lot;
-  lot.outer = {{10, 20}, {13, 24}, {5, 30}, {2, 26}};
-  lot.id = "turned";
-  return lot;
-}
-
+// The turned lot (turned_lot_leaves.h), in the world: the object system has its origin at
+// O = (10, 0, -20), x along (0.6, 0, -0.8), y up, z = x × y = (0.8, 0, 0.6); the lot lies
+// at object z in [-10, 0], so its scope starts at the fourth corner, (2, 0, -26), with the
+// object's axes.
 const V kObjO(10, 0, -20), kObjX(0.6, 0, -0.8), kObjY(0, 1, 0), kObjZ(0.8, 0, 0.6);
 const V kLotP(2, 0, -26);
 
-struct LeafScope {
-  V P, X, Y, Z, S;
-  std::vector<V> corners;  // the leaf geometry's vertices in the world
-};
+using LeafScope = turned_lot::Leaf;
 
-ir::Module compileSystemsGrammar(const std::string& text, const std::string& name) {
-  auto file = frontend::SourceFile::make(name, text);
-  frontend::Diagnostics diags(&file);
-  ir::Module m;
-  if (!ir::compileSource(file, m, diags)) {
-    std::ostringstream out;
-    diags.print(out);
-    FAIL("the test grammar does not compile:\n" << out.str());
-  }
-  return m;
-}
-
-std::map<std::string, LeafScope> leavesOf(const rt::DeriveResult& r) {
-  REQUIRE(r.ok);
-  std::map<std::string, LeafScope> out;
-  for (const rt::Instance& inst : r.instances.instances) {
-    const Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix4d>(inst.transform.data());
-    LeafScope leaf;
-    leaf.P = m.block<3, 1>(0, 3);
-    leaf.S = V(m.col(0).head<3>().norm(), m.col(1).head<3>().norm(), m.col(2).head<3>().norm());
-    leaf.X = m.col(0).head<3>() / leaf.S.x();
-    leaf.Y = m.col(1).head<3>() / leaf.S.y();
-    leaf.Z = m.col(2).head<3>() / leaf.S.z();
-    if (inst.geometry != UINT32_MAX) {
-      const rt::Mesh& mesh = r.instances.geometries[inst.geometry];
-      for (size_t i = 0; i < mesh.vertexCount(); ++i) {
-        const Eigen::Vector4d u(mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2], 1.0);
-        leaf.corners.push_back((m * u).head<3>());
-      }
-    } else if (r.instances.assets[inst.asset] == "cube") {  // a whole box leaf: the unit cube
-      for (int k = 0; k < 8; ++k)
-        leaf.corners.push_back((m * Eigen::Vector4d(k & 1, (k >> 1) & 1, k >> 2, 1.0)).head<3>());
-    }
-    out[r.instances.symbols[inst.symbol]] = leaf;
-  }
-  return out;
-}
-
-// Derives `text` on the turned lot with both engines, which must place the same leaves
-// bit for bit; returns the leaves by symbol.
 std::map<std::string, LeafScope> deriveSystemsBothEngines(const std::string& text, const std::string& name) {
-  const ir::Module m = compileSystemsGrammar(text, name);
-  rt::DeriveOptions options;
-  options.lots = {turnedLotForSystems()};
-  options.lotsName = "lots.geojson";
-  rt::AssetLibrary assets;
-  const rt::DeriveResult interp = backend::interpret(m, options, assets);
-  backend::jit::Jit jit;
-  const auto code = jit.compileProgram(m, text, backend::native::ObjectCache{std::string()});
-  const rt::DeriveResult jitted = backend::deriveCompiled(m, code.program(), options, assets);
-  REQUIRE(interp.ok);
-  REQUIRE(jitted.ok);
-  REQUIRE(interp.instances.instances.size() == jitted.instances.instances.size());
-  for (size_t i = 0; i < interp.instances.instances.size(); ++i)
-    CHECK(std::memcmp(interp.instances.instances[i].transform.data(), jitted.instances.instances[i].transform.data(),
-                      sizeof(double) * 16) == 0);
-  return leavesOf(interp);
+  return turned_lot::deriveBothEngines(text, name);
 }
 
 bool near12(const V& a, const V& b) { return (a - b).cwiseAbs().maxCoeff() <= 1e-12; }
