@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Where a .glb's bytes go: the JSON chunk, and the BIN chunk by what its accessors hold
 (POSITION, NORMAL, TEXCOORD_0, COLOR_0, indices, the EXT_mesh_gpu_instancing attributes,
-images) and by mesh name (the largest first). Views several accessors share (a baked
-part's index view) are counted once, by the first that reads them.
+images) and by mesh name (the largest first): each accessor's bytes (in views that
+several accessors share) counted once, by the first that reads it; views no accessor
+reads (images) whole.
 
     scripts/gltf_breakdown.py city.glb [--meshes N]
 """
@@ -25,36 +26,48 @@ def main():
     doc = json.loads(data[20:20 + json_length])
     total = len(data)
     views = doc.get("bufferViews", [])
-    counted = set()
+    counted, counted_views = set(), set()
+    components = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
+    widths = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
     by_kind = collections.Counter()
     by_mesh = collections.Counter()
     meshes_of_kind = collections.defaultdict(set)
 
-    def take(view, kind, owner):
-        if view is None or view in counted:
+    accessors = doc.get("accessors", [])
+
+    def take(a, kind, owner):
+        if a is None or a in counted or accessors[a].get("bufferView") is None:
             return
-        counted.add(view)
-        by_kind[kind] += views[view]["byteLength"]
+        counted.add(a)
+        counted_views.add(accessors[a]["bufferView"])
+        element = components[accessors[a]["componentType"]] * widths[accessors[a]["type"]]
+        stride = views[accessors[a]["bufferView"]].get("byteStride", element)
+        n = (accessors[a]["count"] - 1) * stride + element
+        by_kind[kind] += n
         if owner is not None:
-            by_mesh[owner] += views[view]["byteLength"]
+            by_mesh[owner] += n
             meshes_of_kind[kind].add(owner)
 
-    accessors = doc.get("accessors", [])
+    def take_view(view, kind):
+        if view is not None and view not in counted_views:
+            counted_views.add(view)
+            by_kind[kind] += views[view]["byteLength"]
+
     for mesh in doc.get("meshes", []):
         for p in mesh["primitives"]:
             for name, a in p["attributes"].items():
-                take(accessors[a].get("bufferView"), name, mesh.get("name", "?"))
+                take(a, name, mesh.get("name", "?"))
             if "indices" in p:
-                take(accessors[p["indices"]].get("bufferView"), "indices", mesh.get("name", "?"))
+                take(p["indices"], "indices", mesh.get("name", "?"))
     for node in doc.get("nodes", []):
         inst = node.get("extensions", {}).get("EXT_mesh_gpu_instancing")
         if inst:
             for name, a in inst["attributes"].items():
-                take(accessors[a].get("bufferView"), "instancing", None)
+                take(a, "instancing", None)
     for image in doc.get("images", []):
-        take(image.get("bufferView"), "images", None)
+        take_view(image.get("bufferView"), "images")
     for v in range(len(views)):
-        take(v, "other", None)
+        take_view(v, "other")
 
     print(f"{args.glb}: {total} bytes; JSON {json_length} ({100 * json_length / total:.1f} %), "
           f"{len(doc.get('meshes', []))} meshes, {len(doc.get('nodes', []))} nodes, {len(accessors)} accessors")

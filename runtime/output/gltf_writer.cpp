@@ -121,6 +121,8 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
+enum class GltfPoolKind : uint8_t { Vertices, Indices, Instances };
+
 class Writer {
  public:
   Writer(const Scene& scene, std::vector<PlacedNode>* placed) : scene_(scene), placed_(placed) {}
@@ -128,17 +130,52 @@ class Writer {
   bool write(bool binary, std::string& bytes, std::string& error);
 
  private:
-  // A buffer view over `count` values of T appended to the BIN chunk (null `data`: room
-  // for them, zeroed, for the caller to fill).
+  // A buffer view over `count` values of T appended to the BIN chunk (images).
   template <class T>
   int view(const T* data, size_t count, int target) {
     bin_.resize(padded4(bin_.size()), '\0');
     json v = {{"buffer", 0}, {"byteLength", count * sizeof(T)}, {"byteOffset", bin_.size()}};
     if (target) v["target"] = target;
-    if (data) bin_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
-    else bin_.resize(bin_.size() + count * sizeof(T), '\0');
+    bin_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
     views_.push_back(std::move(v));
     return int(views_.size() - 1);
+  }
+  // Room for `bytes` bytes (zeroed) in the pooled view of its kind, aligned to `align`:
+  // the view and the offset in it. Vertex attributes share a view per element size
+  // (its byteStride), indices one, instance transforms one: a view per accessor was a
+  // city's 2000 views, 128 KB of JSON. The pools follow the instances in the BIN chunk
+  // (flushPools), their views' offsets and lengths set there.
+  std::pair<int, size_t> pooled(GltfPoolKind kind, size_t stride, size_t bytes, size_t align) {
+    auto [it, added] = pools_.try_emplace({kind, stride});
+    Pool& pool = it->second;
+    if (added) {
+      json v = {{"buffer", 0}, {"byteLength", 0}, {"byteOffset", 0}};
+      if (kind == GltfPoolKind::Vertices) v["target"] = kArrayBuffer, v["byteStride"] = stride;
+      if (kind == GltfPoolKind::Indices) v["target"] = kElementArrayBuffer;
+      views_.push_back(std::move(v));
+      pool.view = int(views_.size() - 1);
+    }
+    pool.bytes.resize((pool.bytes.size() + align - 1) / align * align, '\0');
+    const size_t offset = pool.bytes.size();
+    pool.bytes.resize(offset + bytes, '\0');
+    return {pool.view, offset};
+  }
+  // A float vertex attribute of `width` components (2..4) per vertex; null `data`: zeros.
+  int vertexAccessor(const float* data, size_t vertices, int width) {
+    const size_t stride = sizeof(float) * size_t(width);
+    const auto [v, offset] = pooled(GltfPoolKind::Vertices, stride, stride * vertices, 4);
+    if (data) std::memcpy(pools_[{GltfPoolKind::Vertices, stride}].bytes.data() + offset, data, stride * vertices);
+    static const char* const types[] = {"", "", "VEC2", "VEC3", "VEC4"};
+    return accessor(v, vertices, kFloat, types[width], offset);
+  }
+  void flushPools() {
+    for (auto& [key, pool] : pools_) {
+      bin_.resize(padded4(bin_.size()), '\0');
+      views_[size_t(pool.view)]["byteOffset"] = bin_.size();
+      views_[size_t(pool.view)]["byteLength"] = pool.bytes.size();
+      bin_ += pool.bytes;
+    }
+    pools_.clear();
   }
   int accessor(int view, size_t count, int componentType, const char* type, size_t byteOffset = 0) {
     json a = {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}};
@@ -152,10 +189,15 @@ class Writer {
   int normals(const Mesh& m);
   int texcoords(const Mesh& m, std::array<float, 2> shift);
   WeldedVertices weld(const Mesh& m, bool withNormals, bool withColors) const;
-  // Indices (of `vertices` vertices) as 16-bit where they fit, into a view of their own:
-  // the view and the component type.
+  // Indices (of `vertices` vertices) as 16-bit where they fit, into the indices' pooled
+  // view: where they lie there.
+  struct IndexSpan {
+    int view = 0, type = 0;
+    size_t offset = 0;  // in the view
+    size_t size = 0;    // of an index
+  };
   template <class Indices>
-  std::pair<int, int> indexView(const Indices& indices, size_t vertices);
+  IndexSpan indexView(const Indices& indices, size_t vertices);
   json sharedAttributes(uint32_t mesh);
   int sharedMesh(uint32_t mesh, uint32_t material);
   int instancedNode(const InstancedPart& part);
@@ -170,6 +212,11 @@ class Writer {
   const Scene& scene_;
   std::vector<PlacedNode>* placed_;  // may be null
   std::string bin_;
+  struct Pool {
+    int view = -1;
+    std::string bytes;
+  };
+  std::map<std::pair<GltfPoolKind, size_t>, Pool> pools_;  // (kind, byteStride) -> its view
   json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(), nodes_ = json::array();
   std::map<uint32_t, json> sharedAttributes_;                  // per shared mesh, its vertex accessors
   std::map<uint32_t, int> sharedIndices_;                      // ... and its indices' accessor
@@ -206,13 +253,23 @@ class Writer {
 };
 
 int Writer::positions(const float* p, size_t vertices) {
-  const int a = accessor(view(p, 3 * vertices, kArrayBuffer), vertices, kFloat, "VEC3");
+  const int a = vertexAccessor(p, vertices, 3);
   std::array<double, 3> lo, hi;
   lo.fill(INFINITY), hi.fill(-INFINITY);
   for (size_t v = 0; v < vertices; ++v)
     for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], double(p[3 * v + d])), hi[d] = std::max(hi[d], double(p[3 * v + d]));
-  accessors_[a]["min"] = lo;
-  accessors_[a]["max"] = hi;
+  // As the floats' shortest decimals (29.3, not 29.299999237060547): a tenth of a city's JSON.
+  const auto shortest = [](const std::array<double, 3>& x) {
+    json out = json::array();
+    for (double d : x) {
+      char text[io::kMaxFloatText + 1];
+      *io::putShortestFloat(text, float(d)) = '\0';
+      out.push_back(std::strtod(text, nullptr));
+    }
+    return out;
+  };
+  accessors_[a]["min"] = shortest(lo);
+  accessors_[a]["max"] = shortest(hi);
   return a;
 }
 
@@ -248,12 +305,12 @@ std::vector<float> flippedUvSet(const MeshArray<float>& coords) {
 
 int Writer::normals(const Mesh& m) {
   const std::vector<float> n = unitNormals(m);
-  return accessor(view(n.data(), n.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC3");
+  return vertexAccessor(n.data(), m.vertexCount(), 3);
 }
 
 int Writer::texcoords(const Mesh& m, std::array<float, 2> shift) {
   const std::vector<float> t = flippedTexcoords(m, shift);
-  return accessor(view(t.data(), t.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC2");
+  return vertexAccessor(t.data(), m.vertexCount(), 2);
 }
 
 WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) const {
@@ -300,13 +357,23 @@ WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) co
 }
 
 template <class Indices>
-std::pair<int, int> Writer::indexView(const Indices& indices, size_t vertices) {
+Writer::IndexSpan Writer::indexView(const Indices& indices, size_t vertices) {
   // 65535 is no index of a 16-bit accessor (primitive restart).
-  if (vertices < 65535) {
-    const std::vector<uint16_t> narrow(indices.begin(), indices.end());
-    return {view(narrow.data(), narrow.size(), kElementArrayBuffer), kUnsignedShort};
+  const bool narrow = vertices < 65535;
+  const size_t size = narrow ? 2 : 4;
+  const auto [v, offset] = pooled(GltfPoolKind::Indices, 0, size * indices.size(), size);
+  char* out = pools_[{GltfPoolKind::Indices, 0}].bytes.data() + offset;
+  for (const auto index : indices) {
+    if (narrow) {
+      const uint16_t i16 = uint16_t(index);
+      std::memcpy(out, &i16, 2);
+    } else {
+      const uint32_t i32 = uint32_t(index);
+      std::memcpy(out, &i32, 4);
+    }
+    out += size;
   }
-  return {view(indices.data(), indices.size(), kElementArrayBuffer), kUnsignedInt};
+  return {v, narrow ? kUnsignedShort : kUnsignedInt, offset, size};
 }
 
 json Writer::sharedAttributes(uint32_t mesh) {
@@ -317,8 +384,8 @@ json Writer::sharedAttributes(uint32_t mesh) {
   json attributes = {{"POSITION", positions(m.positions.data(), m.vertexCount())}};
   if (io::hasNormals(m)) attributes["NORMAL"] = normals(m);
   if (m.hasTexcoords()) attributes["TEXCOORD_0"] = texcoords(m, s.uvShift);
-  const auto [indices, type] = indexView(m.indices, m.vertexCount());
-  sharedIndices_[mesh] = accessor(indices, m.indices.size(), type, "SCALAR");
+  const IndexSpan indices = indexView(m.indices, m.vertexCount());
+  sharedIndices_[mesh] = accessor(indices.view, m.indices.size(), indices.type, "SCALAR", indices.offset);
   return sharedAttributes_[mesh] = attributes;
 }
 
@@ -335,7 +402,7 @@ int Writer::sharedMesh(uint32_t mesh, uint32_t material) {
       const std::vector<float> n = unitNormals(m), t = flippedTexcoords(m, scene_.meshes[mesh].uvShift);
       const std::vector<uint32_t> indices(m.indices.begin(), m.indices.end());
       const std::vector<float> tangents = normalMapTangents(m.positions.data(), n.data(), t.data(), m.vertexCount(), indices);
-      it->second = accessor(view(tangents.data(), tangents.size(), kArrayBuffer), m.vertexCount(), kFloat, "VEC4");
+      it->second = vertexAccessor(tangents.data(), m.vertexCount(), 4);
     }
     attributes["TANGENT"] = it->second;
   }
@@ -348,11 +415,14 @@ int Writer::instancedNode(const InstancedPart& part) {
   const size_t n = part.instances.size();
   // The colours only where they vary: else the material has the part's one colour.
   const bool colored = scene_.materials[part.material].vertexColors;
-  // One view per part: translations, rotations, scales, colours, one after another,
-  // written in place at the BIN chunk's end (a million instances are 40 MB).
-  const int v = view(static_cast<const float*>(nullptr), (colored ? 13 : 10) * n, 0);
-  float* data = reinterpret_cast<float*>(bin_.data() + (bin_.size() - (colored ? 13 : 10) * n * sizeof(float)));
-  const auto put = [&](float x) { std::memcpy(data++, &x, sizeof x); };  // the chunk is only 4-aligned
+  // The part's block of the instances' pooled view: translations, rotations, scales,
+  // colours, one after another, written in place (a million instances are 40 MB).
+  // Rotations stay floats: as normalized 16-bit components (which the extension allows)
+  // the city's wall pieces under --instancing on moved by up to 0.35 mm.
+  const size_t bytes = (colored ? 13 : 10) * n * sizeof(float);
+  const auto [v, offset] = pooled(GltfPoolKind::Instances, 0, bytes, 4);
+  char* data = pools_[{GltfPoolKind::Instances, 0}].bytes.data() + offset;
+  const auto put = [&](float x) { std::memcpy(data, &x, sizeof x), data += sizeof x; };
   for (const Trs& t : part.trs)
     for (double x : t.translation) put(float(x));
   for (const Trs& t : part.trs) {
@@ -368,10 +438,10 @@ int Writer::instancedNode(const InstancedPart& part) {
   if (colored)
     for (const auto& c : part.colors)
       for (float x : c) put(io::clamp01(x));
-  json attributes = {{"TRANSLATION", accessor(v, n, kFloat, "VEC3")},
-                     {"ROTATION", accessor(v, n, kFloat, "VEC4", 12 * n)},
-                     {"SCALE", accessor(v, n, kFloat, "VEC3", 28 * n)}};
-  if (colored) attributes["_COLOR_0"] = accessor(v, n, kFloat, "VEC3", 40 * n);
+  json attributes = {{"TRANSLATION", accessor(v, n, kFloat, "VEC3", offset)},
+                     {"ROTATION", accessor(v, n, kFloat, "VEC4", offset + 12 * n)},
+                     {"SCALE", accessor(v, n, kFloat, "VEC3", offset + 28 * n)}};
+  if (colored) attributes["_COLOR_0"] = accessor(v, n, kFloat, "VEC3", offset + 40 * n);
   instancing_ = true;
   nodes_.push_back({{"name", scene_.meshes[part.mesh].name},
                     {"mesh", sharedMesh(part.mesh, part.material)},
@@ -413,13 +483,12 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     const WeldedVertices w = weld(m, io::hasNormals(m) && (normalMapped || !flatShaded(m)), colored);
     json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
     if (!w.normals.empty())
-      attributes["NORMAL"] = accessor(view(w.normals.data(), w.normals.size(), kArrayBuffer), w.count, kFloat, "VEC3");
+      attributes["NORMAL"] = vertexAccessor(w.normals.data(), w.count, 3);
     if (!w.texcoords.empty())
-      attributes["TEXCOORD_0"] =
-          accessor(view(w.texcoords.data(), w.texcoords.size(), kArrayBuffer), w.count, kFloat, "VEC2");
+      attributes["TEXCOORD_0"] = vertexAccessor(w.texcoords.data(), w.count, 2);
     uvSetAttributes(m, w, attributes);
     if (colored)
-      attributes["COLOR_0"] = accessor(view(w.colors.data(), w.colors.size(), kArrayBuffer), w.count, kFloat, "VEC3");
+      attributes["COLOR_0"] = vertexAccessor(w.colors.data(), w.count, 3);
     // The triangles grouped by image, as runs say; untextured ones (-1) last.
     std::vector<uint32_t> indices;
     indices.reserve(m.indices.size());
@@ -446,15 +515,14 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       for (size_t k = 0; k < m.uvSets.size(); ++k)
         if (m.uvSets[k].set == normalSet) normalUv = w.uvSets[k].data();
       const std::vector<float> tangents = normalMapTangents(w.positions.data(), w.normals.data(), normalUv, w.count, indices);
-      attributes["TANGENT"] = accessor(view(tangents.data(), tangents.size(), kArrayBuffer), w.count, kFloat, "VEC4");
+      attributes["TANGENT"] = vertexAccessor(tangents.data(), w.count, 4);
     }
     if (!indices.empty()) {
-      const auto [v, type] = indexView(indices, w.count);
-      const size_t size = type == kUnsignedShort ? 2 : 4;
+      const IndexSpan span = indexView(indices, w.count);
       size_t first = 0;
       for (const auto& [material, count] : groups) {
         primitives.push_back({{"attributes", attributes},
-                              {"indices", accessor(v, count, type, "SCALAR", size * first)},
+                              {"indices", accessor(span.view, count, span.type, "SCALAR", span.offset + span.size * first)},
                               {"material", this->material(material, sets)},
                               {"mode", kTriangles}});
         first += count;
@@ -464,9 +532,9 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       std::vector<uint32_t> lines;
       lines.reserve(m.lines.size());
       for (uint32_t k : m.lines) lines.push_back(w.of[k]);
-      const auto [v, type] = indexView(lines, w.count);
+      const IndexSpan span = indexView(lines, w.count);
       primitives.push_back({{"attributes", attributes},
-                            {"indices", accessor(v, lines.size(), type, "SCALAR")},
+                            {"indices", accessor(span.view, lines.size(), span.type, "SCALAR", span.offset)},
                             {"material", material(part.materials.back())},
                             {"mode", kLines}});
     }
@@ -607,15 +675,14 @@ void Writer::uvSetAttributes(const Mesh& m, const WeldedVertices& w, json& attri
   if (m.uvSets.empty()) return;
   int zeros = -1;
   const auto zeroAccessor = [&] {
-    if (zeros < 0) zeros = accessor(view(static_cast<const float*>(nullptr), 2 * w.count, kArrayBuffer), w.count, kFloat, "VEC2");
+    if (zeros < 0) zeros = vertexAccessor(nullptr, w.count, 2);
     return zeros;
   };
   if (w.texcoords.empty()) attributes["TEXCOORD_0"] = zeroAccessor();
   uint32_t next = 1;
   for (size_t k = 0; k < m.uvSets.size(); ++k) {
     for (; next < m.uvSets[k].set; ++next) attributes["TEXCOORD_" + std::to_string(next)] = zeroAccessor();
-    attributes["TEXCOORD_" + std::to_string(next++)] =
-        accessor(view(w.uvSets[k].data(), w.uvSets[k].size(), kArrayBuffer), w.count, kFloat, "VEC2");
+    attributes["TEXCOORD_" + std::to_string(next++)] = vertexAccessor(w.uvSets[k].data(), w.count, 2);
   }
 }
 
@@ -639,6 +706,7 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
   j["scene"] = 0;
   json roots = json::array();
   for (const StartNode& s : scene_.starts) roots.push_back(startNode(s));
+  flushPools();
   // The images after the geometry, each whole.
   if (!imagesOut_.empty()) {
     std::vector<io::EmbeddedImage> images;

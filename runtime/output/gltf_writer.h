@@ -2,8 +2,9 @@
 // buffer a base64 data URI). Instanced parts are one node each with the shared mesh and
 // EXT_mesh_gpu_instancing (TRANSLATION, ROTATION, SCALE and the instances' colours as
 // _COLOR_0, float accessors); mirrored instances a node each with a negative scale;
-// baked parts the group node's mesh, a primitive per material. The bytes depend only on
-// the scene.
+// baked parts the group node's mesh, a primitive per material. Vertex
+// attributes share a buffer view per element size (byteStride set), indices one, the
+// instances one. The bytes depend only on the scene.
 #pragma once
 
 #include "runtime/io/byte_sink.h"

@@ -31,11 +31,18 @@ flat_sha=e0be509869ac650cf06970da12f27ae8bee0b05e1785b50a8508e8115f8f46f3
 run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_default.glb"
 run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_auto.glb" --instancing auto --group-by symbol
 cmp -s "$tmp/city_default.glb" "$tmp/city_auto.glb" || fail "the default is not --instancing auto --group-by symbol"
+# The default scene's bytes: 0.300 of the flattened file's with a buffer view per accessor
+# and min/max as 17-digit doubles; 0.290 with the views pooled and shortest min/max
+# (docs/cli.md; the issue's 0.10 is not reached). --instancing on instances even two
+# equal pieces: 2.34 before, 1.98 now.
+max_ratio_on=2.2 max_ratio_auto=0.295
 for mode in on auto; do
   run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_$mode.glb" --instancing $mode --group-by symbol
   validate "$tmp/city_$mode.glb"
+  max_ratio=max_ratio_$mode
   "$python" "$check" "$tmp/city_$mode.glb" "$tmp/city_flat.glb" "$tmp/city.json" --starts 200 \
-    --start-names "$lots" --expect-instanced >"$tmp/check" 2>&1 || { cat "$tmp/check" >&2; fail "city, --instancing $mode"; }
+    --start-names "$lots" --expect-instanced --max-ratio "${!max_ratio}" >"$tmp/check" 2>&1 ||
+    { cat "$tmp/check" >&2; fail "city, --instancing $mode"; }
   echo "city --instancing $mode: $(grep '^bytes' "$tmp/check")"
 done
 # Other groupings and the text form.

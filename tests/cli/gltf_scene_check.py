@@ -5,7 +5,7 @@ EXT_mesh_gpu_instancing, and checks the scene against the flattened output of th
 and its --instances JSON.
 
   gltf_scene_check.py SCENE.glb FLAT.glb INSTANCES.json [--starts N] [--start-names FILE.geojson]
-                      [--tolerance T]
+                      [--tolerance T] [--max-ratio R]
 
 Prints the facts it checked and the byte ratio; exits 1 on the first mismatch."""
 import argparse
@@ -19,7 +19,7 @@ import sys
 
 import numpy as np
 
-COMPONENTS = {5126: np.float32, 5125: np.uint32, 5123: np.uint16, 5121: np.uint8}
+COMPONENTS = {5126: np.float32, 5125: np.uint32, 5123: np.uint16, 5122: np.int16, 5121: np.uint8, 5120: np.int8}
 WIDTH = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
 
@@ -61,13 +61,21 @@ def accessor(doc, bin_chunk, index):
     width = WIDTH[a["type"]]
     start = v.get("byteOffset", 0) + a.get("byteOffset", 0)
     count = a["count"]
-    if "byteStride" in v:
-        fail("byteStride is not expected")
-    end = start + count * width * np.dtype(dtype).itemsize
+    element = width * np.dtype(dtype).itemsize
+    stride = v.get("byteStride", element)
+    if "byteStride" in v and (stride < element or stride % 4):
+        fail(f"buffer view {a['bufferView']}: byteStride {stride} for elements of {element} bytes")
+    if start % np.dtype(dtype).itemsize:
+        fail(f"accessor {index} is not aligned to its component")
+    end = start + (count - 1) * stride + element
     if end > v.get("byteOffset", 0) + v["byteLength"]:
         fail(f"accessor {index} runs past its buffer view")
-    arr = np.frombuffer(bin_chunk[start:end], dtype=dtype)
-    return arr.reshape(count, width) if width > 1 else arr
+    rows = np.lib.stride_tricks.as_strided(np.frombuffer(bin_chunk[start:end] + b"\0" * (stride - element), dtype=np.uint8),
+                                           shape=(count, element), strides=(stride, 1))
+    arr = np.ascontiguousarray(rows).view(dtype).reshape(count, width)
+    if a.get("normalized"):  # glTF's decoding of normalized integers
+        arr = np.maximum(arr.astype(float) / np.iinfo(dtype).max, -1.0)
+    return arr if width > 1 else arr[:, 0]
 
 
 def trs_matrix(t, r, s):
@@ -121,7 +129,8 @@ def world_bounds(doc, bin_chunk):
                 if not (len(t) == len(r) == len(s) == len(c)):
                     fail(f"node {i}: instancing accessors of different counts")
                 norms = np.linalg.norm(r, axis=1)
-                if np.max(np.abs(norms - 1)) > 1e-5:
+                # Normalized 16-bit components are unit to their step (1/32767).
+                if np.max(np.abs(norms - 1)) > (1e-4 if doc["accessors"][a["ROTATION"]].get("normalized") else 1e-5):
                     fail(f"node {i}: a ROTATION is not a unit quaternion")
                 instanced[node["extras"]["asset"]] += len(t)
                 mats = [world @ trs_matrix(t[k], r[k], s[k]) for k in range(len(t))]
@@ -148,6 +157,7 @@ def main():
     ap.add_argument("--start-names", help="a GeoJSON file whose feature ids name the start nodes, in order")
     ap.add_argument("--tolerance", type=float, default=1e-4)
     ap.add_argument("--expect-instanced", action="store_true", help="some instances must be instanced")
+    ap.add_argument("--max-ratio", type=float, help="the scene's bytes over the flattened file's at most this")
     args = ap.parse_args()
 
     doc, bin_chunk = load(args.scene)
@@ -198,6 +208,8 @@ def main():
         fail(f"the world bounds differ from the flattened output's by {diff} (> {args.tolerance})")
     a, b = os.path.getsize(args.scene), os.path.getsize(args.flat)
     print(f"bytes: scene {a}, flattened {b}, ratio {a / b:.4f}")
+    if args.max_ratio is not None and not a / b <= args.max_ratio:
+        fail(f"the scene is {a / b:.4f} of the flattened bytes (> {args.max_ratio})")
     print(f"ok: {len(starts)} start nodes, {len(listed['instances'])} instances")
 
 
