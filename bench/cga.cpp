@@ -24,7 +24,10 @@
 // (lots_per_s: derived and assembled into the scene, by the wall clock; cpu_: by processor
 // time; _written: the .glb encoded too; _flattened: derived and assembled into one mesh;
 // the flattened .glb is `--instancing off --group-by none`'s).
-// Usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene]
+// --earclip: the flat roof of a comb-shaped lot (2 002 corners, 500 teeth; issue #42's took
+// most of a minute) ear-clipped, best of `reps`: {"bench":"cga_earclip","corners":2002,
+// "triangles":2000,"seconds":..} (before #42's fix: tens of seconds; since: milliseconds).
+// Usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene] [--earclip]
 #include "backend/interp/interpreter.h"
 #include "backend/jit/jit.h"
 #include "backend/native/object_cache.h"
@@ -32,6 +35,7 @@
 #include "bench/bench_grammar.h"
 #include "backend/scene_starts.h"
 #include "runtime/assemble.h"
+#include "runtime/cga/polygon_clip.h"
 #include "runtime/io/write_mesh.h"
 #include "runtime/output/gltf_writer.h"
 #include "runtime/output/scene.h"
@@ -190,16 +194,37 @@ void runScene(const ir::Module& m, const std::function<rt::DeriveResult()>& deri
 
 }  // namespace
 
+void runCombEarClip(int reps) {
+  rt::cga::Polygon3 comb = {rt::Vec3(0, 0, 0), rt::Vec3(1000, 0, 0)};
+  const int h = 1000;
+  for (int y = 1; y < h; ++y) {
+    if (y % 2) comb.insert(comb.end(), {rt::Vec3(1000, y, 0), rt::Vec3(1, y, 0)});
+    else comb.insert(comb.end(), {rt::Vec3(1, y, 0), rt::Vec3(1000, y, 0)});
+  }
+  comb.insert(comb.end(), {rt::Vec3(1, h, 0), rt::Vec3(0, h, 0)});
+  double best = 1e300;
+  std::vector<uint32_t> tris;
+  for (int r = 0; r < reps; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    tris.clear();
+    rt::cga::earClip(comb, tris);
+    best = std::min(best, bench::secondsSince(start));
+  }
+  std::printf("{\"bench\":\"cga_earclip\",\"corners\":%zu,\"triangles\":%zu,\"seconds\":%.6f}\n", comb.size(),
+              tris.size() / 3, best);
+}
+
 int main(int argc, char** argv) {
-  bool quick = false, pair = false, sceneOnly = false;
+  bool quick = false, pair = false, sceneOnly = false, earClipOnly = false;
   std::vector<std::string> pairFiles;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--pair") == 0) pair = true;
     else if (std::strcmp(argv[i], "--scene") == 0) sceneOnly = true;
+    else if (std::strcmp(argv[i], "--earclip") == 0) earClipOnly = true;
     else if (pair) pairFiles.push_back(argv[i]);
     else {
-      std::fprintf(stderr, "usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene]\n");
+      std::fprintf(stderr, "usage: bench_cga [--quick] [--pair [A.cga B.fgsg]] [--scene] [--earclip]\n");
       return 2;
     }
   }
@@ -208,6 +233,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  if (earClipOnly) {
+    runCombEarClip(quick ? 1 : 5);
+    return 0;
+  }
   rt::DeriveOptions options;
   size_t skipped = 0;
   std::string error;

