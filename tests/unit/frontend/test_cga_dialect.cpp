@@ -2,6 +2,8 @@
 // checked like any grammar — every syntax item, case chains whose first true condition
 // wins, stochastic weights, inlined functions, annotations, and located errors for what
 // cannot run yet (and for CityEngine operations written in the fgsg dialect).
+#include "cga_compile_helpers.h"
+
 #include "frontend/cga/cga_parse.h"
 #include "ir/ir.h"
 #include "ir/pipeline.h"
@@ -17,21 +19,10 @@ using namespace fgsg;
 
 namespace {
 
-struct Compiled {
-  bool ok = false;
-  ir::Module module;
-  std::string messages;
-};
+using Compiled = frontend::test::CgaCompiled;
 
 Compiled compile(const std::string& text, const std::string& name = "test.cga") {
-  Compiled c;
-  frontend::SourceFile file = frontend::SourceFile::make(name, text);
-  frontend::Diagnostics diags(&file);
-  c.ok = ir::compileSource(file, c.module, diags);
-  std::ostringstream out;
-  diags.print(out);
-  c.messages = out.str();
-  return c;
+  return frontend::test::compileGrammarText(text, name);
 }
 
 const ir::Rule* firstRule(const ir::Module& m, const std::string& symbol, size_t n = 0) {

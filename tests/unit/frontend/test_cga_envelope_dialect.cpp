@@ -1,33 +1,26 @@
 // envelope in both dialects (issue #44): CityEngine's forms become fgsg's Envelope and
 // EnvelopePerEdge (the arrays' shorter one filled with op_envelope's defaults, base height 0
 // and angle 90), and wrong arguments are located errors.
-#include "ir/ir.h"
-#include "ir/pipeline.h"
+#include "cga_compile_helpers.h"
+
 #include "ir/printer.h"
 
 #include <catch2/catch.hpp>
 
-#include <sstream>
+#include <string>
 
 using namespace fgsg;
 
 namespace {
 
-struct EnvelopeCompiled {
-  bool ok = false;
-  std::string ir, messages;
+struct EnvelopeCompiled : frontend::test::CgaCompiled {
+  std::string ir;  // the module printed, when it compiled
 };
 
 EnvelopeCompiled envelopeCompile(const std::string& text, const std::string& name = "test.cga") {
   EnvelopeCompiled c;
-  frontend::SourceFile file = frontend::SourceFile::make(name, text);
-  frontend::Diagnostics diags(&file);
-  ir::Module module;
-  c.ok = ir::compileSource(file, module, diags);
-  std::ostringstream out;
-  diags.print(out);
-  c.messages = out.str();
-  if (c.ok) c.ir = ir::printModule(module);
+  static_cast<frontend::test::CgaCompiled&>(c) = frontend::test::compileGrammarText(text, name);
+  if (c.ok) c.ir = ir::printModule(c.module);
   return c;
 }
 

@@ -2,52 +2,31 @@
 // `F.floorCount`), its initialShape attributes and its styles: what compiles, and the
 // located errors of misuse. The values both engines compute are the corpus's
 // (tests/cga/corpus/150_*, 151_*, 152_*).
-#include "ir/ir.h"
-#include "ir/pipeline.h"
+#include "cga_compile_helpers.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <string>
 
 using namespace fgsg;
 
 namespace {
 
-struct ImportedFunctionsCompiled {
-  bool ok = false;
-  std::string messages;
-};
+using ImportedFunctionsCompiled = frontend::test::CgaCompiled;
 
 ImportedFunctionsCompiled compileImporting(const std::string& text, const std::string& startRule = "") {
   const std::string dir = "/tmp/fgsg_cga_imported_functions_test";
-  std::system(("mkdir -p " + dir).c_str());
-  FILE* f = std::fopen((dir + "/lib.cga").c_str(), "w");
-  std::fputs(
+  frontend::test::writeImportedFile(dir, "lib.cga",
       "attr floorHeight = 3\n"
       "const margin = 1\n"
       "windowWidth(n) = n * 0.5 + margin\n"
       "height = 2 * floorHeight\n"
       "broken(x) = x + nosuch\n"
-      "sumTwice(x) = x + x\n",
-      f);
-  std::fclose(f);
-  ImportedFunctionsCompiled c;
-  frontend::SourceFile file = frontend::SourceFile::make(dir + "/main.cga", text);
-  file.startRule = startRule;
-  frontend::Diagnostics diags(&file);
-  ir::Module module;
-  c.ok = ir::compileSource(file, module, diags);
-  std::ostringstream out;
-  diags.print(out);
-  c.messages = out.str();
-  return c;
+      "sumTwice(x) = x + x\n");
+  return frontend::test::compileGrammarText(text, dir + "/main.cga", startRule);
 }
 
-bool says(const ImportedFunctionsCompiled& c, const std::string& text) {
-  return c.messages.find(text) != std::string::npos;
-}
+bool says(const ImportedFunctionsCompiled& c, const std::string& text) { return c.says(text); }
 
 }  // namespace
 

@@ -2,49 +2,29 @@
 // style, an import's styles list, and the located errors of misuse (file:line:col, the
 // line and a caret). What both engines compute is the corpus's
 // (tests/cga/corpus/155_style_rules*, 156_import_styles*, 157_import_all_styles*).
-#include "ir/ir.h"
-#include "ir/pipeline.h"
+#include "cga_compile_helpers.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <string>
 
 using namespace fgsg;
 
 namespace {
 
-struct StyledCompile {
-  bool ok = false;
-  std::string messages;
-  bool says(const std::string& text) const { return messages.find(text) != std::string::npos; }
-};
+using StyledCompile = frontend::test::CgaCompiled;
 
 // main.cga (`text`) beside lib.cga, a library with the styles Red and Tall (extends Red).
 StyledCompile compileStyled(const std::string& text, const std::string& startRule = "") {
   const std::string dir = "/tmp/fgsg_cga_styles_test";
-  std::system(("mkdir -p " + dir).c_str());
-  FILE* f = std::fopen((dir + "/lib.cga").c_str(), "w");
-  std::fputs(
+  frontend::test::writeImportedFile(dir, "lib.cga",
       "const tile = 2\n"
       "Mass --> extrude(5) T.\n"
       "style Red\n"
       "const tile = 4\n"
       "style Tall extends Red\n"
-      "Mass --> extrude(8) T.\n",
-      f);
-  std::fclose(f);
-  StyledCompile c;
-  frontend::SourceFile file = frontend::SourceFile::make(dir + "/main.cga", text);
-  file.startRule = startRule;
-  frontend::Diagnostics diags(&file);
-  ir::Module module;
-  c.ok = ir::compileSource(file, module, diags);
-  std::ostringstream out;
-  diags.print(out);
-  c.messages = out.str();
-  return c;
+      "Mass --> extrude(8) T.\n");
+  return frontend::test::compileGrammarText(text, dir + "/main.cga", startRule);
 }
 
 }  // namespace
