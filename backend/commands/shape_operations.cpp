@@ -139,11 +139,9 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
 // turns on (vertical ones unless set off, horizontal ones only when set on).
 bool trimByShapePlanes(Derivation& d, const rt::Scope& scope, const rt::GeomRef& geom, rt::cga::Part& out,
                        std::string& error) {
-  std::vector<rt::cga::TrimPlane> planes;
-  for (const rt::cga::TrimPlane& p : d.shapeFrames().trimPlanes(scope.pivot))
-    if (p.horizontal ? (scope.trim & 2) != 0 : (scope.trim & 1) == 0) planes.push_back(p);
   bool emptied = false;
-  return rt::cga::trimGeometry(scope, geom, d.arena(), planes, out, emptied, error);
+  return rt::cga::trimGeometry(scope, geom, d.arena(), d.shapeFrames().enabledTrimPlanes(scope.pivot, scope.trim), out,
+                               emptied, error);
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ class Derivation final : public QueryHost {
   // CityEngine's pivots and trim planes of the start shape being derived (shape_frames.h).
   ShapeFrames& shapeFrames() { return frames_; }
   // Whether comp(f) gives its faces trim planes: only a grammar that can apply them
-  // (trim(), the primitives) pays for them.
+  // (trim(), the primitives, an insert after a comp) pays for them.
   bool makesTrimPlanes() const { return makesTrimPlanes_; }
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
@@ -285,6 +285,11 @@ class Derivation final : public QueryHost {
   // instance_output.cpp
   void initOutput();
   void outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc);
+  // CityEngine's i() on a shape with trim planes (comp(f)'s): when an enabled plane cuts
+  // into the asset's box, the asset's mesh cut by them goes out as geometry of its own
+  // (nothing when it is cut away) and true is returned; false: place it as it is.
+  bool placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
+                         uint32_t paramCount, ir::Loc loc, bool zUp);
   void reserveForLots(size_t lots);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();

@@ -5,6 +5,7 @@
 
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/trim_planes.h"
 #include "runtime/cga/uv_projection.h"
 #include "runtime/float_range.h"
 #include "runtime/insert_fit.h"
@@ -60,6 +61,7 @@ void Derivation::initOutput() {
   const bool cylinders = moduleUses([](const ir::Op& op) {  // @Ge: generalized cylinders (turtle_commands.cpp)
     return op.kind == ir::OpKind::Turtle && op.index == static_cast<uint32_t>(ir::TurtleOp::CylinderEnd);
   });
+  ownGeometryAsset_ = UINT32_MAX;  // else set by the first cut insert (placeTrimmedAsset)
   if (leavesOutput_ || polygons || cylinders) {
     ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back(rt::kOwnGeometryAsset);
@@ -91,7 +93,8 @@ void Derivation::initOutput() {
     if (op.kind != ir::OpKind::ShapeOperation) return false;
     const std::string& name = m_.strings[op.str];
     return name == "ApplyTrimPlanes" || name.rfind("Primitive", 0) == 0;
-  });
+  }) || (moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Comp; }) &&
+         moduleUses([](const ir::Op& op) { return op.kind == ir::OpKind::Instance; }));
   noneId_ = stringId("none");
   partId_ = stringId("part");
   fullId_ = stringId("full");
@@ -144,6 +147,10 @@ rt::Scope Derivation::insertFitted(const ir::Op& op, const rt::Scope& scope) con
 void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
                                const double* params, uint32_t paramCount, ir::Loc loc, bool zUp) {
   if (asset == noneAsset_) return;
+  // Frame 0 has no trim planes: the one test every other instance pays.
+  if (scope.pivot != 0 && asset < m_.assets.size() &&
+      placeTrimmedAsset(asset, scope, symbol, params, paramCount, loc, zUp))
+    return;
   const rt::Mat4 t = rt::insertTransform(scope, zUp);
   if (!rt::unitBoxClearlyFitsFloat(t)) checkInstanceReach(t, symbol, loc);
   // Written in place: a million-segment L-system places an instance per segment.
@@ -218,6 +225,53 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
     inst.texture = projection->texture;
     if (!st.scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
   }
+}
+
+bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
+                                   uint32_t paramCount, ir::Loc loc, bool zUp) {
+  const std::vector<rt::cga::TrimPlane> planes = frames_.enabledTrimPlanes(scope.pivot, scope.trim);
+  if (planes.empty()) return false;
+  // The asset's box wholly on the kept side of every plane: the instance as it is.
+  const rt::Mat4 t = rt::insertTransform(scope, zUp);
+  const double tol = 1e-9 * (1.0 + scope.S.norm());
+  bool cuts = false;
+  for (int c = 0; c < 8 && !cuts; ++c) {
+    const rt::Vec3 corner = (t * Eigen::Vector4d(c & 1, (c >> 1) & 1, (c >> 2) & 1, 1.0)).head<3>();
+    for (const rt::cga::TrimPlane& p : planes)
+      if ((corner - p.point).dot(p.normal) > tol) cuts = true;
+  }
+  if (!cuts) return false;
+  // The asset's triangles in the scope's normalised coordinates (a zUp asset turned as
+  // insertTransform turns it), cut as trim() cuts a solid.
+  std::string error;
+  const rt::Mesh& mesh = assets_.mesh(assets_.resolve(m_.assets[asset], error));
+  auto unit = [&](uint32_t v) {
+    const rt::Vec3 p(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]);
+    return zUp ? rt::Vec3(p.x(), p.z(), 1.0 - p.y()) : p;
+  };
+  rt::cga::LocalGeometry g;
+  g.kind = rt::GeomKind::Polyhedron;
+  for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
+    g.faces.push_back({unit(mesh.indices[k]), unit(mesh.indices[k + 1]), unit(mesh.indices[k + 2])});
+  rt::cga::Part cut;
+  bool emptied = false;
+  rt::cga::trimGeometry(scope, rt::cga::storeGeometry(arena_, g), arena_, planes, cut, emptied, error);
+  if (emptied) return true;
+  rt::Mesh own = rt::cga::ownGeometryMesh(scope, cut.geom, arena_);
+  if (own.indices.empty()) return true;
+  if (ownGeometryAsset_ == UINT32_MAX) {  // the first cut asset of a grammar without leaves
+    ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
+    out_.assets.push_back(rt::kOwnGeometryAsset);
+  }
+  out_.geometries.push_back(std::move(own));  // first, as in outputLeaf
+  const size_t before = out_.instances.size();
+  placeInstance(ownGeometryAsset_, scope, symbol, params, paramCount, loc);
+  if (out_.instances.size() == before) {
+    out_.geometries.pop_back();
+    return true;
+  }
+  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
+  return true;
 }
 
 void Derivation::placePolygon(const std::vector<rt::Vec3>& vertices, const rt::Scope& turtle, ir::Loc loc) {

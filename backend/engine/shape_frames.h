@@ -25,6 +25,14 @@ class ShapeFrames {
     static const std::vector<rt::cga::TrimPlane> none;
     return frame == 0 ? none : frames_[frame - 1].trimPlanes;
   }
+  // Those of frame `frame` the trim attribute `trimBits` (rt::Scope::trim) turns on:
+  // vertical ones unless set off, horizontal ones only when set on.
+  std::vector<rt::cga::TrimPlane> enabledTrimPlanes(uint16_t frame, uint8_t trimBits) const {
+    std::vector<rt::cga::TrimPlane> planes;
+    for (const rt::cga::TrimPlane& p : trimPlanes(frame))
+      if (p.horizontal ? (trimBits & 2) != 0 : (trimBits & 1) == 0) planes.push_back(p);
+    return planes;
+  }
   // A new frame: frame `from` with the pivot set / these trim planes added (R002 at `at`
   // past 65 535 frames for one start shape, the most a scope can name).
   uint16_t withPivot(uint16_t from, const rt::Scope& pivot, ir::Loc at) {

@@ -114,9 +114,13 @@ std::vector<std::vector<TrimPlane>> faceTrimPlanes(const std::vector<Polygon3>& 
         }
       }
       if (found != 1) continue;  // a border edge, or one more than two faces meet at
-      const Vec3 between = normals[size_t(neighbour)] - normals[i];
+      Vec3 between = normals[size_t(neighbour)] - normals[i];
       if (between.norm() < 1e-6 || normals[i].dot(normals[size_t(neighbour)]) < -1.0 + 1e-9) continue;
       const Vec3 along = (b - a).normalized();
+      // The face (inward from its counter-clockwise edge: normal x edge) stays on the kept
+      // side: at a concave edge (an L-shaped building's inner corner) the difference of the
+      // normals points back over the face, and the plane keeps the other side.
+      if (normals[i].cross(along).dot(between) > 0) between = -between;
       planes[i].push_back({a, between.normalized(), std::abs(along.dot(up.normalized())) < horizontalSine});
     }
   }

@@ -27,6 +27,8 @@ NAME.expect.json (every key optional but "lots"):
   "stderr":    [text, ...]  lines that stderr must contain (print)
   "uv":        {image file name: [[u0, v0], [u1, v1]]}  the range of the texture coordinates
                of the faces that use that image (the mesh is then written as OBJ + .mtl)
+  "mesh":      {"area": m2, "volume": m3}  the whole written mesh's triangle area and enclosed
+               volume (signed: closed outward solids add theirs; the mesh is then written as OBJ)
   "tolerance": absolute tolerance for numbers (default 1e-4)
 World axes: x east, y up, z south (north is -z), as fgsg places --lots lots.
 """
@@ -162,6 +164,39 @@ def check(expect, instances_doc, reports_doc, stderr, problems):
             problems.append("stderr lacks %r" % text)
 
 
+def mesh_totals(obj_path):
+    """The written OBJ's total triangle area and enclosed volume (signed, by the divergence
+    theorem: outward faces of closed solids give their volume)."""
+    points, area, volume = [], 0.0, 0.0
+    with open(obj_path, encoding="utf-8") as f:
+        for line in f:
+            w = line.split()
+            if w and w[0] == "v":
+                points.append([float(x) for x in w[1:4]])
+            elif w and w[0] == "f":
+                ix = [int(t.split("/")[0]) - 1 for t in w[1:]]
+                for k in range(1, len(ix) - 1):
+                    a, b, c = points[ix[0]], points[ix[k]], points[ix[k + 1]]
+                    u = [b[i] - a[i] for i in range(3)]
+                    v = [c[i] - a[i] for i in range(3)]
+                    cross = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+                    area += 0.5 * sum(x * x for x in cross) ** 0.5
+                    volume += sum(a[i] * (b[(i + 1) % 3] * c[(i + 2) % 3] - b[(i + 2) % 3] * c[(i + 1) % 3])
+                                  for i in range(3)) / 6
+    return area, volume
+
+
+def check_mesh(expect, obj_path, problems):
+    """"mesh": {"area": A, "volume": V}: the totals of the whole written mesh (an OBJ)."""
+    if "mesh" not in expect:
+        return
+    area, volume = mesh_totals(obj_path)
+    for key, have in (("area", area), ("volume", volume)):
+        want = expect["mesh"].get(key)
+        if want is not None and not close(have, want, expect.get("tolerance", 1e-4)):
+            problems.append("mesh %s: %.7g, expected %.7g" % (key, have, want))
+
+
 def uv_ranges(obj_path):
     """{image file name: [[u0, v0], [u1, v1]]} over the faces of an OBJ that use it (map_Kd)."""
     images, image = {}, None
@@ -202,7 +237,7 @@ def run_one(fgsg, folder, name, work):
     outputs, problems = {}, []
     for engine in ("interp", "jit"):
         inst, rep = os.path.join(work, name + "." + engine + ".json"), os.path.join(work, name + "." + engine + ".report.json")
-        mesh = os.path.join(work, name + "." + engine + (".obj" if "uv" in expect else ".glb"))
+        mesh = os.path.join(work, name + "." + engine + (".obj" if "uv" in expect or "mesh" in expect else ".glb"))
         cmd = [fgsg, "run", cga, "--engine=" + engine, "-o", mesh,
                "--instances", inst, "--report", rep, "--stats"]
         if "lots" in expect:
@@ -223,6 +258,7 @@ def run_one(fgsg, folder, name, work):
         outputs[engine] = (inst_text, rep_text)
         engine_problems = []
         check(expect, json.loads(inst_text), json.loads(rep_text), run.stderr, engine_problems)
+        check_mesh(expect, mesh, engine_problems)
         if "uv" in expect:
             have = uv_ranges(mesh)
             for image, want in expect["uv"].items():

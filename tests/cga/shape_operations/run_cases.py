@@ -16,7 +16,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "corpus"))
-from run_corpus import check  # noqa: E402  the corpus's expectation checks
+from run_corpus import check, check_mesh  # noqa: E402  the corpus's expectation checks
 
 
 def run_one(fgsg, name, work):
@@ -26,8 +26,9 @@ def run_one(fgsg, name, work):
     for engine in ("interp", "jit"):
         inst = os.path.join(work, name + "." + engine + ".json")
         rep = os.path.join(work, name + "." + engine + ".report.json")
+        mesh = os.path.join(work, name + "." + engine + (".obj" if "mesh" in expect else ".glb"))
         cmd = [fgsg, "run", os.path.join(HERE, name + ".fgsg"), "--engine=" + engine, "-o",
-               os.path.join(work, name + ".glb"), "--instances", inst, "--report", rep] + expect.get("args", [])
+               mesh, "--instances", inst, "--report", rep] + expect.get("args", [])
         run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
         if run.returncode != 0:
             return ["%s: exit %d: %s" % (engine, run.returncode, run.stderr.strip()[:400])]
@@ -37,6 +38,7 @@ def run_one(fgsg, name, work):
             report = json.load(f)
         found = []
         check(expect, json.loads(texts[engine]), report, run.stderr, found)
+        check_mesh(expect, mesh, found)
         problems += ["%s: %s" % (engine, p) for p in found]
     if texts["interp"] != texts["jit"]:
         problems.append("the engines' instances differ")
