@@ -8,6 +8,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/compile_file.h"
+#include "cli/derive_flags.h"
 #include "cli/options.h"
 #include "runtime/io/output_transaction.h"
 
@@ -25,6 +26,7 @@ struct CompileOptions {
   std::string headerDir;  // empty: the library's folder
   bool quiet = false;
   std::string name;       // NAME of libNAME.so
+  std::string startRule;  // --start-rule: the rule (and .cga style) the library derives with
 };
 
 CompileOptions parseCompileOptions(const Args& args) {
@@ -37,6 +39,7 @@ CompileOptions parseCompileOptions(const Args& args) {
     o.headerDir = v;
   });
   cl.flag("-q,--quiet", o.quiet);
+  startRuleFlag(cl, o.startRule);
   cl.parse(args);
   if (o.file.empty()) throw UsageError{"no grammar file given: fgsg compile FILE -o libNAME.so"};
   if (o.output.empty()) o.output = "lib" + std::filesystem::path(o.file).stem().string() + ".so";
@@ -66,7 +69,7 @@ int compileCommand(const Args& args) {
     return 1;
   }
 
-  auto compiled = compileFile(opt.file, !opt.quiet);
+  auto compiled = compileFile(opt.file, !opt.quiet, opt.startRule);
   if (!compiled) return 1;
 
   backend::codegen::ProgramCodegenOptions codegen;
@@ -74,6 +77,7 @@ int compileCommand(const Args& args) {
   codegen.embedSource = true;
   codegen.source = compiled->source.text;
   codegen.sourceName = opt.file;  // as fgsg run names it: diagnostics, the asset folders
+  codegen.startRule = opt.startRule;  // the loader compiles the text again in this rule and style
   std::string object;
   try {
     object = backend::native::llvmPlugin().compileProgramObject(compiled->module, codegen,

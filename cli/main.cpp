@@ -27,7 +27,7 @@ usage:
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)
   fgsg synth EXAMPLE --size X Y Z [...]   example-based model synthesis
   fgsg repl [--engine=E]   build a grammar interactively (:help inside; a script on stdin)
-  fgsg compile FILE [-o libNAME.so] [--header DIR] [--quiet]
+  fgsg compile FILE [-o libNAME.so] [--header DIR] [--start-rule NAME] [--quiet]
                            compile to a shared library and its C header NAME.h
   fgsg atlas MESH [--preview atlas.png] [--resolution N] [--paint x,y,z,r]...
                  [--paint-slab x,y,z,nx,ny,nz,w]... [--mask m.png]

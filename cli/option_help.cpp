@@ -83,6 +83,7 @@ const char* const kRepl = "%ENGINE%";
 const char* const kCompile =
     "  -o, --output FILE  the library, libNAME.so (default: lib + FILE's stem + .so)\n"
     "  --header DIR       write NAME.h into DIR (default: beside the library)\n"
+    "  --start-rule NAME  a .cga grammar's start rule (Style$Rule: in that style) for the library\n"
     "  -q, --quiet        no warnings, no 'wrote libNAME.so and NAME.h' line\n";
 
 const char* const kAtlas =

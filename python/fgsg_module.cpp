@@ -111,7 +111,8 @@ struct Grammar {
       throw std::runtime_error(path + ": compiled for ABI version " + std::to_string(program->abiVersion) +
                                ", this fgsg runs " + std::to_string(FGSG_ABI_VERSION) + ": compile it again");
     if (!program->source) throw std::runtime_error(path + ": the program carries no grammar text");
-    auto g = compile(program->source, program->sourceName && *program->sourceName ? program->sourceName : path, "");
+    auto g = compile(program->source, program->sourceName && *program->sourceName ? program->sourceName : path,
+                     program->startRule ? program->startRule : "");  // fgsg compile --start-rule's
     g->program = program;
     g->library = std::move(library);
     return g;

@@ -73,7 +73,7 @@ static_assert(offsetof(FgsgContext, stop) == 0 && offsetof(FgsgContext, inexact)
 
 // Bumped whenever the layout below or an entry point's meaning changes: a compiled
 // library refuses to run against a runtime of another version.
-#define FGSG_ABI_VERSION 8u
+#define FGSG_ABI_VERSION 9u
 
 // A compiled grammar as generated code lays it out: one constant in each JIT unit and
 // in each compiled library. Block ids, rule and alternative indices are those of
@@ -108,6 +108,9 @@ struct FgsgProgram {
   const FgsgDirectFn* direct;  // by symbol: null unless the symbol is direct
   const uint8_t* directPlaces;  // by symbol: 1 when a direct symbol's shapes may place instances
   uint32_t scopeSize;          // sizeof(rt::Scope) the direct code was compiled for
+  // `fgsg compile --start-rule Style$Rule`: the start rule (and .cga style) the code was
+  // compiled for, which the loader compiles `source` with again; null: the grammar's own.
+  const char* startRule;
 };
 
 extern "C" {

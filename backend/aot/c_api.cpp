@@ -161,6 +161,7 @@ bool compileProgramSource(fgsg_generator* g) {
   const FgsgProgram* p = g->program;
   const std::string name = p->sourceName && *p->sourceName ? p->sourceName : "<compiled grammar>";
   g->source = frontend::SourceFile::make(name, p->source);
+  g->source.startRule = p->startRule ? p->startRule : "";  // the rule and style it was compiled for
   frontend::Diagnostics diags(&g->source);
   bool ok;
   {

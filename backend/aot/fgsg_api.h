@@ -29,7 +29,10 @@
 extern "C" {
 #endif
 
-/* The compiled grammar: a constant exported by a library built with `fgsg compile`. */
+/* The compiled grammar: a constant exported by a library built with `fgsg compile`.
+ * It derives with the start rule (and, for a .cga grammar, the style) chosen by
+ * `fgsg compile --start-rule [Style$]Rule`, the grammar's own @StartRule without it; one
+ * library holds one choice: compile the grammar once per style to use several. */
 struct FgsgProgram;
 
 /* One grammar with its options and the result of its last generation. */

@@ -73,7 +73,7 @@ void ProgramCodegen::table(const std::vector<llvm::Constant*>& blocks,
                            const std::vector<llvm::Constant*>& direct,
                            const std::vector<llvm::Constant*>& placing) {
   llvm::Type* i32 = b_.getInt32Ty();
-  auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_, i32, ptr_, ptr_, i32});
+  auto* type = llvm::StructType::get(c_, {i32, i32, ptr_, i32, ptr_, i32, ptr_, ptr_, ptr_, i32, ptr_, ptr_, i32, ptr_});
   llvm::Constant* placingArray = nullPtr();
   if (!placing.empty()) {
     auto* bytes = llvm::ArrayType::get(b_.getInt8Ty(), placing.size());
@@ -87,7 +87,8 @@ void ProgramCodegen::table(const std::vector<llvm::Constant*>& blocks,
              array(weights, "fgsg_weights"),
              opt_.embedSource ? string(opt_.source, "fgsg_source") : nullPtr(),
              opt_.embedSource ? string(opt_.sourceName, "fgsg_source_name") : nullPtr(),
-             count(direct.size()), array(direct, "fgsg_direct"), placingArray, count(sizeof(rt::Scope))});
+             count(direct.size()), array(direct, "fgsg_direct"), placingArray, count(sizeof(rt::Scope)),
+             opt_.embedSource && !opt_.startRule.empty() ? string(opt_.startRule, "fgsg_start_rule") : nullPtr()});
   new llvm::GlobalVariable(m_, type, true, llvm::GlobalValue::ExternalLinkage, init, opt_.tableSymbol);
 }
 

@@ -22,6 +22,7 @@ struct ProgramCodegenOptions {
   bool embedSource = false;
   std::string source;
   std::string sourceName;
+  std::string startRule;  // fgsg compile --start-rule (FgsgProgram::startRule); "": none
 };
 
 void emitProgram(llvm::Module& out, const ir::Module& m, const ProgramCodegenOptions& options);

@@ -50,6 +50,17 @@ def test_a_compiled_library_runs_with_the_same_bytes(tmp_path):
         fgsg.Grammar.from_library(library, name="other")
 
 
+def test_a_library_compiled_with_a_start_rule_derives_in_its_style(tmp_path):
+    # fgsg compile --start-rule Glass$Lot (#43): blue Panes and a Cap box, as fgsg run's.
+    styles = os.path.join(SOURCE, "tests", "cga", "corpus", "155_style_rules.cga")
+    library = tmp_path / "libglass.so"
+    subprocess.run([FGSG, "compile", styles, "-o", str(library), "--quiet", "--start-rule", "Glass$Lot"], check=True)
+    fgsg.Grammar.from_library(library).generate().write(tmp_path / "lib.glb")
+    glass = run_cli(styles, tmp_path / "glass.glb", "--start-rule", "Glass$Lot")
+    assert (tmp_path / "lib.glb").read_bytes() == glass
+    assert glass != run_cli(styles, tmp_path / "default.glb")
+
+
 def test_a_grammar_with_imports_takes_qualified_attrs(tmp_path):
     house = os.path.join(SOURCE, "examples", "stdlib_house.fgsg")
     r = fgsg.Grammar.from_file(house).generate(attrs={"facade.floors": 3, "roof.kind": "gable"})
