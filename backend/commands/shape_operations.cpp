@@ -137,11 +137,8 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
 
 // trim() (op_trim): the shape's geometry cut by its trim planes, those the trim attribute
 // turns on (vertical ones unless set off, horizontal ones only when set on).
-bool trimByShapePlanes(Derivation& d, const rt::Scope& scope, const rt::GeomRef& geom, rt::cga::Part& out,
-                       std::string& error) {
-  bool emptied = false;
-  return rt::cga::trimGeometry(scope, geom, d.arena(), d.shapeFrames().enabledTrimPlanes(scope.pivot, scope.trim), out,
-                               emptied, error);
+void trimByShapePlanes(Derivation& d, const rt::Scope& scope, const rt::GeomRef& geom, rt::cga::Part& out) {
+  rt::cga::trimGeometry(scope, geom, d.arena(), d.shapeFrames().enabledTrimPlanes(scope.pivot, scope.trim), out);
 }
 
 }  // namespace
@@ -273,10 +270,10 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
     }
   } else if (name.rfind("Primitive", 0) == 0) {
     // A primitive is trimmed as it is made (op_trim: "automatically performed").
-    ok = rt::cga::primitive(st.scope, name, std::vector<double>(a, a + n), d.arena(), part, error) &&
-         trimByShapePlanes(d, part.scope, part.geom, part, error);
+    ok = rt::cga::primitive(st.scope, name, std::vector<double>(a, a + n), d.arena(), part, error);
+    if (ok) trimByShapePlanes(d, part.scope, part.geom, part);
   } else if (name == "ApplyTrimPlanes") {
-    ok = trimByShapePlanes(d, st.scope, st.geom, part, error);
+    trimByShapePlanes(d, st.scope, st.geom, part);
   } else if (name == "SetTrim") {
     // SetTrim(0 horizontal | 1 vertical, on): the bits of rt::Scope::trim, 0 the defaults.
     if (a[0] != 0 && a[0] != 1)

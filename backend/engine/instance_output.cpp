@@ -254,9 +254,7 @@ bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint3
   for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
     g.faces.push_back({unit(mesh.indices[k]), unit(mesh.indices[k + 1]), unit(mesh.indices[k + 2])});
   rt::cga::Part cut;
-  bool emptied = false;
-  rt::cga::trimGeometry(scope, rt::cga::storeGeometry(arena_, g), arena_, planes, cut, emptied, error);
-  if (emptied) return true;
+  if (rt::cga::trimGeometry(scope, rt::cga::storeGeometry(arena_, g), arena_, planes, cut)) return true;  // all cut away
   rt::Mesh own = rt::cga::ownGeometryMesh(scope, cut.geom, arena_);
   if (own.indices.empty()) return true;
   if (ownGeometryAsset_ == UINT32_MAX) {  // the first cut asset of a grammar without leaves

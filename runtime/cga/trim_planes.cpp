@@ -166,11 +166,9 @@ std::vector<std::vector<TrimPlane>> compTrimPlanes(const Scope& scope, const Geo
 }
 
 bool trimGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const std::vector<TrimPlane>& planes,
-                  Part& out, bool& emptied, std::string& error) {
-  (void)error;
+                  Part& out) {
   out = Part{scope, geom, false, 0};
-  emptied = false;
-  if (planes.empty() || geom.kind == GeomKind::Edge) return true;
+  if (planes.empty() || geom.kind == GeomKind::Edge) return false;
   LocalGeometry g;
   if (geom.kind == GeomKind::Box) {
     g.kind = GeomKind::Polyhedron;
@@ -200,14 +198,13 @@ bool trimGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena,
     g.faces = std::move(kept);
     if (g.faces.empty()) break;
   }
-  if (!changed) return true;
+  if (!changed) return false;
   if (g.faces.empty()) {
-    emptied = true;
     out.geom = arena.addPolyhedron({});
     return true;
   }
   out.geom = storeGeometry(arena, g);
-  return true;
+  return false;
 }
 
 }  // namespace fgsg::rt::cga

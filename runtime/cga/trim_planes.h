@@ -35,8 +35,9 @@ std::vector<std::vector<TrimPlane>> compTrimPlanes(const Scope& scope, const Geo
 
 // trim(): the geometry cut by `planes`, the scope kept. A solid's cuts are closed by cap
 // faces (the cut edges chained into loops), a polygon is clipped, an edge stays as it is.
-// `emptied`: nothing was left (out.geom is then a polyhedron without faces).
+// Returns true when nothing was left (out.geom is then a polyhedron without faces); it
+// cannot fail.
 bool trimGeometry(const Scope& scope, const GeomRef& geom, GeometryArena& arena, const std::vector<TrimPlane>& planes,
-                  Part& out, bool& emptied, std::string& error);
+                  Part& out);
 
 }  // namespace fgsg::rt::cga
