@@ -139,33 +139,31 @@ G
 awk '$1 == "cells.coverage" && $2 >= 0.999 {ok = 1} END {exit !ok}' "$tmp/lroof.out" ||
   fail "L roof: $(grep cells.coverage "$tmp/lroof.out" || echo no cells.coverage line)"
 
+# covered_by_mitred_solids NAME GRAMMAR: in both engines the run covers its faces
+# (cells.coverage >= 0.9999), places more than 1 000 cells, some of them mitred (drawn as
+# their solids, so not 12 triangles each), and both engines write the same bytes.
+covered_by_mitred_solids() {
+  local name=$1 grammar=$2 e n t
+  for e in interp jit; do
+    "$fgsg" run "$grammar" --engine $e --stats -o "$tmp/mitred.$e.obj" >"$tmp/mitred.out" 2>&1 ||
+      fail "$name ($e): exit $?: $(cat "$tmp/mitred.out")"
+    awk '$1 == "cells.coverage" && $2 >= 0.9999 {ok = 1} END {exit !ok}' "$tmp/mitred.out" ||
+      fail "$name ($e): $(grep cells.coverage "$tmp/mitred.out" || echo no cells.coverage line)"
+    read -r n t < <(awk '$1 == "instances" {n = $2} $1 == "triangles" {t = $2} END {print n, t}' "$tmp/mitred.out")
+    [ "${n:-0}" -gt 1000 ] && [ "$t" != $((12 * n)) ] || fail "$name ($e): $n cells, $t triangles"
+  done
+  cmp -s "$tmp/mitred.interp.obj" "$tmp/mitred.jit.obj" || fail "$name: the engines wrote different bytes"
+}
+
 # Mitred cells (#46): the same roof tiled on its faces only, no ridge tiles. Over a valley
 # the two faces' layers of tiles overlap; the tiles there are mitred on the plane halving
-# the valley's angle instead of dropped (0.9889 covered before, docs/cells.md), alike in
-# both engines, their solids drawn (a mitred tile is no 12-triangle box).
+# the valley's angle instead of dropped (0.9889 covered before, docs/cells.md).
 sed 's/^Feature : !Feature.corner /Feature : Feature.face /' "$tmp/lroof.fgsg" >"$tmp/lfaces.fgsg"
-for e in interp jit; do
-  "$fgsg" run "$tmp/lfaces.fgsg" --engine $e --stats -o "$tmp/lfaces.$e.obj" >"$tmp/lfaces.out" 2>&1 ||
-    fail "L roof, faces only ($e): exit $?: $(cat "$tmp/lfaces.out")"
-  awk '$1 == "cells.coverage" && $2 >= 0.9999 {ok = 1} END {exit !ok}' "$tmp/lfaces.out" ||
-    fail "L roof, faces only ($e): $(grep cells.coverage "$tmp/lfaces.out" || echo no cells.coverage line)"
-  read -r n t < <(awk '$1 == "instances" {n = $2} $1 == "triangles" {t = $2} END {print n, t}' "$tmp/lfaces.out")
-  [ "${n:-0}" -gt 1000 ] && [ "$t" != $((12 * n)) ] || fail "L roof, faces only ($e): $n cells, $t triangles"
-done
-cmp -s "$tmp/lfaces.interp.obj" "$tmp/lfaces.jit.obj" || fail "L roof, faces only: the engines wrote different bytes"
+covered_by_mitred_solids "L roof, faces only" "$tmp/lfaces.fgsg"
 
 # Corners that are not square (#46): the hexagonal tower's walls meet at 120 degrees; its
-# corner bricks are mitred on the planes halving those angles (docs/cells.md), so the walls
-# are all covered, alike in both engines, the mitred bricks drawn as their solids.
-for e in interp jit; do
-  "$fgsg" run examples/hexagonal_tower.fgsg --engine $e --stats -o "$tmp/hex.$e.obj" >"$tmp/hex.out" 2>&1 ||
-    fail "hexagonal tower ($e): exit $?: $(cat "$tmp/hex.out")"
-  awk '$1 == "cells.coverage" && $2 >= 0.9999 {ok = 1} END {exit !ok}' "$tmp/hex.out" ||
-    fail "hexagonal tower ($e): $(grep cells.coverage "$tmp/hex.out" || echo no cells.coverage line)"
-  read -r n t < <(awk '$1 == "instances" {n = $2} $1 == "triangles" {t = $2} END {print n, t}' "$tmp/hex.out")
-  [ "${n:-0}" -gt 1000 ] && [ "$t" != $((12 * n)) ] || fail "hexagonal tower ($e): $n cells, $t triangles"
-done
-cmp -s "$tmp/hex.interp.obj" "$tmp/hex.jit.obj" || fail "hexagonal tower: the engines wrote different bytes"
+# corner bricks are mitred on the planes halving those angles (docs/cells.md).
+covered_by_mitred_solids "hexagonal tower" examples/hexagonal_tower.fgsg
 
 # grammar_fails CODE PATTERN GRAMMAR-TEXT: running the grammar fails with CODE, prints
 # PATTERN (lib.sh's expect) and writes no output.
