@@ -103,6 +103,7 @@ class Analyzer {
   // its default from the attrs' defaults in `out`; false (nothing reported) when it reads
   // more than constants, attrs and math.
   bool importerValue(const Expr& e, ConstValue& out);
+  void collectComputedAttrs(std::vector<const ValueDecl*> pending);
   static std::string wholeNumberText(double v);
   static std::string formatNumber(double v);
 

@@ -22,6 +22,9 @@ constexpr int kMaxDeriveCount = 2147483647;  // INT32_MAX: ir::Module::steps and
 
 void Analyzer::collectValues() {
   std::set<std::string> seen;
+  // A CityEngine attr computed from other attrs (`attr groundFloorH = floorH + 1`, in any
+  // order): set aside until the attrs it reads are known, then it follows them at run time.
+  std::vector<const ValueDecl*> computedAttrs;
   for (const auto& v : prog_.values) {
     if (!seen.insert(v.name).second) {
       diags_.error("E022", v.range, "'" + v.name + "' is declared twice");
@@ -30,6 +33,10 @@ void Analyzer::collectValues() {
     ConstValue value;
     if (v.isAttr && v.fromImporter && !evalConst(*v.value, value) && importerValue(*v.value, value)) {
       res_.attrs.push_back({v.name, value, v.range, v.annotations, v.value.get()});
+      continue;
+    }
+    if (prog_.cityEngineLots && v.isAttr && !v.fromImporter && !evalConst(*v.value, value) && !zeroDivisor(*v.value)) {
+      computedAttrs.push_back(&v);
       continue;
     }
     if (!evalConst(*v.value, value)) {
@@ -52,6 +59,34 @@ void Analyzer::collectValues() {
       res_.attrs.push_back({v.name, value, v.range, v.annotations});
     else
       res_.constants[v.name] = value;
+  }
+  collectComputedAttrs(computedAttrs);
+}
+
+void Analyzer::collectComputedAttrs(std::vector<const ValueDecl*> pending) {
+  // Each pass takes those whose attrs are now known, so an attr comes after those it reads
+  // (attributeSlots computes them in that order); what is left reads a random number, a
+  // query, an unknown name or itself through others.
+  for (bool progress = true; progress && !pending.empty();) {
+    progress = false;
+    for (auto it = pending.begin(); it != pending.end();) {
+      ConstValue value;
+      if (!importerValue(*(*it)->value, value)) {
+        ++it;
+        continue;
+      }
+      res_.attrs.push_back({(*it)->name, value, (*it)->range, (*it)->annotations, (*it)->value.get()});
+      it = pending.erase(it);
+      progress = true;
+    }
+  }
+  for (const ValueDecl* v : pending) {
+    failedValues_.insert(v->name);
+    diags_.error("E023", v->value->range,
+                 "the default of attr '" + v->name +
+                     "' may use numbers, strings, consts, functions, other attrs and math functions; "
+                     "not random numbers, shape queries or a cycle of attrs (CityEngine CGA; not "
+                     "supported yet)");
   }
 }
 
