@@ -68,6 +68,10 @@ expect 2 "--fixed-width needs A,B,C:N" -- "$fgsg" synth examples/synthesis/conti
 expect 2 "--on-ground and --floating exclude each other" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --on-ground --floating
 expect 2 "--fill needs a number from 0 to 1" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fill 2
 expect 1 "E751.*which no face of the example has" -- "$fgsg" synth examples/synthesis/continuous/box.obj --size 4 4 4 --fixed-width 1,1,0:2
+# Standing on the ground the bridge keeps its soffit (the header's run above); a box too
+# low for a width of 5 leaves room for nothing: E752, nothing written.
+expect 1 "bridge.obj: error\[E752\]: the synthesized model is empty \(0 parts\), nothing was written: --fixed-width 0,1,0:5 makes every object 5 plane spacings across" -- "$fgsg" synth examples/synthesis/continuous/bridge.obj --size 8 8 3 --fixed-width 0,1,0:5 -o "$tmp/low_bridge.obj"
+[ -e "$tmp/low_bridge.obj" ] && fail "an empty bridge model was written"
 expect 1 "E751.*more than 8000000 vertices" -- "$fgsg" synth examples/synthesis/continuous/houses.obj --size 4000 4000 4000
 # In a grammar: sizes and the parts' symbol checked.
 mkdir -p "$tmp/g"

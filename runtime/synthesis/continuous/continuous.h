@@ -51,8 +51,10 @@ struct ContinuousOptions {
   // plane, without fixing any width — fewer vertices where a steep slope's planes crowd
   // (a 2:1 slope's planes lie 1/sqrt(5) apart), faces of that slope at fewer places.
   std::vector<FixedWidth> planeStep;
-  // Every solid stands on the box's floor (y = 0): floor vertices may carry solid above
-  // them, and no face looks down anywhere else (no overhangs, nothing floats).
+  // Every solid stands on the box's floor (y = 0), as the example on its lowest level:
+  // floor vertices may carry solid above them; above the floor a face looks down only in
+  // a figure the example has above its own ground plane (a bridge's soffit, an arch), so
+  // a pier's foot or a box's bottom corner never floats.
   bool onGround = false;
   double fill = 0.5;         // chance weight of labels with solid in them against empty space
   // Connectivity (§4.6.2): > 0 grows the solid from this many seeds, a vertex taking

@@ -29,6 +29,7 @@ struct Problem {
   const ContinuousOptions& o;
   Arrangement A;
   std::vector<Label> labels;
+  std::vector<uint8_t> raised;       // per label: found in the example above its ground plane
   int k = 0, W = 0;
   TransitionTable t;
   SiteGraph g;
@@ -155,6 +156,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
   LabelCatalog cat;
   if (!exampleLabels(ex, cat, [&] { return P.timeUp(); })) return timeLimit();
   P.labels = cat.labels;
+  P.raised = cat.raised;
   P.k = int(P.labels.size());
   if (P.k > 4096) { error = "the example has more than 4096 distinct vertex figures"; return false; }
   P.W = paddedWordsFor(P.k);
@@ -163,7 +165,8 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
 
   // Allowed labels per vertex (§4.5.4): those whose half-spaces all have a plane through
   // it, less those crossing a fixed-width plane (§4.6.1); boundary vertices: empty space
-  // (with onGround the floor holds solids: empty below, anything above).
+  // (with onGround the floor holds solids: empty below, anything above; above the floor a
+  // face may look down only in a figure the example has above its own ground plane).
   const int yAxis = int(std::find(ex.dirs.begin(), ex.dirs.end(), IVec3{0, 1, 0}) - ex.dirs.begin());
   P.place.resize(A.vertexCount());
   for (size_t v = 0; v < A.vertexCount(); ++v) {
@@ -204,7 +207,7 @@ bool compile(Problem& P, const ExampleSolid& ex, ContinuousStats& stats, std::st
         for (size_t i = 0; i < step.size() && ok; ++i)
           if (((fixedDirs & A.planes[v]) >> i) & 1 && crosses(A.dirs, l, int(i))) ok = false;
         if (ok && P.place[v] == kFloor) ok = emptyBelow(A.dirs, l, yAxis);
-        if (ok && o.onGround && P.place[v] == kInside) ok = !looksDown(A.dirs, l);
+        if (ok && o.onGround && P.place[v] == kInside) ok = P.raised[size_t(b)] || !looksDown(A.dirs, l);
         for (size_t s = 0; s < o.mirrorAxes.size() && ok; ++s)
           if ((onMirror[v] >> s) & 1) ok = labelImage[s][size_t(b)] == b;
         if (ok) setBit(d, b);

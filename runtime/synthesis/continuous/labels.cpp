@@ -56,15 +56,28 @@ Label figureAt(const ExampleSolid& s, const InsideTest& solid, const DVec3& p, u
 
 bool exampleLabels(const ExampleSolid& s, LabelCatalog& c, const std::function<bool()>& timeUp) {
   c = LabelCatalog{};
-  auto add = [&](const Label& l) {
-    if (std::find(c.labels.begin(), c.labels.end(), l) == c.labels.end()) c.labels.push_back(l);
+  // The ground plane: the example's least y; a point a little above it is raised.
+  double ground = 0;
+  for (size_t v = 0; v < s.vertices.size(); ++v) ground = v == 0 ? s.vertices[v][1] : std::min(ground, s.vertices[v][1]);
+  const double aboveGround = ground + 1e-9 * std::max(1.0, s.diagonal);
+  auto add = [&](const Label& l, bool raised) {
+    const auto it = std::find(c.labels.begin(), c.labels.end(), l);
+    if (it == c.labels.end()) {
+      c.labels.push_back(l);
+      c.raised.push_back(raised);
+    } else {
+      c.raised[size_t(it - c.labels.begin())] |= uint8_t(raised);
+    }
   };
-  add(Label{0, {}});   // outside
-  add(Label{0, {0}});  // inside
-  // Faces: the half-space behind the outward normal.
+  add(Label{0, {}}, true);   // outside
+  add(Label{0, {0}}, true);  // inside
+  // Faces: the half-space behind the outward normal; raised unless the face lies on the
+  // ground plane (its interior is above it when one corner is).
   for (size_t f = 0; f < s.polygons.size(); ++f) {
     const uint32_t bit = 1u << s.polygonDirection[f];
-    add(Label{bit, {s.polygonAlong[f] ? 0u : bit}});
+    bool raised = false;
+    for (int v : s.polygons[f]) raised |= s.vertices[size_t(v)][1] > aboveGround;
+    add(Label{bit, {s.polygonAlong[f] ? 0u : bit}}, raised);
   }
   // The step off a point: well inside its neighbourhood (a tenth of the distance to the
   // nearest other vertex, at most 1e-3 of the example's size).
@@ -90,11 +103,12 @@ bool exampleLabels(const ExampleSolid& s, LabelCatalog& c, const std::function<b
     if (timeUp()) return false;
     const DVec3 &a = s.vertices[size_t(e.first)], &b = s.vertices[size_t(e.second)];
     const DVec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
-    add(figureAt(s, solid, mid, mask, stepAt(mid, -1)));
+    add(figureAt(s, solid, mid, mask, stepAt(mid, -1)), mid[1] > aboveGround);
   }
   for (size_t v = 0; v < s.vertices.size(); ++v) {
     if (timeUp()) return false;
-    if (vertexMask[v]) add(figureAt(s, solid, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v))));
+    if (vertexMask[v])
+      add(figureAt(s, solid, s.vertices[v], vertexMask[v], stepAt(s.vertices[v], int(v))), s.vertices[v][1] > aboveGround);
   }
   return true;
 }

@@ -33,6 +33,12 @@ struct Label {
 
 struct LabelCatalog {
   std::vector<Label> labels;  // 0: empty space, 1: solid interior
+  // Per label: the example has it somewhere above its lowest level (its ground plane,
+  // the least y). A figure found only on that plane (a pier's foot) is where the example
+  // stands on the ground; one found above it with a face looking down is a soffit (a
+  // bridge deck's underside), which the example allows off the ground (§4.5.3 with the
+  // ground as the bottom boundary only, Fig. 3.11).
+  std::vector<uint8_t> raised;
   static constexpr int kEmpty = 0, kFull = 1;
 };
 

@@ -9,6 +9,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -47,6 +48,15 @@ io::MeshFileContent lShape() {
 io::MeshFileContent house() {
   return polygons({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}, {2, 1, 2}, {1, 2, 2}, {0, 1, 2}},
                   {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}, {0, 1, 6, 5}, {1, 2, 7, 6}, {0, 5, 9, 4}, {2, 3, 8, 7}, {4, 9, 8, 3}});
+}
+
+// The bridge of examples/synthesis/continuous/bridge.obj: piers x 0..1 and 3..4 on the
+// ground, 2 high, and a deck y 2..3 over x 0..4 whose underside (x 1..3) looks down; 1 deep.
+io::MeshFileContent bridge() {
+  return polygons({{0, 0, 1}, {1, 0, 1}, {1, 2, 1}, {3, 2, 1}, {3, 0, 1}, {4, 0, 1}, {4, 3, 1}, {0, 3, 1},
+                   {0, 0, 0}, {1, 0, 0}, {1, 2, 0}, {3, 2, 0}, {3, 0, 0}, {4, 0, 0}, {4, 3, 0}, {0, 3, 0}},
+                  {{0, 1, 2, 3, 4, 5, 6, 7}, {15, 14, 13, 12, 11, 10, 9, 8}, {0, 8, 9, 1}, {1, 9, 10, 2}, {2, 10, 11, 3},
+                   {3, 11, 12, 4}, {4, 12, 13, 5}, {5, 13, 14, 6}, {6, 14, 15, 7}, {7, 15, 8, 0}});
 }
 
 ExampleSolid solid(const io::MeshFileContent& m) {
@@ -317,6 +327,59 @@ TEST_CASE("continuous: on the ground every solid stands on the floor", "[continu
   const auto ps = parts(r.mesh);
   REQUIRE(!ps.empty());
   for (const auto& [lo, hi] : ps) CHECK(lo[1] == 0.0f);
+}
+
+TEST_CASE("continuous: figures found only on the example's ground plane are not raised", "[continuous]") {
+  // A box: its bottom face, 4 bottom edges and 4 bottom corners lie on its lowest level
+  // only; empty, full, 5 faces, 8 edges and 4 corners occur above it.
+  const LabelCatalog b = exampleLabels(solid(box(1, 1, 1)));
+  REQUIRE(b.labels.size() == 28);
+  REQUIRE(b.raised.size() == 28);
+  CHECK(std::count(b.raised.begin(), b.raised.end(), 0) == 9);
+  // The bridge: the bottom face and the bottom edges along x recur at the soffit; the
+  // piers' bottom edges along z (two kinds) and their 4 kinds of foot corners do not.
+  const LabelCatalog r = exampleLabels(solid(bridge()));
+  CHECK(r.labels.size() == 34);
+  CHECK(std::count(r.raised.begin(), r.raised.end(), 0) == 6);
+}
+
+TEST_CASE("continuous: on the ground a bridge keeps its soffit and nothing floats", "[continuous]") {
+  const ExampleSolid s = solid(bridge());
+  ContinuousOptions o;
+  o.size = {24, 8, 24};
+  o.onGround = true;
+  o.fill = 0.7;
+  int withSoffit = 0;
+  for (uint64_t seed : {3, 5}) {
+    o.seed = seed;
+    const ContinuousResult r = synthesizeContinuous(s, o);
+    REQUIRE(r.ok);
+    CHECK(closedManifold(r.mesh));
+    const auto ps = parts(r.mesh);
+    REQUIRE(!ps.empty());
+    for (const auto& [lo, hi] : ps) CHECK(lo[1] == 0.0f);  // every part stands on the floor
+    // A soffit: a triangle looking straight down above the floor; the lowest point of a
+    // part is on the floor, so each soffit is held up by solid that reaches the floor.
+    double soffitArea = 0;
+    for (size_t t = 0; t < r.mesh.triangleCount(); ++t) {
+      const float* p[3];
+      for (int k = 0; k < 3; ++k) p[k] = &r.mesh.positions[3 * r.mesh.indices[3 * t + k]];
+      const double ux = p[1][0] - p[0][0], uz = p[1][2] - p[0][2], vx = p[2][0] - p[0][0], vz = p[2][2] - p[0][2];
+      const double ny = uz * vx - ux * vz;  // y of (p1 - p0) x (p2 - p0)
+      if (ny < 0 && p[0][1] > 0 && p[0][1] == p[1][1] && p[1][1] == p[2][1]) soffitArea += -ny / 2;
+    }
+    // Whole lattice cells (spacing 1): the deck's underside spans 2 between piers or more.
+    CHECK(soffitArea == Approx(std::round(soffitArea)).margin(1e-6));
+    withSoffit += soffitArea >= 2;
+  }
+  CHECK(withSoffit == 2);
+  // Without the ground (--floating) the same example puts parts in the air.
+  o.onGround = false;
+  o.seed = 3;
+  const ContinuousResult f = synthesizeContinuous(s, o);
+  REQUIRE(f.ok);
+  const auto ps = parts(f.mesh);
+  CHECK(std::any_of(ps.begin(), ps.end(), [](const auto& p) { return p.first[1] > 0.0f; }));
 }
 
 TEST_CASE("continuous: examples that cannot be used are refused with the place", "[continuous]") {
