@@ -24,6 +24,10 @@ struct Lot {
   // strings in `strings`; null, arrays and objects are left out.
   std::vector<std::pair<std::string, double>> numbers;
   std::vector<std::pair<std::string, std::string>> strings;
+  // CityEngine's "streetWidth" property (an array, one number per edge of the outer ring
+  // as the file wrote it): each edge of `outer`'s street width, edge i running from
+  // outer[i] to outer[i + 1]; 0 where no street runs along it. Empty: the file gave none.
+  std::vector<double> streetWidth;
 };
 
 // How messages name a lot: as the GeoJSON reader names features, "lots.geojson:

@@ -187,7 +187,7 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
       if (d_.module().strings[selectors[s]] == "all") labelSel.push_back(uint32_t(s + 1));
   if (op.kind == ir::OpKind::Comp)
     ok = rt::cga::components(st.scope, st.geom, d_.module().strings[op.str], d_.arena(), parts, error,
-                             d_.objectFrame().axes, wantedClasses);
+                             d_.objectFrame().axes, wantedClasses, d_.streetEdges());
   if (!ok) throw DeriveError{op.loc, "R002", error};
   // comp(f)'s trim planes (attr_trim), each face's from the faces it shares edges with.
   std::vector<std::vector<rt::cga::TrimPlane>> trimPlanes;

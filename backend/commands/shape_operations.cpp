@@ -74,7 +74,7 @@ void setbackParts(Derivation& d, const ir::Op& op, const std::string& name, cons
     throw DeriveError{op.loc, "R002", error};
   std::vector<std::string> labels;
   for (uint32_t l : op.partLabels) labels.push_back(d.module().strings[l]);
-  const std::vector<unsigned> classes = rt::cga::edgeSelectors(polygon);
+  const std::vector<unsigned> classes = rt::cga::edgeSelectors(polygon, d.streetEdges());
   const size_t edges = classes.size();
   std::vector<double> distance(edges, 0.0);
   std::vector<int> group(edges, -1);
@@ -255,7 +255,8 @@ void applyShapeOperation(Derivation& d, const ir::Op& op, const double* a, uint3
     ok = rt::cga::flatPolygon(st.scope, st.geom, d.arena(), "envelope", polygon, error);
     if (ok) {
       std::vector<rt::cga::EnvelopeEdge> edges(polygon.ring.size());
-      if (name == "Envelope") edges = rt::cga::envelopeEdgesBySide(rt::cga::edgeSelectors(polygon), a + 2, n - 2);
+      if (name == "Envelope")
+        edges = rt::cga::envelopeEdgesBySide(rt::cga::edgeSelectors(polygon, d.streetEdges()), a + 2, n - 2);
       for (size_t i = 0; name == "EnvelopePerEdge" && i < edges.size() && 3 + 2 * i < n; ++i)
         edges[i] = {a[2 + 2 * i], a[3 + 2 * i]};
       ok = rt::cga::envelope(st.scope, st.geom, polygon, a[0] != 0, a[1], edges, d.arena(), part, error);

@@ -46,6 +46,7 @@
 #include "ir/program_layout.h"
 #include "runtime/abi.h"
 #include "runtime/assets.h"
+#include "runtime/cga/street_edges.h"
 #include "runtime/deadline.h"
 #include "runtime/derivation.h"
 #include "runtime/geometry.h"
@@ -107,6 +108,9 @@ class Derivation final : public QueryHost {
   // axes of the scope returned; translate's and rotate's `object` and `pivot`): a lot's
   // first corner and edge (lots.cpp), else the world's frame. Worked out on first use.
   const rt::Scope& objectFrame();
+  // The street edges of the lot being derived (its "streetWidth"; lots.cpp), null when it
+  // has none: street.* then fall back to the object system. Worked out on first use.
+  const rt::cga::StreetEdges* streetEdges();
   // CityEngine's pivot of a shape with this scope (translate's and rotate's `pivot`): the
   // frame setPivot gave it or the shape it came from (scope.pivot), else objectFrame().
   const rt::Scope& pivotFrame(const rt::Scope& scope);
@@ -373,6 +377,9 @@ class Derivation final : public QueryHost {
   rt::GeomRef objectStartGeom_;
   bool objectFrameKnown_ = false;
   rt::Scope objectFrame_;
+  const rt::Lot* streetLot_ = nullptr;  // the lot being derived when it has street widths
+  bool streetEdgesKnown_ = false;
+  rt::cga::StreetEdges streetEdges_;
   ShapeFrames frames_;  // setPivot's pivots and comp(f)'s trim planes of the start shape being derived
   bool makesTrimPlanes_ = false;
   uint64_t labelCount_ = 0;    // label() copies made so far (their tree nodes)

@@ -7,6 +7,7 @@
 
 #include "runtime/cga/cga.h"
 #include "runtime/cga/ground_face.h"
+#include "runtime/cga/street_edges.h"
 
 namespace fgsg::backend {
 
@@ -31,6 +32,8 @@ void Derivation::deriveLots(uint64_t root) {
     objectStartScope_ = part.scope;  // the lot's polygon: objectFrame() when asked
     objectStartGeom_ = part.geom;
     objectFrameKnown_ = false;
+    streetLot_ = lot.streetWidth.empty() ? nullptr : &lot;
+    streetEdgesKnown_ = false;
     frames_.clear();  // a lot is derived to the end before the next: its pivots go with it
     // A `.cga` grammar starts on CityEngine's initial shape: x along the first edge, y up.
     if (m_.cityEngineLots) rt::cga::polygonOnGround(part.scope, part.geom, arena_);
@@ -49,6 +52,18 @@ const rt::Scope& Derivation::objectFrame() {
     objectFrameKnown_ = true;
   }
   return objectFrame_;
+}
+
+const rt::cga::StreetEdges* Derivation::streetEdges() {
+  if (!streetLot_) return nullptr;
+  if (!streetEdgesKnown_) {
+    // The lot's ring as deriveLots lays it on the ground (x east, north at -z).
+    std::vector<rt::Vec3> ring;
+    for (const Eigen::Vector2d& p : streetLot_->outer) ring.emplace_back(p.x(), 0.0, -p.y());
+    streetEdges_ = rt::cga::streetEdgesOfLot(ring, streetLot_->streetWidth, objectFrame().Z());
+    streetEdgesKnown_ = true;
+  }
+  return &streetEdges_;
 }
 
 const rt::Scope& Derivation::pivotFrame(const rt::Scope& scope) {

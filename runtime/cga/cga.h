@@ -109,10 +109,13 @@ bool repeat(const Scope& scope, const GeomRef& geom, unsigned axesMask,
 // classes componentSelectorMask tests, the world.* / object.* ones in the world's axes
 // and `objectAxes` (the start shape's). Those and border / inside only where
 // `wantedClasses` (the labels' masks together) asks for them: border takes a pass over
-// every edge, and comp(f) runs on every lot.
+// every edge, and comp(f) runs on every lot. street.* by the lot's street widths where
+// `streets` is given (runtime/cga/street_edges.h), else in the object system.
+struct StreetEdges;
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error,
-                const Mat3& objectAxes = Mat3::Identity(), uint64_t wantedClasses = ~uint64_t{0});
+                const Mat3& objectAxes = Mat3::Identity(), uint64_t wantedClasses = ~uint64_t{0},
+                const StreetEdges* streets = nullptr);
 
 // comp(e)'s and comp(v)'s merged part (`all = A`): the edges or vertices `parts` (at least
 // one) as one shape, an Edge part with the first one's axes and its scope fitted to them all

@@ -2,6 +2,7 @@
 // a scope of its own (CGA's component split).
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/street_edges.h"
 
 #include <algorithm>
 #include <array>
@@ -193,13 +194,22 @@ unsigned compWorldAndObjectClass(const Vec3& worldNormal, const Mat3& objectAxes
 
 // The street.* bits of a component whose outward direction is `direction` (its normal;
 // an edge's or a vertex's on a flat shape's border leans out along the shape's plane):
-// the quadrant of its part level in the object system, whose front is the start lot's
-// first edge (setback's street.front; CityEngine falls back to object.* without a street
-// width); a tie goes to front / back. Within 11.25 degrees of straight up or down: none.
-uint64_t compStreetClass(const Vec3& direction, const Mat3& objectAxes) {
+// by the lot's street widths where `streets` has them (street_edges.h; an edge's ends `a`
+// and `b`), else the quadrant of its part level in the object system, whose front is the
+// start lot's first edge (setback's street.front; CityEngine falls back to object.*
+// without a street width); a tie goes to front / back. Within 11.25 degrees of straight
+// up or down: none.
+uint64_t compStreetClass(const Vec3& direction, const Mat3& objectAxes, const StreetEdges* streets,
+                         const Vec3* a = nullptr, const Vec3* b = nullptr) {
   if (!(direction.norm() > kMergeTol)) return 0;
   const Vec3 n = (objectAxes.transpose() * direction).normalized();
   if (std::abs(n.y()) > kSinHorizontal) return 0;
+  if (streets) {
+    const unsigned s = streetSide(*streets, direction, a, b);
+    return uint64_t((s & kStreetFront ? kFront : 0u) | (s & kStreetBack ? kBack : 0u) |
+                    (s & kStreetLeft ? kLeft : 0u) | (s & kStreetRight ? kRight : 0u))
+           << kCompStreetShift;
+  }
   const unsigned side = std::abs(n.z()) >= std::abs(n.x()) - 1e-9 ? (n.z() > 0 ? kFront : kBack)
                                                                   : (n.x() > 0 ? kRight : kLeft);
   return uint64_t(side) << kCompStreetShift;
@@ -519,7 +529,7 @@ Part mergedComponents(const std::vector<Part>& parts) {
 // is a solid with one face: its own; its edges are its boundary.
 bool components(const Scope& scope, const GeomRef& geom, const std::string& selector,
                 GeometryArena& arena, std::vector<Part>& out, std::string& error, const Mat3& objectAxes,
-                uint64_t wantedClasses) {
+                uint64_t wantedClasses, const StreetEdges* streets) {
   out.clear();
   Selector sel;
   if (!parseSelector(selector, sel)) {
@@ -549,10 +559,12 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   // ends) an edge of one face only (op_comp), inside otherwise.
   // `outward`: the unit directions out of the shape along its border edges' faces at the
   // component (street.* only).
-  auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border, const Vec3& outward) {
+  // `a` and `b`: an edge's ends (street.* by the lot edge it lies on).
+  auto edgeOrVertexClass = [&](const Vec3& normalSum, bool border, const Vec3& outward, const Vec3* a = nullptr,
+                               const Vec3* b = nullptr) {
     return compClassifyByQuadrant(normalSum, scope.axes) | (border ? kCompBorder : kCompInside) |
            frameClass(normalSum, true) |
-           (wantsStreet ? compStreetClass(normalSum.normalized() + outward, objectAxes) : uint64_t{0});
+           (wantsStreet ? compStreetClass(normalSum.normalized() + outward, objectAxes, streets, a, b) : uint64_t{0});
   };
   // A border edge's outward direction in its face's plane (the face walks it counter-clockwise).
   auto borderOutward = [&](const WorldEdge& e) -> Vec3 {
@@ -578,7 +590,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
   if (sel.cityEngineAxes) {
     for (const WorldEdge& e : uniqueEdges(faces, tol)) {
       out.push_back(cityEngineEdgePart(e));
-      out.back().faceClass = edgeOrVertexClass(e.normalSum, e.faces[1] < 0, borderOutward(e)) |
+      out.back().faceClass = edgeOrVertexClass(e.normalSum, e.faces[1] < 0, borderOutward(e), &e.a, &e.b) |
                              (edgeClass(e) << kCompRoofShift);
     }
     return true;
@@ -596,7 +608,7 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
         out.push_back(facePart(faces[i], scope, arena, unitSquare));
         out.back().faceClass = cls | (borderFace[i] ? kCompBorder : kCompInside) |
                                frameClass(faces[i].normal, false) |
-                               (wantsStreet ? compStreetClass(faces[i].normal, objectAxes) : uint64_t{0});
+                               (wantsStreet ? compStreetClass(faces[i].normal, objectAxes, streets) : uint64_t{0});
       }
     return true;
   }

@@ -51,9 +51,9 @@ std::vector<EnvelopeEdge> envelopeEdgesBySide(const std::vector<unsigned>& class
   for (size_t i = 0; i < classes.size(); ++i) {
     const unsigned c = classes[i];
     if (c & kEdgeStreetFront) out[i] = pairAt(0);
-    else if ((c & kEdgeBack) && pairs > 1) out[i] = pairAt(1);
-    else if ((c & kEdgeRight) && pairs > 2) out[i] = pairAt(2);
-    else if ((c & kEdgeLeft) && pairs > 2) out[i] = pairAt(pairs > 3 ? 3 : 2);
+    else if ((c & kEdgeStreetBack) && pairs > 1) out[i] = pairAt(1);
+    else if ((c & kEdgeStreetRight) && pairs > 2) out[i] = pairAt(2);
+    else if ((c & kEdgeStreetLeft) && pairs > 2) out[i] = pairAt(pairs > 3 ? 3 : 2);
   }
   return out;
 }

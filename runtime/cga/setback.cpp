@@ -5,6 +5,7 @@
 // no edge vanishes.
 #include "runtime/cga/polygon_clip.h"
 #include "runtime/cga/shape_operations.h"
+#include "runtime/cga/street_edges.h"
 #include "runtime/planar.h"
 
 #include <algorithm>
@@ -98,7 +99,7 @@ bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
   return true;
 }
 
-std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon) {
+std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon, const StreetEdges* streets) {
   const size_t n = polygon.ring.size();
   std::vector<unsigned> out(n, 0);
   for (size_t i = 0; i < n; ++i) {
@@ -110,6 +111,22 @@ std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon) {
     c |= std::abs(w.z()) >= std::abs(w.x()) ? (w.z() < 0 ? kEdgeNorth : kEdgeSouth) : (w.x() > 0 ? kEdgeEast : kEdgeWest);
     out[i] = c;
   }
+  if (streets) {
+    // The lot's street widths: each edge's ends and outward direction in the world.
+    const Scope& s = polygon.scope;
+    for (size_t i = 0; i < n; ++i) {
+      const Vec2 p = polygon.ring[i], q = polygon.ring[(i + 1) % n];
+      const Vec3 a = s.P + s.X() * p.x() + s.Y() * p.y(), b = s.P + s.X() * q.x() + s.Y() * q.y();
+      const Vec3 outward = s.X() * (q - p).y() - s.Y() * (q - p).x();
+      const unsigned side = streetSide(*streets, outward, &a, &b);
+      out[i] |= (side & kStreetFront ? kEdgeStreetFront : 0u) | (side & kStreetBack ? kEdgeStreetBack : 0u) |
+                (side & kStreetLeft ? kEdgeStreetLeft : 0u) | (side & kStreetRight ? kEdgeStreetRight : 0u);
+    }
+    return out;
+  }
+  for (size_t i = 0; i < n; ++i)  // street.back / left / right: the scope's
+    out[i] |= (out[i] & kEdgeBack ? kEdgeStreetBack : 0u) | (out[i] & kEdgeLeft ? kEdgeStreetLeft : 0u) |
+              (out[i] & kEdgeRight ? kEdgeStreetRight : 0u);
   // No street information: the street is in front, along the edge facing the front most
   // squarely (a CityEngine lot's first edge, which its x runs along); the longer on a tie.
   size_t street = n;
@@ -128,11 +145,15 @@ unsigned edgeSelectorMask(const std::string& label) {
   std::string l = label;
   if (!l.empty() && l.back() == '=') l.pop_back();
   if (l == "front") return kEdgeFront;
-  if (l == "back" || l == "streetBack") return kEdgeBack;
-  if (l == "left" || l == "streetLeft") return kEdgeLeft;
-  if (l == "right" || l == "streetRight") return kEdgeRight;
-  if (l == "side" || l == "streetSide") return kEdgeLeft | kEdgeRight;
+  if (l == "back") return kEdgeBack;
+  if (l == "left") return kEdgeLeft;
+  if (l == "right") return kEdgeRight;
+  if (l == "side") return kEdgeLeft | kEdgeRight;
   if (l == "streetFront") return kEdgeStreetFront;
+  if (l == "streetBack") return kEdgeStreetBack;
+  if (l == "streetLeft") return kEdgeStreetLeft;
+  if (l == "streetRight") return kEdgeStreetRight;
+  if (l == "streetSide") return kEdgeStreetLeft | kEdgeStreetRight;
   if (l == "north") return kEdgeNorth;
   if (l == "south") return kEdgeSouth;
   if (l == "east") return kEdgeEast;

@@ -93,12 +93,16 @@ bool flatPolygon(const Scope& scope, const GeomRef& geom, GeometryArena& arena, 
 // Which selectors take each edge (the edge from corner i to i + 1): its outward normal
 // classified into the scope's quadrants (front: -Y, the side of a lot's first edge; back
 // +Y; left -X; right +X; a diagonal goes to front or back) and the world's (north -Z,
-// south +Z, east +X, west -X; a diagonal to north or south); the first edge is street.front.
+// south +Z, east +X, west -X; a diagonal to north or south); street.* from the lot's street
+// widths where `streets` has them (runtime/cga/street_edges.h), else the edge facing the
+// front most squarely is street.front and street.back / left / right are back / left / right.
+struct StreetEdges;
 enum EdgeSelector : unsigned {
   kEdgeFront = 1, kEdgeBack = 2, kEdgeLeft = 4, kEdgeRight = 8, kEdgeStreetFront = 16,
   kEdgeNorth = 32, kEdgeSouth = 64, kEdgeEast = 128, kEdgeWest = 256,
+  kEdgeStreetBack = 512, kEdgeStreetLeft = 1024, kEdgeStreetRight = 2048,
 };
-std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon);
+std::vector<unsigned> edgeSelectors(const FlatPolygon& polygon, const StreetEdges* streets = nullptr);
 // The selector bits a setback label takes ("front", "side", "streetFront", "all" ...; 0: none).
 // Index selectors ("#2"): runtime/cga/edge_index_label.h.
 unsigned edgeSelectorMask(const std::string& label);

@@ -177,6 +177,7 @@ class Reader {
           if (it->is_boolean()) lot.numbers.emplace_back(it.key(), it->get<bool>() ? 1.0 : 0.0);
           else if (it->is_number()) lot.numbers.emplace_back(it.key(), it->get<double>());
           else if (it->is_string()) lot.strings.emplace_back(it.key(), it->get<std::string>());
+          if (it.key() == "streetWidth") lot.streetWidth = readStreetWidths(*it, place);
         }
       } else if (!properties->is_null()) {
         fail(place + ": \"properties\" is an object or null, got " + typeName(*properties));
@@ -210,6 +211,9 @@ class Reader {
       return;
     }
     if (coordinates->empty()) fail(where + ": a MultiPolygon without polygons");
+    if (!lot.streetWidth.empty() && coordinates->size() > 1)
+      fail(place + ": property \"streetWidth\" gives the edges of one polygon; this MultiPolygon has " +
+           std::to_string(coordinates->size()) + " (give each polygon a feature of its own)");
     for (size_t k = 0; k < coordinates->size(); ++k) {
       Lot part = lot;
       part.part = k;
@@ -234,10 +238,13 @@ class Reader {
         out.file.push_back(q);
         out.index.push_back(i);
       }
+      size_t closing = ring.size();  // the position that closes the ring (none: one past the last)
       if (out.file.size() > 1 && out.file.front() == out.file.back()) {
+        closing = out.index.back();
         out.file.pop_back();
         out.index.pop_back();
       }
+      if (r == 0 && !p.lot.streetWidth.empty()) p.lot.streetWidth = keptStreetWidths(p.lot.streetWidth, ring, out, closing, place);
       points += out.file.size();
       if (points > kMaxLotPoints)
         fail(place + ": more than " + std::to_string(kMaxLotPoints) + " points; a lot has fewer");
@@ -245,6 +252,38 @@ class Reader {
       p.rings.push_back(std::move(out));
     }
     pending_.push_back(std::move(p));
+  }
+
+  // "streetWidth": an array of numbers, none below 0 (JSON numbers are finite).
+  static std::vector<double> readStreetWidths(const Json& value, const std::string& place) {
+    const std::string what = place + ": property \"streetWidth\"";
+    if (!value.is_array())
+      fail(what + " is an array of numbers, one per edge of the outer ring, got " + typeName(value));
+    std::vector<double> widths;
+    for (size_t i = 0; i < value.size(); ++i) {
+      if (!value[i].is_number())
+        fail(what + ", value " + std::to_string(i) + ": a street width is a number, got " + typeName(value[i]));
+      const double w = value[i].get<double>();
+      if (!(w >= 0)) fail(what + ", value " + std::to_string(i) + ": " + fmt(w) + " is below 0 (0: no street)");
+      widths.push_back(w);
+    }
+    return widths;
+  }
+
+  // The widths as written (one per edge from position i to i + 1 of the outer ring, the
+  // last edge closing it) as the kept points' edges: an edge a dropped duplicate point
+  // made has no length, and its width goes with it. `closing`: the position that closed
+  // the ring (ring.size() when it was left open).
+  static std::vector<double> keptStreetWidths(const std::vector<double>& written, const Json& ring,
+                                              const LotRing& kept, size_t closing, const std::string& place) {
+    const size_t edges = ring.size() > 1 && ring.front() == ring.back() ? ring.size() - 1 : ring.size();
+    if (written.size() != edges)
+      fail(place + ": property \"streetWidth\" has " + std::to_string(written.size()) + " values; the outer ring has " +
+           std::to_string(edges) + " edges (one value per edge, in the ring's order)");
+    std::vector<double> widths(kept.index.size());
+    for (size_t k = 0; k + 1 < kept.index.size(); ++k) widths[k] = written[kept.index[k + 1] - 1];
+    if (!widths.empty()) widths.back() = written[std::min(closing, ring.size()) - 1];
+    return widths;
   }
 
   // JSON numbers are finite (the parser refuses overflow), so only types and ranges are checked.
@@ -309,8 +348,18 @@ Lot finish(Pending& p) {
   LotMessages messages;  // the defaults are GeoJSON's words
   messages.place = p.place;
   Lot lot = std::move(p.lot);
+  // checkAndOrientRings turns a clockwise outer ring about its first point: its edges, and
+  // so their street widths, then run the other way round.
+  double twiceArea = 0;
+  const std::vector<Eigen::Vector2d>& outer = p.rings.front().xy;
+  for (size_t i = 0; i < outer.size(); ++i) {
+    const Eigen::Vector2d& a = outer[i];
+    const Eigen::Vector2d& b = outer[(i + 1) % outer.size()];
+    twiceArea += a.x() * b.y() - a.y() * b.x();
+  }
   std::string error;
   if (!checkAndOrientRings(p.rings, messages, lot, error)) fail(error);
+  if (twiceArea < 0) std::reverse(lot.streetWidth.begin(), lot.streetWidth.end());
   return lot;
 }
 

@@ -185,7 +185,9 @@ TEST_CASE("envelope: gable ends, flat planes and world.up", "[envelope]") {
 }
 
 TEST_CASE("envelope by street side: front, back, side, right and left pairs", "[envelope]") {
-  const std::vector<unsigned> classes{kEdgeFront | kEdgeStreetFront, kEdgeRight, kEdgeBack, kEdgeLeft, kEdgeFront};
+  // Without street widths street.back / right / left are the scope's back / right / left.
+  const std::vector<unsigned> classes{kEdgeFront | kEdgeStreetFront, kEdgeRight | kEdgeStreetRight,
+                                      kEdgeBack | kEdgeStreetBack, kEdgeLeft | kEdgeStreetLeft, kEdgeFront};
   const double v[] = {1, 10, 2, 20, 3, 30, 4, 40};
   auto e = envelopeEdgesBySide(classes, v, 2);
   CHECK(e[0].baseHeight == 1);

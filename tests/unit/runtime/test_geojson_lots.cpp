@@ -333,3 +333,61 @@ TEST_CASE("a lot with too many points is refused before its quadratic checks", "
   CHECK(refusal(polygonInMetres("[[" + ring + "]]")) ==
         "lots.geojson: feature 0 (id \"a\"): more than " + std::to_string(kMaxLotPoints) + " points; a lot has fewer");
 }
+
+namespace {
+
+// One feature with id "a" and `properties`, holding a `geometry`, in local metres.
+std::string featureInMetres(const std::string& properties, const std::string& geometry) {
+  return R"({"type": "FeatureCollection",
+             "crs": {"type": "name", "properties": {"name": "urn:fgsg:local-metres"}},
+             "features": [{"type": "Feature", "id": "a", "properties": )" +
+         properties + R"(, "geometry": )" + geometry + "}]}";
+}
+
+}  // namespace
+
+TEST_CASE("streetWidth gives each edge of the outer ring its width, in the ring's order", "[geojson][street]") {
+  // Counter-clockwise as written: edge i runs from point i to i + 1.
+  std::vector<Lot> lots = lotsOf(featureInMetres(
+      R"({"streetWidth": [8, 4, 0, 0]})", R"({"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,6],[0,6],[0,0]]]})"));
+  REQUIRE(lots.size() == 1);
+  CHECK(lots[0].streetWidth == std::vector<double>{8, 4, 0, 0});
+  CHECK(lots[0].numbers.empty());  // an array: not one of the numbers
+  // Clockwise as written: the ring is turned about its first point, (0,0) (0,6) (10,6)
+  // (10,0) becoming (0,0) (10,0) (10,6) (0,6); the written edge 1, (0,6)-(10,6), is the
+  // third edge of the turned ring.
+  lots = lotsOf(featureInMetres(R"({"streetWidth": [0, 12, 0, 3]})",
+                                R"({"type": "Polygon", "coordinates": [[[0,0],[0,6],[10,6],[10,0],[0,0]]]})"));
+  REQUIRE(lots.size() == 1);
+  CHECK(lots[0].outer[1] == Eigen::Vector2d(10, 0));
+  CHECK(lots[0].streetWidth == std::vector<double>{3, 0, 12, 0});
+  // A repeated point makes an edge of no length: its width goes with it.
+  lots = lotsOf(featureInMetres(R"({"streetWidth": [1, 2, 99, 3, 4]})",
+                                R"({"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,6],[10,6],[0,6],[0,0]]]})"));
+  REQUIRE(lots.size() == 1);
+  CHECK(lots[0].outer.size() == 4);
+  CHECK(lots[0].streetWidth == std::vector<double>{1, 2, 3, 4});
+  // No property: no widths.
+  lots = lotsOf(polygonInMetres("[[[0,0],[10,0],[10,6],[0,0]]]"));
+  CHECK(lots[0].streetWidth.empty());
+}
+
+TEST_CASE("a malformed streetWidth is refused naming the feature and the value", "[geojson][street]") {
+  const std::string rect = R"({"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,6],[0,6],[0,0]]]})";
+  CHECK(refusal(featureInMetres(R"({"streetWidth": [8, 4, 0]})", rect)) ==
+        "lots.geojson: feature 0 (id \"a\"): property \"streetWidth\" has 3 values; the outer ring has 4 edges (one "
+        "value per edge, in the ring's order)");
+  CHECK(refusal(featureInMetres(R"({"streetWidth": [8, -4, 0, 0]})", rect)) ==
+        "lots.geojson: feature 0 (id \"a\"): property \"streetWidth\", value 1: -4 is below 0 (0: no street)");
+  CHECK(refusal(featureInMetres(R"({"streetWidth": [8, "4", 0, 0]})", rect)) ==
+        "lots.geojson: feature 0 (id \"a\"): property \"streetWidth\", value 1: a street width is a number, got a "
+        "string");
+  CHECK(refusal(featureInMetres(R"({"streetWidth": 8})", rect)) ==
+        "lots.geojson: feature 0 (id \"a\"): property \"streetWidth\" is an array of numbers, one per edge of the "
+        "outer ring, got a number");
+  CHECK(refusal(featureInMetres(
+            R"({"streetWidth": [1, 1, 1]})",
+            R"({"type": "MultiPolygon", "coordinates": [[[[0,0],[1,0],[0,1],[0,0]]], [[[5,0],[6,0],[5,1],[5,0]]]]})")) ==
+        "lots.geojson: feature 0 (id \"a\"): property \"streetWidth\" gives the edges of one polygon; this "
+        "MultiPolygon has 2 (give each polygon a feature of its own)");
+}
