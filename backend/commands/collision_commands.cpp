@@ -33,10 +33,14 @@ void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, Sta
       const uint32_t count = leaf || ex.symbol == UINT32_MAX ? 0 : d_.module().symbols[sym].slotCount;
       // Rejected: the rest of the production goes (cull), or only this instance (omit),
       // except inside a Lock set, which a collision anywhere removes whole.
-      if (!placeChecked(op, st.scope, sym, ex.params, count, a) && (!d_.module().collision.omit || d_.inLock()))
+      std::optional<rt::GeomRef> cut;  // what the shape's trim planes leave of the asset
+      if (!placeChecked(op, st.scope, sym, ex.params, count, a, cut) && (!d_.module().collision.omit || d_.inLock()))
         ex.culled = ex.collided = true;
-      // An asset that keeps its size sets the scope to its box, as CityEngine's i() does.
+      // An asset that keeps its size sets the scope to its box, as CityEngine's i() does,
+      // and the asset (as cut) becomes the shape's geometry, which geometry.*() then read.
       if (op.insertFit != ir::InsertFit::AlignSizeAndPosition) st.scope = d_.insertFitted(op, st.scope);
+      if (d_.insertIsRead(op) && op.index < d_.module().assets.size() && !d_.placesNothing(op.index))
+        st.geom = cut ? *cut : d_.insertedGeometry(op.index, op.zUp);
       break;
     }
     case ir::OpKind::Lock: lockedSet(op, st, ex, f); break;
@@ -48,18 +52,19 @@ void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, Sta
 // I, IC and IM. False when a collision rejected the instance: the caller culls the
 // rest of its production.
 bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& written, uint32_t symbol, const double* params,
-                                     uint32_t paramCount, const double* args) {
+                                     uint32_t paramCount, const double* args, std::optional<rt::GeomRef>& cut) {
+  std::optional<rt::GeomRef>* read = d_.insertIsRead(op) ? &cut : nullptr;  // the cut only where it is read
   rt::Scope kept;  // the scope the asset fills, when it keeps its size (no copy otherwise)
   const rt::Scope& scope =
       op.insertFit == ir::InsertFit::AlignSizeAndPosition ? written : (kept = d_.insertFitted(op, written));
   if (!placement_) {
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp, read);
     return true;
   }
   rt::DeriveStats& stats = d_.stats();
   const rt::Mat4 t = rt::insertTransform(scope, op.zUp);
   if (!t.allFinite())  // placeInstance words the error
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp, read);
   if (op.mode == ir::InstanceMode::Merge) {
     const double maxDist = args[0], maxAngle = args[1];
     if (!(maxDist >= 0) || !(maxAngle >= 0) || !std::isfinite(maxDist) || !std::isfinite(maxAngle))
@@ -71,7 +76,7 @@ bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& written,
       ++stats.merges;
       return true;
     }
-    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
+    d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp, read);
     placement_->placedMergeable(op.index, t, scope);
     return true;
   }
@@ -82,7 +87,7 @@ bool CollisionCommands::placeChecked(const ir::Op& op, const rt::Scope& written,
       return false;
     }
   }
-  d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp);
+  d_.placeInstance(op.index, scope, symbol, params, paramCount, op.loc, op.zUp, read);
   return true;
 }
 

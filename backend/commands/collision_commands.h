@@ -10,6 +10,7 @@
 #include "runtime/lines/line_network.h"
 
 #include <memory>
+#include <optional>
 
 namespace fgsg::backend {
 
@@ -36,7 +37,7 @@ class CollisionCommands final : public CommandFamily {
 
  private:
   bool placeChecked(const ir::Op& op, const rt::Scope& scope, uint32_t symbol, const double* params,
-                    uint32_t paramCount, const double* args);
+                    uint32_t paramCount, const double* args, std::optional<rt::GeomRef>& cut);
   void lockedSet(const ir::Op& op, State& st, Exec& ex, Frame& f);
   void startLine(const ir::Op& op, const double* a, State& st, Exec& ex);
   void extendLine(const ir::Op& op, const double* length, State& st, Exec& ex);

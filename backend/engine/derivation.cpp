@@ -264,6 +264,23 @@ void Derivation::checkEnvironment() {
   marching_.loadTextures();
 }
 
+// The inserts whose shape goes on after them in their successor (an op follows before the
+// bracket around them closes): only there can anything read the geometry the asset gives
+// the shape, which a large asset takes a while to build (`A ~> I("tree.obj")` never does).
+void Derivation::findReadInserts() {
+  readInserts_.clear();
+  std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
+    for (size_t k = 0; k < b.size(); ++k) {
+      for (const auto& body : b[k].bodies) visit(body);
+      if (b[k].kind == ir::OpKind::Instance && k + 1 < b.size() && b[k + 1].kind != ir::OpKind::Pop)
+        readInserts_.insert(&b[k]);
+    }
+  };
+  visit(m_.axiom);
+  for (const auto& r : m_.rules)
+    for (const auto& a : r.alternatives) visit(a.ops);
+}
+
 // Every asset is loaded before deriving, so a missing file is reported at its I().
 void Derivation::resolveAssets() {
   std::vector<ir::Loc> firstUse(m_.assets.size());
@@ -279,14 +296,17 @@ void Derivation::resolveAssets() {
   visit(m_.axiom);
   for (const auto& r : m_.rules)
     for (const auto& a : r.alternatives) visit(a.ops);
+  findReadInserts();
   assetHasTexcoords_.assign(m_.assets.size(), 0);
   assetHasImages_.assign(m_.assets.size(), 0);
   assetFlatAxes_.assign(m_.assets.size(), 0);
   assetSourceBox_.assign(m_.assets.size(), {0, 0, 0, 1, 1, 1});
+  assetMesh_.assign(m_.assets.size(), -1);
   for (size_t i = 0; i < m_.assets.size(); ++i) {
     std::string error;
     const int mesh = assets_.resolve(m_.assets[i], error);
     if (mesh < 0) throw DeriveError{firstUse[i], "R003", error};
+    assetMesh_[i] = mesh;
     assetHasTexcoords_[i] = assets_.mesh(mesh).hasTexcoords();
     assetHasImages_[i] = assets_.mesh(mesh).textured();
     assetFlatAxes_[i] = flatAxes(assets_.mesh(mesh));

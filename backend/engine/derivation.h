@@ -59,6 +59,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -121,9 +122,19 @@ class Derivation final : public QueryHost {
   bool makesTrimPlanes() const { return makesTrimPlanes_; }
 
   // Adds an instance of `asset` filling `scope` to the output (R005 when it is not finite
-  // or reaches past float range); I("none") adds nothing.
+  // or reaches past float range); I("none") adds nothing. `cut`, when given, receives the
+  // geometry a grammar asset cut by the shape's trim planes leaves the shape (untouched
+  // when nothing cut it).
   void placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
-                     uint32_t paramCount, ir::Loc loc, bool zUp = false);
+                     uint32_t paramCount, ir::Loc loc, bool zUp = false, std::optional<rt::GeomRef>* cut = nullptr);
+  // CityEngine's i() makes the shape's geometry the asset's: grammar asset `asset` (zUp
+  // turned) as a solid in the normalised coordinates of the scope it fills
+  // (rt::cga::assetGeometry), built once per derivation.
+  rt::GeomRef insertedGeometry(uint32_t asset, bool zUp);
+  // Whether grammar asset `asset` is I("none"), which places nothing.
+  bool placesNothing(uint32_t asset) const { return asset == noneAsset_; }
+  // Whether anything can read the geometry Instance op `op` gives its shape (findReadInserts).
+  bool insertIsRead(const ir::Op& op) const { return !readInserts_.empty() && readInserts_.count(&op) != 0; }
   // The scope an Instance op's asset fills, as its insert mode says (runtime/insert_fit.h);
   // placeInstance(..., op.zUp) then turns a zUp asset inside it.
   rt::Scope insertFitted(const ir::Op& op, const rt::Scope& scope) const;
@@ -226,6 +237,7 @@ class Derivation final : public QueryHost {
   void checkProgram() const;
   void checkEnvironment();
   void resolveAssets();
+  void findReadInserts();
   void registerFamily(CommandFamily& family);
 
   // derivation_order.cpp
@@ -293,7 +305,10 @@ class Derivation final : public QueryHost {
   // into the asset's box, the asset's mesh cut by them goes out as geometry of its own
   // (nothing when it is cut away) and true is returned; false: place it as it is.
   bool placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
-                         uint32_t paramCount, ir::Loc loc, bool zUp);
+                         uint32_t paramCount, ir::Loc loc, bool zUp, std::optional<rt::GeomRef>* cut);
+  // An instance of grammar asset `asset` (or of its cut mesh) takes the image of a Texture
+  // above it and is drawn untinted when textured, unless Color says.
+  void applyAssetLook(rt::Instance& inst, uint32_t asset, const rt::Scope& scope) const;
   void reserveForLots(size_t lots);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
@@ -409,6 +424,10 @@ class Derivation final : public QueryHost {
   std::vector<uint8_t> assetFlatAxes_;  // per asset: 1 X, 2 Y, 4 Z for an axis it has no extent along
   std::vector<std::array<double, 6>> assetSourceBox_;  // per asset: its file's box (AssetLibrary::sourceBox)
   std::vector<uint8_t> assetHasImages_;  // ... and images of its own (an OBJ's materials), drawn untinted
+  std::vector<int> assetMesh_;  // per grammar asset: its mesh in assets_ (resolveAssets)
+  std::unordered_set<const ir::Op*> readInserts_;  // findReadInserts
+  // Per grammar asset, yUp and zUp: insertedGeometry's, once made.
+  std::vector<std::array<std::optional<rt::GeomRef>, 2>> assetGeometry_;
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).
   bool leavesOutput_ = false;

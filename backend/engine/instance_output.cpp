@@ -3,8 +3,10 @@
 // instances that direct code placed restored to the engine's own.
 #include "backend/engine/derivation.h"
 
+#include "runtime/cga/asset_geometry.h"
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/trim_mesh.h"
 #include "runtime/cga/trim_planes.h"
 #include "runtime/cga/uv_projection.h"
 #include "runtime/float_range.h"
@@ -145,11 +147,12 @@ rt::Scope Derivation::insertFitted(const ir::Op& op, const rt::Scope& scope) con
 }
 
 void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t symbol,
-                               const double* params, uint32_t paramCount, ir::Loc loc, bool zUp) {
+                               const double* params, uint32_t paramCount, ir::Loc loc, bool zUp,
+                               std::optional<rt::GeomRef>* cut) {
   if (asset == noneAsset_) return;
   // Frame 0 has no trim planes: the one test every other instance pays.
   if (scope.pivot != 0 && asset < m_.assets.size() &&
-      placeTrimmedAsset(asset, scope, symbol, params, paramCount, loc, zUp))
+      placeTrimmedAsset(asset, scope, symbol, params, paramCount, loc, zUp, cut))
     return;
   const rt::Mat4 t = rt::insertTransform(scope, zUp);
   if (!rt::unitBoxClearlyFitsFloat(t)) checkInstanceReach(t, symbol, loc);
@@ -159,14 +162,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
   inst.symbol = symbol;
   std::copy(t.data(), t.data() + 16, inst.transform.begin());
   inst.color = scope.colored ? scope.color : symbolColor_[symbol];
-  // An asset with texture coordinates of its own draws the image of a Texture above it,
-  // and one with images of its own keeps them; either untinted unless Color says.
-  if (asset < assetHasTexcoords_.size()) {
-    const rt::cga::UvProjection* projection = textures_.projection(scope.projection);
-    const bool textured = projection && assetHasTexcoords_[asset] && projection->draws();
-    if (textured) inst.texture = projection->texture;
-    if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
-  }
+  if (asset < assetHasTexcoords_.size()) applyAssetLook(inst, asset, scope);
   if (scope.marchSegment >= 0) inst.curve = static_cast<uint32_t>(scope.marchSegment);
   if (origins_.on()) out_.origins.push_back(origins_.of(loc, placingDepth_));
   if (scope.finish) {  // Material(...): InstanceList::finishIndex, as long as the last instance with one
@@ -227,8 +223,24 @@ void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* para
   }
 }
 
+// An asset with texture coordinates of its own draws the image of a Texture above it,
+// and one with images of its own keeps them; either untinted unless Color says.
+void Derivation::applyAssetLook(rt::Instance& inst, uint32_t asset, const rt::Scope& scope) const {
+  const rt::cga::UvProjection* projection = textures_.projection(scope.projection);
+  const bool textured = projection && assetHasTexcoords_[asset] && projection->draws();
+  if (textured) inst.texture = projection->texture;
+  if ((textured || assetHasImages_[asset]) && !scope.colored) inst.color = {1.0f, 1.0f, 1.0f};
+}
+
+rt::GeomRef Derivation::insertedGeometry(uint32_t asset, bool zUp) {
+  if (assetGeometry_.size() < assetMesh_.size()) assetGeometry_.resize(assetMesh_.size());
+  std::optional<rt::GeomRef>& made = assetGeometry_[asset][zUp ? 1 : 0];
+  if (!made) made = rt::cga::storeGeometry(arena_, rt::cga::assetGeometry(assets_.mesh(assetMesh_[asset]), zUp));
+  return *made;
+}
+
 bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
-                                   uint32_t paramCount, ir::Loc loc, bool zUp) {
+                                   uint32_t paramCount, ir::Loc loc, bool zUp, std::optional<rt::GeomRef>* cut) {
   const std::vector<rt::cga::TrimPlane> planes = frames_.enabledTrimPlanes(scope.pivot, scope.trim);
   if (planes.empty()) return false;
   // The asset's box wholly on the kept side of every plane: the instance as it is.
@@ -241,22 +253,15 @@ bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint3
       if ((corner - p.point).dot(p.normal) > tol) cuts = true;
   }
   if (!cuts) return false;
-  // The asset's triangles in the scope's normalised coordinates (a zUp asset turned as
-  // insertTransform turns it), cut as trim() cuts a solid.
-  std::string error;
-  const rt::Mesh& mesh = assets_.mesh(assets_.resolve(m_.assets[asset], error));
-  auto unit = [&](uint32_t v) {
-    const rt::Vec3 p(mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]);
-    return zUp ? rt::Vec3(p.x(), p.z(), 1.0 - p.y()) : p;
-  };
-  rt::cga::LocalGeometry g;
-  g.kind = rt::GeomKind::Polyhedron;
-  for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
-    g.faces.push_back({unit(mesh.indices[k]), unit(mesh.indices[k + 1]), unit(mesh.indices[k + 2])});
-  rt::cga::Part cut;
-  if (rt::cga::trimGeometry(scope, rt::cga::storeGeometry(arena_, g), arena_, planes, cut)) return true;  // all cut away
-  rt::Mesh own = rt::cga::ownGeometryMesh(scope, cut.geom, arena_);
-  if (own.indices.empty()) return true;
+  // The shape's geometry after the insert: the asset's solid, cut as trim() cuts one.
+  if (cut) {
+    rt::cga::Part part;
+    rt::cga::trimGeometry(scope, insertedGeometry(asset, zUp), arena_, planes, part);
+    *cut = part.geom;
+  }
+  // What goes out: the asset's mesh cut with its normals, texture coordinates and images.
+  rt::Mesh own = rt::cga::trimAssetMesh(scope, assets_.mesh(assetMesh_[asset]), zUp, planes);
+  if (own.indices.empty()) return true;  // all cut away
   if (ownGeometryAsset_ == UINT32_MAX) {  // the first cut asset of a grammar without leaves
     ownGeometryAsset_ = static_cast<uint32_t>(out_.assets.size());
     out_.assets.push_back(rt::kOwnGeometryAsset);
@@ -268,7 +273,9 @@ bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint3
     out_.geometries.pop_back();
     return true;
   }
-  out_.instances.back().geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
+  rt::Instance& inst = out_.instances.back();
+  inst.geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
+  applyAssetLook(inst, asset, scope);
   return true;
 }
 

@@ -58,6 +58,8 @@ void Derivation::adoptParent(const Derivation& parent) {
   assetFlatAxes_ = parent.assetFlatAxes_;
   assetSourceBox_ = parent.assetSourceBox_;
   assetHasImages_ = parent.assetHasImages_;
+  assetMesh_ = parent.assetMesh_;
+  readInserts_ = parent.readInserts_;
   deadline_ = parent.deadline_;  // the same end, with a countdown of its own
   memoryBudget_ = parent.memoryBudget_;
   assetBytes_ = parent.assetBytes_;

@@ -120,14 +120,16 @@ class ObjWriter {
       char* p = out_.room(kMaxLine);
       *p++ = 'f';
       for (int k = 0; k < 3; ++k) {
-        const uint64_t i = vertices_ + m.indices[3 * t + k] + 1;  // OBJ counts from 1, over the whole file
+        // OBJ counts from 1, over the whole file, each list on its own: a part without
+        // texture coordinates or normals writes no vt or vn for the next part to count.
+        const uint64_t i = m.indices[3 * t + k] + 1;
         *p++ = ' ';
-        p = putIndex(p, i);
-        if (texcoords) *p++ = '/', p = putIndex(p, i);
+        p = putIndex(p, vertices_ + i);
+        if (texcoords) *p++ = '/', p = putIndex(p, texcoords_ + i);
         if (normals) {
           *p++ = '/';
           if (!texcoords) *p++ = '/';
-          p = putIndex(p, i);
+          p = putIndex(p, normals_ + i);
         }
       }
       *p++ = '\n';
@@ -161,6 +163,8 @@ class ObjWriter {
       out_.advance(p);
     }
     vertices_ += n;
+    if (texcoords) texcoords_ += n;
+    if (normals) normals_ += n;
   }
 
   void write(const std::string& mtlFileName) {
@@ -179,7 +183,7 @@ class ObjWriter {
   const Scene& scene_;
   io::ByteSink& out_;
   const bool colored_;
-  uint64_t vertices_ = 0;
+  uint64_t vertices_ = 0, texcoords_ = 0, normals_ = 0;  // the v, vt and vn lines so far
   uint32_t current_ = UINT32_MAX;
 };
 
