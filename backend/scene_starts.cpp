@@ -63,7 +63,7 @@ std::vector<rt::output::StartInfo> sceneStarts(const ir::Module& m, const rt::De
     if (!options.lots.empty())
       slots = lotAttributeSlots(values, options);
     else
-      slots.assign(1, attributeSlots(values, options.attrOverrides));
+      slots.assign(1, attributeSlots(values, options.attrOverrides, attributeRandomKey(options.seed, 0)));
   } catch (const DeriveError&) {
     slots.clear();  // the derivation failed on the same values: no attrs to tell
   }

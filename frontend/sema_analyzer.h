@@ -101,8 +101,9 @@ class Analyzer {
   bool evalConst(const Expr& e, ConstValue& out) const;
   // An import's attr setting over the importer's attrs (ValueDecl::fromImporter): typed,
   // its default from the attrs' defaults in `out`; false (nothing reported) when it reads
-  // more than constants, attrs and math.
-  bool importerValue(const Expr& e, ConstValue& out);
+  // more than constants, attrs and math (and, with `random`, random numbers: a CityEngine
+  // attr drawn once per start shape).
+  bool importerValue(const Expr& e, ConstValue& out, bool random = false);
   void collectComputedAttrs(std::vector<const ValueDecl*> pending);
   static std::string wholeNumberText(double v);
   static std::string formatNumber(double v);

@@ -65,13 +65,13 @@ void Analyzer::collectValues() {
 
 void Analyzer::collectComputedAttrs(std::vector<const ValueDecl*> pending) {
   // Each pass takes those whose attrs are now known, so an attr comes after those it reads
-  // (attributeSlots computes them in that order); what is left reads a random number, a
-  // query, an unknown name or itself through others.
+  // (attributeSlots computes them in that order; a random draw is made once per start
+  // shape there); what is left reads a query, an unknown name or itself through others.
   for (bool progress = true; progress && !pending.empty();) {
     progress = false;
     for (auto it = pending.begin(); it != pending.end();) {
       ConstValue value;
-      if (!importerValue(*(*it)->value, value)) {
+      if (!importerValue(*(*it)->value, value, true)) {
         ++it;
         continue;
       }
@@ -84,17 +84,17 @@ void Analyzer::collectComputedAttrs(std::vector<const ValueDecl*> pending) {
     failedValues_.insert(v->name);
     diags_.error("E023", v->value->range,
                  "the default of attr '" + v->name +
-                     "' may use numbers, strings, consts, functions, other attrs and math functions; "
-                     "not random numbers, shape queries or a cycle of attrs (CityEngine CGA; not "
-                     "supported yet)");
+                     "' may use numbers, strings, consts, functions, other attrs, random numbers "
+                     "and math functions; not shape queries or a cycle of attrs (CityEngine CGA; "
+                     "not supported yet)");
   }
 }
 
-bool Analyzer::importerValue(const Expr& e, ConstValue& out) {
+bool Analyzer::importerValue(const Expr& e, ConstValue& out, bool random) {
   // Only what is known before any shape exists: no queries, parameters or random numbers.
   std::function<bool(const Expr&)> plain = [&](const Expr& x) {
     if (x.kind == ExprKind::Member || x.kind == ExprKind::RelSize || x.kind == ExprKind::FloatSize) return false;
-    if (x.kind == ExprKind::Call && (x.text == "Rand" || x.text == "rand")) return false;
+    if (x.kind == ExprKind::Call && (x.text == "Rand" || x.text == "rand") && !random) return false;
     if (x.kind == ExprKind::Ident && !res_.constants.count(x.text) && x.text != "pi" && x.text != "PI") {
       bool attr = false;
       for (const AttrInfo& a : res_.attrs) attr |= a.name == x.text;

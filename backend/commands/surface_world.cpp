@@ -137,7 +137,7 @@ rt::field::ScalarField scalarFromExpression(const ir::Module& m, const ir::Field
                                             const rt::DeriveOptions& options,
                                             const rt::surface::SurfaceMesh& mesh) {
   ir::Module local = m;  // attributeSlots interns the strings --set gives
-  const Evaluator eval(local, attributeSlots(local, options.attrOverrides));
+  const Evaluator eval(local, attributeSlots(local, options.attrOverrides, attributeRandomKey(options.seed, 0)));
   rt::RandomStream rng{rt::keyWithSalt(rt::rootKey(options.seed), 0x5ca1a4f1e1dull), 0};
   rt::field::ScalarField out;
   out.values.reserve(mesh.vertices.size());

@@ -1,4 +1,5 @@
 #include "backend/interp/eval.h"
+#include "ir/pinned_attr.h"
 
 #include "frontend/did_you_mean.h"
 
@@ -269,8 +270,37 @@ int parallelDerivationLength(const ir::Module& m, const std::vector<std::pair<st
   return count >= 0 && count <= 2147483647.0 ? int(count) : m.steps;
 }
 
+namespace {
+
+// A .cga attr whose default texture() or i() took as its file (ir/pinned_attr.h) must keep it.
+void checkFilesFixedAtCompile(const ir::Module& m, const std::vector<double>& slots) {
+  for (size_t i = 0; i < m.attrs.size(); ++i) {
+    const ir::Attr& at = m.attrs[i];
+    for (const ir::AttrAnnotation& note : at.annotations) {
+      if (note.name != ir::kPinnedAttrAnnotation || at.type != ir::Type::Str) continue;
+      const double id = slots[3 * i];
+      const std::string given = id >= 0 && id < double(m.strings.size()) ? m.strings[size_t(id)] : "";
+      const std::string fixed = at.value.num >= 0 && at.value.num < double(m.strings.size())
+                                    ? m.strings[size_t(at.value.num)] : "";
+      if (given == fixed) continue;
+      ir::Loc loc;
+      for (const auto& [key, text] : note.args) (key == "line" ? loc.line : loc.col) = std::atoi(text.c_str());
+      throw DeriveError{loc, "R038",
+                        "attr '" + at.name + "' = \"" + given + "\": this file takes its default \"" + fixed +
+                            "\" as a texture's or an asset's file, found when the grammar is compiled; "
+                            "another file from --set or a lot's property (CityEngine CGA) is not supported yet"};
+    }
+  }
+}
+
+}  // namespace
+
+uint64_t attributeRandomKey(uint64_t seed, size_t start) {
+  return rt::childKey(rt::keyWithSalt(rt::rootKey(seed), 0xa77b5eedull), start);
+}
+
 std::vector<double> attributeSlots(
-    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides) {
+    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides, uint64_t randomKey) {
   std::vector<double> slots(3 * m.attrs.size(), 0.0);
   for (size_t i = 0; i < m.attrs.size(); ++i) {
     const ir::Expr& v = m.attrs[i].value;
@@ -295,9 +325,13 @@ std::vector<double> attributeSlots(
         std::any_of(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == at.name; }))
       continue;
     const Evaluator ev(m, slots);
-    ev.store(at.importerValue, Frame{}, &slots[3 * i]);
+    rt::RandomStream rng{rt::childKey(randomKey, i), 0};  // an attr's draws do not depend on the others'
+    Frame frame;
+    frame.rng = &rng;
+    ev.store(at.importerValue, frame, &slots[3 * i]);
     if (at.type == ir::Type::Str) slots[3 * i] = m.internString(ev.string(slots[3 * i]));  // a joined one too
   }
+  checkFilesFixedAtCompile(m, slots);
   return slots;
 }
 

@@ -129,8 +129,14 @@ std::string attributeOverrideProblem(const ir::Module& m, const std::string& nam
 
 // The attribute values for a derivation: defaults, with `--set name=value` overrides
 // parsed by the attribute's type. Throws DeriveError for an unknown name or a bad value.
+// A CityEngine attr computed from others may draw random numbers (`attr h = rand(30, 50)`):
+// from `randomKey` (attributeRandomKey), so once per start shape and alike in every engine.
 std::vector<double> attributeSlots(
-    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides);
+    ir::Module& m, const std::vector<std::pair<std::string, std::string>>& overrides, uint64_t randomKey = 0);
+
+// The key of the random numbers the attrs of start shape `start` (a lot's index, 0 without
+// lots) draw under `seed`.
+uint64_t attributeRandomKey(uint64_t seed, size_t start);
 
 // How many steps an L-system (`derive parallel N;`) rewrites with these `--set` values:
 // N, or its attr's value (`derive parallel n;`); -1 for a sequential grammar. What

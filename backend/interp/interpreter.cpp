@@ -21,7 +21,7 @@ bool prepare(const ir::Module& module, const rt::DeriveOptions& options, ir::Mod
              std::vector<double>& attrs, std::vector<std::vector<double>>& lotAttrs, rt::DeriveResult& failed) {
   local = module;
   try {
-    attrs = attributeSlots(local, options.attrOverrides);
+    attrs = attributeSlots(local, options.attrOverrides, attributeRandomKey(options.seed, 0));
     lotAttrs = lotAttributeSlots(local, options);
     return true;
   } catch (const DeriveError& e) {

@@ -85,7 +85,7 @@ std::vector<std::vector<double>> lotAttributeSlots(ir::Module& m, const rt::Deri
     if (m.findAttr("lot:initialShape.name") >= 0) overrides.push_back({"lot:initialShape.name", initialShapeNameOf(lot)});
     addInitialShapeOrigin(m, lot, overrides);
     try {
-      slots.push_back(attributeSlots(m, overrides));
+      slots.push_back(attributeSlots(m, overrides, attributeRandomKey(options.seed, slots.size())));
     } catch (const DeriveError& e) {
       // "--set height=tall: expected a number" reads, for a property, "height=tall: ...".
       const std::string what = e.message.rfind("--set ", 0) == 0 ? e.message.substr(6) : e.message;

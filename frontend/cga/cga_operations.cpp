@@ -951,6 +951,7 @@ void Translator::insert(P::CallOperationContext* op, Sequence& seq, const Env& e
   }
   ExprPtr asset = expr(argCtx[0], env);
   if (!asset) return;
+  if (ExprPtr pinned = pinnedAttrString(*asset, rangeOf(argCtx[0]))) asset = std::move(pinned);
   if (asset->kind == ExprKind::String) {
     std::string& p = asset->text;
     if (p.rfind("builtin:", 0) == 0) {
@@ -979,6 +980,7 @@ void Translator::materialItem(P::CallOperationContext* op, const std::string& pr
   ExprPtr value = expr(argCtx.back(), env);
   if (!value) return;
   if (materialPropertyIsImage(materialProperty(property))) {
+    if (ExprPtr pinned = pinnedAttrString(*value, rangeOf(argCtx.back()))) value = std::move(pinned);
     if (value->kind != ExprKind::String) {
       notSupported(rangeOf(argCtx.back()), "an image name that is not a constant string");
       return;

@@ -6,6 +6,7 @@
 // with the same parameters, created in its place.
 #include "frontend/cga/cga_translator.h"
 #include "frontend/did_you_mean.h"
+#include "ir/pinned_attr.h"
 
 #include <cmath>
 
@@ -108,6 +109,34 @@ void Translator::run(P::CgaFileContext* file) {
   }
   startRule();
   exportFunctions();
+  annotatePinnedAttrs();
+}
+
+ExprPtr Translator::pinnedAttrString(const Expr& value, const SourceRange& at) {
+  if (value.kind != ExprKind::Ident) return nullptr;
+  const auto decl = attrDecls_.find(value.text);
+  if (decl == attrDecls_.end()) return nullptr;
+  Diagnostics* const loud = diags_;
+  Diagnostics quiet(nullptr);  // the attr's own declaration reports its errors
+  diags_ = &quiet;
+  ExprPtr text = this->value(styledAttrValue(decl->second), Env{});
+  diags_ = loud;
+  if (!text || text->kind != ExprKind::String) return nullptr;
+  text->range = value.range;
+  pinnedAttrs_.emplace(value.text, at);
+  return text;
+}
+
+// The attr keeps its default's file: a value from --set or a lot that differs is an error
+// at run time (backend attributeSlots), where the derivation would otherwise ignore it.
+void Translator::annotatePinnedAttrs() {
+  for (ValueDecl& v : program_.values) {
+    const auto pin = pinnedAttrs_.find(v.name);
+    if (!v.isAttr || pin == pinnedAttrs_.end()) continue;
+    v.annotations.push_back({ir::kPinnedAttrAnnotation,
+                             {{"line", std::to_string(pin->second.begin.line)},
+                              {"col", std::to_string(pin->second.begin.col)}}});
+  }
 }
 
 // Each function and const with its parameters as the Idents "#0", "#1" ... (ast.h:
@@ -176,6 +205,7 @@ void Translator::collect(P::CgaFileContext* file) {
       functions_[fn.name] = fn;
     } else if (auto* at = a->attrDecl()) {
       attrs_.insert(at->name->getText());
+      attrDecls_[at->name->getText()] = at;
     } else if (auto* r = a->ruleDecl()) {
       const size_t n = r->params() ? r->params()->ID().size() : 0;
       const std::string name = r->name->getText();

@@ -94,6 +94,10 @@ class Translator {
                const std::vector<P::ExprContext*>& args, const Env& env);
   ExprPtr name(const std::string& name, const SourceRange& at, const Env& env);
   ExprPtr initialShapeAttribute(const std::string& member, const SourceRange& at);
+  // `texture(wallTexture)`, `i(treeAsset)`: a string attr with a constant default gives that
+  // default as the file name (null for anything else).
+  ExprPtr pinnedAttrString(const Expr& value, const SourceRange& at);
+  void annotatePinnedAttrs();
   // Whether `e` draws random numbers (Rand).
   static bool isRandom(const Expr& e);
 
@@ -184,6 +188,10 @@ class Translator {
   std::string startRuleOverride_;
   std::map<std::string, Function> functions_;
   std::set<std::string> attrs_;
+  std::map<std::string, P::AttrDeclContext*> attrDecls_;
+  // String attrs whose default this file's texture() or i() takes as its file name, with
+  // the first such use (ir::kPinnedAttrAnnotation: setting them is a run-time error).
+  std::map<std::string, SourceRange> pinnedAttrs_;
   std::map<std::string, size_t> rules_;  // rule name -> parameter count
   std::set<std::string> importAliases_;
   std::vector<std::string> inlining_;  // functions being inlined (recursion check)

@@ -91,4 +91,17 @@ for engine in interp jit; do
   got=$(gltf_assets "$tmp/elsewhere/baked.glb")
   [ "$got" = "baked=../proj/assets/box.obj:10 baked=builtin:cube:1" ] || fail "elsewhere/baked.glb names: $got ($engine)"
 done
+
+# texture(attr) and i(attr): the attr's default is the file, found when compiling; another
+# value from --set or a lot's property stops the derivation with R038 at the first use.
+printf '@File\nattr tex = "builtin:cube"\n@StartRule\nLot --> extrude(3)\n  i(tex) Box.\n' >"$tmp/pinned.cga"
+for engine in interp jit; do
+  "$fgsg" run "$tmp/pinned.cga" --engine $engine -q -o "$tmp/pinned.obj" || fail "i(attr) does not run ($engine)"
+  "$fgsg" run "$tmp/pinned.cga" --engine $engine -q -o "$tmp/pinned.obj" --set tex=builtin:cube ||
+    fail "i(attr) with --set to its default does not run ($engine)"
+  "$fgsg" run "$tmp/pinned.cga" --engine $engine -q -o "$tmp/pinned2.obj" --set tex=other.obj >"$tmp/pinned.txt" 2>&1 &&
+    fail "i(attr) with --set tex=other.obj runs ($engine)"
+  grep -q "pinned.cga:5:5: error\[R038\]: attr 'tex' = \"other.obj\": this file takes its default \"builtin:cube\"" "$tmp/pinned.txt" ||
+    { cat "$tmp/pinned.txt"; fail "no located R038 for --set tex ($engine)"; }
+done
 echo "cga dialect: ok"
