@@ -314,6 +314,8 @@ const BuiltinDoc kBuiltinDocTable[] = {
     {kDocCgaFunction, "rint", "rint(x)", "x rounded to the nearest whole number.", "round"},
     {kDocCgaFunction, "ln", "ln(x)", "The natural logarithm of x.", "log"},
     {kDocCgaFunction, "log10", "log10(x)", "The base-10 logarithm of x (log(x) / log(10)).", "log"},
+    {kDocCgaFunction, "isnan", "isnan(x)", "True when x is not a number: !(abs(x) >= 0).", "abs"},
+    {kDocCgaFunction, "isinf", "isinf(x)", "True when x is infinite: abs(x) above the largest double.", "abs"},
     {kDocCgaFunction, "inside", "inside(intra|inter|all, \"label\")", "The shape lies inside the labelled occluders.", "Shape.inside"},
     {kDocCgaFunction, "overlaps", "overlaps(intra|inter|all, \"label\")", "The shape overlaps a labelled occluder.", "Shape.overlaps"},
     {kDocCgaFunction, "touches", "touches(intra|inter|all, \"label\")", "The shape touches a labelled occluder.", "Shape.touches"},

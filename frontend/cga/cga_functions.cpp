@@ -45,7 +45,7 @@ const char* const kSameFunctions[] = {"sin", "cos",  "tan",  "asin", "acos", "at
 
 // CityEngine functions (and shape attributes) this dialect does not have yet.
 const char* const kKnownFunctions[] = {
-    "isinf", "isnan", "bool", "float", "str", "sel", "len", "count", "find", "substring", "fileExists", "fileSearch",
+    "bool", "float", "sel", "len", "count", "find", "substring", "fileExists", "fileSearch",
     "assetInfo", "imageInfo", "assetsSortRatio", "assetsSortSize", "imagesSortRatio",
     "contextCompare", "occlusion", "convert", "listAdd", "listItem", "listSize",
     "listClean", "listLast", "listFirst", "listRandom", "listRange", "listRemove", "listIndex", "replace", "findFirst",
@@ -59,6 +59,8 @@ const char* const kTranslatedFunctions[][2] = {
     {"rint", "rint(x)"},
     {"ln", "ln(x)"},
     {"log10", "log10(x)"},
+    {"isnan", "isnan(x)"},
+    {"isinf", "isinf(x)"},
     {"inside", "inside(intra|inter|all, \"label\")"},
     {"overlaps", "overlaps(intra|inter|all, \"label\")"},
     {"touches", "touches(intra|inter|all, \"label\")"},
@@ -286,6 +288,13 @@ ExprPtr Translator::name(const std::string& text, const SourceRange& at, const E
       return e;
     }
     if (object == "initialShape") return initialShapeAttribute(member, at);
+    // CGA calls a function without parameters with or without `()`: rule files write
+    // `case geometry.area > 200` as often as `geometry.area()`.
+    static const char* const kGeometryWithoutArguments[] = {"area", "height", "nVertices", "nFaces",
+                                                            "isConcave", "boundaryLength"};
+    if (object == "geometry" && std::find(std::begin(kGeometryWithoutArguments), std::end(kGeometryWithoutArguments),
+                                          member) != std::end(kGeometryWithoutArguments))
+      return call(text, at, at, {}, env);
     static const char* const kAttributes[] = {"split", "comp", "seedian", "geometry", "material",
                                               "pivot", "trim", "world", "object", "street", "uv"};
     for (const char* a : kAttributes)
@@ -536,6 +545,25 @@ ExprPtr Translator::call(const std::string& fn, const SourceRange& at, const Sou
     std::vector<ExprPtr> ten;
     ten.push_back(number(10, at));
     return binary("/", callExpr("log", std::move(args), at), callExpr("log", std::move(ten), at));
+  }
+  if (fn == "str") {  // CityEngine's str(): a string `+` prints numbers and truth values as str() does
+    if (args.size() != 1) return wrongCount("1 argument");
+    ExprPtr empty = makeExpr(ExprKind::String, at);
+    ExprPtr e = binary("+", std::move(empty), std::move(args[0]));
+    e->range = at;
+    return e;
+  }
+  if (fn == "isnan") {  // NaN is the one number whose size is not >= 0
+    if (args.size() != 1) return wrongCount("1 argument");
+    ExprPtr notNan = binary(">=", callExpr("abs", std::move(args), at), number(0, at));
+    ExprPtr e = makeExpr(ExprKind::Unary, at);
+    e->text = "!";
+    e->args.push_back(std::move(notNan));
+    return e;
+  }
+  if (fn == "isinf") {
+    if (args.size() != 1) return wrongCount("1 argument");
+    return binary(">", callExpr("abs", std::move(args), at), number(1.7976931348623157e308, at));
   }
   for (const char* same : kSameFunctions)
     if (fn == same) {

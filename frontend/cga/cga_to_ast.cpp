@@ -211,7 +211,9 @@ void Translator::collect(P::CgaFileContext* file) {
       const std::string name = r->name->getText();
       if (rules_.count(name) && rules_[name] != n)
         error("E019", rangeOf(r->name), "'" + name + "' has rules with " + std::to_string(rules_[name]) + " and " +
-                                            std::to_string(n) + " parameters");
+                                            std::to_string(n) +
+                                            " parameters (rules that differ only in their number of parameters: "
+                                            "CityEngine CGA; not supported yet)");
       rules_[name] = n;
       for (auto* note : a->annotation())  // initialShape.startRule may be read before it
         if (note->name->getText() == "StartRule" && declaredStartRule_.empty()) declaredStartRule_ = name;
