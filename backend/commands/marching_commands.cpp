@@ -135,7 +135,31 @@ double MarchingCommands::sampleTexture(const rt::Scope& scope, uint32_t env, ir:
   if (scope.face < 0)
     throw DeriveError{at, "R022", "a texture context is sampled at a point of the surface, and this scope is on none"};
   const rt::marching::Vec2 uv = s.texCoord({scope.face, scope.bary});
+  if (recordReads_) noteTextureRead(env, uv.x(), uv.y());
   return textures_.at(env)->sample(uv.x(), uv.y());
+}
+
+// The tiles holding the texels TextureMap::sample reads at (u, v): its four nearest
+// centres, taken here with one texel more on each side (the same clamping, not its
+// exact corner cases), so the tiles marked always cover them.
+void MarchingCommands::noteTextureRead(uint32_t env, double u, double v) {
+  const rt::texture::TextureMap& t = *textures_.at(env);
+  if (t.empty() || std::isnan(u) || std::isnan(v)) return;  // reads 0 whatever the texels
+  const int w = t.width(), h = t.height();
+  if (reads_.size() <= env) reads_.resize(env + 1);
+  TextureTiles& tiles = reads_[env];
+  if (tiles.bits.empty()) {
+    tiles.columns = (w + kTextureTile - 1) / kTextureTile;
+    tiles.rows = (h + kTextureTile - 1) / kTextureTile;
+    tiles.bits.assign((size_t(tiles.columns) * size_t(tiles.rows) + 63) / 64, 0);
+  }
+  const int x = int(std::clamp(u * w - 0.5, 0.0, double(w - 1)));
+  const int y = int(std::clamp((1.0 - v) * h - 0.5, 0.0, double(h - 1)));
+  for (int r = std::max(y - 1, 0) / kTextureTile; r <= std::min(y + 1, h - 1) / kTextureTile; ++r)
+    for (int c = std::max(x - 1, 0) / kTextureTile; c <= std::min(x + 1, w - 1) / kTextureTile; ++c) {
+      const size_t bit = size_t(r) * size_t(tiles.columns) + size_t(c);
+      tiles.bits[bit / 64] |= uint64_t(1) << (bit % 64);
+    }
 }
 
 std::vector<Vec3> MarchingCommands::densitySeeds(const std::string& name, uint32_t count, uint64_t key) {

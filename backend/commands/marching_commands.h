@@ -51,6 +51,16 @@ class MarchingCommands final : public CommandFamily {
   std::vector<rt::Vec3> densitySeeds(const std::string& name, uint32_t count, uint64_t key);
   // context.NAME(texCoord) at the scope's surface point.
   double sampleTexture(const rt::Scope& scope, uint32_t env, ir::Loc at);
+  // The texels a derivation read, by tiles of kTextureTile x kTextureTile texels: a kept
+  // seed plant (seed_plants.cpp) is taken again only while those texels are unchanged.
+  static constexpr int kTextureTile = 8;
+  struct TextureTiles {
+    int columns = 0, rows = 0;  // tiles across and down
+    std::vector<uint64_t> bits;  // tile (c, r) at bit r * columns + c
+  };
+  void recordTextureReads() { recordReads_ = true; }
+  const std::vector<TextureTiles>& textureReads() const { return reads_; }  // by environment index
+  const std::vector<std::shared_ptr<const rt::texture::TextureMap>>& textures() const { return textures_; }
   // After deriving: the Bezier path of every march segment, indexed as the instances'
   // `curve` (runtime/instances.h).
   std::vector<rt::CurveSegment> curves() const;
@@ -75,6 +85,9 @@ class MarchingCommands final : public CommandFamily {
   std::vector<rt::marching::MarchNode> nodes_;
   std::vector<rt::marching::MarchSegment> segments_;
   bool condition_ = false;  // what the last MarchCondition said
+  bool recordReads_ = false;
+  std::vector<TextureTiles> reads_;
+  void noteTextureRead(uint32_t env, double u, double v);
   MarchTally tally_;
 };
 

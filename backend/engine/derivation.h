@@ -269,6 +269,7 @@ class Derivation final : public QueryHost {
 
   // seed_plants.cpp
   struct Plant;
+  friend struct SeedPlantCache;  // keeps plants for the next derivation (fgsg view)
   void deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t root);
   void adoptParent(const Derivation& parent);
   Plant derivePlant(const rt::Scope& start, uint64_t key, uint32_t index);

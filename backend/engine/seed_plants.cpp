@@ -4,9 +4,15 @@
 // surface, its marching layout, the textures and the assets, which they only read. The
 // plants are then put together in seed order, so the output is the same bytes whatever
 // the number of threads — the output of deriving the seeds one after another.
+// In fgsg view (a SurfaceReuse in effect) each plant is kept with what it depended on: a
+// seed dragged or a texture painted derives again only the plants whose seed moved or
+// whose texels read changed; the others are taken as they were, which is exact, since a
+// plant reads nothing else that such an edit changes (#49, item 5).
 #include "backend/engine/derivation.h"
 
+#include "backend/engine/surface_reuse.h"
 #include "runtime/stack_budget.h"
+#include "runtime/texture/texture_map.h"
 
 #include <tbb/parallel_for.h>
 
@@ -36,17 +42,100 @@ struct Derivation::Plant {
   bool outOfMemory = false;
 };
 
+// A plant kept by fgsg view and what it was derived from: its seed as the options gave it,
+// its random key, the surface, and per texture the map it read and the tiles of texels read.
+struct SeedPlantCache {
+  struct Entry {
+    bool valid = false;
+    rt::DeriveOptions::Seed seed;
+    uint64_t key = 0;
+    std::shared_ptr<const SurfaceWorld> world;
+    std::vector<std::shared_ptr<const rt::texture::TextureMap>> textures;
+    std::vector<MarchingCommands::TextureTiles> reads;
+    std::shared_ptr<const Derivation::Plant> plant;
+  };
+  std::vector<Entry> entries;  // by seed index
+
+  static bool sameSeed(const rt::DeriveOptions::Seed& a, const rt::DeriveOptions::Seed& b) {
+    return std::equal(a.point, a.point + 3, b.point) && a.hasDirection == b.hasDirection &&
+           (!a.hasDirection || std::equal(a.direction, a.direction + 3, b.direction));
+  }
+  // The texels of each tile `e` read are the same in `now` as in the maps it read.
+  static bool sameTexels(const Entry& e, const std::vector<std::shared_ptr<const rt::texture::TextureMap>>& now) {
+    const int tile = MarchingCommands::kTextureTile;
+    for (size_t env = 0; env < e.reads.size(); ++env) {
+      const MarchingCommands::TextureTiles& tiles = e.reads[env];
+      if (tiles.bits.empty()) continue;
+      if (env >= e.textures.size() || env >= now.size() || !e.textures[env] || !now[env]) return false;
+      const rt::texture::TextureMap &was = *e.textures[env], &is = *now[env];
+      if (&was == &is) continue;
+      if (was.width() != is.width() || was.height() != is.height()) return false;
+      for (size_t bit = 0; bit < size_t(tiles.columns) * size_t(tiles.rows); ++bit) {
+        if (!(tiles.bits[bit / 64] >> (bit % 64) & 1)) continue;
+        const int c0 = int(bit % size_t(tiles.columns)) * tile, r0 = int(bit / size_t(tiles.columns)) * tile;
+        for (int r = r0; r < std::min(r0 + tile, is.height()); ++r)
+          for (int c = c0; c < std::min(c0 + tile, is.width()); ++c)
+            if (was.texel(c, r) != is.texel(c, r)) return false;
+      }
+    }
+    return true;
+  }
+};
+
 void Derivation::deriveSeedsApart(const std::vector<rt::Scope>& starts, uint64_t root) {
   // What the plants share is made ready here, so that they only read it: every asset
   // resolved (and its output size known), the surface laid out for marching.
   if (!out_.assets.empty()) assetOutputBytes(static_cast<uint32_t>(out_.assets.size() - 1));
   if (usesMarchingSurface()) marching_.prepareSurface();
   std::vector<Plant> plants(starts.size());
+  // fgsg view: the plants kept from the last derivation that are still what this one
+  // would derive (seeds given as points only: --seed-density draws them from a texture).
+  SurfaceReuse* reuse = SurfaceReuseScope::current();
+  std::shared_ptr<SeedPlantCache> cache;
+  if (reuse) {
+    std::lock_guard<std::mutex> lock(reuse->mutex);
+    if (!reuse->plants) reuse->plants = std::make_shared<SeedPlantCache>();
+    cache = reuse->plants;
+  }
+  const auto keyOf = [root](size_t k) { return rt::childKey(root, static_cast<uint32_t>(k)); };
+  std::vector<uint8_t> reused(starts.size(), 0);
+  if (cache && opt_.seedCount == 0) {
+    for (size_t k = 0; k < starts.size() && k < cache->entries.size() && k < opt_.seeds.size(); ++k) {
+      const SeedPlantCache::Entry& e = cache->entries[k];
+      if (!e.valid || e.key != keyOf(k) || e.world != surface_ || !SeedPlantCache::sameSeed(e.seed, opt_.seeds[k]) ||
+          e.plant->out.assets != out_.assets || e.plant->out.symbols != out_.symbols ||
+          !SeedPlantCache::sameTexels(e, marching_.textures()))
+        continue;
+      plants[k] = *e.plant;  // merging takes its instances: the kept one stays whole
+      reused[k] = 1;
+    }
+  }
+  std::vector<SeedPlantCache::Entry> fresh(cache ? starts.size() : 0);
   tbb::parallel_for(size_t(0), starts.size(), [&](size_t k) {
+    if (reused[k]) return;
     auto plant = std::make_unique<Derivation>(m_, opt_, assets_, eval_.attrSlots(), program_, false);
     plant->adoptParent(*this);
-    plants[k] = plant->derivePlant(starts[k], rt::childKey(root, static_cast<uint32_t>(k)), static_cast<uint32_t>(k));
+    if (cache) plant->marching_.recordTextureReads();
+    plants[k] = plant->derivePlant(starts[k], keyOf(k), static_cast<uint32_t>(k));
+    const Plant& p = plants[k];
+    // Kept only when nothing but its inputs decided it (no limit, error or memory).
+    if (!cache || k >= opt_.seeds.size() || opt_.seedCount != 0 || p.limit || p.error || p.outOfMemory) return;
+    SeedPlantCache::Entry& e = fresh[k];
+    e.valid = true;
+    e.seed = opt_.seeds[k];
+    e.key = keyOf(k);
+    e.world = surface_;
+    e.textures = plant->marching_.textures();
+    e.reads = plant->marching_.textureReads();
+    e.plant = std::make_shared<const Plant>(p);
   });
+  if (cache) {
+    cache->entries.resize(starts.size());
+    for (size_t k = 0; k < starts.size(); ++k)
+      if (!reused[k]) cache->entries[k] = std::move(fresh[k]);
+    std::lock_guard<std::mutex> lock(reuse->mutex);
+    reuse->plantsReused = reused;
+  }
   mergePlants(plants);
 }
 
