@@ -1,6 +1,6 @@
 // The grouped OBJ of a scene (runtime/output/obj_scene_writer.h): `o` per start shape,
 // `g` per group (none under GroupBy::None), `usemtl` where the material changes, indices
-// counted over the whole file, and the .mtl of exactly the materials used, in the order
+// counted over the whole file (v, vt and vn each in its own list), and the .mtl of exactly the materials used, in the order
 // of first use. A scene of two start shapes built by hand, its text written out in full.
 #include "runtime/output/obj_scene_writer.h"
 
@@ -93,9 +93,9 @@ const char* const kObj =
     "vt 0 0\nvt 1 0\nvt 0.5 1\nvt 0 1\n"
     "vn 0 0.6 0.8\nvn 0 0.6 0.8\nvn 0 0.6 0.8\nvn 0 0.6 0.8\n"
     "usemtl brick_ffffff\n"
-    "f 5/5/5 6/6/6 7/7/7\n"
+    "f 5/1/5 6/2/6 7/3/7\n"  // vt counts its own lines: the wall wrote none
     "usemtl ff0000\n"
-    "f 5/5/5 7/7/7 8/8/8\n"
+    "f 5/1/5 7/3/7 8/4/8\n"
     "o B\n"
     "g Wall\n"
     "v 10 0 0 0.5 0.25 1\n"
