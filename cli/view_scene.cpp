@@ -8,14 +8,20 @@ namespace fgsg::cli {
 
 bool buildViewScene(const ir::Module& module, const rt::DeriveOptions& options, const rt::DeriveResult& result,
                     const rt::AssetLibrary& assets, const std::vector<int>& meshOf, ViewScene& out, std::string& error) {
+  return buildViewSceneOf(result.instances, backend::sceneStarts(module, options, result), assets, meshOf, out, error);
+}
+
+bool buildViewSceneOf(const rt::InstanceList& list, std::vector<rt::output::StartInfo> starts,
+                      const rt::AssetLibrary& assets, const std::vector<int>& meshOf, ViewScene& out,
+                      std::string& error) {
   out = ViewScene{};
   rt::output::SceneInput in;
-  in.list = &result.instances;
+  in.list = &list;
   in.library = &assets;
   in.meshOf = &meshOf;
   in.groupBy = rt::output::GroupBy::Symbol;
   in.instancing = rt::output::Instancing::Auto;
-  in.starts = backend::sceneStarts(module, options, result);
+  in.starts = std::move(starts);
   const rt::output::Scene scene = rt::output::buildScene(in);
   for (const rt::output::StartNode& s : scene.starts)
     for (const rt::output::GroupNode& g : s.groups) {

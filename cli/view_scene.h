@@ -11,6 +11,7 @@
 #include "ir/ir.h"
 #include "runtime/assets.h"
 #include "runtime/derivation.h"
+#include "runtime/output/scene.h"
 
 #include <cstdint>
 #include <string>
@@ -33,5 +34,9 @@ struct ViewScene {
 // vertex is not finite or an image cannot be embedded.
 bool buildViewScene(const ir::Module& module, const rt::DeriveOptions& options, const rt::DeriveResult& result,
                     const rt::AssetLibrary& assets, const std::vector<int>& meshOf, ViewScene& out, std::string& error);
+// The same for an instance list whose start shapes `starts` names (view_pieces.h: one seed's).
+bool buildViewSceneOf(const rt::InstanceList& list, std::vector<rt::output::StartInfo> starts,
+                      const rt::AssetLibrary& assets, const std::vector<int>& meshOf, ViewScene& out,
+                      std::string& error);
 
 }  // namespace fgsg::cli

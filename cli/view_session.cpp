@@ -428,8 +428,33 @@ void ViewSession::send(uint64_t page, Page& state, const std::shared_ptr<const D
   }
   if (d->modelJson.empty()) return server_.sendText(page, errorJson(d->error));
   state.model = d;
+  if (!d->pieces.pieces.empty()) return sendPieces(page, state, *d);
+  state.pieces.clear();
   server_.sendText(page, d->modelJson);
   for (const std::string& p : d->parts) server_.sendBinary(page, p);
+}
+
+// Only the pieces the page does not show already (a seed dragged: that seed's).
+void ViewSession::sendPieces(uint64_t page, Page& state, const Derived& d) {
+  const std::vector<std::shared_ptr<const ViewPiece>>& pieces = d.pieces.pieces;
+  Json header = Json::parse(d.modelJson);
+  Json sent = Json::array();
+  std::vector<size_t> due;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    if (k < state.pieces.size() && state.pieces[k] == pieces[k]) continue;
+    Json placing = Json::array();
+    for (const auto& [node, count] : pieces[k]->placing) placing.push_back({node, count});
+    sent.push_back({{"piece", k}, {"placing", placing}, {"bytes", pieces[k]->glb.size()}});
+    due.push_back(k);
+  }
+  header["sent"] = sent;
+  state.pieces = pieces;
+  server_.sendText(page, header.dump());
+  for (size_t k : due) {
+    server_.sendBinary(page, pieces[k]->glb);
+    const std::vector<uint32_t>& ids = pieces[k]->ids;
+    server_.sendBinary(page, std::string(reinterpret_cast<const char*>(ids.data()), ids.size() * sizeof(uint32_t)));
+  }
 }
 
 std::string ViewSession::infoJson(const std::map<std::string, std::string>& attrs, uint64_t seed,
@@ -498,6 +523,7 @@ void ViewSession::compile() {
   }
   compileError_.clear();
   compiled_ = std::move(fresh);
+  lastPieces_ = ViewPieces{};  // pieces of another grammar (or of files it read as they were)
   loader_.reset();  // a new grammar: its own code
   // Watch what this version reads too (its modules, a mesh, a texture, a field file beyond
   // the folder).
@@ -580,6 +606,7 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     surfaceReuse_ = std::make_unique<backend::SurfaceReuse>();
     surfaceReuse_->geometries = &surfaceGeometries_;
     surfaceReuseKey_ = {attrs, seed};
+    lastPieces_ = ViewPieces{};  // of other values (a recompile: see compile())
   }
   const backend::SurfaceReuseScope reuseSurface(*surfaceReuse_);
   rt::DeriveResult result =
@@ -594,6 +621,38 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   std::vector<int> meshOf;
   std::string error;
   if (!rt::resolveAssets(result.instances, assets, meshOf, error)) return fail(options_.file + ": " + error);
+  const auto derived = std::chrono::steady_clock::now();
+  const auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+  };
+  const auto rules = [&] {
+    for (const ir::Rule& r : compiled_->module.rules) {  // "Tree#2 (line 9)", "15: flatbrick (line 68)"
+      const std::string& symbol = compiled_->module.symbols[r.symbol].name;
+      const bool own = r.label.rfind(symbol + "#", 0) == 0;
+      d->rules.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
+    }
+  };
+  if (viewByPieces(derive, result)) {  // seeds derived apart: only the changed ones go out
+    ViewPieces pieces;
+    if (!buildViewPieces(compiled_->module, derive, result, assets, meshOf, lastPieces_, pieces, error))
+      return fail(options_.file + ": " + error);
+    lastPieces_ = pieces;
+    Json figures = Json::object();
+    for (const auto& [name, value] : deriveStatFigures(result.stats, pieces.triangles)) figures[name] = value;
+    Json header{{"type", "pieces"},
+                {"figures", figures},
+                {"milliseconds", since(start)},
+                {"server", {{"derive", std::chrono::duration<double, std::milli>(derived - start).count()},
+                            {"pieces", since(derived)},
+                            {"built", pieces.built}}},
+                {"seed", seed},
+                {"bases", pieces.bases}};
+    d->modelJson = header.dump();
+    d->pieces = std::move(pieces);
+    d->instances = std::move(result.instances);
+    rules();
+    return d;
+  }
   ViewScene scene;
   if (!buildViewScene(compiled_->module, derive, result, assets, meshOf, scene, error))
     return fail(options_.file + ": " + error);
@@ -608,16 +667,14 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
   parts.push_back(std::move(scene.glb));
   parts.emplace_back(reinterpret_cast<const char*>(scene.ids.data()), scene.ids.size() * sizeof(uint32_t));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  Json header{{"type", "model"}, {"figures", figures}, {"milliseconds", ms}, {"seed", seed}, {"placing", placing}};
+  Json header{{"type", "model"}, {"figures", figures}, {"milliseconds", ms}, {"seed", seed}, {"placing", placing},
+              {"server", {{"derive", std::chrono::duration<double, std::milli>(derived - start).count()},
+                          {"scene", ms - std::chrono::duration<double, std::milli>(derived - start).count()}}}};
   if (options_.steps && length >= 0) header["steps"] = {{"step", shownStep}, {"length", length}};
   d->modelJson = header.dump();
   d->parts = std::move(parts);
   d->instances = std::move(result.instances);
-  for (const ir::Rule& r : compiled_->module.rules) {  // "Tree#2 (line 9)", "15: flatbrick (line 68)"
-    const std::string& symbol = compiled_->module.symbols[r.symbol].name;
-    const bool own = r.label.rfind(symbol + "#", 0) == 0;
-    d->rules.push_back((own ? r.label : r.label + ": " + symbol) + " (line " + std::to_string(r.loc.line) + ")");
-  }
+  rules();
   if (cached) {
     size_t bytes = d->modelJson.size();
     for (const std::string& part : d->parts) bytes += part.size();

@@ -12,6 +12,10 @@
 //                   then binary: the scene as .glb (as fgsg run -o FILE.glb writes it),
 //                   and the instance numbers (Uint32) in the derivation that its placing
 //                   nodes hold, node after node (view_scene.h)
+//                  {"type":"pieces", "figures", "milliseconds", "seed", "bases", "sent":[{"piece", "placing"}, ...]}:
+//                   a model of seeds derived apart, a piece per seed and the rest after them
+//                   (view_pieces.h), then binary: per piece in "sent", its .glb and instance
+//                   numbers (from "bases"[piece]); the page keeps the pieces not sent
 //                  {"type":"picked", "instance", "symbol", "asset", "params", "colour", "centre"}
 //                  {"type":"error", "diagnostics":"file:line:col: error[...] ...\n  line\n  ^"}
 //                  {"type":"rejected", "reason"}: a message of the page's that changed nothing
@@ -37,6 +41,7 @@
 #include "cli/view_field_edit.h"
 #include "cli/view_field_history.h"
 #include "cli/view_paint.h"
+#include "cli/view_pieces.h"
 #include "cli/view_seed_file.h"
 #include "cli/view_server.h"
 #include "cli/view_surface.h"
@@ -88,6 +93,7 @@ class ViewSession {
     std::string modelJson;  // empty when it failed: `error` says why
     std::string error;
     std::vector<std::string> parts;  // the model's binary messages
+    ViewPieces pieces;               // or its pieces (modelJson then the "pieces" header without "sent")
     rt::InstanceList instances;      // for picking
     std::vector<std::string> rules;  // the grammar's rules as picking names them
     std::shared_ptr<const std::pair<std::string, std::string>> surface;  // JSON, .glb (null: none)
@@ -100,6 +106,7 @@ class ViewSession {
     std::string infoSent;
     std::shared_ptr<const Derived> model;  // its last good model, for picking
     const void* surfaceSent = nullptr;
+    std::vector<std::shared_ptr<const ViewPiece>> pieces;  // the pieces it shows (held: compared by address)
     bool fieldAsked = false, fieldDue = false;  // the field overlay: wanted, owed (view_field.h)
   };
 
@@ -120,6 +127,7 @@ class ViewSession {
   // (view_field_history.h). Under mutex_.
   bool editFieldElement(uint64_t page, const PageFieldElement& edit, std::string& reason);
   void send(uint64_t page, Page& state, const std::shared_ptr<const Derived>& d);  // under mutex_
+  void sendPieces(uint64_t page, Page& state, const Derived& d);                    // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
   void askField(uint64_t page);  // {"type":"field"}: the overlay now and after each recompile
@@ -143,6 +151,7 @@ class ViewSession {
   backend::SurfaceGeometryCache surfaceGeometries_;
   ViewSurface viewSurface_;
   std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
+  ViewPieces lastPieces_;  // the last derivation's pieces with surfaceReuse_'s values (worker only)
   std::string field_;  // the field overlay's message for compiled_; empty: not computed (worker only)
   // --steps: the steps derived for these values, seed and step, kept until the grammar or
   // a file it reads changes (stepsEpoch_) or they hold kMaxStepCacheBytes (worker only).

@@ -79,6 +79,7 @@ function setStatus(text, kind) {
 }
 
 let header = null;  // the JSON that announced the model whose parts are arriving
+let piecesHeader = null;  // or the pieces whose parts are arriving
 let parts = [];
 const loader = new GLTFLoader();
 
@@ -141,27 +142,83 @@ function showModel(buffer) {
       scene.remove(model);
       dispose(model);
     }
+    pieces.length = 0;
     model = built;
     scene.add(model);
-    if (state.models === 0) {
-      if (surface) frameBox(new THREE.Box3().setFromObject(model).union(new THREE.Box3().setFromObject(surface)));
-      else frame(model);
-      controls.update();
-    }
-    tools.refresh();
-    requestRender();
-    state.timing.shown = performance.now();
-    steps.shown(announced ? announced.steps : undefined);
-    state.serverMilliseconds = announced ? announced.milliseconds : 0;
-    state.models += 1;
-    state.size = new THREE.Box3().setFromObject(model).getSize(new THREE.Vector3()).toArray();
-    state.figures = announced ? announced.figures : null;
-    const f = state.figures || {};
-    $('stats').textContent = Object.entries(f).map(([k, v]) => `${k} ${v}`).join('\n') +
-      (announced ? `\nmilliseconds ${announced.milliseconds.toFixed(1)}` : '');
-    $('diagnostics').textContent = '';
-    setStatus(`${f.triangles ?? 0} triangles`, '');
+    modelShown(announced);
   }).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+}
+
+// A model of seeds derived apart comes as pieces, a seed's each and the rest after them
+// ({"type":"pieces"}): only those that changed are sent, each replacing the one the page
+// shows at its place (a seed dragged: that seed's plant). Each piece's instance numbers
+// count from its base in the derivation, which other seeds' changes move.
+const pieces = [];  // per piece: { object, ids: [[object, local numbers], ...], glb }
+let piecesShown = Promise.resolve();
+function showPieces(buffer) {
+  parts.push(buffer);
+  if (parts.length < 2 * piecesHeader.sent.length) return;
+  const announced = piecesHeader, buffers = parts;
+  piecesHeader = null;
+  parts = [];
+  state.timing.received = performance.now();
+  // In the order they came: a later edit's pieces replace an earlier one's, never the reverse.
+  piecesShown = piecesShown.then(() => Promise.all(announced.sent.map(async (s, k) => {
+    const gltf = await loader.parseAsync(buffers[2 * k], '');
+    const ids = new Uint32Array(buffers[2 * k + 1]), byNode = new Map();
+    let offset = 0;
+    for (const [node, count] of s.placing) byNode.set(node, ids.subarray(offset, offset + count)), offset += count;
+    const own = [];
+    gltf.scene.traverse((o) => {
+      const node = (gltf.parser.associations.get(o) || {}).nodes;
+      if (byNode.has(node)) own.push([o, byNode.get(node)]);
+    });
+    return { index: s.piece, object: gltf.scene, ids: own, glb: buffers[2 * k] };
+  })).then((built) => {
+    if (!model || pieces.length === 0) {  // the first pieces: a group of them replaces the model
+      if (model) { scene.remove(model); dispose(model); }
+      model = new THREE.Group();
+      scene.add(model);
+    }
+    for (const p of built) {
+      if (pieces[p.index]) { model.remove(pieces[p.index].object); dispose(pieces[p.index].object); }
+      pieces[p.index] = p;
+      model.add(p.object);
+    }
+    for (const p of pieces.splice(announced.bases.length)) if (p) { model.remove(p.object); dispose(p.object); }
+    for (let k = 0; k < pieces.length; ++k)
+      for (const [o, local] of pieces[k].ids) placedIds.set(o, Array.from(local, (i) => i + announced.bases[k]));
+    const instancedMeshes = [];
+    model.traverse((o) => { if (o.isInstancedMesh) instancedMeshes.push({ name: o.name, asset: o.userData.asset, count: o.count }); });
+    state.instancedMeshes = instancedMeshes;
+    state.instanced = instancedMeshes.reduce((sum, m) => sum + m.count, 0);
+    state.pieces = { count: pieces.length, sent: built.map((p) => p.index),
+                     bytes: built.reduce((sum, p) => sum + p.glb.byteLength, 0), server: announced.server };
+    state.glbBytes = pieces.reduce((sum, p) => sum + p.glb.byteLength, 0);
+    lastGlb = null;
+    modelShown(announced);
+  })).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+}
+
+function modelShown(announced) {
+  if (state.models === 0) {
+    if (surface) frameBox(new THREE.Box3().setFromObject(model).union(new THREE.Box3().setFromObject(surface)));
+    else frame(model);
+    controls.update();
+  }
+  tools.refresh();
+  requestRender();
+  state.timing.shown = performance.now();
+  steps.shown(announced ? announced.steps : undefined);
+  state.serverMilliseconds = announced ? announced.milliseconds : 0;
+  state.models += 1;
+  state.size = new THREE.Box3().setFromObject(model).getSize(new THREE.Vector3()).toArray();
+  state.figures = announced ? announced.figures : null;
+  const f = state.figures || {};
+  $('stats').textContent = Object.entries(f).map(([k, v]) => `${k} ${v}`).join('\n') +
+    (announced ? `\nmilliseconds ${announced.milliseconds.toFixed(1)}` : '');
+  $('diagnostics').textContent = '';
+  setStatus(`${f.triangles ?? 0} triangles`, '');
 }
 
 // Picking: a click (not a drag) on an instance asks the server who placed it.
@@ -306,6 +363,13 @@ state.hooks = {
     const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', lastGlb));
     return Array.from(hash, (b) => b.toString(16).padStart(2, '0')).join('');
   },
+  // A model shown as pieces: each piece's .glb digest, in piece order.
+  async pieceDigests() {
+    return Promise.all(pieces.map(async (p) => {
+      const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', p.glb));
+      return Array.from(hash, (b) => b.toString(16).padStart(2, '0')).join('');
+    }));
+  },
   // An instance of the largest InstancedMesh that is the first thing drawn under its
   // centre: where it is on the canvas, and the number picking should send for it.
   visibleInstance() {
@@ -419,7 +483,7 @@ ws.onmessage = (event) => {
       surfaceHeader = null;
       return showSurface(event.data);
     }
-    return showModel(event.data);
+    return piecesHeader ? showPieces(event.data) : showModel(event.data);
   }
   const m = JSON.parse(event.data);
   if (m.type === 'info') {
@@ -447,6 +511,11 @@ ws.onmessage = (event) => {
     header = m;
     parts = [];
     state.timing.announced = performance.now();
+  } else if (m.type === 'pieces') {
+    piecesHeader = m;
+    parts = [];
+    state.timing.announced = performance.now();
+    if (m.sent.length === 0) showPieces(null);
   } else if (m.type === 'rejected') {  // a message of ours the server refused: nothing changed
     state.rejected = (state.rejected || 0) + 1;
     state.lastRejected = m.reason;
