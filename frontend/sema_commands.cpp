@@ -476,12 +476,12 @@ void Analyzer::checkBody(const Item& item, const CommandInfo& cmd) {
   for (const auto& part : item.body) {
     if (part.selector.empty()) continue;
     ++labelled;
-    // A merged part (`all=: A`): Comp("e") / Comp("v") make one shape of what it takes.
+    // A merged part (`all=: A`): Comp("f"), Comp("e") and Comp("v") make one shape of what it takes.
     if (cmd.id == CommandId::Comp && part.selector.size() > 1 && part.selector.back() == '=') {
-      if (component != "e" && component != "v" && component != "vertices")
+      if (edgeComp)
         diags_.error("E028", part.selectorRange,
-                     "a merged part '" + part.selector + ":' (one shape of all it takes) belongs to Comp(\"e\") "
-                     "or Comp(\"v\"); Comp(\"" + component + "\") gives each component a shape: '" +
+                     "a merged part '" + part.selector + ":' (one shape of all it takes) belongs to Comp(\"f\"), "
+                     "Comp(\"e\") or Comp(\"v\"); Comp(\"" + component + "\") gives each component a shape: '" +
                          part.selector.substr(0, part.selector.size() - 1) + ":'");
       const std::string bare = part.selector.substr(0, part.selector.size() - 1);
       long long index = 0;

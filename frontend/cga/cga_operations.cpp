@@ -5,7 +5,7 @@
 //                                       Subdiv with CityEngine's sizing (rest empty, overflow
 //                                       cut; a nested repeat takes what the others leave)
 //   splitArea(x|y|z [, adjust|noAdjust]){ areas : ops }[*]   SplitArea: the same, in areas
-//   comp(f){ top : A | side = B }       Comp("f"){ top: A | side: B }  (`=` as `:`, W800)
+//   comp(f){ top : A | side = B }       Comp("f"){ top: A | side=: B }  (`=`: the faces one shape)
 //   comp(e|v){ vertical : A | world.up : B | border : C | 2 : D | street.front = E }
 //                                       Comp("e"){ vertical: A | worldUp: B | border: C | #2: D | streetFront=: E }
 //   offset(-d, inside|border)           Offset(d){ inside: rest of the successor }
@@ -801,13 +801,10 @@ void Translator::comp(P::CallOperationContext* op, Sequence& seq, const Env& env
       notSupported(rangeOf(sized->key), "the comp selector '" + sized->key->getText() + "'");
       continue;
     }
-    if (sized->sep->getText() == "=")
-      warning("W800", rangeOf(sized->sep),
-              "comp's `" + sized->key->getText() +
-                  " =` (the faces merged into one shape) gives each face a shape of its own here");
     Successor part;
     part.range = rangeOf(partCtx);
-    part.selector = sel;
+    // `=`: the faces it takes merged into one shape (fgsg's label "side=").
+    part.selector = sized->sep->getText() == "=" ? sel + "=" : sel;
     part.selectorRange = rangeOf(sized->key);
     operations(sized->operation(), 0, part, env, true);
     item.body.push_back(std::move(part));

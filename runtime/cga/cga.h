@@ -122,6 +122,11 @@ bool components(const Scope& scope, const GeomRef& geom, const std::string& sele
 // (the box around their ends in those axes).
 Part mergedComponents(const std::vector<Part>& parts);
 
+// comp(f)'s merged part (`side = A`): the faces `parts` (at least one) as one shape, its
+// geometry all their faces (one Polygon stays one), its scope the first face's axes fitted
+// around them all (the box around their corners in those axes).
+Part mergedFaces(const std::vector<Part>& parts, GeometryArena& arena);
+
 // Extrude(h): a Polygon becomes a prism of height h along the scope's Z; a flat Box with
 // sy == 0 (a CGA footprint on the XZ plane) grows to height h along Y. The result's
 // scope spans the solid.

@@ -2,6 +2,7 @@
 // a scope of its own (CGA's component split).
 #include "runtime/cga/cga.h"
 #include "runtime/cga/polygon_clip.h"
+#include "runtime/cga/shape_operations.h"
 #include "runtime/cga/street_edges.h"
 
 #include <algorithm>
@@ -521,6 +522,17 @@ Part mergedComponents(const std::vector<Part>& parts) {
   merged.scope.P = merged.scope.toWorld(lo);
   merged.scope.S = hi - lo;
   merged.geom = GeomRef{GeomKind::Edge, 0, 0};
+  return merged;
+}
+
+Part mergedFaces(const std::vector<Part>& parts, GeometryArena& arena) {
+  if (parts.size() == 1) return parts.front();
+  std::vector<Polygon3> world;
+  for (const Part& p : parts)
+    for (WorldFace& f : worldFaces(p.scope, p.geom, arena)) world.push_back(std::move(f.pts));
+  Part merged = parts.front();
+  const std::vector<Polygon3> unit = fitScopeAroundWorldFaces(merged.scope, merged.scope.axes, world, merged.scope);
+  merged.geom = arena.addPolyhedron(unit);
   return merged;
 }
 

@@ -72,8 +72,8 @@ D --> offset(-0.1, inside) Inner.
 )");
   INFO(c.messages);
   REQUIRE(c.ok);
-  // W800: comp's `=` is read as `:`.
-  CHECK(c.messages.find("W800") != std::string::npos);
+  // comp(f)'s `=` merges the faces it takes into one shape: no warning.
+  CHECK(c.messages.find("W800") == std::string::npos);
   // The annotations are the attr's metadata.
   const int h = c.module.findAttr("height");
   REQUIRE(h >= 0);
@@ -285,16 +285,18 @@ TEST_CASE("what the dialect cannot run yet is an error at its name", "[cga][dial
   const Compiled many = compile("@StartRule\nLot --> roofHip(30, 1, false, 3)\n");
   CHECK(many.messages.find("error[E016]: 'roofHip' takes an angle, overhang and even, got 4") != std::string::npos);
   // comp's selectors of issue #44 (border, inside, world.*, object.*, street.*, an index,
-  // comp(e)'s and comp(v)'s `=`) run; a fractional index is E801 where written, a merged
-  // part of fgsg's Comp("f") E028.
+  // comp(f)'s, comp(e)'s and comp(v)'s `=`) run; a fractional index is E801 where written, a
+  // merged part of fgsg's edge comps (Comp("edges")) E028.
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(e) { border : A. | world.up : B. | 2 : C. | -1 : D. }\n").ok);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(v) { top : A. | object.side : B. | inside : C. }\n").ok);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(f) { world.north : A. | 0 : B. | border : C. }\n").ok);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(f) { street.front : A. | street.side : B. }\n").ok);
   CHECK(compile("@StartRule\nLot --> comp(e) { street.back = A. | street.left : B. | all = C. }\n").ok);
   CHECK(compile("Lot ~> Comp(\"e\"){ streetSide=: A | all: B };", "test.fgsg").ok);
-  const Compiled facesMerged = compile("Lot ~> Comp(\"f\"){ side=: A };", "test.fgsg");
-  CHECK(facesMerged.messages.find("test.fgsg:1:19: error[E028]: a merged part 'side=:'") != std::string::npos);
+  CHECK(compile("Lot ~> Comp(\"f\"){ side=: A | top: B };", "test.fgsg").ok);
+  CHECK(compile("@StartRule\nLot --> extrude(3) comp(f) { side = A. | top : B. }\n").ok);
+  const Compiled edgesMerged = compile("Lot ~> Comp(\"edges\"){ eave=: A };", "test.fgsg");
+  CHECK(edgesMerged.messages.find("test.fgsg:1:23: error[E028]: a merged part 'eave=:'") != std::string::npos);
   const Compiled edges = compile("@StartRule\nLot --> extrude(3) comp(e) { 1.5 : A }\n");
   CHECK(edges.messages.find("test.cga:2:30: error[E801]: the comp(e) selector '1.5'") != std::string::npos);
   CHECK(compile("@StartRule\nLot --> extrude(3) comp(v) { top = A. }\n").ok);

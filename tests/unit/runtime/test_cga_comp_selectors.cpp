@@ -238,3 +238,35 @@ TEST_CASE("cga: mergedComponents fits the first component's axes to them all", "
   merged = mergedComponents(parts);
   CHECK((merged.scope.S - Vec3(4, 2, 0)).norm() < 1e-12);
 }
+
+// comp(f)'s `side = A`: the box 4 x 3 x 2 (x 0..4, y 0..3, z 0..2) has its side faces front
+// (+z), right, back, left; merged they are one Polyhedron of 4 faces, 2 x (4 + 2) x 3 =
+// 36 m2, its scope the front face's axes (x (1,0,0), y up, z (0,0,1)) around them all:
+// x 0..4, y 0..3, z 0..2 at the origin. One face merged is that face as it was.
+TEST_CASE("cga: mergedFaces makes one shape of the faces in the first face's axes", "[cga][comp]") {
+  GeometryArena arena;
+  std::vector<Part> parts;
+  std::string err;
+  Scope s;
+  s.S = Vec3(4, 3, 2);
+  REQUIRE(components(s, GeomRef{}, "sidefaces", arena, parts, err));
+  REQUIRE(parts.size() == 4);
+  REQUIRE((parts[0].scope.Z() - Vec3(0, 0, 1)).norm() < 1e-12);
+  const Part merged = mergedFaces(parts, arena);
+  CHECK(merged.geom.kind == GeomKind::Polyhedron);
+  CHECK(merged.geom.count == 4);
+  CHECK((merged.scope.X() - Vec3(1, 0, 0)).norm() < 1e-12);
+  CHECK((merged.scope.Z() - Vec3(0, 0, 1)).norm() < 1e-12);
+  CHECK((merged.scope.P - Vec3(0, 0, 0)).norm() < 1e-12);
+  CHECK((merged.scope.S - Vec3(4, 3, 2)).norm() < 1e-12);
+  // Its faces again, in the world: the four walls, 12 + 6 + 12 + 6 m2.
+  std::vector<Part> again;
+  REQUIRE(components(merged.scope, merged.geom, "f", arena, again, err));
+  REQUIRE(again.size() == 4);
+  double area = 0;
+  for (const Part& f : again) area += f.scope.S.x() * f.scope.S.y();
+  CHECK(area == Approx(36));
+  const Part one = mergedFaces({parts[1]}, arena);
+  CHECK(one.geom.kind == parts[1].geom.kind);
+  CHECK((one.scope.S - parts[1].scope.S).norm() < 1e-12);
+}
