@@ -349,7 +349,9 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     if (!noBody() || !count(1, 2, "1 or 2 arguments (height, or axis and height)")) return;
     if (argCtx.size() == 2) {
       const std::string axis = selectorWord(argCtx[0]);
-      if (axis != "world.y") {
+      // face.normal is extrude(h)'s own direction; world.up is world.y (the reference:
+      // "in the direction of the world coordinate system's y-axis").
+      if (axis != "world.y" && axis != "world.up" && axis != "face.normal") {
         notSupported(rangeOf(argCtx[0]), "extrude along '" + argCtx[0]->getText() + "'");
         return;
       }
@@ -595,9 +597,11 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     push(std::move(item));
   };
   if (name == "color") {
-    if (!noBody() || !count(1, 4, "a \"#rrggbb\" string or r, g, b")) return;
+    if (!noBody() || !count(1, 4, "a \"#rrggbb\" string or r, g, b, and the opacity after either")) return;
     if (argCtx.size() == 4 || argCtx.size() == 2) {
-      notSupported(rangeOf(argCtx.back()), "a colour's opacity");
+      // color(r, g, b, a) and color("#rrggbb", a): the colour, and a as material.opacity.
+      colorItem({argCtx.begin(), argCtx.end() - 1});
+      materialItem(op, "opacity", env, seq);
       return;
     }
     colorItem(argCtx);

@@ -104,4 +104,18 @@ for engine in interp jit; do
   grep -q "pinned.cga:5:5: error\[R038\]: attr 'tex' = \"other.obj\": this file takes its default \"builtin:cube\"" "$tmp/pinned.txt" ||
     { cat "$tmp/pinned.txt"; fail "no located R038 for --set tex ($engine)"; }
 done
+# color(r, g, b, a): the colour with a as its material's opacity (corpus 184's top).
+for engine in interp jit; do
+  "$fgsg" run tests/cga/corpus/184_extrude_up_color_alpha.cga --engine $engine -q -o "$tmp/alpha.glb" ||
+    fail "184_extrude_up_color_alpha does not run ($engine)"
+  got=$(python3 - "$tmp/alpha.glb" <<'PY'
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+doc = json.loads(data[20:20 + struct.unpack_from("<I", data, 12)[0]])
+print(" ".join("%s:%g" % (m.get("alphaMode", "OPAQUE"), m["pbrMetallicRoughness"]["baseColorFactor"][3])
+               for m in doc["materials"] if m["pbrMetallicRoughness"]["baseColorFactor"][:3] == [1.0, 0.0, 0.0]))
+PY
+)
+  [ "$got" = "BLEND:0.5" ] || fail "color(1, 0, 0, 0.5) gives the material $got ($engine)"
+done
 echo "cga dialect: ok"
