@@ -78,6 +78,7 @@ void sceneFlags(CommandLine& cl, SceneFlags& scene) {
       throw UsageError{"--group-by " + v + ": use symbol, rule, label or none"};
     scene.groupByGiven = true;
   });
+  cl.flag("--quantize", scene.quantize);
   cl.option("--split-output", [&scene](const std::string& v) {
     if (v.empty()) throw UsageError{"--split-output needs a folder"};
     scene.splitOutput = v;

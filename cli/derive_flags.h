@@ -38,6 +38,7 @@ struct SceneFlags {
   rt::output::GroupBy groupBy = rt::output::GroupBy::Symbol;
   bool instancingGiven = false, groupByGiven = false;
   std::string splitOutput;  // --split-output: a file per start shape in this folder
+  bool quantize = false;    // --quantize: the glTF scene's vertex data 16-bit (gltf_writer.h)
 };
 void sceneFlags(CommandLine& cl, SceneFlags& scene);
 

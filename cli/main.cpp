@@ -22,6 +22,7 @@ usage:
                 [--lots lots.geojson] [--start-rule NAME] [--report reports.json]
                 [--atlas-resolution N] [--march-units surface|texels] [--seed-density T --seed-count N]
                 [--instancing auto|on|nodes|off] [--group-by symbol|rule|label|none] [--split-output DIR]
+                [--quantize]
   fgsg check FILE [--start-rule NAME]
                            report errors and warnings; exit 1 on errors
   fgsg ir FILE [--llvm]    print the typed IR after constant folding (or the LLVM IR)

@@ -62,7 +62,7 @@ void forEachAssetName(rt::output::Scene& scene, F f) {
 }
 
 bool stageAs(rt::output::Scene& scene, OutputLayout layout, const std::string& path,
-             rt::io::OutputTransaction& outputs, std::string& error) {
+             rt::io::OutputTransaction& outputs, std::string& error, const rt::output::GltfEncoding& encoding) {
   if (layout == OutputLayout::ObjScene) {
     if (rt::output::stageObjScene(scene, path, outputs, error)) return true;
     error = path + ": " + error;
@@ -81,7 +81,7 @@ bool stageAs(rt::output::Scene& scene, OutputLayout layout, const std::string& p
       name = rt::io::assetNameFrom(name, folder);
     });
   }
-  const bool staged = rt::output::stageGltf(scene, path, outputs, error);
+  const bool staged = rt::output::stageGltf(scene, path, outputs, error, encoding);
   size_t k = 0;
   if (!found.empty()) forEachAssetName(scene, [&](std::string& name) { name = std::move(found[k++]); });
   return staged;
@@ -135,6 +135,11 @@ OutputLayout checkOutput(const SceneFlags& flags, const std::string& path, rt::D
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
     throw UsageError{"-o " + path + ": unknown output format (use " + list + " or .gltf)"};
   }
+  // --quantize encodes the glTF scene writer's files: not the flattened .glb of before.
+  const bool gltfFiles = path.empty() || ext == ".gltf" || ext == ".glb";
+  if (flags.quantize && (!gltfFiles || (layout == OutputLayout::Flattened && flags.splitOutput.empty())))
+    throw UsageError{"--quantize encodes a glTF scene (-o FILE.glb or .gltf); `--instancing off --group-by none` "
+                     "is the flattened mesh of before, which it leaves as it is"};
   // Rule and label groups need to know which rule placed each instance.
   if ((layout != OutputLayout::Flattened || !flags.splitOutput.empty()) &&
       (flags.groupBy == GroupBy::Rule || flags.groupBy == GroupBy::Label))
@@ -153,7 +158,7 @@ bool stageScene(const SceneFlags& flags, const SceneSource& run, const std::stri
   const OutputLayout layout = checkOutput(flags, path, unused);
   rt::output::Scene scene = buildScene(flags, run, layout);
   if (drawn) *drawn = sceneDrawnCounts(scene);
-  return stageAs(scene, layout, path, outputs, error);
+  return stageAs(scene, layout, path, outputs, error, {flags.quantize});
 }
 
 bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std::string& path,
@@ -198,7 +203,7 @@ bool stageSplitOutput(const SceneFlags& flags, const SceneSource& run, const std
       entry["bounds"] = nullptr;
     files.push_back(std::move(entry));
     one.starts.assign(1, std::move(start));
-    const bool staged = stageAs(one, layout, (dir / name).string(), outputs, error);
+    const bool staged = stageAs(one, layout, (dir / name).string(), outputs, error, {flags.quantize});
     start = std::move(one.starts.front());
     if (!staged) return false;
   }

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -23,6 +24,8 @@
 #include <limits>
 #include <map>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <unordered_map>
 
 namespace fgsg::rt::output {
@@ -37,7 +40,13 @@ using namespace io::gltf;  // glTF's numeric codes, padded4, the GLB container
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
 // CityEngine's specular map: KHR_materials_specular's specularColorTexture.
 constexpr const char* kSpecular = "KHR_materials_specular";
-constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedShort = 5123, kShort = 5122;
+// GltfEncoding::quantize: 16-bit vertex data, and the texture coordinates' steps scaled back.
+constexpr const char* kQuantization = "KHR_mesh_quantization";
+constexpr const char* kTextureTransform = "KHR_texture_transform";
+// Quantized texture coordinates: at most 2^14 steps per tile (finer than a float's at 16
+// tiles), at least 2^6 (else they stay floats).
+constexpr int kMaxUvStepBits = 14, kMinUvStepBits = 6;
 // CityEngine's texture layers: uv set 5 is the normal map's.
 constexpr uint32_t kNormalMapUvSet = Finish::kNormalMap;
 // A triangle's vertex normals closer to its face's normal than this (the cosine of their
@@ -123,9 +132,29 @@ std::string base64(const std::string& bytes) {
 
 enum class GltfPoolKind : uint8_t { Vertices, Indices, Instances };
 
+// An instance scale folded into a shared mesh's vertices (instancedNode); 1: none.
+using GltfScale = std::array<float, 3>;
+constexpr GltfScale kGltfUnitScale{1, 1, 1};
+
+// The double nearest the shortest decimal of `x` (29.3, not 29.299999237060547): what
+// the JSON writes of a float.
+double gltfShortest(float x) {
+  char text[io::kMaxFloatText + 1];
+  *io::putShortestFloat(text, x) = '\0';
+  return std::strtod(text, nullptr);
+}
+
+// Quantized positions: p = origin + step * q per axis (q 16-bit unsigned), one step on
+// every axis so that normals need no other transform; the node's translation and scale.
+struct GltfPositionGrid {
+  std::array<double, 3> origin{0, 0, 0};
+  double step = 1;
+};
+
 class Writer {
  public:
-  Writer(const Scene& scene, std::vector<PlacedNode>* placed) : scene_(scene), placed_(placed) {}
+  Writer(const Scene& scene, std::vector<PlacedNode>* placed, const GltfEncoding& encoding)
+      : scene_(scene), placed_(placed), encoding_(encoding) {}
 
   bool write(bool binary, std::string& bytes, std::string& error);
 
@@ -168,6 +197,21 @@ class Writer {
     static const char* const types[] = {"", "", "VEC2", "VEC3", "VEC4"};
     return accessor(v, vertices, kFloat, types[width], offset);
   }
+  // A 16-bit vertex attribute (KHR_mesh_quantization) of `width` components per vertex,
+  // each element padded to 4 bytes as glTF wants.
+  template <class T>
+  int shortVertexAccessor(const std::vector<T>& values, size_t vertices, int width, bool normalized) {
+    static_assert(sizeof(T) == 2);
+    const size_t element = sizeof(T) * size_t(width), stride = (element + 3) / 4 * 4;
+    const auto [v, offset] = pooled(GltfPoolKind::Vertices, stride, stride * vertices, 4);
+    char* out = pools_[{GltfPoolKind::Vertices, stride}].bytes.data() + offset;
+    for (size_t k = 0; k < vertices; ++k) std::memcpy(out + stride * k, &values[size_t(width) * k], element);
+    static const char* const types[] = {"", "", "VEC2", "VEC3", "VEC4"};
+    const int a = accessor(v, vertices, std::is_signed_v<T> ? kShort : kUnsignedShort, types[width], offset);
+    if (normalized) accessors_[a]["normalized"] = true;
+    quantized_ = true;
+    return a;
+  }
   void flushPools() {
     for (auto& [key, pool] : pools_) {
       bin_.resize(padded4(bin_.size()), '\0');
@@ -184,10 +228,15 @@ class Writer {
     return int(accessors_.size() - 1);
   }
   int positions(const float* p, size_t vertices);
+  int quantizedPositions(const float* p, size_t vertices, const GltfPositionGrid& grid);
+  GltfPositionGrid bakedGrid(const GroupNode& g) const;
+  int unitVectors(const float* v, size_t vertices, int width);
+  int texcoordAccessor(const float* t, size_t vertices, int& stepBits);
   std::vector<float> unitNormals(const Mesh& m) const;
+  std::vector<float> scaledNormals(const Mesh& m, const GltfScale& scale) const;
   std::vector<float> flippedTexcoords(const Mesh& m, std::array<float, 2> shift) const;
   int normals(const Mesh& m);
-  int texcoords(const Mesh& m, std::array<float, 2> shift);
+  int texcoords(const Mesh& m, std::array<float, 2> shift, int& stepBits);
   WeldedVertices weld(const Mesh& m, bool withNormals, bool withColors) const;
   // Indices (of `vertices` vertices) as 16-bit where they fit, into the indices' pooled
   // view: where they lie there.
@@ -198,19 +247,23 @@ class Writer {
   };
   template <class Indices>
   IndexSpan indexView(const Indices& indices, size_t vertices);
-  json sharedAttributes(uint32_t mesh);
-  int sharedMesh(uint32_t mesh, uint32_t material);
+  json sharedAttributes(uint32_t mesh, const GltfScale& scale);
+  int sharedMesh(uint32_t mesh, uint32_t material, const GltfScale& scale = kGltfUnitScale);
+  GltfScale foldedScale(const InstancedPart& part) const;
   int instancedNode(const InstancedPart& part);
   int instanceNode(const InstancedPart& part, size_t k);
-  int bakedMesh(const GroupNode& g, const std::string& name, bool& wrote);
+  int bakedMesh(const GroupNode& g, const std::string& name, bool& wrote, GltfPositionGrid* grid);
   int groupNode(const GroupNode& g, json node);
   int startNode(const StartNode& s);
-  json materialJson(const Material& m, uint32_t ownSets);
+  json materialJson(const Material& m, uint32_t ownSets, int uvStepBits);
   void uvSetAttributes(const Mesh& m, const WeldedVertices& w, json& attributes);
   bool verticesFinite(std::string& error) const;
 
   const Scene& scene_;
   std::vector<PlacedNode>* placed_;  // may be null
+  GltfEncoding encoding_;
+  bool quantized_ = false, textureTransform_ = false;  // what the file then requires
+  std::map<uint32_t, int> sharedUvStepBits_;  // per shared mesh, its TEXCOORD_0's (0: floats)
   std::string bin_;
   struct Pool {
     int view = -1;
@@ -218,13 +271,16 @@ class Writer {
   };
   std::map<std::pair<GltfPoolKind, size_t>, Pool> pools_;  // (kind, byteStride) -> its view
   json views_ = json::array(), accessors_ = json::array(), meshes_ = json::array(), nodes_ = json::array();
-  std::map<uint32_t, json> sharedAttributes_;                  // per shared mesh, its vertex accessors
-  std::map<uint32_t, int> sharedIndices_;                      // ... and its indices' accessor
-  std::map<uint32_t, int> sharedTangents_;                     // ... and its tangents' (normal maps)
-  std::map<std::pair<uint32_t, uint32_t>, int> sharedMeshes_;  // (shared mesh, material) -> glTF mesh
-  // (Scene::materials index, the layers sampled with their own uv set) -> the file's material
-  // (only those used)
-  std::map<std::pair<uint32_t, uint32_t>, int> materialOut_;
+  // Per (shared mesh, the scale folded into it: instancedNode), its vertex accessors and its
+  // tangents' (normal maps); per shared mesh its indices' and texture coordinates' (which
+  // the scale leaves as they are).
+  std::map<std::pair<uint32_t, GltfScale>, json> sharedAttributes_;
+  std::map<std::pair<uint32_t, GltfScale>, int> sharedTangents_;
+  std::map<uint32_t, int> sharedIndices_, sharedTexcoords_;
+  std::map<std::tuple<uint32_t, uint32_t, GltfScale>, int> sharedMeshes_;  // (mesh, material, scale) -> glTF mesh
+  // (Scene::materials index, the layers sampled with their own uv set, TEXCOORD_0's step
+  // bits: texcoordAccessor) -> the file's material (only those used)
+  std::map<std::tuple<uint32_t, uint32_t, int>, int> materialOut_;
   json materials_ = json::array();
   // An image the file embeds: one of Scene::images (`file`); the base colour texture made
   // from a colour map and an opacity map (base_color_opacity_image.h: `opacity` set); or the
@@ -241,13 +297,14 @@ class Writer {
   // `sets`: the uv sets 1..9 the primitive has (bit n: TEXCOORD_n is set n's). Each texture
   // layer of the material samples its own set where the primitive has it (the normal map
   // only beside a colour map, as before the other layers came).
-  int material(uint32_t k, uint32_t sets = 0) {
+  int material(uint32_t k, uint32_t sets = 0, int uvStepBits = 0) {
     const Material& m = scene_.materials[k];
+    if (m.image < 0) uvStepBits = 0;  // nothing samples TEXCOORD_0: no variant
     uint32_t own = 0;
     for (uint32_t layer = 1; layer < Finish::kLayers; ++layer)
       if ((sets >> layer & 1) && m.maps[layer] >= 0 && (layer != kNormalMapUvSet || m.image >= 0)) own |= 1u << layer;
-    const auto [it, added] = materialOut_.emplace(std::make_pair(k, own), int(materials_.size()));
-    if (added) materials_.push_back(materialJson(m, own));
+    const auto [it, added] = materialOut_.emplace(std::make_tuple(k, own, uvStepBits), int(materials_.size()));
+    if (added) materials_.push_back(materialJson(m, own, uvStepBits));
     return it->second;
   }
 };
@@ -261,16 +318,85 @@ int Writer::positions(const float* p, size_t vertices) {
   // As the floats' shortest decimals (29.3, not 29.299999237060547): a tenth of a city's JSON.
   const auto shortest = [](const std::array<double, 3>& x) {
     json out = json::array();
-    for (double d : x) {
-      char text[io::kMaxFloatText + 1];
-      *io::putShortestFloat(text, float(d)) = '\0';
-      out.push_back(std::strtod(text, nullptr));
-    }
+    for (double d : x) out.push_back(gltfShortest(float(d)));
     return out;
   };
   accessors_[a]["min"] = shortest(lo);
   accessors_[a]["max"] = shortest(hi);
   return a;
+}
+
+// 16-bit unsigned positions on `grid` (KHR_mesh_quantization: not normalized, min/max in
+// the stored integers).
+int Writer::quantizedPositions(const float* p, size_t vertices, const GltfPositionGrid& grid) {
+  std::vector<uint16_t> q(3 * vertices);
+  std::array<uint16_t, 3> lo{65535, 65535, 65535}, hi{0, 0, 0};
+  for (size_t v = 0; v < vertices; ++v)
+    for (int d = 0; d < 3; ++d) {
+      const double x = std::round((double(p[3 * v + d]) - grid.origin[d]) / grid.step);
+      const uint16_t k = uint16_t(std::clamp(x, 0.0, 65535.0));
+      q[3 * v + d] = k, lo[d] = std::min(lo[d], k), hi[d] = std::max(hi[d], k);
+    }
+  const int a = shortVertexAccessor(q, vertices, 3, false);
+  accessors_[a]["min"] = lo;
+  accessors_[a]["max"] = hi;
+  return a;
+}
+
+// The grid of a group's baked parts (one mesh, one node): its box's lowest corner, and its
+// longest side in 65535 steps.
+GltfPositionGrid Writer::bakedGrid(const GroupNode& g) const {
+  std::array<double, 3> lo, hi;
+  lo.fill(INFINITY), hi.fill(-INFINITY);
+  for (const BakedPart& part : g.baked)
+    for (size_t k = 0; k < part.mesh.positions.size(); ++k)
+      lo[k % 3] = std::min(lo[k % 3], double(part.mesh.positions[k])), hi[k % 3] = std::max(hi[k % 3], double(part.mesh.positions[k]));
+  // Origin and step as short decimals (the JSON's node translation and scale): the
+  // floats' shortest, the step's rounded up until 65535 steps span the box.
+  GltfPositionGrid grid;
+  double side = 0;
+  for (int d = 0; d < 3; ++d)
+    if (lo[d] <= hi[d]) grid.origin[d] = gltfShortest(float(lo[d])), side = std::max(side, hi[d] - grid.origin[d]);
+  if (side > 0) {
+    float step = float(side / 65535);
+    while (gltfShortest(step) * 65535 < side) step = std::nextafter(step, INFINITY);
+    grid.step = gltfShortest(step);
+  }
+  return grid;
+}
+
+// Unit vectors (normals: width 3; tangents: 4, w +-1) as floats, or quantizing as
+// normalized 16-bit (a unit vector to 3e-5).
+int Writer::unitVectors(const float* v, size_t vertices, int width) {
+  if (!encoding_.quantize) return vertexAccessor(v, vertices, width);
+  std::vector<int16_t> q(size_t(width) * vertices);
+  for (size_t k = 0; k < q.size(); ++k) q[k] = int16_t(std::lround(std::clamp(v[k], -1.0f, 1.0f) * 32767.0f));
+  return shortVertexAccessor(q, vertices, width, true);
+}
+
+// TEXCOORD_0 as floats (`stepBits` 0), or quantizing as 16-bit integers in steps of
+// 1/2^stepBits of a tile, whole tiles taken off (the sampler repeats) so that they lie
+// around 0: as many bits as their span allows. The materials sampling them scale them back
+// (KHR_texture_transform).
+int Writer::texcoordAccessor(const float* t, size_t vertices, int& stepBits) {
+  stepBits = 0;
+  if (encoding_.quantize && vertices > 0) {
+    std::array<double, 2> lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY}, shift;
+    for (size_t k = 0; k < 2 * vertices; ++k) lo[k % 2] = std::min(lo[k % 2], double(t[k])), hi[k % 2] = std::max(hi[k % 2], double(t[k]));
+    double half = 0;
+    for (int d = 0; d < 2; ++d) shift[d] = std::round((lo[d] + hi[d]) / 2), half = std::max({half, hi[d] - shift[d], shift[d] - lo[d]});
+    if (std::isfinite(half)) {
+      int bits = kMaxUvStepBits;
+      while (bits >= kMinUvStepBits && half * double(1 << bits) > 32767) --bits;
+      if (bits >= kMinUvStepBits) {
+        std::vector<int16_t> q(2 * vertices);
+        for (size_t k = 0; k < q.size(); ++k) q[k] = int16_t(std::lround((double(t[k]) - shift[k % 2]) * double(1 << bits)));
+        stepBits = bits;
+        return shortVertexAccessor(q, vertices, 2, false);
+      }
+    }
+  }
+  return vertexAccessor(t, vertices, 2);
 }
 
 // Unit normals (glTF requires them): a vanished one as the flattened output writes it.
@@ -305,12 +431,12 @@ std::vector<float> flippedUvSet(const MeshArray<float>& coords) {
 
 int Writer::normals(const Mesh& m) {
   const std::vector<float> n = unitNormals(m);
-  return vertexAccessor(n.data(), m.vertexCount(), 3);
+  return unitVectors(n.data(), m.vertexCount(), 3);
 }
 
-int Writer::texcoords(const Mesh& m, std::array<float, 2> shift) {
+int Writer::texcoords(const Mesh& m, std::array<float, 2> shift, int& stepBits) {
   const std::vector<float> t = flippedTexcoords(m, shift);
-  return vertexAccessor(t.data(), m.vertexCount(), 2);
+  return texcoordAccessor(t.data(), m.vertexCount(), stepBits);
 }
 
 WeldedVertices Writer::weld(const Mesh& m, bool withNormals, bool withColors) const {
@@ -376,39 +502,94 @@ Writer::IndexSpan Writer::indexView(const Indices& indices, size_t vertices) {
   return {v, narrow ? kUnsignedShort : kUnsignedInt, offset, size};
 }
 
-json Writer::sharedAttributes(uint32_t mesh) {
-  auto it = sharedAttributes_.find(mesh);
+// A shared mesh's positions scaled by `scale` (as floats, as a reader's instance matrix
+// would), and its unit normals as that scale turns them (by its inverse).
+std::vector<float> gltfScaledPositions(const Mesh& m, const GltfScale& scale) {
+  std::vector<float> p(m.positions.begin(), m.positions.end());
+  for (size_t k = 0; k < p.size(); ++k) p[k] = float(double(p[k]) * scale[k % 3]);
+  return p;
+}
+
+std::vector<float> Writer::scaledNormals(const Mesh& m, const GltfScale& scale) const {
+  std::vector<float> n = unitNormals(m);
+  if (scale == kGltfUnitScale) return n;
+  for (size_t v = 0; v < n.size(); v += 3) {
+    const double x = n[v] / double(scale[0]), y = n[v + 1] / double(scale[1]), z = n[v + 2] / double(scale[2]);
+    const double len = std::sqrt(x * x + y * y + z * z);
+    if (len > 0) n[v] = float(x / len), n[v + 1] = float(y / len), n[v + 2] = float(z / len);
+  }
+  return n;
+}
+
+json Writer::sharedAttributes(uint32_t mesh, const GltfScale& scale) {
+  auto it = sharedAttributes_.find({mesh, scale});
   if (it != sharedAttributes_.end()) return it->second;
   const SharedMesh& s = scene_.meshes[mesh];
   const Mesh& m = *s.mesh;
-  json attributes = {{"POSITION", positions(m.positions.data(), m.vertexCount())}};
-  if (io::hasNormals(m)) attributes["NORMAL"] = normals(m);
-  if (m.hasTexcoords()) attributes["TEXCOORD_0"] = texcoords(m, s.uvShift);
-  const IndexSpan indices = indexView(m.indices, m.vertexCount());
-  sharedIndices_[mesh] = accessor(indices.view, m.indices.size(), indices.type, "SCALAR", indices.offset);
-  return sharedAttributes_[mesh] = attributes;
+  json attributes;
+  if (scale == kGltfUnitScale) {
+    attributes["POSITION"] = positions(m.positions.data(), m.vertexCount());
+  } else {
+    const std::vector<float> p = gltfScaledPositions(m, scale);
+    attributes["POSITION"] = positions(p.data(), m.vertexCount());
+  }
+  if (io::hasNormals(m)) {
+    const std::vector<float> n = scaledNormals(m, scale);
+    attributes["NORMAL"] = unitVectors(n.data(), m.vertexCount(), 3);
+  }
+  if (m.hasTexcoords()) {
+    if (!sharedTexcoords_.count(mesh)) sharedTexcoords_[mesh] = texcoords(m, s.uvShift, sharedUvStepBits_[mesh]);
+    attributes["TEXCOORD_0"] = sharedTexcoords_[mesh];
+  }
+  if (!sharedIndices_.count(mesh)) {
+    const IndexSpan indices = indexView(m.indices, m.vertexCount());
+    sharedIndices_[mesh] = accessor(indices.view, m.indices.size(), indices.type, "SCALAR", indices.offset);
+  }
+  return sharedAttributes_[{mesh, scale}] = attributes;
 }
 
-int Writer::sharedMesh(uint32_t mesh, uint32_t material) {
-  const auto at = sharedMeshes_.find({mesh, material});
+int Writer::sharedMesh(uint32_t mesh, uint32_t material, const GltfScale& scale) {
+  const auto at = sharedMeshes_.find({mesh, material, scale});
   if (at != sharedMeshes_.end()) return at->second;
-  json attributes = sharedAttributes(mesh);
+  json attributes = sharedAttributes(mesh, scale);
   const Material& look = scene_.materials[material];
   const Mesh& m = *scene_.meshes[mesh].mesh;
   if (look.image >= 0 && look.normalImage() >= 0 && m.hasTexcoords() && io::hasNormals(m)) {
-    // The tangents of a normal-mapped shared mesh, once per mesh.
-    auto [it, added] = sharedTangents_.emplace(mesh, -1);
+    // The tangents of a normal-mapped shared mesh, once per mesh (and scale).
+    auto [it, added] = sharedTangents_.emplace(std::make_pair(mesh, scale), -1);
     if (added) {
-      const std::vector<float> n = unitNormals(m), t = flippedTexcoords(m, scene_.meshes[mesh].uvShift);
+      const std::vector<float> n = scaledNormals(m, scale), t = flippedTexcoords(m, scene_.meshes[mesh].uvShift);
+      const std::vector<float> p = gltfScaledPositions(m, scale);
       const std::vector<uint32_t> indices(m.indices.begin(), m.indices.end());
-      const std::vector<float> tangents = normalMapTangents(m.positions.data(), n.data(), t.data(), m.vertexCount(), indices);
-      it->second = vertexAccessor(tangents.data(), m.vertexCount(), 4);
+      const std::vector<float> tangents = normalMapTangents(p.data(), n.data(), t.data(), m.vertexCount(), indices);
+      it->second = unitVectors(tangents.data(), m.vertexCount(), 4);
     }
     attributes["TANGENT"] = it->second;
   }
-  json primitive = {{"attributes", attributes}, {"indices", sharedIndices_[mesh]}, {"material", this->material(material)}, {"mode", kTriangles}};
+  json primitive = {{"attributes", attributes},
+                    {"indices", sharedIndices_[mesh]},
+                    {"material", this->material(material, 0, sharedUvStepBits_[mesh])},
+                    {"mode", kTriangles}};
   meshes_.push_back({{"name", scene_.meshes[mesh].name}, {"primitives", json::array({primitive})}});
-  return sharedMeshes_[{mesh, material}] = int(meshes_.size() - 1);
+  return sharedMeshes_[{mesh, material, scale}] = int(meshes_.size() - 1);
+}
+
+// The one scale every instance of `part` has (a facade's windows: the window's size),
+// which instancedNode folds into the mesh and leaves SCALE out: where that mesh is
+// written anyway, or its copy costs less than the SCALE it saves (12 bytes an instance).
+// kGltfUnitScale where the scales differ (SCALE written), or are all 1 (left out).
+GltfScale Writer::foldedScale(const InstancedPart& part) const {
+  if (part.trs.empty()) return kGltfUnitScale;
+  const auto asFloats = [](const Trs& t) { return GltfScale{float(t.scale[0]), float(t.scale[1]), float(t.scale[2])}; };
+  const GltfScale scale = asFloats(part.trs.front());
+  for (const Trs& t : part.trs)
+    if (asFloats(t) != scale) return kGltfUnitScale;
+  for (float x : scale)
+    if (!(x > 0) || !std::isfinite(x)) return kGltfUnitScale;
+  const Mesh& m = *scene_.meshes[part.mesh].mesh;
+  const size_t copy = m.vertexCount() * (io::hasNormals(m) ? 24 : 12) + 300;  // its vertices and JSON
+  const bool written = sharedAttributes_.count({part.mesh, scale}) > 0;
+  return written || 12 * part.trs.size() > copy ? scale : kGltfUnitScale;
 }
 
 int Writer::instancedNode(const InstancedPart& part) {
@@ -417,12 +598,19 @@ int Writer::instancedNode(const InstancedPart& part) {
   const bool colored = scene_.materials[part.material].vertexColors;
   // The part's block of the instances' pooled view: translations, rotations, scales,
   // colours, one after another, written in place (a million instances are 40 MB).
-  // Rotations stay floats: as normalized 16-bit components (which the extension allows)
-  // the city's wall pieces under --instancing on moved by up to 0.35 mm.
-  const size_t bytes = (colored ? 13 : 10) * n * sizeof(float);
+  // Rotations are floats but quantizing: as normalized 16-bit components (which the
+  // extension allows) the city's wall pieces under --instancing on moved by up to 0.35 mm.
+  const bool shortRotations = encoding_.quantize;
+  const size_t rotationBytes = shortRotations ? 8 : 16;
+  // SCALE only where the instances' scales differ: else it is in the mesh, or 1.
+  const GltfScale folded = foldedScale(part);
+  bool scaled = false;
+  for (const Trs& t : part.trs)
+    for (int d = 0; d < 3; ++d) scaled |= float(t.scale[d]) != folded[d];
+  const size_t bytes = ((colored ? 3 : 0) * sizeof(float) + (scaled ? 12 : 0) + 12 + rotationBytes) * n;
   const auto [v, offset] = pooled(GltfPoolKind::Instances, 0, bytes, 4);
   char* data = pools_[{GltfPoolKind::Instances, 0}].bytes.data() + offset;
-  const auto put = [&](float x) { std::memcpy(data, &x, sizeof x), data += sizeof x; };
+  const auto put = [&](auto x) { std::memcpy(data, &x, sizeof x), data += sizeof x; };
   for (const Trs& t : part.trs)
     for (double x : t.translation) put(float(x));
   for (const Trs& t : part.trs) {
@@ -431,20 +619,27 @@ int Writer::instancedNode(const InstancedPart& part) {
     double len = 0;
     for (int k = 0; k < 4; ++k) q[k] = float(t.rotation[k]), len += double(q[k]) * q[k];
     len = std::sqrt(len);
-    for (float x : q) put(float(x / len));
+    for (float x : q)
+      if (shortRotations)
+        put(int16_t(std::lround(std::clamp(double(x) / len, -1.0, 1.0) * 32767)));
+      else
+        put(float(x / len));
   }
-  for (const Trs& t : part.trs)
-    for (double x : t.scale) put(float(x));
+  if (scaled)
+    for (const Trs& t : part.trs)
+      for (double x : t.scale) put(float(x));
   if (colored)
     for (const auto& c : part.colors)
       for (float x : c) put(io::clamp01(x));
+  const size_t scales = offset + (12 + rotationBytes) * n, colors = scales + (scaled ? 12 * n : 0);
   json attributes = {{"TRANSLATION", accessor(v, n, kFloat, "VEC3", offset)},
-                     {"ROTATION", accessor(v, n, kFloat, "VEC4", offset + 12 * n)},
-                     {"SCALE", accessor(v, n, kFloat, "VEC3", offset + 28 * n)}};
-  if (colored) attributes["_COLOR_0"] = accessor(v, n, kFloat, "VEC3", offset + 40 * n);
+                     {"ROTATION", accessor(v, n, shortRotations ? kShort : kFloat, "VEC4", offset + 12 * n)}};
+  if (shortRotations) accessors_[int(attributes["ROTATION"])]["normalized"] = true;
+  if (scaled) attributes["SCALE"] = accessor(v, n, kFloat, "VEC3", scales);
+  if (colored) attributes["_COLOR_0"] = accessor(v, n, kFloat, "VEC3", colors);
   instancing_ = true;
   nodes_.push_back({{"name", scene_.meshes[part.mesh].name},
-                    {"mesh", sharedMesh(part.mesh, part.material)},
+                    {"mesh", sharedMesh(part.mesh, part.material, folded)},
                     {"extensions", {{kInstancing, {{"attributes", attributes}}}}},
                     {"extras", {{"asset", scene_.meshes[part.mesh].asset}, {"instances", n}}}});
   if (placed_) placed_->push_back({int(nodes_.size() - 1), part.instances.data(), n});
@@ -465,9 +660,11 @@ int Writer::instanceNode(const InstancedPart& part, size_t k) {
 
 // The group's baked parts as one glTF mesh: per part its own vertices (equal ones
 // welded; no normals where the part is shaded flat, as readers then shade it), a
-// primitive per image (untextured last) and one for its line segments.
-int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) {
+// primitive per image (untextured last) and one for its line segments. Quantizing, its
+// positions lie on `grid` (the node that holds the mesh maps them back).
+int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote, GltfPositionGrid* grid) {
   json primitives = json::array();
+  if (grid) *grid = bakedGrid(g);
   for (const BakedPart& part : g.baked) {
     const Mesh& m = part.mesh;
     const Material& untextured = scene_.materials[part.materials.back()];
@@ -481,11 +678,13 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
     for (uint32_t k : part.materials) normalMapped |= scene_.materials[k].image >= 0 && scene_.materials[k].normalImage() >= 0;
     normalMapped = normalMapped && (normalSet || m.hasTexcoords()) && io::hasNormals(m);
     const WeldedVertices w = weld(m, io::hasNormals(m) && (normalMapped || !flatShaded(m)), colored);
-    json attributes = {{"POSITION", positions(w.positions.data(), w.count)}};
+    json attributes = {{"POSITION", grid ? quantizedPositions(w.positions.data(), w.count, *grid)
+                                         : positions(w.positions.data(), w.count)}};
     if (!w.normals.empty())
-      attributes["NORMAL"] = vertexAccessor(w.normals.data(), w.count, 3);
+      attributes["NORMAL"] = unitVectors(w.normals.data(), w.count, 3);
+    int uvStepBits = 0;
     if (!w.texcoords.empty())
-      attributes["TEXCOORD_0"] = vertexAccessor(w.texcoords.data(), w.count, 2);
+      attributes["TEXCOORD_0"] = texcoordAccessor(w.texcoords.data(), w.count, uvStepBits);
     uvSetAttributes(m, w, attributes);
     if (colored)
       attributes["COLOR_0"] = vertexAccessor(w.colors.data(), w.count, 3);
@@ -515,7 +714,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       for (size_t k = 0; k < m.uvSets.size(); ++k)
         if (m.uvSets[k].set == normalSet) normalUv = w.uvSets[k].data();
       const std::vector<float> tangents = normalMapTangents(w.positions.data(), w.normals.data(), normalUv, w.count, indices);
-      attributes["TANGENT"] = vertexAccessor(tangents.data(), w.count, 4);
+      attributes["TANGENT"] = unitVectors(tangents.data(), w.count, 4);
     }
     if (!indices.empty()) {
       const IndexSpan span = indexView(indices, w.count);
@@ -523,7 +722,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       for (const auto& [material, count] : groups) {
         primitives.push_back({{"attributes", attributes},
                               {"indices", accessor(span.view, count, span.type, "SCALAR", span.offset + span.size * first)},
-                              {"material", this->material(material, sets)},
+                              {"material", this->material(material, sets, uvStepBits)},
                               {"mode", kTriangles}});
         first += count;
       }
@@ -535,7 +734,7 @@ int Writer::bakedMesh(const GroupNode& g, const std::string& name, bool& wrote) 
       const IndexSpan span = indexView(lines, w.count);
       primitives.push_back({{"attributes", attributes},
                             {"indices", accessor(span.view, lines.size(), span.type, "SCALAR", span.offset)},
-                            {"material", material(part.materials.back())},
+                            {"material", material(part.materials.back(), 0, uvStepBits)},
                             {"mode", kLines}});
     }
   }
@@ -557,8 +756,23 @@ int Writer::groupNode(const GroupNode& g, json node) {
   for (const InstancedPart& p : g.mirrored)
     for (size_t k = 0; k < p.instances.size(); ++k) children.push_back(instanceNode(p, k));
   bool baked = false;
-  const int mesh = bakedMesh(g, node.value("name", std::string("baked")), baked);
-  if (baked) node["mesh"] = mesh;
+  GltfPositionGrid grid;
+  const std::string name = node.value("name", std::string("baked"));
+  const int mesh = bakedMesh(g, name, baked, encoding_.quantize ? &grid : nullptr);
+  if (baked && !encoding_.quantize) {
+    node["mesh"] = mesh;
+  } else if (baked) {
+    // The grid's transform, on the node itself where it has no children (which it would
+    // scale too), else on a child of its own.
+    json holder = {{"mesh", mesh}, {"translation", grid.origin}, {"scale", {grid.step, grid.step, grid.step}}};
+    if (children.empty()) {
+      node.update(holder);
+    } else {
+      holder["name"] = name + " (quantized)";
+      nodes_.push_back(std::move(holder));
+      children.push_back(int(nodes_.size() - 1));
+    }
+  }
   if (!g.bakedAssets.empty()) {
     json counts = json::object();
     for (const auto& [asset, count] : g.bakedAssets) counts[asset] = count;
@@ -587,7 +801,7 @@ int Writer::startNode(const StartNode& s) {
   return int(nodes_.size() - 1);
 }
 
-json Writer::materialJson(const Material& m, uint32_t ownSets) {
+json Writer::materialJson(const Material& m, uint32_t ownSets, int uvStepBits) {
   // The defaults (roughness 0.8, metallic 0) as the numbers every material had before.
   // Others as their shortest decimal (0.3, not the float's 0.30000001192092896).
   const auto factor = [](float x) {
@@ -605,14 +819,21 @@ json Writer::materialJson(const Material& m, uint32_t ownSets) {
   const auto texture = [&](ImageOut image) {
     const auto at = std::find(imagesOut_.begin(), imagesOut_.end(), image);
     if (at == imagesOut_.end()) imagesOut_.push_back(image);
-    return json{{"index", std::find(imagesOut_.begin(), imagesOut_.end(), image) - imagesOut_.begin()}};
+    json t = {{"index", std::find(imagesOut_.begin(), imagesOut_.end(), image) - imagesOut_.begin()}};
+    // Quantized TEXCOORD_0 (texcoordAccessor) scaled back to tiles.
+    if (uvStepBits > 0) {
+      const double step = std::ldexp(1.0, -uvStepBits);
+      t["extensions"][kTextureTransform] = {{"scale", {step, step}}};
+      textureTransform_ = true;
+    }
+    return t;
   };
   // The uv set a texture layer samples: its own where the primitive has it, else the base
   // colour image's (set 0, glTF's default: no texCoord written); -1 where there is neither.
   const auto setOf = [&](uint32_t layer) { return (ownSets >> layer & 1) ? int(layer) : m.image >= 0 ? 0 : -1; };
   const auto layerTexture = [&](ImageOut image, int set) {
     json t = texture(image);
-    if (set > 0) t["texCoord"] = set;
+    if (set > 0) t["texCoord"] = set, t.erase("extensions");  // its own set: floats
     return t;
   };
   // CityEngine's opacity map as the base colour texture's alpha (glTF has no texture of its
@@ -752,10 +973,14 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
   json scene = {{"name", "fgsg"}};
   if (!roots.empty()) scene["nodes"] = std::move(roots);
   j["scenes"] = json::array({std::move(scene)});
-  json used = json::array();
+  json used = json::array(), required = json::array();
   if (instancing_) used.push_back(kInstancing);
   if (specular_) used.push_back(kSpecular);
+  // Readers without these would read the 16-bit data as something else.
+  if (quantized_) used.push_back(kQuantization), required.push_back(kQuantization);
+  if (textureTransform_) used.push_back(kTextureTransform), required.push_back(kTextureTransform);
   if (!used.empty()) j["extensionsUsed"] = std::move(used);
+  if (!required.empty()) j["extensionsRequired"] = std::move(required);
   std::string text = j.dump();
   if (!binary) {
     bytes = std::move(text);
@@ -771,13 +996,14 @@ bool Writer::write(bool binary, std::string& bytes, std::string& error) {
 }  // namespace
 
 bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error,
-                std::vector<PlacedNode>* placed) {
+                std::vector<PlacedNode>* placed, const GltfEncoding& encoding) {
   if (placed) placed->clear();
-  Writer w(scene, placed);
+  Writer w(scene, placed, encoding);
   return w.write(binary, bytes, error);
 }
 
-bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransaction& outputs, std::string& error) {
+bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransaction& outputs, std::string& error,
+               const GltfEncoding& encoding) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (ext != ".glb" && ext != ".gltf") {
@@ -785,7 +1011,7 @@ bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransactio
     return false;
   }
   std::string bytes;
-  if (!encodeGltf(scene, ext == ".glb", bytes, error)) {
+  if (!encodeGltf(scene, ext == ".glb", bytes, error, nullptr, encoding)) {
     error = path + ": " + error;
     return false;
   }

@@ -29,14 +29,28 @@ struct PlacedNode {
   size_t count = 0;
 };
 
+// How vertex data is encoded. `quantize` (fgsg run --quantize): KHR_mesh_quantization,
+// lossy, required by the file (readers without it cannot open it): baked meshes' positions
+// as 16-bit integers on a uniform grid of the node's box (their node's translation and
+// scale map them back: at most half a step of box size / 65535 off per axis), normals
+// and tangents as normalized 16-bit, TEXCOORD_0 as 16-bit integers in 1/2^k tile steps
+// (k as large as the coordinates' span allows, whole tiles taken off; the materials'
+// KHR_texture_transform scales them back; float where a span passes 512 tiles),
+// instance rotations as normalized 16-bit. Shared meshes' positions, colours and other
+// uv sets stay floats.
+struct GltfEncoding {
+  bool quantize = false;
+};
+
 // The whole file, binary (.glb) or not (.gltf), into `bytes`. False and a message when an
 // image cannot be embedded or a vertex is not finite, or the GLB would pass 4 GiB.
 // `placed`, when given, receives the nodes that place shared meshes, in the file's order.
 bool encodeGltf(const Scene& scene, bool binary, std::string& bytes, std::string& error,
-                std::vector<PlacedNode>* placed = nullptr);
+                std::vector<PlacedNode>* placed = nullptr, const GltfEncoding& encoding = {});
 
 // Encodes by the extension of `path` (.glb or .gltf, any case) into a temporary staged in
 // `outputs`.
-bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransaction& outputs, std::string& error);
+bool stageGltf(const Scene& scene, const std::string& path, io::OutputTransaction& outputs, std::string& error,
+               const GltfEncoding& encoding = {});
 
 }  // namespace fgsg::rt::output

@@ -1,6 +1,6 @@
 """Run inside Blender (issue #45, Blender as the client of fgsg's output):
 
-  blender -b --factory-startup --python tests/cli/blender_check.py -- SCENE.glb GROUPED.obj LOTS.geojson
+  blender -b --factory-startup --python tests/cli/blender_check.py -- SCENE.glb GROUPED.obj LOTS.geojson [QUANTIZED.glb]
 
 Imports the glTF scene with Blender's own importer and checks what Blender made of it
 against the file's JSON, read here independently: an object per start shape named after
@@ -8,7 +8,9 @@ its lot's feature id; a shared mesh placed by a node per instance (--instancing 
 imported as that many objects sharing one mesh datablock; the file's materials with
 their base colours and images; and glTF's +Y up turned into Blender's +Z up (the world
 bounds of every mesh object equal the file's, axes swapped). Then the grouped OBJ: an
-object per start shape (`o`) and its .mtl's materials with their Kd colours.
+object per start shape (`o`) and its .mtl's materials with their Kd colours. Given
+QUANTIZED.glb (the same run with --quantize: KHR_mesh_quantization), Blender imports it
+too and every vertex of every lot lies within 1 mm of the float scene's in Blender.
 Prints what it checked; exits 1 on the first mismatch."""
 import collections
 import json
@@ -18,6 +20,7 @@ import sys
 
 import bpy
 import mathutils
+import mathutils.kdtree
 
 
 def fail(message):
@@ -197,7 +200,47 @@ def check_obj(path, lots_path):
     print(f"OBJ: an object per lot ({len(names)}), {len(materials)} materials of the .mtl with their Kd")
 
 
+def imported_vertices(path):
+    """Per root object (a lot), the world positions of the vertices of the mesh objects
+    under it, as Blender imports the glTF file."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=path, import_shading="SMOOTH")
+    out = collections.defaultdict(list)
+    for o in bpy.context.scene.objects:
+        if o.type != "MESH":
+            continue
+        root = o
+        while root.parent is not None:
+            root = root.parent
+        out[root.name].extend(o.matrix_world @ v.co for v in o.data.vertices)
+    return out
+
+
+def check_quantized(float_path, quantized_path, tolerance=1e-3):
+    want = imported_vertices(float_path)
+    got = imported_vertices(quantized_path)
+    if sorted(want) != sorted(got):
+        fail(f"quantized: other root objects ({sorted(set(want) ^ set(got))[:3]})")
+    worst, count = 0.0, 0
+    for root, points in want.items():
+        if len(points) != len(got[root]):
+            fail(f"quantized: {root} has {len(got[root])} vertices in Blender, the float scene {len(points)}")
+        tree = mathutils.kdtree.KDTree(len(points))
+        for k, p in enumerate(points):
+            tree.insert(p, k)
+        tree.balance()
+        for p in got[root]:
+            worst = max(worst, tree.find(p)[2])
+        count += len(points)
+    if not worst <= tolerance:
+        fail(f"quantized: a vertex is {worst} m from the float scene's nearest (> {tolerance})")
+    print(f"quantized: {count} vertices of {len(want)} lots within {worst * 1000:.3f} mm of the float scene's "
+          f"(tolerance {tolerance * 1000:.0f} mm)")
+
+
 argv = sys.argv[sys.argv.index("--") + 1:]
 check_gltf(argv[0], argv[2])
 check_obj(argv[1], argv[2])
+if len(argv) > 3:
+    check_quantized(argv[0], argv[3])
 print("blender ok", flush=True)

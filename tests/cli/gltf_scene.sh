@@ -32,10 +32,11 @@ run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_default.glb"
 run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_auto.glb" --instancing auto --group-by symbol
 cmp -s "$tmp/city_default.glb" "$tmp/city_auto.glb" || fail "the default is not --instancing auto --group-by symbol"
 # The default scene's bytes: 0.300 of the flattened file's with a buffer view per accessor
-# and min/max as 17-digit doubles; 0.290 with the views pooled and shortest min/max
+# and min/max as 17-digit doubles; 0.290 with the views pooled and shortest min/max;
+# 0.277 with an instanced node's one scale (the windows') in its mesh, SCALE left out
 # (docs/cli.md; the issue's 0.10 is not reached). --instancing on instances even two
-# equal pieces: 2.34 before, 1.98 now.
-max_ratio_on=2.2 max_ratio_auto=0.295
+# equal pieces: 2.34 before, 1.98, now 1.97.
+max_ratio_on=2.0 max_ratio_auto=0.28
 for mode in on auto; do
   run "$ex/city.fgsg" --lots "$lots" -o "$tmp/city_$mode.glb" --instancing $mode --group-by symbol
   validate "$tmp/city_$mode.glb"

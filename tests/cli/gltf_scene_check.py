@@ -123,7 +123,8 @@ def world_bounds(doc, bin_chunk):
                 a = ext["attributes"]
                 t = accessor(doc, bin_chunk, a["TRANSLATION"]).astype(float)
                 r = accessor(doc, bin_chunk, a["ROTATION"]).astype(float)
-                s = accessor(doc, bin_chunk, a["SCALE"]).astype(float)
+                # SCALE left out: 1 (the instances' one scale is then in the mesh).
+                s = accessor(doc, bin_chunk, a["SCALE"]).astype(float) if "SCALE" in a else np.ones((len(t), 3))
                 # Colours per instance only where a group's colours vary (else the material's).
                 c = accessor(doc, bin_chunk, a["_COLOR_0"]) if "_COLOR_0" in a else t
                 if not (len(t) == len(r) == len(s) == len(c)):
