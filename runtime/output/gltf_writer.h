@@ -1,7 +1,8 @@
 // glTF 2.0 from a Scene (runtime/output/scene.h): .glb (binary) or .gltf (JSON, its one
 // buffer a base64 data URI). Instanced parts are one node each with the shared mesh and
 // EXT_mesh_gpu_instancing (TRANSLATION, ROTATION, SCALE and the instances' colours as
-// _COLOR_0, float accessors); mirrored instances a node each with a negative scale;
+// _COLOR_0, float accessors; SCALE left out where all instances have one scale, which the
+// mesh is then written scaled by); mirrored instances a node each with a negative scale;
 // baked parts the group node's mesh, a primitive per material. Vertex
 // attributes share a buffer view per element size (byteStride set), indices one, the
 // instances one. The bytes depend only on the scene.
