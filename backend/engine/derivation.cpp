@@ -264,11 +264,14 @@ void Derivation::checkEnvironment() {
   marching_.loadTextures();
 }
 
-// The inserts whose shape goes on after them in their successor (an op follows before the
-// bracket around them closes): only there can anything read the geometry the asset gives
-// the shape, which a large asset takes a while to build (`A ~> I("tree.obj")` never does).
+// A `.cga` grammar's inserts whose shape goes on after them in their successor (an op
+// follows before the bracket around them closes): only there can anything read the
+// geometry the asset gives the shape, which a large asset takes a while to build
+// (`i("tree.obj") Tree.` never does). In fgsg's dialect I() places the asset and the shape
+// goes on with its own geometry (`I("sphere") Top`, `Top ~> Comp("top"){ ... }` comps the box).
 void Derivation::findReadInserts() {
   readInserts_.clear();
+  if (!m_.cityEngineLots) return;
   std::function<void(const ir::Block&)> visit = [&](const ir::Block& b) {
     for (size_t k = 0; k < b.size(); ++k) {
       for (const auto& body : b[k].bodies) visit(body);
