@@ -441,13 +441,34 @@ void Translator::caseChain(P::CaseBodyContext* body, size_t from, const RuleHead
   env.ruleParams = &head.paramNames;
   currentParams_ = &head.paramNames;
   ExprPtr notPrev;
-  for (size_t i = from; i < conds.size(); ++i) {
-    auto* prim = dynamic_cast<P::PrimaryExprContext*>(conds[i]);
+  // `p(x)` as written (not a function of the file named p).
+  auto chance = [&](P::ExprContext* c) -> P::CallPrimaryContext* {
+    auto* prim = dynamic_cast<P::PrimaryExprContext*>(c);
     auto* call = prim ? dynamic_cast<P::CallPrimaryContext*>(prim->primary()) : nullptr;
-    if (call && call->name->getText() == "p" && call->expr().size() == 1 && !functions_.count("p")) {
+    return call && call->name->getText() == "p" && call->expr().size() == 1 && !functions_.count("p") ? call
+                                                                                                     : nullptr;
+  };
+  for (size_t i = from; i < conds.size(); ++i) {
+    P::CallPrimaryContext* call = chance(conds[i]);
+    // `case det && p(x)` (or `p(x) && det`): where det holds, the random choice of `p(x)`;
+    // where it does not, the chain goes on as after any condition that fails.
+    ExprPtr det;
+    if (auto* both = dynamic_cast<P::BinaryExprContext*>(conds[i]); !call && both && both->op->getText() == "&&") {
+      const bool right = chance(both->expr(1)) != nullptr;
+      if (right || chance(both->expr(0))) {
+        det = expr(both->expr(right ? 0 : 1), env);
+        if (!det) return;
+        if (isRandom(*det)) {
+          notSupported(rangeOf(conds[i]), "a random `case` condition other than p(x) (write the choice as `30% : ...`)");
+          return;
+        }
+        call = chance(both->expr(right ? 1 : 0));
+      }
+    }
+    if (call) {
       ExprPtr x = expr(call->expr(0), env);
       if (!x) return;
-      Rule r = newRule(head, conjunction(clone(guard), clone(notPrev)));
+      Rule r = newRule(head, conjunction(clone(guard), conjunction(clone(notPrev), clone(det))));
       Branch taken;
       taken.range = rangeOf(bodies[i]);
       taken.successor = successorFor(bodies[i], head);
@@ -462,7 +483,9 @@ void Translator::caseChain(P::CaseBodyContext* body, size_t from, const RuleHead
       r.branches.push_back(std::move(taken));
       r.branches.push_back(std::move(rest));
       program_.rules.push_back(std::move(r));
-      return;
+      if (!det) return;
+      notPrev = conjunction(std::move(notPrev), unaryNot(std::move(det)));
+      continue;
     }
     ExprPtr cond = expr(conds[i], env);
     if (!cond) return;
