@@ -51,6 +51,15 @@ class TextureCommands final : public CommandFamily {
   const std::vector<rt::Finish>& finishes() const { return finishes_; }
   const rt::Finish& finish(uint32_t scopeFinish) const { return scopeFinish ? finishes_[scopeFinish - 1] : kDefault_; }
   uint32_t internFinish(const rt::Finish& f);
+  // How many projections the Texture, Material and Uv commands have made so far, and
+  // `grow(list)` called on the lists they fill (the projections and their layouts, a
+  // push per Texture: --lots reserves room for the rest of the lots, reserveForLots).
+  size_t projectionCount() const { return projections_.size(); }
+  template <class Grow>
+  void reserveLists(Grow&& grow) {
+    grow(projections_);
+    grow(layouts_);
+  }
 
  private:
   void material(const ir::Op& op, const double* a, State& st);

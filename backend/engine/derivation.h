@@ -310,7 +310,7 @@ class Derivation final : public QueryHost {
   // An instance of grammar asset `asset` (or of its cut mesh) takes the image of a Texture
   // above it and is drawn untinted when textured, unless Color says.
   void applyAssetLook(rt::Instance& inst, uint32_t asset, const rt::Scope& scope) const;
-  void reserveForLots(size_t lots);
+  void reserveForLots(size_t done, size_t lots);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
   void appendCurves();
