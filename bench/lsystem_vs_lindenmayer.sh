@@ -8,6 +8,14 @@
 #         fastest of 6 repetitions in one node process against fgsg's fastest of 6 in one
 #         `bench_lsystem --warm` process (the grammar compiled by the JIT once, each
 #         repetition a whole derivation, its `time.rewrite` / `time.derive`);
+#         The rewriting's product is the whole derived string on both sides: lindenmayer's
+#         iterate() appends each successor with `+=` (string productions), which V8 keeps
+#         as a rope, one node per append, flattened into one array of characters when it
+#         is first read; each step reads the last step's string, so only the final one
+#         would be left a rope, and the script reads its last character inside the time
+#         (measured on this machine: 0.2 ms of the plant's 1.5-2 ms, 8-15 ms of F -> FFF's
+#         100-180 ms). fgsg's `time.rewrite` ends with its string as an array of 16-byte
+#         modules (op, first argument, random key), before the turtle reads it;
 #   cold  a whole process each, its start-up included, wall clock: `node` deriving once
 #         against `fgsg run` (code cache filled by one run before the rounds). Each makes
 #         the same product: for F -> FFF the string (fgsg writes an empty .glb); for the
@@ -52,11 +60,13 @@ const fs = require('fs');
 const [, , workload, steps, repsText, segmentsFile] = process.argv;
 const n = parseInt(steps, 10), reps = parseInt(repsText, 10);
 const whole = [], rewrite = [];
-let length = 0, segments = 0;
+let length = 0, segments = 0, last = 0;
 for (let r = 0; r < reps; r++) {
   const t0 = process.hrtime.bigint();
   if (workload === 'fff') {
-    length = new LSystem({axiom: 'F', productions: {F: 'FFF'}}).iterate(n).length;
+    const string = new LSystem({axiom: 'F', productions: {F: 'FFF'}}).iterate(n);
+    last = string.charCodeAt(string.length - 1);  // flattens V8's rope (see the header)
+    length = string.length;
     const s = Number(process.hrtime.bigint() - t0) / 1e9;
     whole.push(s), rewrite.push(s);
     continue;
@@ -71,7 +81,9 @@ for (let r = 0; r < reps; r++) {
       '+': () => { a += turn; }, '-': () => { a -= turn; },
       '[': () => { stack.push([x, y, a]); }, ']': () => { [x, y, a] = stack.pop(); },
     }});
-  length = ls.iterate(n).length;
+  const string = ls.iterate(n);
+  last = string.charCodeAt(string.length - 1);  // flattens V8's rope (see the header)
+  length = string.length;
   const t1 = process.hrtime.bigint();
   ls.final();
   segments = out.length / 4;
@@ -85,7 +97,7 @@ for (let r = 0; r < reps; r++) {
   whole.push(Number(process.hrtime.bigint() - t0) / 1e9);
 }
 const fastest = (v) => Math.min(...v);
-console.log(JSON.stringify({length, segments, rewrite_s: fastest(rewrite), whole_s: fastest(whole)}));
+console.log(JSON.stringify({length, segments, last, rewrite_s: fastest(rewrite), whole_s: fastest(whole)}));
 JS
 
 cat > "$scratch/same_work.js" <<'JS'

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 namespace fgsg::backend {
 namespace {
@@ -31,6 +32,128 @@ void writeTemplate(const SuccessorTemplate& t, uint64_t key, StringModule* w, do
   if (!t.args.empty()) std::memcpy(a, t.args.data(), t.args.size() * sizeof(double));
 }
 
+// The steps of an all-template grammar whose random keys nothing reads and whose string
+// holds no arguments (the plain L-systems of ABOP ch. 1: `X -> F [ + X ] F [ - X ] + X`).
+// Keys are read only by rule choice, successors that compute (neither in such a grammar)
+// and decomposition and homomorphism rules (none); without arguments every op becomes
+// the same modules wherever it is: its image, written whole (key 0, first argument 0).
+// And what a step makes is known without reading the string: how many modules of each op
+// the next string holds is this one's tally through the images, so a step is one pass
+// that copies images, and every step's size is known before the first, so the two
+// buffers are sized once, exactly, and the same sizes find the same blocks kept from the
+// last derivation (StringStoragePool). Keys stay 0 and differ from the keyed steps' ones:
+// that is the reason they must be unread.
+class KeylessTemplateImages {
+ public:
+  static bool applies(const ir::Module& m, const StringOps& plan, const ModuleString& axiom) {
+    if (!plan.allTemplates || plan.hasCut || plan.hasQuery || axiom.args.size() != 0) return false;
+    for (const SuccessorTemplate& t : plan.templates)
+      if (!t.args.empty()) return false;
+    for (const ir::Symbol& s : m.symbols)
+      if (!s.decompositions.empty() || !s.homomorphisms.empty()) return false;
+    return true;
+  }
+
+  KeylessTemplateImages(const StringOps& plan, const ModuleString& axiom) : plan_(plan), tally_(plan.ops.size(), 0) {
+    images_.resize(plan.ops.size());
+    for (uint32_t op = 0; op < plan.ops.size(); ++op) {
+      const StringOp& so = plan.ops[op];
+      Image& im = images_[op];
+      im.at = static_cast<uint32_t>(modules_.size());
+      if (so.rewrite == Rewrite::Template) {
+        for (uint32_t child : plan.templates[so.successor].ops) modules_.push_back({child, 0, 0});
+      } else {
+        modules_.push_back({op, 0, 0});
+      }
+      im.len = static_cast<uint32_t>(modules_.size()) - im.at;
+      im.copied = std::max<uint32_t>(2, im.len + im.len % 2);  // copied two modules at a time
+      modules_.resize(im.at + im.copied);
+    }
+    for (const StringModule& mod : axiom.modules) ++tally_[mod.op];
+  }
+
+  // Sizes `str` (holding the string before `steps` steps) and `next` once for all of them:
+  // each buffer the longest string it will hold, up to `maxModules`.
+  void reserve(ModuleString& str, ModuleString& next, int steps, uint64_t maxModules) const {
+    std::vector<uint64_t> tally = tally_, after(tally.size());
+    uint64_t most[2] = {0, 0};
+    for (int step = 0; step < steps; ++step) {
+      advance(tally, after, maxModules);
+      tally.swap(after);
+      most[step % 2] = std::max(most[step % 2], std::min(total(tally), maxModules));
+    }
+    next.modules.reserve(most[0]);
+    str.modules.reserve(std::max<uint64_t>(most[1], str.size()));
+  }
+
+  // The modules of the next string (at least `maxModules` where it has that many).
+  uint64_t nextModules(uint64_t maxModules) const {
+    std::vector<uint64_t> after(tally_.size());
+    advance(tally_, after, maxModules);
+    return total(after);
+  }
+
+  // The step's rewrites, in all and per rule, then the tally moved on to the next string.
+  void finishStep(uint64_t& rewrites, std::vector<uint64_t>& ruleUses) {
+    for (uint32_t op = 0; op < tally_.size(); ++op) {
+      const StringOp& so = plan_.ops[op];
+      if (so.rewrite != Rewrite::Template || !tally_[op]) continue;
+      rewrites += tally_[op];
+      ruleUses[plan_.templates[so.successor].rule] += tally_[op];
+    }
+    std::vector<uint64_t> after(tally_.size());
+    advance(tally_, after, UINT64_MAX / 2);
+    tally_.swap(after);
+  }
+
+  // Writes the images of `n` modules at w, up to `end` (where they end): two modules at a
+  // time, the second of which may be the next image's place, and never past `end`.
+  void writeImages(const StringModule* in, size_t n, StringModule* __restrict w, const StringModule* end) const {
+    const Image* images = images_.data();
+    const StringModule* modules = modules_.data();
+    for (size_t i = 0; i < n; ++i) {
+      const Image im = images[in[i].op];
+      const StringModule* from = modules + im.at;
+      if (w + im.copied <= end) {
+        std::memcpy(w, from, 2 * sizeof(StringModule));
+        for (uint32_t k = 2; k < im.copied; k += 2) std::memcpy(w + k, from + k, 2 * sizeof(StringModule));
+      } else {
+        std::memcpy(w, from, im.len * sizeof(StringModule));
+      }
+      w += im.len;
+    }
+  }
+
+ private:
+  struct Image {
+    uint32_t at = 0, len = 0;  // its modules in modules_
+    uint32_t copied = 2;       // len rounded up to an even count, at least 2 (modules_ holds them)
+  };
+
+  // The next string's tally from this one's, counts held at most at `cap`.
+  void advance(const std::vector<uint64_t>& tally, std::vector<uint64_t>& after, uint64_t cap) const {
+    std::fill(after.begin(), after.end(), 0);
+    for (uint32_t op = 0; op < tally.size(); ++op) {
+      if (!tally[op]) continue;
+      const Image& im = images_[op];
+      for (uint32_t k = 0; k < im.len; ++k) {
+        uint64_t& n = after[modules_[im.at + k].op];
+        n = std::min(n + tally[op], cap);
+      }
+    }
+  }
+  static uint64_t total(const std::vector<uint64_t>& tally) {
+    uint64_t sum = 0;
+    for (uint64_t n : tally) sum = std::min(sum + n, UINT64_MAX / 2);
+    return sum;
+  }
+
+  const StringOps& plan_;
+  std::vector<Image> images_;          // by op id
+  std::vector<StringModule> modules_;  // the images, one after another
+  std::vector<uint64_t> tally_;        // modules of each op in the current string
+};
+
 // One step of a grammar whose every rewriting symbol has a template, in two passes over
 // chunks of kChunk modules: count what each chunk writes, so that the next string is sized
 // once, exactly, and every chunk writes its own part of it in place (concurrently where
@@ -40,9 +163,11 @@ void writeTemplate(const SuccessorTemplate& t, uint64_t key, StringModule* w, do
 // time of a large template L-system, and its floor is the memory bandwidth.
 class TemplateStep {
  public:
-  // Makes the table and counts (pass 1).
-  TemplateStep(const StringOps& plan, const ModuleString& str, bool concurrent)
-      : plan_(plan), str_(str), concurrent_(concurrent), templates_(plan.templates.size()),
+  // Makes the table and counts (pass 1). With `images`, the chunks are written as their
+  // images (KeylessTemplateImages) in pass 2.
+  TemplateStep(const StringOps& plan, const ModuleString& str, bool concurrent,
+               const KeylessTemplateImages* images = nullptr)
+      : plan_(plan), str_(str), concurrent_(concurrent), images_(images), templates_(plan.templates.size()),
         chunks_((str.size() + kChunk - 1) / kChunk) {
     perOp_.resize(plan.ops.size());
     for (size_t op = 0; op < plan.ops.size(); ++op) {
@@ -73,6 +198,8 @@ class TemplateStep {
     double* outArgs = next.args.data();
     forEachChunk([&](size_t c) {
       const size_t begin = c * kChunk, end = std::min(str_.size(), begin + kChunk);
+      if (images_)
+        return images_->writeImages(str_.modules.data() + begin, end - begin, out + moduleAt_[c], out + moduleAt_[c + 1]);
       fillChunk(str_.modules.data() + begin, end - begin, out + moduleAt_[c], outArgs + argAt_[c],
                 static_cast<uint32_t>(argAt_[c]));
     });
@@ -169,6 +296,7 @@ class TemplateStep {
   const StringOps& plan_;
   const ModuleString& str_;
   const bool concurrent_;
+  const KeylessTemplateImages* images_;
   const size_t templates_, chunks_;
   std::vector<PerOp> perOp_;
   std::vector<Entry> entries_;
@@ -212,11 +340,31 @@ void Derivation::runParallel() {
   bool limitHit = false;
   std::optional<LimitReached> stopped;  // --max-seconds or --max-memory, mid-step
   const auto rewriteStart = std::chrono::steady_clock::now();
+  std::optional<KeylessTemplateImages> images;
+  if (KeylessTemplateImages::applies(m_, plan_, str)) {
+    images.emplace(plan_, str);
+    images->reserve(str, next, steps_, opt_.maxShapes);
+  }
+  // A step of such a grammar; false, nothing written, where it would reach --max-shapes
+  // or a limit is reached (for the general loop to redo, as rewriteTemplates).
+  const auto rewriteImages = [&](KeylessTemplateImages& im) {
+    const uint64_t modules = im.nextModules(opt_.maxShapes);
+    if (modules >= opt_.maxShapes || limitsReached()) return false;
+    if (str.size() >= kConcurrentFrom) {
+      TemplateStep(plan_, str, true, &im).fill(next);
+    } else {
+      next.modules.resizeForOverwrite(modules);
+      im.writeImages(str.modules.data(), str.size(), next.modules.data(), next.modules.data() + modules);
+    }
+    im.finishStep(stats_.rewrites, ruleUses_);
+    return true;
+  };
   double growth = 0;  // the last step's: modules written over modules read
   for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
-    reserveForGrowth(next, str, growth, steps_ - 1 - step, opt_.maxShapes);
-    if (!rewriteTemplates(str, next)) {
+    if (!images) reserveForGrowth(next, str, growth, steps_ - 1 - step, opt_.maxShapes);
+    if (images ? !rewriteImages(*images) : !rewriteTemplates(str, next)) {
+      images.reset();  // its tally is not the general loop's string
       next.clear();
       if (plan_.hasContext) linkBrackets(str);
       for (size_t i = 0; i < str.size(); ++i) {

@@ -3,9 +3,10 @@
 // live loop, the Python package, a batch, bench_lsystem --warm) otherwise has the kernel
 // fault in and clear a fresh buffer for every large string: F -> FFF n = 13 is 34 MB,
 // and clearing its pages was a fifth of a repeated derivation's time on this project's
-// VM. At most two blocks of 4 MiB or more, 128 MiB in all, are kept; everything else
-// goes back to the system as before. Blocks are handed out whole and not cleared (a
-// StringBuffer never reads what it has not written).
+// VM (ABOP Fig. 1.24d n = 9 is 2 MB, and a fresh buffer was a third of its rewriting). At
+// most four blocks of 64 KiB or more (two strings' modules and arguments), 128 MiB in
+// all, are kept; everything else goes back to the system as before. Blocks are handed
+// out whole and not cleared (a StringBuffer never reads what it has not written).
 #pragma once
 
 #include "runtime/mesh_array.h"
@@ -70,13 +71,17 @@ class StringStoragePool {
     void* data = nullptr;
     size_t bytes = 0;
   };
-  static constexpr size_t kKeptFrom = size_t(4) << 20;  // rt::allocateMeshStorage's huge-page blocks
+  static constexpr size_t kKeptFrom = size_t(64) << 10;
   static constexpr size_t kKeptBytes = size_t(128) << 20;
 
-  size_t keptBytes() const { return blocks_[0].bytes + blocks_[1].bytes; }
+  size_t keptBytes() const {
+    size_t sum = 0;
+    for (const Block& b : blocks_) sum += b.bytes;
+    return sum;
+  }
 
   std::mutex mutex_;
-  Block blocks_[2];
+  Block blocks_[4];
 };
 
 }  // namespace fgsg::backend

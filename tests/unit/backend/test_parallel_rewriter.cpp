@@ -57,38 +57,46 @@ TEST_CASE("A long string rewritten in chunks on many threads is the one-thread r
   }
 }
 
-// Large string buffers are kept for the next derivation: a block given back is handed out
-// again for any request it holds, the smallest that fits first; small blocks and blocks
-// past the 128 MiB cap are not kept.
-TEST_CASE("String storage is kept between derivations, two large blocks within 128 MiB", "[lsystem][parallel]") {
-  constexpr size_t MiB = size_t(1) << 20;
+// String buffers from 64 KiB on are kept for the next derivation: a block given back is
+// handed out again, whole, for any request it holds, the smallest that fits first; four
+// at most (a fifth replaces the smallest), and none past the 128 MiB cap.
+TEST_CASE("String storage is kept between derivations, four blocks within 128 MiB", "[lsystem][parallel]") {
+  constexpr size_t KiB = size_t(1) << 10, MiB = size_t(1) << 20;
   backend::StringStoragePool pool;
   size_t granted = 0;
-  void* small = pool.take(MiB, granted);
+  void* a = pool.take(MiB, granted);
   CHECK(granted == MiB);
-  pool.giveBack(small, MiB);
-  void* a = pool.take(8 * MiB, granted);
-  void* b = pool.take(20 * MiB, granted);
-  CHECK(granted == 20 * MiB);
-  pool.giveBack(a, 8 * MiB);
-  pool.giveBack(b, 20 * MiB);
-  void* again = pool.take(5 * MiB, granted);  // the smaller kept block fits
-  CHECK(again == a);
+  void* b = pool.take(8 * MiB, granted);
+  void* c = pool.take(20 * MiB, granted);
+  void* d = pool.take(2 * MiB, granted);
+  pool.giveBack(a, MiB);
+  pool.giveBack(b, 8 * MiB);
+  pool.giveBack(c, 20 * MiB);
+  pool.giveBack(d, 2 * MiB);
+  CHECK(pool.take(5 * MiB, granted) == b);  // the smallest kept block that fits
   CHECK(granted == 8 * MiB);
-  void* big = pool.take(10 * MiB, granted);
-  CHECK(big == b);
+  CHECK(pool.take(64 * KiB, granted) == a);  // 64 KiB is asked of the pool too
+  CHECK(granted == MiB);
+  CHECK(pool.take(2 * MiB, granted) == d);
+  CHECK(pool.take(10 * MiB, granted) == c);
   CHECK(granted == 20 * MiB);
-  void* fresh = pool.take(10 * MiB, granted);  // none kept now
-  CHECK(fresh != a);
-  CHECK(fresh != b);
+  void* e = pool.take(10 * MiB, granted);  // none kept now
+  CHECK(e != a);
+  CHECK(e != b);
+  CHECK(e != c);
+  CHECK(e != d);
   CHECK(granted == 10 * MiB);
-  pool.giveBack(again, 8 * MiB);
-  pool.giveBack(big, 20 * MiB);
-  pool.giveBack(fresh, 10 * MiB);  // replaces the 8 MiB block, the smaller one
-  CHECK(pool.take(9 * MiB, granted) == fresh);
-  CHECK(granted == 10 * MiB);
-  pool.giveBack(fresh, 10 * MiB);
-  void* huge = pool.take(120 * MiB, granted);  // 20 + 120 MiB would pass the cap
+  pool.giveBack(a, MiB);
+  pool.giveBack(b, 8 * MiB);
+  pool.giveBack(c, 20 * MiB);
+  pool.giveBack(d, 2 * MiB);
+  pool.giveBack(e, 10 * MiB);  // a fifth: replaces the 1 MiB block, the smallest
+  CHECK(pool.take(9 * MiB, granted) == e);
+  CHECK(pool.take(512 * KiB, granted) == d);
+  CHECK(granted == 2 * MiB);
+  pool.giveBack(d, 2 * MiB);
+  pool.giveBack(e, 10 * MiB);
+  void* huge = pool.take(120 * MiB, granted);  // 40 - 2 + 120 MiB would pass the cap
   pool.giveBack(huge, 120 * MiB);
   void* notKept = pool.take(100 * MiB, granted);
   CHECK(granted == 100 * MiB);  // not the 120 MiB block
@@ -110,6 +118,55 @@ TEST_CASE("A template L-system derived again on kept string storage is the same"
   for (size_t i = 0; i < first.instances.instances.size(); ++i)
     differ += again.instances.instances[i].transform != first.instances.instances[i].transform ||
               again.instances.instances[i].transform != other.instances.instances[i].transform;
+  CHECK(differ == 0);
+}
+
+// A template grammar without arguments, decomposition or homomorphism (ABOP's plain
+// L-systems) leaves its keys unread and is written as op images (KeylessTemplateImages):
+// one pass a step, sizes from the op tally, chunks concurrently from 2^18 modules. E is
+// erased (an empty image: runs of them end chunks) and K kept. Expected by hand: 3^n A's
+// and 3^n E's after n steps, 10 other modules per rewrite of A, kept: 10 (3^11 - 1) / 2
+// + 2 * 3^11 = 1 240 024 modules; 3 F's per rewrite of A, 265 719 segments; rewrites:
+// 88 573 of A and (3^11 - 3) / 2 = 88 572 of E. Before the last step 10 (3^10 - 1) / 2 +
+// 2 * 3^10 = 413 338 modules: 13 chunks.
+TEST_CASE("Template steps without arguments or key readers give the one-thread loop's drawing", "[lsystem][parallel]") {
+  const std::string rules = R"(
+    derive parallel 11;
+    turtle angle 25 width 0.01;
+    axiom: A;
+    A -> F [ + A ] [ - F K E E E A ] F A;
+    E -> epsilon;
+  )";
+  const rt::DeriveResult loop = onThreads(1, rules + "  Q(x) : x > 0 -> Q(x - 1);\n");
+  REQUIRE(loop.ok);
+  REQUIRE(loop.stats.stringLength == 1240024);
+  REQUIRE(loop.stats.rewrites == 88573 + 88572);
+  REQUIRE(loop.instances.instances.size() == 265719);
+  for (int threads : {1, 2, 4, 2}) {  // the last one on the storage the others kept
+    INFO(threads << " threads");
+    const rt::DeriveResult images = onThreads(threads, rules);
+    REQUIRE(images.ok);
+    CHECK(images.stats.stringLength == loop.stats.stringLength);
+    CHECK(images.stats.rewrites == loop.stats.rewrites);
+    REQUIRE(images.instances.instances.size() == loop.instances.instances.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < loop.instances.instances.size(); ++i)
+      differ += images.instances.instances[i].transform != loop.instances.instances[i].transform;
+    CHECK(differ == 0);
+  }
+  // --max-shapes reached in a step: the general loop redoes it and stops where it stops.
+  rt::DeriveOptions few;
+  few.maxShapes = 100000;
+  const rt::DeriveResult loopStopped = deriveText(rules + "  Q(x) : x > 0 -> Q(x - 1);\n", few);
+  const rt::DeriveResult imagesStopped = deriveText(rules, few);
+  REQUIRE(loopStopped.messages.size() == 1);
+  REQUIRE(imagesStopped.messages.size() == 1);
+  CHECK(imagesStopped.messages[0].message == loopStopped.messages[0].message);
+  CHECK(imagesStopped.stats.stringLength == loopStopped.stats.stringLength);
+  REQUIRE(imagesStopped.instances.instances.size() == loopStopped.instances.instances.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < loopStopped.instances.instances.size(); ++i)
+    differ += imagesStopped.instances.instances[i].transform != loopStopped.instances.instances[i].transform;
   CHECK(differ == 0);
 }
 
