@@ -73,11 +73,14 @@ class KeylessTemplateImages {
   }
 
   // Sizes `str` (holding the string before `steps` steps) and `next` once for all of them:
-  // each buffer the longest string it will hold, up to `maxModules`.
+  // each buffer the longest string it will hold, up to `maxModules`. Only the first
+  // kLookahead steps are looked at (a step past them that needs more grows its buffer):
+  // this runs before the first step, where --max-seconds cannot stop it.
   void reserve(ModuleString& str, ModuleString& next, int steps, uint64_t maxModules) const {
+    constexpr int kLookahead = 64;
     std::vector<uint64_t> tally = tally_, after(tally.size());
     uint64_t most[2] = {0, 0};
-    for (int step = 0; step < steps; ++step) {
+    for (int step = 0; step < std::min(steps, kLookahead); ++step) {
       advance(tally, after, maxModules);
       tally.swap(after);
       most[step % 2] = std::max(most[step % 2], std::min(total(tally), maxModules));

@@ -36,6 +36,8 @@ done
 within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_parallel.fgsg" --engine interp --max-seconds 1 \
   --max-shapes 1000000000 -o "$tmp/parallel.glb"
 grep -qE 'wrote .*\(([1-9][0-9]*) instances' "$tmp/err" || fail "the parallel result kept no instances"
+# Parallel, a billion steps of a template grammar (KeylessTemplateImages): stopped between steps.
+within 6 0 "$stopped" -- "$fgsg" run "$inputs/limits_parallel_steps.fgsg" --max-seconds 1 -o "$tmp/steps.glb"
 
 # Assembly: 16 383 tori (25 M triangles, half a second or more to assemble) derive in a
 # few hundredths of a second; --max-seconds 0.2 stops the assembly at 1.1 x 0.2 s and
