@@ -367,6 +367,45 @@ class Importer {
                         d.range};
       merge(mod, program, declared, ruled, from);
     }
+    if (!imports.empty()) pickImportedOverloads(program);
+  }
+
+  // `F.Door(1, 2, 3)` where F's .cga file has rules `Door` and `Door(w, h, d)`: the importer
+  // could not see F's overloads, which are the symbols `F.Door` (the fewest parameters) and
+  // `F.Door$/3` (cga::Translator::overloadSymbol). The call takes the one with its number
+  // of arguments; a number none has is an error that lists theirs.
+  void pickImportedOverloads(Program& program) {
+    std::map<std::string, std::set<size_t>> overloads;  // `F.Door` -> 0, 3
+    std::map<std::string, size_t> arity;
+    for (const auto& r : program.rules) {
+      const std::string& name = r.predecessor.name;
+      arity.emplace(name, r.predecessor.params.size());
+      const size_t mark = name.rfind("$/");
+      const bool overload = mark != std::string::npos && mark + 2 < name.size() &&
+                            name.find_first_not_of("0123456789", mark + 2) == std::string::npos;
+      overloads[overload ? name.substr(0, mark) : name].insert(r.predecessor.params.size());
+    }
+    for (auto& r : program.rules) {
+      if (r.imported) continue;
+      for (auto& b : r.branches)
+        forEachItem(b.successor, [&](Item& it) {
+          if (it.kind != ItemKind::Call || it.name.find('.') == std::string::npos) return;
+          const auto own = arity.find(it.name);
+          if (own == arity.end() || own->second == it.args.size()) return;
+          const auto overload = arity.find(it.name + "$/" + std::to_string(it.args.size()));
+          if (overload != arity.end()) {
+            it.name = overload->first;
+            return;
+          }
+          const std::set<size_t>& counts = overloads[it.name];
+          if (counts.size() < 2) return;  // one rule: sema's count check
+          std::string list;
+          size_t k = 0;
+          for (size_t n : counts) list += (k++ == 0 ? "" : k == counts.size() ? " or " : ", ") + std::to_string(n);
+          diags_.error("E019", it.range, "'" + symbolDisplayName(it.name) + "' takes " + list + " parameters, got " +
+                                             std::to_string(it.args.size()));
+        });
+    }
   }
 
   // The style a `.cga` module is read in ("": Default): the importer's, unless the import's

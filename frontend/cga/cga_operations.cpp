@@ -253,8 +253,8 @@ void Translator::operation(P::OperationContext* op, Sequence& seq, const Env& en
       error("E010", at, "unknown name '" + name + "' (no import is called '" + name.substr(0, dot) + "')");
       return;
     }
-    if (rules_.count(name) && rules_[name] != 0) {
-      error("E019", at, "'" + name + "' takes " + std::to_string(rules_[name]) + " parameters");
+    if (rules_.count(name) && !rules_[name].count(0)) {
+      error("E019", at, "'" + name + "' takes " + arityList(name) + " parameters");
       return;
     }
     emit(name, !rules_.count(name) && !imported, {});
@@ -303,7 +303,7 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     std::vector<ExprPtr> a = args(env);
     if (!allOk(a)) return;
     flushInsert();
-    Item item = command(symbolName(name), at);
+    Item item = command(overloadSymbol(name, argCtx.size()), at);
     item.args = std::move(a);
     push(std::move(item));
     seq.createsShapes = true;
@@ -336,8 +336,8 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
   // A parametric rule (or an imported one): a shape with these arguments.
   if (rules_.count(name) || imported) {
     if (!noBody()) return;
-    if (rules_.count(name) && rules_[name] != argCtx.size()) {
-      error("E019", nameAt, "'" + name + "' takes " + std::to_string(rules_[name]) + " parameters, got " +
+    if (rules_.count(name) && !rules_[name].count(argCtx.size())) {  // an overload with this many (overloadSymbol)
+      error("E019", nameAt, "'" + name + "' takes " + arityList(name) + " parameters, got " +
                                 std::to_string(argCtx.size()));
       return;
     }

@@ -209,12 +209,15 @@ void Translator::collect(P::CgaFileContext* file) {
     } else if (auto* r = a->ruleDecl()) {
       const size_t n = r->params() ? r->params()->ID().size() : 0;
       const std::string name = r->name->getText();
-      if (rules_.count(name) && rules_[name] != n)
-        error("E019", rangeOf(r->name), "'" + name + "' has rules with " + std::to_string(rules_[name]) + " and " +
-                                            std::to_string(n) +
-                                            " parameters (rules that differ only in their number of parameters: "
-                                            "CityEngine CGA; not supported yet)");
-      rules_[name] = n;
+      // Rules of one name with different numbers of parameters are different rules (a call
+      // picks one by its argument count); two with the same number are an error, as in CityEngine.
+      const auto [first, fresh] = ruleDecls_.emplace(std::make_pair(name, n), rangeOf(r->name));
+      if (!fresh)
+        error("E019", rangeOf(r->name),
+              "'" + name + "' has a second rule with " + std::to_string(n) + " parameters (the first is at line " +
+                  std::to_string(first->second.begin.line) + ":" + std::to_string(first->second.begin.col) +
+                  "): rules of one name differ in their number of parameters");
+      rules_[name].insert(n);
       for (auto* note : a->annotation())  // initialShape.startRule may be read before it
         if (note->name->getText() == "StartRule" && declaredStartRule_.empty()) declaredStartRule_ = name;
     }
@@ -323,15 +326,33 @@ void Translator::declaration(P::AnnotatedContext* ctx) {
 
 void Translator::rule(P::RuleDeclContext* ctx) {
   RuleHead head;
-  head.name = symbolName(ctx->name->getText());
+  head.name = overloadSymbol(ctx->name->getText(), ctx->params() ? ctx->params()->ID().size() : 0);
   head.range = rangeOf(ctx->name);
   if (ctx->params())
     for (auto* p : ctx->params()->ID()) {
       head.params.push_back({p->getText(), rangeOf(p->getSymbol())});
       head.paramNames.insert(p->getText());
     }
-  currentRule_ = head.name;
+  currentRule_ = symbolName(ctx->name->getText());  // all overloads' leaves: the written name's
   ruleBody(ctx->ruleBody(), head, nullptr);
+}
+
+std::string Translator::overloadSymbol(const std::string& name, size_t arity) const {
+  const auto rules = rules_.find(name);
+  if (rules == rules_.end() || rules->second.empty() || arity <= *rules->second.begin()) return symbolName(name);
+  return symbolName(name) + "$/" + std::to_string(arity);
+}
+
+std::string Translator::arityList(const std::string& name) const {
+  std::string out;
+  const auto rules = rules_.find(name);
+  if (rules == rules_.end()) return out;
+  const std::vector<size_t> counts(rules->second.begin(), rules->second.end());
+  for (size_t k = 0; k < counts.size(); ++k) {
+    if (k > 0) out += k + 1 == counts.size() ? " or " : ", ";
+    out += std::to_string(counts[k]);
+  }
+  return out;
 }
 
 Rule Translator::newRule(const RuleHead& head, ExprPtr guard) {
@@ -520,9 +541,9 @@ void Translator::startRule() {
     std::string candidates;
     std::vector<std::string> startable;
     if (!startRule_.empty()) candidates = startRule_ + " (@StartRule)";
-    for (const auto& [name, params] : rules_) {
-      if (params == 0) startable.push_back(name);
-      if (params != 0 || name == startRule_) continue;
+    for (const auto& [name, arities] : rules_) {
+      if (arities.count(0)) startable.push_back(name);
+      if (!arities.count(0) || name == startRule_) continue;
       candidates += (candidates.empty() ? "" : ", ") + name;
     }
     const std::string meant = closestName(start, startable);
@@ -533,13 +554,13 @@ void Translator::startRule() {
                                   : "; rules that can start: " + candidates));
     return;
   }
-  if (rules_[start] != 0) {
+  if (!rules_[start].count(0)) {
     error("E803", given ? SourceRange{{1, 1}, {1, 1}} : at,
           named + "the start rule '" + start + "' takes parameters: a start shape has none to give");
     return;
   }
   if (given && !startRule_.empty() && startRule_ != start && rules_.count(startRule_))
-    program_.otherStartRules.push_back(symbolName(startRule_));
+    program_.otherStartRules.push_back(overloadSymbol(startRule_, 0));
   auto lotArea = [&] {
     ExprPtr e = makeExpr(ExprKind::Member, at);
     e->object = "Lot";
@@ -550,7 +571,7 @@ void Translator::startRule() {
   axiom.name = "Axiom";
   axiom.range = at;
   RuleHead target;
-  target.name = symbolName(start);
+  target.name = overloadSymbol(start, 0);
   Rule onLot = newRule(axiom, lotArea());
   Branch b;
   b.range = at;

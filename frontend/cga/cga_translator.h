@@ -117,6 +117,14 @@ class Translator {
   void warning(const std::string& code, const SourceRange& at, const std::string& message) {
     diags_->warning(code, at, message);
   }
+  // The symbol of `name`'s rule with `arity` parameters: symbolName(name) for its fewest,
+  // `Door$/3` for another (symbols must differ; the IR shows it `Door/3`, frontend/ast.h:
+  // symbolDisplayName). All overloads' leaves are the written name's (`Door.`): instances
+  // are named Door, as in CityEngine. A name without rules: symbolName.
+  std::string overloadSymbol(const std::string& name, size_t arity) const;
+  // `name`'s parameter counts as a message writes them: "3", "0 or 3", "0, 1 or 3".
+  std::string arityList(const std::string& name) const;
+
   void notSupported(const SourceRange& at, const std::string& what) {
     diags_->error("E801", at, what + " (CityEngine CGA; not supported yet)");
   }
@@ -192,7 +200,10 @@ class Translator {
   // String attrs whose default this file's texture() or i() takes as its file name, with
   // the first such use (ir::kPinnedAttrAnnotation: setting them is a run-time error).
   std::map<std::string, SourceRange> pinnedAttrs_;
-  std::map<std::string, size_t> rules_;  // rule name -> parameter count
+  // rule name -> its rules' parameter counts: CityEngine's `Door` and `Door(w, h, d)` are
+  // two rules (overloads), each its own symbol (overloadSymbol).
+  std::map<std::string, std::set<size_t>> rules_;
+  std::map<std::pair<std::string, size_t>, SourceRange> ruleDecls_;  // each overload's first rule
   std::set<std::string> importAliases_;
   std::vector<std::string> inlining_;  // functions being inlined (recursion check)
   std::string startRule_;              // @StartRule
