@@ -38,7 +38,8 @@ std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& plac
       for (const auto& alt : r.alternatives) {
         if (hasQuery(alt.probability)) ok = false;
         int depth = 0;
-        for (const ir::Op& op : alt.ops) {
+        for (size_t k = 0; k < alt.ops.size(); ++k) {
+          const ir::Op& op = alt.ops[k];
           switch (op.kind) {
             case OpKind::Translate:
             case OpKind::Rotate:
@@ -47,6 +48,9 @@ std::vector<bool> findDirectSymbols(const ir::Module& m, std::vector<bool>& plac
             case OpKind::Emit: ok &= !(leavesOutput && m.symbols[op.index].rules.empty()); break;
             case OpKind::Instance:
               ok &= op.mode == ir::InstanceMode::Plain;
+              // A .cga i() whose shape goes on only gives the shape the asset, which the
+              // leaf ending it outputs (Derivation::carryInsert): the engine's to do.
+              ok &= !(leavesOutput && m.cityEngineLots && k + 1 < alt.ops.size() && alt.ops[k + 1].kind != OpKind::Pop);
               places[s] = true;
               break;
             case OpKind::Push: ++depth; break;

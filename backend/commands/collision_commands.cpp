@@ -27,6 +27,13 @@ void CollisionCommands::prepare(bool grammarCollides) {
 void CollisionCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st, Exec& ex, Frame& f) {
   switch (op.kind) {
     case ir::OpKind::Instance: {
+      // A .cga i() whose shape goes on: the asset becomes the shape's geometry, and the leaf
+      // that ends the shape outputs it (Derivation::outputLeaf), not this insert.
+      if (d_.insertIsCarried(op)) {
+        if (op.insertFit != ir::InsertFit::AlignSizeAndPosition) st.scope = d_.insertFitted(op, st.scope);
+        st.geom = d_.carryInsert(op, st.scope);
+        break;
+      }
       // A .cga leaf after the insert (`i(a) Tree.`) takes the instance, without parameters.
       const bool leaf = op.recordAs != ir::Op::kPlacingSymbol;
       const uint32_t sym = leaf ? op.recordAs : d_.placingSymbol(ex);

@@ -135,6 +135,15 @@ class Derivation final : public QueryHost {
   bool placesNothing(uint32_t asset) const { return asset == noneAsset_; }
   // Whether anything can read the geometry Instance op `op` gives its shape (findReadInserts).
   bool insertIsRead(const ir::Op& op) const { return !readInserts_.empty() && readInserts_.count(&op) != 0; }
+  // Whether Instance op `op` only gives its shape the asset (a .cga i() whose successor goes
+  // on: CityEngine replaces the geometry, and the leaf that ends the shape outputs it once).
+  bool insertIsCarried(const ir::Op& op) const {
+    return leavesOutput_ && op.mode == ir::InstanceMode::Plain && op.recordAs == ir::Op::kPlacingSymbol &&
+           op.index < assetMesh_.size() && op.index != noneAsset_ && insertIsRead(op);
+  }
+  // The geometry a carried insert gives a shape filling `scope`: the asset's solid, cut by
+  // the shape's trim planes where they reach it; outputLeaf knows it as the asset's.
+  rt::GeomRef carryInsert(const ir::Op& op, const rt::Scope& scope);
   // The scope an Instance op's asset fills, as its insert mode says (runtime/insert_fit.h);
   // placeInstance(..., op.zUp) then turns a zUp asset inside it.
   rt::Scope insertFitted(const ir::Op& op, const rt::Scope& scope) const;
@@ -310,6 +319,12 @@ class Derivation final : public QueryHost {
   // An instance of grammar asset `asset` (or of its cut mesh) takes the image of a Texture
   // above it and is drawn untinted when textured, unless Color says.
   void applyAssetLook(rt::Instance& inst, uint32_t asset, const rt::Scope& scope) const;
+  // The trim planes of `scope`'s shape that cut into an asset filling it (zUp turned); none
+  // when its box lies wholly on their kept side.
+  std::vector<rt::cga::TrimPlane> planesCuttingAsset(const rt::Scope& scope, bool zUp) const;
+  // outputLeaf of a shape whose geometry is still what carryInsert gave it: an instance of
+  // the asset (or its cut mesh) with the asset's normals, uvs and images; false otherwise.
+  bool outputCarriedAsset(uint32_t symbol, const State& st, const double* params, uint32_t slots, ir::Loc loc);
   void reserveForLots(size_t done, size_t lots);
   static std::array<float, 3> colorFor(const std::string& name);
   void appendSurface();
@@ -429,6 +444,16 @@ class Derivation final : public QueryHost {
   std::unordered_set<const ir::Op*> readInserts_;  // findReadInserts
   // Per grammar asset, yUp and zUp: insertedGeometry's, once made.
   std::vector<std::array<std::optional<rt::GeomRef>, 2>> assetGeometry_;
+  // carryInsert's geometries, by carriedKey: the asset, its turn, and its cut mesh (an index
+  // into carriedCutMeshes_, -1 when uncut). The arena is never cleared, so a key stays unique.
+  struct CarriedAsset {
+    uint32_t asset = 0;
+    bool zUp = false;
+    int32_t cutMesh = -1;
+  };
+  static uint64_t carriedKey(const rt::GeomRef& g) { return (uint64_t(g.kind) << 32) | g.first; }
+  std::unordered_map<uint64_t, CarriedAsset> carriedAssets_;
+  std::vector<rt::Mesh> carriedCutMeshes_;  // trimAssetMesh's, in the cut scope's normalised coordinates
   // A CGA grammar (ir::leavesOutputGeometry): leaves output their own geometry, as
   // instances of these assets (outputLeaf).
   bool leavesOutput_ = false;

@@ -184,6 +184,7 @@ void Derivation::placeInstance(uint32_t asset, const rt::Scope& scope, uint32_t 
 // unless Color tinted it.
 void Derivation::outputLeaf(uint32_t symbol, const State& st, const double* params, ir::Loc loc) {
   const uint32_t slots = m_.symbols[symbol].slotCount;
+  if (!carriedAssets_.empty() && outputCarriedAsset(symbol, st, params, slots, loc)) return;
   // (A projection without an image yet, from setupProjection, or after deleteUV draws nothing.)
   const rt::cga::UvProjection* projection = textures_.projection(st.scope.projection);
   if (projection && !projection->draws()) projection = nullptr;
@@ -239,20 +240,72 @@ rt::GeomRef Derivation::insertedGeometry(uint32_t asset, bool zUp) {
   return *made;
 }
 
-bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
-                                   uint32_t paramCount, ir::Loc loc, bool zUp, std::optional<rt::GeomRef>* cut) {
-  const std::vector<rt::cga::TrimPlane> planes = frames_.enabledTrimPlanes(scope.pivot, scope.trim);
-  if (planes.empty()) return false;
+std::vector<rt::cga::TrimPlane> Derivation::planesCuttingAsset(const rt::Scope& scope, bool zUp) const {
+  std::vector<rt::cga::TrimPlane> planes = frames_.enabledTrimPlanes(scope.pivot, scope.trim);
+  if (planes.empty()) return planes;
   // The asset's box wholly on the kept side of every plane: the instance as it is.
   const rt::Mat4 t = rt::insertTransform(scope, zUp);
   const double tol = 1e-9 * (1.0 + scope.S.norm());
-  bool cuts = false;
-  for (int c = 0; c < 8 && !cuts; ++c) {
+  for (int c = 0; c < 8; ++c) {
     const rt::Vec3 corner = (t * Eigen::Vector4d(c & 1, (c >> 1) & 1, (c >> 2) & 1, 1.0)).head<3>();
     for (const rt::cga::TrimPlane& p : planes)
-      if ((corner - p.point).dot(p.normal) > tol) cuts = true;
+      if ((corner - p.point).dot(p.normal) > tol) return planes;
   }
-  if (!cuts) return false;
+  return {};
+}
+
+rt::GeomRef Derivation::carryInsert(const ir::Op& op, const rt::Scope& scope) {
+  CarriedAsset carried{op.index, op.zUp, -1};
+  rt::GeomRef geom = insertedGeometry(op.index, op.zUp);
+  if (scope.pivot != 0) {  // frame 0 has no trim planes
+    const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(scope, op.zUp);
+    if (!planes.empty()) {
+      rt::cga::Part part;
+      rt::cga::trimGeometry(scope, geom, arena_, planes, part);
+      geom = part.geom;
+      carried.cutMesh = static_cast<int32_t>(carriedCutMeshes_.size());
+      carriedCutMeshes_.push_back(rt::cga::trimAssetMesh(scope, assets_.mesh(assetMesh_[op.index]), op.zUp, planes));
+    }
+  }
+  if (geom.count > 0) carriedAssets_[carriedKey(geom)] = carried;  // all cut away: the leaf outputs nothing
+  return geom;
+}
+
+bool Derivation::outputCarriedAsset(uint32_t symbol, const State& st, const double* params, uint32_t slots,
+                                    ir::Loc loc) {
+  if (st.geom.count == 0) return false;
+  const auto found = carriedAssets_.find(carriedKey(st.geom));
+  if (found == carriedAssets_.end()) return false;  // a geometry operation made geometry of its own
+  const CarriedAsset carried = found->second;
+  // Texture coordinates the asset does not have (a projection on an asset without uvs, or
+  // uv sets 1..9) are projected onto the shape's geometry: outputLeaf's own-geometry path.
+  const rt::cga::UvProjection* projection = textures_.projection(st.scope.projection);
+  if (projection && projection->draws() && !assetHasTexcoords_[carried.asset]) return false;
+  for (uint32_t set = 1; set < ir::kUvSets; ++set) {
+    const rt::cga::UvProjection* p = textures_.projection(st.scope.projection, set);
+    if (p && p->coordinates) return false;
+  }
+  if (carried.cutMesh < 0) {
+    placeInstance(carried.asset, st.scope, symbol, params, slots, loc, carried.zUp);
+    return true;
+  }
+  out_.geometries.push_back(carriedCutMeshes_[carried.cutMesh]);  // first, as below
+  const size_t before = out_.instances.size();
+  placeInstance(ownGeometryAsset_, st.scope, symbol, params, slots, loc);
+  if (out_.instances.size() == before) {
+    out_.geometries.pop_back();
+    return true;
+  }
+  rt::Instance& inst = out_.instances.back();
+  inst.geometry = static_cast<uint32_t>(out_.geometries.size() - 1);
+  applyAssetLook(inst, carried.asset, st.scope);
+  return true;
+}
+
+bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
+                                   uint32_t paramCount, ir::Loc loc, bool zUp, std::optional<rt::GeomRef>* cut) {
+  const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(scope, zUp);
+  if (planes.empty()) return false;
   // The shape's geometry after the insert: the asset's solid, cut as trim() cuts one.
   if (cut) {
     rt::cga::Part part;

@@ -3,7 +3,9 @@
 
 run_trim_textured.py FGSG ROOT: runs trim_textured.cga (on tests/cga/corpus/lots/square10)
 and trim_textured.fgsg with --engine=interp and --engine=jit, each as an OBJ (+ .mtl) and a
-.glb grouped by symbol, and requires
+.glb grouped by symbol, and trim_textured_rule.cga (each i() going on to a rule that ends in
+trim_textured.cga's leaf) the same way, and requires
+* trim_textured_rule.cga's OBJ, .mtl and .glb to be trim_textured.cga's bytes;
 * the two engines' files to be the same bytes, the Khronos validator to pass the .glb with
   no errors and no warnings;
 * in the OBJ, every corner of the cut pieces (Corner, Up) to carry the texture coordinate
@@ -238,7 +240,8 @@ def main():
     validator = os.path.join(root, "scripts", "validate-gltf.js")
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copytree(os.path.join(here, "assets"), os.path.join(tmp, "assets"))
-        for name in ("trim_textured.cga", "trim_textured.fgsg"):
+        meshes = {}  # per grammar: the interpreter's OBJ, .mtl and .glb bytes
+        for name in ("trim_textured.cga", "trim_textured.fgsg", "trim_textured_rule.cga"):
             grammar = os.path.join(tmp, name)
             shutil.copy(os.path.join(here, name), grammar)
             lots = ["--lots", os.path.join(root, "tests", "cga", "corpus", "lots", "square10.geojson")] \
@@ -246,8 +249,11 @@ def main():
             outputs = {}
             for engine in ("interp", "jit"):
                 label = f"{name} ({engine})"
-                os.makedirs(os.path.join(tmp, engine), exist_ok=True)  # the same file names: the same bytes
-                base = os.path.join(tmp, engine, name.replace(".", "_"))
+                # The same file names: the same bytes (the rule variant's those of trim_textured.cga).
+                rule = name == "trim_textured_rule.cga"
+                os.makedirs(os.path.join(tmp, engine + "-rule" if rule else engine), exist_ok=True)
+                base = os.path.join(tmp, engine + "-rule" if rule else engine,
+                                    "trim_textured_cga" if rule else name.replace(".", "_"))
                 ok = True
                 for target in (base + ".obj", base + ".glb"):
                     run = subprocess.run([fgsg, "run", grammar, f"--engine={engine}", "-o", target, "--group-by", "symbol",
@@ -260,6 +266,8 @@ def main():
                 if not ok:
                     continue
                 outputs[engine] = b"".join(open(base + ext, "rb").read() for ext in (".obj", ".mtl", ".glb", ".json"))
+                if engine == "interp":
+                    meshes[name] = b"".join(open(base + ext, "rb").read() for ext in (".obj", ".mtl", ".glb"))
                 v = subprocess.run(["node", validator, "--strict", base + ".glb"], capture_output=True, text=True)
                 if v.returncode != 0 or ": 0 errors, 0 warnings" not in v.stdout + v.stderr:
                     fail(f"{label}: gltf-validator: {(v.stdout + v.stderr).strip()[-2000:]}")
@@ -268,6 +276,9 @@ def main():
                     check_glb(label, base + ".glb", groups, root)
             if len(outputs) == 2 and outputs["interp"] != outputs["jit"]:
                 fail(f"{name}: the engines' outputs differ")
+        if meshes.get("trim_textured_rule.cga") != meshes.get("trim_textured.cga"):
+            fail("trim_textured_rule.cga: its OBJ, .mtl or .glb differ from trim_textured.cga's "
+                 "(an i() going on to a rule outputs the asset once, at the leaf)")
     print("%s: %d failure(s)" % ("PASS" if not failures else "FAIL", len(failures)))
     return 1 if failures else 0
 
