@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace fgsg::frontend::test {
 
 struct CgaCompiled {
@@ -35,9 +37,14 @@ inline CgaCompiled compileGrammarText(const std::string& text, const std::string
 }
 
 // A file a test grammar imports, written into `dir` (made if missing).
+// Written to a temporary file and renamed: ctest runs each test case as its own process,
+// two at a time, and a case reading the file while another truncates it saw it empty.
 inline void writeImportedFile(const std::string& dir, const std::string& name, const std::string& text) {
   std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/" + name) << text;
+  const std::string path = dir + "/" + name;
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+  std::ofstream(temporary) << text;
+  std::filesystem::rename(temporary, path);
 }
 
 }  // namespace fgsg::frontend::test
