@@ -316,6 +316,10 @@ bool parsePageRequest(const std::string& text, PageRequest& out, std::string& re
     out.kind = PageRequest::Kind::Field;
     return onlyFields(j, {}, kind, reason);
   }
+  if (kind == "resend") {  // the page could not show pieces it was sent: all of them again
+    out.kind = PageRequest::Kind::Resend;
+    return onlyFields(j, {}, kind, reason);
+  }
   if (kind == "fieldElement") {  // a design element edited (view_field_edit.h)
     out.kind = PageRequest::Kind::FieldElement;
     return parseFieldElement(j, out.element, reason);

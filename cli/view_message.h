@@ -11,6 +11,7 @@
 //   {"type":"undo", "history":"field"}, {"type":"redo", "history":"field"}
 //                                    (the last field design edit, view_field_history.h)
 //   {"type":"field"}                                   (the field overlay, view_field.h)
+//   {"type":"resend"}              (the model again, every piece of it: the page lost some)
 //   {"type":"fieldElement", "op":"add", "kind":"wedge", "position":[x,y,z],
 //    "direction":[dx,dy,dz] (regular only), "strength":S}     (a design element added, #49)
 //   {"type":"fieldElement", "op":"move", "index":N, "position":[x,y,z], "drag":D}
@@ -76,7 +77,7 @@ struct PageFieldElement {
 };
 
 struct PageRequest {
-  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field, FieldElement };
+  enum class Kind { Set, Pick, Seeds, Paint, Undo, Redo, Field, FieldElement, Resend };
   Kind kind = Kind::Set;
   enum class History { Paint, Field };
   History history = History::Paint;  // undo, redo: whose last edit

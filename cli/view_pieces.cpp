@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 
 namespace fgsg::cli {
 namespace {
@@ -85,6 +86,16 @@ bool samePiece(const ViewPiece& a, const rt::InstanceList& list, const std::vect
 }
 
 }  // namespace
+
+bool viewPiecesEmbedAny(const ViewPieces& pieces, const std::vector<std::string>& files) {
+  for (const std::string& file : files) {
+    const std::filesystem::path name = std::filesystem::path(file).filename();
+    for (const auto& piece : pieces.pieces)
+      for (const std::string& texture : piece->list.textures)
+        if (std::filesystem::path(texture).filename() == name) return true;
+  }
+  return false;
+}
 
 bool viewByPieces(const rt::DeriveOptions& options, const rt::DeriveResult& result) {
   const auto& bounds = result.instances.startBounds;

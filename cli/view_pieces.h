@@ -40,6 +40,11 @@ struct ViewPieces {
 // many as options.seeds) that fgsg view sends as pieces.
 bool viewByPieces(const rt::DeriveOptions& options, const rt::DeriveResult& result);
 
+// True when a piece of `pieces` embeds an image whose file is named as one of `files`
+// (by file name: a texture's path may be spelt relative to the grammar). Its .glb holds
+// the image's bytes as they were, which a paint stroke changes without a recompile.
+bool viewPiecesEmbedAny(const ViewPieces& pieces, const std::vector<std::string>& files);
+
 // The pieces of `result` (its assets resolved: meshOf); a piece equal to `last`'s at the
 // same place (instances, params, curves, finishes, origins, reports: byte for byte) is
 // taken from there. `last` must come from the same grammar, values and seed. False with a

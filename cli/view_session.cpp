@@ -112,6 +112,7 @@ void ViewSession::message(uint64_t page, const std::string& text) {
   if (!parsePageRequest(text, request, reason)) return reject(page, reason);
   if (request.kind == PageRequest::Kind::Pick) return pick(page, request.instance);
   if (request.kind == PageRequest::Kind::Field) return askField(page);
+  if (request.kind == PageRequest::Kind::Resend) return resend(page);
   if (request.kind != PageRequest::Kind::Set) return editFiles(page, request);
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = pages_.find(page);
@@ -158,6 +159,17 @@ std::string ViewSession::stepProblem(uint32_t step, const std::map<std::string, 
     return what + " is past the derivation's length " + std::to_string(length) + " (steps 0 to " +
            std::to_string(length) + ")";
   return "";
+}
+
+// The last model sent to the page again, every piece of it (a piece it could not read
+// leaves it showing other pieces than the server believes). Nothing is derived.
+void ViewSession::resend(uint64_t page) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = pages_.find(page);
+  if (it == pages_.end()) return;
+  Page& state = it->second;
+  state.pieces.clear();
+  if (state.model) send(page, state, state.model);
 }
 
 void ViewSession::askField(uint64_t page) {
@@ -253,6 +265,9 @@ void ViewSession::editFiles(uint64_t page, const PageRequest& request) {
     default: break;
   }
   if (!done) return reject(page, reason);
+  const bool undoRedo = request.kind == PageRequest::Kind::Undo || request.kind == PageRequest::Kind::Redo;
+  if (request.kind == PageRequest::Kind::Paint || (undoRedo && request.history == PageRequest::History::Paint))
+    paintedFiles_.push_back(file);  // pieces embedding its image hold the old texels
   edited(page, file);
   if (request.kind == PageRequest::Kind::FieldElement || request.history == PageRequest::History::Field)
     recompile_ = true;  // the grammar itself changed
@@ -608,6 +623,14 @@ std::shared_ptr<ViewSession::Derived> ViewSession::derive(bool recompile, const 
     surfaceReuseKey_ = {attrs, seed};
     lastPieces_ = ViewPieces{};  // of other values (a recompile: see compile())
   }
+  std::vector<std::string> painted;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    painted.swap(paintedFiles_);
+  }
+  // A painted texture a piece embeds (a finish's image): its .glb is stale though its
+  // instances are the same.
+  if (viewPiecesEmbedAny(lastPieces_, painted)) lastPieces_ = ViewPieces{};
   const backend::SurfaceReuseScope reuseSurface(*surfaceReuse_);
   rt::DeriveResult result =
       backend::derive(options_.engine, compiled_->module, compiled_->source.text, derive, assets, nullptr, loader.get());

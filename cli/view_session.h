@@ -30,6 +30,7 @@
 //                  {"type":"undo"|"redo", "history":"field"}: the last design element edit
 //                  {"type":"fieldElement", ...}: a design element of the first field edited in
 //                   the grammar's text (view_field_edit.h), then compiled again
+//                  {"type":"resend"}: the last model again, every piece (the page lost some)
 //                                                          (checked first: view_message.h)
 // Seeds and painted textures are files, so they are the session's, not a page's: an
 // edit re-derives every page (#49).
@@ -130,6 +131,7 @@ class ViewSession {
   void sendPieces(uint64_t page, Page& state, const Derived& d);                    // under mutex_
   void pick(uint64_t page, uint32_t instance);  // {"type":"pick","instance":N}: who placed it
   void reject(uint64_t page, const std::string& reason);
+  void resend(uint64_t page);    // {"type":"resend"}: the last model again, every piece
   void askField(uint64_t page);  // {"type":"field"}: the overlay now and after each recompile
   // The overlay to the pages owed it, computed once per compile (worker).
   void sendFields(bool recompiled);
@@ -152,6 +154,7 @@ class ViewSession {
   ViewSurface viewSurface_;
   std::pair<std::map<std::string, std::string>, uint64_t> surfaceReuseKey_;
   ViewPieces lastPieces_;  // the last derivation's pieces with surfaceReuse_'s values (worker only)
+  std::vector<std::string> paintedFiles_;  // texture files painted since the last derivation (under mutex_)
   std::string field_;  // the field overlay's message for compiled_; empty: not computed (worker only)
   // --steps: the steps derived for these values, seed and step, kept until the grammar or
   // a file it reads changes (stepsEpoch_) or they hold kMaxStepCacheBytes (worker only).

@@ -130,6 +130,32 @@ function dispose(object) {
   });
 }
 
+// Models and pieces are read (parsed) one after another in the order they came, on one
+// chain: the page then shows what the server believes it shows. A plain model replaces all
+// pieces, so one read while a newer plain model has come is dropped; pieces never are (the
+// server sends only those the page lacks), and after a piece that cannot be read, or
+// pieces that leave a hole, the page asks for all of them again ({"type":"resend"}).
+let modelsShown = Promise.resolve();
+let modelsReceived = 0, newestPlain = 0;
+let resendAsked = false;
+let testDelay = 0;  // tests: milliseconds the next model waits before it is read
+function inOrder(read) {
+  const seq = ++modelsReceived, delay = testDelay;
+  testDelay = 0;
+  modelsShown = modelsShown.then(async () => {
+    if (delay) await new Promise((resolve) => setTimeout(resolve, delay));
+    if (seq < newestPlain) return;  // a newer plain model replaces whatever this shows
+    await read(seq);
+  }).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+  return seq;
+}
+function askResend() {
+  state.resends = (state.resends || 0) + 1;
+  if (resendAsked) return;
+  resendAsked = true;
+  ws.send(JSON.stringify({ type: 'resend' }));
+}
+
 function showModel(buffer) {
   parts.push(buffer);
   if (!header || parts.length < 2) return;
@@ -137,7 +163,8 @@ function showModel(buffer) {
   header = null;
   parts = [];
   state.timing.received = performance.now();
-  buildModel(announced, buffers).then((built) => {
+  newestPlain = inOrder(async () => {
+    const built = await buildModel(announced, buffers);
     if (model) {
       scene.remove(model);
       dispose(model);
@@ -146,7 +173,7 @@ function showModel(buffer) {
     model = built;
     scene.add(model);
     modelShown(announced);
-  }).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+  });
 }
 
 // A model of seeds derived apart comes as pieces, a seed's each and the rest after them
@@ -154,7 +181,7 @@ function showModel(buffer) {
 // shows at its place (a seed dragged: that seed's plant). Each piece's instance numbers
 // count from its base in the derivation, which other seeds' changes move.
 const pieces = [];  // per piece: { object, ids: [[object, local numbers], ...], glb }
-let piecesShown = Promise.resolve();
+let testFailPieces = false;  // tests: the next pieces cannot be read
 function showPieces(buffer) {
   parts.push(buffer);
   if (parts.length < 2 * piecesHeader.sent.length) return;
@@ -162,22 +189,36 @@ function showPieces(buffer) {
   piecesHeader = null;
   parts = [];
   state.timing.received = performance.now();
-  // In the order they came: a later edit's pieces replace an earlier one's, never the reverse.
-  piecesShown = piecesShown.then(() => Promise.all(announced.sent.map(async (s, k) => {
-    const gltf = await loader.parseAsync(buffers[2 * k], '');
-    const ids = new Uint32Array(buffers[2 * k + 1]), byNode = new Map();
-    let offset = 0;
-    for (const [node, count] of s.placing) byNode.set(node, ids.subarray(offset, offset + count)), offset += count;
-    const own = [];
-    gltf.scene.traverse((o) => {
-      const node = (gltf.parser.associations.get(o) || {}).nodes;
-      if (byNode.has(node)) own.push([o, byNode.get(node)]);
-    });
-    return { index: s.piece, object: gltf.scene, ids: own, glb: buffers[2 * k] };
-  })).then((built) => {
-    if (!model || pieces.length === 0) {  // the first pieces: a group of them replaces the model
+  const fail = testFailPieces;
+  testFailPieces = false;
+  inOrder(async () => {
+    let built;
+    try {
+      if (fail) throw new Error('a test made these pieces unreadable');
+      built = await Promise.all(announced.sent.map(async (s, k) => {
+        const gltf = await loader.parseAsync(buffers[2 * k], '');
+        const ids = new Uint32Array(buffers[2 * k + 1]), byNode = new Map();
+        let offset = 0;
+        for (const [node, count] of s.placing) byNode.set(node, ids.subarray(offset, offset + count)), offset += count;
+        const own = [];
+        gltf.scene.traverse((o) => {
+          const node = (gltf.parser.associations.get(o) || {}).nodes;
+          if (byNode.has(node)) own.push([o, byNode.get(node)]);
+        });
+        return { index: s.piece, object: gltf.scene, ids: own, glb: buffers[2 * k] };
+      }));
+    } catch (err) {  // the pieces the server believes shown are not: all of them again
+      setStatus('cannot read the model: ' + err + ', asking for it again', 'error');
+      for (const s of announced.sent) {
+        if (pieces[s.piece]) { model.remove(pieces[s.piece].object); dispose(pieces[s.piece].object); }
+        pieces[s.piece] = undefined;
+      }
+      return askResend();
+    }
+    if (!model || !model.userData.pieces) {  // the first pieces: a group of them replaces the model
       if (model) { scene.remove(model); dispose(model); }
       model = new THREE.Group();
+      model.userData.pieces = true;
       scene.add(model);
     }
     for (const p of built) {
@@ -186,18 +227,23 @@ function showPieces(buffer) {
       model.add(p.object);
     }
     for (const p of pieces.splice(announced.bases.length)) if (p) { model.remove(p.object); dispose(p.object); }
-    for (let k = 0; k < pieces.length; ++k)
+    let holes = pieces.length < announced.bases.length;
+    for (let k = 0; k < pieces.length; ++k) {
+      if (!pieces[k]) { holes = true; continue; }
       for (const [o, local] of pieces[k].ids) placedIds.set(o, Array.from(local, (i) => i + announced.bases[k]));
+    }
+    if (holes) askResend();  // the server sent fewer pieces than the page lacks
+    else resendAsked = false;
     const instancedMeshes = [];
     model.traverse((o) => { if (o.isInstancedMesh) instancedMeshes.push({ name: o.name, asset: o.userData.asset, count: o.count }); });
     state.instancedMeshes = instancedMeshes;
     state.instanced = instancedMeshes.reduce((sum, m) => sum + m.count, 0);
     state.pieces = { count: pieces.length, sent: built.map((p) => p.index),
                      bytes: built.reduce((sum, p) => sum + p.glb.byteLength, 0), server: announced.server };
-    state.glbBytes = pieces.reduce((sum, p) => sum + p.glb.byteLength, 0);
+    state.glbBytes = pieces.reduce((sum, p) => sum + (p ? p.glb.byteLength : 0), 0);
     lastGlb = null;
     modelShown(announced);
-  })).catch((err) => { setStatus('cannot read the model: ' + err, 'error'); });
+  });
 }
 
 function modelShown(announced) {
@@ -363,9 +409,15 @@ state.hooks = {
     const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', lastGlb));
     return Array.from(hash, (b) => b.toString(16).padStart(2, '0')).join('');
   },
-  // A model shown as pieces: each piece's .glb digest, in piece order.
+  // The next model (or pieces) waits `ms` before it is read; the next pieces cannot be read.
+  delayNextModel(ms) { testDelay = ms; },
+  failNextPieces() { testFailPieces = true; },
+  // A model shown as pieces: each piece's .glb digest, in piece order (null: a hole),
+  // once every model that came is shown.
   async pieceDigests() {
-    return Promise.all(pieces.map(async (p) => {
+    await modelsShown;
+    return Promise.all(Array.from(pieces, async (p) => {
+      if (!p) return null;
       const hash = new Uint8Array(await crypto.subtle.digest('SHA-256', p.glb));
       return Array.from(hash, (b) => b.toString(16).padStart(2, '0')).join('');
     }));

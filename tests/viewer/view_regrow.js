@@ -145,6 +145,65 @@ async function main() {
     ok(full.digests.length === 5 && same(full.digests, redone.digests),
        'every piece is byte for byte what a fresh fgsg view derives from the written files');
     ok(full.figures.triangles === redone.figures.triangles, `the same ${full.figures.triangles} triangles`);
+
+    // 6. Out of order: a plain model (one seed) whose reading the page delays, and the four
+    // seeds' pieces right after it. The page reads them in the order they came, so it ends
+    // on every piece, as the server believes; a drag then sends one piece onto them.
+    const modelsNow = await a.page.evaluate(() => window.fgsgViewer.models);
+    let from = a.frames.length;
+    await a.page.evaluate(() => window.fgsgViewer.hooks.delayNextModel(3000));
+    await a.page.evaluate((m) => window.fgsgViewer.hooks.send(m), { type: 'seeds', seeds: [moved[0]] });
+    const plainCame = () => a.frames.slice(from).some((f) => typeof f === 'string' && f.includes('"type":"model"'));
+    for (let t = 0; !plainCame(); ++t) {
+      if (t > 1500) fail('no plain model came for one seed');
+      await new Promise((r) => setTimeout(r, 100));
+    }
+    from = a.frames.length;
+    await a.page.evaluate((m) => window.fgsgViewer.hooks.send(m), { type: 'seeds', seeds: moved });
+    await a.page.waitForFunction((k) => window.fgsgViewer.models >= k + 2, modelsNow, { timeout: 150000 });
+    const reordered = await a.page.evaluate(() => window.fgsgViewer.hooks.pieceDigests());
+    ok(a.frames.slice(from).some((f) => typeof f === 'string' && f.includes('"type":"pieces"')),
+       'the pieces came while the plain model was still being read');
+    ok(same(reordered, redone.digests), 'the delayed plain model did not replace the newer pieces: all 5 shown');
+    const moved3 = moved.map((s) => s.slice());
+    moved3[3] = [0.6, 0, 0.8];
+    const drag3 = await edit(a, { type: 'seeds', seeds: moved3 });
+    ok(same(drag3.header.sent.map((s) => s.piece), [3]) && same(changedAt(drag3.digests, redone.digests), [3]) &&
+       drag3.digests.every((d) => d), 'a drag after it sends piece 3 alone and the page shows all 5 pieces');
+
+    // 7. Pieces the page cannot read: it asks for all of them again ({"type":"resend"}).
+    await a.page.evaluate(() => window.fgsgViewer.hooks.failNextPieces());
+    const modelsThen = await a.page.evaluate(() => window.fgsgViewer.models);
+    await a.page.evaluate((m) => window.fgsgViewer.hooks.send(m), { type: 'seeds', seeds: moved });
+    await a.page.waitForFunction((k) => window.fgsgViewer.models > k, modelsThen, { timeout: 150000 });
+    const resent = await a.page.evaluate(async () => ({ resends: window.fgsgViewer.resends, sent: window.fgsgViewer.pieces.sent,
+                                                         digests: await window.fgsgViewer.hooks.pieceDigests() }));
+    ok(resent.resends === 1 && same(resent.sent, [0, 1, 2, 3, 4]), `one resend asked, pieces ${resent.sent} sent`);
+    ok(same(resent.digests, redone.digests), 'after the unreadable piece every piece is the fresh view\'s');
+
+    // 8. A painted file that is also a finish's image (Texture): a piece embeds its bytes,
+    // so every piece that holds it is built again though no plant changed.
+    const textured = [path.join(root, 'tex'), path.join(root, 'texFresh')];
+    for (const dir of textured) {
+      fs.mkdirSync(dir);
+      fs.writeFileSync(path.join(dir, 'g.fgsg'), text.replace('ivy_anywhere.png', 'mask.png')
+        .replace('const mainSteps = 120;', 'const mainSteps = 14;')
+        .replace('start = S(1, barkWidth, barkWidth)', 'start = Texture("mask.png") S(1, barkWidth, barkWidth)'));
+      fs.writeFileSync(path.join(dir, 'mask.png'), whitePng(128));
+      fs.copyFileSync(path.join(edited, 'g.seeds'), path.join(dir, 'g.seeds'));
+    }
+    const c = await open(browser, path.join(textured[0], 'g.fgsg'), env);
+    servers.push(c.server);
+    const before = await c.page.evaluate(() => window.fgsgViewer.hooks.pieceDigests());
+    // A dab far from every plant's reads (the sphere's bottom): no plant changes, the image does.
+    const far = await edit(c, { type: 'paint', texture: 'mask', stroke: 1, dabs: [[0, -1, 0]], radius: 0.1,
+                                strength: 1, value: 0 });
+    fs.copyFileSync(path.join(textured[0], 'mask.png'), path.join(textured[1], 'mask.png'));
+    const d = await open(browser, path.join(textured[1], 'g.fgsg'), env);
+    servers.push(d.server);
+    const texFresh = await d.page.evaluate(() => window.fgsgViewer.hooks.pieceDigests());
+    ok(before.length === 5 && same(far.digests, texFresh), 'after the dab every piece is a fresh view\'s (the new image)');
+    ok(changedAt(far.digests, before).length >= 4, `the plants' pieces embed the new image: ${changedAt(far.digests, before)}`);
     console.log('PASS');
   } finally {
     await browser.close();

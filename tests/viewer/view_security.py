@@ -400,6 +400,8 @@ def edit_attacks():
             '{"type":"undo"}',
             '{"type":"redo","count":100}',
             '{"type":"field","file":"/etc/passwd"}',  # the overlay names no file: an unknown field
+            '{"type":"resend","pieces":[0,1]}',  # the whole model again: it takes no field
+            '{"type":"resend","file":"/etc/passwd"}',
         ]
         for text in bad:
             ws.send(text)
