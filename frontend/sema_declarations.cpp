@@ -35,7 +35,9 @@ void Analyzer::collectValues() {
       res_.attrs.push_back({v.name, value, v.range, v.annotations, v.value.get()});
       continue;
     }
-    if (prog_.cityEngineLots && v.isAttr && !v.fromImporter && !evalConst(*v.value, value) && !zeroDivisor(*v.value)) {
+    // An importer's value may read the importer's computed attrs (`lib.tile = tile * 2`,
+    // `attr tile = height / 4`): it waits for them with the computed attrs.
+    if (prog_.cityEngineLots && v.isAttr && !evalConst(*v.value, value) && !zeroDivisor(*v.value)) {
       computedAttrs.push_back(&v);
       continue;
     }
@@ -83,7 +85,7 @@ void Analyzer::collectComputedAttrs(std::vector<const ValueDecl*> pending) {
   for (const ValueDecl* v : pending) {
     failedValues_.insert(v->name);
     diags_.error("E023", v->value->range,
-                 "the default of attr '" + v->name +
+                 (v->fromImporter ? "the importer's value of attr '" : "the default of attr '") + v->name +
                      "' may use numbers, strings, consts, functions, other attrs, random numbers "
                      "and math functions; not shape queries or a cycle of attrs (CityEngine CGA; "
                      "not supported yet)");

@@ -122,3 +122,21 @@ TEST_CASE("cga imported functions: nested calls that would copy past a million n
   CHECK(says(thirty, "error[E002]"));
   CHECK(says(thirty, "expands to more than 1000000 expression nodes"));
 }
+
+TEST_CASE("cga imports: the importer's value may read its attrs computed from other attrs", "[cga][dialect]") {
+  const std::string tail = "@StartRule\nLot --> extrude(F.height) X.\n";
+  // Computed attrs are known after the plain ones; the importer's value waits for them.
+  const auto computed = compileImporting("import F : \"lib.cga\"\nattr base = 2\nattr fh = base * 2\nF.floorHeight = fh\n" + tail);
+  INFO(computed.messages);
+  CHECK(computed.ok);
+  CHECK(computed.messages.empty());
+  const auto random = compileImporting("import F : \"lib.cga\"\nattr fh = rand(2, 3)\nF.floorHeight = fh * 2\n" + tail);
+  INFO(random.messages);
+  CHECK(random.ok);
+  // A shape query is still refused, with the importer's wording, at the value.
+  const auto query = compileImporting("import F : \"lib.cga\"\nF.floorHeight = scope.sx\n" + tail);
+  CHECK_FALSE(query.ok);
+  CHECK(query.says("main.cga:2:17: error[E023]: the importer's value of attr 'F.floorHeight' may use numbers, "
+                   "strings, consts, functions, other attrs, random numbers and math functions; not shape "
+                   "queries or a cycle of attrs (CityEngine CGA; not supported yet)\n"));
+}
