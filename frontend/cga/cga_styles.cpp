@@ -18,9 +18,11 @@ namespace fgsg::frontend::cga {
 namespace {
 
 // What a declaration defines, for overriding: rules and values (attrs, consts, functions)
-// have names of their own.
+// have names of their own. A rule is keyed by its name and number of parameters: its
+// overloads are different rules, so a style that redefines Door(h) keeps Default's Door.
 std::string styleOverrideKey(P::AnnotatedContext* ctx) {
-  if (auto* r = ctx->ruleDecl()) return "rule " + r->name->getText();
+  if (auto* r = ctx->ruleDecl())
+    return "rule " + r->name->getText() + "/" + std::to_string(r->params() ? r->params()->ID().size() : 0);
   if (auto* a = ctx->attrDecl()) return "value " + a->name->getText();
   if (auto* c = ctx->constDecl()) return "value " + c->name->getText();
   return "value " + ctx->functionDecl()->name->getText();

@@ -96,3 +96,24 @@ TEST_CASE("cga import styles lists: the module's styles come here, misuse is loc
                      "import lib (Red, Tal) : \"lib.cga\"\n"
                      "                 ^~~\n"));
 }
+
+TEST_CASE("cga styles: a style that redefines one overload of a rule keeps Default's others", "[cga][dialect]") {
+  const std::string text =
+      "@StartRule\n"
+      "Lot --> split(x) { 10 : Door | 10 : Door(4) }\n"
+      "Door --> extrude(1) Low.\n"
+      "Door(h) --> extrude(h) High.\n"
+      "style Red\n"
+      "Door(h) --> extrude(h*2) RedHigh.\n";
+  const StyledCompile red = compileStyled(text, "Red$Lot");
+  INFO(red.messages);
+  CHECK(red.ok);
+  CHECK_FALSE(red.says("error"));
+  CHECK(red.module.findSymbol("Low") >= 0);      // Default's Door
+  CHECK(red.module.findSymbol("RedHigh") >= 0);  // Red's Door(h)
+  CHECK(red.module.findSymbol("High") < 0);      // Default's Door(h), overridden
+  const StyledCompile plain = compileStyled(text);
+  CHECK(plain.ok);
+  CHECK(plain.module.findSymbol("High") >= 0);
+  CHECK(plain.module.findSymbol("RedHigh") < 0);
+}
