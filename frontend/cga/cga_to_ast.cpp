@@ -505,8 +505,15 @@ void Translator::caseChain(P::CaseBodyContext* body, size_t from, const RuleHead
       r.branches.push_back(std::move(rest));
       program_.rules.push_back(std::move(r));
       if (!det) return;
-      notPrev = conjunction(std::move(notPrev), unaryNot(std::move(det)));
-      continue;
+      // Where det fails the chain goes on in the same helper rule as where the chance
+      // fails: the rest is translated once (twice per such case would be 2^n rules).
+      Rule failed = newRule(head, conjunction(std::move(guard), conjunction(std::move(notPrev), unaryNot(std::move(det)))));
+      Branch onward;
+      onward.range = rangeOf(conds[i]);
+      onward.successor = emitOf(aux, onward.range);
+      failed.branches.push_back(std::move(onward));
+      program_.rules.push_back(std::move(failed));
+      return;
     }
     ExprPtr cond = expr(conds[i], env);
     if (!cond) return;

@@ -428,3 +428,18 @@ TEST_CASE("trim() and the trim attribute translate, and their misuse is located"
   CHECK(compile("axiom: Lot;\nLot ~> ApplyTrimPlanes(1) X;\n", "test.fgsg")
             .messages.find("test.fgsg:2:8: error[E016]: 'ApplyTrimPlanes' takes 0 arguments, got 1") != std::string::npos);
 }
+
+TEST_CASE("case cond && p(x): the rest of the chain is translated once per case and not twice", "[cga][dialect]") {
+  // Each such case used to translate the rest both where the chance fails and where cond
+  // does: 2^n rules. Now a case adds two rules (the chance, and cond failing) and a helper.
+  const int cases = 12;
+  std::string text = "@StartRule\nLot --> split(x) { 1 : P }*\nP -->\n";
+  for (int k = 0; k < cases; ++k)
+    text += "  case scope.tx > " + std::to_string(k) + " && p(0.5) : extrude(" + std::to_string(k + 1) + ") X" +
+            std::to_string(k) + ".\n";
+  text += "  else : Y.\n";
+  const Compiled c = compile(text);
+  INFO(c.messages);
+  REQUIRE(c.ok);
+  CHECK(c.module.rules.size() <= size_t(3 * cases + 6));
+}
