@@ -131,6 +131,15 @@ TEST_CASE("view messages: seeds, paint, undo and redo as the page sends them (#4
   CHECK(r.kind == PageRequest::Kind::Redo);
 }
 
+TEST_CASE("view messages: resend takes no field (#49, item 5)") {
+  PageRequest r;
+  std::string reason;
+  REQUIRE(parsePageRequest(R"({"type":"resend"})", r, reason));
+  CHECK(r.kind == PageRequest::Kind::Resend);
+  CHECK(refused(R"({"type":"resend","pieces":[0]})").find("unknown field") != std::string::npos);
+  CHECK(refused(R"({"type":"resend","file":"/etc/passwd"})").find("unknown field") != std::string::npos);
+}
+
 TEST_CASE("view messages: bad seeds and strokes are refused with a reason (#49)") {
   CHECK(refused(R"({"type":"seeds","seeds":[[0,1]]})").find("seed 0") != std::string::npos);
   CHECK(refused(R"({"type":"seeds","seeds":[[0,1,0,0,0,0]]})").find("non-zero heading") != std::string::npos);
