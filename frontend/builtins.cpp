@@ -35,7 +35,7 @@ const CommandInfo kCommands[] = {
      "SplitArea(\"X\", area1, area2, ...){ a | b ... }", nullptr},
     {CommandId::Repeat, "Repeat", 2, 4, BodyRule::One, "Repeat(\"X\", s){ tile }", nullptr},
     {CommandId::Comp, "Comp", 1, 1, BodyRule::One, "Comp(\"sidefaces\"){ face }", nullptr},
-    {CommandId::Extrude, "Extrude", 1, 1, BodyRule::None, "Extrude(height)", nullptr},
+    {CommandId::Extrude, "Extrude", 1, 2, BodyRule::None, "Extrude(height)", nullptr},
     {CommandId::Footprint, "Footprint", 6, -1, BodyRule::None, "Footprint(x1, z1, x2, z2, x3, z3, ...) or Footprint(outline..., \"hole\", x1, z1, ...)", nullptr},
     {CommandId::Offset, "Offset", 1, 1, BodyRule::AtLeastOne, "Offset(distance){ inside: A | border: B }", nullptr},
     {CommandId::Roof, "Roof", 2, 6, BodyRule::One, "Roof(\"hipped\"[, \"byHeight\"], angle or height[, overhang[, gableOverhang[, edge]]]){ roof }", nullptr},

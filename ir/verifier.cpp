@@ -504,7 +504,7 @@ class Verifier {
         for (uint32_t label : op.partLabels) stringId(label);
         numArgs(op, r, 0);
         break;
-      case OpKind::Extrude: numArgs(op, r, 1); break;
+      case OpKind::Extrude: numArgs(op, r, op.args.size() == 2 ? 2 : 1); break;  // height[, world-up flag]
       case OpKind::Offset:
         numArgs(op, r, 1);
         if (op.partLabels.size() != op.bodies.size() || op.bodies.empty())

@@ -13,6 +13,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 
 namespace fgsg::backend {
 
@@ -50,6 +51,16 @@ void CgaCommands::apply(const ir::Op& op, const double* a, uint32_t n, State& st
       std::string error;
       if (!rt::cga::extrude(scope, geom, a[0], d_.arena(), part, error))
         throw DeriveError{op.loc, "R002", error};
+      // `.cga`'s extrude(world.up, h) (a second argument, not 0): the face's normal must be
+      // world up, the one case where it is extrude(h). CityEngine sweeps any other face
+      // straight up; that is not here yet, so it is an error rather than a wrong solid.
+      if (n >= 2 && a[1] != 0.0 && part.scope.axes.col(1).normalized().y() < 1.0 - 1e-6) {
+        const Eigen::Vector3d up = part.scope.axes.col(1).normalized();
+        std::ostringstream m;
+        m << "extrude(world.up, h) on a face whose normal (" << up.x() << ", " << up.y() << ", " << up.z()
+          << ") is not world up: only faces facing up are supported (use extrude(h) to go along the normal)";
+        throw DeriveError{op.loc, "R002", m.str()};
+      }
       st.scope = part.scope;
       st.geom = part.geom;
       break;

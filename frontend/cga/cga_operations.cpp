@@ -361,6 +361,8 @@ void Translator::callOperation(P::CallOperationContext* op, Sequence& seq, const
     flushInsert();
     Item item = command("Extrude", at);
     item.args.push_back(std::move(h));
+    // world.up: Extrude's second argument 1 has the engine check that the face faces up.
+    if (argCtx.size() == 2 && selectorWord(argCtx[0]) != "face.normal") item.args.push_back(number(1.0, at));
     push(std::move(item));
     return;
   }

@@ -216,3 +216,26 @@ TEST_CASE("an insert keeps the asset's size, centred on the scope's x and z", "[
   // An unknown word is located, not ignored.
   CHECK_THROWS_WITH(deriveText("axiom: I(\"cube\", \"xUp\");\n"), Catch::Matchers::Contains("E028"));
 }
+
+TEST_CASE("extrude(world.up h) goes up on a face facing up and is a located error on a wall", "[cga][dialect]") {
+  // On the lot (facing up) it is extrude(h): a 20 x 3 x 20 mass.
+  const rt::DeriveResult up = deriveCga("@StartRule\nLot --> extrude(world.up, 3) M.\n");
+  REQUIRE(up.ok);
+  REQUIRE(up.instances.instances.size() == 1);
+  const Eigen::Vector3d top = test::unitPoint(up.instances.instances[0], 1, 1, 1);
+  CHECK(top.y() == Approx(3));
+  // On the front wall CityEngine sweeps the face up; along the wall's normal would be a
+  // wrong solid, so the engine refuses it where the operation is written.
+  const rt::DeriveResult wall =
+      deriveCga("@StartRule\nLot --> extrude(4) comp(f) { front : W }\nW --> extrude(world.up, 2) X.\n");
+  CHECK_FALSE(wall.ok);
+  REQUIRE_FALSE(wall.messages.empty());
+  CHECK(wall.messages[0].code == "R002");
+  CHECK(wall.messages[0].line == 3);
+  CHECK(wall.messages[0].col == 7);
+  CHECK(wall.messages[0].message ==
+        "extrude(world.up, h) on a face whose normal (0, 0, 1) is not world up: only faces facing up are "
+        "supported (use extrude(h) to go along the normal)");
+  // face.normal is extrude(h) on any face.
+  CHECK(deriveCga("@StartRule\nLot --> extrude(4) comp(f) { front : W }\nW --> extrude(face.normal, 2) X.\n").ok);
+}
