@@ -60,7 +60,12 @@ const rt::cga::StreetEdges* Derivation::streetEdges() {
     // The lot's ring as deriveLots lays it on the ground (x east, north at -z).
     std::vector<rt::Vec3> ring;
     for (const Eigen::Vector2d& p : streetLot_->outer) ring.emplace_back(p.x(), 0.0, -p.y());
-    streetEdges_ = rt::cga::streetEdgesOfLot(ring, streetLot_->streetWidth, objectFrame().Z());
+    std::vector<std::vector<rt::Vec3>> holes;
+    for (const auto& hole : streetLot_->holes) {
+      holes.emplace_back();
+      for (const Eigen::Vector2d& p : hole) holes.back().emplace_back(p.x(), 0.0, -p.y());
+    }
+    streetEdges_ = rt::cga::streetEdgesOfLot(ring, streetLot_->streetWidth, objectFrame().Z(), holes);
     streetEdgesKnown_ = true;
   }
   return &streetEdges_;

@@ -25,7 +25,8 @@ bool streetPointOnEdge(const Vec3& p, const StreetEdges::Edge& e, double tol) {
 
 }  // namespace
 
-StreetEdges streetEdgesOfLot(const std::vector<Vec3>& ring, const std::vector<double>& width, const Vec3& objectFront) {
+StreetEdges streetEdgesOfLot(const std::vector<Vec3>& ring, const std::vector<double>& width, const Vec3& objectFront,
+                             const std::vector<std::vector<Vec3>>& holes) {
   StreetEdges out;
   double extent = 0, widest = 0;
   const StreetEdges::Edge* main = nullptr;
@@ -39,6 +40,15 @@ StreetEdges streetEdgesOfLot(const std::vector<Vec3>& ring, const std::vector<do
     extent = std::max({extent, e.a.cwiseAbs().maxCoeff(), e.b.cwiseAbs().maxCoeff()});
     out.edges.push_back(e);
   }
+  for (const std::vector<Vec3>& hole : holes)
+    for (size_t i = 0; i < hole.size(); ++i) {
+      StreetEdges::Edge e;
+      e.a = hole[i];
+      e.b = hole[(i + 1) % hole.size()];
+      e.outward = Vec3::Zero();
+      extent = std::max({extent, e.a.cwiseAbs().maxCoeff(), e.b.cwiseAbs().maxCoeff()});
+      out.holeEdges.push_back(e);
+    }
   for (const StreetEdges::Edge& e : out.edges)
     if (e.width > widest && e.outward.norm() > 0) widest = e.width, main = &e;
   const Vec3 front = main ? main->outward : streetLevel(objectFront);
@@ -58,6 +68,12 @@ unsigned streetSide(const StreetEdges& streets, const Vec3& direction, const Vec
       if (streetPointOnEdge(*a, e, streets.tol) && streetPointOnEdge(*b, e, streets.tol)) {
         onLotEdge = true;
         onStreet = e.width > 0;
+        break;
+      }
+  if (a && b && !onLotEdge)  // a courtyard's edge: on no street, classed by its direction below
+    for (const StreetEdges::Edge& e : streets.holeEdges)
+      if (streetPointOnEdge(*a, e, streets.tol) && streetPointOnEdge(*b, e, streets.tol)) {
+        onLotEdge = true;
         break;
       }
   if (!onLotEdge)

@@ -11,7 +11,9 @@
 // street.right or street.left by the side it faces, seen from that street looking at the
 // lot; facing the main street squarely without being on a street: none of them. A lot
 // whose widths are all 0 (an inner lot) has no street.front and is classed in the object
-// system's frame (its front the lot's first edge).
+// system's frame (its front the lot's first edge). An edge on a hole's ring (a courtyard)
+// is on no street whichever way it faces: street.back, .left or .right by its direction
+// (or none, facing the main street squarely), never street.front.
 #pragma once
 
 #include "runtime/scope.h"
@@ -29,14 +31,16 @@ struct StreetEdges {
     double width = 0.0;
   };
   std::vector<Edge> edges;
+  std::vector<Edge> holeEdges;  // the holes' rings (a, b only): never on a street
   Vec3 front = Vec3::UnitZ(), right = Vec3::UnitX();  // the main street's frame, level
   double tol = 1e-9;                                   // a point this near an edge lies on it
 };
 
 // The lot's outer ring (world points, y up, counter-clockwise seen from above) and its
 // street widths (edge i from ring[i] to ring[i + 1]); `objectFront`: the object system's
-// front (its z), the frame of a lot without a street.
-StreetEdges streetEdgesOfLot(const std::vector<Vec3>& ring, const std::vector<double>& width, const Vec3& objectFront);
+// front (its z), the frame of a lot without a street; `holes` its inner rings.
+StreetEdges streetEdgesOfLot(const std::vector<Vec3>& ring, const std::vector<double>& width, const Vec3& objectFront,
+                             const std::vector<std::vector<Vec3>>& holes = {});
 
 // The StreetSide of a component whose outward direction is `direction` (its level part
 // counts; none when it has none); `a` and `b` the ends of an edge component (else null),

@@ -159,3 +159,24 @@ TEST_CASE("street widths: a lot edge goes by its width, other components by dire
   const Vec3 a(3, 0, -1), b(3, 0, -2);                          // an edge inside the lot, facing east
   CHECK(streetSide(streets, Vec3(1, 0, 0), &a, &b) == kStreetRight);
 }
+
+// A courtyard's edges are on no street: the 20 x 20 lot with its street on the south edge
+// and a 4 x 4 hole (x 8..12, z -8..-12). The hole's north edge faces south (+z, into the
+// hole) like the street but is no street edge: facing the main street squarely, none; its
+// west edge faces east (right), its south edge north (back), its east edge west (left).
+// The same segment without the hole given is a component off the lot's edges: front.
+TEST_CASE("street widths: a hole's edges are never street.front", "[cga][street]") {
+  const std::vector<Vec3> ring{{0, 0, 0}, {20, 0, 0}, {20, 0, -20}, {0, 0, -20}};
+  const std::vector<std::vector<Vec3>> holes{{{8, 0, -8}, {8, 0, -12}, {12, 0, -12}, {12, 0, -8}}};
+  const StreetEdges streets = streetEdgesOfLot(ring, {5, 0, 0, 0}, Vec3::UnitZ(), holes);
+  const Vec3 nw(8, 0, -12), ne(12, 0, -12), sw(8, 0, -8), se(12, 0, -8);
+  CHECK(streetSide(streets, Vec3(0, 0, 1), &ne, &nw) == 0u);
+  CHECK(streetSide(streets, Vec3(1, 0, 0), &nw, &sw) == kStreetRight);
+  CHECK(streetSide(streets, Vec3(0, 0, -1), &sw, &se) == kStreetBack);
+  CHECK(streetSide(streets, Vec3(-1, 0, 0), &se, &ne) == kStreetLeft);
+  const Vec3 half(10, 0, -12);  // part of the hole's edge (a split of it) is on the hole too
+  CHECK(streetSide(streets, Vec3(0, 0, 1), &half, &nw) == 0u);
+  CHECK(streetSide(streets, Vec3(0, 0, 1)) == kStreetFront);  // no ends: by direction
+  const StreetEdges noHoles = streetEdgesOfLot(ring, {5, 0, 0, 0}, Vec3::UnitZ());
+  CHECK(streetSide(noHoles, Vec3(0, 0, 1), &ne, &nw) == kStreetFront);
+}
