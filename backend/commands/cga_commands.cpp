@@ -240,11 +240,11 @@ void CgaCommands::split(const ir::Op& op, const double* a, State& st, Exec& ex, 
           else bodyOf[i] = SIZE_MAX;
         }
       // comp(f)'s faces as one shape of all of them; its trim planes (the first face's)
-      // would cut the faces merged with it: none.
+      // would cut the faces merged with it: none. One face alone keeps its planes, as `:`.
       const bool faces = taken.front().geom.kind == rt::GeomKind::Polygon ||
                          taken.front().geom.kind == rt::GeomKind::Polyhedron;
       parts[first] = faces ? rt::cga::mergedFaces(taken, d_.arena()) : rt::cga::mergedComponents(taken);
-      if (faces && first < trimPlanes.size()) trimPlanes[first].clear();
+      if (faces && taken.size() > 1 && first < trimPlanes.size()) trimPlanes[first].clear();
       perBody[k] = 1;
     }
   // CGA's split.index / split.total count the parts a split derives; comp.index /

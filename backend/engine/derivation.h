@@ -319,9 +319,9 @@ class Derivation final : public QueryHost {
   // An instance of grammar asset `asset` (or of its cut mesh) takes the image of a Texture
   // above it and is drawn untinted when textured, unless Color says.
   void applyAssetLook(rt::Instance& inst, uint32_t asset, const rt::Scope& scope) const;
-  // The trim planes of `scope`'s shape that cut into an asset filling it (zUp turned); none
-  // when its box lies wholly on their kept side.
-  std::vector<rt::cga::TrimPlane> planesCuttingAsset(const rt::Scope& scope, bool zUp) const;
+  // The trim planes of `scope`'s shape that cut into asset `asset` filling it (zUp turned);
+  // none when its box, or else its mesh's vertices, lie wholly on their kept side.
+  std::vector<rt::cga::TrimPlane> planesCuttingAsset(uint32_t asset, const rt::Scope& scope, bool zUp) const;
   // outputLeaf of a shape whose geometry is still what carryInsert gave it: an instance of
   // the asset (or its cut mesh) with the asset's normals, uvs and images; false otherwise.
   bool outputCarriedAsset(uint32_t symbol, const State& st, const double* params, uint32_t slots, ir::Loc loc);

@@ -240,16 +240,30 @@ rt::GeomRef Derivation::insertedGeometry(uint32_t asset, bool zUp) {
   return *made;
 }
 
-std::vector<rt::cga::TrimPlane> Derivation::planesCuttingAsset(const rt::Scope& scope, bool zUp) const {
+std::vector<rt::cga::TrimPlane> Derivation::planesCuttingAsset(uint32_t asset, const rt::Scope& scope, bool zUp) const {
   std::vector<rt::cga::TrimPlane> planes = frames_.enabledTrimPlanes(scope.pivot, scope.trim);
   if (planes.empty()) return planes;
   // The asset's box wholly on the kept side of every plane: the instance as it is.
   const rt::Mat4 t = rt::insertTransform(scope, zUp);
   const double tol = 1e-9 * (1.0 + scope.S.norm());
-  for (int c = 0; c < 8; ++c) {
+  bool boxCrosses = false;
+  for (int c = 0; c < 8 && !boxCrosses; ++c) {
     const rt::Vec3 corner = (t * Eigen::Vector4d(c & 1, (c >> 1) & 1, (c >> 2) & 1, 1.0)).head<3>();
     for (const rt::cga::TrimPlane& p : planes)
-      if ((corner - p.point).dot(p.normal) > tol) return planes;
+      if ((corner - p.point).dot(p.normal) > tol) boxCrosses = true;
+  }
+  if (!boxCrosses) return {};
+  // The box crosses a plane, the asset itself may not (a round asset in a mitred corner):
+  // its vertices (in its unit box, turned as trimAssetMesh turns a zUp one) decide.
+  const rt::Mesh& mesh = assets_.mesh(assetMesh_[asset]);
+  for (const rt::cga::TrimPlane& p : planes) {
+    const rt::Vec3 n = scope.S.cwiseProduct(scope.axes.transpose() * p.normal);
+    const double d = p.normal.dot(scope.P - p.point);
+    for (size_t v = 0; v + 2 < mesh.positions.size(); v += 3) {
+      const rt::Vec3 u = zUp ? rt::Vec3(mesh.positions[v], mesh.positions[v + 2], 1.0 - mesh.positions[v + 1])
+                             : rt::Vec3(mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]);
+      if (n.dot(u) + d > tol) return planes;
+    }
   }
   return {};
 }
@@ -258,13 +272,18 @@ rt::GeomRef Derivation::carryInsert(const ir::Op& op, const rt::Scope& scope) {
   CarriedAsset carried{op.index, op.zUp, -1};
   rt::GeomRef geom = insertedGeometry(op.index, op.zUp);
   if (scope.pivot != 0) {  // frame 0 has no trim planes
-    const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(scope, op.zUp);
+    const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(op.index, scope, op.zUp);
     if (!planes.empty()) {
       rt::cga::Part part;
       rt::cga::trimGeometry(scope, geom, arena_, planes, part);
+      // A plane through the asset's box but not its solid leaves the geometry as it was,
+      // the key every uncut insert of the asset shares: no cut mesh for it.
+      const bool cut = part.geom.kind != geom.kind || part.geom.first != geom.first;
       geom = part.geom;
-      carried.cutMesh = static_cast<int32_t>(carriedCutMeshes_.size());
-      carriedCutMeshes_.push_back(rt::cga::trimAssetMesh(scope, assets_.mesh(assetMesh_[op.index]), op.zUp, planes));
+      if (cut) {
+        carried.cutMesh = static_cast<int32_t>(carriedCutMeshes_.size());
+        carriedCutMeshes_.push_back(rt::cga::trimAssetMesh(scope, assets_.mesh(assetMesh_[op.index]), op.zUp, planes));
+      }
     }
   }
   if (geom.count > 0) carriedAssets_[carriedKey(geom)] = carried;  // all cut away: the leaf outputs nothing
@@ -304,7 +323,7 @@ bool Derivation::outputCarriedAsset(uint32_t symbol, const State& st, const doub
 
 bool Derivation::placeTrimmedAsset(uint32_t asset, const rt::Scope& scope, uint32_t symbol, const double* params,
                                    uint32_t paramCount, ir::Loc loc, bool zUp, std::optional<rt::GeomRef>* cut) {
-  const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(scope, zUp);
+  const std::vector<rt::cga::TrimPlane> planes = planesCuttingAsset(asset, scope, zUp);
   if (planes.empty()) return false;
   // The shape's geometry after the insert: the asset's solid, cut as trim() cuts one.
   if (cut) {
