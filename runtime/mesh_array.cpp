@@ -1,5 +1,6 @@
 #include "runtime/mesh_array.h"
 
+#include <cstdint>
 #include <cstdlib>
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -18,6 +19,7 @@ size_t roundedUp(size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kH
 
 void* allocateMeshStorage(size_t bytes) {
   if (bytes < kLarge) return ::operator new(bytes);
+  if (bytes > SIZE_MAX - kHugePage) throw std::bad_alloc();  // roundedUp would wrap to a tiny block
   void* p = std::aligned_alloc(kHugePage, roundedUp(bytes));
   if (!p) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)

@@ -141,15 +141,18 @@ class KeylessTemplateImages {
       const Image& im = images_[op];
       for (uint32_t k = 0; k < im.len; ++k) {
         uint64_t& n = after[modules_[im.at + k].op];
-        n = std::min(n + tally[op], cap);
+        n = std::min(saturatingSum(n, tally[op]), cap);
       }
     }
   }
   static uint64_t total(const std::vector<uint64_t>& tally) {
     uint64_t sum = 0;
-    for (uint64_t n : tally) sum = std::min(sum + n, UINT64_MAX / 2);
+    for (uint64_t n : tally) sum = std::min(saturatingSum(sum, n), UINT64_MAX / 2);
     return sum;
   }
+  // Counts are held at a cap that may be near UINT64_MAX (--max-shapes 2^63): a sum past
+  // it must stay at the cap, not wrap to a small count.
+  static uint64_t saturatingSum(uint64_t a, uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
 
   const StringOps& plan_;
   std::vector<Image> images_;          // by op id
@@ -318,7 +321,17 @@ void reserveForGrowth(ModuleString& next, const ModuleString& str, double growth
   const double modules = std::min(double(str.size()) * std::pow(growth, 1 + 2 * (stepsAfter / 2)), double(maxModules));
   if (modules <= double(next.modules.capacity())) return;
   next.modules.reserve(size_t(modules));
-  next.args.reserve(size_t(modules / double(str.size()) * double(str.args.size())));
+  next.args.reserve(size_t(std::min(modules / double(str.size()) * double(str.args.size()), double(maxModules))));
+}
+
+// The most modules a string buffer is sized for ahead of need (reserveForGrowth,
+// KeylessTemplateImages::reserve): --max-shapes, but no more than the two buffers' share
+// of --max-memory and than a size_t can address in bytes. --max-shapes 10^12 with
+// --max-memory 1G reserved 16 TB up front (R020 before the first step) and 2^63 wrapped
+// the byte count to a tiny block (a crash); a string that outgrows this grows its buffer.
+size_t lookaheadModules(uint64_t maxShapes, uint64_t memoryBudget) {
+  const uint64_t bySize = SIZE_MAX / 2 / sizeof(StringModule);
+  return static_cast<size_t>(std::min({maxShapes, memoryBudget / 2 / sizeof(StringModule), bySize}));
 }
 
 }  // namespace
@@ -346,13 +359,14 @@ void Derivation::runParallel() {
   std::optional<KeylessTemplateImages> images;
   if (KeylessTemplateImages::applies(m_, plan_, str)) {
     images.emplace(plan_, str);
-    images->reserve(str, next, steps_, opt_.maxShapes);
+    images->reserve(str, next, steps_, lookaheadModules(opt_.maxShapes, memoryBudget_));
   }
-  // A step of such a grammar; false, nothing written, where it would reach --max-shapes
-  // or a limit is reached (for the general loop to redo, as rewriteTemplates).
+  // A step of such a grammar; false, nothing written, where it would reach --max-shapes,
+  // a string larger than --max-memory, or a limit is reached (for the general loop to
+  // redo, as rewriteTemplates: it stops within the step at the limit).
   const auto rewriteImages = [&](KeylessTemplateImages& im) {
     const uint64_t modules = im.nextModules(opt_.maxShapes);
-    if (modules >= opt_.maxShapes || limitsReached()) return false;
+    if (modules >= opt_.maxShapes || modules > memoryBudget_ / sizeof(StringModule) || limitsReached()) return false;
     if (str.size() >= kConcurrentFrom) {
       TemplateStep(plan_, str, true, &im).fill(next);
     } else {
@@ -365,7 +379,7 @@ void Derivation::runParallel() {
   double growth = 0;  // the last step's: modules written over modules read
   for (int step = 0; step < steps_ && !limitHit; ++step) {
     next.clear();
-    if (!images) reserveForGrowth(next, str, growth, steps_ - 1 - step, opt_.maxShapes);
+    if (!images) reserveForGrowth(next, str, growth, steps_ - 1 - step, lookaheadModules(opt_.maxShapes, memoryBudget_));
     if (images ? !rewriteImages(*images) : !rewriteTemplates(str, next)) {
       images.reset();  // its tally is not the general loop's string
       next.clear();

@@ -10,10 +10,12 @@
 #include "ir/program_layout.h"
 #include "runtime/mesh_array.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace fgsg::backend {
@@ -63,7 +65,7 @@ class StringBuffer {
   }
   // Appends n values; returns where they go.
   T* extend(size_t n) {
-    if (size_ + n > capacity_) grow(size_ + n);
+    if (n > capacity_ - size_) grow(n > kMaxElements ? SIZE_MAX : size_ + n);
     T* at = data_ + size_;
     size_ += n;
     return at;
@@ -84,11 +86,15 @@ class StringBuffer {
 
  private:
   void grow(size_t need) {
+    if (need > kMaxElements) throw std::bad_alloc();
     size_t cap = capacity_ ? capacity_ : 64;
     while (cap < need) cap += cap / 2 + 64;
-    reallocate(cap);
+    reallocate(std::min(cap, kMaxElements));
   }
+  // Past kMaxElements, cap * sizeof(T) (and its rounding up to huge pages) would wrap to a
+  // small block taken for a huge one: out of memory (R020) instead, the buffer unchanged.
   void reallocate(size_t cap) {
+    if (cap > kMaxElements) throw std::bad_alloc();
     size_t granted = 0;
     T* bigger = static_cast<T*>(StringStoragePool::instance().take(cap * sizeof(T), granted));
     if (size_) std::memcpy(bigger, data_, size_ * sizeof(T));
@@ -100,6 +106,8 @@ class StringBuffer {
     if (data_) StringStoragePool::instance().giveBack(data_, capacity_ * sizeof(T));
     data_ = nullptr;
   }
+
+  static constexpr size_t kMaxElements = SIZE_MAX / 2 / sizeof(T);  // half the address space
 
   T* data_ = nullptr;
   size_t size_ = 0, capacity_ = 0;

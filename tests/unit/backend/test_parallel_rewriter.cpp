@@ -5,7 +5,9 @@
 // scripts/tsan.sh runs this under ThreadSanitizer (issue 52).
 #include "derive_helpers.h"
 
+#include "backend/engine/parallel_string.h"
 #include "backend/engine/string_storage_pool.h"
+#include "runtime/mesh_array.h"
 
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
@@ -101,6 +103,33 @@ TEST_CASE("String storage is kept between derivations, four blocks within 128 Mi
   void* notKept = pool.take(100 * MiB, granted);
   CHECK(granted == 100 * MiB);  // not the 120 MiB block
   pool.giveBack(notKept, 100 * MiB);
+}
+
+// A string buffer asked for more than half the address space in bytes (--max-shapes 2^63
+// reserved 2^63 - 1 modules: 16 times that wrapped, and rounding it up to huge pages
+// wrapped to 0) is out of memory, std::bad_alloc (R020), and keeps what it held; before,
+// a tiny block was taken for a huge one and written past.
+TEST_CASE("A string buffer too large for the address space is out of memory and unchanged", "[lsystem][parallel]") {
+  backend::StringBuffer<backend::StringModule> buffer;
+  buffer.push_back({7, 0, 42});
+  const size_t capacity = buffer.capacity();
+  const size_t wraps[] = {size_t(INT64_MAX),          // the crash: 2^63 - 1 modules
+                          SIZE_MAX / 16,              // bytes SIZE_MAX - 15: rounding up wrapped
+                          SIZE_MAX / 16 + 2,          // bytes wrap to 16
+                          SIZE_MAX / 2 / 16 + 1};     // the first count refused
+  for (size_t modules : wraps) {
+    CHECK_THROWS_AS(buffer.reserve(modules), std::bad_alloc);
+    CHECK_THROWS_AS(buffer.resizeForOverwrite(modules), std::bad_alloc);
+    CHECK_THROWS_AS(buffer.extend(modules), std::bad_alloc);
+    CHECK(buffer.size() == 1);
+    CHECK(buffer.capacity() == capacity);
+    CHECK(buffer[0].op == 7);
+    CHECK(buffer[0].key == 42);
+  }
+  CHECK_THROWS_AS(rt::allocateMeshStorage(SIZE_MAX - 15), std::bad_alloc);
+  buffer.reserve(1000);  // a sane size still grows it, keeping the module
+  CHECK(buffer.capacity() >= 1000);
+  CHECK(buffer[0].key == 42);
 }
 
 // A derivation run again after another (reusing its storage, not cleared) gives the
