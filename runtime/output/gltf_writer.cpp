@@ -45,8 +45,9 @@ constexpr int kUnsignedShort = 5123, kShort = 5122;
 constexpr const char* kQuantization = "KHR_mesh_quantization";
 constexpr const char* kTextureTransform = "KHR_texture_transform";
 // Quantized texture coordinates: at most 2^14 steps per tile (finer than a float's at 16
-// tiles), at least 2^6 (else they stay floats).
-constexpr int kMaxUvStepBits = 14, kMinUvStepBits = 6;
+// tiles), at least 2^12 (a quarter texel of a 1024-pixel tile; uvs spanning more than
+// +-8 tiles stay floats).
+constexpr int kMaxUvStepBits = 14, kMinUvStepBits = 12;
 // CityEngine's texture layers: uv set 5 is the normal map's.
 constexpr uint32_t kNormalMapUvSet = Finish::kNormalMap;
 // A triangle's vertex normals closer to its face's normal than this (the cosine of their
@@ -72,6 +73,11 @@ bool flatShaded(const Mesh& m) {
     }
   }
   return true;
+}
+
+// Whether none of the n values is NaN or infinite: quantizing casts them to integers.
+bool gltfValuesFinite(const float* v, size_t n) {
+  return std::all_of(v, v + n, [](float x) { return std::isfinite(x); });
 }
 
 // Per vertex the tangent a normal map needs (glTF's TANGENT: xyz along +u on the surface,
@@ -366,9 +372,10 @@ GltfPositionGrid Writer::bakedGrid(const GroupNode& g) const {
 }
 
 // Unit vectors (normals: width 3; tangents: 4, w +-1) as floats, or quantizing as
-// normalized 16-bit (a unit vector to 3e-5).
+// normalized 16-bit (a unit vector to 3e-5); values that are not finite stay floats, as
+// without quantizing.
 int Writer::unitVectors(const float* v, size_t vertices, int width) {
-  if (!encoding_.quantize) return vertexAccessor(v, vertices, width);
+  if (!encoding_.quantize || !gltfValuesFinite(v, size_t(width) * vertices)) return vertexAccessor(v, vertices, width);
   std::vector<int16_t> q(size_t(width) * vertices);
   for (size_t k = 0; k < q.size(); ++k) q[k] = int16_t(std::lround(std::clamp(v[k], -1.0f, 1.0f) * 32767.0f));
   return shortVertexAccessor(q, vertices, width, true);
@@ -377,10 +384,10 @@ int Writer::unitVectors(const float* v, size_t vertices, int width) {
 // TEXCOORD_0 as floats (`stepBits` 0), or quantizing as 16-bit integers in steps of
 // 1/2^stepBits of a tile, whole tiles taken off (the sampler repeats) so that they lie
 // around 0: as many bits as their span allows. The materials sampling them scale them back
-// (KHR_texture_transform).
+// (KHR_texture_transform). Values that are not finite stay floats, as without quantizing.
 int Writer::texcoordAccessor(const float* t, size_t vertices, int& stepBits) {
   stepBits = 0;
-  if (encoding_.quantize && vertices > 0) {
+  if (encoding_.quantize && vertices > 0 && gltfValuesFinite(t, 2 * vertices)) {
     std::array<double, 2> lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY}, shift;
     for (size_t k = 0; k < 2 * vertices; ++k) lo[k % 2] = std::min(lo[k % 2], double(t[k])), hi[k % 2] = std::max(hi[k % 2], double(t[k]));
     double half = 0;

@@ -36,7 +36,9 @@ struct PlacedNode {
 // scale map them back: at most half a step of box size / 65535 off per axis), normals
 // and tangents as normalized 16-bit, TEXCOORD_0 as 16-bit integers in 1/2^k tile steps
 // (k as large as the coordinates' span allows, whole tiles taken off; the materials'
-// KHR_texture_transform scales them back; float where a span passes 512 tiles),
+// KHR_texture_transform scales them back; floats where that step would be coarser than
+// 1/4096 of a tile: a span past 16 tiles, or a value that is not finite; normals and
+// tangents that are not finite stay floats too),
 // instance rotations as normalized 16-bit. Shared meshes' positions, colours and other
 // uv sets stay floats.
 struct GltfEncoding {

@@ -9,7 +9,7 @@ decodes them, node transforms, EXT_mesh_gpu_instancing); per start node and mesh
 world positions of every vertex, placed by every node and instance, must lie within T
 (metres, each axis) of the float file's; normals within 1e-4; TEXCOORD_0, scaled by the
 material's KHR_texture_transform, must differ from the float file's by whole tiles (the
-same for a whole primitive) plus at most half a step. KHR_mesh_quantization must be in
+same for a whole primitive) plus at most half a step (the coarsest 1/4096 of a tile). KHR_mesh_quantization must be in
 extensionsUsed and extensionsRequired. Prints what it compared and the largest
 differences; exits 1 on the first mismatch."""
 import argparse
@@ -116,7 +116,7 @@ def main():
                 worst_uv = max(worst_uv, np.max(np.abs(tiles - whole)))
     if worst_normal > 1e-4:
         fail(f"a normal is {worst_normal} off the float file's")
-    if worst_uv > 1 / 64:
+    if worst_uv > 1 / 8192:  # half the coarsest step, 1/4096 of a tile
         fail(f"a texture coordinate is {worst_uv} of a tile off the float file's")
     a, b = os.path.getsize(args.quantized), os.path.getsize(args.float)
     print(f"compared {vertices} placed vertices: positions within {worst_pos * 1000:.3f} mm "
